@@ -1,0 +1,50 @@
+# Board Studio: every target sets itself up first (tools/setup.sh is idempotent and fast
+# when warm). See README.md.
+SHELL := /bin/bash
+GODOT := tools/godot.sh
+GD_SOURCES = $(shell git ls-files -co --exclude-standard '*.gd' | grep -v '^addons/gut/')
+
+.PHONY: play test setup lint format editor shots bench export export-check clean
+
+## make play: the game window with a display, the headless autoplay demo without one
+play: setup
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
+		$(GODOT) --path . ; \
+	else \
+		echo "No display: running the headless autoplay demo (see README for the window)."; \
+		$(GODOT) --headless --path . -- --autoplay=pachinko --board=classic --seconds=60 --seed=1 && \
+		$(GODOT) --headless --path . -- --autoplay=maze --board=classic --seconds=120 --seed=1; \
+	fi
+
+## make test: lint, every GUT test headless, the editor smoke check; ends "N passed, N failed"
+test: setup
+	@tools/run_tests.sh
+
+setup:
+	@tools/setup.sh
+
+lint: setup
+	@tools/lint.sh
+
+format: setup
+	@tools/lint.sh --fix
+
+editor: setup
+	$(GODOT) --path . --editor
+
+shots:
+	@tools/setup.sh pictures
+	@tools/shots.sh
+
+bench: setup
+	@tools/bench.sh
+
+export:
+	@tools/setup.sh export
+	@tools/export.sh
+
+export-check: export
+	@tools/export_check.sh
+
+clean:
+	rm -rf build .godot

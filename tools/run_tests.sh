@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The whole test run: lint, every GUT test headless (JUnit XML in build/), the headless
+# editor smoke check. Ends with one plain line "N passed, N failed"; exits non-zero when
+# anything failed or no test ran.
+set -uo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT"
+mkdir -p build
+XML=build/test-results.xml
+LOG=build/test-output.log
+rm -f "$XML"
+
+extra_failed=0
+echo "== lint"
+tools/lint.sh || extra_failed=$((extra_failed + 1))
+
+echo "== GUT (tests/unit, tests/integration)"
+tools/godot.sh --headless --path . -s addons/gut/gut_cmdln.gd \
+	-gdir=res://tests/unit,res://tests/integration -ginclude_subdirs -gprefix=test_ \
+	-gsuffix=.gd -gjunit_xml_file="res://$XML" -glog=1 -gexit 2>&1 | tee "$LOG"
+gut_status=${PIPESTATUS[0]}
+
+# Godot prints script errors on stderr without failing GUT: count them as failures.
+script_errors=$(grep -cE '^(SCRIPT ERROR|Parse Error|ERROR: .*(Parse|parse|script))' "$LOG" || true)
+if [ "$script_errors" -gt 0 ]; then
+	echo "test run printed $script_errors script error(s):"
+	grep -E -A2 '^(SCRIPT ERROR|Parse Error|ERROR: .*(Parse|parse|script))' "$LOG" | head -40
+	extra_failed=$((extra_failed + 1))
+fi
+
+echo "== editor smoke check (plugin enabled, headless)"
+tools/editor_smoke.sh || extra_failed=$((extra_failed + 1))
+
+read -r passed failed < <(python3 tools/junit_counts.py "$XML")
+failed=$((failed + extra_failed))
+if [ "$gut_status" -ne 0 ] && [ "$failed" -eq 0 ]; then
+	failed=1 # GUT failed without a readable report: never report green
+fi
+echo "$passed passed, $failed failed"
+if [ "$passed" -eq 0 ] || [ "$failed" -ne 0 ]; then
+	exit 1
+fi
