@@ -32,7 +32,10 @@ static func parse(args: PackedStringArray) -> Dictionary:
 				options["board"] = value
 			"--seconds":
 				if not value.is_valid_float() or float(value) <= 0.0 or float(value) > MAX_SECONDS:
-					return {"error": "--seconds must be a number in (0, %d], got '%s'" % [MAX_SECONDS, value]}
+					return {
+						"error":
+						"--seconds must be a number in (0, %d], got '%s'" % [MAX_SECONDS, value]
+					}
 				options["seconds"] = float(value)
 			"--seed":
 				if not value.is_valid_int():
@@ -41,7 +44,13 @@ static func parse(args: PackedStringArray) -> Dictionary:
 			"--hard":
 				options["hard"] = true
 			_:
-				return {"error": "unknown argument '%s' (known: --autoplay= --board= --seconds= --seed= --hard)" % arg}
+				return {
+					"error":
+					(
+						"unknown argument '%s' (known: --autoplay= --board= --seconds= --seed= --hard)"
+						% arg
+					)
+				}
 	if not GAMES.has(options["game"]):
 		return {"error": "--autoplay must be one of %s, got '%s'" % [GAMES.keys(), options["game"]]}
 	if float(options["seconds"]) < 0.0:
@@ -66,10 +75,14 @@ static func run(args: PackedStringArray) -> int:
 	var script: Script = load(GAMES[game])
 	var result: Dictionary
 	if game == "maze":
-		result = script.call("run", loaded.level, options["seconds"], options["seed"], options["hard"])
+		result = script.call(
+			"run", loaded.level, options["seconds"], options["seed"], options["hard"]
+		)
 	else:
 		result = script.call("run", loaded.level, options["seconds"], options["seed"])
-	var report := {"ok": true, "game": game, "board": loaded.level.board_id, "seed": options["seed"]}
+	var report := {
+		"ok": true, "game": game, "board": loaded.level.board_id, "seed": options["seed"]
+	}
 	report.merge(result)
 	print(JSON.stringify(report))
 	return 0
