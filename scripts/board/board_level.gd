@@ -1,0 +1,221 @@
+@tool
+class_name BoardLevel
+extends Resource
+## One board, pachinko or maze, saved as a text `.tres` in `levels/<kind>/`.
+##
+## Both kinds share this model; each uses its own group of fields. Units are pixels, angles
+## are degrees (y down, 0 = right, 90 = down). Defaults are deliberately empty (zero sizes,
+## no pins) so a field missing from a file shows up as a validation error rather than a
+## plausible-looking board. Use `create_pachinko()` / `create_maze()` for a fresh board.
+## Setters emit `changed`; after editing a packed array in place call `notify_edited()`.
+
+enum Kind { PACHINKO, MAZE }
+
+## The format this code writes. Older files are upgraded by `BoardUpgrader` on load.
+const CURRENT_VERSION := 1
+
+@export_group("Common")
+## File format version; older files are upgraded on load.
+@export var version: int = 0:
+	set(value):
+		version = value
+		emit_changed()
+## Which game this board is for.
+@export var kind: Kind = Kind.PACHINKO:
+	set(value):
+		kind = value
+		emit_changed()
+## Stable id used for save data (best times, best scores).
+@export var board_id: String = "":
+	set(value):
+		board_id = value
+		emit_changed()
+## Name shown in the level select.
+@export var display_name: String = "":
+	set(value):
+		display_name = value
+		emit_changed()
+## One or two sentences for the level select.
+@export var description: String = "":
+	set(value):
+		description = value
+		emit_changed()
+## Board size in pixels; the board spans (0, 0) to size.
+@export var size: Vector2 = Vector2.ZERO:
+	set(value):
+		size = value
+		emit_changed()
+## Radius of every ball on this board, in pixels.
+@export var ball_radius: float = 0.0:
+	set(value):
+		ball_radius = value
+		emit_changed()
+## Physics constants for this board.
+@export var tuning: Resource = null:
+	set(value):
+		tuning = value
+		emit_changed()
+
+@export_group("Pachinko")
+## Centre of the ring border.
+@export var ring_center: Vector2 = Vector2.ZERO:
+	set(value):
+		ring_center = value
+		emit_changed()
+## Inside radius of the ring border; balls stay inside it.
+@export var ring_radius: float = 0.0:
+	set(value):
+		ring_radius = value
+		emit_changed()
+## Width of the launch channel between the ring and the inner guide arc.
+@export var rail_width: float = 0.0:
+	set(value):
+		rail_width = value
+		emit_changed()
+## Angle where the launch channel starts (the launcher), degrees, y down.
+@export var rail_start_deg: float = 0.0:
+	set(value):
+		rail_start_deg = value
+		emit_changed()
+## Angle where the channel opens into the field, degrees. The ball travels from start to
+## end through decreasing angles (up the right side and over the top).
+@export var rail_end_deg: float = 0.0:
+	set(value):
+		rail_end_deg = value
+		emit_changed()
+## Start of the gutter arc at the bottom of the ring, degrees.
+@export var gutter_start_deg: float = 0.0:
+	set(value):
+		gutter_start_deg = value
+		emit_changed()
+## End of the gutter arc, degrees (greater than the start).
+@export var gutter_end_deg: float = 0.0:
+	set(value):
+		gutter_end_deg = value
+		emit_changed()
+## Ring contacts inside the gutter arc before a ball is drained.
+@export var gutter_bounces: int = 0:
+	set(value):
+		gutter_bounces = value
+		emit_changed()
+## Pin centres, in pixels.
+@export var pins: PackedVector2Array = PackedVector2Array():
+	set(value):
+		pins = value
+		emit_changed()
+## Radius of every pin, in pixels.
+@export var pin_radius: float = 0.0:
+	set(value):
+		pin_radius = value
+		emit_changed()
+## Per pin: index into pockets, or -1 for a field pin.
+@export var pin_pocket: PackedInt32Array = PackedInt32Array():
+	set(value):
+		pin_pocket = value
+		emit_changed()
+## Per pin: 1 for a pocket's special (catching) pin, else 0.
+@export var pin_special: PackedByteArray = PackedByteArray():
+	set(value):
+		pin_special = value
+		emit_changed()
+## The pockets; pins refer to them by index.
+@export var pockets: Array[PocketSpec] = []:
+	set(value):
+		pockets = value
+		emit_changed()
+## Balls in the cup when a game starts.
+@export var cup_start_balls: int = 0:
+	set(value):
+		cup_start_balls = value
+		emit_changed()
+
+@export_group("Maze")
+## Maze cells across.
+@export var grid_cols: int = 0:
+	set(value):
+		grid_cols = value
+		emit_changed()
+## Maze cells down.
+@export var grid_rows: int = 0:
+	set(value):
+		grid_rows = value
+		emit_changed()
+## Width of a corridor, in pixels.
+@export var path_width: float = 0.0:
+	set(value):
+		path_width = value
+		emit_changed()
+## Thickness of a wall (capsule diameter), in pixels.
+@export var wall_width: float = 0.0:
+	set(value):
+		wall_width = value
+		emit_changed()
+## Wall centre lines as pairs of points a, b (capsules with round caps).
+@export var walls: PackedVector2Array = PackedVector2Array():
+	set(value):
+		walls = value
+		emit_changed()
+## Where the balls start, one ball per point.
+@export var ball_starts: PackedVector2Array = PackedVector2Array():
+	set(value):
+		ball_starts = value
+		emit_changed()
+## Centre of the goal zone.
+@export var goal_center: Vector2 = Vector2.ZERO:
+	set(value):
+		goal_center = value
+		emit_changed()
+## Radius of the goal zone; a ball counts when its centre is inside.
+@export var goal_radius: float = 0.0:
+	set(value):
+		goal_radius = value
+		emit_changed()
+## Black hole centres (hard mode only).
+@export var holes: PackedVector2Array = PackedVector2Array():
+	set(value):
+		holes = value
+		emit_changed()
+## Radius of every black hole, in pixels.
+@export var hole_radius: float = 0.0:
+	set(value):
+		hole_radius = value
+		emit_changed()
+
+## Fields of older file layouts that this version no longer declares, kept during a load so
+## `BoardUpgrader` can convert them. Never saved.
+var legacy_fields: Dictionary = {}
+
+
+func _init() -> void:
+	# A board made in code is current; a file's own `version` line overrides this on load.
+	version = CURRENT_VERSION
+
+
+# A loading file may carry fields of an older layout: keep them for the upgrader instead of
+# dropping them silently.
+func _set(property: StringName, value: Variant) -> bool:
+	if String(property).begins_with("metadata/") or property == &"script":
+		return false
+	legacy_fields[String(property)] = value
+	return true
+
+
+## Tells listeners (the board node, the editor) that the board changed after an in-place
+## edit of one of its arrays, which the setters cannot see.
+func notify_edited() -> void:
+	emit_changed()
+
+
+## True for a pachinko board.
+func is_pachinko() -> bool:
+	return kind == Kind.PACHINKO
+
+
+## True for a maze board.
+func is_maze() -> bool:
+	return kind == Kind.MAZE
+
+
+## The folder name for a kind ("pachinko" / "maze").
+static func kind_name(of_kind: int) -> String:
+	return "maze" if of_kind == Kind.MAZE else "pachinko"

@@ -1,0 +1,52 @@
+class_name BoardLoader
+extends RefCounted
+## Loads boards safely: only res:// files, checked before and after the engine parses them,
+## upgraded from older versions and validated. A broken board never stops the others.
+
+const LEVELS_DIR := "res://levels"
+
+
+## Loads, upgrades and validates one board. The result holds the level or an error message
+## naming the file and the problem.
+static func load_board(path: String) -> BoardLoadResult:
+	var result := BoardLoadResult.new()
+	result.path = path
+	if not path.begins_with("res://"):
+		return _fail(result, "only res:// board files are trusted to load")
+	if not path.ends_with(".tres"):
+		return _fail(result, "a board file must be a text resource (.tres)")
+	if not FileAccess.file_exists(path):
+		return _fail(result, "the file does not exist")
+	var resource: Resource = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REUSE)
+	if resource == null:
+		return _fail(result, "the file could not be parsed as a resource")
+	if not resource is BoardLevel:
+		return _fail(result, "the file is not a BoardLevel")
+	result.level = resource as BoardLevel
+	return result
+
+
+## Every board of a kind (BoardLevel.Kind), sorted by file name: a result per `.tres` file
+## in `levels/<kind>/`, broken ones included (with their error).
+static func list_boards(kind: int) -> Array[BoardLoadResult]:
+	var results: Array[BoardLoadResult] = []
+	var dir_path := "%s/%s" % [LEVELS_DIR, BoardLevel.kind_name(kind)]
+	var names: Array[String] = []
+	for file_name in DirAccess.get_files_at(dir_path):
+		# Exported builds list remapped files; the loader takes the original name.
+		var plain := file_name.trim_suffix(".remap")
+		if plain.ends_with(".tres") and not names.has(plain):
+			names.append(plain)
+	names.sort()
+	for file_name in names:
+		var loaded := load_board("%s/%s" % [dir_path, file_name])
+		if loaded.level != null and loaded.level.kind != kind:
+			loaded = _fail(loaded, "the board is not a %s board" % BoardLevel.kind_name(kind))
+		results.append(loaded)
+	return results
+
+
+static func _fail(result: BoardLoadResult, problem: String) -> BoardLoadResult:
+	result.level = null
+	result.error = "%s: %s" % [result.path, problem]
+	return result
