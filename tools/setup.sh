@@ -49,7 +49,10 @@ apt_private() { # apt-get/apt-cache against sid, with the prefix's own lists
 }
 
 apt_private_update() {
-	[ -n "${APT_UPDATED:-}" ] && return 0
+	# lists younger than a day are reused (find_godot runs in a subshell, so no flag survives)
+	if [ -n "$(find "$PREFIX.apt/lists" -maxdepth 1 -name '*Packages*' -mmin -1440 2>/dev/null | head -n 1)" ]; then
+		return 0
+	fi
 	mkdir -p "$PREFIX.apt/lists/partial" "$PREFIX.apt/cache/archives/partial"
 	local mirror
 	mirror=$(awk '/^URIs:/{print $2; exit}' /etc/apt/sources.list.d/debian.sources 2>/dev/null || true)
@@ -60,7 +63,6 @@ apt_private_update() {
 	say "reading Debian sid's package lists (for Godot 4.6)"
 	apt_private apt-get -qq update >/dev/null 2>&1 ||
 		die "could not reach the Debian archive to fetch Godot 4.6. Either make it reachable, or install Godot 4.6+ yourself and run: GODOT=/path/to/godot make setup"
-	APT_UPDATED=1
 }
 
 # Downloads packages (and their dependency closure when asked) and unpacks them into root/.
@@ -174,18 +176,15 @@ install_gut() {
 
 install_gdtoolkit() {
 	local venv=$CACHE/gdtoolkit-$GDTOOLKIT_VERSION
-	if [ ! -x "$venv/bin/gdlint" ]; then
+	# the marker is written last: a half-made venv is never trusted
+	if [ ! -f "$venv/.complete" ]; then
 		say "installing gdtoolkit $GDTOOLKIT_VERSION into $venv"
-		rm -rf "$venv.staging"
-		python3 -m venv "$venv.staging" ||
+		rm -rf "$venv"
+		python3 -m venv "$venv" ||
 			die "python3 -m venv failed; install python3-venv (apt-get install python3-venv) and run 'make setup' again."
-		"$venv.staging/bin/pip" install -q "gdtoolkit==$GDTOOLKIT_VERSION" >/dev/null ||
-			{ rm -rf "$venv.staging"; die "pip could not install gdtoolkit==$GDTOOLKIT_VERSION from PyPI."; }
-		rm -rf "$venv"; mv "$venv.staging" "$venv"
-		# venv scripts carry the staging path in their shebangs: recreate them in place
-		"$venv/bin/python3" -m pip install -q --force-reinstall --no-deps \
-			"gdtoolkit==$GDTOOLKIT_VERSION" >/dev/null 2>&1 || true
-		sed -i "1s|$venv.staging|$venv|" "$venv"/bin/* 2>/dev/null || true
+		"$venv/bin/pip" install -q "gdtoolkit==$GDTOOLKIT_VERSION" >/dev/null ||
+			{ rm -rf "$venv"; die "pip could not install gdtoolkit==$GDTOOLKIT_VERSION from PyPI (needed by make lint / make test)."; }
+		touch "$venv/.complete"
 	fi
 	echo "$venv/bin"
 }
