@@ -51,7 +51,7 @@ const CURRENT_VERSION := 1
 		ball_radius = value
 		emit_changed()
 ## Physics constants for this board.
-@export var tuning: Resource = null:
+@export var tuning: PhysicsTuning = null:
 	set(value):
 		tuning = value
 		emit_changed()

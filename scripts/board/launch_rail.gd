@@ -1,0 +1,111 @@
+class_name LaunchRail
+extends RefCounted
+## Geometry of a pachinko board's launch rail: the channel between the ring border and an
+## inner guide arc. A ball fired from the bottom of the channel travels up it (through
+## decreasing angles, so up the right side) and leaves it at `rail_end_deg` into the field.
+## The channel's bottom is closed by a short stopper wall; a ball that rolls back down lands
+## in the return zone (world zone 0) just above the stopper.
+
+## Radius of the guide arc's capsules and of the stopper, in pixels.
+const GUIDE_WALL_RADIUS := 2.0
+## Largest angle between two guide points, degrees (keeps the capsule chain smooth).
+const GUIDE_STEP_DEG := 3.0
+
+
+## Radius of the guide arc's centre line.
+static func guide_radius(level: BoardLevel) -> float:
+	return level.ring_radius - level.rail_width
+
+
+## Radius along the middle of the channel, where a launched ball starts.
+static func lane_radius(level: BoardLevel) -> float:
+	return level.ring_radius - level.rail_width * 0.5 + GUIDE_WALL_RADIUS * 0.5
+
+
+## The guide arc as points from the rail's start to its end (a chain of capsules).
+static func guide_points(level: BoardLevel) -> PackedVector2Array:
+	var sweep := absf(level.rail_end_deg - level.rail_start_deg)
+	var count := maxi(2, ceili(sweep / GUIDE_STEP_DEG) + 1)
+	return PinPatterns.arc(
+		level.ring_center, guide_radius(level), level.rail_start_deg, level.rail_end_deg, count
+	)
+
+
+## The stopper closing the bottom of the channel: from the guide's first point out to the
+## ring, as [a, b].
+static func stopper(level: BoardLevel) -> PackedVector2Array:
+	var direction := _unit(level.rail_start_deg)
+	return PackedVector2Array(
+		[
+			level.ring_center + direction * guide_radius(level),
+			level.ring_center + direction * level.ring_radius,
+		]
+	)
+
+
+## Centre of the return zone: where a ball resting on the stopper sits.
+static func return_zone_center(level: BoardLevel) -> Vector2:
+	return _lane_point(level, level.ball_radius + GUIDE_WALL_RADIUS)
+
+
+## Radius of the return zone (a little under a ball, so only a ball that came back counts).
+static func return_zone_radius(level: BoardLevel) -> float:
+	return level.ball_radius
+
+
+## Where a new ball is placed: in the channel, clear of the return zone above it.
+static func launch_position(level: BoardLevel) -> Vector2:
+	return _lane_point(level, GUIDE_WALL_RADIUS + level.ball_radius * 4.0)
+
+
+## Unit direction to fire a ball in: along the channel, up the rail.
+static func launch_direction(level: BoardLevel) -> Vector2:
+	var angle := _lane_angle(level, GUIDE_WALL_RADIUS + level.ball_radius * 4.0)
+	# d/dangle of (cos, sin) is (-sin, cos); the rail runs towards `_rail_sense()`.
+	return Vector2(-sin(angle), cos(angle)) * _rail_sense(level)
+
+
+## Where the ball leaves the channel into the field (lane radius at `rail_end_deg`).
+static func entry_point(level: BoardLevel) -> Vector2:
+	return level.ring_center + _unit(level.rail_end_deg) * lane_radius(level)
+
+
+## The highest point (smallest y) a ball passes on its way from the launch position to the
+## entry point.
+static func highest_lane_y(level: BoardLevel) -> float:
+	var top := minf(launch_position(level).y, entry_point(level).y)
+	# Does the lane pass the top of the circle (-90° or 270°) between the end and the start?
+	var low := minf(level.rail_start_deg, level.rail_end_deg)
+	var high := maxf(level.rail_start_deg, level.rail_end_deg)
+	for top_deg in [-450.0, -90.0, 270.0]:
+		if top_deg >= low and top_deg <= high:
+			top = minf(top, level.ring_center.y - lane_radius(level))
+	return top
+
+
+## The launch speed (px/s) a ball needs, ignoring friction, to climb to the top of the rail
+## under `gravity_y` (px/s²). Launchers scale their power above this.
+static func speed_to_clear(level: BoardLevel, gravity_y: float) -> float:
+	var rise := launch_position(level).y - highest_lane_y(level)
+	return sqrt(2.0 * maxf(gravity_y, 0.0) * maxf(rise, 0.0))
+
+
+static func _unit(degrees: float) -> Vector2:
+	var angle := deg_to_rad(degrees)
+	return Vector2(cos(angle), sin(angle))
+
+
+# Angle (radians) of the lane point `arc_length` pixels up the rail from its start.
+static func _lane_angle(level: BoardLevel, arc_length: float) -> float:
+	var radius := maxf(lane_radius(level), 1.0)
+	return deg_to_rad(level.rail_start_deg) + _rail_sense(level) * arc_length / radius
+
+
+# -1 when the rail runs through decreasing angles (the usual right-hand rail), else +1.
+static func _rail_sense(level: BoardLevel) -> float:
+	return -1.0 if level.rail_end_deg < level.rail_start_deg else 1.0
+
+
+static func _lane_point(level: BoardLevel, arc_length: float) -> Vector2:
+	var angle := _lane_angle(level, arc_length)
+	return level.ring_center + Vector2(cos(angle), sin(angle)) * lane_radius(level)
