@@ -1,8 +1,36 @@
 extends Node
-## The one autoload. Starts the headless autoplay when the command line asks for it.
-## (The shell issue grows this: settings, save data, board catalog, play-test hand-off.)
+## The one autoload. Starts the headless autoplay when the command line asks for it;
+## otherwise holds the player's settings and best results, the board each game should play,
+## and the scene changes between the menus and the games.
+
+## Emitted once when the settings or best-results file was damaged and got replaced.
+signal problem_reported(message: String)
 
 const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
+const SaveData := preload("res://scripts/app/save_data.gd")
+const SETTINGS_PATH := "user://settings.cfg"
+const SAVE_PATH := "user://save.cfg"
+const PLAYTEST_PATH := "user://playtest_request.cfg"
+## A play-test request older than this is left over from an editor session that never ran it.
+const PLAYTEST_MAX_AGE_SECONDS := 300
+const MENU_SCENE := "res://scenes/menu/main_menu.tscn"
+const LEVEL_SELECT_SCENE := "res://scenes/menu/level_select.tscn"
+const GAME_SCENES := {
+	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
+	"maze": "res://scenes/maze/maze_game.tscn",
+}
+
+## The player's settings (volumes, window, frame counter, tilt sensitivity, bindings).
+var settings := GameSettings.new()
+## Best results per board.
+var save_data := SaveData.new()
+## Which game the level select lists ("pachinko" or "maze").
+var level_select_kind := "pachinko"
+## Problems found while loading the player's files, not yet shown to the player.
+var pending_problems := PackedStringArray()
+
+var _picked_boards := {}
+var _settings_path := SETTINGS_PATH
 
 
 func _ready() -> void:
@@ -10,3 +38,124 @@ func _ready() -> void:
 	if AutoplayCli.wants_autoplay(args):
 		var code := AutoplayCli.run(args)
 		get_tree().quit(code)
+		return
+	load_player_files(SETTINGS_PATH, SAVE_PATH)
+
+
+## Loads settings and best results, applies the settings, and replaces a damaged settings
+## file with the defaults right away so the problem is reported once, not on every start.
+func load_player_files(settings_path: String, save_path: String) -> void:
+	_settings_path = settings_path
+	var problem := settings.load_file(settings_path)
+	if not problem.is_empty():
+		_report(problem)
+		settings.save_file(settings_path)
+	settings.apply()
+	var save_problem := save_data.load_file(save_path)
+	if not save_problem.is_empty():
+		_report(save_problem)
+		save_data.save()
+
+
+## Applies the current settings and writes them to the settings file.
+func save_settings() -> void:
+	settings.apply()
+	settings.save_file(_settings_path)
+
+
+## Takes the problems not yet shown to the player (each is handed out once).
+func take_problems() -> PackedStringArray:
+	var problems := pending_problems
+	pending_problems = PackedStringArray()
+	return problems
+
+
+## Remembers the board the player picked for a game; call before changing scene.
+func request_board(kind: String, path: String) -> void:
+	if not GAME_SCENES.has(kind):
+		push_error("App.request_board: unknown game kind '%s'" % kind)
+		return
+	_picked_boards[kind] = path
+
+
+## The board a game scene should load: an editor play-test request first (consumed once,
+## then kept for restarts), then the level select's pick, else the classic board.
+func current_board_path(kind: String) -> String:
+	var requested := _take_playtest_request(kind)
+	if not requested.is_empty():
+		_picked_boards[kind] = requested
+		return requested
+	if _picked_boards.has(kind):
+		return _picked_boards[kind]
+	return "res://levels/%s/classic.tres" % kind
+
+
+## Best maze time on a board in seconds, -1 when none.
+func best_maze_time(board_id: String) -> float:
+	return save_data.best_maze_time(board_id)
+
+
+## Records a finished maze run; true when it is a new best.
+func record_maze_time(board_id: String, seconds: float) -> bool:
+	return save_data.record_maze_time(board_id, seconds)
+
+
+## Most pachinko balls won on a board, -1 when none.
+func best_pachinko_balls(board_id: String) -> int:
+	return save_data.best_pachinko_balls(board_id)
+
+
+## Records a finished pachinko game; true when it is a new best.
+func record_pachinko_balls(board_id: String, balls: int) -> bool:
+	return save_data.record_pachinko_balls(board_id, balls)
+
+
+## Leaves whatever is running (unpausing it) for the main menu.
+func go_to_menu() -> void:
+	_change_scene(MENU_SCENE)
+
+
+## Opens the level select listing the boards of one game.
+func go_to_level_select(kind: String) -> void:
+	level_select_kind = kind
+	_change_scene(LEVEL_SELECT_SCENE)
+
+
+## Starts a game on a board.
+func start_game(kind: String, path: String) -> void:
+	if not GAME_SCENES.has(kind):
+		push_error("App.start_game: unknown game kind '%s'" % kind)
+		return
+	request_board(kind, path)
+	_change_scene(GAME_SCENES[kind])
+
+
+func _change_scene(path: String) -> void:
+	get_tree().paused = false
+	var error := get_tree().change_scene_to_file(path)
+	if error != OK:
+		push_error("Could not open the scene %s: %s" % [path, error_string(error)])
+
+
+func _report(message: String) -> void:
+	push_warning(message)
+	pending_problems.append(message)
+	problem_reported.emit(message)
+
+
+func _take_playtest_request(kind: String) -> String:
+	if not FileAccess.file_exists(PLAYTEST_PATH):
+		return ""
+	var age := Time.get_unix_time_from_system() - FileAccess.get_modified_time(PLAYTEST_PATH)
+	var config := ConfigFile.new()
+	var error := config.load(PLAYTEST_PATH)
+	var board: String = str(config.get_value("playtest", "board", "")) if error == OK else ""
+	var raw_kind: Variant = config.get_value("playtest", "kind", "") if error == OK else ""
+	# the kind may be written as its name or as the BoardLevel.Kind number
+	var request_kind := BoardLevel.kind_name(int(raw_kind)) if raw_kind is int else str(raw_kind)
+	if request_kind != kind and age < PLAYTEST_MAX_AGE_SECONDS and error == OK:
+		return ""  # meant for the other game: leave it for that one
+	DirAccess.remove_absolute(PLAYTEST_PATH)
+	if request_kind != kind or age >= PLAYTEST_MAX_AGE_SECONDS:
+		return ""
+	return board

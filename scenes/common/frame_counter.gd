@@ -1,0 +1,43 @@
+extends CanvasLayer
+## Frames per second in the top-right corner. Shown when the setting says so; the
+## `toggle_frame_counter` action flips the setting (and saves it).
+
+const REFRESH_SECONDS := 0.25
+
+var _since_refresh := 0.0
+
+@onready var _label: Label = %FpsLabel
+
+
+func _ready() -> void:
+	process_mode = Node.PROCESS_MODE_ALWAYS
+	App.settings.changed.connect(_sync_visibility)
+	_sync_visibility()
+
+
+func _process(delta: float) -> void:
+	if not visible:
+		return
+	_since_refresh += delta
+	if _since_refresh >= REFRESH_SECONDS:
+		_since_refresh = 0.0
+		_refresh()
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if event.is_action_pressed("toggle_frame_counter"):
+		App.settings.set_value("show_frame_counter", not App.settings.show_frame_counter)
+		App.save_settings()
+		get_viewport().set_input_as_handled()
+
+
+func _sync_visibility() -> void:
+	visible = App.settings.show_frame_counter
+	if visible:
+		_refresh()
+
+
+func _refresh() -> void:
+	var fps := Engine.get_frames_per_second()
+	var frame_ms := 1000.0 / fps if fps > 0.0 else 0.0
+	_label.text = "%d FPS  %.1f ms" % [fps, frame_ms]

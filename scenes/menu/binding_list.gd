@@ -1,0 +1,156 @@
+extends GridContainer
+## The controls part of the settings screen: one row per game action with its keyboard and
+## gamepad bindings. Choosing a binding waits for the next key (or gamepad button / stick),
+## which replaces that column's binding; Esc cancels a key capture, any key a gamepad one.
+
+## A binding changed (the settings were updated; the owner saves them).
+signal binding_changed
+## A capture started (true) or ended (false); the owner ignores its own shortcuts meanwhile.
+signal capture_toggled(capturing: bool)
+
+const Codec := preload("res://scripts/app/input_event_codec.gd")
+const AXIS_THRESHOLD := 0.6
+const ACTION_NAMES := {
+	"launch_charge": "Pachinko: launch (hold to charge)",
+	"tilt_left": "Maze: tilt left",
+	"tilt_right": "Maze: tilt right",
+	"tilt_up": "Maze: tilt up",
+	"tilt_down": "Maze: tilt down",
+	"maze_reset": "Maze: put the ball back",
+	"maze_hard_mode": "Maze: hard mode (holes)",
+	"maze_easy_mode": "Maze: easy mode",
+	"maze_calibrate": "Maze: calibrate the tilt",
+	"game_start": "Start a game",
+	"game_restart": "Restart",
+	"pause": "Pause",
+	"toggle_frame_counter": "Show / hide frame counter",
+}
+
+var _capture_action := ""
+var _capture_gamepad := false
+var _capture_button: Button = null
+
+
+func _ready() -> void:
+	columns = 3
+	rebuild()
+
+
+func _input(event: InputEvent) -> void:
+	if _capture_button == null:
+		return
+	if event is InputEventKey and event.is_pressed() and not event.is_echo():
+		var key := event as InputEventKey
+		if _capture_gamepad or key.physical_keycode == KEY_ESCAPE:
+			_end_capture()
+		else:
+			_finish_capture(_key_event(key))
+		get_viewport().set_input_as_handled()
+	elif _capture_gamepad and event is InputEventJoypadButton and event.is_pressed():
+		var button := InputEventJoypadButton.new()
+		button.button_index = (event as InputEventJoypadButton).button_index
+		_finish_capture(button)
+		get_viewport().set_input_as_handled()
+	elif _capture_gamepad and event is InputEventJoypadMotion:
+		var motion := event as InputEventJoypadMotion
+		if absf(motion.axis_value) >= AXIS_THRESHOLD:
+			var axis := InputEventJoypadMotion.new()
+			axis.axis = motion.axis
+			axis.axis_value = signf(motion.axis_value)
+			_finish_capture(axis)
+		get_viewport().set_input_as_handled()
+	elif event is InputEventJoypadButton or event is InputEventJoypadMotion:
+		get_viewport().set_input_as_handled()  # no menu navigation while a key is awaited
+
+
+## True while waiting for the player to press the new binding.
+func is_capturing() -> bool:
+	return _capture_button != null
+
+
+## Readable name of an action for the list.
+static func action_title(action: String) -> String:
+	return ACTION_NAMES.get(action, action.capitalize())
+
+
+## Recreates every row from the current settings.
+func rebuild() -> void:
+	for child in get_children():
+		remove_child(child)
+		child.queue_free()
+	_add_header("Action")
+	_add_header("Keyboard")
+	_add_header("Gamepad")
+	for action in GameSettings.remappable_actions():
+		var title := Label.new()
+		title.text = action_title(action)
+		title.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+		add_child(title)
+		add_child(_binding_button(action, false))
+		add_child(_binding_button(action, true))
+
+
+## The first binding button, for focus hand-off from the controls above.
+func first_button() -> Button:
+	for child in get_children():
+		if child is Button:
+			return child as Button
+	return null
+
+
+func _add_header(text: String) -> void:
+	var header := Label.new()
+	header.text = text
+	header.theme_type_variation = &"HintLabel"
+	add_child(header)
+
+
+func _binding_button(action: String, gamepad: bool) -> Button:
+	var button := Button.new()
+	button.name = "%s_%s" % [action, "pad" if gamepad else "key"]
+	button.custom_minimum_size = Vector2(250, 0)
+	button.clip_text = true
+	button.text = _describe(action, gamepad)
+	button.tooltip_text = "Choose, then press the new %s" % ["button" if gamepad else "key"]
+	button.pressed.connect(_start_capture.bind(action, gamepad, button))
+	return button
+
+
+func _describe(action: String, gamepad: bool) -> String:
+	var names := PackedStringArray()
+	for event in App.settings.events_for(action):
+		if Codec.is_gamepad(event) == gamepad and not event is InputEventMouseButton:
+			names.append(Codec.describe(event))
+	return " / ".join(names) if not names.is_empty() else "(none)"
+
+
+func _start_capture(action: String, gamepad: bool, button: Button) -> void:
+	_end_capture()
+	_capture_action = action
+	_capture_gamepad = gamepad
+	_capture_button = button
+	button.text = "Press a button… (any key cancels)" if gamepad else "Press a key… (Esc cancels)"
+	capture_toggled.emit(true)
+
+
+func _finish_capture(event: InputEvent) -> void:
+	event.device = -1
+	App.settings.rebind(_capture_action, event, _capture_gamepad)
+	_end_capture()
+	binding_changed.emit()
+
+
+func _end_capture() -> void:
+	if _capture_button == null:
+		return
+	_capture_button.text = _describe(_capture_action, _capture_gamepad)
+	_capture_button = null
+	capture_toggled.emit.call_deferred(false)
+
+
+func _key_event(pressed: InputEventKey) -> InputEventKey:
+	var key := InputEventKey.new()
+	key.physical_keycode = pressed.physical_keycode
+	if key.physical_keycode == KEY_NONE:
+		key.physical_keycode = pressed.keycode
+	return key

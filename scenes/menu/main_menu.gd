@@ -1,0 +1,52 @@
+extends Control
+## The title screen: Pachinko, Tilt Maze, Settings, Quit. The first button takes focus so
+## keyboard and gamepad work at once; problems met while loading the player's files are
+## shown once in a banner at the bottom.
+
+const SETTINGS_SCENE := preload("res://scenes/menu/settings_menu.tscn")
+
+var _settings: Control = null
+
+@onready var _pachinko: Button = %PachinkoButton
+@onready var _maze: Button = %MazeButton
+@onready var _settings_button: Button = %SettingsButton
+@onready var _quit: Button = %QuitButton
+@onready var _notice: Control = %Notice
+@onready var _notice_label: Label = %NoticeLabel
+@onready var _version: Label = %VersionLabel
+
+
+func _ready() -> void:
+	_pachinko.pressed.connect(App.go_to_level_select.bind("pachinko"))
+	_maze.pressed.connect(App.go_to_level_select.bind("maze"))
+	_settings_button.pressed.connect(_open_settings)
+	_quit.pressed.connect(get_tree().quit)
+	_version.text = "v%s" % ProjectSettings.get_setting("application/config/version", "")
+	var problems := App.take_problems()
+	_notice.visible = not problems.is_empty()
+	_notice_label.text = "\n".join(problems)
+	_focus_first()
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if _settings == null and get_viewport().gui_get_focus_owner() == null:
+		if event.is_action_pressed("ui_up") or event.is_action_pressed("ui_down"):
+			_focus_first()
+			get_viewport().set_input_as_handled()
+
+
+func _focus_first() -> void:
+	# coming back from a level select, the game the player was looking at keeps focus
+	(_maze if App.level_select_kind == "maze" else _pachinko).grab_focus()
+
+
+func _open_settings() -> void:
+	_settings = SETTINGS_SCENE.instantiate() as Control
+	_settings.tree_exited.connect(_on_settings_closed)
+	add_child(_settings)
+
+
+func _on_settings_closed() -> void:
+	_settings = null
+	if is_inside_tree():
+		_settings_button.grab_focus()

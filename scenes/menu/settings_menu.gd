@@ -1,0 +1,80 @@
+extends Control
+## The settings screen, opened from the main menu and from the pause menu (it runs while the
+## tree is paused). Changes apply at once; they are saved when the screen closes. Back, Esc
+## or the gamepad's B closes it.
+
+## The screen closed (it frees itself right after).
+signal closed
+
+@onready var _master: HSlider = %MasterSlider
+@onready var _sfx: HSlider = %SfxSlider
+@onready var _tilt: HSlider = %TiltSlider
+@onready var _master_value: Label = %MasterValue
+@onready var _sfx_value: Label = %SfxValue
+@onready var _tilt_value: Label = %TiltValue
+@onready var _fullscreen: CheckButton = %FullscreenCheck
+@onready var _frame_counter: CheckButton = %FrameCounterCheck
+@onready var _bindings: GridContainer = %Bindings
+@onready var _defaults: Button = %DefaultsButton
+@onready var _back: Button = %BackButton
+
+
+func _ready() -> void:
+	process_mode = Node.PROCESS_MODE_ALWAYS
+	_tilt.min_value = GameSettings.MIN_TILT_SENSITIVITY
+	_tilt.max_value = GameSettings.MAX_TILT_SENSITIVITY
+	_load_values()
+	_master.value_changed.connect(_on_value_changed.bind("master_volume"))
+	_sfx.value_changed.connect(_on_value_changed.bind("sfx_volume"))
+	_tilt.value_changed.connect(_on_value_changed.bind("tilt_sensitivity"))
+	_fullscreen.toggled.connect(_on_value_changed.bind("fullscreen"))
+	_frame_counter.toggled.connect(_on_value_changed.bind("show_frame_counter"))
+	_defaults.pressed.connect(_on_defaults_pressed)
+	_back.pressed.connect(close)
+	App.settings.changed.connect(_load_values)
+	_master.grab_focus()
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if _bindings.call("is_capturing"):
+		return
+	if event.is_action_pressed("ui_cancel") or event.is_action_pressed("pause"):
+		close()
+		get_viewport().set_input_as_handled()
+
+
+## Saves the settings and closes the screen.
+func close() -> void:
+	if is_queued_for_deletion():
+		return
+	App.save_settings()
+	closed.emit()
+	queue_free()
+
+
+func _load_values() -> void:
+	var settings := App.settings
+	_master.set_value_no_signal(settings.master_volume)
+	_sfx.set_value_no_signal(settings.sfx_volume)
+	_tilt.set_value_no_signal(settings.tilt_sensitivity)
+	_fullscreen.set_pressed_no_signal(settings.fullscreen)
+	_frame_counter.set_pressed_no_signal(settings.show_frame_counter)
+	_show_numbers()
+
+
+func _on_value_changed(value: Variant, key: String) -> void:
+	App.settings.set_value(key, value)
+	App.settings.apply()
+
+
+func _show_numbers() -> void:
+	_master_value.text = "%d%%" % roundi(_master.value * 100.0)
+	_sfx_value.text = "%d%%" % roundi(_sfx.value * 100.0)
+	_tilt_value.text = "×%.2f" % _tilt.value
+
+
+func _on_defaults_pressed() -> void:
+	App.settings.restore_default_bindings()
+	App.settings.apply()
+	_bindings.call("rebuild")
+	_defaults.grab_focus()
