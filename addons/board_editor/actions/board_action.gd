@@ -1,0 +1,59 @@
+@tool
+extends RefCounted
+## Base of every board edit: a plain object with `do()`, `undo()` and `get_name()`, so the
+## plugin commits it through EditorUndoRedoManager and tests drive it with no editor.
+##
+## `do()` remembers the fields the action touches, then applies the change; `undo()` puts
+## those fields back. Redo is `do()` again: the board is in the same state it was the first
+## time, so the same change lands the same way.
+
+const Snapshot := preload("res://addons/board_editor/core/board_snapshot.gd")
+
+## The board this action edits.
+var level: BoardLevel
+var _before: Dictionary = {}
+var _applied := false
+
+
+func _init(on_level: BoardLevel) -> void:
+	level = on_level
+
+
+## Applies the change.
+func do() -> void:
+	if level == null:
+		push_error("Board action '%s': no board to edit." % get_name())
+		return
+	_before = Snapshot.capture(level, _touched_fields())
+	_apply()
+	_applied = true
+	level.notify_edited()
+
+
+## Takes the change back.
+func undo() -> void:
+	if level == null or not _applied:
+		return
+	Snapshot.restore(level, _before)
+	_applied = false
+	level.notify_edited()
+
+
+## The name shown in the editor's history.
+func get_name() -> String:
+	return "Edit board"
+
+
+## True between a `do()` and the matching `undo()`.
+func is_applied() -> bool:
+	return _applied
+
+
+## The BoardLevel fields `_apply()` may change.
+func _touched_fields() -> PackedStringArray:
+	return PackedStringArray()
+
+
+## The change itself; override.
+func _apply() -> void:
+	pass

@@ -1,0 +1,84 @@
+@tool
+extends "res://addons/board_editor/actions/board_action.gd"
+## Moves items by an offset: a pocket takes its rim pins along, a wall both ends. In mirror
+## mode the partners move by the reflected offset and items on the axis only vertically.
+## A drag calls `preview()` on every mouse move and is committed once on release.
+
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+
+## The offset applied to the direct items.
+var delta := Vector2.ZERO
+var _direct: Array[Vector2i]
+var _mirrored: Array[Vector2i]
+var _on_axis: Array[Vector2i]
+
+
+func _init(
+	on_level: BoardLevel,
+	items: Array[Vector2i],
+	offset: Vector2,
+	mirrored: Array[Vector2i] = [],
+	on_axis: Array[Vector2i] = []
+) -> void:
+	super(on_level)
+	_direct = items.duplicate()
+	_mirrored = mirrored.duplicate()
+	_on_axis = on_axis.duplicate()
+	delta = offset
+
+
+func get_name() -> String:
+	return "Move %d board item%s" % [item_count(), "" if item_count() == 1 else "s"]
+
+
+## How many items move.
+func item_count() -> int:
+	return _direct.size() + _mirrored.size() + _on_axis.size()
+
+
+## Re-applies the move with a new offset (live drag preview).
+func preview(offset: Vector2) -> void:
+	if is_applied():
+		undo()
+	delta = offset
+	do()
+
+
+func _touched_fields() -> PackedStringArray:
+	return PackedStringArray(["pins", "pockets", "walls", "holes", "ball_starts", "goal_center"])
+
+
+func _apply() -> void:
+	# Copies: packed arrays are shared by reference, and the setters must see a new value.
+	var pins := level.pins.duplicate()
+	var walls := level.walls.duplicate()
+	var holes := level.holes.duplicate()
+	var starts := level.ball_starts.duplicate()
+	var groups: Array = [
+		[_direct, delta], [_mirrored, Vector2(-delta.x, delta.y)], [_on_axis, Vector2(0, delta.y)]
+	]
+	for group: Array in groups:
+		var offset: Vector2 = group[1]
+		for item: Vector2i in group[0]:
+			if not Items.is_valid(level, item):
+				continue
+			match item.x:
+				Items.Kind.PIN:
+					pins[item.y] += offset
+				Items.Kind.POCKET:
+					level.pockets[item.y].position += offset
+					for pin in Items.pocket_pins(level, item.y):
+						pins[pin] += offset
+				Items.Kind.WALL:
+					walls[item.y * 2] += offset
+					walls[item.y * 2 + 1] += offset
+				Items.Kind.HOLE:
+					holes[item.y] += offset
+				Items.Kind.START:
+					starts[item.y] += offset
+				Items.Kind.GOAL:
+					level.goal_center += offset
+	level.pins = pins
+	level.walls = walls
+	level.holes = holes
+	level.ball_starts = starts

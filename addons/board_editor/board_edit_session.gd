@@ -1,0 +1,136 @@
+@tool
+extends RefCounted
+## What the board editor is doing right now: the board, the selection, the active tool and
+## its settings, snapping and mirror mode. Plain object: the plugin shows it, tests drive it.
+##
+## Every change goes through `commit()`, which hands the action to the committer (the
+## editor's undo history in the plugin, a plain ActionHistory elsewhere).
+
+signal edited
+signal selection_changed
+signal tool_changed(tool: int)
+
+enum Tool { SELECT, PIN, PATTERN, POCKET, WALL, HOLE, GOAL, START, HANDLES, ERASE }
+
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const Snapping := preload("res://addons/board_editor/core/snapping.gd")
+const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
+
+## Tools that make sense on each kind of board.
+const PACHINKO_TOOLS: Array[int] = [
+	Tool.SELECT, Tool.PIN, Tool.PATTERN, Tool.POCKET, Tool.HANDLES, Tool.ERASE
+]
+const MAZE_TOOLS: Array[int] = [
+	Tool.SELECT, Tool.WALL, Tool.HOLE, Tool.GOAL, Tool.START, Tool.HANDLES, Tool.ERASE
+]
+
+## The board being edited.
+var level: BoardLevel
+## The selected items (see BoardItems).
+var selection: Array[Vector2i] = []
+## The active tool.
+var tool: int = Tool.SELECT
+## Snap to the editor grid (and, on a maze, walls to the maze lattice).
+var snap_enabled := true
+## Editor grid pitch in pixels.
+var grid_step := 10.0
+## Edit both halves at once, mirrored across the board's centre line.
+var mirror_enabled := false
+## Pattern tool settings: kind ("row", "lattice", "arc", "circle"), count, spacing, rows,
+## radius (arcs), arc_deg (arcs).
+var pattern := {
+	"kind": "row", "count": 7, "spacing": 30.0, "rows": 4, "radius": 120.0, "arc_deg": 120.0
+}
+## Settings for new pockets.
+var pocket_width := 32.0
+var pocket_depth := 24.0
+var pocket_payout := 10
+## The last copied items, relative to their centre.
+var clipboard := {}
+## Receives `(action, already_applied)`; a plain history unless the plugin sets its own.
+var committer: Callable
+## The plain history used when no committer is set.
+var history := ActionHistory.new()
+
+
+func _init(on_level: BoardLevel = null) -> void:
+	level = on_level
+	committer = history.commit
+	if level != null:
+		snap_enabled = true
+		grid_step = 5.0 if level.is_maze() else 10.0
+		tool = Tool.SELECT
+
+
+## Records an action: runs it (unless a live preview already did) and keeps it undoable.
+func commit(action: RefCounted, already_applied := false) -> void:
+	committer.call(action, already_applied)
+	prune_selection()
+	edited.emit()
+
+
+## `point` snapped to the editor grid when snapping is on.
+func snap_point(point: Vector2) -> Vector2:
+	return Snapping.to_grid(point, grid_step) if snap_enabled else point
+
+
+## Where a cell-sized thing (hole, start, goal) goes: the maze cell centre when snapping on
+## a maze, else the snapped point.
+func snap_cell_point(point: Vector2) -> Vector2:
+	if snap_enabled and level.is_maze():
+		return Snapping.to_maze_cell_center(level, point)
+	return snap_point(point)
+
+
+## Where a wall end goes: a maze grid crossing when snapping, else free.
+func snap_wall_point(point: Vector2) -> Vector2:
+	if snap_enabled and level.is_maze():
+		return Snapping.to_maze_corner(level, point)
+	return point
+
+
+## The mirror axis x, or NAN when mirror mode is off.
+func mirror_axis() -> float:
+	return Mirror.axis_of(level) if mirror_enabled else NAN
+
+
+## An item set with its mirror image added when mirror mode is on.
+func mirrored(data: Dictionary) -> Dictionary:
+	return Mirror.mirror_set(data, Mirror.axis_of(level)) if mirror_enabled else data
+
+
+## Switches tool (ignores tools the board's kind has no use for).
+func set_tool(new_tool: int) -> void:
+	if not available_tools().has(new_tool) or new_tool == tool:
+		return
+	tool = new_tool
+	tool_changed.emit(tool)
+
+
+## The tools that apply to this board.
+func available_tools() -> Array[int]:
+	return MAZE_TOOLS if level != null and level.is_maze() else PACHINKO_TOOLS
+
+
+## Replaces the selection.
+func select(items: Array[Vector2i]) -> void:
+	selection = items.duplicate()
+	selection_changed.emit()
+
+
+## Drops selected items that no longer exist (after an undo or a delete).
+func prune_selection() -> void:
+	var kept: Array[Vector2i] = []
+	for item in selection:
+		if Items.is_valid(level, item) and not kept.has(item):
+			kept.append(item)
+	if kept != selection:
+		selection = kept
+		selection_changed.emit()
+
+
+## The pocket the dock's inspector edits: the only selected pocket, or -1.
+func selected_pocket() -> int:
+	var pockets := Items.indices_of(selection, Items.Kind.POCKET)
+	return pockets[0] if pockets.size() == 1 else -1

@@ -1,0 +1,133 @@
+@tool
+extends RefCounted
+## What the editor can select on a board, and how to read one item back.
+##
+## An item is a `Vector2i(kind, index)`: pins, pockets, walls (pair index), holes, ball
+## starts and the goal. Pins that belong to a pocket are never items of their own: the
+## pocket is (its rim pins are stamped, not placed one by one).
+
+enum Kind { PIN, POCKET, WALL, HOLE, START, GOAL }
+
+## Returned by the pickers when nothing is there.
+const NONE := Vector2i(-1, -1)
+
+
+## The item of `kind` at `index`.
+static func make(kind: Kind, index: int) -> Vector2i:
+	return Vector2i(kind, index)
+
+
+## The point that represents an item: a centre, a pocket's mouth, a wall's midpoint.
+static func position_of(level: BoardLevel, item: Vector2i) -> Vector2:
+	match item.x:
+		Kind.PIN:
+			return level.pins[item.y]
+		Kind.POCKET:
+			return level.pockets[item.y].position
+		Kind.WALL:
+			return (level.walls[item.y * 2] + level.walls[item.y * 2 + 1]) * 0.5
+		Kind.HOLE:
+			return level.holes[item.y]
+		Kind.START:
+			return level.ball_starts[item.y]
+		_:
+			return level.goal_center
+
+
+## True when the item still exists on the board (indices go stale after an undo).
+static func is_valid(level: BoardLevel, item: Vector2i) -> bool:
+	if item.y < 0:
+		return false
+	match item.x:
+		Kind.PIN:
+			return item.y < level.pins.size()
+		Kind.POCKET:
+			return item.y < level.pockets.size()
+		Kind.WALL:
+			return item.y < level.walls.size() / 2
+		Kind.HOLE:
+			return item.y < level.holes.size()
+		Kind.START:
+			return item.y < level.ball_starts.size()
+		Kind.GOAL:
+			return level.is_maze()
+	return false
+
+
+## Indices of the items of one kind in a selection, sorted and without repeats.
+static func indices_of(items: Array[Vector2i], kind: Kind) -> PackedInt32Array:
+	var found := PackedInt32Array()
+	for item in items:
+		if item.x == kind and not found.has(item.y):
+			found.append(item.y)
+	found.sort()
+	return found
+
+
+## The pin indices that make up pocket `pocket_index` (its rim and special pin).
+static func pocket_pins(level: BoardLevel, pocket_index: int) -> PackedInt32Array:
+	var found := PackedInt32Array()
+	for i in level.pin_pocket.size():
+		if level.pin_pocket[i] == pocket_index:
+			found.append(i)
+	return found
+
+
+## A copy of the selected items as plain data, positions relative to `origin`, for the
+## clipboard and for duplicating: {pins, walls, holes, starts, pockets}.
+static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) -> Dictionary:
+	var data := empty_set()
+	for item in items:
+		if not is_valid(level, item):
+			continue
+		match item.x:
+			Kind.PIN:
+				(data["pins"] as PackedVector2Array).append(level.pins[item.y] - origin)
+			Kind.WALL:
+				var walls: PackedVector2Array = data["walls"]
+				walls.append(level.walls[item.y * 2] - origin)
+				walls.append(level.walls[item.y * 2 + 1] - origin)
+			Kind.HOLE:
+				(data["holes"] as PackedVector2Array).append(level.holes[item.y] - origin)
+			Kind.START:
+				(data["starts"] as PackedVector2Array).append(level.ball_starts[item.y] - origin)
+			Kind.POCKET:
+				var spec: PocketSpec = level.pockets[item.y]
+				(data["pockets"] as Array).append(
+					PocketSpec.create(spec.position - origin, spec.width, spec.depth, spec.payout)
+				)
+	return data
+
+
+## An empty item set: the shape `extract()` returns and the add action takes.
+static func empty_set() -> Dictionary:
+	return {
+		"pins": PackedVector2Array(),
+		"walls": PackedVector2Array(),
+		"holes": PackedVector2Array(),
+		"starts": PackedVector2Array(),
+		"pockets": [],
+	}
+
+
+## The same item set moved by `offset` (pocket specs are copied, never shared).
+static func offset_set(data: Dictionary, offset: Vector2) -> Dictionary:
+	var moved := empty_set()
+	for key: String in ["pins", "walls", "holes", "starts"]:
+		var source: PackedVector2Array = data.get(key, PackedVector2Array())
+		var target: PackedVector2Array = moved[key]
+		for point in source:
+			target.append(point + offset)
+	for spec: PocketSpec in data.get("pockets", []):
+		(moved["pockets"] as Array).append(
+			PocketSpec.create(spec.position + offset, spec.width, spec.depth, spec.payout)
+		)
+	return moved
+
+
+## How many things an item set holds.
+static func set_size(data: Dictionary) -> int:
+	var total := (data.get("walls", PackedVector2Array()) as PackedVector2Array).size() / 2
+	for key: String in ["pins", "holes", "starts"]:
+		total += (data.get(key, PackedVector2Array()) as PackedVector2Array).size()
+	return total + (data.get("pockets", []) as Array).size()

@@ -1,0 +1,52 @@
+@tool
+extends RefCounted
+## Captures and restores a few fields of a BoardLevel, so an action can undo exactly what
+## it changed. Arrays are copied: Godot 4 passes packed arrays by reference, so a capture
+## that kept the board's own array would change along with it.
+##
+## Pockets are resources that other code (the dock, the inspector) may hold on to, so a
+## capture keeps the same PocketSpec objects and their values, and a restore puts both back.
+
+
+## The values of `fields` on `level`, ready for `restore()`.
+static func capture(level: BoardLevel, fields: PackedStringArray) -> Dictionary:
+	var snap := {}
+	for field in fields:
+		if field == "pockets":
+			var saved: Array = []
+			for spec: PocketSpec in level.pockets:
+				saved.append([spec, spec.position, spec.width, spec.depth, spec.payout])
+			snap[field] = saved
+		else:
+			snap[field] = _copy(level.get(field))
+	return snap
+
+
+## Puts every captured field back on `level`.
+static func restore(level: BoardLevel, snap: Dictionary) -> void:
+	for field: String in snap:
+		if field == "pockets":
+			var specs: Array[PocketSpec] = []
+			for entry: Array in snap[field]:
+				var spec: PocketSpec = entry[0]
+				spec.position = entry[1]
+				spec.width = entry[2]
+				spec.depth = entry[3]
+				spec.payout = entry[4]
+				specs.append(spec)
+			level.pockets = specs
+		else:
+			level.set(field, _copy(snap[field]))
+
+
+static func _copy(value: Variant) -> Variant:
+	match typeof(value):
+		TYPE_PACKED_VECTOR2_ARRAY:
+			return (value as PackedVector2Array).duplicate()
+		TYPE_PACKED_INT32_ARRAY:
+			return (value as PackedInt32Array).duplicate()
+		TYPE_PACKED_BYTE_ARRAY:
+			return (value as PackedByteArray).duplicate()
+		TYPE_ARRAY:
+			return (value as Array).duplicate()
+	return value

@@ -1,0 +1,144 @@
+@tool
+extends RefCounted
+## Static picking on a board: which item is under a point, which items are in a box, and
+## which ring / rail / goal handle is under a point. All in board pixels.
+
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+
+## Handle names are the BoardLevel fields they edit.
+const PACHINKO_HANDLES: Array[String] = [
+	"ring_center",
+	"ring_radius",
+	"rail_start_deg",
+	"rail_end_deg",
+	"rail_width",
+	"gutter_start_deg",
+	"gutter_end_deg",
+]
+const MAZE_HANDLES: Array[String] = ["goal_radius"]
+
+
+## The item under `point` (within `tolerance` px of its shape), nearest first; NONE if
+## nothing is there. A pocket's rim pins pick the pocket.
+static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2i:
+	var best := Items.NONE
+	var best_distance := INF
+	for i in level.pins.size():
+		var gap := level.pins[i].distance_to(point) - level.pin_radius
+		if gap <= tolerance and gap < best_distance:
+			best_distance = gap
+			var owner := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
+			best = Items.make(Items.Kind.POCKET, owner) if owner >= 0 else Vector2i(0, i)
+	for i in level.pockets.size():
+		if _pocket_rect(level.pockets[i]).grow(tolerance).has_point(point):
+			var gap := level.pockets[i].position.distance_to(point) * 0.5
+			if gap < best_distance:
+				best_distance = gap
+				best = Items.make(Items.Kind.POCKET, i)
+	for i in level.holes.size():
+		var gap := level.holes[i].distance_to(point) - level.hole_radius
+		if gap <= tolerance and gap < best_distance:
+			best_distance = gap
+			best = Items.make(Items.Kind.HOLE, i)
+	for i in level.ball_starts.size():
+		var gap := level.ball_starts[i].distance_to(point) - level.ball_radius
+		if gap <= tolerance and gap < best_distance:
+			best_distance = gap
+			best = Items.make(Items.Kind.START, i)
+	for i in range(0, level.walls.size() - 1, 2):
+		var closest := Geometry2D.get_closest_point_to_segment(
+			point, level.walls[i], level.walls[i + 1]
+		)
+		var gap := closest.distance_to(point) - level.wall_width * 0.5
+		if gap <= tolerance and gap < best_distance:
+			best_distance = gap
+			best = Items.make(Items.Kind.WALL, i / 2)
+	if level.is_maze() and best == Items.NONE:
+		# The goal is big: only its middle picks it, so walls and starts inside stay reachable.
+		if level.goal_center.distance_to(point) <= maxf(tolerance, level.goal_radius * 0.35):
+			best = Items.make(Items.Kind.GOAL, 0)
+	return best
+
+
+## Every item whose representative point lies inside `rect` (a pocket once, however many of
+## its pins are inside; a wall when both its ends are inside).
+static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:
+	var box := rect.abs()
+	var found: Array[Vector2i] = []
+	for i in level.pins.size():
+		if box.has_point(level.pins[i]):
+			var owner := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
+			var item := Items.make(Items.Kind.POCKET, owner) if owner >= 0 else Vector2i(0, i)
+			if not found.has(item):
+				found.append(item)
+	for i in level.pockets.size():
+		var item := Items.make(Items.Kind.POCKET, i)
+		if box.has_point(level.pockets[i].position) and not found.has(item):
+			found.append(item)
+	for i in range(0, level.walls.size() - 1, 2):
+		if box.has_point(level.walls[i]) and box.has_point(level.walls[i + 1]):
+			found.append(Items.make(Items.Kind.WALL, i / 2))
+	for i in level.holes.size():
+		if box.has_point(level.holes[i]):
+			found.append(Items.make(Items.Kind.HOLE, i))
+	for i in level.ball_starts.size():
+		if box.has_point(level.ball_starts[i]):
+			found.append(Items.make(Items.Kind.START, i))
+	if level.is_maze() and box.has_point(level.goal_center):
+		found.append(Items.make(Items.Kind.GOAL, 0))
+	return found
+
+
+## Where each handle is drawn: handle name -> board point.
+static func handle_points(level: BoardLevel) -> Dictionary:
+	var points := {}
+	if level.is_maze():
+		points["goal_radius"] = level.goal_center + Vector2(level.goal_radius, 0)
+		return points
+	var c := level.ring_center
+	var r := level.ring_radius
+	points["ring_center"] = c
+	points["ring_radius"] = c + Vector2.from_angle(PI * 1.25) * r
+	points["rail_start_deg"] = c + Vector2.from_angle(deg_to_rad(level.rail_start_deg)) * r
+	points["rail_end_deg"] = c + Vector2.from_angle(deg_to_rad(level.rail_end_deg)) * r
+	var middle := deg_to_rad((level.rail_start_deg + level.rail_end_deg) * 0.5)
+	points["rail_width"] = c + Vector2.from_angle(middle) * (r - level.rail_width)
+	points["gutter_start_deg"] = c + Vector2.from_angle(deg_to_rad(level.gutter_start_deg)) * r
+	points["gutter_end_deg"] = c + Vector2.from_angle(deg_to_rad(level.gutter_end_deg)) * r
+	return points
+
+
+## The handle under `point`, or "" when none is within `tolerance`.
+static func pick_handle(level: BoardLevel, point: Vector2, tolerance: float) -> String:
+	var points := handle_points(level)
+	var best := ""
+	var best_distance := tolerance
+	for handle: String in points:
+		var distance := (points[handle] as Vector2).distance_to(point)
+		if distance <= best_distance:
+			best_distance = distance
+			best = handle
+	return best
+
+
+## The value a handle takes when dragged to `point`. Angles stay within half a turn of
+## their old value so a rail that crosses 0 degrees does not jump by 360.
+static func handle_value(level: BoardLevel, handle: String, point: Vector2) -> Variant:
+	match handle:
+		"ring_center":
+			return point
+		"ring_radius":
+			return maxf(level.ring_center.distance_to(point), 1.0)
+		"rail_width":
+			var inner := level.ring_center.distance_to(point)
+			return clampf(level.ring_radius - inner, 1.0, level.ring_radius * 0.5)
+		"goal_radius":
+			return maxf(level.goal_center.distance_to(point), 1.0)
+	var old: float = level.get(handle)
+	var angle := rad_to_deg((point - level.ring_center).angle())
+	return old + wrapf(angle - old, -180.0, 180.0)
+
+
+## A pocket's body as a box: the mouth's width, from the mouth down to the special pin.
+static func _pocket_rect(spec: PocketSpec) -> Rect2:
+	return Rect2(spec.position - Vector2(spec.width * 0.5, 0), Vector2(spec.width, spec.depth))
