@@ -1,0 +1,295 @@
+extends RefCounted
+## The motion phase of a BallWorld step: each ball moves by its velocity plus its ball-ball
+## separation, in substeps, against the ring, the pins and the capsule walls of its grid
+## cell; then the sensors (holes, goals, zones) look at the path it took. Internal.
+##
+## One function on purpose: a GDScript call costs about as much as a contact test, so the
+## per-ball work stays in one flat loop with the geometry inline.
+
+const BallStore := preload("res://scripts/physics/ball_store.gd")
+const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const BallStep := preload("res://scripts/physics/ball_step.gd")
+
+const NO_CONTACT := 0
+const RING_KEY := BallStep.RING_KEY
+const EPS := BallStep.EPS
+
+
+## Moves every live ball one step of `dt` seconds and queues its events in b.events.
+static func move(
+	b: BallStore, g: StaticGeometry, t: PhysicsTuning, gravity: Vector2, dt: float
+) -> void:
+	var n: int = b.ids.size()
+	var pos: PackedVector2Array = b.pos
+	var vel: PackedVector2Array = b.vel
+	var rad: PackedFloat32Array = b.radius
+	var push: PackedVector2Array = b.push
+	var ids: PackedInt32Array = b.ids
+	var ca: PackedInt32Array = b.contact_a
+	var cb: PackedInt32Array = b.contact_b
+	var rest: PackedFloat32Array = b.rest
+	var ghits: PackedInt32Array = b.gutter_hits
+	var gtime: PackedFloat32Array = b.gutter_time
+	var gmask: PackedInt32Array = b.goal_mask
+	var zmask: PackedInt32Array = b.zone_mask
+	var ev: PackedInt32Array = b.events
+	var evs: PackedFloat32Array = b.event_speed
+
+	var pin_pos: PackedVector2Array = g.pin_pos
+	var pin_rad: PackedFloat32Array = g.pin_radius
+	var pin_special: PackedByteArray = g.pin_special
+	var pin_pocket: PackedInt32Array = g.pin_pocket
+	var pin_start: PackedInt32Array = g.pin_start
+	var zoned: bool = g.zoned
+	var pin_items: PackedInt32Array = g.pin_items if zoned else g.all_pins
+	var n_pins: int = pin_pos.size()
+	var wall_a: PackedVector2Array = g.wall_a
+	var wall_ab: PackedVector2Array = g.wall_ab
+	var wall_inv: PackedFloat32Array = g.wall_inv_len2
+	var wall_rad: PackedFloat32Array = g.wall_radius
+	var wall_start: PackedInt32Array = g.wall_start
+	var wall_items: PackedInt32Array = g.wall_items
+	var ox: float = g.origin.x
+	var oy: float = g.origin.y
+	var inv: float = g.inv_cell
+	var cols: int = g.cols
+	var rows: int = g.rows
+	var has_ring: bool = g.has_ring
+	var rc: Vector2 = g.ring_center
+	var ring_r: float = g.ring_radius
+	var has_gutter: bool = g.has_gutter
+	var hole_pos: PackedVector2Array = g.hole_pos
+	var hole_rad: PackedFloat32Array = g.hole_radius
+	var goal_pos: PackedVector2Array = g.goal_pos
+	var goal_rad: PackedFloat32Array = g.goal_radius
+	var zone_pos: PackedVector2Array = g.zone_pos
+	var zone_rad: PackedFloat32Array = g.zone_radius
+	var n_holes: int = hole_pos.size()
+	var n_goals: int = goal_pos.size()
+	var n_zones: int = zone_pos.size()
+
+	var pin_e: float = t.restitution
+	var wall_e: float = t.wall_restitution
+	var keep_t: float = t.tangent_friction
+	var thr: float = t.bounce_threshold
+	var min_h: float = t.min_horizontal_speed
+	var rest2: float = t.rest_speed * t.rest_speed
+	var slide_time: float = t.gutter_slide_time
+	var min_feature: float = g.min_feature
+
+	for i: int in n:
+		var p: Vector2 = pos[i]
+		var p_start: Vector2 = p
+		var v: Vector2 = vel[i]
+		var r: float = rad[i]
+		var pu: Vector2 = push[i]
+		var pu_len: float = pu.length()
+		if pu_len > 0.5 * r:
+			pu *= 0.5 * r / pu_len
+		var prev_a: int = ca[i]
+		var prev_b: int = cb[i]
+		var cur_a: int = NO_CONTACT
+		var cur_b: int = NO_CONTACT
+		var max_travel: float = BallStep.TRAVEL_SHARE * (min_feature + r)
+		var travel: float = (v * dt + pu).length() + pu_len
+		var steps := 1
+		if travel > max_travel:
+			steps = mini(int(ceil(travel / max_travel)), BallStep.MAX_SUBSTEPS)
+		var h: float = dt / steps
+		var pu_step: Vector2 = pu / steps
+		var gone := false
+		var id: int = ids[i]
+		for _s: int in steps:
+			p += v * h + pu_step
+			# Ring: the ball's centre stays within ring_r - r of the centre.
+			if has_ring:
+				var d: Vector2 = p - rc
+				var lim: float = maxf(ring_r - r, 0.0)
+				var d2: float = d.x * d.x + d.y * d.y
+				if d2 > lim * lim:
+					var dist: float = sqrt(d2)
+					var nrm: Vector2 = -d / dist
+					p = rc + d * (lim / dist)
+					var vn: float = v.dot(nrm)
+					var in_gutter: bool = has_gutter and g.in_gutter(d)
+					if vn < 0.0:
+						var key: int = RING_KEY
+						var held: bool = (
+							key == prev_a or key == prev_b or key == cur_a or key == cur_b
+						)
+						if not held and -vn > thr:
+							v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
+							ev.append(BallStep.Ev.RING_HIT)
+							ev.append(id)
+							ev.append(0)
+							evs.append(-vn)
+							if in_gutter:
+								ghits[i] += 1
+						else:
+							var curv: float = h / lim if lim > EPS else 0.0
+							v = BallStep.slide(v, nrm, vn, gravity.dot(nrm) * dt, curv)
+						if cur_a == NO_CONTACT or cur_a == key:
+							cur_a = key
+						else:
+							cur_b = key
+					if in_gutter:
+						gtime[i] += h
+						if ghits[i] >= g.gutter_bounces or gtime[i] >= slide_time:
+							ev.append(BallStep.Ev.DRAINED)
+							ev.append(id)
+							ev.append(0)
+							evs.append(0.0)
+							gone = true
+							break
+			var cx: int = clampi(int((p.x - ox) * inv), 0, cols - 1)
+			var cy: int = clampi(int((p.y - oy) * inv), 0, rows - 1)
+			var c: int = cy * cols + cx
+			var k0 := 0
+			var k1: int = n_pins
+			if zoned:
+				k0 = pin_start[c]
+				k1 = pin_start[c + 1]
+			for k: int in range(k0, k1):
+				var pid: int = pin_items[k]
+				var q: Vector2 = pin_pos[pid]
+				var d: Vector2 = p - q
+				var lim: float = pin_rad[pid] + r
+				var d2: float = d.x * d.x + d.y * d.y
+				if d2 >= lim * lim:
+					continue
+				if pin_special[pid] != 0:
+					ev.append(BallStep.Ev.POCKETED)
+					ev.append(id)
+					ev.append(pin_pocket[pid])
+					evs.append(0.0)
+					gone = true
+					break
+				var dist: float = sqrt(d2)
+				var nrm := Vector2(0.0, -1.0)
+				if dist > EPS:
+					nrm = d / dist
+				p = q + nrm * lim
+				var vn: float = v.dot(nrm)
+				if vn < 0.0:
+					var key: int = pid + 1
+					var held: bool = key == prev_a or key == prev_b or key == cur_a or key == cur_b
+					if not held and -vn > thr:
+						v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
+						ev.append(BallStep.Ev.PIN_HIT)
+						ev.append(id)
+						ev.append(pid)
+						evs.append(-vn)
+					else:
+						v = BallStep.slide(v, nrm, vn, gravity.dot(nrm) * dt, h / lim)
+					if cur_a == NO_CONTACT or cur_a == key:
+						cur_a = key
+					else:
+						cur_b = key
+				if min_h > 0.0 and absf(v.x) < min_h:
+					v.x = min_h if v.x >= 0.0 else -min_h
+			if gone:
+				break
+			cx = clampi(int((p.x - ox) * inv), 0, cols - 1)
+			cy = clampi(int((p.y - oy) * inv), 0, rows - 1)
+			c = cy * cols + cx
+			for k: int in range(wall_start[c], wall_start[c + 1]):
+				var wid: int = wall_items[k]
+				var a: Vector2 = wall_a[wid]
+				var ab: Vector2 = wall_ab[wid]
+				var s: float = clampf((p - a).dot(ab) * wall_inv[wid], 0.0, 1.0)
+				var q: Vector2 = a + ab * s
+				var d: Vector2 = p - q
+				var lim: float = wall_rad[wid] + r
+				var d2: float = d.x * d.x + d.y * d.y
+				if d2 >= lim * lim:
+					continue
+				var dist: float = sqrt(d2)
+				var nrm := Vector2(0.0, -1.0)
+				if dist > EPS:
+					nrm = d / dist
+				elif wall_inv[wid] > 0.0:
+					nrm = Vector2(ab.y, -ab.x).normalized()
+				p = q + nrm * lim
+				var vn: float = v.dot(nrm)
+				if vn < 0.0:
+					var key: int = -(wid + 1)
+					var held: bool = key == prev_a or key == prev_b or key == cur_a or key == cur_b
+					if not held and -vn > thr:
+						v = BallStep.bounce(v, nrm, vn, wall_e, keep_t)
+						ev.append(BallStep.Ev.WALL_HIT)
+						ev.append(id)
+						ev.append(wid)
+						evs.append(-vn)
+					else:
+						# Only the round caps curve; the flat sides do not.
+						var curv: float = h / lim if s <= 0.0 or s >= 1.0 else 0.0
+						v = BallStep.slide(v, nrm, vn, gravity.dot(nrm) * dt, curv)
+					if cur_a == NO_CONTACT or cur_a == key:
+						cur_a = key
+					else:
+						cur_b = key
+		ca[i] = cur_a
+		cb[i] = cur_b
+		pos[i] = p
+		vel[i] = v
+		if gone:
+			b.kill(i)
+			continue
+		if v.length_squared() < rest2:
+			rest[i] += dt
+		else:
+			rest[i] = 0.0
+		# Holes: the centre came within the hole radius anywhere along this step's path.
+		for k: int in n_holes:
+			var hp: Vector2 = hole_pos[k]
+			var q: Vector2 = Geometry2D.get_closest_point_to_segment(hp, p_start, p)
+			var hr: float = hole_rad[k]
+			if q.distance_squared_to(hp) <= hr * hr:
+				ev.append(BallStep.Ev.HOLE)
+				ev.append(id)
+				ev.append(k)
+				evs.append(0.0)
+				b.kill(i)
+				gone = true
+				break
+		if gone:
+			continue
+		if n_goals > 0:
+			var mask: int = gmask[i]
+			for k: int in n_goals:
+				var gr: float = goal_rad[k]
+				var inside: bool = p.distance_squared_to(goal_pos[k]) <= gr * gr
+				var bit: int = 1 << k
+				if inside != ((mask & bit) != 0):
+					mask ^= bit
+					ev.append(BallStep.Ev.GOAL if inside else BallStep.Ev.GOAL_LEFT)
+					ev.append(id)
+					ev.append(k)
+					evs.append(0.0)
+			gmask[i] = mask
+		if n_zones > 0:
+			var mask: int = zmask[i]
+			for k: int in n_zones:
+				var zr: float = zone_rad[k]
+				var inside: bool = p.distance_squared_to(zone_pos[k]) <= zr * zr
+				var bit: int = 1 << k
+				if inside != ((mask & bit) != 0):
+					mask ^= bit
+					if inside:
+						ev.append(BallStep.Ev.ZONE)
+						ev.append(id)
+						ev.append(k)
+						evs.append(0.0)
+			zmask[i] = mask
+
+	b.pos = pos
+	b.vel = vel
+	b.contact_a = ca
+	b.contact_b = cb
+	b.rest = rest
+	b.gutter_hits = ghits
+	b.gutter_time = gtime
+	b.goal_mask = gmask
+	b.zone_mask = zmask
+	b.events = ev
+	b.event_speed = evs

@@ -1,0 +1,121 @@
+extends RefCounted
+## The balls of a BallWorld as a struct of arrays (one Packed array per field, one slot per
+## live ball, dense, in spawn order). Internal to scripts/physics.
+##
+## Ids are stable and never reused; `index_of` maps an id to its slot (-1 when gone).
+## Removal during a step only clears `alive`; `compact()` closes the gaps afterwards,
+## keeping order, so the same inputs always give the same layout.
+
+## No static contact remembered.
+const NO_CONTACT := 0
+
+var pos := PackedVector2Array()
+var vel := PackedVector2Array()
+var radius := PackedFloat32Array()
+var ids := PackedInt32Array()
+var alive := PackedByteArray()
+## Seconds the ball's speed has stayed under the tuning's rest speed.
+var rest := PackedFloat32Array()
+## Gutter bounces so far, and seconds of sliding gutter contact.
+var gutter_hits := PackedInt32Array()
+var gutter_time := PackedFloat32Array()
+## Bit g set while the ball's centre is inside goal g (zones likewise).
+var goal_mask := PackedInt32Array()
+var zone_mask := PackedInt32Array()
+## Keys of the static shapes touched last step (two slots), so a persisting contact slides.
+var contact_a := PackedInt32Array()
+var contact_b := PackedInt32Array()
+## Extra displacement for this step from ball-ball separation (swept with the motion).
+var push := PackedVector2Array()
+var index_of := PackedInt32Array()
+## Events of the current step, in order: (kind, ball id, index) triples and their speeds.
+var events := PackedInt32Array()
+var event_speed := PackedFloat32Array()
+## Scratch arrays of the ball-ball broad phase (reused every step).
+var sort_start := PackedInt32Array()
+var sort_order := PackedInt32Array()
+var sort_cell := PackedInt32Array()
+var max_radius := 0.0
+var removed_pending := 0
+
+
+func count() -> int:
+	return ids.size()
+
+
+func add(p: Vector2, v: Vector2, r: float) -> int:
+	var id: int = index_of.size()
+	index_of.append(ids.size())
+	pos.append(p)
+	vel.append(v)
+	radius.append(r)
+	ids.append(id)
+	alive.append(1)
+	rest.append(0.0)
+	gutter_hits.append(0)
+	gutter_time.append(0.0)
+	goal_mask.append(0)
+	zone_mask.append(0)
+	contact_a.append(NO_CONTACT)
+	contact_b.append(NO_CONTACT)
+	push.append(Vector2.ZERO)
+	max_radius = maxf(max_radius, r)
+	return id
+
+
+## Index of a live ball by id, or -1.
+func find(id: int) -> int:
+	if id < 0 or id >= index_of.size():
+		return -1
+	var i: int = index_of[id]
+	if i < 0 or alive[i] == 0:
+		return -1
+	return i
+
+
+## Marks slot i dead; compact() removes it.
+func kill(i: int) -> void:
+	if alive[i] != 0:
+		alive[i] = 0
+		removed_pending += 1
+
+
+## Closes the gaps left by dead balls, keeping spawn order.
+func compact() -> void:
+	if removed_pending == 0:
+		return
+	var n: int = ids.size()
+	var w := 0
+	for i: int in n:
+		if alive[i] == 0:
+			index_of[ids[i]] = -1
+			continue
+		if w != i:
+			pos[w] = pos[i]
+			vel[w] = vel[i]
+			radius[w] = radius[i]
+			ids[w] = ids[i]
+			alive[w] = 1
+			rest[w] = rest[i]
+			gutter_hits[w] = gutter_hits[i]
+			gutter_time[w] = gutter_time[i]
+			goal_mask[w] = goal_mask[i]
+			zone_mask[w] = zone_mask[i]
+			contact_a[w] = contact_a[i]
+			contact_b[w] = contact_b[i]
+			index_of[ids[w]] = w
+		w += 1
+	pos.resize(w)
+	vel.resize(w)
+	push.resize(w)
+	radius.resize(w)
+	ids.resize(w)
+	alive.resize(w)
+	rest.resize(w)
+	gutter_hits.resize(w)
+	gutter_time.resize(w)
+	goal_mask.resize(w)
+	zone_mask.resize(w)
+	contact_a.resize(w)
+	contact_b.resize(w)
+	removed_pending = 0

@@ -1,0 +1,381 @@
+# gdlint: disable=max-public-methods
+# The contract in docs/architecture.md is one façade; its getters are small on purpose.
+class_name BallWorld
+extends RefCounted
+## Fixed-step ball physics in GDScript, with no Node and no built-in physics: circles
+## (balls) against pins, capsule walls, a ring border and each other, plus sensors.
+##
+## Add the static shapes, call build_grid() (adding later rebuilds lazily), spawn balls,
+## then call advance(delta) every frame (or step(dt) directly). Events come out as signals
+## at the end of each step, in the order they happened within it; balls removed by an event
+## (pocketed, drained, fell in a hole) are already gone when the signal arrives.
+
+## A ball bounced off a pin (for sound); impact_speed is the normal speed in px/s.
+signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
+## A ball bounced off a capsule wall.
+signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
+## A ball bounced off the ring border.
+signal ring_hit(ball_id: int, impact_speed: float)
+## A ball touched a special pin (a pocket's bottom pin); it has been removed.
+signal ball_pocketed(ball_id: int, pocket_id: int)
+## A ball used up its gutter bounces (or rolled in the gutter); it has been removed.
+signal ball_drained(ball_id: int)
+## A ball's centre came within a hole's radius; it has been removed.
+signal ball_fell_in_hole(ball_id: int, hole_index: int)
+## A ball's centre moved inside a goal's radius (the ball stays).
+signal ball_reached_goal(ball_id: int, goal_index: int)
+## A ball's centre moved back out of a goal's radius.
+signal ball_left_goal(ball_id: int, goal_index: int)
+## A ball's centre moved inside a zone's radius (the ball stays).
+signal ball_entered_zone(ball_id: int, zone_index: int)
+
+const BallStore := preload("res://scripts/physics/ball_store.gd")
+const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const BallStep := preload("res://scripts/physics/ball_step.gd")
+const BallMotion := preload("res://scripts/physics/ball_motion.gd")
+
+## advance() runs at most this many steps per call, then drops the backlog, so a long
+## hitch slows the game down instead of freezing it.
+const MAX_STEPS_PER_ADVANCE := 8
+## Goals and zones are tracked per ball in one int bit mask each.
+const MAX_SENSORS := 31
+## Balls smaller than this still get a grid sized for it (px).
+const MIN_GRID_BALL_RADIUS := 5.0
+const SENSOR_HOLE := 0
+const SENSOR_GOAL := 1
+const SENSOR_ZONE := 2
+
+## The constants in use (restitution, caps, fixed_hz, ...).
+var tuning: PhysicsTuning
+## Gravity in px/s²; may change every frame (the maze tilt writes it).
+var gravity: Vector2
+## Rolling friction per axis in px/s² (only slows, never reverses). set_tilt() writes it.
+var rolling_friction: Vector2
+## Steps run so far.
+var step_count := 0
+## False tests every ball against every pin (the benchmark's "no zoning" baseline).
+var use_zoning := true:
+	set(value):
+		use_zoning = value
+		_geo.dirty = true
+
+var _balls := BallStore.new()
+var _geo := StaticGeometry.new()
+var _accumulator := 0.0
+
+
+func _init(p_tuning: PhysicsTuning = null) -> void:
+	tuning = p_tuning if p_tuning != null else PhysicsTuning.pachinko_defaults()
+	gravity = tuning.gravity
+	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
+
+
+## Adds a pin (a fixed circle); `pocket` tags it with a pocket id, `special` makes a ball
+## that touches it pocketed. Returns the pin index, or -1 on bad input.
+func add_pin(pos: Vector2, radius: float, pocket := -1, special := false) -> int:
+	if not pos.is_finite() or not is_finite(radius) or radius < 0.0:
+		push_error(
+			(
+				"BallWorld.add_pin: needs a finite position and radius >= 0 (got %s, %s)"
+				% [pos, radius]
+			)
+		)
+		return -1
+	_geo.pin_pos.append(pos)
+	_geo.pin_radius.append(radius)
+	_geo.pin_pocket.append(pocket)
+	_geo.pin_special.append(1 if special else 0)
+	_geo.dirty = true
+	return _geo.pin_pos.size() - 1
+
+
+## Adds a capsule wall: the segment a-b grown by `radius`, with round caps. Returns its
+## index, or -1 on bad input. A zero-length wall is a round post.
+func add_wall(a: Vector2, b: Vector2, radius: float) -> int:
+	if not a.is_finite() or not b.is_finite() or not is_finite(radius) or radius < 0.0:
+		push_error(
+			(
+				"BallWorld.add_wall: needs finite ends and radius >= 0 (got %s, %s, %s)"
+				% [a, b, radius]
+			)
+		)
+		return -1
+	var ab: Vector2 = b - a
+	var len2: float = ab.length_squared()
+	_geo.wall_a.append(a)
+	_geo.wall_b.append(b)
+	_geo.wall_ab.append(ab)
+	_geo.wall_inv_len2.append(1.0 / len2 if len2 > 1e-12 else 0.0)
+	_geo.wall_radius.append(radius)
+	_geo.dirty = true
+	return _geo.wall_a.size() - 1
+
+
+## Sets the ring border: balls stay inside the circle.
+func set_ring(center: Vector2, radius: float) -> void:
+	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
+		push_error(
+			(
+				"BallWorld.set_ring: needs a finite centre and radius > 0 (got %s, %s)"
+				% [center, radius]
+			)
+		)
+		return
+	_geo.has_ring = true
+	_geo.ring_center = center
+	_geo.ring_radius = radius
+	_geo.dirty = true
+
+
+## Marks the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) as the
+## gutter: a ball is drained after `bounces` bounces there, or after rolling there for
+## tuning.gutter_slide_time seconds.
+func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
+	if not is_finite(from_deg) or not is_finite(to_deg) or bounces < 1:
+		push_error(
+			(
+				"BallWorld.set_gutter: needs finite angles and bounces >= 1 (got %s, %s, %d)"
+				% [from_deg, to_deg, bounces]
+			)
+		)
+		return
+	_geo.has_gutter = true
+	_geo.gutter_from = from_deg
+	_geo.gutter_to = to_deg
+	_geo.gutter_bounces = bounces
+
+
+## Adds a hole: a ball whose centre comes within `radius` falls in. Returns its index.
+func add_hole(center: Vector2, radius: float) -> int:
+	return _add_sensor(SENSOR_HOLE, center, radius)
+
+
+## Adds a goal: entering and leaving it are reported, the ball stays. Returns its index.
+func add_goal(center: Vector2, radius: float) -> int:
+	return _add_sensor(SENSOR_GOAL, center, radius)
+
+
+## Adds a generic sensor zone: entering it is reported. Returns its index.
+func add_zone(center: Vector2, radius: float) -> int:
+	return _add_sensor(SENSOR_ZONE, center, radius)
+
+
+## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
+func build_grid() -> void:
+	_geo.build(maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS), use_zoning)
+
+
+## Spawns a ball; returns its stable id, or -1 with an error for a radius <= 0 or
+## non-finite input.
+func spawn_ball(pos: Vector2, vel: Vector2, radius: float) -> int:
+	if not pos.is_finite() or not vel.is_finite() or not is_finite(radius) or radius <= 0.0:
+		push_error(
+			(
+				"BallWorld.spawn_ball: needs a finite position and velocity and radius > 0 (got %s, %s, %s)"
+				% [pos, vel, radius]
+			)
+		)
+		return -1
+	if radius > _geo.built_ball_radius:
+		_geo.dirty = true
+	return _balls.add(pos, vel, radius)
+
+
+## Removes a ball (no signal). Unknown ids are ignored.
+func remove_ball(id: int) -> void:
+	var i: int = _balls.find(id)
+	if i >= 0:
+		_balls.kill(i)
+		_balls.compact()
+
+
+## Removes every ball.
+func clear_balls() -> void:
+	for i: int in _balls.ids.size():
+		_balls.kill(i)
+	_balls.compact()
+
+
+func has_ball(id: int) -> bool:
+	return _balls.find(id) >= 0
+
+
+func ball_count() -> int:
+	return _balls.ids.size()
+
+
+func pin_count() -> int:
+	return _geo.pin_pos.size()
+
+
+func wall_count() -> int:
+	return _geo.wall_a.size()
+
+
+## Position of a ball, or Vector2.ZERO for an unknown id.
+func get_ball_position(id: int) -> Vector2:
+	var i: int = _balls.find(id)
+	return _balls.pos[i] if i >= 0 else Vector2.ZERO
+
+
+## Moves a ball (teleport: no sweep). Used by rules to reset or place balls.
+func set_ball_position(id: int, pos: Vector2) -> void:
+	var i: int = _balls.find(id)
+	if i >= 0 and pos.is_finite():
+		_balls.pos[i] = pos
+		_balls.rest[i] = 0.0
+
+
+## Velocity of a ball, or Vector2.ZERO for an unknown id.
+func get_ball_velocity(id: int) -> Vector2:
+	var i: int = _balls.find(id)
+	return _balls.vel[i] if i >= 0 else Vector2.ZERO
+
+
+func set_ball_velocity(id: int, v: Vector2) -> void:
+	var i: int = _balls.find(id)
+	if i < 0:
+		return
+	if not v.is_finite():
+		push_error("BallWorld.set_ball_velocity: velocity must be finite (got %s)" % v)
+		return
+	_balls.vel[i] = v
+	_balls.rest[i] = 0.0
+
+
+## Radius of a ball, or 0 for an unknown id.
+func get_ball_radius(id: int) -> float:
+	var i: int = _balls.find(id)
+	return _balls.radius[i] if i >= 0 else 0.0
+
+
+## Seconds the ball's speed has stayed below tuning.rest_speed (0 for an unknown id).
+func get_ball_rest_time(id: int) -> float:
+	var i: int = _balls.find(id)
+	return _balls.rest[i] if i >= 0 else 0.0
+
+
+## Positions of all balls, dense, in the same order as get_radii() and get_ids().
+func get_positions() -> PackedVector2Array:
+	return _balls.pos
+
+
+func get_velocities() -> PackedVector2Array:
+	return _balls.vel
+
+
+func get_radii() -> PackedFloat32Array:
+	return _balls.radius
+
+
+func get_ids() -> PackedInt32Array:
+	return _balls.ids
+
+
+## Sets gravity and rolling friction from a maze tilt in degrees (see MazeTilt), using
+## tuning.tilt_gravity and tuning.rolling_friction.
+func set_tilt(tilt_deg: Vector2) -> void:
+	gravity = MazeTilt.gravity(tilt_deg, tuning.tilt_gravity)
+	rolling_friction = MazeTilt.friction(tilt_deg, tuning.rolling_friction)
+
+
+## Runs one step of `dt` seconds, then emits its events in order.
+func step(dt: float) -> void:
+	if not is_finite(dt) or dt <= 0.0:
+		push_error("BallWorld.step: dt must be finite and > 0 (got %s)" % dt)
+		return
+	if not gravity.is_finite():
+		push_error("BallWorld.step: gravity must be finite (got %s); using zero" % gravity)
+		gravity = Vector2.ZERO
+	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
+		build_grid()
+	BallStep.apply_forces(_balls, gravity, rolling_friction, tuning.max_speed, dt)
+	BallStep.collide_balls(_balls, _geo, tuning.ball_restitution, tuning.bounce_threshold)
+	BallMotion.move(_balls, _geo, tuning, gravity, dt)
+	_balls.compact()
+	step_count += 1
+	_emit_events()
+
+
+## Feeds the accumulator and runs every whole step of 1 / tuning.fixed_hz it holds (at most
+## MAX_STEPS_PER_ADVANCE). Returns how many steps ran.
+func advance(delta: float) -> int:
+	if not is_finite(delta) or delta < 0.0:
+		push_error("BallWorld.advance: delta must be finite and >= 0 (got %s)" % delta)
+		return 0
+	var h: float = 1.0 / maxf(tuning.fixed_hz, 1.0)
+	_accumulator += delta
+	var ran := 0
+	while _accumulator >= h and ran < MAX_STEPS_PER_ADVANCE:
+		step(h)
+		_accumulator -= h
+		ran += 1
+	if ran == MAX_STEPS_PER_ADVANCE and _accumulator >= h:
+		_accumulator = 0.0
+	return ran
+
+
+## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.
+func state_hash() -> int:
+	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
+
+
+func _add_sensor(kind: int, center: Vector2, radius: float) -> int:
+	var what: String = ["add_hole", "add_goal", "add_zone"][kind]
+	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
+		push_error(
+			(
+				"BallWorld.%s: needs a finite centre and radius > 0 (got %s, %s)"
+				% [what, center, radius]
+			)
+		)
+		return -1
+	if kind == SENSOR_HOLE:
+		_geo.hole_pos.append(center)
+		_geo.hole_radius.append(radius)
+		return _geo.hole_pos.size() - 1
+	if kind == SENSOR_GOAL:
+		if _geo.goal_pos.size() >= MAX_SENSORS:
+			push_error("BallWorld.add_goal: at most %d goals per world" % MAX_SENSORS)
+			return -1
+		_geo.goal_pos.append(center)
+		_geo.goal_radius.append(radius)
+		return _geo.goal_pos.size() - 1
+	if _geo.zone_pos.size() >= MAX_SENSORS:
+		push_error("BallWorld.add_zone: at most %d zones per world" % MAX_SENSORS)
+		return -1
+	_geo.zone_pos.append(center)
+	_geo.zone_radius.append(radius)
+	return _geo.zone_pos.size() - 1
+
+
+func _emit_events() -> void:
+	var ev: PackedInt32Array = _balls.events
+	var evs: PackedFloat32Array = _balls.event_speed
+	if ev.is_empty():
+		return
+	_balls.events = PackedInt32Array()
+	_balls.event_speed = PackedFloat32Array()
+	for e: int in evs.size():
+		var kind: int = ev[e * 3]
+		var id: int = ev[e * 3 + 1]
+		var index: int = ev[e * 3 + 2]
+		match kind:
+			BallStep.Ev.PIN_HIT:
+				pin_hit.emit(id, index, evs[e])
+			BallStep.Ev.WALL_HIT:
+				wall_hit.emit(id, index, evs[e])
+			BallStep.Ev.RING_HIT:
+				ring_hit.emit(id, evs[e])
+			BallStep.Ev.POCKETED:
+				ball_pocketed.emit(id, index)
+			BallStep.Ev.DRAINED:
+				ball_drained.emit(id)
+			BallStep.Ev.HOLE:
+				ball_fell_in_hole.emit(id, index)
+			BallStep.Ev.GOAL:
+				ball_reached_goal.emit(id, index)
+			BallStep.Ev.GOAL_LEFT:
+				ball_left_goal.emit(id, index)
+			BallStep.Ev.ZONE:
+				ball_entered_zone.emit(id, index)

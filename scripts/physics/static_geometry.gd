@@ -1,0 +1,219 @@
+extends RefCounted
+## Static shapes of a BallWorld (pins, capsule walls, ring, sensors) and the uniform grid
+## they are binned into ("pin zoning"). Internal to scripts/physics: BallWorld owns one.
+##
+## A grid cell lists every pin and wall whose shape, grown by the largest ball radius and a
+## margin, touches the cell; so a ball only tests the shapes of the one cell its centre is in.
+## Lists are stored flat (CSR): items of cell c are items[start[c] .. start[c + 1]).
+
+## Extra growth of binned shapes, px.
+const BIN_MARGIN := 1.0
+## Smallest cell size, px: small cells duplicate long walls into many lists.
+const MIN_CELL := 16.0
+
+var pin_pos := PackedVector2Array()
+var pin_radius := PackedFloat32Array()
+var pin_pocket := PackedInt32Array()
+var pin_special := PackedByteArray()
+
+var wall_a := PackedVector2Array()
+var wall_b := PackedVector2Array()
+var wall_radius := PackedFloat32Array()
+## b - a, and 1 / |b - a|² (0 for a zero-length wall, which acts as a round pin).
+var wall_ab := PackedVector2Array()
+var wall_inv_len2 := PackedFloat32Array()
+
+var has_ring := false
+var ring_center := Vector2.ZERO
+var ring_radius := 0.0
+
+var has_gutter := false
+var gutter_from := 0.0
+var gutter_to := 0.0
+var gutter_bounces := 1
+
+var hole_pos := PackedVector2Array()
+var hole_radius := PackedFloat32Array()
+var goal_pos := PackedVector2Array()
+var goal_radius := PackedFloat32Array()
+var zone_pos := PackedVector2Array()
+var zone_radius := PackedFloat32Array()
+
+## Grid: origin, cell size, columns, rows; the flat cell lists.
+var origin := Vector2.ZERO
+var cell := MIN_CELL
+var inv_cell := 1.0 / MIN_CELL
+var cols := 1
+var rows := 1
+var pin_start := PackedInt32Array()
+var pin_items := PackedInt32Array()
+var wall_start := PackedInt32Array()
+var wall_items := PackedInt32Array()
+## Smallest pin or wall radius (the thinnest feature a ball must not tunnel through).
+var min_feature := 0.0
+## The ball radius the grid was built for; a larger ball forces a rebuild.
+var built_ball_radius := 0.0
+## False when every ball tests every pin (`all_pins`), the benchmark's brute-force baseline.
+var zoned := true
+var all_pins := PackedInt32Array()
+var dirty := true
+
+
+## Bins every pin and wall for balls up to `ball_radius`.
+func build(ball_radius: float, use_zoning := true) -> void:
+	built_ball_radius = ball_radius
+	zoned = use_zoning
+	all_pins.resize(pin_pos.size())
+	for i: int in pin_pos.size():
+		all_pins[i] = i
+	var grow: float = ball_radius + BIN_MARGIN
+	var max_pin := 0.0
+	min_feature = INF
+	for r: float in pin_radius:
+		max_pin = maxf(max_pin, r)
+		min_feature = minf(min_feature, r)
+	for r: float in wall_radius:
+		min_feature = minf(min_feature, r)
+	if min_feature == INF:
+		min_feature = 0.0
+	cell = maxf(MIN_CELL, 2.0 * ball_radius + 2.0)
+	inv_cell = 1.0 / cell
+	var box := _bounds()
+	var pad: float = grow + max_pin + cell
+	origin = box.position - Vector2(pad, pad)
+	cols = maxi(1, int(ceil((box.size.x + 2.0 * pad) * inv_cell)))
+	rows = maxi(1, int(ceil((box.size.y + 2.0 * pad) * inv_cell)))
+	_bin_pins(grow)
+	_bin_walls(grow)
+	dirty = false
+
+
+## Index of the cell holding `p`, clamped to the grid.
+func cell_of(p: Vector2) -> int:
+	var cx: int = clampi(int((p.x - origin.x) * inv_cell), 0, cols - 1)
+	var cy: int = clampi(int((p.y - origin.y) * inv_cell), 0, rows - 1)
+	return cy * cols + cx
+
+
+func _bounds() -> Rect2:
+	var have := false
+	var box := Rect2()
+	var pts := PackedVector2Array()
+	pts.append_array(pin_pos)
+	pts.append_array(wall_a)
+	pts.append_array(wall_b)
+	pts.append_array(hole_pos)
+	pts.append_array(goal_pos)
+	pts.append_array(zone_pos)
+	if has_ring:
+		pts.append(ring_center - Vector2(ring_radius, ring_radius))
+		pts.append(ring_center + Vector2(ring_radius, ring_radius))
+	for p: Vector2 in pts:
+		if have:
+			box = box.expand(p)
+		else:
+			box = Rect2(p, Vector2.ZERO)
+			have = true
+	var max_wall := 0.0
+	for r: float in wall_radius:
+		max_wall = maxf(max_wall, r)
+	return box.grow(max_wall)
+
+
+func _bin_pins(grow: float) -> void:
+	var n_cells: int = cols * rows
+	var counts := PackedInt32Array()
+	counts.resize(n_cells + 1)
+	counts.fill(0)
+	# Two passes (count, then fill) over the same cell ranges keep the lists flat.
+	for pass_i: int in 2:
+		var fill := PackedInt32Array()
+		if pass_i == 1:
+			pin_start = PackedInt32Array()
+			pin_start.resize(n_cells + 1)
+			var run := 0
+			for c: int in n_cells:
+				pin_start[c] = run
+				run += counts[c]
+			pin_start[n_cells] = run
+			pin_items = PackedInt32Array()
+			pin_items.resize(run)
+			fill = pin_start.duplicate()
+		for i: int in pin_pos.size():
+			var p: Vector2 = pin_pos[i]
+			var reach: float = pin_radius[i] + grow
+			var x0: int = clampi(int(floor((p.x - reach - origin.x) * inv_cell)), 0, cols - 1)
+			var x1: int = clampi(int(floor((p.x + reach - origin.x) * inv_cell)), 0, cols - 1)
+			var y0: int = clampi(int(floor((p.y - reach - origin.y) * inv_cell)), 0, rows - 1)
+			var y1: int = clampi(int(floor((p.y + reach - origin.y) * inv_cell)), 0, rows - 1)
+			for cy: int in range(y0, y1 + 1):
+				for cx: int in range(x0, x1 + 1):
+					var lo := Vector2(origin.x + cx * cell, origin.y + cy * cell)
+					var q := Vector2(clampf(p.x, lo.x, lo.x + cell), clampf(p.y, lo.y, lo.y + cell))
+					if q.distance_squared_to(p) > reach * reach:
+						continue
+					var c: int = cy * cols + cx
+					if pass_i == 0:
+						counts[c] += 1
+					else:
+						pin_items[fill[c]] = i
+						fill[c] += 1
+
+
+func _bin_walls(grow: float) -> void:
+	var n_cells: int = cols * rows
+	var counts := PackedInt32Array()
+	counts.resize(n_cells + 1)
+	counts.fill(0)
+	var half_diag: float = cell * 0.7072
+	for pass_i: int in 2:
+		var fill := PackedInt32Array()
+		if pass_i == 1:
+			wall_start = PackedInt32Array()
+			wall_start.resize(n_cells + 1)
+			var run := 0
+			for c: int in n_cells:
+				wall_start[c] = run
+				run += counts[c]
+			wall_start[n_cells] = run
+			wall_items = PackedInt32Array()
+			wall_items.resize(run)
+			fill = wall_start.duplicate()
+		for i: int in wall_a.size():
+			var a: Vector2 = wall_a[i]
+			var b: Vector2 = wall_b[i]
+			var reach: float = wall_radius[i] + grow
+			var x0: int = clampi(
+				int(floor((minf(a.x, b.x) - reach - origin.x) * inv_cell)), 0, cols - 1
+			)
+			var x1: int = clampi(
+				int(floor((maxf(a.x, b.x) + reach - origin.x) * inv_cell)), 0, cols - 1
+			)
+			var y0: int = clampi(
+				int(floor((minf(a.y, b.y) - reach - origin.y) * inv_cell)), 0, rows - 1
+			)
+			var y1: int = clampi(
+				int(floor((maxf(a.y, b.y) + reach - origin.y) * inv_cell)), 0, rows - 1
+			)
+			for cy: int in range(y0, y1 + 1):
+				for cx: int in range(x0, x1 + 1):
+					var mid := Vector2(origin.x + (cx + 0.5) * cell, origin.y + (cy + 0.5) * cell)
+					var q: Vector2 = Geometry2D.get_closest_point_to_segment(mid, a, b)
+					var lim: float = reach + half_diag
+					if q.distance_squared_to(mid) > lim * lim:
+						continue
+					var c: int = cy * cols + cx
+					if pass_i == 0:
+						counts[c] += 1
+					else:
+						wall_items[fill[c]] = i
+						fill[c] += 1
+
+
+## True when the direction `d` from the ring centre lies in the gutter arc (degrees, y down,
+## from gutter_from clockwise on screen to gutter_to).
+func in_gutter(d: Vector2) -> bool:
+	var span: float = fposmod(gutter_to - gutter_from, 360.0)
+	if span == 0.0 and gutter_to != gutter_from:
+		span = 360.0
+	return fposmod(rad_to_deg(atan2(d.y, d.x)) - gutter_from, 360.0) <= span
