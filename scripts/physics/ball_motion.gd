@@ -117,7 +117,13 @@ static func move(
 						var held: bool = (
 							key == prev_a or key == prev_b or key == cur_a or key == cur_b
 						)
-						if not held and -vn > thr:
+						var gn_dt: float = gravity.dot(nrm) * dt
+						if not held and minf(gn_dt, 0.0) - vn > thr:
+							var back: Vector2 = d - v * BallStep.back_off(d, v, lim, h, true)
+							if back.length_squared() > EPS:
+								nrm = -back.normalized()
+							p = rc - nrm * lim
+							vn = minf(v.dot(nrm), 0.0)
 							v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
 							ev.append(BallStep.Ev.RING_HIT)
 							ev.append(id)
@@ -127,7 +133,7 @@ static func move(
 								ghits[i] += 1
 						else:
 							var curv: float = h / lim if lim > EPS else 0.0
-							v = BallStep.slide(v, nrm, vn, gravity.dot(nrm) * dt, curv)
+							v = BallStep.slide(v, nrm, vn, gn_dt, curv)
 						if cur_a == NO_CONTACT or cur_a == key:
 							cur_a = key
 						else:
@@ -173,14 +179,20 @@ static func move(
 				if vn < 0.0:
 					var key: int = pid + 1
 					var held: bool = key == prev_a or key == prev_b or key == cur_a or key == cur_b
-					if not held and -vn > thr:
+					var gn_dt: float = gravity.dot(nrm) * dt
+					if not held and minf(gn_dt, 0.0) - vn > thr:
+						var back: Vector2 = d - v * BallStep.back_off(d, v, lim, h, false)
+						if back.length_squared() > EPS:
+							nrm = back.normalized()
+						p = q + nrm * lim
+						vn = minf(v.dot(nrm), 0.0)
 						v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
 						ev.append(BallStep.Ev.PIN_HIT)
 						ev.append(id)
 						ev.append(pid)
 						evs.append(-vn)
 					else:
-						v = BallStep.slide(v, nrm, vn, gravity.dot(nrm) * dt, h / lim)
+						v = BallStep.slide(v, nrm, vn, gn_dt, h / lim)
 					if cur_a == NO_CONTACT or cur_a == key:
 						cur_a = key
 					else:
@@ -192,38 +204,66 @@ static func move(
 			cx = clampi(int((p.x - ox) * inv), 0, cols - 1)
 			cy = clampi(int((p.y - oy) * inv), 0, rows - 1)
 			c = cy * cols + cx
-			for k: int in range(wall_start[c], wall_start[c + 1]):
-				var wid: int = wall_items[k]
-				var a: Vector2 = wall_a[wid]
-				var ab: Vector2 = wall_ab[wid]
-				var s: float = clampf((p - a).dot(ab) * wall_inv[wid], 0.0, 1.0)
-				var q: Vector2 = a + ab * s
-				var d: Vector2 = p - q
-				var lim: float = wall_rad[wid] + r
-				var d2: float = d.x * d.x + d.y * d.y
-				if d2 >= lim * lim:
-					continue
-				var dist: float = sqrt(d2)
+			# Deepest contact first, then again: at a joint the flat side of one wall is
+			# deeper than the neighbour's cap, so the cap never adds a ghost bump.
+			for _pass: int in 3:
+				var best := -1
+				var best_d2 := 0.0
+				var best_lim := 0.0
+				var best_depth := 0.0
+				var best_s := 0.0
+				var best_q := Vector2.ZERO
+				for k: int in range(wall_start[c], wall_start[c + 1]):
+					var wid: int = wall_items[k]
+					var a: Vector2 = wall_a[wid]
+					var ab: Vector2 = wall_ab[wid]
+					var s: float = clampf((p - a).dot(ab) * wall_inv[wid], 0.0, 1.0)
+					var q: Vector2 = a + ab * s
+					var d: Vector2 = p - q
+					var lim: float = wall_rad[wid] + r
+					var d2: float = d.x * d.x + d.y * d.y
+					if d2 >= lim * lim:
+						continue
+					var depth: float = lim - sqrt(d2)
+					if depth > best_depth or best < 0:
+						best = wid
+						best_depth = depth
+						best_d2 = d2
+						best_lim = lim
+						best_s = s
+						best_q = q
+				if best < 0:
+					break
+				var d: Vector2 = p - best_q
+				var lim: float = best_lim
 				var nrm := Vector2(0.0, -1.0)
-				if dist > EPS:
-					nrm = d / dist
-				elif wall_inv[wid] > 0.0:
+				if best_d2 > EPS * EPS:
+					nrm = d / sqrt(best_d2)
+				elif wall_inv[best] > 0.0:
+					var ab: Vector2 = wall_ab[best]
 					nrm = Vector2(ab.y, -ab.x).normalized()
-				p = q + nrm * lim
+				p = best_q + nrm * lim
 				var vn: float = v.dot(nrm)
 				if vn < 0.0:
-					var key: int = -(wid + 1)
+					var key: int = -(best + 1)
 					var held: bool = key == prev_a or key == prev_b or key == cur_a or key == cur_b
-					if not held and -vn > thr:
+					var gn_dt: float = gravity.dot(nrm) * dt
+					var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
+					if not held and minf(gn_dt, 0.0) - vn > thr:
+						if on_cap:
+							var back: Vector2 = d - v * BallStep.back_off(d, v, lim, h, false)
+							if back.length_squared() > EPS:
+								nrm = back.normalized()
+							p = best_q + nrm * lim
+							vn = minf(v.dot(nrm), 0.0)
 						v = BallStep.bounce(v, nrm, vn, wall_e, keep_t)
 						ev.append(BallStep.Ev.WALL_HIT)
 						ev.append(id)
-						ev.append(wid)
+						ev.append(best)
 						evs.append(-vn)
 					else:
 						# Only the round caps curve; the flat sides do not.
-						var curv: float = h / lim if s <= 0.0 or s >= 1.0 else 0.0
-						v = BallStep.slide(v, nrm, vn, gravity.dot(nrm) * dt, curv)
+						v = BallStep.slide(v, nrm, vn, gn_dt, h / lim if on_cap else 0.0)
 					if cur_a == NO_CONTACT or cur_a == key:
 						cur_a = key
 					else:
