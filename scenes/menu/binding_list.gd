@@ -108,7 +108,8 @@ func _add_header(text: String) -> void:
 func _binding_button(action: String, gamepad: bool) -> Button:
 	var button := Button.new()
 	button.name = "%s_%s" % [action, "pad" if gamepad else "key"]
-	button.custom_minimum_size = Vector2(250, 0)
+	button.custom_minimum_size = Vector2(300, 0)
+	button.theme_type_variation = &"SmallButton"
 	button.clip_text = true
 	button.text = _describe(action, gamepad)
 	button.tooltip_text = "Choose, then press the new %s" % ["button" if gamepad else "key"]

@@ -12,11 +12,12 @@ signal closed
 @onready var _master_value: Label = %MasterValue
 @onready var _sfx_value: Label = %SfxValue
 @onready var _tilt_value: Label = %TiltValue
-@onready var _fullscreen: CheckButton = %FullscreenCheck
-@onready var _frame_counter: CheckButton = %FrameCounterCheck
+@onready var _fullscreen: Button = %FullscreenCheck
+@onready var _frame_counter: Button = %FrameCounterCheck
 @onready var _bindings: GridContainer = %Bindings
 @onready var _defaults: Button = %DefaultsButton
 @onready var _back: Button = %BackButton
+@onready var _backdrop: Control = $Backdrop
 
 
 func _ready() -> void:
@@ -32,7 +33,11 @@ func _ready() -> void:
 	_defaults.pressed.connect(_on_defaults_pressed)
 	_back.pressed.connect(close)
 	App.settings.changed.connect(_load_values)
-	_master.grab_focus()
+	for control: Control in [_master, _sfx, _tilt, _fullscreen, _frame_counter]:
+		_mark_row_on_focus(control)
+	# on its own (not over a menu or a game) the screen brings its own background
+	_backdrop.visible = get_parent() == get_tree().root
+	_master.grab_focus.call_deferred()
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -68,9 +73,28 @@ func _on_value_changed(value: Variant, key: String) -> void:
 
 
 func _show_numbers() -> void:
+	_fullscreen.text = "On" if _fullscreen.button_pressed else "Off"
+	_frame_counter.text = "On" if _frame_counter.button_pressed else "Off"
 	_master_value.text = "%d%%" % roundi(_master.value * 100.0)
 	_sfx_value.text = "%d%%" % roundi(_sfx.value * 100.0)
 	_tilt_value.text = "×%.2f" % _tilt.value
+
+
+## Sliders draw no focus ring, so the focused row's label gets a marker and a colour.
+func _mark_row_on_focus(control: Control) -> void:
+	var label := control.get_parent().get_child(control.get_index() - 1) as Label
+	var plain := label.text
+	control.focus_entered.connect(
+		func() -> void:
+			label.text = "▸ " + plain
+			label.theme_type_variation = &"HeaderLabel"
+			label.add_theme_font_size_override("font_size", 24)
+	)
+	control.focus_exited.connect(
+		func() -> void:
+			label.text = plain
+			label.theme_type_variation = &""
+	)
 
 
 func _on_defaults_pressed() -> void:

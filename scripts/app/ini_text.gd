@@ -57,9 +57,13 @@ static func read_file(path: String) -> Dictionary:
 	var file := FileAccess.open(path, FileAccess.READ)
 	if file == null:
 		return {"error": "cannot open it (%s)" % error_string(FileAccess.get_open_error())}
-	var text := file.get_as_text()
-	if text.contains(char(0)):
+	var bytes := file.get_buffer(file.get_length())
+	# checked on the raw bytes: decoding would quietly drop what makes the file unreadable
+	if bytes.has(0):
 		return {"error": "it is not a text file"}
+	var text := bytes.get_string_from_utf8()
+	if text.is_empty() and not bytes.is_empty():
+		return {"error": "it is not UTF-8 text"}
 	return parse(text)
 
 

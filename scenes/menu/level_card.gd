@@ -1,0 +1,62 @@
+extends Button
+## One board in the level select: its thumbnail, name, description and best result. A board
+## that failed to load shows greyed out with its error; it can take focus (so the message is
+## reachable with keyboard and gamepad) but not start.
+
+const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
+const CARD_SIZE := Vector2(280, 372)
+const THUMB_HEIGHT := 170.0
+
+## The board file this card stands for.
+var board_path := ""
+## False for a board that failed to load.
+var playable := false
+
+
+## Fills the card from a load result; `best` is the best-result line ("" for none).
+func setup(result: BoardLoadResult, best: String) -> void:
+	board_path = result.path
+	playable = result.ok()
+	name = board_path.get_file().get_basename().validate_node_name()
+	theme_type_variation = &"CardButton"
+	custom_minimum_size = CARD_SIZE
+	disabled = not playable
+	focus_mode = Control.FOCUS_ALL
+	var box := VBoxContainer.new()
+	box.set_anchors_and_offsets_preset(Control.PRESET_FULL_RECT, Control.PRESET_MODE_MINSIZE, 14)
+	box.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	box.add_theme_constant_override("separation", 6)
+	add_child(box)
+	var thumbnail := BoardThumbnail.new()
+	thumbnail.custom_minimum_size = Vector2(0, THUMB_HEIGHT)
+	thumbnail.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	thumbnail.level = result.level
+	box.add_child(thumbnail)
+	if playable:
+		var level := result.level
+		_add_label(
+			box, level.display_name if not level.display_name.is_empty() else level.board_id, &""
+		)
+		_add_label(box, best if not best.is_empty() else "Not played yet", &"HintLabel")
+		_add_label(box, level.description, &"HintLabel", true)
+		tooltip_text = level.description
+	else:
+		_add_label(box, "Broken board: " + board_path.get_file(), &"WarningLabel")
+		_add_label(box, result.error.trim_prefix(board_path + ": "), &"HintLabel", true)
+		tooltip_text = result.error
+		modulate = Color(1, 1, 1, 0.7)
+
+
+func _add_label(box: VBoxContainer, text: String, variation: StringName, wrap := false) -> void:
+	var label := Label.new()
+	label.text = text
+	label.theme_type_variation = variation
+	label.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	label.text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS
+	if wrap:
+		label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+		label.max_lines_visible = 3
+		label.size_flags_vertical = Control.SIZE_EXPAND_FILL
+	else:
+		label.clip_text = true
+	box.add_child(label)

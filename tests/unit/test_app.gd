@@ -1,0 +1,115 @@
+extends GutTest
+## The App autoload's own logic, on a fresh instance (never the live autoload): a damaged
+## settings file is reported once and replaced, best results are kept per board, and the
+## board a game plays comes from the play-test request, the level select, or the default.
+
+const AppScript := preload("res://scripts/app/app.gd")
+const SETTINGS := "user://test_app_settings.cfg"
+const SAVE := "user://test_app_save.cfg"
+
+var _app: Node
+
+
+func before_each() -> void:
+	_app = AppScript.new()
+	DirAccess.remove_absolute(AppScript.PLAYTEST_PATH)
+
+
+func after_each() -> void:
+	_app.free()
+	for path: String in [SETTINGS, SAVE, AppScript.PLAYTEST_PATH]:
+		DirAccess.remove_absolute(path)
+	GameSettings.new().apply()
+
+
+func _write(path: String, text: String) -> void:
+	var file := FileAccess.open(path, FileAccess.WRITE)
+	file.store_string(text)
+	file.close()
+
+
+func test_damaged_settings_are_reported_once_and_replaced() -> void:
+	_write(SETTINGS, "this is not a settings file {{{")
+	_app.call("load_player_files", SETTINGS, SAVE)
+	var problems: PackedStringArray = _app.call("take_problems")
+	assert_eq(problems.size(), 1)
+	assert_string_contains(problems[0], SETTINGS)
+	assert_eq((_app.call("take_problems") as PackedStringArray).size(), 0, "handed out once")
+	var again: Node = AppScript.new()
+	again.call("load_player_files", SETTINGS, SAVE)
+	assert_eq((again.call("take_problems") as PackedStringArray).size(), 0, "file was replaced")
+	again.free()
+
+
+func test_default_board_is_the_classic_one() -> void:
+	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/classic.tres")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.tres")
+
+
+func test_requested_board_is_used() -> void:
+	_app.call("request_board", "maze", "res://levels/maze/other.tres")
+	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/other.tres")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.tres")
+
+
+func test_playtest_request_wins_once_and_stays_for_restarts() -> void:
+	_app.call("request_board", "pachinko", "res://levels/pachinko/picked.tres")
+	var request := ConfigFile.new()
+	request.set_value("playtest", "board", "res://levels/pachinko/draft.tres")
+	request.set_value("playtest", "kind", "pachinko")
+	request.save(AppScript.PLAYTEST_PATH)
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.tres")
+	assert_false(FileAccess.file_exists(AppScript.PLAYTEST_PATH), "request consumed")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.tres")
+
+
+func test_playtest_request_for_the_other_game_is_left_alone() -> void:
+	var request := ConfigFile.new()
+	request.set_value("playtest", "board", "res://levels/maze/draft.tres")
+	request.set_value("playtest", "kind", BoardLevel.Kind.MAZE)
+	request.save(AppScript.PLAYTEST_PATH)
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.tres")
+	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/draft.tres")
+
+
+func test_best_maze_time_keeps_the_fastest_and_persists() -> void:
+	_app.call("load_player_files", SETTINGS, SAVE)
+	assert_eq(_app.call("best_maze_time", "classic"), -1.0)
+	assert_true(_app.call("record_maze_time", "classic", 42.5))
+	assert_false(_app.call("record_maze_time", "classic", 50.0))
+	assert_true(_app.call("record_maze_time", "classic", 30.25))
+	var again: Node = AppScript.new()
+	again.call("load_player_files", SETTINGS, SAVE)
+	assert_eq(again.call("best_maze_time", "classic"), 30.25)
+	assert_eq(again.call("best_maze_time", "other"), -1.0)
+	again.free()
+
+
+func test_best_pachinko_balls_keeps_the_most_and_persists() -> void:
+	_app.call("load_player_files", SETTINGS, SAVE)
+	assert_eq(_app.call("best_pachinko_balls", "classic"), -1)
+	assert_true(_app.call("record_pachinko_balls", "classic", 12))
+	assert_false(_app.call("record_pachinko_balls", "classic", 12))
+	assert_true(_app.call("record_pachinko_balls", "classic", 20))
+	var again: Node = AppScript.new()
+	again.call("load_player_files", SETTINGS, SAVE)
+	assert_eq(again.call("best_pachinko_balls", "classic"), 20)
+	again.free()
+
+
+func test_nonsense_results_are_refused() -> void:
+	_app.call("load_player_files", SETTINGS, SAVE)
+	assert_false(_app.call("record_maze_time", "classic", -3.0))
+	assert_false(_app.call("record_maze_time", "classic", NAN))
+	assert_false(_app.call("record_pachinko_balls", "", 5))
+	assert_push_error_count(3)
+	assert_eq(_app.call("best_maze_time", "classic"), -1.0)
+
+
+func test_damaged_save_file_is_reported_and_records_start_empty() -> void:
+	_write(SAVE, "[maze_best_seconds\nclassic=oops")
+	_app.call("load_player_files", SETTINGS, SAVE)
+	var problems: PackedStringArray = _app.call("take_problems")
+	assert_eq(problems.size(), 1)
+	assert_string_contains(problems[0], SAVE)
+	assert_eq(_app.call("best_maze_time", "classic"), -1.0)

@@ -1,0 +1,73 @@
+extends GutTest
+## The pause menu: the pause action stops everything that is not the menu itself, resume
+## lets it run again, restart unpauses and asks the game to restart.
+
+const PauseScene := preload("res://scenes/common/pause_menu.tscn")
+
+var _menu: CanvasLayer
+var _world: Node
+
+
+func before_each() -> void:
+	_world = Node.new()  # stands in for a game's simulation node (inherits the pause)
+	add_child_autofree(_world)
+	_menu = PauseScene.instantiate() as CanvasLayer
+	add_child_autofree(_menu)
+
+
+func after_each() -> void:
+	get_tree().paused = false
+
+
+func _press(action: String) -> void:
+	var event := InputEventAction.new()
+	event.action = action
+	event.pressed = true
+	_menu.call("_unhandled_input", event)
+
+
+func test_pause_action_stops_the_world_and_not_the_menu() -> void:
+	assert_true(_world.can_process())
+	_press("pause")
+	assert_true(get_tree().paused)
+	assert_true(_menu.call("is_open"))
+	assert_false(_world.can_process(), "the simulation does not run while paused")
+	assert_true(_menu.can_process(), "the menu still answers")
+
+
+func test_pause_again_resumes() -> void:
+	_press("pause")
+	_press("pause")
+	assert_false(get_tree().paused)
+	assert_false(_menu.call("is_open"))
+	assert_true(_world.can_process())
+
+
+func test_cancel_resumes() -> void:
+	_press("pause")
+	_press("ui_cancel")
+	assert_false(get_tree().paused)
+
+
+func test_resume_button_gets_focus_for_keyboard_and_gamepad() -> void:
+	_press("pause")
+	var resume: Button = _menu.get_node("%ResumeButton")
+	assert_true(resume.has_focus())
+
+
+func test_restart_unpauses_and_asks_the_game() -> void:
+	watch_signals(_menu)
+	_press("pause")
+	(_menu.get_node("%RestartButton") as Button).pressed.emit()
+	assert_signal_emitted(_menu, "restart_requested")
+	assert_false(get_tree().paused)
+
+
+func test_settings_open_over_the_pause_menu_and_close_with_cancel() -> void:
+	_press("pause")
+	(_menu.get_node("%SettingsButton") as Button).pressed.emit()
+	var settings := _menu.get_node_or_null("SettingsMenu")
+	assert_not_null(settings)
+	assert_true(settings.can_process(), "settings work while paused")
+	_press("pause")
+	assert_true(get_tree().paused, "the pause action does not leak past the settings screen")

@@ -1,0 +1,87 @@
+extends GutTest
+## Input remapping: bindings are stored as readable codes, survive a save and load, reach
+## the InputMap when applied, and "Default controls" brings the shipped bindings back.
+
+const PATH := "user://test_settings_input.cfg"
+const Codec := preload("res://scripts/app/input_event_codec.gd")
+
+
+func after_each() -> void:
+	DirAccess.remove_absolute(PATH)
+	var defaults := GameSettings.new()
+	defaults.apply()  # never leave a test binding in the InputMap
+
+
+func _key(code: Key) -> InputEventKey:
+	var key := InputEventKey.new()
+	key.physical_keycode = code
+	return key
+
+
+func _joy_button(index: JoyButton) -> InputEventJoypadButton:
+	var button := InputEventJoypadButton.new()
+	button.button_index = index
+	return button
+
+
+func test_codes_round_trip_for_every_kind_of_event() -> void:
+	var motion := InputEventJoypadMotion.new()
+	motion.axis = JOY_AXIS_LEFT_Y
+	motion.axis_value = -1.0
+	var mouse := InputEventMouseButton.new()
+	mouse.button_index = MOUSE_BUTTON_LEFT
+	for event: InputEvent in [_key(KEY_SPACE), _key(KEY_F3), _joy_button(JOY_BUTTON_START)]:
+		assert_eq(Codec.encode(Codec.decode(Codec.encode(event))), Codec.encode(event))
+	assert_eq(Codec.encode(motion), "joy_axis:1:-")
+	assert_eq(Codec.encode(Codec.decode("joy_axis:1:-")), "joy_axis:1:-")
+	assert_eq(Codec.encode(Codec.decode(Codec.encode(mouse))), "mouse:1")
+
+
+func test_bad_codes_decode_to_null() -> void:
+	for bad: String in ["", "key", "key:NoSuchKey", "joy_button:-1", "joy_button:x", "joy_axis:0"]:
+		assert_null(Codec.decode(bad), bad)
+	assert_null(Codec.decode("joy_axis:0:up"))
+	assert_null(Codec.decode("banana:3"))
+
+
+func test_decoded_events_match_every_device() -> void:
+	assert_eq(Codec.decode("joy_button:0").device, -1)
+
+
+func test_keyboard_rebind_keeps_gamepad_bindings() -> void:
+	var settings := GameSettings.new()
+	settings.rebind("tilt_left", _key(KEY_J), false)
+	var codes := PackedStringArray()
+	for event in settings.events_for("tilt_left"):
+		codes.append(Codec.encode(event))
+	assert_eq(codes, PackedStringArray(["joy_axis:0:-", "key:J"]))
+
+
+func test_remap_persists_through_the_file_and_reaches_the_input_map() -> void:
+	var settings := GameSettings.new()
+	settings.rebind("tilt_left", _key(KEY_J), false)
+	settings.rebind("pause", _joy_button(JOY_BUTTON_Y), true)
+	settings.save_file(PATH)
+	var loaded := GameSettings.new()
+	assert_eq(loaded.load_file(PATH), "")
+	loaded.apply()
+	assert_true(InputMap.action_has_event("tilt_left", _key(KEY_J)))
+	assert_false(InputMap.action_has_event("tilt_left", _key(KEY_LEFT)), "old key replaced")
+	assert_true(InputMap.action_has_event("pause", _joy_button(JOY_BUTTON_Y)))
+	assert_true(InputMap.action_has_event("pause", _key(KEY_ESCAPE)), "keyboard side kept")
+
+
+func test_default_controls_restore_the_shipped_bindings() -> void:
+	var settings := GameSettings.new()
+	settings.rebind("launch_charge", _key(KEY_Q), false)
+	settings.restore_default_bindings()
+	settings.apply()
+	assert_true(InputMap.action_has_event("launch_charge", _key(KEY_SPACE)))
+	assert_false(InputMap.action_has_event("launch_charge", _key(KEY_Q)))
+
+
+func test_rebinding_an_unknown_action_is_refused() -> void:
+	var settings := GameSettings.new()
+	settings.rebind("no_such_action", _key(KEY_Q), false)
+	assert_push_error("unknown action")
+	assert_false(settings.bindings.has("no_such_action"))
