@@ -1,0 +1,163 @@
+class_name BoardPainter
+extends RefCounted
+## Draws any board onto a CanvasItem from inside its `_draw()`: the editor's board node,
+## level-select thumbnails and the games' static board layer all use it.
+##
+## Everything is drawn in board pixels through `xform` (board → canvas item). Special pins
+## are diamonds as well as gold, so they read without colour.
+
+## Layers to draw (combine with |).
+enum Layer {
+	BACKGROUND = 1,
+	RING = 2,
+	RAIL = 4,
+	GUTTER = 8,
+	PINS = 16,
+	POCKETS = 32,
+	WALLS = 64,
+	HOLES = 128,
+	GOAL = 256,
+	STARTS = 512,
+	ALL = 1023,
+}
+
+const PACHINKO_BACKGROUND := Color("14121f")
+const RING_COLOR := Color("8a4fbf")
+const RAIL_COLOR := Color("c9c3d6")
+const GUTTER_COLOR := Color("000000")
+const PIN_COLOR := Color("d8dbe2")
+const SPECIAL_COLOR := Color("ffc83d")
+const POCKET_COLOR := Color("3fa7d6", 0.55)
+const MAZE_BACKGROUND := Color("ede6e3")
+const WALL_COLOR := Color("36382e")
+const GOAL_COLOR := Color("7d82b8")
+const HOLE_COLOR := Color("000000")
+const BALL_COLOR := Color("f06449")
+## Pixels of dash and gap on the goal's dashed circle.
+const DASH := 8.0
+
+
+## Draws `level` on `canvas` through `xform`. `layers` picks what to draw.
+static func draw_board(
+	canvas: CanvasItem,
+	level: BoardLevel,
+	xform: Transform2D = Transform2D.IDENTITY,
+	layers: int = Layer.ALL
+) -> void:
+	if canvas == null or level == null:
+		return
+	canvas.draw_set_transform_matrix(xform)
+	if layers & Layer.BACKGROUND:
+		var color := MAZE_BACKGROUND if level.is_maze() else PACHINKO_BACKGROUND
+		canvas.draw_rect(Rect2(Vector2.ZERO, level.size), color)
+	if level.is_pachinko():
+		_draw_pachinko(canvas, level, layers)
+	else:
+		_draw_maze(canvas, level, layers)
+	canvas.draw_set_transform_matrix(Transform2D.IDENTITY)
+
+
+## Draws the whole board scaled to fit inside `rect` (for thumbnails), keeping its aspect.
+static func draw_thumbnail(canvas: CanvasItem, level: BoardLevel, rect: Rect2) -> void:
+	if level == null:
+		return
+	draw_board(canvas, level, fit_transform(level, rect))
+
+
+## The board → canvas transform that fits the board's area into `rect`, centred.
+static func fit_transform(level: BoardLevel, rect: Rect2, margin: float = 0.0) -> Transform2D:
+	var area := rect.grow(-margin)
+	var size := level.size if level != null else Vector2.ONE
+	if size.x <= 0.0 or size.y <= 0.0 or not size.is_finite():
+		return Transform2D(0.0, area.position)
+	var scale := minf(area.size.x / size.x, area.size.y / size.y)
+	var offset := area.position + (area.size - size * scale) * 0.5
+	return Transform2D(0.0, Vector2(scale, scale), 0.0, offset)
+
+
+static func _draw_pachinko(canvas: CanvasItem, level: BoardLevel, layers: int) -> void:
+	var c := level.ring_center
+	var r := level.ring_radius
+	if not c.is_finite() or not is_finite(r) or r <= 0.0:
+		return
+	if layers & Layer.RING:
+		canvas.draw_arc(c, r + 3.0, 0.0, TAU, 128, RING_COLOR, 6.0)
+	if layers & Layer.GUTTER:
+		# The gutter is a black gap cut into the ring, with its ends marked.
+		var from := deg_to_rad(level.gutter_start_deg)
+		var to := deg_to_rad(level.gutter_end_deg)
+		canvas.draw_arc(c, r + 3.0, from, to, 24, GUTTER_COLOR, 8.0)
+		for angle in [from, to]:
+			var direction := Vector2.from_angle(angle)
+			canvas.draw_line(c + direction * r, c + direction * (r + 8.0), RAIL_COLOR, 2.0)
+	if layers & Layer.RAIL:
+		var guide := LaunchRail.guide_points(level)
+		canvas.draw_polyline(guide, RAIL_COLOR, LaunchRail.GUIDE_WALL_RADIUS * 2.0)
+		var stop := LaunchRail.stopper(level)
+		canvas.draw_line(stop[0], stop[1], RAIL_COLOR, LaunchRail.GUIDE_WALL_RADIUS * 2.0)
+		canvas.draw_circle(
+			LaunchRail.launch_position(level), level.ball_radius, BALL_COLOR, false, 1.0
+		)
+	if layers & Layer.POCKETS:
+		for spec in level.pockets:
+			if spec != null:
+				_draw_pocket(canvas, spec, level.pin_radius)
+	if layers & Layer.PINS:
+		_draw_pins(canvas, level)
+
+
+static func _draw_pocket(canvas: CanvasItem, spec: PocketSpec, pin_radius: float) -> void:
+	var half := spec.width * 0.5 + pin_radius
+	var bottom := spec.position + Vector2(0.0, spec.depth - spec.width * 0.5)
+	var cup := PackedVector2Array()
+	cup.append(spec.position + Vector2(-half, 0.0))
+	for i in 13:
+		var angle := PI - PI * float(i) / 12.0
+		cup.append(bottom + Vector2(cos(angle), sin(angle)) * half)
+	cup.append(spec.position + Vector2(half, 0.0))
+	if cup.size() >= 3 and spec.depth >= spec.width * 0.5:
+		canvas.draw_colored_polygon(cup, POCKET_COLOR)
+
+
+static func _draw_pins(canvas: CanvasItem, level: BoardLevel) -> void:
+	var r := maxf(level.pin_radius, 0.75)
+	for i in level.pins.size():
+		var p := level.pins[i]
+		if i < level.pin_special.size() and level.pin_special[i] != 0:
+			var d := r * 2.2
+			var diamond := PackedVector2Array(
+				[p + Vector2(0, -d), p + Vector2(d, 0), p + Vector2(0, d), p + Vector2(-d, 0)]
+			)
+			canvas.draw_colored_polygon(diamond, SPECIAL_COLOR)
+		else:
+			canvas.draw_circle(p, r, PIN_COLOR)
+
+
+static func _draw_maze(canvas: CanvasItem, level: BoardLevel, layers: int) -> void:
+	if layers & Layer.GOAL and level.goal_radius > 0.0:
+		_draw_dashed_circle(canvas, level.goal_center, level.goal_radius, GOAL_COLOR, 5.0)
+	if layers & Layer.HOLES:
+		for hole in level.holes:
+			canvas.draw_circle(hole, level.hole_radius, HOLE_COLOR)
+	if layers & Layer.WALLS:
+		var half := level.wall_width * 0.5
+		for w in level.walls.size() / 2:
+			var a := level.walls[w * 2]
+			var b := level.walls[w * 2 + 1]
+			canvas.draw_line(a, b, WALL_COLOR, level.wall_width)
+			canvas.draw_circle(a, half, WALL_COLOR)
+			canvas.draw_circle(b, half, WALL_COLOR)
+	if layers & Layer.STARTS:
+		for start in level.ball_starts:
+			canvas.draw_circle(start, level.ball_radius, BALL_COLOR)
+
+
+static func _draw_dashed_circle(
+	canvas: CanvasItem, center: Vector2, radius: float, color: Color, width: float
+) -> void:
+	var circumference := TAU * radius
+	var dashes := maxi(4, floori(circumference / (DASH * 2.0)))
+	var step := TAU / float(dashes)
+	for i in dashes:
+		var from := step * i
+		canvas.draw_arc(center, radius, from, from + step * 0.5, 6, color, width)

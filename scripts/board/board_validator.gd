@@ -1,0 +1,138 @@
+class_name BoardValidator
+extends RefCounted
+## Checks a board for everything that would break the game or trap a ball, fast enough to
+## run on every edit in the editor. Errors make the loader refuse the board; warnings are
+## design hints. Issue codes (BoardIssue.kind) are listed in docs/architecture.md.
+
+const PachinkoChecks := preload("res://scripts/board/pachinko_checks.gd")
+const MazeChecks := preload("res://scripts/board/maze_checks.gd")
+
+
+## Every problem found on `level`, errors first then warnings, each in board order.
+static func validate(level: BoardLevel) -> Array[BoardIssue]:
+	var issues: Array[BoardIssue] = []
+	if level == null:
+		issues.append(
+			BoardIssue.new(
+				BoardIssue.Severity.ERROR, "There is no board.", Vector2.ZERO, "no_level"
+			)
+		)
+		return issues
+	_check_common(level, issues)
+	if _has_errors(issues):
+		return issues  # sizes and radii are needed by every later check
+	if level.kind == BoardLevel.Kind.PACHINKO:
+		PachinkoChecks.check(level, issues)
+	else:
+		MazeChecks.check(level, issues)
+	var sorted: Array[BoardIssue] = []
+	for issue in issues:
+		if issue.is_error():
+			sorted.append(issue)
+	for issue in issues:
+		if not issue.is_error():
+			sorted.append(issue)
+	return sorted
+
+
+## Only the errors of `validate`.
+static func errors(level: BoardLevel) -> Array[BoardIssue]:
+	var found: Array[BoardIssue] = []
+	for issue in validate(level):
+		if issue.is_error():
+			found.append(issue)
+	return found
+
+
+static func _check_common(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+	if level.version < 0 or level.version > BoardLevel.CURRENT_VERSION:
+		_error(
+			issues,
+			(
+				"Unknown file version %d (this build reads up to %d)."
+				% [level.version, BoardLevel.CURRENT_VERSION]
+			),
+			Vector2.ZERO,
+			"unknown_version"
+		)
+	if level.kind != BoardLevel.Kind.PACHINKO and level.kind != BoardLevel.Kind.MAZE:
+		_error(issues, "Unknown board kind %d." % level.kind, Vector2.ZERO, "bad_kind")
+	if level.board_id.strip_edges().is_empty():
+		_error(
+			issues,
+			"The board has no id (board_id is used for best scores).",
+			Vector2.ZERO,
+			"missing_id"
+		)
+	if level.display_name.strip_edges().is_empty():
+		_warning(issues, "The board has no display name.", Vector2.ZERO, "missing_name")
+	if not level.size.is_finite() or level.size.x <= 0.0 or level.size.y <= 0.0:
+		_error(
+			issues,
+			"The board size must be positive, got %s." % level.size,
+			Vector2.ZERO,
+			"bad_size"
+		)
+	if not is_finite(level.ball_radius) or level.ball_radius <= 0.0:
+		_error(
+			issues,
+			"The ball radius must be positive, got %s." % level.ball_radius,
+			Vector2.ZERO,
+			"bad_ball_radius"
+		)
+	_check_tuning(level.tuning, issues)
+
+
+static func _check_tuning(tuning: PhysicsTuning, issues: Array[BoardIssue]) -> void:
+	if tuning == null:
+		_warning(
+			issues,
+			"The board has no physics tuning; the game uses the defaults.",
+			Vector2.ZERO,
+			"no_tuning"
+		)
+		return
+	var values := {
+		"restitution": tuning.restitution,
+		"wall_restitution": tuning.wall_restitution,
+		"ball_restitution": tuning.ball_restitution,
+		"tangent_friction": tuning.tangent_friction,
+		"rolling_friction": tuning.rolling_friction,
+		"tilt_gravity": tuning.tilt_gravity,
+		"max_speed": tuning.max_speed,
+		"min_horizontal_speed": tuning.min_horizontal_speed,
+		"fixed_hz": tuning.fixed_hz,
+	}
+	for key: String in values:
+		var value: float = values[key]
+		if not is_finite(value) or value < 0.0:
+			_error(
+				issues,
+				"Tuning %s must be a finite number ≥ 0, got %s." % [key, value],
+				Vector2.ZERO,
+				"bad_tuning"
+			)
+	if not tuning.gravity.is_finite():
+		_error(
+			issues,
+			"Tuning gravity must be finite, got %s." % tuning.gravity,
+			Vector2.ZERO,
+			"bad_tuning"
+		)
+	if tuning.fixed_hz < 10.0 or tuning.max_speed <= 0.0:
+		_error(issues, "Tuning needs fixed_hz ≥ 10 and max_speed > 0.", Vector2.ZERO, "bad_tuning")
+
+
+static func _has_errors(issues: Array[BoardIssue]) -> bool:
+	for issue in issues:
+		if issue.is_error():
+			return true
+	return false
+
+
+static func _error(issues: Array[BoardIssue], text: String, at: Vector2, code: String) -> void:
+	issues.append(BoardIssue.new(BoardIssue.Severity.ERROR, text, at, code))
+
+
+static func _warning(issues: Array[BoardIssue], text: String, at: Vector2, code: String) -> void:
+	issues.append(BoardIssue.new(BoardIssue.Severity.WARNING, text, at, code))

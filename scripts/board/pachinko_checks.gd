@@ -1,0 +1,389 @@
+extends RefCounted
+## BoardValidator's pachinko checks: ring, rail, gutter, pins, pockets. Pin pairs go through
+## a spatial hash, so a board with thousands of pins still validates in milliseconds.
+
+const ERROR := BoardIssue.Severity.ERROR
+const WARNING := BoardIssue.Severity.WARNING
+## Extra width the launch channel needs beyond the ball and the guide wall, in pixels.
+const RAIL_CLEARANCE := 2.0
+
+
+static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+	if not _check_shape(level, issues):
+		return
+	_check_rail_and_gutter(level, issues)
+	_check_pins(level, issues)
+	_check_pockets(level, issues)
+	_check_pin_pairs(level, issues)
+
+
+# Ring, pin radius, array lengths and pocket specs: what every later check relies on.
+static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
+	var ok := true
+	var c := level.ring_center
+	var r := level.ring_radius
+	if not c.is_finite() or not is_finite(r) or r <= level.ball_radius * 4.0:
+		_add(
+			issues,
+			ERROR,
+			"The ring needs a finite centre and a radius above four balls (got %s, %s)." % [c, r],
+			Vector2.ZERO,
+			"bad_ring"
+		)
+		ok = false
+	elif (
+		c.x - r < -0.5
+		or c.y - r < -0.5
+		or c.x + r > level.size.x + 0.5
+		or c.y + r > level.size.y + 0.5
+	):
+		_add(
+			issues,
+			WARNING,
+			"The ring pokes out of the board's %s area." % level.size,
+			c,
+			"ring_outside_board"
+		)
+	if not is_finite(level.pin_radius) or level.pin_radius <= 0.0:
+		_add(
+			issues,
+			ERROR,
+			"The pin radius must be positive, got %s." % level.pin_radius,
+			c,
+			"bad_pin_radius"
+		)
+		ok = false
+	if (
+		level.pin_pocket.size() != level.pins.size()
+		or level.pin_special.size() != level.pins.size()
+	):
+		_add(
+			issues,
+			ERROR,
+			(
+				"The pin lists disagree: %d pins, %d pocket entries, %d special flags."
+				% [level.pins.size(), level.pin_pocket.size(), level.pin_special.size()]
+			),
+			c,
+			"pin_arrays_mismatch"
+		)
+		ok = false
+	for i in level.pockets.size():
+		var spec: PocketSpec = level.pockets[i]
+		if spec == null:
+			_add(issues, ERROR, "Pocket %d is empty." % i, c, "bad_pocket")
+			ok = false
+		elif (
+			not spec.position.is_finite()
+			or not is_finite(spec.width)
+			or not is_finite(spec.depth)
+			or spec.width <= 0.0
+			or spec.depth <= 0.0
+		):
+			_add(
+				issues,
+				ERROR,
+				"Pocket %d needs a finite position and a positive width and depth." % i,
+				c,
+				"bad_pocket"
+			)
+			ok = false
+		elif spec.payout < 0:
+			_add(
+				issues,
+				ERROR,
+				"Pocket %d pays %d balls; a payout cannot be negative." % [i, spec.payout],
+				spec.position,
+				"bad_pocket"
+			)
+	if level.cup_start_balls < 1:
+		_add(
+			issues,
+			ERROR,
+			"The cup must start with at least one ball (got %d)." % level.cup_start_balls,
+			c,
+			"bad_cup"
+		)
+	return ok
+
+
+static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+	var c := level.ring_center
+	var need := 2.0 * level.ball_radius + LaunchRail.GUIDE_WALL_RADIUS * 2.0 + RAIL_CLEARANCE
+	if (
+		not is_finite(level.rail_width)
+		or level.rail_width < need
+		or level.rail_width > level.ring_radius * 0.5
+	):
+		_add(
+			issues,
+			ERROR,
+			(
+				"The launch rail must be between %.1f and %.1f px wide, got %s."
+				% [need, level.ring_radius * 0.5, level.rail_width]
+			),
+			c,
+			"bad_rail"
+		)
+	var sweep := absf(level.rail_end_deg - level.rail_start_deg)
+	if (
+		not is_finite(level.rail_start_deg)
+		or not is_finite(level.rail_end_deg)
+		or sweep < 10.0
+		or sweep > 350.0
+	):
+		_add(
+			issues,
+			ERROR,
+			(
+				"The launch rail must sweep between 10° and 350°, got %s° to %s°."
+				% [level.rail_start_deg, level.rail_end_deg]
+			),
+			c,
+			"bad_rail"
+		)
+	var g0 := level.gutter_start_deg
+	var g1 := level.gutter_end_deg
+	if not is_finite(g0) or not is_finite(g1) or g1 <= g0 or g1 - g0 > 180.0:
+		_add(
+			issues,
+			ERROR,
+			(
+				"The gutter must run from a start angle to a larger end angle within 180°, got %s° to %s°."
+				% [g0, g1]
+			),
+			c,
+			"bad_gutter"
+		)
+	elif level.gutter_bounces < 0:
+		_add(
+			issues,
+			ERROR,
+			"Gutter bounces cannot be negative (got %d)." % level.gutter_bounces,
+			c,
+			"bad_gutter"
+		)
+	elif _arcs_overlap(
+		g0,
+		g1,
+		minf(level.rail_start_deg, level.rail_end_deg),
+		maxf(level.rail_start_deg, level.rail_end_deg)
+	):
+		var mid := deg_to_rad((g0 + g1) * 0.5)
+		_add(
+			issues,
+			WARNING,
+			"The gutter overlaps the launch rail: balls rolling back would drain.",
+			c + Vector2(cos(mid), sin(mid)) * level.ring_radius,
+			"gutter_on_rail"
+		)
+
+
+static func _check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+	var c := level.ring_center
+	var inside := level.ring_radius - level.pin_radius
+	var guide := LaunchRail.guide_radius(level)
+	var guide_clear := guide - LaunchRail.GUIDE_WALL_RADIUS - level.pin_radius
+	var rail_low := minf(level.rail_start_deg, level.rail_end_deg)
+	var rail_high := maxf(level.rail_start_deg, level.rail_end_deg)
+	var diameter := level.ball_radius * 2.0
+	for i in level.pins.size():
+		var p := level.pins[i]
+		if not p.is_finite():
+			_add(issues, ERROR, "Pin %d has a position that is not a number." % i, c, "not_finite")
+			continue
+		var owner := level.pin_pocket[i]
+		if owner < -1 or owner >= level.pockets.size():
+			_add(
+				issues,
+				ERROR,
+				"Pin %d belongs to pocket %d, which does not exist." % [i, owner],
+				p,
+				"bad_pin_pocket"
+			)
+		elif level.pin_special[i] != 0 and owner < 0:
+			_add(
+				issues,
+				ERROR,
+				"Pin %d is a special pin but belongs to no pocket." % i,
+				p,
+				"special_without_pocket"
+			)
+		var d := p.distance_to(c)
+		if d > inside:
+			_add(
+				issues,
+				ERROR,
+				"Pin %d at (%.0f, %.0f) is outside the ring." % [i, p.x, p.y],
+				p,
+				"pin_outside_ring"
+			)
+			continue
+		var in_rail_arc := _angle_in(rad_to_deg((p - c).angle()), rail_low, rail_high)
+		if in_rail_arc and d > guide_clear:
+			_add(
+				issues,
+				ERROR,
+				"Pin %d at (%.0f, %.0f) sits in the launch rail." % [i, p.x, p.y],
+				p,
+				"pin_in_rail"
+			)
+			continue
+		var edge_gap := (guide_clear if in_rail_arc else inside) - d
+		if owner < 0 and edge_gap < diameter:
+			var code := "narrow_gap_rail" if in_rail_arc else "narrow_gap_ring"
+			var what := "the rail's guide" if in_rail_arc else "the ring"
+			_add(
+				issues,
+				WARNING,
+				(
+					"Pin %d leaves a %.1f px gap to %s; a ball (%.0f px) would stick there."
+					% [i, maxf(edge_gap, 0.0), what, diameter]
+				),
+				p,
+				code
+			)
+
+
+static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+	var specials := PackedInt32Array()
+	specials.resize(level.pockets.size())
+	for i in level.pins.size():
+		var owner := level.pin_pocket[i]
+		if owner >= 0 and owner < specials.size() and level.pin_special[i] != 0:
+			specials[owner] += 1
+	if level.pockets.is_empty():
+		_add(
+			issues,
+			WARNING,
+			"The board has no pockets, so no shot can win balls back.",
+			level.ring_center,
+			"no_pockets"
+		)
+	var clear_ring := level.ring_radius - level.ball_radius
+	for k in level.pockets.size():
+		var spec: PocketSpec = level.pockets[k]
+		if specials[k] == 0:
+			_add(
+				issues,
+				ERROR,
+				"Pocket %d has no special pin, so it can never pay." % k,
+				spec.position,
+				"pocket_without_special"
+			)
+		var clear_mouth := spec.width - 2.0 * level.pin_radius
+		if clear_mouth < level.ball_radius * 2.0:
+			_add(
+				issues,
+				WARNING,
+				(
+					"Pocket %d's mouth is %.1f px wide; a ball (%.0f px) cannot enter."
+					% [k, clear_mouth, level.ball_radius * 2.0]
+				),
+				spec.position,
+				"pocket_unreachable"
+			)
+		elif spec.position.distance_to(level.ring_center) > clear_ring - spec.width:
+			_add(
+				issues,
+				WARNING,
+				"Pocket %d's mouth is outside the field; no ball can enter it." % k,
+				spec.position,
+				"pocket_unreachable"
+			)
+		else:
+			var blocker := _pin_in_mouth(level, k)
+			if blocker >= 0:
+				_add(
+					issues,
+					WARNING,
+					"Pin %d blocks the mouth of pocket %d; no ball can enter." % [blocker, k],
+					level.pins[blocker],
+					"pocket_unreachable"
+				)
+
+
+# A pin (not of pocket k) inside pocket k's mouth opening or cup, else -1.
+static func _pin_in_mouth(level: BoardLevel, k: int) -> int:
+	var spec: PocketSpec = level.pockets[k]
+	var half := spec.width * 0.5 - level.pin_radius
+	var inner := Rect2(
+		spec.position.x - half, spec.position.y - level.ball_radius, half * 2.0, spec.depth
+	)
+	for i in level.pins.size():
+		if level.pin_pocket[i] != k and inner.has_point(level.pins[i]):
+			return i
+	return -1
+
+
+static func _check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+	var pins := level.pins
+	var touch := 2.0 * level.pin_radius
+	var reach := touch + 2.0 * level.ball_radius
+	var cell := maxf(reach, 1.0)
+	var grid := {}
+	for i in pins.size():
+		if not pins[i].is_finite():
+			continue
+		var key := Vector2i(floori(pins[i].x / cell), floori(pins[i].y / cell))
+		var bucket: PackedInt32Array = grid.get(key, PackedInt32Array())
+		bucket.append(i)
+		grid[key] = bucket
+	var touch2 := touch * touch - 1e-6
+	var reach2 := reach * reach
+	for i in pins.size():
+		var p := pins[i]
+		if not p.is_finite():
+			continue
+		var base := Vector2i(floori(p.x / cell), floori(p.y / cell))
+		for dy in range(-1, 2):
+			for dx in range(-1, 2):
+				var bucket: PackedInt32Array = grid.get(base + Vector2i(dx, dy), PackedInt32Array())
+				for j in bucket:
+					if j <= i:
+						continue
+					var d2 := p.distance_squared_to(pins[j])
+					if d2 >= reach2:
+						continue
+					var mid := (p + pins[j]) * 0.5
+					if d2 < touch2:
+						_add(
+							issues, WARNING, "Pins %d and %d overlap." % [i, j], mid, "pin_overlap"
+						)
+					elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
+						# Rim pins of one pocket are meant to be closer than a ball.
+						var gap := sqrt(d2) - touch
+						_add(
+							issues,
+							WARNING,
+							(
+								"Pins %d and %d leave a %.1f px gap; a ball (%.0f px) would stick in it."
+								% [i, j, gap, reach - touch]
+							),
+							mid,
+							"narrow_gap"
+						)
+
+
+# True when angle `deg` lies within [low, high] (degrees, any winding).
+static func _angle_in(deg: float, low: float, high: float) -> bool:
+	return fposmod(deg - low, 360.0) <= high - low
+
+
+static func _arcs_overlap(a0: float, a1: float, b0: float, b1: float) -> bool:
+	return (
+		_angle_in(a0, b0, b1)
+		or _angle_in(a1, b0, b1)
+		or _angle_in(b0, a0, a1)
+		or _angle_in(b1, a0, a1)
+	)
+
+
+static func _add(
+	issues: Array[BoardIssue],
+	severity: BoardIssue.Severity,
+	text: String,
+	at: Vector2,
+	code: String
+) -> void:
+	issues.append(BoardIssue.new(severity, text, at, code))
