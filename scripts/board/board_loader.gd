@@ -3,7 +3,10 @@ extends RefCounted
 ## Loads boards safely: only res:// files, checked before and after the engine parses them,
 ## upgraded from older versions and validated. A broken board never stops the others.
 
+const FileCheck := preload("res://scripts/board/board_file_check.gd")
 const LEVELS_DIR := "res://levels"
+## At most this many validator errors are quoted in a refusal message.
+const ERRORS_QUOTED := 3
 
 
 ## Loads, upgrades and validates one board. The result holds the level or an error message
@@ -17,12 +20,31 @@ static func load_board(path: String) -> BoardLoadResult:
 		return _fail(result, "a board file must be a text resource (.tres)")
 	if not FileAccess.file_exists(path):
 		return _fail(result, "the file does not exist")
+	var checked := FileCheck.check(path)
+	if not String(checked["error"]).is_empty():
+		return _fail(result, checked["error"])
 	var resource: Resource = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REUSE)
 	if resource == null:
 		return _fail(result, "the file could not be parsed as a resource")
 	if not resource is BoardLevel:
 		return _fail(result, "the file is not a BoardLevel")
-	result.level = resource as BoardLevel
+	var level := resource as BoardLevel
+	var upgrade_problem := BoardUpgrader.upgrade(level, checked["version"])
+	if not upgrade_problem.is_empty():
+		return _fail(result, upgrade_problem)
+	var errors: PackedStringArray = []
+	for issue in BoardValidator.validate(level):
+		if issue.is_error():
+			errors.append(issue.message)
+		else:
+			result.warnings.append(issue)
+	if not errors.is_empty():
+		var quoted := " ".join(errors.slice(0, ERRORS_QUOTED))
+		var more := errors.size() - ERRORS_QUOTED
+		if more > 0:
+			quoted += " (and %d more)" % more
+		return _fail(result, "the board is broken: %s" % quoted)
+	result.level = level
 	return result
 
 
@@ -48,5 +70,6 @@ static func list_boards(kind: int) -> Array[BoardLoadResult]:
 
 static func _fail(result: BoardLoadResult, problem: String) -> BoardLoadResult:
 	result.level = null
+	result.warnings.clear()
 	result.error = "%s: %s" % [result.path, problem]
 	return result

@@ -1,0 +1,310 @@
+extends RefCounted
+## Reads a board file as text before the engine parses it, so a broken or hostile file is
+## refused with a clear message instead of engine parse errors, silently dropped values or
+## code running: only the board scripts may be referenced, nothing may be embedded, every
+## field must be one the board knows (or an old one the upgrader converts) with the right
+## type. Returns the file's version (0 when it has no `version` line: the prototype format).
+
+const ALLOWED_SCRIPTS := {
+	"res://scripts/board/board_level.gd": "BoardLevel",
+	"res://scripts/board/pocket_spec.gd": "PocketSpec",
+	"res://scripts/physics/physics_tuning.gd": "PhysicsTuning",
+}
+const MAX_BYTES := 4 * 1024 * 1024
+## Fields every Resource may carry in a file.
+const BUILTIN_FIELDS := ["script", "resource_name", "resource_local_to_scene", "resource_path"]
+## Variant type → constructor name written in text resources.
+const CONSTRUCTORS := {
+	TYPE_VECTOR2: "Vector2",
+	TYPE_VECTOR2I: "Vector2i",
+	TYPE_RECT2: "Rect2",
+	TYPE_COLOR: "Color",
+	TYPE_PACKED_VECTOR2_ARRAY: "PackedVector2Array",
+	TYPE_PACKED_INT32_ARRAY: "PackedInt32Array",
+	TYPE_PACKED_BYTE_ARRAY: "PackedByteArray",
+	TYPE_PACKED_FLOAT32_ARRAY: "PackedFloat32Array",
+}
+const REF_PATTERN := '^(Ext|Sub)Resource\\("([^"]+)"\\)$'
+const TYPED_ARRAY_PATTERN := '^Array\\[ExtResource\\("([^"]+)"\\)\\]\\((.*)\\)$'
+const NUMBER_PATTERN := "^[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?$"
+
+
+## {"error": "" or the problem, "version": int} for the file at `path`.
+static func check(path: String) -> Dictionary:
+	var file := FileAccess.open(path, FileAccess.READ)
+	if file == null:
+		return _fail("the file cannot be read (%s)" % error_string(FileAccess.get_open_error()))
+	if file.get_length() > MAX_BYTES:
+		return _fail("the file is larger than %d MB" % (MAX_BYTES / 1024 / 1024))
+	var text := file.get_as_text()
+	if text.strip_edges().is_empty():
+		return _fail("the file is empty")
+	var statements: Array[Dictionary] = []
+	var split_error := _split(text, statements)
+	if not split_error.is_empty():
+		return _fail(split_error)
+	return _check_statements(statements)
+
+
+# Cuts the text into sections and `key = value` statements (values may span lines).
+static func _split(text: String, out: Array[Dictionary]) -> String:
+	var lines := text.split("\n")
+	var i := 0
+	while i < lines.size():
+		var line := lines[i].strip_edges()
+		var line_number := i + 1
+		i += 1
+		if line.is_empty() or line.begins_with(";"):
+			continue
+		if line.begins_with("["):
+			if not line.ends_with("]"):
+				return "line %d: a section header must end with ']'" % line_number
+			out.append({"line": line_number, "section": line})
+			continue
+		var equals := line.find("=")
+		var key := line.substr(0, equals).strip_edges() if equals > 0 else ""
+		if key.is_empty() or not key.is_valid_identifier() and not key.begins_with("metadata/"):
+			return "line %d cannot be read: '%s'" % [line_number, line.left(40)]
+		var value := line.substr(equals + 1).strip_edges()
+		var state := _scan(value, [0, false])
+		while (state[0] > 0 or state[1]) and i < lines.size():
+			value += "\n" + lines[i]
+			state = _scan(lines[i], state)
+			i += 1
+		if state[0] != 0 or state[1]:
+			return "line %d: the value of '%s' is never closed" % [line_number, key]
+		out.append({"line": line_number, "key": key, "value": value.strip_edges()})
+	return ""
+
+
+# Bracket depth and "inside a string" after `chunk`, continuing from `state`.
+static func _scan(chunk: String, state: Array) -> Array:
+	var depth: int = state[0]
+	var quoted: bool = state[1]
+	if not quoted and not chunk.contains('"'):
+		depth += chunk.count("(") + chunk.count("[") + chunk.count("{")
+		depth -= chunk.count(")") + chunk.count("]") + chunk.count("}")
+		return [depth, false]
+	var escaped := false
+	for c in chunk:
+		if quoted:
+			if escaped:
+				escaped = false
+			elif c == "\\":
+				escaped = true
+			elif c == '"':
+				quoted = false
+		elif c == '"':
+			quoted = true
+		elif c == "(" or c == "[" or c == "{":
+			depth += 1
+		elif c == ")" or c == "]" or c == "}":
+			depth -= 1
+	return [depth, quoted]
+
+
+static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
+	if statements.is_empty() or not statements[0].has("section"):
+		return _fail("this is not a Godot text resource")
+	var header := _attributes(statements[0]["section"])
+	if header.get("tag", "") != "gd_resource":
+		return _fail(
+			"this is not a Godot text resource (it starts with %s)" % header.get("tag", "?")
+		)
+	if (
+		header.get("type", "") != "Resource"
+		or header.get("script_class", "BoardLevel") != "BoardLevel"
+	):
+		return _fail(
+			(
+				"the file holds a %s, not a BoardLevel"
+				% header.get("script_class", header.get("type", "?"))
+			)
+		)
+	var ext_scripts := {}  # id → class name
+	var sub_classes := {}  # id → class name
+	var sections: Array[Dictionary] = []  # {tag, id, line, fields: {key: [line, value]}}
+	for statement in statements.slice(1):
+		if statement.has("section"):
+			var attributes := _attributes(statement["section"])
+			var tag: String = attributes.get("tag", "")
+			if tag == "ext_resource":
+				var script_path: String = attributes.get("path", "")
+				if attributes.get("type", "") != "Script" or not ALLOWED_SCRIPTS.has(script_path):
+					return _fail(
+						(
+							"line %d refers to %s, but a board may only use the board scripts"
+							% [statement["line"], script_path]
+						)
+					)
+				ext_scripts[attributes.get("id", "")] = ALLOWED_SCRIPTS[script_path]
+			elif tag == "sub_resource" or tag == "resource":
+				if tag == "sub_resource" and attributes.get("type", "") != "Resource":
+					return _fail(
+						(
+							"line %d embeds a %s, which a board never contains"
+							% [statement["line"], attributes.get("type", "?")]
+						)
+					)
+				sections.append(
+					{
+						"tag": tag,
+						"id": attributes.get("id", ""),
+						"line": statement["line"],
+						"fields": {}
+					}
+				)
+			else:
+				return _fail("line %d has an unknown section [%s]" % [statement["line"], tag])
+		elif sections.is_empty():
+			return _fail("line %d has a field outside any section" % statement["line"])
+		else:
+			var fields: Dictionary = sections[-1]["fields"]
+			fields[statement["key"]] = [statement["line"], statement["value"]]
+	if sections.is_empty() or sections[-1]["tag"] != "resource":
+		return _fail("the file has no [resource] section")
+	# Each section's class comes from its `script` line.
+	for section in sections:
+		var fields: Dictionary = section["fields"]
+		var script_ref: String = fields.get("script", [0, ""])[1]
+		var class_id := _ref_id(script_ref, "Ext")
+		if not ext_scripts.has(class_id):
+			return _fail("line %d: a section has no board script" % section["line"])
+		section["class"] = ext_scripts[class_id]
+		if section["tag"] == "sub_resource":
+			sub_classes[section["id"]] = ext_scripts[class_id]
+	if sections[-1]["class"] != "BoardLevel":
+		return _fail("the file holds a %s, not a BoardLevel" % sections[-1]["class"])
+	for section in sections:
+		var problem := _check_fields(section, ext_scripts, sub_classes)
+		if not problem.is_empty():
+			return _fail(problem)
+	var main_fields: Dictionary = sections[-1]["fields"]
+	var version := 0
+	if main_fields.has("version"):
+		version = int(str_to_var(main_fields["version"][1]))
+	if version < 0 or version > BoardLevel.CURRENT_VERSION:
+		return _fail(
+			"unknown version %d (this build reads 0 to %d)" % [version, BoardLevel.CURRENT_VERSION]
+		)
+	return {"error": "", "version": version}
+
+
+static func _check_fields(
+	section: Dictionary, ext_scripts: Dictionary, sub_classes: Dictionary
+) -> String:
+	var expected := _property_types(section["class"])
+	var fields: Dictionary = section["fields"]
+	for key: String in fields:
+		var line: int = fields[key][0]
+		var value: String = fields[key][1]
+		if key in BUILTIN_FIELDS or key.begins_with("metadata/"):
+			continue
+		var want: Dictionary = expected.get(key, {})
+		if (
+			want.is_empty()
+			and section["class"] == "BoardLevel"
+			and BoardUpgrader.LEGACY_FIELDS.has(key)
+		):
+			want = {"type": BoardUpgrader.LEGACY_FIELDS[key], "class": ""}
+		if want.is_empty():
+			return "line %d: %s has no field '%s'" % [line, section["class"], key]
+		var problem := _check_value(value, want, ext_scripts, sub_classes)
+		if not problem.is_empty():
+			return "line %d: field '%s' %s" % [line, key, problem]
+	return ""
+
+
+static func _check_value(
+	value: String, want: Dictionary, ext_scripts: Dictionary, sub_classes: Dictionary
+) -> String:
+	var type: int = want["type"]
+	var shown := value.left(40).replace("\n", " ")
+	if type == TYPE_OBJECT:
+		if value == "null":
+			return ""
+		var id := _ref_id(value, "Sub")
+		if sub_classes.get(id, "") != want["class"]:
+			return "should be a %s, the file has %s" % [want["class"], shown]
+		return ""
+	if type == TYPE_ARRAY:
+		var typed := RegEx.create_from_string(TYPED_ARRAY_PATTERN).search(value)
+		var inner := value
+		if typed != null:
+			if ext_scripts.get(typed.get_string(1), "") != want["class"]:
+				return "should be a list of %s" % want["class"]
+			inner = typed.get_string(2).strip_edges()
+		if not inner.begins_with("[") or not inner.ends_with("]"):
+			return "should be a list of %s, the file has %s" % [want["class"], shown]
+		for item in inner.substr(1, inner.length() - 2).split(",", false):
+			if sub_classes.get(_ref_id(item.strip_edges(), "Sub"), "") != want["class"]:
+				return (
+					"should only hold %s entries, the file has %s"
+					% [want["class"], item.strip_edges().left(40)]
+				)
+		return ""
+	var shape_ok := false
+	match type:
+		TYPE_FLOAT:
+			shape_ok = (
+				value in ["nan", "inf", "-inf", "inf_neg"]
+				or RegEx.create_from_string(NUMBER_PATTERN).search(value) != null
+			)
+		TYPE_INT:
+			shape_ok = value.is_valid_int()
+		TYPE_BOOL:
+			shape_ok = value == "true" or value == "false"
+		TYPE_STRING:
+			shape_ok = value.begins_with('"') and value.ends_with('"') and value.length() >= 2
+		_:
+			shape_ok = (
+				CONSTRUCTORS.has(type)
+				and value.begins_with(CONSTRUCTORS[type] + "(")
+				and value.ends_with(")")
+			)
+	# Only a value of the right shape reaches str_to_var, which could build any object.
+	var parsed: Variant = str_to_var(value) if shape_ok else null
+	var got := typeof(parsed)
+	if not shape_ok or (got != type and not (type == TYPE_FLOAT and got == TYPE_INT)):
+		return "should be %s, the file has %s" % [type_string(type), shown]
+	return ""
+
+
+# Stored properties of a board script: name → {type, class}.
+static func _property_types(script_class: String) -> Dictionary:
+	var types := {}
+	for path: String in ALLOWED_SCRIPTS:
+		if ALLOWED_SCRIPTS[path] != script_class:
+			continue
+		var script: Script = load(path)
+		for property in script.get_script_property_list():
+			if property["usage"] & PROPERTY_USAGE_STORAGE:
+				# A typed array's hint reads "24/17:PocketSpec": element type/hint, then class.
+				var hint: String = property["hint_string"]
+				var element := hint.get_slice(":", hint.get_slice_count(":") - 1)
+				var cls: String = (
+					property["class_name"] if property["type"] == TYPE_OBJECT else element
+				)
+				types[property["name"]] = {"type": property["type"], "class": cls}
+	return types
+
+
+static func _attributes(header: String) -> Dictionary:
+	var inner := header.substr(1, header.length() - 2).strip_edges()
+	var result := {"tag": inner.get_slice(" ", 0)}
+	var pattern := RegEx.create_from_string('(\\w+)=("([^"]*)"|[^\\s\\]]+)')
+	for found in pattern.search_all(inner):
+		var quoted := found.get_string(3)
+		result[found.get_string(1)] = quoted if found.get_start(3) >= 0 else found.get_string(2)
+	return result
+
+
+static func _ref_id(value: String, prefix: String) -> String:
+	var found := RegEx.create_from_string(REF_PATTERN).search(value.strip_edges())
+	if found == null or found.get_string(1) != prefix:
+		return ""
+	return found.get_string(2)
+
+
+static func _fail(problem: String) -> Dictionary:
+	return {"error": problem, "version": -1}
