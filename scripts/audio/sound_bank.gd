@@ -1,0 +1,101 @@
+class_name SoundBank
+extends Node
+## Procedurally generated sound effects on the "SFX" bus ("Master" when there is none).
+## Add one to a scene and call `play()` or `play_impact()`; the clips are built by code
+## (see sound_recipes.gd) once per process and shared by every bank. Overall volume is the
+## bus volume, which the settings own.
+
+## Names of the sounds, re-exported so callers can write `SoundBank.PIN_TICK`.
+const Recipes := preload("res://scripts/audio/sound_recipes.gd")
+const PIN_TICK := Recipes.PIN_TICK
+const LAUNCH := Recipes.LAUNCH
+const POCKET_WIN := Recipes.POCKET_WIN
+const DRAIN := Recipes.DRAIN
+const BALL_RETURN := Recipes.BALL_RETURN
+const GAME_OVER := Recipes.GAME_OVER
+const WALL_THUD := Recipes.WALL_THUD
+const GOAL_CHIME := Recipes.GOAL_CHIME
+const HOLE_FALL := Recipes.HOLE_FALL
+const FANFARE := Recipes.FANFARE
+const UI_CLICK := Recipes.UI_CLICK
+
+const PREFERRED_BUS := &"SFX"
+const FALLBACK_BUS := &"Master"
+## Quietest and loudest volume an impact maps to.
+const IMPACT_QUIET_DB := -26.0
+const IMPACT_LOUD_DB := -2.0
+
+static var _cache: Dictionary = {}
+
+## Voices playing at once; the oldest is cut when all are busy.
+@export var voices: int = 12
+## Shortest gap between two impact sounds of the same name, in milliseconds.
+@export var impact_interval_ms: int = 28
+
+var _players: Array[AudioStreamPlayer] = []
+var _next_voice := 0
+var _last_impact_ms: Dictionary = {}
+var _played := 0
+
+
+func _ready() -> void:
+	var bus := bus_name()
+	for i in maxi(voices, 1):
+		var player := AudioStreamPlayer.new()
+		player.bus = bus
+		add_child(player)
+		_players.append(player)
+
+
+## The bus sounds go to: "SFX" when the project's bus layout has it, else "Master".
+static func bus_name() -> StringName:
+	if AudioServer.get_bus_index(PREFERRED_BUS) >= 0:
+		return PREFERRED_BUS
+	return FALLBACK_BUS
+
+
+## The generated clip for `sound` (built on first use, then cached); null when unknown.
+static func stream(sound: StringName) -> AudioStreamWAV:
+	if not _cache.has(sound):
+		var built := Recipes.build(sound)
+		if built == null:
+			return null
+		_cache[sound] = built
+	return _cache[sound]
+
+
+## Plays a sound at `volume_db` and `pitch`. Returns false for an unknown sound.
+func play(sound: StringName, volume_db: float = 0.0, pitch: float = 1.0) -> bool:
+	var clip := stream(sound)
+	if clip == null or _players.is_empty():
+		return false
+	var player := _players[_next_voice]
+	_next_voice = (_next_voice + 1) % _players.size()
+	player.stream = clip
+	player.volume_db = volume_db
+	player.pitch_scale = clampf(pitch, 0.25, 4.0)
+	player.play()
+	_played += 1
+	return true
+
+
+## Plays an impact whose pitch and volume rise with `speed` between `min_speed` (silent
+## below it) and `max_speed`. Rate-limited per sound: returns false when skipped.
+## `now_ms` lets tests drive the clock; by default it is the engine's.
+func play_impact(
+	sound: StringName, speed: float, min_speed: float, max_speed: float, now_ms: int = -1
+) -> bool:
+	if speed < min_speed or max_speed <= min_speed:
+		return false
+	var now := Time.get_ticks_msec() if now_ms < 0 else now_ms
+	var last: int = _last_impact_ms.get(sound, -1000000)
+	if now - last < impact_interval_ms:
+		return false
+	_last_impact_ms[sound] = now
+	var t := clampf((speed - min_speed) / (max_speed - min_speed), 0.0, 1.0)
+	return play(sound, lerpf(IMPACT_QUIET_DB, IMPACT_LOUD_DB, t), lerpf(0.85, 1.3, t))
+
+
+## How many sounds this bank has started (tests and the stats overlay read it).
+func played_count() -> int:
+	return _played

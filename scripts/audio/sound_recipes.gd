@@ -1,0 +1,129 @@
+extends RefCounted
+## The game's sound effects as recipes for the synthesiser. Every name here is a sound the
+## SoundBank can play; both games share them (pins and pockets for pachinko, walls, goal
+## and holes for the maze).
+
+const Synth := preload("res://scripts/audio/sound_synth.gd")
+
+## Sound names, so callers never spell a string twice.
+const PIN_TICK := &"pin_tick"
+const LAUNCH := &"launch"
+const POCKET_WIN := &"pocket_win"
+const DRAIN := &"drain"
+const BALL_RETURN := &"ball_return"
+const GAME_OVER := &"game_over"
+const WALL_THUD := &"wall_thud"
+const GOAL_CHIME := &"goal_chime"
+const HOLE_FALL := &"hole_fall"
+const FANFARE := &"fanfare"
+const UI_CLICK := &"ui_click"
+
+
+## Every recipe name, in a stable order.
+static func names() -> Array[StringName]:
+	return [
+		PIN_TICK,
+		LAUNCH,
+		POCKET_WIN,
+		DRAIN,
+		BALL_RETURN,
+		GAME_OVER,
+		WALL_THUD,
+		GOAL_CHIME,
+		HOLE_FALL,
+		FANFARE,
+		UI_CLICK,
+	]
+
+
+## Builds the named clip; null (with an error naming it) for an unknown name.
+static func build(sound: StringName) -> AudioStreamWAV:
+	match sound:
+		PIN_TICK:
+			return Synth.to_stream(_pin_tick(), 0.8)
+		LAUNCH:
+			return Synth.to_stream(_launch(), 0.85)
+		POCKET_WIN:
+			return Synth.to_stream(_arpeggio([784.0, 988.0, 1175.0, 1568.0, 1976.0], 0.07), 0.8)
+		DRAIN:
+			return Synth.to_stream(_drain(), 0.7)
+		BALL_RETURN:
+			return Synth.to_stream(_ball_return(), 0.6)
+		GAME_OVER:
+			return Synth.to_stream(_arpeggio([659.0, 523.0, 440.0, 330.0], 0.16), 0.7)
+		WALL_THUD:
+			return Synth.to_stream(_wall_thud(), 0.8)
+		GOAL_CHIME:
+			return Synth.to_stream(_arpeggio([1047.0, 1568.0], 0.09), 0.75)
+		HOLE_FALL:
+			return Synth.to_stream(Synth.sweep(0.45, 620.0, 90.0, 0.8, 4.0), 0.7)
+		FANFARE:
+			return Synth.to_stream(
+				_arpeggio([523.0, 659.0, 784.0, 1047.0, 1319.0, 1568.0], 0.1), 0.8
+			)
+		UI_CLICK:
+			return Synth.to_stream(Synth.partials(0.05, [_p(2400.0, 1.0, 90.0)]), 0.5)
+	push_error("SoundRecipes: no recipe for sound '%s'" % sound)
+	return null
+
+
+## Steel ball on a brass pin: a bright, inharmonic ping that dies in ~60 ms.
+static func _pin_tick() -> PackedFloat32Array:
+	var ring := (
+		Synth
+		. partials(
+			0.09,
+			[_p(3150.0, 1.0, 55.0), _p(4710.0, 0.55, 70.0), _p(6980.0, 0.3, 95.0)],
+		)
+	)
+	var click := Synth.noise(0.01, 0.5, 400.0, 0.1, 7)
+	return Synth.mix([ring, click])
+
+
+## The spring flipper: a noisy thwack and a low rising whoosh as the ball leaves.
+static func _launch() -> PackedFloat32Array:
+	var thwack := Synth.noise(0.06, 1.0, 70.0, 0.55, 11)
+	var body := Synth.partials(0.12, [_p(180.0, 0.8, 30.0), _p(410.0, 0.4, 45.0)])
+	var whoosh := Synth.noise(0.32, 0.35, 9.0, 0.92, 12)
+	var rise := Synth.sweep(0.3, 220.0, 520.0, 0.25, 8.0)
+	var out := Synth.mix([thwack, body])
+	Synth.overlay(out, Synth.mix([whoosh, rise]), 0.03)
+	return out
+
+
+## Bell notes one after another, each a struck tone with a soft octave shimmer.
+static func _arpeggio(notes: Array[float], gap: float) -> PackedFloat32Array:
+	var out := PackedFloat32Array()
+	for i in notes.size():
+		var f: float = notes[i]
+		var bell := Synth.partials(
+			0.5, [_p(f, 1.0, 6.0), _p(f * 2.0, 0.35, 9.0), _p(f * 3.01, 0.12, 14.0)]
+		)
+		Synth.overlay(out, bell, gap * i)
+	return out
+
+
+## A ball swallowed by the gutter: a falling tone over a dull knock.
+static func _drain() -> PackedFloat32Array:
+	var slide := Synth.sweep(0.35, 440.0, 110.0, 0.6, 6.0)
+	var knock := Synth.partials(0.2, [_p(95.0, 1.0, 18.0), _p(190.0, 0.3, 25.0)])
+	return Synth.mix([slide, knock])
+
+
+## A weak shot rolling back to the cup: two soft clacks.
+static func _ball_return() -> PackedFloat32Array:
+	var clack := Synth.partials(0.08, [_p(1200.0, 0.8, 60.0), _p(2300.0, 0.3, 80.0)])
+	var out := clack.duplicate()
+	Synth.overlay(out, clack, 0.09)
+	return out
+
+
+## A maze ball against a wall: low, woody and short.
+static func _wall_thud() -> PackedFloat32Array:
+	var knock := Synth.partials(0.12, [_p(140.0, 1.0, 35.0), _p(330.0, 0.45, 50.0)])
+	var tap := Synth.noise(0.03, 0.4, 150.0, 0.7, 21)
+	return Synth.mix([knock, tap])
+
+
+static func _p(freq: float, amp: float, decay: float) -> PackedFloat32Array:
+	return PackedFloat32Array([freq, amp, decay])
