@@ -255,21 +255,22 @@ func get_ball_rest_time(id: int) -> float:
 	return _balls.rest[i] if i >= 0 else 0.0
 
 
-## Positions of all balls, dense, in the same order as get_radii() and get_ids().
+## Positions of all balls, dense, in the same order as get_radii() and get_ids() (copies:
+## packed arrays are shared by reference, and the world's own must not change under it).
 func get_positions() -> PackedVector2Array:
-	return _balls.pos
+	return _balls.pos.duplicate()
 
 
 func get_velocities() -> PackedVector2Array:
-	return _balls.vel
+	return _balls.vel.duplicate()
 
 
 func get_radii() -> PackedFloat32Array:
-	return _balls.radius
+	return _balls.radius.duplicate()
 
 
 func get_ids() -> PackedInt32Array:
-	return _balls.ids
+	return _balls.ids.duplicate()
 
 
 ## Sets gravity and rolling friction from a maze tilt in degrees (see MazeTilt), using

@@ -1,0 +1,82 @@
+extends GutTest
+## Seed constants converted to px and seconds, the tilt → gravity / friction mapping, the
+## speed cap, and friction that only slows.
+
+
+func test_pachinko_defaults_convert_the_flash_constants() -> void:
+	var t := PhysicsTuning.pachinko_defaults()
+	assert_almost_eq(t.gravity.y, 777.78, 0.01, "0.7 px/tick² at 30 ms")
+	assert_eq(t.gravity.x, 0.0)
+	assert_almost_eq(t.restitution, 0.6, 1e-6)
+	assert_almost_eq(t.min_horizontal_speed, 16.667, 0.001, "0.5 px/tick")
+	assert_gt(t.max_speed, sqrt(5.0 * t.gravity.y * 500.0), "fast enough to loop the rail")
+
+
+func test_maze_defaults_convert_the_tutorial_constants() -> void:
+	var t := PhysicsTuning.maze_defaults()
+	assert_almost_eq(t.tilt_gravity, 7812.5, 0.001, "2 px/frame² at 16 ms")
+	assert_almost_eq(t.rolling_friction, 78.125, 0.001, "μ = 0.01")
+	assert_almost_eq(t.max_speed, 93.75, 0.001, "1.5 px/frame")
+	assert_almost_eq(t.wall_restitution, 1.0 / 3.0, 1e-6)
+	assert_eq(t.gravity, Vector2.ZERO, "the tilt sets gravity")
+
+
+func test_tilt_maps_to_gravity_and_friction_per_axis() -> void:
+	var g := MazeTilt.gravity(Vector2(12, -6), 7812.5)
+	assert_almost_eq(g.x, 7812.5 * sin(deg_to_rad(12.0)), 0.001)
+	assert_almost_eq(g.y, -7812.5 * sin(deg_to_rad(6.0)), 0.001)
+	var f := MazeTilt.friction(Vector2(12, 0), 78.125)
+	assert_almost_eq(f.x, 78.125 * cos(deg_to_rad(12.0)), 0.001)
+	assert_almost_eq(f.y, 78.125, 0.001)
+
+
+func test_slow_never_passes_zero() -> void:
+	assert_eq(MazeTilt.slow(5.0, 2.0), 3.0)
+	assert_eq(MazeTilt.slow(-5.0, 2.0), -3.0)
+	assert_eq(MazeTilt.slow(1.0, 2.0), 0.0)
+	assert_eq(MazeTilt.slow(-1.0, 2.0), 0.0)
+
+
+func test_flat_maze_friction_stops_a_ball_without_reversing_it() -> void:
+	var w := BallWorld.new(PhysicsTuning.maze_defaults())
+	w.set_tilt(Vector2.ZERO)
+	var id := w.spawn_ball(Vector2.ZERO, Vector2(60, -30), 5.0)
+	var prev := w.get_ball_velocity(id)
+	for _i: int in 240:
+		w.step(1.0 / 120.0)
+		var v := w.get_ball_velocity(id)
+		assert_true(v.x >= 0.0 and v.x <= prev.x, "x only slows")
+		assert_true(v.y <= 0.0 and v.y >= prev.y, "y only slows")
+		prev = v
+	assert_eq(prev, Vector2.ZERO, "and stops")
+
+
+func test_maze_at_12_degrees_matches_the_seed_speeds() -> void:
+	# Seed, per 16 ms frame at 12°: v += 2·sin12 - 0.02·cos12, capped at 1.5 px/frame.
+	var seed_v := 0.0
+	var frames := 0
+	while seed_v < 1.5:
+		seed_v = minf(seed_v + 2.0 * sin(deg_to_rad(12.0)) - 0.02 * cos(deg_to_rad(12.0)), 1.5)
+		frames += 1
+	var w := BallWorld.new(PhysicsTuning.maze_defaults())
+	w.set_tilt(Vector2(12, 0))
+	var id := w.spawn_ball(Vector2.ZERO, Vector2.ZERO, 5.0)
+	var steps := 0
+	while w.get_ball_velocity(id).x < 93.74 and steps < 1000:
+		w.step(1.0 / 120.0)
+		steps += 1
+	assert_almost_eq(w.get_ball_velocity(id).x, 1.5 / 0.016, 0.01, "same top speed in px/s")
+	assert_almost_eq(steps / 120.0, frames * 0.016, 0.02, "reached in about the same time")
+	for _i: int in 120:
+		w.step(1.0 / 120.0)
+	assert_almost_eq(w.get_ball_velocity(id).length(), 93.75, 0.01, "stays capped")
+
+
+func test_speed_cap_holds_under_gravity() -> void:
+	var t := PhysicsTuning.pachinko_defaults()
+	t.max_speed = 300.0
+	var w := BallWorld.new(t)
+	var id := w.spawn_ball(Vector2.ZERO, Vector2.ZERO, 5.0)
+	for _i: int in 240:
+		w.step(1.0 / 120.0)
+	assert_almost_eq(w.get_ball_velocity(id).length(), 300.0, 0.01)
