@@ -95,6 +95,9 @@ static func _draw_pachinko(canvas: CanvasItem, level: BoardLevel, layers: int) -
 		canvas.draw_polyline(guide, RAIL_COLOR, LaunchRail.GUIDE_WALL_RADIUS * 2.0)
 		var stop := LaunchRail.stopper(level)
 		canvas.draw_line(stop[0], stop[1], RAIL_COLOR, LaunchRail.GUIDE_WALL_RADIUS * 2.0)
+		var deflector := LaunchRail.deflector(level)
+		canvas.draw_line(deflector[0], deflector[1], RAIL_COLOR, LaunchRail.GUIDE_WALL_RADIUS * 2.0)
+		canvas.draw_circle(deflector[1], LaunchRail.GUIDE_WALL_RADIUS, RAIL_COLOR)
 		canvas.draw_circle(
 			LaunchRail.launch_position(level), level.ball_radius, BALL_COLOR, false, 1.0
 		)

@@ -10,6 +10,13 @@ extends RefCounted
 const GUIDE_WALL_RADIUS := 2.0
 ## Largest angle between two guide points, degrees (keeps the capsule chain smooth).
 const GUIDE_STEP_DEG := 3.0
+## The deflector past the rail's end: a ramp leaving the ring DEFLECTOR_OUTER_DEG past the
+## end and reaching DEFLECTOR_DEPTH rail widths inside the ring DEFLECTOR_INNER_DEG past it.
+## A fast ball riding the ring slides off along it into the field instead of riding on round
+## the ring into the gutter; the wedge it makes with the ring opens away from the rail.
+const DEFLECTOR_OUTER_DEG := 8.0
+const DEFLECTOR_INNER_DEG := 25.0
+const DEFLECTOR_DEPTH := 1.5
 
 
 ## Radius of the guide arc's centre line.
@@ -43,9 +50,28 @@ static func stopper(level: BoardLevel) -> PackedVector2Array:
 	)
 
 
-## Centre of the return zone: where a ball resting on the stopper sits.
+## Radius at which a ball rides the ring: touching it from inside.
+static func riding_radius(level: BoardLevel) -> float:
+	return level.ring_radius - level.ball_radius - 0.05
+
+
+## The deflector wall past the rail's end, as [a on the ring, b inside the field].
+static func deflector(level: BoardLevel) -> PackedVector2Array:
+	var sense := _rail_sense(level)
+	var outer := _unit(level.rail_end_deg + sense * DEFLECTOR_OUTER_DEG)
+	var inner := _unit(level.rail_end_deg + sense * DEFLECTOR_INNER_DEG)
+	return PackedVector2Array(
+		[
+			level.ring_center + outer * level.ring_radius,
+			level.ring_center + inner * (level.ring_radius - level.rail_width * DEFLECTOR_DEPTH),
+		]
+	)
+
+
+## Centre of the return zone: where a ball resting on the stopper sits (it lies against
+## the ring there).
 static func return_zone_center(level: BoardLevel) -> Vector2:
-	return _lane_point(level, level.ball_radius + GUIDE_WALL_RADIUS)
+	return _ring_point(level, level.ball_radius + GUIDE_WALL_RADIUS)
 
 
 ## Radius of the return zone (a little under a ball, so only a ball that came back counts).
@@ -53,9 +79,10 @@ static func return_zone_radius(level: BoardLevel) -> float:
 	return level.ball_radius
 
 
-## Where a new ball is placed: in the channel, clear of the return zone above it.
+## Where a new ball is placed: against the ring in the channel, clear of the return zone
+## below it. Starting in contact, the ball slides up the ring instead of bouncing off it.
 static func launch_position(level: BoardLevel) -> Vector2:
-	return _lane_point(level, GUIDE_WALL_RADIUS + level.ball_radius * 4.0)
+	return _ring_point(level, GUIDE_WALL_RADIUS + level.ball_radius * 4.0)
 
 
 ## Unit direction to fire a ball in: along the channel, up the rail.
@@ -106,6 +133,6 @@ static func _rail_sense(level: BoardLevel) -> float:
 	return -1.0 if level.rail_end_deg < level.rail_start_deg else 1.0
 
 
-static func _lane_point(level: BoardLevel, arc_length: float) -> Vector2:
+static func _ring_point(level: BoardLevel, arc_length: float) -> Vector2:
 	var angle := _lane_angle(level, arc_length)
-	return level.ring_center + Vector2(cos(angle), sin(angle)) * lane_radius(level)
+	return level.ring_center + Vector2(cos(angle), sin(angle)) * riding_radius(level)

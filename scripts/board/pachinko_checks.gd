@@ -155,11 +155,11 @@ static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue])
 			c,
 			"bad_gutter"
 		)
-	elif level.gutter_bounces < 0:
+	elif level.gutter_bounces < 1:
 		_add(
 			issues,
 			ERROR,
-			"Gutter bounces cannot be negative (got %d)." % level.gutter_bounces,
+			"The gutter needs at least one bounce (got %d)." % level.gutter_bounces,
 			c,
 			"bad_gutter"
 		)

@@ -1,0 +1,63 @@
+class_name BoardWorldFactory
+extends RefCounted
+## Builds the physics world for a board: the one place that turns level data into shapes.
+##
+## Pachinko: ring, gutter, pins (with pocket ids and special flags), the launch rail's guide
+## arc, its stopper and the deflector past its end as capsules (in that order), and the rail's return zone as zone 0.
+## Maze: the level's walls (same indices as in the level), then four invisible edge walls
+## that keep balls on the board, the goal (goal 0) and, in hard mode only, the black holes.
+
+
+## A ready world (grid built) for `level`; null with an error for a missing level.
+static func build(level: BoardLevel, hard_mode: bool = false) -> BallWorld:
+	if level == null:
+		push_error("BoardWorldFactory.build: no level given")
+		return null
+	var world := BallWorld.new(tuning_for(level))
+	if level.is_pachinko():
+		_build_pachinko(world, level)
+	else:
+		_build_maze(world, level, hard_mode)
+	world.build_grid()
+	return world
+
+
+## The level's tuning, or the physics defaults for its kind when it has none.
+static func tuning_for(level: BoardLevel) -> PhysicsTuning:
+	if level.tuning != null:
+		return level.tuning
+	return PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
+
+
+static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
+	world.set_ring(level.ring_center, level.ring_radius)
+	world.set_gutter(level.gutter_start_deg, level.gutter_end_deg, maxi(level.gutter_bounces, 1))
+	var count := mini(level.pins.size(), mini(level.pin_pocket.size(), level.pin_special.size()))
+	for i in count:
+		world.add_pin(
+			level.pins[i], level.pin_radius, level.pin_pocket[i], level.pin_special[i] != 0
+		)
+	var guide := LaunchRail.guide_points(level)
+	for i in guide.size() - 1:
+		world.add_wall(guide[i], guide[i + 1], LaunchRail.GUIDE_WALL_RADIUS)
+	var stop := LaunchRail.stopper(level)
+	world.add_wall(stop[0], stop[1], LaunchRail.GUIDE_WALL_RADIUS)
+	var deflector := LaunchRail.deflector(level)
+	world.add_wall(deflector[0], deflector[1], LaunchRail.GUIDE_WALL_RADIUS)
+	# Zone 0: a ball that rolls back down the rail lands here and returns to the cup.
+	world.add_zone(LaunchRail.return_zone_center(level), LaunchRail.return_zone_radius(level))
+
+
+static func _build_maze(world: BallWorld, level: BoardLevel, hard_mode: bool) -> void:
+	for w in level.walls.size() / 2:
+		world.add_wall(level.walls[w * 2], level.walls[w * 2 + 1], level.wall_width * 0.5)
+	# The board's edges hold the balls even where the design has no border wall.
+	var corners := [
+		Vector2.ZERO, Vector2(level.size.x, 0.0), level.size, Vector2(0.0, level.size.y)
+	]
+	for i in 4:
+		world.add_wall(corners[i], corners[(i + 1) % 4], 0.0)
+	world.add_goal(level.goal_center, level.goal_radius)
+	if hard_mode:
+		for hole in level.holes:
+			world.add_hole(hole, level.hole_radius)
