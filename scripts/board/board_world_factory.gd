@@ -3,7 +3,8 @@ extends RefCounted
 ## Builds the physics world for a board: the one place that turns level data into shapes.
 ##
 ## Pachinko: ring, gutter, pins (with pocket ids and special flags), the launch rail's guide
-## arc, its stopper and the deflector past its end as capsules (in that order), and the rail's return zone as zone 0.
+## arc, its stopper and the deflector past its end as capsules (in that order), and the
+## rail's return zone as zone 0.
 ## Maze: the level's walls (same indices as in the level), then four invisible edge walls
 ## that keep balls on the board, the goal (goal 0) and, in hard mode only, the black holes.
 
