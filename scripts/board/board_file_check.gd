@@ -63,7 +63,9 @@ static func _split(text: String, out: Array[Dictionary]) -> String:
 			continue
 		var equals := line.find("=")
 		var key := line.substr(0, equals).strip_edges() if equals > 0 else ""
-		if key.is_empty() or not key.is_valid_identifier() and not key.begins_with("metadata/"):
+		if out.is_empty():
+			return "this is not a Godot text resource (it does not start with [gd_resource])"
+		if not key.replace("/", "_").is_valid_identifier():
 			return "line %d cannot be read: '%s'" % [line_number, line.left(40)]
 		var value := line.substr(equals + 1).strip_edges()
 		var state := _scan(value, [0, false])
