@@ -1,0 +1,228 @@
+extends Control
+## The tilt maze screen: loads the board the App picked, owns the MazeRules, feeds it the
+## tilt from the joystick / keys / stick / accelerometer, and shows the result: the board
+## drawn 2D into a SubViewport, that texture on a quad tilting in 3D, and the seed's note,
+## with a timer, the best time and the mode beside the joystick.
+
+const Palette := preload("res://scenes/maze/maze_palette.gd")
+const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+const TiltMixer := preload("res://scripts/maze/tilt_mixer.gd")
+const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
+const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
+const FALLBACK_BOARD := "res://levels/maze/classic.tres"
+## Texture pixels per board pixel: sharp at 1080p, still fine when shrunk at 720p.
+const CANVAS_SCALE := 3.0
+## Wall hits quieter than this (px/s) make no sound.
+const THUD_MIN_SPEED := 20.0
+
+## The rules of the board being played (null if no board could be loaded).
+var rules: MazeRules
+## Where the tilt comes from.
+var mixer := TiltMixer.new()
+
+var _sounds: SoundBank
+var _load_problem := ""
+
+@onready var _stage: Node3D = $Stage
+@onready var _canvas: SubViewport = $BoardCanvas
+@onready var _board_view: Node2D = $BoardCanvas/BoardView
+@onready var _joystick: Control = %Joystick
+@onready var _note: VBoxContainer = %Note
+@onready var _title: Label = %Title
+@onready var _mode: Label = %Mode
+@onready var _timer: Label = %Timer
+@onready var _best: Label = %Best
+@onready var _calibrate: Button = %Calibrate
+@onready var _controls: Label = %Controls
+
+
+func _ready() -> void:
+	_sounds = SoundBank.new()
+	add_child(_sounds)
+	_add_optional_scene(PAUSE_MENU)
+	_add_optional_scene(FRAME_COUNTER)
+	mixer.sensitivity = App.settings.tilt_sensitivity
+	_joystick.pressed.connect(_on_joystick_pressed)
+	_joystick.moved.connect(mixer.joystick_moved)
+	_calibrate.pressed.connect(_on_calibrate)
+	_calibrate.visible = false
+	_controls.text = _controls_text()
+	var level := _load_level()
+	if level == null:
+		_note.show_note("This board could not be loaded.", _load_problem)
+		_joystick.hide()
+		return
+	rules = MazeRules.new(level)
+	rules.won.connect(_on_won)
+	rules.lost.connect(_on_lost)
+	rules.game_reset.connect(_on_game_reset)
+	rules.goal_count_changed.connect(_on_goal_count_changed)
+	rules.wall_bumped.connect(_on_wall_bumped)
+	_board_view.rules = rules
+	_board_view.scale = Vector2.ONE * CANVAS_SCALE
+	_canvas.size = Vector2i((level.size * CANVAS_SCALE).ceil())
+	_stage.set_board(_canvas.get_texture(), level.size)
+	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
+	_on_game_reset()
+
+
+func _process(delta: float) -> void:
+	if rules == null:
+		return
+	var keys := Input.get_vector("tilt_left", "tilt_right", "tilt_up", "tilt_down")
+	var accel := Input.get_accelerometer()
+	_calibrate.visible = mixer.has_accelerometer()
+	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
+		_start()
+	if rules.is_playing():
+		var tilt := mixer.update(delta, keys, accel)
+		rules.set_tilt(tilt)
+		if mixer.source != TiltMixer.Source.JOYSTICK:
+			_joystick.head_offset = TiltInput.joystick_from_tilt(tilt)
+		rules.advance(delta)
+	_stage.set_tilt(rules.tilt)
+	_timer.text = "Time  %s" % _format_time(rules.elapsed)
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if rules == null:
+		return
+	if event.is_action_pressed("maze_reset"):
+		rules.reset()
+	elif event.is_action_pressed("maze_hard_mode"):
+		rules.set_hard_mode(true)
+	elif event.is_action_pressed("maze_easy_mode"):
+		rules.set_hard_mode(false)
+	elif event.is_action_pressed("maze_calibrate"):
+		_on_calibrate()
+	elif event.is_action_pressed("game_start") and rules.state == MazeRules.State.READY:
+		_start()
+	else:
+		return
+	get_viewport().set_input_as_handled()
+
+
+func _start() -> void:
+	if rules.state != MazeRules.State.READY:
+		return
+	rules.start()
+	_note.fade_out()
+	_sounds.play(SoundBank.UI_CLICK, -8.0)
+
+
+func _on_joystick_pressed() -> void:
+	if rules != null and rules.state == MazeRules.State.READY:
+		_start()
+	elif rules != null and rules.is_over():
+		rules.reset()
+		_start()
+
+
+func _on_calibrate() -> void:
+	mixer.calibrate()
+	_sounds.play(SoundBank.UI_CLICK, -8.0)
+
+
+func _on_game_reset() -> void:
+	_joystick.release()
+	mixer.reset()
+	_stage.set_tilt(Vector2.ZERO)
+	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
+	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
+	var hint := (
+		"Hard mode: avoid the black holes. Back to easy mode? Press %s" % _key("maze_easy_mode")
+		if rules.hard_mode
+		else "Move every ball to the center. Ready for hard mode? Press %s" % _key("maze_hard_mode")
+	)
+	_note.show_note("Click the joystick to start!", hint)
+	_show_best()
+
+
+func _on_won(seconds: float) -> void:
+	_joystick.release()
+	var best := App.record_maze_time(rules.level.board_id, seconds)
+	var hint := "" if rules.hard_mode else "Press %s for hard mode" % _key("maze_hard_mode")
+	var line := "Your time: %s%s" % [_format_time(seconds), "  (a new best!)" if best else ""]
+	_note.show_note("Congrats, you did it!", "%s\n%s" % [line, hint] if hint else line)
+	_show_best()
+	_sounds.play(SoundBank.FANFARE)
+
+
+func _on_lost(_hole: int) -> void:
+	_joystick.release()
+	_note.show_note(
+		"A ball fell into a black hole! Press %s to reset the game." % _key("maze_reset"),
+		"Back to easy? Press %s" % _key("maze_easy_mode")
+	)
+	_sounds.play(SoundBank.HOLE_FALL)
+
+
+func _on_goal_count_changed(_count: int) -> void:
+	if rules.balls_in_goal > 0:
+		_sounds.play(SoundBank.GOAL_CHIME, -10.0, 0.9 + 0.1 * float(rules.balls_in_goal))
+
+
+func _on_wall_bumped(speed: float) -> void:
+	_sounds.play_impact(SoundBank.WALL_THUD, speed, THUD_MIN_SPEED, 94.0)
+
+
+func _on_restart_requested() -> void:
+	if rules != null:
+		rules.reset()
+
+
+func _show_best() -> void:
+	var best := App.best_maze_time(rules.level.board_id)
+	_best.text = "Best  %s" % (_format_time(best) if best >= 0.0 else "--")
+
+
+func _load_level() -> BoardLevel:
+	var path := App.current_board_path("maze")
+	var loaded := BoardLoader.load_board(path)
+	if loaded.level != null and loaded.level.is_maze():
+		return loaded.level
+	_load_problem = loaded.error if loaded.level == null else "%s is not a maze board" % path
+	push_error("MazeGame: %s" % _load_problem)
+	if path == FALLBACK_BOARD:
+		return null
+	var fallback := BoardLoader.load_board(FALLBACK_BOARD)
+	return fallback.level
+
+
+func _add_optional_scene(path: String) -> void:
+	if not ResourceLoader.exists(path):
+		push_warning("MazeGame: %s is missing" % path)
+		return
+	var packed: PackedScene = load(path)
+	var node := packed.instantiate()
+	add_child(node)
+	if node.has_signal("restart_requested"):
+		node.connect("restart_requested", _on_restart_requested)
+
+
+func _controls_text() -> String:
+	return (
+		"Tilt: joystick, %s, or a gamepad stick\n%s reset  ·  %s hard  ·  %s easy  ·  %s pause"
+		% [
+			"arrows / WASD",
+			_key("maze_reset"),
+			_key("maze_hard_mode"),
+			_key("maze_easy_mode"),
+			_key("pause"),
+		]
+	)
+
+
+## The name of the first key bound to `action` ("Space", "H"), for the player-facing text.
+static func _key(action: String) -> String:
+	for event in InputMap.action_get_events(action):
+		var key := event as InputEventKey
+		if key != null:
+			var code := key.physical_keycode if key.keycode == KEY_NONE else key.keycode
+			return OS.get_keycode_string(code)
+	return action
+
+
+static func _format_time(seconds: float) -> String:
+	var whole := int(seconds)
+	return "%d:%02d.%d" % [whole / 60, whole % 60, int(fmod(seconds, 1.0) * 10.0)]

@@ -1,0 +1,102 @@
+extends Control
+## The seed's joystick: a dark purple disc with four arrows and a red-orange head. Press the
+## head to start; after that the head follows the pointer (clamped to ±15 seed pixels per
+## axis) as in the seed, and `moved` reports the offset, which the game turns into tilt.
+## The head pulses until it is first used. Sizes are the seed's times `ui_scale`.
+
+## The head was pressed (the seed's "click the joystick to start").
+signal pressed
+## The head moved to `offset` seed pixels from the centre (each axis within ±15).
+signal moved(offset: Vector2)
+
+const Palette := preload("res://scenes/maze/maze_palette.gd")
+const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+const DISC_RADIUS := 25.0
+const HEAD_RADIUS := 10.0
+const ARROW_DISTANCE := 55.0
+const ARROW_HALF := 10.0
+## The seed waits 4 s before the head starts to pulse, then pulses 0.6 s each way.
+const GLOW_DELAY := 4.0
+const GLOW_PERIOD := 0.6
+
+## Screen pixels per seed pixel.
+@export var ui_scale := 2.0
+
+## Where the head is drawn, in seed pixels from the centre.
+var head_offset := Vector2.ZERO:
+	set(value):
+		head_offset = TiltInput.clamp_joystick(value)
+		queue_redraw()
+## True until the head is first pressed: it pulses to draw the eye.
+var glowing := true
+## True while the head follows the pointer.
+var engaged := false
+
+var _grab_point := Vector2.ZERO
+var _clock := 0.0
+
+
+func _ready() -> void:
+	custom_minimum_size = Vector2.ONE * (ARROW_DISTANCE + ARROW_HALF + 8.0) * 2.0 * ui_scale
+	mouse_filter = Control.MOUSE_FILTER_STOP
+
+
+func _process(delta: float) -> void:
+	_clock += delta
+	if glowing:
+		queue_redraw()
+
+
+## Stops following the pointer and centres the head (a reset or the end of a game).
+func release() -> void:
+	engaged = false
+	head_offset = Vector2.ZERO
+
+
+func _gui_input(event: InputEvent) -> void:
+	var press := event as InputEventMouseButton
+	if press == null or not press.pressed or press.button_index != MOUSE_BUTTON_LEFT:
+		return
+	var head := size * 0.5 + head_offset * ui_scale
+	if press.position.distance_to(head) > (HEAD_RADIUS + 8.0) * ui_scale:
+		return
+	accept_event()
+	glowing = false
+	engaged = true
+	_grab_point = press.global_position - head_offset * ui_scale
+	pressed.emit()
+	queue_redraw()
+
+
+func _input(event: InputEvent) -> void:
+	var motion := event as InputEventMouseMotion
+	if motion == null or not engaged:
+		return
+	head_offset = (motion.global_position - _grab_point) / ui_scale
+	moved.emit(head_offset)
+
+
+func _draw() -> void:
+	var c := size * 0.5
+	var s := ui_scale
+	draw_circle(c, DISC_RADIUS * s, Palette.JOYSTICK)
+	for dir: Vector2 in [Vector2.UP, Vector2.DOWN, Vector2.LEFT, Vector2.RIGHT]:
+		var tip := c + dir * (ARROW_DISTANCE + ARROW_HALF) * s
+		var base := c + dir * ARROW_DISTANCE * s
+		var side := dir.orthogonal() * ARROW_HALF * s
+		draw_colored_polygon(PackedVector2Array([tip, base + side, base - side]), Palette.JOYSTICK)
+	var radius := HEAD_RADIUS * s * _glow_scale()
+	var head := c + head_offset * s
+	if glowing:
+		draw_circle(head, radius * 1.35, Color(Palette.BALL, 0.25))
+	draw_circle(head, radius, Palette.BALL)
+	draw_circle(head + Vector2(-0.3, -0.35) * radius, radius * 0.3, Palette.BALL.lightened(0.4))
+
+
+# The seed's glow: scale 1 → 1.2 and back, ease-in-out, after a 4 s delay.
+func _glow_scale() -> float:
+	if not glowing or _clock < GLOW_DELAY:
+		return 1.0
+	var phase := fmod((_clock - GLOW_DELAY) / GLOW_PERIOD, 2.0)
+	var t := phase if phase <= 1.0 else 2.0 - phase
+	return 1.0 + 0.2 * (0.5 - 0.5 * cos(t * PI))

@@ -1,0 +1,45 @@
+class_name MazeAutoplay
+extends RefCounted
+## Plays a maze board headless: a MazePilot tilts the board each physics step until every
+## ball is in the goal, a ball falls into a hole, or the time runs out. Same board, seconds
+## and seed → the same result, step for step.
+
+const MazePilot := preload("res://scripts/maze/maze_pilot.gd")
+
+
+## Plays `level` for up to `seconds` of simulated time with the pilot seeded by `seed`.
+## Returns won, time_to_win (-1 when not won), balls_in_goal (at the end),
+## max_balls_in_goal, balls_lost_in_holes, frames_simulated, hard_mode, state_hash.
+static func run(level: BoardLevel, seconds: float, seed: int, hard_mode := false) -> Dictionary:
+	if level == null or not level.is_maze():
+		push_error("MazeAutoplay: a maze board is needed")
+		return {"ok": false, "error": "MazeAutoplay: a maze board is needed"}
+	if not is_finite(seconds) or seconds <= 0.0:
+		return {"ok": false, "error": "MazeAutoplay: seconds must be > 0, got %s" % seconds}
+	var rules := MazeRules.new(level, hard_mode)
+	if not rules.is_ready():
+		return {"ok": false, "error": "MazeAutoplay: board '%s' did not build" % level.board_id}
+	var rng := RandomNumberGenerator.new()
+	rng.seed = seed
+	var pilot := MazePilot.new(level, hard_mode, rng, rules.step_seconds())
+	rules.start()
+	var frames := 0
+	var most_in_goal := 0
+	var limit := int(ceil(seconds / rules.step_seconds()))
+	while frames < limit and rules.is_playing():
+		var world := rules.world
+		rules.set_tilt(pilot.decide(world.get_positions(), world.get_velocities()))
+		rules.step()
+		frames += 1
+		most_in_goal = maxi(most_in_goal, rules.balls_in_goal)
+	var won := rules.state == MazeRules.State.WON
+	return {
+		"won": won,
+		"time_to_win": snappedf(rules.elapsed, 0.001) if won else -1.0,
+		"balls_in_goal": rules.balls_in_goal,
+		"max_balls_in_goal": most_in_goal,
+		"balls_lost_in_holes": rules.balls_lost(),
+		"frames_simulated": frames,
+		"hard_mode": hard_mode,
+		"state_hash": rules.world.state_hash(),
+	}

@@ -1,0 +1,132 @@
+extends RefCounted
+## A maze board seen as its grid: which cell a point is in and which cell sides are walls.
+## Built from the board's wall segments; walls that do not lie on grid lines make the board
+## "not a grid" (`is_grid` false), and the autoplay then steers without the grid planner.
+##
+## `slide(cell, dir)` is where a ball ends up when the board is tilted hard toward one of
+## eight directions and held until it stops: it rolls on while a side is open, and with a
+## diagonal tilt it follows whichever of its two axes is open.
+
+## The eight tilt directions, as unit steps in cells.
+const DIRECTIONS: Array[Vector2i] = [
+	Vector2i(1, 0),
+	Vector2i(-1, 0),
+	Vector2i(0, 1),
+	Vector2i(0, -1),
+	Vector2i(1, 1),
+	Vector2i(1, -1),
+	Vector2i(-1, 1),
+	Vector2i(-1, -1),
+]
+## How far off a grid line a wall end may be and still count as on it, px.
+const SNAP := 0.5
+
+var cols := 0
+var rows := 0
+## Size of one cell (corridor plus one wall), px.
+var cell := Vector2.ONE
+## True when every wall lies on the grid.
+var is_grid := true
+## horizontal[r * cols + c]: a wall on grid line r across cell column c (r in 0..rows).
+var horizontal := PackedByteArray()
+## vertical[r * (cols + 1) + c]: a wall on grid line c down cell row r (c in 0..cols).
+var vertical := PackedByteArray()
+## slides[cell_index * 8 + direction] → the cell a hard tilt takes a ball to.
+var slides := PackedInt32Array()
+
+
+## Reads the grid of a maze `level`.
+func _init(level: BoardLevel) -> void:
+	cols = level.grid_cols
+	rows = level.grid_rows
+	if cols <= 0 or rows <= 0 or level.size.x <= 0.0 or level.size.y <= 0.0:
+		is_grid = false
+		return
+	cell = Vector2(level.size.x / float(cols), level.size.y / float(rows))
+	horizontal.resize(cols * (rows + 1))
+	vertical.resize((cols + 1) * rows)
+	for i in range(0, level.walls.size() - 1, 2):
+		_mark(level.walls[i], level.walls[i + 1])
+	_build_slides()
+
+
+## Number of cells.
+func cell_count() -> int:
+	return cols * rows
+
+
+## The index of the cell containing `pos` (clamped to the board).
+func cell_at(pos: Vector2) -> int:
+	var c := clampi(floori(pos.x / cell.x), 0, cols - 1)
+	var r := clampi(floori(pos.y / cell.y), 0, rows - 1)
+	return r * cols + c
+
+
+## The centre of cell `index`, px.
+func cell_center(index: int) -> Vector2:
+	return (Vector2(index % cols, index / cols) + Vector2(0.5, 0.5)) * cell
+
+
+## True when a ball in cell (c, r) can roll one cell in direction (dx, 0) or (0, dy).
+func is_open(c: int, r: int, dx: int, dy: int) -> bool:
+	if dx > 0:
+		return c + 1 < cols and vertical[r * (cols + 1) + c + 1] == 0
+	if dx < 0:
+		return c > 0 and vertical[r * (cols + 1) + c] == 0
+	if dy > 0:
+		return r + 1 < rows and horizontal[(r + 1) * cols + c] == 0
+	if dy < 0:
+		return r > 0 and horizontal[r * cols + c] == 0
+	return false
+
+
+## Where a hard tilt toward DIRECTIONS[dir] takes a ball from cell `index`.
+func slide(index: int, dir: int) -> int:
+	return slides[index * 8 + dir]
+
+
+func _build_slides() -> void:
+	slides.resize(cell_count() * 8)
+	for index in cell_count():
+		for d in 8:
+			slides[index * 8 + d] = _roll(index, DIRECTIONS[d])
+
+
+func _roll(index: int, step: Vector2i) -> int:
+	var c := index % cols
+	var r := index / cols
+	for _guard in cols + rows + 2:
+		var moved := false
+		if step.x != 0 and is_open(c, r, step.x, 0):
+			c += step.x
+			moved = true
+		if step.y != 0 and is_open(c, r, 0, step.y):
+			r += step.y
+			moved = true
+		if not moved:
+			break
+	return r * cols + c
+
+
+func _mark(a: Vector2, b: Vector2) -> void:
+	var ga := a / cell
+	var gb := b / cell
+	var on_x := (
+		absf(ga.x - roundf(ga.x)) * cell.x < SNAP and absf(gb.x - roundf(gb.x)) * cell.x < SNAP
+	)
+	var on_y := (
+		absf(ga.y - roundf(ga.y)) * cell.y < SNAP and absf(gb.y - roundf(gb.y)) * cell.y < SNAP
+	)
+	if not (on_x and on_y) or (a.x != b.x and a.y != b.y):
+		is_grid = false
+		return
+	var c0 := roundi(minf(ga.x, gb.x))
+	var c1 := roundi(maxf(ga.x, gb.x))
+	var r0 := roundi(minf(ga.y, gb.y))
+	var r1 := roundi(maxf(ga.y, gb.y))
+	if r0 == r1 and r0 >= 0 and r0 <= rows:
+		for c in range(maxi(c0, 0), mini(c1, cols)):
+			horizontal[r0 * cols + c] = 1
+	elif c0 == c1 and c0 >= 0 and c0 <= cols:
+		for r in range(maxi(r0, 0), mini(r1, rows)):
+			vertical[r * (cols + 1) + c0] = 1

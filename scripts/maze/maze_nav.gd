@@ -1,0 +1,221 @@
+extends RefCounted
+## A distance field over a maze board: for every point of a fine lattice, the length of the
+## shortest path a ball's centre can roll from there to the goal, keeping clear of walls
+## (and of black holes in hard mode). Paths prefer the middle of corridors, where a ball
+## does not scrape caps. The autoplay steers each ball down this field.
+
+## Lattice spacing in pixels.
+const SPACING := 2.5
+## Extra clearance (px) beyond touching that the paths try to keep.
+const COMFORT := 6.0
+## How much a path pays for hugging a wall (multiplies its length at zero clearance).
+const HUG_COST := 3.0
+## Distance of unreachable points.
+const FAR := 1.0e9
+
+var cols := 0
+var rows := 0
+## Clearance of each lattice point: distance from the ball's edge to the nearest obstacle.
+var clearance := PackedFloat32Array()
+## Path length to the goal from each lattice point (FAR when unreachable).
+var distance := PackedFloat32Array()
+var _goal := Vector2.ZERO
+var _heap_cost := PackedFloat32Array()
+var _heap_idx := PackedInt32Array()
+
+
+## Builds the field for `level`; `with_holes` treats black holes as obstacles.
+func _init(level: BoardLevel, with_holes := false) -> void:
+	if level == null or level.size.x <= 0.0 or level.size.y <= 0.0:
+		push_error("MazeNav: the board has no size")
+		return
+	cols = int(ceil(level.size.x / SPACING)) + 1
+	rows = int(ceil(level.size.y / SPACING)) + 1
+	_goal = level.goal_center
+	_build_clearance(level, with_holes)
+	_build_distance()
+
+
+## Path length from `pos` to the goal (the nearest lattice point's value).
+func distance_at(pos: Vector2) -> float:
+	var i := _nearest_free(pos)
+	return distance[i] if i >= 0 else FAR
+
+
+## A point about `ahead` pixels further along the best path from `pos` toward the goal.
+## Returns the goal when `pos` is already close to it.
+func carrot(pos: Vector2, ahead: float) -> Vector2:
+	var i := _nearest_free(pos)
+	if i < 0:
+		return _goal
+	var steps := int(ceil(ahead / SPACING))
+	for _s in steps:
+		var next := _downhill(i)
+		if next == i:
+			break
+		i = next
+	return _point(i)
+
+
+## Lattice index → position.
+func _point(i: int) -> Vector2:
+	return Vector2(float(i % cols), float(i / cols)) * SPACING
+
+
+func _index(c: int, r: int) -> int:
+	return r * cols + c
+
+
+func _build_clearance(level: BoardLevel, with_holes: bool) -> void:
+	var n := cols * rows
+	clearance.resize(n)
+	clearance.fill(COMFORT * 2.0)
+	var reach := level.wall_width * 0.5 + level.ball_radius
+	var walls := level.walls
+	for w in range(0, walls.size() - 1, 2):
+		_stamp_segment(walls[w], walls[w + 1], reach)
+	if with_holes:
+		for h in level.holes:
+			_stamp_segment(h, h, level.hole_radius + level.ball_radius * 0.5)
+	# The board's own edge is a wall too.
+	for r in rows:
+		for c in cols:
+			var p := Vector2(c, r) * SPACING
+			var edge := minf(minf(p.x, level.size.x - p.x), minf(p.y, level.size.y - p.y))
+			var i := _index(c, r)
+			clearance[i] = minf(clearance[i], edge - level.ball_radius)
+
+
+# Lowers the clearance of every lattice point near the segment a–b (grown by `reach`).
+func _stamp_segment(a: Vector2, b: Vector2, reach: float) -> void:
+	var margin := reach + COMFORT * 2.0
+	var lo := (a.min(b) - Vector2(margin, margin)) / SPACING
+	var hi := (a.max(b) + Vector2(margin, margin)) / SPACING
+	for r in range(maxi(0, floori(lo.y)), mini(rows, ceili(hi.y) + 1)):
+		for c in range(maxi(0, floori(lo.x)), mini(cols, ceili(hi.x) + 1)):
+			var p := Vector2(c, r) * SPACING
+			var q := Geometry2D.get_closest_point_to_segment(p, a, b)
+			var i := _index(c, r)
+			clearance[i] = minf(clearance[i], p.distance_to(q) - reach)
+
+
+func _build_distance() -> void:
+	var n := cols * rows
+	distance.resize(n)
+	distance.fill(FAR)
+	var start := _nearest_free(_goal)
+	if start < 0:
+		push_error("MazeNav: the goal is inside a wall")
+		return
+	distance[start] = 0.0
+	# Dijkstra with a binary heap of [cost, index] pairs kept in two packed arrays.
+	_heap_cost = PackedFloat32Array([0.0])
+	_heap_idx = PackedInt32Array([start])
+	var offsets: Array[Vector2i] = [
+		Vector2i(1, 0),
+		Vector2i(-1, 0),
+		Vector2i(0, 1),
+		Vector2i(0, -1),
+		Vector2i(1, 1),
+		Vector2i(1, -1),
+		Vector2i(-1, 1),
+		Vector2i(-1, -1),
+	]
+	while not _heap_idx.is_empty():
+		var cost := _heap_cost[0]
+		var i := _heap_idx[0]
+		_heap_pop()
+		if cost > distance[i]:
+			continue
+		var c := i % cols
+		var r := i / cols
+		for o in offsets:
+			var nc := c + o.x
+			var nr := r + o.y
+			if nc < 0 or nr < 0 or nc >= cols or nr >= rows:
+				continue
+			var j := _index(nc, nr)
+			if clearance[j] < 0.0:
+				continue
+			var length := SPACING * (1.4142 if o.x != 0 and o.y != 0 else 1.0)
+			var hug := maxf(0.0, COMFORT - clearance[j]) / COMFORT
+			var next_cost := cost + length * (1.0 + HUG_COST * hug)
+			if next_cost < distance[j]:
+				distance[j] = next_cost
+				_heap_push(next_cost, j)
+
+
+func _nearest_free(pos: Vector2) -> int:
+	var c0 := clampi(roundi(pos.x / SPACING), 0, cols - 1)
+	var r0 := clampi(roundi(pos.y / SPACING), 0, rows - 1)
+	var best := -1
+	var best_d := INF
+	for r in range(maxi(0, r0 - 3), mini(rows, r0 + 4)):
+		for c in range(maxi(0, c0 - 3), mini(cols, c0 + 4)):
+			var i := _index(c, r)
+			if clearance[i] < 0.0:
+				continue
+			var d := pos.distance_squared_to(Vector2(c, r) * SPACING)
+			if distance.size() == clearance.size() and distance[i] >= FAR:
+				d += 1.0e6  # prefer a point that can reach the goal
+			if d < best_d:
+				best_d = d
+				best = i
+	return best
+
+
+func _downhill(i: int) -> int:
+	var c := i % cols
+	var r := i / cols
+	var best := i
+	for dr in [-1, 0, 1]:
+		for dc in [-1, 0, 1]:
+			var nc: int = c + dc
+			var nr: int = r + dr
+			if nc < 0 or nr < 0 or nc >= cols or nr >= rows:
+				continue
+			var j := _index(nc, nr)
+			if distance[j] < distance[best]:
+				best = j
+	return best
+
+
+func _heap_push(cost: float, id: int) -> void:
+	_heap_cost.append(cost)
+	_heap_idx.append(id)
+	var k := _heap_cost.size() - 1
+	while k > 0:
+		var parent := (k - 1) >> 1
+		if _heap_cost[parent] <= _heap_cost[k]:
+			break
+		_heap_swap(k, parent)
+		k = parent
+
+
+func _heap_pop() -> void:
+	var last := _heap_cost.size() - 1
+	_heap_cost[0] = _heap_cost[last]
+	_heap_idx[0] = _heap_idx[last]
+	_heap_cost.resize(last)
+	_heap_idx.resize(last)
+	var k := 0
+	while true:
+		var left := 2 * k + 1
+		if left >= last:
+			break
+		var child := left
+		if left + 1 < last and _heap_cost[left + 1] < _heap_cost[left]:
+			child = left + 1
+		if _heap_cost[k] <= _heap_cost[child]:
+			break
+		_heap_swap(k, child)
+		k = child
+
+
+func _heap_swap(a: int, b: int) -> void:
+	var tc := _heap_cost[a]
+	_heap_cost[a] = _heap_cost[b]
+	_heap_cost[b] = tc
+	var ti := _heap_idx[a]
+	_heap_idx[a] = _heap_idx[b]
+	_heap_idx[b] = ti

@@ -1,0 +1,213 @@
+class_name MazeRules
+extends RefCounted
+## The tilt maze's rules: owns the BallWorld of one board, turns the tilt into gravity and
+## rolling friction the way the seed does, runs the clock, and decides win and loss.
+## Never draws; the view reads positions and listens to the signals.
+##
+## Life of a game: READY (balls at the start, waiting for the first press of the joystick),
+## PLAYING (the world steps, the clock runs), then WON or LOST until `reset()`.
+
+## The game began (the joystick was pressed).
+signal started
+## Every ball is inside the goal circle; `seconds` is the attempt's time.
+signal won(seconds: float)
+## A ball fell into black hole `hole_index` (hard mode); the game is over.
+signal lost(hole_index: int)
+## The balls went back to their starts (Space, a mode switch, or a restart).
+signal game_reset
+## Hard mode was switched on or off.
+signal mode_changed(hard: bool)
+## A ball hit a wall at `impact_speed` px/s (for sounds).
+signal wall_bumped(impact_speed: float)
+## The number of balls inside the goal circle changed.
+signal goal_count_changed(balls_in_goal: int)
+
+enum State { READY, PLAYING, WON, LOST }
+
+const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+
+## The board being played.
+var level: BoardLevel
+## The simulation; rebuilt on every reset.
+var world: BallWorld
+## Where the game is in its life.
+var state: State = State.READY
+## True when black holes are on the board.
+var hard_mode := false
+## Seconds of simulated play in this attempt (stops at a win or loss).
+var elapsed := 0.0
+## Current tilt in degrees per axis (+x rolls right, +y rolls down).
+var tilt := Vector2.ZERO
+## The hole a ball fell into, or -1.
+var lost_hole := -1
+## Balls whose centre is inside the goal circle now.
+var balls_in_goal := 0
+
+var _accumulator := 0.0
+var _step_dt := 1.0 / 120.0
+
+
+## Builds the world for `board` (a maze BoardLevel) in easy or hard mode.
+func _init(board: BoardLevel, hard := false) -> void:
+	level = board
+	hard_mode = hard
+	_rebuild()
+
+
+## True when the board could be built (a bad board leaves `world` null and reports it).
+func is_ready() -> bool:
+	return world != null
+
+
+## Starts the clock and the physics (the seed's "click the joystick to start").
+## Does nothing unless the game is waiting at the start.
+func start() -> void:
+	if state != State.READY or world == null:
+		return
+	state = State.PLAYING
+	started.emit()
+
+
+## True while the balls roll and the clock runs.
+func is_playing() -> bool:
+	return state == State.PLAYING
+
+
+## True once the game ended (won or lost) and waits for a reset.
+func is_over() -> bool:
+	return state == State.WON or state == State.LOST
+
+
+## Sets the board's tilt in degrees per axis, clamped to ±12°. Gravity and friction follow
+## at once; the view eases its own picture of the board toward it.
+func set_tilt(tilt_deg: Vector2) -> void:
+	tilt = TiltInput.clamp_tilt(tilt_deg)
+	_apply_tilt()
+
+
+## Puts the balls back at their starts, flattens the board and waits for the joystick.
+func reset() -> void:
+	_rebuild()
+	game_reset.emit()
+
+
+## Switches hard mode (black holes) on or off; always resets, as the seed's H and E do.
+func set_hard_mode(hard: bool) -> void:
+	var changed := hard != hard_mode
+	hard_mode = hard
+	reset()
+	if changed:
+		mode_changed.emit(hard_mode)
+
+
+## Runs the physics for `delta` seconds of real time in whole fixed steps (only while
+## playing). Returns the number of steps run.
+func advance(delta: float) -> int:
+	if state != State.PLAYING or not is_finite(delta) or delta <= 0.0:
+		return 0
+	# A long hitch (a breakpoint, a window drag) must not replay seconds of physics at once.
+	_accumulator = minf(_accumulator + delta, 0.25)
+	var steps := 0
+	while _accumulator >= _step_dt and state == State.PLAYING:
+		_accumulator -= _step_dt
+		step()
+		steps += 1
+	return steps
+
+
+## One fixed physics step, then the clock, the goal count and the win check.
+func step() -> void:
+	if state != State.PLAYING:
+		return
+	_apply_tilt()
+	world.step(_step_dt)
+	if state != State.PLAYING:
+		return  # a ball fell into a hole during the step
+	elapsed += _step_dt
+	_update_goal()
+
+
+## Length of one physics step, in seconds.
+func step_seconds() -> float:
+	return _step_dt
+
+
+## Ball centres, dense, in the order of `world.get_ids()` (for drawing in one batch).
+func ball_positions() -> PackedVector2Array:
+	return world.get_positions() if world != null else PackedVector2Array()
+
+
+## How many balls the board starts with.
+func ball_total() -> int:
+	return level.ball_starts.size() if level != null else 0
+
+
+## Balls that fell into holes (0 or 1: the first ends the game).
+func balls_lost() -> int:
+	return 1 if lost_hole >= 0 else 0
+
+
+## Counts the balls inside the goal circle (centre within the goal radius, as the seed).
+func count_in_goal() -> int:
+	if world == null:
+		return 0
+	var inside := 0
+	var radius := level.goal_radius
+	for p in world.get_positions():
+		if p.distance_to(level.goal_center) < radius:
+			inside += 1
+	return inside
+
+
+func _rebuild() -> void:
+	state = State.READY
+	elapsed = 0.0
+	tilt = Vector2.ZERO
+	lost_hole = -1
+	balls_in_goal = 0
+	_accumulator = 0.0
+	world = null
+	if level == null or not level.is_maze():
+		push_error("MazeRules: needs a maze board, got %s" % [level])
+		return
+	world = BoardWorldFactory.build(level, hard_mode)
+	if world == null:
+		push_error("MazeRules: could not build board '%s'" % level.board_id)
+		return
+	if world.tuning != null and world.tuning.fixed_hz > 0:
+		_step_dt = 1.0 / float(world.tuning.fixed_hz)
+	if world.ball_count() == 0:
+		for start_pos in level.ball_starts:
+			world.spawn_ball(start_pos, Vector2.ZERO, level.ball_radius)
+	world.ball_fell_in_hole.connect(_on_ball_fell_in_hole)
+	world.wall_hit.connect(_on_wall_hit)
+	_apply_tilt()
+	balls_in_goal = count_in_goal()
+
+
+func _apply_tilt() -> void:
+	if world == null:
+		return
+	world.set_tilt(tilt)
+
+
+func _update_goal() -> void:
+	var inside := count_in_goal()
+	if inside != balls_in_goal:
+		balls_in_goal = inside
+		goal_count_changed.emit(inside)
+	if inside == ball_total() and inside > 0 and world.ball_count() == ball_total():
+		state = State.WON
+		won.emit(elapsed)
+
+
+func _on_ball_fell_in_hole(_ball_id: int, hole_index: int) -> void:
+	if state != State.PLAYING:
+		return
+	lost_hole = hole_index
+	state = State.LOST
+	lost.emit(hole_index)
+
+
+func _on_wall_hit(_ball_id: int, _wall_index: int, impact_speed: float) -> void:
+	wall_bumped.emit(impact_speed)

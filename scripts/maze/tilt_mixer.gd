@@ -1,0 +1,68 @@
+extends RefCounted
+## Decides the board's tilt each frame from every control the player may use: the joystick
+## (as in the seed: the tilt follows the head at once), keys and gamepad stick (the tilt
+## eases toward the target so it feels like a hand on a board, not a switch), and a phone's
+## accelerometer (relative to a calibrated neutral). The last control touched wins.
+
+enum Source { NONE, JOYSTICK, KEYS, ACCELEROMETER }
+
+const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+## Accelerometer readings shorter than this (m/s²) mean the device has none.
+const MIN_ACCEL := 0.5
+
+## The tilt now, in degrees per axis.
+var tilt := Vector2.ZERO
+## Which control drives the tilt.
+var source: Source = Source.NONE
+## Scales keyboard, stick and accelerometer tilt (the settings' tilt sensitivity).
+var sensitivity := 1.0
+## The accelerometer reading that means "flat" (set by `calibrate`).
+var neutral := Vector3.ZERO
+
+var _last_accel := Vector3.ZERO
+
+
+## The joystick head moved to `offset` seed pixels: the tilt follows at once.
+func joystick_moved(offset: Vector2) -> void:
+	source = Source.JOYSTICK
+	tilt = TiltInput.tilt_from_joystick(offset)
+
+
+## Advances one frame. `keys` is the tilt_* action vector (keyboard and stick, each axis
+## -1..1); `accel` the accelerometer reading (zero on devices without one).
+func update(delta: float, keys: Vector2, accel: Vector3) -> Vector2:
+	if keys.length_squared() > 0.0001:
+		source = Source.KEYS
+	if source == Source.KEYS:
+		var target := TiltInput.tilt_from_vector(keys.limit_length(1.0) * sensitivity)
+		tilt = TiltInput.ease_toward(tilt, target, delta)
+		if keys == Vector2.ZERO and tilt.length() < 0.05:
+			tilt = Vector2.ZERO
+	_last_accel = accel
+	if has_accelerometer() and source != Source.JOYSTICK and source != Source.KEYS:
+		if neutral == Vector3.ZERO:
+			calibrate()
+		source = Source.ACCELEROMETER
+		var target := TiltInput.tilt_from_accelerometer(accel, neutral, sensitivity)
+		tilt = TiltInput.ease_toward(tilt, target, delta * 2.0)
+	return tilt
+
+
+## True when the last reading came from a real accelerometer.
+func has_accelerometer() -> bool:
+	return _last_accel.length() > MIN_ACCEL
+
+
+## Takes the current accelerometer reading as flat and hands control back to it.
+func calibrate() -> void:
+	if has_accelerometer():
+		neutral = _last_accel
+		if source == Source.KEYS or source == Source.NONE:
+			source = Source.ACCELEROMETER
+
+
+## Flattens the board and forgets which control was used (a reset).
+func reset() -> void:
+	tilt = Vector2.ZERO
+	if source != Source.ACCELEROMETER:
+		source = Source.NONE
