@@ -206,6 +206,19 @@ func notify_edited() -> void:
 	emit_changed()
 
 
+## An independent copy: pockets and tuning are copied too, so editing the copy never
+## touches this board (Resource.duplicate shares sub-resources inside arrays).
+func duplicate_level() -> BoardLevel:
+	var copy := duplicate(false) as BoardLevel
+	var specs: Array[PocketSpec] = []
+	for spec in pockets:
+		specs.append(spec.duplicate() as PocketSpec if spec != null else null)
+	copy.pockets = specs
+	copy.tuning = tuning.duplicate() as PhysicsTuning if tuning != null else null
+	copy.legacy_fields = legacy_fields.duplicate(true)
+	return copy
+
+
 ## True for a pachinko board.
 func is_pachinko() -> bool:
 	return kind == Kind.PACHINKO

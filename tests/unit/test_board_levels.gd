@@ -1,0 +1,110 @@
+extends GutTest
+## The shipped boards: they load, validate clean, match their recipes and survive a save and
+## load unchanged.
+
+const SHIPPED := ["res://levels/pachinko/classic.tres", "res://levels/maze/classic.tres"]
+const TEMP := "user://test_board_roundtrip.tres"
+
+
+func after_all() -> void:
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(TEMP))
+
+
+func test_every_shipped_board_loads_without_issues() -> void:
+	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+		var results := BoardLoader.list_boards(kind)
+		assert_gt(results.size(), 0, "boards of kind %d" % kind)
+		for loaded in results:
+			assert_true(loaded.ok(), loaded.error)
+			if loaded.ok():
+				assert_eq(loaded.level.kind, kind, loaded.path)
+				assert_eq(BoardValidator.validate(loaded.level).size(), 0, loaded.path)
+
+
+func test_shipped_board_ids_are_unique() -> void:
+	var seen := {}
+	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+		for loaded in BoardLoader.list_boards(kind):
+			if loaded.ok():
+				assert_false(
+					seen.has(loaded.level.board_id), "duplicate id " + loaded.level.board_id
+				)
+				seen[loaded.level.board_id] = true
+
+
+func test_classic_pachinko_matches_the_chapter() -> void:
+	var level := _load(SHIPPED[0])
+	assert_eq(level.pockets.size(), 5)
+	for spec in level.pockets:
+		assert_eq(spec.payout, 4, "the chapter pays 4 balls")
+	assert_eq(level.cup_start_balls, 25)
+	assert_eq(level.ball_radius, 5.0)
+	assert_between(level.pins.size(), 200, 900, "a few hundred pins")
+	assert_lte(level.size.x, 720.0)
+	assert_lte(level.size.y, 720.0)
+	var specials := 0
+	for flag in level.pin_special:
+		specials += flag
+	assert_eq(specials, 5, "one special pin per pocket")
+	assert_between(level.gutter_start_deg, 0.0, 90.0, "gutter at the bottom")
+	assert_between(level.gutter_end_deg, 90.0, 180.0, "gutter at the bottom")
+	assert_lt(LaunchRail.entry_point(level).y, level.ring_center.y - level.ring_radius * 0.8)
+
+
+func test_classic_maze_is_the_tutorial_layout() -> void:
+	var level := _load(SHIPPED[1])
+	assert_eq([level.grid_cols, level.grid_rows], [10, 9])
+	assert_eq([level.path_width, level.wall_width], [25.0, 10.0])
+	assert_eq(level.size, Vector2(350, 315))
+	assert_eq(level.walls.size(), 47 * 2, "the tutorial's 47 walls")
+	# First border wall, (0, 0) horizontal length 10, and the last, (9, 5) vertical length 2.
+	assert_eq(level.walls[0], Vector2(0, 0))
+	assert_eq(level.walls[1], Vector2(350, 0))
+	assert_eq(level.walls[92], Vector2(315, 175))
+	assert_eq(level.walls[93], Vector2(315, 245))
+	var starts := PackedVector2Array(
+		[Vector2(17.5, 17.5), Vector2(332.5, 17.5), Vector2(17.5, 297.5), Vector2(332.5, 297.5)]
+	)
+	assert_eq(level.ball_starts, starts)
+	assert_eq(level.goal_center, Vector2(175, 157.5))
+	assert_eq(level.goal_radius, 32.5)
+	assert_eq(level.holes.size(), 8)
+	assert_eq(level.holes[0], Vector2(17.5, 192.5), "hole (0, 5)")
+	assert_eq(level.hole_radius, 9.0)
+
+
+func test_shipped_boards_round_trip_unchanged() -> void:
+	for path: String in SHIPPED:
+		var level := _load(path)
+		assert_eq(ResourceSaver.save(level, TEMP), OK)
+		var again: BoardLevel = ResourceLoader.load(TEMP, "", ResourceLoader.CACHE_MODE_IGNORE)
+		assert_not_null(again, path)
+		if again != null:
+			_assert_same(level, again, path)
+
+
+func _assert_same(a: Resource, b: Resource, label: String) -> void:
+	for property in a.get_property_list():
+		if not property["usage"] & PROPERTY_USAGE_STORAGE:
+			continue
+		var name: String = property["name"]
+		if name in ["resource_path", "script", "resource_name"]:
+			continue
+		var va: Variant = a.get(name)
+		var vb: Variant = b.get(name)
+		if va is Resource and vb is Resource:
+			_assert_same(va, vb, "%s.%s" % [label, name])
+		elif va is Array and vb is Array:
+			var left: Array = va
+			var right: Array = vb
+			assert_eq(left.size(), right.size(), "%s.%s size" % [label, name])
+			for i in mini(left.size(), right.size()):
+				_assert_same(left[i], right[i], "%s.%s[%d]" % [label, name, i])
+		else:
+			assert_eq(vb, va, "%s.%s" % [label, name])
+
+
+func _load(path: String) -> BoardLevel:
+	var loaded := BoardLoader.load_board(path)
+	assert_true(loaded.ok(), loaded.error)
+	return loaded.level

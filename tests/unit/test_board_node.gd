@@ -1,0 +1,47 @@
+extends GutTest
+## BoardNode follows its level: redraws on change, lists validator findings as warnings.
+
+
+func test_warnings_follow_the_level() -> void:
+	var node: BoardNode = add_child_autofree(BoardNode.new())
+	assert_eq(node._get_configuration_warnings().size(), 1, "asks for a level")
+	var level: BoardLevel = _tiny("maze")
+	node.level = level
+	assert_eq(node._get_configuration_warnings().size(), 0)
+	level.goal_radius = 1.0  # setter emits changed
+	var warnings: PackedStringArray = node._get_configuration_warnings()
+	assert_eq(warnings.size(), 1)
+	assert_string_contains(warnings[0], "goal")
+
+
+func test_in_place_edits_need_notify_edited() -> void:
+	var node: BoardNode = add_child_autofree(BoardNode.new())
+	var level: BoardLevel = _tiny("maze")
+	node.level = level
+	assert_eq(node.issues().size(), 0)
+	level.walls.append(Vector2(1, 1))  # an in-place edit: no setter runs
+	level.notify_edited()
+	assert_eq(node.issues().size(), 1)
+
+
+func test_swapping_levels_disconnects_the_old_one() -> void:
+	var node: BoardNode = add_child_autofree(BoardNode.new())
+	var first: BoardLevel = _tiny("maze")
+	var second: BoardLevel = _tiny("pachinko")
+	node.level = first
+	node.level = second
+	assert_false(first.changed.is_connected(node._on_level_changed))
+	assert_true(second.changed.is_connected(node._on_level_changed))
+
+
+func test_fit_transform_centres_the_board() -> void:
+	var level: BoardLevel = load("res://levels/maze/classic.tres")
+	var xform := BoardPainter.fit_transform(level, Rect2(0, 0, 700, 700))
+	assert_almost_eq(xform.get_scale(), Vector2(2, 2), Vector2.ONE * 1e-5)
+	assert_almost_eq(xform * Vector2.ZERO, Vector2(0, 35), Vector2.ONE * 1e-4)
+	assert_almost_eq(xform * level.size, Vector2(700, 665), Vector2.ONE * 1e-4)
+
+
+func _tiny(kind: String) -> BoardLevel:
+	var path := "res://tests/fixtures/boards/tiny_%s.tres" % kind
+	return (load(path) as BoardLevel).duplicate_level()
