@@ -9,6 +9,7 @@ signal restart_requested
 signal pause_toggled(paused: bool)
 
 const SETTINGS_SCENE := "res://scenes/menu/settings_menu.tscn"
+const Codec := preload("res://scripts/app/input_event_codec.gd")
 
 var _settings: Control = null
 
@@ -17,6 +18,7 @@ var _settings: Control = null
 @onready var _restart: Button = %RestartButton
 @onready var _settings_button: Button = %SettingsButton
 @onready var _menu: Button = %MenuButton
+@onready var _hint: Label = %Hint
 
 
 func _ready() -> void:
@@ -52,6 +54,7 @@ func open() -> void:
 	if is_open():
 		return
 	get_tree().paused = true
+	_hint.text = "%s: resume" % _pause_keys()
 	_dim.show()
 	_resume.grab_focus()
 	pause_toggled.emit(true)
@@ -65,6 +68,14 @@ func close() -> void:
 	_dim.hide()
 	get_tree().paused = false
 	pause_toggled.emit(false)
+
+
+## The current bindings of the pause action, as the player would name them.
+func _pause_keys() -> String:
+	var names := PackedStringArray()
+	for event in App.settings.events_for("pause"):
+		names.append(Codec.describe(event))
+	return " / ".join(names) if not names.is_empty() else "Pause"
 
 
 func _on_restart_pressed() -> void:

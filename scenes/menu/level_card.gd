@@ -4,8 +4,8 @@ extends Button
 ## reachable with keyboard and gamepad) but not start.
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
-const CARD_SIZE := Vector2(280, 372)
-const THUMB_HEIGHT := 170.0
+const CARD_SIZE := Vector2(300, 430)
+const THUMB_HEIGHT := 228.0
 
 ## The board file this card stands for.
 var board_path := ""
