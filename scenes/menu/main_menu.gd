@@ -24,7 +24,7 @@ func _ready() -> void:
 	_version.text = "v%s" % ProjectSettings.get_setting("application/config/version", "")
 	var problems := App.take_problems()
 	_notice.visible = not problems.is_empty()
-	_notice_label.text = "\n".join(problems)
+	_notice_label.text = "⚠ " + "\n⚠ ".join(problems)
 	_focus_first()
 
 

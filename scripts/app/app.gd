@@ -138,6 +138,8 @@ func _change_scene(path: String) -> void:
 
 
 func _report(message: String) -> void:
+	# players know their files by the real path, not by user://
+	message = message.replace("user://", OS.get_user_data_dir() + "/")
 	push_warning(message)
 	pending_problems.append(message)
 	problem_reported.emit(message)
