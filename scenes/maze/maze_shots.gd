@@ -8,6 +8,11 @@ const OUT := "res://build/shots/"
 
 
 func _ready() -> void:
+	for arg in OS.get_cmdline_user_args():
+		if arg.begins_with("--size="):
+			var parts := arg.trim_prefix("--size=").split("x")
+			get_window().size = Vector2i(int(parts[0]), int(parts[1]))
+			await get_tree().process_frame
 	DirAccess.make_dir_recursive_absolute(ProjectSettings.globalize_path(OUT))
 	var game: Control = GAME.instantiate()
 	add_child(game)
@@ -37,15 +42,16 @@ func _ready() -> void:
 		guard += 1
 	await _settle(2.2)
 	await _save("maze_win")
-	# Hard-mode loss: roll a ball straight into a hole.
+	# Hard-mode loss: tilt right; the top-left ball rolls along the top row into a hole.
 	rules.set_hard_mode(true)
+	joystick.set("head_offset", Vector2.ZERO)
 	game.call("_start")
-	var id := rules.world.get_ids()[0]
-	rules.world.set_ball_position(id, rules.level.holes[1] + Vector2(-14.0, 0.0))
-	rules.world.set_ball_velocity(id, Vector2(90.0, 0.0))
-	rules.set_tilt(Vector2(6.0, 0.0))
-	for i in 60:
-		rules.step()
+	mixer.call("joystick_moved", Vector2(8.0, -2.0))
+	joystick.set("head_offset", Vector2(8.0, -2.0))
+	var waited := 0.0
+	while rules.is_playing() and waited < 5.0:
+		await get_tree().process_frame
+		waited += get_process_delta_time()
 	await _settle(2.2)
 	await _save("maze_lost")
 	get_tree().quit()
@@ -59,5 +65,6 @@ func _save(shot: String) -> void:
 	await RenderingServer.frame_post_draw
 	await RenderingServer.frame_post_draw
 	var image := get_viewport().get_texture().get_image()
-	image.save_png(OUT + shot + ".png")
-	print("saved ", OUT + shot + ".png")
+	var suffix := "" if image.get_width() == 1280 else "_%d" % image.get_width()
+	image.save_png(OUT + shot + suffix + ".png")
+	print("saved ", OUT + shot + suffix + ".png")

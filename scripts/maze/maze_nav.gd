@@ -20,8 +20,6 @@ var clearance := PackedFloat32Array()
 ## Path length to the goal from each lattice point (FAR when unreachable).
 var distance := PackedFloat32Array()
 var _goal := Vector2.ZERO
-var _heap_cost := PackedFloat32Array()
-var _heap_idx := PackedInt32Array()
 
 
 ## Builds the field for `level`; `with_holes` treats black holes as obstacles.
@@ -107,42 +105,68 @@ func _build_distance() -> void:
 	if start < 0:
 		push_error("MazeNav: the goal is inside a wall")
 		return
-	distance[start] = 0.0
-	# Dijkstra with a binary heap of [cost, index] pairs kept in two packed arrays.
-	_heap_cost = PackedFloat32Array([0.0])
-	_heap_idx = PackedInt32Array([start])
-	var offsets: Array[Vector2i] = [
-		Vector2i(1, 0),
-		Vector2i(-1, 0),
-		Vector2i(0, 1),
-		Vector2i(0, -1),
-		Vector2i(1, 1),
-		Vector2i(1, -1),
-		Vector2i(-1, 1),
-		Vector2i(-1, -1),
-	]
-	while not _heap_idx.is_empty():
-		var cost := _heap_cost[0]
-		var i := _heap_idx[0]
-		_heap_pop()
-		if cost > distance[i]:
+	var dist := distance
+	var clear := clearance
+	dist[start] = 0.0
+	# Dijkstra with a binary heap kept inline in two local packed arrays (hot loop).
+	var heap_cost := PackedFloat32Array([0.0])
+	var heap_idx := PackedInt32Array([start])
+	var size := 1
+	var dcs := PackedInt32Array([1, -1, 0, 0, 1, 1, -1, -1])
+	var drs := PackedInt32Array([0, 0, 1, -1, 1, -1, 1, -1])
+	while size > 0:
+		var cost: float = heap_cost[0]
+		var i: int = heap_idx[0]
+		size -= 1
+		var last_cost: float = heap_cost[size]
+		var last_idx: int = heap_idx[size]
+		var k := 0
+		while true:
+			var child := 2 * k + 1
+			if child >= size:
+				break
+			if child + 1 < size and heap_cost[child + 1] < heap_cost[child]:
+				child += 1
+			if last_cost <= heap_cost[child]:
+				break
+			heap_cost[k] = heap_cost[child]
+			heap_idx[k] = heap_idx[child]
+			k = child
+		heap_cost[k] = last_cost
+		heap_idx[k] = last_idx
+		if cost > dist[i]:
 			continue
 		var c := i % cols
 		var r := i / cols
-		for o in offsets:
-			var nc := c + o.x
-			var nr := r + o.y
+		for o in 8:
+			var nc: int = c + dcs[o]
+			var nr: int = r + drs[o]
 			if nc < 0 or nr < 0 or nc >= cols or nr >= rows:
 				continue
-			var j := _index(nc, nr)
-			if clearance[j] < 0.0:
+			var j := nr * cols + nc
+			var cl: float = clear[j]
+			if cl < 0.0:
 				continue
-			var length := SPACING * (1.4142 if o.x != 0 and o.y != 0 else 1.0)
-			var hug := maxf(0.0, COMFORT - clearance[j]) / COMFORT
+			var length := SPACING * (1.4142 if o >= 4 else 1.0)
+			var hug := maxf(0.0, COMFORT - cl) / COMFORT
 			var next_cost := cost + length * (1.0 + HUG_COST * hug)
-			if next_cost < distance[j]:
-				distance[j] = next_cost
-				_heap_push(next_cost, j)
+			if next_cost < dist[j]:
+				dist[j] = next_cost
+				if size >= heap_cost.size():
+					heap_cost.resize(size * 2 + 8)
+					heap_idx.resize(size * 2 + 8)
+				var m := size
+				size += 1
+				while m > 0:
+					var parent := (m - 1) >> 1
+					if heap_cost[parent] <= next_cost:
+						break
+					heap_cost[m] = heap_cost[parent]
+					heap_idx[m] = heap_idx[parent]
+					m = parent
+				heap_cost[m] = next_cost
+				heap_idx[m] = j
+	distance = dist
 
 
 func _nearest_free(pos: Vector2) -> int:
@@ -178,44 +202,3 @@ func _downhill(i: int) -> int:
 			if distance[j] < distance[best]:
 				best = j
 	return best
-
-
-func _heap_push(cost: float, id: int) -> void:
-	_heap_cost.append(cost)
-	_heap_idx.append(id)
-	var k := _heap_cost.size() - 1
-	while k > 0:
-		var parent := (k - 1) >> 1
-		if _heap_cost[parent] <= _heap_cost[k]:
-			break
-		_heap_swap(k, parent)
-		k = parent
-
-
-func _heap_pop() -> void:
-	var last := _heap_cost.size() - 1
-	_heap_cost[0] = _heap_cost[last]
-	_heap_idx[0] = _heap_idx[last]
-	_heap_cost.resize(last)
-	_heap_idx.resize(last)
-	var k := 0
-	while true:
-		var left := 2 * k + 1
-		if left >= last:
-			break
-		var child := left
-		if left + 1 < last and _heap_cost[left + 1] < _heap_cost[left]:
-			child = left + 1
-		if _heap_cost[k] <= _heap_cost[child]:
-			break
-		_heap_swap(k, child)
-		k = child
-
-
-func _heap_swap(a: int, b: int) -> void:
-	var tc := _heap_cost[a]
-	_heap_cost[a] = _heap_cost[b]
-	_heap_cost[b] = tc
-	var ti := _heap_idx[a]
-	_heap_idx[a] = _heap_idx[b]
-	_heap_idx[b] = ti

@@ -10,6 +10,8 @@ const MazeNav := preload("res://scripts/maze/maze_nav.gd")
 
 ## Cost of one more move, in pixels of distance left to the goal.
 const MOVE_COST := 8.0
+## Once the balls can be gathered, plans at most this many moves longer are still tried.
+const EXTRA_MOVES := 4
 ## Search no further than this many states.
 const MAX_STATES := 250000
 
@@ -48,24 +50,28 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 	var best := 0
 	var best_score := INF
 	var gathered := false
+	var depth_limit := 1 << 30
 	var head := 0
 	var state := PackedInt32Array()
 	state.resize(n)
+	var next := PackedInt32Array()
+	next.resize(n)
+	var slides := grid.slides
 	while head < keys.size():
 		_decode(keys[head], state)
 		var score := _score(state, depth[head])
 		if score < best_score:
 			best_score = score
 			best = head
-		if _all_same(state):
+		if _all_same(state) and not gathered:
 			gathered = true
-		if keys.size() < MAX_STATES:
+			# A gathering this many moves deeper would have to be much nearer the goal.
+			depth_limit = depth[head] + EXTRA_MOVES
+		if keys.size() < MAX_STATES and depth[head] < depth_limit:
 			for d in order:
-				var next := PackedInt32Array()
-				next.resize(n)
 				for b in n:
-					next[b] = grid.slide(state[b], d)
-				var key := _encode(next)
+					next[b] = slides[state[b] * 8 + d]
+				var key := _sorted_key(next, n)
 				if not seen.has(key):
 					seen[key] = keys.size()
 					keys.append(key)
@@ -120,6 +126,21 @@ static func _all_same(state: PackedInt32Array) -> bool:
 		if c != state[0]:
 			return false
 	return true
+
+
+# Insertion-sorts the first `n` cells in place and packs them into one key.
+func _sorted_key(cells: PackedInt32Array, n: int) -> int:
+	for i in range(1, n):
+		var v: int = cells[i]
+		var j := i - 1
+		while j >= 0 and cells[j] > v:
+			cells[j + 1] = cells[j]
+			j -= 1
+		cells[j + 1] = v
+	var key := 0
+	for i in n:
+		key = (key << _bits) | cells[i]
+	return key
 
 
 func _encode(cells: PackedInt32Array) -> int:

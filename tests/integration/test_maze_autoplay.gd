@@ -1,0 +1,92 @@
+extends GutTest
+## The maze autoplay: it plays the classic board to the goal, the same seed plays the same
+## game, and its planner reads the board's grid right.
+
+const CLASSIC := "res://levels/maze/classic.tres"
+const MazeGrid := preload("res://scripts/maze/maze_grid.gd")
+const MazeNav := preload("res://scripts/maze/maze_nav.gd")
+const MazeSlidePlanner := preload("res://scripts/maze/maze_slide_planner.gd")
+
+const RIGHT := 0
+const DOWN := 2
+const UP := 3
+const DOWN_RIGHT := 4
+
+
+func _level() -> BoardLevel:
+	return BoardLoader.load_board(CLASSIC).level
+
+
+func test_autoplay_brings_balls_into_the_goal_on_classic_easy() -> void:
+	var result := MazeAutoplay.run(_level(), 120.0, 1)
+	assert_gte(int(result["max_balls_in_goal"]), 2, "at least two balls reached the goal")
+	assert_true(result["won"], "seed 1 wins outright: %s" % [result])
+	assert_gt(float(result["time_to_win"]), 0.0)
+	assert_lte(float(result["time_to_win"]), 120.0)
+	assert_eq(int(result["balls_in_goal"]), 4)
+	assert_eq(int(result["balls_lost_in_holes"]), 0)
+
+
+func test_the_same_seed_gives_the_same_result() -> void:
+	var a := MazeAutoplay.run(_level(), 15.0, 3)
+	var b := MazeAutoplay.run(_level(), 15.0, 3)
+	assert_eq(JSON.stringify(a), JSON.stringify(b))
+	assert_eq(int(a["frames_simulated"]), 1800, "15 s at 120 steps a second")
+	var c := MazeAutoplay.run(_level(), 15.0, 4)
+	assert_ne(a["state_hash"], c["state_hash"], "another seed plays differently")
+
+
+func test_hard_mode_reports_holes() -> void:
+	var result := MazeAutoplay.run(_level(), 10.0, 2, true)
+	assert_true(result["hard_mode"])
+	assert_true(result.has("balls_lost_in_holes"))
+	assert_lte(int(result["balls_lost_in_holes"]), 1, "the first ball in a hole ends the game")
+
+
+func test_bad_input_is_refused_clearly() -> void:
+	var pachinko := BoardLevel.new()
+	pachinko.kind = BoardLevel.Kind.PACHINKO
+	var result := MazeAutoplay.run(pachinko, 10.0, 1)
+	assert_push_error("a maze board is needed")
+	assert_false(result.get("ok", true))
+	result = MazeAutoplay.run(_level(), -1.0, 1)
+	assert_false(result.get("ok", true))
+	assert_string_contains(str(result["error"]), "seconds")
+
+
+func test_the_grid_reads_the_seed_walls() -> void:
+	var grid := MazeGrid.new(_level())
+	assert_true(grid.is_grid)
+	assert_eq(grid.cell, Vector2(35.0, 35.0))
+	assert_true(grid.is_open(0, 0, 1, 0), "cell (0,0) opens to the right")
+	assert_false(grid.is_open(2, 0, 1, 0), "wall after the third column, top row")
+	assert_false(grid.is_open(0, 0, 0, -1), "the border")
+	assert_eq(grid.slide(0, RIGHT), 2, "top-left ball rolls right to (2, 0)")
+	assert_eq(grid.slide(0, DOWN), 5 * 10, "and down to (0, 5)")
+	assert_eq(grid.slide(grid.cell_at(Vector2(157.5, 157.5)), RIGHT), 4 * 10 + 5)
+
+
+func test_the_planner_gathers_every_ball_from_the_starts() -> void:
+	var level := _level()
+	var grid := MazeGrid.new(level)
+	var planner := MazeSlidePlanner.new(grid, MazeNav.new(level))
+	var cells := planner.cells_of(level.ball_starts)
+	assert_true(planner.plan(cells, PackedInt32Array([0, 1, 2, 3, 4, 5, 6, 7])))
+	assert_between(planner.moves.size(), 5, 20)
+	var state := cells
+	for move in planner.moves:
+		state = planner.predict(state, move)
+	assert_eq(state, planner.target, "the moves lead to the planned state")
+	for c in state:
+		assert_eq(c, state[0], "every ball in one cell")
+
+
+func test_the_distance_field_leads_to_the_goal() -> void:
+	var level := _level()
+	var nav := MazeNav.new(level)
+	assert_lt(nav.distance_at(level.goal_center), 3.0)
+	for start in level.ball_starts:
+		var d := nav.distance_at(start)
+		assert_between(d, 100.0, 2000.0, "every start reaches the goal")
+		var ahead := nav.carrot(start, 10.0)
+		assert_lt(nav.distance_at(ahead), d, "the carrot is nearer the goal")
