@@ -35,6 +35,8 @@ const HOLE_COLOR := Color("000000")
 const BALL_COLOR := Color("f06449")
 ## Pixels of dash and gap on the goal's dashed circle.
 const DASH := 8.0
+## How far the drawn ring (and gutter) reach outside `ring_radius`, in pixels.
+const RING_OVERHANG := 8.0
 
 
 ## Draws `level` on `canvas` through `xform`. `layers` picks what to draw.
@@ -49,7 +51,7 @@ static func draw_board(
 	canvas.draw_set_transform_matrix(xform)
 	if layers & Layer.BACKGROUND:
 		var color := MAZE_BACKGROUND if level.is_maze() else PACHINKO_BACKGROUND
-		canvas.draw_rect(Rect2(Vector2.ZERO, level.size), color)
+		canvas.draw_rect(board_bounds(level), color)
 	if level.is_pachinko():
 		_draw_pachinko(canvas, level, layers)
 	else:
@@ -64,14 +66,29 @@ static func draw_thumbnail(canvas: CanvasItem, level: BoardLevel, rect: Rect2) -
 	draw_board(canvas, level, fit_transform(level, rect))
 
 
-## The board → canvas transform that fits the board's area into `rect`, centred.
+## Everything the painter draws for `level`, in board pixels: the board's area plus what
+## overhangs it (maze walls on the edge reach half a wall outside; the ring's rim).
+static func board_bounds(level: BoardLevel) -> Rect2:
+	var bounds := Rect2(Vector2.ZERO, level.size)
+	if level.is_maze() and is_finite(level.wall_width) and level.wall_width > 0.0:
+		bounds = bounds.grow(level.wall_width * 0.5)
+	elif level.is_pachinko() and level.ring_center.is_finite() and is_finite(level.ring_radius):
+		var rim := level.ring_radius + RING_OVERHANG
+		bounds = bounds.merge(Rect2(level.ring_center - Vector2.ONE * rim, Vector2.ONE * rim * 2.0))
+	return bounds
+
+
+## The board → canvas transform that fits `board_bounds` into `rect`, centred.
 static func fit_transform(level: BoardLevel, rect: Rect2, margin: float = 0.0) -> Transform2D:
 	var area := rect.grow(-margin)
-	var size := level.size if level != null else Vector2.ONE
+	if level == null:
+		return Transform2D(0.0, area.position)
+	var bounds := board_bounds(level)
+	var size := bounds.size
 	if size.x <= 0.0 or size.y <= 0.0 or not size.is_finite():
 		return Transform2D(0.0, area.position)
 	var scale := minf(area.size.x / size.x, area.size.y / size.y)
-	var offset := area.position + (area.size - size * scale) * 0.5
+	var offset := area.position + (area.size - size * scale) * 0.5 - bounds.position * scale
 	return Transform2D(0.0, Vector2(scale, scale), 0.0, offset)
 
 

@@ -229,6 +229,19 @@ static func _check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"pin_in_rail"
 			)
 			continue
+		var deflector_gap := _deflector_gap(level, p)
+		if owner < 0 and deflector_gap < diameter:
+			_add(
+				issues,
+				WARNING,
+				(
+					"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
+					% [i, maxf(deflector_gap, 0.0), diameter]
+				),
+				p,
+				"narrow_gap_rail"
+			)
+			continue
 		var edge_gap := (guide_clear if in_rail_arc else inside) - d
 		if owner < 0 and edge_gap < diameter:
 			var code := "narrow_gap_rail" if in_rail_arc else "narrow_gap_ring"
@@ -363,6 +376,13 @@ static func _check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> vo
 							mid,
 							"narrow_gap"
 						)
+
+
+# Gap between pin `p` and the deflector past the rail's end (surface to surface).
+static func _deflector_gap(level: BoardLevel, p: Vector2) -> float:
+	var ends := LaunchRail.deflector(level)
+	var nearest := Geometry2D.get_closest_point_to_segment(p, ends[0], ends[1])
+	return p.distance_to(nearest) - LaunchRail.GUIDE_WALL_RADIUS - level.pin_radius
 
 
 # True when angle `deg` lies within [low, high] (degrees, any winding).

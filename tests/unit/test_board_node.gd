@@ -34,12 +34,13 @@ func test_swapping_levels_disconnects_the_old_one() -> void:
 	assert_true(second.changed.is_connected(node._on_level_changed))
 
 
-func test_fit_transform_centres_the_board() -> void:
+func test_fit_transform_centres_the_board_and_its_overhang() -> void:
 	var level: BoardLevel = load("res://levels/maze/classic.tres")
-	var xform := BoardPainter.fit_transform(level, Rect2(0, 0, 700, 700))
+	# The maze's edge walls reach 5 px outside its 350 × 315 area: 360 × 325 in all.
+	var xform := BoardPainter.fit_transform(level, Rect2(0, 0, 720, 720))
 	assert_almost_eq(xform.get_scale(), Vector2(2, 2), Vector2.ONE * 1e-5)
-	assert_almost_eq(xform * Vector2.ZERO, Vector2(0, 35), Vector2.ONE * 1e-4)
-	assert_almost_eq(xform * level.size, Vector2(700, 665), Vector2.ONE * 1e-4)
+	assert_almost_eq(xform * Vector2(-5, -5), Vector2(0, 35), Vector2.ONE * 1e-4)
+	assert_almost_eq(xform * (level.size + Vector2(5, 5)), Vector2(720, 685), Vector2.ONE * 1e-4)
 
 
 func _tiny(kind: String) -> BoardLevel:

@@ -62,6 +62,14 @@ func test_pins_outside_the_ring_or_in_the_rail() -> void:
 	assert_has(codes, "pin_in_rail")
 
 
+func test_pin_by_the_deflector_traps_balls() -> void:
+	var level := _pachinko()
+	var ends := LaunchRail.deflector(level)
+	var inward := (level.ring_center - ends[1]).normalized()
+	_add_pin(level, ends[1] + inward * 8.0)
+	assert_has(_codes(level), "narrow_gap_rail")
+
+
 func test_pin_near_the_ring_traps_balls() -> void:
 	var level := _pachinko()
 	_add_pin(level, level.ring_center + Vector2(-level.ring_radius + 8.0, 0))
