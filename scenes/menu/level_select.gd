@@ -81,7 +81,11 @@ func _best_text(result: BoardLoadResult) -> String:
 	var board_id := result.level.board_id
 	if kind == "maze":
 		var seconds := App.best_maze_time(board_id)
-		return "Best time: %.2f s" % seconds if seconds > 0.0 else ""
+		if seconds <= 0.0:
+			return ""
+		# the same m:ss.t the maze's own clock shows
+		var whole := int(seconds)
+		return "Best time: %d:%02d.%d" % [whole / 60, whole % 60, int(fmod(seconds, 1.0) * 10.0)]
 	var balls := App.best_pachinko_balls(board_id)
 	return "Best: %d balls won" % balls if balls >= 0 else ""
 
