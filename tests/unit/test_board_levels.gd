@@ -21,6 +21,28 @@ func test_every_shipped_board_loads_without_issues() -> void:
 				assert_eq(BoardValidator.validate(loaded.level).size(), 0, loaded.path)
 
 
+func test_every_shipped_board_has_a_level_scene() -> void:
+	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+		for loaded in BoardLoader.list_boards(kind):
+			var scene_path := (
+				"res://scenes/boards/%s_%s.tscn"
+				% [BoardLevel.kind_name(kind), loaded.path.get_file().get_basename()]
+			)
+			assert_true(
+				FileAccess.file_exists(scene_path),
+				"%s (tools/make_board_scenes.gd writes it)" % scene_path
+			)
+			if not FileAccess.file_exists(scene_path):
+				continue
+			var scene: PackedScene = load(scene_path)
+			var node := scene.instantiate()
+			assert_true(node is BoardNode, scene_path)
+			if node is BoardNode:
+				var board := node as BoardNode
+				assert_eq(board.level.resource_path, loaded.path, "the scene edits the file itself")
+			node.free()
+
+
 func test_shipped_board_ids_are_unique() -> void:
 	var seen := {}
 	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
