@@ -1,0 +1,77 @@
+extends Node2D
+## Every ball in one draw call batch: a pre-shaded steel ball texture stamped at each
+## position the world reports (no node per ball), plus the loaded ball in the launcher.
+## `last_draw_usec` is how long the last draw took (the bench reads it).
+
+const BALL_TEXTURE_SIZE := 64
+
+## Microseconds the last `_draw` took.
+var last_draw_usec := 0
+## Balls drawn by the last `_draw`.
+var last_drawn := 0
+
+var _rules: PachinkoRules
+var _texture: Texture2D
+var _radius := 5.0
+var _launch_pos := Vector2.ZERO
+
+
+## Draws the balls of `rules` (its world and its launcher).
+func bind(rules: PachinkoRules) -> void:
+	_rules = rules
+	_radius = rules.level.ball_radius
+	_launch_pos = LaunchRail.launch_position(rules.level)
+	if _texture == null:
+		_texture = make_ball_texture(BALL_TEXTURE_SIZE)
+	queue_redraw()
+
+
+func _process(_delta: float) -> void:
+	queue_redraw()
+
+
+func _draw() -> void:
+	if _rules == null:
+		return
+	var started := Time.get_ticks_usec()
+	var positions := _rules.world.get_positions()
+	var size := Vector2(_radius, _radius) * 2.0
+	var offset := Vector2(_radius, _radius)
+	for p in positions:
+		draw_texture_rect(_texture, Rect2(p - offset, size), false)
+	var drawn := positions.size()
+	if _rules.loaded and _rules.state == PachinkoRules.State.PLAYING:
+		draw_texture_rect(_texture, Rect2(_launch_pos - offset, size), false)
+		drawn += 1
+	last_drawn = drawn
+	last_draw_usec = Time.get_ticks_usec() - started
+
+
+## A steel ball: dark rim, bright upper-left highlight, soft reflected light below.
+static func make_ball_texture(size: int) -> ImageTexture:
+	var image := Image.create_empty(size, size, true, Image.FORMAT_RGBA8)
+	var centre := Vector2(size, size) * 0.5
+	var radius := size * 0.5 - 1.0
+	var light := centre + Vector2(-0.32, -0.36) * radius
+	for y in size:
+		for x in size:
+			var p := Vector2(x + 0.5, y + 0.5)
+			var d := p.distance_to(centre) / radius
+			if d > 1.0 + 1.0 / radius:
+				image.set_pixel(x, y, Color(0, 0, 0, 0))
+				continue
+			var edge := clampf((1.0 - d) * radius + 0.5, 0.0, 1.0)
+			var shade := lerpf(0.92, 0.38, pow(d, 1.6))
+			var spec := pow(clampf(1.0 - p.distance_to(light) / (radius * 0.55), 0.0, 1.0), 2.0)
+			var bounce := (
+				clampf(
+					1.0 - p.distance_to(centre + Vector2(0.2, 0.62) * radius) / (radius * 0.5),
+					0.0,
+					1.0
+				)
+				* 0.25
+			)
+			var v := clampf(shade + spec * 0.9 + bounce, 0.0, 1.0)
+			image.set_pixel(x, y, Color(v * 0.93, v * 0.95, v, edge))
+	image.generate_mipmaps()
+	return ImageTexture.create_from_image(image)

@@ -1,0 +1,38 @@
+extends Node2D
+## The ring border: a purple enamel band with a chrome lip, the edge balls never pass.
+
+const ENAMEL := Color("5b2a86")
+const ENAMEL_LIGHT := Color("8e55c4")
+const CHROME := Color("e4e7f0")
+
+## Band width in pixels.
+@export var band := 22.0
+
+var _level: BoardLevel
+
+
+## Shows `level`'s ring.
+func setup(level: BoardLevel) -> void:
+	_level = level
+	queue_redraw()
+
+
+func _draw() -> void:
+	if _level == null:
+		return
+	var c := _level.ring_center
+	var r := _level.ring_radius
+	var segments := 160
+	draw_arc(c, r + band * 0.5 + 2.0, 0.0, TAU, segments, ENAMEL.darkened(0.45), band + 4.0, true)
+	draw_arc(c, r + band * 0.5, 0.0, TAU, segments, ENAMEL, band, true)
+	# A lighter stripe offset up-left reads as light falling on a rounded band.
+	draw_arc(c, r + band * 0.42, PI * 0.9, PI * 1.9, 80, ENAMEL_LIGHT, band * 0.3, true)
+	# Chrome lip where the ball touches, and a thin dark line inside it.
+	draw_arc(c, r + 1.5, 0.0, TAU, segments, CHROME, 3.0, true)
+	draw_arc(c, r - 0.5, 0.0, TAU, segments, Color(0, 0, 0, 0.35), 1.0, true)
+	# Rivets around the band.
+	for i in 24:
+		var a := TAU * float(i) / 24.0
+		var p := c + Vector2(cos(a), sin(a)) * (r + band * 0.55)
+		draw_circle(p, 2.6, ENAMEL.darkened(0.5))
+		draw_circle(p - Vector2(0.6, 0.6), 1.6, ENAMEL_LIGHT.lightened(0.3))

@@ -1,0 +1,128 @@
+extends Control
+## The launcher: a vertical power bar that fills red from 0 to 100 and the flipper lever,
+## which turns 0–20° with the power. A press on the lever starts a drawback (the game
+## tracks the drag from there); the loaded-ball light shows whether a shot is ready.
+
+## The pointer went down on the flipper at `at` (viewport coordinates).
+signal flipper_pressed(at: Vector2)
+
+const BAR := Rect2(12, 44, 34, 180)
+const PIVOT := Vector2(272, 196)
+const LEVER_LENGTH := 150.0
+const RED := Color("e23b3b")
+
+var _power := 0.0
+var _degrees := 0.0
+var _loaded := false
+var _hint := ""
+
+
+## Shows the current drawback.
+func set_power(power: float, degrees: float) -> void:
+	_power = power
+	_degrees = degrees
+	queue_redraw()
+
+
+## Lights the "ready" lamp while a ball is loaded.
+func set_loaded(loaded: bool) -> void:
+	_loaded = loaded
+	queue_redraw()
+
+
+## The short line under the lever telling how to shoot.
+func set_hint(text: String) -> void:
+	_hint = text
+	queue_redraw()
+
+
+## True when `local` (this control's coordinates) is on the flipper lever.
+func is_on_flipper(local: Vector2) -> bool:
+	var lever := Transform2D(deg_to_rad(_degrees), PIVOT)
+	var p := lever.affine_inverse() * local
+	return p.x > -LEVER_LENGTH - 24.0 and p.x < 20.0 and absf(p.y) < 30.0
+
+
+func _ready() -> void:
+	custom_minimum_size = Vector2(300, 250)
+	mouse_default_cursor_shape = Control.CURSOR_POINTING_HAND
+
+
+func _gui_input(event: InputEvent) -> void:
+	var press := event as InputEventMouseButton
+	if press != null and press.pressed and press.button_index == MOUSE_BUTTON_LEFT:
+		if is_on_flipper(press.position):
+			flipper_pressed.emit(get_viewport().get_mouse_position())
+			accept_event()
+
+
+func _draw() -> void:
+	_draw_bar()
+	_draw_lever()
+	var font := get_theme_default_font()
+	var lamp_at := Vector2(BAR.position.x + 9.0, 16.0)
+	draw_circle(lamp_at, 9.0, Color("1c1a24"))
+	draw_circle(lamp_at, 7.0, Color("6cf07a") if _loaded else Color("3b3f45"))
+	var status := "Ball ready: fire!" if _loaded else "No ball loaded"
+	draw_string(
+		font, lamp_at + Vector2(16, 6), status, HORIZONTAL_ALIGNMENT_LEFT, -1, 16, Color("e9e3ff")
+	)
+	var lines := _hint.split("\n")
+	for i in lines.size():
+		draw_string(
+			font,
+			Vector2(BAR.end.x + 22.0, BAR.position.y + 22.0 + i * 19.0),
+			lines[i],
+			HORIZONTAL_ALIGNMENT_LEFT,
+			-1,
+			14,
+			Color("b8aee0")
+		)
+
+
+func _draw_bar() -> void:
+	draw_rect(BAR.grow(4.0), Color("14111d"))
+	draw_rect(BAR, Color("2a2536"))
+	var fill := BAR.size.y * clampf(_power / 100.0, 0.0, 1.0)
+	var filled := Rect2(BAR.position + Vector2(0, BAR.size.y - fill), Vector2(BAR.size.x, fill))
+	draw_rect(filled, RED)
+	draw_rect(Rect2(filled.position, Vector2(6, filled.size.y)), RED.lightened(0.35))
+	for i in 11:
+		var y := BAR.end.y - BAR.size.y * i / 10.0
+		var tick := 10.0 if i % 5 == 0 else 5.0
+		draw_line(
+			Vector2(BAR.position.x - tick, y), Vector2(BAR.position.x, y), Color("8a82aa"), 1.0
+		)
+	var font := get_theme_default_font()
+	draw_string(
+		font,
+		Vector2(BAR.position.x - 12, BAR.end.y + 24),
+		"POWER %d" % roundi(_power),
+		HORIZONTAL_ALIGNMENT_LEFT,
+		-1,
+		14,
+		Color("e9e3ff")
+	)
+
+
+func _draw_lever() -> void:
+	draw_set_transform(PIVOT, deg_to_rad(_degrees))
+	var arm := Rect2(-LEVER_LENGTH, -9, LEVER_LENGTH, 18)
+	draw_rect(arm.grow(2.0), Color("262233"))
+	draw_rect(arm, Color("c4c9d6"))
+	draw_rect(Rect2(arm.position, Vector2(arm.size.x, 5)), Color("eef1f7"))
+	# The grip at the far end, and the pivot hub.
+	draw_circle(Vector2(-LEVER_LENGTH, 0), 22.0, Color("262233"))
+	draw_circle(Vector2(-LEVER_LENGTH, 0), 19.0, RED.darkened(0.1))
+	draw_circle(Vector2(-LEVER_LENGTH - 5, -6), 7.0, RED.lightened(0.4))
+	draw_set_transform(Vector2.ZERO)
+	draw_circle(PIVOT, 16.0, Color("262233"))
+	draw_circle(PIVOT, 12.0, Color("9aa0b2"))
+	draw_circle(PIVOT, 4.0, Color("262233"))
+	# An arrow showing which way to pull.
+	var tip := PIVOT + Vector2(-LEVER_LENGTH, -58)
+	draw_line(tip + Vector2(0, 34), tip, Color(1, 1, 1, 0.45), 3.0, true)
+	draw_colored_polygon(
+		PackedVector2Array([tip + Vector2(0, -9), tip + Vector2(-7, 2), tip + Vector2(7, 2)]),
+		Color(1, 1, 1, 0.45)
+	)

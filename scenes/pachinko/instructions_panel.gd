@@ -1,0 +1,61 @@
+extends Control
+## The instructions panel: up before the first game and again at game over. A click (or
+## the start button / key) anywhere takes it away and starts a game; the game scene does
+## that, this panel only shows the words.
+
+var _title: Label
+var _body: RichTextLabel
+var _footer: Label
+
+
+func _ready() -> void:
+	_title = get_node("Card/Margin/Box/Title") as Label
+	_body = get_node("Card/Margin/Box/Body") as RichTextLabel
+	_footer = get_node("Card/Margin/Box/Footer") as Label
+
+
+## The first screen: how to play `level`.
+func show_start(level: BoardLevel) -> void:
+	_title.text = "Pachinko · %s" % level.display_name
+	_body.text = (
+		"\n"
+		. join(
+			PackedStringArray(
+				[
+					"You get [b]%d balls[/b] in your cup." % level.cup_start_balls,
+					(
+						"[b]Press on the flipper and drag up[/b] to draw it back: the red bar shows the"
+						+ " power. Let go to fire."
+					),
+					"Or hold [b]Space[/b] (or the gamepad trigger) to charge and release to fire.",
+					(
+						"A ball that falls into a [b]pocket[/b] pays balls back into the cup. A shot too"
+						+ " weak to clear the rail rolls back to the cup."
+					),
+					"The game ends when the cup is empty and every ball has come down.",
+				]
+			)
+		)
+	)
+	_footer.text = "Click anywhere to start"
+	visible = true
+
+
+## The game-over screen with the last game's numbers.
+func show_game_over(level: BoardLevel, summary: Dictionary, best: int) -> void:
+	_title.text = "Game over"
+	var lines := PackedStringArray(
+		[
+			(
+				"[b]%d[/b] shots, [b]%d[/b] balls paid back by the pockets."
+				% [int(summary.get("game_shots", 0)), int(summary.get("game_payouts", 0))]
+			),
+		]
+	)
+	if best > 0:
+		lines.append("Best on %s: [b]%d[/b] balls paid back." % [level.display_name, best])
+	lines.append("")
+	lines.append("Another %d balls are waiting." % level.cup_start_balls)
+	_body.text = "\n".join(lines)
+	_footer.text = "Click anywhere to play again"
+	visible = true

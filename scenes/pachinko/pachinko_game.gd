@@ -1,0 +1,237 @@
+extends Control
+## The pachinko game screen: loads the board the App picked, owns the PachinkoRules, draws
+## the board on the left and the cup, launcher and stats on the right, and turns input
+## actions, mouse and touch into calls on the rules. Sounds and effects follow the rules'
+## signals.
+
+const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
+const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
+const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
+const HUD_WIDTH := 360.0
+const MARGIN := 10.0
+## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
+const TICK_MIN_SPEED := 40.0
+const TICK_MAX_SPEED := 700.0
+
+var rules: PachinkoRules
+
+var _level: BoardLevel
+var _controls := PachinkoInput.new()
+var _stats_refresh := 0.0
+
+@onready var board_view: Node2D = $BoardView
+@onready var hud: Control = $Hud
+@onready var cup: Control = $Hud/Column/Cup
+@onready var launcher: Control = $Hud/Column/Launcher
+@onready var stats_panel: PanelContainer = $Hud/Column/Stats
+@onready var title: Label = $Hud/Column/Title
+@onready var instructions: Control = $Instructions
+@onready var sounds: SoundBank = $Sounds
+
+
+func _ready() -> void:
+	_add_shell_scene(PAUSE_MENU)
+	_add_shell_scene(FRAME_COUNTER)
+	var path := App.current_board_path("pachinko")
+	var loaded := BoardLoader.load_board(path)
+	if loaded.level == null or not loaded.level.is_pachinko():
+		var problem := loaded.error if loaded.level == null else "%s is not a pachinko board" % path
+		push_error("Pachinko: %s" % problem)
+		title.text = "This board could not be loaded"
+		return
+	_level = loaded.level
+	launcher.connect("flipper_pressed", _on_flipper_pressed)
+	get_viewport().size_changed.connect(_layout)
+	_new_rules()
+	_layout()
+
+
+func _process(delta: float) -> void:
+	if rules == null:
+		return
+	_controls.poll(rules, delta)
+	rules.advance(delta)
+	_stats_refresh -= delta
+	if _stats_refresh <= 0.0:
+		_stats_refresh = 0.25
+		stats_panel.call("show_stats", rules.stats())
+
+
+func _input(event: InputEvent) -> void:
+	if rules != null and _controls.handle_pointer(rules, event, self):
+		get_viewport().set_input_as_handled()
+
+
+func _unhandled_input(event: InputEvent) -> void:
+	if rules == null:
+		return
+	if event.is_action_pressed("game_restart"):
+		_new_rules()
+		get_viewport().set_input_as_handled()
+		return
+	if rules.state != PachinkoRules.State.PLAYING:
+		if _is_start_event(event):
+			rules.start_game()
+			sounds.play(SoundBank.UI_CLICK)
+			get_viewport().set_input_as_handled()
+		return
+	if _controls.handle_action(rules, event):
+		get_viewport().set_input_as_handled()
+
+
+## Starts over on the same board: a fresh world, the instructions up.
+func restart() -> void:
+	_new_rules()
+
+
+func _new_rules() -> void:
+	rules = PachinkoRules.new(_level, int(Time.get_ticks_usec()))
+	rules.state_changed.connect(_on_state_changed)
+	rules.cup_changed.connect(_on_cup_changed)
+	rules.power_changed.connect(_on_power_changed)
+	rules.ball_loaded.connect(_on_loaded_changed)
+	rules.ball_launched.connect(_on_ball_launched)
+	rules.ball_won.connect(_on_ball_won)
+	rules.ball_drained.connect(_on_ball_drained)
+	rules.ball_returned.connect(_on_ball_returned)
+	rules.game_ended.connect(_on_game_ended)
+	rules.world.pin_hit.connect(_on_pin_hit)
+	rules.world.ring_hit.connect(_on_ring_hit)
+	board_view.call("bind", rules)
+	title.text = _level.display_name
+	cup.call("set_count", 0)
+	launcher.call("set_power", 0.0, 0.0)
+	launcher.call("set_loaded", false)
+	launcher.call(
+		"set_hint",
+		"Press the red grip and\ndrag it up to draw back,\nor hold Space.\nLet go to fire."
+	)
+	stats_panel.call("show_stats", rules.stats())
+	instructions.call("show_start", _level)
+
+
+func _layout() -> void:
+	if _level == null:
+		return
+	var view := get_viewport_rect().size
+	var hud_left := view.x - HUD_WIDTH
+	hud.position = Vector2(hud_left, 0.0)
+	hud.size = Vector2(HUD_WIDTH, view.y)
+	var area := Rect2(
+		Vector2(MARGIN, MARGIN), Vector2(hud_left - MARGIN * 2.0, view.y - MARGIN * 2.0)
+	)
+	board_view.call("fit", _level, area)
+	instructions.position = area.position
+	instructions.size = area.size
+
+
+func _is_start_event(event: InputEvent) -> bool:
+	var button := event as InputEventMouseButton
+	if button != null:
+		return button.pressed and button.button_index == MOUSE_BUTTON_LEFT
+	return event.is_action_pressed("game_start") or event.is_action_pressed("launch_charge")
+
+
+func _add_shell_scene(path: String) -> void:
+	if not ResourceLoader.exists(path):
+		push_warning("Pachinko: %s is missing; playing without it" % path)
+		return
+	var node := (load(path) as PackedScene).instantiate()
+	add_child(node)
+	if node.has_signal("restart_requested"):
+		node.connect("restart_requested", restart)
+
+
+func _on_flipper_pressed(at: Vector2) -> void:
+	if rules.state != PachinkoRules.State.PLAYING:
+		rules.start_game()
+		return
+	_controls.begin_drag(rules, at)
+
+
+func _on_state_changed(state: PachinkoRules.State) -> void:
+	if state == PachinkoRules.State.PLAYING:
+		instructions.visible = false
+	launcher.call("set_loaded", rules.loaded)
+
+
+func _on_game_ended(summary: Dictionary) -> void:
+	var paid := int(summary.get("game_payouts", 0))
+	App.record_pachinko_balls(_level.board_id, paid)
+	instructions.call("show_game_over", _level, summary, App.best_pachinko_balls(_level.board_id))
+	sounds.play(SoundBank.GAME_OVER)
+
+
+func _on_cup_changed(count: int) -> void:
+	cup.call("set_count", count)
+
+
+func _on_power_changed(power: float) -> void:
+	launcher.call("set_power", power, rules.flipper_degrees())
+
+
+func _on_loaded_changed() -> void:
+	launcher.call("set_loaded", true)
+
+
+func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
+	launcher.call("set_loaded", rules.loaded)
+	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
+
+
+func _on_ball_won(_id: int, pocket: int, payout: int, at: Vector2) -> void:
+	board_view.pockets.call("celebrate", pocket)
+	board_view.effects.call("pocket_win", at, payout)
+	sounds.play(SoundBank.POCKET_WIN)
+	launcher.call("set_loaded", rules.loaded)
+
+
+func _on_ball_drained(_id: int) -> void:
+	board_view.gutter.call("flash")
+	sounds.play(SoundBank.DRAIN, -6.0)
+
+
+func _on_ball_returned(_id: int) -> void:
+	var at := LaunchRail.return_zone_center(_level)
+	board_view.effects.call("note", at + Vector2(-40, 0), "back to cup", Color("bfe3ff"))
+	sounds.play(SoundBank.BALL_RETURN, -4.0)
+	launcher.call("set_loaded", rules.loaded)
+
+
+func _on_pin_hit(_ball: int, _pin: int, speed: float) -> void:
+	sounds.play_impact(SoundBank.PIN_TICK, speed, TICK_MIN_SPEED, TICK_MAX_SPEED)
+
+
+func _on_ring_hit(_ball: int, speed: float) -> void:
+	sounds.play_impact(SoundBank.WALL_THUD, speed, TICK_MIN_SPEED * 2.0, TICK_MAX_SPEED * 1.5)
+
+
+## Puts the screen in a state worth a screenshot (tools/shots runs this):
+## "pachinko_start" the instructions, "pachinko_play" many balls in play with the flipper
+## drawn back, "pachinko_win" the moment a pocket pays out.
+func prepare_shot(shot_name: String) -> void:
+	if rules == null:
+		return
+	if shot_name == "pachinko_start":
+		return
+	rules.start_game()
+	if shot_name == "pachinko_win":
+		var won := [false]
+		var mark := func(_id: int, _p: int, _n: int, _at: Vector2) -> void: won[0] = true
+		rules.ball_won.connect(mark)
+		for frame in 60 * 90:
+			if rules.state != PachinkoRules.State.PLAYING:
+				rules.start_game()
+			if rules.loaded and frame % 9 == 0:
+				rules.fire(30.0 + float(frame * 37 % 70))
+			rules.advance(1.0 / 60.0)
+			if won[0]:
+				break
+		rules.ball_won.disconnect(mark)
+		return
+	for frame in 60 * 4:
+		if rules.loaded and frame % 8 == 0:
+			rules.fire(20.0 + float(frame * 53 % 80))
+		rules.advance(1.0 / 60.0)
+	rules.press_flipper(Vector2(0, 100))
+	rules.drag_to(Vector2(0, 35))

@@ -1,0 +1,85 @@
+extends RefCounted
+## Turns the player's input into flipper calls on the rules: a press on the flipper and a
+## drag (mouse or touch, which Godot delivers as mouse events), the `launch_charge` action
+## held and released (keyboard, gamepad button, or an analog trigger whose depth sets the
+## power), or the left stick pulled down (`tilt_down` from a joypad axis) as a drawback.
+
+enum Source { NONE, POINTER, KEY, ANALOG }
+
+## Stick pulls smaller than this are ignored.
+const STICK_DEADZONE := 0.25
+
+var _source := Source.NONE
+var _peak := 0.0
+
+
+## Starts a pointer drawback at `at` (viewport coordinates).
+func begin_drag(rules: PachinkoRules, at: Vector2) -> void:
+	if rules.press_flipper(at):
+		_source = Source.POINTER
+
+
+## Mouse motion and release during a pointer drawback. True when the event was used.
+func handle_pointer(rules: PachinkoRules, event: InputEvent, _owner: Node) -> bool:
+	if _source != Source.POINTER:
+		return false
+	var motion := event as InputEventMouseMotion
+	if motion != null:
+		rules.drag_to(motion.position)
+		return true
+	var button := event as InputEventMouseButton
+	if button != null and not button.pressed and button.button_index == MOUSE_BUTTON_LEFT:
+		rules.drag_to(button.position)
+		rules.release()
+		_source = Source.NONE
+		return true
+	return false
+
+
+## Charge key, button, trigger and stick events. True when the event was used.
+func handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
+	if _source == Source.POINTER:
+		return false
+	var axis := event as InputEventJoypadMotion
+	if axis != null and (event.is_action("launch_charge") or event.is_action("tilt_down")):
+		var strength := event.get_action_strength("launch_charge")
+		if event.is_action("tilt_down"):
+			strength = maxf(axis.axis_value, 0.0)
+		return _analog(rules, strength)
+	if event.is_action_pressed("launch_charge") and _source == Source.NONE:
+		if rules.begin_charge():
+			_source = Source.KEY
+		return true
+	if event.is_action_released("launch_charge") and _source == Source.KEY:
+		rules.release()
+		_source = Source.NONE
+		return true
+	return false
+
+
+## Called every frame: a held key keeps charging.
+func poll(rules: PachinkoRules, delta: float) -> void:
+	if _source == Source.KEY:
+		rules.charge(delta)
+	if _source != Source.NONE and not rules.drawing:
+		_source = Source.NONE  # the game ended or restarted under us
+
+
+# An analog trigger or stick: the power follows its depth upwards; letting it spring back
+# fires at the deepest point reached.
+func _analog(rules: PachinkoRules, strength: float) -> bool:
+	if strength > STICK_DEADZONE:
+		if _source == Source.NONE:
+			if not rules.begin_charge():
+				return true
+			_source = Source.ANALOG
+			_peak = 0.0
+		if _source == Source.ANALOG:
+			_peak = maxf(_peak, strength)
+			rules.set_power((_peak - STICK_DEADZONE) / (1.0 - STICK_DEADZONE) * 100.0)
+		return true
+	if _source == Source.ANALOG:
+		rules.release()
+		_source = Source.NONE
+		return true
+	return false

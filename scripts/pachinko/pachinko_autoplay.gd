@@ -1,0 +1,62 @@
+extends RefCounted
+## Plays pachinko by itself, headless, for `--autoplay=pachinko`: dismisses the
+## instructions, fires every loaded ball with a random power after a short random pause,
+## starts a new game when one ends, and reports what happened. Same board, seconds and
+## seed give the same result.
+
+## Frame length the autoplay feeds the simulation (a 60 fps display).
+const FRAME_SECONDS := 1.0 / 60.0
+## Pause between shots, seconds: a steady human pace (a real machine fires under two balls
+## a second; faster, balls on the rail run into each other and roll back).
+const MIN_GAP := 0.6
+const MAX_GAP := 1.2
+
+
+## Plays `level` for `seconds` of game time with random powers from `rng_seed`. Returns shots,
+## pocket_hits (per pocket), payouts, drained, balls_left, accounting_ok,
+## frames_simulated and more (see the keys).
+static func run(level: BoardLevel, seconds: float, rng_seed: int) -> Dictionary:
+	if level == null or not level.is_pachinko():
+		push_error("PachinkoAutoplay: a pachinko board is needed")
+		return {"ok": false, "error": "not a pachinko board"}
+	var rng := RandomNumberGenerator.new()
+	rng.seed = rng_seed
+	var rules := PachinkoRules.new(level, rng_seed)
+	var frames := int(ceil(maxf(seconds, 0.0) / FRAME_SECONDS))
+	var steps := 0
+	var games := 1
+	var peak_in_play := 0
+	var accounting_held := true
+	var next_shot := 0.0
+	var clock := 0.0
+	rules.start_game()
+	for frame in frames:
+		clock += FRAME_SECONDS
+		if rules.state != PachinkoRules.State.PLAYING:
+			rules.start_game()
+			games += 1
+		if rules.loaded and clock >= next_shot:
+			rules.fire(rng.randf_range(0.0, 100.0))
+			next_shot = clock + rng.randf_range(MIN_GAP, MAX_GAP)
+		steps += rules.advance(FRAME_SECONDS)
+		peak_in_play = maxi(peak_in_play, rules.balls_in_play())
+		accounting_held = accounting_held and rules.accounting_ok()
+	var stats := rules.stats()
+	return {
+		"shots": stats["shots"],
+		"pocket_hits": stats["pocket_hits"],
+		"payouts": stats["payouts"],
+		"drained": stats["drained"],
+		"returned": stats["returned"],
+		"won": stats["won"],
+		"nudges": stats["nudges"],
+		"balls_left": stats["balls_left"],
+		"in_play": stats["in_play"],
+		"peak_in_play": peak_in_play,
+		"games": games,
+		"payout_ratio": stats["payout_ratio"],
+		"accounting_ok": accounting_held and rules.accounting_ok(),
+		"frames_simulated": frames,
+		"physics_steps": steps,
+		"state_hash": rules.world.state_hash(),
+	}

@@ -1,0 +1,71 @@
+extends RefCounted
+## Where every ball went. Balls come in from the start of a game (the cup fill) and from
+## pocket payouts; each one is then in the cup, loaded, in play, drained or won (caught by
+## a pocket). `balances()` checks that those add up, so no ball is ever lost silently.
+
+## Balls put in the cup when games started.
+var given := 0
+## Balls paid into the cup by pockets.
+var paid := 0
+## Balls launched.
+var shots := 0
+## Balls swallowed by the gutter.
+var drained := 0
+## Balls caught by a pocket (each paid out).
+var won := 0
+## Weak shots that rolled back down the rail into the cup.
+var returned := 0
+## Stuck balls given a nudge.
+var nudges := 0
+## Balls the world removed without telling the rules (should stay 0; counted as drained).
+var vanished := 0
+## Catches per pocket, by pocket index.
+var pocket_hits := PackedInt32Array()
+## Balls paid per pocket, by pocket index.
+var pocket_payouts := PackedInt32Array()
+
+
+func _init(pocket_count: int) -> void:
+	pocket_hits.resize(maxi(pocket_count, 0))
+	pocket_payouts.resize(maxi(pocket_count, 0))
+
+
+## Records a catch by `pocket` paying `payout` balls.
+func record_win(pocket: int, payout: int) -> void:
+	won += 1
+	paid += payout
+	if pocket >= 0 and pocket < pocket_hits.size():
+		pocket_hits[pocket] += 1
+		pocket_payouts[pocket] += payout
+
+
+## True when cup + loaded + in play + drained + won equals every ball ever given or paid.
+func balances(cup: int, loaded: int, in_play: int) -> bool:
+	return cup + loaded + in_play + drained + won == given + paid
+
+
+## Balls paid back per ball shot (0 before the first shot).
+func payout_ratio() -> float:
+	return float(paid) / float(shots) if shots > 0 else 0.0
+
+
+## A plain snapshot for the stats panel, the autoplay JSON and tests.
+func to_dict() -> Dictionary:
+	var hits: Array[int] = []
+	var pays: Array[int] = []
+	for i in pocket_hits.size():
+		hits.append(pocket_hits[i])
+		pays.append(pocket_payouts[i])
+	return {
+		"given": given,
+		"shots": shots,
+		"pocket_hits": hits,
+		"pocket_payouts": pays,
+		"payouts": paid,
+		"won": won,
+		"drained": drained,
+		"returned": returned,
+		"nudges": nudges,
+		"vanished": vanished,
+		"payout_ratio": snappedf(payout_ratio(), 0.001),
+	}

@@ -1,0 +1,362 @@
+class_name PachinkoRules
+extends RefCounted
+## The pachinko game without pictures: the cup, the flipper and launcher, payouts, the
+## gutter and game over, over a BallWorld built from the board. Input arrives as calls
+## (`start_game`, `press_flipper`, `drag_to`, `begin_charge`, `charge`, `release`); what
+## happens leaves as past-tense signals. It never draws and never reads the input map.
+##
+## Flow (the chapter's): the instructions are up and the cup is empty; `start_game` fills
+## the cup and loads a ball; a release with some power fires the loaded ball and the next
+## one loads at once while the cup has any; pockets pay into the cup; when the cup is empty
+## and no ball is loaded or in play the game is over and the instructions return.
+
+## The state changed (see State).
+signal state_changed(state: State)
+## A game began: the cup was filled.
+signal game_started(cup: int)
+## The number of balls in the cup changed.
+signal cup_changed(cup: int)
+## A ball moved from the cup into the launcher.
+signal ball_loaded
+## The flipper's drawback changed: power 0..100.
+signal power_changed(power: float)
+## A ball was fired up the rail with `power` and `speed` (px/s).
+signal ball_launched(ball_id: int, power: float, speed: float)
+## A shot too weak to clear the rail rolled back; the ball went back into the cup.
+signal ball_returned(ball_id: int)
+## A ball reached a pocket's special pin: it left play and `payout` balls went to the cup.
+signal ball_won(ball_id: int, pocket: int, payout: int, at: Vector2)
+## The gutter swallowed a ball.
+signal ball_drained(ball_id: int)
+## A ball resting too long got a small push.
+signal ball_nudged(ball_id: int)
+## The cup ran dry with nothing loaded or in play. `summary` is `stats()`.
+signal game_ended(summary: Dictionary)
+
+## INSTRUCTIONS: before the first game; PLAYING; GAME_OVER: the instructions are back.
+enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
+
+const LaunchPower := preload("res://scripts/pachinko/launch_power.gd")
+const Ledger := preload("res://scripts/pachinko/pachinko_ledger.gd")
+const StuckWatcher := preload("res://scripts/pachinko/stuck_ball_watcher.gd")
+
+## Power added per second while a key or button is held (full power in 1.25 s).
+const CHARGE_PER_SECOND := 80.0
+## Speed of the nudge given to a resting ball, px/s.
+const NUDGE_SPEED := 70.0
+
+## The board being played.
+var level: BoardLevel
+## The simulation; the view reads positions and pin hits from it.
+var world: BallWorld
+var state := State.INSTRUCTIONS
+## Balls in the cup.
+var cup := 0
+## True while a ball sits in the launcher.
+var loaded := false
+## Current drawback, 0..100.
+var power := 0.0
+## True between a press on the flipper (or a charge key) and its release.
+var drawing := false
+## Where every ball went (counters for the stats panel and the autoplay).
+var ledger: Ledger
+
+var _in_play: Dictionary = {}
+var _origin := Vector2.ZERO
+var _watcher := StuckWatcher.new()
+var _rng := RandomNumberGenerator.new()
+var _step_seconds := 1.0 / 60.0
+var _launch_pos := Vector2.ZERO
+var _launch_dir := Vector2.RIGHT
+var _entry_rise := 0.0
+var _top_rise := 0.0
+var _game_start_paid := 0
+var _game_start_shots := 0
+
+
+## Builds the world for `board`. `rng_seed` makes the nudges repeatable.
+func _init(board: BoardLevel, rng_seed: int = 0) -> void:
+	level = board
+	_rng.seed = rng_seed
+	ledger = Ledger.new(board.pockets.size())
+	world = BoardWorldFactory.build(board)
+	var tuning := board.tuning as PhysicsTuning
+	if tuning != null and tuning.fixed_hz > 0.0:
+		_step_seconds = 1.0 / tuning.fixed_hz
+	_launch_pos = LaunchRail.launch_position(board)
+	_launch_dir = LaunchRail.launch_direction(board)
+	_entry_rise = _launch_pos.y - LaunchRail.entry_point(board).y
+	_top_rise = _launch_pos.y - LaunchRail.highest_lane_y(board)
+	world.ball_pocketed.connect(_on_ball_pocketed)
+	world.ball_drained.connect(_on_ball_drained)
+	world.ball_entered_zone.connect(_on_ball_entered_zone)
+
+
+## Dismisses the instructions: fills the cup with the board's start balls and loads one.
+## Does nothing (returns false) while a game is running.
+func start_game() -> bool:
+	if state == State.PLAYING:
+		return false
+	cup += level.cup_start_balls
+	ledger.given += level.cup_start_balls
+	_game_start_paid = ledger.paid
+	_game_start_shots = ledger.shots
+	_set_state(State.PLAYING)
+	game_started.emit(cup)
+	cup_changed.emit(cup)
+	_load_next()
+	_check_game_over()
+	return true
+
+
+## The pointer went down on the flipper at `at` (any coordinates, y down): drawback begins.
+func press_flipper(at: Vector2) -> bool:
+	if state != State.PLAYING:
+		return false
+	drawing = true
+	_origin = at
+	_set_power(0.0)
+	return true
+
+
+## The pointer moved while drawing back: power is how far it went up from the press.
+func drag_to(at: Vector2) -> void:
+	if drawing:
+		_set_power(LaunchPower.power_from_drag(_origin, at))
+
+
+## A charge key or button went down: drawback begins at zero.
+func begin_charge() -> bool:
+	return press_flipper(Vector2.ZERO)
+
+
+## Adds charge for a held key over `delta` seconds.
+func charge(delta: float) -> void:
+	if drawing:
+		_set_power(minf(power + CHARGE_PER_SECOND * delta, LaunchPower.MAX_POWER))
+
+
+## Sets the drawback directly (an analog trigger), 0..100.
+func set_power(value: float) -> void:
+	if drawing:
+		_set_power(clampf(value, 0.0, LaunchPower.MAX_POWER))
+
+
+## Lets the flipper go. With some power and a loaded ball it fires; returns the new ball's
+## id, or -1 when nothing was fired.
+func release() -> int:
+	if not drawing:
+		return -1
+	drawing = false
+	var shot_power := power
+	_set_power(0.0)
+	if shot_power <= 0.0:
+		return -1
+	return fire(shot_power)
+
+
+## Fires the loaded ball with `shot_power` (0..100) and loads the next at once. Returns the
+## ball id, or -1 (and nothing happens) when no ball is loaded or the rail is blocked.
+func fire(shot_power: float) -> int:
+	if state != State.PLAYING or not loaded or rail_blocked():
+		return -1
+	var speed := launch_speed(shot_power)
+	var id := world.spawn_ball(_launch_pos, _launch_dir * speed, level.ball_radius)
+	if id < 0:
+		return -1
+	loaded = false
+	_in_play[id] = true
+	ledger.shots += 1
+	ball_launched.emit(id, shot_power, speed)
+	_load_next()
+	return id
+
+
+## True while a weak shot is rolling back down the launch rail: the launcher holds its
+## ball until the rail is clear, or the two would meet head-on and both roll back.
+func rail_blocked() -> bool:
+	var rail_outer := level.ring_radius
+	var rail_inner := LaunchRail.guide_radius(level) + LaunchRail.GUIDE_WALL_RADIUS
+	var low := deg_to_rad(minf(level.rail_start_deg, level.rail_end_deg))
+	var high := deg_to_rad(maxf(level.rail_start_deg, level.rail_end_deg))
+	var up_sign := -1.0 if level.rail_end_deg < level.rail_start_deg else 1.0
+	var positions := world.get_positions()
+	var velocities := world.get_velocities()
+	for i in positions.size():
+		var rel := positions[i] - level.ring_center
+		var dist := rel.length()
+		if dist < rail_inner or dist > rail_outer:
+			continue
+		var angle := rel.angle()
+		# Bring the angle into the rail's range (the rail may cross ±180°).
+		while angle > high:
+			angle -= TAU
+		while angle < low:
+			angle += TAU
+		if angle > high:
+			continue
+		var up := Vector2(-sin(angle), cos(angle)) * up_sign
+		if velocities[i].dot(up) < 0.0:
+			return true
+	return false
+
+
+## Launch speed at the bottom of the rail for a power (see launch_power.gd).
+func launch_speed(shot_power: float) -> float:
+	return LaunchPower.launch_speed(shot_power, _entry_rise, _top_rise, world.gravity.length())
+
+
+## Runs the simulation for `delta` seconds of game time; returns the steps taken.
+func advance(delta: float) -> int:
+	var steps := world.advance(delta)
+	_after_steps(steps)
+	return steps
+
+
+## Runs exactly one fixed simulation step.
+func step() -> void:
+	world.step(_step_seconds)
+	_after_steps(1)
+
+
+## Seconds per simulation step.
+func step_seconds() -> float:
+	return _step_seconds
+
+
+## Balls in the field or on the rail.
+func balls_in_play() -> int:
+	return _in_play.size()
+
+
+## Ids of the balls in play.
+func ball_ids() -> Array:
+	return _in_play.keys()
+
+
+## Flipper rotation for the current drawback, degrees (0..20).
+func flipper_degrees() -> float:
+	return LaunchPower.flipper_degrees(power)
+
+
+## True when cup + loaded + in play + drained + won adds up to every ball given or paid,
+## and the world holds exactly the balls the rules think are in play.
+func accounting_ok() -> bool:
+	var balanced := ledger.balances(cup, 1 if loaded else 0, _in_play.size())
+	return balanced and world.ball_count() == _in_play.size()
+
+
+## Everything the stats panel and the autoplay report.
+func stats() -> Dictionary:
+	var out := ledger.to_dict()
+	out["cup"] = cup
+	out["loaded"] = loaded
+	out["in_play"] = _in_play.size()
+	out["balls_left"] = cup + (1 if loaded else 0)
+	out["game_payouts"] = ledger.paid - _game_start_paid
+	out["game_shots"] = ledger.shots - _game_start_shots
+	out["accounting_ok"] = accounting_ok()
+	return out
+
+
+func _after_steps(steps: int) -> void:
+	if steps <= 0 or _in_play.is_empty():
+		return
+	_reconcile()
+	for id in _watcher.update(world, _in_play.keys(), steps * _step_seconds):
+		_nudge(id)
+
+
+# A ball the world dropped without a signal would break the accounting: count it as
+# drained, keep a counter so tests catch it, and move on.
+func _reconcile() -> void:
+	if world.ball_count() == _in_play.size():
+		return
+	for id: int in _in_play.keys():
+		if not world.has_ball(id):
+			push_warning("PachinkoRules: ball %d left the world without an event" % id)
+			ledger.vanished += 1
+			ledger.drained += 1
+			_leave_play(id)
+	_check_game_over()
+
+
+func _nudge(id: int) -> void:
+	var side := -1.0 if _rng.randf() < 0.5 else 1.0
+	var push := Vector2(side * _rng.randf_range(0.5, 1.0), -0.6).normalized() * NUDGE_SPEED
+	world.set_ball_velocity(id, world.get_ball_velocity(id) + push)
+	ledger.nudges += 1
+	ball_nudged.emit(id)
+
+
+func _load_next() -> void:
+	if loaded or cup <= 0 or state != State.PLAYING:
+		return
+	cup -= 1
+	loaded = true
+	cup_changed.emit(cup)
+	ball_loaded.emit()
+
+
+func _leave_play(id: int) -> void:
+	_in_play.erase(id)
+	_watcher.forget(id)
+
+
+func _check_game_over() -> void:
+	if state == State.PLAYING and cup == 0 and not loaded and _in_play.is_empty():
+		drawing = false
+		_set_power(0.0)
+		_set_state(State.GAME_OVER)
+		game_ended.emit(stats())
+
+
+func _set_state(new_state: State) -> void:
+	if state != new_state:
+		state = new_state
+		state_changed.emit(state)
+
+
+func _set_power(value: float) -> void:
+	if value != power:
+		power = value
+		power_changed.emit(power)
+
+
+func _on_ball_pocketed(ball_id: int, pocket_id: int) -> void:
+	if not _in_play.has(ball_id):
+		return
+	_leave_play(ball_id)
+	var payout := 0
+	var at := Vector2.ZERO
+	if pocket_id >= 0 and pocket_id < level.pockets.size():
+		payout = maxi(level.pockets[pocket_id].payout, 0)
+		at = level.pockets[pocket_id].position
+	ledger.record_win(pocket_id, payout)
+	cup += payout
+	cup_changed.emit(cup)
+	ball_won.emit(ball_id, pocket_id, payout, at)
+	_load_next()
+	_check_game_over()
+
+
+func _on_ball_drained(ball_id: int) -> void:
+	if not _in_play.has(ball_id):
+		return
+	_leave_play(ball_id)
+	ledger.drained += 1
+	ball_drained.emit(ball_id)
+	_check_game_over()
+
+
+# Zone 0 is the launch rail's return zone at the bottom of the rail.
+func _on_ball_entered_zone(ball_id: int, zone_index: int) -> void:
+	if zone_index != 0 or not _in_play.has(ball_id):
+		return
+	world.remove_ball(ball_id)
+	_leave_play(ball_id)
+	ledger.returned += 1
+	cup += 1
+	cup_changed.emit(cup)
+	ball_returned.emit(ball_id)
+	_load_next()
