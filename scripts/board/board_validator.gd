@@ -6,6 +6,8 @@ extends RefCounted
 
 const PachinkoChecks := preload("res://scripts/board/pachinko_checks.gd")
 const MazeChecks := preload("res://scripts/board/maze_checks.gd")
+## Common problems that make the kind-specific checks meaningless.
+const BLOCKING := ["bad_kind", "bad_size", "bad_ball_radius"]
 
 
 ## Every problem found on `level`, errors first then warnings, each in board order.
@@ -19,8 +21,9 @@ static func validate(level: BoardLevel) -> Array[BoardIssue]:
 		)
 		return issues
 	_check_common(level, issues)
-	if _has_errors(issues):
-		return issues  # sizes and radii are needed by every later check
+	for issue in issues:
+		if issue.kind in BLOCKING:
+			return issues  # every later check needs a sane kind, size and ball
 	if level.kind == BoardLevel.Kind.PACHINKO:
 		PachinkoChecks.check(level, issues)
 	else:
@@ -121,13 +124,6 @@ static func _check_tuning(tuning: PhysicsTuning, issues: Array[BoardIssue]) -> v
 		)
 	if tuning.fixed_hz < 10.0 or tuning.max_speed <= 0.0:
 		_error(issues, "Tuning needs fixed_hz ≥ 10 and max_speed > 0.", Vector2.ZERO, "bad_tuning")
-
-
-static func _has_errors(issues: Array[BoardIssue]) -> bool:
-	for issue in issues:
-		if issue.is_error():
-			return true
-	return false
 
 
 static func _error(issues: Array[BoardIssue], text: String, at: Vector2, code: String) -> void:

@@ -92,9 +92,9 @@ static func launch_direction(level: BoardLevel) -> Vector2:
 	return Vector2(-sin(angle), cos(angle)) * _rail_sense(level)
 
 
-## Where the ball leaves the channel into the field (lane radius at `rail_end_deg`).
+## Where the ball leaves the channel into the field: riding the ring at `rail_end_deg`.
 static func entry_point(level: BoardLevel) -> Vector2:
-	return level.ring_center + _unit(level.rail_end_deg) * lane_radius(level)
+	return level.ring_center + _unit(level.rail_end_deg) * riding_radius(level)
 
 
 ## The highest point (smallest y) a ball passes on its way from the launch position to the
@@ -106,7 +106,7 @@ static func highest_lane_y(level: BoardLevel) -> float:
 	var high := maxf(level.rail_start_deg, level.rail_end_deg)
 	for top_deg in [-450.0, -90.0, 270.0]:
 		if top_deg >= low and top_deg <= high:
-			top = minf(top, level.ring_center.y - lane_radius(level))
+			top = minf(top, level.ring_center.y - riding_radius(level))
 	return top
 
 

@@ -151,11 +151,11 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				s,
 				"start_in_wall"
 			)
-		elif _in_any(level.holes, level.hole_radius + level.ball_radius, s):
+		elif _in_any(level.holes, level.hole_radius, s):
 			_add(
 				issues,
 				ERROR,
-				"Ball start %d touches a black hole: hard mode would be lost at once." % i,
+				"Ball start %d is in a black hole: hard mode would be lost at once." % i,
 				s,
 				"start_in_hole"
 			)

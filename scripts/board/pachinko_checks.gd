@@ -96,6 +96,14 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 				spec.position,
 				"bad_pocket"
 			)
+		elif spec.depth < spec.width * 0.5:
+			_add(
+				issues,
+				WARNING,
+				"Pocket %d is shallower than half its width; its rim cannot be stamped." % i,
+				spec.position,
+				"pocket_shallow"
+			)
 	if level.cup_start_balls < 1:
 		_add(
 			issues,
