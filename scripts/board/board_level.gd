@@ -122,6 +122,7 @@ const CURRENT_VERSION := 1
 @export var pockets: Array[PocketSpec] = []:
 	set(value):
 		pockets = value
+		_watch_pockets()
 		emit_changed()
 ## Balls in the cup when a game starts.
 @export var cup_start_balls: int = 0:
@@ -185,6 +186,8 @@ const CURRENT_VERSION := 1
 ## `BoardUpgrader` can convert them. Never saved.
 var legacy_fields: Dictionary = {}
 
+var _watched: Array[PocketSpec] = []
+
 
 func _init() -> void:
 	# A board made in code is current; a file's own `version` line overrides this on load.
@@ -203,6 +206,7 @@ func _set(property: StringName, value: Variant) -> bool:
 ## Tells listeners (the board node, the editor) that the board changed after an in-place
 ## edit of one of its arrays, which the setters cannot see.
 func notify_edited() -> void:
+	_watch_pockets()
 	emit_changed()
 
 
@@ -232,3 +236,15 @@ func is_maze() -> bool:
 ## The folder name for a kind ("pachinko" / "maze").
 static func kind_name(of_kind: int) -> String:
 	return "maze" if of_kind == Kind.MAZE else "pachinko"
+
+
+# A pocket edited on its own (in the inspector, say) changes the board too.
+func _watch_pockets() -> void:
+	for spec in _watched:
+		if spec != null and spec.changed.is_connected(emit_changed):
+			spec.changed.disconnect(emit_changed)
+	_watched.clear()
+	for spec in pockets:
+		if spec != null and not spec.changed.is_connected(emit_changed):
+			spec.changed.connect(emit_changed)
+			_watched.append(spec)

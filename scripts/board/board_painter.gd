@@ -35,6 +35,8 @@ const HOLE_COLOR := Color("000000")
 const BALL_COLOR := Color("f06449")
 ## Pixels of dash and gap on the goal's dashed circle.
 const DASH := 8.0
+## Smallest radius a pin is drawn with on screen, in screen pixels (thumbnails stay legible).
+const MIN_PIN_PIXELS := 0.9
 ## How far the drawn ring (and gutter) reach outside `ring_radius`, in pixels.
 const RING_OVERHANG := 8.0
 
@@ -53,7 +55,8 @@ static func draw_board(
 		var color := MAZE_BACKGROUND if level.is_maze() else PACHINKO_BACKGROUND
 		canvas.draw_rect(board_bounds(level), color)
 	if level.is_pachinko():
-		_draw_pachinko(canvas, level, layers)
+		var pixels_per_unit := maxf(xform.get_scale().x, 1e-3)
+		_draw_pachinko(canvas, level, layers, MIN_PIN_PIXELS / pixels_per_unit)
 	else:
 		_draw_maze(canvas, level, layers)
 	canvas.draw_set_transform_matrix(Transform2D.IDENTITY)
@@ -92,7 +95,9 @@ static func fit_transform(level: BoardLevel, rect: Rect2, margin: float = 0.0) -
 	return Transform2D(0.0, Vector2(scale, scale), 0.0, offset)
 
 
-static func _draw_pachinko(canvas: CanvasItem, level: BoardLevel, layers: int) -> void:
+static func _draw_pachinko(
+	canvas: CanvasItem, level: BoardLevel, layers: int, min_pin_radius: float
+) -> void:
 	var c := level.ring_center
 	var r := level.ring_radius
 	if not c.is_finite() or not is_finite(r) or r <= 0.0:
@@ -123,7 +128,7 @@ static func _draw_pachinko(canvas: CanvasItem, level: BoardLevel, layers: int) -
 			if spec != null:
 				_draw_pocket(canvas, spec, level.pin_radius)
 	if layers & Layer.PINS:
-		_draw_pins(canvas, level)
+		_draw_pins(canvas, level, min_pin_radius)
 
 
 static func _draw_pocket(canvas: CanvasItem, spec: PocketSpec, pin_radius: float) -> void:
@@ -139,8 +144,8 @@ static func _draw_pocket(canvas: CanvasItem, spec: PocketSpec, pin_radius: float
 		canvas.draw_colored_polygon(cup, POCKET_COLOR)
 
 
-static func _draw_pins(canvas: CanvasItem, level: BoardLevel) -> void:
-	var r := maxf(level.pin_radius, 0.75)
+static func _draw_pins(canvas: CanvasItem, level: BoardLevel, min_radius: float) -> void:
+	var r := maxf(level.pin_radius, min_radius)
 	for i in level.pins.size():
 		var p := level.pins[i]
 		if i < level.pin_special.size() and level.pin_special[i] != 0:

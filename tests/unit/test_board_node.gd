@@ -46,3 +46,12 @@ func test_fit_transform_centres_the_board_and_its_overhang() -> void:
 func _tiny(kind: String) -> BoardLevel:
 	var path := "res://tests/fixtures/boards/tiny_%s.tres" % kind
 	return (load(path) as BoardLevel).duplicate_level()
+
+
+func test_editing_a_pocket_on_its_own_updates_the_board() -> void:
+	var node: BoardNode = add_child_autofree(BoardNode.new())
+	var level := _tiny("pachinko")
+	node.level = level
+	assert_eq(node.issues().size(), 0)
+	level.pockets[0].width = 4.0  # mouth too narrow for a ball
+	assert_gt(node.issues().size(), 0, "the node heard the pocket change")
