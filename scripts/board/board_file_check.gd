@@ -113,6 +113,10 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 		return _fail(
 			"this is not a Godot text resource (it starts with %s)" % header.get("tag", "?")
 		)
+	if not header.get("format", "3") in ["3", "4"]:
+		return _fail(
+			"the file uses resource format %s, which this build cannot read" % header["format"]
+		)
 	if (
 		header.get("type", "") != "Resource"
 		or header.get("script_class", "BoardLevel") != "BoardLevel"
@@ -173,14 +177,15 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 		if not ext_scripts.has(class_id):
 			return _fail("line %d: a section has no board script" % section["line"])
 		section["class"] = ext_scripts[class_id]
-		if section["tag"] == "sub_resource":
-			sub_classes[section["id"]] = ext_scripts[class_id]
 	if sections[-1]["class"] != "BoardLevel":
 		return _fail("the file holds a %s, not a BoardLevel" % sections[-1]["class"])
+	# A section may only use sub-resources defined above it, as the engine reads them.
 	for section in sections:
 		var problem := _check_fields(section, ext_scripts, sub_classes)
 		if not problem.is_empty():
 			return _fail(problem)
+		if section["tag"] == "sub_resource":
+			sub_classes[section["id"]] = section["class"]
 	var main_fields: Dictionary = sections[-1]["fields"]
 	var version := 0
 	if main_fields.has("version"):

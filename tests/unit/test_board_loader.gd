@@ -6,6 +6,7 @@ const DIR := "res://tests/fixtures/boards/"
 ## Fixture → words its refusal must contain.
 const BROKEN := {
 	"broken_unparsable": "never closed",
+	"broken_format": "resource format 9",
 	"broken_unclosed": "'display_name' is never closed",
 	"broken_garbage": "not a Godot text resource",
 	"broken_not_board": "PocketSpec, not a BoardLevel",
