@@ -3,6 +3,8 @@ extends Control
 ## the start button / key) anywhere takes it away and starts a game; the game scene does
 ## that, this panel only shows the words.
 
+const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
+
 var _title: Label
 var _body: RichTextLabel
 var _footer: Label
@@ -27,7 +29,10 @@ func show_start(level: BoardLevel) -> void:
 						"[b]Press on the flipper and drag up[/b] to draw it back: the red bar shows the"
 						+ " power. Let go to fire."
 					),
-					"Or hold [b]Space[/b] (or the gamepad trigger) to charge and release to fire.",
+					(
+						"Or hold [b]%s[/b] (or the gamepad trigger) to charge and release to fire."
+						% PachinkoInput.key_name(&"launch_charge", "the charge key")
+					),
 					(
 						"A ball that falls into a [b]pocket[/b] pays balls back into the cup. A shot too"
 						+ " weak to clear the rail rolls back to the cup."

@@ -25,6 +25,7 @@ var _stats_refresh := 0.0
 @onready var launcher: Control = $Hud/Column/Launcher
 @onready var stats_panel: PanelContainer = $Hud/Column/Stats
 @onready var title: Label = $Hud/Column/Title
+@onready var notes: Label = $Hud/Column/Notes
 @onready var instructions: Control = $Instructions
 @onready var sounds: SoundBank = $Sounds
 
@@ -98,16 +99,42 @@ func _new_rules() -> void:
 	rules.world.pin_hit.connect(_on_pin_hit)
 	rules.world.ring_hit.connect(_on_ring_hit)
 	board_view.call("bind", rules)
-	title.text = _level.display_name
+	title.text = "Pachinko · %s" % _level.display_name
 	cup.call("set_count", 0)
 	launcher.call("set_power", 0.0, 0.0)
 	launcher.call("set_loaded", false)
+	var charge_key := PachinkoInput.key_name(&"launch_charge", "the charge key")
 	launcher.call(
 		"set_hint",
-		"Press the red grip and\ndrag it up to draw back,\nor hold Space.\nLet go to fire."
+		(
+			"Press the red grip and\ndrag it up to draw back,\nor hold %s.\nLet go to fire."
+			% charge_key
+		)
 	)
+	_show_notes()
 	stats_panel.call("show_stats", rules.stats())
 	instructions.call("show_start", _level)
+
+
+func _show_notes() -> void:
+	var lines := PackedStringArray()
+	var best := App.best_pachinko_balls(_level.board_id)
+	if best > 0:
+		lines.append("Best on this board: %d balls paid back" % best)
+	(
+		lines
+		. append(
+			(
+				"%s restart  ·  %s pause  ·  %s frame counter"
+				% [
+					PachinkoInput.key_name(&"game_restart", "?"),
+					PachinkoInput.key_name(&"pause", "?"),
+					PachinkoInput.key_name(&"toggle_frame_counter", "?"),
+				]
+			)
+		)
+	)
+	notes.text = "\n".join(lines)
 
 
 func _layout() -> void:
@@ -159,6 +186,7 @@ func _on_game_ended(summary: Dictionary) -> void:
 	var paid := int(summary.get("game_payouts", 0))
 	App.record_pachinko_balls(_level.board_id, paid)
 	instructions.call("show_game_over", _level, summary, App.best_pachinko_balls(_level.board_id))
+	_show_notes()
 	sounds.play(SoundBank.GAME_OVER)
 
 

@@ -37,15 +37,17 @@ func _initialize() -> void:
 	_rules = PachinkoRules.new(level, 1)
 	_rules.start_game()
 	_view = (load(BOARD_VIEW) as PackedScene).instantiate() as Node2D
-	root.add_child(_view)
-	_view.call("bind", _rules)
-	_balls = _view.get_node("Balls") as Node2D
-	_started = true
+	root.add_child.call_deferred(_view)
 
 
 func _process(_delta: float) -> bool:
 	if not _started:
-		return false
+		# The view's layers are ready once the tree has taken it in.
+		if _view == null or not _view.is_node_ready():
+			return false
+		_view.call("bind", _rules)
+		_balls = _view.get_node("Balls") as Node2D
+		_started = true
 	# The previous frame's draw has run by now (queue_redraw is processed between frames).
 	if _frame > WARMUP_FRAMES:
 		_draw_ms.append(int(_balls.get("last_draw_usec")) / 1000.0)

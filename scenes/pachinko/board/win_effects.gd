@@ -2,7 +2,7 @@ extends Node2D
 ## Short-lived effects over the board: a rising "+4" and a ring of sparks where a pocket
 ## paid out, and a puff where a weak shot came back. All in one draw, no node per effect.
 
-const LIFETIME := 1.6
+const LIFETIME := 1.8
 const SPARKS := 12
 
 var _effects: Array[Dictionary] = []
@@ -44,16 +44,18 @@ func _draw() -> void:
 		var t: float = float(effect["age"]) / LIFETIME
 		var at: Vector2 = effect["at"]
 		var color: Color = effect["color"]
-		var fade := 1.0 - t
+		# Full strength for most of the life, then a quick fade.
+		var fade := clampf((1.0 - t) / 0.35, 0.0, 1.0)
 		var quiet := effect.has("quiet")
 		if not quiet:
+			draw_circle(at, 16.0 + 30.0 * t, Color(1.0, 0.85, 0.35, 0.22 * fade))
 			for i in SPARKS:
 				var a := TAU * float(i) / SPARKS + t
 				var dir := Vector2(cos(a), sin(a))
 				var p := at + dir * (8.0 + 46.0 * t)
 				draw_line(p, p + dir * 7.0 * fade, Color(color, fade), 2.5, true)
 			draw_arc(at, 10.0 + 40.0 * t, 0.0, TAU, 32, Color(1, 1, 1, 0.6 * fade), 2.0, true)
-		var size := 16 if quiet else int(26 + 10 * minf(t * 4.0, 1.0))
+		var size := 16 if quiet else int(30 + 14 * minf(t * 4.0, 1.0))
 		var text: String = effect["text"]
 		var width := font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, size).x
 		var pos := at + Vector2(-width * 0.5, -20.0 - 50.0 * t)
