@@ -94,9 +94,8 @@ static func key_name(action: StringName, fallback: String = "") -> String:
 		var key := event as InputEventKey
 		if key == null:
 			continue
-		var code := key.keycode
-		if code == KEY_NONE:
-			code = DisplayServer.keyboard_get_keycode_from_physical(key.physical_keycode)
+		# A physical key is named by its US-layout key, which is what the bindings store.
+		var code := key.keycode if key.keycode != KEY_NONE else key.physical_keycode
 		if code != KEY_NONE:
 			return OS.get_keycode_string(code)
 	return fallback
