@@ -298,11 +298,16 @@ static func _property_types(script_class: String) -> Dictionary:
 
 static func _attributes(header: String) -> Dictionary:
 	var inner := header.substr(1, header.length() - 2).strip_edges()
-	var result := {"tag": inner.get_slice(" ", 0)}
-	var pattern := RegEx.create_from_string('(\\w+)=("([^"]*)"|[^\\s\\]]+)')
-	for found in pattern.search_all(inner):
+	var tag := inner.get_slice(" ", 0)
+	var result := {"tag": tag}
+	var pattern := RegEx.create_from_string('(\\w+)=("([^"]*)"|[^\\s\\]"]+)')
+	var rest := inner.substr(tag.length())
+	for found in pattern.search_all(rest):
 		var quoted := found.get_string(3)
 		result[found.get_string(1)] = quoted if found.get_start(3) >= 0 else found.get_string(2)
+	# Anything besides the tag and key=value pairs: the engine would not read it either.
+	if not tag.is_valid_identifier() or not pattern.sub(rest, "", true).strip_edges().is_empty():
+		result["tag"] = "(unreadable)"
 	return result
 
 
