@@ -21,6 +21,7 @@ func before_all() -> void:
 func after_all() -> void:
 	for file_name in DirAccess.get_files_at(DIR):
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(DIR + "/" + file_name))
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(DIR + "/.gdignore"))
 	DirAccess.remove_absolute(ProjectSettings.globalize_path(DIR))
 
 
