@@ -10,7 +10,7 @@ var error: String = ""
 ## The file this result is about.
 var path: String = ""
 ## Validator warnings (not fatal) found while loading, as BoardIssue objects.
-var warnings: Array = []
+var warnings: Array[BoardIssue] = []
 
 
 ## True when a level is available.

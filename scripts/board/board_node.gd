@@ -5,6 +5,9 @@ extends Node2D
 ## editor plugin takes over; it redraws whenever the level changes and lists the
 ## validator's findings as configuration warnings.
 
+## At most this many validator findings are listed as configuration warnings.
+const MAX_WARNINGS := 12
+
 ## The board shown and edited. Saving the scene saves this resource's own .tres file.
 @export var level: BoardLevel:
 	set(value):
@@ -38,9 +41,12 @@ func _get_configuration_warnings() -> PackedStringArray:
 	if level == null:
 		warnings.append("Assign a BoardLevel (.tres from levels/) to show and edit a board.")
 		return warnings
-	for issue in issues():
+	var found := issues()
+	for issue in found.slice(0, MAX_WARNINGS):
 		var label := "Error" if issue.is_error() else "Warning"
 		warnings.append("%s: %s" % [label, issue.message])
+	if found.size() > MAX_WARNINGS:
+		warnings.append("... and %d more." % (found.size() - MAX_WARNINGS))
 	return warnings
 
 
