@@ -3,9 +3,10 @@ extends RefCounted
 ##
 ## The chapter fires balls into the field at 3.5 to 10 px per 30 ms tick (117 to 333 px/s).
 ## Here the ball climbs a real rail first, so the speed it needs at the bottom follows from
-## energy: v_bottom² = v_exit² + 2·g·Δh, with Δh the climb from the launcher to the rail
-## exit. Below `CLEAR_POWER` the ball cannot reach the exit and rolls back to the cup;
-## from there up the exit speed rises linearly through the chapter's range.
+## energy: v_bottom² = v_exit² + v_clear², with v_clear ≈ sqrt(2·g·Δh) the slowest launch
+## that passes the rail's top (measured on the board). Below `CLEAR_POWER` the ball cannot
+## clear and rolls back to the cup; from there up the exit speed rises linearly through
+## the chapter's range.
 
 ## Field entry speed at the weakest clearing shot (chapter 3.5 px/tick at 30 ms).
 const EXIT_SPEED_MIN := 3.5 / 0.03
@@ -17,8 +18,6 @@ const CLEAR_POWER := 12.0
 const WEAK_SHOT_SHARE := 0.93
 ## The weakest shot (power 0) climbs only this share.
 const ZERO_SHOT_SHARE := 0.45
-## A clearing shot starts at least this much faster than the bare minimum to pass the top.
-const CLEAR_MARGIN := 1.04
 const MAX_POWER := 100.0
 
 
@@ -30,16 +29,14 @@ static func exit_speed(power: float) -> float:
 	return lerpf(EXIT_SPEED_MIN, EXIT_SPEED_MAX, t)
 
 
-## Speed at the bottom of the rail for `power`. `entry_rise` is the climb (pixels, up is
-## positive) from the launcher to where the rail opens into the field, `top_rise` the climb
-## to the rail's highest point, `g` the gravity magnitude. A clearing shot always carries a
-## little more than the speed needed to pass the top; a weak one carries less and rolls back.
-static func launch_speed(power: float, entry_rise: float, top_rise: float, g: float) -> float:
-	var clear := sqrt(2.0 * g * maxf(top_rise, 0.0))
+## Speed at the bottom of the rail for `power`, given `clear`: the slowest launch that
+## still leaves the rail (measured by LaunchCalibration). A clearing shot adds its exit
+## speed's energy on top (v² = clear² + v_exit²), so it leaves the rail at about v_exit; a
+## weak shot carries less than `clear` and rolls back.
+static func launch_speed(power: float, clear: float) -> float:
 	var v_exit := exit_speed(power)
 	if v_exit > 0.0:
-		var wanted := sqrt(v_exit * v_exit + 2.0 * g * maxf(entry_rise, 0.0))
-		return maxf(wanted, clear * CLEAR_MARGIN + v_exit * 0.25)
+		return sqrt(clear * clear + v_exit * v_exit)
 	var share := lerpf(
 		ZERO_SHOT_SHARE, WEAK_SHOT_SHARE, clampf(power, 0.0, MAX_POWER) / CLEAR_POWER
 	)

@@ -37,6 +37,7 @@ signal game_ended(summary: Dictionary)
 enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
 const LaunchPower := preload("res://scripts/pachinko/launch_power.gd")
+const LaunchCalibration := preload("res://scripts/pachinko/launch_calibration.gd")
 const Ledger := preload("res://scripts/pachinko/pachinko_ledger.gd")
 const StuckWatcher := preload("res://scripts/pachinko/stuck_ball_watcher.gd")
 
@@ -68,8 +69,7 @@ var _rng := RandomNumberGenerator.new()
 var _step_seconds := 1.0 / 60.0
 var _launch_pos := Vector2.ZERO
 var _launch_dir := Vector2.RIGHT
-var _entry_rise := 0.0
-var _top_rise := 0.0
+var _clear_speed := 0.0
 var _game_start_paid := 0
 var _game_start_shots := 0
 
@@ -85,8 +85,7 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 		_step_seconds = 1.0 / tuning.fixed_hz
 	_launch_pos = LaunchRail.launch_position(board)
 	_launch_dir = LaunchRail.launch_direction(board)
-	_entry_rise = _launch_pos.y - LaunchRail.entry_point(board).y
-	_top_rise = _launch_pos.y - LaunchRail.highest_lane_y(board)
+	_clear_speed = LaunchCalibration.clear_speed(board)
 	world.ball_pocketed.connect(_on_ball_pocketed)
 	world.ball_drained.connect(_on_ball_drained)
 	world.ball_entered_zone.connect(_on_ball_entered_zone)
@@ -203,7 +202,7 @@ func rail_blocked() -> bool:
 
 ## Launch speed at the bottom of the rail for a power (see launch_power.gd).
 func launch_speed(shot_power: float) -> float:
-	return LaunchPower.launch_speed(shot_power, _entry_rise, _top_rise, world.gravity.length())
+	return LaunchPower.launch_speed(shot_power, _clear_speed)
 
 
 ## Runs the simulation for `delta` seconds of game time; returns the steps taken.
