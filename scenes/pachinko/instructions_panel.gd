@@ -46,9 +46,9 @@ func show_start(level: BoardLevel) -> void:
 	visible = true
 
 
-## The game-over screen with the last game's numbers.
-func show_game_over(level: BoardLevel, summary: Dictionary, best: int) -> void:
-	_title.text = "Game over"
+## The game-over screen with the last game's numbers; `new_best` when it beat the record.
+func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best: bool) -> void:
+	_title.text = "New best!" if new_best else "Game over"
 	var lines := PackedStringArray(
 		[
 			(

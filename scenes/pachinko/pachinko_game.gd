@@ -184,8 +184,9 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 
 func _on_game_ended(summary: Dictionary) -> void:
 	var paid := int(summary.get("game_payouts", 0))
-	App.record_pachinko_balls(_level.board_id, paid)
-	instructions.call("show_game_over", _level, summary, App.best_pachinko_balls(_level.board_id))
+	var new_best := App.record_pachinko_balls(_level.board_id, paid)
+	var best := App.best_pachinko_balls(_level.board_id)
+	instructions.call("show_game_over", _level, summary, best, new_best)
 	_show_notes()
 	sounds.play(SoundBank.GAME_OVER)
 
@@ -236,13 +237,21 @@ func _on_ring_hit(_ball: int, speed: float) -> void:
 
 ## Puts the screen in a state worth a screenshot (tools/shots runs this):
 ## "pachinko_start" the instructions, "pachinko_play" many balls in play with the flipper
-## drawn back, "pachinko_win" the moment a pocket pays out.
+## drawn back, "pachinko_win" the moment a pocket pays out, "pachinko_over" game over.
 func prepare_shot(shot_name: String) -> void:
 	if rules == null:
 		return
 	if shot_name == "pachinko_start":
 		return
 	rules.start_game()
+	if shot_name == "pachinko_over":
+		for frame in 60 * 240:
+			if rules.state != PachinkoRules.State.PLAYING:
+				break
+			if rules.loaded and frame % 30 == 0:
+				rules.fire(20.0 + float(frame * 53 % 80))
+			rules.advance(1.0 / 60.0)
+		return
 	if shot_name == "pachinko_win":
 		var won := [false]
 		var mark := func(_id: int, _p: int, _n: int, _at: Vector2) -> void: won[0] = true
