@@ -8,7 +8,7 @@ const SCENES_DIR := "res://scenes/boards"
 
 func _initialize() -> void:
 	var failed := false
-	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		for loaded in BoardLoader.list_boards(kind):
 			var scene_path := scene_path_for(loaded.path)
 			if FileAccess.file_exists(scene_path):

@@ -97,9 +97,8 @@ static func make_pachinko() -> BoardLevel:
 	level.cup_start_balls = 25
 	var pockets: Array[PocketSpec] = []
 	for mouth: Array in POCKETS:
-		pockets.append(
-			PocketSpec.create(Vector2(mouth[0], mouth[1]), POCKET_WIDTH, POCKET_DEPTH, 4)
-		)
+		var at := Vector2(_number(mouth, 0), _number(mouth, 1))
+		pockets.append(PocketSpec.create(at, POCKET_WIDTH, POCKET_DEPTH, 4))
 	level.pockets = pockets
 	# Field pins: a staggered lattice inside the guide arc, cleared around each pocket.
 	var field_radius := LaunchRail.guide_radius(level) - FIELD_MARGIN
@@ -147,10 +146,11 @@ static func make_maze() -> BoardLevel:
 	level.wall_width = 10.0
 	var walls := PackedVector2Array()
 	for wall: Array in MAZE_WALLS:
-		var start := Vector2(wall[0], wall[1]) * MAZE_CELL
-		var length: float = float(wall[3]) * MAZE_CELL
+		var start := Vector2(_number(wall, 0), _number(wall, 1)) * MAZE_CELL
+		var length := _number(wall, 3) * MAZE_CELL
+		var horizontal: bool = wall[2]
 		walls.append(start)
-		walls.append(start + (Vector2(length, 0) if wall[2] else Vector2(0, length)))
+		walls.append(start + (Vector2(length, 0) if horizontal else Vector2(0, length)))
 	level.walls = walls
 	level.ball_starts = _cell_centres(MAZE_STARTS)
 	level.goal_center = Vector2(350.0 / 2.0, 315.0 / 2.0)
@@ -163,16 +163,24 @@ static func make_maze() -> BoardLevel:
 static func _cell_centres(cells: Array) -> PackedVector2Array:
 	var points := PackedVector2Array()
 	for cell: Array in cells:
-		points.append(Vector2(cell[0], cell[1]) * MAZE_CELL + Vector2.ONE * MAZE_CELL * 0.5)
+		var at := Vector2(_number(cell, 0), _number(cell, 1))
+		points.append(at * MAZE_CELL + Vector2.ONE * MAZE_CELL * 0.5)
 	return points
+
+
+# Entry `index` of a recipe row, as a float (rows mix ints, floats and bools).
+static func _number(row: Array, index: int) -> float:
+	var value: float = row[index]
+	return value
 
 
 # The physics layer's defaults when it is there (it is written in parallel with the boards).
 static func _tuning(factory: String) -> PhysicsTuning:
-	for entry in ProjectSettings.get_global_class_list():
+	for entry: Dictionary in ProjectSettings.get_global_class_list():
 		if entry["class"] == "PhysicsTuning":
-			var script: Script = load(entry["path"])
-			return script.call(factory) as PhysicsTuning
+			var script: Script = load(str(entry["path"]))
+			var tuning: PhysicsTuning = script.call(factory)
+			return tuning
 	push_warning("make_classic_boards: PhysicsTuning is not there yet; the board has no tuning")
 	return null
 

@@ -108,7 +108,8 @@ static func _scan(chunk: String, state: Array) -> Array:
 static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 	if statements.is_empty() or not statements[0].has("section"):
 		return _fail("this is not a Godot text resource")
-	var header := _attributes(statements[0]["section"])
+	var first: Dictionary = statements[0]
+	var header := _attributes(str(first["section"]))
 	if header.get("tag", "") != "gd_resource":
 		return _fail(
 			"this is not a Godot text resource (it starts with %s)" % header.get("tag", "?")
@@ -130,9 +131,9 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 	var ext_scripts := {}  # id → class name
 	var sub_classes := {}  # id → class name
 	var sections: Array[Dictionary] = []  # {tag, id, line, fields: {key: [line, value]}}
-	for statement in statements.slice(1):
+	for statement: Dictionary in statements.slice(1):
 		if statement.has("section"):
-			var attributes := _attributes(statement["section"])
+			var attributes := _attributes(str(statement["section"]))
 			var tag: String = attributes.get("tag", "")
 			if tag == "ext_resource":
 				var script_path: String = attributes.get("path", "")
@@ -189,7 +190,8 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 	var main_fields: Dictionary = sections[-1]["fields"]
 	var version := 0
 	if main_fields.has("version"):
-		version = int(str_to_var(main_fields["version"][1]))
+		var version_line: Array = main_fields["version"]
+		version = str(version_line[1]).to_int()
 	if version < 0 or version > BoardLevel.CURRENT_VERSION:
 		return _fail(
 			"unknown version %d (this build reads 0 to %d)" % [version, BoardLevel.CURRENT_VERSION]
@@ -200,7 +202,7 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 static func _check_fields(
 	section: Dictionary, ext_scripts: Dictionary, sub_classes: Dictionary
 ) -> String:
-	var expected := _property_types(section["class"])
+	var expected := _property_types(str(section["class"]))
 	var fields: Dictionary = section["fields"]
 	for key: String in fields:
 		var line: int = fields[key][0]
@@ -266,7 +268,7 @@ static func _check_value(
 		_:
 			shape_ok = (
 				CONSTRUCTORS.has(type)
-				and value.begins_with(CONSTRUCTORS[type] + "(")
+				and value.begins_with(str(CONSTRUCTORS[type]) + "(")
 				and value.ends_with(")")
 			)
 	# Only a value of the right shape reaches str_to_var, which could build any object.

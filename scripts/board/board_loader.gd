@@ -24,8 +24,9 @@ static func load_board(path: String) -> BoardLoadResult:
 	elif not FileAccess.file_exists(path + ".remap"):
 		return _fail(result, "the file does not exist")
 	# else: an exported build converted our own shipped file to binary; it is trusted as is.
-	if not String(checked["error"]).is_empty():
-		return _fail(result, checked["error"])
+	var problem: String = checked["error"]
+	if not problem.is_empty():
+		return _fail(result, problem)
 	var resource: Resource = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REUSE)
 	if resource == null:
 		return _fail(result, "the file could not be parsed as a resource")

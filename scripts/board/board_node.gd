@@ -42,7 +42,7 @@ func _get_configuration_warnings() -> PackedStringArray:
 		warnings.append("Assign a BoardLevel (.tres from levels/) to show and edit a board.")
 		return warnings
 	var found := issues()
-	for issue in found.slice(0, MAX_WARNINGS):
+	for issue: BoardIssue in found.slice(0, MAX_WARNINGS):
 		var label := "Error" if issue.is_error() else "Warning"
 		warnings.append("%s: %s" % [label, issue.message])
 	if found.size() > MAX_WARNINGS:

@@ -109,7 +109,7 @@ static func _draw_pachinko(
 		var from := deg_to_rad(level.gutter_start_deg)
 		var to := deg_to_rad(level.gutter_end_deg)
 		canvas.draw_arc(c, r + 3.0, from, to, 24, GUTTER_COLOR, 8.0)
-		for angle in [from, to]:
+		for angle: float in [from, to]:
 			var direction := Vector2.from_angle(angle)
 			canvas.draw_line(c + direction * r, c + direction * (r + 8.0), RAIL_COLOR, 2.0)
 	if layers & Layer.RAIL:

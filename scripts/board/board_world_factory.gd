@@ -53,7 +53,7 @@ static func _build_maze(world: BallWorld, level: BoardLevel, hard_mode: bool) ->
 	for w in level.walls.size() / 2:
 		world.add_wall(level.walls[w * 2], level.walls[w * 2 + 1], level.wall_width * 0.5)
 	# The board's edges hold the balls even where the design has no border wall.
-	var corners := [
+	var corners: Array[Vector2] = [
 		Vector2.ZERO, Vector2(level.size.x, 0.0), level.size, Vector2(0.0, level.size.y)
 	]
 	for i in 4:

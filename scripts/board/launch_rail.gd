@@ -104,7 +104,7 @@ static func highest_lane_y(level: BoardLevel) -> float:
 	# Does the lane pass the top of the circle (-90° or 270°) between the end and the start?
 	var low := minf(level.rail_start_deg, level.rail_end_deg)
 	var high := maxf(level.rail_start_deg, level.rail_end_deg)
-	for top_deg in [-450.0, -90.0, 270.0]:
+	for top_deg: float in [-450.0, -90.0, 270.0]:
 		if top_deg >= low and top_deg <= high:
 			top = minf(top, level.ring_center.y - riding_radius(level))
 	return top

@@ -25,7 +25,7 @@ static func staggered_lattice(area: Rect2, spacing: Vector2) -> PackedVector2Arr
 	if spacing.x <= 0.0 or spacing.y <= 0.0 or not area.abs().has_area():
 		return points
 	var rect := area.abs()
-	var rows := int(floor(rect.size.y / spacing.y + 1e-6)) + 1
+	var rows := floori(rect.size.y / spacing.y + 1e-6) + 1
 	for r in rows:
 		var y := rect.position.y + r * spacing.y
 		var x := rect.position.x + (spacing.x * 0.5 if r % 2 == 1 else 0.0)

@@ -11,7 +11,7 @@ func after_all() -> void:
 
 
 func test_every_shipped_board_loads_without_issues() -> void:
-	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		var results := BoardLoader.list_boards(kind)
 		assert_gt(results.size(), 0, "boards of kind %d" % kind)
 		for loaded in results:
@@ -22,7 +22,7 @@ func test_every_shipped_board_loads_without_issues() -> void:
 
 
 func test_every_shipped_board_has_a_level_scene() -> void:
-	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		for loaded in BoardLoader.list_boards(kind):
 			var scene_path := (
 				"res://scenes/boards/%s_%s.tscn"
@@ -45,7 +45,7 @@ func test_every_shipped_board_has_a_level_scene() -> void:
 
 func test_shipped_board_ids_are_unique() -> void:
 	var seen := {}
-	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		for loaded in BoardLoader.list_boards(kind):
 			if loaded.ok():
 				assert_false(
@@ -115,15 +115,20 @@ func _assert_same(a: Resource, b: Resource, label: String) -> void:
 		var va: Variant = a.get(name)
 		var vb: Variant = b.get(name)
 		if va is Resource and vb is Resource:
-			_assert_same(va, vb, "%s.%s" % [label, name])
+			var ra: Resource = va
+			var rb: Resource = vb
+			_assert_same(ra, rb, "%s.%s" % [label, name])
 		elif va is Array and vb is Array:
 			var left: Array = va
 			var right: Array = vb
 			assert_eq(left.size(), right.size(), "%s.%s size" % [label, name])
 			for i in mini(left.size(), right.size()):
-				_assert_same(left[i], right[i], "%s.%s[%d]" % [label, name, i])
+				var a_item: Resource = left[i]
+				var b_item: Resource = right[i]
+				_assert_same(a_item, b_item, "%s.%s[%d]" % [label, name, i])
 		else:
-			assert_eq(vb, va, "%s.%s" % [label, name])
+			# Text form: exact, and compares the type too.
+			assert_eq(var_to_str(vb), var_to_str(va), "%s.%s" % [label, name])
 
 
 func _load(path: String) -> BoardLevel:

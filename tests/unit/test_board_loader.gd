@@ -33,7 +33,8 @@ func test_each_broken_file_is_refused_with_its_problem() -> void:
 		assert_null(loaded.level, name)
 		assert_false(loaded.ok(), name)
 		assert_string_contains(loaded.error, path, false)
-		assert_string_contains(loaded.error, BROKEN[name], false)
+		var expected: String = BROKEN[name]
+		assert_string_contains(loaded.error, expected, false)
 
 
 func test_missing_file_and_untrusted_places_are_refused() -> void:

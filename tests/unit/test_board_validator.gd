@@ -19,7 +19,7 @@ func test_common_fields() -> void:
 	level.board_id = ""
 	level.ball_radius = NAN
 	var codes := _codes(level)
-	for code in ["unknown_version", "missing_id", "bad_ball_radius"]:
+	for code: String in ["unknown_version", "missing_id", "bad_ball_radius"]:
 		assert_has(codes, code)
 	level = _pachinko()
 	level.tuning.fixed_hz = INF
