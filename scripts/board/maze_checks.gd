@@ -161,6 +161,10 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			)
 		elif s.distance_to(level.goal_center) < level.goal_radius:
 			_add(issues, WARNING, "Ball start %d is already in the goal." % i, s, "start_in_goal")
+		for j in i:
+			if s.distance_to(level.ball_starts[j]) < level.ball_radius * 2.0:
+				var text := "Ball starts %d and %d overlap: the balls would spawn inside each other."
+				_add(issues, ERROR, text % [j, i], s, "starts_overlap")
 	for h in level.holes.size():
 		var p := level.holes[h]
 		if not p.is_finite() or not area.has_point(p):

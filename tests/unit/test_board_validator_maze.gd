@@ -27,6 +27,8 @@ func test_maze_starts() -> void:
 	assert_has(_codes(level), "start_outside")
 	level.ball_starts = PackedVector2Array([Vector2(87.5, 80)])
 	assert_has(_codes(level), "start_in_hole")
+	level.ball_starts = PackedVector2Array([Vector2(17.5, 17.5), Vector2(22, 17.5)])
+	assert_eq(_codes(level), ["starts_overlap"])
 	level.ball_starts = PackedVector2Array()
 	assert_has(_codes(level), "no_starts")
 
