@@ -41,13 +41,21 @@ func setup(result: BoardLoadResult, best: String) -> void:
 		_add_label(box, level.description, &"HintLabel", true)
 		tooltip_text = level.description
 	else:
-		_add_label(box, "Broken board: " + board_path.get_file(), &"WarningLabel")
-		_add_label(box, result.error.trim_prefix(board_path + ": "), &"HintLabel", true)
+		_add_label(box, "⚠ " + board_path.get_file(), &"WarningLabel")
+		_add_label(
+			box,
+			"Can't be played: " + result.error.trim_prefix(board_path + ": "),
+			&"HintLabel",
+			true,
+			4
+		)
 		tooltip_text = result.error
 		modulate = Color(1, 1, 1, 0.7)
 
 
-func _add_label(box: VBoxContainer, text: String, variation: StringName, wrap := false) -> void:
+func _add_label(
+	box: VBoxContainer, text: String, variation: StringName, wrap := false, lines := 3
+) -> void:
 	var label := Label.new()
 	label.text = text
 	label.theme_type_variation = variation
@@ -55,7 +63,7 @@ func _add_label(box: VBoxContainer, text: String, variation: StringName, wrap :=
 	label.text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS
 	if wrap:
 		label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
-		label.max_lines_visible = 3
+		label.max_lines_visible = lines
 		label.size_flags_vertical = Control.SIZE_EXPAND_FILL
 	else:
 		label.clip_text = true

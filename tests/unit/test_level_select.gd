@@ -58,10 +58,12 @@ func test_broken_board_is_listed_greyed_with_its_error() -> void:
 	var broken := BoardLoader.load_board("res://levels/maze/does_not_exist.tres")
 	var results: Array[BoardLoadResult] = []
 	results.append_array(good)
+	results.append(BoardLoader.load_board("res://tests/fixtures/boards/broken_garbage.tres"))
 	results.append(broken)
 	screen.call("show_boards", results)
 	var cards: Array = screen.call("cards")
-	assert_eq(cards.size(), good.size() + 1)
+	assert_eq(cards.size(), good.size() + 2)
+	assert_true((cards[-2] as Button).disabled, "a damaged file is listed, greyed")
 	var last: Button = cards[-1]
 	assert_true(last.disabled, "a broken board cannot start")
 	assert_eq(last.focus_mode, Control.FOCUS_ALL, "its reason is reachable by keyboard")
@@ -70,7 +72,7 @@ func test_broken_board_is_listed_greyed_with_its_error() -> void:
 	for label in last.find_children("*", "Label", true, false):
 		texts.append((label as Label).text)
 	assert_string_contains(" ".join(texts), "does_not_exist.tres")
-	assert_string_contains(str((screen.get_node("%SummaryLabel") as Label).text), "1 could not")
+	assert_string_contains(str((screen.get_node("%SummaryLabel") as Label).text), "2 could not")
 
 
 func test_first_playable_card_takes_focus() -> void:
