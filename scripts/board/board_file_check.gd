@@ -5,28 +5,8 @@ extends RefCounted
 ## field must be one the board knows (or an old one the upgrader converts) with the right
 ## type. Returns the file's version (0 when it has no `version` line: the prototype format).
 
-const ALLOWED_SCRIPTS := {
-	"res://scripts/board/board_level.gd": "BoardLevel",
-	"res://scripts/board/pocket_spec.gd": "PocketSpec",
-	"res://scripts/physics/physics_tuning.gd": "PhysicsTuning",
-}
+const ValueCheck := preload("res://scripts/board/board_value_check.gd")
 const MAX_BYTES := 4 * 1024 * 1024
-## Fields every Resource may carry in a file.
-const BUILTIN_FIELDS := ["script", "resource_name", "resource_local_to_scene", "resource_path"]
-## Variant type → constructor name written in text resources.
-const CONSTRUCTORS := {
-	TYPE_VECTOR2: "Vector2",
-	TYPE_VECTOR2I: "Vector2i",
-	TYPE_RECT2: "Rect2",
-	TYPE_COLOR: "Color",
-	TYPE_PACKED_VECTOR2_ARRAY: "PackedVector2Array",
-	TYPE_PACKED_INT32_ARRAY: "PackedInt32Array",
-	TYPE_PACKED_BYTE_ARRAY: "PackedByteArray",
-	TYPE_PACKED_FLOAT32_ARRAY: "PackedFloat32Array",
-}
-const REF_PATTERN := '^(Ext|Sub)Resource\\("([^"]+)"\\)$'
-const TYPED_ARRAY_PATTERN := '^Array\\[ExtResource\\("([^"]+)"\\)\\]\\((.*)\\)$'
-const NUMBER_PATTERN := "^[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?$"
 
 
 ## {"error": "" or the problem, "version": int} for the file at `path`.
@@ -137,14 +117,17 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 			var tag: String = attributes.get("tag", "")
 			if tag == "ext_resource":
 				var script_path: String = attributes.get("path", "")
-				if attributes.get("type", "") != "Script" or not ALLOWED_SCRIPTS.has(script_path):
+				if (
+					attributes.get("type", "") != "Script"
+					or not ValueCheck.ALLOWED_SCRIPTS.has(script_path)
+				):
 					return _fail(
 						(
 							"line %d refers to %s, but a board may only use the board scripts"
 							% [statement["line"], script_path]
 						)
 					)
-				ext_scripts[attributes.get("id", "")] = ALLOWED_SCRIPTS[script_path]
+				ext_scripts[attributes.get("id", "")] = ValueCheck.ALLOWED_SCRIPTS[script_path]
 			elif tag == "sub_resource" or tag == "resource":
 				if tag == "sub_resource" and attributes.get("type", "") != "Resource":
 					return _fail(
@@ -174,7 +157,7 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 	for section in sections:
 		var fields: Dictionary = section["fields"]
 		var script_ref: String = fields.get("script", [0, ""])[1]
-		var class_id := _ref_id(script_ref, "Ext")
+		var class_id := ValueCheck.ref_id(script_ref, "Ext")
 		if not ext_scripts.has(class_id):
 			return _fail("line %d: a section has no board script" % section["line"])
 		section["class"] = ext_scripts[class_id]
@@ -182,7 +165,7 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 		return _fail("the file holds a %s, not a BoardLevel" % sections[-1]["class"])
 	# A section may only use sub-resources defined above it, as the engine reads them.
 	for section in sections:
-		var problem := _check_fields(section, ext_scripts, sub_classes)
+		var problem := ValueCheck.check_fields(section, ext_scripts, sub_classes)
 		if not problem.is_empty():
 			return _fail(problem)
 		if section["tag"] == "sub_resource":
@@ -199,105 +182,6 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 	return {"error": "", "version": version}
 
 
-static func _check_fields(
-	section: Dictionary, ext_scripts: Dictionary, sub_classes: Dictionary
-) -> String:
-	var expected := _property_types(str(section["class"]))
-	var fields: Dictionary = section["fields"]
-	for key: String in fields:
-		var line: int = fields[key][0]
-		var value: String = fields[key][1]
-		if key in BUILTIN_FIELDS or key.begins_with("metadata/"):
-			continue
-		var want: Dictionary = expected.get(key, {})
-		if (
-			want.is_empty()
-			and section["class"] == "BoardLevel"
-			and BoardUpgrader.LEGACY_FIELDS.has(key)
-		):
-			want = {"type": BoardUpgrader.LEGACY_FIELDS[key], "class": ""}
-		if want.is_empty():
-			return "line %d: %s has no field '%s'" % [line, section["class"], key]
-		var problem := _check_value(value, want, ext_scripts, sub_classes)
-		if not problem.is_empty():
-			return "line %d: field '%s' %s" % [line, key, problem]
-	return ""
-
-
-static func _check_value(
-	value: String, want: Dictionary, ext_scripts: Dictionary, sub_classes: Dictionary
-) -> String:
-	var type: int = want["type"]
-	var shown := value.left(40).replace("\n", " ")
-	if type == TYPE_OBJECT:
-		if value == "null":
-			return ""
-		var id := _ref_id(value, "Sub")
-		if sub_classes.get(id, "") != want["class"]:
-			return "should be a %s, the file has %s" % [want["class"], shown]
-		return ""
-	if type == TYPE_ARRAY:
-		var typed := RegEx.create_from_string(TYPED_ARRAY_PATTERN).search(value)
-		var inner := value
-		if typed != null:
-			if ext_scripts.get(typed.get_string(1), "") != want["class"]:
-				return "should be a list of %s" % want["class"]
-			inner = typed.get_string(2).strip_edges()
-		if not inner.begins_with("[") or not inner.ends_with("]"):
-			return "should be a list of %s, the file has %s" % [want["class"], shown]
-		for item in inner.substr(1, inner.length() - 2).split(",", false):
-			if sub_classes.get(_ref_id(item.strip_edges(), "Sub"), "") != want["class"]:
-				return (
-					"should only hold %s entries, the file has %s"
-					% [want["class"], item.strip_edges().left(40)]
-				)
-		return ""
-	var shape_ok := false
-	match type:
-		TYPE_FLOAT:
-			shape_ok = (
-				value in ["nan", "inf", "-inf", "inf_neg"]
-				or RegEx.create_from_string(NUMBER_PATTERN).search(value) != null
-			)
-		TYPE_INT:
-			shape_ok = value.is_valid_int()
-		TYPE_BOOL:
-			shape_ok = value == "true" or value == "false"
-		TYPE_STRING:
-			shape_ok = value.begins_with('"') and value.ends_with('"') and value.length() >= 2
-		_:
-			shape_ok = (
-				CONSTRUCTORS.has(type)
-				and value.begins_with(str(CONSTRUCTORS[type]) + "(")
-				and value.ends_with(")")
-			)
-	# Only a value of the right shape reaches str_to_var, which could build any object.
-	var parsed: Variant = str_to_var(value) if shape_ok else null
-	var got := typeof(parsed)
-	if not shape_ok or (got != type and not (type == TYPE_FLOAT and got == TYPE_INT)):
-		return "should be %s, the file has %s" % [type_string(type), shown]
-	return ""
-
-
-# Stored properties of a board script: name → {type, class}.
-static func _property_types(script_class: String) -> Dictionary:
-	var types := {}
-	for path: String in ALLOWED_SCRIPTS:
-		if ALLOWED_SCRIPTS[path] != script_class:
-			continue
-		var script: Script = load(path)
-		for property in script.get_script_property_list():
-			if property["usage"] & PROPERTY_USAGE_STORAGE:
-				# A typed array's hint reads "24/17:PocketSpec": element type/hint, then class.
-				var hint: String = property["hint_string"]
-				var element := hint.get_slice(":", hint.get_slice_count(":") - 1)
-				var cls: String = (
-					property["class_name"] if property["type"] == TYPE_OBJECT else element
-				)
-				types[property["name"]] = {"type": property["type"], "class": cls}
-	return types
-
-
 static func _attributes(header: String) -> Dictionary:
 	var inner := header.substr(1, header.length() - 2).strip_edges()
 	var tag := inner.get_slice(" ", 0)
@@ -311,13 +195,6 @@ static func _attributes(header: String) -> Dictionary:
 	if not tag.is_valid_identifier() or not pattern.sub(rest, "", true).strip_edges().is_empty():
 		result["tag"] = "(unreadable)"
 	return result
-
-
-static func _ref_id(value: String, prefix: String) -> String:
-	var found := RegEx.create_from_string(REF_PATTERN).search(value.strip_edges())
-	if found == null or found.get_string(1) != prefix:
-		return ""
-	return found.get_string(2)
 
 
 static func _fail(problem: String) -> Dictionary:

@@ -3,10 +3,9 @@ extends RefCounted
 ## can roll from its start to the goal (a flood fill on a fine grid where the walls are
 ## grown by the ball radius, so a cell is free exactly where a ball's centre fits).
 
+const MazeFlood := preload("res://scripts/board/maze_flood.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
-## The flood fill grid has at most about this many cells (keeps live validation fast).
-const MAX_CELLS := 40000.0
 ## Below this a wall counts as zero length, in pixels.
 const MIN_WALL_LENGTH := 0.01
 
@@ -192,7 +191,7 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 			)
 	if level.holes.is_empty():
 		return
-	var hard := MazeFlood.new(level, true, fill)
+	var hard := MazeFlood.new(level, true, fill.free)
 	for i in level.ball_starts.size():
 		if fill.reaches_goal(level.ball_starts[i]) and not hard.reaches_goal(level.ball_starts[i]):
 			_add(
@@ -233,122 +232,3 @@ static func _add(
 	code: String
 ) -> void:
 	issues.append(BoardIssue.new(severity, text, at, code))
-
-
-## Free space of a maze for a ball's centre, on a grid; answers "can this start reach the
-## goal?" with connected regions labelled once.
-class MazeFlood:
-	extends RefCounted
-	var cell: float
-	var cols: int
-	var rows: int
-	var free := PackedByteArray()
-	var region := PackedInt32Array()
-	var goal_regions := {}
-	var _level: BoardLevel
-
-	## Free space of `level`; with `holes_block` the black holes count as blocked. `base`, a
-	## flood of the same level without holes, lends its wall grid (the costly part).
-	func _init(level: BoardLevel, holes_block: bool, base: MazeFlood = null) -> void:
-		_level = level
-		cell = maxf(level.ball_radius * 0.75, sqrt(level.size.x * level.size.y / MAX_CELLS))
-		cols = maxi(1, ceili(level.size.x / cell))
-		rows = maxi(1, ceili(level.size.y / cell))
-		free.resize(cols * rows)
-		free.fill(1)
-		region.resize(cols * rows)
-		region.fill(-1)
-		if base != null and base.cols == cols and base.rows == rows:
-			free = base.free.duplicate()
-		else:
-			_block_edges()
-			var grow := level.wall_width * 0.5 + level.ball_radius - minf(0.5, cell * 0.25)
-			for w in level.walls.size() / 2:
-				_block_capsule(level.walls[w * 2], level.walls[w * 2 + 1], grow)
-		if holes_block:
-			for hole in level.holes:
-				_block_capsule(hole, hole, level.hole_radius)
-		_label_regions()
-
-	func reaches_goal(start: Vector2) -> bool:
-		var index := _index_of(start)
-		return index >= 0 and goal_regions.has(region[index])
-
-	func _index_of(p: Vector2) -> int:
-		var cx := floori(p.x / cell)
-		var cy := floori(p.y / cell)
-		if cx < 0 or cy < 0 or cx >= cols or cy >= rows:
-			return -1
-		return cy * cols + cx
-
-	# Cells whose centre is closer than a ball radius to the board's edge.
-	func _block_edges() -> void:
-		var r := _level.ball_radius
-		var x_lo := ceili(r / cell - 0.5)
-		var x_hi := floori((_level.size.x - r) / cell - 0.5)
-		var y_lo := ceili(r / cell - 0.5)
-		var y_hi := floori((_level.size.y - r) / cell - 0.5)
-		for cy in rows:
-			for cx in cols:
-				if cx < x_lo or cx > x_hi or cy < y_lo or cy > y_hi:
-					free[cy * cols + cx] = 0
-
-	func _block_capsule(a: Vector2, b: Vector2, grow: float) -> void:
-		var box := Rect2(a, Vector2.ZERO).expand(b).grow(grow)
-		var x0 := maxi(0, floori(box.position.x / cell))
-		var y0 := maxi(0, floori(box.position.y / cell))
-		var x1 := mini(cols - 1, floori(box.end.x / cell))
-		var y1 := mini(rows - 1, floori(box.end.y / cell))
-		var grow2 := grow * grow
-		var ab := b - a
-		var len2 := ab.length_squared()
-		for cy in range(y0, y1 + 1):
-			var py := (cy + 0.5) * cell
-			for cx in range(x0, x1 + 1):
-				var px := (cx + 0.5) * cell
-				var t := 0.0
-				if len2 > 0.0:
-					t = clampf(((px - a.x) * ab.x + (py - a.y) * ab.y) / len2, 0.0, 1.0)
-				var dx := px - (a.x + ab.x * t)
-				var dy := py - (a.y + ab.y * t)
-				if dx * dx + dy * dy < grow2:
-					free[cy * cols + cx] = 0
-
-	func _label_regions() -> void:
-		var label := 0
-		var queue := PackedInt32Array()
-		queue.resize(free.size())
-		var goal := _level.goal_center
-		var goal2 := _level.goal_radius * _level.goal_radius
-		for start in _level.ball_starts:
-			var seed_index := _index_of(start)
-			if seed_index < 0 or free[seed_index] == 0 or region[seed_index] >= 0:
-				continue
-			region[seed_index] = label
-			queue[0] = seed_index
-			var head := 0
-			var tail := 1
-			while head < tail:
-				var index := queue[head]
-				head += 1
-				var cx := index % cols
-				var cy := index / cols
-				var gx := (cx + 0.5) * cell - goal.x
-				var gy := (cy + 0.5) * cell - goal.y
-				if gx * gx + gy * gy < goal2:
-					goal_regions[label] = true
-				for k in 4:
-					var n := index
-					if k == 0 and cx > 0:
-						n = index - 1
-					elif k == 1 and cx < cols - 1:
-						n = index + 1
-					elif k == 2 and cy > 0:
-						n = index - cols
-					elif k == 3 and cy < rows - 1:
-						n = index + cols
-					if n != index and free[n] == 1 and region[n] < 0:
-						region[n] = label
-						queue[tail] = n
-						tail += 1
-			label += 1

@@ -1,7 +1,8 @@
 extends RefCounted
-## BoardValidator's pachinko checks: ring, rail, gutter, pins, pockets. Pin pairs go through
-## a spatial hash, so a board with thousands of pins still validates in milliseconds.
+## BoardValidator's pachinko checks: ring, rail, gutter, cup and pockets; the pins
+## themselves are checked by pin_checks.gd.
 
+const PinChecks := preload("res://scripts/board/pin_checks.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Extra width the launch channel needs beyond the ball and the guide wall, in pixels.
@@ -12,9 +13,9 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	if not _check_shape(level, issues):
 		return
 	_check_rail_and_gutter(level, issues)
-	_check_pins(level, issues)
+	PinChecks.check_pins(level, issues)
 	_check_pockets(level, issues)
-	_check_pin_pairs(level, issues)
+	PinChecks.check_pin_pairs(level, issues)
 
 
 # Ring, pin radius, array lengths and pocket specs: what every later check relies on.
@@ -171,7 +172,7 @@ static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue])
 			c,
 			"bad_gutter"
 		)
-	elif _arcs_overlap(
+	elif PinChecks.arcs_overlap(
 		g0,
 		g1,
 		minf(level.rail_start_deg, level.rail_end_deg),
@@ -185,85 +186,6 @@ static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue])
 			c + Vector2(cos(mid), sin(mid)) * level.ring_radius,
 			"gutter_on_rail"
 		)
-
-
-static func _check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
-	var c := level.ring_center
-	var inside := level.ring_radius - level.pin_radius
-	var guide := LaunchRail.guide_radius(level)
-	var guide_clear := guide - LaunchRail.GUIDE_WALL_RADIUS - level.pin_radius
-	var rail_low := minf(level.rail_start_deg, level.rail_end_deg)
-	var rail_high := maxf(level.rail_start_deg, level.rail_end_deg)
-	var diameter := level.ball_radius * 2.0
-	for i in level.pins.size():
-		var p := level.pins[i]
-		if not p.is_finite():
-			_add(issues, ERROR, "Pin %d has a position that is not a number." % i, c, "not_finite")
-			continue
-		var owner := level.pin_pocket[i]
-		if owner < -1 or owner >= level.pockets.size():
-			_add(
-				issues,
-				ERROR,
-				"Pin %d belongs to pocket %d, which does not exist." % [i, owner],
-				p,
-				"bad_pin_pocket"
-			)
-		elif level.pin_special[i] != 0 and owner < 0:
-			_add(
-				issues,
-				ERROR,
-				"Pin %d is a special pin but belongs to no pocket." % i,
-				p,
-				"special_without_pocket"
-			)
-		var d := p.distance_to(c)
-		if d > inside:
-			_add(
-				issues,
-				ERROR,
-				"Pin %d at (%.0f, %.0f) is outside the ring." % [i, p.x, p.y],
-				p,
-				"pin_outside_ring"
-			)
-			continue
-		var in_rail_arc := _angle_in(rad_to_deg((p - c).angle()), rail_low, rail_high)
-		if in_rail_arc and d > guide_clear:
-			_add(
-				issues,
-				ERROR,
-				"Pin %d at (%.0f, %.0f) sits in the launch rail." % [i, p.x, p.y],
-				p,
-				"pin_in_rail"
-			)
-			continue
-		var deflector_gap := _deflector_gap(level, p)
-		if owner < 0 and deflector_gap < diameter:
-			_add(
-				issues,
-				WARNING,
-				(
-					"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
-					% [i, maxf(deflector_gap, 0.0), diameter]
-				),
-				p,
-				"narrow_gap_rail"
-			)
-			continue
-		var edge_gap := (guide_clear if in_rail_arc else inside) - d
-		if owner < 0 and edge_gap < diameter:
-			var code := "narrow_gap_rail" if in_rail_arc else "narrow_gap_ring"
-			var what := "the rail's guide" if in_rail_arc else "the ring"
-			_add(
-				issues,
-				WARNING,
-				(
-					"Pin %d leaves a %.1f px gap to %s; a ball (%.0f px) would stick there."
-					% [i, maxf(edge_gap, 0.0), what, diameter]
-				),
-				p,
-				code
-			)
 
 
 static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void:
@@ -335,76 +257,6 @@ static func _pin_in_mouth(level: BoardLevel, k: int) -> int:
 		if level.pin_pocket[i] != k and inner.has_point(level.pins[i]):
 			return i
 	return -1
-
-
-static func _check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> void:
-	var pins := level.pins
-	var touch := 2.0 * level.pin_radius
-	var reach := touch + 2.0 * level.ball_radius
-	var cell := maxf(reach, 1.0)
-	var grid := {}
-	for i in pins.size():
-		if not pins[i].is_finite():
-			continue
-		var key := Vector2i(floori(pins[i].x / cell), floori(pins[i].y / cell))
-		var bucket: PackedInt32Array = grid.get(key, PackedInt32Array())
-		bucket.append(i)
-		grid[key] = bucket
-	var touch2 := touch * touch - 1e-6
-	var reach2 := reach * reach
-	for i in pins.size():
-		var p := pins[i]
-		if not p.is_finite():
-			continue
-		var base := Vector2i(floori(p.x / cell), floori(p.y / cell))
-		for dy in range(-1, 2):
-			for dx in range(-1, 2):
-				var bucket: PackedInt32Array = grid.get(base + Vector2i(dx, dy), PackedInt32Array())
-				for j in bucket:
-					if j <= i:
-						continue
-					var d2 := p.distance_squared_to(pins[j])
-					if d2 >= reach2:
-						continue
-					var mid := (p + pins[j]) * 0.5
-					if d2 < touch2:
-						_add(
-							issues, WARNING, "Pins %d and %d overlap." % [i, j], mid, "pin_overlap"
-						)
-					elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
-						# Rim pins of one pocket are meant to be closer than a ball.
-						var gap := sqrt(d2) - touch
-						_add(
-							issues,
-							WARNING,
-							(
-								"Pins %d and %d leave a %.1f px gap; a ball (%.0f px) would stick in it."
-								% [i, j, gap, reach - touch]
-							),
-							mid,
-							"narrow_gap"
-						)
-
-
-# Gap between pin `p` and the deflector past the rail's end (surface to surface).
-static func _deflector_gap(level: BoardLevel, p: Vector2) -> float:
-	var ends := LaunchRail.deflector(level)
-	var nearest := Geometry2D.get_closest_point_to_segment(p, ends[0], ends[1])
-	return p.distance_to(nearest) - LaunchRail.GUIDE_WALL_RADIUS - level.pin_radius
-
-
-# True when angle `deg` lies within [low, high] (degrees, any winding).
-static func _angle_in(deg: float, low: float, high: float) -> bool:
-	return fposmod(deg - low, 360.0) <= high - low
-
-
-static func _arcs_overlap(a0: float, a1: float, b0: float, b1: float) -> bool:
-	return (
-		_angle_in(a0, b0, b1)
-		or _angle_in(a1, b0, b1)
-		or _angle_in(b0, a0, a1)
-		or _angle_in(b1, a0, a1)
-	)
 
 
 static func _add(
