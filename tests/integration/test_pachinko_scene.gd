@@ -50,3 +50,46 @@ func test_a_click_starts_and_a_flipper_drag_fires() -> void:
 	await wait_process_frames(2)
 	var balls := game.get_node("BoardView/Balls")
 	assert_eq(int(balls.get("last_drawn")), 2, "the fired ball and the loaded one, one batch")
+
+
+func test_the_grip_is_the_flipper_and_the_rest_is_not() -> void:
+	var game := _game()
+	var launcher := game.get_node("Hud/Column/Launcher")
+	var grip: Vector2 = launcher.get("PIVOT") + Vector2(-float(launcher.get("LEVER_LENGTH")), 0)
+	assert_true(launcher.call("is_on_flipper", grip))
+	assert_false(launcher.call("is_on_flipper", Vector2(5, 5)))
+
+
+func test_holding_the_charge_key_fires_on_release() -> void:
+	var game := _game()
+	var rules := game.get("rules") as PachinkoRules
+	rules.start_game()
+	var key := InputEventKey.new()
+	key.physical_keycode = KEY_SPACE
+	key.pressed = true
+	assert_true(key.is_action_pressed(&"launch_charge"), "Space is bound to launch_charge")
+	game.call("_unhandled_input", key)
+	assert_true(rules.drawing)
+	game.call("_process", 0.5)
+	assert_almost_eq(rules.power, PachinkoRules.CHARGE_PER_SECOND * 0.5, 0.01)
+	var up := InputEventKey.new()
+	up.physical_keycode = KEY_SPACE
+	up.pressed = false
+	game.call("_unhandled_input", up)
+	assert_eq(rules.ledger.shots, 1, "letting go fired the ball")
+	assert_eq(rules.power, 0.0)
+
+
+func test_a_gamepad_trigger_sets_the_power_and_fires_when_let_go() -> void:
+	var game := _game()
+	var rules := game.get("rules") as PachinkoRules
+	rules.start_game()
+	var trigger := InputEventJoypadMotion.new()
+	trigger.axis = JOY_AXIS_TRIGGER_RIGHT
+	trigger.axis_value = 1.0
+	game.call("_unhandled_input", trigger)
+	assert_true(rules.drawing, "pulling the trigger draws the flipper back")
+	assert_eq(rules.power, 100.0)
+	trigger.axis_value = 0.0
+	game.call("_unhandled_input", trigger)
+	assert_eq(rules.ledger.shots, 1, "letting the trigger go fired")
