@@ -5,8 +5,9 @@
 # Godot looks for its export templates in ~/.local/share/godot/export_templates/<version>/.
 # When the setup's private prefix holds Debian's templates (godot-template-release/-debug),
 # they are linked there under the version Godot reports, and the exported binary is patched
-# like the setup's godot (private loader and libraries) so it runs on this machine. With
-# Godot's official templates already in that folder, nothing is linked or patched.
+# like the setup's godot (private loader and libraries) so it runs on this machine. When
+# that folder already holds real template files (Godot's official ones), they are used as
+# they are: nothing is linked or patched.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -26,12 +27,14 @@ TEMPLATES=${XDG_DATA_HOME:-$HOME/.local/share}/godot/export_templates/$version
 DEBIAN_RELEASE=$PREFIX/root/usr/bin/godot-template-release
 DEBIAN_DEBUG=$PREFIX/root/usr/bin/godot-template-debug
 patch_for_here=0
-if [ -x "$DEBIAN_RELEASE" ]; then
+if [ -f "$TEMPLATES/linux_release.x86_64" ] && [ ! -L "$TEMPLATES/linux_release.x86_64" ]; then
+	echo "export: using the export templates installed in $TEMPLATES"
+elif [ -x "$DEBIAN_RELEASE" ]; then
 	mkdir -p "$TEMPLATES"
-	ln -sf "$DEBIAN_RELEASE" "$TEMPLATES/linux_release.x86_64"
-	[ -x "$DEBIAN_DEBUG" ] && ln -sf "$DEBIAN_DEBUG" "$TEMPLATES/linux_debug.x86_64"
+	ln -sfn "$DEBIAN_RELEASE" "$TEMPLATES/linux_release.x86_64"
+	[ -x "$DEBIAN_DEBUG" ] && ln -sfn "$DEBIAN_DEBUG" "$TEMPLATES/linux_debug.x86_64"
 	patch_for_here=1
-elif [ ! -f "$TEMPLATES/linux_release.x86_64" ]; then
+elif [ ! -e "$TEMPLATES/linux_release.x86_64" ]; then
 	die "no Linux export template: neither Debian's ($DEBIAN_RELEASE, from 'tools/setup.sh export') nor Godot's official ones in $TEMPLATES. Install the official export templates for $version (Godot editor: Editor > Manage Export Templates) and run 'make export' again."
 fi
 
