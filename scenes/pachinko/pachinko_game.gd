@@ -7,6 +7,7 @@ extends Control
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
+const PachinkoShots := preload("res://scenes/pachinko/pachinko_shots.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -235,40 +236,8 @@ func _on_ring_hit(_ball: int, speed: float) -> void:
 	sounds.play_impact(SoundBank.WALL_THUD, speed, TICK_MIN_SPEED * 2.0, TICK_MAX_SPEED * 1.5)
 
 
-## Puts the screen in a state worth a screenshot (tools/shots runs this):
-## "pachinko_start" the instructions, "pachinko_play" many balls in play with the flipper
-## drawn back, "pachinko_win" the moment a pocket pays out, "pachinko_over" game over.
+## Puts the screen in a state worth a screenshot (tools/shots runs this); see
+## pachinko_shots.gd for the states.
 func prepare_shot(shot_name: String) -> void:
-	if rules == null:
-		return
-	if shot_name == "pachinko_start":
-		return
-	rules.start_game()
-	if shot_name == "pachinko_over":
-		for frame in 60 * 240:
-			if rules.state != PachinkoRules.State.PLAYING:
-				break
-			if rules.loaded and frame % 30 == 0:
-				rules.fire(20.0 + float(frame * 53 % 80))
-			rules.advance(1.0 / 60.0)
-		return
-	if shot_name == "pachinko_win":
-		var won := [false]
-		var mark := func(_id: int, _p: int, _n: int, _at: Vector2) -> void: won[0] = true
-		rules.ball_won.connect(mark)
-		for frame in 60 * 90:
-			if rules.state != PachinkoRules.State.PLAYING:
-				rules.start_game()
-			if rules.loaded and frame % 9 == 0:
-				rules.fire(30.0 + float(frame * 37 % 70))
-			rules.advance(1.0 / 60.0)
-			if won[0]:
-				break
-		rules.ball_won.disconnect(mark)
-		return
-	for frame in 60 * 4:
-		if rules.loaded and frame % 8 == 0:
-			rules.fire(20.0 + float(frame * 53 % 80))
-		rules.advance(1.0 / 60.0)
-	rules.press_flipper(Vector2(0, 100))
-	rules.drag_to(Vector2(0, 35))
+	if rules != null:
+		PachinkoShots.prepare(rules, shot_name)

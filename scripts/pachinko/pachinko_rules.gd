@@ -38,6 +38,7 @@ enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
 const LaunchPower := preload("res://scripts/pachinko/launch_power.gd")
 const LaunchCalibration := preload("res://scripts/pachinko/launch_calibration.gd")
+const RailTraffic := preload("res://scripts/pachinko/rail_traffic.gd")
 const Ledger := preload("res://scripts/pachinko/pachinko_ledger.gd")
 const StuckWatcher := preload("res://scripts/pachinko/stuck_ball_watcher.gd")
 
@@ -174,30 +175,7 @@ func fire(shot_power: float) -> int:
 ## True while a weak shot is rolling back down the launch rail: the launcher holds its
 ## ball until the rail is clear, or the two would meet head-on and both roll back.
 func rail_blocked() -> bool:
-	var rail_outer := level.ring_radius
-	var rail_inner := LaunchRail.guide_radius(level) + LaunchRail.GUIDE_WALL_RADIUS
-	var low := deg_to_rad(minf(level.rail_start_deg, level.rail_end_deg))
-	var high := deg_to_rad(maxf(level.rail_start_deg, level.rail_end_deg))
-	var up_sign := -1.0 if level.rail_end_deg < level.rail_start_deg else 1.0
-	var positions := world.get_positions()
-	var velocities := world.get_velocities()
-	for i in positions.size():
-		var rel := positions[i] - level.ring_center
-		var dist := rel.length()
-		if dist < rail_inner or dist > rail_outer:
-			continue
-		var angle := rel.angle()
-		# Bring the angle into the rail's range (the rail may cross ±180°).
-		while angle > high:
-			angle -= TAU
-		while angle < low:
-			angle += TAU
-		if angle > high:
-			continue
-		var up := Vector2(-sin(angle), cos(angle)) * up_sign
-		if velocities[i].dot(up) < 0.0:
-			return true
-	return false
+	return RailTraffic.ball_coming_down(level, world.get_positions(), world.get_velocities())
 
 
 ## Launch speed at the bottom of the rail for a power (see launch_power.gd).
