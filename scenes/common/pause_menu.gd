@@ -42,6 +42,10 @@ func _unhandled_input(event: InputEvent) -> void:
 	elif is_open() and event.is_action_pressed("ui_cancel"):
 		close()
 		get_viewport().set_input_as_handled()
+	elif is_open() and (event.is_action_pressed("ui_down") or event.is_action_pressed("ui_up")):
+		if get_viewport().gui_get_focus_owner() == null:
+			_resume.grab_focus()  # focus lost to a mouse click: the keys take it back
+			get_viewport().set_input_as_handled()
 
 
 ## True while the menu shows (and the tree is paused).

@@ -25,6 +25,11 @@ func _unhandled_input(event: InputEvent) -> void:
 	if event.is_action_pressed("ui_cancel"):
 		App.go_to_menu()
 		get_viewport().set_input_as_handled()
+	elif _is_navigation(event) and get_viewport().gui_get_focus_owner() == null:
+		# a mouse click on empty space drops focus: the keys and the pad take it back
+		var first := first_card()
+		(first if first != null else _back).grab_focus()
+		get_viewport().set_input_as_handled()
 
 
 ## Lists these load results as cards (one per file, broken ones greyed) and focuses the first.
@@ -97,6 +102,13 @@ func _summary_text(total: int, broken: int) -> String:
 	if broken > 0:
 		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
 	return text
+
+
+static func _is_navigation(event: InputEvent) -> bool:
+	for action: String in ["ui_up", "ui_down", "ui_left", "ui_right"]:
+		if event.is_action_pressed(action):
+			return true
+	return false
 
 
 static func _kind_enum(kind_name: String) -> int:

@@ -46,6 +46,10 @@ func _unhandled_input(event: InputEvent) -> void:
 	if event.is_action_pressed("ui_cancel") or event.is_action_pressed("pause"):
 		close()
 		get_viewport().set_input_as_handled()
+	elif event.is_action_pressed("ui_down") or event.is_action_pressed("ui_up"):
+		if get_viewport().gui_get_focus_owner() == null:
+			_master.grab_focus()  # focus lost to a mouse click: the keys take it back
+			get_viewport().set_input_as_handled()
 
 
 ## Saves the settings and closes the screen.
