@@ -8,6 +8,7 @@ const Codec := preload("res://scripts/app/input_event_codec.gd")
 
 func after_each() -> void:
 	DirAccess.remove_absolute(PATH)
+	App.settings.bindings = GameSettings.default_bindings()
 	var defaults := GameSettings.new()
 	defaults.apply()  # never leave a test binding in the InputMap
 
@@ -85,3 +86,32 @@ func test_rebinding_an_unknown_action_is_refused() -> void:
 	settings.rebind("no_such_action", _key(KEY_Q), false)
 	assert_push_error("unknown action")
 	assert_false(settings.bindings.has("no_such_action"))
+
+
+func _key_press(code: Key) -> InputEventKey:
+	var key := InputEventKey.new()
+	key.physical_keycode = code
+	key.pressed = true
+	return key
+
+
+func test_the_controls_screen_rebinds_with_the_next_key_and_esc_cancels() -> void:
+	var list := (load("res://scenes/menu/binding_list.gd") as GDScript).new() as GridContainer
+	add_child_autofree(list)
+	var button: Button = list.get_node("tilt_up_key")
+	button.pressed.emit()
+	assert_true(list.call("is_capturing"))
+	list.call("_input", _key_press(KEY_ESCAPE))
+	assert_false(list.call("is_capturing"), "Esc cancels")
+	assert_eq(button.text, "Up / W", "nothing changed")
+	button.pressed.emit()
+	list.call("_input", _key_press(KEY_I))
+	assert_eq(button.text, "I")
+	assert_eq(Codec.encode(App.settings.events_for("tilt_up")[-1]), "key:I")
+	var pad: Button = list.get_node("tilt_up_pad")
+	pad.pressed.emit()
+	var trigger := InputEventJoypadMotion.new()
+	trigger.axis = JOY_AXIS_TRIGGER_LEFT
+	trigger.axis_value = 0.9
+	list.call("_input", trigger)
+	assert_eq(pad.text, "Left trigger")
