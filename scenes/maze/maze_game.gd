@@ -22,6 +22,7 @@ var mixer := TiltMixer.new()
 
 var _sounds: SoundBank
 var _load_problem := ""
+var _goal_count := 0
 
 @onready var _stage: Node3D = $Stage
 @onready var _canvas: SubViewport = $BoardCanvas
@@ -124,6 +125,7 @@ func _on_calibrate() -> void:
 
 
 func _on_game_reset() -> void:
+	_goal_count = 0
 	_joystick.release()
 	mixer.reset()
 	_stage.set_tilt(Vector2.ZERO)
@@ -157,9 +159,10 @@ func _on_lost(_hole: int) -> void:
 	_sounds.play(SoundBank.HOLE_FALL)
 
 
-func _on_goal_count_changed(_count: int) -> void:
-	if rules.balls_in_goal > 0:
-		_sounds.play(SoundBank.GOAL_CHIME, -10.0, 0.9 + 0.1 * float(rules.balls_in_goal))
+func _on_goal_count_changed(count: int) -> void:
+	if count > _goal_count:
+		_sounds.play(SoundBank.GOAL_CHIME, -10.0, 0.9 + 0.1 * float(count))
+	_goal_count = count
 
 
 func _on_wall_bumped(speed: float) -> void:

@@ -11,6 +11,8 @@ const PERSPECTIVE_PX := 600.0
 ## Margin of the tray around the board, and its thickness, in board pixels.
 const TRAY_MARGIN := 9.0
 const TRAY_DEPTH := 14.0
+## How far below the board the table (and the board's shadow) is, in board pixels.
+const SHADOW_DROP_PX := 60.0
 ## Share of the screen height the board fills, and where its centre sits across the
 ## screen (-1 left edge, 1 right edge).
 const HEIGHT_SHARE := 0.86
@@ -20,6 +22,7 @@ var _pivot := Node3D.new()
 var _board := MeshInstance3D.new()
 var _tray := MeshInstance3D.new()
 var _camera := Camera3D.new()
+var _shadow := MeshInstance3D.new()
 var _board_size := Vector2(350.0, 315.0)
 
 
@@ -39,6 +42,7 @@ func _ready() -> void:
 	add_child(sun)
 	add_child(_camera)
 	_camera.current = true
+	add_child(_shadow)
 	add_child(_pivot)
 	_pivot.add_child(_tray)
 	_pivot.add_child(_board)
@@ -70,6 +74,15 @@ func set_board(texture: Texture2D, board_size: Vector2) -> void:
 	tray_mat.roughness = 0.7
 	_tray.material_override = tray_mat
 	_tray.position = Vector3(0.0, 0.0, -TRAY_DEPTH * 0.5 * UNITS_PER_PX - 0.002)
+	# A soft shadow on the table below the board: it stays put while the board tilts.
+	var shadow_quad := QuadMesh.new()
+	shadow_quad.size = Vector2(box.size.x, box.size.y) * 1.04
+	_shadow.mesh = shadow_quad
+	var shadow_mat := StandardMaterial3D.new()
+	shadow_mat.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	shadow_mat.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
+	shadow_mat.albedo_color = Color(Palette.JOYSTICK, 0.13)
+	_shadow.material_override = shadow_mat
 	_frame()
 
 
@@ -99,3 +112,4 @@ func _frame() -> void:
 	var view := get_viewport().get_visible_rect().size if is_inside_tree() else Vector2(16, 9)
 	var aspect := view.x / maxf(view.y, 1.0)
 	_pivot.position = Vector3(CENTRE_ACROSS * half_height * aspect, 0.0, 0.0)
+	_shadow.position = _pivot.position + Vector3(0.05, -0.07, -SHADOW_DROP_PX * UNITS_PER_PX)

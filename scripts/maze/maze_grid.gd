@@ -31,12 +31,16 @@ var is_grid := true
 var horizontal := PackedByteArray()
 ## vertical[r * (cols + 1) + c]: a wall on grid line c down cell row r (c in 0..cols).
 var vertical := PackedByteArray()
-## slides[cell_index * 8 + direction] → the cell a hard tilt takes a ball to.
+## slides[cell_index * 8 + direction] → the cell a hard tilt takes a ball to, or -1 when the
+## ball would roll over a black hole on the way.
 var slides := PackedInt32Array()
+## 1 for a cell with a black hole in it (hard mode).
+var hole_cells := PackedByteArray()
 
 
-## Reads the grid of a maze `level`.
-func _init(level: BoardLevel) -> void:
+## Reads the grid of a maze `level`; with `with_holes`, cells holding a black hole swallow
+## any ball that rolls through them.
+func _init(level: BoardLevel, with_holes := false) -> void:
 	cols = level.grid_cols
 	rows = level.grid_rows
 	if cols <= 0 or rows <= 0 or level.size.x <= 0.0 or level.size.y <= 0.0:
@@ -47,6 +51,10 @@ func _init(level: BoardLevel) -> void:
 	vertical.resize((cols + 1) * rows)
 	for i in range(0, level.walls.size() - 1, 2):
 		_mark(level.walls[i], level.walls[i + 1])
+	hole_cells.resize(cell_count())
+	if with_holes:
+		for h in level.holes:
+			hole_cells[cell_at(h)] = 1
 	_build_slides()
 
 
@@ -100,9 +108,13 @@ func _roll(index: int, step: Vector2i) -> int:
 		if step.x != 0 and is_open(c, r, step.x, 0):
 			c += step.x
 			moved = true
+			if hole_cells[r * cols + c] != 0:
+				return -1
 		if step.y != 0 and is_open(c, r, 0, step.y):
 			r += step.y
 			moved = true
+			if hole_cells[r * cols + c] != 0:
+				return -1
 		if not moved:
 			break
 	return r * cols + c

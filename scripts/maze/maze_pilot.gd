@@ -21,7 +21,13 @@ const SETTLE_SPEED := 3.0
 const SETTLE_SECONDS := 0.1
 const MOVE_TIMEOUT := 5.0
 ## The pack counts as together while every ball is within this of its centre, px.
-const PACK_RADIUS := 30.0
+const PACK_RADIUS := 24.0
+## A herded pack this spread out has split: gather again.
+const HERD_GIVE_UP_SPREAD := 45.0
+## Seconds the pack may sit in the goal without winning before it is gathered again.
+const GOAL_PATIENCE := 3.0
+## Smallest tilt that still moves a resting ball, with a margin, degrees.
+const MIN_NUDGE_DEG := 1.0
 ## Re-plans allowed before the pilot falls back to steering single balls.
 const MAX_PLANS := 60
 
@@ -39,6 +45,8 @@ var cruise := 0.85
 var hard_tilt := 12.0
 ## Plans made so far.
 var plans_made := 0
+## Slides the physics did differently from the grid model, learned as the game goes.
+var corrections := 0
 
 var _level: BoardLevel
 var _rng: RandomNumberGenerator
@@ -48,6 +56,11 @@ var _move := 0
 var _move_time := 0.0
 var _still_time := 0.0
 var _expected := PackedInt32Array()
+var _move_start := PackedInt32Array()
+var _herd_failures := {}
+var _herd_cell := -1
+var _herd_time := 0.0
+var _goal_time := 0.0
 
 
 ## A pilot for `level` (holes avoided when `hard_mode`), stepping `dt` seconds per call,
@@ -57,8 +70,8 @@ func _init(level: BoardLevel, hard_mode: bool, rng: RandomNumberGenerator, dt: f
 	_rng = rng
 	_dt = dt
 	nav = MazeNav.new(level, hard_mode)
-	grid = MazeGrid.new(level)
-	if grid.is_grid and not hard_mode:
+	grid = MazeGrid.new(level, hard_mode)
+	if grid.is_grid:
 		planner = MazeSlidePlanner.new(grid, nav)
 	else:
 		phase = Phase.LEAD
@@ -102,17 +115,20 @@ func _plan(positions: PackedVector2Array) -> void:
 		phase = Phase.LEAD
 		return
 	_move = 0
-	_start_move(cells)
+	_start_move(cells, positions)
 
 
-func _start_move(cells: PackedInt32Array) -> void:
+func _start_move(cells: PackedInt32Array, positions: PackedVector2Array) -> void:
 	if _move >= planner.moves.size():
-		phase = Phase.HERD
+		_begin_herd(positions)
 		return
 	phase = Phase.MOVE
 	_move_time = 0.0
 	_still_time = 0.0
 	_expected = planner.predict(cells, planner.moves[_move])
+	_move_start = PackedInt32Array()
+	for p in positions:
+		_move_start.append(grid.cell_at(p))
 
 
 func _hold_move(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
@@ -124,36 +140,99 @@ func _hold_move(positions: PackedVector2Array, velocities: PackedVector2Array) -
 	var settled := _still_time >= SETTLE_SECONDS and _move_time > 0.2
 	if settled or _move_time > MOVE_TIMEOUT:
 		var cells := planner.cells_of(positions)
-		if _spread(positions) <= PACK_RADIUS:
-			phase = Phase.HERD
+		if _spread(positions) <= PACK_RADIUS and not planner.is_banned(_pack_cell(positions)):
+			_begin_herd(positions)
 			return Vector2.ZERO
 		if cells != _expected:
+			_learn(positions)
 			phase = Phase.PLAN
 			return Vector2.ZERO
 		_move += 1
-		_start_move(cells)
+		_start_move(cells, positions)
 		if phase != Phase.MOVE:
 			return Vector2.ZERO
 	var dir := Vector2(MazeGrid.DIRECTIONS[planner.moves[_move]])
 	return dir * hard_tilt
 
 
-# Rolls the gathered pack along its centre's path to the goal, braking near the centre.
+func _begin_herd(positions: PackedVector2Array) -> void:
+	phase = Phase.HERD
+	_herd_cell = _pack_cell(positions)
+	_herd_time = 0.0
+	_goal_time = 0.0
+
+
+# The cell under the middle of the balls.
+func _pack_cell(positions: PackedVector2Array) -> int:
+	var centre := Vector2.ZERO
+	for p in positions:
+		centre += p
+	return grid.cell_at(centre / float(maxi(positions.size(), 1)))
+
+
+# The balls did not end where the grid model said: remember where each one really went
+# from its cell with this tilt, so the next plan does not repeat the same mistake.
+func _learn(positions: PackedVector2Array) -> void:
+	var dir := planner.moves[_move]
+	for i in mini(positions.size(), _move_start.size()):
+		var from := _move_start[i]
+		var landed := grid.cell_at(positions[i])
+		if grid.slide(from, dir) != landed:
+			grid.slides[from * 8 + dir] = landed
+			corrections += 1
+
+
+# Rolls the gathered pack to the goal: each ball asks for the velocity that follows its own
+# path, and the tilt serves their average (packed balls want nearly the same thing, and a
+# ball a cell behind is led round the corner the others took). In the goal every ball asks
+# for the centre, so the pack stops there.
 func _herd(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
 	var centre := Vector2.ZERO
-	var mean_v := Vector2.ZERO
-	for i in positions.size():
-		centre += positions[i]
-		mean_v += velocities[i]
+	for p in positions:
+		centre += p
 	centre /= float(positions.size())
-	mean_v /= float(positions.size())
-	var spread := _spread(positions)
-	var near_goal := centre.distance_to(_level.goal_center) < _level.goal_radius
-	if spread > PACK_RADIUS and not near_goal:
+	var near_goal := centre.distance_to(_level.goal_center) < _level.goal_radius * 0.7
+	_herd_time += _dt
+	if near_goal:
+		_goal_time += _dt
+	var split := _spread(positions) > HERD_GIVE_UP_SPREAD and not near_goal
+	if split or _goal_time > GOAL_PATIENCE:
+		# The pack split on the way, or sits in the goal too spread out to fit: gather again,
+		# and after two failures from the same cell never herd from there again.
+		var failures: int = _herd_failures.get(_herd_cell, 0) + 1
+		_herd_failures[_herd_cell] = failures
+		if failures >= 2:
+			planner.ban(_herd_cell)
 		phase = Phase.PLAN
 		return Vector2.ZERO
-	var aim := _level.goal_center if near_goal else nav.carrot(centre, lookahead)
-	return TiltInput.clamp_tilt(_velocity_tilt(aim, centre, mean_v, cruise))
+	if near_goal:
+		return _centre_pack(positions, velocities)
+	var tilt := Vector2.ZERO
+	for i in positions.size():
+		var aim := nav.carrot(positions[i], lookahead)
+		tilt += _velocity_tilt(aim, positions[i], velocities[i], cruise)
+	return TiltInput.clamp_tilt(tilt / float(positions.size()))
+
+
+# In the goal: slides the whole pack so the middle of its bounding box sits on the goal's
+# centre. Every axis that still has to move gets at least MIN_NUDGE_DEG, enough to beat
+# rolling friction (which holds a ball still below about 0.6°).
+func _centre_pack(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
+	var lo := positions[0]
+	var hi := positions[0]
+	var mean_v := Vector2.ZERO
+	for i in positions.size():
+		lo = lo.min(positions[i])
+		hi = hi.max(positions[i])
+		mean_v += velocities[i]
+	mean_v /= float(positions.size())
+	var to := _level.goal_center - (lo + hi) * 0.5
+	var want := (to * 3.0).limit_length(_max_speed * 0.4)
+	var tilt := (want - mean_v) * gain
+	for axis in 2:
+		if absf(to[axis]) > 1.5 and absf(tilt[axis]) < MIN_NUDGE_DEG:
+			tilt[axis] = signf(to[axis]) * MIN_NUDGE_DEG
+	return TiltInput.clamp_tilt(tilt)
 
 
 # Steers the ball nearest the goal that is not in yet; balls already in pull gently back.

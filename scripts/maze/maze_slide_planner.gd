@@ -69,8 +69,12 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 			depth_limit = depth[head] + EXTRA_MOVES
 		if keys.size() < MAX_STATES and depth[head] < depth_limit:
 			for d in order:
+				var deadly := false
 				for b in n:
 					next[b] = slides[state[b] * 8 + d]
+					deadly = deadly or next[b] < 0
+				if deadly:
+					continue  # a ball would roll over a black hole
 				var key := _sorted_key(next, n)
 				if not seen.has(key):
 					seen[key] = keys.size()
@@ -98,6 +102,17 @@ func predict(cells: PackedInt32Array, dir: int) -> PackedInt32Array:
 		next.append(grid.slide(c, dir))
 	next.sort()
 	return next
+
+
+## Never gather in `cell` again (the pack did not make it from there to the goal).
+func ban(cell: int) -> void:
+	if cell >= 0 and cell < _cell_distance.size():
+		_cell_distance[cell] = 1.0e4
+
+
+## True when `cell` was banned.
+func is_banned(cell: int) -> bool:
+	return cell >= 0 and cell < _cell_distance.size() and _cell_distance[cell] >= 1.0e4
 
 
 ## Cells of balls at `positions`, sorted (the planner's state).
