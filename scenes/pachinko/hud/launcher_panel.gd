@@ -52,7 +52,7 @@ func _gui_input(event: InputEvent) -> void:
 	var press := event as InputEventMouseButton
 	if press != null and press.pressed and press.button_index == MOUSE_BUTTON_LEFT:
 		if is_on_flipper(press.position):
-			flipper_pressed.emit(get_viewport().get_mouse_position())
+			flipper_pressed.emit(press.global_position)
 			accept_event()
 
 
