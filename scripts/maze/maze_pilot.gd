@@ -15,10 +15,12 @@ enum Phase { PLAN, MOVE, HERD, LEAD }
 const MazeNav := preload("res://scripts/maze/maze_nav.gd")
 const MazeGrid := preload("res://scripts/maze/maze_grid.gd")
 const MazeSlidePlanner := preload("res://scripts/maze/maze_slide_planner.gd")
-const TiltInput := preload("res://scripts/maze/tilt_input.gd")
-## A move ends when every ball has been slower than this (px/s) for SETTLE_SECONDS.
-const SETTLE_SPEED := 3.0
-const SETTLE_SECONDS := 0.1
+const MazeHoleGuard := preload("res://scripts/maze/maze_hole_guard.gd")
+const MazeSteering := preload("res://scripts/maze/maze_steering.gd")
+## A move ends when no ball has moved more than SETTLE_DRIFT px in SETTLE_SECONDS (balls
+## pressed together into a corner jostle, so their speed alone never settles).
+const SETTLE_DRIFT := 1.0
+const SETTLE_SECONDS := 0.15
 const MOVE_TIMEOUT := 5.0
 ## The pack counts as together while every ball is within this of its centre, px.
 const PACK_RADIUS := 24.0
@@ -26,8 +28,6 @@ const PACK_RADIUS := 24.0
 const HERD_GIVE_UP_SPREAD := 45.0
 ## Seconds the pack may sit in the goal without winning before it is gathered again.
 const GOAL_PATIENCE := 3.0
-## Smallest tilt that still moves a resting ball, with a margin, degrees.
-const MIN_NUDGE_DEG := 1.0
 ## Re-plans allowed before the pilot falls back to steering single balls.
 const MAX_PLANS := 60
 
@@ -35,12 +35,8 @@ var nav: MazeNav
 var grid: MazeGrid
 var planner: MazeSlidePlanner
 var phase: Phase = Phase.PLAN
-## Degrees of tilt per px/s of velocity error.
-var gain := 0.2
-## How far ahead along the path a ball aims, in px.
-var lookahead := 12.0
-## Cruising speed as a share of the board's speed cap.
-var cruise := 0.85
+## Continuous steering (herding, centring, leading), with the seed's gains.
+var steering: MazeSteering
 ## Tilt of a hard move, degrees per axis.
 var hard_tilt := 12.0
 ## Plans made so far.
@@ -49,12 +45,13 @@ var plans_made := 0
 var corrections := 0
 
 var _level: BoardLevel
+var _guard: MazeHoleGuard
 var _rng: RandomNumberGenerator
 var _dt := 1.0 / 120.0
-var _max_speed := 93.75
 var _move := 0
 var _move_time := 0.0
 var _still_time := 0.0
+var _settle_mark := PackedVector2Array()
 var _expected := PackedInt32Array()
 var _move_start := PackedInt32Array()
 var _herd_failures := {}
@@ -71,31 +68,39 @@ func _init(level: BoardLevel, hard_mode: bool, rng: RandomNumberGenerator, dt: f
 	_dt = dt
 	nav = MazeNav.new(level, hard_mode)
 	grid = MazeGrid.new(level, hard_mode)
+	if hard_mode:
+		_guard = MazeHoleGuard.new(level, dt)
 	if grid.is_grid:
 		planner = MazeSlidePlanner.new(grid, nav)
 	else:
 		phase = Phase.LEAD
 	var tuning := level.tuning as PhysicsTuning
-	if tuning != null:
-		_max_speed = tuning.max_speed
-	gain = rng.randf_range(0.15, 0.3)
-	lookahead = rng.randf_range(9.0, 15.0)
-	cruise = rng.randf_range(0.5, 0.8)
+	steering = MazeSteering.new(level, nav, tuning.max_speed if tuning != null else 93.75)
+	steering.gain = rng.randf_range(0.15, 0.3)
+	steering.lookahead = rng.randf_range(9.0, 15.0)
+	steering.cruise = rng.randf_range(0.5, 0.8)
 	hard_tilt = rng.randf_range(9.0, 12.0)
 
 
 ## The tilt (degrees per axis) for balls at `positions` moving at `velocities`.
 func decide(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
+	var tilt := _steer(positions, velocities)
+	if _guard != null:
+		tilt = _guard.filter(tilt, positions, velocities)
+	return tilt
+
+
+func _steer(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
 	if positions.is_empty():
 		return Vector2.ZERO
 	if phase == Phase.PLAN:
 		_plan(positions)
 	match phase:
 		Phase.MOVE:
-			return _hold_move(positions, velocities)
+			return _hold_move(positions)
 		Phase.HERD:
 			return _herd(positions, velocities)
-	return _lead(positions, velocities)
+	return steering.lead(positions, velocities)
 
 
 func _plan(positions: PackedVector2Array) -> void:
@@ -125,22 +130,30 @@ func _start_move(cells: PackedInt32Array, positions: PackedVector2Array) -> void
 	phase = Phase.MOVE
 	_move_time = 0.0
 	_still_time = 0.0
+	_settle_mark = positions.duplicate()
 	_expected = planner.predict(cells, planner.moves[_move])
 	_move_start = PackedInt32Array()
 	for p in positions:
 		_move_start.append(grid.cell_at(p))
 
 
-func _hold_move(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
+func _hold_move(positions: PackedVector2Array) -> Vector2:
 	_move_time += _dt
-	var fastest := 0.0
-	for v in velocities:
-		fastest = maxf(fastest, v.length())
-	_still_time = _still_time + _dt if fastest < SETTLE_SPEED else 0.0
-	var settled := _still_time >= SETTLE_SECONDS and _move_time > 0.2
+	_still_time += _dt
+	var settled := false
+	if _still_time >= SETTLE_SECONDS:
+		var drift := 0.0
+		for i in mini(positions.size(), _settle_mark.size()):
+			drift = maxf(drift, positions[i].distance_to(_settle_mark[i]))
+		settled = drift < SETTLE_DRIFT and positions.size() == _settle_mark.size()
+		_settle_mark = positions.duplicate()
+		_still_time = 0.0
 	if settled or _move_time > MOVE_TIMEOUT:
 		var cells := planner.cells_of(positions)
-		if _spread(positions) <= PACK_RADIUS and not planner.is_banned(_pack_cell(positions)):
+		if (
+			MazeSteering.spread(positions) <= PACK_RADIUS
+			and not planner.is_banned(_pack_cell(positions))
+		):
 			_begin_herd(positions)
 			return Vector2.ZERO
 		if cells != _expected:
@@ -195,7 +208,7 @@ func _herd(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vec
 	_herd_time += _dt
 	if near_goal:
 		_goal_time += _dt
-	var split := _spread(positions) > HERD_GIVE_UP_SPREAD and not near_goal
+	var split := MazeSteering.spread(positions) > HERD_GIVE_UP_SPREAD and not near_goal
 	if split or _goal_time > GOAL_PATIENCE:
 		# The pack split on the way, or sits in the goal too spread out to fit: gather again,
 		# and after two failures from the same cell never herd from there again.
@@ -206,71 +219,5 @@ func _herd(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vec
 		phase = Phase.PLAN
 		return Vector2.ZERO
 	if near_goal:
-		return _centre_pack(positions, velocities)
-	var tilt := Vector2.ZERO
-	for i in positions.size():
-		var aim := nav.carrot(positions[i], lookahead)
-		tilt += _velocity_tilt(aim, positions[i], velocities[i], cruise)
-	return TiltInput.clamp_tilt(tilt / float(positions.size()))
-
-
-# In the goal: slides the whole pack so the middle of its bounding box sits on the goal's
-# centre. Every axis that still has to move gets at least MIN_NUDGE_DEG, enough to beat
-# rolling friction (which holds a ball still below about 0.6°).
-func _centre_pack(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
-	var lo := positions[0]
-	var hi := positions[0]
-	var mean_v := Vector2.ZERO
-	for i in positions.size():
-		lo = lo.min(positions[i])
-		hi = hi.max(positions[i])
-		mean_v += velocities[i]
-	mean_v /= float(positions.size())
-	var to := _level.goal_center - (lo + hi) * 0.5
-	var want := (to * 3.0).limit_length(_max_speed * 0.4)
-	var tilt := (want - mean_v) * gain
-	for axis in 2:
-		if absf(to[axis]) > 1.5 and absf(tilt[axis]) < MIN_NUDGE_DEG:
-			tilt[axis] = signf(to[axis]) * MIN_NUDGE_DEG
-	return TiltInput.clamp_tilt(tilt)
-
-
-# Steers the ball nearest the goal that is not in yet; balls already in pull gently back.
-func _lead(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
-	var leader := -1
-	var leader_distance := INF
-	var hold := Vector2.ZERO
-	for i in positions.size():
-		if positions[i].distance_to(_level.goal_center) < _level.goal_radius - 2.0:
-			hold += _velocity_tilt(_level.goal_center, positions[i], velocities[i], 0.4)
-			continue
-		var d := nav.distance_at(positions[i])
-		if d < leader_distance:
-			leader_distance = d
-			leader = i
-	var tilt := hold * 0.25
-	if leader >= 0:
-		var target := nav.carrot(positions[leader], lookahead)
-		tilt += _velocity_tilt(target, positions[leader], velocities[leader], cruise)
-	return TiltInput.clamp_tilt(tilt)
-
-
-# The tilt that turns velocity `v` toward moving at `share` of the cap toward `target`,
-# slowing down as the target nears.
-func _velocity_tilt(target: Vector2, p: Vector2, v: Vector2, share: float) -> Vector2:
-	var to := target - p
-	var speed := minf(_max_speed * share, to.length() * 3.0)
-	var want := to.normalized() * speed if to.length() > 0.01 else Vector2.ZERO
-	return (want - v) * gain
-
-
-# Largest distance of a ball from the balls' centre, px.
-static func _spread(positions: PackedVector2Array) -> float:
-	var centre := Vector2.ZERO
-	for p in positions:
-		centre += p
-	centre /= float(maxi(positions.size(), 1))
-	var spread := 0.0
-	for p in positions:
-		spread = maxf(spread, p.distance_to(centre))
-	return spread
+		return steering.centre_pack(positions, velocities)
+	return steering.follow_paths(positions, velocities)

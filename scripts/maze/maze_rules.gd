@@ -168,7 +168,8 @@ func _rebuild() -> void:
 	_accumulator = 0.0
 	world = null
 	if level == null or not level.is_maze():
-		push_error("MazeRules: needs a maze board, got %s" % [level])
+		var got := "no board" if level == null else "the pachinko board '%s'" % level.board_id
+		push_error("MazeRules: needs a maze board, got %s" % got)
 		return
 	world = BoardWorldFactory.build(level, hard_mode)
 	if world == null:
