@@ -5,6 +5,8 @@ extends Node
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const OUT := "res://build/shots/"
+const SHOT_SETTINGS := "user://shots_settings.cfg"
+const SHOT_SAVE := "user://shots_save.cfg"
 
 
 func _ready() -> void:
@@ -14,17 +16,23 @@ func _ready() -> void:
 			get_window().size = Vector2i(int(parts[0]), int(parts[1]))
 			await get_tree().process_frame
 	DirAccess.make_dir_recursive_absolute(ProjectSettings.globalize_path(OUT))
+	# Scratch player files: pictures must not touch the real best times.
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(SHOT_SAVE))
+	App.load_player_files(SHOT_SETTINGS, SHOT_SAVE)
 	var game: Control = GAME.instantiate()
 	add_child(game)
 	await _settle(0.6)
 	await _save("maze_start")
 	var rules: MazeRules = game.get("rules")
-	# Mid-tilt: start, tilt down-right through the joystick, let the balls roll.
-	game.call("_start")
-	var mixer: RefCounted = game.get("mixer")
+	# Mid-tilt: press the joystick head and drag it down-right with real mouse events.
 	var joystick: Control = game.get("_joystick")
-	joystick.set("head_offset", Vector2(11.0, 8.0))
-	mixer.call("joystick_moved", Vector2(11.0, 8.0))
+	var head := joystick.get_global_rect().get_center()
+	_mouse_button(head, true)
+	await get_tree().process_frame
+	_mouse_button(head, false)
+	for i in 12:
+		_mouse_motion(head + Vector2(22.0, 16.0) * float(i + 1) / 12.0)
+		await get_tree().process_frame
 	await _settle(1.3)
 	await _save("maze_tilt")
 	# Win: let the autoplay's pilot play the live scene (the first seed that wins).
@@ -47,10 +55,9 @@ func _ready() -> void:
 	await _save("maze_win")
 	# Hard-mode loss: tilt right; the top-left ball rolls along the top row into a hole.
 	rules.set_hard_mode(true)
-	joystick.set("head_offset", Vector2.ZERO)
-	game.call("_start")
-	mixer.call("joystick_moved", Vector2(8.0, -2.0))
-	joystick.set("head_offset", Vector2(8.0, -2.0))
+	_mouse_button(head, true)
+	await get_tree().process_frame
+	_mouse_motion(head + Vector2(16.0, -4.0))
 	var waited := 0.0
 	while rules.is_playing() and waited < 5.0:
 		await get_tree().process_frame
@@ -58,6 +65,22 @@ func _ready() -> void:
 	await _settle(2.2)
 	await _save("maze_lost")
 	get_tree().quit()
+
+
+func _mouse_button(at: Vector2, down: bool) -> void:
+	var event := InputEventMouseButton.new()
+	event.button_index = MOUSE_BUTTON_LEFT
+	event.pressed = down
+	event.position = at
+	event.global_position = at
+	Input.parse_input_event(event)
+
+
+func _mouse_motion(at: Vector2) -> void:
+	var event := InputEventMouseMotion.new()
+	event.position = at
+	event.global_position = at
+	Input.parse_input_event(event)
 
 
 func _settle(seconds: float) -> void:

@@ -1,0 +1,74 @@
+extends GutTest
+## How input becomes tilt: the seed's joystick mapping, smooth keys and stick, and the
+## phone accelerometer with its calibration and its fallback to the joystick.
+
+const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+const TiltMixer := preload("res://scripts/maze/tilt_mixer.gd")
+const FLAT := Vector3(0.0, 0.0, -9.8)
+
+
+func test_joystick_travel_maps_to_the_seeds_tilt() -> void:
+	assert_eq(TiltInput.tilt_from_joystick(Vector2(15.0, -15.0)), Vector2(12.0, -12.0))
+	assert_eq(TiltInput.tilt_from_joystick(Vector2(5.0, 2.5)), Vector2(4.0, 2.0))
+	assert_eq(TiltInput.tilt_from_joystick(Vector2(90.0, -40.0)), Vector2(12.0, -12.0))
+	assert_eq(TiltInput.joystick_from_tilt(Vector2(12.0, -4.0)), Vector2(15.0, -5.0))
+
+
+func test_the_joystick_tilts_at_once() -> void:
+	var mixer := TiltMixer.new()
+	mixer.joystick_moved(Vector2(10.0, 0.0))
+	assert_eq(mixer.tilt, Vector2(8.0, 0.0))
+	assert_eq(mixer.source, TiltMixer.Source.JOYSTICK)
+	mixer.update(1.0 / 60.0, Vector2.ZERO, Vector3.ZERO)
+	assert_eq(mixer.tilt, Vector2(8.0, 0.0), "no keys and no accelerometer: the joystick holds")
+
+
+func test_keys_and_stick_ease_and_scale_with_sensitivity() -> void:
+	var mixer := TiltMixer.new()
+	mixer.update(1.0 / 60.0, Vector2(0.0, -1.0), Vector3.ZERO)
+	assert_between(mixer.tilt.y, -3.0, -0.1, "one frame moves part of the way")
+	for i in 120:
+		mixer.update(1.0 / 60.0, Vector2(0.0, -1.0), Vector3.ZERO)
+	assert_almost_eq(mixer.tilt.y, -12.0, 0.01)
+	for i in 120:
+		mixer.update(1.0 / 60.0, Vector2.ZERO, Vector3.ZERO)
+	assert_eq(mixer.tilt, Vector2.ZERO, "letting go levels the board")
+	mixer.sensitivity = 0.5
+	for i in 120:
+		mixer.update(1.0 / 60.0, Vector2(1.0, 0.0), Vector3.ZERO)
+	assert_almost_eq(mixer.tilt.x, 6.0, 0.01, "half sensitivity, half the tilt")
+
+
+func test_a_device_without_accelerometer_keeps_the_joystick() -> void:
+	var mixer := TiltMixer.new()
+	mixer.update(1.0 / 60.0, Vector2.ZERO, Vector3.ZERO)
+	assert_false(mixer.has_accelerometer())
+	assert_eq(mixer.source, TiltMixer.Source.NONE)
+	mixer.calibrate()
+	assert_eq(mixer.neutral, Vector3.ZERO, "nothing to calibrate")
+
+
+func test_the_accelerometer_tilts_relative_to_the_calibrated_neutral() -> void:
+	var mixer := TiltMixer.new()
+	var held := Vector3(0.0, 3.0, -9.3)  # the phone held tipped toward the player
+	mixer.update(1.0 / 60.0, Vector2.ZERO, held)
+	assert_true(mixer.has_accelerometer())
+	assert_eq(mixer.source, TiltMixer.Source.ACCELEROMETER)
+	assert_eq(mixer.neutral, held, "the first reading is taken as flat")
+	for i in 60:
+		mixer.update(1.0 / 60.0, Vector2.ZERO, held)
+	assert_almost_eq(mixer.tilt.length(), 0.0, 0.01, "held still at neutral: level")
+	var tipped_right := held + Vector3(2.0, 0.0, 0.0)
+	for i in 120:
+		mixer.update(1.0 / 60.0, Vector2.ZERO, tipped_right)
+	assert_gt(mixer.tilt.x, 5.0, "tipping right rolls the balls right")
+	mixer.calibrate()
+	for i in 120:
+		mixer.update(1.0 / 60.0, Vector2.ZERO, tipped_right)
+	assert_almost_eq(mixer.tilt.x, 0.0, 0.05, "calibrate makes the current pose flat")
+
+
+func test_a_broken_reading_never_gives_a_broken_tilt() -> void:
+	var tilt := TiltInput.tilt_from_accelerometer(Vector3(INF, NAN, 0.0), FLAT, 1.0)
+	assert_true(tilt.is_finite())
+	assert_eq(TiltInput.clamp_tilt(Vector2(NAN, INF)), Vector2(0.0, 0.0))
