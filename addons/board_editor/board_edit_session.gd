@@ -9,6 +9,7 @@ extends RefCounted
 signal edited
 signal selection_changed
 signal tool_changed(tool: int)
+signal settings_changed
 
 enum Tool { SELECT, PIN, PATTERN, POCKET, WALL, HOLE, GOAL, START, HANDLES, ERASE }
 
@@ -98,6 +99,18 @@ func mirror_axis() -> float:
 ## An item set with its mirror image added when mirror mode is on.
 func mirrored(data: Dictionary) -> Dictionary:
 	return Mirror.mirror_set(data, Mirror.axis_of(level)) if mirror_enabled else data
+
+
+## Turns grid snapping on or off.
+func set_snap(enabled: bool) -> void:
+	snap_enabled = enabled
+	settings_changed.emit()
+
+
+## Turns mirror mode on or off.
+func set_mirror(enabled: bool) -> void:
+	mirror_enabled = enabled
+	settings_changed.emit()
 
 
 ## Switches tool (ignores tools the board's kind has no use for).

@@ -1,0 +1,213 @@
+@tool
+extends EditorPlugin
+## Board editor: select a BoardNode and the 2D viewport edits its BoardLevel. This file only
+## wires the editor to the plain parts: the session (state), BoardInput (tools and keys),
+## BoardOverlay (drawing), the toolbar and the dock. Every edit is an action committed to
+## the edited scene's undo history; the board file is saved with the scene.
+
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardInput := preload("res://addons/board_editor/board_input.gd")
+const BoardOverlay := preload("res://addons/board_editor/ui/board_overlay.gd")
+const BoardToolbar := preload("res://addons/board_editor/ui/board_toolbar.gd")
+const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
+const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
+const ShotHook := preload("res://addons/board_editor/ui/shot_hook.gd")
+
+var _node: BoardNode
+var _session: Session
+var _input: BoardInput
+var _toolbar: BoardToolbar
+var _dock: BoardDock
+var _issues: Array[BoardIssue] = []
+var _focused_issue := -1
+var _unsaved: Array[BoardLevel] = []
+var _refresh_queued := false
+var _visible := false
+
+
+func _enter_tree() -> void:
+	_toolbar = BoardToolbar.new()
+	_toolbar.hide()
+	_toolbar.play_test_requested.connect(_play_test)
+	add_control_to_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
+	_dock = BoardDock.new()
+	_dock.play_test_requested.connect(_play_test)
+	_dock.issue_focused.connect(_on_issue_focused)
+	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
+	if ShotHook.requested():
+		add_child(ShotHook.new(self))
+
+
+func _exit_tree() -> void:
+	_release()
+	remove_control_from_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
+	remove_control_from_docks(_dock)
+	_toolbar.queue_free()
+	_dock.queue_free()
+
+
+func _handles(object: Object) -> bool:
+	return is_board_node(object)
+
+
+func _edit(object: Object) -> void:
+	_release()
+	if object == null or not is_board_node(object):
+		return
+	_node = object as BoardNode
+	var level := _node.level
+	if level == null:
+		_dock.show_board(null, [])
+		return
+	_session = Session.new(level)
+	_session.committer = _commit
+	_session.selection_changed.connect(_on_selection_changed)
+	_session.settings_changed.connect(_on_settings_changed)
+	_session.tool_changed.connect(func(_tool: int) -> void: update_overlays())
+	_input = BoardInput.new(_session)
+	level.changed.connect(_on_level_changed)
+	_toolbar.bind(_session)
+	_toolbar.visible = _visible
+	_refresh()
+
+
+func _make_visible(visible: bool) -> void:
+	_visible = visible
+	_toolbar.visible = visible and _session != null
+	if not visible and _input != null:
+		_input.active_tool().cancel()
+
+
+func _forward_canvas_gui_input(event: InputEvent) -> bool:
+	if _session == null or not is_instance_valid(_node):
+		return false
+	if _node.level != _session.level:
+		_edit(_node)  # the board resource was swapped in the inspector
+		if _session == null:
+			return false
+	var used := _input.handle(event, _to_screen().affine_inverse())
+	if used or event is InputEventMouseMotion:
+		update_overlays()
+	return used
+
+
+func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
+	if _session == null or not is_instance_valid(_node):
+		return
+	BoardOverlay.draw(
+		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
+	)
+
+
+func _apply_changes() -> void:
+	_save_boards()
+
+
+func _save_external_data() -> void:
+	_save_boards()
+
+
+## The session editing the selected board (null when none); used by the screenshot hook.
+func get_session() -> Session:
+	return _session
+
+
+## The input router (null when no board is edited); used by the screenshot hook.
+func get_board_input() -> BoardInput:
+	return _input
+
+
+## True for the node this plugin edits.
+static func is_board_node(object: Object) -> bool:
+	return object is BoardNode
+
+
+func _commit(action: RefCounted, already_applied: bool) -> void:
+	var history := get_undo_redo()
+	# The board node as context puts the step in the edited scene's history, so the scene
+	# is marked changed and Ctrl+Z in the scene undoes it.
+	history.create_action(str(action.call("get_name")), UndoRedo.MERGE_DISABLE, _node)
+	history.add_do_method(action, "do")
+	history.add_undo_method(action, "undo")
+	history.commit_action(not already_applied)
+
+
+func _release() -> void:
+	if _session != null:
+		if _input != null:
+			_input.active_tool().cancel()
+		if _session.level.changed.is_connected(_on_level_changed):
+			_session.level.changed.disconnect(_on_level_changed)
+	_session = null
+	_input = null
+	_node = null
+	_issues.clear()
+	_focused_issue = -1
+	if _toolbar != null:
+		_toolbar.hide()
+	if _dock != null:
+		_dock.show_board(null, [])
+
+
+func _on_level_changed() -> void:
+	if _session != null and not _unsaved.has(_session.level):
+		_unsaved.append(_session.level)
+	# Many setters fire per edit: validate and redraw once, after the edit.
+	if not _refresh_queued:
+		_refresh_queued = true
+		_refresh.call_deferred()
+
+
+func _refresh() -> void:
+	_refresh_queued = false
+	if _session == null:
+		return
+	_session.prune_selection()
+	_issues = (
+		_node.issues() if is_instance_valid(_node) else BoardValidator.validate(_session.level)
+	)
+	_focused_issue = mini(_focused_issue, _issues.size() - 1)
+	_dock.show_board(_session, _issues)
+	if is_instance_valid(_node):
+		_node.update_configuration_warnings()
+		_node.queue_redraw()
+	update_overlays()
+
+
+func _on_selection_changed() -> void:
+	_dock.refresh_options()
+	update_overlays()
+
+
+func _on_settings_changed() -> void:
+	_toolbar.refresh()
+	update_overlays()
+
+
+func _on_issue_focused(index: int) -> void:
+	_focused_issue = index
+	update_overlays()
+
+
+func _save_boards() -> void:
+	for level in _unsaved:
+		var path := level.resource_path
+		if path.is_empty() or path.contains("::"):
+			continue  # built into the scene: saved with it
+		var error := ResourceSaver.save(level, path)
+		if error != OK:
+			push_error("Board editor: could not save %s (%s)." % [path, error_string(error)])
+	_unsaved.clear()
+
+
+func _play_test() -> void:
+	if _session == null:
+		return
+	_save_boards()
+	var problem := PlayTest.run(_session.level)
+	if not problem.is_empty():
+		push_warning(problem)
+
+
+func _to_screen() -> Transform2D:
+	return _node.get_viewport_transform() * _node.get_global_transform()

@@ -1,0 +1,53 @@
+@tool
+extends "res://addons/board_editor/tools/board_tool.gd"
+## Click to place one thing: a pin, a black hole, a ball start (all mirrored in mirror
+## mode), or the goal (moves it). Snapped to the grid, or to maze cells on a maze.
+
+const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
+
+## What this tool places: Items.Kind.PIN, HOLE, START or GOAL.
+var kind: int
+
+
+func _init(on_session: Session, places: int) -> void:
+	super(on_session)
+	kind = places
+
+
+func press(at: Vector2, _event: InputEventMouseButton) -> bool:
+	var spot := _spot(at)
+	if kind == Items.Kind.GOAL:
+		session.commit(SetPropertiesAction.new(level(), {"goal_center": spot}, "Move goal"))
+		return true
+	var data := Items.empty_set()
+	var key := {Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "starts"}
+	data[key[kind]] = PackedVector2Array([spot])
+	var names := {Items.Kind.PIN: "Add pin", Items.Kind.HOLE: "Add black hole"}
+	var action := AddItemsAction.new(
+		level(), session.mirrored(data), str(names.get(kind, "Add ball start"))
+	)
+	session.commit(action)
+	session.select(action.added)
+	return true
+
+
+func draw(canvas: Control, to_screen: Transform2D) -> void:
+	var spot := _spot(hover)
+	var radius := level().pin_radius
+	match kind:
+		Items.Kind.HOLE:
+			radius = level().hole_radius
+		Items.Kind.START:
+			radius = level().ball_radius
+		Items.Kind.GOAL:
+			radius = level().goal_radius
+	var spots := PackedVector2Array([spot])
+	if session.mirror_enabled and kind != Items.Kind.GOAL:
+		spots.append(Vector2(2.0 * session.mirror_axis() - spot.x, spot.y))
+	for point in spots:
+		Draw.circle(canvas, to_screen, point, radius, Draw.GHOST_COLOR, kind != Items.Kind.GOAL)
+
+
+func _spot(at: Vector2) -> Vector2:
+	return session.snap_point(at) if kind == Items.Kind.PIN else session.snap_cell_point(at)

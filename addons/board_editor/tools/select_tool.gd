@@ -1,0 +1,126 @@
+@tool
+extends "res://addons/board_editor/tools/board_tool.gd"
+## Select / move: click picks (shift adds, ctrl toggles), dragging empty space draws a
+## selection box, dragging a selected item moves the selection (live, one undo step).
+
+const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
+
+## Screen pixels the mouse must travel before a press becomes a drag.
+const DRAG_START_PIXELS := 4.0
+
+var _pressed := false
+var _press_at := Vector2.ZERO
+var _anchor := Items.NONE
+var _box_mode := 0  # 0 replace, 1 add (shift), 2 toggle (ctrl)
+var _boxing := false
+var _move: MoveItemsAction = null
+
+
+func press(at: Vector2, event: InputEventMouseButton) -> bool:
+	_pressed = true
+	_press_at = at
+	_box_mode = 1 if event.shift_pressed else (2 if event.ctrl_pressed else 0)
+	_anchor = HitTest.pick(level(), at, tolerance())
+	var selection: Array[Vector2i] = session.selection
+	if _anchor == Items.NONE:
+		_boxing = true
+		return true
+	var picked: Array[Vector2i] = selection.duplicate()
+	if _box_mode == 2 and picked.has(_anchor):
+		picked.erase(_anchor)
+		_anchor = Items.NONE
+	elif _box_mode > 0 and not picked.has(_anchor):
+		picked.append(_anchor)
+	elif not picked.has(_anchor):
+		picked = [_anchor]
+	session.select(picked)
+	return true
+
+
+func motion(at: Vector2, _event: InputEventMouseMotion) -> bool:
+	hover = at
+	if not _pressed:
+		return false
+	if _boxing:
+		return true
+	if _anchor == Items.NONE:
+		return true
+	if _move == null and at.distance_to(_press_at) < DRAG_START_PIXELS * pixel:
+		return true
+	if _move == null:
+		_move = _start_move()
+	_move.preview(_snapped_delta(at - _press_at))
+	return true
+
+
+func release(at: Vector2, _event: InputEventMouseButton) -> bool:
+	if not _pressed:
+		return false
+	_pressed = false
+	if _boxing:
+		_boxing = false
+		_finish_box(Rect2(_press_at, at - _press_at))
+	elif _move != null:
+		var move := _move
+		_move = null
+		if move.delta == Vector2.ZERO:
+			move.undo()
+		else:
+			session.commit(move, true)
+	return true
+
+
+func cancel() -> bool:
+	var busy := _pressed
+	_pressed = false
+	_boxing = false
+	if _move != null:
+		_move.undo()
+		_move = null
+	return busy
+
+
+func draw(canvas: Control, to_screen: Transform2D) -> void:
+	if _boxing:
+		var rect := Rect2(to_screen * _press_at, Vector2.ZERO).expand(to_screen * hover)
+		canvas.draw_rect(rect, Color(0.4, 0.7, 1.0, 0.15), true)
+		canvas.draw_rect(rect, Color(0.4, 0.7, 1.0, 0.9), false, 1.0)
+
+
+func _start_move() -> MoveItemsAction:
+	var selection: Array[Vector2i] = session.selection
+	if session.mirror_enabled:
+		var axis := Mirror.axis_of(level())
+		var anchor_x := Items.position_of(level(), _anchor).x
+		var split := Mirror.split_for_move(level(), selection, axis, anchor_x)
+		return MoveItemsAction.new(
+			level(), split["direct"], Vector2.ZERO, split["mirrored"], split["on_axis"]
+		)
+	return MoveItemsAction.new(level(), selection, Vector2.ZERO)
+
+
+# The drag offset that puts the grabbed item on the grid (a whole number of cells on a
+# snapped maze, so walls stay on the lattice).
+func _snapped_delta(raw: Vector2) -> Vector2:
+	if not session.snap_enabled:
+		return raw
+	if level().is_maze():
+		var cell := level().path_width + level().wall_width
+		return (raw / cell).round() * cell if cell > 0.0 else raw
+	var start := Items.position_of(level(), _anchor)
+	return session.snap_point(start + raw) - start
+
+
+func _finish_box(rect: Rect2) -> void:
+	var found := HitTest.in_rect(level(), rect)
+	var selection: Array[Vector2i] = session.selection.duplicate()
+	if _box_mode == 0:
+		selection = found
+	for item in found:
+		if _box_mode == 2 and selection.has(item):
+			selection.erase(item)
+		elif not selection.has(item):
+			selection.append(item)
+	session.select(selection)

@@ -1,0 +1,104 @@
+@tool
+extends RefCounted
+## Draws the editor's layer over the 2D viewport: the snap grid, the mirror axis, the
+## selection, validation markers and the active tool's preview. The board itself is drawn
+## by its BoardNode.
+
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const Draw := preload("res://addons/board_editor/ui/overlay_draw.gd")
+const BoardTool := preload("res://addons/board_editor/tools/board_tool.gd")
+
+## Grid lines closer than this on screen are not drawn.
+const MIN_GRID_PIXELS := 7.0
+
+
+## Draws everything; `to_screen` maps board pixels to `canvas` pixels.
+static func draw(
+	canvas: Control,
+	to_screen: Transform2D,
+	session: Session,
+	tool: BoardTool,
+	issues: Array[BoardIssue],
+	focused_issue: int
+) -> void:
+	var level := session.level
+	if session.snap_enabled:
+		_draw_grid(canvas, to_screen, session)
+	if session.mirror_enabled:
+		var axis := session.mirror_axis()
+		var top := to_screen * Vector2(axis, 0)
+		var bottom := to_screen * Vector2(axis, level.size.y)
+		canvas.draw_dashed_line(top, bottom, Color(0.9, 0.4, 1.0, 0.8), 1.5, 8.0)
+	for item in session.selection:
+		if Items.is_valid(level, item):
+			_draw_selected(canvas, to_screen, level, item)
+	for i in issues.size():
+		_draw_issue(canvas, to_screen, issues[i], i == focused_issue)
+	tool.draw(canvas, to_screen)
+
+
+static func _draw_grid(canvas: Control, to_screen: Transform2D, session: Session) -> void:
+	var level := session.level
+	var step := session.grid_step
+	var color := Color(1, 1, 1, 0.07)
+	if level.is_maze() and level.path_width + level.wall_width > 0.0:
+		step = level.path_width + level.wall_width
+		color = Color(0.5, 0.8, 1.0, 0.18)
+	if step * to_screen.get_scale().x < MIN_GRID_PIXELS:
+		return
+	var x := 0.0
+	while x <= level.size.x + 0.01:
+		Draw.line(canvas, to_screen, Vector2(x, 0), Vector2(x, level.size.y), color, 1.0)
+		x += step
+	var y := 0.0
+	while y <= level.size.y + 0.01:
+		Draw.line(canvas, to_screen, Vector2(0, y), Vector2(level.size.x, y), color, 1.0)
+		y += step
+
+
+static func _draw_selected(
+	canvas: Control, to_screen: Transform2D, level: BoardLevel, item: Vector2i
+) -> void:
+	var color := Draw.SELECT_COLOR
+	match item.x:
+		Items.Kind.PIN:
+			Draw.circle(canvas, to_screen, level.pins[item.y], level.pin_radius + 3.0, color)
+		Items.Kind.POCKET:
+			var spec: PocketSpec = level.pockets[item.y]
+			var box := Rect2(spec.position - Vector2(spec.width * 0.5, 0), Vector2(spec.width, 0))
+			box = box.expand(spec.position + Vector2(0, spec.depth)).grow(level.pin_radius + 3.0)
+			var screen := Rect2(to_screen * box.position, box.size * to_screen.get_scale())
+			canvas.draw_rect(screen, color, false, 2.0)
+		Items.Kind.WALL:
+			var a := level.walls[item.y * 2]
+			var b := level.walls[item.y * 2 + 1]
+			Draw.line(canvas, to_screen, a, b, Color(color, 0.6), 4.0)
+			Draw.circle(canvas, to_screen, a, 3.0, color, true)
+			Draw.circle(canvas, to_screen, b, 3.0, color, true)
+		Items.Kind.HOLE:
+			Draw.circle(canvas, to_screen, level.holes[item.y], level.hole_radius + 3.0, color)
+		Items.Kind.START:
+			Draw.circle(
+				canvas, to_screen, level.ball_starts[item.y], level.ball_radius + 3.0, color
+			)
+		Items.Kind.GOAL:
+			Draw.circle(
+				canvas, to_screen, level.goal_center, level.goal_radius + 3.0, color, false, 2.5
+			)
+
+
+static func _draw_issue(
+	canvas: Control, to_screen: Transform2D, issue: BoardIssue, focused: bool
+) -> void:
+	var color := Draw.ERROR_COLOR if issue.is_error() else Draw.WARNING_COLOR
+	var at := to_screen * issue.position
+	var radius := 11.0 if focused else 8.0
+	canvas.draw_circle(at, radius, Color(color, 0.25))
+	canvas.draw_arc(at, radius, 0.0, TAU, 24, color, 2.0 if focused else 1.5, true)
+	var font := ThemeDB.fallback_font
+	canvas.draw_string(font, at + Vector2(-3, 5), "!", HORIZONTAL_ALIGNMENT_LEFT, -1, 13, color)
+	if focused:
+		var text_at := at + Vector2(radius + 4, 4)
+		canvas.draw_string(font, text_at + Vector2.ONE, issue.message, 0, -1, 13, Color.BLACK)
+		canvas.draw_string(font, text_at, issue.message, 0, -1, 13, Color.WHITE)

@@ -1,0 +1,70 @@
+@tool
+extends RefCounted
+## Small drawing helpers for the editor overlay: board pixels in, screen pixels out, with a
+## minimum on-screen size so tiny pins stay visible when zoomed out.
+
+const SELECT_COLOR := Color(0.35, 0.75, 1.0)
+const GHOST_COLOR := Color(0.3, 0.95, 0.5, 0.8)
+const ERROR_COLOR := Color(1.0, 0.25, 0.2)
+const WARNING_COLOR := Color(1.0, 0.7, 0.15)
+const HANDLE_COLOR := Color(1.0, 0.85, 0.3)
+const MIN_RADIUS := 3.0
+
+
+## A circle of `radius` board pixels at `center`.
+static func circle(
+	canvas: Control,
+	to_screen: Transform2D,
+	center: Vector2,
+	radius: float,
+	color: Color,
+	filled := false,
+	width := 1.5
+) -> void:
+	var r := maxf(radius * to_screen.get_scale().x, MIN_RADIUS)
+	if filled:
+		canvas.draw_circle(to_screen * center, r, color)
+	else:
+		canvas.draw_arc(to_screen * center, r, 0.0, TAU, 32, color, width, true)
+
+
+## Ghost pins: where a tool would put pins.
+static func ghost_points(
+	canvas: Control, to_screen: Transform2D, points: PackedVector2Array, radius: float
+) -> void:
+	for point in points:
+		circle(canvas, to_screen, point, radius, GHOST_COLOR, true)
+
+
+## A line between two board points.
+static func line(
+	canvas: Control, to_screen: Transform2D, a: Vector2, b: Vector2, color: Color, width := 1.5
+) -> void:
+	canvas.draw_line(to_screen * a, to_screen * b, color, width, true)
+
+
+## A square handle at a board point.
+static func handle(canvas: Control, to_screen: Transform2D, at: Vector2, hot: bool) -> void:
+	var size := 10.0 if hot else 8.0
+	var rect := Rect2(to_screen * at - Vector2.ONE * size * 0.5, Vector2.ONE * size)
+	canvas.draw_rect(rect, HANDLE_COLOR if hot else Color(1, 1, 1), true)
+	canvas.draw_rect(rect, Color(0, 0, 0, 0.8), false, 1.0)
+
+
+## A circular arc on the board (angles in radians), drawn as a polyline.
+static func board_arc(
+	canvas: Control,
+	to_screen: Transform2D,
+	center: Vector2,
+	radius: float,
+	from: float,
+	to: float,
+	color: Color,
+	width := 2.0
+) -> void:
+	var points := PackedVector2Array()
+	var steps := maxi(8, int(absf(to - from) * 24.0))
+	for i in steps + 1:
+		var angle := lerpf(from, to, float(i) / float(steps))
+		points.append(to_screen * (center + Vector2.from_angle(angle) * radius))
+	canvas.draw_polyline(points, color, width, true)

@@ -1,0 +1,41 @@
+@tool
+extends RefCounted
+## The editor's play-test: saves the board, leaves a request the game reads on start
+## (App.current_board_path), and runs the board's game scene from the editor.
+
+const REQUEST_PATH := "user://playtest_request.cfg"
+const GAME_SCENES := {
+	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
+	"maze": "res://scenes/maze/maze_game.tscn",
+}
+
+
+## Writes the request file for `level`; returns "" or a sentence saying what went wrong.
+static func write_request(level: BoardLevel) -> String:
+	if level == null:
+		return "Play-test: there is no board to play."
+	var path := level.resource_path
+	if path.is_empty() or path.contains("::"):
+		return "Play-test: save the board as its own .tres file first (it is built into the scene)."
+	var error := ResourceSaver.save(level, path)
+	if error != OK:
+		return "Play-test: could not save %s (%s)." % [path, error_string(error)]
+	var request := ConfigFile.new()
+	request.set_value("playtest", "board", path)
+	request.set_value("playtest", "kind", BoardLevel.kind_name(level.kind))
+	error = request.save(REQUEST_PATH)
+	if error != OK:
+		return "Play-test: could not write %s (%s)." % [REQUEST_PATH, error_string(error)]
+	return ""
+
+
+## Saves, writes the request and plays the board's game; "" or what went wrong.
+static func run(level: BoardLevel) -> String:
+	var problem := write_request(level)
+	if not problem.is_empty():
+		return problem
+	var scene: String = GAME_SCENES[BoardLevel.kind_name(level.kind)]
+	if not ResourceLoader.exists(scene):
+		return "Play-test: the game scene %s is missing." % scene
+	EditorInterface.play_custom_scene(scene)
+	return ""

@@ -1,0 +1,50 @@
+@tool
+extends RefCounted
+## The board editor's keyboard shortcuts. Editor plugins cannot use the game's input map,
+## so the editor keys live here, in one table, shown in every tooltip. Undo and redo are
+## the editor's own Ctrl+Z / Ctrl+Shift+Z.
+
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+
+## Tool -> [key, name, tooltip].
+const TOOLS := {
+	Session.Tool.SELECT:
+	[KEY_V, "Select", "Click to pick, drag a box, shift adds, ctrl toggles; drag to move."],
+	Session.Tool.PIN: [KEY_P, "Pin", "Click to place a pin."],
+	Session.Tool.PATTERN:
+	[KEY_T, "Pattern", "Click to stamp a row, lattice, arc or circle of pins (set in the dock)."],
+	Session.Tool.POCKET:
+	[KEY_K, "Pocket", "Click to add a pocket: rim pins and special pin, sized in the dock."],
+	Session.Tool.WALL: [KEY_W, "Wall", "Click-drag a wall; snapped to the maze grid or free."],
+	Session.Tool.HOLE: [KEY_H, "Black hole", "Click to place a black hole (hard mode)."],
+	Session.Tool.GOAL: [KEY_G, "Goal", "Click to move the goal; resize it with the handles tool."],
+	Session.Tool.START: [KEY_B, "Ball start", "Click to add a ball start (one ball each)."],
+	Session.Tool.HANDLES:
+	[KEY_R, "Handles", "Drag the ring, launch rail and gutter handles, or the goal's radius."],
+	Session.Tool.ERASE: [KEY_E, "Erase", "Click a pin, pocket, wall, hole or start to delete it."],
+}
+## Toggles.
+const SNAP_KEY := KEY_N
+const MIRROR_KEY := KEY_M
+
+
+## "Name (Key)" for a tool.
+static func label(tool: int) -> String:
+	var entry: Array = TOOLS[tool]
+	return "%s (%s)" % [entry[1], OS.get_keycode_string(entry[0])]
+
+
+## The tooltip text for a tool.
+static func tooltip(tool: int) -> String:
+	var entry: Array = TOOLS[tool]
+	return "%s\n%s" % [label(tool), entry[2]]
+
+
+## The tool a plain key press selects, or -1.
+static func tool_for(event: InputEventKey) -> int:
+	if event.ctrl_pressed or event.alt_pressed or event.meta_pressed or event.shift_pressed:
+		return -1
+	for tool: int in TOOLS:
+		if (TOOLS[tool] as Array)[0] == event.keycode:
+			return tool
+	return -1

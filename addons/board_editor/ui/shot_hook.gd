@@ -1,0 +1,130 @@
+@tool
+extends Node
+## Screenshot hook for tools/editor_shots.sh. When the editor starts with
+## BOARD_EDITOR_SHOT="<scene.tscn>;<tool>;<out.png>" it opens the scene, selects its
+## BoardNode, shows a tool in use, saves the editor window as a PNG and quits.
+## Tools: "pattern" (pachinko: a lattice ghost and a selected pocket) or "wall" (maze:
+## a wall being dragged in mirror mode).
+
+const ENV := "BOARD_EDITOR_SHOT"
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+
+var _plugin: EditorPlugin
+
+
+func _init(plugin: EditorPlugin) -> void:
+	_plugin = plugin
+
+
+## True when the editor was started to take a screenshot.
+static func requested() -> bool:
+	return not OS.get_environment(ENV).is_empty()
+
+
+func _ready() -> void:
+	_run.call_deferred()
+
+
+func _run() -> void:
+	var parts := OS.get_environment(ENV).split(";")
+	if parts.size() != 3:
+		push_error("%s must be '<scene>;<tool>;<png>', got '%s'." % [ENV, ";".join(parts)])
+		get_tree().quit(1)
+		return
+	# The editor only redraws on changes; a screenshot needs frames drawn on demand.
+	OS.low_processor_usage_mode = false
+	# Never hang the caller: give up after two minutes whatever happens.
+	get_tree().create_timer(120.0).timeout.connect(get_tree().quit.bind(1))
+	await _frames(60)
+	if not ResourceLoader.exists(parts[0]):
+		push_error("Editor shot: no scene %s." % parts[0])
+		get_tree().quit(1)
+		return
+	EditorInterface.open_scene_from_path(parts[0])
+	await _frames(20)
+	var root := EditorInterface.get_edited_scene_root()
+	var node: Node = root
+	if root != null and not root is BoardNode:
+		node = root.find_children("*", "BoardNode", true, false).front()
+	if not node is BoardNode:
+		push_error("Editor shot: %s has no BoardNode." % parts[0])
+		get_tree().quit(1)
+		return
+	EditorInterface.set_main_screen_editor("2D")
+	EditorInterface.get_selection().clear()
+	EditorInterface.get_selection().add_node(node)
+	EditorInterface.edit_node(node)
+	await _frames(20)
+	_stage(parts[1])
+	_frame_board(node as BoardNode)
+	_plugin.update_overlays()
+	await _frames(20)
+	await RenderingServer.frame_post_draw
+	var image := EditorInterface.get_base_control().get_viewport().get_texture().get_image()
+	var error := image.save_png(parts[2])
+	print("editor shot: wrote %s (%s)" % [parts[2], error_string(error)])
+	get_tree().quit(0 if error == OK else 1)
+
+
+# Puts the editor in a state that shows the tool at work.
+func _stage(tool_name: String) -> void:
+	var session: Session = _plugin.call("get_session")
+	var input: RefCounted = _plugin.call("get_board_input")
+	if session == null:
+		push_error("Editor shot: the board editor did not take the node.")
+		return
+	var level := session.level
+	if tool_name == "wall":
+		session.set_mirror(true)
+		session.set_tool(Session.Tool.WALL)
+		var cell := level.path_width + level.wall_width
+		var tool: RefCounted = input.call("active_tool")
+		var press := InputEventMouseButton.new()
+		press.button_index = MOUSE_BUTTON_LEFT
+		press.pressed = true
+		tool.call("press", Vector2(2, 3) * cell, press)
+		tool.call("motion", Vector2(4.2, 3) * cell, InputEventMouseMotion.new())
+		session.select([Items.make(Items.Kind.HOLE, 0)] as Array[Vector2i])
+	else:
+		session.set_tool(Session.Tool.PATTERN)
+		session.pattern["kind"] = "arc"
+		session.pattern["count"] = 7
+		session.pattern["radius"] = 60.0
+		var tool: RefCounted = input.call("active_tool")
+		tool.set("hover", level.ring_center + Vector2(-120, -150))
+		if not level.pockets.is_empty():
+			session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+	session.settings_changed.emit()
+
+
+# Zooms the 2D view out until the whole board fits and centres it. The 2D editor offers no
+# plugin API for this, so it uses the canvas editor's own zoom widget and `center_at`.
+func _frame_board(node: BoardNode) -> void:
+	var base := EditorInterface.get_base_control()
+	var editors := base.find_children("*", "CanvasItemEditor", true, false)
+	if editors.is_empty() or node.level == null:
+		return
+	var editor: Node = editors[0]
+	var zooms := editor.find_children("*", "EditorZoomWidget", true, false)
+	var view_size := EditorInterface.get_editor_viewport_2d().get_visible_rect().size
+	var board := node.level.size + Vector2.ONE * 40.0
+	if not zooms.is_empty():
+		var zoom: Node = zooms[0]
+		for i in 8:
+			var now := float(zoom.call("get_zoom"))
+			if board.x * now <= view_size.x and board.y * now <= view_size.y:
+				break
+			zoom.call("set_zoom_by_increments", -1, false)
+		for i in 8:
+			zoom.call("set_zoom_by_increments", 1, false)
+			var now := float(zoom.call("get_zoom"))
+			if board.x * now > view_size.x or board.y * now > view_size.y:
+				zoom.call("set_zoom_by_increments", -1, false)
+				break
+	editor.call("center_at", node.global_position + node.level.size * 0.5)
+
+
+func _frames(count: int) -> void:
+	for i in count:
+		await get_tree().process_frame

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Screenshots of the board editor in use: opens the Godot editor under Xvfb on a board
+# scene, selects its BoardNode, puts a tool to work (the plugin's shot hook, see
+# addons/board_editor/ui/shot_hook.gd), saves the editor window as a PNG and quits.
+#   tools/editor_shots.sh                       both shots into build/shots/
+#   SIZE=1920x1080 tools/editor_shots.sh        another window size
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT"
+SIZE=${SIZE:-1600x900}
+PACHINKO_SCENE=${PACHINKO_SCENE:-res://scenes/boards/pachinko_tulips.tscn}
+MAZE_SCENE=${MAZE_SCENE:-res://scenes/boards/maze_catacombs.tscn}
+mkdir -p build/shots
+
+shoot() {
+	local scene=$1 tool=$2 out=$3 log
+	log=build/editor-shot-${tool}.log
+	rm -f "build/shots/$out"
+	GODOT_PICTURES=1 BOARD_EDITOR_SHOT="$scene;$tool;res://build/shots/$out" timeout 240 \
+		xvfb-run -a -s "-screen 0 ${SIZE}x24" tools/godot.sh --editor \
+		--rendering-driver opengl3 --resolution "$SIZE" --path . >"$log" 2>&1 || true
+	if [ ! -f "build/shots/$out" ]; then
+		echo "editor_shots: no build/shots/$out (log: $log)" >&2
+		grep -E 'SCRIPT ERROR|Editor shot|editor shot' "$log" | head -20 >&2
+		return 1
+	fi
+	echo "editor_shots: wrote build/shots/$out"
+}
+
+shoot "$PACHINKO_SCENE" pattern editor_pachinko.png
+shoot "$MAZE_SCENE" wall editor_maze.png

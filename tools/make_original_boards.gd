@@ -1,0 +1,203 @@
+extends SceneTree
+## Builds the four original boards with the board editor's own actions (the operations its
+## tools commit: pin patterns, pocket stamps, walls, erase, mirror mode) on a fresh
+## BoardLevel, checks each with BoardValidator, and saves it with its level scene:
+##   tools/godot.sh --headless --path . -s res://tools/make_original_boards.gd
+## pachinko/tulips: a dense lattice with tulip clusters (pockets flanked by petal arcs).
+## pachinko/windmills: an open board of pin rows, windmill circles and a few rich pockets.
+## maze/catacombs: 14 x 12 twisting corridors with black holes in the dead ends.
+## maze/courtyards: wide square rings round the goal with chicanes, built in mirror mode.
+
+const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const SetProperties := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
+const PocketAction := preload("res://addons/board_editor/actions/pocket_action.gd")
+const WallAction := preload("res://addons/board_editor/actions/wall_action.gd")
+const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
+const DeleteItems := preload("res://addons/board_editor/actions/delete_items_action.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const MazeCarver := preload("res://tools/make_original_mazes.gd")
+
+const CENTER := 350.0
+
+
+func _initialize() -> void:
+	var ok := true
+	for board: BoardLevel in [make_tulips(), make_windmills()]:
+		ok = _save(board) and ok
+	for board: BoardLevel in [MazeCarver.make_catacombs(), MazeCarver.make_courtyards()]:
+		ok = _save(board) and ok
+	quit(0 if ok else 1)
+
+
+## Tulip Garden: a dense staggered lattice; each pocket sits in a cleared bed with two
+## three-pin petal arcs beside its mouth that turn passing balls into it.
+static func make_tulips() -> BoardLevel:
+	var history := ActionHistory.new()
+	var level := pachinko_base(
+		history,
+		"tulips",
+		"Tulip Garden",
+		"A dense field of pins with tulip pockets: petals beside each mouth steer balls in."
+	)
+	var axis := CENTER
+	history.commit(PatternAction.new(level, _lattice(27, 22.0, 31), Vector2(CENTER, CENTER)))
+	erase_pins_outside_field(history, level, 22.0)
+	# [mouth, payout]; all but the centre one are mirrored to the right half.
+	var tulips := [[Vector2(350, 280), 15], [Vector2(220, 240), 5], [Vector2(190, 420), 4]]
+	tulips += [[Vector2(280, 470), 8], [Vector2(350, 590), 3]]
+	for tulip: Array in tulips:
+		var mouth: Vector2 = tulip[0]
+		erase_pins_in(history, level, Rect2(mouth - Vector2(40, 34), Vector2(80, 78)), axis)
+		history.commit(PocketAction.new(level, mouth, 22.0, 24.0, tulip[1], axis))
+		# Petals: two pins up and out from each side of the mouth, placed with the pin tool
+		# in mirror mode; a ball's width apart from the rim so none sticks between them.
+		var petals := Items.empty_set()
+		for side in [-1.0, 1.0]:
+			var edge := mouth + Vector2(side * 11.0, 0.0)
+			petals["pins"].append(edge + Vector2(side * 8.0, -11.0))
+			petals["pins"].append(edge + Vector2(side * 16.0, -22.0))
+		history.commit(AddItems.new(level, Mirror.mirror_set(petals, axis), "Add pin"))
+	return level
+
+
+## Windmills: staggered rows of pins with wide gaps, pin circles that spin balls sideways,
+## and three rich pockets under umbrella arcs.
+static func make_windmills() -> BoardLevel:
+	var history := ActionHistory.new()
+	var level := pachinko_base(
+		history,
+		"windmills",
+		"Windmills",
+		"An open board: balls ricochet off pin windmills towards three rich pockets."
+	)
+	var axis := CENTER
+	for row in 13:
+		var row_pattern := {"kind": "row", "count": 17 - row % 2, "spacing": 34.0}
+		var x := CENTER + (17.0 if row % 2 == 1 else 0.0)
+		history.commit(PatternAction.new(level, row_pattern, Vector2(x, 130.0 + row * 36.0)))
+	erase_pins_outside_field(history, level, 22.0)
+	var windmill := {"kind": "circle", "count": 6, "spacing": 16.0}
+	for spot in [Vector2(350, 200), Vector2(230, 330), Vector2(130, 450), Vector2(260, 540)]:
+		erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), axis)
+		history.commit(PatternAction.new(level, windmill, spot, axis))
+		var hub := Items.empty_set()
+		hub["pins"] = PackedVector2Array([spot])
+		history.commit(AddItems.new(level, hub, "Add pin"))
+	for pocket: Array in [[Vector2(350, 390), 20], [Vector2(220, 560), 8]]:
+		var mouth: Vector2 = pocket[0]
+		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
+		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
+		var umbrella := {"kind": "arc", "count": 5, "spacing": 14.0, "radius": 28.0}
+		history.commit(PatternAction.new(level, umbrella, mouth + Vector2(-40, -10), axis))
+	return level
+
+
+## A fresh pachinko board with the classic machine's ring, rail and gutter.
+static func pachinko_base(
+	history: ActionHistory, id: String, title: String, blurb: String
+) -> BoardLevel:
+	var level := BoardLevel.new()
+	var settings := {
+		"kind": BoardLevel.Kind.PACHINKO,
+		"board_id": "pachinko_" + id,
+		"display_name": title,
+		"description": blurb,
+		"size": Vector2(700, 700),
+		"ball_radius": 5.0,
+		"tuning": PhysicsTuning.pachinko_defaults(),
+		"ring_center": Vector2(CENTER, CENTER),
+		"ring_radius": 330.0,
+		"rail_width": 20.0,
+		"rail_start_deg": 40.0,
+		"rail_end_deg": -105.0,
+		"gutter_start_deg": 60.0,
+		"gutter_end_deg": 120.0,
+		"gutter_bounces": 6,
+		"pin_radius": 1.5,
+		"cup_start_balls": 25,
+	}
+	history.commit(SetProperties.new(level, settings, "Board settings"))
+	return level
+
+
+## Erases the field pins farther out than the launch rail's guide arc less `margin`.
+static func erase_pins_outside_field(
+	history: ActionHistory, level: BoardLevel, margin: float
+) -> void:
+	var field := LaunchRail.guide_radius(level) - margin
+	var doomed: Array[Vector2i] = []
+	for i in level.pins.size():
+		if level.pin_pocket[i] < 0 and level.pins[i].distance_to(level.ring_center) > field:
+			doomed.append(Items.make(Items.Kind.PIN, i))
+	history.commit(DeleteItems.new(level, doomed))
+
+
+## Erases the field pins inside `rect` and inside its mirror image across `axis`.
+static func erase_pins_in(
+	history: ActionHistory, level: BoardLevel, rect: Rect2, axis: float
+) -> void:
+	var mirrored := Rect2(Vector2(2.0 * axis - rect.end.x, rect.position.y), rect.size)
+	var doomed: Array[Vector2i] = []
+	for i in level.pins.size():
+		var p := level.pins[i]
+		if level.pin_pocket[i] < 0 and (rect.has_point(p) or mirrored.has_point(p)):
+			doomed.append(Items.make(Items.Kind.PIN, i))
+	if not doomed.is_empty():
+		history.commit(DeleteItems.new(level, doomed))
+
+
+static func _lattice(count: int, spacing: float, rows: int) -> Dictionary:
+	return {"kind": "lattice", "count": count, "spacing": spacing, "rows": rows}
+
+
+## Validates, saves the level and writes its scene; false (and the reasons) on failure.
+static func _save(level: BoardLevel) -> bool:
+	var kind := BoardLevel.kind_name(level.kind)
+	var id := level.board_id.trim_prefix(kind + "_")
+	var errors := BoardValidator.errors(level)
+	var issues := BoardValidator.validate(level)
+	print(
+		(
+			"%s: %d errors, %d warnings"
+			% [level.board_id, errors.size(), issues.size() - errors.size()]
+		)
+	)
+	for issue in issues.slice(0, 12):
+		print("  %s" % issue)
+	if not errors.is_empty():
+		push_error("make_original_boards: %s has %d errors." % [level.board_id, errors.size()])
+		return false
+	var path := "res://levels/%s/%s.tres" % [kind, id]
+	var error := ResourceSaver.save(level, path)
+	if error != OK:
+		push_error("make_original_boards: could not write %s (%s)" % [path, error_string(error)])
+		return false
+	var node := BoardNode.new()
+	node.name = "Board"
+	node.level = load(path) as BoardLevel
+	var scene := PackedScene.new()
+	scene.pack(node)
+	var scene_path := "res://scenes/boards/%s_%s.tscn" % [kind, id]
+	error = ResourceSaver.save(scene, scene_path)
+	node.free()
+	if error != OK:
+		push_error(
+			"make_original_boards: could not write %s (%s)" % [scene_path, error_string(error)]
+		)
+		return false
+	print(
+		(
+			"wrote %s (%d pins, %d pockets, %d walls, %d holes) and %s"
+			% [
+				path,
+				level.pins.size(),
+				level.pockets.size(),
+				level.walls.size() / 2,
+				level.holes.size(),
+				scene_path
+			]
+		)
+	)
+	return true

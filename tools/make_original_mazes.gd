@@ -1,0 +1,225 @@
+extends RefCounted
+## The two original mazes for tools/make_original_boards.gd, built with the board editor's
+## actions (walls, black holes, ball starts, the goal; mirror mode for the courtyards).
+
+const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const SetProperties := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const WallAction := preload("res://addons/board_editor/actions/wall_action.gd")
+const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
+
+const CELL := 35.0
+const CATACOMBS_SEED := 20240611
+## Share of the carved maze's inner walls knocked out again.
+const OPENNESS := 0.3
+
+
+## Catacombs: 14 x 12 cells of twisting corridors carved from a fixed seed, a few loops so
+## no route is forced past a hole, a two-by-two goal room in the middle and black holes
+## waiting in the dead ends.
+static func make_catacombs() -> BoardLevel:
+	var history := ActionHistory.new()
+	var cols := 14
+	var rows := 12
+	var level := maze_base(
+		history,
+		"catacombs",
+		"Catacombs",
+		"Fourteen by twelve cells of winding passages; in hard mode the dead ends hold holes.",
+		Vector2i(cols, rows)
+	)
+	var rng := RandomNumberGenerator.new()
+	rng.seed = CATACOMBS_SEED
+	# Wall flags: horizontal[r][c] is the wall on grid line y = r above cell (c, r);
+	# vertical[c][r] the wall on grid line x = c left of cell (c, r).
+	var horizontal := _grid(rows + 1, cols)
+	var vertical := _grid(cols + 1, rows)
+	# The goal room: cells (6..7, 5..6) open into each other.
+	horizontal[6][6] = false
+	horizontal[6][7] = false
+	vertical[7][5] = false
+	vertical[7][6] = false
+	_carve(rng, cols, rows, horizontal, vertical)
+	# Knock out a share of the inner walls: loops let the four balls (which all roll the
+	# same way) find common routes, and no hole guards the only way through.
+	for r in range(1, rows):
+		for c in cols:
+			if rng.randf() < OPENNESS:
+				horizontal[r][c] = false
+	for c in range(1, cols):
+		for r in rows:
+			if rng.randf() < OPENNESS:
+				vertical[c][r] = false
+	for wall in _merged_walls(horizontal, vertical, cols, rows):
+		history.commit(WallAction.new(level, wall[0], wall[1]))
+	var starts := Items.empty_set()
+	starts["starts"] = _centres([Vector2i(0, 0), Vector2i(cols - 1, 0)])
+	history.commit(AddItems.new(level, Mirror.mirror_set(starts, level.size.x * 0.5)))
+	var bottom := Items.empty_set()
+	bottom["starts"] = _centres([Vector2i(0, rows - 1), Vector2i(cols - 1, rows - 1)])
+	history.commit(AddItems.new(level, bottom, "Add ball start"))
+	var holes := Items.empty_set()
+	holes["holes"] = _centres(_dead_ends(horizontal, vertical, cols, rows).slice(0, 10))
+	history.commit(AddItems.new(level, holes, "Add black hole"))
+	return level
+
+
+## Courtyards: three square rings round the goal, two cells apart, entered through gaps
+## that alternate top and bottom, with one-cell chicanes in the corridors. Every wall after
+## the border was drawn once on the left half in mirror mode.
+static func make_courtyards() -> BoardLevel:
+	var history := ActionHistory.new()
+	var level := maze_base(
+		history,
+		"courtyards",
+		"Courtyards",
+		"Wide square corridors spiral in to the goal; chicanes make you tilt with care.",
+		Vector2i(12, 12)
+	)
+	var axis := level.size.x * 0.5
+	# Border (the whole square; drawn in halves with mirror mode).
+	var left_half := [
+		[Vector2(0, 0), Vector2(6, 0)],
+		[Vector2(0, 0), Vector2(0, 12)],
+		[Vector2(0, 12), Vector2(6, 12)],
+		# Ring two: gap of two cells in the top middle.
+		[Vector2(2, 2), Vector2(5, 2)],
+		[Vector2(2, 2), Vector2(2, 10)],
+		[Vector2(2, 10), Vector2(6, 10)],
+		# Ring four: gap of two cells in the bottom middle.
+		[Vector2(4, 4), Vector2(6, 4)],
+		[Vector2(4, 4), Vector2(4, 8)],
+		[Vector2(4, 8), Vector2(5, 8)],
+		# Chicanes: one-cell stubs into the corridors, alternating sides.
+		[Vector2(0, 4), Vector2(1, 4)],
+		[Vector2(2, 7), Vector2(1, 7)],
+		[Vector2(3, 0), Vector2(3, 1)],
+		[Vector2(3, 12), Vector2(3, 11)],
+		[Vector2(2, 6), Vector2(3, 6)],
+		[Vector2(4, 2), Vector2(4, 3)],
+		[Vector2(4, 10), Vector2(4, 9)],
+	]
+	for wall: Array in left_half:
+		history.commit(WallAction.new(level, wall[0] * CELL, wall[1] * CELL, axis))
+	var starts := Items.empty_set()
+	starts["starts"] = _centres([Vector2i(0, 0), Vector2i(0, 11)])
+	history.commit(AddItems.new(level, Mirror.mirror_set(starts, axis), "Add ball start"))
+	var holes := Items.empty_set()
+	holes["holes"] = _centres([Vector2i(1, 2), Vector2i(0, 9), Vector2i(3, 4), Vector2i(5, 3)])
+	history.commit(AddItems.new(level, Mirror.mirror_set(holes, axis), "Add black hole"))
+	return level
+
+
+## A fresh maze board: the tutorial's corridor and wall sizes, goal in the middle.
+static func maze_base(
+	history: ActionHistory, id: String, title: String, blurb: String, cells: Vector2i
+) -> BoardLevel:
+	var level := BoardLevel.new()
+	var size := Vector2(cells) * CELL
+	var settings := {
+		"kind": BoardLevel.Kind.MAZE,
+		"board_id": "maze_" + id,
+		"display_name": title,
+		"description": blurb,
+		"size": size,
+		"ball_radius": 5.0,
+		"tuning": PhysicsTuning.maze_defaults(),
+		"grid_cols": cells.x,
+		"grid_rows": cells.y,
+		"path_width": 25.0,
+		"wall_width": 10.0,
+		"goal_center": size * 0.5,
+		"goal_radius": 32.5,
+		"hole_radius": 9.0,
+	}
+	history.commit(SetProperties.new(level, settings, "Board settings"))
+	return level
+
+
+# Depth-first carving from the goal room: a perfect maze over every cell.
+static func _carve(
+	rng: RandomNumberGenerator, cols: int, rows: int, horizontal: Array, vertical: Array
+) -> void:
+	var seen := {}
+	for room in [Vector2i(6, 5), Vector2i(7, 5), Vector2i(6, 6), Vector2i(7, 6)]:
+		seen[room] = true
+	var stack: Array[Vector2i] = [Vector2i(6, 5)]
+	var steps: Array[Vector2i] = [Vector2i.LEFT, Vector2i.RIGHT, Vector2i.UP, Vector2i.DOWN]
+	while not stack.is_empty():
+		var here: Vector2i = stack.back()
+		var options: Array[Vector2i] = []
+		for step in steps:
+			var next := here + step
+			if (
+				next.x >= 0
+				and next.y >= 0
+				and next.x < cols
+				and next.y < rows
+				and not seen.has(next)
+			):
+				options.append(next)
+		if options.is_empty():
+			stack.pop_back()
+			continue
+		var next: Vector2i = options[rng.randi_range(0, options.size() - 1)]
+		if next.x != here.x:
+			vertical[maxi(next.x, here.x)][here.y] = false
+		else:
+			horizontal[maxi(next.y, here.y)][here.x] = false
+		seen[next] = true
+		stack.append(next)
+
+
+# Runs of wall flags along each grid line, joined into as few walls as possible.
+static func _merged_walls(horizontal: Array, vertical: Array, cols: int, rows: int) -> Array:
+	var walls := []
+	for r in rows + 1:
+		var start := -1
+		for c in cols + 1:
+			var on: bool = c < cols and horizontal[r][c]
+			if on and start < 0:
+				start = c
+			elif not on and start >= 0:
+				walls.append([Vector2(start, r) * CELL, Vector2(c, r) * CELL])
+				start = -1
+	for c in cols + 1:
+		var start := -1
+		for r in rows + 1:
+			var on: bool = r < rows and vertical[c][r]
+			if on and start < 0:
+				start = r
+			elif not on and start >= 0:
+				walls.append([Vector2(c, start) * CELL, Vector2(c, r) * CELL])
+				start = -1
+	return walls
+
+
+# Cells closed on three sides, away from the corners where balls start.
+static func _dead_ends(horizontal: Array, vertical: Array, cols: int, rows: int) -> Array[Vector2i]:
+	var found: Array[Vector2i] = []
+	for r in rows:
+		for c in cols:
+			var closed := int(horizontal[r][c]) + int(horizontal[r + 1][c])
+			closed += int(vertical[c][r]) + int(vertical[c + 1][r])
+			var corner := (c <= 1 or c >= cols - 2) and (r <= 1 or r >= rows - 2)
+			if closed == 3 and not corner:
+				found.append(Vector2i(c, r))
+	return found
+
+
+static func _grid(lines: int, cells: int) -> Array:
+	var grid := []
+	for i in lines:
+		var line := []
+		line.resize(cells)
+		line.fill(true)
+		grid.append(line)
+	return grid
+
+
+static func _centres(cells: Array) -> PackedVector2Array:
+	var points := PackedVector2Array()
+	for cell: Vector2i in cells:
+		points.append((Vector2(cell) + Vector2(0.5, 0.5)) * CELL)
+	return points
