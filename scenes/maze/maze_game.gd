@@ -72,6 +72,7 @@ func _process(delta: float) -> void:
 		return
 	var keys := Input.get_vector("tilt_left", "tilt_right", "tilt_up", "tilt_down")
 	var accel := Input.get_accelerometer()
+	mixer.observe(accel)
 	_calibrate.visible = mixer.has_accelerometer()
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()

@@ -26,6 +26,9 @@ const MOVE_TIMEOUT := 5.0
 const PACK_RADIUS := 24.0
 ## A herded pack this spread out has split: gather again.
 const HERD_GIVE_UP_SPREAD := 45.0
+## A herded pack whose centre moved less than STALL_DRIFT px in STALL_SECONDS is stuck.
+const STALL_SECONDS := 1.0
+const STALL_DRIFT := 2.0
 ## Seconds the pack may sit in the goal without winning before it is gathered again.
 const GOAL_PATIENCE := 3.0
 ## Re-plans allowed before the pilot falls back to steering single balls.
@@ -57,6 +60,7 @@ var _move_start := PackedInt32Array()
 var _herd_failures := {}
 var _herd_cell := -1
 var _herd_time := 0.0
+var _herd_mark := Vector2.ZERO
 var _goal_time := 0.0
 
 
@@ -173,6 +177,7 @@ func _begin_herd(positions: PackedVector2Array) -> void:
 	_herd_cell = _pack_cell(positions)
 	_herd_time = 0.0
 	_goal_time = 0.0
+	_herd_mark = Vector2(INF, INF)
 
 
 # The cell under the middle of the balls.
@@ -208,10 +213,15 @@ func _herd(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vec
 	_herd_time += _dt
 	if near_goal:
 		_goal_time += _dt
+	var stalled := false
+	if _herd_time >= STALL_SECONDS:
+		stalled = centre.distance_to(_herd_mark) < STALL_DRIFT and not near_goal
+		_herd_mark = centre
+		_herd_time = 0.0
 	var split := MazeSteering.spread(positions) > HERD_GIVE_UP_SPREAD and not near_goal
-	if split or _goal_time > GOAL_PATIENCE:
-		# The pack split on the way, or sits in the goal too spread out to fit: gather again,
-		# and after two failures from the same cell never herd from there again.
+	if split or stalled or _goal_time > GOAL_PATIENCE:
+		# The pack split or stuck on the way, or sits in the goal too spread out to fit:
+		# gather again, and after two failures from one cell never herd from there again.
 		var failures: int = _herd_failures.get(_herd_cell, 0) + 1
 		_herd_failures[_herd_cell] = failures
 		if failures >= 2:

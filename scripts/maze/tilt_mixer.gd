@@ -48,6 +48,12 @@ func update(delta: float, keys: Vector2, accel: Vector3) -> Vector2:
 	return tilt
 
 
+## Records an accelerometer reading without moving the tilt (while the game waits), so the
+## calibrate button knows whether the device has one.
+func observe(accel: Vector3) -> void:
+	_last_accel = accel
+
+
 ## True when the last reading came from a real accelerometer.
 func has_accelerometer() -> bool:
 	return _last_accel.length() > MIN_ACCEL
