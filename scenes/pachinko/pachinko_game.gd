@@ -8,6 +8,7 @@ const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const PachinkoShots := preload("res://scenes/pachinko/pachinko_shots.gd")
+const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -20,7 +21,7 @@ var _level: BoardLevel
 var _controls := PachinkoInput.new()
 var _stats_refresh := 0.0
 
-@onready var board_view: Node2D = $BoardView
+@onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
 @onready var cup: Control = $Hud/Column/Cup
 @onready var launcher: Control = $Hud/Column/Launcher
@@ -99,7 +100,7 @@ func _new_rules() -> void:
 	rules.game_ended.connect(_on_game_ended)
 	rules.world.pin_hit.connect(_on_pin_hit)
 	rules.world.ring_hit.connect(_on_ring_hit)
-	board_view.call("bind", rules)
+	board_view.bind(rules)
 	title.text = "Pachinko · %s" % _level.display_name
 	cup.call("set_count", 0)
 	launcher.call("set_power", 0.0, 0.0)
@@ -148,7 +149,7 @@ func _layout() -> void:
 	var area := Rect2(
 		Vector2(MARGIN, MARGIN), Vector2(hud_left - MARGIN * 2.0, view.y - MARGIN * 2.0)
 	)
-	board_view.call("fit", _level, area)
+	board_view.fit(_level, area)
 	instructions.position = area.position
 	instructions.size = area.size
 

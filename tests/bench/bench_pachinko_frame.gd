@@ -88,11 +88,17 @@ func _finish() -> void:
 	var total_mean: float = sim["mean"] + draw["mean"]
 	var total_p95: float = sim["p95"] + draw["p95"]
 	var balls := _stats_int(_counts)
+	var speed_sum := 0.0
+	for v in _rules.world.get_velocities():
+		speed_sum += v.length()
+	var mean_speed := speed_sum / maxf(_rules.world.ball_count(), 1.0)
 	var result := {
 		"bench": "pachinko_frame",
 		"board": _rules.level.board_id,
 		"balls_target": BALLS,
 		"balls_in_play_mean": balls,
+		"balls_drawn_last_frame": int(_balls.get("last_drawn")),
+		"mean_ball_speed_px_s": snappedf(mean_speed, 0.1),
 		"frames": _sim_ms.size(),
 		"steps_per_frame": roundi(_rules.world.tuning.fixed_hz * FRAME_SECONDS),
 		"sim_ms": sim,

@@ -2,15 +2,32 @@ extends Node2D
 ## The board in layers, bottom to top as in the chapter: back plate, fascia art, ring
 ## border, launch path, gutter, pins, balls, pocket art, effects. `bind()` hands each layer
 ## the board; `fit()` scales the whole board into a rectangle of the screen.
+##
+## The layers that never change (plate, fascia, ring, rail, gutter slot, pins) are drawn
+## once into an off-screen viewport at the board's on-screen resolution and shown as one
+## texture, so a frame only draws that texture, the balls, the pockets and the effects.
 
 const FASCIA_SIZE := 1000.0
+## How far the plate reaches beyond the ring, as a share of the ring radius.
+const PLATE_REACH := 1.1
+## Extra room around the plate for its shadow, in board pixels.
+const PLATE_MARGIN := 12.0
+## The bake never exceeds this many pixels a side.
+const MAX_BAKE := 4096
 
-@onready var backplate: Node2D = $Backplate
-@onready var fascia: Sprite2D = $Fascia
-@onready var ring_border: Node2D = $RingBorder
-@onready var launch_path: Node2D = $LaunchPath
-@onready var gutter: Node2D = $Gutter
-@onready var pins: Node2D = $Pins
+var _level: BoardLevel
+var _bake_scale := 0.0
+
+@onready var bake: SubViewport = $Bake
+@onready var static_root: Node2D = $Bake/Static
+@onready var baked: Sprite2D = $Baked
+@onready var backplate: Node2D = $Bake/Static/Backplate
+@onready var fascia: Sprite2D = $Bake/Static/Fascia
+@onready var ring_border: Node2D = $Bake/Static/RingBorder
+@onready var launch_path: Node2D = $Bake/Static/LaunchPath
+@onready var gutter_slot: Node2D = $Bake/Static/Gutter
+@onready var pins: Node2D = $Bake/Static/Pins
+@onready var gutter: Node2D = $GutterFlash
 @onready var balls: Node2D = $Balls
 @onready var pockets: Node2D = $Pockets
 @onready var effects: Node2D = $Effects
@@ -19,25 +36,67 @@ const FASCIA_SIZE := 1000.0
 ## Shows the board and balls of `rules`.
 func bind(rules: PachinkoRules) -> void:
 	var level := rules.level
-	backplate.call("setup", level)
-	ring_border.call("setup", level)
-	launch_path.call("setup", level)
-	gutter.call("setup", level)
-	pins.call("setup", level)
-	pockets.call("setup", level)
+	_level = level
+	for layer: Node2D in [backplate, ring_border, launch_path, gutter_slot, pins, gutter, pockets]:
+		layer.call("setup", level)
 	balls.call("bind", rules)
 	fascia.position = level.ring_center
 	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
+	_bake_scale = 0.0
+	_rebake()
 
 
 ## Scales and places the board so its plate fills `area` (screen pixels), centred.
 func fit(level: BoardLevel, area: Rect2) -> void:
-	var half := level.ring_radius * 1.1 + 12.0
+	var half := level.ring_radius * PLATE_REACH + PLATE_MARGIN
 	var board_scale := minf(area.size.x, area.size.y) / (half * 2.0)
 	scale = Vector2.ONE * board_scale
 	position = area.get_center() - level.ring_center * board_scale
+	_rebake()
 
 
 ## Board coordinates of a screen point.
 func to_board(screen: Vector2) -> Vector2:
 	return (screen - position) / scale.x
+
+
+## The board rectangle the bake covers (plate, shadow and margin), in board pixels.
+func bake_rect() -> Rect2:
+	if _level == null:
+		return Rect2()
+	var half := _level.ring_radius * PLATE_REACH + PLATE_MARGIN + 12.0
+	return Rect2(_level.ring_center - Vector2(half, half), Vector2(half, half) * 2.0)
+
+
+# Redraws the static layers into the bake at one texel per screen pixel.
+func _rebake() -> void:
+	if _level == null or not is_inside_tree():
+		return
+	if baked.texture == null:
+		baked.texture = bake.get_texture()
+	var screen_scale := scale.x * _stretch_scale()
+	var rect := bake_rect()
+	var side := rect.size.x * screen_scale
+	if side > MAX_BAKE:
+		screen_scale *= MAX_BAKE / side
+	if is_equal_approx(screen_scale, _bake_scale):
+		return
+	_bake_scale = screen_scale
+	bake.size = Vector2i(ceili(rect.size.x * screen_scale), ceili(rect.size.y * screen_scale))
+	static_root.scale = Vector2.ONE * screen_scale
+	static_root.position = -rect.position * screen_scale
+	baked.position = rect.position
+	baked.scale = Vector2.ONE / screen_scale
+	bake.render_target_update_mode = SubViewport.UPDATE_ONCE
+
+
+# Window pixels per viewport pixel (the canvas_items stretch).
+func _stretch_scale() -> float:
+	var viewport := get_viewport()
+	if viewport == null:
+		return 1.0
+	var visible := viewport.get_visible_rect().size
+	var window := Vector2(viewport.get_window().size) if viewport.get_window() != null else visible
+	if visible.y <= 0.0:
+		return 1.0
+	return maxf(window.y / visible.y, 0.25)

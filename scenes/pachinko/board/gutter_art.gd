@@ -4,6 +4,9 @@ extends Node2D
 
 const SLOT := Color("07040d")
 
+## Draw only the flash (the overlay above the baked board); otherwise only the slot.
+@export var flash_only := false
+
 var _level: BoardLevel
 var _flash := 0.0
 
@@ -38,15 +41,16 @@ func _draw() -> void:
 	var r := _level.ring_radius
 	var from := deg_to_rad(_level.gutter_start_deg)
 	var to := deg_to_rad(_level.gutter_end_deg)
+	if flash_only:
+		if _flash > 0.0:
+			draw_arc(c, r + 2.0, from, to, 32, Color(1.0, 0.35, 0.2, 0.75 * _flash), 6.0, true)
+		return
 	# A dark wedge of field just above the slot, fading inwards.
 	for i in 5:
 		var depth := 10.0 + 9.0 * i
 		draw_arc(c, r - depth * 0.5, from, to, 32, Color(0, 0, 0, 0.13), depth, true)
 	# The slot itself cuts through the ring band.
 	draw_arc(c, r + 11.0, from, to, 32, SLOT, 26.0, true)
-	var glow := Color(1.0, 0.35, 0.2, 0.75 * _flash)
-	if _flash > 0.0:
-		draw_arc(c, r + 2.0, from, to, 32, glow, 6.0, true)
 	# Grille bars across the slot so it reads as an opening, not a stain.
 	var bars := 7
 	for i in bars + 1:
