@@ -20,6 +20,16 @@ const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const MazeCarver := preload("res://tools/make_original_mazes.gd")
 
 const CENTER := 350.0
+## A level scene: one BoardNode showing the board file.
+const SCENE_TEXT := """[gd_scene load_steps=3 format=3]
+
+[ext_resource type="Script" path="res://scripts/board/board_node.gd" id="1_node"]
+[ext_resource type="Resource" path="%s" id="2_level"]
+
+[node name="Board" type="Node2D"]
+script = ExtResource("1_node")
+level = ExtResource("2_level")
+"""
 
 
 func _initialize() -> void:
@@ -53,11 +63,13 @@ static func make_tulips() -> BoardLevel:
 		history.commit(PocketAction.new(level, mouth, 22.0, 24.0, tulip[1], axis))
 		# Petals: two pins up and out from each side of the mouth, placed with the pin tool
 		# in mirror mode; a ball's width apart from the rim so none sticks between them.
-		var petals := Items.empty_set()
+		var petal_pins := PackedVector2Array()
 		for side in [-1.0, 1.0]:
 			var edge := mouth + Vector2(side * 11.0, 0.0)
-			petals["pins"].append(edge + Vector2(side * 8.0, -11.0))
-			petals["pins"].append(edge + Vector2(side * 16.0, -22.0))
+			petal_pins.append(edge + Vector2(side * 8.0, -11.0))
+			petal_pins.append(edge + Vector2(side * 16.0, -22.0))
+		var petals := Items.empty_set()
+		petals["pins"] = petal_pins
 		history.commit(AddItems.new(level, Mirror.mirror_set(petals, axis), "Add pin"))
 	return level
 
@@ -174,19 +186,15 @@ static func _save(level: BoardLevel) -> bool:
 	if error != OK:
 		push_error("make_original_boards: could not write %s (%s)" % [path, error_string(error)])
 		return false
-	var node := BoardNode.new()
-	node.name = "Board"
-	node.level = load(path) as BoardLevel
-	var scene := PackedScene.new()
-	scene.pack(node)
 	var scene_path := "res://scenes/boards/%s_%s.tscn" % [kind, id]
-	error = ResourceSaver.save(scene, scene_path)
-	node.free()
-	if error != OK:
-		push_error(
-			"make_original_boards: could not write %s (%s)" % [scene_path, error_string(error)]
-		)
+	var scene := FileAccess.open(scene_path, FileAccess.WRITE)
+	if scene == null:
+		var problem := error_string(FileAccess.get_open_error())
+		push_error("make_original_boards: could not write %s (%s)" % [scene_path, problem])
 		return false
+	# Written as text so rebuilding the boards leaves unchanged scenes byte for byte.
+	scene.store_string(SCENE_TEXT % path)
+	scene.close()
 	print(
 		(
 			"wrote %s (%d pins, %d pockets, %d walls, %d holes) and %s"

@@ -12,6 +12,7 @@ const BoardToolbar := preload("res://addons/board_editor/ui/board_toolbar.gd")
 const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const ShotHook := preload("res://addons/board_editor/ui/shot_hook.gd")
+const SelfCheck := preload("res://addons/board_editor/ui/self_check.gd")
 
 var _node: BoardNode
 var _session: Session
@@ -32,10 +33,12 @@ func _enter_tree() -> void:
 	add_control_to_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
 	_dock = BoardDock.new()
 	_dock.play_test_requested.connect(_play_test)
-	_dock.issue_focused.connect(_on_issue_focused)
+	_dock.issue_focused.connect(focus_issue)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
 	if ShotHook.requested():
 		add_child(ShotHook.new(self))
+	if SelfCheck.requested():
+		add_child(SelfCheck.new(self))
 
 
 func _exit_tree() -> void:
@@ -117,6 +120,13 @@ func get_board_input() -> BoardInput:
 	return _input
 
 
+## Marks problem `index` on the board (with its message) and in the dock's list.
+func focus_issue(index: int) -> void:
+	_focused_issue = index
+	_dock.select_issue(index)
+	update_overlays()
+
+
 ## True for the node this plugin edits.
 static func is_board_node(object: Object) -> bool:
 	return object is BoardNode
@@ -181,11 +191,6 @@ func _on_selection_changed() -> void:
 
 func _on_settings_changed() -> void:
 	_toolbar.refresh()
-	update_overlays()
-
-
-func _on_issue_focused(index: int) -> void:
-	_focused_issue = index
 	update_overlays()
 
 

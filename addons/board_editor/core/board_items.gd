@@ -76,27 +76,31 @@ static func pocket_pins(level: BoardLevel, pocket_index: int) -> PackedInt32Arra
 ## A copy of the selected items as plain data, positions relative to `origin`, for the
 ## clipboard and for duplicating: {pins, walls, holes, starts, pockets}.
 static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) -> Dictionary:
-	var data := empty_set()
+	# Local arrays, stored at the end: a packed array taken out of a Dictionary is a copy.
+	var pins := PackedVector2Array()
+	var walls := PackedVector2Array()
+	var holes := PackedVector2Array()
+	var starts := PackedVector2Array()
+	var pockets: Array = []
 	for item in items:
 		if not is_valid(level, item):
 			continue
 		match item.x:
 			Kind.PIN:
-				(data["pins"] as PackedVector2Array).append(level.pins[item.y] - origin)
+				pins.append(level.pins[item.y] - origin)
 			Kind.WALL:
-				var walls: PackedVector2Array = data["walls"]
 				walls.append(level.walls[item.y * 2] - origin)
 				walls.append(level.walls[item.y * 2 + 1] - origin)
 			Kind.HOLE:
-				(data["holes"] as PackedVector2Array).append(level.holes[item.y] - origin)
+				holes.append(level.holes[item.y] - origin)
 			Kind.START:
-				(data["starts"] as PackedVector2Array).append(level.ball_starts[item.y] - origin)
+				starts.append(level.ball_starts[item.y] - origin)
 			Kind.POCKET:
 				var spec: PocketSpec = level.pockets[item.y]
-				(data["pockets"] as Array).append(
+				pockets.append(
 					PocketSpec.create(spec.position - origin, spec.width, spec.depth, spec.payout)
 				)
-	return data
+	return {"pins": pins, "walls": walls, "holes": holes, "starts": starts, "pockets": pockets}
 
 
 ## An empty item set: the shape `extract()` returns and the add action takes.

@@ -88,6 +88,14 @@ func refresh_options() -> void:
 	_options.refresh()
 
 
+## Highlights problem `index` in the list (-1: none).
+func select_issue(index: int) -> void:
+	if index >= 0 and index < _problems.item_count:
+		_problems.select(index)
+	else:
+		_problems.deselect_all()
+
+
 func _show_issues(issues: Array[BoardIssue]) -> void:
 	var errors := 0
 	for issue in issues:

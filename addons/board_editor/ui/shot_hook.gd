@@ -9,6 +9,7 @@ extends Node
 const ENV := "BOARD_EDITOR_SHOT"
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
+const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 
 var _plugin: EditorPlugin
 
@@ -58,11 +59,15 @@ func _run() -> void:
 	await _frames(20)
 	_stage(parts[1])
 	_frame_board(node as BoardNode)
-	_plugin.update_overlays()
+	await _frames(5)
+	_plugin.call("focus_issue", 0)
 	await _frames(20)
 	await RenderingServer.frame_post_draw
 	var image := EditorInterface.get_base_control().get_viewport().get_texture().get_image()
 	var error := image.save_png(parts[2])
+	# Take the staged edit back so the board file is left as it was.
+	var manager := _plugin.get_undo_redo()
+	manager.get_history_undo_redo(manager.get_object_history_id(node)).undo()
 	print("editor shot: wrote %s (%s)" % [parts[2], error_string(error)])
 	get_tree().quit(0 if error == OK else 1)
 
@@ -85,7 +90,20 @@ func _stage(tool_name: String) -> void:
 		press.pressed = true
 		tool.call("press", Vector2(2, 3) * cell, press)
 		tool.call("motion", Vector2(4.2, 3) * cell, InputEventMouseMotion.new())
-		session.select([Items.make(Items.Kind.HOLE, 0)] as Array[Vector2i])
+		# A mistake for the validator to catch live: walls that shut in the first ball.
+		var start := level.ball_starts[0]
+		var corner := (start / cell).floor() * cell
+		var trap := Items.empty_set()
+		trap["walls"] = PackedVector2Array(
+			[
+				corner + Vector2(cell, 0),
+				corner + Vector2(cell, cell),
+				corner + Vector2(0, cell),
+				corner + Vector2(cell, cell)
+			]
+		)
+		session.commit(AddItemsAction.new(level, trap, "Add wall"))
+		session.select([Items.make(Items.Kind.WALL, level.walls.size() / 2 - 1)] as Array[Vector2i])
 	else:
 		session.set_tool(Session.Tool.PATTERN)
 		session.pattern["kind"] = "arc"
@@ -93,6 +111,10 @@ func _stage(tool_name: String) -> void:
 		session.pattern["radius"] = 60.0
 		var tool: RefCounted = input.call("active_tool")
 		tool.set("hover", level.ring_center + Vector2(-120, -150))
+		# A mistake for the validator to catch live: a pin dropped onto another.
+		var extra := Items.empty_set()
+		extra["pins"] = PackedVector2Array([level.pins[40] + Vector2(1.5, 0.5)])
+		session.commit(AddItemsAction.new(level, extra, "Add pin"))
 		if not level.pockets.is_empty():
 			session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
 	session.settings_changed.emit()

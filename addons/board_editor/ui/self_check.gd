@@ -1,0 +1,99 @@
+@tool
+extends Node
+## Editor self-check for tools/editor_self_check.sh. When the editor starts with
+## BOARD_EDITOR_SELF_CHECK="<scene.tscn>" it opens the scene, selects its BoardNode, adds a
+## thing through the plugin's undo path, undoes and redoes it through the scene's history,
+## saves the scene, reads the board file back from disk, prints the verdict and quits.
+
+const ENV := "BOARD_EDITOR_SELF_CHECK"
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+
+var _plugin: EditorPlugin
+var _problems := PackedStringArray()
+
+
+func _init(plugin: EditorPlugin) -> void:
+	_plugin = plugin
+
+
+## True when the editor was started for the self-check.
+static func requested() -> bool:
+	return not OS.get_environment(ENV).is_empty()
+
+
+func _ready() -> void:
+	_run.call_deferred()
+
+
+func _run() -> void:
+	get_tree().create_timer(120.0).timeout.connect(get_tree().quit.bind(1))
+	var scene := OS.get_environment(ENV)
+	await _frames(30)
+	EditorInterface.open_scene_from_path(scene)
+	await _frames(10)
+	var root := EditorInterface.get_edited_scene_root()
+	if not root is BoardNode:
+		_finish(["%s does not open with a BoardNode at its root." % scene])
+		return
+	EditorInterface.get_selection().clear()
+	EditorInterface.get_selection().add_node(root)
+	EditorInterface.edit_node(root)
+	await _frames(5)
+	var session: Session = _plugin.call("get_session")
+	if session == null:
+		_finish(["the plugin did not take the BoardNode."])
+		return
+	var level := session.level
+	var before := _count(level)
+	var data := Items.empty_set()
+	var key := "walls" if level.is_maze() else "pins"
+	var spot := level.size * 0.25
+	data[key] = PackedVector2Array([spot, spot + Vector2(35, 0)] if level.is_maze() else [spot])
+	session.commit(AddItemsAction.new(level, data, "Self-check edit"))
+	_expect(_count(level) == before + 1, "the edit did not reach the board")
+	var manager := _plugin.get_undo_redo()
+	var history_id := manager.get_object_history_id(root)
+	_expect(
+		history_id != EditorUndoRedoManager.GLOBAL_HISTORY, "the edit is not in the scene's history"
+	)
+	var history := manager.get_history_undo_redo(history_id)
+	_expect(
+		history.get_current_action_name() == "Self-check edit",
+		"the scene history's last step is not the edit"
+	)
+	history.undo()
+	_expect(_count(level) == before, "undo did not take the edit back")
+	history.redo()
+	_expect(_count(level) == before + 1, "redo did not apply the edit again")
+	EditorInterface.save_scene()
+	await _frames(5)
+	var saved := ResourceLoader.load(level.resource_path, "", ResourceLoader.CACHE_MODE_IGNORE)
+	_expect(
+		saved is BoardLevel and _count(saved as BoardLevel) == before + 1,
+		"saving the scene did not write the board file"
+	)
+	_finish(_problems)
+
+
+func _count(level: BoardLevel) -> int:
+	return level.walls.size() / 2 if level.is_maze() else level.pins.size()
+
+
+func _expect(ok: bool, problem: String) -> void:
+	if not ok:
+		_problems.append(problem)
+
+
+func _finish(problems: PackedStringArray) -> void:
+	if problems.is_empty():
+		print("board editor self-check: ok")
+	for problem in problems:
+		print("board editor self-check: FAILED: %s" % problem)
+	get_tree().quit(0 if problems.is_empty() else 1)
+
+
+func _frames(count: int) -> void:
+	for i in count:
+		await get_tree().process_frame

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Checks the board editor inside the real (headless) Godot editor: an edit goes through the
+# plugin into the edited scene's undo history, undo and redo work there, and saving the
+# scene writes the board's .tres. Works on a scratch copy in build/, never on a shipped board.
+set -uo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT"
+DIR=build/editor_self_check
+mkdir -p "$DIR"
+status=0
+for kind in maze pachinko; do
+	src=$([ "$kind" = maze ] && echo levels/maze/courtyards.tres || echo levels/pachinko/windmills.tres)
+	cp "$src" "$DIR/$kind.tres"
+	cat >"$DIR/$kind.tscn" <<SCENE
+[gd_scene load_steps=3 format=3]
+
+[ext_resource type="Script" path="res://scripts/board/board_node.gd" id="1_node"]
+[ext_resource type="Resource" path="res://$DIR/$kind.tres" id="2_level"]
+
+[node name="Board" type="Node2D"]
+script = ExtResource("1_node")
+level = ExtResource("2_level")
+SCENE
+	log=$DIR/$kind.log
+	BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" timeout 180 tools/godot.sh --headless \
+		--editor --path . >"$log" 2>&1
+	if grep -q 'board editor self-check: ok' "$log" && ! grep -q 'SCRIPT ERROR' "$log"; then
+		echo "editor self-check ($kind): ok"
+	else
+		echo "editor self-check ($kind): failed (log: $log)"
+		grep -E 'self-check|SCRIPT ERROR' "$log" | head -10
+		status=1
+	fi
+done
+exit $status
