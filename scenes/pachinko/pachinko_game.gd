@@ -101,7 +101,8 @@ func _new_rules() -> void:
 	rules.world.pin_hit.connect(_on_pin_hit)
 	rules.world.ring_hit.connect(_on_ring_hit)
 	board_view.bind(rules)
-	title.text = "Pachinko · %s" % _level.display_name
+	title.text = _level.display_name
+	title.tooltip_text = _level.description
 	cup.call("set_count", 0)
 	launcher.call("set_power", 0.0, 0.0)
 	launcher.call("set_loaded", false)
