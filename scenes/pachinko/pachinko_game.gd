@@ -54,6 +54,7 @@ func _process(delta: float) -> void:
 		return
 	_controls.poll(rules, delta)
 	rules.advance(delta)
+	launcher.call("set_blocked", rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:
 		_stats_refresh = 0.25

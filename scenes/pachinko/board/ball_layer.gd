@@ -41,6 +41,18 @@ func _draw() -> void:
 		draw_texture_rect(_texture, Rect2(p - offset, size), false)
 	var drawn := positions.size()
 	if _rules.loaded and _rules.state == PachinkoRules.State.PLAYING:
+		# A slow pulse around the loaded ball, so the player sees the shot is ready.
+		var pulse := 0.5 + 0.5 * sin(Time.get_ticks_msec() * 0.006)
+		draw_arc(
+			_launch_pos,
+			_radius * 1.9,
+			0.0,
+			TAU,
+			20,
+			Color(0.5, 1.0, 0.6, 0.35 + 0.4 * pulse),
+			1.5,
+			true
+		)
 		draw_texture_rect(_texture, Rect2(_launch_pos - offset, size), false)
 		drawn += 1
 	last_drawn = drawn

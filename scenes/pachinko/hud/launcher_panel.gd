@@ -10,10 +10,12 @@ const BAR := Rect2(12, 44, 34, 180)
 const PIVOT := Vector2(272, 196)
 const LEVER_LENGTH := 150.0
 const RED := Color("e23b3b")
+const LaunchPower := preload("res://scripts/pachinko/launch_power.gd")
 
 var _power := 0.0
 var _degrees := 0.0
 var _loaded := false
+var _blocked := false
 var _hint := ""
 
 
@@ -28,6 +30,13 @@ func set_power(power: float, degrees: float) -> void:
 func set_loaded(loaded: bool) -> void:
 	_loaded = loaded
 	queue_redraw()
+
+
+## Shows that the launcher waits for a ball rolling back down the rail.
+func set_blocked(blocked: bool) -> void:
+	if blocked != _blocked:
+		_blocked = blocked
+		queue_redraw()
 
 
 ## The short line under the lever telling how to shoot.
@@ -62,8 +71,15 @@ func _draw() -> void:
 	var font := get_theme_default_font()
 	var lamp_at := Vector2(BAR.position.x + 9.0, 16.0)
 	draw_circle(lamp_at, 9.0, Color("1c1a24"))
-	draw_circle(lamp_at, 7.0, Color("6cf07a") if _loaded else Color("3b3f45"))
-	var status := "Ball ready: fire!" if _loaded else "No ball loaded"
+	var lamp := Color("3b3f45")
+	var status := "No ball loaded"
+	if _loaded and _blocked:
+		lamp = Color("f0b64a")
+		status = "Wait: a ball is rolling back"
+	elif _loaded:
+		lamp = Color("6cf07a")
+		status = "Ball ready: fire!"
+	draw_circle(lamp_at, 7.0, lamp)
 	draw_string(
 		font, lamp_at + Vector2(16, 6), status, HORIZONTAL_ALIGNMENT_LEFT, -1, 16, Color("e9e3ff")
 	)
@@ -87,16 +103,27 @@ func _draw_bar() -> void:
 	var filled := Rect2(BAR.position + Vector2(0, BAR.size.y - fill), Vector2(BAR.size.x, fill))
 	draw_rect(filled, RED)
 	draw_rect(Rect2(filled.position, Vector2(6, filled.size.y)), RED.lightened(0.35))
+	# Below this mark a shot cannot clear the rail and rolls back to the cup.
+	var weak := BAR.size.y * LaunchPower.CLEAR_POWER / 100.0
+	draw_rect(
+		Rect2(BAR.position + Vector2(0, BAR.size.y - weak), Vector2(BAR.size.x, weak)),
+		Color(0, 0, 0, 0.35)
+	)
+	var mark_y := BAR.end.y - weak
+	draw_line(Vector2(BAR.position.x, mark_y), Vector2(BAR.end.x, mark_y), Color("f0c24a"), 1.5)
+	var font := get_theme_default_font()
+	var tag_width := font.get_string_size("weak", HORIZONTAL_ALIGNMENT_LEFT, -1, 11).x
+	var tag_at := Vector2(BAR.get_center().x - tag_width * 0.5, BAR.end.y - weak * 0.5 + 4.0)
+	draw_string(font, tag_at, "weak", HORIZONTAL_ALIGNMENT_LEFT, -1, 11, Color("f0c24a"))
 	for i in 11:
 		var y := BAR.end.y - BAR.size.y * i / 10.0
 		var tick := 10.0 if i % 5 == 0 else 5.0
 		draw_line(
 			Vector2(BAR.position.x - tick, y), Vector2(BAR.position.x, y), Color("8a82aa"), 1.0
 		)
-	var font := get_theme_default_font()
 	draw_string(
 		font,
-		Vector2(BAR.position.x - 12, BAR.end.y + 24),
+		Vector2(BAR.position.x - 6, BAR.end.y + 22),
 		"POWER %d" % roundi(_power),
 		HORIZONTAL_ALIGNMENT_LEFT,
 		-1,
@@ -119,6 +146,8 @@ func _draw_lever() -> void:
 	draw_circle(PIVOT, 16.0, Color("262233"))
 	draw_circle(PIVOT, 12.0, Color("9aa0b2"))
 	draw_circle(PIVOT, 4.0, Color("262233"))
+	if _power > 0.0:
+		return
 	# An arrow showing which way to pull.
 	var tip := PIVOT + Vector2(-LEVER_LENGTH, -58)
 	draw_line(tip + Vector2(0, 34), tip, Color(1, 1, 1, 0.45), 3.0, true)
