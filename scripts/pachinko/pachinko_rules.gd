@@ -77,8 +77,15 @@ var _game_start_shots := 0
 
 ## Builds the world for `board`. `rng_seed` makes the nudges repeatable.
 func _init(board: BoardLevel, rng_seed: int = 0) -> void:
-	level = board
 	_rng.seed = rng_seed
+	if board == null or not board.is_pachinko() or board.ring_radius <= 0.0:
+		# Stay a harmless, empty game: every call is safe and start_game() refuses.
+		push_error("PachinkoRules: a pachinko board with a ring is needed")
+		level = BoardLevel.new()
+		ledger = Ledger.new(0)
+		world = BallWorld.new()
+		return
+	level = board
 	ledger = Ledger.new(board.pockets.size())
 	world = BoardWorldFactory.build(board)
 	var tuning := board.tuning as PhysicsTuning
@@ -95,7 +102,7 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 ## Dismisses the instructions: fills the cup with the board's start balls and loads one.
 ## Does nothing (returns false) while a game is running.
 func start_game() -> bool:
-	if state == State.PLAYING:
+	if state == State.PLAYING or level.ring_radius <= 0.0:
 		return false
 	cup += level.cup_start_balls
 	ledger.given += level.cup_start_balls

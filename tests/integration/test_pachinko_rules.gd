@@ -244,3 +244,12 @@ func test_the_launcher_waits_while_a_weak_shot_rolls_back() -> void:
 	assert_true(back)
 	assert_false(rules.rail_blocked())
 	assert_gt(rules.fire(80.0), -1, "the rail is clear again")
+
+
+func test_no_board_is_a_clear_error_not_a_crash() -> void:
+	var rules := PachinkoRules.new(null, 1)
+	assert_push_error("a pachinko board with a ring is needed")
+	assert_false(rules.start_game(), "nothing to play")
+	assert_eq(rules.fire(50.0), -1)
+	rules.step()
+	assert_true(rules.accounting_ok())
