@@ -64,3 +64,11 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	_body.text = "\n".join(lines)
 	_footer.text = "Click anywhere to play again"
 	visible = true
+
+
+## A board that cannot be played: says what went wrong and how to get back.
+func show_problem(problem: String) -> void:
+	_title.text = "This board could not be loaded"
+	_body.text = problem
+	_footer.text = "Press Esc for the menu"
+	visible = true

@@ -40,7 +40,8 @@ func _ready() -> void:
 	if loaded.level == null or not loaded.level.is_pachinko():
 		var problem := loaded.error if loaded.level == null else "%s is not a pachinko board" % path
 		push_error("Pachinko: %s" % problem)
-		title.text = "This board could not be loaded"
+		title.text = "No board"
+		instructions.call("show_problem", problem)
 		return
 	_level = loaded.level
 	launcher.connect("flipper_pressed", _on_flipper_pressed)

@@ -93,3 +93,13 @@ func test_a_gamepad_trigger_sets_the_power_and_fires_when_let_go() -> void:
 	trigger.axis_value = 0.0
 	game.call("_unhandled_input", trigger)
 	assert_eq(rules.ledger.shots, 1, "letting the trigger go fired")
+
+
+func test_a_broken_board_path_shows_the_problem() -> void:
+	App.request_board("pachinko", "res://levels/pachinko/does_not_exist.tres")
+	var game := _game()
+	App.request_board("pachinko", "res://levels/pachinko/classic.tres")
+	assert_push_error("does not exist")
+	assert_null(game.get("rules"), "nothing to play")
+	var title := game.get_node("Instructions/Card/Margin/Box/Title") as Label
+	assert_eq(title.text, "This board could not be loaded")
