@@ -4,8 +4,6 @@ extends Control
 ## actions, mouse and touch into calls on the rules. Sounds and effects follow the rules'
 ## signals.
 
-const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
-const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const PachinkoShots := preload("res://scenes/pachinko/pachinko_shots.gd")
 const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
@@ -30,11 +28,11 @@ var _stats_refresh := 0.0
 @onready var notes: Label = $Hud/Column/Notes
 @onready var instructions: Control = $Instructions
 @onready var sounds: SoundBank = $Sounds
+@onready var pause_menu: CanvasLayer = $PauseMenu
 
 
 func _ready() -> void:
-	_add_shell_scene(PAUSE_MENU)
-	_add_shell_scene(FRAME_COUNTER)
+	pause_menu.connect("restart_requested", restart)
 	var path := App.current_board_path("pachinko")
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -162,16 +160,6 @@ func _is_start_event(event: InputEvent) -> bool:
 	if button != null:
 		return button.pressed and button.button_index == MOUSE_BUTTON_LEFT
 	return event.is_action_pressed("game_start") or event.is_action_pressed("launch_charge")
-
-
-func _add_shell_scene(path: String) -> void:
-	if not ResourceLoader.exists(path):
-		push_warning("Pachinko: %s is missing; playing without it" % path)
-		return
-	var node := (load(path) as PackedScene).instantiate()
-	add_child(node)
-	if node.has_signal("restart_requested"):
-		node.connect("restart_requested", restart)
 
 
 func _on_flipper_pressed(at: Vector2) -> void:

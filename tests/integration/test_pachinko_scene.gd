@@ -103,3 +103,16 @@ func test_a_broken_board_path_shows_the_problem() -> void:
 	assert_null(game.get("rules"), "nothing to play")
 	var title := game.get_node("Instructions/Card/Margin/Box/Title") as Label
 	assert_eq(title.text, "This board could not be loaded")
+
+
+func test_restart_from_the_pause_menu_sets_up_a_fresh_board() -> void:
+	var game := _game()
+	var first := game.get("rules") as PachinkoRules
+	first.start_game()
+	first.fire(60.0)
+	game.get_node("PauseMenu").emit_signal("restart_requested")
+	var second := game.get("rules") as PachinkoRules
+	assert_ne(second, first, "new rules")
+	assert_eq(second.state, PachinkoRules.State.INSTRUCTIONS)
+	assert_eq(second.world.ball_count(), 0)
+	assert_true((game.get_node("Instructions") as Control).visible)
