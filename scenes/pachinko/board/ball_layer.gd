@@ -4,6 +4,8 @@ extends Node2D
 ## `last_draw_usec` is how long the last draw took (the bench reads it).
 
 const BALL_TEXTURE_SIZE := 64
+## The ball texture spans this many ball diameters: room for the ball's soft shadow.
+const SHADOW_SPAN := 1.6
 
 ## Microseconds the last `_draw` took.
 var last_draw_usec := 0
@@ -22,7 +24,7 @@ func bind(rules: PachinkoRules) -> void:
 	_radius = rules.level.ball_radius
 	_launch_pos = LaunchRail.launch_position(rules.level)
 	if _texture == null:
-		_texture = make_ball_texture(BALL_TEXTURE_SIZE)
+		_texture = make_shadowed_ball_texture(BALL_TEXTURE_SIZE)
 	queue_redraw()
 
 
@@ -35,8 +37,8 @@ func _draw() -> void:
 		return
 	var started := Time.get_ticks_usec()
 	var positions := _rules.world.get_positions()
-	var size := Vector2(_radius, _radius) * 2.0
-	var offset := Vector2(_radius, _radius)
+	var size := Vector2(_radius, _radius) * 2.0 * SHADOW_SPAN
+	var offset := Vector2(_radius, _radius) * SHADOW_SPAN
 	for p in positions:
 		draw_texture_rect(_texture, Rect2(p - offset, size), false)
 	var drawn := positions.size()
@@ -61,7 +63,34 @@ func _draw() -> void:
 
 ## A steel ball: dark rim, bright upper-left highlight, soft reflected light below.
 static func make_ball_texture(size: int) -> ImageTexture:
-	var image := Image.create_empty(size, size, true, Image.FORMAT_RGBA8)
+	var image := make_ball_image(size)
+	image.generate_mipmaps()
+	return ImageTexture.create_from_image(image)
+
+
+## The ball of `size` pixels centred in a SHADOW_SPAN times larger square, over a soft
+## shadow cast down and to the right (light comes from the upper left, like the art).
+static func make_shadowed_ball_texture(size: int) -> ImageTexture:
+	var span := int(size * SHADOW_SPAN)
+	var image := Image.create_empty(span, span, false, Image.FORMAT_RGBA8)
+	var centre := Vector2(span, span) * 0.5
+	var shadow_at := centre + Vector2(0.22, 0.3) * size
+	var shadow_r := size * 0.5
+	for y in span:
+		for x in span:
+			var d := Vector2(x + 0.5, y + 0.5).distance_to(shadow_at) / shadow_r
+			var a := clampf(1.0 - d, 0.0, 1.0)
+			image.set_pixel(x, y, Color(0.0, 0.0, 0.05, 0.55 * a * a))
+	var ball := make_ball_image(size)
+	var corner := Vector2i((span - size) / 2, (span - size) / 2)
+	image.blend_rect(ball, Rect2i(Vector2i.ZERO, ball.get_size()), corner)
+	image.generate_mipmaps()
+	return ImageTexture.create_from_image(image)
+
+
+## The ball picture itself (see make_ball_texture).
+static func make_ball_image(size: int) -> Image:
+	var image := Image.create_empty(size, size, false, Image.FORMAT_RGBA8)
 	var centre := Vector2(size, size) * 0.5
 	var radius := size * 0.5 - 1.0
 	var light := centre + Vector2(-0.32, -0.36) * radius
@@ -85,5 +114,4 @@ static func make_ball_texture(size: int) -> ImageTexture:
 			)
 			var v := clampf(shade + spec * 0.9 + bounce, 0.0, 1.0)
 			image.set_pixel(x, y, Color(v * 0.93, v * 0.95, v, edge))
-	image.generate_mipmaps()
-	return ImageTexture.create_from_image(image)
+	return image
