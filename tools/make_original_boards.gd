@@ -17,6 +17,7 @@ const WallAction := preload("res://addons/board_editor/actions/wall_action.gd")
 const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
 const DeleteItems := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const MazeCarver := preload("res://tools/make_original_mazes.gd")
 
 const CENTER := 350.0
@@ -111,25 +112,7 @@ static func pachinko_base(
 	history: ActionHistory, id: String, title: String, blurb: String
 ) -> BoardLevel:
 	var level := BoardLevel.new()
-	var settings := {
-		"kind": BoardLevel.Kind.PACHINKO,
-		"board_id": "pachinko_" + id,
-		"display_name": title,
-		"description": blurb,
-		"size": Vector2(700, 700),
-		"ball_radius": 5.0,
-		"tuning": PhysicsTuning.pachinko_defaults(),
-		"ring_center": Vector2(CENTER, CENTER),
-		"ring_radius": 330.0,
-		"rail_width": 20.0,
-		"rail_start_deg": 40.0,
-		"rail_end_deg": -105.0,
-		"gutter_start_deg": 60.0,
-		"gutter_end_deg": 120.0,
-		"gutter_bounces": 6,
-		"pin_radius": 1.5,
-		"cup_start_balls": 25,
-	}
+	var settings := NewBoard.pachinko_settings(id, title, blurb)
 	history.commit(SetProperties.new(level, settings, "Board settings"))
 	return level
 

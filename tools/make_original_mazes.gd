@@ -5,6 +5,7 @@ extends RefCounted
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const SetProperties := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const WallAction := preload("res://addons/board_editor/actions/wall_action.gd")
 const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
@@ -116,23 +117,7 @@ static func maze_base(
 	history: ActionHistory, id: String, title: String, blurb: String, cells: Vector2i
 ) -> BoardLevel:
 	var level := BoardLevel.new()
-	var size := Vector2(cells) * CELL
-	var settings := {
-		"kind": BoardLevel.Kind.MAZE,
-		"board_id": "maze_" + id,
-		"display_name": title,
-		"description": blurb,
-		"size": size,
-		"ball_radius": 5.0,
-		"tuning": PhysicsTuning.maze_defaults(),
-		"grid_cols": cells.x,
-		"grid_rows": cells.y,
-		"path_width": 25.0,
-		"wall_width": 10.0,
-		"goal_center": size * 0.5,
-		"goal_radius": 32.5,
-		"hole_radius": 9.0,
-	}
+	var settings := NewBoard.maze_settings(id, title, blurb, cells)
 	history.commit(SetProperties.new(level, settings, "Board settings"))
 	return level
 

@@ -13,6 +13,8 @@ const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const ShotHook := preload("res://addons/board_editor/ui/shot_hook.gd")
 const SelfCheck := preload("res://addons/board_editor/ui/self_check.gd")
+const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
+const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
 
 var _node: BoardNode
 var _session: Session
@@ -34,6 +36,8 @@ func _enter_tree() -> void:
 	_dock = BoardDock.new()
 	_dock.play_test_requested.connect(_play_test)
 	_dock.issue_focused.connect(focus_issue)
+	_dock.new_board_requested.connect(_new_board)
+	_dock.save_as_requested.connect(_save_as_file)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
 	if ShotHook.requested():
 		add_child(ShotHook.new(self))
@@ -60,7 +64,7 @@ func _edit(object: Object) -> void:
 	_node = object as BoardNode
 	var level := _node.level
 	if level == null:
-		_dock.show_board(null, [])
+		_dock.show_board(null, [], true)
 		return
 	_session = Session.new(level)
 	_session.committer = _commit
@@ -82,12 +86,13 @@ func _make_visible(visible: bool) -> void:
 
 
 func _forward_canvas_gui_input(event: InputEvent) -> bool:
-	if _session == null or not is_instance_valid(_node):
+	if not is_instance_valid(_node):
 		return false
-	if _node.level != _session.level:
-		_edit(_node)  # the board resource was swapped in the inspector
-		if _session == null:
-			return false
+	var level_now := _node.level
+	if level_now != (_session.level if _session != null else null):
+		_edit(_node)  # the board resource was set or swapped in the inspector
+	if _session == null:
+		return false
 	var used := _input.handle(event, _to_screen().affine_inverse())
 	if used or event is InputEventMouseMotion:
 		update_overlays()
@@ -157,6 +162,7 @@ func _release() -> void:
 		_toolbar.hide()
 	if _dock != null:
 		_dock.show_board(null, [])
+		_dock.show_message("")
 
 
 func _on_level_changed() -> void:
@@ -195,23 +201,40 @@ func _on_settings_changed() -> void:
 
 
 func _save_boards() -> void:
-	for level in _unsaved:
-		var path := level.resource_path
-		if path.is_empty() or path.contains("::"):
-			continue  # built into the scene: saved with it
-		var error := ResourceSaver.save(level, path)
-		if error != OK:
-			push_error("Board editor: could not save %s (%s)." % [path, error_string(error)])
+	BoardFiles.save_all(_unsaved)
 	_unsaved.clear()
 
 
 func _play_test() -> void:
-	if _session == null:
+	if _session != null:
+		_save_boards()
+		_dock.show_message(PlayTest.run(_session.level))
+
+
+# Gives the selected node a fresh board, undoably (the node's `level` is scene data).
+func _new_board(kind: int) -> void:
+	if not is_instance_valid(_node):
 		return
-	_save_boards()
-	var problem := PlayTest.run(_session.level)
-	if not problem.is_empty():
-		push_warning(problem)
+	var history := get_undo_redo()
+	history.create_action(
+		"New %s board" % BoardLevel.kind_name(kind), UndoRedo.MERGE_DISABLE, _node
+	)
+	history.add_do_property(_node, "level", NewBoard.make(kind))
+	history.add_undo_property(_node, "level", _node.level)
+	history.add_do_method(self, "_rebind", _node)
+	history.add_undo_method(self, "_rebind", _node)
+	history.commit_action()
+
+
+func _rebind(node: BoardNode) -> void:
+	if is_instance_valid(node) and EditorInterface.get_selection().get_selected_nodes().has(node):
+		_edit(node)
+
+
+func _save_as_file() -> void:
+	if _session != null:
+		_dock.show_message(BoardFiles.save_as_file(_session.level))
+		_refresh()
 
 
 func _to_screen() -> Transform2D:

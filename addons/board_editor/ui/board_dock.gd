@@ -5,6 +5,8 @@ extends VBoxContainer
 
 signal play_test_requested
 signal issue_focused(index: int)
+signal new_board_requested(kind: int)
+signal save_as_requested
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
@@ -15,6 +17,9 @@ var _options: ToolOptions
 var _problems_title: Label
 var _problems: ItemList
 var _play: Button
+var _new_box: HBoxContainer
+var _save_as: Button
+var _status: Label
 
 
 func _init() -> void:
@@ -30,6 +35,23 @@ func _init() -> void:
 	_play.tooltip_text = "Save the board and run it in its game."
 	_play.pressed.connect(func() -> void: play_test_requested.emit())
 	add_child(_play)
+	_save_as = Button.new()
+	_save_as.text = "Save board as a level file"
+	_save_as.tooltip_text = "Write the board to levels/<kind>/ so the games and play-test can load it."
+	_save_as.pressed.connect(func() -> void: save_as_requested.emit())
+	add_child(_save_as)
+	_new_box = HBoxContainer.new()
+	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+		var button := Button.new()
+		button.text = "New %s board" % BoardLevel.kind_name(kind)
+		button.tooltip_text = "Give this node a new, empty %s board." % BoardLevel.kind_name(kind)
+		button.pressed.connect(func() -> void: new_board_requested.emit(kind))
+		_new_box.add_child(button)
+	add_child(_new_box)
+	_status = Label.new()
+	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
+	add_child(_status)
 	add_child(HSeparator.new())
 	_options = ToolOptions.new()
 	add_child(_options)
@@ -45,13 +67,27 @@ func _init() -> void:
 	show_board(null, [])
 
 
-## Shows `session`'s board (null: nothing is being edited) and its problems.
-func show_board(session: Session, issues: Array[BoardIssue]) -> void:
+## Shows a line of feedback under the buttons ("" hides it).
+func show_message(text: String) -> void:
+	_status.text = text
+	_status.visible = not text.is_empty()
+
+
+## Shows `session`'s board (null: nothing is being edited) and its problems. With
+## `node_without_board` the selected BoardNode has no board yet: offer new ones.
+func show_board(session: Session, issues: Array[BoardIssue], node_without_board := false) -> void:
 	var editing := session != null and session.level != null
 	_play.disabled = not editing
 	_options.visible = editing
+	_new_box.visible = node_without_board
+	var path := session.level.resource_path if editing else ""
+	_save_as.visible = editing and (path.is_empty() or path.contains("::"))
 	if not editing:
-		_title.text = "Select a BoardNode with a board in a scene to edit it here."
+		_title.text = (
+			"This BoardNode has no board yet: start a new one."
+			if node_without_board
+			else "Select a BoardNode with a board in a scene to edit it here."
+		)
 		_counts.text = ""
 		_problems_title.text = ""
 		_problems.clear()

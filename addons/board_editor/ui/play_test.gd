@@ -31,6 +31,10 @@ static func write_request(level: BoardLevel) -> String:
 
 ## Saves, writes the request and plays the board's game; "" or what went wrong.
 static func run(level: BoardLevel) -> String:
+	var errors := BoardValidator.errors(level).size() if level != null else 0
+	if errors > 0:
+		var plural := "" if errors == 1 else "s"
+		return "Play-test: fix the board's %d error%s first (see Problems)." % [errors, plural]
 	var problem := write_request(level)
 	if not problem.is_empty():
 		return problem

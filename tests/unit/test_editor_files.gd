@@ -1,0 +1,63 @@
+extends GutTest
+## New boards, the play-test request and saving a board to its own file.
+
+const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
+const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
+const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+
+const SCRATCH := "user://test_editor_files_board.tres"
+
+
+func after_each() -> void:
+	for path in [SCRATCH, PlayTest.REQUEST_PATH]:
+		if FileAccess.file_exists(path):
+			DirAccess.remove_absolute(path)
+
+
+func test_new_boards_are_playable_starting_points() -> void:
+	var maze := NewBoard.make(BoardLevel.Kind.MAZE)
+	assert_true(maze.is_maze())
+	assert_eq(BoardValidator.errors(maze).size(), 0, "a new maze has no errors")
+	assert_eq(maze.ball_starts.size(), 4)
+	assert_eq(maze.walls.size(), 8, "four border walls")
+	var machine := NewBoard.make(BoardLevel.Kind.PACHINKO)
+	assert_true(machine.is_pachinko())
+	assert_eq(BoardValidator.errors(machine).size(), 0, "a new machine has no errors")
+
+
+func test_free_path_never_overwrites_a_board() -> void:
+	var level := NewBoard.make(BoardLevel.Kind.MAZE)
+	level.board_id = "maze_classic"
+	assert_eq(NewBoard.free_path(level), "res://levels/maze/classic_2.tres")
+	level.board_id = "maze_Fresh Idea"
+	assert_eq(NewBoard.free_path(level), "res://levels/maze/fresh_idea.tres")
+
+
+func test_play_test_request_names_the_saved_board() -> void:
+	var level := NewBoard.make(BoardLevel.Kind.MAZE)
+	assert_eq(ResourceSaver.save(level, SCRATCH), OK)
+	level.take_over_path(SCRATCH)
+	assert_eq(PlayTest.write_request(level), "")
+	var request := ConfigFile.new()
+	assert_eq(request.load(PlayTest.REQUEST_PATH), OK)
+	assert_eq(request.get_value("playtest", "board"), SCRATCH)
+	assert_eq(request.get_value("playtest", "kind"), "maze")
+
+
+func test_play_test_refuses_boards_without_a_file_or_with_errors() -> void:
+	var level := NewBoard.make(BoardLevel.Kind.MAZE)
+	assert_string_contains(PlayTest.write_request(level), "own .tres file")
+	level.take_over_path(SCRATCH)
+	level.goal_radius = -1.0
+	assert_string_contains(PlayTest.run(level), "error")
+	assert_false(FileAccess.file_exists(PlayTest.REQUEST_PATH), "no request for a broken board")
+
+
+func test_save_all_writes_edits_to_the_board_file() -> void:
+	var level := NewBoard.make(BoardLevel.Kind.MAZE)
+	assert_eq(ResourceSaver.save(level, SCRATCH), OK)
+	level.take_over_path(SCRATCH)
+	level.holes = PackedVector2Array([Vector2(52.5, 52.5)])
+	BoardFiles.save_all([level] as Array[BoardLevel])
+	var saved := ResourceLoader.load(SCRATCH, "", ResourceLoader.CACHE_MODE_IGNORE) as BoardLevel
+	assert_eq(saved.holes, PackedVector2Array([Vector2(52.5, 52.5)]))
