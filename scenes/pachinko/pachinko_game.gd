@@ -42,6 +42,20 @@ func _ready() -> void:
 		instructions.call("show_problem", problem)
 		return
 	_level = loaded.level
+	(
+		SoundBank
+		. warm(
+			[
+				SoundBank.PIN_TICK,
+				SoundBank.LAUNCH,
+				SoundBank.POCKET_WIN,
+				SoundBank.DRAIN,
+				SoundBank.BALL_RETURN,
+				SoundBank.GAME_OVER,
+				SoundBank.WALL_THUD,
+			]
+		)
+	)
 	launcher.connect("flipper_pressed", _on_flipper_pressed)
 	get_viewport().size_changed.connect(_layout)
 	_new_rules()

@@ -64,6 +64,13 @@ static func stream(sound: StringName) -> AudioStreamWAV:
 	return _cache[sound]
 
 
+## Builds the given sounds now (a scene calls this while loading, so the first pocket win
+## does not stall a frame building its jingle).
+static func warm(sounds: Array[StringName]) -> void:
+	for sound in sounds:
+		stream(sound)
+
+
 ## Plays a sound at `volume_db` and `pitch`. Returns false for an unknown sound.
 func play(sound: StringName, volume_db: float = 0.0, pitch: float = 1.0) -> bool:
 	var clip := stream(sound)
