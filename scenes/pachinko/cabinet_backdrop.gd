@@ -7,12 +7,17 @@ const TOP := Color("211436")
 const BOTTOM := Color("07050d")
 const PAINT_SIZE := Vector2i(320, 180)
 
+# Painted once per run: a restart or a second game reuses it.
+static var _painted: ImageTexture
+
 
 func _ready() -> void:
 	mouse_filter = Control.MOUSE_FILTER_IGNORE
 	expand_mode = TextureRect.EXPAND_IGNORE_SIZE
 	stretch_mode = TextureRect.STRETCH_SCALE
-	texture = ImageTexture.create_from_image(paint(PAINT_SIZE))
+	if _painted == null:
+		_painted = ImageTexture.create_from_image(paint(PAINT_SIZE))
+	texture = _painted
 
 
 ## The backdrop picture at `size` pixels.
