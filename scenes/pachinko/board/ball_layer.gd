@@ -7,6 +7,9 @@ const BALL_TEXTURE_SIZE := 64
 ## The ball texture spans this many ball diameters: room for the ball's soft shadow.
 const SHADOW_SPAN := 1.6
 
+# Built once per run and shared by every ball layer.
+static var _shared_texture: ImageTexture
+
 ## Microseconds the last `_draw` took.
 var last_draw_usec := 0
 ## Balls drawn by the last `_draw`.
@@ -23,8 +26,9 @@ func bind(rules: PachinkoRules) -> void:
 	_rules = rules
 	_radius = rules.level.ball_radius
 	_launch_pos = LaunchRail.launch_position(rules.level)
-	if _texture == null:
-		_texture = make_shadowed_ball_texture(BALL_TEXTURE_SIZE)
+	if _shared_texture == null:
+		_shared_texture = make_shadowed_ball_texture(BALL_TEXTURE_SIZE)
+	_texture = _shared_texture
 	queue_redraw()
 
 
