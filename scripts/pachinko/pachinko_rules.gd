@@ -88,9 +88,8 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 	level = board
 	ledger = Ledger.new(board.pockets.size())
 	world = BoardWorldFactory.build(board)
-	var tuning := board.tuning as PhysicsTuning
-	if tuning != null and tuning.fixed_hz > 0.0:
-		_step_seconds = 1.0 / tuning.fixed_hz
+	# The world's own tuning: the board's, or the defaults when the board has none.
+	_step_seconds = 1.0 / maxf(world.tuning.fixed_hz, 1.0)
 	_launch_pos = LaunchRail.launch_position(board)
 	_launch_dir = LaunchRail.launch_direction(board)
 	_clear_speed = LaunchCalibration.clear_speed(board)
