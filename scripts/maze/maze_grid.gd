@@ -18,6 +18,10 @@ const DIRECTIONS: Array[Vector2i] = [
 	Vector2i(-1, 1),
 	Vector2i(-1, -1),
 ]
+## Moves per cell: the eight hard tilts (slides), then four one-cell steps (right, left,
+## down, up: DIRECTIONS 0..3) made by tilting and braking.
+const MOVES := 12
+const FIRST_STEP := 8
 ## How far off a grid line a wall end may be and still count as on it, px.
 const SNAP := 0.5
 
@@ -31,7 +35,7 @@ var is_grid := true
 var horizontal := PackedByteArray()
 ## vertical[r * (cols + 1) + c]: a wall on grid line c down cell row r (c in 0..cols).
 var vertical := PackedByteArray()
-## slides[cell_index * 8 + direction] → the cell a hard tilt takes a ball to, or -1 when the
+## slides[cell_index * MOVES + move] → the cell a move takes a ball to, or -1 when the
 ## ball would roll over a black hole on the way.
 var slides := PackedInt32Array()
 ## 1 for a cell with a black hole in it (hard mode).
@@ -88,16 +92,37 @@ func is_open(c: int, r: int, dx: int, dy: int) -> bool:
 	return false
 
 
-## Where a hard tilt toward DIRECTIONS[dir] takes a ball from cell `index`.
-func slide(index: int, dir: int) -> int:
-	return slides[index * 8 + dir]
+## Where `move` (a slide 0..7 or a step 8..11) takes a ball from cell `index`.
+func slide(index: int, move: int) -> int:
+	return slides[index * MOVES + move]
+
+
+## True for a one-cell step, false for a slide.
+static func is_step(move: int) -> bool:
+	return move >= FIRST_STEP
+
+
+## The direction of a move, in cells.
+static func direction(move: int) -> Vector2i:
+	return DIRECTIONS[move - FIRST_STEP] if is_step(move) else DIRECTIONS[move]
 
 
 func _build_slides() -> void:
-	slides.resize(cell_count() * 8)
+	slides.resize(cell_count() * MOVES)
 	for index in cell_count():
-		for d in 8:
-			slides[index * 8 + d] = _roll(index, DIRECTIONS[d])
+		for d in FIRST_STEP:
+			slides[index * MOVES + d] = _roll(index, DIRECTIONS[d])
+		for d in MOVES - FIRST_STEP:
+			slides[index * MOVES + FIRST_STEP + d] = _step(index, DIRECTIONS[d])
+
+
+func _step(index: int, step: Vector2i) -> int:
+	var c := index % cols
+	var r := index / cols
+	if not is_open(c, r, step.x, step.y):
+		return index
+	var next := (r + step.y) * cols + c + step.x
+	return -1 if hole_cells[next] != 0 else next
 
 
 func _roll(index: int, step: Vector2i) -> int:

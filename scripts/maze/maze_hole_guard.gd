@@ -18,6 +18,7 @@ var _dt := 1.0 / 120.0
 var _fell := false
 var _since_check := INF
 var _choice := Vector2.ZERO
+var _trusted := false
 
 
 func _init(level: BoardLevel, dt: float) -> void:
@@ -36,7 +37,9 @@ func filter(
 		return wanted
 	_since_check += _dt
 	if _since_check < RECHECK:
-		return _choice
+		# Between checks a safe wish passes live (a steering loop needs its feedback); an
+		# overruled one stays overruled until the next check.
+		return wanted if _trusted else _choice
 	_since_check = 0.0
 	var candidates: Array[Vector2] = []
 	for share in SHARES:
@@ -46,9 +49,12 @@ func filter(
 		mean_v += v
 	if mean_v.length() > 1.0:
 		candidates.append(-mean_v.normalized() * BRAKE_DEG)
-	var best := candidates[0]
-	var best_time := -1.0
-	for tilt in candidates:
+	var best := wanted
+	var best_time := _survives(wanted, positions, velocities)
+	_trusted = best_time >= HORIZON
+	if _trusted:
+		return wanted
+	for tilt in candidates.slice(1):
 		var survived := _survives(tilt, positions, velocities)
 		if survived >= HORIZON:
 			best = tilt

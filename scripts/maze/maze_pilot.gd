@@ -7,6 +7,9 @@ extends RefCounted
 ## balls stop, re-planning whenever the balls end somewhere the plan did not expect. Then
 ## it rolls the pack along its path (MazeNav) into the goal circle and brakes there. On a
 ## board that is not a grid, or when gathering fails, it steers the ball nearest the goal.
+## In hard mode the plans also use one-cell steps (tilt, then brake) and never roll a ball
+## over a hole, and a MazeHoleGuard vets every tilt on a private copy of the board.
+## Whatever the physics does differently from the grid model is learned as it happens.
 ## The seed's random number picks the gains, the tilt strength and the order plans try
 ## directions in, so seeds play differently and the same seed always plays the same.
 
@@ -57,6 +60,9 @@ var _still_time := 0.0
 var _settle_mark := PackedVector2Array()
 var _expected := PackedInt32Array()
 var _move_start := PackedInt32Array()
+var _origin := PackedVector2Array()
+var _step_done := false
+var _hard := false
 var _herd_failures := {}
 var _herd_cell := -1
 var _herd_time := 0.0
@@ -70,6 +76,7 @@ func _init(level: BoardLevel, hard_mode: bool, rng: RandomNumberGenerator, dt: f
 	_level = level
 	_rng = rng
 	_dt = dt
+	_hard = hard_mode
 	nav = MazeNav.new(level, hard_mode)
 	grid = MazeGrid.new(level, hard_mode)
 	if hard_mode:
@@ -101,7 +108,7 @@ func _steer(positions: PackedVector2Array, velocities: PackedVector2Array) -> Ve
 		_plan(positions)
 	match phase:
 		Phase.MOVE:
-			return _hold_move(positions)
+			return _hold_move(positions, velocities)
 		Phase.HERD:
 			return _herd(positions, velocities)
 	return steering.lead(positions, velocities)
@@ -112,7 +119,10 @@ func _plan(positions: PackedVector2Array) -> void:
 	if plans_made > MAX_PLANS:
 		phase = Phase.LEAD
 		return
-	var order := PackedInt32Array([0, 1, 2, 3, 4, 5, 6, 7])
+	# Hard mode also plans one-cell steps: hard slides alone run balls over the holes.
+	var order := PackedInt32Array()
+	for m in MazeGrid.MOVES if _hard else MazeGrid.FIRST_STEP:
+		order.append(m)
 	for i in range(order.size() - 1, 0, -1):
 		var j := _rng.randi_range(0, i)
 		var t := order[i]
@@ -139,37 +149,78 @@ func _start_move(cells: PackedInt32Array, positions: PackedVector2Array) -> void
 	_move_start = PackedInt32Array()
 	for p in positions:
 		_move_start.append(grid.cell_at(p))
+	_origin = positions.duplicate()
 
 
-func _hold_move(positions: PackedVector2Array) -> Vector2:
+func _hold_move(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vector2:
 	_move_time += _dt
-	_still_time += _dt
-	var settled := false
-	if _still_time >= SETTLE_SECONDS:
-		var drift := 0.0
-		for i in mini(positions.size(), _settle_mark.size()):
-			drift = maxf(drift, positions[i].distance_to(_settle_mark[i]))
-		settled = drift < SETTLE_DRIFT and positions.size() == _settle_mark.size()
-		_settle_mark = positions.duplicate()
-		_still_time = 0.0
-	if settled or _move_time > MOVE_TIMEOUT:
-		var cells := planner.cells_of(positions)
-		if (
-			MazeSteering.spread(positions) <= PACK_RADIUS
-			and not planner.is_banned(_pack_cell(positions))
-		):
-			_begin_herd(positions)
-			return Vector2.ZERO
-		if cells != _expected:
-			_learn(positions)
-			phase = Phase.PLAN
-			return Vector2.ZERO
+	var move := planner.moves[_move]
+	var tilt := Vector2(MazeGrid.direction(move)) * hard_tilt
+	var done := false
+	if MazeGrid.is_step(move):
+		tilt = _step_tilt(positions, velocities, move)
+		done = _step_done
+	else:
+		done = _settled(positions)
+	if not done and _move_time <= MOVE_TIMEOUT:
+		return tilt
+	var cells := planner.cells_of(positions)
+	if (
+		MazeSteering.spread(positions) <= PACK_RADIUS
+		and not planner.is_banned(_pack_cell(positions))
+	):
+		_begin_herd(positions)
+	elif cells != _expected:
+		_learn(positions)
+		phase = Phase.PLAN
+	else:
 		_move += 1
 		_start_move(cells, positions)
-		if phase != Phase.MOVE:
-			return Vector2.ZERO
-	var dir := Vector2(MazeGrid.DIRECTIONS[planner.moves[_move]])
-	return dir * hard_tilt
+	return Vector2.ZERO
+
+
+# True once no ball moved more than SETTLE_DRIFT in the last SETTLE_SECONDS.
+func _settled(positions: PackedVector2Array) -> bool:
+	_still_time += _dt
+	if _still_time < SETTLE_SECONDS:
+		return false
+	var drift := 0.0
+	for i in mini(positions.size(), _settle_mark.size()):
+		drift = maxf(drift, positions[i].distance_to(_settle_mark[i]))
+	var settled := drift < SETTLE_DRIFT and positions.size() == _settle_mark.size()
+	_settle_mark = positions.duplicate()
+	_still_time = 0.0
+	return settled
+
+
+# A one-cell step: the balls that are free to go travel one cell and brake to a stop (they
+# all move alike in the open, so the mean of their travel is steered). Sets `_step_done`.
+func _step_tilt(
+	positions: PackedVector2Array, velocities: PackedVector2Array, move: int
+) -> Vector2:
+	var dir := Vector2(MazeGrid.direction(move))
+	var length := absf(dir.dot(grid.cell))
+	var travelled := 0.0
+	var speed := 0.0
+	var moving := 0
+	for i in mini(positions.size(), _move_start.size()):
+		if grid.slide(_move_start[i], move) == _move_start[i]:
+			continue  # held by a wall: it stays
+		travelled += (positions[i] - _origin[i]).dot(dir)
+		speed += velocities[i].dot(dir)
+		moving += 1
+	if moving == 0:
+		_step_done = true
+		return Vector2.ZERO
+	var left := length - travelled / float(moving)
+	speed /= float(moving)
+	var cap := steering.max_speed * 0.5
+	var wanted := clampf(left * 4.0, -cap, cap)
+	_step_done = absf(left) < 1.5 and absf(speed) < 4.0
+	var amount := (wanted - speed) * steering.gain
+	if absf(left) > 1.5 and absf(amount) < MazeSteering.MIN_NUDGE_DEG:
+		amount = signf(left) * MazeSteering.MIN_NUDGE_DEG
+	return dir * clampf(amount, -hard_tilt, hard_tilt)
 
 
 func _begin_herd(positions: PackedVector2Array) -> void:
@@ -196,7 +247,7 @@ func _learn(positions: PackedVector2Array) -> void:
 		var from := _move_start[i]
 		var landed := grid.cell_at(positions[i])
 		if grid.slide(from, dir) != landed:
-			grid.slides[from * 8 + dir] = landed
+			grid.slides[from * MazeGrid.MOVES + dir] = landed
 			corrections += 1
 
 

@@ -1,7 +1,8 @@
 extends RefCounted
-## Plans hard tilts for all balls at once on a grid maze. A state is the set of cells the
-## balls are in; a move is a hard tilt toward one of eight directions held until every
-## ball stops (MazeGrid.slide). Breadth-first search finds the shortest list of moves that
+## Plans tilts for all balls at once on a grid maze. A state is the set of cells the balls
+## are in; a move is a hard tilt toward one of eight directions held until every ball stops,
+## or (in hard mode) a one-cell step (MazeGrid.slide); moves that would roll a ball over a
+## black hole are never taken. Breadth-first search finds the shortest list of moves that
 ## gathers every ball into one cell close to the goal; from there the pack rolls in as one.
 ## (One tilt moves every ball, so gathering first is what makes the goal reachable.)
 
@@ -57,6 +58,7 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 	var next := PackedInt32Array()
 	next.resize(n)
 	var slides := grid.slides
+	var stride := MazeGrid.MOVES
 	while head < keys.size():
 		_decode(keys[head], state)
 		var score := _score(state, depth[head])
@@ -71,7 +73,7 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 			for d in order:
 				var deadly := false
 				for b in n:
-					next[b] = slides[state[b] * 8 + d]
+					next[b] = slides[state[b] * stride + d]
 					deadly = deadly or next[b] < 0
 				if deadly:
 					continue  # a ball would roll over a black hole

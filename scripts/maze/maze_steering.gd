@@ -13,16 +13,17 @@ var gain := 0.2
 var lookahead := 12.0
 ## Cruising speed as a share of the board's speed cap.
 var cruise := 0.85
+## The board's speed cap, px/s.
+var max_speed := 93.75
 
 var _nav: MazeNav
 var _level: BoardLevel
-var _max_speed := 93.75
 
 
-func _init(level: BoardLevel, nav: MazeNav, max_speed: float) -> void:
+func _init(level: BoardLevel, nav: MazeNav, speed_cap: float) -> void:
 	_level = level
 	_nav = nav
-	_max_speed = max_speed
+	max_speed = speed_cap
 
 
 ## Each ball asks for the velocity that follows its own path; the tilt serves their average
@@ -49,7 +50,7 @@ func centre_pack(positions: PackedVector2Array, velocities: PackedVector2Array) 
 		mean_v += velocities[i]
 	mean_v /= float(positions.size())
 	var to := _level.goal_center - (lo + hi) * 0.5
-	var want := (to * 3.0).limit_length(_max_speed * 0.4)
+	var want := (to * 3.0).limit_length(max_speed * 0.4)
 	var tilt := (want - mean_v) * gain
 	for axis in 2:
 		if absf(to[axis]) > 1.5 and absf(tilt[axis]) < MIN_NUDGE_DEG:
@@ -81,7 +82,7 @@ func lead(positions: PackedVector2Array, velocities: PackedVector2Array) -> Vect
 ## slowing down as the target nears.
 func velocity_tilt(target: Vector2, p: Vector2, v: Vector2, share: float) -> Vector2:
 	var to := target - p
-	var speed := minf(_max_speed * share, to.length() * 3.0)
+	var speed := minf(max_speed * share, to.length() * 3.0)
 	var want := to.normalized() * speed if to.length() > 0.01 else Vector2.ZERO
 	return (want - v) * gain
 

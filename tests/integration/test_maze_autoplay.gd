@@ -66,6 +66,17 @@ func test_the_grid_reads_the_seed_walls() -> void:
 	assert_eq(grid.slide(grid.cell_at(Vector2(157.5, 157.5)), RIGHT), 4 * 10 + 5)
 
 
+func test_steps_move_one_cell_and_hard_mode_knows_the_holes() -> void:
+	var grid := MazeGrid.new(_level())
+	var step_down := MazeGrid.FIRST_STEP + DOWN
+	assert_eq(grid.slide(0, step_down), 10, "a step goes one cell")
+	assert_eq(grid.slide(2, MazeGrid.FIRST_STEP + RIGHT), 2, "a wall holds a stepping ball")
+	var hard := MazeGrid.new(_level(), true)
+	assert_eq(hard.slide(0, RIGHT), -1, "rolling right from (0, 0) crosses the hole at (2, 0)")
+	assert_eq(hard.slide(1, MazeGrid.FIRST_STEP + RIGHT), -1, "stepping into a hole")
+	assert_eq(hard.slide(0, step_down), 10, "a safe step stays safe")
+
+
 func test_the_planner_gathers_every_ball_from_the_starts() -> void:
 	var level := _level()
 	var grid := MazeGrid.new(level)
