@@ -59,9 +59,7 @@ func _init(on_level: BoardLevel = null) -> void:
 	level = on_level
 	committer = history.commit
 	if level != null:
-		snap_enabled = true
 		grid_step = 5.0 if level.is_maze() else 10.0
-		tool = Tool.SELECT
 
 
 ## Records an action: runs it (unless a live preview already did) and keeps it undoable.

@@ -64,7 +64,7 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 		var c := board.ring_center
 		var rail_from := deg_to_rad(board.rail_start_deg)
 		var rail_to := deg_to_rad(board.rail_end_deg)
-		var inner := board.ring_radius - board.rail_width
+		var inner := LaunchRail.guide_radius(board)
 		Draw.board_arc(canvas, to_screen, c, inner, rail_from, rail_to, Draw.HANDLE_COLOR)
 		var gutter_from := deg_to_rad(board.gutter_start_deg)
 		var gutter_to := deg_to_rad(board.gutter_end_deg)

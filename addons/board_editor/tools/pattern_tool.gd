@@ -4,10 +4,13 @@ extends "res://addons/board_editor/tools/board_tool.gd"
 ## the snapped mouse position; the ghost shows exactly the pins it will add.
 
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 
 
 func press(at: Vector2, _event: InputEventMouseButton) -> bool:
-	var action := PatternAction.new(level(), session.pattern, session.snap_point(at), _axis())
+	var action := PatternAction.new(
+		level(), session.pattern, session.snap_point(at), session.mirror_axis()
+	)
 	if action.size() == 0:
 		return true
 	session.commit(action)
@@ -18,9 +21,5 @@ func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var points := PatternAction.points_for(session.pattern, session.snap_point(hover))
 	if session.mirror_enabled:
-		points = PatternAction.Mirror.with_reflections(points, session.mirror_axis())
+		points = Mirror.with_reflections(points, session.mirror_axis())
 	Draw.ghost_points(canvas, to_screen, points, level().pin_radius)
-
-
-func _axis() -> float:
-	return session.mirror_axis()

@@ -65,6 +65,7 @@ func _init() -> void:
 	_problems.item_selected.connect(func(index: int) -> void: issue_focused.emit(index))
 	add_child(_problems)
 	show_board(null, [])
+	show_message("")
 
 
 ## Shows a line of feedback under the buttons ("" hides it).

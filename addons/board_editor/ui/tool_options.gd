@@ -20,7 +20,7 @@ func _init() -> void:
 	_pattern_box = _section("Pin pattern")
 	_kind = OptionButton.new()
 	for kind in PatternAction.KINDS:
-		_kind.add_item({"lattice": "staggered lattice"}.get(kind, kind).capitalize())
+		_kind.add_item(str({"lattice": "staggered lattice"}.get(kind, kind)).capitalize())
 	_kind.item_selected.connect(_on_pattern_changed)
 	_pattern_box.add_child(_kind)
 	_add_field(_pattern_box, "count", "Pins", 1, 60, 1)
