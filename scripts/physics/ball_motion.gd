@@ -75,7 +75,11 @@ static func move(
 	var min_h: float = t.min_horizontal_speed
 	var rest2: float = t.rest_speed * t.rest_speed
 	var slide_time: float = t.gutter_slide_time
-	var min_feature: float = g.min_feature
+	var travel_share: float = BallStep.TRAVEL_SHARE
+	var max_substeps: int = BallStep.MAX_SUBSTEPS
+	var has_walls: bool = wall_a.size() > 0
+	var last_r := -1.0
+	var max_travel := 0.0
 
 	for i: int in n:
 		var p: Vector2 = pos[i]
@@ -83,20 +87,29 @@ static func move(
 		var v: Vector2 = vel[i]
 		var r: float = rad[i]
 		var pu: Vector2 = push[i]
-		var pu_len: float = pu.length()
-		if pu_len > 0.5 * r:
-			pu *= 0.5 * r / pu_len
+		var pu_len := 0.0
+		if pu.x != 0.0 or pu.y != 0.0:
+			pu_len = pu.length()
+			if pu_len > 0.5 * r:
+				pu *= 0.5 * r / pu_len
+				pu_len = 0.5 * r
 		var prev_a: int = ca[i]
 		var prev_b: int = cb[i]
 		var cur_a: int = NO_CONTACT
 		var cur_b: int = NO_CONTACT
-		var max_travel: float = BallStep.TRAVEL_SHARE * (min_feature + r)
-		var travel: float = (v * dt + pu).length() + pu_len
+		if r != last_r:
+			last_r = r
+			max_travel = g.max_travel(r, travel_share)
+		var mv: Vector2 = v * dt + pu
 		var steps := 1
-		if travel > max_travel:
-			steps = mini(int(ceil(travel / max_travel)), BallStep.MAX_SUBSTEPS)
-		var h: float = dt / steps
-		var pu_step: Vector2 = pu / steps
+		var h: float = dt
+		var pu_step: Vector2 = pu
+		if mv.x * mv.x + mv.y * mv.y > max_travel * max_travel or pu_len > 0.0:
+			var travel: float = mv.length() + pu_len
+			if travel > max_travel:
+				steps = mini(int(ceil(travel / max_travel)), max_substeps)
+				h = dt / steps
+				pu_step = pu / steps
 		var gone := false
 		var id: int = ids[i]
 		for _s: int in steps:
@@ -201,12 +214,15 @@ static func move(
 					v.x = min_h if v.x >= 0.0 else -min_h
 			if gone:
 				break
+			if not has_walls:
+				continue
 			cx = clampi(int((p.x - ox) * inv), 0, cols - 1)
 			cy = clampi(int((p.y - oy) * inv), 0, rows - 1)
 			c = cy * cols + cx
 			# Deepest contact first, then again: at a joint the flat side of one wall is
 			# deeper than the neighbour's cap, so the cap never adds a ghost bump.
 			for _pass: int in 3:
+				var found := 0
 				var best := -1
 				var best_d2 := 0.0
 				var best_lim := 0.0
@@ -225,6 +241,7 @@ static func move(
 					if d2 >= lim * lim:
 						continue
 					var depth: float = lim - sqrt(d2)
+					found += 1
 					if depth > best_depth or best < 0:
 						best = wid
 						best_depth = depth
@@ -268,6 +285,8 @@ static func move(
 						cur_a = key
 					else:
 						cur_b = key
+				if found == 1:
+					break
 		ca[i] = cur_a
 		cb[i] = cur_b
 		pos[i] = p

@@ -20,6 +20,9 @@ const TRAVEL_SHARE := 0.5
 const PUSH_SHARE := 0.4
 ## Safety bound on substeps for one ball in one step.
 const MAX_SUBSTEPS := 1024
+## Sort keys of the ball-ball broad phase: cell << SORT_SHIFT | ball index.
+const SORT_SHIFT := 21
+const SORT_MASK := (1 << 21) - 1
 ## Distances below this count as zero (px).
 const EPS := 1e-6
 
@@ -72,42 +75,64 @@ static func collide_balls(
 	var oy: float = g.origin.y
 	var inv: float = g.inv_cell
 	var n_cells: int = cols * rows
-	var start: PackedInt32Array = b.sort_start
-	var order: PackedInt32Array = b.sort_order
-	var cell_of: PackedInt32Array = b.sort_cell
-	start.resize(n_cells + 2)
-	start.fill(0)
-	order.resize(n)
-	cell_of.resize(n)
+	# Sort balls by cell with one native sort of (cell << 21 | ball) keys; then each
+	# occupied cell's balls are keys[start[c] .. stop[c]). Only occupied cells are touched.
+	var keys: PackedInt64Array = b.sort_keys
+	keys.resize(n)
 	for i: int in n:
 		var p: Vector2 = pos[i]
 		var cx: int = clampi(int((p.x - ox) * inv), 0, cols - 1)
 		var cy: int = clampi(int((p.y - oy) * inv), 0, rows - 1)
-		var c: int = cy * cols + cx
-		cell_of[i] = c
-		start[c + 2] += 1
-	for k: int in range(2, n_cells + 2):
-		start[k] += start[k - 1]
-	for i: int in n:
-		var c: int = cell_of[i] + 1
-		order[start[c]] = i
-		start[c] += 1
-	# Now balls of cell c are order[start[c] .. start[c + 1]).
+		keys[i] = ((cy * cols + cx) << SORT_SHIFT) | i
+	keys.sort()
+	var start: PackedInt32Array = b.sort_start
+	var stop: PackedInt32Array = b.sort_stop
+	var order: PackedInt32Array = b.sort_order
+	var cell_of: PackedInt32Array = b.sort_cell
+	if start.size() != n_cells:
+		start.resize(n_cells)
+		stop.resize(n_cells)
+	start.fill(-1)
+	order.resize(n)
+	cell_of.resize(n)
+	var prev := -1
+	for k: int in n:
+		var key: int = keys[k]
+		var c: int = key >> SORT_SHIFT
+		order[k] = key & SORT_MASK
+		cell_of[k] = c
+		if c != prev:
+			start[c] = k
+			if prev >= 0:
+				stop[prev] = k
+			prev = c
+	stop[prev] = n
 	for k: int in n:
 		var i: int = order[k]
-		var c: int = cell_of[i]
+		var c: int = cell_of[k]
 		var cx: int = c % cols
 		var cy: int = c / cols
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
 		# Same cell after this ball, then the cell to the right: one contiguous run.
-		var hi_same: int = start[c + 2] if cx < cols - 1 else start[c + 1]
-		var lo_below := 0
+		var hi_same: int = stop[c]
+		if cx < cols - 1 and start[c + 1] >= 0:
+			hi_same = stop[c + 1]
+		# The three cells below are consecutive, so their balls are one run too.
+		var lo_below := -1
 		var hi_below := 0
 		if cy < rows - 1:
-			var below: int = c + cols
-			lo_below = start[below - 1] if cx > 0 else start[below]
-			hi_below = start[below + 2] if cx < cols - 1 else start[below + 1]
+			var b0: int = c + cols - 1 if cx > 0 else c + cols
+			var b1: int = c + cols + 1 if cx < cols - 1 else c + cols
+			for cc: int in range(b0, b1 + 1):
+				var sc: int = start[cc]
+				if sc >= 0:
+					if lo_below < 0:
+						lo_below = sc
+					hi_below = stop[cc]
+		if lo_below < 0:
+			lo_below = 0
+			hi_below = 0
 		for run: int in 2:
 			var m0: int = k + 1 if run == 0 else lo_below
 			var m1: int = hi_same if run == 0 else hi_below
@@ -135,9 +160,6 @@ static func collide_balls(
 				push[j] += s
 	b.vel = vel
 	b.push = push
-	b.sort_start = start
-	b.sort_order = order
-	b.sort_cell = cell_of
 
 
 ## Velocity after a bouncing contact: restitution on the normal, friction on the tangent.

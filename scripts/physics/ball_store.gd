@@ -32,7 +32,9 @@ var index_of := PackedInt32Array()
 var events := PackedInt32Array()
 var event_speed := PackedFloat32Array()
 ## Scratch arrays of the ball-ball broad phase (reused every step).
+var sort_keys := PackedInt64Array()
 var sort_start := PackedInt32Array()
+var sort_stop := PackedInt32Array()
 var sort_order := PackedInt32Array()
 var sort_cell := PackedInt32Array()
 var max_radius := 0.0

@@ -8,8 +8,9 @@ extends RefCounted
 
 ## Extra growth of binned shapes, px.
 const BIN_MARGIN := 1.0
-## Smallest cell size, px: small cells duplicate long walls into many lists.
-const MIN_CELL := 16.0
+## Smallest cell size, px: small cells duplicate long walls into many lists. Cells are
+## otherwise one ball diameter (+1 px), so ball pairs need only the neighbouring cells.
+const MIN_CELL := 8.0
 
 var pin_pos := PackedVector2Array()
 var pin_radius := PackedFloat32Array()
@@ -51,6 +52,10 @@ var wall_start := PackedInt32Array()
 var wall_items := PackedInt32Array()
 ## Smallest pin or wall radius (the thinnest feature a ball must not tunnel through).
 var min_feature := 0.0
+## Closest centre distance between two pins whose grown shapes overlap (INF if none):
+## two such pins form a notch that is thinner than either pin; see max_travel().
+var pin_spacing := INF
+var min_pin_radius := INF
 ## The ball radius the grid was built for; a larger ball forces a rebuild.
 var built_ball_radius := 0.0
 ## False when every ball tests every pin (`all_pins`), the benchmark's brute-force baseline.
@@ -76,7 +81,7 @@ func build(ball_radius: float, use_zoning := true) -> void:
 		min_feature = minf(min_feature, r)
 	if min_feature == INF:
 		min_feature = 0.0
-	cell = maxf(MIN_CELL, 2.0 * ball_radius + 2.0)
+	cell = maxf(MIN_CELL, 2.0 * ball_radius + 1.0)
 	inv_cell = 1.0 / cell
 	var box := _bounds()
 	var pad: float = grow + max_pin + cell
@@ -85,7 +90,38 @@ func build(ball_radius: float, use_zoning := true) -> void:
 	rows = maxi(1, int(ceil((box.size.y + 2.0 * pad) * inv_cell)))
 	_bin_pins(grow)
 	_bin_walls(grow)
+	_find_pin_spacing(2.0 * (max_pin + ball_radius))
 	dirty = false
+
+
+## Longest safe move (px) in one substep for a ball of radius r: a centre that enters a
+## shape by less than this never reaches the far side of it. For a lone pin or wall that
+## is their radius plus r; where two pins' grown circles overlap, only the notch between
+## them (half-thickness sqrt(R² - (s/2)²)) is left to stop the ball.
+func max_travel(r: float, share: float) -> float:
+	var t: float = min_feature + r
+	var half: float = pin_spacing * 0.5
+	var grown: float = min_pin_radius + r
+	if half < grown:
+		t = minf(t, sqrt(grown * grown - half * half))
+	return share * maxf(t, 0.1 * r)
+
+
+func _find_pin_spacing(limit: float) -> void:
+	pin_spacing = INF
+	min_pin_radius = INF
+	for r: float in pin_radius:
+		min_pin_radius = minf(min_pin_radius, r)
+	var lim2: float = limit * limit
+	for c: int in cols * rows:
+		var lo: int = pin_start[c]
+		var hi: int = pin_start[c + 1]
+		for a: int in range(lo, hi):
+			var pa: Vector2 = pin_pos[pin_items[a]]
+			for b: int in range(a + 1, hi):
+				var d2: float = pa.distance_squared_to(pin_pos[pin_items[b]])
+				if d2 < lim2:
+					pin_spacing = minf(pin_spacing, sqrt(d2))
 
 
 ## Index of the cell holding `p`, clamped to the grid.

@@ -1,0 +1,117 @@
+extends RefCounted
+## A bench scene built on Godot's own GodotPhysics2D through PhysicsServer2D: balls are
+## rigid circles, pins and walls are shapes of one static body, the ring is a closed
+## segment polygon. The engine steps it in its own physics frames; this object only builds,
+## reads back positions and teleports balls for the harness.
+
+const RING_SEGMENTS := 256
+
+var space := RID()
+var balls: Array[RID] = []
+
+var _static_body := RID()
+var _shapes: Array[Shape2D] = []
+var _ball_shape: CircleShape2D
+
+
+## Builds the scene; `ccd` turns on continuous collision for the balls (the fast scene).
+func build(scene: Dictionary, gravity: Vector2, bounce: float, ccd: bool) -> void:
+	var ps := PhysicsServer2D
+	space = ps.space_create()
+	ps.space_set_active(space, true)
+	set_gravity(gravity)
+	_static_body = ps.body_create()
+	ps.body_set_mode(_static_body, PhysicsServer2D.BODY_MODE_STATIC)
+	ps.body_set_space(_static_body, space)
+	ps.body_set_param(_static_body, PhysicsServer2D.BODY_PARAM_BOUNCE, 0.0)
+	ps.body_set_param(_static_body, PhysicsServer2D.BODY_PARAM_FRICTION, 0.0)
+	var pin := CircleShape2D.new()
+	pin.radius = scene["pin_r"]
+	_shapes.append(pin)
+	for p: Vector2 in scene["pins"]:
+		ps.body_add_shape(_static_body, pin.get_rid(), Transform2D(0.0, p))
+	var walls: PackedVector2Array = scene["walls"]
+	var wall_r: float = scene["wall_r"]
+	for k: int in walls.size() / 2:
+		var a: Vector2 = walls[2 * k]
+		var b: Vector2 = walls[2 * k + 1]
+		var cap := CapsuleShape2D.new()
+		cap.radius = wall_r
+		cap.height = a.distance_to(b) + 2.0 * wall_r
+		_shapes.append(cap)
+		# A capsule's axis is its local y: turn it onto a→b.
+		var angle: float = (b - a).angle() - PI / 2.0
+		ps.body_add_shape(_static_body, cap.get_rid(), Transform2D(angle, (a + b) * 0.5))
+	if scene["ring"]:
+		var ring := ConcavePolygonShape2D.new()
+		var segs := PackedVector2Array()
+		for k: int in RING_SEGMENTS:
+			segs.append(Vector2.from_angle(TAU * k / RING_SEGMENTS) * 500.0)
+			segs.append(Vector2.from_angle(TAU * (k + 1) / RING_SEGMENTS) * 500.0)
+		ring.segments = segs
+		_shapes.append(ring)
+		ps.body_add_shape(_static_body, ring.get_rid())
+	_ball_shape = CircleShape2D.new()
+	_ball_shape.radius = scene["ball_r"]
+	var pos: PackedVector2Array = scene["pos"]
+	var vel: PackedVector2Array = scene["vel"]
+	for i: int in pos.size():
+		var body := ps.body_create()
+		ps.body_set_mode(body, PhysicsServer2D.BODY_MODE_RIGID)
+		ps.body_add_shape(body, _ball_shape.get_rid())
+		ps.body_set_space(body, space)
+		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_BOUNCE, bounce)
+		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_FRICTION, 0.0)
+		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_MASS, 1.0)
+		if ccd:
+			ps.body_set_continuous_collision_detection_mode(
+				body, PhysicsServer2D.CCD_MODE_CAST_SHAPE
+			)
+		ps.body_set_state(body, PhysicsServer2D.BODY_STATE_TRANSFORM, Transform2D(0.0, pos[i]))
+		ps.body_set_state(body, PhysicsServer2D.BODY_STATE_LINEAR_VELOCITY, vel[i])
+		balls.append(body)
+
+
+func set_gravity(g: Vector2) -> void:
+	var len: float = g.length()
+	PhysicsServer2D.area_set_param(space, PhysicsServer2D.AREA_PARAM_GRAVITY, len)
+	var dir: Vector2 = g / len if len > 0.0 else Vector2.DOWN
+	PhysicsServer2D.area_set_param(space, PhysicsServer2D.AREA_PARAM_GRAVITY_VECTOR, dir)
+
+
+## Maze tilt in degrees → gravity, as MazeTilt maps it for BallWorld.
+func tilt(deg: Vector2) -> void:
+	set_gravity(MazeTilt.gravity(deg, PhysicsTuning.maze_defaults().tilt_gravity))
+
+
+func positions() -> PackedVector2Array:
+	var out := PackedVector2Array()
+	out.resize(balls.size())
+	for i: int in balls.size():
+		var t: Transform2D = PhysicsServer2D.body_get_state(
+			balls[i], PhysicsServer2D.BODY_STATE_TRANSFORM
+		)
+		out[i] = t.origin
+	return out
+
+
+func velocity(i: int) -> Vector2:
+	return PhysicsServer2D.body_get_state(balls[i], PhysicsServer2D.BODY_STATE_LINEAR_VELOCITY)
+
+
+func teleport(i: int, p: Vector2, v: Vector2) -> void:
+	PhysicsServer2D.body_set_state(
+		balls[i], PhysicsServer2D.BODY_STATE_TRANSFORM, Transform2D(0.0, p)
+	)
+	PhysicsServer2D.body_set_state(balls[i], PhysicsServer2D.BODY_STATE_LINEAR_VELOCITY, v)
+
+
+func free_all() -> void:
+	for b: RID in balls:
+		PhysicsServer2D.free_rid(b)
+	balls.clear()
+	if _static_body.is_valid():
+		PhysicsServer2D.free_rid(_static_body)
+	if space.is_valid():
+		PhysicsServer2D.free_rid(space)
+	_shapes.clear()

@@ -1,0 +1,162 @@
+extends RefCounted
+## Runs a bench scene on BallWorld (timing only world.step()), the harness rules both
+## engines share (respawn, relaunch, tilt), the zoning-versus-brute-force ratio and the
+## scale sweeps.
+
+const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
+const SweptCheck := preload("res://tests/bench/physics/swept_check.gd")
+
+const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
+
+## Steps excluded from timing at the start of a run.
+const WARMUP := 5
+## Respawns and relaunches happen every this many steps.
+const RULES_EVERY := 8
+const RULES_SEED := 99
+
+
+## BallWorld seen through the same small interface as the Godot side.
+class OursSide:
+	extends RefCounted
+	var world: BallWorld
+	var ids: PackedInt32Array
+
+	func _init(w: BallWorld) -> void:
+		world = w
+		ids = w.get_ids()
+
+	func velocity(i: int) -> Vector2:
+		return world.get_ball_velocity(ids[i])
+
+	func teleport(i: int, p: Vector2, v: Vector2) -> void:
+		world.set_ball_position(ids[i], p)
+		world.set_ball_velocity(ids[i], v)
+
+	func tilt(deg: Vector2) -> void:
+		world.set_tilt(deg)
+
+
+## The scene as a BallWorld with the seed tuning for its mode.
+static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
+	var maze: bool = scene["mode"] == "maze"
+	var t := PhysicsTuning.maze_defaults() if maze else PhysicsTuning.pachinko_defaults()
+	t.fixed_hz = scene["hz"]
+	if scene["mode"] == "fast":
+		t.max_speed = 4000.0
+	var w := BallWorld.new(t)
+	w.use_zoning = zoning
+	if scene["ring"]:
+		w.set_ring(Vector2.ZERO, Scenes.RING_R)
+	for p: Vector2 in scene["pins"]:
+		w.add_pin(p, scene["pin_r"])
+	var walls: PackedVector2Array = scene["walls"]
+	for k: int in walls.size() / 2:
+		w.add_wall(walls[2 * k], walls[2 * k + 1], scene["wall_r"])
+	var pos: PackedVector2Array = scene["pos"]
+	var vel: PackedVector2Array = scene["vel"]
+	for i: int in pos.size():
+		w.spawn_ball(pos[i], vel[i], scene["ball_r"])
+	if maze:
+		w.set_tilt(Scenes.maze_tilt(0.0))
+	w.build_grid()
+	return w
+
+
+## Runs `steps` steps. Timing runs (check false) measure process CPU time over the loop
+## and report ball_steps_per_s; check runs replay the same steps (the world is
+## deterministic) with the swept check after every step and report tunnels and escapes.
+static func run(scene: Dictionary, steps: int, check: bool, zoning := true) -> Dictionary:
+	var w := build_world(scene, zoning)
+	var side := OursSide.new(w)
+	var checker: SweptCheck = SweptCheck.new(scene) if check else null
+	var rng := RandomNumberGenerator.new()
+	rng.seed = RULES_SEED
+	var dt: float = 1.0 / float(scene["hz"])
+	var mode: String = scene["mode"]
+	var before := w.get_positions()
+	var balls: int = w.ball_count()
+	var cpu0 := 0
+	var wall0 := 0
+	for s: int in steps:
+		if s == WARMUP:
+			cpu0 = CpuClock.usec()
+			wall0 = Time.get_ticks_usec()
+		w.step(dt)
+		if checker != null:
+			var after := w.get_positions()
+			var skip := PackedByteArray()
+			skip.resize(after.size())
+			skip.fill(0)
+			checker.check(before, after, skip)
+			harness_rules(mode, s + 1, after, rng, side, scene["hz"])
+			before = after
+		elif rules_due(mode, s + 1):
+			harness_rules(mode, s + 1, w.get_positions(), rng, side, scene["hz"])
+	var timed: int = maxi(steps - WARMUP, 1)
+	var cpu: float = maxf((CpuClock.usec() - cpu0) / 1e6, 1e-6)
+	var wall: float = maxf((Time.get_ticks_usec() - wall0) / 1e6, 1e-6)
+	return {
+		"ball_steps_per_s": balls * timed / cpu,
+		"wall_ball_steps_per_s": balls * timed / wall,
+		"tunnels": checker.tunnels if checker != null else 0,
+		"escapes": checker.escapes if checker != null else 0,
+	}
+
+
+## Whether the harness rules act after step `step_i` (respawns and relaunches every
+## RULES_EVERY steps, the maze tilt every step).
+static func rules_due(mode: String, step_i: int) -> bool:
+	return mode == "maze" or step_i % RULES_EVERY == 0
+
+
+## The per-step rules of each scene, the same for both engines. Teleported balls get their
+## new position written into `pos`, so the next swept check starts from there.
+static func harness_rules(
+	mode: String,
+	step_i: int,
+	pos: PackedVector2Array,
+	rng: RandomNumberGenerator,
+	side: Object,
+	hz: float
+) -> void:
+	if not rules_due(mode, step_i):
+		return
+	if mode == "flow":
+		for i: int in pos.size():
+			if pos[i].y > Scenes.RESPAWN_Y:
+				var p: Vector2 = Scenes.respawn_point(rng)
+				side.call("teleport", i, p, Vector2.ZERO)
+				pos[i] = p
+	elif mode == "fast":
+		for i: int in pos.size():
+			var v: Vector2 = side.call("velocity", i)
+			if v.length() < 500.0:
+				side.call("teleport", i, pos[i], Scenes.fast_velocity(rng))
+	elif mode == "maze":
+		side.call("tilt", Scenes.maze_tilt(step_i / hz))
+
+
+## S1 ball-steps per second with zoning, divided by the same without it.
+static func zoned_vs_brute(scene: Dictionary, steps: int) -> float:
+	var zoned: Dictionary = run(scene, steps + WARMUP, false, true)
+	var brute: Dictionary = run(scene, steps + WARMUP, false, false)
+	return zoned["ball_steps_per_s"] / maxf(brute["ball_steps_per_s"], 1e-9)
+
+
+## S1 with 250 → 8,000 balls and 1,250 → 5,000 pins (pitch 24 → 17 → 12 px).
+static func scale_sweep() -> Dictionary:
+	var by_balls := {}
+	for n: int in [250, 500, 1000, 2000, 4000, 8000]:
+		var scene: Dictionary = Scenes.make("S1", "flow", 24.0, n, 240.0)
+		var steps: int = clampi(100000 / n, 15, 300)
+		var r: Dictionary = run(scene, steps + WARMUP, false)
+		by_balls[str(n)] = r["ball_steps_per_s"]
+		print("  scale balls %d: %.0f ball-steps/s" % [n, r["ball_steps_per_s"]])
+	var by_pins := {}
+	for pitch: float in [24.0, 17.0, 12.0]:
+		var scene: Dictionary = Scenes.make("S1", "flow", pitch, 1000, 240.0)
+		var pins: int = (scene["pins"] as PackedVector2Array).size()
+		var r: Dictionary = run(scene, 100 + WARMUP, false)
+		by_pins[str(pins)] = r["ball_steps_per_s"]
+		print("  scale pins %d: %.0f ball-steps/s" % [pins, r["ball_steps_per_s"]])
+	return {"balls": by_balls, "pins": by_pins}
