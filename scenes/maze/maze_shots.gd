@@ -26,7 +26,8 @@ func _ready() -> void:
 	var rules: MazeRules = game.get("rules")
 	# Mid-tilt: press the joystick head and drag it down-right with real mouse events.
 	var joystick: Control = game.get("_joystick")
-	var head := joystick.get_global_rect().get_center()
+	# Events arrive in window pixels; the stretched canvas maps them back to UI units.
+	var head := get_viewport().get_final_transform() * joystick.get_global_rect().get_center()
 	_mouse_button(head, true)
 	await get_tree().process_frame
 	_mouse_button(head, false)
