@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Checks the board editor inside the real (headless) Godot editor: an edit goes through the
 # plugin into the edited scene's undo history, undo and redo work there, and saving the
-# scene writes the board's .tres. Works on a scratch copy in build/, never on a shipped board.
+# scene writes the board's .tres, a board node without a board gets a new one (undoably),
+# and play-test writes the request naming the board. Works on scratch copies in build/.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -27,7 +28,8 @@ script = ExtResource("1_node")
 level = ExtResource("2_level")
 SCENE
 	fi
-	BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" timeout 180 tools/godot.sh --headless \
+	BOARD_EDITOR_SELF_CHECK_PLAY=$([ "$kind" = maze ] && echo 1 || echo 0) \
+		BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" timeout 180 tools/godot.sh --headless \
 		--editor --path . >"$log" 2>&1
 	if grep -q 'board editor self-check: ok' "$log" && ! grep -q 'SCRIPT ERROR' "$log"; then
 		echo "editor self-check ($kind): ok"

@@ -4,6 +4,8 @@ extends Node
 ## BOARD_EDITOR_SELF_CHECK="<scene.tscn>" it opens the scene, selects its BoardNode, adds a
 ## thing through the plugin's undo path, undoes and redoes it through the scene's history,
 ## saves the scene, reads the board file back from disk, prints the verdict and quits.
+## With BOARD_EDITOR_SELF_CHECK_PLAY=1 it also presses play-test: headless, the request
+## file must name the board; with a display the game scene must start (and takes the file).
 
 const ENV := "BOARD_EDITOR_SELF_CHECK"
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
@@ -83,6 +85,20 @@ func _run() -> void:
 		var saved := ResourceLoader.load(level.resource_path, "", ResourceLoader.CACHE_MODE_IGNORE)
 		written = saved is BoardLevel and _count(saved as BoardLevel) == before + 1
 	_expect(written, "saving the scene did not write the board")
+	if OS.get_environment("BOARD_EDITOR_SELF_CHECK_PLAY") == "1":
+		# The dock's play-test button: the request names this board and the game starts.
+		_plugin.call("_play_test")
+		await _frames(30)
+		var request := ConfigFile.new()
+		request.load("user://playtest_request.cfg")
+		var named := str(request.get_value("playtest", "board", ""))
+		_expect(
+			EditorInterface.is_playing_scene() or named == level.resource_path,
+			"play-test did not start"
+		)
+		var playing := EditorInterface.get_playing_scene()
+		print("board editor self-check: play-test scene '%s', request '%s'" % [playing, named])
+		EditorInterface.stop_playing_scene()
 	if fresh:
 		history.undo()
 		history.undo()
