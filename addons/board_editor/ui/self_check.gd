@@ -99,6 +99,8 @@ func _run() -> void:
 		var playing := EditorInterface.get_playing_scene()
 		print("board editor self-check: play-test scene '%s', request '%s'" % [playing, named])
 		EditorInterface.stop_playing_scene()
+		# Never leave a request for a scratch board behind for the next real game.
+		DirAccess.remove_absolute("user://playtest_request.cfg")
 	if fresh:
 		history.undo()
 		history.undo()
