@@ -74,6 +74,7 @@ func _run() -> void:
 	_expect(_count(level) == before, "undo did not take the edit back")
 	history.redo()
 	_expect(_count(level) == before + 1, "redo did not apply the edit again")
+	_check_drag(session, history)
 	EditorInterface.save_scene()
 	await _frames(5)
 	var written := false
@@ -102,10 +103,49 @@ func _run() -> void:
 		# Never leave a request for a scratch board behind for the next real game.
 		DirAccess.remove_absolute("user://playtest_request.cfg")
 	if fresh:
-		history.undo()
-		history.undo()
+		for step in 3:  # the drag, the added wall, then the new board itself
+			history.undo()
 		_expect((root as BoardNode).level == null, "undo did not take the new board back")
 	_finish(_problems)
+
+
+# A select-tool drag of the thing just added: previewed live, one step in the scene history.
+func _check_drag(session: Session, history: UndoRedo) -> void:
+	var input: RefCounted = _plugin.call("get_board_input")
+	var item := session.level.pins.size() - 1 if session.level.is_pachinko() else -1
+	var from := session.level.pins[item] if item >= 0 else session.level.size * 0.25
+	if session.level.is_maze():
+		from += Vector2(17.5, 0)  # the middle of the wall added above
+	var start := _position(session.level)
+	session.set_tool(Session.Tool.SELECT)
+	var steps := [[true, from], [null, from + Vector2(20, 10)], [null, from + Vector2(40, 40)]]
+	steps.append([false, from + Vector2(40, 40)])
+	for step: Array in steps:
+		var event: InputEvent
+		if step[0] == null:
+			event = InputEventMouseMotion.new()
+		else:
+			var button := InputEventMouseButton.new()
+			button.button_index = MOUSE_BUTTON_LEFT
+			button.pressed = step[0]
+			event = button
+		(event as InputEventMouse).position = step[1]
+		input.call("handle", event, Transform2D.IDENTITY)
+	var moved := _position(session.level)
+	_expect(moved != start, "dragging did not move the item")
+	_expect(history.get_current_action_name().begins_with("Move"), "the drag is not one step")
+	history.undo()
+	_expect(_position(session.level) == start, "undo did not take the whole drag back")
+	history.redo()
+	_expect(_position(session.level) == moved, "redo did not repeat the drag")
+
+
+func _position(level: BoardLevel) -> Vector2:
+	return (
+		level.walls[level.walls.size() - 1]
+		if level.is_maze()
+		else level.pins[level.pins.size() - 1]
+	)
 
 
 func _count(level: BoardLevel) -> int:
