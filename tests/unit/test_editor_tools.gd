@@ -5,6 +5,7 @@ extends GutTest
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardOverlay := preload("res://addons/board_editor/ui/board_overlay.gd")
 const Actions := preload("res://tests/unit/test_editor_actions.gd")
 
 var session: Session
@@ -181,3 +182,33 @@ func test_erase_tool_and_handles() -> void:
 	assert_eq(session.level.ring_center, Vector2(320, 290), "ring centre handle dragged")
 	session.history.undo()
 	assert_eq(session.level.ring_center, Vector2(300, 300))
+
+
+func test_every_tool_and_the_overlay_draw_without_errors() -> void:
+	var canvas: Control = add_child_autofree(Control.new())
+	var painted := [0]
+	for level: BoardLevel in [Actions.pachinko(), Actions.maze()]:
+		start(level)
+		session.level.pins = PackedVector2Array([Vector2(120, 100)])
+		session.level.pin_pocket = PackedInt32Array([-1])
+		session.level.pin_special = PackedByteArray([0])
+		session.level.walls = PackedVector2Array([Vector2(35, 35), Vector2(105, 35)])
+		session.select([Vector2i(0, 0), Vector2i(2, 0)] as Array[Vector2i])
+		session.set_mirror(true)
+		var issues: Array[BoardIssue] = [
+			BoardIssue.new(BoardIssue.Severity.ERROR, "A test.", Vector2(50, 50))
+		]
+		for tool: int in session.available_tools():
+			session.set_tool(tool)
+			move(Vector2(121, 101))
+			var paint := func() -> void:
+				painted[0] += 1
+				BoardOverlay.draw(
+					canvas, Transform2D.IDENTITY, session, input.active_tool(), issues, 0
+				)
+			canvas.draw.connect(paint)
+			canvas.queue_redraw()
+			await get_tree().process_frame
+			canvas.draw.disconnect(paint)
+	# GUT fails the test on any engine or script error raised while drawing.
+	assert_eq(painted[0], 13, "every tool of both kinds drew its preview over the overlay")
