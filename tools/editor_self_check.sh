@@ -39,4 +39,6 @@ SCENE
 		status=1
 	fi
 done
+# The scratch boards would otherwise show up in the editor's FileSystem dock.
+[ $status -eq 0 ] && rm -f "$DIR"/*.tscn "$DIR"/*.tres
 exit $status
