@@ -212,3 +212,16 @@ func test_every_tool_and_the_overlay_draw_without_errors() -> void:
 			canvas.draw.disconnect(paint)
 	# GUT fails the test on any engine or script error raised while drawing.
 	assert_eq(painted[0], 13, "every tool of both kinds drew its preview over the overlay")
+
+
+func test_drag_erase_is_one_step() -> void:
+	start(pins(4))
+	key(KEY_E)
+	press(Vector2(100, 100), true)
+	move(Vector2(120, 100))
+	move(Vector2(140, 100))
+	assert_eq(session.level.pins.size(), 4, "marked, not yet gone")
+	press(Vector2(140, 100), false)
+	assert_eq(session.level.pins, PackedVector2Array([Vector2(160, 100)]))
+	session.history.undo()
+	assert_eq(session.level.pins.size(), 4, "one undo brings all three back")

@@ -1,33 +1,72 @@
 @tool
 extends "res://addons/board_editor/tools/board_tool.gd"
-## Click a thing to delete it (its mirror partner too in mirror mode). A pocket goes with
-## all its pins; the goal cannot be erased, only moved.
+## Click a thing to delete it, or drag across several: everything the mouse passes over is
+## marked and deleted together on release, as one undo step. In mirror mode the mirrored
+## partners go too. A pocket goes with all its pins; the goal cannot be erased, only moved.
 
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 
+var _erasing := false
+var _marked: Array[Vector2i] = []
+
 
 func press(at: Vector2, _event: InputEventMouseButton) -> bool:
-	var item := HitTest.pick(level(), at, tolerance())
-	if item == Items.NONE or item.x == Items.Kind.GOAL:
-		return true
-	var items: Array[Vector2i] = [item]
-	if session.mirror_enabled:
-		items = Mirror.with_partners(level(), items, Mirror.axis_of(level()))
-	session.commit(DeleteItemsAction.new(level(), items))
+	_erasing = true
+	_marked.clear()
+	_mark(at)
 	return true
 
 
+func motion(at: Vector2, _event: InputEventMouseMotion) -> bool:
+	hover = at
+	if _erasing:
+		_mark(at)
+	return _erasing
+
+
+func release(_at: Vector2, _event: InputEventMouseButton) -> bool:
+	if not _erasing:
+		return false
+	_erasing = false
+	var items := _marked.duplicate()
+	_marked.clear()
+	if session.mirror_enabled:
+		items = Mirror.with_partners(level(), items, Mirror.axis_of(level()))
+	if not items.is_empty():
+		session.commit(DeleteItemsAction.new(level(), items))
+	return true
+
+
+func cancel() -> bool:
+	var busy := _erasing
+	_erasing = false
+	_marked.clear()
+	return busy
+
+
 func draw(canvas: Control, to_screen: Transform2D) -> void:
-	var item := HitTest.pick(level(), hover, tolerance())
-	if item == Items.NONE or item.x == Items.Kind.GOAL:
-		return
-	var at := Items.position_of(level(), item)
-	Draw.circle(canvas, to_screen, at, 8.0 * pixel, Draw.ERROR_COLOR, false, 2.0)
-	var arm := Vector2(5, 5)
-	var center := to_screen * at
-	canvas.draw_line(center - arm, center + arm, Draw.ERROR_COLOR, 2.0)
-	canvas.draw_line(
-		center + Vector2(-arm.x, arm.y), center + Vector2(arm.x, -arm.y), Draw.ERROR_COLOR, 2.0
-	)
+	var shown := _marked.duplicate()
+	var under := _erasable(hover)
+	if under != Items.NONE and not shown.has(under):
+		shown.append(under)
+	for item in shown:
+		if not Items.is_valid(level(), item):
+			continue
+		var center := to_screen * Items.position_of(level(), item)
+		var arm := Vector2(5, 5)
+		canvas.draw_arc(center, 9.0, 0.0, TAU, 24, Draw.ERROR_COLOR, 2.0, true)
+		canvas.draw_line(center - arm, center + arm, Draw.ERROR_COLOR, 2.0)
+		canvas.draw_line(center + Vector2(-5, 5), center + Vector2(5, -5), Draw.ERROR_COLOR, 2.0)
+
+
+func _mark(at: Vector2) -> void:
+	var item := _erasable(at)
+	if item != Items.NONE and not _marked.has(item):
+		_marked.append(item)
+
+
+func _erasable(at: Vector2) -> Vector2i:
+	var item := HitTest.pick(level(), at, tolerance())
+	return Items.NONE if item.x == Items.Kind.GOAL else item

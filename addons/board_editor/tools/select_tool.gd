@@ -83,6 +83,12 @@ func cancel() -> bool:
 
 
 func draw(canvas: Control, to_screen: Transform2D) -> void:
+	if not _pressed:
+		# What a click would pick.
+		var under := HitTest.pick(level(), hover, tolerance())
+		if under != Items.NONE:
+			var at := to_screen * Items.position_of(level(), under)
+			canvas.draw_arc(at, 10.0, 0.0, TAU, 24, Color(Draw.SELECT_COLOR, 0.6), 1.0, true)
 	if _boxing:
 		var rect := Rect2(to_screen * _press_at, Vector2.ZERO).expand(to_screen * hover)
 		canvas.draw_rect(rect, Color(0.4, 0.7, 1.0, 0.15), true)

@@ -21,7 +21,8 @@ const TOOLS := {
 	Session.Tool.START: [KEY_B, "Ball start", "Click to add a ball start (one ball each)."],
 	Session.Tool.HANDLES:
 	[KEY_R, "Handles", "Drag the ring, launch rail and gutter handles, or the goal's radius."],
-	Session.Tool.ERASE: [KEY_E, "Erase", "Click a pin, pocket, wall, hole or start to delete it."],
+	Session.Tool.ERASE:
+	[KEY_E, "Erase", "Click a pin, pocket, wall, hole or start to delete it; drag across many."],
 }
 ## Toggles.
 const SNAP_KEY := KEY_N
