@@ -165,7 +165,11 @@ static func _save(level: BoardLevel) -> bool:
 		push_error("make_original_boards: %s has %d errors." % [level.board_id, errors.size()])
 		return false
 	var path := "res://levels/%s/%s.tres" % [kind, id]
+	# Keep the file's uid (or give it one) so the editor never rewrites the file to add it.
+	var uid := ResourceLoader.get_resource_uid(path) if FileAccess.file_exists(path) else -1
 	var error := ResourceSaver.save(level, path)
+	if error == OK:
+		error = ResourceSaver.set_uid(path, uid if uid != -1 else ResourceUID.create_id())
 	if error != OK:
 		push_error("make_original_boards: could not write %s (%s)" % [path, error_string(error)])
 		return false
