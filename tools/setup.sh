@@ -18,7 +18,6 @@ PREFIX=$CACHE/godot-4.6
 GUT_VERSION=9.6.0
 GDTOOLKIT_VERSION=4.5.0
 WANT=${1:-base}
-[ -f /work/LEAD_MESSAGE ] && { echo; echo "*** MESSAGE FROM THE LEAD: $(cat /work/LEAD_MESSAGE) ***"; echo; } >&2 # LEADMSG
 
 say() { printf 'setup: %s\n' "$*" >&2; }
 die() { printf '\nsetup failed: %s\n\n' "$*" >&2; exit 1; }
