@@ -30,6 +30,11 @@ func _draw() -> void:
 	var stopper := LaunchRail.stopper(_level)
 	draw_line(stopper[0], stopper[1], RAIL_SHADE, width + 3.0, true)
 	draw_line(stopper[0], stopper[1], Color("f0c24a"), width, true)
+	# The deflector past the rail's end is a real wall: a ball must see what bounces it.
+	var deflector := LaunchRail.deflector(_level)
+	draw_line(deflector[0], deflector[1], RAIL_SHADE, width + 2.5, true)
+	draw_line(deflector[0], deflector[1], RAIL, width, true)
+	draw_circle(deflector[1], width * 0.5, RAIL, true, -1.0, true)
 	# Arrow marks along the channel show which way a ball travels.
 	var marks := 5
 	for i in marks:
