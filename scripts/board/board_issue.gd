@@ -28,6 +28,13 @@ func _init(
 	kind = code
 
 
+## Appends a new issue to `issues`: the one way the validator's checks report a problem.
+static func add_to(
+	issues: Array[BoardIssue], issue_severity: Severity, text: String, at: Vector2, code: String
+) -> void:
+	issues.append(BoardIssue.new(issue_severity, text, at, code))
+
+
 ## True for an error (the board is refused by the loader).
 func is_error() -> bool:
 	return severity == Severity.ERROR

@@ -23,7 +23,7 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 	var ok := true
 	if level.grid_cols < 1 or level.grid_rows < 1:
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			(
@@ -40,7 +40,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		or level.path_width <= 0.0
 		or level.wall_width <= 0.0
 	):
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			(
@@ -52,7 +52,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		)
 		ok = false
 	if level.walls.size() % 2 != 0:
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			"Walls are stored as point pairs, but there are %d points." % level.walls.size(),
@@ -67,7 +67,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		or level.goal_radius <= level.ball_radius
 		or not _board_rect(level).has_point(center)
 	):
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			(
@@ -82,7 +82,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		not level.holes.is_empty()
 		and (not is_finite(level.hole_radius) or level.hole_radius <= 0.0)
 	):
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			"Black holes need a positive radius (got %s)." % level.hole_radius,
@@ -91,7 +91,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		)
 		ok = false
 	if level.ball_starts.is_empty():
-		_add(issues, ERROR, "The maze has no ball starts.", Vector2.ZERO, "no_starts")
+		BoardIssue.add_to(issues, ERROR, "The maze has no ball starts.", Vector2.ZERO, "no_starts")
 		ok = false
 	return ok
 
@@ -102,7 +102,7 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 		var a := level.walls[w * 2]
 		var b := level.walls[w * 2 + 1]
 		if not a.is_finite() or not b.is_finite():
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Wall %d has an end that is not a number." % w,
@@ -110,7 +110,7 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"not_finite"
 			)
 		elif a.distance_to(b) < MIN_WALL_LENGTH:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Wall %d at (%.0f, %.0f) has zero length." % [w, a.x, a.y],
@@ -118,7 +118,7 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"wall_zero_length"
 			)
 		elif not area.has_point(a) or not area.has_point(b):
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Wall %d runs off the board." % w,
@@ -133,9 +133,11 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	for i in level.ball_starts.size():
 		var s := level.ball_starts[i]
 		if not s.is_finite():
-			_add(issues, ERROR, "Ball start %d is not a number." % i, Vector2.ZERO, "not_finite")
+			BoardIssue.add_to(
+				issues, ERROR, "Ball start %d is not a number." % i, Vector2.ZERO, "not_finite"
+			)
 		elif not area.grow(-level.ball_radius).has_point(s):
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Ball start %d at (%.0f, %.0f) is off the board." % [i, s.x, s.y],
@@ -143,7 +145,7 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"start_outside"
 			)
 		elif _nearest_wall_distance(level, s) < reach - 0.01:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Ball start %d at (%.0f, %.0f) is inside a wall." % [i, s.x, s.y],
@@ -151,7 +153,7 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"start_in_wall"
 			)
 		elif _in_any(level.holes, level.hole_radius, s):
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Ball start %d is in a black hole: hard mode would be lost at once." % i,
@@ -159,15 +161,17 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"start_in_hole"
 			)
 		elif s.distance_to(level.goal_center) < level.goal_radius:
-			_add(issues, WARNING, "Ball start %d is already in the goal." % i, s, "start_in_goal")
+			BoardIssue.add_to(
+				issues, WARNING, "Ball start %d is already in the goal." % i, s, "start_in_goal"
+			)
 		for j in i:
 			if s.distance_to(level.ball_starts[j]) < level.ball_radius * 2.0:
 				var text := "Ball starts %d and %d overlap: the balls would spawn inside each other."
-				_add(issues, ERROR, text % [j, i], s, "starts_overlap")
+				BoardIssue.add_to(issues, ERROR, text % [j, i], s, "starts_overlap")
 	for h in level.holes.size():
 		var p := level.holes[h]
 		if not p.is_finite() or not area.has_point(p):
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Black hole %d is not on the board." % h,
@@ -175,14 +179,16 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"bad_hole"
 			)
 		elif p.distance_to(level.goal_center) < level.goal_radius + level.hole_radius:
-			_add(issues, WARNING, "Black hole %d overlaps the goal." % h, p, "hole_in_goal")
+			BoardIssue.add_to(
+				issues, WARNING, "Black hole %d overlaps the goal." % h, p, "hole_in_goal"
+			)
 
 
 static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	var fill := MazeFlood.new(level, false)
 	for i in level.ball_starts.size():
 		if not fill.reaches_goal(level.ball_starts[i]):
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Ball start %d cannot roll to the goal: walls close it in." % i,
@@ -194,7 +200,7 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 	var hard := MazeFlood.new(level, true, fill.free)
 	for i in level.ball_starts.size():
 		if fill.reaches_goal(level.ball_starts[i]) and not hard.reaches_goal(level.ball_starts[i]):
-			_add(
+			BoardIssue.add_to(
 				issues,
 				WARNING,
 				"In hard mode, black holes cut ball start %d off from the goal." % i,
@@ -222,13 +228,3 @@ static func _in_any(points: PackedVector2Array, radius: float, p: Vector2) -> bo
 		if p.distance_to(q) < radius:
 			return true
 	return false
-
-
-static func _add(
-	issues: Array[BoardIssue],
-	severity: BoardIssue.Severity,
-	text: String,
-	at: Vector2,
-	code: String
-) -> void:
-	issues.append(BoardIssue.new(severity, text, at, code))

@@ -24,7 +24,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 	var c := level.ring_center
 	var r := level.ring_radius
 	if not c.is_finite() or not is_finite(r) or r <= level.ball_radius * 4.0:
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			"The ring needs a finite centre and a radius above four balls (got %s, %s)." % [c, r],
@@ -38,7 +38,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		or c.x + r > level.size.x + 0.5
 		or c.y + r > level.size.y + 0.5
 	):
-		_add(
+		BoardIssue.add_to(
 			issues,
 			WARNING,
 			"The ring pokes out of the board's %s area." % level.size,
@@ -46,7 +46,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 			"ring_outside_board"
 		)
 	if not is_finite(level.pin_radius) or level.pin_radius <= 0.0:
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			"The pin radius must be positive, got %s." % level.pin_radius,
@@ -58,7 +58,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		level.pin_pocket.size() != level.pins.size()
 		or level.pin_special.size() != level.pins.size()
 	):
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			(
@@ -72,7 +72,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 	for i in level.pockets.size():
 		var spec: PocketSpec = level.pockets[i]
 		if spec == null:
-			_add(issues, ERROR, "Pocket %d is empty." % i, c, "bad_pocket")
+			BoardIssue.add_to(issues, ERROR, "Pocket %d is empty." % i, c, "bad_pocket")
 			ok = false
 		elif (
 			not spec.position.is_finite()
@@ -81,7 +81,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 			or spec.width <= 0.0
 			or spec.depth <= 0.0
 		):
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Pocket %d needs a finite position and a positive width and depth." % i,
@@ -90,7 +90,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 			)
 			ok = false
 		elif spec.payout < 0:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Pocket %d pays %d balls; a payout cannot be negative." % [i, spec.payout],
@@ -98,7 +98,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 				"bad_pocket"
 			)
 		elif spec.depth < spec.width * 0.5:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				WARNING,
 				"Pocket %d is shallower than half its width; its rim cannot be stamped." % i,
@@ -106,7 +106,7 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 				"pocket_shallow"
 			)
 	if level.cup_start_balls < 1:
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			"The cup must start with at least one ball (got %d)." % level.cup_start_balls,
@@ -124,7 +124,7 @@ static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue])
 		or level.rail_width < need
 		or level.rail_width > level.ring_radius * 0.5
 	):
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			(
@@ -141,7 +141,7 @@ static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue])
 		or sweep < 10.0
 		or sweep > 350.0
 	):
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			(
@@ -154,18 +154,21 @@ static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue])
 	var g0 := level.gutter_start_deg
 	var g1 := level.gutter_end_deg
 	if not is_finite(g0) or not is_finite(g1) or g1 <= g0 or g1 - g0 > 180.0:
-		_add(
-			issues,
-			ERROR,
-			(
-				"The gutter must run from a start angle to a larger end angle within 180°, got %s° to %s°."
-				% [g0, g1]
-			),
-			c,
-			"bad_gutter"
+		(
+			BoardIssue
+			. add_to(
+				issues,
+				ERROR,
+				(
+					"The gutter must run from a start angle to a larger end angle within 180°, got %s° to %s°."
+					% [g0, g1]
+				),
+				c,
+				"bad_gutter"
+			)
 		)
 	elif level.gutter_bounces < 1:
-		_add(
+		BoardIssue.add_to(
 			issues,
 			ERROR,
 			"The gutter needs at least one bounce (got %d)." % level.gutter_bounces,
@@ -179,7 +182,7 @@ static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue])
 		maxf(level.rail_start_deg, level.rail_end_deg)
 	):
 		var mid := deg_to_rad((g0 + g1) * 0.5)
-		_add(
+		BoardIssue.add_to(
 			issues,
 			WARNING,
 			"The gutter overlaps the launch rail: balls rolling back would drain.",
@@ -196,7 +199,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 		if owner >= 0 and owner < specials.size() and level.pin_special[i] != 0:
 			specials[owner] += 1
 	if level.pockets.is_empty():
-		_add(
+		BoardIssue.add_to(
 			issues,
 			WARNING,
 			"The board has no pockets, so no shot can win balls back.",
@@ -207,7 +210,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 	for k in level.pockets.size():
 		var spec: PocketSpec = level.pockets[k]
 		if specials[k] == 0:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Pocket %d has no special pin, so it can never pay." % k,
@@ -216,7 +219,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 			)
 		var clear_mouth := spec.width - 2.0 * level.pin_radius
 		if clear_mouth < level.ball_radius * 2.0:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				WARNING,
 				(
@@ -227,7 +230,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 				"pocket_unreachable"
 			)
 		elif spec.position.distance_to(level.ring_center) > clear_ring - spec.width:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				WARNING,
 				"Pocket %d's mouth is outside the field; no ball can enter it." % k,
@@ -237,7 +240,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 		else:
 			var blocker := _pin_in_mouth(level, k)
 			if blocker >= 0:
-				_add(
+				BoardIssue.add_to(
 					issues,
 					WARNING,
 					"Pin %d blocks the mouth of pocket %d; no ball can enter." % [blocker, k],
@@ -257,13 +260,3 @@ static func _pin_in_mouth(level: BoardLevel, k: int) -> int:
 		if level.pin_pocket[i] != k and inner.has_point(level.pins[i]):
 			return i
 	return -1
-
-
-static func _add(
-	issues: Array[BoardIssue],
-	severity: BoardIssue.Severity,
-	text: String,
-	at: Vector2,
-	code: String
-) -> void:
-	issues.append(BoardIssue.new(severity, text, at, code))

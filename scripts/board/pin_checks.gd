@@ -18,11 +18,13 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	for i in level.pins.size():
 		var p := level.pins[i]
 		if not p.is_finite():
-			_add(issues, ERROR, "Pin %d has a position that is not a number." % i, c, "not_finite")
+			BoardIssue.add_to(
+				issues, ERROR, "Pin %d has a position that is not a number." % i, c, "not_finite"
+			)
 			continue
 		var owner := level.pin_pocket[i]
 		if owner < -1 or owner >= level.pockets.size():
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Pin %d belongs to pocket %d, which does not exist." % [i, owner],
@@ -30,7 +32,7 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"bad_pin_pocket"
 			)
 		elif level.pin_special[i] != 0 and owner < 0:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Pin %d is a special pin but belongs to no pocket." % i,
@@ -39,7 +41,7 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			)
 		var d := p.distance_to(c)
 		if d > inside:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Pin %d at (%.0f, %.0f) is outside the ring." % [i, p.x, p.y],
@@ -49,7 +51,7 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			continue
 		var in_rail_arc := angle_in(rad_to_deg((p - c).angle()), rail_low, rail_high)
 		if in_rail_arc and d > guide_clear:
-			_add(
+			BoardIssue.add_to(
 				issues,
 				ERROR,
 				"Pin %d at (%.0f, %.0f) sits in the launch rail." % [i, p.x, p.y],
@@ -59,22 +61,25 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			continue
 		var deflector_gap := _deflector_gap(level, p)
 		if owner < 0 and deflector_gap < diameter:
-			_add(
-				issues,
-				WARNING,
-				(
-					"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
-					% [i, maxf(deflector_gap, 0.0), diameter]
-				),
-				p,
-				"narrow_gap_rail"
+			(
+				BoardIssue
+				. add_to(
+					issues,
+					WARNING,
+					(
+						"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
+						% [i, maxf(deflector_gap, 0.0), diameter]
+					),
+					p,
+					"narrow_gap_rail"
+				)
 			)
 			continue
 		var edge_gap := (guide_clear if in_rail_arc else inside) - d
 		if owner < 0 and edge_gap < diameter:
 			var code := "narrow_gap_rail" if in_rail_arc else "narrow_gap_ring"
 			var what := "the rail's guide" if in_rail_arc else "the ring"
-			_add(
+			BoardIssue.add_to(
 				issues,
 				WARNING,
 				(
@@ -117,21 +122,24 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 						continue
 					var mid := (p + pins[j]) * 0.5
 					if d2 < touch2:
-						_add(
+						BoardIssue.add_to(
 							issues, WARNING, "Pins %d and %d overlap." % [i, j], mid, "pin_overlap"
 						)
 					elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
 						# Rim pins of one pocket are meant to be closer than a ball.
 						var gap := sqrt(d2) - touch
-						_add(
-							issues,
-							WARNING,
-							(
-								"Pins %d and %d leave a %.1f px gap; a ball (%.0f px) would stick in it."
-								% [i, j, gap, reach - touch]
-							),
-							mid,
-							"narrow_gap"
+						(
+							BoardIssue
+							. add_to(
+								issues,
+								WARNING,
+								(
+									"Pins %d and %d leave a %.1f px gap; a ball (%.0f px) would stick in it."
+									% [i, j, gap, reach - touch]
+								),
+								mid,
+								"narrow_gap"
+							)
 						)
 
 
@@ -152,13 +160,3 @@ static func arcs_overlap(a0: float, a1: float, b0: float, b1: float) -> bool:
 	return (
 		angle_in(a0, b0, b1) or angle_in(a1, b0, b1) or angle_in(b0, a0, a1) or angle_in(b1, a0, a1)
 	)
-
-
-static func _add(
-	issues: Array[BoardIssue],
-	severity: BoardIssue.Severity,
-	text: String,
-	at: Vector2,
-	code: String
-) -> void:
-	issues.append(BoardIssue.new(severity, text, at, code))
