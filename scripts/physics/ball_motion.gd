@@ -16,8 +16,9 @@ const EPS := BallStep.EPS
 
 
 ## Moves every live ball one step of `dt` seconds and queues its events in b.events.
+## No ball falls asleep while `may_sleep` is false (within sleep_time of a wake-up).
 static func move(
-	b: BallStore, g: StaticGeometry, t: PhysicsTuning, gravity: Vector2, dt: float
+	b: BallStore, g: StaticGeometry, t: PhysicsTuning, gravity: Vector2, dt: float, may_sleep: bool
 ) -> void:
 	var n: int = b.ids.size()
 	var pos: PackedVector2Array = b.pos
@@ -25,6 +26,8 @@ static func move(
 	var rad: PackedFloat32Array = b.radius
 	var push: PackedVector2Array = b.push
 	var ids: PackedInt32Array = b.ids
+	var asleep: PackedByteArray = b.asleep
+	var support: PackedVector2Array = b.support_static
 	var ca: PackedInt32Array = b.contact_a
 	var cb: PackedInt32Array = b.contact_b
 	var rest: PackedFloat32Array = b.rest
@@ -42,6 +45,8 @@ static func move(
 	var pin_start: PackedInt32Array = g.pin_start
 	var zoned: bool = g.zoned
 	var pin_items: PackedInt32Array = g.pin_items if zoned else g.all_pins
+	var item_pos: PackedVector2Array = g.pin_item_pos if zoned else pin_pos
+	var item_rad: PackedFloat32Array = g.pin_item_radius if zoned else pin_rad
 	var n_pins: int = pin_pos.size()
 	var wall_a: PackedVector2Array = g.wall_a
 	var wall_ab: PackedVector2Array = g.wall_ab
@@ -74,17 +79,33 @@ static func move(
 	var thr: float = t.bounce_threshold
 	var min_h: float = t.min_horizontal_speed
 	var rest2: float = t.rest_speed * t.rest_speed
+	var sleep_time: float = t.sleep_time if may_sleep else 0.0
+	var max_speed: float = t.max_speed
+	var cap2: float = max_speed * max_speed
+	# A ball pushed apart by more than a resting ball moves in a step is still settling.
+	var settled_push: float = t.rest_speed * dt
 	var slide_time: float = t.gutter_slide_time
 	var travel_share: float = BallStep.TRAVEL_SHARE
 	var max_substeps: int = BallStep.MAX_SUBSTEPS
 	var has_walls: bool = wall_a.size() > 0
 	var last_r := -1.0
 	var max_travel := 0.0
+	var max_travel2 := 0.0
+	var ring_lim := 0.0
+	var ring_lim2 := 0.0
 
 	for i: int in n:
+		if asleep[i] != 0:
+			# Asleep: it holds still (forces added gravity; take it back) and keeps resting.
+			vel[i] = Vector2.ZERO
+			rest[i] += dt
+			continue
 		var p: Vector2 = pos[i]
 		var p_start: Vector2 = p
 		var v: Vector2 = vel[i]
+		var sp2: float = v.x * v.x + v.y * v.y
+		if sp2 > cap2:
+			v *= max_speed / sqrt(sp2)
 		var r: float = rad[i]
 		var pu: Vector2 = push[i]
 		var pu_len := 0.0
@@ -93,33 +114,35 @@ static func move(
 			if pu_len > 0.5 * r:
 				pu *= 0.5 * r / pu_len
 				pu_len = 0.5 * r
-		var prev_a: int = ca[i]
-		var prev_b: int = cb[i]
 		var cur_a: int = NO_CONTACT
 		var cur_b: int = NO_CONTACT
+		# Normal of the last static shape this ball pressed on (zero if none).
+		var sup := Vector2.ZERO
 		if r != last_r:
 			last_r = r
 			max_travel = g.max_travel(r, travel_share)
+			max_travel2 = max_travel * max_travel
+			ring_lim = maxf(ring_r - r, 0.0)
+			ring_lim2 = ring_lim * ring_lim
 		var mv: Vector2 = v * dt + pu
 		var steps := 1
 		var h: float = dt
 		var pu_step: Vector2 = pu
-		if mv.x * mv.x + mv.y * mv.y > max_travel * max_travel or pu_len > 0.0:
+		if mv.x * mv.x + mv.y * mv.y > max_travel2 or pu_len > 0.0:
 			var travel: float = mv.length() + pu_len
 			if travel > max_travel:
 				steps = mini(int(ceil(travel / max_travel)), max_substeps)
 				h = dt / steps
 				pu_step = pu / steps
 		var gone := false
-		var id: int = ids[i]
 		for _s: int in steps:
 			p += v * h + pu_step
 			# Ring: the ball's centre stays within ring_r - r of the centre.
 			if has_ring:
 				var d: Vector2 = p - rc
-				var lim: float = maxf(ring_r - r, 0.0)
 				var d2: float = d.x * d.x + d.y * d.y
-				if d2 > lim * lim:
+				if d2 > ring_lim2:
+					var lim: float = ring_lim
 					var dist: float = sqrt(d2)
 					var nrm: Vector2 = -d / dist
 					p = rc + d * (lim / dist)
@@ -128,7 +151,7 @@ static func move(
 					if vn < 0.0:
 						var key: int = RING_KEY
 						var held: bool = (
-							key == prev_a or key == prev_b or key == cur_a or key == cur_b
+							key == ca[i] or key == cb[i] or key == cur_a or key == cur_b
 						)
 						var gn_dt: float = gravity.dot(nrm) * dt
 						if not held and minf(gn_dt, 0.0) - vn > thr:
@@ -139,7 +162,7 @@ static func move(
 							vn = minf(v.dot(nrm), 0.0)
 							v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
 							ev.append(BallStep.Ev.RING_HIT)
-							ev.append(id)
+							ev.append(ids[i])
 							ev.append(0)
 							evs.append(-vn)
 							if in_gutter:
@@ -147,6 +170,7 @@ static func move(
 						else:
 							var curv: float = h / lim if lim > EPS else 0.0
 							v = BallStep.slide(v, nrm, vn, gn_dt, curv)
+						sup = nrm
 						if cur_a == NO_CONTACT or cur_a == key:
 							cur_a = key
 						else:
@@ -155,7 +179,7 @@ static func move(
 						gtime[i] += h
 						if ghits[i] >= g.gutter_bounces or gtime[i] >= slide_time:
 							ev.append(BallStep.Ev.DRAINED)
-							ev.append(id)
+							ev.append(ids[i])
 							ev.append(0)
 							evs.append(0.0)
 							gone = true
@@ -169,16 +193,16 @@ static func move(
 				k0 = pin_start[c]
 				k1 = pin_start[c + 1]
 			for k: int in range(k0, k1):
-				var pid: int = pin_items[k]
-				var q: Vector2 = pin_pos[pid]
+				var q: Vector2 = item_pos[k]
 				var d: Vector2 = p - q
-				var lim: float = pin_rad[pid] + r
+				var lim: float = item_rad[k] + r
 				var d2: float = d.x * d.x + d.y * d.y
 				if d2 >= lim * lim:
 					continue
+				var pid: int = pin_items[k]
 				if pin_special[pid] != 0:
 					ev.append(BallStep.Ev.POCKETED)
-					ev.append(id)
+					ev.append(ids[i])
 					ev.append(pin_pocket[pid])
 					evs.append(0.0)
 					gone = true
@@ -191,7 +215,7 @@ static func move(
 				var vn: float = v.dot(nrm)
 				if vn < 0.0:
 					var key: int = pid + 1
-					var held: bool = key == prev_a or key == prev_b or key == cur_a or key == cur_b
+					var held: bool = key == ca[i] or key == cb[i] or key == cur_a or key == cur_b
 					var gn_dt: float = gravity.dot(nrm) * dt
 					if not held and minf(gn_dt, 0.0) - vn > thr:
 						var back: Vector2 = d - v * BallStep.back_off(d, v, lim, h, false)
@@ -201,11 +225,12 @@ static func move(
 						vn = minf(v.dot(nrm), 0.0)
 						v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
 						ev.append(BallStep.Ev.PIN_HIT)
-						ev.append(id)
+						ev.append(ids[i])
 						ev.append(pid)
 						evs.append(-vn)
 					else:
 						v = BallStep.slide(v, nrm, vn, gn_dt, h / lim)
+					sup = nrm
 					if cur_a == NO_CONTACT or cur_a == key:
 						cur_a = key
 					else:
@@ -263,7 +288,7 @@ static func move(
 				var vn: float = v.dot(nrm)
 				if vn < 0.0:
 					var key: int = -(best + 1)
-					var held: bool = key == prev_a or key == prev_b or key == cur_a or key == cur_b
+					var held: bool = key == ca[i] or key == cb[i] or key == cur_a or key == cur_b
 					var gn_dt: float = gravity.dot(nrm) * dt
 					var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
 					if not held and minf(gn_dt, 0.0) - vn > thr:
@@ -275,12 +300,13 @@ static func move(
 							vn = minf(v.dot(nrm), 0.0)
 						v = BallStep.bounce(v, nrm, vn, wall_e, keep_t)
 						ev.append(BallStep.Ev.WALL_HIT)
-						ev.append(id)
+						ev.append(ids[i])
 						ev.append(best)
 						evs.append(-vn)
 					else:
 						# Only the round caps curve; the flat sides do not.
 						v = BallStep.slide(v, nrm, vn, gn_dt, h / lim if on_cap else 0.0)
+					sup = nrm
 					if cur_a == NO_CONTACT or cur_a == key:
 						cur_a = key
 					else:
@@ -289,13 +315,25 @@ static func move(
 					break
 		ca[i] = cur_a
 		cb[i] = cur_b
+		support[i] = sup
 		pos[i] = p
 		vel[i] = v
 		if gone:
 			b.kill(i)
 			continue
-		if v.length_squared() < rest2:
-			rest[i] += dt
+		if v.x * v.x + v.y * v.y < rest2:
+			var rested: float = rest[i] + dt
+			rest[i] = rested
+			# A ball lying in the gutter never sleeps: it must still drain.
+			if (
+				sleep_time > 0.0
+				and rested >= sleep_time
+				and pu_len < settled_push
+				and gtime[i] == 0.0
+				and ghits[i] == 0
+			):
+				asleep[i] = 1
+				vel[i] = Vector2.ZERO
 		else:
 			rest[i] = 0.0
 		# Holes: the centre came within the hole radius anywhere along this step's path.
@@ -305,7 +343,7 @@ static func move(
 			var hr: float = hole_rad[k]
 			if q.distance_squared_to(hp) <= hr * hr:
 				ev.append(BallStep.Ev.HOLE)
-				ev.append(id)
+				ev.append(ids[i])
 				ev.append(k)
 				evs.append(0.0)
 				b.kill(i)
@@ -322,7 +360,7 @@ static func move(
 				if inside != ((mask & bit) != 0):
 					mask ^= bit
 					ev.append(BallStep.Ev.GOAL if inside else BallStep.Ev.GOAL_LEFT)
-					ev.append(id)
+					ev.append(ids[i])
 					ev.append(k)
 					evs.append(0.0)
 			gmask[i] = mask
@@ -336,13 +374,15 @@ static func move(
 					mask ^= bit
 					if inside:
 						ev.append(BallStep.Ev.ZONE)
-						ev.append(id)
+						ev.append(ids[i])
 						ev.append(k)
 						evs.append(0.0)
 			zmask[i] = mask
 
 	b.pos = pos
 	b.vel = vel
+	b.asleep = asleep
+	b.support_static = support
 	b.contact_a = ca
 	b.contact_b = cb
 	b.rest = rest

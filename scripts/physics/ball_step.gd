@@ -16,6 +16,8 @@ const RING_KEY := 0x3fffffff
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.
 const TRAVEL_SHARE := 0.5
+## A support counts when its normal is within about 60° of the line between two balls.
+const SUPPORT_COS := 0.5
 ## Share of a ball-ball overlap each ball moves apart per step.
 const PUSH_SHARE := 0.4
 ## Safety bound on substeps for one ball in one step.
@@ -28,6 +30,7 @@ const EPS := 1e-6
 
 
 ## Gravity, per-axis rolling friction (never reverses a velocity), then the speed cap.
+## Sleeping balls get gravity too; the motion phase zeroes them again.
 static func apply_forces(
 	b: BallStore, gravity: Vector2, friction: Vector2, max_speed: float, dt: float
 ) -> void:
@@ -35,19 +38,22 @@ static func apply_forces(
 	var gdt: Vector2 = gravity * dt
 	var fx: float = maxf(friction.x, 0.0) * dt
 	var fy: float = maxf(friction.y, 0.0) * dt
-	var has_friction: bool = fx > 0.0 or fy > 0.0
+	if fx <= 0.0 and fy <= 0.0:
+		# No friction: one native translate of every velocity; the motion phase applies
+		# the speed cap as it reads each ball.
+		b.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gdt) * vel
+		return
 	var cap2: float = max_speed * max_speed
 	for i: int in vel.size():
 		var v: Vector2 = vel[i] + gdt
-		if has_friction:
-			if absf(v.x) <= fx:
-				v.x = 0.0
-			else:
-				v.x -= fx if v.x > 0.0 else -fx
-			if absf(v.y) <= fy:
-				v.y = 0.0
-			else:
-				v.y -= fy if v.y > 0.0 else -fy
+		if absf(v.x) <= fx:
+			v.x = 0.0
+		else:
+			v.x -= fx if v.x > 0.0 else -fx
+		if absf(v.y) <= fy:
+			v.y = 0.0
+		else:
+			v.y -= fy if v.y > 0.0 else -fy
 		var s2: float = v.length_squared()
 		if s2 > cap2:
 			v *= max_speed / sqrt(s2)
@@ -55,10 +61,15 @@ static func apply_forces(
 	b.vel = vel
 
 
-## Ball-ball contacts between equal masses: balls are sorted into grid cells (counting
-## sort), each pair is tested once, approaching pairs exchange a normal impulse.
+## Ball-ball contacts between equal masses. Balls are sorted by grid cell with one native
+## sort of (cell << SORT_SHIFT | ball) keys; cells are at least a ball diameter, so a ball
+## only meets balls of its own cell, the next cell and the three cells below, and those are
+## two runs of the sorted keys. The run below is found by a pointer that only moves forward,
+## as cells only grow along the sorted keys. Wrapped rows add candidates but never miss any.
+## A sleeping ball acts as a fixed ball unless hit faster than `wake_speed`, which wakes it;
+## contacts slower than `threshold` do not bounce.
 static func collide_balls(
-	b: BallStore, g: StaticGeometry, restitution: float, threshold: float
+	b: BallStore, g: StaticGeometry, restitution: float, threshold: float, wake_speed: float
 ) -> void:
 	var n: int = b.ids.size()
 	var push: PackedVector2Array = b.push
@@ -69,97 +80,123 @@ static func collide_balls(
 	var pos: PackedVector2Array = b.pos
 	var vel: PackedVector2Array = b.vel
 	var rad: PackedFloat32Array = b.radius
+	var asleep: PackedByteArray = b.asleep
+	var rest: PackedFloat32Array = b.rest
+	var sup_static: PackedVector2Array = b.support_static
+	var sup_prev: PackedVector2Array = b.support_ball
+	var sup_next := PackedVector2Array()
+	sup_next.resize(n)
 	var cols: int = g.cols
-	var rows: int = g.rows
+	var last_col: int = cols - 1
+	var last_row: int = g.rows - 1
 	var ox: float = g.origin.x
 	var oy: float = g.origin.y
 	var inv: float = g.inv_cell
-	var n_cells: int = cols * rows
-	# Sort balls by cell with one native sort of (cell << 21 | ball) keys; then each
-	# occupied cell's balls are keys[start[c] .. stop[c]). Only occupied cells are touched.
 	var keys: PackedInt64Array = b.sort_keys
 	keys.resize(n)
 	for i: int in n:
 		var p: Vector2 = pos[i]
-		var cx: int = clampi(int((p.x - ox) * inv), 0, cols - 1)
-		var cy: int = clampi(int((p.y - oy) * inv), 0, rows - 1)
+		var cx: int = clampi(int((p.x - ox) * inv), 0, last_col)
+		var cy: int = clampi(int((p.y - oy) * inv), 0, last_row)
 		keys[i] = ((cy * cols + cx) << SORT_SHIFT) | i
 	keys.sort()
-	var start: PackedInt32Array = b.sort_start
-	var stop: PackedInt32Array = b.sort_stop
-	var order: PackedInt32Array = b.sort_order
-	var cell_of: PackedInt32Array = b.sort_cell
-	if start.size() != n_cells:
-		start.resize(n_cells)
-		stop.resize(n_cells)
-	start.fill(-1)
-	order.resize(n)
-	cell_of.resize(n)
-	var prev := -1
+	var shift: int = SORT_SHIFT
+	var mask: int = SORT_MASK
+	var below := 0
 	for k: int in n:
 		var key: int = keys[k]
-		var c: int = key >> SORT_SHIFT
-		order[k] = key & SORT_MASK
-		cell_of[k] = c
-		if c != prev:
-			start[c] = k
-			if prev >= 0:
-				stop[prev] = k
-			prev = c
-	stop[prev] = n
-	for k: int in n:
-		var i: int = order[k]
-		var c: int = cell_of[k]
-		var cx: int = c % cols
-		var cy: int = c / cols
+		var c: int = key >> shift
+		var i: int = key & mask
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
-		# Same cell after this ball, then the cell to the right: one contiguous run.
-		var hi_same: int = stop[c]
-		if cx < cols - 1 and start[c + 1] >= 0:
-			hi_same = stop[c + 1]
-		# The three cells below are consecutive, so their balls are one run too.
-		var lo_below := -1
-		var hi_below := 0
-		if cy < rows - 1:
-			var b0: int = c + cols - 1 if cx > 0 else c + cols
-			var b1: int = c + cols + 1 if cx < cols - 1 else c + cols
-			for cc: int in range(b0, b1 + 1):
-				var sc: int = start[cc]
-				if sc >= 0:
-					if lo_below < 0:
-						lo_below = sc
-					hi_below = stop[cc]
-		if lo_below < 0:
-			lo_below = 0
-			hi_below = 0
+		var sleep_i: bool = asleep[i] != 0
+		# Same cell (later balls) and the next cell.
+		var end_same: int = k + 1
+		var next_cell: int = (c + 2) << shift
+		while end_same < n and keys[end_same] < next_cell:
+			end_same += 1
+		# The three cells below.
+		var first_below: int = (c + cols - 1) << shift
+		var past_below: int = (c + cols + 2) << shift
+		while below < n and keys[below] < first_below:
+			below += 1
+		var end_below: int = below
+		while end_below < n and keys[end_below] < past_below:
+			end_below += 1
 		for run: int in 2:
-			var m0: int = k + 1 if run == 0 else lo_below
-			var m1: int = hi_same if run == 0 else hi_below
+			var m0: int = k + 1 if run == 0 else below
+			var m1: int = end_same if run == 0 else end_below
 			for m: int in range(m0, m1):
-				var j: int = order[m]
+				var j: int = keys[m] & mask
 				var d: Vector2 = pos[j] - pi
 				var rr: float = ri + rad[j]
 				var d2: float = d.x * d.x + d.y * d.y
 				if d2 >= rr * rr:
 					continue
+				var sleep_j: bool = asleep[j] != 0
+				if sleep_i and sleep_j:
+					continue
 				var dist: float = sqrt(d2)
 				var nrm := Vector2(1.0, 0.0)
 				if dist > EPS:
 					nrm = d / dist
-				var vi: Vector2 = vel[i]
-				var vj: Vector2 = vel[j]
+				var vi: Vector2 = Vector2.ZERO if sleep_i else vel[i]
+				var vj: Vector2 = Vector2.ZERO if sleep_j else vel[j]
 				var vn: float = (vj - vi).dot(nrm)
-				if vn < 0.0:
-					var e: float = restitution if -vn > threshold else 0.0
-					var imp: Vector2 = nrm * (-(1.0 + e) * vn * 0.5)
-					vel[i] = vi - imp
-					vel[j] = vj + imp
+				if (sleep_i or sleep_j) and -vn > wake_speed:
+					# A real hit wakes the sleeper; it then answers as a free ball.
+					if sleep_i:
+						asleep[i] = 0
+						rest[i] = 0.0
+						sleep_i = false
+						vi = vel[i]
+					else:
+						asleep[j] = 0
+						rest[j] = 0.0
+						sleep_j = false
+						vj = vel[j]
+					vn = (vj - vi).dot(nrm)
+				# A ball held from behind (asleep, or pressed on a support that faces the
+				# other ball) does not give way: the other takes the whole response.
+				var fixed_i: bool = (
+					sleep_i
+					or sup_static[i].dot(nrm) > SUPPORT_COS
+					or sup_prev[i].dot(nrm) > SUPPORT_COS
+				)
+				var fixed_j: bool = (
+					sleep_j
+					or sup_static[j].dot(nrm) < -SUPPORT_COS
+					or sup_prev[j].dot(nrm) < -SUPPORT_COS
+				)
 				var s: Vector2 = nrm * ((rr - dist) * PUSH_SHARE)
-				push[i] -= s
-				push[j] += s
+				if fixed_j and not fixed_i:
+					# The support cancels j's own motion into it: only i's speed counts.
+					vn = -vi.dot(nrm)
+					if vn < 0.0:
+						var e: float = restitution if -vn > threshold else 0.0
+						vel[i] = vi + nrm * ((1.0 + e) * vn)
+					push[i] -= s * 2.0
+					sup_next[i] = -nrm
+				elif fixed_i and not fixed_j:
+					vn = vj.dot(nrm)
+					if vn < 0.0:
+						var e: float = restitution if -vn > threshold else 0.0
+						vel[j] = vj - nrm * ((1.0 + e) * vn)
+					push[j] += s * 2.0
+					sup_next[j] = nrm
+				elif not (sleep_i or sleep_j):
+					if vn < 0.0:
+						var e: float = restitution if -vn > threshold else 0.0
+						var imp: Vector2 = nrm * (-(1.0 + e) * vn * 0.5)
+						vel[i] = vi - imp
+						vel[j] = vj + imp
+					push[i] -= s
+					push[j] += s
 	b.vel = vel
 	b.push = push
+	b.support_ball = sup_next
+	b.asleep = asleep
+	b.rest = rest
 
 
 ## Velocity after a bouncing contact: restitution on the normal, friction on the tangent.

@@ -22,6 +22,16 @@ var gutter_time := PackedFloat32Array()
 ## Bit g set while the ball's centre is inside goal g (zones likewise).
 var goal_mask := PackedInt32Array()
 var zone_mask := PackedInt32Array()
+## 1 while a ball sleeps: it rested long enough to be skipped until something wakes it.
+var asleep := PackedByteArray()
+## Set by wake_all(); BallWorld reads and clears it to hold off sleep for a while.
+var woken := false
+## Support: the normal of the static shape a ball pressed on last step, and the normal of
+## a supported ball it pressed on last step (zero if none). A ball backed this way does not
+## give way to a ball pushing it into its support, so a stack carries its weight at once
+## instead of keeping half of every ball's fall speed.
+var support_static := PackedVector2Array()
+var support_ball := PackedVector2Array()
 ## Keys of the static shapes touched last step (two slots), so a persisting contact slides.
 var contact_a := PackedInt32Array()
 var contact_b := PackedInt32Array()
@@ -33,10 +43,6 @@ var events := PackedInt32Array()
 var event_speed := PackedFloat32Array()
 ## Scratch arrays of the ball-ball broad phase (reused every step).
 var sort_keys := PackedInt64Array()
-var sort_start := PackedInt32Array()
-var sort_stop := PackedInt32Array()
-var sort_order := PackedInt32Array()
-var sort_cell := PackedInt32Array()
 var max_radius := 0.0
 var removed_pending := 0
 
@@ -61,6 +67,9 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	contact_a.append(NO_CONTACT)
 	contact_b.append(NO_CONTACT)
 	push.append(Vector2.ZERO)
+	asleep.append(0)
+	support_static.append(Vector2.ZERO)
+	support_ball.append(Vector2.ZERO)
 	max_radius = maxf(max_radius, r)
 	return id
 
@@ -82,7 +91,14 @@ func kill(i: int) -> void:
 		removed_pending += 1
 
 
-## Closes the gaps left by dead balls, keeping spawn order.
+## Wakes every ball (gravity changed, a ball was moved or removed under a pile, ...).
+func wake_all() -> void:
+	asleep.fill(0)
+	woken = true
+
+
+## Closes the gaps left by dead balls, keeping spawn order. Wakes every ball: a removed
+## ball may have been holding sleeping ones up.
 func compact() -> void:
 	if removed_pending == 0:
 		return
@@ -105,6 +121,8 @@ func compact() -> void:
 			zone_mask[w] = zone_mask[i]
 			contact_a[w] = contact_a[i]
 			contact_b[w] = contact_b[i]
+			support_static[w] = support_static[i]
+			support_ball[w] = support_ball[i]
 			index_of[ids[w]] = w
 		w += 1
 	pos.resize(w)
@@ -120,4 +138,8 @@ func compact() -> void:
 	zone_mask.resize(w)
 	contact_a.resize(w)
 	contact_b.resize(w)
+	asleep.resize(w)
+	support_static.resize(w)
+	support_ball.resize(w)
+	wake_all()
 	removed_pending = 0

@@ -62,6 +62,11 @@ var use_zoning := true:
 var _balls := BallStore.new()
 var _geo := StaticGeometry.new()
 var _accumulator := 0.0
+## Gravity the sleeping balls fell asleep under; any change wakes them all.
+var _sleep_gravity := Vector2.ZERO
+## step_count when every ball was last woken: none sleeps again for tuning.sleep_time, so a
+## ball whose rest time is already long still gets to move after a wake-up.
+var _woken_at_step := 0
 
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
@@ -163,6 +168,7 @@ func add_zone(center: Vector2, radius: float) -> int:
 ## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
 func build_grid() -> void:
 	_geo.build(maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS), use_zoning)
+	_balls.wake_all()
 
 
 ## Spawns a ball; returns its stable id, or -1 with an error for a radius <= 0 or
@@ -224,6 +230,8 @@ func set_ball_position(id: int, pos: Vector2) -> void:
 	if i >= 0 and pos.is_finite():
 		_balls.pos[i] = pos
 		_balls.rest[i] = 0.0
+		# Balls it was holding up (or that it now lands in) must move again.
+		_balls.wake_all()
 
 
 ## Velocity of a ball, or Vector2.ZERO for an unknown id.
@@ -241,12 +249,19 @@ func set_ball_velocity(id: int, v: Vector2) -> void:
 		return
 	_balls.vel[i] = v
 	_balls.rest[i] = 0.0
+	_balls.wake_all()
 
 
 ## Radius of a ball, or 0 for an unknown id.
 func get_ball_radius(id: int) -> float:
 	var i: int = _balls.find(id)
 	return _balls.radius[i] if i >= 0 else 0.0
+
+
+## True while the ball sleeps (it rested for tuning.sleep_time and nothing has woken it).
+func is_ball_asleep(id: int) -> bool:
+	var i: int = _balls.find(id)
+	return i >= 0 and _balls.asleep[i] != 0
 
 
 ## Seconds the ball's speed has stayed below tuning.rest_speed (0 for an unknown id).
@@ -290,9 +305,18 @@ func step(dt: float) -> void:
 		gravity = Vector2.ZERO
 	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()
+	if gravity != _sleep_gravity:
+		_sleep_gravity = gravity
+		_balls.wake_all()
 	BallStep.apply_forces(_balls, gravity, rolling_friction, tuning.max_speed, dt)
-	BallStep.collide_balls(_balls, _geo, tuning.ball_restitution, tuning.bounce_threshold)
-	BallMotion.move(_balls, _geo, tuning, gravity, dt)
+	BallStep.collide_balls(
+		_balls, _geo, tuning.ball_restitution, tuning.bounce_threshold, tuning.rest_speed
+	)
+	if _balls.woken:
+		_balls.woken = false
+		_woken_at_step = step_count
+	var may_sleep: bool = (step_count - _woken_at_step) * dt >= tuning.sleep_time
+	BallMotion.move(_balls, _geo, tuning, gravity, dt, may_sleep)
 	_balls.compact()
 	step_count += 1
 	_emit_events()

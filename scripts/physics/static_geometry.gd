@@ -48,6 +48,10 @@ var cols := 1
 var rows := 1
 var pin_start := PackedInt32Array()
 var pin_items := PackedInt32Array()
+## Position and radius of each entry of pin_items, side by side, so the hot loop reads one
+## array slot instead of following the index.
+var pin_item_pos := PackedVector2Array()
+var pin_item_radius := PackedFloat32Array()
 var wall_start := PackedInt32Array()
 var wall_items := PackedInt32Array()
 ## Smallest pin or wall radius (the thinnest feature a ball must not tunnel through).
@@ -86,9 +90,16 @@ func build(ball_radius: float, use_zoning := true) -> void:
 	var box := _bounds()
 	var pad: float = grow + max_pin + cell
 	origin = box.position - Vector2(pad, pad)
-	cols = maxi(1, int(ceil((box.size.x + 2.0 * pad) * inv_cell)))
+	# At least three columns: the ball-ball pass takes "next cell" and "cells below" as two
+	# separate runs of the sorted keys, which must not overlap.
+	cols = maxi(3, int(ceil((box.size.x + 2.0 * pad) * inv_cell)))
 	rows = maxi(1, int(ceil((box.size.y + 2.0 * pad) * inv_cell)))
 	_bin_pins(grow)
+	pin_item_pos.resize(pin_items.size())
+	pin_item_radius.resize(pin_items.size())
+	for k: int in pin_items.size():
+		pin_item_pos[k] = pin_pos[pin_items[k]]
+		pin_item_radius[k] = pin_radius[pin_items[k]]
 	_bin_walls(grow)
 	_find_pin_spacing(2.0 * (max_pin + ball_radius))
 	dirty = false

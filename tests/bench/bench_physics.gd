@@ -1,9 +1,16 @@
 extends SceneTree
 ## `make bench`: BallWorld against Godot's GodotPhysics2D (PhysicsServer2D) on the same
 ## scenes, ball-steps per second, tunnels and escapes counted by an independent swept check;
-## the zoning-versus-brute-force ratio and the scale sweeps. Prints a table and writes
-## build/bench/physics.json. tools/bench.sh pins the process to one CPU (taskset), which is
-## how the worker pool gets one thread: its size is only read from project.godot at startup.
+## the zoning-versus-brute-force ratio and the scale sweeps. Prints a table and the seconds
+## each phase took, and writes build/bench/physics.json. tools/bench.sh pins the process to
+## one CPU (taskset), which is how the worker pool gets one core: its size is only read
+## from project.godot at startup, and pinned threads share that core, so process CPU time
+## is one core's worth of work.
+##
+## Every Godot-side job (a timing run or a check run) stops at JOB_BUDGET_S of CPU time
+## even short of its steps: GodotPhysics2D's cast-shape CCD costs about 2 s a step on S3,
+## which alone used to take over four minutes. Rates are over the steps actually run, and
+## the JSON and the table say how many that was (godot_steps_run, godot_steps_checked).
 
 const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
 const SweptCheck := preload("res://tests/bench/physics/swept_check.gd")
@@ -16,19 +23,28 @@ const OUT_PATH := "res://build/bench/physics.json"
 ## slows them back down: each tick still integrates 1 / hz, but ticks run back to back.
 const SPEEDUP := 100
 const WARMUP := Ours.WARMUP
+## CPU seconds one Godot-side job may use, counted from building its scene.
+const JOB_BUDGET_S := 25.0
+## A timing run stops for the budget only once its timed span is this long: the CPU clock
+## ticks in 10 ms, so a shorter span would be mostly rounding.
+const MIN_TIMED_S := 1.0
 
-## name, mode, pin pitch, balls, hz, steps
+## name, mode, pin pitch, balls, hz, checked steps, timed steps. Timing runs are longer than
+## check runs so that each side's timed span lasts a second or more on the 10 ms clock.
 var _specs: Array = [
-	["S1", "flow", 24.0, 1000, 240.0, 240],
-	["S2", "pile", 24.0, 3000, 240.0, 90],
-	["S3", "fast", 12.0, 500, 60.0, 60],
-	["S4", "maze", 0.0, 1000, 120.0, 240],
+	["S1", "flow", 24.0, 1000, 240.0, 240, 600],
+	["S2", "pile", 24.0, 3000, 240.0, 90, 180],
+	["S3", "fast", 12.0, 500, 60.0, 60, 300],
+	["S4", "maze", 0.0, 1000, 120.0, 240, 480],
 ]
 var _results := {}
 var _scale := {}
 var _zoned_vs_brute := 0.0
+## Phase name → {"cpu_s", "wall_s", ...}, in the order the phases ran.
+var _phases := {}
 var _jobs: Array = []
 var _job := {}
+var _want_job := false
 var _side: GodotSide
 var _check: SweptCheck
 var _rng := RandomNumberGenerator.new()
@@ -36,24 +52,33 @@ var _prev := PackedVector2Array()
 var _step_i := 0
 var _cpu0 := 0
 var _wall0 := 0
+var _phase_cpu0 := 0
+var _phase_wall0 := 0
 var _started_usec := 0
 
 
 func _initialize() -> void:
 	_started_usec = Time.get_ticks_usec()
+	var cpus := _proc_status("Cpus_allowed_list")
 	print(
 		(
-			"bench_physics: CPUs allowed %s, processors %d"
-			% [_cpus_allowed(), OS.get_processor_count()]
+			"bench_physics: CPUs allowed %s, processors %d, threads %s, Godot job budget %.0f s CPU"
+			% [cpus, OS.get_processor_count(), _proc_status("Threads"), JOB_BUDGET_S]
 		)
 	)
+	if not cpus.is_valid_int():
+		# Unpinned, GodotPhysics2D's worker threads can use several cores at once: its CPU
+		# time stays honest, but its wall-clock rate would not be one core's.
+		push_warning("bench_physics: not pinned to one CPU (run it through tools/bench.sh)")
 	for spec: Array in _specs:
+		_phase_begin()
 		var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
-		var r: Dictionary = Ours.run(scene, spec[5], false)
+		var r: Dictionary = Ours.run(scene, spec[6], false)
 		var c: Dictionary = Ours.run(scene, spec[5], true)
 		_results[spec[0]] = {
 			"ours_steps_per_s": r["ball_steps_per_s"],
 			"ours_wall_steps_per_s": r["wall_ball_steps_per_s"],
+			"ours_steps_run": spec[6],
 			"tunnels": c["tunnels"],
 			"escapes": c["escapes"],
 			"balls": spec[3],
@@ -61,6 +86,7 @@ func _initialize() -> void:
 			"walls": (scene["walls"] as PackedVector2Array).size() / 2,
 			"hz": spec[4],
 			"steps": spec[5],
+			"timing_steps": spec[6],
 		}
 		print(
 			(
@@ -68,26 +94,35 @@ func _initialize() -> void:
 				% [spec[0], r["ball_steps_per_s"], c["tunnels"], c["escapes"]]
 			)
 		)
+		_phase_end("ours %s" % spec[0])
 		_jobs.append([spec, scene, false])
 		_jobs.append([spec, scene, true])
+	_phase_begin()
 	_zoned_vs_brute = Ours.zoned_vs_brute(Scenes.make("S1", "flow", 24.0, 1000, 240.0), 12)
 	print("  zoned vs brute force (S1): %.1fx" % _zoned_vs_brute)
+	_phase_end("ours zoned vs brute")
+	_phase_begin()
 	_scale = Ours.scale_sweep()
+	_phase_end("ours scale sweep")
 	physics_frame.connect(_on_physics_frame)
-	_next_job()
+	process_frame.connect(_on_process_frame)
+	_want_job = true
 
 
-func _next_job() -> void:
-	if _side != null:
-		_side.free_all()
-		_side = null
+## Jobs start between frames: the engine reads the tick rate and time scale once per frame,
+## so a job started inside a physics tick would run its first ticks at the last one's rate.
+func _on_process_frame() -> void:
+	if not _want_job:
+		return
+	_want_job = false
 	if _jobs.is_empty():
 		_finish()
 		return
 	var job: Array = _jobs.pop_front()
 	var spec: Array = job[0]
 	var scene: Dictionary = job[1]
-	_job = {"spec": spec, "scene": scene, "check": job[2]}
+	_job = {"spec": spec, "scene": scene}
+	_phase_begin()
 	_rng.seed = Ours.RULES_SEED
 	var hz: float = spec[4]
 	Engine.time_scale = SPEEDUP
@@ -104,46 +139,115 @@ func _next_job() -> void:
 	_step_i = 0
 
 
-## One engine physics tick: the Godot side just stepped (or is about to, the first time).
+## One engine physics tick: the signal comes just before each step of the Godot side.
 func _on_physics_frame() -> void:
 	if _side == null:
 		return
+	var done := _step_i  # steps the engine has run on this job so far
+	_step_i += 1
 	var spec: Array = _job["spec"]
 	var mode: String = spec[1]
 	var hz: float = spec[4]
-	if _step_i == WARMUP:
+	if done == WARMUP and _check == null:
 		_cpu0 = CpuClock.usec()
 		_wall0 = Time.get_ticks_usec()
 	if _check != null:
 		var pos: PackedVector2Array = _side.positions()
-		if _step_i > 0:
+		if done > 0:
 			var skip := PackedByteArray()
 			skip.resize(pos.size())
 			skip.fill(0)
 			_check.check(_prev, pos, skip)
-		Ours.harness_rules(mode, _step_i, pos, _rng, _side, hz)
+			Ours.harness_rules(mode, done, pos, _rng, _side, hz)
 		_prev = pos
-	elif _step_i > 0 and Ours.rules_due(mode, _step_i):
+	elif done > 0 and Ours.rules_due(mode, done):
 		var pos := PackedVector2Array() if mode == "maze" else _side.positions()
-		Ours.harness_rules(mode, _step_i, pos, _rng, _side, hz)
-	_step_i += 1
-	if _step_i <= spec[5]:
-		return
-	var row: Dictionary = _results[spec[0]]
+		Ours.harness_rules(mode, done, pos, _rng, _side, hz)
+	if _job_over(done):
+		_end_job(done)
+
+
+## Whether the job stops after `done` steps: all its steps ran, or it has used its budget
+## (a timing run also needs a timed span of MIN_TIMED_S past the warm-up).
+func _job_over(done: int) -> bool:
+	var spec: Array = _job["spec"]
+	if done >= (spec[5] if _check != null else spec[6]):
+		return true
+	# Reading /proc every step would cost time inside the timed span; one core cannot give
+	# a process more CPU time than wall time, so the clock only needs reading once wall time
+	# is past the budget.
+	if Time.get_ticks_usec() - _phase_wall0 < JOB_BUDGET_S * 1e6:
+		return false
+	var now := CpuClock.usec()
+	if now - _phase_cpu0 < JOB_BUDGET_S * 1e6:
+		return false
 	if _check != null:
+		return done > 0
+	return done > WARMUP and now - _cpu0 >= MIN_TIMED_S * 1e6
+
+
+func _end_job(done: int) -> void:
+	var spec: Array = _job["spec"]
+	var name: String = spec[0]
+	var row: Dictionary = _results[name]
+	var checking := _check != null
+	var target: int = spec[5] if checking else spec[6]
+	if checking:
 		row["godot_tunnels"] = _check.tunnels
 		row["godot_escapes"] = _check.escapes
-		print("  godot %s: tunnels %d, escapes %d" % [spec[0], _check.tunnels, _check.escapes])
+		row["godot_steps_checked"] = done
+		print(
+			(
+				"  godot %s: tunnels %d, escapes %d over %d of %d steps"
+				% [name, _check.tunnels, _check.escapes, done, target]
+			)
+		)
 	else:
-		var timed: int = spec[5] - WARMUP
+		var timed: int = done - WARMUP
 		var balls: int = (_job["scene"]["pos"] as PackedVector2Array).size()
 		var cpu: float = maxf((CpuClock.usec() - _cpu0) / 1e6, 1e-6)
 		var wall: float = maxf((Time.get_ticks_usec() - _wall0) / 1e6, 1e-6)
 		row["godot_steps_per_s"] = balls * timed / cpu
 		row["godot_wall_steps_per_s"] = balls * timed / wall
+		row["godot_steps_run"] = done
+		row["godot_timed_steps"] = timed
+		row["godot_timed_cpu_s"] = cpu
 		row["ratio"] = row["ours_steps_per_s"] / row["godot_steps_per_s"]
-		print("  godot %s: %.0f ball-steps/s (CPU)" % [spec[0], row["godot_steps_per_s"]])
-	_next_job()
+		print(
+			(
+				"  godot %s: %.0f ball-steps/s (CPU) over %d of %d steps (%.1f s timed)"
+				% [name, row["godot_steps_per_s"], done, target, cpu]
+			)
+		)
+	_phase_end("godot %s %s" % [name, "check" if checking else "timing"], done, target)
+	_side.free_all()
+	_side = null
+	_check = null
+	if checking and done < target:
+		# The Godot counts cover only the first `done` steps: count ours over the same steps,
+		# so the two can be compared.
+		_phase_begin()
+		var c: Dictionary = Ours.run(_job["scene"], done, true)
+		row["ours_tunnels_same_steps"] = c["tunnels"]
+		row["ours_escapes_same_steps"] = c["escapes"]
+		_phase_end("ours %s check, %d steps" % [name, done])
+	_want_job = true
+
+
+func _phase_begin() -> void:
+	_phase_cpu0 = CpuClock.usec()
+	_phase_wall0 = Time.get_ticks_usec()
+
+
+func _phase_end(name: String, steps := -1, of := -1) -> void:
+	var phase := {
+		"cpu_s": (CpuClock.usec() - _phase_cpu0) / 1e6,
+		"wall_s": (Time.get_ticks_usec() - _phase_wall0) / 1e6,
+	}
+	if steps >= 0:
+		phase["steps"] = steps
+		phase["of"] = of
+	_phases[name] = phase
 
 
 func _finish() -> void:
@@ -153,7 +257,9 @@ func _finish() -> void:
 		"scenarios": _results,
 		"zoned_vs_brute_S1": _zoned_vs_brute,
 		"scale": _scale,
-		"cpus_allowed": _cpus_allowed(),
+		"cpus_allowed": _proc_status("Cpus_allowed_list"),
+		"godot_job_budget_s": JOB_BUDGET_S,
+		"phase_seconds": _phases,
 		"seconds": (Time.get_ticks_usec() - _started_usec) / 1e6,
 	}
 	_print_table(out)
@@ -172,13 +278,17 @@ func _finish() -> void:
 func _print_table(out: Dictionary) -> void:
 	print("")
 	print(
-		"scene  balls  pins walls   hz      ours/s     godot/s  ratio  tunnels escapes (godot t/e)"
+		(
+			"scene balls  pins walls   hz     ours/s    godot/s   ratio  steps run  tunnels"
+			+ " escapes  godot t/e  checked"
+		)
 	)
+	var notes := PackedStringArray()
 	for name: String in ["S1", "S2", "S3", "S4"]:
 		var r: Dictionary = out["scenarios"][name]
 		print(
 			(
-				"%-5s %6d %5d %5d %4d %11.0f %11.0f %6.2f %8d %7d (%d/%d)"
+				"%-5s %5d %5d %5d %4d %10.0f %10.0f %7.2f %5d/%-5d %7d %7d %5d/%-5d %3d/%-3d"
 				% [
 					name,
 					r["balls"],
@@ -188,23 +298,58 @@ func _print_table(out: Dictionary) -> void:
 					r["ours_steps_per_s"],
 					r.get("godot_steps_per_s", 0.0),
 					r.get("ratio", 0.0),
+					r["ours_steps_run"],
+					r.get("godot_steps_run", 0),
 					r["tunnels"],
 					r["escapes"],
 					r.get("godot_tunnels", -1),
 					r.get("godot_escapes", -1),
+					r["steps"],
+					r.get("godot_steps_checked", 0),
 				]
 			)
 		)
+		if r.has("ours_tunnels_same_steps"):
+			(
+				notes
+				. append(
+					(
+						"%s: Godot checked %d of %d steps; ours over those steps: tunnels %d, escapes %d"
+						% [
+							name,
+							r["godot_steps_checked"],
+							r["steps"],
+							r["ours_tunnels_same_steps"],
+							r["ours_escapes_same_steps"],
+						]
+					)
+				)
+			)
+	print("steps run: ours/godot in the timing runs (the first %d untimed)" % WARMUP)
+	print("checked: steps the swept check covered, ours/godot (budget %.0f s)" % JOB_BUDGET_S)
+	for note: String in notes:
+		print(note)
 	print("zoned vs brute force, S1: %.1fx" % out["zoned_vs_brute_S1"])
 	print("scale: %s" % JSON.stringify(out["scale"]))
+	print("")
+	print("seconds per phase (CPU / wall):")
+	var phases: Dictionary = out["phase_seconds"]
+	for name: String in phases:
+		var p: Dictionary = phases[name]
+		var steps := ""
+		if p.has("steps"):
+			steps = "  %d of %d steps" % [p["steps"], p["of"]]
+		print("  %-28s %7.1f / %7.1f%s" % [name, p["cpu_s"], p["wall_s"], steps])
+	print("total %.1f s wall" % out["seconds"])
 
 
-func _cpus_allowed() -> String:
+## A field of /proc/self/status ("Cpus_allowed_list", "Threads"), or "unknown".
+func _proc_status(key: String) -> String:
 	var f := FileAccess.open("/proc/self/status", FileAccess.READ)
 	if f == null:
 		return "unknown"
 	while not f.eof_reached():
 		var line := f.get_line()
-		if line.begins_with("Cpus_allowed_list:"):
+		if line.begins_with(key + ":"):
 			return line.get_slice(":", 1).strip_edges()
 	return "unknown"

@@ -41,6 +41,9 @@ func test_restitution_scales_the_normal_relative_speed() -> void:
 
 func test_momentum_is_conserved_in_a_crowd() -> void:
 	var w := _free_world(0.6)
+	# The contact law alone: a sleeping ball holds still against slow touches (see
+	# test_physics_sleep.gd), which is not momentum-conserving by design.
+	w.tuning.sleep_time = 0.0
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 5
 	for _i: int in 300:

@@ -72,6 +72,7 @@ func build(scene: Dictionary, gravity: Vector2, bounce: float, ccd: bool) -> voi
 		balls.append(body)
 
 
+## Gravity of the whole space, as a strength and a direction.
 func set_gravity(g: Vector2) -> void:
 	var len: float = g.length()
 	PhysicsServer2D.area_set_param(space, PhysicsServer2D.AREA_PARAM_GRAVITY, len)
@@ -84,6 +85,7 @@ func tilt(deg: Vector2) -> void:
 	set_gravity(MazeTilt.gravity(deg, PhysicsTuning.maze_defaults().tilt_gravity))
 
 
+## Every ball's centre, in spawn order (the order of the scene's `pos`).
 func positions() -> PackedVector2Array:
 	var out := PackedVector2Array()
 	out.resize(balls.size())
@@ -95,10 +97,12 @@ func positions() -> PackedVector2Array:
 	return out
 
 
+## Ball `i`'s linear velocity.
 func velocity(i: int) -> Vector2:
 	return PhysicsServer2D.body_get_state(balls[i], PhysicsServer2D.BODY_STATE_LINEAR_VELOCITY)
 
 
+## Moves ball `i` to `p` with velocity `v` (the harness's respawns and relaunches).
 func teleport(i: int, p: Vector2, v: Vector2) -> void:
 	PhysicsServer2D.body_set_state(
 		balls[i], PhysicsServer2D.BODY_STATE_TRANSFORM, Transform2D(0.0, p)
@@ -106,6 +110,7 @@ func teleport(i: int, p: Vector2, v: Vector2) -> void:
 	PhysicsServer2D.body_set_state(balls[i], PhysicsServer2D.BODY_STATE_LINEAR_VELOCITY, v)
 
 
+## Frees every body, the space and the shapes; the engine stops stepping this scene.
 func free_all() -> void:
 	for b: RID in balls:
 		PhysicsServer2D.free_rid(b)
