@@ -28,6 +28,9 @@ static func move(
 	var ids: PackedInt32Array = b.ids
 	var asleep: PackedByteArray = b.asleep
 	var support: PackedVector2Array = b.support_static
+	var tracing: bool = b.tracing
+	var trace_ball: PackedInt32Array = b.trace_ball
+	var trace_pos: PackedVector2Array = b.trace_pos
 	var ca: PackedInt32Array = b.contact_a
 	var cb: PackedInt32Array = b.contact_b
 	var rest: PackedFloat32Array = b.rest
@@ -135,7 +138,10 @@ static func move(
 				h = dt / steps
 				pu_step = pu / steps
 		var gone := false
-		for _s: int in steps:
+		for sub: int in steps:
+			if tracing and sub > 0:
+				trace_ball.append(i)
+				trace_pos.append(p)
 			p += v * h + pu_step
 			# Ring: the ball's centre stays within ring_r - r of the centre.
 			if has_ring:
@@ -383,6 +389,8 @@ static func move(
 	b.vel = vel
 	b.asleep = asleep
 	b.support_static = support
+	b.trace_ball = trace_ball
+	b.trace_pos = trace_pos
 	b.contact_a = ca
 	b.contact_b = cb
 	b.rest = rest

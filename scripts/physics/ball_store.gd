@@ -32,6 +32,11 @@ var woken := false
 ## instead of keeping half of every ball's fall speed.
 var support_static := PackedVector2Array()
 var support_ball := PackedVector2Array()
+## Path recording (for checks, off in play): while `tracing`, each step appends the
+## position every ball reached after each of its substeps but the last, as (slot, point).
+var tracing := false
+var trace_ball := PackedInt32Array()
+var trace_pos := PackedVector2Array()
 ## Keys of the static shapes touched last step (two slots), so a persisting contact slides.
 var contact_a := PackedInt32Array()
 var contact_b := PackedInt32Array()

@@ -288,6 +288,25 @@ func get_ids() -> PackedInt32Array:
 	return _balls.ids.duplicate()
 
 
+## Turns path recording on or off (see take_step_paths()). Off by default: it costs memory
+## and time, and only checks need it.
+func set_path_recording(on: bool) -> void:
+	_balls.tracing = on
+	_balls.trace_ball = PackedInt32Array()
+	_balls.trace_pos = PackedVector2Array()
+
+
+## The points each ball passed through between its substeps since the last call, for an
+## outside check that follows the real path rather than the straight line between two
+## frames: {"slots": PackedInt32Array, "points": PackedVector2Array}, ordered by slot (the
+## index in get_positions() before the step's removals) and then by time. Clears them.
+func take_step_paths() -> Dictionary:
+	var out := {"slots": _balls.trace_ball, "points": _balls.trace_pos}
+	_balls.trace_ball = PackedInt32Array()
+	_balls.trace_pos = PackedVector2Array()
+	return out
+
+
 ## Sets gravity and rolling friction from a maze tilt in degrees (see MazeTilt), using
 ## tuning.tilt_gravity and tuning.rolling_friction.
 func set_tilt(tilt_deg: Vector2) -> void:

@@ -69,6 +69,8 @@ static func run(scene: Dictionary, steps: int, check: bool, zoning := true) -> D
 	var w := build_world(scene, zoning)
 	var side := OursSide.new(w)
 	var checker: SweptCheck = SweptCheck.new(scene) if check else null
+	# The check follows the path through the substeps; the timed run records nothing.
+	w.set_path_recording(check)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = RULES_SEED
 	var dt: float = 1.0 / float(scene["hz"])
@@ -87,7 +89,8 @@ static func run(scene: Dictionary, steps: int, check: bool, zoning := true) -> D
 			var skip := PackedByteArray()
 			skip.resize(after.size())
 			skip.fill(0)
-			checker.check(before, after, skip)
+			var paths: Dictionary = w.take_step_paths()
+			checker.check_paths(before, after, skip, paths["slots"], paths["points"])
 			harness_rules(mode, s + 1, after, rng, side, scene["hz"])
 			before = after
 		elif rules_due(mode, s + 1):

@@ -57,8 +57,23 @@ func _init(scene: Dictionary) -> void:
 
 
 ## Checks every ball's move from `before[i]` to `after[i]`; `skip[i]` != 0 marks a teleport.
+## The move is taken as the straight line between the two frames.
 func check(before: PackedVector2Array, after: PackedVector2Array, skip: PackedByteArray) -> void:
-	var r2: float = _pin_r * _pin_r
+	check_paths(before, after, skip, PackedInt32Array(), PackedVector2Array())
+
+
+## Like check(), but a ball's move runs through the points the engine reports it passed
+## inside the step (`path_slots[k]` is the ball of `path_points[k]`, grouped by ball in
+## slot order, in time order): a ball that bounced inside a step is followed round its
+## bounce instead of along the chord, which can cut through a pin it never touched.
+func check_paths(
+	before: PackedVector2Array,
+	after: PackedVector2Array,
+	skip: PackedByteArray,
+	path_slots: PackedInt32Array,
+	path_points: PackedVector2Array
+) -> void:
+	var k := 0
 	for i: int in after.size():
 		var p1: Vector2 = after[i]
 		if not p1.is_finite():
@@ -69,31 +84,45 @@ func check(before: PackedVector2Array, after: PackedVector2Array, skip: PackedBy
 				escapes += 1
 		elif not _box.grow(0.5).has_point(p1):
 			escapes += 1
+		var p0: Vector2 = before[i]
+		var hit := false
+		while k < path_slots.size() and path_slots[k] < i:
+			k += 1
+		while k < path_slots.size() and path_slots[k] == i:
+			var q: Vector2 = path_points[k]
+			if skip[i] == 0 and _segment_tunnels(p0, q):
+				hit = true
+			p0 = q
+			k += 1
 		if skip[i] != 0:
 			continue
-		var p0: Vector2 = before[i]
-		var x0: int = _cx(minf(p0.x, p1.x))
-		var x1: int = _cx(maxf(p0.x, p1.x))
-		var y0: int = _cy(minf(p0.y, p1.y))
-		var y1: int = _cy(maxf(p0.y, p1.y))
-		var hit := false
-		for cy: int in range(y0, y1 + 1):
-			for cx: int in range(x0, x1 + 1):
-				var c: int = cy * _cols + cx
-				for k: int in _cell_pins[c]:
-					var q: Vector2 = _pins[k]
-					if (
-						Geometry2D.get_closest_point_to_segment(q, p0, p1).distance_squared_to(q)
-						< r2
-					):
-						hit = true
-				for k: int in _cell_walls[c]:
-					var a: Vector2 = _walls[2 * k]
-					var b: Vector2 = _walls[2 * k + 1]
-					if p0 != p1 and Geometry2D.segment_intersects_segment(p0, p1, a, b) != null:
-						hit = true
+		if _segment_tunnels(p0, p1):
+			hit = true
 		if hit:
 			tunnels += 1
+
+
+## True when the centre's straight move p0 → p1 passes within a pin's own radius of its
+## centre or crosses a wall's core segment.
+func _segment_tunnels(p0: Vector2, p1: Vector2) -> bool:
+	var r2: float = _pin_r * _pin_r
+	var x0: int = _cx(minf(p0.x, p1.x))
+	var x1: int = _cx(maxf(p0.x, p1.x))
+	var y0: int = _cy(minf(p0.y, p1.y))
+	var y1: int = _cy(maxf(p0.y, p1.y))
+	for cy: int in range(y0, y1 + 1):
+		for cx: int in range(x0, x1 + 1):
+			var c: int = cy * _cols + cx
+			for k: int in _cell_pins[c]:
+				var q: Vector2 = _pins[k]
+				if Geometry2D.get_closest_point_to_segment(q, p0, p1).distance_squared_to(q) < r2:
+					return true
+			for k: int in _cell_walls[c]:
+				var a: Vector2 = _walls[2 * k]
+				var b: Vector2 = _walls[2 * k + 1]
+				if p0 != p1 and Geometry2D.segment_intersects_segment(p0, p1, a, b) != null:
+					return true
+	return false
 
 
 func _cx(x: float) -> int:
