@@ -106,10 +106,6 @@ static func collide_balls(
 	for k: int in n:
 		var key: int = keys[k]
 		var c: int = key >> shift
-		var i: int = key & mask
-		var pi: Vector2 = pos[i]
-		var ri: float = rad[i]
-		var sleep_i: bool = asleep[i] != 0
 		# Same cell (later balls) and the next cell.
 		var end_same: int = k + 1
 		var next_cell: int = (c + 2) << shift
@@ -123,6 +119,12 @@ static func collide_balls(
 		var end_below: int = below
 		while end_below < n and keys[end_below] < past_below:
 			end_below += 1
+		if end_same == k + 1 and end_below == below:
+			continue  # a lone ball (most of a flowing board): nothing to read
+		var i: int = key & mask
+		var pi: Vector2 = pos[i]
+		var ri: float = rad[i]
+		var sleep_i: bool = asleep[i] != 0
 		for run: int in 2:
 			var m0: int = k + 1 if run == 0 else below
 			var m1: int = end_same if run == 0 else end_below
