@@ -62,6 +62,8 @@ static func move(
 	var inv: float = g.inv_cell
 	var cols: int = g.cols
 	var rows: int = g.rows
+	var last_col: int = cols - 1
+	var last_row: int = rows - 1
 	var has_ring: bool = g.has_ring
 	var rc: Vector2 = g.ring_center
 	var ring_r: float = g.ring_radius
@@ -106,7 +108,7 @@ static func move(
 		var p: Vector2 = pos[i]
 		var p_start: Vector2 = p
 		var v: Vector2 = vel[i]
-		var sp2: float = v.x * v.x + v.y * v.y
+		var sp2: float = v.length_squared()
 		if sp2 > cap2:
 			v *= max_speed / sqrt(sp2)
 		var r: float = rad[i]
@@ -131,7 +133,7 @@ static func move(
 		var steps := 1
 		var h: float = dt
 		var pu_step: Vector2 = pu
-		if mv.x * mv.x + mv.y * mv.y > max_travel2 or pu_len > 0.0:
+		if mv.length_squared() > max_travel2 or pu_len > 0.0:
 			var travel: float = mv.length() + pu_len
 			if travel > max_travel:
 				steps = mini(int(ceil(travel / max_travel)), max_substeps)
@@ -146,7 +148,7 @@ static func move(
 			# Ring: the ball's centre stays within ring_r - r of the centre.
 			if has_ring:
 				var d: Vector2 = p - rc
-				var d2: float = d.x * d.x + d.y * d.y
+				var d2: float = d.length_squared()
 				if d2 > ring_lim2:
 					var lim: float = ring_lim
 					var dist: float = sqrt(d2)
@@ -190,8 +192,8 @@ static func move(
 							evs.append(0.0)
 							gone = true
 							break
-			var cx: int = clampi(int((p.x - ox) * inv), 0, cols - 1)
-			var cy: int = clampi(int((p.y - oy) * inv), 0, rows - 1)
+			var cx: int = clampi(int((p.x - ox) * inv), 0, last_col)
+			var cy: int = clampi(int((p.y - oy) * inv), 0, last_row)
 			var c: int = cy * cols + cx
 			var k0 := 0
 			var k1: int = n_pins
@@ -202,7 +204,7 @@ static func move(
 				var q: Vector2 = item_pos[k]
 				var d: Vector2 = p - q
 				var lim: float = item_rad[k] + r
-				var d2: float = d.x * d.x + d.y * d.y
+				var d2: float = d.length_squared()
 				if d2 >= lim * lim:
 					continue
 				var pid: int = pin_items[k]
@@ -247,8 +249,8 @@ static func move(
 				break
 			if not has_walls:
 				continue
-			cx = clampi(int((p.x - ox) * inv), 0, cols - 1)
-			cy = clampi(int((p.y - oy) * inv), 0, rows - 1)
+			cx = clampi(int((p.x - ox) * inv), 0, last_col)
+			cy = clampi(int((p.y - oy) * inv), 0, last_row)
 			c = cy * cols + cx
 			# Deepest contact first, then again: at a joint the flat side of one wall is
 			# deeper than the neighbour's cap, so the cap never adds a ghost bump.
@@ -268,7 +270,7 @@ static func move(
 					var q: Vector2 = a + ab * s
 					var d: Vector2 = p - q
 					var lim: float = wall_rad[wid] + r
-					var d2: float = d.x * d.x + d.y * d.y
+					var d2: float = d.length_squared()
 					if d2 >= lim * lim:
 						continue
 					var depth: float = lim - sqrt(d2)
@@ -327,7 +329,7 @@ static func move(
 		if gone:
 			b.kill(i)
 			continue
-		if v.x * v.x + v.y * v.y < rest2:
+		if v.length_squared() < rest2:
 			var rested: float = rest[i] + dt
 			rest[i] = rested
 			# A ball lying in the gutter never sleeps: it must still drain.

@@ -132,7 +132,7 @@ static func collide_balls(
 				var j: int = keys[m] & mask
 				var d: Vector2 = pos[j] - pi
 				var rr: float = ri + rad[j]
-				var d2: float = d.x * d.x + d.y * d.y
+				var d2: float = d.length_squared()
 				if d2 >= rr * rr:
 					continue
 				var sleep_j: bool = asleep[j] != 0
