@@ -87,18 +87,15 @@ static func collide_balls(
 	var sup_next := PackedVector2Array()
 	sup_next.resize(n)
 	var cols: int = g.cols
-	var last_col: int = cols - 1
-	var last_row: int = g.rows - 1
-	var ox: float = g.origin.x
-	var oy: float = g.origin.y
+	var origin: Vector2 = g.origin
+	var last_cell := Vector2i(cols - 1, g.rows - 1)
 	var inv: float = g.inv_cell
 	var keys: PackedInt64Array = b.sort_keys
 	keys.resize(n)
 	for i: int in n:
 		var p: Vector2 = pos[i]
-		var cx: int = clampi(int((p.x - ox) * inv), 0, last_col)
-		var cy: int = clampi(int((p.y - oy) * inv), 0, last_row)
-		keys[i] = ((cy * cols + cx) << SORT_SHIFT) | i
+		var ci: Vector2i = Vector2i((p - origin) * inv).clamp(Vector2i.ZERO, last_cell)
+		keys[i] = ((ci.y * cols + ci.x) << SORT_SHIFT) | i
 	keys.sort()
 	var shift: int = SORT_SHIFT
 	var mask: int = SORT_MASK
