@@ -51,12 +51,14 @@ static func move(
 	var item_pos: PackedVector2Array = g.pin_item_pos if zoned else pin_pos
 	var item_rad: PackedFloat32Array = g.pin_item_radius if zoned else pin_rad
 	var n_pins: int = pin_pos.size()
-	var wall_a: PackedVector2Array = g.wall_a
 	var wall_ab: PackedVector2Array = g.wall_ab
 	var wall_inv: PackedFloat32Array = g.wall_inv_len2
-	var wall_rad: PackedFloat32Array = g.wall_radius
 	var wall_start: PackedInt32Array = g.wall_start
 	var wall_items: PackedInt32Array = g.wall_items
+	var wall_item_a: PackedVector2Array = g.wall_item_a
+	var wall_item_ab: PackedVector2Array = g.wall_item_ab
+	var wall_item_inv: PackedFloat32Array = g.wall_item_inv
+	var wall_item_rad: PackedFloat32Array = g.wall_item_radius
 	var origin: Vector2 = g.origin
 	var inv: float = g.inv_cell
 	var cols: int = g.cols
@@ -91,7 +93,7 @@ static func move(
 	var slide_time: float = t.gutter_slide_time
 	var travel_share: float = BallStep.TRAVEL_SHARE
 	var max_substeps: int = BallStep.MAX_SUBSTEPS
-	var has_walls: bool = wall_a.size() > 0
+	var has_walls: bool = g.wall_a.size() > 0
 	var last_r := -1.0
 	var max_travel := 0.0
 	var max_travel2 := 0.0
@@ -113,7 +115,7 @@ static func move(
 		var r: float = rad[i]
 		var pu: Vector2 = push[i]
 		var pu_len := 0.0
-		if pu.x != 0.0 or pu.y != 0.0:
+		if pu != Vector2.ZERO:
 			pu_len = pu.length()
 			if pu_len > 0.5 * r:
 				pu *= 0.5 * r / pu_len
@@ -193,6 +195,7 @@ static func move(
 							break
 			var ci: Vector2i = Vector2i((p - origin) * inv).clamp(Vector2i.ZERO, last_cell)
 			var c: int = ci.y * cols + ci.x
+			var pin_touched := false
 			var k0 := 0
 			var k1: int = n_pins
 			if zoned:
@@ -205,6 +208,7 @@ static func move(
 				var d2: float = d.length_squared()
 				if d2 >= lim * lim:
 					continue
+				pin_touched = true
 				var pid: int = pin_items[k]
 				if pin_special[pid] != 0:
 					ev.append(BallStep.Ev.POCKETED)
@@ -247,8 +251,9 @@ static func move(
 				break
 			if not has_walls:
 				continue
-			ci = Vector2i((p - origin) * inv).clamp(Vector2i.ZERO, last_cell)
-			c = ci.y * cols + ci.x
+			if pin_touched:
+				ci = Vector2i((p - origin) * inv).clamp(Vector2i.ZERO, last_cell)
+				c = ci.y * cols + ci.x
 			# Deepest contact first, then again: at a joint the flat side of one wall is
 			# deeper than the neighbour's cap, so the cap never adds a ghost bump.
 			for _pass: int in 3:
@@ -260,20 +265,19 @@ static func move(
 				var best_s := 0.0
 				var best_q := Vector2.ZERO
 				for k: int in range(wall_start[c], wall_start[c + 1]):
-					var wid: int = wall_items[k]
-					var a: Vector2 = wall_a[wid]
-					var ab: Vector2 = wall_ab[wid]
-					var s: float = clampf((p - a).dot(ab) * wall_inv[wid], 0.0, 1.0)
+					var a: Vector2 = wall_item_a[k]
+					var ab: Vector2 = wall_item_ab[k]
+					var s: float = clampf((p - a).dot(ab) * wall_item_inv[k], 0.0, 1.0)
 					var q: Vector2 = a + ab * s
 					var d: Vector2 = p - q
-					var lim: float = wall_rad[wid] + r
+					var lim: float = wall_item_rad[k] + r
 					var d2: float = d.length_squared()
 					if d2 >= lim * lim:
 						continue
 					var depth: float = lim - sqrt(d2)
 					found += 1
 					if depth > best_depth or best < 0:
-						best = wid
+						best = wall_items[k]
 						best_depth = depth
 						best_d2 = d2
 						best_lim = lim

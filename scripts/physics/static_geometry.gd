@@ -54,6 +54,11 @@ var pin_item_pos := PackedVector2Array()
 var pin_item_radius := PackedFloat32Array()
 var wall_start := PackedInt32Array()
 var wall_items := PackedInt32Array()
+## Each entry of wall_items' a, b - a, 1 / |b - a|² and radius, side by side (see pins).
+var wall_item_a := PackedVector2Array()
+var wall_item_ab := PackedVector2Array()
+var wall_item_inv := PackedFloat32Array()
+var wall_item_radius := PackedFloat32Array()
 ## Smallest pin or wall radius (the thinnest feature a ball must not tunnel through).
 var min_feature := 0.0
 ## Closest centre distance between two pins whose grown shapes overlap (INF if none):
@@ -101,6 +106,17 @@ func build(ball_radius: float, use_zoning := true) -> void:
 		pin_item_pos[k] = pin_pos[pin_items[k]]
 		pin_item_radius[k] = pin_radius[pin_items[k]]
 	_bin_walls(grow)
+	var n_items: int = wall_items.size()
+	wall_item_a.resize(n_items)
+	wall_item_ab.resize(n_items)
+	wall_item_inv.resize(n_items)
+	wall_item_radius.resize(n_items)
+	for k: int in n_items:
+		var w: int = wall_items[k]
+		wall_item_a[k] = wall_a[w]
+		wall_item_ab[k] = wall_ab[w]
+		wall_item_inv[k] = wall_inv_len2[w]
+		wall_item_radius[k] = wall_radius[w]
 	_find_pin_spacing(2.0 * (max_pin + ball_radius))
 	dirty = false
 
