@@ -10,8 +10,9 @@ var space := RID()
 var balls: Array[RID] = []
 
 var _static_body := RID()
-var _shapes: Array[Shape2D] = []
-var _ball_shape: CircleShape2D
+## Server-side shapes, not Shape2D resources: a resource frees its shape whenever it is
+## released, and freeing a shape still on a ball with a NaN position hangs (see free_all).
+var _shapes: Array[RID] = []
 
 
 ## Builds the scene; `ccd` turns on continuous collision for the balls (the fast scene).
@@ -25,40 +26,41 @@ func build(scene: Dictionary, gravity: Vector2, bounce: float, ccd: bool) -> voi
 	ps.body_set_space(_static_body, space)
 	ps.body_set_param(_static_body, PhysicsServer2D.BODY_PARAM_BOUNCE, 0.0)
 	ps.body_set_param(_static_body, PhysicsServer2D.BODY_PARAM_FRICTION, 0.0)
-	var pin := CircleShape2D.new()
-	pin.radius = scene["pin_r"]
+	var pin := ps.circle_shape_create()
+	ps.shape_set_data(pin, scene["pin_r"])
 	_shapes.append(pin)
 	for p: Vector2 in scene["pins"]:
-		ps.body_add_shape(_static_body, pin.get_rid(), Transform2D(0.0, p))
+		ps.body_add_shape(_static_body, pin, Transform2D(0.0, p))
 	var walls: PackedVector2Array = scene["walls"]
 	var wall_r: float = scene["wall_r"]
 	for k: int in walls.size() / 2:
 		var a: Vector2 = walls[2 * k]
 		var b: Vector2 = walls[2 * k + 1]
-		var cap := CapsuleShape2D.new()
-		cap.radius = wall_r
-		cap.height = a.distance_to(b) + 2.0 * wall_r
+		var cap := ps.capsule_shape_create()
+		# (radius, height), as CapsuleShape2D passes it; the height includes both caps.
+		ps.shape_set_data(cap, Vector2(wall_r, a.distance_to(b) + 2.0 * wall_r))
 		_shapes.append(cap)
 		# A capsule's axis is its local y: turn it onto a→b.
 		var angle: float = (b - a).angle() - PI / 2.0
-		ps.body_add_shape(_static_body, cap.get_rid(), Transform2D(angle, (a + b) * 0.5))
+		ps.body_add_shape(_static_body, cap, Transform2D(angle, (a + b) * 0.5))
 	if scene["ring"]:
-		var ring := ConcavePolygonShape2D.new()
+		var ring := ps.concave_polygon_shape_create()
 		var segs := PackedVector2Array()
 		for k: int in RING_SEGMENTS:
 			segs.append(Vector2.from_angle(TAU * k / RING_SEGMENTS) * 500.0)
 			segs.append(Vector2.from_angle(TAU * (k + 1) / RING_SEGMENTS) * 500.0)
-		ring.segments = segs
+		ps.shape_set_data(ring, segs)
 		_shapes.append(ring)
-		ps.body_add_shape(_static_body, ring.get_rid())
-	_ball_shape = CircleShape2D.new()
-	_ball_shape.radius = scene["ball_r"]
+		ps.body_add_shape(_static_body, ring)
+	var ball_shape := ps.circle_shape_create()
+	ps.shape_set_data(ball_shape, scene["ball_r"])
+	_shapes.append(ball_shape)
 	var pos: PackedVector2Array = scene["pos"]
 	var vel: PackedVector2Array = scene["vel"]
 	for i: int in pos.size():
 		var body := ps.body_create()
 		ps.body_set_mode(body, PhysicsServer2D.BODY_MODE_RIGID)
-		ps.body_add_shape(body, _ball_shape.get_rid())
+		ps.body_add_shape(body, ball_shape)
 		ps.body_set_space(body, space)
 		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_BOUNCE, bounce)
 		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_FRICTION, 0.0)
@@ -110,8 +112,17 @@ func teleport(i: int, p: Vector2, v: Vector2) -> void:
 	PhysicsServer2D.body_set_state(balls[i], PhysicsServer2D.BODY_STATE_LINEAR_VELOCITY, v)
 
 
-## Frees every body, the space and the shapes; the engine stops stepping this scene.
-func free_all() -> void:
+## Frees every body, the space and the shapes, and returns true; the engine stops stepping
+## this scene either way. GodotPhysics2D hangs taking a ball whose position went NaN out of
+## its broadphase (S3's cast-shape CCD does this to most balls within a few steps), so such a
+## scene is only switched off and left allocated until the process exits: returns false.
+func free_all() -> bool:
+	for p: Vector2 in positions():
+		if not p.is_finite():
+			PhysicsServer2D.space_set_active(space, false)
+			balls.clear()
+			_shapes.clear()
+			return false
 	for b: RID in balls:
 		PhysicsServer2D.free_rid(b)
 	balls.clear()
@@ -119,4 +130,7 @@ func free_all() -> void:
 		PhysicsServer2D.free_rid(_static_body)
 	if space.is_valid():
 		PhysicsServer2D.free_rid(space)
+	for s: RID in _shapes:
+		PhysicsServer2D.free_rid(s)
 	_shapes.clear()
+	return true
