@@ -9,6 +9,7 @@ extends RefCounted
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallStep := preload("res://scripts/physics/ball_step.gd")
+const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 
 const NO_CONTACT := 0
 const RING_KEY := BallStep.RING_KEY
@@ -69,15 +70,7 @@ static func move(
 	var rc: Vector2 = g.ring_center
 	var ring_r: float = g.ring_radius
 	var has_gutter: bool = g.has_gutter
-	var hole_pos: PackedVector2Array = g.hole_pos
-	var hole_rad: PackedFloat32Array = g.hole_radius
-	var goal_pos: PackedVector2Array = g.goal_pos
-	var goal_rad: PackedFloat32Array = g.goal_radius
-	var zone_pos: PackedVector2Array = g.zone_pos
-	var zone_rad: PackedFloat32Array = g.zone_radius
-	var n_holes: int = hole_pos.size()
-	var n_goals: int = goal_pos.size()
-	var n_zones: int = zone_pos.size()
+	var has_sensors: bool = g.hole_pos.size() > 0 or g.goal_pos.size() > 0 or g.zone_pos.size() > 0
 
 	var pin_e: float = t.restitution
 	var wall_e: float = t.wall_restitution
@@ -345,48 +338,8 @@ static func move(
 				vel[i] = Vector2.ZERO
 		else:
 			rest[i] = 0.0
-		# Holes: the centre came within the hole radius anywhere along this step's path.
-		for k: int in n_holes:
-			var hp: Vector2 = hole_pos[k]
-			var q: Vector2 = Geometry2D.get_closest_point_to_segment(hp, p_start, p)
-			var hr: float = hole_rad[k]
-			if q.distance_squared_to(hp) <= hr * hr:
-				ev.append(BallStep.Ev.HOLE)
-				ev.append(ids[i])
-				ev.append(k)
-				evs.append(0.0)
-				b.kill(i)
-				gone = true
-				break
-		if gone:
-			continue
-		if n_goals > 0:
-			var mask: int = gmask[i]
-			for k: int in n_goals:
-				var gr: float = goal_rad[k]
-				var inside: bool = p.distance_squared_to(goal_pos[k]) <= gr * gr
-				var bit: int = 1 << k
-				if inside != ((mask & bit) != 0):
-					mask ^= bit
-					ev.append(BallStep.Ev.GOAL if inside else BallStep.Ev.GOAL_LEFT)
-					ev.append(ids[i])
-					ev.append(k)
-					evs.append(0.0)
-			gmask[i] = mask
-		if n_zones > 0:
-			var mask: int = zmask[i]
-			for k: int in n_zones:
-				var zr: float = zone_rad[k]
-				var inside: bool = p.distance_squared_to(zone_pos[k]) <= zr * zr
-				var bit: int = 1 << k
-				if inside != ((mask & bit) != 0):
-					mask ^= bit
-					if inside:
-						ev.append(BallStep.Ev.ZONE)
-						ev.append(ids[i])
-						ev.append(k)
-						evs.append(0.0)
-			zmask[i] = mask
+		if has_sensors and BallSensors.sense(g, i, ids[i], p_start, p, gmask, zmask, ev, evs):
+			b.kill(i)
 
 	b.pos = pos
 	b.vel = vel

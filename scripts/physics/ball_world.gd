@@ -33,6 +33,7 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallStep := preload("res://scripts/physics/ball_step.gd")
 const BallMotion := preload("res://scripts/physics/ball_motion.gd")
+const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
 ## hitch slows the game down instead of freezing it.
@@ -79,12 +80,8 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 ## that touches it pocketed. Returns the pin index, or -1 on bad input.
 func add_pin(pos: Vector2, radius: float, pocket := -1, special := false) -> int:
 	if not pos.is_finite() or not is_finite(radius) or radius < 0.0:
-		push_error(
-			(
-				"BallWorld.add_pin: needs a finite position and radius >= 0 (got %s, %s)"
-				% [pos, radius]
-			)
-		)
+		var problem: String = "BallWorld.add_pin: needs a finite position and radius >= 0 (got %s, %s)"
+		push_error(problem % [pos, radius])
 		return -1
 	_geo.pin_pos.append(pos)
 	_geo.pin_radius.append(radius)
@@ -98,12 +95,8 @@ func add_pin(pos: Vector2, radius: float, pocket := -1, special := false) -> int
 ## index, or -1 on bad input. A zero-length wall is a round post.
 func add_wall(a: Vector2, b: Vector2, radius: float) -> int:
 	if not a.is_finite() or not b.is_finite() or not is_finite(radius) or radius < 0.0:
-		push_error(
-			(
-				"BallWorld.add_wall: needs finite ends and radius >= 0 (got %s, %s, %s)"
-				% [a, b, radius]
-			)
-		)
+		var problem: String = "BallWorld.add_wall: needs finite ends and radius >= 0 (got %s, %s, %s)"
+		push_error(problem % [a, b, radius])
 		return -1
 	var ab: Vector2 = b - a
 	var len2: float = ab.length_squared()
@@ -119,12 +112,8 @@ func add_wall(a: Vector2, b: Vector2, radius: float) -> int:
 ## Sets the ring border: balls stay inside the circle.
 func set_ring(center: Vector2, radius: float) -> void:
 	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
-		push_error(
-			(
-				"BallWorld.set_ring: needs a finite centre and radius > 0 (got %s, %s)"
-				% [center, radius]
-			)
-		)
+		var problem: String = "BallWorld.set_ring: needs a finite centre and radius > 0 (got %s, %s)"
+		push_error(problem % [center, radius])
 		return
 	_geo.has_ring = true
 	_geo.ring_center = center
@@ -137,12 +126,9 @@ func set_ring(center: Vector2, radius: float) -> void:
 ## tuning.gutter_slide_time seconds.
 func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
 	if not is_finite(from_deg) or not is_finite(to_deg) or bounces < 1:
-		push_error(
-			(
-				"BallWorld.set_gutter: needs finite angles and bounces >= 1 (got %s, %s, %d)"
-				% [from_deg, to_deg, bounces]
-			)
-		)
+		var problem: String = "BallWorld.set_gutter: needs finite angles and bounces >= 1"
+		problem += " (got %s, %s, %d)"
+		push_error(problem % [from_deg, to_deg, bounces])
 		return
 	_geo.has_gutter = true
 	_geo.gutter_from = from_deg
@@ -175,12 +161,9 @@ func build_grid() -> void:
 ## non-finite input.
 func spawn_ball(pos: Vector2, vel: Vector2, radius: float) -> int:
 	if not pos.is_finite() or not vel.is_finite() or not is_finite(radius) or radius <= 0.0:
-		push_error(
-			(
-				"BallWorld.spawn_ball: needs a finite position and velocity and radius > 0 (got %s, %s, %s)"
-				% [pos, vel, radius]
-			)
-		)
+		var problem: String = "BallWorld.spawn_ball: needs a finite position and velocity"
+		problem += " and radius > 0 (got %s, %s, %s)"
+		push_error(problem % [pos, vel, radius])
 		return -1
 	if radius > _geo.built_ball_radius:
 		_geo.dirty = true
@@ -367,12 +350,8 @@ func state_hash() -> int:
 func _add_sensor(kind: int, center: Vector2, radius: float) -> int:
 	var what: String = ["add_hole", "add_goal", "add_zone"][kind]
 	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
-		push_error(
-			(
-				"BallWorld.%s: needs a finite centre and radius > 0 (got %s, %s)"
-				% [what, center, radius]
-			)
-		)
+		var problem: String = "BallWorld.%s: needs a finite centre and radius > 0 (got %s, %s)"
+		push_error(problem % [what, center, radius])
 		return -1
 	if kind == SENSOR_HOLE:
 		_geo.hole_pos.append(center)
@@ -395,31 +374,9 @@ func _add_sensor(kind: int, center: Vector2, radius: float) -> int:
 
 func _emit_events() -> void:
 	var ev: PackedInt32Array = _balls.events
-	var evs: PackedFloat32Array = _balls.event_speed
 	if ev.is_empty():
 		return
+	var evs: PackedFloat32Array = _balls.event_speed
 	_balls.events = PackedInt32Array()
 	_balls.event_speed = PackedFloat32Array()
-	for e: int in evs.size():
-		var kind: int = ev[e * 3]
-		var id: int = ev[e * 3 + 1]
-		var index: int = ev[e * 3 + 2]
-		match kind:
-			BallStep.Ev.PIN_HIT:
-				pin_hit.emit(id, index, evs[e])
-			BallStep.Ev.WALL_HIT:
-				wall_hit.emit(id, index, evs[e])
-			BallStep.Ev.RING_HIT:
-				ring_hit.emit(id, evs[e])
-			BallStep.Ev.POCKETED:
-				ball_pocketed.emit(id, index)
-			BallStep.Ev.DRAINED:
-				ball_drained.emit(id)
-			BallStep.Ev.HOLE:
-				ball_fell_in_hole.emit(id, index)
-			BallStep.Ev.GOAL:
-				ball_reached_goal.emit(id, index)
-			BallStep.Ev.GOAL_LEFT:
-				ball_left_goal.emit(id, index)
-			BallStep.Ev.ZONE:
-				ball_entered_zone.emit(id, index)
+	BallEvents.emit_all(self, ev, evs)
