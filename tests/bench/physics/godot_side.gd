@@ -16,6 +16,10 @@ var _shapes: Array[RID] = []
 
 
 ## Builds the scene; `ccd` turns on continuous collision for the balls (the fast scene).
+## In the maze no ball may sleep: GodotPhysics2D does not wake a sleeping body when the
+## space's gravity turns, so under the swinging tilt its sleepers would lie still against a
+## reversed slope (measured: 442 of 1,000 asleep at step 300, when the tilt had reversed).
+## BallWorld wakes every ball on a gravity change; this keeps both sides simulating the same.
 func build(scene: Dictionary, gravity: Vector2, bounce: float, ccd: bool) -> void:
 	var ps := PhysicsServer2D
 	space = ps.space_create()
@@ -65,6 +69,8 @@ func build(scene: Dictionary, gravity: Vector2, bounce: float, ccd: bool) -> voi
 		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_BOUNCE, bounce)
 		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_FRICTION, 0.0)
 		ps.body_set_param(body, PhysicsServer2D.BODY_PARAM_MASS, 1.0)
+		if scene["mode"] == "maze":
+			ps.body_set_state(body, PhysicsServer2D.BODY_STATE_CAN_SLEEP, false)
 		if ccd:
 			ps.body_set_continuous_collision_detection_mode(
 				body, PhysicsServer2D.CCD_MODE_CAST_SHAPE
