@@ -16,10 +16,20 @@ const RING_KEY := BallStep.RING_KEY
 const EPS := BallStep.EPS
 
 
-## Moves every live ball one step of `dt` seconds and queues its events in b.events.
-## No ball falls asleep while `may_sleep` is false (within sleep_time of a wake-up).
+## Moves every live ball one step of `dt` seconds and queues its events in b.events, with
+## per-axis rolling `friction` (px/s²) and the speed cap applied first. No ball falls asleep
+## while `may_sleep` is false (within sleep_time of a wake-up). When `gravity_turned`, each
+## sleeping ball checks whether what held it still holds it under the new gravity, and
+## wakes (and moves this step) if not.
 static func move(
-	b: BallStore, g: StaticGeometry, t: PhysicsTuning, gravity: Vector2, dt: float, may_sleep: bool
+	b: BallStore,
+	g: StaticGeometry,
+	t: PhysicsTuning,
+	gravity: Vector2,
+	friction: Vector2,
+	dt: float,
+	may_sleep: bool,
+	gravity_turned: bool
 ) -> void:
 	var n: int = b.ids.size()
 	var pos: PackedVector2Array = b.pos
@@ -28,7 +38,9 @@ static func move(
 	var push: PackedVector2Array = b.push
 	var ids: PackedInt32Array = b.ids
 	var asleep: PackedByteArray = b.asleep
+	var sup_ball: PackedVector2Array = b.support_ball
 	var support: PackedVector2Array = b.support_static
+	var support2: PackedVector2Array = b.support_static2
 	var tracing: bool = b.tracing
 	var trace_ball: PackedInt32Array = b.trace_ball
 	var trace_pos: PackedVector2Array = b.trace_pos
@@ -80,6 +92,11 @@ static func move(
 	var rest2: float = t.rest_speed * t.rest_speed
 	var sleep_time: float = t.sleep_time if may_sleep else 0.0
 	var max_speed: float = t.max_speed
+	# Friction per axis as one clamp: v - clamp(v, -f, f) slows each axis by up to f and
+	# never past zero.
+	var fr_acc: Vector2 = friction.max(Vector2.ZERO)
+	var fr: Vector2 = fr_acc * dt
+	var has_friction: bool = fr != Vector2.ZERO
 	var cap2: float = max_speed * max_speed
 	# A ball pushed apart by more than a resting ball moves in a step is still settling.
 	var settled_push: float = t.rest_speed * dt
@@ -95,13 +112,25 @@ static func move(
 
 	for i: int in n:
 		if asleep[i] != 0:
-			# Asleep: it holds still (forces added gravity; take it back) and keeps resting.
-			vel[i] = Vector2.ZERO
-			rest[i] += dt
-			continue
+			if (
+				not gravity_turned
+				or (
+					asleep[i] == BallStore.SLEEP_HELD
+					and BallStep.held_still(gravity, fr_acc, support[i], support2[i])
+				)
+			):
+				# Asleep: it holds still (gravity was added; take it back) and keeps resting.
+				vel[i] = Vector2.ZERO
+				rest[i] += dt
+				continue
+			# The new gravity would move it: it wakes and moves this very step.
+			asleep[i] = 0
+			rest[i] = 0.0
 		var p: Vector2 = pos[i]
 		var p_start: Vector2 = p
 		var v: Vector2 = vel[i]
+		if has_friction:
+			v -= v.clamp(-fr, fr)
 		var sp2: float = v.length_squared()
 		if sp2 > cap2:
 			v *= max_speed / sqrt(sp2)
@@ -115,8 +144,9 @@ static func move(
 				pu_len = 0.5 * r
 		var cur_a: int = NO_CONTACT
 		var cur_b: int = NO_CONTACT
-		# Normal of the last static shape this ball pressed on (zero if none).
-		var sup := Vector2.ZERO
+		# Normals of those two contacts: the ball's support (see BallStore).
+		var n_a := Vector2.ZERO
+		var n_b := Vector2.ZERO
 		if r != last_r:
 			last_r = r
 			max_travel = g.max_travel(r, travel_share)
@@ -172,11 +202,12 @@ static func move(
 						else:
 							var curv: float = h / lim if lim > EPS else 0.0
 							v = BallStep.slide(v, nrm, vn, gn_dt, curv)
-						sup = nrm
 						if cur_a == NO_CONTACT or cur_a == key:
 							cur_a = key
+							n_a = nrm
 						else:
 							cur_b = key
+							n_b = nrm
 					if in_gutter:
 						gtime[i] += h
 						if ghits[i] >= g.gutter_bounces or gtime[i] >= slide_time:
@@ -233,11 +264,12 @@ static func move(
 						evs.append(-vn)
 					else:
 						v = BallStep.slide(v, nrm, vn, gn_dt, h / lim)
-					sup = nrm
 					if cur_a == NO_CONTACT or cur_a == key:
 						cur_a = key
+						n_a = nrm
 					else:
 						cur_b = key
+						n_b = nrm
 				if min_h > 0.0 and absf(v.x) < min_h:
 					v.x = min_h if v.x >= 0.0 else -min_h
 			if gone:
@@ -308,16 +340,18 @@ static func move(
 					else:
 						# Only the round caps curve; the flat sides do not.
 						v = BallStep.slide(v, nrm, vn, gn_dt, h / lim if on_cap else 0.0)
-					sup = nrm
 					if cur_a == NO_CONTACT or cur_a == key:
 						cur_a = key
+						n_a = nrm
 					else:
 						cur_b = key
+						n_b = nrm
 				if found == 1:
 					break
 		ca[i] = cur_a
 		cb[i] = cur_b
-		support[i] = sup
+		support[i] = n_a
+		support2[i] = n_b
 		pos[i] = p
 		vel[i] = v
 		if gone:
@@ -334,7 +368,8 @@ static func move(
 				and gtime[i] == 0.0
 				and ghits[i] == 0
 			):
-				asleep[i] = 1
+				var on_balls: bool = sup_ball[i] != Vector2.ZERO
+				asleep[i] = BallStore.SLEEP_ON_BALLS if on_balls else BallStore.SLEEP_HELD
 				vel[i] = Vector2.ZERO
 		else:
 			rest[i] = 0.0
@@ -344,6 +379,7 @@ static func move(
 	b.pos = pos
 	b.vel = vel
 	b.asleep = asleep
+	b.support_static2 = support2
 	b.support_static = support
 	b.trace_ball = trace_ball
 	b.trace_pos = trace_pos

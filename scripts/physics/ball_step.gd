@@ -20,45 +20,49 @@ const TRAVEL_SHARE := 0.5
 const SUPPORT_COS := 0.5
 ## Share of a ball-ball overlap each ball moves apart per step.
 const PUSH_SHARE := 0.4
+## Overlap (px) two balls keep rather than being pushed apart: a resting pair stays in
+## touch, so each step's contact takes gravity's approach away. Pushed fully apart, it
+## would fall back in every step and never settle.
+const CONTACT_SLOP := 0.05
 ## Safety bound on substeps for one ball in one step.
 const MAX_SUBSTEPS := 1024
 ## Sort keys of the ball-ball broad phase: cell << SORT_SHIFT | ball index.
 const SORT_SHIFT := 21
 const SORT_MASK := (1 << 21) - 1
+## Share of gravity that rounding in a contact normal may leave unbalanced (held_still).
+const HELD_SLACK := 1e-3
 ## Distances below this count as zero (px).
 const EPS := 1e-6
 
 
-## Gravity, per-axis rolling friction (never reverses a velocity), then the speed cap.
-## Sleeping balls get gravity too; the motion phase zeroes them again.
-static func apply_forces(
-	b: BallStore, gravity: Vector2, friction: Vector2, max_speed: float, dt: float
-) -> void:
-	var vel: PackedVector2Array = b.vel
-	var gdt: Vector2 = gravity * dt
-	var fx: float = maxf(friction.x, 0.0) * dt
-	var fy: float = maxf(friction.y, 0.0) * dt
-	if fx <= 0.0 and fy <= 0.0:
-		# No friction: one native translate of every velocity; the motion phase applies
-		# the speed cap as it reads each ball.
-		b.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gdt) * vel
-		return
-	var cap2: float = max_speed * max_speed
-	for i: int in vel.size():
-		var v: Vector2 = vel[i] + gdt
-		if absf(v.x) <= fx:
-			v.x = 0.0
+## Gravity, as one native translate of every velocity. Sleeping balls get it too; the
+## motion phase zeroes them again. The motion phase applies rolling friction and the speed
+## cap as it reads each ball, where they cost one expression each.
+static func apply_gravity(b: BallStore, gravity: Vector2, dt: float) -> void:
+	b.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gravity * dt) * b.vel
+
+
+## Whether a ball resting on static shapes with normals `na` and `nb` (zero for none) stays
+## at rest under `gravity` with per-axis rolling friction `friction` (both px/s²): the
+## shapes take every part of gravity that presses into them, and friction must hold what
+## is left. The rest is gravity projected onto the directions the shapes leave free.
+static func held_still(gravity: Vector2, friction: Vector2, na: Vector2, nb: Vector2) -> bool:
+	var da: float = gravity.dot(na)
+	var db: float = gravity.dot(nb)
+	var left: Vector2 = gravity
+	if da < 0.0 or db < 0.0:
+		# Sliding along one face is free only if it does not run into the other face.
+		var along_a: Vector2 = gravity - na * da
+		var along_b: Vector2 = gravity - nb * db
+		if da < 0.0 and along_a.dot(nb) >= 0.0:
+			left = along_a
+		elif db < 0.0 and along_b.dot(na) >= 0.0:
+			left = along_b
 		else:
-			v.x -= fx if v.x > 0.0 else -fx
-		if absf(v.y) <= fy:
-			v.y = 0.0
-		else:
-			v.y -= fy if v.y > 0.0 else -fy
-		var s2: float = v.length_squared()
-		if s2 > cap2:
-			v *= max_speed / sqrt(s2)
-		vel[i] = v
-	b.vel = vel
+			left = Vector2.ZERO
+	# Rounding in the normals must not wake a ball lying exactly on its support.
+	var slack: float = HELD_SLACK * gravity.length()
+	return absf(left.x) <= friction.x + slack and absf(left.y) <= friction.y + slack
 
 
 ## Ball-ball contacts between equal masses. Balls are sorted by grid cell with one native
@@ -67,9 +71,16 @@ static func apply_forces(
 ## two runs of the sorted keys. The run below is found by a pointer that only moves forward,
 ## as cells only grow along the sorted keys. Wrapped rows add candidates but never miss any.
 ## A sleeping ball acts as a fixed ball unless hit faster than `wake_speed`, which wakes it;
-## contacts slower than `threshold` do not bounce.
+## contacts slower than `threshold` do not bounce. Against a held ball, the approach this
+## step's gravity (`gravity_dt`) gave does not count toward the threshold, as on a static
+## shape: otherwise a ball lying on a held ball would bounce on it for ever.
 static func collide_balls(
-	b: BallStore, g: StaticGeometry, restitution: float, threshold: float, wake_speed: float
+	b: BallStore,
+	g: StaticGeometry,
+	restitution: float,
+	threshold: float,
+	wake_speed: float,
+	gravity_dt: Vector2
 ) -> void:
 	var n: int = b.ids.size()
 	var push: PackedVector2Array = b.push
@@ -83,6 +94,7 @@ static func collide_balls(
 	var asleep: PackedByteArray = b.asleep
 	var rest: PackedFloat32Array = b.rest
 	var sup_static: PackedVector2Array = b.support_static
+	var sup_static2: PackedVector2Array = b.support_static2
 	var sup_prev: PackedVector2Array = b.support_ball
 	var sup_next := PackedVector2Array()
 	sup_next.resize(n)
@@ -142,8 +154,10 @@ static func collide_balls(
 				var vi: Vector2 = Vector2.ZERO if sleep_i else vel[i]
 				var vj: Vector2 = Vector2.ZERO if sleep_j else vel[j]
 				var vn: float = (vj - vi).dot(nrm)
-				if (sleep_i or sleep_j) and -vn > wake_speed:
-					# A real hit wakes the sleeper; it then answers as a free ball.
+				# A real hit wakes the sleeper, which then answers as a free ball. A sleeper's
+				# velocity holds just this step's gravity, which the other ball got too: a
+				# ball merely pressing on it under gravity does not count as a hit.
+				if (sleep_i or sleep_j) and (vel[i] - vel[j]).dot(nrm) > wake_speed:
 					if sleep_i:
 						asleep[i] = 0
 						rest[i] = 0.0
@@ -160,26 +174,30 @@ static func collide_balls(
 				var fixed_i: bool = (
 					sleep_i
 					or sup_static[i].dot(nrm) > SUPPORT_COS
+					or sup_static2[i].dot(nrm) > SUPPORT_COS
 					or sup_prev[i].dot(nrm) > SUPPORT_COS
 				)
 				var fixed_j: bool = (
 					sleep_j
 					or sup_static[j].dot(nrm) < -SUPPORT_COS
+					or sup_static2[j].dot(nrm) < -SUPPORT_COS
 					or sup_prev[j].dot(nrm) < -SUPPORT_COS
 				)
-				var s: Vector2 = nrm * ((rr - dist) * PUSH_SHARE)
+				var s: Vector2 = nrm * (maxf(rr - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
 				if fixed_j and not fixed_i:
 					# The support cancels j's own motion into it: only i's speed counts.
 					vn = -vi.dot(nrm)
 					if vn < 0.0:
-						var e: float = restitution if -vn > threshold else 0.0
+						var hit: float = -vn - maxf(gravity_dt.dot(nrm), 0.0)
+						var e: float = restitution if hit > threshold else 0.0
 						vel[i] = vi + nrm * ((1.0 + e) * vn)
 					push[i] -= s * 2.0
 					sup_next[i] = -nrm
 				elif fixed_i and not fixed_j:
 					vn = vj.dot(nrm)
 					if vn < 0.0:
-						var e: float = restitution if -vn > threshold else 0.0
+						var hit: float = -vn - maxf(-gravity_dt.dot(nrm), 0.0)
+						var e: float = restitution if hit > threshold else 0.0
 						vel[j] = vj - nrm * ((1.0 + e) * vn)
 					push[j] += s * 2.0
 					sup_next[j] = nrm

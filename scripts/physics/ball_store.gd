@@ -8,6 +8,9 @@ extends RefCounted
 
 ## No static contact remembered.
 const NO_CONTACT := 0
+## Values of `asleep` (0 is awake).
+const SLEEP_HELD := 1
+const SLEEP_ON_BALLS := 2
 
 var pos := PackedVector2Array()
 var vel := PackedVector2Array()
@@ -22,15 +25,21 @@ var gutter_time := PackedFloat32Array()
 ## Bit g set while the ball's centre is inside goal g (zones likewise).
 var goal_mask := PackedInt32Array()
 var zone_mask := PackedInt32Array()
-## 1 while a ball sleeps: it rested long enough to be skipped until something wakes it.
+## Nonzero while a ball sleeps: it rested long enough to be skipped until something wakes
+## it. SLEEP_HELD: only static shapes (or nothing but friction) hold it, so a gravity change
+## it can still bear leaves it asleep; SLEEP_ON_BALLS: other balls hold it up too, so any
+## gravity change wakes it.
 var asleep := PackedByteArray()
+
 ## Set by wake_all(); BallWorld reads and clears it to hold off sleep for a while.
 var woken := false
-## Support: the normal of the static shape a ball pressed on last step, and the normal of
-## a supported ball it pressed on last step (zero if none). A ball backed this way does not
-## give way to a ball pushing it into its support, so a stack carries its weight at once
-## instead of keeping half of every ball's fall speed.
+## Support: the normals of the (up to two) static shapes a ball pressed on last step, and
+## the normal of a supported ball it pressed on last step (zero if none). A ball backed this
+## way does not give way to a ball pushing it into its support, so a stack carries its
+## weight at once instead of keeping half of every ball's fall speed. A sleeping ball keeps
+## the static normals it fell asleep with: a gravity change is checked against them.
 var support_static := PackedVector2Array()
+var support_static2 := PackedVector2Array()
 var support_ball := PackedVector2Array()
 ## Path recording (for checks, off in play): while `tracing`, each step appends the
 ## position every ball reached after each of its substeps but the last, as (slot, point).
@@ -74,6 +83,7 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	push.append(Vector2.ZERO)
 	asleep.append(0)
 	support_static.append(Vector2.ZERO)
+	support_static2.append(Vector2.ZERO)
 	support_ball.append(Vector2.ZERO)
 	max_radius = maxf(max_radius, r)
 	return id
@@ -127,6 +137,7 @@ func compact() -> void:
 			contact_a[w] = contact_a[i]
 			contact_b[w] = contact_b[i]
 			support_static[w] = support_static[i]
+			support_static2[w] = support_static2[i]
 			support_ball[w] = support_ball[i]
 			index_of[ids[w]] = w
 		w += 1
@@ -145,6 +156,7 @@ func compact() -> void:
 	contact_b.resize(w)
 	asleep.resize(w)
 	support_static.resize(w)
+	support_static2.resize(w)
 	support_ball.resize(w)
 	wake_all()
 	removed_pending = 0

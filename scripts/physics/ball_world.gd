@@ -63,8 +63,9 @@ var use_zoning := true:
 var _balls := BallStore.new()
 var _geo := StaticGeometry.new()
 var _accumulator := 0.0
-## Gravity the sleeping balls fell asleep under; any change wakes them all.
+## Gravity and friction of the last step: a change has each sleeper check its footing.
 var _sleep_gravity := Vector2.ZERO
+var _sleep_friction := Vector2.ZERO
 ## step_count when every ball was last woken: none sleeps again for tuning.sleep_time, so a
 ## ball whose rest time is already long still gets to move after a wake-up.
 var _woken_at_step := 0
@@ -305,20 +306,34 @@ func step(dt: float) -> void:
 	if not gravity.is_finite():
 		push_error("BallWorld.step: gravity must be finite (got %s); using zero" % gravity)
 		gravity = Vector2.ZERO
+	if not rolling_friction.is_finite():
+		push_error(
+			(
+				"BallWorld.step: rolling_friction must be finite (got %s); using zero"
+				% rolling_friction
+			)
+		)
+		rolling_friction = Vector2.ZERO
 	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()
-	if gravity != _sleep_gravity:
-		_sleep_gravity = gravity
-		_balls.wake_all()
-	BallStep.apply_forces(_balls, gravity, rolling_friction, tuning.max_speed, dt)
+	# A gravity change wakes only the sleepers it would move (BallMotion checks each).
+	var turned: bool = gravity != _sleep_gravity or rolling_friction != _sleep_friction
+	_sleep_gravity = gravity
+	_sleep_friction = rolling_friction
+	BallStep.apply_gravity(_balls, gravity, dt)
 	BallStep.collide_balls(
-		_balls, _geo, tuning.ball_restitution, tuning.bounce_threshold, tuning.rest_speed
+		_balls,
+		_geo,
+		tuning.ball_restitution,
+		tuning.bounce_threshold,
+		tuning.rest_speed,
+		gravity * dt
 	)
 	if _balls.woken:
 		_balls.woken = false
 		_woken_at_step = step_count
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= tuning.sleep_time
-	BallMotion.move(_balls, _geo, tuning, gravity, dt, may_sleep)
+	BallMotion.move(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep, turned)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
