@@ -348,10 +348,13 @@ static func move(
 						n_b = nrm
 				if found == 1:
 					break
-		ca[i] = cur_a
-		cb[i] = cur_b
-		support[i] = n_a
-		support2[i] = n_b
+		# A ball touching nothing now or last step has nothing to update: it saves writes
+		# for most of a flowing board.
+		if cur_a != NO_CONTACT or ca[i] != NO_CONTACT:
+			ca[i] = cur_a
+			cb[i] = cur_b
+			support[i] = n_a
+			support2[i] = n_b
 		pos[i] = p
 		vel[i] = v
 		if gone:

@@ -29,6 +29,8 @@ const MAX_SUBSTEPS := 1024
 ## Sort keys of the ball-ball broad phase: cell << SORT_SHIFT | ball index.
 const SORT_SHIFT := 21
 const SORT_MASK := (1 << 21) - 1
+## Larger than any sort key.
+const SORT_SENTINEL := 0x7fffffffffffffff
 ## Share of gravity that rounding in a contact normal may leave unbalanced (held_still).
 const HELD_SLACK := 1e-3
 ## Distances below this count as zero (px).
@@ -103,30 +105,36 @@ static func collide_balls(
 	var last_cell := Vector2i(cols - 1, g.rows - 1)
 	var inv: float = g.inv_cell
 	var keys: PackedInt64Array = b.sort_keys
-	keys.resize(n)
+	keys.resize(n + 1)
 	for i: int in n:
 		var p: Vector2 = pos[i]
 		var ci: Vector2i = Vector2i((p - origin) * inv).clamp(Vector2i.ZERO, last_cell)
 		keys[i] = ((ci.y * cols + ci.x) << SORT_SHIFT) | i
+	# A sentinel past every key ends each scan below without a bounds test.
+	keys[n] = SORT_SENTINEL
 	keys.sort()
-	var shift: int = SORT_SHIFT
 	var mask: int = SORT_MASK
+	var cell_bits: int = ~SORT_MASK
+	# Key offsets from a cell's first key: two cells on, and the three cells below.
+	var next_off: int = 2 << SORT_SHIFT
+	var below_off: int = (cols - 1) << SORT_SHIFT
+	var past_below_off: int = (cols + 2) << SORT_SHIFT
 	var below := 0
 	for k: int in n:
 		var key: int = keys[k]
-		var c: int = key >> shift
+		var cell_key: int = key & cell_bits
 		# Same cell (later balls) and the next cell.
 		var end_same: int = k + 1
-		var next_cell: int = (c + 2) << shift
-		while end_same < n and keys[end_same] < next_cell:
+		var next_cell: int = cell_key + next_off
+		while keys[end_same] < next_cell:
 			end_same += 1
 		# The three cells below.
-		var first_below: int = (c + cols - 1) << shift
-		var past_below: int = (c + cols + 2) << shift
-		while below < n and keys[below] < first_below:
+		var first_below: int = cell_key + below_off
+		while keys[below] < first_below:
 			below += 1
 		var end_below: int = below
-		while end_below < n and keys[end_below] < past_below:
+		var past_below: int = cell_key + past_below_off
+		while keys[end_below] < past_below:
 			end_below += 1
 		if end_same == k + 1 and end_below == below:
 			continue  # a lone ball (most of a flowing board): nothing to read
