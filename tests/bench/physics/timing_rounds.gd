@@ -1,0 +1,42 @@
+extends RefCounted
+## Side-by-side timing rounds of one bench scenario. The machines the bench runs on are
+## shared, and their speed drifts by a third or more within a minute; so each round times
+## our layer and then GodotPhysics2D on the same scene right after it, and a scenario's
+## figures are the medians over its rounds: the ratio is the median of the rounds' own
+## ratios, each from two runs seconds apart.
+
+
+## Records our rate for the round about to start.
+static func add_ours(row: Dictionary, steps_per_s: float, wall_steps_per_s: float) -> void:
+	_rounds(row, "ours_rounds").append(steps_per_s)
+	row["ours_steps_per_s"] = median(_rounds(row, "ours_rounds"))
+	row["ours_wall_steps_per_s"] = wall_steps_per_s
+
+
+## Records GodotPhysics2D's rate for the round whose ours was recorded last, and updates
+## the scenario's medians and ratio.
+static func add_godot(row: Dictionary, steps_per_s: float, wall_steps_per_s: float) -> void:
+	var ours: Array = _rounds(row, "ours_rounds")
+	_rounds(row, "godot_rounds").append(steps_per_s)
+	_rounds(row, "ratio_rounds").append(ours[ours.size() - 1] / maxf(steps_per_s, 1e-9))
+	row["godot_steps_per_s"] = median(_rounds(row, "godot_rounds"))
+	row["godot_wall_steps_per_s"] = wall_steps_per_s
+	row["ratio"] = median(_rounds(row, "ratio_rounds"))
+
+
+## The middle value (the mean of the two middle ones for an even count); 0 when empty.
+static func median(values: Array) -> float:
+	if values.is_empty():
+		return 0.0
+	var sorted: Array = values.duplicate()
+	sorted.sort()
+	var mid: int = sorted.size() / 2
+	if sorted.size() % 2 == 1:
+		return sorted[mid]
+	return (sorted[mid - 1] + sorted[mid]) * 0.5
+
+
+static func _rounds(row: Dictionary, key: String) -> Array:
+	if not row.has(key):
+		row[key] = []
+	return row[key]
