@@ -39,6 +39,7 @@ static func move(
 	var ids: PackedInt32Array = b.ids
 	var asleep: PackedByteArray = b.asleep
 	var sup_ball: PackedVector2Array = b.support_ball
+	var touching: PackedByteArray = b.touching
 	var support: PackedVector2Array = b.support_static
 	var support2: PackedVector2Array = b.support_static2
 	var tracing: bool = b.tracing
@@ -111,14 +112,19 @@ static func move(
 	var ring_lim2 := 0.0
 
 	for i: int in n:
-		if asleep[i] != 0:
-			if (
-				not gravity_turned
-				or (
-					asleep[i] == BallStore.SLEEP_HELD
-					and BallStep.held_still(gravity, fr_acc, support[i], support2[i])
+		var sleep_kind: int = asleep[i]
+		if sleep_kind != 0:
+			var stays: bool
+			if sleep_kind == BallStore.SLEEP_HELD:
+				stays = (
+					not gravity_turned
+					or BallStep.held_still(gravity, fr_acc, support[i], support2[i])
 				)
-			):
+			else:
+				# Held up by balls: it stays only while gravity keeps still and it still
+				# touches a ball (one knocked from under it leaves it touching none).
+				stays = not gravity_turned and touching[i] != 0
+			if stays:
 				# Asleep: it holds still (gravity was added; take it back) and keeps resting.
 				vel[i] = Vector2.ZERO
 				rest[i] += dt

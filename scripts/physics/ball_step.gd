@@ -87,8 +87,12 @@ static func collide_balls(
 	var n: int = b.ids.size()
 	var push: PackedVector2Array = b.push
 	push.fill(Vector2.ZERO)
+	var touching: PackedByteArray = b.touching
+	touching.resize(n)
+	touching.fill(0)
 	if n < 2:
 		b.push = push
+		b.touching = touching
 		return
 	var pos: PackedVector2Array = b.pos
 	var vel: PackedVector2Array = b.vel
@@ -152,6 +156,8 @@ static func collide_balls(
 				var d2: float = d.length_squared()
 				if d2 >= rr * rr:
 					continue
+				touching[i] = 1
+				touching[j] = 1
 				var sleep_j: bool = asleep[j] != 0
 				if sleep_i and sleep_j:
 					continue
@@ -219,6 +225,7 @@ static func collide_balls(
 					push[j] += s
 	b.vel = vel
 	b.push = push
+	b.touching = touching
 	b.support_ball = sup_next
 	b.asleep = asleep
 	b.rest = rest

@@ -55,6 +55,9 @@ var index_of := PackedInt32Array()
 ## Events of the current step, in order: (kind, ball id, index) triples and their speeds.
 var events := PackedInt32Array()
 var event_speed := PackedFloat32Array()
+## 1 for a ball that touched another ball in this step's ball-ball pass: a sleeper held up
+## by balls wakes when it touches none, so it never hangs where a ball was knocked away.
+var touching := PackedByteArray()
 ## Scratch arrays of the ball-ball broad phase (reused every step).
 var sort_keys := PackedInt64Array()
 var max_radius := 0.0

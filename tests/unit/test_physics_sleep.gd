@@ -108,3 +108,24 @@ func test_moving_a_ball_by_hand_wakes_it() -> void:
 	assert_false(w.is_ball_asleep(id))
 	_steps(w, 1)
 	assert_gt(w.get_ball_position(id).x, _bottom().x)
+
+
+func test_a_sleeper_whose_ball_support_is_knocked_away_falls() -> void:
+	var t := PhysicsTuning.pachinko_defaults()
+	t.min_horizontal_speed = 0.0
+	# Elastic: the hitter stops dead where the lower ball was, clear of the upper one.
+	t.ball_restitution = 1.0
+	var w := BallWorld.new(t)
+	# A flat floor; its top is at y = 95.
+	w.add_wall(Vector2(0, 100), Vector2(1000, 100), 5.0)
+	var low := w.spawn_ball(Vector2(500, 90), Vector2.ZERO, BALL_R)
+	var high := w.spawn_ball(Vector2(500, 80), Vector2.ZERO, BALL_R)
+	_steps(w, 120)
+	assert_true(w.is_ball_asleep(high), "the stack went to sleep")
+	var y := w.get_ball_position(high).y
+	# A fast ball along the floor knocks the lower ball away without touching the upper.
+	var hitter := w.spawn_ball(Vector2(400, 90), Vector2(600, 0), BALL_R)
+	_steps(w, 60)
+	assert_lt(w.get_ball_position(hitter).x, 500.0 - BALL_R, "the hitter stopped short")
+	assert_gt(w.get_ball_position(low).x, 500.0 + BALL_R, "the lower ball was knocked away")
+	assert_gt(w.get_ball_position(high).y, y + BALL_R, "the upper one does not hang in the air")
