@@ -40,6 +40,7 @@ static func move(
 	var asleep: PackedByteArray = b.asleep
 	var sup_ball: PackedVector2Array = b.support_ball
 	var touching: PackedByteArray = b.touching
+	var sleep_ball_n: PackedVector2Array = b.sleep_ball_normal
 	var support: PackedVector2Array = b.support_static
 	var support2: PackedVector2Array = b.support_static2
 	var tracing: bool = b.tracing
@@ -120,10 +121,19 @@ static func move(
 					not gravity_turned
 					or BallStep.held_still(gravity, fr_acc, support[i], support2[i])
 				)
+			elif touching[i] == 0:
+				# Held up by balls but touching none: the ball under it was knocked away.
+				stays = false
 			else:
-				# Held up by balls: it stays only while gravity keeps still and it still
-				# touches a ball (one knocked from under it leaves it touching none).
-				stays = not gravity_turned and touching[i] != 0
+				# Held up by balls: against the ball it rests on, and its wall if it has
+				# one (with two walls, those). A ball under it that leaves wakes it the
+				# step they part, through the test above.
+				var other: Vector2 = support2[i]
+				if other == Vector2.ZERO:
+					other = sleep_ball_n[i]
+				stays = (
+					not gravity_turned or BallStep.held_still(gravity, fr_acc, support[i], other)
+				)
 			if stays:
 				# Asleep: it holds still (gravity was added; take it back) and keeps resting.
 				vel[i] = Vector2.ZERO
@@ -377,8 +387,12 @@ static func move(
 				and gtime[i] == 0.0
 				and ghits[i] == 0
 			):
-				var on_balls: bool = sup_ball[i] != Vector2.ZERO
-				asleep[i] = BallStore.SLEEP_ON_BALLS if on_balls else BallStore.SLEEP_HELD
+				var on_ball: Vector2 = sup_ball[i]
+				if on_ball == Vector2.ZERO:
+					asleep[i] = BallStore.SLEEP_HELD
+				else:
+					asleep[i] = BallStore.SLEEP_ON_BALLS
+					sleep_ball_n[i] = on_ball
 				vel[i] = Vector2.ZERO
 		else:
 			rest[i] = 0.0
@@ -389,6 +403,7 @@ static func move(
 	b.vel = vel
 	b.asleep = asleep
 	b.support_static2 = support2
+	b.sleep_ball_normal = sleep_ball_n
 	b.support_static = support
 	b.trace_ball = trace_ball
 	b.trace_pos = trace_pos

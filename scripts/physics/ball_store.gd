@@ -40,6 +40,8 @@ var woken := false
 ## the static normals it fell asleep with: a gravity change is checked against them.
 var support_static := PackedVector2Array()
 var support_static2 := PackedVector2Array()
+## The normal of the ball a SLEEP_ON_BALLS sleeper rests on, as it fell asleep.
+var sleep_ball_normal := PackedVector2Array()
 var support_ball := PackedVector2Array()
 ## Path recording (for checks, off in play): while `tracing`, each step appends the
 ## position every ball reached after each of its substeps but the last, as (slot, point).
@@ -87,6 +89,7 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	asleep.append(0)
 	support_static.append(Vector2.ZERO)
 	support_static2.append(Vector2.ZERO)
+	sleep_ball_normal.append(Vector2.ZERO)
 	support_ball.append(Vector2.ZERO)
 	max_radius = maxf(max_radius, r)
 	return id
@@ -160,6 +163,7 @@ func compact() -> void:
 	asleep.resize(w)
 	support_static.resize(w)
 	support_static2.resize(w)
+	sleep_ball_normal.resize(w)
 	support_ball.resize(w)
 	wake_all()
 	removed_pending = 0

@@ -95,3 +95,23 @@ func test_a_ball_against_a_held_ball_settles_instead_of_bouncing() -> void:
 	assert_almost_eq(gap, 2.0 * BALL_R, 0.1, "the second lies against the first")
 	assert_lt(w.get_ball_velocity(second).length(), w.tuning.rest_speed, "at rest")
 	assert_true(w.is_ball_asleep(second), "and asleep")
+
+
+func test_a_queue_in_a_corner_sleeps_through_the_tilt_and_leaves_together() -> void:
+	var w := _corner_world()
+	w.set_tilt(Vector2(10, 10))
+	var first := w.spawn_ball(_corner_spot(), Vector2.ZERO, BALL_R)
+	var second := w.spawn_ball(_corner_spot() - Vector2(2.0 * BALL_R, 0), Vector2.ZERO, BALL_R)
+	_steps(w, 60)
+	assert_true(w.is_ball_asleep(second), "the ball resting on the first sleeps too")
+	var p := w.get_ball_position(second)
+	_steps(w, 120, Vector2(10, 10), Vector2(14, 4))
+	assert_true(w.is_ball_asleep(second), "it rides out a tilt that keeps it against the first")
+	assert_eq(w.get_ball_position(second), p)
+	# Tilt to the left: both roll off along the floor.
+	w.set_tilt(Vector2(-10, 10))
+	_steps(w, 1)
+	assert_false(w.is_ball_asleep(second), "it wakes the step the tilt turns")
+	_steps(w, 30)
+	assert_lt(w.get_ball_position(second).x, p.x - 10.0, "and rolls away")
+	assert_lt(w.get_ball_position(first).x, _corner_spot().x - 10.0, "and so does the first")
