@@ -39,8 +39,9 @@ const MAZE_FRAME := 0.016
 ## Speed (px/s) below which a ball counts as resting (see BallWorld.get_ball_rest_time).
 @export var rest_speed: float = 8.0
 ## Seconds a ball must rest (below `rest_speed`, no other ball pushing it) before it falls
-## asleep: a sleeping ball is skipped until a ball hits it faster than `rest_speed`,
-## gravity changes, or a ball is moved or removed. 0 turns sleeping off.
+## asleep: a sleeping ball is skipped until a ball hits it faster than `rest_speed`, a
+## gravity change it cannot bear (its walls and friction no longer hold it), the ball under
+## it leaves, or a ball is moved or removed. 0 turns sleeping off.
 @export var sleep_time: float = 0.1
 ## Seconds of sliding ring contact inside the gutter arc that also drain a ball: a ball
 ## that rolls instead of bouncing must leave too.
