@@ -151,7 +151,9 @@ static func scale_sweep() -> Dictionary:
 	var by_balls := {}
 	for n: int in [250, 500, 1000, 2000, 4000, 8000]:
 		var scene: Dictionary = Scenes.make("S1", "flow", 24.0, n, 240.0)
-		var steps: int = clampi(100000 / n, 15, 300)
+		# About 400,000 ball-steps each: near a second of CPU, so the 10 ms clock and the
+		# host's drift stay small against it.
+		var steps: int = clampi(400000 / n, 50, 1600)
 		var r: Dictionary = run(scene, steps + WARMUP, false)
 		by_balls[str(n)] = r["ball_steps_per_s"]
 		print("  scale balls %d: %.0f ball-steps/s" % [n, r["ball_steps_per_s"]])
@@ -159,7 +161,7 @@ static func scale_sweep() -> Dictionary:
 	for pitch: float in [24.0, 17.0, 12.0]:
 		var scene: Dictionary = Scenes.make("S1", "flow", pitch, 1000, 240.0)
 		var pins: int = (scene["pins"] as PackedVector2Array).size()
-		var r: Dictionary = run(scene, 100 + WARMUP, false)
+		var r: Dictionary = run(scene, 400 + WARMUP, false)
 		by_pins[str(pins)] = r["ball_steps_per_s"]
 		print("  scale pins %d: %.0f ball-steps/s" % [pins, r["ball_steps_per_s"]])
 	return {"balls": by_balls, "pins": by_pins}
