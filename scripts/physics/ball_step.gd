@@ -2,9 +2,10 @@ extends RefCounted
 ## The phases of one BallWorld step, as static functions over the ball store and the static
 ## geometry. Internal to scripts/physics. Hot loops: typed locals, flat loops, math inline.
 ##
-## Phases: forces (gravity, rolling friction, speed cap) → ball-ball contacts (velocity
-## impulses now, separation as a displacement swept with the motion) → motion against static
-## shapes in substeps short enough that no ball can cross a pin, a wall or the ring → sensors.
+## Phases: gravity → ball-ball contacts (velocity impulses now, separation as a displacement
+## swept with the motion) → motion (BallMotion: rolling friction and the speed cap, then the
+## static shapes in substeps short enough that no ball can cross a pin, a wall or the ring)
+## → sensors.
 
 enum Ev { PIN_HIT, WALL_HIT, RING_HIT, POCKETED, DRAINED, HOLE, GOAL, GOAL_LEFT, ZONE }
 
