@@ -10,6 +10,7 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallStep := preload("res://scripts/physics/ball_step.gd")
 const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
+const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 
 const NO_CONTACT := 0
 const RING_KEY := BallStep.RING_KEY
@@ -39,8 +40,6 @@ static func move(
 	var ids: PackedInt32Array = b.ids
 	var asleep: PackedByteArray = b.asleep
 	var sup_ball: PackedVector2Array = b.support_ball
-	var touching: PackedByteArray = b.touching
-	var sleep_ball_n: PackedVector2Array = b.sleep_ball_normal
 	var support: PackedVector2Array = b.support_static
 	var support2: PackedVector2Array = b.support_static2
 	var tracing: bool = b.tracing
@@ -115,31 +114,17 @@ static func move(
 	for i: int in n:
 		var sleep_kind: int = asleep[i]
 		if sleep_kind != 0:
-			var stays: bool
-			if sleep_kind == BallStore.SLEEP_HELD:
-				stays = (
-					not gravity_turned
-					or BallStep.held_still(gravity, fr_acc, support[i], support2[i])
-				)
-			elif touching[i] == 0:
-				# Held up by balls but touching none: the ball under it was knocked away.
-				stays = false
-			else:
-				# Held up by balls: against the ball it rests on, and its wall if it has
-				# one (with two walls, those). A ball under it that leaves wakes it the
-				# step they part, through the test above.
-				var other: Vector2 = support2[i]
-				if other == Vector2.ZERO:
-					other = sleep_ball_n[i]
-				stays = (
-					not gravity_turned or BallStep.held_still(gravity, fr_acc, support[i], other)
-				)
+			var stays: bool = (
+				BallSleep.stays_asleep(b, i, sleep_kind, gravity, fr_acc)
+				if gravity_turned
+				else sleep_kind == BallStore.SLEEP_HELD or b.touching[i] != 0
+			)
 			if stays:
 				# Asleep: it holds still (gravity was added; take it back) and keeps resting.
 				vel[i] = Vector2.ZERO
 				rest[i] += dt
 				continue
-			# The new gravity would move it: it wakes and moves this very step.
+			# It would move now (see BallSleep): it wakes and moves this very step.
 			asleep[i] = 0
 			rest[i] = 0.0
 		var p: Vector2 = pos[i]
@@ -388,11 +373,9 @@ static func move(
 				and ghits[i] == 0
 			):
 				var on_ball: Vector2 = sup_ball[i]
-				if on_ball == Vector2.ZERO:
-					asleep[i] = BallStore.SLEEP_HELD
-				else:
-					asleep[i] = BallStore.SLEEP_ON_BALLS
-					sleep_ball_n[i] = on_ball
+				var on_static: bool = on_ball == Vector2.ZERO
+				asleep[i] = BallStore.SLEEP_HELD if on_static else BallStore.SLEEP_ON_BALLS
+				b.sleep_ball_normal[i] = on_ball
 				vel[i] = Vector2.ZERO
 		else:
 			rest[i] = 0.0
@@ -403,7 +386,6 @@ static func move(
 	b.vel = vel
 	b.asleep = asleep
 	b.support_static2 = support2
-	b.sleep_ball_normal = sleep_ball_n
 	b.support_static = support
 	b.trace_ball = trace_ball
 	b.trace_pos = trace_pos

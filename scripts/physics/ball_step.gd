@@ -32,8 +32,6 @@ const SORT_SHIFT := 21
 const SORT_MASK := (1 << 21) - 1
 ## Larger than any sort key.
 const SORT_SENTINEL := 0x7fffffffffffffff
-## Share of gravity that rounding in a contact normal may leave unbalanced (held_still).
-const HELD_SLACK := 1e-3
 ## Distances below this count as zero (px).
 const EPS := 1e-6
 
@@ -43,29 +41,6 @@ const EPS := 1e-6
 ## cap as it reads each ball, where they cost one expression each.
 static func apply_gravity(b: BallStore, gravity: Vector2, dt: float) -> void:
 	b.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gravity * dt) * b.vel
-
-
-## Whether a ball resting on static shapes with normals `na` and `nb` (zero for none) stays
-## at rest under `gravity` with per-axis rolling friction `friction` (both px/s²): the
-## shapes take every part of gravity that presses into them, and friction must hold what
-## is left. The rest is gravity projected onto the directions the shapes leave free.
-static func held_still(gravity: Vector2, friction: Vector2, na: Vector2, nb: Vector2) -> bool:
-	var da: float = gravity.dot(na)
-	var db: float = gravity.dot(nb)
-	var left: Vector2 = gravity
-	if da < 0.0 or db < 0.0:
-		# Sliding along one face is free only if it does not run into the other face.
-		var along_a: Vector2 = gravity - na * da
-		var along_b: Vector2 = gravity - nb * db
-		if da < 0.0 and along_a.dot(nb) >= 0.0:
-			left = along_a
-		elif db < 0.0 and along_b.dot(na) >= 0.0:
-			left = along_b
-		else:
-			left = Vector2.ZERO
-	# Rounding in the normals must not wake a ball lying exactly on its support.
-	var slack: float = HELD_SLACK * gravity.length()
-	return absf(left.x) <= friction.x + slack and absf(left.y) <= friction.y + slack
 
 
 ## Ball-ball contacts between equal masses. Balls are sorted by grid cell with one native
