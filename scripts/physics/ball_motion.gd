@@ -114,11 +114,10 @@ static func move(
 	for i: int in n:
 		var sleep_kind: int = asleep[i]
 		if sleep_kind != 0:
-			var stays: bool = (
-				BallSleep.stays_asleep(b, i, sleep_kind, gravity, fr_acc)
-				if gravity_turned
-				else sleep_kind == BallStore.SLEEP_HELD or b.touching[i] != 0
-			)
+			# One held up by balls that touches none: the ball under it was knocked away.
+			var stays: bool = sleep_kind == BallStore.SLEEP_HELD or b.touching[i] != 0
+			if stays and gravity_turned:
+				stays = BallSleep.stays_asleep(b, i, sleep_kind, gravity, fr_acc)
 			if stays:
 				# Asleep: it holds still (gravity was added; take it back) and keeps resting.
 				vel[i] = Vector2.ZERO

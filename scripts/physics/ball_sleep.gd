@@ -14,20 +14,17 @@ const HELD_SLACK := 1e-3
 
 
 ## Whether sleeper `i` of kind `kind` (BallStore.SLEEP_*) stays asleep under `gravity`
-## with per-axis rolling `friction` (both px/s²).
+## with per-axis rolling `friction` (both px/s²). A SLEEP_ON_BALLS sleeper must also still
+## touch a ball; BallMotion checks that every step, before asking this.
 static func stays_asleep(
 	b: BallStore, i: int, kind: int, gravity: Vector2, friction: Vector2
 ) -> bool:
 	var na: Vector2 = b.support_static[i]
 	var nb: Vector2 = b.support_static2[i]
-	if kind == BallStore.SLEEP_ON_BALLS:
-		# Held up by balls but touching none: the ball under it was knocked away.
-		if b.touching[i] == 0:
-			return false
+	if kind == BallStore.SLEEP_ON_BALLS and nb == Vector2.ZERO:
 		# Against the ball it rests on and its wall if it has one (with two walls, those).
-		# A ball under it that leaves wakes it the step they part, through the test above.
-		if nb == Vector2.ZERO:
-			nb = b.sleep_ball_normal[i]
+		# A ball under it that leaves wakes it the step they part (BallMotion's touch test).
+		nb = b.sleep_ball_normal[i]
 	return held_still(gravity, friction, na, nb)
 
 

@@ -26,11 +26,10 @@ var gutter_time := PackedFloat32Array()
 var goal_mask := PackedInt32Array()
 var zone_mask := PackedInt32Array()
 ## Nonzero while a ball sleeps: it rested long enough to be skipped until something wakes
-## it. SLEEP_HELD: only static shapes (or nothing but friction) hold it, so a gravity change
-## it can still bear leaves it asleep; SLEEP_ON_BALLS: other balls hold it up too, so any
-## gravity change wakes it.
+## it. SLEEP_HELD: only static shapes (or nothing but friction) hold it; SLEEP_ON_BALLS: a
+## ball holds it up too, and it wakes when it touches no ball. Either stays asleep through
+## a gravity change its supports can still bear (see BallSleep).
 var asleep := PackedByteArray()
-
 ## Set by wake_all(); BallWorld reads and clears it to hold off sleep for a while.
 var woken := false
 ## Support: the normals of the (up to two) static shapes a ball pressed on last step, and

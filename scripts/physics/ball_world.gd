@@ -64,8 +64,8 @@ var _balls := BallStore.new()
 var _geo := StaticGeometry.new()
 var _accumulator := 0.0
 ## Gravity and friction of the last step: a change has each sleeper check its footing.
-var _sleep_gravity := Vector2.ZERO
-var _sleep_friction := Vector2.ZERO
+var _last_gravity := Vector2.ZERO
+var _last_friction := Vector2.ZERO
 ## step_count when every ball was last woken: none sleeps again for tuning.sleep_time, so a
 ## ball whose rest time is already long still gets to move after a wake-up.
 var _woken_at_step := 0
@@ -317,9 +317,9 @@ func step(dt: float) -> void:
 	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()
 	# A gravity change wakes only the sleepers it would move (BallMotion checks each).
-	var turned: bool = gravity != _sleep_gravity or rolling_friction != _sleep_friction
-	_sleep_gravity = gravity
-	_sleep_friction = rolling_friction
+	var turned: bool = gravity != _last_gravity or rolling_friction != _last_friction
+	_last_gravity = gravity
+	_last_friction = rolling_friction
 	BallStep.apply_gravity(_balls, gravity, dt)
 	BallStep.collide_balls(
 		_balls,
