@@ -10,18 +10,16 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallStep := preload("res://scripts/physics/ball_step.gd")
 const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
-const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 
 const NO_CONTACT := 0
 const RING_KEY := BallStep.RING_KEY
 const EPS := BallStep.EPS
 
 
-## Moves every live ball one step of `dt` seconds and queues its events in b.events, with
-## per-axis rolling `friction` (px/s²) and the speed cap applied first. No ball falls asleep
-## while `may_sleep` is false (within sleep_time of a wake-up). When `gravity_turned`, each
-## sleeping ball checks whether what held it still holds it under the new gravity, and
-## wakes (and moves this step) if not.
+## Moves every awake ball one step of `dt` seconds and queues its events in b.events, with
+## per-axis rolling `friction` (px/s²) and the speed cap applied first. Sleepers were
+## settled by BallSleep.settle() and are skipped. No ball falls asleep while `may_sleep` is
+## false (within sleep_time of a wake-up).
 static func move(
 	b: BallStore,
 	g: StaticGeometry,
@@ -29,8 +27,7 @@ static func move(
 	gravity: Vector2,
 	friction: Vector2,
 	dt: float,
-	may_sleep: bool,
-	gravity_turned: bool
+	may_sleep: bool
 ) -> void:
 	var n: int = b.ids.size()
 	var pos: PackedVector2Array = b.pos
@@ -95,8 +92,7 @@ static func move(
 	var max_speed: float = t.max_speed
 	# Friction per axis as one clamp: v - clamp(v, -f, f) slows each axis by up to f and
 	# never past zero.
-	var fr_acc: Vector2 = friction.max(Vector2.ZERO)
-	var fr: Vector2 = fr_acc * dt
+	var fr: Vector2 = friction.max(Vector2.ZERO) * dt
 	var has_friction: bool = fr != Vector2.ZERO
 	var cap2: float = max_speed * max_speed
 	# A ball pushed apart by more than a resting ball moves in a step is still settling.
@@ -112,20 +108,8 @@ static func move(
 	var ring_lim2 := 0.0
 
 	for i: int in n:
-		var sleep_kind: int = asleep[i]
-		if sleep_kind != 0:
-			# One held up by balls that touches none: the ball under it was knocked away.
-			var stays: bool = sleep_kind == BallStore.SLEEP_HELD or b.touching[i] != 0
-			if stays and gravity_turned:
-				stays = BallSleep.stays_asleep(b, i, sleep_kind, gravity, fr_acc)
-			if stays:
-				# Asleep: it holds still (gravity was added; take it back) and keeps resting.
-				vel[i] = Vector2.ZERO
-				rest[i] += dt
-				continue
-			# It would move now (see BallSleep): it wakes and moves this very step.
-			asleep[i] = 0
-			rest[i] = 0.0
+		if asleep[i] != 0:
+			continue  # BallSleep.settle() already held it still for this step
 		var p: Vector2 = pos[i]
 		var p_start: Vector2 = p
 		var v: Vector2 = vel[i]

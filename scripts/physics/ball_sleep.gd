@@ -1,11 +1,16 @@
 extends RefCounted
-## Whether a sleeping ball stays asleep when gravity or friction changes (every step of a
-## tilting maze). Internal to scripts/physics; BallMotion asks it once per sleeper per step
-## in which gravity turned.
+## The sleepers' part of a BallWorld step: each sleeping ball either stays put or wakes and
+## moves with the awake balls in that same step. Internal to scripts/physics; BallWorld runs
+## it once per step, before the motion phase (which skips every ball still asleep).
 ##
 ## A sleeper keeps the normals of what held it as it fell asleep (BallStore.support_static,
-## support_static2, sleep_ball_normal). It stays asleep while those shapes can take every
-## part of the new gravity that presses into them and rolling friction can hold the rest.
+## support_static2, sleep_ball_normal). When gravity or friction changed, it stays asleep
+## only while those shapes take every part of the new gravity that presses into them and
+## rolling friction holds the rest. One held up by balls also wakes the step
+## it touches no ball: the ball under it was knocked away.
+##
+## One loop with the test inline, not a call per sleeper: a GDScript call costs about as
+## much as the test, and a tilting maze runs it for hundreds of sleepers every step.
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 
@@ -13,39 +18,59 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const HELD_SLACK := 1e-3
 
 
-## Whether sleeper `i` of kind `kind` (BallStore.SLEEP_*) stays asleep under `gravity`
-## with per-axis rolling `friction` (both px/s²). A SLEEP_ON_BALLS sleeper must also still
-## touch a ball; BallMotion checks that every step, before asking this.
-static func stays_asleep(
-	b: BallStore, i: int, kind: int, gravity: Vector2, friction: Vector2
-) -> bool:
-	var na: Vector2 = b.support_static[i]
-	var nb: Vector2 = b.support_static2[i]
-	if kind == BallStore.SLEEP_ON_BALLS and nb == Vector2.ZERO:
-		# Against the ball it rests on and its wall if it has one (with two walls, those).
-		# A ball under it that leaves wakes it the step they part (BallMotion's touch test).
-		nb = b.sleep_ball_normal[i]
-	return held_still(gravity, friction, na, nb)
-
-
-## Whether a ball resting on static shapes with normals `na` and `nb` (zero for none) stays
-## at rest under `gravity` with per-axis rolling friction `friction` (both px/s²): the
-## shapes take every part of gravity that presses into them, and friction must hold what
-## is left. The rest is gravity projected onto the directions the shapes leave free.
-static func held_still(gravity: Vector2, friction: Vector2, na: Vector2, nb: Vector2) -> bool:
-	var da: float = gravity.dot(na)
-	var db: float = gravity.dot(nb)
-	var left: Vector2 = gravity
-	if da < 0.0 or db < 0.0:
-		# Sliding along one face is free only if it does not run into the other face.
-		var along_a: Vector2 = gravity - na * da
-		var along_b: Vector2 = gravity - nb * db
-		if da < 0.0 and along_a.dot(nb) >= 0.0:
-			left = along_a
-		elif db < 0.0 and along_b.dot(na) >= 0.0:
-			left = along_b
-		else:
-			left = Vector2.ZERO
+## Settles every sleeper for one step of `dt` s under `gravity` with per-axis rolling
+## `friction` (px/s², zero or more). `turned` says gravity or friction changed since the
+## last step. A sleeper that stays gets its velocity zeroed (the gravity phase added this
+## step's pull) and `dt` more rest; one that wakes keeps its velocity and moves this step.
+static func settle(
+	b: BallStore, gravity: Vector2, friction: Vector2, dt: float, turned: bool
+) -> void:
+	var asleep: PackedByteArray = b.asleep
+	var n: int = asleep.size()
+	if asleep.count(0) == n:
+		return
+	var vel: PackedVector2Array = b.vel
+	var rest: PackedFloat32Array = b.rest
+	var touching: PackedByteArray = b.touching
+	var sup_a: PackedVector2Array = b.support_static
+	var sup_b: PackedVector2Array = b.support_static2
+	var on_ball: PackedVector2Array = b.sleep_ball_normal
 	# Rounding in the normals must not wake a ball lying exactly on its support.
 	var slack: float = HELD_SLACK * gravity.length()
-	return absf(left.x) <= friction.x + slack and absf(left.y) <= friction.y + slack
+	var fx: float = friction.x + slack
+	var fy: float = friction.y + slack
+	for i: int in n:
+		var kind: int = asleep[i]
+		if kind == 0:
+			continue
+		var stays: bool = kind == BallStore.SLEEP_HELD or touching[i] != 0
+		if stays and turned:
+			var na: Vector2 = sup_a[i]
+			var nb: Vector2 = sup_b[i]
+			if kind == BallStore.SLEEP_ON_BALLS and nb == Vector2.ZERO:
+				# Against the ball it rests on, and its wall if it has one.
+				nb = on_ball[i]
+			# What presses into a face is taken by it; sliding along one face is free
+			# only if it does not run into the other. Friction must hold what is left.
+			var left: Vector2 = gravity
+			var da: float = gravity.dot(na)
+			var db: float = gravity.dot(nb)
+			if da < 0.0 or db < 0.0:
+				var along_a: Vector2 = gravity - na * da
+				var along_b: Vector2 = gravity - nb * db
+				if da < 0.0 and along_a.dot(nb) >= 0.0:
+					left = along_a
+				elif db < 0.0 and along_b.dot(na) >= 0.0:
+					left = along_b
+				else:
+					left = Vector2.ZERO
+			stays = absf(left.x) <= fx and absf(left.y) <= fy
+		if stays:
+			vel[i] = Vector2.ZERO
+			rest[i] += dt
+		else:
+			asleep[i] = 0
+			rest[i] = 0.0
+	b.vel = vel
+	b.rest = rest
+	b.asleep = asleep

@@ -33,6 +33,7 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallStep := preload("res://scripts/physics/ball_step.gd")
 const BallMotion := preload("res://scripts/physics/ball_motion.gd")
+const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
@@ -316,7 +317,7 @@ func step(dt: float) -> void:
 		rolling_friction = Vector2.ZERO
 	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()
-	# A gravity change wakes only the sleepers it would move (BallMotion checks each).
+	# A gravity change wakes only the sleepers it would move (BallSleep checks each).
 	var turned: bool = gravity != _last_gravity or rolling_friction != _last_friction
 	_last_gravity = gravity
 	_last_friction = rolling_friction
@@ -333,7 +334,8 @@ func step(dt: float) -> void:
 		_balls.woken = false
 		_woken_at_step = step_count
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= tuning.sleep_time
-	BallMotion.move(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep, turned)
+	BallSleep.settle(_balls, gravity, rolling_friction.max(Vector2.ZERO), dt, turned)
+	BallMotion.move(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
