@@ -4,7 +4,9 @@ extends RefCounted
 ## cell; then the sensors (holes, goals, zones) look at the path it took. Internal.
 ##
 ## One function on purpose: a GDScript call costs about as much as a contact test, so the
-## per-ball work stays in one flat loop with the geometry inline.
+## per-ball work stays in one flat loop with the geometry inline. A bounce is written out
+## where it happens: restitution on the normal, tangential friction on the rest,
+## v' = (v - n·vn)·keep_t - n·(vn·e).
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
@@ -176,7 +178,7 @@ static func move(
 								nrm = -back.normalized()
 							p = rc - nrm * lim
 							vn = minf(v.dot(nrm), 0.0)
-							v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
+							v = (v - nrm * vn) * keep_t - nrm * (vn * pin_e)
 							ev.append(BallStep.Ev.RING_HIT)
 							ev.append(ids[i])
 							ev.append(0)
@@ -241,7 +243,7 @@ static func move(
 							nrm = back.normalized()
 						p = q + nrm * lim
 						vn = minf(v.dot(nrm), 0.0)
-						v = BallStep.bounce(v, nrm, vn, pin_e, keep_t)
+						v = (v - nrm * vn) * keep_t - nrm * (vn * pin_e)
 						ev.append(BallStep.Ev.PIN_HIT)
 						ev.append(ids[i])
 						ev.append(pid)
@@ -316,14 +318,17 @@ static func move(
 								nrm = back.normalized()
 							p = best_q + nrm * lim
 							vn = minf(v.dot(nrm), 0.0)
-						v = BallStep.bounce(v, nrm, vn, wall_e, keep_t)
+						v = (v - nrm * vn) * keep_t - nrm * (vn * wall_e)
 						ev.append(BallStep.Ev.WALL_HIT)
 						ev.append(ids[i])
 						ev.append(best)
 						evs.append(-vn)
 					else:
-						# Only the round caps curve; the flat sides do not.
-						v = BallStep.slide(v, nrm, vn, gn_dt, h / lim if on_cap else 0.0)
+						# Only the round caps curve; on a flat side a slide only drops vn.
+						if on_cap:
+							v = BallStep.slide(v, nrm, vn, gn_dt, h / lim)
+						else:
+							v -= nrm * vn
 					if cur_a == NO_CONTACT or cur_a == key:
 						cur_a = key
 						n_a = nrm

@@ -207,11 +207,6 @@ static func collide_balls(
 	b.rest = rest
 
 
-## Velocity after a bouncing contact: restitution on the normal, friction on the tangent.
-static func bounce(v: Vector2, nrm: Vector2, vn: float, e: float, keep_t: float) -> Vector2:
-	return (v - nrm * vn) * keep_t - nrm * (vn * e)
-
-
 ## Velocity after a sliding contact (a persisting or gentle one): the normal speed is
 ## removed, except the part that only comes from the surface curving under a moving ball
 ## (capped by the curvature `curv` = substep time / radius of curvature). That part turns
