@@ -18,6 +18,8 @@ const GodotSide := preload("res://tests/bench/physics/godot_side.gd")
 const Ours := preload("res://tests/bench/physics/ours_runner.gd")
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
+const FloorKernel := preload("res://tests/bench/physics/floor_kernel.gd")
+const BenchTable := preload("res://tests/bench/physics/bench_table.gd")
 
 const OUT_PATH := "res://build/bench/physics.json"
 ## Engine physics ticks run this many times faster than the scene's rate, and time_scale
@@ -48,6 +50,9 @@ var _scale := {}
 var _zoned_vs_brute := 0.0
 ## Phase name → {"cpu_s", "wall_s", ...}, in the order the phases ran.
 var _phases := {}
+## Scenario name → its FloorKernel (S3 has none: its balls need 17 substeps a step to stay
+## tunnel-free, which a floor without substeps would leave out).
+var _floors := {}
 var _jobs: Array = []
 var _job := {}
 var _want_job := false
@@ -96,6 +101,11 @@ func _initialize() -> void:
 		}
 		print("  ours %s: tunnels %d, escapes %d" % [spec[0], c["tunnels"], c["escapes"]])
 		_phase_end("ours %s check" % spec[0])
+		if spec[1] != "fast":
+			_phase_begin()
+			_floors[spec[0]] = FloorKernel.new(scene)
+			_floors[spec[0]].prepare(spec[6])
+			_phase_end("floor %s states" % spec[0])
 		for _round: int in TIMING_ROUNDS:
 			_jobs.append([spec, scene, false])
 		_jobs.append([spec, scene, true])
@@ -260,6 +270,13 @@ func _end_job(done: int) -> void:
 
 ## Our timing run of one round, just before Godot's run of the same round.
 func _time_ours_round(spec: Array, scene: Dictionary, row: Dictionary) -> void:
+	if _floors.has(spec[0]):
+		_phase_begin()
+		var f: Dictionary = _floors[spec[0]].time_round()
+		TimingRounds.add_floor(row, f["floor_steps_per_s"])
+		row["floor_pairs_share"] = f["pairs_share"]
+		print("  floor %s: %.0f ball-steps/s (CPU)" % [spec[0], f["floor_steps_per_s"]])
+		_phase_end("floor %s timing %d" % [spec[0], (row["floor_rounds"] as Array).size()])
 	_phase_begin()
 	var r: Dictionary = Ours.run(scene, spec[6], false)
 	TimingRounds.add_ours(row, r["ball_steps_per_s"], r["wall_ball_steps_per_s"])
@@ -298,7 +315,7 @@ func _finish() -> void:
 		"phase_seconds": _phases,
 		"seconds": (Time.get_ticks_usec() - _started_usec) / 1e6,
 	}
-	_print_table(out)
+	BenchTable.print_table(out, WARMUP, JOB_BUDGET_S)
 	DirAccess.make_dir_recursive_absolute(ProjectSettings.globalize_path("res://build/bench"))
 	var f := FileAccess.open(OUT_PATH, FileAccess.WRITE)
 	if f == null:
@@ -309,74 +326,6 @@ func _finish() -> void:
 	f.close()
 	print("wrote %s" % OUT_PATH)
 	quit(0)
-
-
-func _print_table(out: Dictionary) -> void:
-	print("")
-	print(
-		(
-			"scene balls  pins walls   hz     ours/s    godot/s   ratio  steps run  tunnels"
-			+ " escapes  godot t/e  checked"
-		)
-	)
-	var notes := PackedStringArray()
-	for name: String in out["scenarios"]:
-		var r: Dictionary = out["scenarios"][name]
-		print(
-			(
-				"%-5s %5d %5d %5d %4d %10.0f %10.0f %7.2f %5d/%-5d %7d %7d %5d/%-5d %3d/%-3d"
-				% [
-					name,
-					r["balls"],
-					r["pins"],
-					r["walls"],
-					r["hz"],
-					r["ours_steps_per_s"],
-					r.get("godot_steps_per_s", 0.0),
-					r.get("ratio", 0.0),
-					r["ours_steps_run"],
-					r.get("godot_steps_run", 0),
-					r["tunnels"],
-					r["escapes"],
-					r.get("godot_tunnels", -1),
-					r.get("godot_escapes", -1),
-					r["steps"],
-					r.get("godot_steps_checked", 0),
-				]
-			)
-		)
-		if r.has("ours_tunnels_same_steps"):
-			(
-				notes
-				. append(
-					(
-						"%s: Godot checked %d of %d steps; ours over those steps: tunnels %d, escapes %d"
-						% [
-							name,
-							r["godot_steps_checked"],
-							r["steps"],
-							r["ours_tunnels_same_steps"],
-							r["ours_escapes_same_steps"],
-						]
-					)
-				)
-			)
-	print("steps run: ours/godot in the timing runs (the first %d untimed)" % WARMUP)
-	print("checked: steps the swept check covered, ours/godot (budget %.0f s)" % JOB_BUDGET_S)
-	for note: String in notes:
-		print(note)
-	print("zoned vs brute force, S1: %.1fx" % out["zoned_vs_brute_S1"])
-	print("scale: %s" % JSON.stringify(out["scale"]))
-	print("")
-	print("seconds per phase (CPU / wall):")
-	var phases: Dictionary = out["phase_seconds"]
-	for name: String in phases:
-		var p: Dictionary = phases[name]
-		var steps := ""
-		if p.has("steps"):
-			steps = "  %d of %d steps" % [p["steps"], p["of"]]
-		print("  %-28s %7.1f / %7.1f%s" % [name, p["cpu_s"], p["wall_s"], steps])
-	print("total %.1f s wall" % out["seconds"])
 
 
 ## Whether scenario `name` runs: all do, unless the command line ends in

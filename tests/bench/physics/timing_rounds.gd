@@ -3,7 +3,8 @@ extends RefCounted
 ## shared, and their speed drifts by a third or more within a minute; so each round times
 ## our layer and then GodotPhysics2D on the same scene right after it, and a scenario's
 ## figures are the medians over its rounds: the ratio is the median of the rounds' own
-## ratios, each from two runs seconds apart.
+## ratios, each from two runs seconds apart. Where the scenario has a GDScript floor
+## (FloorKernel), each round times it just before ours, and its ratios are kept the same way.
 
 
 ## Records our rate for the round about to start.
@@ -11,6 +12,12 @@ static func add_ours(row: Dictionary, steps_per_s: float, wall_steps_per_s: floa
 	_rounds(row, "ours_rounds").append(steps_per_s)
 	row["ours_steps_per_s"] = median(_rounds(row, "ours_rounds"))
 	row["ours_wall_steps_per_s"] = wall_steps_per_s
+
+
+## Records the GDScript floor's rate (see FloorKernel) for the round about to start.
+static func add_floor(row: Dictionary, floor_steps_per_s: float) -> void:
+	_rounds(row, "floor_rounds").append(floor_steps_per_s)
+	row["floor_steps_per_s"] = median(_rounds(row, "floor_rounds"))
 
 
 ## Records GodotPhysics2D's rate for the round whose ours was recorded last, and updates
@@ -22,6 +29,13 @@ static func add_godot(row: Dictionary, steps_per_s: float, wall_steps_per_s: flo
 	row["godot_steps_per_s"] = median(_rounds(row, "godot_rounds"))
 	row["godot_wall_steps_per_s"] = wall_steps_per_s
 	row["ratio"] = median(_rounds(row, "ratio_rounds"))
+	var floors: Array = _rounds(row, "floor_rounds")
+	if floors.size() == ours.size():
+		var floor_now: float = floors[floors.size() - 1]
+		_rounds(row, "floor_ratio_rounds").append(floor_now / maxf(steps_per_s, 1e-9))
+		_rounds(row, "ours_vs_floor_rounds").append(ours[ours.size() - 1] / floor_now)
+		row["floor_vs_godot"] = median(_rounds(row, "floor_ratio_rounds"))
+		row["ours_vs_floor"] = median(_rounds(row, "ours_vs_floor_rounds"))
 
 
 ## The middle value (the mean of the two middle ones for an even count); 0 when empty.

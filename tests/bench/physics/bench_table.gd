@@ -1,0 +1,86 @@
+extends RefCounted
+## The table `make bench` prints from build/bench/physics.json's content.
+
+
+## Prints the scenario rows, the GDScript floor lines, the S1 extras and the phase times.
+## `warmup`: untimed steps at the start of each timing run; `budget_s`: a Godot job's budget.
+static func print_table(out: Dictionary, warmup: int, budget_s: float) -> void:
+	print("")
+	print(
+		(
+			"scene balls  pins walls   hz     ours/s    godot/s   ratio  steps run  tunnels"
+			+ " escapes  godot t/e  checked"
+		)
+	)
+	var notes := PackedStringArray()
+	for name: String in out["scenarios"]:
+		var r: Dictionary = out["scenarios"][name]
+		print(
+			(
+				"%-5s %5d %5d %5d %4d %10.0f %10.0f %7.2f %5d/%-5d %7d %7d %5d/%-5d %3d/%-3d"
+				% [
+					name,
+					r["balls"],
+					r["pins"],
+					r["walls"],
+					r["hz"],
+					r["ours_steps_per_s"],
+					r.get("godot_steps_per_s", 0.0),
+					r.get("ratio", 0.0),
+					r["ours_steps_run"],
+					r.get("godot_steps_run", 0),
+					r["tunnels"],
+					r["escapes"],
+					r.get("godot_tunnels", -1),
+					r.get("godot_escapes", -1),
+					r["steps"],
+					r.get("godot_steps_checked", 0),
+				]
+			)
+		)
+		if r.has("ours_tunnels_same_steps"):
+			(
+				notes
+				. append(
+					(
+						"%s: Godot checked %d of %d steps; ours over those steps: tunnels %d, escapes %d"
+						% [
+							name,
+							r["godot_steps_checked"],
+							r["steps"],
+							r["ours_tunnels_same_steps"],
+							r["ours_escapes_same_steps"],
+						]
+					)
+				)
+			)
+	print("steps run: ours/godot in the timing runs (the first %d untimed)" % warmup)
+	print("checked: steps the swept check covered, ours/godot (budget %.0f s)" % budget_s)
+	for note: String in notes:
+		print(note)
+	for name: String in out["scenarios"]:
+		var r: Dictionary = out["scenarios"][name]
+		if r.has("floor_vs_godot"):
+			print(
+				(
+					"%s floor: %.0f/s, %.2fx Godot (the most a GDScript grid step reaches); ours %.0f%% of it"
+					% [
+						name,
+						r["floor_steps_per_s"],
+						r["floor_vs_godot"],
+						100.0 * r["ours_vs_floor"]
+					]
+				)
+			)
+	print("zoned vs brute force, S1: %.1fx" % out["zoned_vs_brute_S1"])
+	print("scale: %s" % JSON.stringify(out["scale"]))
+	print("")
+	print("seconds per phase (CPU / wall):")
+	var phases: Dictionary = out["phase_seconds"]
+	for name: String in phases:
+		var p: Dictionary = phases[name]
+		var steps := ""
+		if p.has("steps"):
+			steps = "  %d of %d steps" % [p["steps"], p["of"]]
+		print("  %-28s %7.1f / %7.1f%s" % [name, p["cpu_s"], p["wall_s"], steps])
+	print("total %.1f s wall" % out["seconds"])
