@@ -200,21 +200,26 @@ func _pairs(pos: PackedVector2Array, keys: PackedInt64Array, lim2: float) -> int
 	var next_off: int = 2 << SORT_SHIFT
 	var below_off: int = (_cols - 1) << SORT_SHIFT
 	var past_off: int = (_cols + 2) << SORT_SHIFT
+	var cell_bits: int = ~mask
 	var below := 0
 	var found := 0
 	for k: int in pos.size():
 		# Each run ends at the first key past it; the sentinel ends the last.
-		var cell_key: int = keys[k] & ~mask
-		var p: Vector2 = pos[keys[k] & mask]
+		var key: int = keys[k]
+		var cell_key: int = key & cell_bits
+		var p: Vector2 = pos[key & mask]
+		var end: int = cell_key + next_off
 		var m: int = k + 1
-		while keys[m] < cell_key + next_off:
+		while keys[m] < end:
 			if (pos[keys[m] & mask] - p).length_squared() < lim2:
 				found += 1
 			m += 1
-		while keys[below] < cell_key + below_off:
+		var first_below: int = cell_key + below_off
+		while keys[below] < first_below:
 			below += 1
+		end = cell_key + past_off
 		m = below
-		while keys[m] < cell_key + past_off:
+		while keys[m] < end:
 			if (pos[keys[m] & mask] - p).length_squared() < lim2:
 				found += 1
 			m += 1
