@@ -6,8 +6,8 @@ extends RefCounted
 ## A sleeper keeps the normals of what held it as it fell asleep (BallStore.support_static,
 ## support_static2, sleep_ball_normal). When gravity or friction changed, it stays asleep
 ## only while those shapes take every part of the new gravity that presses into them and
-## rolling friction holds the rest. One held up by balls also wakes the step
-## it touches no ball: the ball under it was knocked away.
+## rolling friction holds the rest. One held up by balls also wakes the step it touches
+## no ball: the ball under it was knocked away.
 ##
 ## One loop with the test inline, not a call per sleeper: a GDScript call costs about as
 ## much as the test, and a tilting maze runs it for hundreds of sleepers every step.
@@ -19,9 +19,10 @@ const HELD_SLACK := 1e-3
 
 
 ## Settles every sleeper for one step of `dt` s under `gravity` with per-axis rolling
-## `friction` (px/s², zero or more). `turned` says gravity or friction changed since the
-## last step. A sleeper that stays gets its velocity zeroed (the gravity phase added this
-## step's pull) and `dt` more rest; one that wakes keeps its velocity and moves this step.
+## `friction` (px/s²; below zero counts as zero, as in BallMotion). `turned` says gravity
+## or friction changed since the last step. A sleeper that stays gets its velocity zeroed
+## (the gravity phase added this step's pull) and `dt` more rest; one that wakes keeps its
+## velocity and moves this step.
 static func settle(
 	b: BallStore, gravity: Vector2, friction: Vector2, dt: float, turned: bool
 ) -> void:
@@ -37,8 +38,8 @@ static func settle(
 	var on_ball: PackedVector2Array = b.sleep_ball_normal
 	# Rounding in the normals must not wake a ball lying exactly on its support.
 	var slack: float = HELD_SLACK * gravity.length()
-	var fx: float = friction.x + slack
-	var fy: float = friction.y + slack
+	var fx: float = maxf(friction.x, 0.0) + slack
+	var fy: float = maxf(friction.y, 0.0) + slack
 	for i: int in n:
 		var kind: int = asleep[i]
 		if kind == 0:

@@ -334,7 +334,7 @@ func step(dt: float) -> void:
 		_balls.woken = false
 		_woken_at_step = step_count
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= tuning.sleep_time
-	BallSleep.settle(_balls, gravity, rolling_friction.max(Vector2.ZERO), dt, turned)
+	BallSleep.settle(_balls, gravity, rolling_friction, dt, turned)
 	BallMotion.move(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep)
 	_balls.compact()
 	step_count += 1

@@ -29,8 +29,9 @@ static func add_godot(row: Dictionary, steps_per_s: float, wall_steps_per_s: flo
 	row["godot_steps_per_s"] = median(_rounds(row, "godot_rounds"))
 	row["godot_wall_steps_per_s"] = wall_steps_per_s
 	row["ratio"] = median(_rounds(row, "ratio_rounds"))
-	var floors: Array = _rounds(row, "floor_rounds")
-	if floors.size() == ours.size():
+	# Only a scenario with a floor gets floor keys (S3 has none).
+	var floors: Array = row.get("floor_rounds", [])
+	if not floors.is_empty() and floors.size() == ours.size():
 		var floor_now: float = floors[floors.size() - 1]
 		_rounds(row, "floor_ratio_rounds").append(floor_now / maxf(steps_per_s, 1e-9))
 		_rounds(row, "ours_vs_floor_rounds").append(ours[ours.size() - 1] / floor_now)
