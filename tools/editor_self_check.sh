@@ -13,14 +13,14 @@ for kind in maze pachinko new; do
 	log=$DIR/$kind.log
 	if [ "$kind" = new ]; then
 		# A BoardNode with no board: the check presses "New maze board" first.
-		printf '[gd_scene load_steps=2 format=3]\n\n[ext_resource type="Script" path="res://scripts/board/board_node.gd" id="1_node"]\n\n[node name="Board" type="Node2D"]\nscript = ExtResource("1_node")\n' >"$DIR/$kind.tscn"
+		printf '[gd_scene load_steps=2 format=3]\n\n[ext_resource type="Script" path="res://scenes/board_view/board_node.gd" id="1_node"]\n\n[node name="Board" type="Node2D"]\nscript = ExtResource("1_node")\n' >"$DIR/$kind.tscn"
 	else
 	src=$([ "$kind" = maze ] && echo levels/maze/courtyards.tres || echo levels/pachinko/windmills.tres)
 	cp "$src" "$DIR/$kind.tres"
 	cat >"$DIR/$kind.tscn" <<SCENE
 [gd_scene load_steps=3 format=3]
 
-[ext_resource type="Script" path="res://scripts/board/board_node.gd" id="1_node"]
+[ext_resource type="Script" path="res://scenes/board_view/board_node.gd" id="1_node"]
 [ext_resource type="Resource" path="res://$DIR/$kind.tres" id="2_level"]
 
 [node name="Board" type="Node2D"]
@@ -29,7 +29,7 @@ level = ExtResource("2_level")
 SCENE
 	fi
 	BOARD_EDITOR_SELF_CHECK_PLAY=$([ "$kind" = maze ] && echo 1 || echo 0) \
-		BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" timeout 180 tools/godot.sh --headless \
+		BOARD_EDITOR_HOOK=res://tests/editor/self_check.gd BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" timeout 180 tools/godot.sh --headless \
 		--editor --path . >"$log" 2>&1
 	if grep -q 'board editor self-check: ok' "$log" && ! grep -q 'SCRIPT ERROR' "$log"; then
 		echo "editor self-check ($kind): ok"

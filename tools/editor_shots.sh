@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Screenshots of the board editor in use: opens the Godot editor under Xvfb on a board
 # scene, selects its BoardNode, puts a tool to work (the plugin's shot hook, see
-# addons/board_editor/ui/shot_hook.gd), saves the editor window as a PNG and quits.
+# tools/shots/editor_shot_hook.gd), saves the editor window as a PNG and quits.
 #   tools/editor_shots.sh                       both shots into build/shots/
 #   SIZE=1920x1080 tools/editor_shots.sh        another window size
 set -euo pipefail
@@ -16,7 +16,7 @@ shoot() {
 	local scene=$1 tool=$2 out=$3 log
 	log=build/editor-shot-${tool}.log
 	rm -f "build/shots/$out"
-	GODOT_PICTURES=1 BOARD_EDITOR_SHOT="$scene;$tool;res://build/shots/$out" timeout 240 \
+	GODOT_PICTURES=1 BOARD_EDITOR_HOOK=res://tools/shots/editor_shot_hook.gd BOARD_EDITOR_SHOT="$scene;$tool;res://build/shots/$out" timeout 240 \
 		xvfb-run -a -s "-screen 0 ${SIZE}x24" tools/godot.sh --editor \
 		--rendering-driver opengl3 --resolution "$SIZE" --path . >"$log" 2>&1 || true
 	if [ ! -f "build/shots/$out" ]; then

@@ -24,7 +24,7 @@ const CENTER := 350.0
 ## A level scene: one BoardNode showing the board file.
 const SCENE_TEXT := """[gd_scene load_steps=3 format=3]
 
-[ext_resource type="Script" path="res://scripts/board/board_node.gd" id="1_node"]
+[ext_resource type="Script" path="res://scenes/board_view/board_node.gd" id="1_node"]
 [ext_resource type="Resource" path="%s" id="2_level"]
 
 [node name="Board" type="Node2D"]

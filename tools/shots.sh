@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the main screens under Xvfb to build/shots/*.png (make shots runs setup first):
 # menus and pachinko (tools/shots/shot_runner.gd), the maze's own driver
-# (scenes/maze/maze_shots.tscn), then the board editor in use (tools/editor_shots.sh).
+# (tools/shots/maze_shots.tscn), then the board editor in use (tools/editor_shots.sh).
 #   SHOTS_ONLY=menu tools/shots.sh    only the runner's shots whose names start with "menu"
 #   SIZE=1920x1080 tools/shots.sh     another window size
 set -euo pipefail
@@ -16,7 +16,7 @@ run_picture() {
 }
 run_picture -s res://tools/shots/shot_runner.gd || status=1
 if [ -z "${SHOTS_ONLY:-}" ] || [ "${SHOTS_ONLY}" = maze ]; then
-	run_picture res://scenes/maze/maze_shots.tscn || status=1
+	run_picture res://tools/shots/maze_shots.tscn || status=1
 fi
 if [ -z "${SHOTS_ONLY:-}" ] || [ "${SHOTS_ONLY}" = editor ]; then
 	tools/editor_shots.sh || status=1

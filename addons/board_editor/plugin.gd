@@ -11,10 +11,13 @@ const BoardOverlay := preload("res://addons/board_editor/ui/board_overlay.gd")
 const BoardToolbar := preload("res://addons/board_editor/ui/board_toolbar.gd")
 const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
-const ShotHook := preload("res://addons/board_editor/ui/shot_hook.gd")
-const SelfCheck := preload("res://addons/board_editor/ui/self_check.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
+## this variable naming a script under res://tools/ or res://tests/, the plugin adds it as a
+## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
+const TOOLING_HOOK_ENV := "BOARD_EDITOR_HOOK"
+const TOOLING_HOOK_FOLDERS: Array[String] = ["res://tools/", "res://tests/"]
 
 var _node: BoardNode
 var _session: Session
@@ -39,10 +42,7 @@ func _enter_tree() -> void:
 	_dock.new_board_requested.connect(_new_board)
 	_dock.save_as_requested.connect(_save_as_file)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
-	if ShotHook.requested():
-		add_child(ShotHook.new(self))
-	if SelfCheck.requested():
-		add_child(SelfCheck.new(self))
+	_attach_tooling_hook()
 
 
 func _exit_tree() -> void:
@@ -239,3 +239,26 @@ func _save_as_file() -> void:
 
 func _to_screen() -> Transform2D:
 	return _node.get_viewport_transform() * _node.get_global_transform()
+
+
+func _attach_tooling_hook() -> void:
+	var path := OS.get_environment(TOOLING_HOOK_ENV)
+	if path.is_empty():
+		return
+	var allowed := TOOLING_HOOK_FOLDERS.any(
+		func(folder: String) -> bool: return path.begins_with(folder)
+	)
+	if not allowed or path.contains("..") or not ResourceLoader.exists(path):
+		push_error(
+			(
+				"%s must name a script under %s, got '%s'."
+				% [TOOLING_HOOK_ENV, TOOLING_HOOK_FOLDERS, path]
+			)
+		)
+		return
+	var script := load(path) as GDScript
+	var hook: Object = script.new(self) if script != null else null
+	if hook is Node:
+		add_child(hook as Node)
+	else:
+		push_error("%s: %s is not a Node script." % [TOOLING_HOOK_ENV, path])

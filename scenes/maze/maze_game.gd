@@ -5,8 +5,8 @@ extends Control
 ## with a timer, the best time and the mode beside the joystick.
 
 const Palette := preload("res://scenes/maze/maze_palette.gd")
-const TiltInput := preload("res://scripts/maze/tilt_input.gd")
-const TiltMixer := preload("res://scripts/maze/tilt_mixer.gd")
+const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
+const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.tres"

@@ -10,7 +10,7 @@ signal pressed
 signal moved(offset: Vector2)
 
 const Palette := preload("res://scenes/maze/maze_palette.gd")
-const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const DISC_RADIUS := 25.0
 const HEAD_RADIUS := 10.0
 const ARROW_DISTANCE := 55.0

@@ -73,13 +73,6 @@ func first_card() -> Button:
 	return all[0] if not all.is_empty() else null
 
 
-## Used by tools/shots: show the game the shot is named after.
-func prepare_shot(shot_name: String) -> void:
-	kind = "maze" if shot_name.ends_with("maze") else "pachinko"
-	show_boards(BoardLoader.list_boards(_kind_enum(kind)))
-	await get_tree().process_frame
-
-
 func _best_text(result: BoardLoadResult) -> String:
 	if not result.ok():
 		return ""

@@ -5,7 +5,6 @@ extends Control
 ## signals.
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
-const PachinkoShots := preload("res://scenes/pachinko/pachinko_shots.gd")
 const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
@@ -240,10 +239,3 @@ func _on_pin_hit(_ball: int, _pin: int, speed: float) -> void:
 
 func _on_ring_hit(_ball: int, speed: float) -> void:
 	sounds.play_impact(SoundBank.WALL_THUD, speed, TICK_MIN_SPEED * 2.0, TICK_MAX_SPEED * 1.5)
-
-
-## Puts the screen in a state worth a screenshot (tools/shots runs this); see
-## pachinko_shots.gd for the states.
-func prepare_shot(shot_name: String) -> void:
-	if rules != null:
-		PachinkoShots.prepare(rules, shot_name)

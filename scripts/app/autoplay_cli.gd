@@ -4,8 +4,8 @@ extends RefCounted
 ## Prints one JSON line with what happened and returns the process exit code.
 
 const GAMES := {
-	"pachinko": "res://scripts/pachinko/pachinko_autoplay.gd",
-	"maze": "res://scripts/maze/maze_autoplay.gd",
+	"pachinko": "res://scripts/pachinko/autoplay/pachinko_autoplay.gd",
+	"maze": "res://scripts/maze/autoplay/maze_autoplay.gd",
 }
 const DEFAULT_SECONDS := {"pachinko": 60.0, "maze": 120.0}
 const MAX_SECONDS := 3600.0

@@ -3,9 +3,9 @@ extends GutTest
 ## game, and its planner reads the board's grid right.
 
 const CLASSIC := "res://levels/maze/classic.tres"
-const MazeGrid := preload("res://scripts/maze/maze_grid.gd")
-const MazeNav := preload("res://scripts/maze/maze_nav.gd")
-const MazeSlidePlanner := preload("res://scripts/maze/maze_slide_planner.gd")
+const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
+const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
+const MazeSlidePlanner := preload("res://scripts/maze/autoplay/maze_slide_planner.gd")
 
 const RIGHT := 0
 const DOWN := 2

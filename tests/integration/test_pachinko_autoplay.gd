@@ -3,7 +3,7 @@ extends GutTest
 ## seed plays the same game.
 
 const CLASSIC := "res://levels/pachinko/classic.tres"
-const Autoplay := preload("res://scripts/pachinko/pachinko_autoplay.gd")
+const Autoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 
 
 func _level() -> BoardLevel:

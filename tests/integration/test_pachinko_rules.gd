@@ -3,7 +3,7 @@ extends GutTest
 ## the flipper's drawback, the physical launch rail, pockets, the gutter and game over.
 
 const CLASSIC := "res://levels/pachinko/classic.tres"
-const LaunchPower := preload("res://scripts/pachinko/launch_power.gd")
+const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 
 func _level(cup_balls: int = -1) -> BoardLevel:

@@ -3,7 +3,7 @@ extends GutTest
 ## settings file is reported once and replaced, best results are kept per board, and the
 ## board a game plays comes from the play-test request, the level select, or the default.
 
-const AppScript := preload("res://scripts/app/app.gd")
+const AppScript := preload("res://scenes/app/app.gd")
 const SETTINGS := "user://test_app_settings.cfg"
 const SAVE := "user://test_app_save.cfg"
 

@@ -19,7 +19,7 @@ const BROKEN := {
 	"broken_version": "unknown version 99",
 	"broken_missing_fields": "ball radius must be positive",
 	"broken_unknown_field": "no field 'flipper_colour'",
-	"broken_outside_script": "res://scripts/app/app.gd",
+	"broken_outside_script": "res://scenes/app/app.gd",
 	"broken_embedded_script": "embeds a GDScript",
 	"broken_array_mismatch": "pin lists disagree",
 	"v0_broken_pockets": "upgrading from version 0",

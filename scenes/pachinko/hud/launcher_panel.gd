@@ -10,7 +10,7 @@ const BAR := Rect2(12, 44, 34, 180)
 const PIVOT := Vector2(272, 196)
 const LEVER_LENGTH := 150.0
 const RED := Color("e23b3b")
-const LaunchPower := preload("res://scripts/pachinko/launch_power.gd")
+const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 var _power := 0.0
 var _degrees := 0.0

@@ -2,7 +2,7 @@ extends RefCounted
 ## BoardValidator's pachinko checks: ring, rail, gutter, cup and pockets; the pins
 ## themselves are checked by pin_checks.gd.
 
-const PinChecks := preload("res://scripts/board/pin_checks.gd")
+const PinChecks := preload("res://scripts/validation/pin_checks.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Extra width the launch channel needs beyond the ball and the guide wall, in pixels.

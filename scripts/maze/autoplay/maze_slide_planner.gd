@@ -6,8 +6,8 @@ extends RefCounted
 ## gathers every ball into one cell close to the goal; from there the pack rolls in as one.
 ## (One tilt moves every ball, so gathering first is what makes the goal reachable.)
 
-const MazeGrid := preload("res://scripts/maze/maze_grid.gd")
-const MazeNav := preload("res://scripts/maze/maze_nav.gd")
+const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
+const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
 
 ## Cost of one more move, in pixels of distance left to the goal.
 const MOVE_COST := 8.0

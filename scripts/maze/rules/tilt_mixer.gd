@@ -6,7 +6,7 @@ extends RefCounted
 
 enum Source { NONE, JOYSTICK, KEYS, ACCELEROMETER }
 
-const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 ## Accelerometer readings shorter than this (m/s²) mean the device has none.
 const MIN_ACCEL := 0.5
 

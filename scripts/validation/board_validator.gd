@@ -4,8 +4,8 @@ extends RefCounted
 ## run on every edit in the editor. Errors make the loader refuse the board; warnings are
 ## design hints. Issue codes (BoardIssue.kind) are listed in docs/architecture.md.
 
-const PachinkoChecks := preload("res://scripts/board/pachinko_checks.gd")
-const MazeChecks := preload("res://scripts/board/maze_checks.gd")
+const PachinkoChecks := preload("res://scripts/validation/pachinko_checks.gd")
+const MazeChecks := preload("res://scripts/validation/maze_checks.gd")
 ## Common problems that make the kind-specific checks meaningless.
 const BLOCKING := ["bad_kind", "bad_size", "bad_ball_radius"]
 

@@ -3,7 +3,7 @@ extends RefCounted
 ## can roll from its start to the goal (a flood fill on a fine grid where the walls are
 ## grown by the ball radius, so a cell is free exactly where a ball's centre fits).
 
-const MazeFlood := preload("res://scripts/board/maze_flood.gd")
+const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Below this a wall counts as zero length, in pixels.

@@ -37,7 +37,7 @@ func _ready() -> void:
 	await _settle(1.3)
 	await _save("maze_tilt")
 	# Win: let the autoplay's pilot play the live scene (the first seed that wins).
-	var pilot_script: GDScript = load("res://scripts/maze/maze_pilot.gd")
+	var pilot_script: GDScript = load("res://scripts/maze/autoplay/maze_pilot.gd")
 	for attempt in range(1, 11):
 		rules.reset()
 		game.call("_start")

@@ -3,7 +3,7 @@ extends RefCounted
 ## Loads boards safely: only res:// files, checked before and after the engine parses them,
 ## upgraded from older versions and validated. A broken board never stops the others.
 
-const FileCheck := preload("res://scripts/board/board_file_check.gd")
+const FileCheck := preload("res://scripts/loading/board_file_check.gd")
 const LEVELS_DIR := "res://levels"
 ## At most this many validator errors are quoted in a refusal message.
 const ERRORS_QUOTED := 3

@@ -15,11 +15,11 @@ extends RefCounted
 
 enum Phase { PLAN, MOVE, HERD, LEAD }
 
-const MazeNav := preload("res://scripts/maze/maze_nav.gd")
-const MazeGrid := preload("res://scripts/maze/maze_grid.gd")
-const MazeSlidePlanner := preload("res://scripts/maze/maze_slide_planner.gd")
-const MazeHoleGuard := preload("res://scripts/maze/maze_hole_guard.gd")
-const MazeSteering := preload("res://scripts/maze/maze_steering.gd")
+const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
+const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
+const MazeSlidePlanner := preload("res://scripts/maze/autoplay/maze_slide_planner.gd")
+const MazeHoleGuard := preload("res://scripts/maze/autoplay/maze_hole_guard.gd")
+const MazeSteering := preload("res://scripts/maze/autoplay/maze_steering.gd")
 ## A move ends when no ball has moved more than SETTLE_DRIFT px in SETTLE_SECONDS (balls
 ## pressed together into a corner jostle, so their speed alone never settles).
 const SETTLE_DRIFT := 1.0

@@ -36,11 +36,11 @@ signal game_ended(summary: Dictionary)
 ## INSTRUCTIONS: before the first game; PLAYING; GAME_OVER: the instructions are back.
 enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
-const LaunchPower := preload("res://scripts/pachinko/launch_power.gd")
-const LaunchCalibration := preload("res://scripts/pachinko/launch_calibration.gd")
-const RailTraffic := preload("res://scripts/pachinko/rail_traffic.gd")
-const Ledger := preload("res://scripts/pachinko/pachinko_ledger.gd")
-const StuckWatcher := preload("res://scripts/pachinko/stuck_ball_watcher.gd")
+const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
+const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibration.gd")
+const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
+const Ledger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
+const StuckWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.gd")
 
 ## Power added per second while a key or button is held (full power in 1.25 s).
 const CHARGE_PER_SECOND := 80.0

@@ -24,7 +24,7 @@ signal goal_count_changed(balls_in_goal: int)
 
 enum State { READY, PLAYING, WON, LOST }
 
-const TiltInput := preload("res://scripts/maze/tilt_input.gd")
+const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 
 ## The board being played.
 var level: BoardLevel
