@@ -4,20 +4,27 @@ extends RefCounted
 ## upgraded from older versions and validated. A broken board never stops the others.
 
 const FileCheck := preload("res://scripts/loading/board_file_check.gd")
+const Reader := preload("res://scripts/loading/board_text_reader.gd")
 const LEVELS_DIR := "res://levels"
+## The folders boards may be loaded from: the shipped boards and the player's own.
+const BOARD_ROOTS: Array[String] = ["res://levels/", "user://boards/"]
 ## At most this many validator errors are quoted in a refusal message.
 const ERRORS_QUOTED := 3
 
 
 ## Loads, upgrades and validates one board. The result holds the level or an error message
-## naming the file and the problem.
-static func load_board(path: String) -> BoardLoadResult:
+## naming the file and the problem. `roots` are the folders the file may be in (tests pass
+## their fixtures folder).
+static func load_board(path: String, roots: Array[String] = BOARD_ROOTS) -> BoardLoadResult:
 	var result := BoardLoadResult.new()
 	result.path = path
-	if not path.begins_with("res://"):
-		return _fail(result, "only res:// board files are trusted to load")
+	var outside := path_problem(path, roots)
+	if not outside.is_empty():
+		return _fail(result, outside)
+	if path.ends_with(".board"):
+		return _finish(result, _read_board_file(result, path))
 	if not path.ends_with(".tres"):
-		return _fail(result, "a board file must be a text resource (.tres)")
+		return _fail(result, "a board file must be a .board file")
 	var checked := {"error": "", "version": -1}
 	if FileAccess.file_exists(path):
 		checked = FileCheck.check(path)
@@ -37,6 +44,51 @@ static func load_board(path: String) -> BoardLoadResult:
 	var upgrade_problem := BoardUpgrader.upgrade(level, from_version)
 	if not upgrade_problem.is_empty():
 		return _fail(result, upgrade_problem)
+	return _finish(result, level)
+
+
+## "" when `path` is a board file inside one of BOARD_ROOTS, reached without `..` or a
+## symbolic link, else why it may not be loaded.
+static func path_problem(path: String, roots: Array[String] = BOARD_ROOTS) -> String:
+	var root := ""
+	for allowed in roots:
+		if path.begins_with(allowed):
+			root = allowed
+	if root.is_empty():
+		return "boards load only from %s" % " or ".join(roots)
+	var rest := path.substr(root.length())
+	if rest.is_empty() or rest.contains("\\") or rest.contains("//") or rest.contains(":"):
+		return "not a plain file path inside %s" % root
+	var dir := DirAccess.open(root)
+	var walked := root
+	for part in rest.split("/"):
+		if part.is_empty() or part == "." or part == "..":
+			return "the path may not contain '.' or '..' parts"
+		walked = walked.path_join(part)
+		if dir != null and dir.is_link(walked):
+			return "%s is a symbolic link; boards must be real files inside %s" % [walked, root]
+	return ""
+
+
+static func _read_board_file(result: BoardLoadResult, path: String) -> BoardLevel:
+	if not FileAccess.file_exists(path):
+		result.error = "the file does not exist"
+		return null
+	var size := FileAccess.open(path, FileAccess.READ)
+	if size != null and size.get_length() > Reader.Schema.MAX_FILE_BYTES:
+		result.error = "the file is larger than %d bytes" % Reader.Schema.MAX_FILE_BYTES
+		return null
+	var read := Reader.read(FileAccess.get_file_as_string(path))
+	if read.has("error"):
+		result.error = read["error"]
+		return null
+	return read["level"]
+
+
+# Validates a read level: any error refuses it, warnings ride along.
+static func _finish(result: BoardLoadResult, level: BoardLevel) -> BoardLoadResult:
+	if level == null:
+		return _fail(result, result.error if not result.error.is_empty() else "unreadable")
 	var errors: PackedStringArray = []
 	for issue in BoardValidator.validate(level):
 		if issue.is_error():
@@ -62,7 +114,8 @@ static func list_boards(kind: int, root: String = LEVELS_DIR) -> Array[BoardLoad
 	for file_name in DirAccess.get_files_at(dir_path):
 		# Exported builds list remapped files; the loader takes the original name.
 		var plain := file_name.trim_suffix(".remap")
-		if plain.ends_with(".tres") and not names.has(plain):
+		var known := plain.ends_with(".tres") or plain.ends_with(".board")
+		if known and not names.has(plain):
 			names.append(plain)
 	names.sort()
 	for file_name in names:

@@ -1,0 +1,44 @@
+@tool
+class_name BoardFormatSaver
+extends ResourceFormatSaver
+## Saves a BoardLevel as a `.board` file (BoardTextWriter's reviewable text). A save that
+## would write the same text leaves the file untouched, so opening a board and saving the
+## scene never shows up as a change.
+
+const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const EXTENSION := "board"
+
+
+func _get_recognized_extensions(resource: Resource) -> PackedStringArray:
+	return PackedStringArray([EXTENSION]) if resource is BoardLevel else PackedStringArray()
+
+
+func _recognize(resource: Resource) -> bool:
+	return resource is BoardLevel
+
+
+func _recognize_path(_resource: Resource, path: String) -> bool:
+	return path.get_extension().to_lower() == EXTENSION
+
+
+func _save(resource: Resource, path: String, _flags: int) -> Error:
+	var level := resource as BoardLevel
+	if level == null:
+		return ERR_INVALID_PARAMETER
+	var text := Writer.write(level)
+	if FileAccess.file_exists(path) and FileAccess.get_file_as_string(path) == text:
+		return OK
+	# Write beside the file, then swap: a failed write never leaves half a board behind.
+	var staged := path + ".saving"
+	var file := FileAccess.open(staged, FileAccess.WRITE)
+	if file == null:
+		var open_error := FileAccess.get_open_error()
+		push_error("%s: could not write the board (%s)" % [path, error_string(open_error)])
+		return open_error
+	file.store_string(text)
+	file.close()
+	var moved := DirAccess.rename_absolute(staged, path)
+	if moved != OK:
+		push_error("%s: could not replace the board (%s)" % [path, error_string(moved)])
+		DirAccess.remove_absolute(staged)
+	return moved

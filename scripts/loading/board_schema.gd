@@ -1,0 +1,184 @@
+extends RefCounted
+## The board file's schema: every field a `.board` file may hold, its type and its range,
+## and the item lists with their counts. `BoardTextReader` checks a parsed file against it
+## before any BoardLevel exists, so a value that would break the world is refused with the
+## field named. The ranges are generous for designers and tight enough that no board can
+## freeze the game, exhaust memory or turn a ball's numbers into NaN.
+
+## The value of the file's "format" key.
+const FORMAT := "board-studio-board"
+## The file layout this code writes; a newer number is refused, never guessed at.
+const FORMAT_VERSION := 1
+## A board file larger than this is refused before it is parsed.
+const MAX_FILE_BYTES := 2 * 1024 * 1024
+## Coordinates (board pixels) may not leave this square around the origin.
+const MAX_COORD := 10000.0
+
+## Field name → [type, min, max]. Types: "int", "float", "vec2", "string", "kind".
+const COMMON := {
+	"format": ["string", 0, 64],
+	"format_version": ["int", 1, FORMAT_VERSION],
+	"kind": ["kind", 0, 0],
+	"board_id": ["string", 1, 64],
+	"display_name": ["string", 1, 80],
+	"description": ["string", 0, 600],
+	"size": ["vec2", 1.0, 4096.0],
+	"ball_radius": ["float", 0.5, 100.0],
+}
+const PACHINKO := {
+	"ring_center": ["vec2", -MAX_COORD, MAX_COORD],
+	"ring_radius": ["float", 10.0, 2048.0],
+	"rail_width": ["float", 0.0, 500.0],
+	"rail_start_deg": ["float", -720.0, 720.0],
+	"rail_end_deg": ["float", -720.0, 720.0],
+	"gutter_start_deg": ["float", -720.0, 720.0],
+	"gutter_end_deg": ["float", -720.0, 720.0],
+	"gutter_bounces": ["int", 1, 100],
+	"pin_radius": ["float", 0.0, 100.0],
+	"cup_start_balls": ["int", 0, 100000],
+}
+const MAZE := {
+	"grid_cols": ["int", 1, 64],
+	"grid_rows": ["int", 1, 64],
+	"path_width": ["float", 1.0, 1000.0],
+	"wall_width": ["float", 0.0, 1000.0],
+	"goal_center": ["vec2", -MAX_COORD, MAX_COORD],
+	"goal_radius": ["float", 1.0, 2048.0],
+	"hole_radius": ["float", 0.0, 500.0],
+}
+## List name → [most items, item field → spec]. Optional item fields are in OPTIONAL_ITEM_FIELDS.
+const LISTS := {
+	"pins": [5000, {"x": ["coord"], "y": ["coord"]}],
+	"pockets":
+	[
+		200,
+		{
+			"x": ["coord"],
+			"y": ["coord"],
+			"width": ["float", 1.0, 500.0],
+			"depth": ["float", 1.0, 500.0],
+			"payout": ["int", 0, 10000],
+		}
+	],
+	"walls": [4000, {"ax": ["coord"], "ay": ["coord"], "bx": ["coord"], "by": ["coord"]}],
+	"ball_starts": [64, {"x": ["coord"], "y": ["coord"]}],
+	"holes": [500, {"x": ["coord"], "y": ["coord"]}],
+}
+## Fields an item may leave out: a pin's pocket (-1 = a field pin) and its special flag.
+const OPTIONAL_ITEM_FIELDS := {
+	"pins": {"pocket": ["int", 0, 199], "special": ["bool"]},
+}
+## The key an item line uses for each list: `{"pin": {"x": 1, "y": 2}}` goes to "pins".
+const ITEM_KEYS := {
+	"pin": "pins",
+	"pocket": "pockets",
+	"wall": "walls",
+	"ball_start": "ball_starts",
+	"hole": "holes"
+}
+## A file may not have more lines than this (every list full, plus the fields).
+const MAX_LINES := 12000
+const PACHINKO_LISTS: Array[String] = ["pins", "pockets"]
+const MAZE_LISTS: Array[String] = ["walls", "ball_starts", "holes"]
+## Tuning fields: name → [min, max]; the fields themselves are PhysicsTuning's properties.
+const TUNING_RANGES := {
+	"gravity": [-100000.0, 100000.0],
+	"restitution": [0.0, 1.0],
+	"wall_restitution": [0.0, 1.0],
+	"ball_restitution": [0.0, 1.0],
+	"tangent_friction": [0.0, 1.0],
+	"rolling_friction": [0.0, 100000.0],
+	"tilt_gravity": [0.0, 1000000.0],
+	"max_speed": [1.0, 100000.0],
+	"min_horizontal_speed": [0.0, 10000.0],
+	"fixed_hz": [30.0, 1000.0],
+	"bounce_threshold": [0.0, 10000.0],
+	"rest_speed": [0.0, 10000.0],
+	"sleep_time": [0.0, 60.0],
+	"gutter_slide_time": [0.0, 60.0],
+}
+## A tuning field with no range of its own above gets this one.
+const TUNING_DEFAULT_RANGE := [-1000000.0, 1000000.0]
+
+
+## The top-level fields a board of `kind_name` ("pachinko" / "maze") must have.
+static func fields_for(kind_name: String) -> Dictionary:
+	var fields := COMMON.duplicate()
+	fields.merge(PACHINKO if kind_name == "pachinko" else MAZE)
+	return fields
+
+
+## The item lists a board of `kind_name` has.
+static func lists_for(kind_name: String) -> Array[String]:
+	return PACHINKO_LISTS if kind_name == "pachinko" else MAZE_LISTS
+
+
+## The tuning fields a file may set: PhysicsTuning's stored number and vector properties,
+## name → [Variant.Type, min, max].
+static func tuning_fields() -> Dictionary:
+	var fields := {}
+	for prop in PhysicsTuning.new().get_property_list():
+		var usage: int = prop["usage"]
+		var type: int = prop["type"]
+		if usage & PROPERTY_USAGE_STORAGE == 0:
+			continue
+		if type != TYPE_FLOAT and type != TYPE_INT and type != TYPE_VECTOR2:
+			continue
+		var name: String = prop["name"]
+		var limits: Array = TUNING_RANGES.get(name, TUNING_DEFAULT_RANGE)
+		fields[name] = [type, limits[0], limits[1]]
+	return fields
+
+
+## "" when `value` fits `spec` ([type, min, max]), else what is wrong with it.
+static func check_value(value: Variant, spec: Array) -> String:
+	var type: String = spec[0]
+	match type:
+		"coord":
+			return check_value(value, ["float", -MAX_COORD, MAX_COORD])
+		"bool":
+			return "" if value is bool else "must be true or false"
+		"kind":
+			return (
+				""
+				if value is String and value in ["pachinko", "maze"]
+				else ('must be "pachinko" or "maze"')
+			)
+		"string":
+			if not value is String:
+				return "must be a text in quotes"
+			var text: String = value
+			if text.length() < int(spec[1]) or text.length() > int(spec[2]):
+				return "must be %d to %d characters long" % [spec[1], spec[2]]
+			return ""
+		"vec2":
+			if not value is Array or (value as Array).size() != 2:
+				return "must be a pair of numbers [x, y]"
+			var pair: Array = value
+			var problem := check_number(pair[0], float(spec[1]), float(spec[2]), false)
+			return (
+				problem
+				if not problem.is_empty()
+				else (check_number(pair[1], float(spec[1]), float(spec[2]), false))
+			)
+		"int":
+			return check_number(value, float(spec[1]), float(spec[2]), true)
+	return check_number(value, float(spec[1]), float(spec[2]), false)
+
+
+## "" when `value` is a finite number in [low, high] (a whole one when `whole`).
+static func check_number(value: Variant, low: float, high: float, whole: bool) -> String:
+	if not (value is float or value is int):
+		return "must be a number"
+	var number := float(value)
+	if is_nan(number) or is_inf(number):
+		return "must be a finite number"
+	if whole and number != floorf(number):
+		return "must be a whole number"
+	if number < low or number > high:
+		return "must be between %s and %s, got %s" % [_short(low), _short(high), _short(number)]
+	return ""
+
+
+static func _short(number: float) -> String:
+	return str(int(number)) if number == floorf(number) and absf(number) < 1e15 else str(number)

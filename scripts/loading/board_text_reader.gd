@@ -1,0 +1,234 @@
+extends RefCounted
+## Reads a `.board` file's text into a BoardLevel. A board file is JSON Lines: every line is
+## one JSON object, either fields (`{"ring_radius": 320}`) or one item
+## (`{"pin": {"x": 120, "y": 300}}`), so adding a pin adds exactly one line. Each line goes
+## to Godot's JSON parser, which can only make plain values (numbers, strings, arrays,
+## dictionaries) and refuses NaN and structures nested too deep; every field is then checked
+## against BoardSchema (type, range, finiteness, counts, no unknown or repeated keys) before
+## a BoardLevel is built in code. Nothing in a board file can name a script, a class or
+## another file.
+
+const Schema := preload("res://scripts/loading/board_schema.gd")
+
+
+## {"level": BoardLevel} or {"error": "what is wrong"} (the caller adds the file name).
+static func read(text: String) -> Dictionary:
+	if text.length() > Schema.MAX_FILE_BYTES:
+		return _error("the file is larger than %d bytes" % Schema.MAX_FILE_BYTES)
+	if text.contains(char(0)):
+		return _error("the file contains a NUL byte; a board file is plain text")
+	text = text.trim_prefix(char(0xFEFF))  # a UTF-8 byte order mark some editors add
+	var gathered := _gather_lines(text)
+	if gathered.has("error"):
+		return gathered
+	var data: Dictionary = gathered["data"]
+	var problem := _check_header(data)
+	if problem.is_empty():
+		problem = _check_fields(data)
+	if not problem.is_empty():
+		return _error(problem)
+	return {"level": _build(data)}
+
+
+# Folds the lines into one dictionary: fields by name, items appended to their list.
+static func _gather_lines(text: String) -> Dictionary:
+	var lines := text.split("\n")
+	if lines.size() > Schema.MAX_LINES:
+		return _error("the file has %d lines; at most %d" % [lines.size(), Schema.MAX_LINES])
+	var data := {}
+	var json := JSON.new()
+	for number in lines.size():
+		var line := lines[number].strip_edges()
+		if line.is_empty():
+			continue
+		if json.parse(line) != OK or not json.data is Dictionary:
+			var why := json.get_error_message() if json.data == null else "not a { ... } object"
+			return _error("line %d is not a JSON object: %s" % [number + 1, why])
+		var problem := _gather(data, json.data as Dictionary)
+		if not problem.is_empty():
+			return _error("line %d: %s" % [number + 1, problem])
+	return {"data": data}
+
+
+static func _gather(data: Dictionary, line: Dictionary) -> String:
+	if line.size() == 1 and Schema.ITEM_KEYS.has(line.keys()[0]):
+		var list: String = Schema.ITEM_KEYS[line.keys()[0]]
+		var items: Array = data.get_or_add(list, [])
+		items.append(line.values()[0])
+		return ""
+	for key: Variant in line.keys():
+		if Schema.ITEM_KEYS.has(key):
+			return 'an item ("%s") must be alone on its line' % key
+		if Schema.LISTS.has(key):
+			return '"%s" items go one per line, not as a list' % key
+		if data.has(key):
+			return 'the field "%s" is given twice' % key
+		data[key] = line[key]
+	return ""
+
+
+static func _check_header(data: Dictionary) -> String:
+	if data.get("format") != Schema.FORMAT:
+		return '"format" must be "%s"; this is not a board file' % Schema.FORMAT
+	var version: Variant = data.get("format_version")
+	if (version is float or version is int) and float(version) > Schema.FORMAT_VERSION:
+		return (
+			"the file is format version %s, newer than this game reads (%d): update the game"
+			% [version, Schema.FORMAT_VERSION]
+		)
+	var kind: Variant = data.get("kind")
+	if not kind is String or not kind in ["pachinko", "maze"]:
+		return '"kind" must be "pachinko" or "maze"'
+	return ""
+
+
+static func _check_fields(data: Dictionary) -> String:
+	var kind: String = data["kind"]
+	var fields := Schema.fields_for(kind)
+	var lists := Schema.lists_for(kind)
+	for key: Variant in data.keys():
+		if not fields.has(key) and not lists.has(key) and key != "tuning":
+			return 'unknown field "%s" for a %s board' % [key, kind]
+	for field: String in fields:
+		if not data.has(field):
+			return 'the field "%s" is missing' % field
+		var problem := Schema.check_value(data[field], fields[field])
+		if not problem.is_empty():
+			return '"%s" %s' % [field, problem]
+	for list in lists:
+		var problem := _check_list(list, data.get(list, []))
+		if not problem.is_empty():
+			return problem
+	return _check_tuning(data.get("tuning", {}))
+
+
+static func _check_list(list: String, value: Variant) -> String:
+	if not value is Array:
+		return '"%s" must be a list [ ... ]' % list
+	var items: Array = value
+	var most: int = Schema.LISTS[list][0]
+	if items.size() > most:
+		return '"%s" has %d items; at most %d are allowed' % [list, items.size(), most]
+	var required: Dictionary = Schema.LISTS[list][1]
+	var optional: Dictionary = Schema.OPTIONAL_ITEM_FIELDS.get(list, {})
+	for i in items.size():
+		var problem := _check_item(items[i], required, optional)
+		if not problem.is_empty():
+			return "%s item %d: %s" % [list, i + 1, problem]
+	return ""
+
+
+static func _check_item(item: Variant, required: Dictionary, optional: Dictionary) -> String:
+	if not item is Dictionary:
+		return "must be an object { ... }"
+	var fields: Dictionary = item
+	for key: Variant in fields.keys():
+		if not required.has(key) and not optional.has(key):
+			return 'unknown field "%s"' % key
+	for key: String in required:
+		if not fields.has(key):
+			return 'the field "%s" is missing' % key
+		var problem := Schema.check_value(fields[key], required[key])
+		if not problem.is_empty():
+			return '"%s" %s' % [key, problem]
+	for key: String in optional:
+		if fields.has(key):
+			var problem := Schema.check_value(fields[key], optional[key])
+			if not problem.is_empty():
+				return '"%s" %s' % [key, problem]
+	return ""
+
+
+static func _check_tuning(value: Variant) -> String:
+	if not value is Dictionary:
+		return '"tuning" must be an object { ... }'
+	var known := Schema.tuning_fields()
+	var tuning: Dictionary = value
+	for key: Variant in tuning.keys():
+		if not known.has(key):
+			return 'unknown tuning field "%s"' % key
+		var spec: Array = known[key]
+		var type_name := (
+			"vec2"
+			if int(spec[0]) == TYPE_VECTOR2
+			else ("int" if int(spec[0]) == TYPE_INT else "float")
+		)
+		var problem := Schema.check_value(tuning[key], [type_name, spec[1], spec[2]])
+		if not problem.is_empty():
+			return 'tuning "%s" %s' % [key, problem]
+	return ""
+
+
+static func _build(data: Dictionary) -> BoardLevel:
+	var level := BoardLevel.new()
+	var kind: String = data["kind"]
+	level.kind = BoardLevel.Kind.MAZE if kind == "maze" else BoardLevel.Kind.PACHINKO
+	for field: String in Schema.fields_for(kind):
+		if field in ["format", "format_version", "kind"]:
+			continue
+		level.set(field, _value_for(level.get(field), data[field]))
+	level.tuning = _build_tuning(level, data.get("tuning", {}))
+	if level.is_pachinko():
+		_build_pins(level, data.get("pins", []))
+		_build_pockets(level, data.get("pockets", []))
+	else:
+		level.walls = _points(data.get("walls", []), ["ax", "ay", "bx", "by"])
+		level.ball_starts = _points(data.get("ball_starts", []), ["x", "y"])
+		level.holes = _points(data.get("holes", []), ["x", "y"])
+	return level
+
+
+# A field takes the JSON value in the type the BoardLevel property has.
+static func _value_for(current: Variant, value: Variant) -> Variant:
+	if current is Vector2:
+		var pair: Array = value
+		return Vector2(float(pair[0]), float(pair[1]))
+	if current is int:
+		return int(value)
+	if current is float:
+		return float(value)
+	return value
+
+
+static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTuning:
+	var tuning := (
+		PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
+	)
+	for key: String in values:
+		tuning.set(key, _value_for(tuning.get(key), values[key]))
+	return tuning
+
+
+static func _build_pins(level: BoardLevel, items: Array) -> void:
+	var pins := PackedVector2Array()
+	var pockets := PackedInt32Array()
+	var special := PackedByteArray()
+	for item: Dictionary in items:
+		pins.append(Vector2(float(item["x"]), float(item["y"])))
+		pockets.append(int(item.get("pocket", -1)))
+		special.append(1 if item.get("special", false) else 0)
+	level.pins = pins
+	level.pin_pocket = pockets
+	level.pin_special = special
+
+
+static func _build_pockets(level: BoardLevel, items: Array) -> void:
+	var specs: Array[PocketSpec] = []
+	for item: Dictionary in items:
+		var at := Vector2(float(item["x"]), float(item["y"]))
+		specs.append(
+			PocketSpec.create(at, float(item["width"]), float(item["depth"]), int(item["payout"]))
+		)
+	level.pockets = specs
+
+
+static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:
+	var points := PackedVector2Array()
+	for item: Dictionary in items:
+		for i in range(0, keys.size(), 2):
+			points.append(Vector2(float(item[keys[i]]), float(item[keys[i + 1]])))
+	return points
+
+
+static func _error(message: String) -> Dictionary:
+	return {"error": message}

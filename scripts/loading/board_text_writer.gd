@@ -1,0 +1,135 @@
+extends RefCounted
+## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per line
+## in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a hole) in
+## the board's own order, coordinates rounded to 0.01 px. Adding a pin adds one line;
+## deleting one removes one line (no commas between lines to shift). The same board always gives the same text, so a save
+## that changes nothing writes nothing (see BoardFormatSaver).
+
+const Schema := preload("res://scripts/loading/board_schema.gd")
+## Coordinates and sizes are written to this precision (px).
+const PRECISION := 0.01
+const POINT_KEYS: Array[String] = ["x", "y"]
+const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
+
+
+## The file text for `level`.
+static func write(level: BoardLevel) -> String:
+	var kind := BoardLevel.kind_name(level.kind)
+	var lines := PackedStringArray()
+	lines.append(
+		(
+			'{"format": %s, "format_version": %d}'
+			% [JSON.stringify(Schema.FORMAT), Schema.FORMAT_VERSION]
+		)
+	)
+	lines.append('{"kind": %s}' % JSON.stringify(kind))
+	for field: String in Schema.fields_for(kind):
+		if field in ["format", "format_version", "kind"]:
+			continue
+		lines.append('{"%s": %s}' % [field, _value(level.get(field))])
+	lines.append('{"tuning": %s}' % _tuning(level.tuning))
+	if level.is_pachinko():
+		_append_items(lines, "pin", _pin_items(level))
+		_append_items(lines, "pocket", _pocket_items(level))
+	else:
+		_append_items(lines, "wall", _point_items(level.walls, WALL_KEYS))
+		_append_items(lines, "ball_start", _point_items(level.ball_starts, POINT_KEYS))
+		_append_items(lines, "hole", _point_items(level.holes, POINT_KEYS))
+	return "\n".join(lines) + "\n"
+
+
+## `number` rounded to PRECISION, written without trailing zeros ("12", "12.5", "-0.25").
+static func number(value: float) -> String:
+	var rounded := snappedf(value, PRECISION)
+	if rounded == 0.0:
+		return "0"  # never "-0"
+	if rounded == floorf(rounded) and absf(rounded) < 1e15:
+		return str(int(rounded))
+	return String.num(rounded, 2)
+
+
+static func _value(value: Variant) -> String:
+	if value is Vector2:
+		var v: Vector2 = value
+		return "[%s, %s]" % [number(v.x), number(v.y)]
+	if value is float:
+		return number(value)
+	return JSON.stringify(value)
+
+
+# Tuning constants keep full precision: they come from formulas (0.7 / 0.03²), and rounding
+# them would change how every board plays.
+static func _tuning(tuning: PhysicsTuning) -> String:
+	var parts := PackedStringArray()
+	var source := tuning if tuning != null else PhysicsTuning.new()
+	var names := Schema.tuning_fields().keys()
+	names.sort()
+	for name: String in names:
+		var value: Variant = source.get(name)
+		var text := ""
+		if value is Vector2:
+			var v: Vector2 = value
+			text = "[%s, %s]" % [_exact(v.x), _exact(v.y)]
+		else:
+			text = _exact(float(value)) if value is float else JSON.stringify(value)
+		parts.append('"%s": %s' % [name, text])
+	return "{" + ", ".join(parts) + "}"
+
+
+static func _exact(value: float) -> String:
+	if value == floorf(value) and absf(value) < 1e15:
+		return str(int(value))
+	return JSON.stringify(value, "", false, true)
+
+
+static func _append_items(lines: PackedStringArray, key: String, items: PackedStringArray) -> void:
+	for item in items:
+		lines.append('{"%s": %s}' % [key, item])
+
+
+static func _pin_items(level: BoardLevel) -> PackedStringArray:
+	var items := PackedStringArray()
+	for i in level.pins.size():
+		var pin := level.pins[i]
+		var text := '{"x": %s, "y": %s' % [number(pin.x), number(pin.y)]
+		var pocket := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
+		if pocket >= 0:
+			text += ', "pocket": %d' % pocket
+		if i < level.pin_special.size() and level.pin_special[i] != 0:
+			text += ', "special": true'
+		items.append(text + "}")
+	return items
+
+
+static func _pocket_items(level: BoardLevel) -> PackedStringArray:
+	var items := PackedStringArray()
+	for spec in level.pockets:
+		if spec == null:
+			continue
+		items.append(
+			(
+				'{"x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d}'
+				% [
+					number(spec.position.x),
+					number(spec.position.y),
+					number(spec.width),
+					number(spec.depth),
+					spec.payout
+				]
+			)
+		)
+	return items
+
+
+static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:
+	var items := PackedStringArray()
+	var per_item := int(keys.size() / 2.0)
+	for i in range(0, points.size() - per_item + 1, per_item):
+		var parts := PackedStringArray()
+		for k in per_item:
+			var p := points[i + k]
+			parts.append(
+				'"%s": %s, "%s": %s' % [keys[k * 2], number(p.x), keys[k * 2 + 1], number(p.y)]
+			)
+		items.append("{" + ", ".join(parts) + "}")
+	return items
