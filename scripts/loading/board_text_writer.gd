@@ -2,8 +2,8 @@ extends RefCounted
 ## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per line
 ## in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a hole) in
 ## the board's own order, coordinates rounded to 0.01 px. Adding a pin adds one line;
-## deleting one removes one line (no commas between lines to shift). The same board always gives the same text, so a save
-## that changes nothing writes nothing (see BoardFormatSaver).
+## deleting one removes one line (no commas between lines to shift). The same board always
+## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
 ## Coordinates and sizes are written to this precision (px).
