@@ -2,6 +2,7 @@
 # The windowed game under Xvfb, as `make play` starts it: it must still be running after
 # PLAY_SECONDS (5 unless set), print no crash, script error or library error, and render with
 # the GL stack tools/godot.sh promises (the prefix's own Mesa when the setup's Godot runs).
+# A child process that inherited the private library path shows up as "symbol lookup error".
 # Prints the WARNING and ERROR lines the game printed meanwhile (reported, not failed).
 # Exit status: 0 passed, 1 failed, 77 skipped (no Xvfb here: says so, never silently).
 set -uo pipefail
