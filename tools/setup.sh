@@ -191,6 +191,14 @@ install_extra() { # name pkg... : unpack extra sid packages into the prefix (Mes
 # `make shots`): the marker changed, so this runs once more there.
 install_gl_stack() {
 	[ -f "$PREFIX/$GL_STACK_MARK" ] && return 0
+	# several checkouts share the cache: one setup does this while the others wait
+	(
+		flock 9
+		[ -f "$PREFIX/$GL_STACK_MARK" ] || install_gl_stack_now
+	) 9>"$PREFIX.gl-lock"
+}
+
+install_gl_stack_now() {
 	local lib=$PREFIX/root/usr/lib/x86_64-linux-gnu
 	need_host_package patchelf patchelf
 	install_extra mesa "${MESA_PACKAGES[@]}"
@@ -303,8 +311,8 @@ main() {
 		echo "GODOT_PREFIX=$PREFIX"
 		echo "GDLINT=$bin/gdlint"
 		echo "GDFORMAT=$bin/gdformat"
-	} >"$ROOT/build/tools.env.part"
-	mv "$ROOT/build/tools.env.part" "$ROOT/build/tools.env"
+	} >"$ROOT/build/tools.env.$$" # one per process: parallel setups never share a half file
+	mv "$ROOT/build/tools.env.$$" "$ROOT/build/tools.env"
 	import_project "$godot"
 }
 
