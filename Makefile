@@ -16,8 +16,10 @@ play: setup
 		$(GODOT) --headless --path . -- --autoplay=maze --board=classic --seconds=120 --seed=1; \
 	fi
 
-## make test: lint, every GUT test headless, the editor smoke check; ends "N passed, N failed"
-test: setup
+## make test: lint, every GUT test headless, the editor smoke check, the game under Xvfb;
+## ends "N passed, N failed"
+test:
+	@tools/setup.sh test
 	@tools/run_tests.sh
 
 setup:

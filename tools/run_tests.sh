@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test run: lint, every GUT test headless (JUnit XML in build/), the headless
-# editor smoke check. Ends with one plain line "N passed, N failed"; exits non-zero when
-# anything failed or no test ran.
+# editor smoke check, the windowed game under Xvfb (tools/play_check.sh; skipped, and said
+# so, where Xvfb cannot be had). Ends with one plain line "N passed, N failed"; exits
+# non-zero when anything failed or no test ran.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -31,11 +32,19 @@ fi
 echo "== editor smoke check (plugin enabled, headless)"
 tools/editor_smoke.sh || extra_failed=$((extra_failed + 1))
 
+echo "== play check (the game window under Xvfb)"
+tools/play_check.sh
+play_status=$?
+if [ "$play_status" -ne 0 ] && [ "$play_status" -ne 77 ]; then
+	extra_failed=$((extra_failed + 1))
+fi
+
 read -r passed failed < <(python3 tools/junit_counts.py "$XML")
 failed=$((failed + extra_failed))
 if [ "$gut_status" -ne 0 ] && [ "$failed" -eq 0 ]; then
 	failed=1 # GUT failed without a readable report: never report green
 fi
+[ "$play_status" -ne 77 ] || echo "(the play check was SKIPPED: no Xvfb, see above)"
 echo "$passed passed, $failed failed"
 if [ "$passed" -eq 0 ] || [ "$failed" -ne 0 ]; then
 	exit 1

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Sets up everything the project needs, idempotently, and records where it put it.
 #
-#   tools/setup.sh            Godot 4.6+, GUT, gdtoolkit, the import step
-#   tools/setup.sh pictures   also Mesa for Godot and the host's Xvfb (make shots)
+#   tools/setup.sh            Godot 4.6+ (with its GL stack), GUT, gdtoolkit, the import step
+#   tools/setup.sh test       also the host's Xvfb for the play check, when it can be had
+#   tools/setup.sh pictures   also the host's Xvfb, required (make shots)
 #   tools/setup.sh export     also Debian's Linux export templates (make export)
 #
 # Godot: $GODOT, or `godot` on PATH, when it reports 4.6 or newer; otherwise Debian's own
 # build (sid) unpacked into a private prefix under the cache folder and patched to use its
-# own loader and libraries. Everything downloaded is staged and only moved into place once
-# it works, so an interrupted run never leaves a state the next run trusts.
+# own loader and libraries, sid's Mesa included (see tools/godot.sh for why). Everything
+# downloaded is staged and only moved into place once it works, so an interrupted run never
+# leaves a state the next run trusts.
 # Writes build/tools.env (GODOT=..., GDLINT=..., GDFORMAT=...) for the Makefile.
 set -euo pipefail
 
@@ -17,6 +19,12 @@ CACHE=${BOARD_STUDIO_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/board-studio}
 PREFIX=$CACHE/godot-4.6
 GUT_VERSION=9.6.0
 GDTOOLKIT_VERSION=4.5.0
+# sid's Mesa for the prefix's Godot: GLX and EGL through glvnd, llvmpipe and the hardware
+# drivers (all inside libgallium since Mesa 24.2). Bump GL_STACK_MARK when this changes.
+MESA_PACKAGES=(libgl1-mesa-dri libgl1 libegl1 libglx-mesa0 libegl-mesa0 libglvnd0 libglx0
+	libgbm1 libllvm22 libdrm2 libdrm-common libdrm-amdgpu1 libdrm-intel1 libvulkan1 libxcb-glx0
+	libxxf86vm1)
+GL_STACK_MARK=.gl-stack-1
 WANT=${1:-base}
 
 say() { printf 'setup: %s\n' "$*" >&2; }
@@ -29,9 +37,17 @@ version_ok() { # "4.6.3.stable..." -> true when major.minor >= 4.6
 	((major > 4 || (major == 4 && minor >= 6)))
 }
 
-need_host_package() { # command package
-	command -v "$1" >/dev/null 2>&1 && return 0
-	if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+host_has() { # command-or-file
+	command -v "$1" >/dev/null 2>&1 || [ -e "$1" ]
+}
+
+can_apt() {
+	[ "$(id -u)" = 0 ] && command -v apt-get >/dev/null
+}
+
+need_host_package() { # command-or-file package
+	host_has "$1" && return 0
+	if can_apt; then
 		say "installing host package $2"
 		apt-get update -qq >/dev/null 2>&1 || true
 		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$2" >/dev/null ||
@@ -39,6 +55,21 @@ need_host_package() { # command package
 	else
 		die "the host program '$1' is missing. Install the Debian package '$2' (sudo apt-get install $2), then run 'make setup' again."
 	fi
+}
+
+# The windowed checks need Xvfb, and Xvfb's GLX needs the host's own swrast driver.
+XVFB_NEEDS=(xvfb-run xvfb /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so libgl1-mesa-dri)
+
+need_xvfb() {
+	need_host_package "${XVFB_NEEDS[0]}" "${XVFB_NEEDS[1]}"
+	need_host_package "${XVFB_NEEDS[2]}" "${XVFB_NEEDS[3]}"
+}
+
+want_xvfb() { # like need_xvfb, but only says so when it cannot install them (not root)
+	if host_has "${XVFB_NEEDS[0]}" && host_has "${XVFB_NEEDS[2]}"; then return 0; fi
+	if can_apt; then need_xvfb; return 0; fi
+	say "no Xvfb here and no root to install it: make test will SKIP the windowed play check"
+	say "(to run it: sudo apt-get install ${XVFB_NEEDS[1]} ${XVFB_NEEDS[3]})"
 }
 
 apt_private() { # apt-get/apt-cache against sid, with the prefix's own lists
@@ -91,6 +122,21 @@ patch_binary() { # binary lib-dir
 		--set-rpath "$2:$2/pulseaudio" "$1"
 }
 
+# A library's own RUNPATH hides the binary's forced RPATH from that library's dependencies:
+# sid's libLLVM ($ORIGIN/../lib) then misses libxml2.so.16 and Mesa cannot load, and
+# libpulse's points at the host's pulseaudio folder. Pin them to the prefix (a forced RPATH
+# also reaches what they load), so no process needs LD_LIBRARY_PATH, which children inherit.
+# Each file is patched as a copy and renamed: a running Godot keeps the old file mapped.
+pin_library_paths() { # folder-to-scan final-lib-dir
+	local f path want="$2:$2/pulseaudio"
+	while IFS= read -r -d '' f; do
+		path=$(patchelf --print-rpath "$f" 2>/dev/null) || continue
+		case $path in '' | '$ORIGIN' | "$want") continue ;; esac
+		cp -p "$f" "$f.pin" && patchelf --force-rpath --set-rpath "$want" "$f.pin" &&
+			mv "$f.pin" "$f" || { rm -f "$f.pin"; die "patchelf could not patch $f."; }
+	done < <(find "$1" -type f -name '*.so*' -print0)
+}
+
 install_godot() {
 	need_host_package patchelf patchelf
 	apt_private_update
@@ -100,11 +146,7 @@ install_godot() {
 	local lib=$PREFIX/root/usr/lib/x86_64-linux-gnu # final location, baked into the rpath
 	cp "$stage/root/usr/bin/godot" "$stage/godot"
 	patch_binary "$stage/godot" "$lib"
-	local f
-	for f in "$stage"/root/usr/lib/x86_64-linux-gnu/libpulse.so.0.* \
-		"$stage"/root/usr/lib/x86_64-linux-gnu/libpulse-simple.so.0.*; do
-		[ -e "$f" ] && patchelf --set-rpath "$lib/pulseaudio:$lib" "$f"
-	done
+	pin_library_paths "$stage/root/usr/lib/x86_64-linux-gnu" "$lib"
 	rm -rf "$PREFIX"; mv "$stage" "$PREFIX"
 	local v
 	v=$("$PREFIX/godot" --headless --version 2>/dev/null | tail -n 1) || true
@@ -138,9 +180,39 @@ install_extra() { # name pkg... : unpack extra sid packages into the prefix (Mes
 	local stage=$PREFIX.extra-staging
 	rm -rf "$stage"; mkdir -p "$stage/root"
 	unpack_packages "$stage" exact "$@"
-	cp -a "$stage/root/." "$PREFIX/root/"
+	# unlink before copying: overwriting in place would corrupt a running Godot's libraries
+	cp -a --remove-destination "$stage/root/." "$PREFIX/root/"
 	rm -rf "$stage"
 	touch "$PREFIX/.extra-$name"
+}
+
+# Mesa from the same archive as the binary, patched like it. Also repairs a prefix whose
+# Mesa an older setup unpacked without pinning libLLVM (the `make play` crash after
+# `make shots`): the marker changed, so this runs once more there.
+install_gl_stack() {
+	[ -f "$PREFIX/$GL_STACK_MARK" ] && return 0
+	# several checkouts share the cache: one setup does this while the others wait
+	(
+		flock 9
+		[ -f "$PREFIX/$GL_STACK_MARK" ] || install_gl_stack_now
+	) 9>"$PREFIX.gl-lock"
+}
+
+install_gl_stack_now() {
+	local lib=$PREFIX/root/usr/lib/x86_64-linux-gnu
+	need_host_package patchelf patchelf
+	install_extra mesa "${MESA_PACKAGES[@]}"
+	say "pinning the prefix's libraries to the prefix (GL stack)"
+	pin_library_paths "$lib" "$lib"
+	local name missing
+	for name in libGL.so.1 libEGL.so.1 libGLX_mesa.so.0 libEGL_mesa.so.0; do
+		missing=$("$lib/ld-linux-x86-64.so.2" --library-path "$lib:$lib/pulseaudio" \
+			--list "$lib/$name" 2>&1 | grep -E 'not found|=> /(usr/)?lib/' || true)
+		[ -z "$missing" ] || die "sid's Mesa in $PREFIX needs libraries the prefix lacks" \
+			"($name: $(echo "$missing" | head -n 3 | tr -s '\n\t ' ' ')). Remove $PREFIX" \
+			"and run 'make setup' again to fetch a consistent set."
+	done
+	touch "$PREFIX/$GL_STACK_MARK"
 }
 
 install_gut() {
@@ -215,18 +287,16 @@ import_project() { # godot: rebuild the class cache when sources changed since t
 
 main() {
 	local godot bin
+	case $WANT in base | test | pictures | export) ;;
+	*) die "unknown setup part '$WANT' (use: base, test, pictures or export)." ;;
+	esac
 	godot=$(find_godot)
+	# a Godot of your own uses your own GL; ours always gets the Mesa it was built with
+	[ "$godot" != "$PREFIX/godot" ] || install_gl_stack
 	case $WANT in
-	pictures)
-		need_host_package xvfb-run xvfb
-		[ -e /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so ] ||
-			need_host_package /usr/lib/x86_64-linux-gnu/dri/swrast_dri.so libgl1-mesa-dri
-		if [ "$godot" = "$PREFIX/godot" ]; then
-			install_extra mesa libgl1-mesa-dri libgl1 libegl1 libglx-mesa0 libegl-mesa0 \
-				libglvnd0 libglx0 libgbm1 libllvm22 libdrm2 libdrm-common libdrm-amdgpu1 \
-				libdrm-intel1 libvulkan1 libxcb-glx0 libxxf86vm1
-		fi
-		;;
+	base) ;;
+	test) want_xvfb ;;
+	pictures) need_xvfb ;;
 	export)
 		need_host_package patchelf patchelf
 		install_extra templates godot-template-release godot-template-debug
@@ -241,8 +311,8 @@ main() {
 		echo "GODOT_PREFIX=$PREFIX"
 		echo "GDLINT=$bin/gdlint"
 		echo "GDFORMAT=$bin/gdformat"
-	} >"$ROOT/build/tools.env.part"
-	mv "$ROOT/build/tools.env.part" "$ROOT/build/tools.env"
+	} >"$ROOT/build/tools.env.$$" # one per process: parallel setups never share a half file
+	mv "$ROOT/build/tools.env.$$" "$ROOT/build/tools.env"
 	import_project "$godot"
 }
 
