@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Screenshots of the board editor in use: opens the Godot editor under Xvfb on a board
 # scene, selects its BoardNode, puts a tool to work (the plugin's shot hook, see
-# tools/shots/editor_shot_hook.gd), saves the editor window as a PNG and quits.
+# tools/shots/editor_shot_hook.gd), saves the editor window as a PNG through
+# tools/shots/shot_capture.gd (as the game's shots do) and quits.
 #   tools/editor_shots.sh                       both shots into build/shots/
 #   SIZE=1920x1080 tools/editor_shots.sh        another window size
 set -euo pipefail
@@ -11,6 +12,19 @@ SIZE=${SIZE:-1600x900}
 PACHINKO_SCENE=${PACHINKO_SCENE:-res://scenes/boards/pachinko_tulips.tscn}
 MAZE_SCENE=${MAZE_SCENE:-res://scenes/boards/maze_catacombs.tscn}
 mkdir -p build/shots
+# The shots edit a board and take the edit back, but the editor re-saves the board file in
+# its own layout: put the committed boards back afterwards.
+saved_levels=$(mktemp -d)
+cp -a levels/. "$saved_levels"
+restore_levels() {
+	local copy target
+	while IFS= read -r -d '' copy; do
+		target=levels/${copy#"$saved_levels"/}
+		cmp -s "$copy" "$target" || cp "$copy" "$target"
+	done < <(find "$saved_levels" -type f -print0)
+	rm -rf "$saved_levels"
+}
+trap restore_levels EXIT
 
 shoot() {
 	local scene=$1 tool=$2 out=$3 log
