@@ -29,8 +29,9 @@ level = ExtResource("2_level")
 SCENE
 	fi
 	BOARD_EDITOR_SELF_CHECK_PLAY=$([ "$kind" = maze ] && echo 1 || echo 0) \
-		BOARD_EDITOR_HOOK=res://tests/editor/self_check.gd BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" timeout 180 tools/godot.sh --headless \
-		--editor --path . >"$log" 2>&1
+		BOARD_EDITOR_HOOK=res://tests/editor/self_check.gd \
+		BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" \
+		timeout 180 tools/godot.sh --headless --editor --path . >"$log" 2>&1
 	if grep -q 'board editor self-check: ok' "$log" && ! grep -q 'SCRIPT ERROR' "$log"; then
 		echo "editor self-check ($kind): ok"
 	else

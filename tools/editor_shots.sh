@@ -30,7 +30,8 @@ shoot() {
 	local scene=$1 tool=$2 out=$3 log
 	log=build/editor-shot-${tool}.log
 	rm -f "build/shots/$out"
-	GODOT_PICTURES=1 BOARD_EDITOR_HOOK=res://tools/shots/editor_shot_hook.gd BOARD_EDITOR_SHOT="$scene;$tool;res://build/shots/$out" timeout 240 \
+	GODOT_PICTURES=1 BOARD_EDITOR_HOOK=res://tools/shots/editor_shot_hook.gd \
+		BOARD_EDITOR_SHOT="$scene;$tool;res://build/shots/$out" timeout 240 \
 		xvfb-run -a -s "-screen 0 ${SIZE}x24" tools/godot.sh --editor \
 		--rendering-driver opengl3 --resolution "$SIZE" --path . >"$log" 2>&1 || true
 	if [ ! -f "build/shots/$out" ]; then

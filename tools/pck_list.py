@@ -11,8 +11,8 @@ Reads the pack header and directory as Godot 4 writes them (little endian):
   at the directory: file count (u32), then per file: path length (u32, the path is
   zero-padded to it), path (UTF-8), offset from the file base (u64), size (u64), MD5 (16
   bytes), flags (u32). A pack embedded in an executable ends with its size (u64) and "GDPC".
-Patterns are shell globs (fnmatch) matched against paths without "res://"; a pattern that
-ends in "/*" also matches that folder's files at any depth.
+Patterns are shell globs (fnmatch, where "*" also crosses "/") matched against the paths
+as packed, without "res://": "tests/*" is everything under tests/.
 Exit status: 0 fine, 1 a forbidden path, 2 the file could not be read as a pack.
 """
 
@@ -127,12 +127,6 @@ def read_directory(reader: Reader, file_base: int, total: int) -> list:
     return entries
 
 
-def matches(path: str, pattern: str) -> bool:
-    if pattern.endswith("/*") and path.startswith(pattern[:-1]):
-        return True
-    return fnmatch.fnmatchcase(path, pattern)
-
-
 def dangling_classes(data: bytes, pack: Pack) -> list:
     """Scripts the packed class cache names that the pack does not hold (names only)."""
     cache = next((e for e in pack.entries if e.path == CLASS_CACHE), None)
@@ -197,7 +191,7 @@ def main(argv: list) -> int:
             "pck_list: note: the packed class cache names %d script(s) left out of the pack: %s"
             % (len(dangling), " ".join(dangling))
         )
-    forbidden = [e.path for e in files if any(matches(e.path, p) for p in args.forbid)]
+    forbidden = [e.path for e in files if any(fnmatch.fnmatchcase(e.path, p) for p in args.forbid)]
     for path in forbidden:
         print("pck_list: FORBIDDEN in the pack: %s" % path, file=sys.stderr)
     if forbidden:
