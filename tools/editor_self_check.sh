@@ -8,6 +8,19 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
 DIR=build/editor_self_check
 mkdir -p "$DIR"
+# The editor reopens the scenes of its last session and saves them when a scene runs: start
+# it with none open, and put the developer's session back afterwards.
+LAYOUT=.godot/editor/editor_layout.cfg
+saved_layout=$(mktemp)
+if [ -f "$LAYOUT" ]; then
+	cp "$LAYOUT" "$saved_layout"
+	sed -i '/^open_scenes=/d; /^current_scene=/d' "$LAYOUT"
+fi
+restore_layout() {
+	if [ -s "$saved_layout" ]; then cp "$saved_layout" "$LAYOUT"; else rm -f "$LAYOUT"; fi
+	rm -f "$saved_layout"
+}
+trap restore_layout EXIT
 status=0
 for kind in maze pachinko new; do
 	log=$DIR/$kind.log

@@ -12,24 +12,38 @@ SIZE=${SIZE:-1600x900}
 PACHINKO_SCENE=${PACHINKO_SCENE:-res://scenes/boards/pachinko_tulips.tscn}
 MAZE_SCENE=${MAZE_SCENE:-res://scenes/boards/maze_catacombs.tscn}
 mkdir -p build/shots
+# The editor reopens the scenes of its last session and saves them when a scene runs: start
+# it with none open for each shot, and put the developer's session back afterwards.
+LAYOUT=.godot/editor/editor_layout.cfg
+saved_layout=$(mktemp)
+[ -f "$LAYOUT" ] && cp "$LAYOUT" "$saved_layout"
+forget_open_scenes() {
+	[ ! -f "$LAYOUT" ] || sed -i '/^open_scenes=/d; /^current_scene=/d' "$LAYOUT"
+}
+restore_layout() {
+	if [ -s "$saved_layout" ]; then cp "$saved_layout" "$LAYOUT"; else rm -f "$LAYOUT"; fi
+	rm -f "$saved_layout"
+}
 # The shots edit a board and take the edit back, but the editor re-saves the board file in
 # its own layout: put the committed boards back afterwards.
 saved_levels=$(mktemp -d)
 cp -a levels/. "$saved_levels"
-restore_levels() {
+restore_files() {
 	local copy target
 	while IFS= read -r -d '' copy; do
 		target=levels/${copy#"$saved_levels"/}
 		cmp -s "$copy" "$target" || cp "$copy" "$target"
 	done < <(find "$saved_levels" -type f -print0)
 	rm -rf "$saved_levels"
+	restore_layout
 }
-trap restore_levels EXIT
+trap restore_files EXIT
 
 shoot() {
 	local scene=$1 tool=$2 out=$3 log
 	log=build/editor-shot-${tool}.log
 	rm -f "build/shots/$out"
+	forget_open_scenes
 	GODOT_PICTURES=1 BOARD_EDITOR_HOOK=res://tools/shots/editor_shot_hook.gd \
 		BOARD_EDITOR_SHOT="$scene;$tool;res://build/shots/$out" timeout 240 \
 		xvfb-run -a -s "-screen 0 ${SIZE}x24" tools/godot.sh --editor \
