@@ -38,7 +38,7 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		"maze_start":
 			await _wait(tree, 0.6)  # the note fades in
 		"maze_tilt":
-			# Right and a little down, as a player holding two arrow keys at part strength.
+			# Right and a little down, as a gamepad stick pushed part way.
 			_press_tilt(Vector2(0.9, 0.6))
 			await _wait(tree, 1.3)
 		"maze_win":
