@@ -8,6 +8,19 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
 DIR=build/editor_self_check
 mkdir -p "$DIR"
+# The editor reopens the scenes of its last session and saves them when a scene runs: start
+# it with none open, and put the developer's session back afterwards.
+LAYOUT=.godot/editor/editor_layout.cfg
+saved_layout=$(mktemp)
+if [ -f "$LAYOUT" ]; then
+	cp "$LAYOUT" "$saved_layout"
+	sed -i '/^open_scenes=/d; /^current_scene=/d' "$LAYOUT"
+fi
+restore_layout() {
+	if [ -s "$saved_layout" ]; then cp "$saved_layout" "$LAYOUT"; else rm -f "$LAYOUT"; fi
+	rm -f "$saved_layout"
+}
+trap restore_layout EXIT
 status=0
 for kind in maze pachinko new; do
 	log=$DIR/$kind.log
@@ -29,8 +42,9 @@ level = ExtResource("2_level")
 SCENE
 	fi
 	BOARD_EDITOR_SELF_CHECK_PLAY=$([ "$kind" = maze ] && echo 1 || echo 0) \
-		BOARD_EDITOR_HOOK=res://tests/editor/self_check.gd BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" timeout 180 tools/godot.sh --headless \
-		--editor --path . >"$log" 2>&1
+		BOARD_EDITOR_HOOK=res://tests/editor/self_check.gd \
+		BOARD_EDITOR_SELF_CHECK="res://$DIR/$kind.tscn" \
+		timeout 180 tools/godot.sh --headless --editor --path . >"$log" 2>&1
 	if grep -q 'board editor self-check: ok' "$log" && ! grep -q 'SCRIPT ERROR' "$log"; then
 		echo "editor self-check ($kind): ok"
 	else

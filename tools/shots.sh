@@ -1,25 +1,30 @@
 #!/usr/bin/env bash
 # Renders the main screens under Xvfb to build/shots/*.png (make shots runs setup first):
-# menus and pachinko (tools/shots/shot_runner.gd), the maze's own driver
-# (tools/shots/maze_shots.tscn), then the board editor in use (tools/editor_shots.sh).
-#   SHOTS_ONLY=menu tools/shots.sh    only the runner's shots whose names start with "menu"
-#   SIZE=1920x1080 tools/shots.sh     another window size
+# the menus, pachinko and the maze (tools/shots/shot_runner.gd), then the board editor in
+# use (tools/editor_shots.sh). Both save through tools/shots/shot_capture.gd.
+#   SHOTS_ONLY=menu tools/shots.sh    only the shots whose names start with "menu"
+#                                     (SHOTS_ONLY=editor: only the editor's two)
+#   SIZE=1920x1080 tools/shots.sh     another window size for the game's shots
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
 SIZE=${SIZE:-1280x720}
+ONLY=${SHOTS_ONLY:-}
 mkdir -p build/shots
 status=0
-run_picture() {
-	GODOT_PICTURES=1 timeout 300 xvfb-run -a -s "-screen 0 ${SIZE}x24" tools/godot.sh \
-		--rendering-driver opengl3 --resolution "$SIZE" --path . "$@"
-}
-run_picture -s res://tools/shots/shot_runner.gd || status=1
-if [ -z "${SHOTS_ONLY:-}" ] || [ "${SHOTS_ONLY}" = maze ]; then
-	run_picture res://tools/shots/maze_shots.tscn || status=1
+if [ "$ONLY" != editor ]; then
+	log=build/shots-game.log
+	if ! GODOT_PICTURES=1 SHOTS_ONLY="$ONLY" timeout 300 xvfb-run -a -s "-screen 0 ${SIZE}x24" \
+		tools/godot.sh --rendering-driver opengl3 --resolution "$SIZE" --path . \
+		-s res://tools/shots/shot_runner.gd >"$log" 2>&1; then
+		echo "shots: the game's shots failed (log: $log)" >&2
+		grep -E 'shots:|SCRIPT ERROR|ERROR' "$log" | head -20 >&2
+		status=1
+	else
+		grep -E '^shots:' "$log"
+	fi
 fi
-if [ -z "${SHOTS_ONLY:-}" ] || [ "${SHOTS_ONLY}" = editor ]; then
+if [ -z "$ONLY" ] || [ "$ONLY" = editor ]; then
 	tools/editor_shots.sh || status=1
 fi
-ls -1 build/shots/*.png
 exit $status

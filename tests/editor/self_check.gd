@@ -20,11 +20,6 @@ func _init(plugin: EditorPlugin) -> void:
 	_plugin = plugin
 
 
-## True when the editor was started for the self-check.
-static func requested() -> bool:
-	return not OS.get_environment(ENV).is_empty()
-
-
 func _ready() -> void:
 	_run.call_deferred()
 

@@ -2,11 +2,13 @@
 extends Node
 ## Screenshot hook for tools/editor_shots.sh. When the editor starts with
 ## BOARD_EDITOR_SHOT="<scene.tscn>;<tool>;<out.png>" it opens the scene, selects its
-## BoardNode, shows a tool in use, saves the editor window as a PNG and quits.
+## BoardNode, shows a tool in use, saves the editor window as a PNG (shot_capture.gd, the
+## same capture as the game's shots) and quits.
 ## Tools: "pattern" (pachinko: a lattice ghost and a selected pocket) or "wall" (maze:
 ## a wall being dragged in mirror mode).
 
 const ENV := "BOARD_EDITOR_SHOT"
+const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
@@ -16,11 +18,6 @@ var _plugin: EditorPlugin
 
 func _init(plugin: EditorPlugin) -> void:
 	_plugin = plugin
-
-
-## True when the editor was started to take a screenshot.
-static func requested() -> bool:
-	return not OS.get_environment(ENV).is_empty()
 
 
 func _ready() -> void:
@@ -61,14 +58,11 @@ func _run() -> void:
 	_frame_board(node as BoardNode)
 	await _frames(5)
 	_plugin.call("focus_issue", 0)
-	await _frames(20)
-	await RenderingServer.frame_post_draw
-	var image := EditorInterface.get_base_control().get_viewport().get_texture().get_image()
-	var error := image.save_png(parts[2])
+	var window := EditorInterface.get_base_control().get_viewport()
+	var error: Error = await ShotCapture.save(window, parts[2])
 	# Take the staged edit back so the board file is left as it was.
 	var manager := _plugin.get_undo_redo()
 	manager.get_history_undo_redo(manager.get_object_history_id(node)).undo()
-	print("editor shot: wrote %s (%s)" % [parts[2], error_string(error)])
 	get_tree().quit(0 if error == OK else 1)
 
 

@@ -1,97 +1,124 @@
-extends Node
-## Screenshot driver (`make shots` / Xvfb): plays the maze scene through four moments and
-## saves build/shots/maze_start.png, maze_tilt.png, maze_win.png, maze_lost.png.
-## Moments are staged through the rules (balls placed, tilt set), never by faking the view.
+extends RefCounted
+## The maze shots: "maze_start" the waiting board, "maze_tilt" the board mid-tilt under the
+## arrow keys, "maze_win" a board the autoplay's pilot solved, "maze_lost" hard mode with a
+## ball in a black hole. Each opens the game as the level select does (App.start_game) and
+## plays it with the player's own input actions or through the screen's rules
+## (MazeGame.rules); balls are never placed by hand.
 
-const GAME := preload("res://scenes/maze/maze_game.tscn")
-const OUT := "res://build/shots/"
-const SHOT_SETTINGS := "user://shots_settings.cfg"
-const SHOT_SAVE := "user://shots_save.cfg"
+const ShotCapture := preload("res://tools/shots/shot_capture.gd")
+const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const MazeGame := preload("res://scenes/maze/maze_game.gd")
+const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
+const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
+const BOARD := "res://levels/maze/classic.tres"
+## The shots this file takes, in order.
+const NAMES: Array[String] = ["maze_start", "maze_tilt", "maze_win", "maze_lost"]
+## Pilot seeds tried, and physics steps per try, before the win shot gives up.
+const WIN_ATTEMPTS := 10
+const WIN_MAX_STEPS := 14400
+## How long a tilt that should drop a ball into a hole may take.
+const LOSS_TIMEOUT := 5.0
 
 
-func _ready() -> void:
-	for arg in OS.get_cmdline_user_args():
-		if arg.begins_with("--size="):
-			var parts := arg.trim_prefix("--size=").split("x")
-			get_window().size = Vector2i(int(parts[0]), int(parts[1]))
-			await get_tree().process_frame
-	DirAccess.make_dir_recursive_absolute(ProjectSettings.globalize_path(OUT))
-	# Scratch player files: pictures must not touch the real best times.
-	DirAccess.remove_absolute(ProjectSettings.globalize_path(SHOT_SAVE))
-	App.load_player_files(SHOT_SETTINGS, SHOT_SAVE)
-	var game: Control = GAME.instantiate()
-	add_child(game)
-	await _settle(0.6)
-	await _save("maze_start")
-	var rules: MazeRules = game.get("rules")
-	# Mid-tilt: press the joystick head and drag it down-right with real mouse events.
-	var joystick: Control = game.get("_joystick")
-	# Events arrive in window pixels; the stretched canvas maps them back to UI units.
-	var head := get_viewport().get_final_transform() * joystick.get_global_rect().get_center()
-	_mouse_button(head, true)
-	await get_tree().process_frame
-	_mouse_button(head, false)
-	for i in 12:
-		_mouse_motion(head + Vector2(22.0, 16.0) * float(i + 1) / 12.0)
-		await get_tree().process_frame
-	await _settle(1.3)
-	await _save("maze_tilt")
-	# Win: let the autoplay's pilot play the live scene (the first seed that wins).
-	var pilot_script: GDScript = load("res://scripts/maze/autoplay/maze_pilot.gd")
-	for attempt in range(1, 11):
+## Opens the game, plays it into the moment of `shot_name` and saves it. OK or the reason
+## it failed.
+static func take(tree: SceneTree, shot_name: String) -> Error:
+	if not shot_name in NAMES:
+		printerr("shots: maze_shots has no shot '%s'" % shot_name)
+		return ERR_INVALID_PARAMETER
+	var game := await ScreenOpener.open(tree, App.start_game.bind("maze", BOARD), GAME_SCENE)
+	if game == null:
+		return ERR_CANT_OPEN
+	var rules := (game as MazeGame).rules
+	if rules == null:
+		printerr("shots: %s: the game has no rules (the board did not load)" % shot_name)
+		return ERR_CANT_OPEN
+	var staged := OK
+	match shot_name:
+		"maze_start":
+			await _wait(tree, 0.6)  # the note fades in
+		"maze_tilt":
+			# Right and a little down, as a gamepad stick pushed part way.
+			_press_tilt(Vector2(0.9, 0.6))
+			await _wait(tree, 1.3)
+		"maze_win":
+			staged = await _win(tree, rules)
+			await _wait(tree, 2.2)  # the board levels out and the note comes up
+		"maze_lost":
+			staged = await _lose(tree, rules)
+	if staged != OK:
+		return staged
+	var error: Error = await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
+	_release_tilt()
+	return error
+
+
+# Holds the tilt_* actions at `strength` (x right, y down), as arrow keys or a stick do;
+# the first tilt starts the game. They stay held until _release_tilt.
+static func _press_tilt(strength: Vector2) -> void:
+	if strength.x != 0.0:
+		Input.action_press("tilt_right" if strength.x > 0.0 else "tilt_left", absf(strength.x))
+	if strength.y != 0.0:
+		Input.action_press("tilt_down" if strength.y > 0.0 else "tilt_up", absf(strength.y))
+
+
+static func _release_tilt() -> void:
+	for action: StringName in [&"tilt_left", &"tilt_right", &"tilt_up", &"tilt_down"]:
+		Input.action_release(action)
+
+
+# Lets the autoplay's pilot play the live rules, one seed after another, until one wins.
+static func _win(tree: SceneTree, rules: MazeRules) -> Error:
+	for attempt in range(1, WIN_ATTEMPTS + 1):
 		rules.reset()
-		game.call("_start")
+		_press(&"game_start")
+		await tree.process_frame  # the game takes its input on the next frame
+		if not rules.is_playing():
+			printerr("shots: maze_win: the start key did not start the game")
+			return FAILED
 		var rng := RandomNumberGenerator.new()
 		rng.seed = attempt
-		var pilot: RefCounted = pilot_script.new(rules.level, false, rng, rules.step_seconds())
-		var guard := 0
-		while rules.is_playing() and guard < 14400:
-			var w := rules.world
-			rules.set_tilt(pilot.call("decide", w.get_positions(), w.get_velocities()))
+		var pilot := MazePilot.new(rules.level, false, rng, rules.step_seconds())
+		var steps := 0
+		while rules.is_playing() and steps < WIN_MAX_STEPS:
+			rules.set_tilt(pilot.decide(rules.world.get_positions(), rules.world.get_velocities()))
 			rules.step()
-			guard += 1
+			steps += 1
 		if rules.state == MazeRules.State.WON:
-			break
-	await _settle(2.2)
-	await _save("maze_win")
-	# Hard-mode loss: tilt right; the top-left ball rolls along the top row into a hole.
+			return OK
+	printerr("shots: maze_win: the pilot won none of %d tries" % WIN_ATTEMPTS)
+	return FAILED
+
+
+# Hard mode, then tilt right: on the classic board the top-left ball rolls along the top
+# row into a hole.
+static func _lose(tree: SceneTree, rules: MazeRules) -> Error:
 	rules.set_hard_mode(true)
-	_mouse_button(head, true)
-	await get_tree().process_frame
-	_mouse_motion(head + Vector2(16.0, -4.0))
+	await tree.process_frame
+	_press_tilt(Vector2(1.0, -0.25))
 	var waited := 0.0
-	while rules.is_playing() and waited < 5.0:
-		await get_tree().process_frame
-		waited += get_process_delta_time()
-	await _settle(2.2)
-	await _save("maze_lost")
-	get_tree().quit()
+	while not rules.is_over():
+		if waited >= LOSS_TIMEOUT:
+			_release_tilt()
+			printerr("shots: maze_lost: no ball fell into a hole in %.0f s" % LOSS_TIMEOUT)
+			return FAILED
+		await tree.process_frame
+		waited += tree.root.get_process_delta_time()
+	_release_tilt()
+	await _wait(tree, 2.2)  # the board levels out and the note comes up
+	return OK if rules.state == MazeRules.State.LOST else FAILED
 
 
-func _mouse_button(at: Vector2, down: bool) -> void:
-	var event := InputEventMouseButton.new()
-	event.button_index = MOUSE_BUTTON_LEFT
-	event.pressed = down
-	event.position = at
-	event.global_position = at
+# The player's key press for `action`, through the same input path a keyboard takes.
+static func _press(action: StringName) -> void:
+	var event := InputEventAction.new()
+	event.action = action
+	event.pressed = true
 	Input.parse_input_event(event)
+	var release := InputEventAction.new()
+	release.action = action
+	Input.parse_input_event(release)
 
 
-func _mouse_motion(at: Vector2) -> void:
-	var event := InputEventMouseMotion.new()
-	event.position = at
-	event.global_position = at
-	Input.parse_input_event(event)
-
-
-func _settle(seconds: float) -> void:
-	await get_tree().create_timer(seconds).timeout
-
-
-func _save(shot: String) -> void:
-	await RenderingServer.frame_post_draw
-	await RenderingServer.frame_post_draw
-	var image := get_viewport().get_texture().get_image()
-	var suffix := "" if image.get_width() == 1280 else "_%d" % image.get_width()
-	image.save_png(OUT + shot + suffix + ".png")
-	print("saved ", OUT + shot + suffix + ".png")
+static func _wait(tree: SceneTree, seconds: float) -> void:
+	await tree.create_timer(seconds).timeout

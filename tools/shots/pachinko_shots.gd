@@ -1,21 +1,44 @@
 extends RefCounted
-## Screenshot states for the game screen (tools/shots calls the scene's prepare_shot):
-## "pachinko_start" the instructions, "pachinko_play" many balls in play with the flipper
-## drawn back, "pachinko_win" the moment a pocket pays out, "pachinko_over" game over.
-## Each plays the real rules forward at 60 fps; nothing is faked.
+## The pachinko shots: "pachinko_start" the instructions, "pachinko_play" many balls in play
+## with the flipper drawn back, "pachinko_win" the moment a pocket pays out, "pachinko_over"
+## game over. Each opens the game as the level select does (App.start_game) and plays the
+## screen's own rules (PachinkoGame.rules) forward at 60 fps; nothing is faked.
 
+const ShotCapture := preload("res://tools/shots/shot_capture.gd")
+const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
+const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
+const BOARD := "res://levels/pachinko/classic.tres"
+## The shots this file takes, in order.
+const NAMES: Array[String] = ["pachinko_start", "pachinko_play", "pachinko_win", "pachinko_over"]
 const FRAME := 1.0 / 60.0
 
 
-## Plays `rules` into the state named `shot_name`.
-static func prepare(rules: PachinkoRules, shot_name: String) -> void:
+## Opens the game, plays it into the moment of `shot_name` and saves it. OK or the reason
+## it failed.
+static func take(tree: SceneTree, shot_name: String) -> Error:
+	if not shot_name in NAMES:
+		printerr("shots: pachinko_shots has no shot '%s'" % shot_name)
+		return ERR_INVALID_PARAMETER
+	var game := await ScreenOpener.open(tree, App.start_game.bind("pachinko", BOARD), GAME_SCENE)
+	if game == null:
+		return ERR_CANT_OPEN
+	var rules := (game as PachinkoGame).rules
+	if rules == null:
+		printerr("shots: %s: the game has no rules (the board did not load)" % shot_name)
+		return ERR_CANT_OPEN
 	match shot_name:
 		"pachinko_play":
 			_play(rules)
 		"pachinko_win":
-			_win(rules)
+			if not _win(rules):
+				printerr("shots: pachinko_win: no pocket paid out in 90 s of play")
+				return FAILED
 		"pachinko_over":
-			_over(rules)
+			if not _over(rules):
+				printerr("shots: pachinko_over: the game was still on after 240 s of play")
+				return FAILED
+	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 
 static func _play(rules: PachinkoRules) -> void:
@@ -24,14 +47,16 @@ static func _play(rules: PachinkoRules) -> void:
 		if rules.loaded and frame % 8 == 0:
 			rules.fire(20.0 + float(frame * 53 % 80))
 		rules.advance(FRAME)
+	# Grab the flipper and draw it back, as a held mouse button does.
 	rules.press_flipper(Vector2(0, 100))
 	rules.drag_to(Vector2(0, 35))
 
 
-static func _win(rules: PachinkoRules) -> void:
+# True once a pocket paid out (the win effect is then on screen).
+static func _win(rules: PachinkoRules) -> bool:
 	rules.start_game()
 	var won := [false]
-	var mark := func(_id: int, _p: int, _n: int, _at: Vector2) -> void: won[0] = true
+	var mark := func(_id: int, _pocket: int, _payout: int, _at: Vector2) -> void: won[0] = true
 	rules.ball_won.connect(mark)
 	for frame in 60 * 90:
 		if rules.state != PachinkoRules.State.PLAYING:
@@ -42,13 +67,16 @@ static func _win(rules: PachinkoRules) -> void:
 		if won[0]:
 			break
 	rules.ball_won.disconnect(mark)
+	return won[0]
 
 
-static func _over(rules: PachinkoRules) -> void:
+# True once the cup ran dry and the game ended (the summary is then on screen).
+static func _over(rules: PachinkoRules) -> bool:
 	rules.start_game()
 	for frame in 60 * 240:
-		if rules.state != PachinkoRules.State.PLAYING:
+		if rules.state == PachinkoRules.State.GAME_OVER:
 			break
 		if rules.loaded and frame % 30 == 0:
 			rules.fire(20.0 + float(frame * 53 % 80))
 		rules.advance(FRAME)
+	return rules.state == PachinkoRules.State.GAME_OVER

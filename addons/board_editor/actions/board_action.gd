@@ -7,7 +7,7 @@ extends RefCounted
 ## those fields back. Redo is `do()` again: the board is in the same state it was the first
 ## time, so the same change lands the same way.
 
-const Snapshot := preload("res://addons/board_editor/core/board_snapshot.gd")
+const Snapshot := preload("res://addons/board_editor/core/board_field_copy.gd")
 
 ## The board this action edits.
 var level: BoardLevel
