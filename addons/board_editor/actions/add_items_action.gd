@@ -1,5 +1,5 @@
 @tool
-extends "res://addons/board_editor/actions/board_action.gd"
+extends BoardAction
 ## Adds a set of things to a board: field pins, pockets (with their stamped rim pins and
 ## special pin), walls, black holes and ball starts. Placing, pasting and duplicating are
 ## all this action; `added` lists the new items so the editor can select them.

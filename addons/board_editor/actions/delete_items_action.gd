@@ -1,5 +1,5 @@
 @tool
-extends "res://addons/board_editor/actions/board_action.gd"
+extends BoardAction
 ## Removes items: pins, pockets (with their rim pins; the other pins' pocket indices are
 ## renumbered), walls, holes and ball starts. The goal cannot be removed, only moved.
 
