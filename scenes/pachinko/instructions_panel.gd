@@ -49,12 +49,11 @@ func show_start(level: BoardLevel) -> void:
 ## The game-over screen with the last game's numbers; `new_best` when it beat the record.
 func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best: bool) -> void:
 	_title.text = "New best!" if new_best else "Game over"
+	var shots: int = summary.get("game_shots", 0)
+	var paid: int = summary.get("game_payouts", 0)
 	var lines := PackedStringArray(
 		[
-			(
-				"[b]%d[/b] shots, [b]%d[/b] balls paid back by the pockets."
-				% [int(summary.get("game_shots", 0)), int(summary.get("game_payouts", 0))]
-			),
+			"[b]%d[/b] shots, [b]%d[/b] balls paid back by the pockets." % [shots, paid],
 		]
 	)
 	if best > 0:
