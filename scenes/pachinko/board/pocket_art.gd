@@ -66,13 +66,13 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 	draw_polyline(rim, PETAL_LIGHT, band * 0.3, true)
 	# Petals flaring out from the mouth.
 	for side: float in [-1.0, 1.0]:
-		var base := top + Vector2(side * half, -band * 0.3)
+		var root := top + Vector2(side * half, -band * 0.3)
 		var petal := PackedVector2Array(
 			[
-				base,
-				base + Vector2(side * half * 0.9, -half * 0.55),
-				base + Vector2(side * half * 0.35, -half * 0.95),
-				base + Vector2(-side * band * 0.2, -band * 0.6),
+				root,
+				root + Vector2(side * half * 0.9, -half * 0.55),
+				root + Vector2(side * half * 0.35, -half * 0.95),
+				root + Vector2(-side * band * 0.2, -band * 0.6),
 			]
 		)
 		draw_colored_polygon(petal, PETAL)
