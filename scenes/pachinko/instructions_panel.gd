@@ -5,15 +5,9 @@ extends Control
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 
-var _title: Label
-var _body: RichTextLabel
-var _footer: Label
-
-
-func _ready() -> void:
-	_title = get_node("Card/Margin/Box/Title") as Label
-	_body = get_node("Card/Margin/Box/Body") as RichTextLabel
-	_footer = get_node("Card/Margin/Box/Footer") as Label
+@onready var _title: Label = $Card/Margin/Box/Title
+@onready var _body: RichTextLabel = $Card/Margin/Box/Body
+@onready var _footer: Label = $Card/Margin/Box/Footer
 
 
 ## The first screen: how to play `level`.
