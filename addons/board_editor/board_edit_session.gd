@@ -63,7 +63,7 @@ func _init(on_level: BoardLevel = null) -> void:
 
 
 ## Records an action: runs it (unless a live preview already did) and keeps it undoable.
-func commit(action: RefCounted, already_applied := false) -> void:
+func commit(action: BoardAction, already_applied := false) -> void:
 	committer.call(action, already_applied)
 	prune_selection()
 	edited.emit()

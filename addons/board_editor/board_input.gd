@@ -77,7 +77,8 @@ func handle_key(key: InputEventKey) -> bool:
 		return true
 	if ARROWS.has(code) and not key.alt_pressed:
 		var scale := 10.0 if key.shift_pressed else 1.0
-		return Commands.nudge(session, (ARROWS[code] as Vector2) * scale)
+		var arrow: Vector2 = ARROWS[code]
+		return Commands.nudge(session, arrow * scale)
 	return false if key.echo else _toggle_key(key)
 
 

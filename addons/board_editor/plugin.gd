@@ -137,11 +137,11 @@ static func is_board_node(object: Object) -> bool:
 	return object is BoardNode
 
 
-func _commit(action: RefCounted, already_applied: bool) -> void:
+func _commit(action: BoardAction, already_applied: bool) -> void:
 	var history := get_undo_redo()
 	# The board node as context puts the step in the edited scene's history, so the scene
 	# is marked changed and Ctrl+Z in the scene undoes it.
-	history.create_action(str(action.call("get_name")), UndoRedo.MERGE_DISABLE, _node)
+	history.create_action(action.get_name(), UndoRedo.MERGE_DISABLE, _node)
 	history.add_do_method(action, "do")
 	history.add_undo_method(action, "undo")
 	history.commit_action(not already_applied)

@@ -166,6 +166,7 @@ static func _draw_maze(canvas: CanvasItem, level: BoardLevel, layers: int) -> vo
 			canvas.draw_circle(hole, level.hole_radius, HOLE_COLOR)
 	if layers & Layer.WALLS:
 		var half := level.wall_width * 0.5
+		@warning_ignore("integer_division")  # walls are stored as point pairs
 		for w in level.walls.size() / 2:
 			var a := level.walls[w * 2]
 			var b := level.walls[w * 2 + 1]

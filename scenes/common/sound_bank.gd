@@ -25,7 +25,7 @@ const FALLBACK_BUS := &"Master"
 const IMPACT_QUIET_DB := -26.0
 const IMPACT_LOUD_DB := -2.0
 
-static var _cache: Dictionary = {}
+static var _cache: Dictionary[StringName, AudioStreamWAV] = {}
 
 ## Voices playing at once; the oldest is cut when all are busy.
 @export var voices: int = 12
@@ -34,7 +34,7 @@ static var _cache: Dictionary = {}
 
 var _players: Array[AudioStreamPlayer] = []
 var _next_voice := 0
-var _last_impact_ms: Dictionary = {}
+var _last_impact_ms: Dictionary[StringName, int] = {}
 var _played := 0
 
 

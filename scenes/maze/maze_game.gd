@@ -7,6 +7,11 @@ extends Control
 const Palette := preload("res://scenes/maze/maze_palette.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
+const MazeStage := preload("res://scenes/maze/maze_stage.gd")
+const MazeBoardView := preload("res://scenes/maze/maze_board_view.gd")
+const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
+const MazeNote := preload("res://scenes/maze/maze_note.gd")
+const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.tres"
@@ -24,11 +29,11 @@ var _sounds: SoundBank
 var _load_problem := ""
 var _goal_count := 0
 
-@onready var _stage: Node3D = $Stage
+@onready var _stage: MazeStage = $Stage
 @onready var _canvas: SubViewport = $BoardCanvas
-@onready var _board_view: Node2D = $BoardCanvas/BoardView
-@onready var _joystick: Control = %Joystick
-@onready var _note: VBoxContainer = %Note
+@onready var _board_view: MazeBoardView = $BoardCanvas/BoardView
+@onready var _joystick: MazeJoystick = %Joystick
+@onready var _note: MazeNote = %Note
 @onready var _title: Label = %Title
 @onready var _mode: Label = %Mode
 @onready var _timer: Label = %Timer
@@ -200,8 +205,9 @@ func _add_optional_scene(path: String) -> void:
 	var packed: PackedScene = load(path)
 	var node := packed.instantiate()
 	add_child(node)
-	if node.has_signal("restart_requested"):
-		node.connect("restart_requested", _on_restart_requested)
+	var pause_menu := node as PauseMenu
+	if pause_menu != null:
+		pause_menu.restart_requested.connect(_on_restart_requested)
 
 
 func _controls_text() -> String:
@@ -229,4 +235,4 @@ static func _key(action: String) -> String:
 
 static func _format_time(seconds: float) -> String:
 	var whole := int(seconds)
-	return "%d:%02d.%d" % [whole / 60, whole % 60, int(fmod(seconds, 1.0) * 10.0)]
+	return "%d:%02d.%d" % [floori(seconds / 60.0), whole % 60, int(fmod(seconds, 1.0) * 10.0)]

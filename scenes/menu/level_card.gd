@@ -54,14 +54,14 @@ func setup(result: BoardLoadResult, best: String) -> void:
 
 
 func _add_label(
-	box: VBoxContainer, text: String, variation: StringName, wrap := false, lines := 3
+	box: VBoxContainer, words: String, variation: StringName, wraps := false, lines := 3
 ) -> void:
 	var label := Label.new()
-	label.text = text
+	label.text = words
 	label.theme_type_variation = variation
 	label.mouse_filter = Control.MOUSE_FILTER_IGNORE
 	label.text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS
-	if wrap:
+	if wraps:
 		label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 		label.max_lines_visible = lines
 		label.size_flags_vertical = Control.SIZE_EXPAND_FILL

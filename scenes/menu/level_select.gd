@@ -82,8 +82,9 @@ func _best_text(result: BoardLoadResult) -> String:
 		if seconds <= 0.0:
 			return ""
 		# the same m:ss.t the maze's own clock shows
+		var minutes := floori(seconds / 60.0)
 		var whole := int(seconds)
-		return "Best time: %d:%02d.%d" % [whole / 60, whole % 60, int(fmod(seconds, 1.0) * 10.0)]
+		return "Best time: %d:%02d.%d" % [minutes, whole % 60, int(fmod(seconds, 1.0) * 10.0)]
 	var balls := App.best_pachinko_balls(board_id)
 	return "Best: %d balls won" % balls if balls >= 0 else ""
 

@@ -6,6 +6,8 @@ extends Control
 ## The screen closed (it frees itself right after).
 signal closed
 
+const BindingList := preload("res://scenes/menu/binding_list.gd")
+
 @onready var _master: HSlider = %MasterSlider
 @onready var _sfx: HSlider = %SfxSlider
 @onready var _tilt: HSlider = %TiltSlider
@@ -14,7 +16,7 @@ signal closed
 @onready var _tilt_value: Label = %TiltValue
 @onready var _fullscreen: Button = %FullscreenCheck
 @onready var _frame_counter: Button = %FrameCounterCheck
-@onready var _bindings: GridContainer = %Bindings
+@onready var _bindings: BindingList = %Bindings
 @onready var _defaults: Button = %DefaultsButton
 @onready var _back: Button = %BackButton
 @onready var _backdrop: Control = $Backdrop
@@ -41,7 +43,7 @@ func _ready() -> void:
 
 
 func _unhandled_input(event: InputEvent) -> void:
-	if _bindings.call("is_capturing"):
+	if _bindings.is_capturing():
 		return
 	if event.is_action_pressed("ui_cancel") or event.is_action_pressed("pause"):
 		close()
@@ -104,5 +106,5 @@ func _mark_row_on_focus(control: Control) -> void:
 func _on_defaults_pressed() -> void:
 	App.settings.restore_default_bindings()
 	App.settings.apply()
-	_bindings.call("rebuild")
+	_bindings.rebuild()
 	_defaults.grab_focus()

@@ -20,15 +20,15 @@ func _ready() -> void:
 	texture = _painted
 
 
-## The backdrop picture at `size` pixels.
-static func paint(size: Vector2i) -> Image:
-	var image := Image.create_empty(size.x, size.y, false, Image.FORMAT_RGB8)
-	for y in size.y:
-		var t := float(y) / float(size.y - 1)
+## The backdrop picture at `pixels` (width, height).
+static func paint(pixels: Vector2i) -> Image:
+	var image := Image.create_empty(pixels.x, pixels.y, false, Image.FORMAT_RGB8)
+	for y in pixels.y:
+		var t := float(y) / float(pixels.y - 1)
 		var base := TOP.lerp(BOTTOM, t)
-		for x in size.x:
+		for x in pixels.x:
 			# Six soft diagonal bands of light, leaning left as they go down.
-			var u := (float(x) + float(y) * 1.1) / float(size.x) * 6.0
+			var u := (float(x) + float(y) * 1.1) / float(pixels.x) * 6.0
 			var band := maxf(0.0, 1.0 - absf(fposmod(u, 1.0) - 0.5) * 8.0) * 0.025
 			image.set_pixel(x, y, base.lightened(band))
 	return image

@@ -5,15 +5,9 @@ extends Control
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 
-var _title: Label
-var _body: RichTextLabel
-var _footer: Label
-
-
-func _ready() -> void:
-	_title = get_node("Card/Margin/Box/Title") as Label
-	_body = get_node("Card/Margin/Box/Body") as RichTextLabel
-	_footer = get_node("Card/Margin/Box/Footer") as Label
+@onready var _title: Label = $Card/Margin/Box/Title
+@onready var _body: RichTextLabel = $Card/Margin/Box/Body
+@onready var _footer: Label = $Card/Margin/Box/Footer
 
 
 ## The first screen: how to play `level`.
@@ -49,12 +43,11 @@ func show_start(level: BoardLevel) -> void:
 ## The game-over screen with the last game's numbers; `new_best` when it beat the record.
 func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best: bool) -> void:
 	_title.text = "New best!" if new_best else "Game over"
+	var shots: int = summary.get("game_shots", 0)
+	var paid: int = summary.get("game_payouts", 0)
 	var lines := PackedStringArray(
 		[
-			(
-				"[b]%d[/b] shots, [b]%d[/b] balls paid back by the pockets."
-				% [int(summary.get("game_shots", 0)), int(summary.get("game_payouts", 0))]
-			),
+			"[b]%d[/b] shots, [b]%d[/b] balls paid back by the pockets." % [shots, paid],
 		]
 	)
 	if best > 0:

@@ -6,6 +6,11 @@ extends Control
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
+const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
+const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
+const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
+const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
+const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -20,25 +25,25 @@ var _stats_refresh := 0.0
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
-@onready var cup: Control = $Hud/Column/Cup
-@onready var launcher: Control = $Hud/Column/Launcher
-@onready var stats_panel: PanelContainer = $Hud/Column/Stats
+@onready var cup: CupDisplay = $Hud/Column/Cup
+@onready var launcher: LauncherPanel = $Hud/Column/Launcher
+@onready var stats_panel: StatsPanel = $Hud/Column/Stats
 @onready var title: Label = $Hud/Column/Title
 @onready var notes: Label = $Hud/Column/Notes
-@onready var instructions: Control = $Instructions
+@onready var instructions: InstructionsPanel = $Instructions
 @onready var sounds: SoundBank = $Sounds
-@onready var pause_menu: CanvasLayer = $PauseMenu
+@onready var pause_menu: PauseMenu = $PauseMenu
 
 
 func _ready() -> void:
-	pause_menu.connect("restart_requested", restart)
+	pause_menu.restart_requested.connect(restart)
 	var path := App.current_board_path("pachinko")
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
 		var problem := loaded.error if loaded.level == null else "%s is not a pachinko board" % path
 		push_error("Pachinko: %s" % problem)
 		title.text = "No board"
-		instructions.call("show_problem", problem)
+		instructions.show_problem(problem)
 		return
 	_level = loaded.level
 	(
@@ -55,7 +60,7 @@ func _ready() -> void:
 			]
 		)
 	)
-	launcher.connect("flipper_pressed", _on_flipper_pressed)
+	launcher.flipper_pressed.connect(_on_flipper_pressed)
 	get_viewport().size_changed.connect(_layout)
 	_new_rules()
 	_layout()
@@ -66,11 +71,11 @@ func _process(delta: float) -> void:
 		return
 	_controls.poll(rules, delta)
 	rules.advance(delta)
-	launcher.call("set_blocked", rules.loaded and rules.rail_blocked())
+	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:
 		_stats_refresh = 0.25
-		stats_panel.call("show_stats", rules.stats())
+		stats_panel.show_stats(rules.stats())
 
 
 func _input(event: InputEvent) -> void:
@@ -116,20 +121,19 @@ func _new_rules() -> void:
 	board_view.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
-	cup.call("set_count", 0)
-	launcher.call("set_power", 0.0, 0.0)
-	launcher.call("set_loaded", false)
+	cup.set_count(0)
+	launcher.set_power(0.0, 0.0)
+	launcher.set_loaded(false)
 	var charge_key := PachinkoInput.key_name(&"launch_charge", "the charge key")
-	launcher.call(
-		"set_hint",
+	launcher.set_hint(
 		(
 			"Press the red grip and\ndrag it up to draw back,\nor hold %s.\nLet go to fire."
 			% charge_key
 		)
 	)
 	_show_notes()
-	stats_panel.call("show_stats", rules.stats())
-	instructions.call("show_start", _level)
+	stats_panel.show_stats(rules.stats())
+	instructions.show_start(_level)
 
 
 func _show_notes() -> void:
@@ -185,52 +189,52 @@ func _on_flipper_pressed(at: Vector2) -> void:
 func _on_state_changed(state: PachinkoRules.State) -> void:
 	if state == PachinkoRules.State.PLAYING:
 		instructions.visible = false
-	launcher.call("set_loaded", rules.loaded)
+	launcher.set_loaded(rules.loaded)
 
 
 func _on_game_ended(summary: Dictionary) -> void:
-	var paid := int(summary.get("game_payouts", 0))
+	var paid: int = summary.get("game_payouts", 0)
 	var new_best := App.record_pachinko_balls(_level.board_id, paid)
 	var best := App.best_pachinko_balls(_level.board_id)
-	instructions.call("show_game_over", _level, summary, best, new_best)
+	instructions.show_game_over(_level, summary, best, new_best)
 	_show_notes()
 	sounds.play(SoundBank.GAME_OVER)
 
 
 func _on_cup_changed(count: int) -> void:
-	cup.call("set_count", count)
+	cup.set_count(count)
 
 
 func _on_power_changed(power: float) -> void:
-	launcher.call("set_power", power, rules.flipper_degrees())
+	launcher.set_power(power, rules.flipper_degrees())
 
 
 func _on_loaded_changed() -> void:
-	launcher.call("set_loaded", true)
+	launcher.set_loaded(true)
 
 
 func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
-	launcher.call("set_loaded", rules.loaded)
+	launcher.set_loaded(rules.loaded)
 	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
 
 
 func _on_ball_won(_id: int, pocket: int, payout: int, at: Vector2) -> void:
-	board_view.pockets.call("celebrate", pocket)
-	board_view.effects.call("pocket_win", at, payout)
+	board_view.pockets.celebrate(pocket)
+	board_view.effects.pocket_win(at, payout)
 	sounds.play(SoundBank.POCKET_WIN)
-	launcher.call("set_loaded", rules.loaded)
+	launcher.set_loaded(rules.loaded)
 
 
 func _on_ball_drained(_id: int) -> void:
-	board_view.gutter.call("flash")
+	board_view.gutter.flash()
 	sounds.play(SoundBank.DRAIN, -6.0)
 
 
 func _on_ball_returned(_id: int) -> void:
 	var at := LaunchRail.return_zone_center(_level)
-	board_view.effects.call("note", at + Vector2(-40, 0), "back to cup", Color("bfe3ff"))
+	board_view.effects.note(at + Vector2(-40, 0), "back to cup", Color("bfe3ff"))
 	sounds.play(SoundBank.BALL_RETURN, -4.0)
-	launcher.call("set_loaded", rules.loaded)
+	launcher.set_loaded(rules.loaded)
 
 
 func _on_pin_hit(_ball: int, _pin: int, speed: float) -> void:

@@ -1,5 +1,5 @@
 @tool
-extends "res://addons/board_editor/actions/board_action.gd"
+extends BoardAction
 ## Adds a set of things to a board: field pins, pockets (with their stamped rim pins and
 ## special pin), walls, black holes and ball starts. Placing, pasting and duplicating are
 ## all this action; `added` lists the new items so the editor can select them.
@@ -50,7 +50,8 @@ func _apply() -> void:
 	pin_special.resize(pins.size())
 	for i in range(level.pin_pocket.size(), pins.size()):
 		pin_pocket[i] = -1
-	for point in _data.get("pins", PackedVector2Array()) as PackedVector2Array:
+	var new_pins: PackedVector2Array = _data.get("pins", PackedVector2Array())
+	for point in new_pins:
 		added.append(Items.make(Items.Kind.PIN, pins.size()))
 		pins.append(point)
 		pin_pocket.append(-1)
@@ -80,14 +81,15 @@ func _apply() -> void:
 func _append_walls(walls: PackedVector2Array) -> PackedVector2Array:
 	var extra: PackedVector2Array = _data.get("walls", PackedVector2Array())
 	for i in range(0, extra.size() - 1, 2):
-		added.append(Items.make(Items.Kind.WALL, walls.size() / 2))
+		added.append(Items.make(Items.Kind.WALL, Items.wall_count(walls)))
 		walls.append(extra[i])
 		walls.append(extra[i + 1])
 	return walls
 
 
 func _append_points(points: PackedVector2Array, key: String, kind: int) -> PackedVector2Array:
-	for point in _data.get(key, PackedVector2Array()) as PackedVector2Array:
+	var new_points: PackedVector2Array = _data.get(key, PackedVector2Array())
+	for point in new_points:
 		added.append(Vector2i(kind, points.size()))
 		points.append(point)
 	return points

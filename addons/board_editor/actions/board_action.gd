@@ -1,4 +1,5 @@
 @tool
+class_name BoardAction
 extends RefCounted
 ## Base of every board edit: a plain object with `do()`, `undo()` and `get_name()`, so the
 ## plugin commits it through EditorUndoRedoManager and tests drive it with no editor.

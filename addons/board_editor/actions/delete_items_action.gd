@@ -1,5 +1,5 @@
 @tool
-extends "res://addons/board_editor/actions/board_action.gd"
+extends BoardAction
 ## Removes items: pins, pockets (with their rim pins; the other pins' pocket indices are
 ## renumbered), walls, holes and ball starts. The goal cannot be removed, only moved.
 
@@ -51,10 +51,10 @@ func _apply() -> void:
 	level.pin_special = pin_special
 	var walls := PackedVector2Array()
 	var gone_walls := Items.indices_of(_items, Items.Kind.WALL)
-	for i in range(0, level.walls.size() - 1, 2):
-		if not gone_walls.has(i / 2):
-			walls.append(level.walls[i])
-			walls.append(level.walls[i + 1])
+	for w in Items.wall_count(level.walls):
+		if not gone_walls.has(w):
+			walls.append(level.walls[w * 2])
+			walls.append(level.walls[w * 2 + 1])
 	level.walls = walls
 	level.holes = _without(level.holes, Items.indices_of(_items, Items.Kind.HOLE))
 	level.ball_starts = _without(level.ball_starts, Items.indices_of(_items, Items.Kind.START))

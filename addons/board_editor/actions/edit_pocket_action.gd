@@ -1,5 +1,5 @@
 @tool
-extends "res://addons/board_editor/actions/board_action.gd"
+extends BoardAction
 ## Changes a pocket's width, depth and payout and stamps its rim pins and special pin again
 ## so the pins always match the numbers in the inspector.
 

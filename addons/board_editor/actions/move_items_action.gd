@@ -1,5 +1,5 @@
 @tool
-extends "res://addons/board_editor/actions/board_action.gd"
+extends BoardAction
 ## Moves items by an offset: a pocket takes its rim pins along, a wall both ends. In mirror
 ## mode the partners move by the reflected offset and items on the axis only vertically.
 ## A drag calls `preview()` on every mouse move and is committed once on release.

@@ -28,8 +28,8 @@ func _init(
 ## error naming the problem).
 static func points_for(settings: Dictionary, origin: Vector2) -> PackedVector2Array:
 	var kind := str(settings.get("kind", "row"))
-	var count := int(settings.get("count", 0))
-	var spacing := float(settings.get("spacing", 0.0))
+	var count: int = settings.get("count", 0)
+	var spacing: float = settings.get("spacing", 0.0)
 	if count < 1 or spacing <= 0.0 or not KINDS.has(kind):
 		push_error(
 			(
@@ -43,13 +43,15 @@ static func points_for(settings: Dictionary, origin: Vector2) -> PackedVector2Ar
 			var half := Vector2((count - 1) * spacing * 0.5, 0)
 			return PinPatterns.row(origin - half, origin + half, count)
 		"lattice":
-			var rows := maxi(int(settings.get("rows", 1)), 1)
+			var wanted_rows: int = settings.get("rows", 1)
+			var rows := maxi(wanted_rows, 1)
 			# Equilateral stagger: every pin is `spacing` from its six neighbours.
 			var pitch := Vector2(spacing, spacing * sqrt(3.0) * 0.5)
-			var size := Vector2((count - 1) * pitch.x, (rows - 1) * pitch.y)
-			return PinPatterns.staggered_lattice(Rect2(origin - size * 0.5, size), pitch)
+			var extent := Vector2((count - 1) * pitch.x, (rows - 1) * pitch.y)
+			return PinPatterns.staggered_lattice(Rect2(origin - extent * 0.5, extent), pitch)
 		"arc":
-			var radius := maxf(float(settings.get("radius", spacing)), spacing * 0.5)
+			var wanted_radius: float = settings.get("radius", spacing)
+			var radius := maxf(wanted_radius, spacing * 0.5)
 			var step := rad_to_deg(2.0 * asin(minf(spacing / (2.0 * radius), 1.0)))
 			var span := step * (count - 1)
 			return PinPatterns.arc(origin, radius, -90.0 - span * 0.5, -90.0 + span * 0.5, count)

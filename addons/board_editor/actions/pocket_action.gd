@@ -16,7 +16,8 @@ func _init(
 	mirror_axis: float = NAN
 ) -> void:
 	var data := Items.empty_set()
-	(data["pockets"] as Array).append(PocketSpec.create(mouth, width, depth, payout))
+	var pockets: Array = data["pockets"]
+	pockets.append(PocketSpec.create(mouth, width, depth, payout))
 	if not is_nan(mirror_axis):
 		data = Mirror.mirror_set(data, mirror_axis)
 	super(on_level, data, "Add pocket")

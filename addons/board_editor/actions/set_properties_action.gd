@@ -1,5 +1,5 @@
 @tool
-extends "res://addons/board_editor/actions/board_action.gd"
+extends BoardAction
 ## Sets board fields to new values: the ring and launch-rail handles, the goal, board
 ## settings. A handle drag calls `preview()` while moving and is committed once.
 

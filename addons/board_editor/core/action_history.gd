@@ -3,14 +3,14 @@ extends RefCounted
 ## A plain undo stack for board actions, used where there is no editor: tests and the
 ## script that builds the shipped boards. In the editor, EditorUndoRedoManager does this.
 
-var _done: Array[RefCounted] = []
-var _undone: Array[RefCounted] = []
+var _done: Array[BoardAction] = []
+var _undone: Array[BoardAction] = []
 
 
 ## Records an action; runs it first unless a live preview has already applied it.
-func commit(action: RefCounted, already_applied := false) -> void:
+func commit(action: BoardAction, already_applied := false) -> void:
 	if not already_applied:
-		action.call("do")
+		action.do()
 	_done.append(action)
 	_undone.clear()
 
@@ -19,8 +19,8 @@ func commit(action: RefCounted, already_applied := false) -> void:
 func undo() -> bool:
 	if _done.is_empty():
 		return false
-	var action: RefCounted = _done.pop_back()
-	action.call("undo")
+	var action: BoardAction = _done.pop_back()
+	action.undo()
 	_undone.append(action)
 	return true
 
@@ -29,8 +29,8 @@ func undo() -> bool:
 func redo() -> bool:
 	if _undone.is_empty():
 		return false
-	var action: RefCounted = _undone.pop_back()
-	action.call("do")
+	var action: BoardAction = _undone.pop_back()
+	action.do()
 	_done.append(action)
 	return true
 
@@ -39,5 +39,5 @@ func redo() -> bool:
 func names() -> PackedStringArray:
 	var result := PackedStringArray()
 	for action in _done:
-		result.append(str(action.call("get_name")))
+		result.append(action.get_name())
 	return result

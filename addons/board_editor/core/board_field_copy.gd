@@ -42,11 +42,15 @@ static func restore(level: BoardLevel, snap: Dictionary) -> void:
 static func _copy(value: Variant) -> Variant:
 	match typeof(value):
 		TYPE_PACKED_VECTOR2_ARRAY:
-			return (value as PackedVector2Array).duplicate()
+			var points: PackedVector2Array = value
+			return points.duplicate()
 		TYPE_PACKED_INT32_ARRAY:
-			return (value as PackedInt32Array).duplicate()
+			var numbers: PackedInt32Array = value
+			return numbers.duplicate()
 		TYPE_PACKED_BYTE_ARRAY:
-			return (value as PackedByteArray).duplicate()
+			var bytes: PackedByteArray = value
+			return bytes.duplicate()
 		TYPE_ARRAY:
-			return (value as Array).duplicate()
+			var items: Array = value
+			return items.duplicate()
 	return value

@@ -17,6 +17,13 @@ static func make(kind: Kind, index: int) -> Vector2i:
 	return Vector2i(kind, index)
 
 
+## How many walls `points` holds: each wall is two points in a row; a lone last point is
+## not a wall.
+static func wall_count(points: PackedVector2Array) -> int:
+	@warning_ignore("integer_division")  # whole walls only
+	return points.size() / 2
+
+
 ## The point that represents an item: a centre, a pocket's mouth, a wall's midpoint.
 static func position_of(level: BoardLevel, item: Vector2i) -> Vector2:
 	match item.x:
@@ -44,7 +51,7 @@ static func is_valid(level: BoardLevel, item: Vector2i) -> bool:
 		Kind.POCKET:
 			return item.y < level.pockets.size()
 		Kind.WALL:
-			return item.y < level.walls.size() / 2
+			return item.y < wall_count(level.walls)
 		Kind.HOLE:
 			return item.y < level.holes.size()
 		Kind.START:
@@ -122,8 +129,9 @@ static func offset_set(data: Dictionary, offset: Vector2) -> Dictionary:
 		var target: PackedVector2Array = moved[key]
 		for point in source:
 			target.append(point + offset)
+	var moved_pockets: Array = moved["pockets"]
 	for spec: PocketSpec in data.get("pockets", []):
-		(moved["pockets"] as Array).append(
+		moved_pockets.append(
 			PocketSpec.create(spec.position + offset, spec.width, spec.depth, spec.payout)
 		)
 	return moved
@@ -131,7 +139,10 @@ static func offset_set(data: Dictionary, offset: Vector2) -> Dictionary:
 
 ## How many things an item set holds.
 static func set_size(data: Dictionary) -> int:
-	var total := (data.get("walls", PackedVector2Array()) as PackedVector2Array).size() / 2
+	var walls: PackedVector2Array = data.get("walls", PackedVector2Array())
+	var total := wall_count(walls)
 	for key: String in ["pins", "holes", "starts"]:
-		total += (data.get(key, PackedVector2Array()) as PackedVector2Array).size()
-	return total + (data.get("pockets", []) as Array).size()
+		var points: PackedVector2Array = data.get(key, PackedVector2Array())
+		total += points.size()
+	var pockets: Array = data.get("pockets", [])
+	return total + pockets.size()

@@ -67,9 +67,10 @@ static func nudge(session: Session, direction: Vector2) -> bool:
 		var axis := Mirror.axis_of(session.level)
 		var anchor := Items.position_of(session.level, session.selection[0]).x
 		var split := Mirror.split_for_move(session.level, session.selection, axis, anchor)
-		action = MoveItemsAction.new(
-			session.level, split["direct"], offset, split["mirrored"], split["on_axis"]
-		)
+		var direct: Array[Vector2i] = split["direct"]
+		var mirrored: Array[Vector2i] = split["mirrored"]
+		var on_axis: Array[Vector2i] = split["on_axis"]
+		action = MoveItemsAction.new(session.level, direct, offset, mirrored, on_axis)
 	else:
 		action = MoveItemsAction.new(session.level, session.selection, offset)
 	session.commit(action)

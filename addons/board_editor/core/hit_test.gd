@@ -45,14 +45,14 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 		if gap <= tolerance and gap < best_distance:
 			best_distance = gap
 			best = Items.make(Items.Kind.START, i)
-	for i in range(0, level.walls.size() - 1, 2):
+	for w in Items.wall_count(level.walls):
 		var closest := Geometry2D.get_closest_point_to_segment(
-			point, level.walls[i], level.walls[i + 1]
+			point, level.walls[w * 2], level.walls[w * 2 + 1]
 		)
 		var gap := closest.distance_to(point) - level.wall_width * 0.5
 		if gap <= tolerance and gap < best_distance:
 			best_distance = gap
-			best = Items.make(Items.Kind.WALL, i / 2)
+			best = Items.make(Items.Kind.WALL, w)
 	if level.is_maze() and best == Items.NONE:
 		# The goal is big: only its middle picks it, so walls and starts inside stay reachable.
 		if level.goal_center.distance_to(point) <= maxf(tolerance, level.goal_radius * 0.35):
@@ -75,9 +75,9 @@ static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:
 		var item := Items.make(Items.Kind.POCKET, i)
 		if box.has_point(level.pockets[i].position) and not found.has(item):
 			found.append(item)
-	for i in range(0, level.walls.size() - 1, 2):
-		if box.has_point(level.walls[i]) and box.has_point(level.walls[i + 1]):
-			found.append(Items.make(Items.Kind.WALL, i / 2))
+	for w in Items.wall_count(level.walls):
+		if box.has_point(level.walls[w * 2]) and box.has_point(level.walls[w * 2 + 1]):
+			found.append(Items.make(Items.Kind.WALL, w))
 	for i in level.holes.size():
 		if box.has_point(level.holes[i]):
 			found.append(Items.make(Items.Kind.HOLE, i))
@@ -90,8 +90,8 @@ static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:
 
 
 ## Where each handle is drawn: handle name -> board point.
-static func handle_points(level: BoardLevel) -> Dictionary:
-	var points := {}
+static func handle_points(level: BoardLevel) -> Dictionary[String, Vector2]:
+	var points: Dictionary[String, Vector2] = {}
 	if level.is_maze():
 		points["goal_radius"] = level.goal_center + Vector2(level.goal_radius, 0)
 		return points
@@ -114,7 +114,7 @@ static func pick_handle(level: BoardLevel, point: Vector2, tolerance: float) -> 
 	var best := ""
 	var best_distance := tolerance
 	for handle: String in points:
-		var distance := (points[handle] as Vector2).distance_to(point)
+		var distance := points[handle].distance_to(point)
 		if distance <= best_distance:
 			best_distance = distance
 			best = handle

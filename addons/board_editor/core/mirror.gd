@@ -35,8 +35,9 @@ static func with_reflections(points: PackedVector2Array, axis: float) -> PackedV
 static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 	var result := data.duplicate(true)
 	for key: String in ["pins", "holes", "starts"]:
-		result[key] = with_reflections(data.get(key, PackedVector2Array()), axis)
-	var walls: PackedVector2Array = data.get("walls", PackedVector2Array()) as PackedVector2Array
+		var points: PackedVector2Array = data.get(key, PackedVector2Array())
+		result[key] = with_reflections(points, axis)
+	var walls: PackedVector2Array = data.get("walls", PackedVector2Array())
 	var all_walls := walls.duplicate()
 	for i in range(0, walls.size() - 1, 2):
 		var a := reflect(walls[i], axis)
@@ -135,11 +136,11 @@ static func _has_point(points: PackedVector2Array, point: Vector2) -> bool:
 
 
 static func _find_wall(walls: PackedVector2Array, a: Vector2, b: Vector2) -> int:
-	for i in range(0, walls.size() - 1, 2):
-		var p := walls[i]
-		var q := walls[i + 1]
+	for w in Items.wall_count(walls):
+		var p := walls[w * 2]
+		var q := walls[w * 2 + 1]
 		var same := p.distance_to(a) <= SAME_PLACE and q.distance_to(b) <= SAME_PLACE
 		var flipped := p.distance_to(b) <= SAME_PLACE and q.distance_to(a) <= SAME_PLACE
 		if same or flipped:
-			return i / 2
+			return w
 	return -1

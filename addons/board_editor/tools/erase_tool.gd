@@ -30,7 +30,7 @@ func release(_at: Vector2, _event: InputEventMouseButton) -> bool:
 	if not _erasing:
 		return false
 	_erasing = false
-	var items := _marked.duplicate()
+	var items: Array[Vector2i] = _marked.duplicate()
 	_marked.clear()
 	if session.mirror_enabled:
 		items = Mirror.with_partners(level(), items, Mirror.axis_of(level()))
@@ -47,7 +47,7 @@ func cancel() -> bool:
 
 
 func draw(canvas: Control, to_screen: Transform2D) -> void:
-	var shown := _marked.duplicate()
+	var shown: Array[Vector2i] = _marked.duplicate()
 	var under := _erasable(hover)
 	if under != Items.NONE and not shown.has(under):
 		shown.append(under)

@@ -77,6 +77,6 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	for handle: String in points:
 		Draw.handle(canvas, to_screen, points[handle], handle == hot)
 	if not hot.is_empty():
-		var at: Vector2 = to_screen * (points[hot] as Vector2) + Vector2(10, -10)
+		var at := to_screen * points[hot] + Vector2(10, -10)
 		var font := ThemeDB.fallback_font
 		canvas.draw_string(font, at, str(NAMES.get(hot, hot)), HORIZONTAL_ALIGNMENT_LEFT, -1, 14)

@@ -101,9 +101,10 @@ func _start_move() -> MoveItemsAction:
 		var axis := Mirror.axis_of(level())
 		var anchor_x := Items.position_of(level(), _anchor).x
 		var split := Mirror.split_for_move(level(), selection, axis, anchor_x)
-		return MoveItemsAction.new(
-			level(), split["direct"], Vector2.ZERO, split["mirrored"], split["on_axis"]
-		)
+		var direct: Array[Vector2i] = split["direct"]
+		var mirrored: Array[Vector2i] = split["mirrored"]
+		var on_axis: Array[Vector2i] = split["on_axis"]
+		return MoveItemsAction.new(level(), direct, Vector2.ZERO, mirrored, on_axis)
 	return MoveItemsAction.new(level(), selection, Vector2.ZERO)
 
 

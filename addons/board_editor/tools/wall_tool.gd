@@ -47,12 +47,12 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 		Draw.circle(canvas, to_screen, session.snap_wall_point(hover), 3.0, Draw.GHOST_COLOR)
 		return
 	var to := _end(hover)
-	var ends := [[_from, to]]
+	Draw.line(canvas, to_screen, _from, to, Draw.GHOST_COLOR, width)
 	if session.mirror_enabled:
 		var axis := session.mirror_axis()
-		ends.append([Vector2(2 * axis - _from.x, _from.y), Vector2(2 * axis - to.x, to.y)])
-	for pair: Array in ends:
-		Draw.line(canvas, to_screen, pair[0], pair[1], Draw.GHOST_COLOR, width)
+		var from_image := Vector2(2 * axis - _from.x, _from.y)
+		var to_image := Vector2(2 * axis - to.x, to.y)
+		Draw.line(canvas, to_screen, from_image, to_image, Draw.GHOST_COLOR, width)
 
 
 func _end(at: Vector2) -> Vector2:

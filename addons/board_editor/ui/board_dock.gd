@@ -9,6 +9,7 @@ signal new_board_requested(kind: int)
 signal save_as_requested
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
 
 var _title: Label
@@ -111,7 +112,7 @@ func show_board(session: Session, issues: Array[BoardIssue], node_without_board 
 		% [
 			level.pins.size(),
 			level.pockets.size(),
-			level.walls.size() / 2,
+			Items.wall_count(level.walls),
 			level.holes.size(),
 			level.ball_starts.size()
 		]
@@ -151,11 +152,11 @@ func _show_issues(issues: Array[BoardIssue]) -> void:
 			"" if issues.size() - errors == 1 else "s",
 		]
 	)
-	var theme := EditorInterface.get_editor_theme() if Engine.is_editor_hint() else null
+	var editor_theme := EditorInterface.get_editor_theme() if Engine.is_editor_hint() else null
 	for issue in issues:
 		var icon: Texture2D = null
-		if theme != null:
-			icon = theme.get_icon(
+		if editor_theme != null:
+			icon = editor_theme.get_icon(
 				"StatusError" if issue.is_error() else "StatusWarning", "EditorIcons"
 			)
 		var index := _problems.add_item(issue.message, icon)

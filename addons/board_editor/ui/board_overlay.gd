@@ -100,5 +100,6 @@ static func _draw_issue(
 	canvas.draw_string(font, at + Vector2(-3, 5), "!", HORIZONTAL_ALIGNMENT_LEFT, -1, 13, color)
 	if focused:
 		var text_at := at + Vector2(radius + 4, 4)
-		canvas.draw_string(font, text_at + Vector2.ONE, issue.message, 0, -1, 13, Color.BLACK)
-		canvas.draw_string(font, text_at, issue.message, 0, -1, 13, Color.WHITE)
+		var left := HORIZONTAL_ALIGNMENT_LEFT
+		canvas.draw_string(font, text_at + Vector2.ONE, issue.message, left, -1, 13, Color.BLACK)
+		canvas.draw_string(font, text_at, issue.message, left, -1, 13, Color.WHITE)

@@ -21,7 +21,7 @@ func _init() -> void:
 	var group := ButtonGroup.new()
 	for tool: int in Shortcuts.TOOLS:
 		var button := Button.new()
-		button.text = (Shortcuts.TOOLS[tool] as Array)[1]
+		button.text = Shortcuts.name_of(tool)
 		button.tooltip_text = Shortcuts.tooltip(tool)
 		button.toggle_mode = true
 		button.theme_type_variation = &"FlatButton"

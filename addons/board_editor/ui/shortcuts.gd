@@ -29,10 +29,21 @@ const SNAP_KEY := KEY_N
 const MIRROR_KEY := KEY_M
 
 
+## The tool's name ("Pin").
+static func name_of(tool: int) -> String:
+	var entry: Array = TOOLS[tool]
+	return entry[1]
+
+
+## The key that picks a tool.
+static func key_of(tool: int) -> Key:
+	var entry: Array = TOOLS[tool]
+	return entry[0]
+
+
 ## "Name (Key)" for a tool.
 static func label(tool: int) -> String:
-	var entry: Array = TOOLS[tool]
-	return "%s (%s)" % [entry[1], OS.get_keycode_string(entry[0])]
+	return "%s (%s)" % [name_of(tool), OS.get_keycode_string(key_of(tool))]
 
 
 ## The tooltip text for a tool.
@@ -46,6 +57,6 @@ static func tool_for(event: InputEventKey) -> int:
 	if event.ctrl_pressed or event.alt_pressed or event.meta_pressed or event.shift_pressed:
 		return -1
 	for tool: int in TOOLS:
-		if (TOOLS[tool] as Array)[0] == event.keycode:
+		if key_of(tool) == event.keycode:
 			return tool
 	return -1

@@ -10,7 +10,7 @@ const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket
 
 var _session: Session
 var _kind: OptionButton
-var _fields := {}
+var _fields: Dictionary[String, SpinBox] = {}
 var _pocket_title: Label
 var _pattern_box: VBoxContainer
 var _pocket_box: VBoxContainer
@@ -50,7 +50,8 @@ func refresh() -> void:
 	_pocket_box.visible = pachinko
 	_kind.select(maxi(PatternAction.KINDS.find(str(_session.pattern["kind"])), 0))
 	for key: String in ["count", "spacing", "rows", "radius"]:
-		(_fields[key] as SpinBox).set_value_no_signal(float(_session.pattern[key]))
+		var setting: float = _session.pattern[key]
+		_fields[key].set_value_no_signal(setting)
 	var index := _session.selected_pocket()
 	var width := _session.pocket_width
 	var depth := _session.pocket_depth
@@ -63,9 +64,9 @@ func refresh() -> void:
 		_pocket_title.text = "Selected pocket %d" % (index + 1)
 	else:
 		_pocket_title.text = "Next pocket placed"
-	(_fields["width"] as SpinBox).set_value_no_signal(width)
-	(_fields["depth"] as SpinBox).set_value_no_signal(depth)
-	(_fields["payout"] as SpinBox).set_value_no_signal(payout)
+	_fields["width"].set_value_no_signal(width)
+	_fields["depth"].set_value_no_signal(depth)
+	_fields["payout"].set_value_no_signal(payout)
 
 
 func _section(title: String) -> VBoxContainer:
@@ -105,12 +106,15 @@ func _on_field_changed(value: float, key: String) -> void:
 	if _session == null:
 		return
 	if _session.pattern.has(key):
-		_session.pattern[key] = int(value) if key in ["count", "rows"] else value
+		if key in ["count", "rows"]:
+			_session.pattern[key] = int(value)
+		else:
+			_session.pattern[key] = value
 		_session.settings_changed.emit()
 		return
-	var width: float = (_fields["width"] as SpinBox).value
-	var depth: float = (_fields["depth"] as SpinBox).value
-	var payout := int((_fields["payout"] as SpinBox).value)
+	var width := _fields["width"].value
+	var depth := _fields["depth"].value
+	var payout := int(_fields["payout"].value)
 	var index := _session.selected_pocket()
 	if index >= 0:
 		_session.commit(EditPocketAction.new(_session.level, index, width, depth, payout))

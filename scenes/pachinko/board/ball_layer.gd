@@ -86,6 +86,7 @@ static func make_shadowed_ball_texture(size: int) -> ImageTexture:
 			var a := clampf(1.0 - d, 0.0, 1.0)
 			image.set_pixel(x, y, Color(0.0, 0.0, 0.05, 0.55 * a * a))
 	var ball := make_ball_image(size)
+	@warning_ignore("integer_division")  # whole pixels: the ball sits on the texel grid
 	var corner := Vector2i((span - size) / 2, (span - size) / 2)
 	image.blend_rect(ball, Rect2i(Vector2i.ZERO, ball.get_size()), corner)
 	image.generate_mipmaps()

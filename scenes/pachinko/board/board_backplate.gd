@@ -1,18 +1,10 @@
-extends Node2D
+extends "res://scenes/pachinko/board/board_layer.gd"
 ## Bottom art layer: the lacquered back plate the ring sits on, with gold corner scrolls.
 ## Drawn once per board.
 
 const PLATE := Color("1a1030")
 const PLATE_EDGE := Color("2d1d4f")
 const GOLD := Color("c9a04a")
-
-var _level: BoardLevel
-
-
-## Shows `level`'s plate.
-func setup(level: BoardLevel) -> void:
-	_level = level
-	queue_redraw()
 
 
 func _draw() -> void:
@@ -30,7 +22,7 @@ func _draw() -> void:
 	for i in 6:
 		var k := float(i) / 6.0
 		draw_circle(c, r * (1.14 - k * 0.1), Color(0.35, 0.2, 0.6, 0.05))
-	for corner in [Vector2(-1, -1), Vector2(1, -1), Vector2(-1, 1), Vector2(1, 1)]:
+	for corner: Vector2 in [Vector2(-1, -1), Vector2(1, -1), Vector2(-1, 1), Vector2(1, 1)]:
 		_draw_scroll(c + corner * (half - 30.0), corner)
 
 

@@ -7,6 +7,11 @@ extends Node2D
 ## once into an off-screen viewport at the board's on-screen resolution and shown as one
 ## texture, so a frame only draws that texture, the balls, the pockets and the effects.
 
+const BoardLayer := preload("res://scenes/pachinko/board/board_layer.gd")
+const GutterArt := preload("res://scenes/pachinko/board/gutter_art.gd")
+const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
+const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
+const WinEffects := preload("res://scenes/pachinko/board/win_effects.gd")
 const FASCIA_SIZE := 1000.0
 ## How far the plate reaches beyond the ring, as a share of the ring radius.
 const PLATE_REACH := 1.1
@@ -21,25 +26,28 @@ var _bake_scale := 0.0
 @onready var bake: SubViewport = $Bake
 @onready var static_root: Node2D = $Bake/Static
 @onready var baked: Sprite2D = $Baked
-@onready var backplate: Node2D = $Bake/Static/Backplate
+@onready var backplate: BoardLayer = $Bake/Static/Backplate
 @onready var fascia: Sprite2D = $Bake/Static/Fascia
-@onready var ring_border: Node2D = $Bake/Static/RingBorder
-@onready var launch_path: Node2D = $Bake/Static/LaunchPath
-@onready var gutter_slot: Node2D = $Bake/Static/Gutter
-@onready var pins: Node2D = $Bake/Static/Pins
-@onready var gutter: Node2D = $GutterFlash
-@onready var balls: Node2D = $Balls
-@onready var pockets: Node2D = $Pockets
-@onready var effects: Node2D = $Effects
+@onready var ring_border: BoardLayer = $Bake/Static/RingBorder
+@onready var launch_path: BoardLayer = $Bake/Static/LaunchPath
+@onready var gutter_slot: GutterArt = $Bake/Static/Gutter
+@onready var pins: BoardLayer = $Bake/Static/Pins
+@onready var gutter: GutterArt = $GutterFlash
+@onready var balls: BallLayer = $Balls
+@onready var pockets: PocketArt = $Pockets
+@onready var effects: WinEffects = $Effects
 
 
 ## Shows the board and balls of `rules`.
 func bind(rules: PachinkoRules) -> void:
 	var level := rules.level
 	_level = level
-	for layer: Node2D in [backplate, ring_border, launch_path, gutter_slot, pins, gutter, pockets]:
-		layer.call("setup", level)
-	balls.call("bind", rules)
+	var layers: Array[BoardLayer] = [
+		backplate, ring_border, launch_path, gutter_slot, pins, gutter, pockets
+	]
+	for layer in layers:
+		layer.setup(level)
+	balls.bind(rules)
 	fascia.position = level.ring_center
 	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
 	_bake_scale = 0.0
@@ -95,8 +103,8 @@ func _stretch_scale() -> float:
 	var viewport := get_viewport()
 	if viewport == null:
 		return 1.0
-	var visible := viewport.get_visible_rect().size
-	var window := Vector2(viewport.get_window().size) if viewport.get_window() != null else visible
-	if visible.y <= 0.0:
+	var shown := viewport.get_visible_rect().size
+	var window := Vector2(viewport.get_window().size) if viewport.get_window() != null else shown
+	if shown.y <= 0.0:
 		return 1.0
-	return maxf(window.y / visible.y, 0.25)
+	return maxf(window.y / shown.y, 0.25)

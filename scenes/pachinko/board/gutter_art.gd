@@ -1,4 +1,4 @@
-extends Node2D
+extends "res://scenes/pachinko/board/board_layer.gd"
 ## The gutter: the dark slot at the bottom of the ring that swallows balls after their
 ## bounces there. It flashes when it takes a ball.
 
@@ -7,14 +7,7 @@ const SLOT := Color("07040d")
 ## Draw only the flash (the overlay above the baked board); otherwise only the slot.
 @export var flash_only := false
 
-var _level: BoardLevel
 var _flash := 0.0
-
-
-## Shows `level`'s gutter.
-func setup(level: BoardLevel) -> void:
-	_level = level
-	queue_redraw()
 
 
 ## Lights the gutter briefly (a ball was drained).

@@ -1,18 +1,10 @@
-extends Node2D
+extends "res://scenes/pachinko/board/board_layer.gd"
 ## The launch path: the channel between the ring and the chrome guide rail that a fired
 ## ball rides up into the field, with the stopper at its bottom.
 
 const CHANNEL := Color(0.02, 0.01, 0.06, 0.55)
 const RAIL := Color("d7dbe6")
 const RAIL_SHADE := Color("5d6075")
-
-var _level: BoardLevel
-
-
-## Shows `level`'s rail.
-func setup(level: BoardLevel) -> void:
-	_level = level
-	queue_redraw()
 
 
 func _draw() -> void:

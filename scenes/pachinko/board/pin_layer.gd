@@ -1,4 +1,4 @@
-extends Node2D
+extends "res://scenes/pachinko/board/board_layer.gd"
 ## Every pin of the board in one static draw: brass nail heads with a shadow and a glint.
 ## Special (catching) pins are drawn as gold diamonds, so they differ by shape, not only by
 ## colour. Redrawn only when the board changes.
@@ -7,14 +7,6 @@ const HEAD := Color("ecd9a0")
 const HEAD_DARK := Color("6f5a2c")
 const GLINT := Color("fff6d8")
 const SPECIAL := Color("ffd23f")
-
-var _level: BoardLevel
-
-
-## Shows `level`'s pins.
-func setup(level: BoardLevel) -> void:
-	_level = level
-	queue_redraw()
 
 
 func _draw() -> void:

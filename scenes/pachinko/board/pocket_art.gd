@@ -1,4 +1,4 @@
-extends Node2D
+extends "res://scenes/pachinko/board/board_layer.gd"
 ## Pocket art over each pocket's pins: a red and gold tulip whose cup covers the rim pins,
 ## a window showing the special pin (a gold diamond), and the payout written on it. A
 ## pocket glows when it catches a ball.
@@ -8,17 +8,15 @@ const PETAL := Color("c0283c")
 const PETAL_LIGHT := Color("ee5a5f")
 const GOLD := Color("f2c14e")
 
-var _level: BoardLevel
 var _glow := PackedFloat32Array()
 
 
 ## Shows `level`'s pockets.
 func setup(level: BoardLevel) -> void:
-	_level = level
 	_glow.resize(level.pockets.size())
 	_glow.fill(0.0)
 	set_process(false)
-	queue_redraw()
+	super(level)
 
 
 ## Lights pocket `index` (it just paid out).
@@ -67,14 +65,14 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 	draw_polyline(rim, PETAL, band, true)
 	draw_polyline(rim, PETAL_LIGHT, band * 0.3, true)
 	# Petals flaring out from the mouth.
-	for side in [-1.0, 1.0]:
-		var base := top + Vector2(side * half, -band * 0.3)
+	for side: float in [-1.0, 1.0]:
+		var root := top + Vector2(side * half, -band * 0.3)
 		var petal := PackedVector2Array(
 			[
-				base,
-				base + Vector2(side * half * 0.9, -half * 0.55),
-				base + Vector2(side * half * 0.35, -half * 0.95),
-				base + Vector2(-side * band * 0.2, -band * 0.6),
+				root,
+				root + Vector2(side * half * 0.9, -half * 0.55),
+				root + Vector2(side * half * 0.35, -half * 0.95),
+				root + Vector2(-side * band * 0.2, -band * 0.6),
 			]
 		)
 		draw_colored_polygon(petal, PETAL)

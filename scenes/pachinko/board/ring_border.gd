@@ -1,4 +1,4 @@
-extends Node2D
+extends "res://scenes/pachinko/board/board_layer.gd"
 ## The ring border: a purple enamel band with a chrome lip, the edge balls never pass.
 
 const ENAMEL := Color("5b2a86")
@@ -7,14 +7,6 @@ const CHROME := Color("e4e7f0")
 
 ## Band width in pixels.
 @export var band := 22.0
-
-var _level: BoardLevel
-
-
-## Shows `level`'s ring.
-func setup(level: BoardLevel) -> void:
-	_level = level
-	queue_redraw()
 
 
 func _draw() -> void:

@@ -12,12 +12,12 @@ var _bump := 0.0
 var _ball: Texture2D
 
 
-## Shows `count` balls; a rise bounces the number.
-func set_count(count: int) -> void:
-	if count > _count:
+## Shows `balls` balls; a rise bounces the number.
+func set_count(balls: int) -> void:
+	if balls > _count:
 		_bump = 1.0
 		set_process(true)
-	_count = count
+	_count = balls
 	queue_redraw()
 
 

@@ -23,9 +23,11 @@ func show_stats(stats: Dictionary) -> void:
 	var hits: Array = stats.get("pocket_hits", [])
 	var pocket_line := ""
 	for i in hits.size():
-		pocket_line += "%s[b]%d[/b]" % ["" if i == 0 else "  ", int(hits[i])]
+		var count: int = hits[i]
+		pocket_line += "%s[b]%d[/b]" % ["" if i == 0 else "  ", count]
 	if pocket_line.is_empty():
 		pocket_line = "none"
+	var ratio: float = stats.get("payout_ratio", 0.0)
 	var lines := PackedStringArray(
 		[
 			(
@@ -37,10 +39,7 @@ func show_stats(stats: Dictionary) -> void:
 				% [stats.get("won", 0), stats.get("drained", 0), stats.get("returned", 0)]
 			),
 			"[b]Pocket hits[/b]  %s" % pocket_line,
-			(
-				"[b]Paid out[/b] %d balls    [b]Ratio[/b] %.2f"
-				% [stats.get("payouts", 0), float(stats.get("payout_ratio", 0.0))]
-			),
+			"[b]Paid out[/b] %d balls    [b]Ratio[/b] %.2f" % [stats.get("payouts", 0), ratio],
 			(
 				"[color=#8fe39a]Every ball accounted for[/color]"
 				if stats.get("accounting_ok", false)

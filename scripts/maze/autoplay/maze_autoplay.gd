@@ -7,10 +7,10 @@ extends RefCounted
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 
 
-## Plays `level` for up to `seconds` of simulated time with the pilot seeded by `seed`.
+## Plays `level` for up to `seconds` of simulated time with the pilot seeded by `rng_seed`.
 ## Returns won, time_to_win (-1 when not won), balls_in_goal (at the end),
 ## max_balls_in_goal, balls_lost_in_holes, frames_simulated, hard_mode, state_hash.
-static func run(level: BoardLevel, seconds: float, seed: int, hard_mode := false) -> Dictionary:
+static func run(level: BoardLevel, seconds: float, rng_seed: int, hard_mode := false) -> Dictionary:
 	if level == null or not level.is_maze():
 		push_error("MazeAutoplay: a maze board is needed")
 		return {"ok": false, "error": "MazeAutoplay: a maze board is needed"}
@@ -20,12 +20,12 @@ static func run(level: BoardLevel, seconds: float, seed: int, hard_mode := false
 	if not rules.is_ready():
 		return {"ok": false, "error": "MazeAutoplay: board '%s' did not build" % level.board_id}
 	var rng := RandomNumberGenerator.new()
-	rng.seed = seed
+	rng.seed = rng_seed
 	var pilot := MazePilot.new(level, hard_mode, rng, rules.step_seconds())
 	rules.start()
 	var frames := 0
 	var most_in_goal := 0
-	var limit := int(ceil(seconds / rules.step_seconds()))
+	var limit := ceili(seconds / rules.step_seconds())
 	while frames < limit and rules.is_playing():
 		var world := rules.world
 		rules.set_tilt(pilot.decide(world.get_positions(), world.get_velocities()))

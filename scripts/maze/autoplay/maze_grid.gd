@@ -76,6 +76,7 @@ func cell_at(pos: Vector2) -> int:
 
 ## The centre of cell `index`, px.
 func cell_center(index: int) -> Vector2:
+	@warning_ignore("integer_division")  # the row of a cell index: whole rows
 	return (Vector2(index % cols, index / cols) + Vector2(0.5, 0.5)) * cell
 
 
@@ -118,6 +119,7 @@ func _build_slides() -> void:
 
 func _step(index: int, step: Vector2i) -> int:
 	var c := index % cols
+	@warning_ignore("integer_division")  # the row of a cell index: whole rows
 	var r := index / cols
 	if not is_open(c, r, step.x, step.y):
 		return index
@@ -127,6 +129,7 @@ func _step(index: int, step: Vector2i) -> int:
 
 func _roll(index: int, step: Vector2i) -> int:
 	var c := index % cols
+	@warning_ignore("integer_division")  # the row of a cell index: whole rows
 	var r := index / cols
 	for _guard in cols + rows + 2:
 		var moved := false

@@ -54,7 +54,7 @@ func filter(
 	_trusted = best_time >= HORIZON
 	if _trusted:
 		return wanted
-	for tilt in candidates.slice(1):
+	for tilt: Vector2 in candidates.slice(1):
 		var survived := _survives(tilt, positions, velocities)
 		if survived >= HORIZON:
 			best = tilt

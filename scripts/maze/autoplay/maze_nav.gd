@@ -27,8 +27,8 @@ func _init(level: BoardLevel, with_holes := false) -> void:
 	if level == null or level.size.x <= 0.0 or level.size.y <= 0.0:
 		push_error("MazeNav: the board has no size")
 		return
-	cols = int(ceil(level.size.x / SPACING)) + 1
-	rows = int(ceil(level.size.y / SPACING)) + 1
+	cols = ceili(level.size.x / SPACING) + 1
+	rows = ceili(level.size.y / SPACING) + 1
 	_goal = level.goal_center
 	_build_clearance(level, with_holes)
 	_build_distance()
@@ -46,7 +46,7 @@ func carrot(pos: Vector2, ahead: float) -> Vector2:
 	var i := _nearest_free(pos)
 	if i < 0:
 		return _goal
-	var steps := int(ceil(ahead / SPACING))
+	var steps := ceili(ahead / SPACING)
 	for _s in steps:
 		var next := _downhill(i)
 		if next == i:
@@ -57,6 +57,7 @@ func carrot(pos: Vector2, ahead: float) -> Vector2:
 
 ## Lattice index → position.
 func _point(i: int) -> Vector2:
+	@warning_ignore("integer_division")  # the row of a lattice index: whole rows
 	return Vector2(float(i % cols), float(i / cols)) * SPACING
 
 
@@ -137,6 +138,7 @@ func _build_distance() -> void:
 		if cost > dist[i]:
 			continue
 		var c := i % cols
+		@warning_ignore("integer_division")  # the row of a lattice index: whole rows
 		var r := i / cols
 		for o in 8:
 			var nc: int = c + dcs[o]
@@ -190,12 +192,13 @@ func _nearest_free(pos: Vector2) -> int:
 
 func _downhill(i: int) -> int:
 	var c := i % cols
+	@warning_ignore("integer_division")  # the row of a lattice index: whole rows
 	var r := i / cols
 	var best := i
-	for dr in [-1, 0, 1]:
-		for dc in [-1, 0, 1]:
-			var nc: int = c + dc
-			var nr: int = r + dr
+	for dr: int in [-1, 0, 1]:
+		for dc: int in [-1, 0, 1]:
+			var nc := c + dc
+			var nr := r + dr
 			if nc < 0 or nr < 0 or nc >= cols or nr >= rows:
 				continue
 			var j := _index(nc, nr)

@@ -93,7 +93,7 @@ static func spread(positions: PackedVector2Array) -> float:
 	for p in positions:
 		centre += p
 	centre /= float(maxi(positions.size(), 1))
-	var spread := 0.0
+	var widest := 0.0
 	for p in positions:
-		spread = maxf(spread, p.distance_to(centre))
-	return spread
+		widest = maxf(widest, p.distance_to(centre))
+	return widest

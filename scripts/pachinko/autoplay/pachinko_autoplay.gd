@@ -22,7 +22,7 @@ static func run(level: BoardLevel, seconds: float, rng_seed: int) -> Dictionary:
 	var rng := RandomNumberGenerator.new()
 	rng.seed = rng_seed
 	var rules := PachinkoRules.new(level, rng_seed)
-	var frames := int(ceil(maxf(seconds, 0.0) / FRAME_SECONDS))
+	var frames := ceili(maxf(seconds, 0.0) / FRAME_SECONDS)
 	var steps := 0
 	var games := 1
 	var peak_in_play := 0

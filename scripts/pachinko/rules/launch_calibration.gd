@@ -12,7 +12,7 @@ const MAX_SECONDS := 4.0
 ## A little over the measured minimum, so a clearing shot never stalls at the top.
 const SAFETY := 1.01
 
-static var _cache: Dictionary = {}
+static var _cache: Dictionary[String, float] = {}
 
 
 ## The slowest launch speed (px/s) that carries a lone ball out of the rail of `level`.

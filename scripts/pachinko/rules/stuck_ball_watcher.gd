@@ -12,8 +12,8 @@ const REST_DISTANCE := 1.5
 var rest_seconds := 3.0
 
 var _since_check := 0.0
-var _last_pos: Dictionary = {}
-var _rest_time: Dictionary = {}
+var _last_pos: Dictionary[int, Vector2] = {}
+var _rest_time: Dictionary[int, float] = {}
 
 
 ## Forgets a ball that left play.
