@@ -1,12 +1,12 @@
 extends Node
-## The one autoload. Starts the headless autoplay when the command line asks for it;
-## otherwise holds the player's settings and best results, the board each game should play,
-## and the scene changes between the menus and the games.
+## The one autoload. Hands the command-line flags to command_line.gd, which may run a
+## command or refuse bad flags, and then quits; otherwise holds the player's settings and best
+## results, the board each game should play, and the scene changes between menus and games.
 
 ## Emitted once when the settings or best-results file was damaged and got replaced.
 signal problem_reported(message: String)
 
-const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
+const CommandLine := preload("res://scripts/app/command_line.gd")
 const SaveData := preload("res://scripts/app/save_data.gd")
 const SETTINGS_PATH := "user://settings.cfg"
 const SAVE_PATH := "user://save.cfg"
@@ -34,9 +34,8 @@ var _settings_path := SETTINGS_PATH
 
 
 func _ready() -> void:
-	var args := OS.get_cmdline_user_args()
-	if AutoplayCli.wants_autoplay(args):
-		var code := AutoplayCli.run(args)
+	var code := CommandLine.run(OS.get_cmdline_user_args())
+	if code != CommandLine.START_GAME:
 		get_tree().quit(code)
 		return
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
