@@ -11,6 +11,7 @@ const ENV := "BOARD_EDITOR_SELF_CHECK"
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 
 var _plugin: EditorPlugin
 var _problems := PackedStringArray()
@@ -90,9 +91,7 @@ func _run() -> void:
 		# The dock's play-test button: the request names this board and the game starts.
 		_plugin.call("_play_test")
 		await _frames(30)
-		var request := ConfigFile.new()
-		request.load("user://playtest_request.cfg")
-		var named := str(request.get_value("playtest", "board", ""))
+		var named: String = PlaytestRequest.read(PlaytestRequest.PATH)["board"]
 		_expect(
 			EditorInterface.is_playing_scene() or named == level.resource_path,
 			"play-test did not start"
@@ -101,7 +100,7 @@ func _run() -> void:
 		print("board editor self-check: play-test scene '%s', request '%s'" % [playing, named])
 		EditorInterface.stop_playing_scene()
 		# Never leave a request for a scratch board behind for the next real game.
-		DirAccess.remove_absolute("user://playtest_request.cfg")
+		DirAccess.remove_absolute(PlaytestRequest.PATH)
 	if fresh:
 		for step in 3:  # the drag, the added wall, then the new board itself
 			history.undo()
