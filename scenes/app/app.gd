@@ -1,18 +1,16 @@
 extends Node
-## The one autoload. Starts the headless autoplay when the command line asks for it;
-## otherwise holds the player's settings and best results, the board each game should play,
-## and the scene changes between the menus and the games.
+## The one autoload. Hands the command-line flags to command_line.gd, which may run a
+## command or refuse bad flags, and then quits; otherwise holds the player's settings and best
+## results, the board each game should play, and the scene changes between menus and games.
 
 ## Emitted once when the settings or best-results file was damaged and got replaced.
 signal problem_reported(message: String)
 
-const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
+const CommandLine := preload("res://scripts/app/command_line.gd")
+const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SaveData := preload("res://scripts/app/save_data.gd")
 const SETTINGS_PATH := "user://settings.cfg"
 const SAVE_PATH := "user://save.cfg"
-const PLAYTEST_PATH := "user://playtest_request.cfg"
-## A play-test request older than this is left over from an editor session that never ran it.
-const PLAYTEST_MAX_AGE_SECONDS := 300
 const MENU_SCENE := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT_SCENE := "res://scenes/menu/level_select.tscn"
 const GAME_SCENES := {
@@ -34,9 +32,8 @@ var _settings_path := SETTINGS_PATH
 
 
 func _ready() -> void:
-	var args := OS.get_cmdline_user_args()
-	if AutoplayCli.wants_autoplay(args):
-		var code := AutoplayCli.run(args)
+	var code := CommandLine.run(OS.get_cmdline_user_args())
+	if code != CommandLine.START_GAME:
 		get_tree().quit(code)
 		return
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
@@ -81,7 +78,7 @@ func request_board(kind: String, path: String) -> void:
 ## The board a game scene should load: an editor play-test request first (consumed once,
 ## then kept for restarts), then the level select's pick, else the classic board.
 func current_board_path(kind: String) -> String:
-	var requested := _take_playtest_request(kind)
+	var requested := PlaytestRequest.take(kind)
 	if not requested.is_empty():
 		_picked_boards[kind] = requested
 		return requested
@@ -143,21 +140,3 @@ func _report(message: String) -> void:
 	push_warning(message)
 	pending_problems.append(message)
 	problem_reported.emit(message)
-
-
-func _take_playtest_request(kind: String) -> String:
-	if not FileAccess.file_exists(PLAYTEST_PATH):
-		return ""
-	var age := Time.get_unix_time_from_system() - FileAccess.get_modified_time(PLAYTEST_PATH)
-	var config := ConfigFile.new()
-	var error := config.load(PLAYTEST_PATH)
-	var board: String = str(config.get_value("playtest", "board", "")) if error == OK else ""
-	var raw_kind: Variant = config.get_value("playtest", "kind", "") if error == OK else ""
-	# the kind may be written as its name or as the BoardLevel.Kind number
-	var request_kind := BoardLevel.kind_name(int(raw_kind)) if raw_kind is int else str(raw_kind)
-	if request_kind != kind and age < PLAYTEST_MAX_AGE_SECONDS and error == OK:
-		return ""  # meant for the other game: leave it for that one
-	DirAccess.remove_absolute(PLAYTEST_PATH)
-	if request_kind != kind or age >= PLAYTEST_MAX_AGE_SECONDS:
-		return ""
-	return board

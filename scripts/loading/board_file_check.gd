@@ -88,89 +88,115 @@ static func _scan(chunk: String, state: Array) -> Array:
 static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 	if statements.is_empty() or not statements[0].has("section"):
 		return _fail("this is not a Godot text resource")
-	var first: Dictionary = statements[0]
-	var header := _attributes(str(first["section"]))
+	var problem := _check_header(_attributes(str(statements[0]["section"])))
+	var ext_scripts := {}  # id → class name
+	var sections: Array[Dictionary] = []  # {tag, id, line, fields: {key: [line, value]}}
+	if problem.is_empty():
+		problem = _collect_sections(statements, ext_scripts, sections)
+	if problem.is_empty():
+		problem = _assign_classes(sections, ext_scripts)
+	if problem.is_empty():
+		problem = _check_fields_in_order(sections, ext_scripts)
+	if not problem.is_empty():
+		return _fail(problem)
+	return _read_version(sections[-1]["fields"])
+
+
+# The [gd_resource] line: a text resource in a format this build reads, holding a BoardLevel.
+static func _check_header(header: Dictionary) -> String:
 	if header.get("tag", "") != "gd_resource":
-		return _fail(
-			"this is not a Godot text resource (it starts with %s)" % header.get("tag", "?")
-		)
+		return "this is not a Godot text resource (it starts with %s)" % header.get("tag", "?")
 	if not header.get("format", "3") in ["3", "4"]:
-		return _fail(
-			"the file uses resource format %s, which this build cannot read" % header["format"]
-		)
+		return "the file uses resource format %s, which this build cannot read" % header["format"]
 	if (
 		header.get("type", "") != "Resource"
 		or header.get("script_class", "BoardLevel") != "BoardLevel"
 	):
-		return _fail(
-			(
-				"the file holds a %s, not a BoardLevel"
-				% header.get("script_class", header.get("type", "?"))
-			)
+		return (
+			"the file holds a %s, not a BoardLevel"
+			% header.get("script_class", header.get("type", "?"))
 		)
-	var ext_scripts := {}  # id → class name
-	var sub_classes := {}  # id → class name
-	var sections: Array[Dictionary] = []  # {tag, id, line, fields: {key: [line, value]}}
+	return ""
+
+
+# Sorts the statements after the header into board scripts (`ext_scripts`, id → class name)
+# and sections with their fields; the last section must be the [resource].
+static func _collect_sections(
+	statements: Array[Dictionary], ext_scripts: Dictionary, sections: Array[Dictionary]
+) -> String:
 	for statement: Dictionary in statements.slice(1):
 		if statement.has("section"):
-			var attributes := _attributes(str(statement["section"]))
-			var tag: String = attributes.get("tag", "")
-			if tag == "ext_resource":
-				var script_path: String = attributes.get("path", "")
-				if (
-					attributes.get("type", "") != "Script"
-					or not ValueCheck.ALLOWED_SCRIPTS.has(script_path)
-				):
-					return _fail(
-						(
-							"line %d refers to %s, but a board may only use the board scripts"
-							% [statement["line"], script_path]
-						)
-					)
-				ext_scripts[attributes.get("id", "")] = ValueCheck.ALLOWED_SCRIPTS[script_path]
-			elif tag == "sub_resource" or tag == "resource":
-				if tag == "sub_resource" and attributes.get("type", "") != "Resource":
-					return _fail(
-						(
-							"line %d embeds a %s, which a board never contains"
-							% [statement["line"], attributes.get("type", "?")]
-						)
-					)
-				sections.append(
-					{
-						"tag": tag,
-						"id": attributes.get("id", ""),
-						"line": statement["line"],
-						"fields": {}
-					}
-				)
-			else:
-				return _fail("line %d has an unknown section [%s]" % [statement["line"], tag])
+			var problem := _open_section(statement, ext_scripts, sections)
+			if not problem.is_empty():
+				return problem
 		elif sections.is_empty():
-			return _fail("line %d has a field outside any section" % statement["line"])
+			return "line %d has a field outside any section" % statement["line"]
 		else:
 			var fields: Dictionary = sections[-1]["fields"]
 			fields[statement["key"]] = [statement["line"], statement["value"]]
 	if sections.is_empty() or sections[-1]["tag"] != "resource":
-		return _fail("the file has no [resource] section")
-	# Each section's class comes from its `script` line.
+		return "the file has no [resource] section"
+	return ""
+
+
+# One section header: a board script reference, or a section whose fields follow.
+static func _open_section(
+	statement: Dictionary, ext_scripts: Dictionary, sections: Array[Dictionary]
+) -> String:
+	var attributes := _attributes(str(statement["section"]))
+	var tag: String = attributes.get("tag", "")
+	if tag == "ext_resource":
+		var script_path: String = attributes.get("path", "")
+		if (
+			attributes.get("type", "") != "Script"
+			or not ValueCheck.ALLOWED_SCRIPTS.has(script_path)
+		):
+			return (
+				"line %d refers to %s, but a board may only use the board scripts"
+				% [statement["line"], script_path]
+			)
+		ext_scripts[attributes.get("id", "")] = ValueCheck.ALLOWED_SCRIPTS[script_path]
+	elif tag == "sub_resource" or tag == "resource":
+		if tag == "sub_resource" and attributes.get("type", "") != "Resource":
+			return (
+				"line %d embeds a %s, which a board never contains"
+				% [statement["line"], attributes.get("type", "?")]
+			)
+		sections.append(
+			{"tag": tag, "id": attributes.get("id", ""), "line": statement["line"], "fields": {}}
+		)
+	else:
+		return "line %d has an unknown section [%s]" % [statement["line"], tag]
+	return ""
+
+
+# Each section's class comes from its `script` line; the [resource] must be a BoardLevel.
+static func _assign_classes(sections: Array[Dictionary], ext_scripts: Dictionary) -> String:
 	for section in sections:
 		var fields: Dictionary = section["fields"]
 		var script_ref: String = fields.get("script", [0, ""])[1]
 		var class_id := ValueCheck.ref_id(script_ref, "Ext")
 		if not ext_scripts.has(class_id):
-			return _fail("line %d: a section has no board script" % section["line"])
+			return "line %d: a section has no board script" % section["line"]
 		section["class"] = ext_scripts[class_id]
 	if sections[-1]["class"] != "BoardLevel":
-		return _fail("the file holds a %s, not a BoardLevel" % sections[-1]["class"])
-	# A section may only use sub-resources defined above it, as the engine reads them.
+		return "the file holds a %s, not a BoardLevel" % sections[-1]["class"]
+	return ""
+
+
+# A section may only use sub-resources defined above it, as the engine reads them.
+static func _check_fields_in_order(sections: Array[Dictionary], ext_scripts: Dictionary) -> String:
+	var sub_classes := {}  # id → class name
 	for section in sections:
 		var problem := ValueCheck.check_fields(section, ext_scripts, sub_classes)
 		if not problem.is_empty():
-			return _fail(problem)
+			return problem
 		if section["tag"] == "sub_resource":
 			sub_classes[section["id"]] = section["class"]
-	var main_fields: Dictionary = sections[-1]["fields"]
+	return ""
+
+
+static func _read_version(main_fields: Dictionary) -> Dictionary:
 	var version := 0
 	if main_fields.has("version"):
 		var version_line: Array = main_fields["version"]

@@ -19,8 +19,18 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 
 
 # Ring, pin radius, array lengths and pocket specs: what every later check relies on.
+# Every part is checked (and reported) even when an earlier one failed.
 static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
-	var ok := true
+	var ring_ok := _check_ring(level, issues)
+	var pins_ok := _check_pin_lists(level, issues)
+	var pockets_ok := _check_pocket_specs(level, issues)
+	_check_cup(level, issues)
+	return ring_ok and pins_ok and pockets_ok
+
+
+# A finite ring big enough for four balls (an error otherwise); poking out of the board
+# is only a warning.
+static func _check_ring(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 	var c := level.ring_center
 	var r := level.ring_radius
 	if not c.is_finite() or not is_finite(r) or r <= level.ball_radius * 4.0:
@@ -31,8 +41,8 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 			Vector2.ZERO,
 			"bad_ring"
 		)
-		ok = false
-	elif (
+		return false
+	if (
 		c.x - r < -0.5
 		or c.y - r < -0.5
 		or c.x + r > level.size.x + 0.5
@@ -45,6 +55,13 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 			c,
 			"ring_outside_board"
 		)
+	return true
+
+
+# A positive pin radius, and one pocket entry and one special flag per pin.
+static func _check_pin_lists(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
+	var ok := true
+	var c := level.ring_center
 	if not is_finite(level.pin_radius) or level.pin_radius <= 0.0:
 		BoardIssue.add_to(
 			issues,
@@ -69,6 +86,14 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 			"pin_arrays_mismatch"
 		)
 		ok = false
+	return ok
+
+
+# Each pocket: present, with a finite position and positive size (errors that stop the
+# later checks), a payout that is not negative, deep enough for its rim.
+static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
+	var ok := true
+	var c := level.ring_center
 	for i in level.pockets.size():
 		var spec: PocketSpec = level.pockets[i]
 		if spec == null:
@@ -105,15 +130,18 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 				spec.position,
 				"pocket_shallow"
 			)
+	return ok
+
+
+static func _check_cup(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	if level.cup_start_balls < 1:
 		BoardIssue.add_to(
 			issues,
 			ERROR,
 			"The cup must start with at least one ball (got %d)." % level.cup_start_balls,
-			c,
+			level.ring_center,
 			"bad_cup"
 		)
-	return ok
 
 
 static func _check_rail_and_gutter(level: BoardLevel, issues: Array[BoardIssue]) -> void:

@@ -7,6 +7,7 @@ const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 
 
+## Each pin against its pocket, the ring, the launch rail and the rail's deflector.
 static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	var c := level.ring_center
 	var inside := level.ring_radius - level.pin_radius
@@ -14,7 +15,6 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	var guide_clear := guide - LaunchRail.GUIDE_WALL_RADIUS - level.pin_radius
 	var rail_low := minf(level.rail_start_deg, level.rail_end_deg)
 	var rail_high := maxf(level.rail_start_deg, level.rail_end_deg)
-	var diameter := level.ball_radius * 2.0
 	for i in level.pins.size():
 		var p := level.pins[i]
 		if not p.is_finite():
@@ -22,23 +22,7 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				issues, ERROR, "Pin %d has a position that is not a number." % i, c, "not_finite"
 			)
 			continue
-		var owner := level.pin_pocket[i]
-		if owner < -1 or owner >= level.pockets.size():
-			BoardIssue.add_to(
-				issues,
-				ERROR,
-				"Pin %d belongs to pocket %d, which does not exist." % [i, owner],
-				p,
-				"bad_pin_pocket"
-			)
-		elif level.pin_special[i] != 0 and owner < 0:
-			BoardIssue.add_to(
-				issues,
-				ERROR,
-				"Pin %d is a special pin but belongs to no pocket." % i,
-				p,
-				"special_without_pocket"
-			)
+		_check_pin_owner(level, i, issues)
 		var d := p.distance_to(c)
 		if d > inside:
 			BoardIssue.add_to(
@@ -59,36 +43,69 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"pin_in_rail"
 			)
 			continue
-		var deflector_gap := _deflector_gap(level, p)
-		if owner < 0 and deflector_gap < diameter:
-			(
-				BoardIssue
-				. add_to(
-					issues,
-					WARNING,
-					(
-						"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
-						% [i, maxf(deflector_gap, 0.0), diameter]
-					),
-					p,
-					"narrow_gap_rail"
-				)
-			)
-			continue
-		var edge_gap := (guide_clear if in_rail_arc else inside) - d
-		if owner < 0 and edge_gap < diameter:
-			var code := "narrow_gap_rail" if in_rail_arc else "narrow_gap_ring"
-			var what := "the rail's guide" if in_rail_arc else "the ring"
-			BoardIssue.add_to(
+		# Rim pins of a pocket stand close to walls on purpose: only free pins trap balls.
+		if level.pin_pocket[i] < 0:
+			var edge_gap := (guide_clear if in_rail_arc else inside) - d
+			_check_pin_gaps(level, i, edge_gap, in_rail_arc, issues)
+
+
+# Pin i's pocket must exist, and a special pin must belong to one.
+static func _check_pin_owner(level: BoardLevel, i: int, issues: Array[BoardIssue]) -> void:
+	var owner := level.pin_pocket[i]
+	if owner < -1 or owner >= level.pockets.size():
+		BoardIssue.add_to(
+			issues,
+			ERROR,
+			"Pin %d belongs to pocket %d, which does not exist." % [i, owner],
+			level.pins[i],
+			"bad_pin_pocket"
+		)
+	elif level.pin_special[i] != 0 and owner < 0:
+		BoardIssue.add_to(
+			issues,
+			ERROR,
+			"Pin %d is a special pin but belongs to no pocket." % i,
+			level.pins[i],
+			"special_without_pocket"
+		)
+
+
+# Warns when free pin i leaves a gap narrower than a ball to the rail's deflector, or else to
+# the edge it faces (`edge_gap` away: the rail's guide inside the rail arc, the ring outside).
+static func _check_pin_gaps(
+	level: BoardLevel, i: int, edge_gap: float, in_rail_arc: bool, issues: Array[BoardIssue]
+) -> void:
+	var p := level.pins[i]
+	var diameter := level.ball_radius * 2.0
+	var deflector_gap := _deflector_gap(level, p)
+	if deflector_gap < diameter:
+		(
+			BoardIssue
+			. add_to(
 				issues,
 				WARNING,
 				(
-					"Pin %d leaves a %.1f px gap to %s; a ball (%.0f px) would stick there."
-					% [i, maxf(edge_gap, 0.0), what, diameter]
+					"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
+					% [i, maxf(deflector_gap, 0.0), diameter]
 				),
 				p,
-				code
+				"narrow_gap_rail"
 			)
+		)
+		return
+	if edge_gap < diameter:
+		var code := "narrow_gap_rail" if in_rail_arc else "narrow_gap_ring"
+		var what := "the rail's guide" if in_rail_arc else "the ring"
+		BoardIssue.add_to(
+			issues,
+			WARNING,
+			(
+				"Pin %d leaves a %.1f px gap to %s; a ball (%.0f px) would stick there."
+				% [i, maxf(edge_gap, 0.0), what, diameter]
+			),
+			p,
+			code
+		)
 
 
 static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> void:

@@ -11,6 +11,7 @@ const ENV := "BOARD_EDITOR_SELF_CHECK"
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 
 var _plugin: EditorPlugin
 var _problems := PackedStringArray()
@@ -82,26 +83,31 @@ func _run() -> void:
 		written = saved is BoardLevel and _count(saved as BoardLevel) == before + 1
 	_expect(written, "saving the scene did not write the board")
 	if OS.get_environment("BOARD_EDITOR_SELF_CHECK_PLAY") == "1":
-		# The dock's play-test button: the request names this board and the game starts.
-		_plugin.call("_play_test")
-		await _frames(30)
-		var request := ConfigFile.new()
-		request.load("user://playtest_request.cfg")
-		var named := str(request.get_value("playtest", "board", ""))
-		_expect(
-			EditorInterface.is_playing_scene() or named == level.resource_path,
-			"play-test did not start"
-		)
-		var playing := EditorInterface.get_playing_scene()
-		print("board editor self-check: play-test scene '%s', request '%s'" % [playing, named])
-		EditorInterface.stop_playing_scene()
-		# Never leave a request for a scratch board behind for the next real game.
-		DirAccess.remove_absolute("user://playtest_request.cfg")
+		await _check_play_test(level)
 	if fresh:
 		for step in 3:  # the drag, the added wall, then the new board itself
 			history.undo()
 		_expect((root as BoardNode).level == null, "undo did not take the new board back")
 	_finish(_problems)
+
+
+# The dock's play-test button: the request names the board and the game starts. The game only
+# plays boards from levels/, so the scratch board is played from a copy there, removed after.
+func _check_play_test(level: BoardLevel) -> void:
+	var scratch_path := level.resource_path
+	var copy := "res://levels/%s/self_check_play.tres" % BoardLevel.kind_name(level.kind)
+	level.take_over_path(copy)
+	_plugin.call("_play_test")
+	await _frames(30)
+	var named: String = PlaytestRequest.read(PlaytestRequest.PATH)["board"]
+	_expect(EditorInterface.is_playing_scene() or named == copy, "play-test did not start")
+	var playing := EditorInterface.get_playing_scene()
+	print("board editor self-check: play-test scene '%s', request '%s'" % [playing, named])
+	EditorInterface.stop_playing_scene()
+	# Never leave a request or a board copy behind for the next real game.
+	DirAccess.remove_absolute(PlaytestRequest.PATH)
+	DirAccess.remove_absolute(copy)
+	level.take_over_path(scratch_path)
 
 
 # A select-tool drag of the thing just added: previewed live, one step in the scene history.

@@ -4,6 +4,7 @@ extends GutTest
 ## board a game plays comes from the play-test request, the level select, or the default.
 
 const AppScript := preload("res://scenes/app/app.gd")
+const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SETTINGS := "user://test_app_settings.cfg"
 const SAVE := "user://test_app_save.cfg"
 
@@ -12,12 +13,12 @@ var _app: Node
 
 func before_each() -> void:
 	_app = AppScript.new()
-	DirAccess.remove_absolute(AppScript.PLAYTEST_PATH)
+	DirAccess.remove_absolute(PlaytestRequest.PATH)
 
 
 func after_each() -> void:
 	_app.free()
-	for path: String in [SETTINGS, SAVE, AppScript.PLAYTEST_PATH]:
+	for path: String in [SETTINGS, SAVE, PlaytestRequest.PATH]:
 		DirAccess.remove_absolute(path)
 	GameSettings.new().apply()
 
@@ -54,20 +55,14 @@ func test_requested_board_is_used() -> void:
 
 func test_playtest_request_wins_once_and_stays_for_restarts() -> void:
 	_app.call("request_board", "pachinko", "res://levels/pachinko/picked.tres")
-	var request := ConfigFile.new()
-	request.set_value("playtest", "board", "res://levels/pachinko/draft.tres")
-	request.set_value("playtest", "kind", "pachinko")
-	request.save(AppScript.PLAYTEST_PATH)
+	assert_eq(PlaytestRequest.write("res://levels/pachinko/draft.tres", "pachinko"), "")
 	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.tres")
-	assert_false(FileAccess.file_exists(AppScript.PLAYTEST_PATH), "request consumed")
+	assert_false(FileAccess.file_exists(PlaytestRequest.PATH), "request consumed")
 	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.tres")
 
 
 func test_playtest_request_for_the_other_game_is_left_alone() -> void:
-	var request := ConfigFile.new()
-	request.set_value("playtest", "board", "res://levels/maze/draft.tres")
-	request.set_value("playtest", "kind", BoardLevel.Kind.MAZE)
-	request.save(AppScript.PLAYTEST_PATH)
+	assert_eq(PlaytestRequest.write("res://levels/maze/draft.tres", "maze"), "")
 	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.tres")
 	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/draft.tres")
 

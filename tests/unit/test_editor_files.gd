@@ -6,10 +6,13 @@ const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
 
 const SCRATCH := "user://test_editor_files_board.tres"
+## The game only plays boards from levels/: a play-test board has to be saved there.
+const SCRATCH_LEVEL := "res://levels/maze/test_editor_files_scratch.tres"
+const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 
 
 func after_each() -> void:
-	for path in [SCRATCH, PlayTest.REQUEST_PATH]:
+	for path in [SCRATCH, SCRATCH_LEVEL, PlayTest.REQUEST_PATH]:
 		if FileAccess.file_exists(path):
 			DirAccess.remove_absolute(path)
 
@@ -35,13 +38,19 @@ func test_free_path_never_overwrites_a_board() -> void:
 
 func test_play_test_request_names_the_saved_board() -> void:
 	var level := NewBoard.make(BoardLevel.Kind.MAZE)
+	assert_eq(ResourceSaver.save(level, SCRATCH_LEVEL), OK)
+	level.take_over_path(SCRATCH_LEVEL)
+	assert_eq(PlayTest.write_request(level), "")
+	var request := PlaytestRequest.read(PlayTest.REQUEST_PATH)
+	assert_eq(request, {"board": SCRATCH_LEVEL, "kind": "maze", "problem": ""})
+
+
+func test_play_test_refuses_a_board_the_game_would_not_play() -> void:
+	var level := NewBoard.make(BoardLevel.Kind.MAZE)
 	assert_eq(ResourceSaver.save(level, SCRATCH), OK)
 	level.take_over_path(SCRATCH)
-	assert_eq(PlayTest.write_request(level), "")
-	var request := ConfigFile.new()
-	assert_eq(request.load(PlayTest.REQUEST_PATH), OK)
-	assert_eq(request.get_value("playtest", "board"), SCRATCH)
-	assert_eq(request.get_value("playtest", "kind"), "maze")
+	assert_string_contains(PlayTest.write_request(level), "res://levels/maze/<name>.tres")
+	assert_false(FileAccess.file_exists(PlayTest.REQUEST_PATH), "no request the game would drop")
 
 
 func test_play_test_refuses_boards_without_a_file_or_with_errors() -> void:

@@ -3,7 +3,8 @@ extends RefCounted
 ## The editor's play-test: saves the board, leaves a request the game reads on start
 ## (App.current_board_path), and runs the board's game scene from the editor.
 
-const REQUEST_PATH := "user://playtest_request.cfg"
+const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
+const REQUEST_PATH := PlaytestRequest.PATH
 const GAME_SCENES := {
 	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
 	"maze": "res://scenes/maze/maze_game.tscn",
@@ -20,13 +21,7 @@ static func write_request(level: BoardLevel) -> String:
 	var error := ResourceSaver.save(level, path)
 	if error != OK:
 		return "Play-test: could not save %s (%s)." % [path, error_string(error)]
-	var request := ConfigFile.new()
-	request.set_value("playtest", "board", path)
-	request.set_value("playtest", "kind", BoardLevel.kind_name(level.kind))
-	error = request.save(REQUEST_PATH)
-	if error != OK:
-		return "Play-test: could not write %s (%s)." % [REQUEST_PATH, error_string(error)]
-	return ""
+	return PlaytestRequest.write(path, BoardLevel.kind_name(level.kind))
 
 
 ## Saves, writes the request and plays the board's game; "" or what went wrong.

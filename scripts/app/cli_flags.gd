@@ -1,0 +1,102 @@
+extends RefCounted
+## The one table of command-line flags: the user arguments after `--`, as in
+## `godot --headless --path . -- --autoplay=maze --seconds=30`.
+##
+## A row is either a command, which picks what the run does (at most one per run; none plays
+## the game), or an option that only works with the commands listed in its `for`. The parser,
+## the value checks and `--help` all read this table, so a new flag is one new row, and a new
+## command is a row whose `runs` script has `static func run(values: Dictionary) -> int`.
+##
+## Row keys: `flag`; `command` (true for commands); `value` (a [enum Value]); `choices` for
+## [constant Value.CHOICE]; `max` for [constant Value.SECONDS]; `placeholder` shown in help;
+## `default` (options only, filled in when the flag is absent); `for` (options only: the
+## commands it works with); `runs` (commands only); `help`; `example` (a full argument list).
+
+## What a flag's value must be.
+enum Value {
+	NONE,  ## a switch: `--hard`, never `--hard=...`
+	CHOICE,  ## one of the row's `choices`
+	WHOLE,  ## a whole number
+	SECONDS,  ## a number of seconds above 0 and at most the row's `max`
+	TEXT,  ## any non-empty text
+}
+
+## Exit code for a run that did what it was asked.
+const EXIT_OK := 0
+## Exit code for unknown flags, bad values, or input the command cannot use.
+const EXIT_USAGE := 2
+
+const FLAGS: Array[Dictionary] = [
+	{
+		"flag": "--help",
+		"command": true,
+		"value": Value.NONE,
+		"help": "Print every flag with an example, then exit.",
+		"example": "--help",
+	},
+	{
+		"flag": "--autoplay",
+		"command": true,
+		"value": Value.CHOICE,
+		"choices": ["pachinko", "maze"],
+		"placeholder": "GAME",
+		"runs": preload("res://scripts/app/autoplay_cli.gd"),
+		"help": "Play a game headless by itself and print one JSON line saying what happened.",
+		"example": "--autoplay=pachinko --board=classic --seconds=60 --seed=1",
+	},
+	{
+		"flag": "--board",
+		"for": ["--autoplay"],
+		"value": Value.TEXT,
+		"placeholder": "ID",
+		"default": "classic",
+		"help": "The board: a name in levels/<game>/ or a res:// path (default classic).",
+		"example": "--autoplay=maze --board=catacombs",
+	},
+	{
+		"flag": "--seconds",
+		"for": ["--autoplay"],
+		"value": Value.SECONDS,
+		"max": 3600.0,
+		"placeholder": "S",
+		"help": "Game seconds to simulate (default 60 for pachinko, 120 for the maze).",
+		"example": "--autoplay=maze --seconds=30",
+	},
+	{
+		"flag": "--seed",
+		"for": ["--autoplay"],
+		"value": Value.WHOLE,
+		"placeholder": "N",
+		"default": 1,
+		"help": "Random seed: the same seed on the same build plays the same game (default 1).",
+		"example": "--autoplay=pachinko --seed=7",
+	},
+	{
+		"flag": "--hard",
+		"for": ["--autoplay"],
+		"value": Value.NONE,
+		"default": false,
+		"help": "Hard mode: the maze's black holes are live (the pachinko game ignores it).",
+		"example": "--autoplay=maze --hard",
+	},
+]
+
+
+## The row for `flag` (such as "--seed"), or an empty Dictionary when there is none.
+static func find(flag: String) -> Dictionary:
+	for row: Dictionary in FLAGS:
+		if row["flag"] == flag:
+			return row
+	return {}
+
+
+## The key a flag's value has in the parsed values: "--check-boards" → "check_boards".
+static func key_of(flag: String) -> String:
+	return flag.trim_prefix("--").replace("-", "_")
+
+
+## How a flag is written with its value, as help shows it: "--seed=N", "--hard".
+static func usage_of(row: Dictionary) -> String:
+	if row["value"] == Value.NONE:
+		return str(row["flag"])
+	return "%s=%s" % [row["flag"], row.get("placeholder", "VALUE")]

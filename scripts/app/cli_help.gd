@@ -1,0 +1,63 @@
+extends RefCounted
+## The `--help` text, written from the flag table so it always lists every flag.
+
+const CliFlags := preload("res://scripts/app/cli_flags.gd")
+## Help's left column width: the widest flag as written, plus a gap.
+const COLUMN := 20
+## Width of the description column, so help lines fit in 100 characters.
+const TEXT_WIDTH := 70
+
+
+## Every flag with what it does and an example, then the exit codes.
+static func text() -> String:
+	var lines := PackedStringArray(
+		[
+			"Board Studio. With no flags the game starts as usual. Flags go after `--`:",
+			"  godot --headless --path . -- FLAGS",
+			"",
+			"Commands (one at a time):",
+		]
+	)
+	lines.append_array(_rows(true))
+	lines.append("")
+	lines.append("Options (with the command they name):")
+	lines.append_array(_rows(false))
+	lines.append("")
+	lines.append(
+		(
+			"Exit codes: %d done; %d unknown flag, bad value or a board that cannot be loaded."
+			% [CliFlags.EXIT_OK, CliFlags.EXIT_USAGE]
+		)
+	)
+	return "\n".join(lines)
+
+
+static func _rows(commands: bool) -> PackedStringArray:
+	var lines := PackedStringArray()
+	for row: Dictionary in CliFlags.FLAGS:
+		if bool(row.get("command", false)) != commands:
+			continue
+		var help := str(row["help"])
+		if row.has("choices"):
+			help += " %s: %s." % [row["placeholder"], "|".join(PackedStringArray(row["choices"]))]
+		if row.has("for"):
+			help += " With %s." % " or ".join(PackedStringArray(row["for"]))
+		var left := CliFlags.usage_of(row)
+		for line in _wrap(help):
+			lines.append("  %s%s" % [left.rpad(COLUMN), line])
+			left = ""
+		lines.append("  %se.g. -- %s" % ["".rpad(COLUMN), row["example"]])
+	return lines
+
+
+# `text` cut at spaces into lines of at most TEXT_WIDTH characters.
+static func _wrap(text: String) -> PackedStringArray:
+	var lines := PackedStringArray()
+	var line := ""
+	for word in text.split(" ", false):
+		if not line.is_empty() and line.length() + 1 + word.length() > TEXT_WIDTH:
+			lines.append(line)
+			line = ""
+		line = word if line.is_empty() else "%s %s" % [line, word]
+	lines.append(line)
+	return lines
