@@ -32,7 +32,7 @@ func _initialize() -> void:
 
 ## Converts one .tres board; "" or what went wrong (nothing is removed on failure).
 static func convert_board(path: String, keep: bool) -> String:
-	var loaded := BoardLoader.load_board(path)
+	var loaded := BoardLoader.load_legacy(path)
 	if not loaded.ok():
 		return loaded.error
 	var text := Writer.write(loaded.level)

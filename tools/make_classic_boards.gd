@@ -1,11 +1,11 @@
 extends SceneTree
 ## Writes the two shipped classic boards from their recipes:
 ##   tools/godot.sh --headless --path . -s tools/make_classic_boards.gd
-## levels/pachinko/classic.tres: a ring machine in the spirit of the Flash chapter.
-## levels/maze/classic.tres: the tilt maze tutorial's exact layout.
+## levels/pachinko/classic.board: a ring machine in the spirit of the Flash chapter.
+## levels/maze/classic.board: the tilt maze tutorial's exact layout.
 
-const PACHINKO_PATH := "res://levels/pachinko/classic.tres"
-const MAZE_PATH := "res://levels/maze/classic.tres"
+const PACHINKO_PATH := "res://levels/pachinko/classic.board"
+const MAZE_PATH := "res://levels/maze/classic.board"
 
 # The maze tutorial's walls as (column, row, horizontal, length) in cells of 35 px.
 const MAZE_CELL := 35.0

@@ -164,7 +164,7 @@ static func _save(level: BoardLevel) -> bool:
 	if not errors.is_empty():
 		push_error("make_original_boards: %s has %d errors." % [level.board_id, errors.size()])
 		return false
-	var path := "res://levels/%s/%s.tres" % [kind, id]
+	var path := "res://levels/%s/%s.board" % [kind, id]
 	# Keep the file's uid (or give it one) so the editor never rewrites the file to add it.
 	var uid := ResourceLoader.get_resource_uid(path) if FileAccess.file_exists(path) else -1
 	var error := ResourceSaver.save(level, path)

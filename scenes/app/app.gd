@@ -32,6 +32,11 @@ var _settings_path := SETTINGS_PATH
 
 
 func _ready() -> void:
+	# A tool script run with -s (converters, shots, tests) owns the arguments after `--`.
+	var engine_args := OS.get_cmdline_args()
+	if engine_args.has("-s") or engine_args.has("--script"):
+		load_player_files(SETTINGS_PATH, SAVE_PATH)
+		return
 	var code := CommandLine.run(OS.get_cmdline_user_args())
 	if code != CommandLine.START_GAME:
 		get_tree().quit(code)
@@ -84,7 +89,7 @@ func current_board_path(kind: String) -> String:
 		return requested
 	if _picked_boards.has(kind):
 		return _picked_boards[kind]
-	return "res://levels/%s/classic.tres" % kind
+	return "res://levels/%s/classic.board" % kind
 
 
 ## Best maze time on a board in seconds, -1 when none.

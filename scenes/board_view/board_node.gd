@@ -8,7 +8,7 @@ extends Node2D
 ## At most this many validator findings are listed as configuration warnings.
 const MAX_WARNINGS := 12
 
-## The board shown and edited. Saving the scene saves this resource's own .tres file.
+## The board shown and edited. Saving the scene saves this resource's own .board file.
 @export var level: BoardLevel:
 	set(value):
 		if level == value:
@@ -39,7 +39,9 @@ func _draw() -> void:
 func _get_configuration_warnings() -> PackedStringArray:
 	var warnings := PackedStringArray()
 	if level == null:
-		warnings.append("Assign a BoardLevel (.tres from levels/) to show and edit a board.")
+		warnings.append(
+			"Assign a BoardLevel (a .board file from levels/) to show and edit a board."
+		)
 		return warnings
 	var found := issues()
 	for issue: BoardIssue in found.slice(0, MAX_WARNINGS):

@@ -14,7 +14,7 @@ const MazeNote := preload("res://scenes/maze/maze_note.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
-const FALLBACK_BOARD := "res://levels/maze/classic.tres"
+const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## Texture pixels per board pixel: sharp at 1080p, still fine when shrunk at 720p.
 const CANVAS_SCALE := 3.0
 ## Wall hits quieter than this (px/s) make no sound.

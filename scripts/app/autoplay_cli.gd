@@ -34,8 +34,8 @@ static func run(values: Dictionary) -> int:
 	return 0
 
 
-## A bare board name means levels/<game>/<name>.tres; a res:// path is used as it is.
+## A bare board name means levels/<game>/<name>.board; a res:// path is used as it is.
 static func resolve_board_path(game: String, board: String) -> String:
 	if board.begins_with("res://") or board.begins_with("user://"):
 		return board
-	return "res://levels/%s/%s.tres" % [game, board]
+	return "res://levels/%s/%s.board" % [game, board]

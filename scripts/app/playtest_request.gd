@@ -5,7 +5,7 @@ extends RefCounted
 ## ConfigFile would build any object written in it and run its script.
 ##
 ## Every field is checked before the board is used: `board` must be a shipped-levels path
-## res://levels/<kind>/<name>.tres; `kind` pachinko or maze, matching the folder;
+## res://levels/<kind>/<name>.board; `kind` pachinko or maze, matching the folder;
 ## `written_at` (unix seconds) less than [constant MAX_AGE_SECONDS] old. A request that
 ## fails any check is removed with a warning saying why.
 
@@ -21,7 +21,7 @@ const FUTURE_SLACK_SECONDS := 5.0
 const MAX_BYTES := 4096
 const FORMAT := 1
 const FIELDS := ["format", "board", "kind", "written_at"]
-const BOARD_PATTERN := "^res://levels/(pachinko|maze)/[A-Za-z0-9_-]+\\.tres$"
+const BOARD_PATTERN := "^res://levels/(pachinko|maze)/[A-Za-z0-9_-]+\\.board$"
 
 
 ## Writes a request to play `board_path` in the game `kind` ("pachinko" or "maze").
@@ -78,7 +78,7 @@ static func check(request: Dictionary, now: float) -> String:
 		return 'kind must be "pachinko" or "maze", got %s' % _shown(kind)
 	var board: Variant = request["board"]
 	if not board is String or not _board_path_ok(board, kind):
-		var wanted := "res://levels/%s/<name>.tres" % kind
+		var wanted := "res://levels/%s/<name>.board" % kind
 		return (
 			"the board must be a file %s (name: letters, digits, _ or -), got %s"
 			% [wanted, _shown(board)]

@@ -1,7 +1,8 @@
 class_name BoardLoader
 extends RefCounted
-## Loads boards safely: only res:// files, checked before and after the engine parses them,
-## upgraded from older versions and validated. A broken board never stops the others.
+## Loads boards safely: `.board` files inside the board folders (the shipped levels/ and the
+## player's user://boards/), read as data by BoardTextReader and validated. A broken board
+## never stops the others. `load_legacy` reads the old .tres layout for the converter.
 
 const FileCheck := preload("res://scripts/loading/board_file_check.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
@@ -21,10 +22,24 @@ static func load_board(path: String, roots: Array[String] = BOARD_ROOTS) -> Boar
 	var outside := path_problem(path, roots)
 	if not outside.is_empty():
 		return _fail(result, outside)
-	if path.ends_with(".board"):
-		return _finish(result, _read_board_file(result, path))
-	if not path.ends_with(".tres"):
+	if path.ends_with(".tres"):
+		return _fail(
+			result,
+			"an old board layout (.tres): convert it with tools/convert_boards.gd (see README)"
+		)
+	if not path.ends_with(".board"):
 		return _fail(result, "a board file must be a .board file")
+	return _finish(result, _read_board_file(result, path))
+
+
+## Loads a board saved in the old text-resource layout (.tres), for the converter and its
+## tests only: the file is checked as text, then handed to Godot's resource parser, which
+## can build objects. The game never calls this; convert only files you trust.
+static func load_legacy(path: String) -> BoardLoadResult:
+	var result := BoardLoadResult.new()
+	result.path = path
+	if not path.begins_with("res://") or not path.ends_with(".tres"):
+		return _fail(result, "only res:// .tres files are trusted to load as old boards")
 	var checked := {"error": "", "version": -1}
 	if FileAccess.file_exists(path):
 		checked = FileCheck.check(path)
@@ -105,21 +120,22 @@ static func _finish(result: BoardLoadResult, level: BoardLevel) -> BoardLoadResu
 	return result
 
 
-## Every board of a kind (BoardLevel.Kind), sorted by file name: a result per `.tres` file
-## in `<root>/<kind>/` (root: levels/), broken ones included (with their error).
+## Every board of a kind (BoardLevel.Kind), sorted by file name: a result for every file
+## in `<root>/<kind>/` (root: levels/), refused ones included with their error, so a stray
+## or broken file is shown to the player instead of hidden.
 static func list_boards(kind: int, root: String = LEVELS_DIR) -> Array[BoardLoadResult]:
 	var results: Array[BoardLoadResult] = []
 	var dir_path := "%s/%s" % [root, BoardLevel.kind_name(kind)]
+	var roots: Array[String] = [root.trim_suffix("/") + "/"]
 	var names: Array[String] = []
 	for file_name in DirAccess.get_files_at(dir_path):
-		# Exported builds list remapped files; the loader takes the original name.
-		var plain := file_name.trim_suffix(".remap")
-		var known := plain.ends_with(".tres") or plain.ends_with(".board")
-		if known and not names.has(plain):
-			names.append(plain)
+		# Godot's own side files are not boards.
+		if file_name.begins_with(".") or file_name.get_extension() in ["uid", "import"]:
+			continue
+		names.append(file_name)
 	names.sort()
 	for file_name in names:
-		var loaded := load_board("%s/%s" % [dir_path, file_name])
+		var loaded := load_board("%s/%s" % [dir_path, file_name], roots)
 		if loaded.level != null and loaded.level.kind != kind:
 			loaded = _fail(loaded, "the board is not a %s board" % BoardLevel.kind_name(kind))
 		results.append(loaded)

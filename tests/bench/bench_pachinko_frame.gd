@@ -6,7 +6,7 @@ extends SceneTree
 ## rendering server is a dummy: GPU work and presenting the frame are NOT measured.
 ## Writes build/bench/pachinko_frame.json.
 
-const CLASSIC := "res://levels/pachinko/classic.tres"
+const CLASSIC := "res://levels/pachinko/classic.board"
 const BOARD_VIEW := "res://scenes/pachinko/board/board_view.tscn"
 const BALLS := 200
 const WARMUP_FRAMES := 60

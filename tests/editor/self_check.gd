@@ -95,7 +95,7 @@ func _run() -> void:
 # plays boards from levels/, so the scratch board is played from a copy there, removed after.
 func _check_play_test(level: BoardLevel) -> void:
 	var scratch_path := level.resource_path
-	var copy := "res://levels/%s/self_check_play.tres" % BoardLevel.kind_name(level.kind)
+	var copy := "res://levels/%s/self_check_play.board" % BoardLevel.kind_name(level.kind)
 	level.take_over_path(copy)
 	_plugin.call("_play_test")
 	await _frames(30)

@@ -2,7 +2,7 @@ extends GutTest
 ## The maze autoplay: it plays the classic board to the goal, the same seed plays the same
 ## game, and its planner reads the board's grid right.
 
-const CLASSIC := "res://levels/maze/classic.tres"
+const CLASSIC := "res://levels/maze/classic.board"
 const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
 const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
 const MazeSlidePlanner := preload("res://scripts/maze/autoplay/maze_slide_planner.gd")

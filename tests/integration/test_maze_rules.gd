@@ -1,7 +1,7 @@
 extends GutTest
 ## The maze rules headless: the seed's tilt physics, walls and caps, win and loss, modes.
 
-const CLASSIC := "res://levels/maze/classic.tres"
+const CLASSIC := "res://levels/maze/classic.board"
 ## An open spot in the classic board's central plaza.
 const PLAZA := Vector2(157.5, 122.5)
 

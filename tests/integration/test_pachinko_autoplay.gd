@@ -2,7 +2,7 @@ extends GutTest
 ## The headless autoplay: every ball accounted for after a long seeded run, and the same
 ## seed plays the same game.
 
-const CLASSIC := "res://levels/pachinko/classic.tres"
+const CLASSIC := "res://levels/pachinko/classic.board"
 const Autoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 
 

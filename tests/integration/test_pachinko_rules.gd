@@ -2,7 +2,7 @@ extends GutTest
 ## The pachinko rules driven step by step on the classic board: the instructions gate,
 ## the flipper's drawback, the physical launch rail, pockets, the gutter and game over.
 
-const CLASSIC := "res://levels/pachinko/classic.tres"
+const CLASSIC := "res://levels/pachinko/classic.board"
 const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 

@@ -96,9 +96,9 @@ func test_a_gamepad_trigger_sets_the_power_and_fires_when_let_go() -> void:
 
 
 func test_a_broken_board_path_shows_the_problem() -> void:
-	App.request_board("pachinko", "res://levels/pachinko/does_not_exist.tres")
+	App.request_board("pachinko", "res://levels/pachinko/does_not_exist.board")
 	var game := _game()
-	App.request_board("pachinko", "res://levels/pachinko/classic.tres")
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
 	assert_push_error("does not exist")
 	assert_null(game.get("rules"), "nothing to play")
 	var title := game.get_node("Instructions/Card/Margin/Box/Title") as Label

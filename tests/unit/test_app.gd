@@ -43,28 +43,28 @@ func test_damaged_settings_are_reported_once_and_replaced() -> void:
 
 
 func test_default_board_is_the_classic_one() -> void:
-	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/classic.tres")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.tres")
+	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/classic.board")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.board")
 
 
 func test_requested_board_is_used() -> void:
-	_app.call("request_board", "maze", "res://levels/maze/other.tres")
-	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/other.tres")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.tres")
+	_app.call("request_board", "maze", "res://levels/maze/other.board")
+	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/other.board")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.board")
 
 
 func test_playtest_request_wins_once_and_stays_for_restarts() -> void:
-	_app.call("request_board", "pachinko", "res://levels/pachinko/picked.tres")
-	assert_eq(PlaytestRequest.write("res://levels/pachinko/draft.tres", "pachinko"), "")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.tres")
+	_app.call("request_board", "pachinko", "res://levels/pachinko/picked.board")
+	assert_eq(PlaytestRequest.write("res://levels/pachinko/draft.board", "pachinko"), "")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.board")
 	assert_false(FileAccess.file_exists(PlaytestRequest.PATH), "request consumed")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.tres")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.board")
 
 
 func test_playtest_request_for_the_other_game_is_left_alone() -> void:
-	assert_eq(PlaytestRequest.write("res://levels/maze/draft.tres", "maze"), "")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.tres")
-	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/draft.tres")
+	assert_eq(PlaytestRequest.write("res://levels/maze/draft.board", "maze"), "")
+	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.board")
+	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/draft.board")
 
 
 func test_best_maze_time_keeps_the_fastest_and_persists() -> void:

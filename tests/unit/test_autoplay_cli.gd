@@ -5,7 +5,7 @@ const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
 
 
 func test_board_names_resolve_to_level_files() -> void:
-	assert_eq(AutoplayCli.resolve_board_path("maze", "classic"), "res://levels/maze/classic.tres")
+	assert_eq(AutoplayCli.resolve_board_path("maze", "classic"), "res://levels/maze/classic.board")
 	assert_eq(AutoplayCli.resolve_board_path("pachinko", "res://x/y.tres"), "res://x/y.tres")
 
 

@@ -2,8 +2,8 @@ extends GutTest
 ## The shipped boards: they load, validate clean, match their recipes and survive a save and
 ## load unchanged.
 
-const SHIPPED := ["res://levels/pachinko/classic.tres", "res://levels/maze/classic.tres"]
-const TEMP := "user://test_board_roundtrip.tres"
+const SHIPPED := ["res://levels/pachinko/classic.board", "res://levels/maze/classic.board"]
+const TEMP := "user://test_board_roundtrip.board"
 
 
 func after_all() -> void:

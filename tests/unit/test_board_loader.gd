@@ -29,7 +29,7 @@ const BROKEN := {
 func test_each_broken_file_is_refused_with_its_problem() -> void:
 	for name: String in BROKEN:
 		var path := DIR + name + ".tres"
-		var loaded := BoardLoader.load_board(path)
+		var loaded := BoardLoader.load_legacy(path)
 		assert_null(loaded.level, name)
 		assert_false(loaded.ok(), name)
 		assert_string_contains(loaded.error, path, false)
@@ -38,18 +38,18 @@ func test_each_broken_file_is_refused_with_its_problem() -> void:
 
 
 func test_missing_file_and_untrusted_places_are_refused() -> void:
-	var missing := BoardLoader.load_board(DIR + "no_such_board.tres")
+	var missing := BoardLoader.load_legacy(DIR + "no_such_board.tres")
 	assert_string_contains(missing.error, "does not exist")
-	var outside := BoardLoader.load_board("user://some_board.tres")
+	var outside := BoardLoader.load_legacy("user://some_board.tres")
 	assert_string_contains(outside.error, "only res://")
-	var binary := BoardLoader.load_board(DIR + "tiny_pachinko.res")
+	var binary := BoardLoader.load_legacy(DIR + "tiny_pachinko.res")
 	assert_string_contains(binary.error, ".tres")
-	assert_string_contains(BoardLoader.load_board("").error, "only res://")
+	assert_string_contains(BoardLoader.load_legacy("").error, "only res://")
 
 
 func test_good_fixtures_load() -> void:
 	for name: String in ["tiny_pachinko", "tiny_maze"]:
-		var loaded := BoardLoader.load_board(DIR + name + ".tres")
+		var loaded := BoardLoader.load_legacy(DIR + name + ".tres")
 		assert_true(loaded.ok(), loaded.error)
 		assert_eq(loaded.warnings.size(), 0, name)
 
@@ -61,7 +61,9 @@ func test_a_broken_board_does_not_stop_the_others() -> void:
 	for loaded in results:
 		names.append(loaded.path.get_file())
 		good += 1 if loaded.ok() else 0
-	assert_eq(names, ["a_good.tres", "b_broken.tres", "c_maze_in_wrong_folder.tres", "d_good.tres"])
+	assert_eq(
+		names, ["a_good.board", "b_broken.board", "c_maze_in_wrong_folder.board", "d_good.board"]
+	)
 	assert_eq(good, 2)
 	assert_string_contains(results[2].error, "not a pachinko board")
 	var mazes := BoardLoader.list_boards(BoardLevel.Kind.MAZE, DIR + "catalog")
@@ -70,7 +72,7 @@ func test_a_broken_board_does_not_stop_the_others() -> void:
 
 
 func test_version_0_pachinko_is_upgraded() -> void:
-	var loaded := BoardLoader.load_board(DIR + "v0_pachinko.tres")
+	var loaded := BoardLoader.load_legacy(DIR + "v0_pachinko.tres")
 	assert_true(loaded.ok(), loaded.error)
 	var level := loaded.level
 	assert_eq(level.version, BoardLevel.CURRENT_VERSION)
@@ -84,8 +86,8 @@ func test_version_0_pachinko_is_upgraded() -> void:
 
 
 func test_version_0_maze_walls_become_pixel_segments() -> void:
-	var old := BoardLoader.load_board(DIR + "v0_maze.tres")
-	var current := BoardLoader.load_board(DIR + "tiny_maze.tres")
+	var old := BoardLoader.load_legacy(DIR + "v0_maze.tres")
+	var current := BoardLoader.load_legacy(DIR + "tiny_maze.tres")
 	assert_true(old.ok(), old.error)
 	assert_eq(old.level.walls, current.level.walls)
 	assert_eq(old.level.version, BoardLevel.CURRENT_VERSION)

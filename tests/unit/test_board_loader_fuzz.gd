@@ -37,7 +37,7 @@ func test_mangled_files_are_refused_cleanly() -> void:
 			var file := FileAccess.open(path, FileAccess.WRITE)
 			file.store_string(_mangle(base, rng))
 			file.close()
-			var loaded := BoardLoader.load_board(path)
+			var loaded := BoardLoader.load_legacy(path)
 			if loaded.ok():
 				assert_eq(BoardValidator.errors(loaded.level).size(), 0, path)
 			else:

@@ -35,7 +35,7 @@ func test_swapping_levels_disconnects_the_old_one() -> void:
 
 
 func test_fit_transform_centres_the_board_and_its_overhang() -> void:
-	var level: BoardLevel = load("res://levels/maze/classic.tres")
+	var level: BoardLevel = load("res://levels/maze/classic.board")
 	# The maze's edge walls reach 5 px outside its 350 × 315 area: 360 × 325 in all.
 	var xform := BoardPainter.fit_transform(level, Rect2(0, 0, 720, 720))
 	assert_almost_eq(xform.get_scale(), Vector2(2, 2), Vector2.ONE * 1e-5)

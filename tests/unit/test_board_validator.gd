@@ -137,7 +137,7 @@ func test_errors_sort_before_warnings() -> void:
 
 func test_hundreds_of_pins_validate() -> void:
 	var level: BoardLevel = (
-		(load("res://levels/pachinko/classic.tres") as BoardLevel).duplicate_level()
+		(load("res://levels/pachinko/classic.board") as BoardLevel).duplicate_level()
 	)
 	var pins := level.pins
 	assert_gt(pins.size(), 300)

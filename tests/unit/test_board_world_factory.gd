@@ -2,8 +2,8 @@ extends GutTest
 ## BoardWorldFactory builds the right world, and the launch rail works in it: a strong shot
 ## goes round the rail into the field, a weak one rolls back into the return zone (zone 0).
 
-const CLASSIC := "res://levels/pachinko/classic.tres"
-const MAZE := "res://levels/maze/classic.tres"
+const CLASSIC := "res://levels/pachinko/classic.board"
+const MAZE := "res://levels/maze/classic.board"
 const DT := 1.0 / 120.0
 
 

@@ -5,9 +5,9 @@ const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
 
-const SCRATCH := "user://test_editor_files_board.tres"
+const SCRATCH := "user://test_editor_files_board.board"
 ## The game only plays boards from levels/: a play-test board has to be saved there.
-const SCRATCH_LEVEL := "res://levels/maze/test_editor_files_scratch.tres"
+const SCRATCH_LEVEL := "res://levels/maze/test_editor_files_scratch.board"
 const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 
 
@@ -31,9 +31,9 @@ func test_new_boards_are_playable_starting_points() -> void:
 func test_free_path_never_overwrites_a_board() -> void:
 	var level := NewBoard.make(BoardLevel.Kind.MAZE)
 	level.board_id = "maze_classic"
-	assert_eq(NewBoard.free_path(level), "res://levels/maze/classic_2.tres")
+	assert_eq(NewBoard.free_path(level), "res://levels/maze/classic_2.board")
 	level.board_id = "maze_Fresh Idea"
-	assert_eq(NewBoard.free_path(level), "res://levels/maze/fresh_idea.tres")
+	assert_eq(NewBoard.free_path(level), "res://levels/maze/fresh_idea.board")
 
 
 func test_play_test_request_names_the_saved_board() -> void:
@@ -49,13 +49,13 @@ func test_play_test_refuses_a_board_the_game_would_not_play() -> void:
 	var level := NewBoard.make(BoardLevel.Kind.MAZE)
 	assert_eq(ResourceSaver.save(level, SCRATCH), OK)
 	level.take_over_path(SCRATCH)
-	assert_string_contains(PlayTest.write_request(level), "res://levels/maze/<name>.tres")
+	assert_string_contains(PlayTest.write_request(level), "res://levels/maze/<name>.board")
 	assert_false(FileAccess.file_exists(PlayTest.REQUEST_PATH), "no request the game would drop")
 
 
 func test_play_test_refuses_boards_without_a_file_or_with_errors() -> void:
 	var level := NewBoard.make(BoardLevel.Kind.MAZE)
-	assert_string_contains(PlayTest.write_request(level), "own .tres file")
+	assert_string_contains(PlayTest.write_request(level), "own .board file")
 	level.take_over_path(SCRATCH)
 	level.goal_radius = -1.0
 	assert_string_contains(PlayTest.run(level), "error")

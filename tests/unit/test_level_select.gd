@@ -55,10 +55,12 @@ func test_every_board_file_gets_a_card() -> void:
 func test_broken_board_is_listed_greyed_with_its_error() -> void:
 	var screen := _open("maze")
 	var good := BoardLoader.list_boards(BoardLevel.Kind.MAZE)
-	var broken := BoardLoader.load_board("res://levels/maze/does_not_exist.tres")
+	var broken := BoardLoader.load_board("res://levels/maze/does_not_exist.board")
 	var results: Array[BoardLoadResult] = []
 	results.append_array(good)
-	results.append(BoardLoader.load_board("res://tests/fixtures/boards/broken_garbage.tres"))
+	results.append(
+		BoardLoader.load_board("res://tests/fixtures/boards/catalog/pachinko/b_broken.board")
+	)
 	results.append(broken)
 	screen.call("show_boards", results)
 	var cards: Array = screen.call("cards")
@@ -71,7 +73,7 @@ func test_broken_board_is_listed_greyed_with_its_error() -> void:
 	var texts := PackedStringArray()
 	for label in last.find_children("*", "Label", true, false):
 		texts.append((label as Label).text)
-	assert_string_contains(" ".join(texts), "does_not_exist.tres")
+	assert_string_contains(" ".join(texts), "does_not_exist.board")
 	assert_string_contains(str((screen.get_node("%SummaryLabel") as Label).text), "2 could not")
 
 

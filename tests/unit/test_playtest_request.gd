@@ -5,7 +5,7 @@ extends GutTest
 
 const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SCRATCH := "user://test_playtest_request.json"
-const BOARD := "res://levels/maze/draft.tres"
+const BOARD := "res://levels/maze/draft.board"
 
 
 ## Helpers every test class shares (inner classes cannot call the outer script's functions).
@@ -31,7 +31,7 @@ class TestWriteAndRead:
 		assert_eq(PlaytestRequest.read(SCRATCH), {"board": BOARD, "kind": "maze", "problem": ""})
 
 	func test_the_file_is_plain_json_with_the_four_fields() -> void:
-		PlaytestRequest.write("res://levels/pachinko/tulips.tres", "pachinko", SCRATCH)
+		PlaytestRequest.write("res://levels/pachinko/tulips.board", "pachinko", SCRATCH)
 		var data: Variant = JSON.parse_string(FileAccess.get_file_as_string(SCRATCH))
 		assert_true(data is Dictionary)
 		var keys: Array = (data as Dictionary).keys()
@@ -40,7 +40,7 @@ class TestWriteAndRead:
 
 	func test_the_editor_cannot_write_a_request_the_game_would_refuse() -> void:
 		var problem := PlaytestRequest.write("user://boards/mine.tres", "maze", SCRATCH)
-		assert_string_contains(problem, "res://levels/maze/<name>.tres")
+		assert_string_contains(problem, "res://levels/maze/<name>.board")
 		assert_false(FileAccess.file_exists(SCRATCH))
 
 
@@ -50,10 +50,10 @@ class TestFieldChecks:
 	# A change to a fresh request, and a piece of the problem it must give.
 	const CASES := [
 		[{"board": "res://levels/maze/../../project.godot"}, "the board must be a file"],
-		[{"board": "res://levels/maze/sub/x.tres"}, "the board must be a file"],
+		[{"board": "res://levels/maze/sub/x.board"}, "the board must be a file"],
 		[{"board": "res://levels/maze/x.tscn"}, "the board must be a file"],
-		[{"board": "user://levels/maze/x.tres"}, "the board must be a file"],
-		[{"board": "res://levels/pachinko/x.tres"}, "res://levels/maze/<name>.tres"],
+		[{"board": "user://levels/maze/x.board"}, "the board must be a file"],
+		[{"board": "res://levels/pachinko/x.board"}, "res://levels/maze/<name>.board"],
 		[{"board": 7}, "got 7"],
 		[{"kind": "pinball"}, "kind must be"],
 		[{"kind": 1}, "kind must be"],
@@ -107,7 +107,7 @@ class TestTake:
 
 	func test_bad_request_is_removed_with_a_warning_even_for_the_other_game() -> void:
 		var request := Files.fresh_request()
-		request["board"] = "res://levels/maze/../secret.tres"
+		request["board"] = "res://levels/maze/../secret.board"
 		Files.write_text(SCRATCH, JSON.stringify(request))
 		assert_eq(PlaytestRequest.take("pachinko", SCRATCH), "")
 		assert_false(FileAccess.file_exists(SCRATCH))

@@ -10,7 +10,7 @@ const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
 const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
-const BOARD := "res://levels/maze/classic.tres"
+const BOARD := "res://levels/maze/classic.board"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = ["maze_start", "maze_tilt", "maze_win", "maze_lost"]
 ## Pilot seeds tried, and physics steps per try, before the win shot gives up.

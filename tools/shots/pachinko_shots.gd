@@ -8,7 +8,7 @@ const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
 const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
-const BOARD := "res://levels/pachinko/classic.tres"
+const BOARD := "res://levels/pachinko/classic.board"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = ["pachinko_start", "pachinko_play", "pachinko_win", "pachinko_over"]
 const FRAME := 1.0 / 60.0

@@ -81,15 +81,15 @@ static func make(kind: int) -> BoardLevel:
 	return level
 
 
-## A free level path for `level`: levels/<kind>/<id>.tres, numbered if taken.
+## A free level path for `level`: levels/<kind>/<id>.board, numbered if taken.
 static func free_path(level: BoardLevel) -> String:
 	var kind := BoardLevel.kind_name(level.kind)
 	var id := level.board_id.trim_prefix(kind + "_").validate_filename().to_snake_case()
 	if id.is_empty():
 		id = "untitled"
-	var path := "res://levels/%s/%s.tres" % [kind, id]
+	var path := "res://levels/%s/%s.board" % [kind, id]
 	var n := 2
 	while ResourceLoader.exists(path) or FileAccess.file_exists(path):
-		path = "res://levels/%s/%s_%d.tres" % [kind, id, n]
+		path = "res://levels/%s/%s_%d.board" % [kind, id, n]
 		n += 1
 	return path

@@ -17,7 +17,7 @@ static func write_request(level: BoardLevel) -> String:
 		return "Play-test: there is no board to play."
 	var path := level.resource_path
 	if path.is_empty() or path.contains("::"):
-		return "Play-test: save the board as its own .tres file first (it is built into the scene)."
+		return "Play-test: save the board as its own .board file first (it is built into the scene)."
 	var error := ResourceSaver.save(level, path)
 	if error != OK:
 		return "Play-test: could not save %s (%s)." % [path, error_string(error)]
