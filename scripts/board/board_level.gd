@@ -1,7 +1,8 @@
 @tool
 class_name BoardLevel
 extends Resource
-## One board, pachinko or maze, saved as a `.board` file (JSON Lines, see BoardTextWriter) in `levels/<kind>/`.
+## One board, pachinko or maze, saved as a `.board` file (JSON Lines, BoardTextWriter) in
+## `levels/<kind>/`.
 ##
 ## Both kinds share this model; each uses its own group of fields. Units are pixels, angles
 ## are degrees (y down, 0 = right, 90 = down). Defaults are deliberately empty (zero sizes,
