@@ -4,7 +4,7 @@ SHELL := /bin/bash
 GODOT := tools/godot.sh
 GD_SOURCES = $(shell git ls-files -co --exclude-standard '*.gd' | grep -v '^addons/gut/')
 
-.PHONY: play test setup lint format editor shots bench export export-check clean
+.PHONY: play test setup lint format editor shots bench export export-check check-boards clean
 
 ## make play: the game window with a display, the headless autoplay demo without one
 play: setup
@@ -37,6 +37,10 @@ editor: setup
 shots:
 	@tools/setup.sh pictures
 	@tools/shots.sh
+
+## make check-boards: every board file in levels/ and user://boards/, one JSON line each
+check-boards: setup
+	@$(GODOT) --headless --path . -- --check-boards
 
 bench: setup
 	@tools/bench.sh

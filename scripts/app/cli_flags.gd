@@ -45,6 +45,18 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--autoplay=pachinko --board=classic --seconds=60 --seed=1",
 	},
 	{
+		"flag": "--check-boards",
+		"command": true,
+		"value": Value.NONE,
+		"runs": preload("res://scripts/loading/board_check_cli.gd"),
+		"help":
+		(
+			"Load every board file in levels/ and user://boards/, print one JSON line per file"
+			+ " and a summary; exit 1 when any is refused."
+		),
+		"example": "--check-boards",
+	},
+	{
 		"flag": "--board",
 		"for": ["--autoplay"],
 		"value": Value.TEXT,

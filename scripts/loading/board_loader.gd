@@ -93,7 +93,11 @@ static func _read_board_file(result: BoardLoadResult, path: String) -> BoardLeve
 	if size != null and size.get_length() > Reader.Schema.MAX_FILE_BYTES:
 		result.error = "the file is larger than %d bytes" % Reader.Schema.MAX_FILE_BYTES
 		return null
-	var read := Reader.read(FileAccess.get_file_as_string(path))
+	var bytes := FileAccess.get_file_as_bytes(path)
+	if bytes.has(0):
+		result.error = "the file contains a NUL byte; a board file is plain text"
+		return null
+	var read := Reader.read(bytes.get_string_from_utf8())
 	if read.has("error"):
 		result.error = read["error"]
 		return null
@@ -125,21 +129,32 @@ static func _finish(result: BoardLoadResult, level: BoardLevel) -> BoardLoadResu
 ## or broken file is shown to the player instead of hidden.
 static func list_boards(kind: int, root: String = LEVELS_DIR) -> Array[BoardLoadResult]:
 	var results: Array[BoardLoadResult] = []
+	for path in list_files(kind, root):
+		results.append(load_listed(path, kind, root))
+	return results
+
+
+## The paths of every file in `<root>/<kind>/`, sorted, less Godot's own side files.
+static func list_files(kind: int, root: String = LEVELS_DIR) -> Array[String]:
 	var dir_path := "%s/%s" % [root, BoardLevel.kind_name(kind)]
-	var roots: Array[String] = [root.trim_suffix("/") + "/"]
-	var names: Array[String] = []
+	var paths: Array[String] = []
+	if not DirAccess.dir_exists_absolute(dir_path):
+		return paths
 	for file_name in DirAccess.get_files_at(dir_path):
-		# Godot's own side files are not boards.
 		if file_name.begins_with(".") or file_name.get_extension() in ["uid", "import"]:
 			continue
-		names.append(file_name)
-	names.sort()
-	for file_name in names:
-		var loaded := load_board("%s/%s" % [dir_path, file_name], roots)
-		if loaded.level != null and loaded.level.kind != kind:
-			loaded = _fail(loaded, "the board is not a %s board" % BoardLevel.kind_name(kind))
-		results.append(loaded)
-	return results
+		paths.append("%s/%s" % [dir_path, file_name])
+	paths.sort()
+	return paths
+
+
+## Loads a file found by `list_files` in `root`, refusing a board of the other kind.
+static func load_listed(path: String, kind: int, root: String = LEVELS_DIR) -> BoardLoadResult:
+	var roots: Array[String] = [root.trim_suffix("/") + "/"]
+	var loaded := load_board(path, roots)
+	if loaded.level != null and loaded.level.kind != kind:
+		loaded = _fail(loaded, "the board is not a %s board" % BoardLevel.kind_name(kind))
+	return loaded
 
 
 static func _fail(result: BoardLoadResult, problem: String) -> BoardLoadResult:

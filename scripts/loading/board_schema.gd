@@ -181,4 +181,6 @@ static func check_number(value: Variant, low: float, high: float, whole: bool) -
 
 
 static func _short(number: float) -> String:
-	return str(int(number)) if number == floorf(number) and absf(number) < 1e15 else str(number)
+	if absf(number) >= 1e9:
+		return String.num_scientific(number)
+	return str(int(number)) if number == floorf(number) else str(number)

@@ -41,9 +41,10 @@ static func _gather_lines(text: String) -> Dictionary:
 		var line := lines[number].strip_edges()
 		if line.is_empty():
 			continue
-		if json.parse(line) != OK or not json.data is Dictionary:
-			var why := json.get_error_message() if json.data == null else "not a { ... } object"
-			return _error("line %d is not a JSON object: %s" % [number + 1, why])
+		if json.parse(line) != OK:
+			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
+		if not json.data is Dictionary:
+			return _error("line %d is not a JSON object { ... }" % (number + 1))
 		var problem := _gather(data, json.data as Dictionary)
 		if not problem.is_empty():
 			return _error("line %d: %s" % [number + 1, problem])

@@ -5,6 +5,10 @@ extends RefCounted
 
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
+## More pins than this in one grid cell (a ball's reach wide) cannot be a real layout.
+const CROWDED_CELL_PINS := 48
+## The pair check stops after this many overlap and gap warnings.
+const MAX_PAIR_ISSUES := 200
 
 
 ## Each pin against its pocket, the ring, the launch rail and the rail's deflector.
@@ -121,12 +125,24 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 		var bucket: PackedInt32Array = grid.get(key, PackedInt32Array())
 		bucket.append(i)
 		grid[key] = bucket
+	if _crowded(level, grid, cell, issues):
+		return
+	var pair_issues_before := issues.size()
 	var touch2 := touch * touch - 1e-6
 	var reach2 := reach * reach
 	for i in pins.size():
 		var p := pins[i]
 		if not p.is_finite():
 			continue
+		if issues.size() - pair_issues_before >= MAX_PAIR_ISSUES:
+			BoardIssue.add_to(
+				issues,
+				WARNING,
+				"More pins overlap or leave narrow gaps; fix these %d first." % MAX_PAIR_ISSUES,
+				p,
+				"narrow_gap"
+			)
+			return
 		var base := Vector2i(floori(p.x / cell), floori(p.y / cell))
 		for dy in range(-1, 2):
 			for dx in range(-1, 2):
@@ -158,6 +174,32 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 								"narrow_gap"
 							)
 						)
+
+
+# A spot holding far more pins than fit there without overlapping is a broken board, and
+# checking its pins pair by pair would take minutes: refuse it with one error instead.
+static func _crowded(
+	level: BoardLevel, grid: Dictionary, cell: float, issues: Array[BoardIssue]
+) -> bool:
+	for key: Vector2i in grid:
+		var bucket: PackedInt32Array = grid[key]
+		if bucket.size() > CROWDED_CELL_PINS:
+			var at := (Vector2(key) + Vector2(0.5, 0.5)) * cell
+			(
+				BoardIssue
+				. add_to(
+					issues,
+					ERROR,
+					(
+						"%d pins crowd into one %.0f px spot near (%.0f, %.0f); pins that close overlap."
+						% [bucket.size(), cell, at.x, at.y]
+					),
+					level.pins[bucket[0]],
+					"pin_overlap"
+				)
+			)
+			return true
+	return false
 
 
 # Gap between pin `p` and the deflector past the rail's end (surface to surface).

@@ -1,0 +1,67 @@
+extends GutTest
+## The hostile corpus (tests/fixtures/hostile_boards/): files an attacker or an accident could
+## put in a board folder. Every one is refused quickly with the file and the problem named,
+## none runs code, and the one well-formed file (a BOM and CRLF line ends) loads.
+
+const CheckCli := preload("res://scripts/loading/board_check_cli.gd")
+const ROOT := "res://tests/fixtures/hostile_boards"
+const MARKER := "user://hostile_payload_ran.txt"
+## Loading one file may never take longer than this (the issue's limit is 5 s a file).
+const MAX_MS := 2000.0
+
+
+func before_all() -> void:
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(MARKER))
+
+
+func test_every_hostile_file_is_refused_fast_and_named() -> void:
+	var lines := CheckCli.check_folder(ROOT, BoardLevel.Kind.PACHINKO)
+	assert_gt(lines.size(), 15, "the corpus is there")
+	for line in lines:
+		var path: String = line["path"]
+		var file := path.get_file()
+		assert_lt(float(line["load_ms"]), MAX_MS, file + " loads fast")
+		if file == "bom_crlf_ok.board":
+			assert_true(line["ok"], "%s: %s" % [file, line["error"]])
+			continue
+		assert_false(line["ok"], file + " is refused")
+		assert_string_contains(str(line["error"]), path, file + ": the message names the file")
+	assert_false(FileAccess.file_exists(MARKER), "no payload ran")
+
+
+func test_the_reasons_are_the_real_problems() -> void:
+	var reasons := {}
+	for line in CheckCli.check_folder(ROOT, BoardLevel.Kind.PACHINKO):
+		reasons[str(line["path"]).get_file()] = str(line["error"])
+	var expected := {
+		"coincident_pins.board": "crowd into one",
+		"cup_int64.board": "cup_start_balls",
+		"deep_nesting.board": "too deep",
+		"duplicate_key.board": "given twice",
+		"huge_count.board": "at most 5000",
+		"inf.board": "finite",
+		"nan.board": "NaN",
+		"newer_version.board": "newer than this game reads",
+		"nul_byte.board": "NUL",
+		"binary.board": "NUL",
+		"object_raw.board": "Object",
+		"resource_path.board": "resource_path",
+		"restitution_5.board": "restitution",
+		"ring_huge.board": "ring_radius",
+		"sleep_negative.board": "sleep_time",
+		"unknown_field.board": "metadata/payload",
+	}
+	for file: String in expected:
+		assert_string_contains(reasons.get(file, "(missing)"), expected[file], file)
+
+
+func test_shipped_boards_all_pass_the_check() -> void:
+	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
+		var lines := CheckCli.check_folder(BoardLoader.LEVELS_DIR, kind)
+		assert_eq(lines.size(), 3)
+		for line in lines:
+			assert_true(line["ok"], str(line["error"]))
+
+
+func test_a_missing_player_folder_is_simply_empty() -> void:
+	assert_eq(CheckCli.check_folder("user://no_such_boards_folder", 0).size(), 0)
