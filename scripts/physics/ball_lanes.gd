@@ -36,10 +36,18 @@ func run(job: Callable, count: int) -> int:
 	_job = job
 	_count = count
 	_lanes = lanes
-	var task: int = WorkerThreadPool.add_group_task(_run_lane, lanes, lanes, true, "BallWorld")
+	# Lanes 1.. go to the pool; this thread runs lane 0 meanwhile instead of only waiting.
+	var task: int = WorkerThreadPool.add_group_task(
+		_run_pool_lane, lanes - 1, lanes - 1, true, "BallWorld lanes"
+	)
+	_run_lane(0)
 	WorkerThreadPool.wait_for_group_task_completion(task)
 	_job = Callable()
 	return lanes
+
+
+func _run_pool_lane(task: int) -> void:
+	_run_lane(task + 1)
 
 
 func _run_lane(lane: int) -> void:

@@ -111,7 +111,7 @@ var _tracing := false
 var _i := 0
 var _p := Vector2.ZERO
 var _v := Vector2.ZERO
-var _r := 0.0
+var _r := -1.0
 var _h := 0.0
 var _push_step := Vector2.ZERO
 # Contacts of last step (a persisting one slides) and of this one, with their normals.
@@ -124,7 +124,6 @@ var _n_b := Vector2.ZERO
 ## Set when the ball left the world this substep (pocketed or drained).
 var _gone := false
 # Per-radius limits, cached while consecutive balls share a radius.
-var _last_r := -1.0
 var _max_travel := 0.0
 var _ring_lim := 0.0
 var _ring_lim2 := 0.0
@@ -158,7 +157,7 @@ func begin(
 	_settled_push = t.rest_speed * dt
 	_gutter_slide_time = t.gutter_slide_time
 	_tracing = b.tracing
-	_last_r = -1.0
+	_r = -1.0
 	events.resize(0)
 	event_speed.resize(0)
 	trace_ball.resize(0)
@@ -221,8 +220,28 @@ func move_range(from: int, to: int) -> void:
 			_move_ball(i)
 
 
+## One ball through the step: friction and the speed cap, then substeps (each: move, then
+## the narrow phase per shape kind), then its contacts, rest, sleep and sensors. The pin
+## candidates are tested inline (a call costs as much as a test); contacts call respond().
 func _move_ball(i: int) -> void:
-	var steps: int = _begin_ball(i)
+	_i = i
+	_p = _pos[i]
+	_v = _vel[i]
+	_gone = false
+	_held_a = _contact_a[i]
+	_held_b = _contact_b[i]
+	_cur_a = ContactId.NONE
+	_cur_b = ContactId.NONE
+	_n_a = Vector2.ZERO
+	_n_b = Vector2.ZERO
+	if _has_friction:
+		# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
+		_v -= _v.clamp(-_friction_dt, _friction_dt)
+	if _v.length_squared() > _max_speed * _max_speed:
+		_v *= _max_speed / _v.length()
+	if _rad[i] != _r:
+		_set_radius(_rad[i])
+	var steps: int = _plan_substeps(_push[i])
 	var p_start: Vector2 = _p
 	for sub: int in steps:
 		if _tracing and sub > 0:
@@ -231,12 +250,29 @@ func _move_ball(i: int) -> void:
 		_p += _v * _h + _push_step
 		if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
 			_touch_ring()
-		if not _gone:
-			_touch_pins()
-		if not _gone and _has_walls:
+		var k0 := 0
+		var k1: int = _pin_items.size()
+		if _zoned:
+			var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
+				Vector2i.ZERO, _last_cell
+			)
+			k0 = _pin_start[cell.y * _cols + cell.x]
+			k1 = _pin_start[cell.y * _cols + cell.x + 1]
+		for k: int in range(k0, k1):
+			var d: Vector2 = _p - _pin_item_pos[k]
+			var lim: float = _pin_item_rad[k] + _r
+			if d.length_squared() < lim * lim and not _gone:
+				_touch_pin(k, d, lim)
+		if _has_walls and not _gone:
 			_touch_walls()
 		if _gone:
 			break
+	_end_ball(i, p_start)
+
+
+## Writes back ball `i` after its substeps: contacts, position, velocity, rest and sleep,
+## then its sensors (which may remove it).
+func _end_ball(i: int, p_start: Vector2) -> void:
 	# A ball touching nothing now or last step has nothing to update: it saves writes for
 	# most of a flowing board.
 	if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
@@ -249,39 +285,27 @@ func _move_ball(i: int) -> void:
 	if _gone:
 		_alive[i] = 0
 		return
-	_update_rest(i)
+	if _v.length_squared() >= _rest_speed2:
+		_rest[i] = 0.0
+	else:
+		_rest_or_sleep(i)
 	if _has_sensors:
 		var id: int = _ids[i]
 		if BallSensors.sense(_g, i, id, p_start, _p, _goal_mask, _zone_mask, events, event_speed):
 			_alive[i] = 0
 
 
-## Loads ball `i` into the members, applies rolling friction and the speed cap, and
-## returns how many substeps its travel (velocity plus push) needs.
-func _begin_ball(i: int) -> int:
-	_i = i
-	_p = _pos[i]
-	_v = _vel[i]
-	_r = _rad[i]
-	_gone = false
-	_held_a = _contact_a[i]
-	_held_b = _contact_b[i]
-	_cur_a = ContactId.NONE
-	_cur_b = ContactId.NONE
-	_n_a = Vector2.ZERO
-	_n_b = Vector2.ZERO
-	if _has_friction:
-		# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
-		_v -= _v.clamp(-_friction_dt, _friction_dt)
-	var speed2: float = _v.length_squared()
-	if speed2 > _max_speed * _max_speed:
-		_v *= _max_speed / sqrt(speed2)
-	if _r != _last_r:
-		_last_r = _r
-		_max_travel = _g.max_travel(_r, TRAVEL_SHARE)
-		_ring_lim = maxf(_g.ring_radius - _r, 0.0)
-		_ring_lim2 = _ring_lim * _ring_lim
-	var push: Vector2 = _push[i]
+## The limits that depend on the ball radius (kept while consecutive balls share one).
+func _set_radius(r: float) -> void:
+	_r = r
+	_max_travel = _g.max_travel(r, TRAVEL_SHARE)
+	_ring_lim = maxf(_g.ring_radius - r, 0.0)
+	_ring_lim2 = _ring_lim * _ring_lim
+
+
+## Substeps for this step's travel (velocity plus the ball-ball push, capped at half the
+## radius): each moves at most the safe travel. Sets the substep time and push share.
+func _plan_substeps(push: Vector2) -> int:
 	var push_len := 0.0
 	if push != Vector2.ZERO:
 		push_len = push.length()
@@ -314,34 +338,23 @@ func _touch_ring() -> void:
 		_gone = true
 
 
-## Narrow phase, pins of the ball's cell (every pin without zoning). A special pin pockets
-## the ball. After touching any pin, the ball keeps the minimum horizontal speed.
-func _touch_pins() -> void:
-	var k0 := 0
-	var k1: int = _pin_items.size()
-	if _zoned:
-		var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		var c: int = cell.y * _cols + cell.x
-		k0 = _pin_start[c]
-		k1 = _pin_start[c + 1]
-	for k: int in range(k0, k1):
-		var q: Vector2 = _pin_item_pos[k]
-		var d: Vector2 = _p - q
-		var lim: float = _pin_item_rad[k] + _r
-		var d2: float = d.length_squared()
-		if d2 >= lim * lim:
-			continue
-		var pin: int = _pin_items[k]
-		if _pin_special[pin] != 0:
-			_queue(BallEvents.Kind.POCKETED, _pin_pocket[pin], 0.0)
-			_gone = true
-			return
-		var nrm := Vector2(0.0, -1.0)
-		if d2 > EPS * EPS:
-			nrm = d / sqrt(d2)
-		respond((pin << ContactId.KIND_BITS) | ContactId.KIND_PIN, q, d, nrm, lim, Surface.PIN, pin)
-		if _min_hspeed > 0.0 and absf(_v.x) < _min_hspeed:
-			_v.x = _min_hspeed if _v.x >= 0.0 else -_min_hspeed
+## Narrow phase, pins: the ball overlaps pin list entry `k` (offset `d` from its centre,
+## contact distance `lim`). A special pin pockets the ball; after touching any other, the
+## ball keeps the minimum horizontal speed.
+func _touch_pin(k: int, d: Vector2, lim: float) -> void:
+	var pin: int = _pin_items[k]
+	if _pin_special[pin] != 0:
+		_queue(BallEvents.Kind.POCKETED, _pin_pocket[pin], 0.0)
+		_gone = true
+		return
+	var d2: float = d.length_squared()
+	var nrm := Vector2(0.0, -1.0)
+	if d2 > EPS * EPS:
+		nrm = d / sqrt(d2)
+	var id: int = (pin << ContactId.KIND_BITS) | ContactId.KIND_PIN
+	respond(id, _pin_item_pos[k], d, nrm, lim, Surface.PIN, pin)
+	if _min_hspeed > 0.0 and absf(_v.x) < _min_hspeed:
+		_v.x = _min_hspeed if _v.x >= 0.0 else -_min_hspeed
 
 
 ## Narrow phase, capsule walls of the ball's cell: the deepest contact first, then again
@@ -440,11 +453,8 @@ func respond(
 	return bounced
 
 
-## Rest time and sleep of the ball that just moved.
-func _update_rest(i: int) -> void:
-	if _v.length_squared() >= _rest_speed2:
-		_rest[i] = 0.0
-		return
+## Rest time and sleep of a ball that just moved slower than the rest speed.
+func _rest_or_sleep(i: int) -> void:
 	var rested: float = _rest[i] + _dt
 	_rest[i] = rested
 	if _sleep_time <= 0.0 or rested < _sleep_time:

@@ -166,24 +166,42 @@ func _find_in_range(lane: int, from: int, to: int) -> void:
 					out.append(j)
 
 
-## One touching pair, at least one of them awake.
+## One touching pair, at least one of them awake. Written out in one function (the
+## solve runs once per touching pair, and a call costs about as much as the work).
 func _solve_pair(i: int, j: int) -> void:
 	var d: Vector2 = _pos[j] - _pos[i]
-	var rr: float = _rad[i] + _rad[j]
 	var dist: float = d.length()
 	var nrm := Vector2(1.0, 0.0)
 	if dist > EPS:
 		nrm = d / dist
-	_wake_on_hit(i, j, nrm)
 	var sleep_i: bool = _asleep[i] != 0
 	var sleep_j: bool = _asleep[j] != 0
+	# A real hit wakes the sleeper, which then answers as a free ball. A sleeper's velocity
+	# holds just this step's gravity, which the other ball got too: a ball merely pressing
+	# on it under gravity does not count as a hit.
+	if (sleep_i or sleep_j) and (_vel[i] - _vel[j]).dot(nrm) > _wake_speed:
+		var woken: int = i if sleep_i else j
+		_asleep[woken] = 0
+		_rest[woken] = 0.0
+		sleep_i = _asleep[i] != 0
+		sleep_j = _asleep[j] != 0
 	var vi: Vector2 = Vector2.ZERO if sleep_i else _vel[i]
 	var vj: Vector2 = Vector2.ZERO if sleep_j else _vel[j]
-	# A ball held from behind (asleep, or pressed on a support that faces the other ball)
-	# does not give way: the other takes the whole response.
-	var fixed_i: bool = sleep_i or _backed(i, nrm)
-	var fixed_j: bool = sleep_j or _backed(j, -nrm)
-	var s: Vector2 = nrm * (maxf(rr - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
+	# A ball held from behind (asleep, or pressed last step on a static shape or a held
+	# ball that faces the other ball) does not give way: the other takes the whole response.
+	var fixed_i: bool = (
+		sleep_i
+		or _sup_a[i].dot(nrm) > SUPPORT_COS
+		or _sup_b[i].dot(nrm) > SUPPORT_COS
+		or _sup_prev[i].dot(nrm) > SUPPORT_COS
+	)
+	var fixed_j: bool = (
+		sleep_j
+		or _sup_a[j].dot(nrm) < -SUPPORT_COS
+		or _sup_b[j].dot(nrm) < -SUPPORT_COS
+		or _sup_prev[j].dot(nrm) < -SUPPORT_COS
+	)
+	var s: Vector2 = nrm * (maxf(_rad[i] + _rad[j] - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
 	if fixed_j and not fixed_i:
 		# The support cancels j's own motion into it: only i's speed counts.
 		_bounce_off_held(i, vi, -nrm)
@@ -202,29 +220,6 @@ func _solve_pair(i: int, j: int) -> void:
 			_vel[j] = vj + imp
 		_push[i] -= s
 		_push[j] += s
-
-
-## A real hit wakes a sleeper of the pair, which then answers as a free ball. A sleeper's
-## velocity holds just this step's gravity, which the other ball got too: a ball merely
-## pressing on it under gravity does not count as a hit.
-func _wake_on_hit(i: int, j: int, nrm: Vector2) -> void:
-	if _asleep[i] == 0 and _asleep[j] == 0:
-		return
-	if (_vel[i] - _vel[j]).dot(nrm) <= _wake_speed:
-		return
-	var woken: int = i if _asleep[i] != 0 else j
-	_asleep[woken] = 0
-	_rest[woken] = 0.0
-
-
-## True when ball `i` presses on a support (static or a supported ball, last step) whose
-## normal faces along `toward`, the direction to the other ball.
-func _backed(i: int, toward: Vector2) -> bool:
-	return (
-		_sup_a[i].dot(toward) > SUPPORT_COS
-		or _sup_b[i].dot(toward) > SUPPORT_COS
-		or _sup_prev[i].dot(toward) > SUPPORT_COS
-	)
 
 
 ## Ball `i` (velocity `v`) against a ball that does not give way, along `nrm` (pointing

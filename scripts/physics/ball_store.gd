@@ -106,6 +106,29 @@ func kill(i: int) -> void:
 	alive[i] = 0
 
 
+## Gives every array the motion lanes write a buffer of its own. Packed arrays are
+## copy-on-write: after get_positions() (a duplicate() shares the buffer until one side
+## writes), the lanes' first writes would each copy the array at the same time and corrupt
+## it. One write here, on the world's thread, makes that copy once, before the lanes run.
+func own_buffers() -> void:
+	if ids.is_empty():
+		return
+	pos[0] = pos[0]
+	vel[0] = vel[0]
+	alive[0] = alive[0]
+	asleep[0] = asleep[0]
+	rest[0] = rest[0]
+	contact_a[0] = contact_a[0]
+	contact_b[0] = contact_b[0]
+	support_static[0] = support_static[0]
+	support_static2[0] = support_static2[0]
+	sleep_ball_normal[0] = sleep_ball_normal[0]
+	gutter_hits[0] = gutter_hits[0]
+	gutter_time[0] = gutter_time[0]
+	goal_mask[0] = goal_mask[0]
+	zone_mask[0] = zone_mask[0]
+
+
 ## Wakes every ball (gravity changed, a ball was moved or removed under a pile, ...).
 func wake_all() -> void:
 	asleep.fill(0)

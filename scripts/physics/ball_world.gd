@@ -429,6 +429,8 @@ func _move_balls(dt: float, may_sleep: bool) -> void:
 	var lanes: int = _lanes.lanes_for(n)
 	while _movers.size() < lanes:
 		_movers.append(BallMover.new())
+	if lanes > 1:
+		_balls.own_buffers()
 	for lane: int in lanes:
 		_movers[lane].begin(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep)
 	_lanes.run(_move_lane, n)

@@ -113,3 +113,23 @@ func test_thread_count_below_one_means_one() -> void:
 	var w := BallWorld.new()
 	w.threads = 0
 	assert_eq(w.threads, 1)
+
+
+## Regression: get_positions() hands out a duplicate that shares the world's buffer until
+## one side writes. Both lanes then copied the array at once on their first writes, and the
+## bench crashed (out-of-bounds reads, then a corrupted heap). The world now takes its own
+## buffers before the lanes run.
+func test_reading_state_between_steps_is_safe_on_several_threads() -> void:
+	var one := _pachinko_world(1)
+	var many := _pachinko_world(2)
+	var held: Array[PackedVector2Array] = []
+	for _i: int in 60:
+		one.step(1.0 / 120.0)
+		var before := many.get_positions()
+		var copy := before.duplicate()
+		many.get_velocities()
+		many.step(1.0 / 120.0)
+		held.append(before)
+		assert_eq(before, copy, "a copy handed out does not change with the world")
+	assert_eq(many.state_hash(), one.state_hash())
+	assert_eq(held.size(), 60)
