@@ -72,6 +72,7 @@ var _pin_item_pos := PackedVector2Array()
 var _pin_item_rad := PackedFloat32Array()
 var _pin_special := PackedByteArray()
 var _pin_pocket := PackedInt32Array()
+var _pin_min_speed_x := PackedFloat32Array()
 var _wall_start := PackedInt32Array()
 var _wall_items := PackedInt32Array()
 var _wall_item_a := PackedVector2Array()
@@ -99,7 +100,6 @@ var _pin_e := 0.0
 var _wall_e := 0.0
 var _keep_tangent := 1.0
 var _threshold := 0.0
-var _min_hspeed := 0.0
 var _rest_speed2 := 0.0
 ## 0 while no ball may fall asleep (just after a wake-up).
 var _sleep_time := 0.0
@@ -151,7 +151,6 @@ func begin(
 	_wall_e = t.wall_restitution
 	_keep_tangent = t.tangent_friction
 	_threshold = t.bounce_threshold
-	_min_hspeed = t.min_horizontal_speed
 	_rest_speed2 = t.rest_speed * t.rest_speed
 	_sleep_time = t.sleep_time if may_sleep else 0.0
 	_settled_push = t.rest_speed * dt
@@ -194,6 +193,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_pin_item_rad = g.pin_item_radius if g.zoned else g.pin_radius
 	_pin_special = g.pin_special
 	_pin_pocket = g.pin_pocket
+	_pin_min_speed_x = g.pin_min_speed_x
 	_wall_start = g.wall_start
 	_wall_items = g.wall_items
 	_wall_item_a = g.wall_item_a
@@ -340,7 +340,7 @@ func _touch_ring() -> void:
 
 ## Narrow phase, pins: the ball overlaps pin list entry `k` (offset `d` from its centre,
 ## contact distance `lim`). A special pin pockets the ball; after touching any other, the
-## ball keeps the minimum horizontal speed.
+## ball keeps the pin's minimum horizontal speed.
 func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 	var pin: int = _pin_items[k]
 	if _pin_special[pin] != 0:
@@ -353,8 +353,9 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 		nrm = d / sqrt(d2)
 	var id: int = (pin << ContactId.KIND_BITS) | ContactId.KIND_PIN
 	respond(id, _pin_item_pos[k], d, nrm, lim, Surface.PIN, pin)
-	if _min_hspeed > 0.0 and absf(_v.x) < _min_hspeed:
-		_v.x = _min_hspeed if _v.x >= 0.0 else -_min_hspeed
+	var min_speed_x: float = _pin_min_speed_x[pin]
+	if absf(_v.x) < min_speed_x:
+		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 
 
 ## Narrow phase, capsule walls of the ball's cell: the deepest contact first, then again

@@ -50,9 +50,9 @@ const SENSOR_ZONE := 2
 
 ## The constants in use (restitution, caps, fixed_hz, ...).
 var tuning: PhysicsTuning
-## Gravity in px/s²; may change every frame (the maze tilt writes it).
+## Gravity in px/s²; may change every frame (the maze rules tilt it).
 var gravity: Vector2
-## Rolling friction per axis in px/s² (only slows, never reverses). set_tilt() writes it.
+## Rolling friction per axis in px/s² (only slows, never reverses); may change every frame.
 var rolling_friction: Vector2
 ## Steps run so far.
 var step_count := 0
@@ -94,16 +94,26 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 
 
 ## Adds a pin (a fixed circle); `pocket` tags it with a pocket id, `special` makes a ball
-## that touches it pocketed. Returns the pin index, or -1 on bad input.
-func add_pin(pos: Vector2, radius: float, pocket := -1, special := false) -> int:
+## that touches it pocketed. `min_speed_x` is the pin's material: after touching it, a ball
+## keeps at least this horizontal speed in px/s (the Flash chapter's 0.5 px/tick, so no
+## ball balances on a pin top); 0 leaves the ball alone. Returns the pin index, or -1 with
+## an error on bad input.
+func add_pin(
+	pos: Vector2, radius: float, pocket := -1, special := false, min_speed_x := 0.0
+) -> int:
 	if not pos.is_finite() or not is_finite(radius) or radius < 0.0:
 		var problem: String = "BallWorld.add_pin: needs a finite position and radius >= 0 (got %s, %s)"
 		push_error(problem % [pos, radius])
+		return -1
+	if not is_finite(min_speed_x) or min_speed_x < 0.0:
+		var problem: String = "BallWorld.add_pin: min_speed_x must be finite and >= 0 (got %s)"
+		push_error(problem % min_speed_x)
 		return -1
 	_geo.pin_pos.append(pos)
 	_geo.pin_radius.append(radius)
 	_geo.pin_pocket.append(pocket)
 	_geo.pin_special.append(1 if special else 0)
+	_geo.pin_min_speed_x.append(min_speed_x)
 	_geo.dirty = true
 	return _geo.pin_pos.size() - 1
 
@@ -305,13 +315,6 @@ func take_step_paths() -> Dictionary:
 	_balls.trace_ball = PackedInt32Array()
 	_balls.trace_pos = PackedVector2Array()
 	return out
-
-
-## Sets gravity and rolling friction from a maze tilt in degrees (see MazeTilt), using
-## tuning.tilt_gravity and tuning.rolling_friction.
-func set_tilt(tilt_deg: Vector2) -> void:
-	gravity = MazeTilt.gravity(tilt_deg, tuning.tilt_gravity)
-	rolling_friction = MazeTilt.friction(tilt_deg, tuning.rolling_friction)
 
 
 ## Runs one step of `dt` seconds, then emits its events in order. The stages: integrate

@@ -34,7 +34,7 @@ class OursSide:
 		world.set_ball_velocity(ids[i], v)
 
 	func tilt(deg: Vector2) -> void:
-		world.set_tilt(deg)
+		MazeTilt.apply(world, deg)
 
 
 ## The scene as a BallWorld with the seed tuning for its mode.
@@ -49,7 +49,7 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	if scene["ring"]:
 		w.set_ring(Vector2.ZERO, Scenes.RING_R)
 	for p: Vector2 in scene["pins"]:
-		w.add_pin(p, scene["pin_r"])
+		w.add_pin(p, scene["pin_r"], -1, false, t.min_horizontal_speed)
 	var walls: PackedVector2Array = scene["walls"]
 	for k: int in walls.size() / 2:
 		w.add_wall(walls[2 * k], walls[2 * k + 1], scene["wall_r"])
@@ -58,7 +58,7 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	for i: int in pos.size():
 		w.spawn_ball(pos[i], vel[i], scene["ball_r"])
 	if maze:
-		w.set_tilt(Scenes.maze_tilt(0.0))
+		MazeTilt.apply(w, Scenes.maze_tilt(0.0))
 	w.build_grid()
 	return w
 
