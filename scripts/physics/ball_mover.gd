@@ -72,7 +72,7 @@ var _pin_item_pos := PackedVector2Array()
 var _pin_item_rad := PackedFloat32Array()
 var _pin_special := PackedByteArray()
 var _pin_pocket := PackedInt32Array()
-var _pin_min_speed_x := PackedFloat32Array()
+var _pin_min_speed_x := PackedFloat64Array()
 var _wall_start := PackedInt32Array()
 var _wall_items := PackedInt32Array()
 var _wall_item_a := PackedVector2Array()
@@ -237,8 +237,9 @@ func _move_ball(i: int) -> void:
 	if _has_friction:
 		# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
 		_v -= _v.clamp(-_friction_dt, _friction_dt)
-	if _v.length_squared() > _max_speed * _max_speed:
-		_v *= _max_speed / _v.length()
+	var speed2: float = _v.length_squared()
+	if speed2 > _max_speed * _max_speed:
+		_v *= _max_speed / sqrt(speed2)
 	if _rad[i] != _r:
 		_set_radius(_rad[i])
 	var steps: int = _plan_substeps(_push[i])
@@ -326,7 +327,9 @@ func _plan_substeps(push: Vector2) -> int:
 ## and so does time spent rolling there.
 func _touch_ring() -> void:
 	var d: Vector2 = _p - _ring_center
-	var nrm: Vector2 = -d / d.length()
+	var dist: float = sqrt(d.length_squared())
+	var nrm: Vector2 = -d / dist
+	_p = _ring_center + d * (_ring_lim / dist)
 	var bounced: bool = respond(ContactId.RING, _ring_center, d, nrm, _ring_lim, Surface.RING, 0)
 	if not _has_gutter or not _g.in_gutter(d):
 		return
@@ -352,6 +355,7 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 	if d2 > EPS * EPS:
 		nrm = d / sqrt(d2)
 	var id: int = (pin << ContactId.KIND_BITS) | ContactId.KIND_PIN
+	_p = _pin_item_pos[k] + nrm * lim
 	respond(id, _pin_item_pos[k], d, nrm, lim, Surface.PIN, pin)
 	var min_speed_x: float = _pin_min_speed_x[pin]
 	if absf(_v.x) < min_speed_x:
@@ -409,42 +413,44 @@ func _touch_wall(wall: int, q: Vector2, s: float, lim: float) -> void:
 		nrm = Vector2(ab.y, -ab.x).normalized()
 	var on_cap: bool = s <= 0.0 or s >= 1.0
 	var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
+	_p = q + nrm * lim
 	respond((wall << ContactId.KIND_BITS) | ContactId.KIND_WALL, q, d, nrm, lim, surface, wall)
 
 
-## The one contact response, for every surface. The ball (at `centre` + `d`, closer than
-## the contact distance `lim`) goes back to the surface along `nrm`, which points to the
-## free side. If it moves into the surface, a new contact faster than the bounce threshold
-## bounces (restitution on the normal speed, tangent friction on the rest, with the normal
-## at the moment of impact on a round surface) and queues a hit event; a persisting or
-## gentle one slides (see ContactMath.slide). Records the contact; true on a bounce.
+## The one contact response, for every surface. The narrow phase has put the ball back on
+## the surface (it was at `centre` + `d`, closer than the contact distance `lim`); `nrm`
+## points to the free side. Only a ball moving into the surface is answered: a new contact
+## faster than the bounce threshold bounces (restitution on the normal speed, tangent
+## friction on the rest, with the normal at the moment of impact on a round surface) and
+## queues a hit event; a persisting or gentle one slides (see ContactMath.slide). Either
+## way it is recorded as a contact (the ball's support). Returns true on a bounce.
 func respond(
 	id: int, centre: Vector2, d: Vector2, nrm: Vector2, lim: float, surface: int, index: int
 ) -> bool:
+	var vn: float = _v.dot(nrm)
+	if vn >= 0.0:
+		return false  # already leaving: no bounce, and it presses on nothing
 	var inside: bool = surface == Surface.RING
 	var side: float = -1.0 if inside else 1.0
-	_p = centre + nrm * (lim * side)
-	var vn: float = _v.dot(nrm)
 	var bounced := false
-	if vn < 0.0:
-		var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
-		var gn_dt: float = _gravity.dot(nrm) * _dt
-		if not held and minf(gn_dt, 0.0) - vn > _threshold:
-			if surface != Surface.WALL_SIDE:
-				var back: Vector2 = d - _v * ContactMath.back_off(d, _v, lim, _h, inside)
-				if back.length_squared() > EPS:
-					nrm = back.normalized() * side
-				_p = centre + nrm * (lim * side)
-				vn = minf(_v.dot(nrm), 0.0)
-			var e: float = _wall_e if surface >= Surface.WALL_CAP else _pin_e
-			_v = (_v - nrm * vn) * _keep_tangent - nrm * (vn * e)
-			_queue(HIT_EVENT[surface], index, -vn)
-			bounced = true
-		else:
-			var curv := 0.0
-			if surface != Surface.WALL_SIDE and lim > EPS:
-				curv = _h / lim
-			_v = ContactMath.slide(_v, nrm, vn, gn_dt, curv)
+	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
+	var gn_dt: float = _gravity.dot(nrm) * _dt
+	if not held and minf(gn_dt, 0.0) - vn > _threshold:
+		if surface != Surface.WALL_SIDE:
+			var back: Vector2 = d - _v * ContactMath.back_off(d, _v, lim, _h, inside)
+			if back.length_squared() > EPS:
+				nrm = back.normalized() * side
+			_p = centre + nrm * (lim * side)
+			vn = minf(_v.dot(nrm), 0.0)
+		var e: float = _wall_e if surface >= Surface.WALL_CAP else _pin_e
+		_v = (_v - nrm * vn) * _keep_tangent - nrm * (vn * e)
+		_queue(HIT_EVENT[surface], index, -vn)
+		bounced = true
+	else:
+		var curv := 0.0
+		if surface != Surface.WALL_SIDE and lim > EPS:
+			curv = _h / lim
+		_v = ContactMath.slide(_v, nrm, vn, gn_dt, curv)
 	if _cur_a == ContactId.NONE or _cur_a == id:
 		_cur_a = id
 		_n_a = nrm

@@ -170,7 +170,7 @@ func _find_in_range(lane: int, from: int, to: int) -> void:
 ## solve runs once per touching pair, and a call costs about as much as the work).
 func _solve_pair(i: int, j: int) -> void:
 	var d: Vector2 = _pos[j] - _pos[i]
-	var dist: float = d.length()
+	var dist: float = sqrt(d.length_squared())
 	var nrm := Vector2(1.0, 0.0)
 	if dist > EPS:
 		nrm = d / dist
