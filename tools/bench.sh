@@ -1,16 +1,11 @@
 #!/usr/bin/env bash
 # make bench: runs every tests/bench/bench_*.gd headless (each writes build/bench/<name>.json)
-# and fails if any of them fails. Each run is pinned to one CPU with taskset when available:
-# Godot reads its worker-pool size only from project.godot at startup, so pinning is how
-# GodotPhysics2D gets one thread, the same as our single-threaded GDScript layer.
+# and fails if any of them fails. Nothing is pinned: BallWorld steps its per-ball stages on
+# every core, and GodotPhysics2D gets the same cores for its worker pool.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
 mkdir -p build/bench
-PIN=()
-if command -v taskset >/dev/null 2>&1; then
-	PIN=(taskset -c 0)
-fi
 failed=0
 shopt -s nullglob
 benches=(tests/bench/bench_*.gd)
@@ -21,7 +16,7 @@ fi
 for b in "${benches[@]}"; do
 	echo "== $b"
 	log=build/bench/$(basename "$b" .gd).log
-	"${PIN[@]}" tools/godot.sh --headless --path . -s "res://$b" 2>&1 | tee "$log"
+	tools/godot.sh --headless --path . -s "res://$b" 2>&1 | tee "$log"
 	status=${PIPESTATUS[0]}
 	if [ "$status" -ne 0 ] || grep -qE '^(SCRIPT ERROR|Parse Error)' "$log"; then
 		echo "bench: $b failed (exit $status)" >&2

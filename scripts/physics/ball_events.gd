@@ -1,8 +1,8 @@
 extends RefCounted
-## Turns a step's queued (kind, ball id, index) triples and speeds into BallWorld's signals,
-## in the order they happened. Internal to scripts/physics.
+## The events of a step: queued as (kind, ball id, index) triples plus a speed each, in the
+## order they happened, then emitted as BallWorld's signals. Internal to scripts/physics.
 
-const BallStep := preload("res://scripts/physics/ball_step.gd")
+enum Kind { PIN_HIT, WALL_HIT, RING_HIT, POCKETED, DRAINED, HOLE, GOAL, GOAL_LEFT, ZONE }
 
 
 ## Emits every queued event on `world`.
@@ -12,21 +12,21 @@ static func emit_all(world: BallWorld, ev: PackedInt32Array, evs: PackedFloat32A
 		var id: int = ev[e * 3 + 1]
 		var index: int = ev[e * 3 + 2]
 		match kind:
-			BallStep.Ev.PIN_HIT:
+			Kind.PIN_HIT:
 				world.pin_hit.emit(id, index, evs[e])
-			BallStep.Ev.WALL_HIT:
+			Kind.WALL_HIT:
 				world.wall_hit.emit(id, index, evs[e])
-			BallStep.Ev.RING_HIT:
+			Kind.RING_HIT:
 				world.ring_hit.emit(id, evs[e])
-			BallStep.Ev.POCKETED:
+			Kind.POCKETED:
 				world.ball_pocketed.emit(id, index)
-			BallStep.Ev.DRAINED:
+			Kind.DRAINED:
 				world.ball_drained.emit(id)
-			BallStep.Ev.HOLE:
+			Kind.HOLE:
 				world.ball_fell_in_hole.emit(id, index)
-			BallStep.Ev.GOAL:
+			Kind.GOAL:
 				world.ball_reached_goal.emit(id, index)
-			BallStep.Ev.GOAL_LEFT:
+			Kind.GOAL_LEFT:
 				world.ball_left_goal.emit(id, index)
-			BallStep.Ev.ZONE:
+			Kind.ZONE:
 				world.ball_entered_zone.emit(id, index)

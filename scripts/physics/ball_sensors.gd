@@ -1,10 +1,10 @@
 extends RefCounted
 ## The sensor pass of a BallWorld step, for one ball that just moved from `p_start` to `p`:
-## holes, goals and zones. Internal to scripts/physics; BallMotion calls it only when the
-## world has sensors, so boards without them pay nothing.
+## holes, goals and zones. Internal to scripts/physics; the motion stage (BallMover) calls
+## it only when the world has sensors, so boards without them pay nothing.
 
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const BallStep := preload("res://scripts/physics/ball_step.gd")
+const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
 
 ## Queues the ball's sensor events in `ev` / `evs` and updates its goal and zone masks.
@@ -26,7 +26,7 @@ static func sense(
 		var q: Vector2 = Geometry2D.get_closest_point_to_segment(hp, p_start, p)
 		var hr: float = g.hole_radius[k]
 		if q.distance_squared_to(hp) <= hr * hr:
-			_queue(ev, evs, BallStep.Ev.HOLE, id, k)
+			_queue(ev, evs, BallEvents.Kind.HOLE, id, k)
 			return true
 	var n_goals: int = g.goal_pos.size()
 	if n_goals > 0:
@@ -56,9 +56,9 @@ static func _crossings(
 			continue
 		mask ^= bit
 		if goals:
-			_queue(ev, evs, BallStep.Ev.GOAL if inside else BallStep.Ev.GOAL_LEFT, id, k)
+			_queue(ev, evs, BallEvents.Kind.GOAL if inside else BallEvents.Kind.GOAL_LEFT, id, k)
 		elif inside:
-			_queue(ev, evs, BallStep.Ev.ZONE, id, k)
+			_queue(ev, evs, BallEvents.Kind.ZONE, id, k)
 	return mask
 
 

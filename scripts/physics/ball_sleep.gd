@@ -19,7 +19,7 @@ const HELD_SLACK := 1e-3
 
 
 ## Settles every sleeper for one step of `dt` s under `gravity` with per-axis rolling
-## `friction` (px/s²; below zero counts as zero, as in BallMotion). `turned` says gravity
+## `friction` (px/s²; below zero counts as zero, as in the motion stage). `turned` says gravity
 ## or friction changed since the last step. A sleeper that stays gets its velocity zeroed
 ## (the gravity phase added this step's pull) and `dt` more rest; one that wakes keeps its
 ## velocity and moves this step.

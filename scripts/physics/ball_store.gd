@@ -3,11 +3,12 @@ extends RefCounted
 ## live ball, dense, in spawn order). Internal to scripts/physics.
 ##
 ## Ids are stable and never reused; `index_of` maps an id to its slot (-1 when gone).
-## Removal during a step only clears `alive`; `compact()` closes the gaps afterwards,
-## keeping order, so the same inputs always give the same layout.
+## Removal during a step only clears `alive` (a lane may do it for its own balls);
+## `compact()` closes the gaps afterwards, keeping order, so the same inputs always give
+## the same layout.
 
-## No static contact remembered.
-const NO_CONTACT := 0
+const ContactId := preload("res://scripts/physics/contact_id.gd")
+
 ## Values of `asleep` (0 is awake).
 const SLEEP_HELD := 1
 const SLEEP_ON_BALLS := 2
@@ -44,25 +45,21 @@ var sleep_ball_normal := PackedVector2Array()
 var support_ball := PackedVector2Array()
 ## Path recording (for checks, off in play): while `tracing`, each step appends the
 ## position every ball reached after each of its substeps but the last, as (slot, point).
+## The world gathers them here from the lanes until take_step_paths().
 var tracing := false
 var trace_ball := PackedInt32Array()
 var trace_pos := PackedVector2Array()
-## Keys of the static shapes touched last step (two slots), so a persisting contact slides.
+## The static shapes touched last step (two ContactId slots), so a persisting contact
+## slides instead of bouncing again.
 var contact_a := PackedInt32Array()
 var contact_b := PackedInt32Array()
 ## Extra displacement for this step from ball-ball separation (swept with the motion).
 var push := PackedVector2Array()
 var index_of := PackedInt32Array()
-## Events of the current step, in order: (kind, ball id, index) triples and their speeds.
-var events := PackedInt32Array()
-var event_speed := PackedFloat32Array()
 ## 1 for a ball that touched another ball in this step's ball-ball pass: a sleeper held up
 ## by balls wakes when it touches none, so it never hangs where a ball was knocked away.
 var touching := PackedByteArray()
-## Scratch arrays of the ball-ball broad phase (reused every step).
-var sort_keys := PackedInt64Array()
 var max_radius := 0.0
-var removed_pending := 0
 
 
 func count() -> int:
@@ -82,8 +79,8 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	gutter_time.append(0.0)
 	goal_mask.append(0)
 	zone_mask.append(0)
-	contact_a.append(NO_CONTACT)
-	contact_b.append(NO_CONTACT)
+	contact_a.append(ContactId.NONE)
+	contact_b.append(ContactId.NONE)
 	push.append(Vector2.ZERO)
 	asleep.append(0)
 	support_static.append(Vector2.ZERO)
@@ -106,9 +103,30 @@ func find(id: int) -> int:
 
 ## Marks slot i dead; compact() removes it.
 func kill(i: int) -> void:
-	if alive[i] != 0:
-		alive[i] = 0
-		removed_pending += 1
+	alive[i] = 0
+
+
+## Gives every array the motion lanes write a buffer of its own. Packed arrays are
+## copy-on-write: after get_positions() (a duplicate() shares the buffer until one side
+## writes), the lanes' first writes would each copy the array at the same time and corrupt
+## it. One write here, on the world's thread, makes that copy once, before the lanes run.
+func own_buffers() -> void:
+	if ids.is_empty():
+		return
+	pos[0] = pos[0]
+	vel[0] = vel[0]
+	alive[0] = alive[0]
+	asleep[0] = asleep[0]
+	rest[0] = rest[0]
+	contact_a[0] = contact_a[0]
+	contact_b[0] = contact_b[0]
+	support_static[0] = support_static[0]
+	support_static2[0] = support_static2[0]
+	sleep_ball_normal[0] = sleep_ball_normal[0]
+	gutter_hits[0] = gutter_hits[0]
+	gutter_time[0] = gutter_time[0]
+	goal_mask[0] = goal_mask[0]
+	zone_mask[0] = zone_mask[0]
 
 
 ## Wakes every ball (gravity changed, a ball was moved or removed under a pile, ...).
@@ -120,7 +138,7 @@ func wake_all() -> void:
 ## Closes the gaps left by dead balls, keeping spawn order. Wakes every ball: a removed
 ## ball may have been holding sleeping ones up.
 func compact() -> void:
-	if removed_pending == 0:
+	if alive.count(0) == 0:
 		return
 	var n: int = ids.size()
 	var w := 0
@@ -165,4 +183,3 @@ func compact() -> void:
 	sleep_ball_normal.resize(w)
 	support_ball.resize(w)
 	wake_all()
-	removed_pending = 0

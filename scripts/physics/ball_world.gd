@@ -31,8 +31,9 @@ signal ball_entered_zone(ball_id: int, zone_index: int)
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const BallStep := preload("res://scripts/physics/ball_step.gd")
-const BallMotion := preload("res://scripts/physics/ball_motion.gd")
+const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
+const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
+const BallMover := preload("res://scripts/physics/ball_mover.gd")
 const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
@@ -49,9 +50,9 @@ const SENSOR_ZONE := 2
 
 ## The constants in use (restitution, caps, fixed_hz, ...).
 var tuning: PhysicsTuning
-## Gravity in px/s²; may change every frame (the maze tilt writes it).
+## Gravity in px/s²; may change every frame (the maze rules tilt it).
 var gravity: Vector2
-## Rolling friction per axis in px/s² (only slows, never reverses). set_tilt() writes it.
+## Rolling friction per axis in px/s² (only slows, never reverses); may change every frame.
 var rolling_friction: Vector2
 ## Steps run so far.
 var step_count := 0
@@ -60,9 +61,22 @@ var use_zoning := true:
 	set(value):
 		use_zoning = value
 		_geo.dirty = true
+## Worker threads the per-ball stages may use (default: every core; 1 = this thread only).
+## Any value gives the same, bit-identical results; only the speed changes.
+var threads: int = OS.get_processor_count():
+	set(value):
+		threads = maxi(value, 1)
+		_lanes.threads = threads
 
 var _balls := BallStore.new()
 var _geo := StaticGeometry.new()
+var _lanes := BallLanes.new()
+var _pairs := BallPairs.new()
+## One motion stage worker per lane.
+var _movers: Array[BallMover] = []
+## This step's events (see BallEvents), gathered from the lanes in lane order.
+var _events := PackedInt32Array()
+var _event_speed := PackedFloat32Array()
 var _accumulator := 0.0
 ## Gravity and friction of the last step: a change has each sleeper check its footing.
 var _last_gravity := Vector2.ZERO
@@ -74,21 +88,32 @@ var _woken_at_step := 0
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
 	tuning = p_tuning if p_tuning != null else PhysicsTuning.pachinko_defaults()
+	_lanes.threads = threads
 	gravity = tuning.gravity
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
 
 
 ## Adds a pin (a fixed circle); `pocket` tags it with a pocket id, `special` makes a ball
-## that touches it pocketed. Returns the pin index, or -1 on bad input.
-func add_pin(pos: Vector2, radius: float, pocket := -1, special := false) -> int:
+## that touches it pocketed. `min_speed_x` is the pin's material: after touching it, a ball
+## keeps at least this horizontal speed in px/s (the Flash chapter's 0.5 px/tick, so no
+## ball balances on a pin top); 0 leaves the ball alone. Returns the pin index, or -1 with
+## an error on bad input.
+func add_pin(
+	pos: Vector2, radius: float, pocket := -1, special := false, min_speed_x := 0.0
+) -> int:
 	if not pos.is_finite() or not is_finite(radius) or radius < 0.0:
 		var problem: String = "BallWorld.add_pin: needs a finite position and radius >= 0 (got %s, %s)"
 		push_error(problem % [pos, radius])
+		return -1
+	if not is_finite(min_speed_x) or min_speed_x < 0.0:
+		var problem: String = "BallWorld.add_pin: min_speed_x must be finite and >= 0 (got %s)"
+		push_error(problem % min_speed_x)
 		return -1
 	_geo.pin_pos.append(pos)
 	_geo.pin_radius.append(radius)
 	_geo.pin_pocket.append(pocket)
 	_geo.pin_special.append(1 if special else 0)
+	_geo.pin_min_speed_x.append(min_speed_x)
 	_geo.dirty = true
 	return _geo.pin_pos.size() - 1
 
@@ -292,50 +317,28 @@ func take_step_paths() -> Dictionary:
 	return out
 
 
-## Sets gravity and rolling friction from a maze tilt in degrees (see MazeTilt), using
-## tuning.tilt_gravity and tuning.rolling_friction.
-func set_tilt(tilt_deg: Vector2) -> void:
-	gravity = MazeTilt.gravity(tilt_deg, tuning.tilt_gravity)
-	rolling_friction = MazeTilt.friction(tilt_deg, tuning.rolling_friction)
-
-
-## Runs one step of `dt` seconds, then emits its events in order.
+## Runs one step of `dt` seconds, then emits its events in order. The stages: integrate
+## (gravity), broad phase (touching ball pairs), ball-ball solve, sleep (sleepers stay or
+## wake), motion (per ball: friction and speed cap, then substeps with the narrow phase per
+## shape kind and one contact response, then rest, sleep and sensors), events.
 func step(dt: float) -> void:
-	if not is_finite(dt) or dt <= 0.0:
-		push_error("BallWorld.step: dt must be finite and > 0 (got %s)" % dt)
+	if not _inputs_ok(dt):
 		return
-	if not gravity.is_finite():
-		push_error("BallWorld.step: gravity must be finite (got %s); using zero" % gravity)
-		gravity = Vector2.ZERO
-	if not rolling_friction.is_finite():
-		push_error(
-			(
-				"BallWorld.step: rolling_friction must be finite (got %s); using zero"
-				% rolling_friction
-			)
-		)
-		rolling_friction = Vector2.ZERO
 	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()
 	# A gravity change wakes only the sleepers it would move (BallSleep checks each).
 	var turned: bool = gravity != _last_gravity or rolling_friction != _last_friction
 	_last_gravity = gravity
 	_last_friction = rolling_friction
-	BallStep.apply_gravity(_balls, gravity, dt)
-	BallStep.collide_balls(
-		_balls,
-		_geo,
-		tuning.ball_restitution,
-		tuning.bounce_threshold,
-		tuning.rest_speed,
-		gravity * dt
-	)
+	_integrate(dt)
+	_pairs.find_pairs(_balls, _geo, _lanes)
+	var t: PhysicsTuning = tuning
+	_pairs.solve(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
 	if _balls.woken:
 		_balls.woken = false
 		_woken_at_step = step_count
-	var may_sleep: bool = (step_count - _woken_at_step) * dt >= tuning.sleep_time
 	BallSleep.settle(_balls, gravity, rolling_friction, dt, turned)
-	BallMotion.move(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep)
+	_move_balls(dt, (step_count - _woken_at_step) * dt >= t.sleep_time)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
@@ -390,10 +393,58 @@ func _add_sensor(kind: int, center: Vector2, radius: float) -> int:
 
 
 func _emit_events() -> void:
-	var ev: PackedInt32Array = _balls.events
+	var ev: PackedInt32Array = _events
 	if ev.is_empty():
 		return
-	var evs: PackedFloat32Array = _balls.event_speed
-	_balls.events = PackedInt32Array()
-	_balls.event_speed = PackedFloat32Array()
+	var evs: PackedFloat32Array = _event_speed
+	# Fresh buffers first: a handler may step the world again.
+	_events = PackedInt32Array()
+	_event_speed = PackedFloat32Array()
 	BallEvents.emit_all(self, ev, evs)
+
+
+## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.
+func _inputs_ok(dt: float) -> bool:
+	if not is_finite(dt) or dt <= 0.0:
+		push_error("BallWorld.step: dt must be finite and > 0 (got %s)" % dt)
+		return false
+	if not gravity.is_finite():
+		push_error("BallWorld.step: gravity must be finite (got %s); using zero" % gravity)
+		gravity = Vector2.ZERO
+	if not rolling_friction.is_finite():
+		var problem: String = "BallWorld.step: rolling_friction must be finite (got %s); using zero"
+		push_error(problem % rolling_friction)
+		rolling_friction = Vector2.ZERO
+	return true
+
+
+## Integrate: this step's gravity, as one native translate of every velocity. Sleepers get
+## it too (the sleep stage zeroes them again); rolling friction and the speed cap come in
+## the motion stage, as each ball is read.
+func _integrate(dt: float) -> void:
+	_balls.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gravity * dt) * _balls.vel
+
+
+## Motion stage over every awake ball, one mover per lane; their events and path points
+## are gathered in lane order, which is ball order.
+func _move_balls(dt: float, may_sleep: bool) -> void:
+	var n: int = _balls.ids.size()
+	var lanes: int = _lanes.lanes_for(n)
+	while _movers.size() < lanes:
+		_movers.append(BallMover.new())
+	if lanes > 1:
+		_balls.own_buffers()
+	for lane: int in lanes:
+		_movers[lane].begin(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep)
+	_lanes.run(_move_lane, n)
+	for lane: int in lanes:
+		var mover: BallMover = _movers[lane]
+		_events.append_array(mover.events)
+		_event_speed.append_array(mover.event_speed)
+		if _balls.tracing:
+			_balls.trace_ball.append_array(mover.trace_ball)
+			_balls.trace_pos.append_array(mover.trace_pos)
+
+
+func _move_lane(lane: int, from: int, to: int) -> void:
+	_movers[lane].move_range(from, to)

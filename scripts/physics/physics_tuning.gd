@@ -29,7 +29,8 @@ const MAZE_FRAME := 0.016
 ## Speed cap in px/s.
 @export var max_speed: float = 1600.0
 ## After touching a pin, a ball's horizontal speed is at least this (px/s), so no ball
-## balances on a pin top (Flash: 0.5 px/tick).
+## balances on a pin top (Flash: 0.5 px/tick). A pin material: BoardWorldFactory gives it
+## to each pin it adds; the world itself does not read it.
 @export var min_horizontal_speed: float = 0.5 / FLASH_TICK
 ## Fixed simulation steps per second.
 @export var fixed_hz: float = 120.0

@@ -16,6 +16,8 @@ var pin_pos := PackedVector2Array()
 var pin_radius := PackedFloat32Array()
 var pin_pocket := PackedInt32Array()
 var pin_special := PackedByteArray()
+## Material: the least horizontal speed (px/s) a ball keeps after touching the pin.
+var pin_min_speed_x := PackedFloat64Array()
 
 var wall_a := PackedVector2Array()
 var wall_b := PackedVector2Array()

@@ -34,10 +34,11 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.set_ring(level.ring_center, level.ring_radius)
 	world.set_gutter(level.gutter_start_deg, level.gutter_end_deg, maxi(level.gutter_bounces, 1))
 	var count := mini(level.pins.size(), mini(level.pin_pocket.size(), level.pin_special.size()))
+	# The pins' material: the board's minimum horizontal speed after a touch.
+	var min_speed_x := maxf(world.tuning.min_horizontal_speed, 0.0)
 	for i in count:
-		world.add_pin(
-			level.pins[i], level.pin_radius, level.pin_pocket[i], level.pin_special[i] != 0
-		)
+		var special := level.pin_special[i] != 0
+		world.add_pin(level.pins[i], level.pin_radius, level.pin_pocket[i], special, min_speed_x)
 	var guide := LaunchRail.guide_points(level)
 	for i in guide.size() - 1:
 		world.add_wall(guide[i], guide[i + 1], LaunchRail.GUIDE_WALL_RADIUS)

@@ -2,10 +2,12 @@ extends SceneTree
 ## `make bench`: BallWorld against Godot's GodotPhysics2D (PhysicsServer2D) on the same
 ## scenes, ball-steps per second, tunnels and escapes counted by an independent swept check;
 ## the zoning-versus-brute-force ratio and the scale sweeps. Prints a table and the seconds
-## each phase took, and writes build/bench/physics.json. tools/bench.sh pins the process to
-## one CPU (taskset), which is how the worker pool gets one core: its size is only read
-## from project.godot at startup, and pinned threads share that core, so process CPU time
-## is one core's worth of work.
+## each phase took, and writes build/bench/physics.json. Both sides run on every core (our
+## per-ball stages in worker lanes, GodotPhysics2D with its worker pool), so speeds are
+## wall-clock ball-steps per second, three side-by-side rounds per scenario; the JSON adds
+## the cores used ("threads"), S1's speed on them over one thread ("thread_scaling") and
+## whether 1, 2 and 4 threads leave identical states after S1, S2 and S4
+## ("threads_identical").
 ##
 ## Every Godot-side job (a timing run or a check run) stops at JOB_BUDGET_S of CPU time
 ## even short of its steps: GodotPhysics2D's cast-shape CCD costs about 2 s a step on S3,
@@ -36,6 +38,10 @@ const MIN_TIMED_S := 1.0
 ## Side-by-side timing rounds per scenario (ours, then Godot's); see TimingRounds. A scenario
 ## whose Godot timing run hit the budget gets no more rounds.
 const TIMING_ROUNDS := 3
+## Steps each thread-count run covers before its state hash is compared.
+const THREAD_CHECK_STEPS := 60
+## Timed steps of each one-thread and all-threads run of the S1 scaling figure.
+const THREAD_SCALING_STEPS := 300
 
 ## name, mode, pin pitch, balls, hz, checked steps, timed steps. Timing runs are longer than
 ## check runs so that each side's timed span lasts a second or more on the 10 ms clock.
@@ -48,6 +54,10 @@ var _specs: Array = [
 var _results := {}
 var _scale := {}
 var _zoned_vs_brute := 0.0
+var _threads := 1
+var _threads_identical := false
+var _thread_hashes := {}
+var _thread_scaling := {}
 ## Phase name → {"cpu_s", "wall_s", ...}, in the order the phases ran.
 var _phases := {}
 ## Scenario name → its FloorKernel (S3 has none: its balls need 17 substeps a step to stay
@@ -77,10 +87,6 @@ func _initialize() -> void:
 			% [cpus, OS.get_processor_count(), _proc_status("Threads"), JOB_BUDGET_S]
 		)
 	)
-	if not cpus.is_valid_int():
-		# Unpinned, GodotPhysics2D's worker threads can use several cores at once: its CPU
-		# time stays honest, but its wall-clock rate would not be one core's.
-		push_warning("bench_physics: not pinned to one CPU (run it through tools/bench.sh)")
 	for spec: Array in _specs:
 		if not _wanted(spec[0]):
 			continue
@@ -109,11 +115,36 @@ func _initialize() -> void:
 		for _round: int in TIMING_ROUNDS:
 			_jobs.append([spec, scene, false])
 		_jobs.append([spec, scene, true])
+	_thread_extras()
 	if _wanted("S1"):
 		_ours_extras()
 	physics_frame.connect(_on_physics_frame)
 	process_frame.connect(_on_process_frame)
 	_want_job = true
+
+
+## Thread keys: the cores our world uses, S1's scaling from one thread to all of them,
+## and whether 1, 2 and 4 threads give the same state after S1, S2 and S4.
+func _thread_extras() -> void:
+	_phase_begin()
+	_threads = BallWorld.new().threads
+	var identical := true
+	for spec: Array in _specs:
+		if spec[0] in ["S1", "S2", "S4"] and _wanted(spec[0]):
+			var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
+			var same: Dictionary = Ours.threads_identical(scene, THREAD_CHECK_STEPS)
+			_thread_hashes[spec[0]] = same["hashes"]
+			identical = identical and same["identical"]
+	_threads_identical = identical
+	print("  threads %d, identical states for 1/2/4 threads: %s" % [_threads, identical])
+	_phase_end("ours thread identity")
+	if not _wanted("S1"):
+		return
+	_phase_begin()
+	var s1: Dictionary = Scenes.make("S1", "flow", 24.0, 1000, 240.0)
+	_thread_scaling = Ours.thread_scaling(s1, THREAD_SCALING_STEPS, TIMING_ROUNDS)
+	print("  thread scaling (S1): %.2fx" % _thread_scaling["scaling"])
+	_phase_end("ours thread scaling")
 
 
 ## The zoning-versus-brute-force ratio and the scale sweeps (our side only, all on S1).
@@ -236,7 +267,7 @@ func _end_job(done: int) -> void:
 		var balls: int = (_job["scene"]["pos"] as PackedVector2Array).size()
 		var cpu: float = maxf((CpuClock.usec() - _cpu0) / 1e6, 1e-6)
 		var wall: float = maxf((Time.get_ticks_usec() - _wall0) / 1e6, 1e-6)
-		TimingRounds.add_godot(row, balls * timed / cpu, balls * timed / wall)
+		TimingRounds.add_godot(row, balls * timed / wall, balls * timed / cpu)
 		row["godot_steps_run"] = done
 		row["godot_timed_steps"] = timed
 		row["godot_timed_cpu_s"] = cpu
@@ -244,8 +275,8 @@ func _end_job(done: int) -> void:
 			row["godot_budget_hit"] = true
 		print(
 			(
-				"  godot %s: %.0f ball-steps/s (CPU) over %d of %d steps (%.1f s timed)"
-				% [name, balls * timed / cpu, done, target, cpu]
+				"  godot %s: %.0f ball-steps/s over %d of %d steps (%.1f s CPU timed)"
+				% [name, balls * timed / wall, done, target, cpu]
 			)
 		)
 	var phase: String = "check"
@@ -279,11 +310,9 @@ func _time_ours_round(spec: Array, scene: Dictionary, row: Dictionary) -> void:
 		_phase_end("floor %s timing %d" % [spec[0], (row["floor_rounds"] as Array).size()])
 	_phase_begin()
 	var r: Dictionary = Ours.run(scene, spec[6], false)
-	TimingRounds.add_ours(row, r["ball_steps_per_s"], r["wall_ball_steps_per_s"])
+	TimingRounds.add_ours(row, r["ball_steps_per_s"], r["cpu_ball_steps_per_s"])
 	var round_i: int = (row["ours_rounds"] as Array).size()
-	print(
-		"  ours %s: %.0f ball-steps/s (CPU), round %d" % [spec[0], r["ball_steps_per_s"], round_i]
-	)
+	print("  ours %s: %.0f ball-steps/s, round %d" % [spec[0], r["ball_steps_per_s"], round_i])
 	_phase_end("ours %s timing %d" % [spec[0], round_i])
 
 
@@ -309,6 +338,11 @@ func _finish() -> void:
 	var out := {
 		"scenarios": _results,
 		"zoned_vs_brute_S1": _zoned_vs_brute,
+		"threads": _threads,
+		"thread_scaling": _thread_scaling.get("scaling", 0.0),
+		"thread_scaling_runs": _thread_scaling,
+		"threads_identical": _threads_identical,
+		"thread_hashes": _thread_hashes,
 		"scale": _scale,
 		"cpus_allowed": _proc_status("Cpus_allowed_list"),
 		"godot_job_budget_s": JOB_BUDGET_S,

@@ -5,10 +5,9 @@ extends GutTest
 const DT := 1.0 / 2000.0
 
 
-func _world(min_h := 0.0) -> BallWorld:
+func _world() -> BallWorld:
 	var t := PhysicsTuning.pachinko_defaults()
 	t.gravity = Vector2.ZERO
-	t.min_horizontal_speed = min_h
 	var w := BallWorld.new(t)
 	return w
 
@@ -61,15 +60,30 @@ func test_pin_hit_reports_index_and_normal_speed_once() -> void:
 
 
 func test_min_horizontal_speed_pushes_a_ball_off_a_pin_top() -> void:
-	var w := _world(0.5 / PhysicsTuning.FLASH_TICK)
-	w.tuning.gravity = Vector2(0, 778)
-	w.gravity = w.tuning.gravity
-	w.add_pin(Vector2(0, 0), 1.5)
+	var w := _world()
+	w.gravity = Vector2(0, 778)
+	w.add_pin(Vector2(0, 0), 1.5, -1, false, 0.5 / PhysicsTuning.FLASH_TICK)
 	var id := w.spawn_ball(Vector2(0, -6.6), Vector2.ZERO, 5.0)
 	_run(w, 0.3)
 	var p := w.get_ball_position(id)
 	assert_gt(absf(p.x), 1.0, "no ball balances on a pin top")
 	assert_gt(p.y, 0.0, "it rolled off and fell")
+
+
+func test_min_horizontal_speed_is_the_pins_own_material() -> void:
+	var w := _world()
+	w.gravity = Vector2(0, 778)
+	w.tuning.min_horizontal_speed = 0.5 / PhysicsTuning.FLASH_TICK  # not read by the world
+	w.add_pin(Vector2(0, 0), 1.5)
+	var id := w.spawn_ball(Vector2(0, -6.6), Vector2.ZERO, 5.0)
+	_run(w, 0.3)
+	assert_almost_eq(w.get_ball_position(id).x, 0.0, 1e-3, "a plain pin lets a ball rest on top")
+
+
+func test_a_negative_min_speed_is_refused() -> void:
+	var w := _world()
+	assert_eq(w.add_pin(Vector2.ZERO, 1.5, -1, false, -1.0), -1)
+	assert_push_error("min_speed_x")
 
 
 func test_special_pin_pockets_once_and_removes_the_ball() -> void:

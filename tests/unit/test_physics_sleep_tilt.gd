@@ -24,13 +24,13 @@ func _steps(w: BallWorld, n: int, tilt := Vector2.INF, tilt_to := Vector2.INF) -
 	for k: int in n:
 		if tilt.is_finite():
 			# Sweep the tilt from `tilt` to `tilt_to`, one new gravity every step.
-			w.set_tilt(tilt.lerp(tilt_to, float(k + 1) / n))
+			MazeTilt.apply(w, tilt.lerp(tilt_to, float(k + 1) / n))
 		w.step(1.0 / HZ)
 
 
 func test_a_ball_in_a_corner_sleeps_through_a_tilt_that_keeps_it_there() -> void:
 	var w := _corner_world()
-	w.set_tilt(Vector2(10, 10))
+	MazeTilt.apply(w, Vector2(10, 10))
 	var id := w.spawn_ball(_corner_spot(), Vector2.ZERO, BALL_R)
 	_steps(w, 60)
 	assert_true(w.is_ball_asleep(id), "it settles in the corner")
@@ -43,12 +43,12 @@ func test_a_ball_in_a_corner_sleeps_through_a_tilt_that_keeps_it_there() -> void
 
 func test_a_corner_sleeper_wakes_and_rolls_when_the_tilt_turns_out() -> void:
 	var w := _corner_world()
-	w.set_tilt(Vector2(10, 10))
+	MazeTilt.apply(w, Vector2(10, 10))
 	var id := w.spawn_ball(_corner_spot(), Vector2.ZERO, BALL_R)
 	_steps(w, 60)
 	assert_true(w.is_ball_asleep(id))
 	# Tilt to the left: the wall at the right no longer holds it.
-	w.set_tilt(Vector2(-10, 10))
+	MazeTilt.apply(w, Vector2(-10, 10))
 	_steps(w, 1)
 	assert_false(w.is_ball_asleep(id), "the step the tilt turns against it, it wakes")
 	_steps(w, 30)
@@ -74,7 +74,7 @@ func test_friction_holds_a_sleeper_on_a_gentle_slope_but_not_a_steep_one() -> vo
 
 func test_a_ball_pressing_on_a_sleeper_under_gravity_does_not_wake_it() -> void:
 	var w := _corner_world()
-	w.set_tilt(Vector2(10, 10))
+	MazeTilt.apply(w, Vector2(10, 10))
 	var first := w.spawn_ball(_corner_spot(), Vector2.ZERO, BALL_R)
 	_steps(w, 60)
 	assert_true(w.is_ball_asleep(first))
@@ -87,7 +87,7 @@ func test_a_ball_pressing_on_a_sleeper_under_gravity_does_not_wake_it() -> void:
 
 func test_a_ball_against_a_held_ball_settles_instead_of_bouncing() -> void:
 	var w := _corner_world()
-	w.set_tilt(Vector2(10, 10))
+	MazeTilt.apply(w, Vector2(10, 10))
 	var first := w.spawn_ball(_corner_spot(), Vector2.ZERO, BALL_R)
 	var second := w.spawn_ball(_corner_spot() - Vector2(30, 0), Vector2.ZERO, BALL_R)
 	_steps(w, 240)
@@ -99,7 +99,7 @@ func test_a_ball_against_a_held_ball_settles_instead_of_bouncing() -> void:
 
 func test_a_queue_in_a_corner_sleeps_through_the_tilt_and_leaves_together() -> void:
 	var w := _corner_world()
-	w.set_tilt(Vector2(10, 10))
+	MazeTilt.apply(w, Vector2(10, 10))
 	var first := w.spawn_ball(_corner_spot(), Vector2.ZERO, BALL_R)
 	var second := w.spawn_ball(_corner_spot() - Vector2(2.0 * BALL_R, 0), Vector2.ZERO, BALL_R)
 	_steps(w, 60)
@@ -109,7 +109,7 @@ func test_a_queue_in_a_corner_sleeps_through_the_tilt_and_leaves_together() -> v
 	assert_true(w.is_ball_asleep(second), "it rides out a tilt that keeps it against the first")
 	assert_eq(w.get_ball_position(second), p)
 	# Tilt to the left: both roll off along the floor.
-	w.set_tilt(Vector2(-10, 10))
+	MazeTilt.apply(w, Vector2(-10, 10))
 	_steps(w, 1)
 	assert_false(w.is_ball_asleep(second), "it wakes the step the tilt turns")
 	_steps(w, 30)

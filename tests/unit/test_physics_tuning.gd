@@ -39,7 +39,7 @@ func test_slow_never_passes_zero() -> void:
 
 func test_flat_maze_friction_stops_a_ball_without_reversing_it() -> void:
 	var w := BallWorld.new(PhysicsTuning.maze_defaults())
-	w.set_tilt(Vector2.ZERO)
+	MazeTilt.apply(w, Vector2.ZERO)
 	var id := w.spawn_ball(Vector2.ZERO, Vector2(60, -30), 5.0)
 	var prev := w.get_ball_velocity(id)
 	for _i: int in 240:
@@ -59,7 +59,7 @@ func test_maze_at_12_degrees_matches_the_seed_speeds() -> void:
 		seed_v = minf(seed_v + 2.0 * sin(deg_to_rad(12.0)) - 0.02 * cos(deg_to_rad(12.0)), 1.5)
 		frames += 1
 	var w := BallWorld.new(PhysicsTuning.maze_defaults())
-	w.set_tilt(Vector2(12, 0))
+	MazeTilt.apply(w, Vector2(12, 0))
 	var id := w.spawn_ball(Vector2.ZERO, Vector2.ZERO, 5.0)
 	var steps := 0
 	while w.get_ball_velocity(id).x < 93.74 and steps < 1000:

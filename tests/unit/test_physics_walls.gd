@@ -126,7 +126,7 @@ func test_balls_never_cross_walls_in_a_long_random_run() -> void:
 	var crossed := 0
 	for s: int in 600:
 		var tilt := Vector2(sin(s * 0.05) * 15.0, cos(s * 0.037) * 15.0)
-		w.set_tilt(tilt)
+		MazeTilt.apply(w, tilt)
 		if s % 100 == 0:
 			for id: int in top:
 				var kick := Vector2(rng.randf_range(-3000, 3000), rng.randf_range(-3000, 3000))

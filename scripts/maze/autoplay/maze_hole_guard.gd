@@ -73,7 +73,7 @@ func _survives(
 	_probe.clear_balls()
 	for i in positions.size():
 		_probe.spawn_ball(positions[i], velocities[i], _radius)
-	_probe.set_tilt(tilt)
+	MazeTilt.apply(_probe, tilt)
 	_fell = false
 	var t := 0.0
 	while t < HORIZON:

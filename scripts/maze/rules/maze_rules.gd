@@ -43,8 +43,9 @@ var lost_hole := -1
 ## Balls whose centre is inside the goal circle now.
 var balls_in_goal := 0
 
-var _accumulator := 0.0
 var _step_dt := 1.0 / 120.0
+## Balls inside the goal, kept from the world's goal sensor events.
+var _in_goal := 0
 
 
 ## Builds the world for `board` (a maze BoardLevel) in easy or hard mode.
@@ -101,17 +102,15 @@ func set_hard_mode(hard: bool) -> void:
 
 
 ## Runs the physics for `delta` seconds of real time in whole fixed steps (only while
-## playing). Returns the number of steps run.
+## playing). Returns the number of steps run. The world's accumulator is the only one: it
+## keeps the remainder for the next frame and drops the backlog of a long hitch (a
+## breakpoint, a window drag) instead of replaying seconds of physics at once.
 func advance(delta: float) -> int:
 	if state != State.PLAYING or not is_finite(delta) or delta <= 0.0:
 		return 0
-	# A long hitch (a breakpoint, a window drag) must not replay seconds of physics at once.
-	_accumulator = minf(_accumulator + delta, 0.25)
-	var steps := 0
-	while _accumulator >= _step_dt and state == State.PLAYING:
-		_accumulator -= _step_dt
-		step()
-		steps += 1
+	_apply_tilt()
+	var steps := world.advance(delta)
+	_after_steps(steps)
 	return steps
 
 
@@ -121,10 +120,7 @@ func step() -> void:
 		return
 	_apply_tilt()
 	world.step(_step_dt)
-	if state != State.PLAYING:
-		return  # a ball fell into a hole during the step
-	elapsed += _step_dt
-	_update_goal()
+	_after_steps(1)
 
 
 ## Length of one physics step, in seconds.
@@ -147,16 +143,10 @@ func balls_lost() -> int:
 	return 1 if lost_hole >= 0 else 0
 
 
-## Counts the balls inside the goal circle (centre within the goal radius, as the seed).
+## The balls inside the goal circle (centre within the goal radius, as the seed), as the
+## world's goal sensor reports them.
 func count_in_goal() -> int:
-	if world == null:
-		return 0
-	var inside := 0
-	var radius := level.goal_radius
-	for p in world.get_positions():
-		if p.distance_to(level.goal_center) < radius:
-			inside += 1
-	return inside
+	return _in_goal if world != null else 0
 
 
 func _rebuild() -> void:
@@ -165,7 +155,7 @@ func _rebuild() -> void:
 	tilt = Vector2.ZERO
 	lost_hole = -1
 	balls_in_goal = 0
-	_accumulator = 0.0
+	_in_goal = 0
 	world = null
 	if level == null or not level.is_maze():
 		var got := "no board" if level == null else "the pachinko board '%s'" % level.board_id
@@ -181,6 +171,8 @@ func _rebuild() -> void:
 		for start_pos in level.ball_starts:
 			world.spawn_ball(start_pos, Vector2.ZERO, level.ball_radius)
 	world.ball_fell_in_hole.connect(_on_ball_fell_in_hole)
+	world.ball_reached_goal.connect(_on_goal_crossed.bind(1))
+	world.ball_left_goal.connect(_on_goal_crossed.bind(-1))
 	world.wall_hit.connect(_on_wall_hit)
 	_apply_tilt()
 	balls_in_goal = count_in_goal()
@@ -189,7 +181,20 @@ func _rebuild() -> void:
 func _apply_tilt() -> void:
 	if world == null:
 		return
-	world.set_tilt(tilt)
+	MazeTilt.apply(world, tilt)
+
+
+## After `steps` world steps: the clock and the goal count, unless a ball fell in a hole
+## during them (the game is over and the clock stopped).
+func _after_steps(steps: int) -> void:
+	if state != State.PLAYING:
+		return
+	elapsed += steps * _step_dt
+	_update_goal()
+
+
+func _on_goal_crossed(_ball_id: int, _goal_index: int, change: int) -> void:
+	_in_goal += change
 
 
 func _update_goal() -> void:

@@ -73,6 +73,12 @@ static func print_table(out: Dictionary, warmup: int, budget_s: float) -> void:
 				)
 			)
 	print("zoned vs brute force, S1: %.1fx" % out["zoned_vs_brute_S1"])
+	print(
+		(
+			"threads %d; S1 all threads / one thread: %.2fx; 1, 2, 4 threads identical: %s"
+			% [out["threads"], out["thread_scaling"], out["threads_identical"]]
+		)
+	)
 	print("scale: %s" % JSON.stringify(out["scale"]))
 	print("")
 	print("seconds per phase (CPU / wall):")

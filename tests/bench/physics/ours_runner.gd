@@ -7,6 +7,7 @@ const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
 const SweptCheck := preload("res://tests/bench/physics/swept_check.gd")
 
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
+const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
 
 ## Steps excluded from timing at the start of a run.
 const WARMUP := 5
@@ -33,7 +34,7 @@ class OursSide:
 		world.set_ball_velocity(ids[i], v)
 
 	func tilt(deg: Vector2) -> void:
-		world.set_tilt(deg)
+		MazeTilt.apply(world, deg)
 
 
 ## The scene as a BallWorld with the seed tuning for its mode.
@@ -48,7 +49,7 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	if scene["ring"]:
 		w.set_ring(Vector2.ZERO, Scenes.RING_R)
 	for p: Vector2 in scene["pins"]:
-		w.add_pin(p, scene["pin_r"])
+		w.add_pin(p, scene["pin_r"], -1, false, t.min_horizontal_speed)
 	var walls: PackedVector2Array = scene["walls"]
 	for k: int in walls.size() / 2:
 		w.add_wall(walls[2 * k], walls[2 * k + 1], scene["wall_r"])
@@ -57,16 +58,22 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	for i: int in pos.size():
 		w.spawn_ball(pos[i], vel[i], scene["ball_r"])
 	if maze:
-		w.set_tilt(Scenes.maze_tilt(0.0))
+		MazeTilt.apply(w, Scenes.maze_tilt(0.0))
 	w.build_grid()
 	return w
 
 
-## Runs `steps` steps. Timing runs (check false) measure process CPU time over the loop
-## and report ball_steps_per_s; check runs replay the same steps (the world is
-## deterministic) with the swept check after every step and report tunnels and escapes.
-static func run(scene: Dictionary, steps: int, check: bool, zoning := true) -> Dictionary:
+## Runs `steps` steps on `threads` threads (0: every core). Timing runs (check false)
+## report ball_steps_per_s over wall-clock time past the warm-up (the world may use
+## several cores) and cpu_ball_steps_per_s over process CPU time; check runs replay the
+## same steps (the world is deterministic) with the swept check after every step and
+## report tunnels and escapes. Both report the final state_hash.
+static func run(
+	scene: Dictionary, steps: int, check: bool, zoning := true, threads := 0
+) -> Dictionary:
 	var w := build_world(scene, zoning)
+	if threads > 0:
+		w.threads = threads
 	var side := OursSide.new(w)
 	var checker: SweptCheck = SweptCheck.new(scene) if check else null
 	# The check follows the path through the substeps; the timed run records nothing.
@@ -99,10 +106,12 @@ static func run(scene: Dictionary, steps: int, check: bool, zoning := true) -> D
 	var cpu: float = maxf((CpuClock.usec() - cpu0) / 1e6, 1e-6)
 	var wall: float = maxf((Time.get_ticks_usec() - wall0) / 1e6, 1e-6)
 	return {
-		"ball_steps_per_s": balls * timed / cpu,
-		"wall_ball_steps_per_s": balls * timed / wall,
+		"ball_steps_per_s": balls * timed / wall,
+		"cpu_ball_steps_per_s": balls * timed / cpu,
 		"tunnels": checker.tunnels if checker != null else 0,
 		"escapes": checker.escapes if checker != null else 0,
+		"hash": w.state_hash(),
+		"threads": w.threads,
 	}
 
 
@@ -137,6 +146,33 @@ static func harness_rules(
 				side.call("teleport", i, pos[i], Scenes.fast_velocity(rng))
 	elif mode == "maze":
 		side.call("tilt", Scenes.maze_tilt(step_i / hz))
+
+
+## S1's wall-clock speed on every core over its speed on one thread, from alternating
+## runs in the same process (the medians of `rounds` each): the parallel stages' gain.
+static func thread_scaling(scene: Dictionary, steps: int, rounds: int) -> Dictionary:
+	var one: Array = []
+	var all: Array = []
+	for _round: int in rounds:
+		one.append(run(scene, steps + WARMUP, false, true, 1)["ball_steps_per_s"])
+		all.append(run(scene, steps + WARMUP, false, true, 0)["ball_steps_per_s"])
+	var one_median: float = TimingRounds.median(one)
+	var all_median: float = TimingRounds.median(all)
+	return {
+		"one_thread_steps_per_s": one_median,
+		"all_threads_steps_per_s": all_median,
+		"scaling": all_median / maxf(one_median, 1e-9),
+	}
+
+
+## True when 1, 2 and 4 threads leave the same state_hash after `steps` steps of `scene`
+## (harness rules included); also the hashes, by thread count.
+static func threads_identical(scene: Dictionary, steps: int) -> Dictionary:
+	var hashes := {}
+	for threads: int in [1, 2, 4]:
+		hashes[str(threads)] = run(scene, steps, false, true, threads)["hash"]
+	var same: bool = hashes["2"] == hashes["1"] and hashes["4"] == hashes["1"]
+	return {"identical": same, "hashes": hashes}
 
 
 ## S1 ball-steps per second with zoning, divided by the same without it.

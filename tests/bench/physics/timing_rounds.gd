@@ -3,15 +3,19 @@ extends RefCounted
 ## shared, and their speed drifts by a third or more within a minute; so each round times
 ## our layer and then GodotPhysics2D on the same scene right after it, and a scenario's
 ## figures are the medians over its rounds: the ratio is the median of the rounds' own
-## ratios, each from two runs seconds apart. Where the scenario has a GDScript floor
-## (FloorKernel), each round times it just before ours, and its ratios are kept the same way.
+## ratios, each from two runs seconds apart. Both sides use every core, so the rates that
+## count are wall-clock ball-steps per second; CPU-time rates are kept beside them (a side
+## that uses two cores well spends about as much CPU time as one that uses one). Where the
+## scenario has a GDScript floor (FloorKernel, one thread), each round times it just
+## before ours, and its ratios are kept the same way.
 
 
-## Records our rate for the round about to start.
-static func add_ours(row: Dictionary, steps_per_s: float, wall_steps_per_s: float) -> void:
-	_rounds(row, "ours_rounds").append(steps_per_s)
+## Records our rates (wall clock, and over CPU time) for the round about to start.
+static func add_ours(row: Dictionary, wall_steps_per_s: float, cpu_steps_per_s: float) -> void:
+	_rounds(row, "ours_rounds").append(wall_steps_per_s)
+	_rounds(row, "ours_cpu_rounds").append(cpu_steps_per_s)
 	row["ours_steps_per_s"] = median(_rounds(row, "ours_rounds"))
-	row["ours_wall_steps_per_s"] = wall_steps_per_s
+	row["ours_cpu_steps_per_s"] = median(_rounds(row, "ours_cpu_rounds"))
 
 
 ## Records the GDScript floor's rate (see FloorKernel) for the round about to start.
@@ -22,12 +26,14 @@ static func add_floor(row: Dictionary, floor_steps_per_s: float) -> void:
 
 ## Records GodotPhysics2D's rate for the round whose ours was recorded last, and updates
 ## the scenario's medians and ratio.
-static func add_godot(row: Dictionary, steps_per_s: float, wall_steps_per_s: float) -> void:
+static func add_godot(row: Dictionary, wall_steps_per_s: float, cpu_steps_per_s: float) -> void:
 	var ours: Array = _rounds(row, "ours_rounds")
+	var steps_per_s: float = wall_steps_per_s
 	_rounds(row, "godot_rounds").append(steps_per_s)
+	_rounds(row, "godot_cpu_rounds").append(cpu_steps_per_s)
 	_rounds(row, "ratio_rounds").append(ours[ours.size() - 1] / maxf(steps_per_s, 1e-9))
 	row["godot_steps_per_s"] = median(_rounds(row, "godot_rounds"))
-	row["godot_wall_steps_per_s"] = wall_steps_per_s
+	row["godot_cpu_steps_per_s"] = median(_rounds(row, "godot_cpu_rounds"))
 	row["ratio"] = median(_rounds(row, "ratio_rounds"))
 	# Only a scenario with a floor gets floor keys (S3 has none).
 	var floors: Array = row.get("floor_rounds", [])
