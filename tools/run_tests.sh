@@ -15,6 +15,9 @@ extra_failed=0
 echo "== lint"
 tools/lint.sh || extra_failed=$((extra_failed + 1))
 
+echo "== GDScript warnings (every script loaded with -d; physics/world only noted)"
+tools/warnings_check.sh || extra_failed=$((extra_failed + 1))
+
 echo "== GUT (tests/unit, tests/integration)"
 tools/godot.sh --headless --path . -s addons/gut/gut_cmdln.gd \
 	-gdir=res://tests/unit,res://tests/integration -ginclude_subdirs -gprefix=test_ \

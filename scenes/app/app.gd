@@ -129,7 +129,8 @@ func start_game(kind: String, path: String) -> void:
 		push_error("App.start_game: unknown game kind '%s'" % kind)
 		return
 	request_board(kind, path)
-	_change_scene(GAME_SCENES[kind])
+	var scene_path: String = GAME_SCENES[kind]
+	_change_scene(scene_path)
 
 
 func _change_scene(path: String) -> void:

@@ -22,7 +22,8 @@ static func run(values: Dictionary) -> int:
 		printerr("autoplay: %s" % loaded.error)
 		print(JSON.stringify({"ok": false, "error": loaded.error}))
 		return EXIT_BAD_BOARD
-	var script: Script = load(GAMES[game])
+	var game_path: String = GAMES[game]
+	var script: Script = load(game_path)
 	var result: Dictionary
 	if game == "maze":
 		result = script.call("run", loaded.level, seconds, values["seed"], values["hard"])

@@ -35,26 +35,29 @@ static func text() -> String:
 static func _rows(commands: bool) -> PackedStringArray:
 	var lines := PackedStringArray()
 	for row: Dictionary in CliFlags.FLAGS:
-		if bool(row.get("command", false)) != commands:
+		var is_command: bool = row.get("command", false)
+		if is_command != commands:
 			continue
 		var help := str(row["help"])
 		if row.has("choices"):
-			help += " %s: %s." % [row["placeholder"], "|".join(PackedStringArray(row["choices"]))]
+			var choices: Array = row["choices"]
+			help += " %s: %s." % [row["placeholder"], "|".join(PackedStringArray(choices))]
 		if row.has("for"):
-			help += " With %s." % " or ".join(PackedStringArray(row["for"]))
+			var owners: Array = row["for"]
+			help += " With %s." % " or ".join(PackedStringArray(owners))
 		var left := CliFlags.usage_of(row)
-		for line in _wrap(help):
+		for line: String in _wrap(help):
 			lines.append("  %s%s" % [left.rpad(COLUMN), line])
 			left = ""
 		lines.append("  %se.g. -- %s" % ["".rpad(COLUMN), row["example"]])
 	return lines
 
 
-# `text` cut at spaces into lines of at most TEXT_WIDTH characters.
-static func _wrap(text: String) -> PackedStringArray:
+# `help_text` cut at spaces into lines of at most TEXT_WIDTH characters.
+static func _wrap(help_text: String) -> PackedStringArray:
 	var lines := PackedStringArray()
 	var line := ""
-	for word in text.split(" ", false):
+	for word: String in help_text.split(" ", false):
 		if not line.is_empty() and line.length() + 1 + word.length() > TEXT_WIDTH:
 			lines.append(line)
 			line = ""

@@ -44,7 +44,8 @@ static func parse(args: PackedStringArray) -> Parsed:
 		var row := CliFlags.find(flag)
 		var problem := _check_belongs(row, parsed.command)
 		if problem.is_empty():
-			problem = _read_value(row, given[flag], parsed.values)
+			var text: String = given[flag]
+			problem = _read_value(row, text, parsed.values)
 		if not problem.is_empty():
 			return Parsed.failed(problem)
 	_fill_defaults(parsed)

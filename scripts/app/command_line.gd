@@ -25,4 +25,5 @@ static func run(args: PackedStringArray) -> int:
 		print(CliHelp.text())
 		return CliFlags.EXIT_OK
 	var runner: Script = CliFlags.find(parsed.command)["runs"]
-	return int(runner.call("run", parsed.values))
+	var exit_code: int = runner.call("run", parsed.values)
+	return exit_code

@@ -73,7 +73,8 @@ func reset_to_defaults() -> void:
 ## The events bound to an action (a copy).
 func events_for(action: String) -> Array[InputEvent]:
 	var events: Array[InputEvent] = []
-	events.assign(bindings.get(action, []))
+	var bound: Array = bindings.get(action, [])
+	events.assign(bound)
 	return events
 
 
@@ -102,15 +103,20 @@ func restore_default_bindings() -> void:
 func set_value(key: String, value: Variant) -> void:
 	match key:
 		"master_volume":
-			master_volume = clampf(float(value), 0.0, 1.0)
+			var volume: float = value
+			master_volume = clampf(volume, 0.0, 1.0)
 		"sfx_volume":
-			sfx_volume = clampf(float(value), 0.0, 1.0)
+			var volume: float = value
+			sfx_volume = clampf(volume, 0.0, 1.0)
 		"fullscreen":
-			fullscreen = bool(value)
+			var on: bool = value
+			fullscreen = on
 		"show_frame_counter":
-			show_frame_counter = bool(value)
+			var on: bool = value
+			show_frame_counter = on
 		"tilt_sensitivity":
-			tilt_sensitivity = clampf(float(value), MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
+			var sensitivity: float = value
+			tilt_sensitivity = clampf(sensitivity, MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
 		_:
 			push_error("GameSettings.set_value: unknown setting '%s'" % key)
 			return
@@ -176,7 +182,9 @@ func load_file(path: String) -> String:
 	var sections: Dictionary = read["sections"]
 	var meta: Dictionary = sections.get("meta", {})
 	var version: Variant = meta.get("version")
-	if not (version is float or version is int) or int(version) != VERSION:
+	var is_number := version is float or version is int
+	var whole: int = version if is_number else 0
+	if not is_number or whole != VERSION:
 		return (
 			"The settings file %s has an unknown version (%s), so the defaults are used."
 			% [path, str(version)]
@@ -190,7 +198,8 @@ func load_file(path: String) -> String:
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
-	_read_bindings(sections.get("input", {}), problems)
+	var input: Dictionary = sections.get("input", {})
+	_read_bindings(input, problems)
 	changed.emit()
 	if problems.is_empty():
 		return ""
@@ -206,12 +215,16 @@ func _read_number(
 	if not section.has(key):
 		return
 	var value: Variant = section[key]
-	if not (value is float or value is int) or not is_finite(float(value)):
+	if not (value is float or value is int):
 		problems.append(key)
 		return
-	if float(value) < low or float(value) > high:
+	var number: float = value
+	if not is_finite(number):
 		problems.append(key)
-	set(key, clampf(float(value), low, high))
+		return
+	if number < low or number > high:
+		problems.append(key)
+	set(key, clampf(number, low, high))
 
 
 func _read_flag(section: Dictionary, key: String, problems: PackedStringArray) -> void:

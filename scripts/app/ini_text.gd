@@ -32,7 +32,8 @@ static func parse(text: String) -> Dictionary:
 		var key := line.substr(0, equals).strip_edges()
 		if json.parse(line.substr(equals + 1).strip_edges()) != OK:
 			return {"error": "line %d: the value of '%s' is unreadable" % [line_number, key]}
-		(sections[current] as Dictionary)[key] = json.data
+		var section: Dictionary = sections[current]
+		section[key] = json.data
 	return {"sections": sections}
 
 

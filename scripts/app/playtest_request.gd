@@ -71,13 +71,14 @@ static func check(request: Dictionary, now: float) -> String:
 	for key: String in FIELDS:
 		if not request.has(key):
 			return "the field '%s' is missing" % key
-	if not _is_number(request["format"]) or float(request["format"]) != FORMAT:
+	var format: Variant = request["format"]
+	if not _is_number(format) or _float_of(format) != FORMAT:
 		return "format must be %d, got %s" % [FORMAT, _shown(request["format"])]
 	var kind: Variant = request["kind"]
 	if not kind is String or not ["pachinko", "maze"].has(kind):
 		return 'kind must be "pachinko" or "maze", got %s' % _shown(kind)
 	var board: Variant = request["board"]
-	if not board is String or not _board_path_ok(board, kind):
+	if not board is String or not _board_path_ok(str(board), str(kind)):
 		var wanted := "res://levels/%s/<name>.board" % kind
 		return (
 			"the board must be a file %s (name: letters, digits, _ or -), got %s"
@@ -128,7 +129,7 @@ static func _board_path_ok(board: String, kind: String) -> bool:
 static func _check_age(written_at: Variant, now: float) -> String:
 	if not _is_number(written_at):
 		return "written_at must be a number of unix seconds, got %s" % _shown(written_at)
-	var age := now - float(written_at)
+	var age := now - _float_of(written_at)
 	if age < -FUTURE_SLACK_SECONDS:
 		return "it was written %d s in the future" % roundi(-age)
 	if age >= MAX_AGE_SECONDS:
@@ -137,7 +138,13 @@ static func _check_age(written_at: Variant, now: float) -> String:
 
 
 static func _is_number(value: Variant) -> bool:
-	return (value is float or value is int) and is_finite(float(value))
+	return (value is float or value is int) and is_finite(_float_of(value))
+
+
+# `value`, an int or a float, as a float.
+static func _float_of(value: Variant) -> float:
+	var number: float = value
+	return number
 
 
 # A value as the warning shows it: short, and never more than a plain value's text.

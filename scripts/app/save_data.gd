@@ -26,8 +26,11 @@ func load_file(path: String) -> String:
 			% [path, read["error"]]
 		)
 	var sections: Dictionary = read["sections"]
-	var version: Variant = (sections.get("meta", {}) as Dictionary).get("version")
-	if not (version is float or version is int) or int(version) != VERSION:
+	var meta: Dictionary = sections.get("meta", {})
+	var version: Variant = meta.get("version")
+	var is_number := version is float or version is int
+	var whole: int = version if is_number else 0
+	if not is_number or whole != VERSION:
 		return (
 			"The best results file %s has an unknown version (%s); starting a fresh one."
 			% [path, str(version)]
@@ -35,19 +38,24 @@ func load_file(path: String) -> String:
 	var maze: Dictionary = sections.get("maze_best_seconds", {})
 	for board_id: String in maze:
 		var seconds: Variant = maze[board_id]
-		if (seconds is float or seconds is int) and is_finite(float(seconds)) and seconds > 0:
-			_maze_times[board_id] = float(seconds)
+		if not (seconds is float or seconds is int):
+			continue
+		var time: float = seconds
+		if is_finite(time) and time > 0:
+			_maze_times[board_id] = time
 	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
 	for board_id: String in pachinko:
 		var balls: Variant = pachinko[board_id]
 		if (balls is float or balls is int) and balls >= 0:
-			_pachinko_balls[board_id] = int(balls)
+			var count: int = balls
+			_pachinko_balls[board_id] = count
 	return ""
 
 
 ## Fastest time on a maze board in seconds, or -1 when there is none yet.
 func best_maze_time(board_id: String) -> float:
-	return float(_maze_times.get(board_id, -1.0))
+	var time: float = _maze_times.get(board_id, -1.0)
+	return time
 
 
 ## Records a finished maze run; true (and saved) when it beats the best time.
@@ -70,7 +78,8 @@ func record_maze_time(board_id: String, seconds: float) -> bool:
 
 ## Most balls won in one pachinko game on a board, or -1 when there is none yet.
 func best_pachinko_balls(board_id: String) -> int:
-	return int(_pachinko_balls.get(board_id, -1))
+	var count: int = _pachinko_balls.get(board_id, -1)
+	return count
 
 
 ## Records a finished pachinko game; true (and saved) when it won more balls than before.

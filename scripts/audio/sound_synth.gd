@@ -25,7 +25,9 @@ static func partials(seconds: float, parts: Array[PackedFloat32Array]) -> Packed
 		var c := 1.0
 		var sn := 0.0
 		var env := amp
-		var attack_len := SAMPLE_RATE / 500  # a 2 ms ramp keeps the onset from clicking
+		# A 2 ms ramp keeps the onset from clicking; a whole number of samples (44).
+		@warning_ignore("integer_division")
+		var attack_len := SAMPLE_RATE / 500
 		for i in range(start, count):
 			var k := i - start
 			var attack := minf(1.0, float(k) / float(attack_len))

@@ -43,8 +43,10 @@ static func pins_for(spec: PocketSpec, pin_radius: float, ball_radius: float) ->
 		var t := float(i) / float(side_steps)
 		points.append(spec.position + Vector2(-half, side_length * t))
 	# Half circle from the left (angle 180°) through the bottom (90°) to the right (0°).
+	@warning_ignore("integer_division")  # arc_steps is even: the bottom vertex's index
+	var bottom_index := arc_steps / 2
 	for i in arc_steps + 1:
-		if i == arc_steps / 2:
+		if i == bottom_index:
 			continue  # the special pin goes last
 		var angle := PI - PI * float(i) / float(arc_steps)
 		points.append(bottom_center + Vector2(cos(angle), sin(angle)) * half)

@@ -15,7 +15,9 @@ static func check(path: String) -> Dictionary:
 	if file == null:
 		return _fail("the file cannot be read (%s)" % error_string(FileAccess.get_open_error()))
 	if file.get_length() > MAX_BYTES:
-		return _fail("the file is larger than %d MB" % (MAX_BYTES / 1024 / 1024))
+		@warning_ignore("integer_division")  # MAX_BYTES is a whole number of MB
+		var megabytes := MAX_BYTES / 1024 / 1024
+		return _fail("the file is larger than %d MB" % megabytes)
 	var text := file.get_as_text()
 	if text.strip_edges().is_empty():
 		return _fail("the file is empty")
@@ -99,7 +101,8 @@ static func _check_statements(statements: Array[Dictionary]) -> Dictionary:
 		problem = _check_fields_in_order(sections, ext_scripts)
 	if not problem.is_empty():
 		return _fail(problem)
-	return _read_version(sections[-1]["fields"])
+	var main_fields: Dictionary = sections[-1]["fields"]
+	return _read_version(main_fields)
 
 
 # The [gd_resource] line: a text resource in a format this build reads, holding a BoardLevel.

@@ -148,29 +148,31 @@ static func check_value(value: Variant, spec: Array) -> String:
 			if not value is String:
 				return "must be a text in quotes"
 			var text: String = value
-			if text.length() < int(spec[1]) or text.length() > int(spec[2]):
+			var shortest: int = spec[1]
+			var longest: int = spec[2]
+			if text.length() < shortest or text.length() > longest:
 				return "must be %d to %d characters long" % [spec[1], spec[2]]
 			return ""
 		"vec2":
-			if not value is Array or (value as Array).size() != 2:
+			var pair: Array = value if value is Array else []
+			if pair.size() != 2:
 				return "must be a pair of numbers [x, y]"
-			var pair: Array = value
-			var problem := check_number(pair[0], float(spec[1]), float(spec[2]), false)
+			var problem := check_number(pair[0], _bound(spec, 1), _bound(spec, 2), false)
 			return (
 				problem
 				if not problem.is_empty()
-				else (check_number(pair[1], float(spec[1]), float(spec[2]), false))
+				else (check_number(pair[1], _bound(spec, 1), _bound(spec, 2), false))
 			)
 		"int":
-			return check_number(value, float(spec[1]), float(spec[2]), true)
-	return check_number(value, float(spec[1]), float(spec[2]), false)
+			return check_number(value, _bound(spec, 1), _bound(spec, 2), true)
+	return check_number(value, _bound(spec, 1), _bound(spec, 2), false)
 
 
 ## "" when `value` is a finite number in [low, high] (a whole one when `whole`).
 static func check_number(value: Variant, low: float, high: float, whole: bool) -> String:
 	if not (value is float or value is int):
 		return "must be a number"
-	var number := float(value)
+	var number: float = value
 	if is_nan(number) or is_inf(number):
 		return "must be a finite number"
 	if whole and number != floorf(number):
@@ -178,6 +180,12 @@ static func check_number(value: Variant, low: float, high: float, whole: bool) -
 	if number < low or number > high:
 		return "must be between %s and %s, got %s" % [_short(low), _short(high), _short(number)]
 	return ""
+
+
+# The number at `index` of a spec ([type, min, max]) as a float.
+static func _bound(spec: Array, index: int) -> float:
+	var bound: float = spec[index]
+	return bound
 
 
 static func _short(number: float) -> String:

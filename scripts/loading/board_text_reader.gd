@@ -45,7 +45,8 @@ static func _gather_lines(text: String) -> Dictionary:
 			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
 		if not json.data is Dictionary:
 			return _error("line %d is not a JSON object { ... }" % (number + 1))
-		var problem := _gather(data, json.data as Dictionary)
+		var object: Dictionary = json.data
+		var problem := _gather(data, object)
 		if not problem.is_empty():
 			return _error("line %d: %s" % [number + 1, problem])
 	return {"data": data}
@@ -72,7 +73,7 @@ static func _check_header(data: Dictionary) -> String:
 	if data.get("format") != Schema.FORMAT:
 		return '"format" must be "%s"; this is not a board file' % Schema.FORMAT
 	var version: Variant = data.get("format_version")
-	if (version is float or version is int) and float(version) > Schema.FORMAT_VERSION:
+	if (version is float or version is int) and _float_of(version) > Schema.FORMAT_VERSION:
 		return (
 			"the file is format version %s, newer than this game reads (%d): update the game"
 			% [version, Schema.FORMAT_VERSION]
@@ -93,7 +94,8 @@ static func _check_fields(data: Dictionary) -> String:
 	for field: String in fields:
 		if not data.has(field):
 			return 'the field "%s" is missing' % field
-		var problem := Schema.check_value(data[field], fields[field])
+		var spec: Array = fields[field]
+		var problem := Schema.check_value(data[field], spec)
 		if not problem.is_empty():
 			return '"%s" %s' % [field, problem]
 	for list in lists:
@@ -129,12 +131,14 @@ static func _check_item(item: Variant, required: Dictionary, optional: Dictionar
 	for key: String in required:
 		if not fields.has(key):
 			return 'the field "%s" is missing' % key
-		var problem := Schema.check_value(fields[key], required[key])
+		var spec: Array = required[key]
+		var problem := Schema.check_value(fields[key], spec)
 		if not problem.is_empty():
 			return '"%s" %s' % [key, problem]
 	for key: String in optional:
 		if fields.has(key):
-			var problem := Schema.check_value(fields[key], optional[key])
+			var spec: Array = optional[key]
+			var problem := Schema.check_value(fields[key], spec)
 			if not problem.is_empty():
 				return '"%s" %s' % [key, problem]
 	return ""
@@ -149,10 +153,9 @@ static func _check_tuning(value: Variant) -> String:
 		if not known.has(key):
 			return 'unknown tuning field "%s"' % key
 		var spec: Array = known[key]
+		var type: int = spec[0]
 		var type_name := (
-			"vec2"
-			if int(spec[0]) == TYPE_VECTOR2
-			else ("int" if int(spec[0]) == TYPE_INT else "float")
+			"vec2" if type == TYPE_VECTOR2 else ("int" if type == TYPE_INT else "float")
 		)
 		var problem := Schema.check_value(tuning[key], [type_name, spec[1], spec[2]])
 		if not problem.is_empty():
@@ -168,14 +171,20 @@ static func _build(data: Dictionary) -> BoardLevel:
 		if field in ["format", "format_version", "kind"]:
 			continue
 		level.set(field, _value_for(level.get(field), data[field]))
-	level.tuning = _build_tuning(level, data.get("tuning", {}))
+	var tuning: Dictionary = data.get("tuning", {})
+	level.tuning = _build_tuning(level, tuning)
 	if level.is_pachinko():
-		_build_pins(level, data.get("pins", []))
-		_build_pockets(level, data.get("pockets", []))
+		var pins: Array = data.get("pins", [])
+		var pockets: Array = data.get("pockets", [])
+		_build_pins(level, pins)
+		_build_pockets(level, pockets)
 	else:
-		level.walls = _points(data.get("walls", []), ["ax", "ay", "bx", "by"])
-		level.ball_starts = _points(data.get("ball_starts", []), ["x", "y"])
-		level.holes = _points(data.get("holes", []), ["x", "y"])
+		var walls: Array = data.get("walls", [])
+		var ball_starts: Array = data.get("ball_starts", [])
+		var holes: Array = data.get("holes", [])
+		level.walls = _points(walls, ["ax", "ay", "bx", "by"])
+		level.ball_starts = _points(ball_starts, ["x", "y"])
+		level.holes = _points(holes, ["x", "y"])
 	return level
 
 
@@ -183,11 +192,11 @@ static func _build(data: Dictionary) -> BoardLevel:
 static func _value_for(current: Variant, value: Variant) -> Variant:
 	if current is Vector2:
 		var pair: Array = value
-		return Vector2(float(pair[0]), float(pair[1]))
+		return Vector2(_float_of(pair[0]), _float_of(pair[1]))
 	if current is int:
-		return int(value)
+		return _int_of(value)
 	if current is float:
-		return float(value)
+		return _float_of(value)
 	return value
 
 
@@ -205,8 +214,8 @@ static func _build_pins(level: BoardLevel, items: Array) -> void:
 	var pockets := PackedInt32Array()
 	var special := PackedByteArray()
 	for item: Dictionary in items:
-		pins.append(Vector2(float(item["x"]), float(item["y"])))
-		pockets.append(int(item.get("pocket", -1)))
+		pins.append(Vector2(_float_of(item["x"]), _float_of(item["y"])))
+		pockets.append(_int_of(item.get("pocket", -1)))
 		special.append(1 if item.get("special", false) else 0)
 	level.pins = pins
 	level.pin_pocket = pockets
@@ -216,19 +225,31 @@ static func _build_pins(level: BoardLevel, items: Array) -> void:
 static func _build_pockets(level: BoardLevel, items: Array) -> void:
 	var specs: Array[PocketSpec] = []
 	for item: Dictionary in items:
-		var at := Vector2(float(item["x"]), float(item["y"]))
-		specs.append(
-			PocketSpec.create(at, float(item["width"]), float(item["depth"]), int(item["payout"]))
-		)
+		var at := Vector2(_float_of(item["x"]), _float_of(item["y"]))
+		var width := _float_of(item["width"])
+		var depth := _float_of(item["depth"])
+		specs.append(PocketSpec.create(at, width, depth, _int_of(item["payout"])))
 	level.pockets = specs
 
 
 static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:
 	var points := PackedVector2Array()
 	for item: Dictionary in items:
-		for i in range(0, keys.size(), 2):
-			points.append(Vector2(float(item[keys[i]]), float(item[keys[i + 1]])))
+		for i: int in range(0, keys.size(), 2):
+			points.append(Vector2(_float_of(item[keys[i]]), _float_of(item[keys[i + 1]])))
 	return points
+
+
+# A checked JSON number as a float (typed, so no unsafe conversion warning).
+static func _float_of(value: Variant) -> float:
+	var number: float = value
+	return number
+
+
+# A checked JSON number as an int (a float is cut toward zero, as int() does).
+static func _int_of(value: Variant) -> int:
+	var whole: int = value
+	return whole
 
 
 static func _error(message: String) -> Dictionary:

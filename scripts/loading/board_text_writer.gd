@@ -53,7 +53,8 @@ static func _value(value: Variant) -> String:
 		var v: Vector2 = value
 		return "[%s, %s]" % [number(v.x), number(v.y)]
 	if value is float:
-		return number(value)
+		var real: float = value
+		return number(real)
 	return JSON.stringify(value)
 
 
@@ -70,8 +71,11 @@ static func _tuning(tuning: PhysicsTuning) -> String:
 		if value is Vector2:
 			var v: Vector2 = value
 			text = "[%s, %s]" % [_exact(v.x), _exact(v.y)]
+		elif value is float:
+			var real: float = value
+			text = _exact(real)
 		else:
-			text = _exact(float(value)) if value is float else JSON.stringify(value)
+			text = JSON.stringify(value)
 		parts.append('"%s": %s' % [name, text])
 	return "{" + ", ".join(parts) + "}"
 

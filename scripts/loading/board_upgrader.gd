@@ -74,7 +74,9 @@ static func _v0_to_v1(level: BoardLevel) -> String:
 		if cells.size() % 4 != 0:
 			return "wall_cells holds %d numbers, not groups of four" % cells.size()
 		var walls := PackedVector2Array()
-		for w in cells.size() / 4:
+		@warning_ignore("integer_division")  # checked above: whole groups of four
+		var wall_count := cells.size() / 4
+		for w in wall_count:
 			var start := Vector2(cells[w * 4], cells[w * 4 + 1]) * cell
 			var length := cells[w * 4 + 2] * cell
 			var horizontal := cells[w * 4 + 3] != 0

@@ -98,7 +98,9 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 
 static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	var area := _board_rect(level).grow(0.5)
-	for w in level.walls.size() / 2:
+	@warning_ignore("integer_division")  # walls are pairs of points; a lone end is ignored
+	var wall_count := level.walls.size() / 2
+	for w in wall_count:
 		var a := level.walls[w * 2]
 		var b := level.walls[w * 2 + 1]
 		if not a.is_finite() or not b.is_finite():
@@ -215,7 +217,9 @@ static func _board_rect(level: BoardLevel) -> Rect2:
 
 static func _nearest_wall_distance(level: BoardLevel, p: Vector2) -> float:
 	var best := INF
-	for w in level.walls.size() / 2:
+	@warning_ignore("integer_division")  # walls are pairs of points; a lone end is ignored
+	var wall_count := level.walls.size() / 2
+	for w in wall_count:
 		var q := Geometry2D.get_closest_point_to_segment(
 			p, level.walls[w * 2], level.walls[w * 2 + 1]
 		)

@@ -37,7 +37,9 @@ func _init(
 	else:
 		_block_edges()
 		var grow := level.wall_width * 0.5 + level.ball_radius - minf(0.5, cell * 0.25)
-		for w in level.walls.size() / 2:
+		@warning_ignore("integer_division")  # walls are pairs of points; a lone end is ignored
+		var wall_count := level.walls.size() / 2
+		for w in wall_count:
 			_block_capsule(level.walls[w * 2], level.walls[w * 2 + 1], grow)
 	if holes_block:
 		for hole in level.holes:
@@ -111,6 +113,7 @@ func _label_regions() -> void:
 			var index := queue[head]
 			head += 1
 			var cx := index % cols
+			@warning_ignore("integer_division")  # the grid row of a cell index
 			var cy := index / cols
 			var gx := (cx + 0.5) * cell - goal.x
 			var gy := (cy + 0.5) * cell - goal.y
