@@ -1,17 +1,23 @@
 extends RefCounted
 ## Splits a per-ball stage over worker threads: balls 0..n are cut into contiguous ranges
-## ("lanes"), one per thread, run as one high-priority WorkerThreadPool group task (the
-## pool gives low-priority work only a share of its threads: one thread on two cores).
+## ("lanes"), a few per thread, dealt out in turn: with T threads, the calling thread runs
+## lanes 0, T, 2T, ... and high-priority WorkerThreadPool tasks the others (the pool gives
+## low-priority work only a share of its threads: one thread on two cores). Dealing
+## several small lanes evens out the load, as sleeping balls and crowded cells are not
+## spread evenly; dealing them up front (rather than letting threads take the next free
+## one) keeps a pool thread that wakes late from leaving all the work to the caller.
 ## Internal to scripts/physics.
 ##
 ## A stage run this way must read only the last state and write only its own balls (and
 ## its lane's own output buffers, merged afterwards in lane order): then the result does
-## not depend on how many lanes there were, and 1, 2 or 4 threads give bit-identical
-## worlds. Packed arrays are shared by reference here; a stage must never resize or
-## reassign an array that another lane writes.
+## not depend on how many lanes there were or which thread ran which, and 1, 2 or 4 threads
+## give bit-identical worlds. Packed arrays are shared by reference here; a stage must never
+## resize or reassign an array that another lane writes.
 
-## A lane gets at least this many balls: below it, waking a thread costs more than it saves.
+## A lane gets at least this many balls: below it, handing it out costs more than it saves.
 const MIN_BALLS_PER_LANE := 48
+## Lanes per thread, at most.
+const LANES_PER_THREAD := 4
 
 ## Threads a stage may use (1 runs everything on the calling thread).
 var threads := 1
@@ -19,11 +25,14 @@ var threads := 1
 var _job := Callable()
 var _count := 0
 var _lanes := 1
+var _workers := 1
 
 
-## How many lanes a stage over `count` balls uses.
+## How many lanes a stage over `count` balls uses (1 when threads is 1).
 func lanes_for(count: int) -> int:
-	return clampi(count / MIN_BALLS_PER_LANE, 1, maxi(threads, 1))
+	if threads <= 1:
+		return 1
+	return clampi(count / MIN_BALLS_PER_LANE, 1, threads * LANES_PER_THREAD)
 
 
 ## Calls `job(lane, from, to)` once per lane, covering 0..count without overlap, and
@@ -36,19 +45,21 @@ func run(job: Callable, count: int) -> int:
 	_job = job
 	_count = count
 	_lanes = lanes
-	# Lanes 1.. go to the pool; this thread runs lane 0 meanwhile instead of only waiting.
+	_workers = mini(threads, lanes)
 	var task: int = WorkerThreadPool.add_group_task(
-		_run_pool_lane, lanes - 1, lanes - 1, true, "BallWorld lanes"
+		_run_pool_worker, _workers - 1, _workers - 1, true, "BallWorld lanes"
 	)
-	_run_lane(0)
+	_run_lanes_of(0)
 	WorkerThreadPool.wait_for_group_task_completion(task)
 	_job = Callable()
 	return lanes
 
 
-func _run_pool_lane(task: int) -> void:
-	_run_lane(task + 1)
+func _run_pool_worker(task: int) -> void:
+	_run_lanes_of(task + 1)
 
 
-func _run_lane(lane: int) -> void:
-	_job.call(lane, _count * lane / _lanes, _count * (lane + 1) / _lanes)
+## Runs the lanes dealt to `worker` (0 is the calling thread).
+func _run_lanes_of(worker: int) -> void:
+	for lane: int in range(worker, _lanes, _workers):
+		_job.call(lane, _count * lane / _lanes, _count * (lane + 1) / _lanes)

@@ -242,7 +242,21 @@ func _move_ball(i: int) -> void:
 		_v *= _max_speed / sqrt(speed2)
 	if _rad[i] != _r:
 		_set_radius(_rad[i])
-	var steps: int = _plan_substeps(_push[i])
+	# Substeps: each moves at most the safe travel (velocity plus the ball-ball push, the
+	# push capped at half the radius).
+	var push: Vector2 = _push[i]
+	var push_len := 0.0
+	if push != Vector2.ZERO:
+		push_len = push.length()
+		if push_len > 0.5 * _r:
+			push *= 0.5 * _r / push_len
+			push_len = 0.5 * _r
+	var steps := 1
+	var travel: float = (_v * _dt + push).length() + push_len
+	if travel > _max_travel:
+		steps = mini(int(ceil(travel / _max_travel)), MAX_SUBSTEPS)
+	_h = _dt / steps
+	_push_step = push / steps
 	var p_start: Vector2 = _p
 	for sub: int in steps:
 		if _tracing and sub > 0:
@@ -302,24 +316,6 @@ func _set_radius(r: float) -> void:
 	_max_travel = _g.max_travel(r, TRAVEL_SHARE)
 	_ring_lim = maxf(_g.ring_radius - r, 0.0)
 	_ring_lim2 = _ring_lim * _ring_lim
-
-
-## Substeps for this step's travel (velocity plus the ball-ball push, capped at half the
-## radius): each moves at most the safe travel. Sets the substep time and push share.
-func _plan_substeps(push: Vector2) -> int:
-	var push_len := 0.0
-	if push != Vector2.ZERO:
-		push_len = push.length()
-		if push_len > 0.5 * _r:
-			push *= 0.5 * _r / push_len
-			push_len = 0.5 * _r
-	var steps := 1
-	var travel: float = (_v * _dt + push).length() + push_len
-	if travel > _max_travel:
-		steps = mini(int(ceil(travel / _max_travel)), MAX_SUBSTEPS)
-	_h = _dt / steps
-	_push_step = push / steps
-	return steps
 
 
 ## Narrow phase, ring: the ball's centre stays within ring radius - r of the centre.

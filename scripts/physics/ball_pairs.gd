@@ -63,7 +63,7 @@ var _gravity_dt := Vector2.ZERO
 ## Broad phase: lists every touching pair of balls in lane_pairs.
 func find_pairs(b: BallStore, g: StaticGeometry, lanes: BallLanes) -> void:
 	var n: int = b.ids.size()
-	while lane_pairs.size() < maxi(lanes.threads, 1):
+	while lane_pairs.size() < lanes.lanes_for(n):
 		lane_pairs.append(PackedInt32Array())
 	for pairs: PackedInt32Array in lane_pairs:
 		pairs.resize(0)
