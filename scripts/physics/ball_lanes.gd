@@ -32,7 +32,9 @@ var _workers := 1
 func lanes_for(count: int) -> int:
 	if threads <= 1:
 		return 1
-	return clampi(count / MIN_BALLS_PER_LANE, 1, threads * LANES_PER_THREAD)
+	@warning_ignore("integer_division")  # whole lanes of at least MIN_BALLS_PER_LANE balls
+	var most_lanes := count / MIN_BALLS_PER_LANE
+	return clampi(most_lanes, 1, threads * LANES_PER_THREAD)
 
 
 ## Calls `job(lane, from, to)` once per lane, covering 0..count without overlap, and
@@ -62,4 +64,9 @@ func _run_pool_worker(task: int) -> void:
 ## Runs the lanes dealt to `worker` (0 is the calling thread).
 func _run_lanes_of(worker: int) -> void:
 	for lane: int in range(worker, _lanes, _workers):
-		_job.call(lane, _count * lane / _lanes, _count * (lane + 1) / _lanes)
+		# whole ball indices: lane k runs balls [count·k / lanes, count·(k+1) / lanes)
+		@warning_ignore("integer_division")
+		var first := _count * lane / _lanes
+		@warning_ignore("integer_division")
+		var past := _count * (lane + 1) / _lanes
+		_job.call(lane, first, past)

@@ -254,7 +254,7 @@ func _move_ball(i: int) -> void:
 	var steps := 1
 	var travel: float = (_v * _dt + push).length() + push_len
 	if travel > _max_travel:
-		steps = mini(int(ceil(travel / _max_travel)), MAX_SUBSTEPS)
+		steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
 	_h = _dt / steps
 	_push_step = push / steps
 	var p_start: Vector2 = _p

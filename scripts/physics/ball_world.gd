@@ -11,22 +11,31 @@ extends RefCounted
 ## (pocketed, drained, fell in a hole) are already gone when the signal arrives.
 
 ## A ball bounced off a pin (for sound); impact_speed is the normal speed in px/s.
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
 ## A ball bounced off a capsule wall.
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 ## A ball bounced off the ring border.
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ring_hit(ball_id: int, impact_speed: float)
 ## A ball touched a special pin (a pocket's bottom pin); it has been removed.
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_pocketed(ball_id: int, pocket_id: int)
 ## A ball used up its gutter bounces (or rolled in the gutter); it has been removed.
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_drained(ball_id: int)
 ## A ball's centre came within a hole's radius; it has been removed.
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_fell_in_hole(ball_id: int, hole_index: int)
 ## A ball's centre moved inside a goal's radius (the ball stays).
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_reached_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved back out of a goal's radius.
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_left_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved inside a zone's radius (the ball stays).
+@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_entered_zone(ball_id: int, zone_index: int)
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")

@@ -99,8 +99,8 @@ func build(ball_radius: float, use_zoning := true) -> void:
 	origin = box.position - Vector2(pad, pad)
 	# At least three columns: the ball-ball pass takes "next cell" and "cells below" as two
 	# separate runs of the sorted keys, which must not overlap.
-	cols = maxi(3, int(ceil((box.size.x + 2.0 * pad) * inv_cell)))
-	rows = maxi(1, int(ceil((box.size.y + 2.0 * pad) * inv_cell)))
+	cols = maxi(3, ceili((box.size.x + 2.0 * pad) * inv_cell))
+	rows = maxi(1, ceili((box.size.y + 2.0 * pad) * inv_cell))
 	_bin_pins(grow)
 	pin_item_pos.resize(pin_items.size())
 	pin_item_radius.resize(pin_items.size())
@@ -207,10 +207,10 @@ func _bin_pins(grow: float) -> void:
 		for i: int in pin_pos.size():
 			var p: Vector2 = pin_pos[i]
 			var reach: float = pin_radius[i] + grow
-			var x0: int = clampi(int(floor((p.x - reach - origin.x) * inv_cell)), 0, cols - 1)
-			var x1: int = clampi(int(floor((p.x + reach - origin.x) * inv_cell)), 0, cols - 1)
-			var y0: int = clampi(int(floor((p.y - reach - origin.y) * inv_cell)), 0, rows - 1)
-			var y1: int = clampi(int(floor((p.y + reach - origin.y) * inv_cell)), 0, rows - 1)
+			var x0: int = clampi(floori((p.x - reach - origin.x) * inv_cell), 0, cols - 1)
+			var x1: int = clampi(floori((p.x + reach - origin.x) * inv_cell), 0, cols - 1)
+			var y0: int = clampi(floori((p.y - reach - origin.y) * inv_cell), 0, rows - 1)
+			var y1: int = clampi(floori((p.y + reach - origin.y) * inv_cell), 0, rows - 1)
 			for cy: int in range(y0, y1 + 1):
 				for cx: int in range(x0, x1 + 1):
 					var lo := Vector2(origin.x + cx * cell, origin.y + cy * cell)
@@ -249,16 +249,16 @@ func _bin_walls(grow: float) -> void:
 			var b: Vector2 = wall_b[i]
 			var reach: float = wall_radius[i] + grow
 			var x0: int = clampi(
-				int(floor((minf(a.x, b.x) - reach - origin.x) * inv_cell)), 0, cols - 1
+				floori((minf(a.x, b.x) - reach - origin.x) * inv_cell), 0, cols - 1
 			)
 			var x1: int = clampi(
-				int(floor((maxf(a.x, b.x) + reach - origin.x) * inv_cell)), 0, cols - 1
+				floori((maxf(a.x, b.x) + reach - origin.x) * inv_cell), 0, cols - 1
 			)
 			var y0: int = clampi(
-				int(floor((minf(a.y, b.y) - reach - origin.y) * inv_cell)), 0, rows - 1
+				floori((minf(a.y, b.y) - reach - origin.y) * inv_cell), 0, rows - 1
 			)
 			var y1: int = clampi(
-				int(floor((maxf(a.y, b.y) + reach - origin.y) * inv_cell)), 0, rows - 1
+				floori((maxf(a.y, b.y) + reach - origin.y) * inv_cell), 0, rows - 1
 			)
 			for cy: int in range(y0, y1 + 1):
 				for cx: int in range(x0, x1 + 1):

@@ -51,7 +51,9 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 
 
 static func _build_maze(world: BallWorld, level: BoardLevel, hard_mode: bool) -> void:
-	for w in level.walls.size() / 2:
+	@warning_ignore("integer_division")  # walls are stored as pairs of end points
+	var wall_count := level.walls.size() / 2
+	for w in wall_count:
 		world.add_wall(level.walls[w * 2], level.walls[w * 2 + 1], level.wall_width * 0.5)
 	# The board's edges hold the balls even where the design has no border wall.
 	var corners: Array[Vector2] = [
