@@ -279,7 +279,13 @@ func _move_ball(i: int) -> void:
 			if d.length_squared() < lim * lim and not _gone:
 				_touch_pin(k, d, lim)
 		if _has_walls and not _gone:
-			_touch_walls()
+			# The pins may have moved the ball: the walls of its cell now, if it has any.
+			var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
+				Vector2i.ZERO, _last_cell
+			)
+			var c: int = cell.y * _cols + cell.x
+			if _wall_start[c] < _wall_start[c + 1]:
+				_touch_walls(_wall_start[c], _wall_start[c + 1])
 		if _gone:
 			break
 	_end_ball(i, p_start)
@@ -358,15 +364,11 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 
 
-## Narrow phase, capsule walls of the ball's cell: the deepest contact first, then again
-## (up to three times). At a joint the flat side of one wall is deeper than the
-## neighbour's cap, so the cap never adds a ghost bump.
-func _touch_walls() -> void:
-	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	var c: int = cell.y * _cols + cell.x
-	var k0: int = _wall_start[c]
-	var k1: int = _wall_start[c + 1]
-	for _pass: int in 3 if k0 < k1 else 0:
+## Narrow phase, capsule walls: entries k0..k1 of the wall lists (the ball's cell). The
+## deepest contact first, then again (up to three times). At a joint the flat side of one
+## wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
+func _touch_walls(k0: int, k1: int) -> void:
+	for _pass: int in 3:
 		var found := 0
 		var best := -1
 		var best_depth := 0.0
