@@ -21,6 +21,7 @@ const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
+const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.
@@ -64,6 +65,7 @@ var _gutter_hits := PackedInt32Array()
 var _gutter_time := PackedFloat32Array()
 var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
+var _cell_keys := PackedInt64Array()
 var _g: StaticGeometry
 var _zoned := true
 var _pin_start := PackedInt32Array()
@@ -182,6 +184,7 @@ func _take_balls(b: BallStore) -> void:
 	_gutter_time = b.gutter_time
 	_goal_mask = b.goal_mask
 	_zone_mask = b.zone_mask
+	_cell_keys = b.cell_keys
 
 
 func _take_geometry(g: StaticGeometry) -> void:
@@ -303,6 +306,9 @@ func _end_ball(i: int, p_start: Vector2) -> void:
 		_support_b[i] = _n_b
 	_pos[i] = _p
 	_vel[i] = _v
+	# The broad phase's key for next step (see BallStore.cell_keys).
+	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+	_cell_keys[i] = ((cell.y * _cols + cell.x) << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
 		return

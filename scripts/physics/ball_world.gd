@@ -181,6 +181,7 @@ func add_zone(center: Vector2, radius: float) -> int:
 ## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
 func build_grid() -> void:
 	_geo.build(maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS), use_zoning)
+	_balls.keys_valid = false
 	_balls.wake_all()
 
 
@@ -239,6 +240,7 @@ func set_ball_position(id: int, pos: Vector2) -> void:
 	var i: int = _balls.find(id)
 	if i >= 0 and pos.is_finite():
 		_balls.pos[i] = pos
+		_balls.keys_valid = false
 		_balls.rest[i] = 0.0
 		# Balls it was holding up (or that it now lands in) must move again.
 		_balls.wake_all()
