@@ -9,6 +9,11 @@ extends RefCounted
 ## then call advance(delta) every frame (or step(dt) directly). Events come out as signals
 ## at the end of each step, in the order they happened within it; balls removed by an event
 ## (pocketed, drained, fell in a hole) are already gone when the signal arrives.
+##
+## A step runs as stages (see step()); the per-ball ones run on `threads` worker threads,
+## and any thread count gives bit-identical results. The engine knows shapes, materials and
+## sensors, not games: the maze tilt (MazeTilt), the pins' minimum horizontal speed and the
+## sensors are set from outside (BoardWorldFactory, the rules).
 
 ## A ball bounced off a pin (for sound); impact_speed is the normal speed in px/s.
 signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
