@@ -2,6 +2,8 @@
 # make bench: runs every tests/bench/bench_*.gd headless (each writes build/bench/<name>.json)
 # and fails if any of them fails. Nothing is pinned: BallWorld steps its per-ball stages on
 # every core, and GodotPhysics2D gets the same cores for its worker pool.
+# Arguments go to the benchmarks: `tools/bench.sh --only=S4` is a quick look at one scenario
+# (bench_physics.gd reads it; the others ignore it).
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -16,7 +18,7 @@ fi
 for b in "${benches[@]}"; do
 	echo "== $b"
 	log=build/bench/$(basename "$b" .gd).log
-	tools/godot.sh --headless --path . -s "res://$b" 2>&1 | tee "$log"
+	tools/godot.sh --headless --path . -s "res://$b" -- "$@" 2>&1 | tee "$log"
 	status=${PIPESTATUS[0]}
 	if [ "$status" -ne 0 ] || grep -qE '^(SCRIPT ERROR|Parse Error)' "$log"; then
 		echo "bench: $b failed (exit $status)" >&2

@@ -28,9 +28,11 @@ var _lanes := 1
 var _workers := 1
 
 
-## How many lanes a stage over `count` balls uses (1 when threads is 1).
+## How many lanes a stage over `count` balls uses: 1 when threads is 1, and 1 inside a
+## WorkerThreadPool task (worlds stepped side by side on every core already fill the pool;
+## waiting there for more pool tasks could block every pool thread at once).
 func lanes_for(count: int) -> int:
-	if threads <= 1:
+	if threads <= 1 or _in_pool_task():
 		return 1
 	@warning_ignore("integer_division")  # whole lanes of at least MIN_BALLS_PER_LANE balls
 	var most_lanes := count / MIN_BALLS_PER_LANE
@@ -55,6 +57,10 @@ func run(job: Callable, count: int) -> int:
 	WorkerThreadPool.wait_for_group_task_completion(task)
 	_job = Callable()
 	return lanes
+
+
+static func _in_pool_task() -> bool:
+	return WorkerThreadPool.get_caller_task_id() >= 0 or WorkerThreadPool.get_caller_group_id() >= 0
 
 
 func _run_pool_worker(task: int) -> void:

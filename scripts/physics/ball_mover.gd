@@ -21,6 +21,7 @@ const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
+const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.
@@ -64,6 +65,7 @@ var _gutter_hits := PackedInt32Array()
 var _gutter_time := PackedFloat32Array()
 var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
+var _cell_keys := PackedInt64Array()
 var _g: StaticGeometry
 var _zoned := true
 var _pin_start := PackedInt32Array()
@@ -182,6 +184,7 @@ func _take_balls(b: BallStore) -> void:
 	_gutter_time = b.gutter_time
 	_goal_mask = b.goal_mask
 	_zone_mask = b.zone_mask
+	_cell_keys = b.cell_keys
 
 
 func _take_geometry(g: StaticGeometry) -> void:
@@ -279,7 +282,13 @@ func _move_ball(i: int) -> void:
 			if d.length_squared() < lim * lim and not _gone:
 				_touch_pin(k, d, lim)
 		if _has_walls and not _gone:
-			_touch_walls()
+			# The pins may have moved the ball: the walls of its cell now, if it has any.
+			var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
+				Vector2i.ZERO, _last_cell
+			)
+			var c: int = cell.y * _cols + cell.x
+			if _wall_start[c] < _wall_start[c + 1]:
+				_touch_walls(_wall_start[c], _wall_start[c + 1])
 		if _gone:
 			break
 	_end_ball(i, p_start)
@@ -297,6 +306,9 @@ func _end_ball(i: int, p_start: Vector2) -> void:
 		_support_b[i] = _n_b
 	_pos[i] = _p
 	_vel[i] = _v
+	# The broad phase's key for next step (see BallStore.cell_keys).
+	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+	_cell_keys[i] = ((cell.y * _cols + cell.x) << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
 		return
@@ -358,15 +370,11 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 
 
-## Narrow phase, capsule walls of the ball's cell: the deepest contact first, then again
-## (up to three times). At a joint the flat side of one wall is deeper than the
-## neighbour's cap, so the cap never adds a ghost bump.
-func _touch_walls() -> void:
-	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	var c: int = cell.y * _cols + cell.x
-	var k0: int = _wall_start[c]
-	var k1: int = _wall_start[c + 1]
-	for _pass: int in 3 if k0 < k1 else 0:
+## Narrow phase, capsule walls: entries k0..k1 of the wall lists (the ball's cell). The
+## deepest contact first, then again (up to three times). At a joint the flat side of one
+## wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
+func _touch_walls(k0: int, k1: int) -> void:
+	for _pass: int in 3:
 		var found := 0
 		var best := -1
 		var best_depth := 0.0

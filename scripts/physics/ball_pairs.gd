@@ -75,9 +75,14 @@ func find_pairs(b: BallStore, g: StaticGeometry, lanes: BallLanes) -> void:
 	_inv_cell = g.inv_cell
 	_cols = g.cols
 	_last_cell = Vector2i(g.cols - 1, g.rows - 1)
-	_keys.resize(n + 1)
-	lanes.run(_bin_range, n)
-	_keys[n] = SORT_SENTINEL
+	# The motion stage keyed every ball it moved; bin them all only after a change.
+	if not b.keys_valid:
+		b.own_buffers()
+		_keys = b.cell_keys
+		lanes.run(_bin_range, n)
+		b.keys_valid = true
+	_keys = b.cell_keys.duplicate()
+	_keys.append(SORT_SENTINEL)
 	_keys.sort()
 	lanes.run(_find_in_range, n)
 

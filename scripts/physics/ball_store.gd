@@ -56,6 +56,11 @@ var contact_b := PackedInt32Array()
 ## Extra displacement for this step from ball-ball separation (swept with the motion).
 var push := PackedVector2Array()
 var index_of := PackedInt32Array()
+## Each slot's broad-phase key (cell << BallPairs.SORT_SHIFT | slot), written by the
+## motion stage where the ball ended; `keys_valid` turns false whenever a ball is placed,
+## added or removed, or the grid changes, and the broad phase then bins every ball again.
+var cell_keys := PackedInt64Array()
+var keys_valid := false
 ## 1 for a ball that touched another ball in this step's ball-ball pass: a sleeper held up
 ## by balls wakes when it touches none, so it never hangs where a ball was knocked away.
 var touching := PackedByteArray()
@@ -87,6 +92,8 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	support_static2.append(Vector2.ZERO)
 	sleep_ball_normal.append(Vector2.ZERO)
 	support_ball.append(Vector2.ZERO)
+	cell_keys.append(0)
+	keys_valid = false
 	max_radius = maxf(max_radius, r)
 	return id
 
@@ -127,6 +134,7 @@ func own_buffers() -> void:
 	gutter_time[0] = gutter_time[0]
 	goal_mask[0] = goal_mask[0]
 	zone_mask[0] = zone_mask[0]
+	cell_keys[0] = cell_keys[0]
 
 
 ## Wakes every ball (gravity changed, a ball was moved or removed under a pile, ...).
@@ -182,4 +190,6 @@ func compact() -> void:
 	support_static2.resize(w)
 	sleep_ball_normal.resize(w)
 	support_ball.resize(w)
+	cell_keys.resize(w)
+	keys_valid = false
 	wake_all()

@@ -9,6 +9,11 @@ extends RefCounted
 ## then call advance(delta) every frame (or step(dt) directly). Events come out as signals
 ## at the end of each step, in the order they happened within it; balls removed by an event
 ## (pocketed, drained, fell in a hole) are already gone when the signal arrives.
+##
+## A step runs as stages (see step()); the per-ball ones run on `threads` worker threads,
+## and any thread count gives bit-identical results. The engine knows shapes, materials and
+## sensors, not games: the maze tilt (MazeTilt), the pins' minimum horizontal speed and the
+## sensors are set from outside (BoardWorldFactory, the rules).
 
 ## A ball bounced off a pin (for sound); impact_speed is the normal speed in px/s.
 @warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
@@ -190,6 +195,7 @@ func add_zone(center: Vector2, radius: float) -> int:
 ## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
 func build_grid() -> void:
 	_geo.build(maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS), use_zoning)
+	_balls.keys_valid = false
 	_balls.wake_all()
 
 
@@ -248,6 +254,7 @@ func set_ball_position(id: int, pos: Vector2) -> void:
 	var i: int = _balls.find(id)
 	if i >= 0 and pos.is_finite():
 		_balls.pos[i] = pos
+		_balls.keys_valid = false
 		_balls.rest[i] = 0.0
 		# Balls it was holding up (or that it now lands in) must move again.
 		_balls.wake_all()

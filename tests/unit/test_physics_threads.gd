@@ -136,3 +136,21 @@ func test_reading_state_between_steps_is_safe_on_several_threads() -> void:
 		assert_eq(before, copy, "a copy handed out does not change with the world")
 	assert_eq(many.state_hash(), one.state_hash())
 	assert_eq(held.size(), 60)
+
+
+func test_worlds_stepped_inside_pool_tasks_do_not_wait_on_the_pool() -> void:
+	var worlds: Array[BallWorld] = [_pachinko_world(2), _pachinko_world(2)]
+	var task: int = WorkerThreadPool.add_group_task(
+		func(k: int) -> void:
+			for _i: int in 30:
+				worlds[k].step(1.0 / 120.0),
+		2,
+		2,
+		true
+	)
+	WorkerThreadPool.wait_for_group_task_completion(task)
+	var here := _pachinko_world(2)
+	for _i: int in 30:
+		here.step(1.0 / 120.0)
+	assert_eq(worlds[0].state_hash(), here.state_hash(), "same state inside a pool task")
+	assert_eq(worlds[1].state_hash(), here.state_hash())
