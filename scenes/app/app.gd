@@ -92,14 +92,14 @@ func current_board_path(kind: String) -> String:
 	return "res://levels/%s/classic.board" % kind
 
 
-## Best maze time on a board in seconds, -1 when none.
-func best_maze_time(board_id: String) -> float:
-	return save_data.best_maze_time(board_id)
+## Best maze time on a board in one mode (`hard` or easy) in seconds, -1 when none.
+func best_maze_time(board_id: String, hard: bool) -> float:
+	return save_data.best_maze_time(board_id, hard)
 
 
-## Records a finished maze run; true when it is a new best.
-func record_maze_time(board_id: String, seconds: float) -> bool:
-	return save_data.record_maze_time(board_id, seconds)
+## Records a finished maze run in one mode; true when it is a new best for that mode.
+func record_maze_time(board_id: String, hard: bool, seconds: float) -> bool:
+	return save_data.record_maze_time(board_id, hard, seconds)
 
 
 ## Most pachinko balls won on a board, -1 when none.

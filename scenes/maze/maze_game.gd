@@ -148,7 +148,7 @@ func _on_game_reset() -> void:
 
 func _on_won(seconds: float) -> void:
 	_joystick.release()
-	var best := App.record_maze_time(rules.level.board_id, seconds)
+	var best := App.record_maze_time(rules.level.board_id, rules.hard_mode, seconds)
 	var hint := "" if rules.hard_mode else "Press %s for hard mode" % _key("maze_hard_mode")
 	var line := "Your time: %s%s" % [_format_time(seconds), "  (a new best!)" if best else ""]
 	_note.show_note("Congrats, you did it!", "%s\n%s" % [line, hint] if hint else line)
@@ -181,7 +181,7 @@ func _on_restart_requested() -> void:
 
 
 func _show_best() -> void:
-	var best := App.best_maze_time(rules.level.board_id)
+	var best := App.best_maze_time(rules.level.board_id, rules.hard_mode)
 	_best.text = "Best  %s" % (_format_time(best) if best >= 0.0 else "--")
 
 

@@ -78,15 +78,24 @@ func _best_text(result: BoardLoadResult) -> String:
 		return ""
 	var board_id := result.level.board_id
 	if kind == "maze":
-		var seconds := App.best_maze_time(board_id)
-		if seconds <= 0.0:
+		var easy := App.best_maze_time(board_id, false)
+		var hard := App.best_maze_time(board_id, true)
+		if easy <= 0.0 and hard <= 0.0:
 			return ""
-		# the same m:ss.t the maze's own clock shows
-		var minutes := floori(seconds / 60.0)
-		var whole := int(seconds)
-		return "Best time: %d:%02d.%d" % [minutes, whole % 60, int(fmod(seconds, 1.0) * 10.0)]
+		var parts := PackedStringArray()
+		if easy > 0.0:
+			parts.append("Best time: %s" % _clock_text(easy))
+		if hard > 0.0:
+			parts.append("Hard: %s" % _clock_text(hard))
+		return "  ·  ".join(parts)
 	var balls := App.best_pachinko_balls(board_id)
 	return "Best: %d balls won" % balls if balls >= 0 else ""
+
+
+# the same m:ss.t the maze's own clock shows
+static func _clock_text(seconds: float) -> String:
+	var whole := int(seconds)
+	return "%d:%02d.%d" % [floori(seconds / 60.0), whole % 60, int(fmod(seconds, 1.0) * 10.0)]
 
 
 func _summary_text(total: int, broken: int) -> String:

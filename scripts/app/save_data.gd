@@ -1,13 +1,19 @@
 extends RefCounted
-## The player's best results per board: fastest maze time, most pachinko balls won.
+## The player's best results per board: fastest maze time in each mode (easy, hard), most
+## pachinko balls won.
 ## Kept in a readable INI file (user://save.cfg); a damaged file is reported and the
 ## records start empty rather than stopping the game.
 
 const IniText := preload("res://scripts/app/ini_text.gd")
-const VERSION := 1
+## Version 2 keeps a maze time per mode; version 1 had one time per board, read as easy.
+const VERSION := 2
+const MAZE_SECTIONS := {false: "maze_best_seconds_easy", true: "maze_best_seconds_hard"}
+## The version 1 section: every time in it was an easy-mode time.
+const LEGACY_MAZE_SECTION := "maze_best_seconds"
 const HEADER := "Board Studio best results (format version %d), per board id."
 
-var _maze_times := {}
+## hard (bool) -> {board id: seconds}
+var _maze_times := {false: {}, true: {}}
 var _pachinko_balls := {}
 var _path := ""
 
@@ -15,7 +21,7 @@ var _path := ""
 ## Loads the records from `path` and remembers it for saving. Returns "" or the problem.
 func load_file(path: String) -> String:
 	_path = path
-	_maze_times = {}
+	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
 	var read := IniText.read_file(path)
 	if read.has("missing"):
@@ -30,19 +36,16 @@ func load_file(path: String) -> String:
 	var version: Variant = meta.get("version")
 	var is_number := version is float or version is int
 	var whole: int = version if is_number else 0
-	if not is_number or whole != VERSION:
+	if not is_number or whole < 1 or whole > VERSION:
 		return (
 			"The best results file %s has an unknown version (%s); starting a fresh one."
 			% [path, str(version)]
 		)
-	var maze: Dictionary = sections.get("maze_best_seconds", {})
-	for board_id: String in maze:
-		var seconds: Variant = maze[board_id]
-		if not (seconds is float or seconds is int):
-			continue
-		var time: float = seconds
-		if is_finite(time) and time > 0:
-			_maze_times[board_id] = time
+	if whole == 1:
+		_read_maze_times(sections.get(LEGACY_MAZE_SECTION, {}), false)
+	else:
+		for hard: bool in MAZE_SECTIONS:
+			_read_maze_times(sections.get(MAZE_SECTIONS[hard], {}), hard)
 	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
 	for board_id: String in pachinko:
 		var balls: Variant = pachinko[board_id]
@@ -52,14 +55,16 @@ func load_file(path: String) -> String:
 	return ""
 
 
-## Fastest time on a maze board in seconds, or -1 when there is none yet.
-func best_maze_time(board_id: String) -> float:
-	var time: float = _maze_times.get(board_id, -1.0)
+## Fastest time on a maze board in one mode (`hard` or easy) in seconds, or -1 when there is
+## none yet.
+func best_maze_time(board_id: String, hard: bool) -> float:
+	var times: Dictionary = _maze_times[hard]
+	var time: float = times.get(board_id, -1.0)
 	return time
 
 
-## Records a finished maze run; true (and saved) when it beats the best time.
-func record_maze_time(board_id: String, seconds: float) -> bool:
+## Records a finished maze run in one mode; true (and saved) when it beats that mode's best.
+func record_maze_time(board_id: String, hard: bool, seconds: float) -> bool:
 	if board_id.is_empty() or not is_finite(seconds) or seconds <= 0.0:
 		push_error(
 			(
@@ -68,10 +73,11 @@ func record_maze_time(board_id: String, seconds: float) -> bool:
 			)
 		)
 		return false
-	var best := best_maze_time(board_id)
+	var best := best_maze_time(board_id, hard)
 	if best > 0.0 and seconds >= best:
 		return false
-	_maze_times[board_id] = seconds
+	var times: Dictionary = _maze_times[hard]
+	times[board_id] = seconds
 	save()
 	return true
 
@@ -105,10 +111,22 @@ func save() -> Error:
 		return OK
 	var sections := [
 		["meta", {"version": VERSION}],
-		["maze_best_seconds", _maze_times],
+		[MAZE_SECTIONS[false], _maze_times[false]],
+		[MAZE_SECTIONS[true], _maze_times[true]],
 		["pachinko_best_balls", _pachinko_balls],
 	]
 	var error := IniText.write_file(_path, IniText.format(HEADER % VERSION, sections))
 	if error != OK:
 		push_error("Could not save best results to %s: %s" % [_path, error_string(error)])
 	return error
+
+
+func _read_maze_times(section: Dictionary, hard: bool) -> void:
+	var times: Dictionary = _maze_times[hard]
+	for board_id: String in section:
+		var seconds: Variant = section[board_id]
+		if not (seconds is float or seconds is int):
+			continue
+		var time: float = seconds
+		if is_finite(time) and time > 0:
+			times[board_id] = time
