@@ -5,8 +5,8 @@ extends Button
 ## reachable with keyboard and gamepad) but not start.
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
-const CARD_SIZE := Vector2(300, 430)
-const THUMB_HEIGHT := 228.0
+const CARD_SIZE := Vector2(300, 400)
+const THUMB_HEIGHT := 206.0
 
 ## The board file this card stands for.
 var board_path := ""
@@ -95,6 +95,6 @@ func _add_label(words: String, variation: StringName, wraps := false, lines := 3
 		label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 		label.max_lines_visible = lines
 		label.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	else:
-		label.clip_text = true
+	# a long text is cut at the card's edge, never drawn over the next card
+	label.clip_text = true
 	_box.add_child(label)

@@ -30,6 +30,7 @@ var _first_focus: Control = null
 @onready var _back: Button = %BackButton
 @onready var _import: Button = %ImportButton
 @onready var _dialogs: Dialogs = %Dialogs
+@onready var _scroll: ScrollContainer = %Scroll
 
 
 func _ready() -> void:
@@ -41,10 +42,8 @@ func _ready() -> void:
 	get_window().files_dropped.connect(import_files)
 	kind = App.level_select_kind
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
-	_folder.text = "Folder: %s" % _shown_path("%s/%s" % [user_root, kind])
 	_status.text = ""
-	_load_section(_grid, BoardLoader.LEVELS_DIR)
-	_load_section(_my_grid, user_root)
+	reload()
 
 
 func _exit_tree() -> void:
@@ -77,6 +76,19 @@ func _unhandled_input(event: InputEvent) -> void:
 		var first := first_card()
 		(first if first != null else _back).grab_focus()
 		get_viewport().set_input_as_handled()
+
+
+## Lists and loads every board file again (shipped and My boards).
+func reload() -> void:
+	_folder.text = "Folder: %s" % _shown_path("%s/%s" % [user_root, kind])
+	_load_section(_grid, BoardLoader.LEVELS_DIR)
+	_load_section(_my_grid, user_root)
+
+
+## Shows the boards of another My boards folder (the screenshots use a scratch one).
+func use_folder(root: String) -> void:
+	user_root = root
+	reload()
 
 
 ## True while some board file is still loading.
@@ -172,6 +184,13 @@ func first_card() -> Button:
 	return all[0] if not all.is_empty() else null
 
 
+func _grid_first_card() -> Button:
+	for slot in _grid.get_children():
+		if slot is LevelSlot:
+			return (slot as LevelSlot).card
+	return null
+
+
 func _import_one(source: String) -> void:
 	import_files(PackedStringArray([source]))
 
@@ -216,6 +235,9 @@ func _loaded() -> void:
 	if focused == null or stuck:
 		var first := first_card()
 		(first if first != null else _back).grab_focus()
+	if get_viewport().gui_get_focus_owner() == _grid_first_card():
+		# the first row from its top, not scrolled to wherever the loading card sat
+		_scroll.set_deferred("scroll_vertical", 0)
 	_first_focus = get_viewport().gui_get_focus_owner()
 
 
