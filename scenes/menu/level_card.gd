@@ -18,7 +18,7 @@ var loading := false
 var mine := false
 
 var _box: VBoxContainer = null
-var _thumbnail: Control = null
+var _thumbnail: BoardThumbnail = null
 
 
 ## Shows the card of `path` as "Loading…" until `setup` fills it in.

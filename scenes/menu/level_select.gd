@@ -58,7 +58,9 @@ func _process(_delta: float) -> void:
 	for grid: GridContainer in _loadings.keys():
 		var loading: BoardListLoading = _loadings[grid]
 		for done in loading.take_finished():
-			_fill(grid, done["path"], done["result"])
+			var path: String = done["path"]
+			var result: BoardLoadResult = done["result"]
+			_fill(grid, path, result)
 		if not loading.is_busy():
 			_loadings.erase(grid)
 	if _loadings.is_empty():
@@ -100,7 +102,7 @@ func is_loading() -> bool:
 ## at once, and focuses the first playable one.
 func show_boards(results: Array[BoardLoadResult]) -> void:
 	if _loadings.has(_grid):
-		(_loadings[_grid] as BoardListLoading).cancel()
+		_cancel(_grid)
 		_loadings.erase(_grid)
 	_clear(_grid)
 	for result in results:
@@ -128,8 +130,7 @@ func import_files(sources: PackedStringArray) -> void:
 		var its_kind := BoardLevel.kind_name(result.level.kind)
 		if its_kind != kind:
 			line += (
-				" (a %s board: it is listed with the %s boards)"
-				% [TITLES.get(its_kind, its_kind), TITLES.get(its_kind, its_kind)]
+				" (a %s board: find it in the %s list)" % [its_kind, TITLES.get(its_kind, its_kind)]
 			)
 		lines.append(line + ".")
 	_say("\n".join(lines), refused)
@@ -159,8 +160,8 @@ func delete_board(board_path: String) -> void:
 ## The cards shown (shipped boards first, then My boards), in order.
 func cards() -> Array[Button]:
 	var result: Array[Button] = []
-	for grid in [_grid, _my_grid]:
-		for slot in grid.get_children():
+	for grid: GridContainer in [_grid, _my_grid]:
+		for slot: Node in grid.get_children():
 			if slot is LevelSlot and not slot.is_queued_for_deletion():
 				result.append((slot as LevelSlot).card)
 	return result
@@ -198,7 +199,7 @@ func _import_one(source: String) -> void:
 # Shows a card saying "Loading…" for every file in `<root>/<kind>/` and starts loading them.
 func _load_section(grid: GridContainer, root: String) -> void:
 	if _loadings.has(grid):
-		(_loadings[grid] as BoardListLoading).cancel()
+		_cancel(grid)
 	_clear(grid)
 	var kind_value := _kind_enum(kind)
 	var jobs: Array[Dictionary] = []
@@ -207,9 +208,14 @@ func _load_section(grid: GridContainer, root: String) -> void:
 		jobs.append({"path": path, "kind": kind_value, "root": root})
 	_loadings[grid] = BoardListLoading.new(jobs, load_one)
 	_update_summary()
-	if _first_focus == null or not is_instance_valid(_first_focus):
+	if not is_instance_valid(_first_focus):
 		_first_focus = first_card() if first_card() != null else _import
 		_first_focus.grab_focus()
+
+
+func _cancel(grid: GridContainer) -> void:
+	var loading: BoardListLoading = _loadings[grid]
+	loading.cancel()
 
 
 func _add_slot(grid: GridContainer, path: String) -> void:

@@ -147,6 +147,17 @@ func test_a_refused_import_writes_nothing_and_says_why() -> void:
 	assert_string_contains(status, "Not imported: object_in_field.board")
 
 
+func test_a_file_dropped_on_the_window_is_imported() -> void:
+	var screen := _open()
+	await _loaded(screen)
+	var source := ProjectSettings.globalize_path("res://levels/maze/catacombs.board")
+	get_window().files_dropped.emit(PackedStringArray([source]))
+	await _loaded(screen)
+	assert_true(FileAccess.file_exists(ROOT + "/maze/catacombs.board"), "copied to the maze folder")
+	var status := str((screen.get_node("%StatusLabel") as Label).text)
+	assert_string_contains(status, "a maze board: find it in the Tilt Maze list")
+
+
 static func _remove_tree(path: String) -> void:
 	if not DirAccess.dir_exists_absolute(path):
 		return
