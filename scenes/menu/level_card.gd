@@ -1,61 +1,91 @@
 extends Button
-## One board in the level select: its thumbnail, name, description and best result. A board
-## that failed to load shows greyed out with its error; it can take focus (so the message is
+## One board in the level select: its thumbnail, name, description and best result. While
+## its file loads (off the main thread) the card says so; a board that failed to load shows
+## greyed out with its error. A greyed or loading card can take focus (so the message is
 ## reachable with keyboard and gamepad) but not start.
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
-const CARD_SIZE := Vector2(300, 430)
-const THUMB_HEIGHT := 228.0
+const CARD_SIZE := Vector2(300, 400)
+const THUMB_HEIGHT := 206.0
 
 ## The board file this card stands for.
 var board_path := ""
-## False for a board that failed to load.
+## False for a board that failed to load or is still loading.
 var playable := false
+## True while the board's file is still loading.
+var loading := false
+## True for one of the player's own boards (user://boards/).
+var mine := false
+
+var _box: VBoxContainer = null
+var _thumbnail: BoardThumbnail = null
+
+
+## Shows the card of `path` as "Loading…" until `setup` fills it in.
+func show_loading(path: String) -> void:
+	_prepare(path)
+	loading = true
+	playable = false
+	disabled = true
+	_thumbnail.waiting = true
+	_add_label(path.get_file(), &"")
+	_add_label("Loading…", &"HintLabel")
+	tooltip_text = path
 
 
 ## Fills the card from a load result; `best` is the best-result line ("" for none).
 func setup(result: BoardLoadResult, best: String) -> void:
-	board_path = result.path
+	_prepare(result.path)
+	loading = false
 	playable = result.ok()
+	disabled = not playable
+	_thumbnail.level = result.level
+	var file_line := "My board: %s" % board_path.get_file() if mine else ""
+	if playable:
+		var level := result.level
+		_add_label(level.display_name if not level.display_name.is_empty() else level.board_id, &"")
+		if not file_line.is_empty():
+			_add_label(file_line, &"HintLabel")
+		_add_label(best if not best.is_empty() else "Not played yet", &"HintLabel")
+		_add_label(level.description, &"HintLabel", true)
+		tooltip_text = level.description
+	else:
+		_add_label("⚠ " + board_path.get_file(), &"WarningLabel")
+		var reason := result.error.trim_prefix(board_path + ": ")
+		_add_label("Can't be played: " + reason, &"HintLabel", true, 4)
+		tooltip_text = result.error
+	modulate = Color(1, 1, 1, 1.0 if playable else 0.7)
+
+
+## The texts of the card's labels, top to bottom.
+func texts() -> PackedStringArray:
+	var found := PackedStringArray()
+	for label in find_children("*", "Label", true, false):
+		found.append((label as Label).text)
+	return found
+
+
+# Empties the card and gives it its thumbnail again.
+func _prepare(path: String) -> void:
+	board_path = path
 	name = board_path.get_file().get_basename().validate_node_name()
 	theme_type_variation = &"CardButton"
 	custom_minimum_size = CARD_SIZE
-	disabled = not playable
 	focus_mode = Control.FOCUS_ALL
-	var box := VBoxContainer.new()
-	box.set_anchors_and_offsets_preset(Control.PRESET_FULL_RECT, Control.PRESET_MODE_MINSIZE, 14)
-	box.mouse_filter = Control.MOUSE_FILTER_IGNORE
-	box.add_theme_constant_override("separation", 6)
-	add_child(box)
-	var thumbnail := BoardThumbnail.new()
-	thumbnail.custom_minimum_size = Vector2(0, THUMB_HEIGHT)
-	thumbnail.mouse_filter = Control.MOUSE_FILTER_IGNORE
-	thumbnail.level = result.level
-	box.add_child(thumbnail)
-	if playable:
-		var level := result.level
-		_add_label(
-			box, level.display_name if not level.display_name.is_empty() else level.board_id, &""
-		)
-		_add_label(box, best if not best.is_empty() else "Not played yet", &"HintLabel")
-		_add_label(box, level.description, &"HintLabel", true)
-		tooltip_text = level.description
-	else:
-		_add_label(box, "⚠ " + board_path.get_file(), &"WarningLabel")
-		_add_label(
-			box,
-			"Can't be played: " + result.error.trim_prefix(board_path + ": "),
-			&"HintLabel",
-			true,
-			4
-		)
-		tooltip_text = result.error
-		modulate = Color(1, 1, 1, 0.7)
+	if _box != null:
+		_box.free()  # at once: the card is refilled in place, nothing of the old box may linger
+	_box = VBoxContainer.new()
+	_box.set_anchors_and_offsets_preset(Control.PRESET_FULL_RECT, Control.PRESET_MODE_MINSIZE, 14)
+	_box.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_box.add_theme_constant_override("separation", 6)
+	add_child(_box)
+	_thumbnail = BoardThumbnail.new()
+	_thumbnail.custom_minimum_size = Vector2(0, THUMB_HEIGHT)
+	_thumbnail.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_box.add_child(_thumbnail)
 
 
-func _add_label(
-	box: VBoxContainer, words: String, variation: StringName, wraps := false, lines := 3
-) -> void:
+func _add_label(words: String, variation: StringName, wraps := false, lines := 3) -> void:
 	var label := Label.new()
 	label.text = words
 	label.theme_type_variation = variation
@@ -65,6 +95,6 @@ func _add_label(
 		label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 		label.max_lines_visible = lines
 		label.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	else:
-		label.clip_text = true
-	box.add_child(label)
+	# a long text is cut at the card's edge, never drawn over the next card
+	label.clip_text = true
+	_box.add_child(label)

@@ -1,27 +1,75 @@
 extends Control
-## The level select of one game (App.level_select_kind): every board file in levels/<kind>/
-## as a card with its thumbnail, name and best result; boards that fail to load are listed
-## greyed out with their error. Choosing a card starts the game on that board.
+## The level select of one game (App.level_select_kind): the shipped boards (levels/<kind>/)
+## and the player's own ("My boards", user://boards/<kind>/), one card per file. Files load
+## off the main thread (BoardListLoading): cards say "Loading…" and fill in, so a slow or
+## hostile file never stops the screen; a board that fails to load is greyed with its error.
+## My boards can be imported (button or a file dropped on the window), exported and deleted.
 
-const LevelCard := preload("res://scenes/menu/level_card.gd")
+const LevelSlot := preload("res://scenes/menu/level_slot.gd")
+const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
 
 ## The game whose boards are listed ("pachinko" or "maze").
 var kind := "pachinko"
+## The player's boards folder (tests point it at a scratch folder before adding the screen).
+var user_root := BoardLoader.USER_DIR
+## Loads one file (path, kind, root) -> BoardLoadResult; empty means BoardLoader.load_listed.
+## Tests pass a slow one.
+var load_one := Callable()
+
+var _loadings: Dictionary = {}  # the grid a loading fills -> its BoardListLoading
+var _first_focus: Control = null
 
 @onready var _title: Label = %TitleLabel
 @onready var _summary: Label = %SummaryLabel
+@onready var _status: Label = %StatusLabel
 @onready var _grid: GridContainer = %Cards
+@onready var _my_grid: GridContainer = %MyCards
+@onready var _my_empty: Label = %MyBoardsEmpty
+@onready var _folder: Label = %FolderLabel
 @onready var _back: Button = %BackButton
+@onready var _import: Button = %ImportButton
+@onready var _dialogs: Dialogs = %Dialogs
+@onready var _scroll: ScrollContainer = %Scroll
 
 
 func _ready() -> void:
 	_back.pressed.connect(App.go_to_menu)
+	_import.pressed.connect(_dialogs.ask_import)
+	_dialogs.import_chosen.connect(_import_one)
+	_dialogs.export_chosen.connect(export_board)
+	_dialogs.delete_confirmed.connect(delete_board)
+	get_window().files_dropped.connect(import_files)
 	kind = App.level_select_kind
-	show_boards(BoardLoader.list_boards(_kind_enum(kind)))
+	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
+	_status.text = ""
+	reload()
+
+
+func _exit_tree() -> void:
+	for loading: BoardListLoading in _loadings.values():
+		loading.cancel()
+	_loadings.clear()
+
+
+func _process(_delta: float) -> void:
+	if _loadings.is_empty():
+		return
+	for grid: GridContainer in _loadings.keys():
+		var loading: BoardListLoading = _loadings[grid]
+		for done in loading.take_finished():
+			var path: String = done["path"]
+			var result: BoardLoadResult = done["result"]
+			_fill(grid, path, result)
+		if not loading.is_busy():
+			_loadings.erase(grid)
+	if _loadings.is_empty():
+		_loaded()
 
 
 func _unhandled_input(event: InputEvent) -> void:
+	if _dialogs.open_dialog() != null:
+		return
 	if event.is_action_pressed("ui_cancel"):
 		App.go_to_menu()
 		get_viewport().set_input_as_handled()
@@ -32,35 +80,99 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 
 
-## Lists these load results as cards (one per file, broken ones greyed) and focuses the first.
+## Lists and loads every board file again (shipped and My boards).
+func reload() -> void:
+	_folder.text = "Folder: %s" % _shown_path("%s/%s" % [user_root, kind])
+	_load_section(_grid, BoardLoader.LEVELS_DIR)
+	_load_section(_my_grid, user_root)
+
+
+## Shows the boards of another My boards folder (the screenshots use a scratch one).
+func use_folder(root: String) -> void:
+	user_root = root
+	reload()
+
+
+## True while some board file is still loading.
+func is_loading() -> bool:
+	return not _loadings.is_empty()
+
+
+## Lists these load results as the shipped boards' cards (one per file, broken ones greyed),
+## at once, and focuses the first playable one.
 func show_boards(results: Array[BoardLoadResult]) -> void:
-	for child in _grid.get_children():
-		_grid.remove_child(child)
-		child.queue_free()
-	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
-	var broken := 0
+	if _loadings.has(_grid):
+		_cancel(_grid)
+		_loadings.erase(_grid)
+	_clear(_grid)
 	for result in results:
-		var card := LevelCard.new()
-		card.setup(result, _best_text(result))
-		if card.playable:
-			card.pressed.connect(App.start_game.bind(kind, card.board_path))
-		else:
-			broken += 1
-		_grid.add_child(card)
-	_summary.text = _summary_text(results.size(), broken)
-	var first := first_card()
-	if first != null:
-		first.grab_focus()
+		_add_slot(_grid, result.path)
+		_fill(_grid, result.path, result)
+	_loaded()
+
+
+## Imports board files (a drop on the window, or the file dialog's pick) into My boards and
+## says what happened to each.
+func import_files(sources: PackedStringArray) -> void:
+	var lines := PackedStringArray()
+	var refused := false
+	for source in sources:
+		var outcome := UserBoards.import_file(source, user_root)
+		if outcome.has("error"):
+			refused = true
+			lines.append("Not imported: %s" % outcome["error"])
+			continue
+		var result: BoardLoadResult = outcome["result"]
+		var line := (
+			'Imported "%s" into My boards as %s'
+			% [result.level.display_name, str(outcome["path"]).get_file()]
+		)
+		var its_kind := BoardLevel.kind_name(result.level.kind)
+		if its_kind != kind:
+			line += (
+				" (a %s board: find it in the %s list)" % [its_kind, TITLES.get(its_kind, its_kind)]
+			)
+		lines.append(line + ".")
+	_say("\n".join(lines), refused)
+	_load_section(_my_grid, user_root)
+
+
+## Writes the file of `board_path` to `target` (the export dialog's pick) and says so.
+func export_board(board_path: String, target: String) -> void:
+	var roots: Array[String] = [BoardLoader.LEVELS_DIR + "/", user_root + "/"]
+	var error := UserBoards.export_file(board_path, target, roots)
+	if error == OK:
+		_say("Exported %s to %s." % [board_path.get_file(), target], false)
 	else:
-		_back.grab_focus()
+		_say("Could not export %s: %s." % [board_path.get_file(), error_string(error)], true)
 
 
-## The cards shown, in order.
+## Deletes one of the player's boards (after the dialog's confirmation) and says so.
+func delete_board(board_path: String) -> void:
+	var error := UserBoards.delete_file(board_path, user_root)
+	if error == OK:
+		_say("Deleted %s from My boards." % board_path.get_file(), false)
+	else:
+		_say("Could not delete %s: %s." % [board_path.get_file(), error_string(error)], true)
+	_load_section(_my_grid, user_root)
+
+
+## The cards shown (shipped boards first, then My boards), in order.
 func cards() -> Array[Button]:
 	var result: Array[Button] = []
-	for child in _grid.get_children():
-		if child is Button and not child.is_queued_for_deletion():
-			result.append(child as Button)
+	for grid: GridContainer in [_grid, _my_grid]:
+		for slot: Node in grid.get_children():
+			if slot is LevelSlot and not slot.is_queued_for_deletion():
+				result.append((slot as LevelSlot).card)
+	return result
+
+
+## The slots of My boards, in order.
+func my_slots() -> Array[LevelSlot]:
+	var result: Array[LevelSlot] = []
+	for slot in _my_grid.get_children():
+		if slot is LevelSlot and not slot.is_queued_for_deletion():
+			result.append(slot as LevelSlot)
 	return result
 
 
@@ -71,6 +183,102 @@ func first_card() -> Button:
 		if not card.disabled:
 			return card
 	return all[0] if not all.is_empty() else null
+
+
+func _grid_first_card() -> Button:
+	for slot in _grid.get_children():
+		if slot is LevelSlot:
+			return (slot as LevelSlot).card
+	return null
+
+
+func _import_one(source: String) -> void:
+	import_files(PackedStringArray([source]))
+
+
+# Shows a card saying "Loading…" for every file in `<root>/<kind>/` and starts loading them.
+func _load_section(grid: GridContainer, root: String) -> void:
+	if _loadings.has(grid):
+		_cancel(grid)
+	_clear(grid)
+	var kind_value := _kind_enum(kind)
+	var jobs: Array[Dictionary] = []
+	for path in BoardLoader.list_files(kind_value, root):
+		_add_slot(grid, path)
+		jobs.append({"path": path, "kind": kind_value, "root": root})
+	_loadings[grid] = BoardListLoading.new(jobs, load_one)
+	_update_summary()
+	if not is_instance_valid(_first_focus):
+		_first_focus = first_card() if first_card() != null else _import
+		_first_focus.grab_focus()
+
+
+func _cancel(grid: GridContainer) -> void:
+	var loading: BoardListLoading = _loadings[grid]
+	loading.cancel()
+
+
+func _add_slot(grid: GridContainer, path: String) -> void:
+	var slot := LevelSlot.new(path, grid == _my_grid)
+	slot.export_requested.connect(_dialogs.ask_export)
+	slot.delete_requested.connect(_dialogs.ask_delete)
+	slot.card.pressed.connect(func() -> void: App.start_game(kind, slot.card.board_path))
+	grid.add_child(slot)
+
+
+func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
+	for slot in grid.get_children():
+		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
+			(slot as LevelSlot).fill(result, _best_text(result))
+	_update_summary()
+
+
+# Everything has loaded: the first playable card takes the focus the loading card held.
+func _loaded() -> void:
+	_update_summary()
+	var focused := get_viewport().gui_get_focus_owner()
+	var stuck := focused == _first_focus and focused is Button and (focused as Button).disabled
+	if focused == null or stuck:
+		var first := first_card()
+		(first if first != null else _back).grab_focus()
+	if get_viewport().gui_get_focus_owner() == _grid_first_card():
+		# the first row from its top, not scrolled to wherever the loading card sat
+		_scroll.set_deferred("scroll_vertical", 0)
+	_first_focus = get_viewport().gui_get_focus_owner()
+
+
+# Frees the grid's slots at once (never called from one of their own signals).
+func _clear(grid: GridContainer) -> void:
+	for child in grid.get_children():
+		child.free()
+
+
+func _update_summary() -> void:
+	var total := 0
+	var broken := 0
+	var waiting := 0
+	for card: Button in cards():
+		total += 1
+		waiting += 1 if card.get("loading") else 0
+		broken += 1 if card.disabled and not card.get("loading") else 0
+	var mine := my_slots().size()
+	_my_empty.visible = mine == 0
+	if total == 0:
+		_summary.text = "No boards found in levels/%s/ or in My boards." % kind
+		return
+	var text := "%d board%s" % [total, "" if total == 1 else "s"]
+	if mine > 0:
+		text += " (%d of your own)" % mine
+	if waiting > 0:
+		text += ", %d loading…" % waiting
+	if broken > 0:
+		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
+	_summary.text = text
+
+
+func _say(message: String, is_problem: bool) -> void:
+	_status.text = message
+	_status.theme_type_variation = &"WarningLabel" if is_problem else &"HintLabel"
 
 
 func _best_text(result: BoardLoadResult) -> String:
@@ -98,13 +306,9 @@ static func _clock_text(seconds: float) -> String:
 	return "%d:%02d.%d" % [floori(seconds / 60.0), whole % 60, int(fmod(seconds, 1.0) * 10.0)]
 
 
-func _summary_text(total: int, broken: int) -> String:
-	if total == 0:
-		return "No boards found in levels/%s/." % kind
-	var text := "%d board%s" % [total, "" if total == 1 else "s"]
-	if broken > 0:
-		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
-	return text
+# Players know their files by the real path, not by user://.
+static func _shown_path(path: String) -> String:
+	return path.replace("user://", OS.get_user_data_dir() + "/")
 
 
 static func _is_navigation(event: InputEvent) -> bool:

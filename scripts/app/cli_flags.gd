@@ -62,7 +62,11 @@ const FLAGS: Array[Dictionary] = [
 		"value": Value.TEXT,
 		"placeholder": "ID",
 		"default": "classic",
-		"help": "The board: a name in levels/<game>/ or a res:// path (default classic).",
+		"help":
+		(
+			"The board: a name in levels/<game>/, or a res://levels/ or user://boards/ path"
+			+ " (default classic)."
+		),
 		"example": "--autoplay=maze --board=catacombs",
 	},
 	{

@@ -9,8 +9,16 @@ const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const SETTINGS := "res://scenes/menu/settings_menu.tscn"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"menu_main", "menu_level_select_pachinko", "menu_level_select_maze", "menu_settings"
+	"menu_main",
+	"menu_level_select_pachinko",
+	"menu_level_select_maze",
+	"menu_my_boards",
+	"menu_settings",
 ]
+## The My boards shot's own scratch folder: the player's real boards never show in it.
+const SHOT_BOARDS := "user://shots_boards"
+## A file the loader refuses, shown greyed with its reason in the My boards shot.
+const REFUSED_BOARD := "res://tests/fixtures/hostile_boards/pachinko/restitution_5.board"
 
 
 ## Opens the screen of `shot_name` and saves it. OK or the reason it failed.
@@ -29,6 +37,12 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 			screen = await ScreenOpener.open(
 				tree, App.go_to_level_select.bind("maze"), LEVEL_SELECT
 			)
+		"menu_my_boards":
+			screen = await ScreenOpener.open(
+				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+			)
+			if screen != null:
+				await _show_my_boards(tree, screen)
 		"menu_settings":
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 			if screen != null:
@@ -41,3 +55,36 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if screen == null:
 		return ERR_CANT_OPEN
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
+
+
+# Fills a scratch My boards folder (one imported board, one refused file), imports the
+# board as the Import button would, and scrolls to the section.
+static func _show_my_boards(tree: SceneTree, screen: Node) -> void:
+	_empty_folder(SHOT_BOARDS + "/pachinko")
+	DirAccess.make_dir_recursive_absolute(SHOT_BOARDS + "/pachinko")
+	var refused := FileAccess.open(SHOT_BOARDS + "/pachinko/bouncy.board", FileAccess.WRITE)
+	refused.store_buffer(FileAccess.get_file_as_bytes(REFUSED_BOARD))
+	refused.close()
+	screen.call("use_folder", SHOT_BOARDS)
+	var source := ProjectSettings.globalize_path("res://levels/pachinko/windmills.board")
+	screen.call("import_files", PackedStringArray([source]))
+	for frame in 120:
+		await tree.process_frame
+		if not screen.call("is_loading"):
+			break
+	var slots: Array = screen.call("my_slots")
+	if not slots.is_empty():
+		(slots[0].get("card") as Control).grab_focus()
+	for frame in 10:
+		await tree.process_frame
+	# down to the end, so the cards' Export and Delete buttons show too
+	var scroll := screen.get_node("%Scroll") as ScrollContainer
+	scroll.scroll_vertical = int(scroll.get_v_scroll_bar().max_value)
+	for frame in 3:
+		await tree.process_frame
+
+
+static func _empty_folder(folder: String) -> void:
+	if DirAccess.dir_exists_absolute(folder):
+		for file_name in DirAccess.get_files_at(folder):
+			DirAccess.remove_absolute(folder.path_join(file_name))
