@@ -1,58 +1,78 @@
 extends RefCounted
 ## The player's best results per board: fastest maze time in each mode (easy, hard), most
 ## pachinko balls won.
-## Kept in a readable INI file (user://save.cfg); a damaged file is reported and the
-## records start empty rather than stopping the game.
+## Kept in a readable INI file (user://save.cfg), read as data: a board id of any text
+## round-trips, an unusable record is dropped on its own, a damaged file is moved aside
+## (kept for the player) and the records start empty, a file from a newer version is left
+## untouched and never saved over. None of it stops the game.
 
 const IniText := preload("res://scripts/app/ini_text.gd")
+const UserFile := preload("res://scripts/app/user_file.gd")
 ## Version 2 keeps a maze time per mode; version 1 had one time per board, read as easy.
 const VERSION := 2
 const MAZE_SECTIONS := {false: "maze_best_seconds_easy", true: "maze_best_seconds_hard"}
 ## The version 1 section: every time in it was an easy-mode time.
 const LEGACY_MAZE_SECTION := "maze_best_seconds"
+## Records past this in the message are only counted.
+const MAX_LISTED := 5
+## A pachinko count past this is not a game anyone played.
+const MAX_BALLS := 1_000_000_000
+
 const HEADER := "Board Studio best results (format version %d), per board id."
 
 ## hard (bool) -> {board id: seconds}
 var _maze_times := {false: {}, true: {}}
 var _pachinko_balls := {}
 var _path := ""
+# a damaged file that could not be moved aside, or one from a newer version: never written
+var _untouchable := false
 
 
-## Loads the records from `path` and remembers it for saving. Returns "" or the problem.
+## Loads the records from `path` and remembers it for saving. Returns "" or a sentence for
+## the player naming the problem and where the old file went.
 func load_file(path: String) -> String:
 	_path = path
+	_untouchable = false
 	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
 	var read := IniText.read_file(path)
 	if read.has("missing"):
 		return ""
-	if read.has("error"):
+	var why: String = read.get("error", "")
+	var version := {}
+	if why.is_empty():
+		version = UserFile.format_version(read["sections"])
+		why = version.get("error", "")
+		var line_problems: PackedStringArray = read["problems"]
+		if not why.is_empty() and not line_problems.is_empty():
+			why = "%s; %s" % [why, line_problems[0]]
+	if not why.is_empty():
+		var kept := UserFile.keep_aside(path)
+		_untouchable = kept.is_empty()
 		return (
-			"The best results file %s is damaged (%s); starting a fresh one."
-			% [path, read["error"]]
+			"The best results file %s is damaged (%s), so the records start empty. %s"
+			% [path, why, UserFile.kept_note(kept)]
 		)
-	var sections: Dictionary = read["sections"]
-	var meta: Dictionary = sections.get("meta", {})
-	var version: Variant = meta.get("version")
-	var is_number := version is float or version is int
-	var whole: int = version if is_number else 0
-	if not is_number or whole < 1 or whole > VERSION:
+	var whole: int = version["version"]
+	if whole > VERSION:
+		_untouchable = true
 		return (
-			"The best results file %s has an unknown version (%s); starting a fresh one."
-			% [path, str(version)]
+			(
+				"The best results file %s is from a newer version of Board Studio (format %d): "
+				+ "it is left untouched, and best results of this run are not saved."
+			)
+			% [path, whole]
 		)
-	if whole == 1:
-		_read_maze_times(sections.get(LEGACY_MAZE_SECTION, {}), false)
-	else:
-		for hard: bool in MAZE_SECTIONS:
-			_read_maze_times(sections.get(MAZE_SECTIONS[hard], {}), hard)
-	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
-	for board_id: String in pachinko:
-		var balls: Variant = pachinko[board_id]
-		if (balls is float or balls is int) and balls >= 0:
-			var count: int = balls
-			_pachinko_balls[board_id] = count
-	return ""
+	var problems := _read_records(read["sections"], whole)
+	problems.append_array(read["problems"])
+	if problems.is_empty():
+		return ""
+	var kept := UserFile.keep_aside(path)
+	_untouchable = kept.is_empty()
+	return (
+		"Some best results in %s were unreadable and are left out: %s. %s"
+		% [path, ", ".join(problems), UserFile.kept_note(kept)]
+	)
 
 
 ## Fastest time on a maze board in one mode (`hard` or easy) in seconds, or -1 when there is
@@ -106,9 +126,13 @@ func record_pachinko_balls(board_id: String, balls: int) -> bool:
 
 
 ## Writes the records to the file they were loaded from (nothing when never loaded).
+## A file `load_file` must not write over (newer version, or damaged and not movable) is
+## left alone: ERR_FILE_NO_PERMISSION, the records stay for this run.
 func save() -> Error:
 	if _path.is_empty():
 		return OK
+	if _untouchable:
+		return ERR_FILE_NO_PERMISSION
 	var sections := [
 		["meta", {"version": VERSION}],
 		[MAZE_SECTIONS[false], _maze_times[false]],
@@ -121,12 +145,41 @@ func save() -> Error:
 	return error
 
 
-func _read_maze_times(section: Dictionary, hard: bool) -> void:
+# Takes every usable record from the sections of a file of `version`; returns the records
+# it could not use (a few named, then a count).
+func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
+	var refused := PackedStringArray()
+	if version == 1:
+		_read_maze_times(sections.get(LEGACY_MAZE_SECTION, {}), false, refused)
+	else:
+		for hard: bool in MAZE_SECTIONS:
+			_read_maze_times(sections.get(MAZE_SECTIONS[hard], {}), hard, refused)
+	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
+	for board_id: String in pachinko:
+		var balls: Variant = pachinko[board_id]
+		var number: float = balls if balls is float or balls is int else NAN
+		if board_id.is_empty() or not is_finite(number) or number < 0 or number > MAX_BALLS:
+			refused.append(_shown(board_id))
+		else:
+			_pachinko_balls[board_id] = int(number)
+	if refused.size() > MAX_LISTED:
+		var more := refused.size() - MAX_LISTED
+		refused.resize(MAX_LISTED)
+		refused.append("%d more" % more)
+	return refused
+
+
+func _read_maze_times(section: Dictionary, hard: bool, refused: PackedStringArray) -> void:
 	var times: Dictionary = _maze_times[hard]
 	for board_id: String in section:
 		var seconds: Variant = section[board_id]
-		if not (seconds is float or seconds is int):
-			continue
-		var time: float = seconds
-		if is_finite(time) and time > 0:
+		var time: float = seconds if seconds is float or seconds is int else NAN
+		if board_id.is_empty() or not is_finite(time) or time <= 0.0:
+			refused.append(_shown(board_id))
+		else:
 			times[board_id] = time
+
+
+# A board id as a message shows it: short, with control characters visible.
+static func _shown(board_id: String) -> String:
+	return "'%s'" % board_id.left(40).c_escape()
