@@ -13,7 +13,8 @@ signal changed
 const VERSION := 1
 const MIN_TILT_SENSITIVITY := 0.25
 const MAX_TILT_SENSITIVITY := 3.0
-## Actions that must always keep a binding: without one there is no way out of a game.
+## Actions that must keep a keyboard and a gamepad binding: without one, a player on that
+## device has no way out of a game.
 const REQUIRED_ACTIONS: Array[String] = ["pause"]
 ## More bindings than this on one action is not a file a person wrote.
 const MAX_BINDINGS_PER_ACTION := 16
@@ -103,9 +104,9 @@ func rebind(action: String, event: InputEvent, gamepad: bool) -> void:
 	changed.emit()
 
 
-## Removes the keyboard (gamepad = false) or gamepad events of an action. An action in
-## [constant REQUIRED_ACTIONS] is never left with no binding: then that column's shipped
-## bindings come back instead. Returns false when that happened.
+## Removes the keyboard (gamepad = false) or gamepad events of an action. A column of an
+## action in [constant REQUIRED_ACTIONS] is never left empty: its shipped bindings come back
+## instead. Returns false when that happened.
 func clear_binding(action: String, gamepad: bool) -> bool:
 	if not bindings.has(action):
 		push_error("GameSettings.clear_binding: unknown action '%s'" % action)
@@ -114,16 +115,10 @@ func clear_binding(action: String, gamepad: bool) -> bool:
 	for old: InputEvent in bindings[action]:
 		if Codec.is_gamepad(old) != gamepad:
 			events.append(old)
-	var cleared := true
-	if events.is_empty() and REQUIRED_ACTIONS.has(action):
-		cleared = false
-		var shipped: Array = default_bindings().get(action, [])
-		for event: InputEvent in shipped:
-			if Codec.is_gamepad(event) == gamepad:
-				events.append(event)
-	bindings[action] = events
+	var kept := _with_required_columns(action, events)
+	bindings[action] = kept
 	changed.emit()
-	return cleared
+	return kept.size() == events.size()
 
 
 ## Restores the shipped bindings of every action.
@@ -221,22 +216,22 @@ func load_file(path: String) -> String:
 		var line_problems: PackedStringArray = read["problems"]
 		why = version.get("error", "")
 		if not why.is_empty() and not line_problems.is_empty():
-			why = "%s; %s" % [why, line_problems[0]]
+			why = "%s; unreadable: %s" % [why, line_problems[0]]
 	if not why.is_empty():
 		var kept := UserFile.keep_aside(path)
 		_untouchable_path = path if kept.is_empty() else ""
 		return (
-			"The settings file %s is damaged (%s), so the defaults are used. %s"
-			% [path, why, UserFile.kept_note(kept)]
+			"%s could not be read (%s), so the defaults are used. %s"
+			% [path.get_file(), why, UserFile.kept_note(kept)]
 		)
 	if version["version"] > VERSION:
 		_untouchable_path = path
 		return (
 			(
-				"The settings file %s is from a newer version of Board Studio (format %d), so the "
-				+ "defaults are used this time; the file is left untouched and changes are not saved."
+				"%s is from a newer version of Board Studio (format %d): the defaults are used, "
+				+ "and the file is left as it is (changes are not saved)."
 			)
-			% [path, version["version"]]
+			% [path.get_file(), version["version"]]
 		)
 	var problems := _read_values(read["sections"])
 	problems.append_array(read["problems"])
@@ -249,8 +244,8 @@ func load_file(path: String) -> String:
 	var kept := UserFile.keep_aside(path)
 	_untouchable_path = path if kept.is_empty() else ""
 	return (
-		"Some settings in %s were unreadable and got their defaults: %s. %s"
-		% [path, ", ".join(problems), UserFile.kept_note(kept)]
+		"Some settings in %s could not be used and got their defaults: %s. %s"
+		% [path.get_file(), ", ".join(problems), UserFile.kept_note(kept)]
 	)
 
 
@@ -302,11 +297,26 @@ func _read_bindings(input: Dictionary, problems: PackedStringArray) -> void:
 			continue  # an action a later version removed: nothing to bind
 		var events := _events_from(input[action])
 		if events.is_empty() and REQUIRED_ACTIONS.has(action):
-			problems.append("%s (it must keep a binding)" % action)
+			problems.append("%s (it needs a binding)" % action)
 		elif events.is_empty() and not (input[action] is Array and input[action].is_empty()):
 			problems.append(action)
 		else:
-			bindings[action] = events
+			bindings[action] = _with_required_columns(action, events)
+
+
+# `events` with the shipped keyboard or gamepad bindings added for a required action that
+# has none of that kind.
+func _with_required_columns(action: String, events: Array[InputEvent]) -> Array[InputEvent]:
+	if not REQUIRED_ACTIONS.has(action):
+		return events
+	var result := events.duplicate()
+	for gamepad: bool in [false, true]:
+		if events.any(func(event: InputEvent) -> bool: return Codec.is_gamepad(event) == gamepad):
+			continue
+		for shipped: InputEvent in default_bindings().get(action, []):
+			if Codec.is_gamepad(shipped) == gamepad:
+				result.append(shipped)
+	return result
 
 
 # The events a list of binding codes names; empty when it is not such a list.

@@ -14,7 +14,8 @@ const PLAIN_KEY := "^[A-Za-z0-9_][A-Za-z0-9_.\\-]*$"
 
 
 ## Reads INI text: {"sections": {name: {key: value}}, "problems": PackedStringArray (the
-## first few unreadable lines, "line N: why"), "problem_count": int}.
+## first few unreadable lines, short enough for a player's message: "volume (line 4)",
+## "line 7 (no =)"), "problem_count": int}.
 static func parse(text: String) -> Dictionary:
 	var sections := {}
 	var problems := PackedStringArray()
@@ -36,15 +37,15 @@ static func parse(text: String) -> Dictionary:
 					sections[name] = {}
 				section = sections[name]
 			else:
-				problem = "a section header must look like [name]"
+				problem = "line %d (not a [section])"
 		elif section == null:
-			problem = "a value outside any readable [section]"
+			problem = "line %d (outside a [section])"
 		else:
 			problem = _read_pair(line, json, section as Dictionary)
 		if not problem.is_empty():
 			problem_count += 1
 			if problems.size() < MAX_LISTED_PROBLEMS:
-				problems.append("line %d: %s" % [line_number, problem])
+				problems.append(problem % line_number)
 	return {"sections": sections, "problems": problems, "problem_count": problem_count}
 
 
@@ -89,28 +90,27 @@ static func write_file(path: String, text: String) -> Error:
 	return DirAccess.rename_absolute(temp_path, path)
 
 
-# Reads one `key=value` line into `section`; "" or the problem.
+# Reads one `key=value` line into `section`; "" or the problem, with a %d for the line.
 static func _read_pair(line: String, json: JSON, section: Dictionary) -> String:
 	var key := ""
 	var rest := ""
 	if line.begins_with('"'):
 		var end := _closing_quote(line)
 		if end < 0 or json.parse(line.substr(0, end + 1)) != OK or not json.data is String:
-			return "a quoted key must be one JSON string"
+			return "line %d (a quoted key must be one JSON string)"
 		key = json.data
 		rest = line.substr(end + 1).strip_edges()
 		if not rest.begins_with("="):
-			return "expected = after the key"
+			return "line %d (no = after the key)"
 		rest = rest.substr(1)
 	else:
 		var equals := line.find("=")
 		if equals <= 0:
-			return "expected key=value, found '%s'" % line.left(40)
+			return "line %d (no =)"
 		key = line.substr(0, equals).strip_edges()
 		rest = line.substr(equals + 1)
 	if json.parse(rest.strip_edges()) != OK:
-		var shown := key.left(40).c_escape()
-		return "the value of '%s' is unreadable (%s)" % [shown, json.get_error_message()]
+		return "%s (line %%d)" % key.left(40).c_escape().replace("%", "%%")
 	section[key] = json.data  # a repeated key: the last one counts, as the file reads
 	return ""
 

@@ -45,23 +45,23 @@ func load_file(path: String) -> String:
 		why = version.get("error", "")
 		var line_problems: PackedStringArray = read["problems"]
 		if not why.is_empty() and not line_problems.is_empty():
-			why = "%s; %s" % [why, line_problems[0]]
+			why = "%s; unreadable: %s" % [why, line_problems[0]]
 	if not why.is_empty():
 		var kept := UserFile.keep_aside(path)
 		_untouchable = kept.is_empty()
 		return (
-			"The best results file %s is damaged (%s), so the records start empty. %s"
-			% [path, why, UserFile.kept_note(kept)]
+			"The best results in %s could not be read (%s), so they start empty. %s"
+			% [path.get_file(), why, UserFile.kept_note(kept)]
 		)
 	var whole: int = version["version"]
 	if whole > VERSION:
 		_untouchable = true
 		return (
 			(
-				"The best results file %s is from a newer version of Board Studio (format %d): "
-				+ "it is left untouched, and best results of this run are not saved."
+				"%s is from a newer version of Board Studio (format %d): it is left as it is, "
+				+ "and this run's best results are not saved."
 			)
-			% [path, whole]
+			% [path.get_file(), whole]
 		)
 	var problems := _read_records(read["sections"], whole)
 	problems.append_array(read["problems"])
@@ -70,8 +70,8 @@ func load_file(path: String) -> String:
 	var kept := UserFile.keep_aside(path)
 	_untouchable = kept.is_empty()
 	return (
-		"Some best results in %s were unreadable and are left out: %s. %s"
-		% [path, ", ".join(problems), UserFile.kept_note(kept)]
+		"Some best results in %s could not be used and are left out: %s. %s"
+		% [path.get_file(), ", ".join(problems), UserFile.kept_note(kept)]
 	)
 
 

@@ -99,8 +99,8 @@ static func keep_aside(path: String, when := Time.get_datetime_dict_from_system(
 ## The end of a message about a damaged file: where the old one went, or that it stays put.
 static func kept_note(kept: String) -> String:
 	if kept.is_empty():
-		return "It could not be moved aside, so it is left as it is and nothing is saved to it now."
-	return "The file as it was is kept as %s." % kept
+		return "It could not be moved aside, so it is left as it is and nothing is saved to it."
+	return "The old file is kept as %s." % kept
 
 
 ## The [meta] version of a parsed INI file: {"version": int} or {"error": why not}.

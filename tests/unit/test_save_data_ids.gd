@@ -71,5 +71,5 @@ func test_the_reader_takes_quoted_keys_and_names_bad_ones() -> void:
 	var parsed := IniText.parse('[s]\n"a=b"=1\n"c\\"d" = 2\n"open=3\n"x"y=4\n')
 	assert_eq(parsed["sections"], {"s": {"a=b": 1.0, 'c"d': 2.0}})
 	assert_eq(parsed["problem_count"], 2)
-	assert_string_contains(parsed["problems"][0], "line 4: a quoted key")
-	assert_string_contains(parsed["problems"][1], "line 5: expected =")
+	assert_string_contains(parsed["problems"][0], "line 4 (a quoted key")
+	assert_string_contains(parsed["problems"][1], "line 5 (no = after")

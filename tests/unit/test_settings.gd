@@ -55,8 +55,8 @@ func test_damaged_file_is_reported_and_defaults_used() -> void:
 	var settings := GameSettings.new()
 	settings.set_value("tilt_sensitivity", 2.0)
 	var message := settings.load_file(PATH)
-	assert_string_contains(message, PATH)
-	assert_string_contains(message, "damaged")
+	assert_string_contains(message, PATH.get_file())
+	assert_string_contains(message, "could not be read")
 	assert_eq(settings.tilt_sensitivity, 1.0)
 	assert_eq(settings.master_volume, 1.0)
 
@@ -66,7 +66,7 @@ func test_binary_garbage_is_reported() -> void:
 	file.store_buffer(PackedByteArray([0, 159, 146, 150, 0, 255, 10, 91]))
 	file.close()
 	var message := GameSettings.new().load_file(PATH)
-	assert_string_contains(message, "damaged")
+	assert_string_contains(message, "NUL bytes")
 
 
 func test_newer_version_is_reported_defaults_used_and_never_saved_over() -> void:
@@ -76,7 +76,7 @@ func test_newer_version_is_reported_defaults_used_and_never_saved_over() -> void
 	var message := settings.load_file(PATH)
 	assert_string_contains(message, "newer version")
 	assert_string_contains(message, "99")
-	assert_string_contains(message, "left untouched")
+	assert_string_contains(message, "left as it is")
 	assert_eq(settings.master_volume, 1.0)
 	settings.set_value("master_volume", 0.7)
 	assert_eq(settings.save_file(PATH), ERR_FILE_NO_PERMISSION)

@@ -5,6 +5,7 @@ extends GutTest
 ## binding, from the file and from the settings screen.
 
 const AppScript := preload("res://scenes/app/app.gd")
+const Codec := preload("res://scripts/app/input_event_codec.gd")
 const SETTINGS := "user://test_settings_files_settings.cfg"
 const SAVE := "user://test_settings_files_save.cfg"
 
@@ -126,22 +127,31 @@ func test_an_empty_pause_list_keeps_the_default() -> void:
 	_write(SETTINGS, "[meta]\nversion=1\n[input]\npause=[]\ngame_restart=[]\n")
 	var settings := GameSettings.new()
 	var message := settings.load_file(SETTINGS)
-	assert_string_contains(message, "pause (it must keep a binding)")
+	assert_string_contains(message, "pause (it needs a binding)")
 	var shipped: Array = GameSettings.default_bindings()["pause"]
 	assert_eq(settings.events_for("pause").size(), shipped.size())
 	assert_eq(settings.events_for("game_restart").size(), 0, "other actions may be left unbound")
 
 
-func test_clearing_the_last_pause_binding_restores_the_default() -> void:
+func test_clearing_a_pause_column_restores_its_default() -> void:
 	var settings := GameSettings.new()
-	assert_true(settings.clear_binding("pause", true), "the gamepad column may go")
-	assert_false(settings.clear_binding("pause", false), "the last binding may not")
-	assert_false(settings.events_for("pause").is_empty())
-	var keyboard_default := 0
-	for event: InputEvent in GameSettings.default_bindings()["pause"]:
-		if not (event is InputEventJoypadButton or event is InputEventJoypadMotion):
-			keyboard_default += 1
-	assert_eq(settings.events_for("pause").size(), keyboard_default, "the keyboard default is back")
+	var shipped: Array = GameSettings.default_bindings()["pause"]
+	var key := InputEventKey.new()
+	key.physical_keycode = KEY_P
+	settings.rebind("pause", key, false)
+	assert_false(settings.clear_binding("pause", false), "the keyboard column comes back")
+	assert_false(settings.clear_binding("pause", true), "so does the gamepad column")
+	var codes := settings.events_for("pause").map(Codec.encode)
+	assert_eq(codes, shipped.map(Codec.encode), "both columns are the shipped ones again")
 	assert_true(settings.clear_binding("game_restart", false))
 	assert_true(settings.clear_binding("game_restart", true))
-	assert_eq(settings.events_for("game_restart").size(), 0)
+	assert_eq(settings.events_for("game_restart").size(), 0, "other actions may be unbound")
+
+
+func test_a_pause_list_without_a_gamepad_binding_gets_the_default_one() -> void:
+	_write(SETTINGS, '[meta]\nversion=1\n[input]\npause=["key:P"]\n')
+	var settings := GameSettings.new()
+	assert_eq(settings.load_file(SETTINGS), "", "filled in quietly")
+	var codes := settings.events_for("pause").map(Codec.encode)
+	assert_has(codes, "key:P")
+	assert_true(settings.events_for("pause").any(Codec.is_gamepad), "a gamepad pause is back")

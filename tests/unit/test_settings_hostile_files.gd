@@ -33,8 +33,8 @@ const EXPECTED := {
 }
 ## The words each outcome's message must hold.
 const MESSAGE_WORDS := {
-	"values": "unreadable",
-	"damaged": "damaged",
+	"values": "could not be used",
+	"damaged": "could not be read",
 	"newer": "newer version",
 }
 
@@ -99,7 +99,7 @@ func _check_outcome(
 		assert_eq(message, "", what)
 		return
 	assert_string_contains(message, MESSAGE_WORDS[expected], what)
-	assert_string_contains(message, SCRATCH, "%s: the message names the file" % what)
+	assert_string_contains(message, SCRATCH.get_file(), "%s: the message names the file" % what)
 	var kept := _kept_file()
 	if expected == "newer":
 		assert_eq(kept, "", "%s: nothing moved" % what)
