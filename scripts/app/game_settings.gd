@@ -204,49 +204,47 @@ func save_file(path: String) -> Error:
 func load_file(path: String) -> String:
 	reset_to_defaults()
 	_untouchable_path = ""
-	var read := IniText.read_file(path)
+	var read := IniText.read_versioned_file(path)
 	if read.has("missing"):
 		return ""
-	var why := ""
-	var version := {}
 	if read.has("error"):
-		why = read["error"]
-	else:
-		version = UserFile.format_version(read["sections"])
-		var line_problems: PackedStringArray = read["problems"]
-		why = version.get("error", "")
-		if not why.is_empty() and not line_problems.is_empty():
-			why = "%s; unreadable: %s" % [why, line_problems[0]]
-	if not why.is_empty():
-		var kept := UserFile.keep_aside(path)
-		_untouchable_path = path if kept.is_empty() else ""
-		return (
-			"%s could not be read (%s), so the defaults are used. %s"
-			% [path.get_file(), why, UserFile.kept_note(kept)]
+		var why: String = read["error"]
+		var damaged := (
+			"%s could not be read (%s), so the defaults are used." % [path.get_file(), why]
 		)
-	if version["version"] > VERSION:
+		return _set_aside(path, damaged)
+	var version: int = read["version"]
+	if version > VERSION:
 		_untouchable_path = path
 		return (
 			(
 				"%s is from a newer version of Board Studio (format %d): the defaults are used, "
 				+ "and the file is left as it is (changes are not saved)."
 			)
-			% [path.get_file(), version["version"]]
+			% [path.get_file(), version]
 		)
-	var problems := _read_values(read["sections"])
-	problems.append_array(read["problems"])
-	var unlisted: int = read["problem_count"] - (read["problems"] as PackedStringArray).size()
-	if unlisted > 0:
-		problems.append("%d more lines" % unlisted)
+	var sections: Dictionary = read["sections"]
+	var line_problems: PackedStringArray = read["problems"]
+	var problems := _read_values(sections)
+	problems.append_array(line_problems)
 	changed.emit()
 	if problems.is_empty():
 		return ""
+	return _set_aside(
+		path,
+		(
+			"Some settings in %s could not be used and got their defaults: %s."
+			% [path.get_file(), ", ".join(problems)]
+		)
+	)
+
+
+# Moves a file with a problem aside (or, when it cannot be moved, never writes it) and
+# returns `sentence` followed by where the old file is.
+func _set_aside(path: String, sentence: String) -> String:
 	var kept := UserFile.keep_aside(path)
 	_untouchable_path = path if kept.is_empty() else ""
-	return (
-		"Some settings in %s could not be used and got their defaults: %s. %s"
-		% [path.get_file(), ", ".join(problems), UserFile.kept_note(kept)]
-	)
+	return "%s %s" % [sentence, UserFile.kept_note(kept)]
 
 
 # Takes every known value it can use from the sections; returns the keys it could not use.
@@ -260,7 +258,8 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
-	_read_bindings(sections.get("input", {}), problems)
+	var input: Dictionary = sections.get("input", {})
+	_read_bindings(input, problems)
 	return problems
 
 
@@ -295,10 +294,11 @@ func _read_bindings(input: Dictionary, problems: PackedStringArray) -> void:
 	for action: String in input:
 		if not bindings.has(action):
 			continue  # an action a later version removed: nothing to bind
-		var events := _events_from(input[action])
+		var codes: Variant = input[action]
+		var events := _events_from(codes)
 		if events.is_empty() and REQUIRED_ACTIONS.has(action):
 			problems.append("%s (it needs a binding)" % action)
-		elif events.is_empty() and not (input[action] is Array and input[action].is_empty()):
+		elif events.is_empty() and not (codes is Array and codes == []):
 			problems.append(action)
 		else:
 			bindings[action] = _with_required_columns(action, events)
@@ -322,11 +322,14 @@ func _with_required_columns(action: String, events: Array[InputEvent]) -> Array[
 # The events a list of binding codes names; empty when it is not such a list.
 func _events_from(codes: Variant) -> Array[InputEvent]:
 	var events: Array[InputEvent] = []
-	if not codes is Array or (codes as Array).size() > MAX_BINDINGS_PER_ACTION:
+	if not codes is Array:
 		return events
-	for code: Variant in codes:
+	var list: Array = codes
+	if list.size() > MAX_BINDINGS_PER_ACTION:
+		return events
+	for code: Variant in list:
 		# a short code with short numbers: longer digit runs are not a key and overflow int()
-		var sane := code is String and (code as String).length() <= 40
+		var sane := code is String and str(code).length() <= 40
 		sane = sane and RegEx.create_from_string("\\d{10}").search(str(code)) == null
 		var event: InputEvent = Codec.decode(str(code)) if sane else null
 		if event == null:

@@ -20,7 +20,8 @@ static func parse(text: String) -> Dictionary:
 	var sections := {}
 	var problems := PackedStringArray()
 	var problem_count := 0
-	var section: Variant = null  # the Dictionary lines go into; null before a good header
+	var current := ""  # the section lines go into
+	var in_section := false  # false before the first header and after a broken one
 	var json := JSON.new()
 	var line_number := 0
 	for raw_line in text.split("\n"):
@@ -30,18 +31,18 @@ static func parse(text: String) -> Dictionary:
 			continue
 		var problem := ""
 		if line.begins_with("["):
-			section = null
-			if line.ends_with("]") and line.length() >= 3:
-				var name := line.substr(1, line.length() - 2).strip_edges()
-				if not sections.has(name):
-					sections[name] = {}
-				section = sections[name]
+			in_section = line.ends_with("]") and line.length() >= 3
+			if in_section:
+				current = line.substr(1, line.length() - 2).strip_edges()
+				if not sections.has(current):
+					sections[current] = {}
 			else:
 				problem = "line %d (not a [section])"
-		elif section == null:
+		elif not in_section:
 			problem = "line %d (outside a [section])"
 		else:
-			problem = _read_pair(line, json, section as Dictionary)
+			var section: Dictionary = sections[current]
+			problem = _read_pair(line, json, section)
 		if not problem.is_empty():
 			problem_count += 1
 			if problems.size() < MAX_LISTED_PROBLEMS:
@@ -76,7 +77,29 @@ static func read_file(path: String) -> Dictionary:
 	var read := UserFile.read_text(path)
 	if not read.has("text"):
 		return read
-	return parse(read["text"])
+	var text: String = read["text"]
+	return parse(text)
+
+
+## Reads a player's file that has a [meta] version: {"missing": true}; {"error": why} when
+## it is no usable file (not text, or no whole-number version); else {"sections",
+## "version": int, "problems": the unreadable lines, a few named and then a count}.
+static func read_versioned_file(path: String) -> Dictionary:
+	var read := read_file(path)
+	if not read.has("sections"):
+		return read
+	var sections: Dictionary = read["sections"]
+	var problems: PackedStringArray = read["problems"]
+	var version := UserFile.format_version(sections)
+	if version.has("error"):
+		var why: String = version["error"]
+		if not problems.is_empty():
+			why += "; unreadable: " + problems[0]
+		return {"error": why}
+	var unlisted: int = read["problem_count"] - problems.size()
+	if unlisted > 0:
+		problems.append("%d more lines" % unlisted)
+	return {"sections": sections, "version": version["version"], "problems": problems}
 
 
 ## Writes text to a file through a temporary file, so a crash never leaves half a file.

@@ -50,7 +50,8 @@ static func read(path := PATH, now := Time.get_unix_time_from_system()) -> Dicti
 	if bytes.has("missing"):
 		return _refused("it does not exist")
 	if bytes.has("error"):
-		return _refused(bytes["error"])
+		var why: String = bytes["error"]
+		return _refused(why)
 	var text: String = bytes["text"]
 	var json := JSON.new()
 	if json.parse(text) != OK:

@@ -35,43 +35,38 @@ func load_file(path: String) -> String:
 	_untouchable = false
 	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
-	var read := IniText.read_file(path)
+	var read := IniText.read_versioned_file(path)
 	if read.has("missing"):
 		return ""
-	var why: String = read.get("error", "")
-	var version := {}
-	if why.is_empty():
-		version = UserFile.format_version(read["sections"])
-		why = version.get("error", "")
-		var line_problems: PackedStringArray = read["problems"]
-		if not why.is_empty() and not line_problems.is_empty():
-			why = "%s; unreadable: %s" % [why, line_problems[0]]
-	if not why.is_empty():
-		var kept := UserFile.keep_aside(path)
-		_untouchable = kept.is_empty()
-		return (
-			"The best results in %s could not be read (%s), so they start empty. %s"
-			% [path.get_file(), why, UserFile.kept_note(kept)]
+	if read.has("error"):
+		var why: String = read["error"]
+		var damaged := (
+			"The best results in %s could not be read (%s), so they start empty."
+			% [path.get_file(), why]
 		)
-	var whole: int = version["version"]
-	if whole > VERSION:
+		return _set_aside(path, damaged)
+	var version: int = read["version"]
+	if version > VERSION:
 		_untouchable = true
 		return (
 			(
 				"%s is from a newer version of Board Studio (format %d): it is left as it is, "
 				+ "and this run's best results are not saved."
 			)
-			% [path.get_file(), whole]
+			% [path.get_file(), version]
 		)
-	var problems := _read_records(read["sections"], whole)
-	problems.append_array(read["problems"])
+	var sections: Dictionary = read["sections"]
+	var line_problems: PackedStringArray = read["problems"]
+	var problems := _read_records(sections, version)
+	problems.append_array(line_problems)
 	if problems.is_empty():
 		return ""
-	var kept := UserFile.keep_aside(path)
-	_untouchable = kept.is_empty()
-	return (
-		"Some best results in %s could not be used and are left out: %s. %s"
-		% [path.get_file(), ", ".join(problems), UserFile.kept_note(kept)]
+	return _set_aside(
+		path,
+		(
+			"Some best results in %s could not be used and are left out: %s."
+			% [path.get_file(), ", ".join(problems)]
+		)
 	)
 
 
@@ -145,15 +140,25 @@ func save() -> Error:
 	return error
 
 
+# Moves a file with a problem aside (or, when it cannot be moved, never writes it) and
+# returns `sentence` followed by where the old file is.
+func _set_aside(path: String, sentence: String) -> String:
+	var kept := UserFile.keep_aside(path)
+	_untouchable = kept.is_empty()
+	return "%s %s" % [sentence, UserFile.kept_note(kept)]
+
+
 # Takes every usable record from the sections of a file of `version`; returns the records
 # it could not use (a few named, then a count).
 func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 	var refused := PackedStringArray()
 	if version == 1:
-		_read_maze_times(sections.get(LEGACY_MAZE_SECTION, {}), false, refused)
+		var legacy: Dictionary = sections.get(LEGACY_MAZE_SECTION, {})
+		_read_maze_times(legacy, false, refused)
 	else:
 		for hard: bool in MAZE_SECTIONS:
-			_read_maze_times(sections.get(MAZE_SECTIONS[hard], {}), hard, refused)
+			var section: Dictionary = sections.get(MAZE_SECTIONS[hard], {})
+			_read_maze_times(section, hard, refused)
 	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
 	for board_id: String in pachinko:
 		var balls: Variant = pachinko[board_id]
