@@ -20,6 +20,9 @@ func after_each() -> void:
 	_app.free()
 	for path: String in [SETTINGS, SAVE, PlaytestRequest.PATH]:
 		DirAccess.remove_absolute(path)
+	for name in DirAccess.get_files_at("user://"):
+		if name.begins_with("test_app_") and name.contains(".cfg.bad-"):
+			DirAccess.remove_absolute("user://" + name)  # the damaged files App kept aside
 	GameSettings.new().apply()
 
 
