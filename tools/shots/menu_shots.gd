@@ -10,10 +10,19 @@ const SETTINGS := "res://scenes/menu/settings_menu.tscn"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
 	"menu_main",
+	"menu_notice",
 	"menu_level_select_pachinko",
 	"menu_level_select_maze",
 	"menu_my_boards",
 	"menu_settings",
+]
+## The problems the notice shot shows: as many lines as a badly damaged user folder gives.
+const NOTICE_PROBLEMS: Array[String] = [
+	"Settings: the file was damaged (line 3); kept as settings.cfg.bad-20261122-101500.",
+	"Settings: master_volume (line 4) is not a number; using the default.",
+	"Settings: pause had no key; Escape is bound again.",
+	"Best results: the file is from a newer version of the game; it is left untouched and not saved.",
+	"Best results: 2 records could not be read and were skipped.",
 ]
 ## The My boards shot's own scratch folder: the player's real boards never show in it.
 const SHOT_BOARDS := "user://shots_boards"
@@ -28,6 +37,12 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		"menu_main":
 			# The title screen focuses the game whose level select was seen last.
 			App.level_select_kind = "pachinko"
+			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
+		"menu_notice":
+			# What a player sees after the game kept a damaged settings file aside.
+			App.level_select_kind = "pachinko"
+			for problem: String in NOTICE_PROBLEMS:
+				App.pending_problems.append(problem)
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_level_select_pachinko":
 			screen = await ScreenOpener.open(
