@@ -131,6 +131,15 @@ const CURRENT_VERSION := 1
 		cup_start_balls = value
 		emit_changed()
 
+## The bonus layer: start pockets, attackers and tulips (BonusPocketSpec), start pockets
+## first, then attackers, then tulips. Their pins are not in `pins`: the world factory
+## stamps them from these specs (BonusGeometry).
+@export var bonus_pockets: Array[BonusPocketSpec] = []:
+	set(value):
+		bonus_pockets = value
+		_watch_pockets()
+		emit_changed()
+
 @export_group("Maze")
 ## Maze cells across.
 @export var grid_cols: int = 0:
@@ -187,7 +196,7 @@ const CURRENT_VERSION := 1
 ## `BoardUpgrader` can convert them. Never saved.
 var legacy_fields: Dictionary = {}
 
-var _watched: Array[PocketSpec] = []
+var _watched: Array[Resource] = []
 
 
 func _init() -> void:
@@ -219,6 +228,10 @@ func duplicate_level() -> BoardLevel:
 	for spec in pockets:
 		specs.append(spec.duplicate() as PocketSpec if spec != null else null)
 	copy.pockets = specs
+	var bonus: Array[BonusPocketSpec] = []
+	for spec in bonus_pockets:
+		bonus.append(spec.duplicate() as BonusPocketSpec if spec != null else null)
+	copy.bonus_pockets = bonus
 	copy.tuning = tuning.duplicate() as PhysicsTuning if tuning != null else null
 	copy.legacy_fields = legacy_fields.duplicate(true)
 	return copy
@@ -245,7 +258,10 @@ func _watch_pockets() -> void:
 		if spec != null and spec.changed.is_connected(emit_changed):
 			spec.changed.disconnect(emit_changed)
 	_watched.clear()
-	for spec in pockets:
+	var watch: Array[Resource] = []
+	watch.append_array(pockets)
+	watch.append_array(bonus_pockets)
+	for spec in watch:
 		if spec != null and not spec.changed.is_connected(emit_changed):
 			spec.changed.connect(emit_changed)
 			_watched.append(spec)

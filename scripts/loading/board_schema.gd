@@ -46,6 +46,14 @@ const MAZE := {
 	"goal_radius": ["float", 1.0, 2048.0],
 	"hole_radius": ["float", 0.0, 500.0],
 }
+## The fields every bonus pocket has: a cup a 10 px ball fits into, paying a sane amount.
+const BONUS_CUP := {
+	"x": ["coord"],
+	"y": ["coord"],
+	"width": ["float", 16.0, 160.0],
+	"depth": ["float", 8.0, 200.0],
+	"payout": ["int", 0, 100],
+}
 ## List name → [most items, item field → spec]. Optional item fields are in OPTIONAL_ITEM_FIELDS.
 const LISTS := {
 	"pins": [5000, {"x": ["coord"], "y": ["coord"]}],
@@ -63,10 +71,16 @@ const LISTS := {
 	"walls": [4000, {"ax": ["coord"], "ay": ["coord"], "bx": ["coord"], "by": ["coord"]}],
 	"ball_starts": [64, {"x": ["coord"], "y": ["coord"]}],
 	"holes": [500, {"x": ["coord"], "y": ["coord"]}],
+	# The bonus layer (BonusPocketSpec): cups with a role, all optional.
+	"start_pockets": [4, BONUS_CUP],
+	"attackers": [4, BONUS_CUP],
+	"tulips": [32, BONUS_CUP],
 }
 ## Fields an item may leave out: a pin's pocket (-1 = a field pin) and its special flag.
 const OPTIONAL_ITEM_FIELDS := {
 	"pins": {"pocket": ["int", 0, 199], "special": ["bool"]},
+	"start_pockets": {"symbols": ["int", 2, 9]},
+	"attackers": {"open_seconds": ["float", 1.0, 30.0], "open_catches": ["int", 1, 50]},
 }
 ## The key an item line uses for each list: `{"pin": {"x": 1, "y": 2}}` goes to "pins".
 const ITEM_KEYS := {
@@ -74,11 +88,16 @@ const ITEM_KEYS := {
 	"pocket": "pockets",
 	"wall": "walls",
 	"ball_start": "ball_starts",
-	"hole": "holes"
+	"hole": "holes",
+	"start_pocket": "start_pockets",
+	"attacker": "attackers",
+	"tulip": "tulips",
 }
 ## A file may not have more lines than this (every list full, plus the fields).
 const MAX_LINES := 12000
-const PACHINKO_LISTS: Array[String] = ["pins", "pockets"]
+const PACHINKO_LISTS: Array[String] = ["pins", "pockets", "start_pockets", "attackers", "tulips"]
+## The bonus lists in BonusPocketSpec.Role order (a board keeps its bonus pockets so).
+const BONUS_LISTS: Array[String] = ["start_pockets", "attackers", "tulips"]
 const MAZE_LISTS: Array[String] = ["walls", "ball_starts", "holes"]
 ## Tuning fields: name → [min, max]; the fields themselves are PhysicsTuning's properties.
 const TUNING_RANGES := {

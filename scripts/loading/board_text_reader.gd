@@ -178,6 +178,7 @@ static func _build(data: Dictionary) -> BoardLevel:
 		var pockets: Array = data.get("pockets", [])
 		_build_pins(level, pins)
 		_build_pockets(level, pockets)
+		_build_bonus(level, data)
 	else:
 		var walls: Array = data.get("walls", [])
 		var ball_starts: Array = data.get("ball_starts", [])
@@ -230,6 +231,31 @@ static func _build_pockets(level: BoardLevel, items: Array) -> void:
 		var depth := _float_of(item["depth"])
 		specs.append(PocketSpec.create(at, width, depth, _int_of(item["payout"])))
 	level.pockets = specs
+
+
+# The bonus lists, in role order (start pockets, attackers, tulips).
+static func _build_bonus(level: BoardLevel, data: Dictionary) -> void:
+	var specs: Array[BonusPocketSpec] = []
+	for role in Schema.BONUS_LISTS.size():
+		var items: Array = data.get(Schema.BONUS_LISTS[role], [])
+		for item: Dictionary in items:
+			var at := Vector2(_float_of(item["x"]), _float_of(item["y"]))
+			var spec := BonusPocketSpec.create(
+				role,
+				at,
+				_float_of(item["width"]),
+				_float_of(item["depth"]),
+				_int_of(item["payout"])
+			)
+			spec.symbols = _int_of(item.get("symbols", BonusPocketSpec.DEFAULT_SYMBOLS))
+			spec.open_seconds = _float_of(
+				item.get("open_seconds", BonusPocketSpec.DEFAULT_OPEN_SECONDS)
+			)
+			spec.open_catches = _int_of(
+				item.get("open_catches", BonusPocketSpec.DEFAULT_OPEN_CATCHES)
+			)
+			specs.append(spec)
+	level.bonus_pockets = specs
 
 
 static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:

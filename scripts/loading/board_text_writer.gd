@@ -31,6 +31,7 @@ static func write(level: BoardLevel) -> String:
 	if level.is_pachinko():
 		_append_items(lines, "pin", _pin_items(level))
 		_append_items(lines, "pocket", _pocket_items(level))
+		_append_bonus(lines, level)
 	else:
 		_append_items(lines, "wall", _point_items(level.walls, WALL_KEYS))
 		_append_items(lines, "ball_start", _point_items(level.ball_starts, POINT_KEYS))
@@ -123,6 +124,33 @@ static func _pocket_items(level: BoardLevel) -> PackedStringArray:
 			)
 		)
 	return items
+
+
+# The bonus pockets by role (start pockets, attackers, tulips), each role's own fields last.
+# A board without them gets no line, so older boards keep their exact text.
+static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
+	for role: int in BonusPocketSpec.ROLE_KEYS.size():
+		for spec in level.bonus_pockets:
+			if spec == null or spec.role != role:
+				continue
+			var text := (
+				'{"x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d'
+				% [
+					number(spec.position.x),
+					number(spec.position.y),
+					number(spec.width),
+					number(spec.depth),
+					spec.payout
+				]
+			)
+			if role == BonusPocketSpec.Role.START:
+				text += ', "symbols": %d' % spec.symbols
+			elif role == BonusPocketSpec.Role.ATTACKER:
+				text += (
+					', "open_seconds": %s, "open_catches": %d'
+					% [number(spec.open_seconds), spec.open_catches]
+				)
+			lines.append('{"%s": %s}' % [spec.role_key(), text + "}"])
 
 
 static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:

@@ -146,8 +146,27 @@ func add_wall(a: Vector2, b: Vector2, radius: float) -> int:
 	_geo.wall_ab.append(ab)
 	_geo.wall_inv_len2.append(1.0 / len2 if len2 > 1e-12 else 0.0)
 	_geo.wall_radius.append(radius)
+	_geo.wall_off.append(0)
 	_geo.dirty = true
 	return _geo.wall_a.size() - 1
+
+
+## Switches wall `index` on or off (a gate that opens and closes). The grid is rebuilt on
+## the next step, which also wakes every sleeping ball, so a ball resting on a gate falls
+## when it opens. Unknown indices are refused with an error.
+func set_wall_enabled(index: int, enabled: bool) -> void:
+	if index < 0 or index >= _geo.wall_a.size():
+		push_error("BallWorld.set_wall_enabled: no wall %d (%d walls)" % [index, wall_count()])
+		return
+	var off := 0 if enabled else 1
+	if _geo.wall_off[index] != off:
+		_geo.wall_off[index] = off
+		_geo.dirty = true
+
+
+## False while wall `index` is switched off (see set_wall_enabled).
+func is_wall_enabled(index: int) -> bool:
+	return index >= 0 and index < _geo.wall_a.size() and _geo.wall_off[index] == 0
 
 
 ## Sets the ring border: balls stay inside the circle.

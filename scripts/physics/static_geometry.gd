@@ -25,6 +25,9 @@ var wall_radius := PackedFloat32Array()
 ## b - a, and 1 / |b - a|² (0 for a zero-length wall, which acts as a round pin).
 var wall_ab := PackedVector2Array()
 var wall_inv_len2 := PackedFloat32Array()
+## Per wall: 1 while it is switched off (a pachinko gate that is open). An off wall is left
+## out of the grid, so the narrow phase never sees it and the hot loop stays unchanged.
+var wall_off := PackedByteArray()
 
 var has_ring := false
 var ring_center := Vector2.ZERO
@@ -245,6 +248,8 @@ func _bin_walls(grow: float) -> void:
 			wall_items.resize(run)
 			fill = wall_start.duplicate()
 		for i: int in wall_a.size():
+			if wall_off[i] != 0:
+				continue
 			var a: Vector2 = wall_a[i]
 			var b: Vector2 = wall_b[i]
 			var reach: float = wall_radius[i] + grow

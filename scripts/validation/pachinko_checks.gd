@@ -16,6 +16,7 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	PinChecks.check_pins(level, issues)
 	_check_pockets(level, issues)
 	PinChecks.check_pin_pairs(level, issues)
+	BonusChecks.check(level, issues)
 
 
 # Ring, pin radius, array lengths and pocket specs: what every later check relies on.

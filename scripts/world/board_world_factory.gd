@@ -2,9 +2,10 @@ class_name BoardWorldFactory
 extends RefCounted
 ## Builds the physics world for a board: the one place that turns level data into shapes.
 ##
-## Pachinko: ring, gutter, pins (with pocket ids and special flags), the launch rail's guide
-## arc, its stopper and the deflector past its end as capsules (in that order), and the
-## rail's return zone as zone 0.
+## Pachinko: ring, gutter, pins (with pocket ids and special flags), the bonus pockets' pins
+## and then their lids and wings (the first walls, see BonusGeometry), the launch rail's
+## guide arc, its stopper and the deflector past its end as capsules (in that order), and
+## the rail's return zone as zone 0.
 ## Maze: the level's walls (same indices as in the level), then four invisible edge walls
 ## that keep balls on the board, the goal (goal 0) and, in hard mode only, the black holes.
 
@@ -39,6 +40,10 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	for i in count:
 		var special := level.pin_special[i] != 0
 		world.add_pin(level.pins[i], level.pin_radius, level.pin_pocket[i], special, min_speed_x)
+	# The bonus pockets: their cups after the level's pins, their lids and wings as the
+	# first walls (BonusGeometry's contract with BonusMachine).
+	BonusGeometry.add_pins(world, level, min_speed_x)
+	BonusGeometry.add_walls(world, level)
 	var guide := LaunchRail.guide_points(level)
 	for i in guide.size() - 1:
 		world.add_wall(guide[i], guide[i + 1], LaunchRail.GUIDE_WALL_RADIUS)

@@ -62,6 +62,8 @@ var power := 0.0
 var drawing := false
 ## Where every ball went (counters for the stats panel and the autoplay).
 var ledger: Ledger
+## The bonus layer: reels, attackers, tulips (idle on a board without bonus pockets).
+var bonus: BonusMachine
 
 var _in_play: Dictionary = {}
 var _origin := Vector2.ZERO
@@ -84,10 +86,12 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 		level = BoardLevel.new()
 		ledger = Ledger.new(0)
 		world = BallWorld.new()
+		bonus = BonusMachine.new(level, world, rng_seed)
 		return
 	level = board
 	ledger = Ledger.new(board.pockets.size())
 	world = BoardWorldFactory.build(board)
+	bonus = BonusMachine.new(board, world, rng_seed)
 	# The world's own tuning: the board's, or the defaults when the board has none.
 	_step_seconds = 1.0 / maxf(world.tuning.fixed_hz, 1.0)
 	_launch_pos = LaunchRail.launch_position(board)
@@ -239,10 +243,13 @@ func stats() -> Dictionary:
 	out["game_payouts"] = ledger.paid - _game_start_paid
 	out["game_shots"] = ledger.shots - _game_start_shots
 	out["accounting_ok"] = accounting_ok()
+	out.merge(bonus.counters())
 	return out
 
 
 func _after_steps(steps: int) -> void:
+	if steps > 0:
+		bonus.advance(steps * _step_seconds)
 	if steps <= 0 or _in_play.is_empty():
 		return
 	_reconcile()
@@ -315,6 +322,10 @@ func _on_ball_pocketed(ball_id: int, pocket_id: int) -> void:
 	if pocket_id >= 0 and pocket_id < level.pockets.size():
 		payout = maxi(level.pockets[pocket_id].payout, 0)
 		at = level.pockets[pocket_id].position
+	elif BonusGeometry.bonus_index(level, pocket_id) >= 0:
+		var index := BonusGeometry.bonus_index(level, pocket_id)
+		payout = bonus.catch(index)
+		at = level.bonus_pockets[index].position
 	ledger.record_win(pocket_id, payout)
 	cup += payout
 	cup_changed.emit(cup)
