@@ -227,7 +227,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 		var owner := level.pin_pocket[i]
 		if owner >= 0 and owner < specials.size() and level.pin_special[i] != 0:
 			specials[owner] += 1
-	if level.pockets.is_empty():
+	if level.pockets.is_empty() and level.bonus_pockets.is_empty():
 		BoardIssue.add_to(
 			issues,
 			WARNING,
