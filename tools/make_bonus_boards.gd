@@ -15,6 +15,7 @@ const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
+const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 
 const CENTER := 350.0
 const ROLE := BonusPocketSpec.Role
@@ -40,6 +41,7 @@ static func make_fever() -> BoardLevel:
 	)
 	_rows(history, level, 13, 34.0, 36.0, 130.0)
 	Originals.erase_pins_outside_field(history, level, 22.0)
+	_clear_reels(history, level)
 	var windmill := {"kind": "circle", "count": 6, "spacing": 16.0}
 	var spot := Vector2(350, 215)
 	Originals.erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), CENTER)
@@ -67,6 +69,7 @@ static func make_hanami() -> BoardLevel:
 	)
 	_rows(history, level, 17, 28.0, 30.0, 120.0)
 	Originals.erase_pins_outside_field(history, level, 22.0)
+	_clear_reels(history, level)
 	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 3})
 	_funnel(history, level, Vector2(265, 450), 13.0)
 	var attacker := {"open_seconds": 10.0, "open_catches": 8}
@@ -144,3 +147,11 @@ static func _save(level: BoardLevel) -> bool:
 	var bonus := level.bonus_pockets.size()
 	print("wrote %s (%d pins, %d bonus pockets)" % [path, level.pins.size(), bonus])
 	return true
+
+
+# No pins under the reels' window, so no ball bounces off a pin hidden behind it.
+static func _clear_reels(history: ActionHistory, level: BoardLevel) -> void:
+	var half := ReelDisplay.HALF + Vector2(6.0, 6.0)
+	Originals.erase_pins_in(
+		history, level, Rect2(ReelDisplay.spot(level) - half, half * 2.0), CENTER
+	)

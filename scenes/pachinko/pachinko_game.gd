@@ -11,6 +11,7 @@ const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
 const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
 const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
+const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -22,6 +23,7 @@ var rules: PachinkoRules
 var _level: BoardLevel
 var _controls := PachinkoInput.new()
 var _stats_refresh := 0.0
+var _bonus_view := BonusView.new()
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -60,6 +62,8 @@ func _ready() -> void:
 			]
 		)
 	)
+	add_child(_bonus_view)
+	_bonus_view.attach(board_view, sounds)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
 	get_viewport().size_changed.connect(_layout)
 	_new_rules()
@@ -119,6 +123,7 @@ func _new_rules() -> void:
 	rules.world.pin_hit.connect(_on_pin_hit)
 	rules.world.ring_hit.connect(_on_ring_hit)
 	board_view.bind(rules)
+	_bonus_view.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
 	cup.set_count(0)

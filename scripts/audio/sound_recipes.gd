@@ -17,6 +17,11 @@ const GOAL_CHIME := &"goal_chime"
 const HOLE_FALL := &"hole_fall"
 const FANFARE := &"fanfare"
 const UI_CLICK := &"ui_click"
+## The bonus layer: a reel landing, the jackpot, a tulip opening, the start pocket's catch.
+const REEL_STOP := &"reel_stop"
+const JACKPOT := &"jackpot"
+const TULIP_OPEN := &"tulip_open"
+const START_CATCH := &"start_catch"
 
 
 ## Every recipe name, in a stable order.
@@ -33,6 +38,10 @@ static func names() -> Array[StringName]:
 		HOLE_FALL,
 		FANFARE,
 		UI_CLICK,
+		REEL_STOP,
+		JACKPOT,
+		TULIP_OPEN,
+		START_CATCH,
 	]
 
 
@@ -63,6 +72,15 @@ static func build(sound: StringName) -> AudioStreamWAV:
 			)
 		UI_CLICK:
 			return Synth.to_stream(Synth.partials(0.05, [_p(2400.0, 1.0, 90.0)]), 0.5)
+		REEL_STOP:
+			return Synth.to_stream(_reel_stop(), 0.7)
+		JACKPOT:
+			var notes: Array[float] = [523.0, 659.0, 784.0, 1047.0, 784.0, 1047.0, 1319.0, 1568.0]
+			return Synth.to_stream(_arpeggio(notes, 0.085), 0.85)
+		TULIP_OPEN:
+			return Synth.to_stream(Synth.sweep(0.16, 520.0, 1180.0, 0.6, 14.0), 0.6)
+		START_CATCH:
+			return Synth.to_stream(_arpeggio([1319.0, 1760.0], 0.05), 0.7)
 	push_error("SoundRecipes: no recipe for sound '%s'" % sound)
 	return null
 
@@ -123,6 +141,13 @@ static func _wall_thud() -> PackedFloat32Array:
 	var knock := Synth.partials(0.12, [_p(140.0, 1.0, 35.0), _p(330.0, 0.45, 50.0)])
 	var tap := Synth.noise(0.03, 0.4, 150.0, 0.7, 21)
 	return Synth.mix([knock, tap])
+
+
+## A reel landing on its symbol: a short knock under a small bell.
+static func _reel_stop() -> PackedFloat32Array:
+	var knock := Synth.partials(0.08, [_p(220.0, 1.0, 45.0), _p(520.0, 0.4, 60.0)])
+	var bell := Synth.partials(0.2, [_p(1568.0, 0.5, 18.0), _p(2350.0, 0.2, 25.0)])
+	return Synth.mix([knock, bell])
 
 
 static func _p(freq: float, amp: float, decay: float) -> PackedFloat32Array:
