@@ -11,7 +11,21 @@ signal selection_changed
 signal tool_changed(tool: int)
 signal settings_changed
 
-enum Tool { SELECT, PIN, PATTERN, POCKET, WALL, HOLE, GOAL, START, HANDLES, ERASE }
+enum Tool {
+	SELECT,
+	PIN,
+	PATTERN,
+	POCKET,
+	WALL,
+	HOLE,
+	GOAL,
+	START,
+	HANDLES,
+	ERASE,
+	START_POCKET,
+	ATTACKER,
+	TULIP
+}
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
@@ -20,7 +34,15 @@ const ActionHistory := preload("res://addons/board_editor/core/action_history.gd
 
 ## Tools that make sense on each kind of board.
 const PACHINKO_TOOLS: Array[int] = [
-	Tool.SELECT, Tool.PIN, Tool.PATTERN, Tool.POCKET, Tool.HANDLES, Tool.ERASE
+	Tool.SELECT,
+	Tool.PIN,
+	Tool.PATTERN,
+	Tool.POCKET,
+	Tool.HANDLES,
+	Tool.ERASE,
+	Tool.START_POCKET,
+	Tool.ATTACKER,
+	Tool.TULIP
 ]
 const MAZE_TOOLS: Array[int] = [
 	Tool.SELECT, Tool.WALL, Tool.HOLE, Tool.GOAL, Tool.START, Tool.HANDLES, Tool.ERASE

@@ -12,6 +12,7 @@ const SelectTool := preload("res://addons/board_editor/tools/select_tool.gd")
 const PlaceTool := preload("res://addons/board_editor/tools/place_tool.gd")
 const PatternTool := preload("res://addons/board_editor/tools/pattern_tool.gd")
 const PocketTool := preload("res://addons/board_editor/tools/pocket_tool.gd")
+const BonusTool := preload("res://addons/board_editor/bonus/bonus_tool.gd")
 const WallTool := preload("res://addons/board_editor/tools/wall_tool.gd")
 const HandlesTool := preload("res://addons/board_editor/tools/handles_tool.gd")
 const EraseTool := preload("res://addons/board_editor/tools/erase_tool.gd")
@@ -39,6 +40,9 @@ func _init(on_session: Session) -> void:
 		Session.Tool.START: PlaceTool.new(session, Items.Kind.START),
 		Session.Tool.HANDLES: HandlesTool.new(session),
 		Session.Tool.ERASE: EraseTool.new(session),
+		Session.Tool.START_POCKET: BonusTool.new(session, BonusPocketSpec.Role.START),
+		Session.Tool.ATTACKER: BonusTool.new(session, BonusPocketSpec.Role.ATTACKER),
+		Session.Tool.TULIP: BonusTool.new(session, BonusPocketSpec.Role.TULIP),
 	}
 
 

@@ -23,6 +23,16 @@ const TOOLS := {
 	[KEY_R, "Handles", "Drag the ring, launch rail and gutter handles, or the goal's radius."],
 	Session.Tool.ERASE:
 	[KEY_E, "Erase", "Click a pin, pocket, wall, hole or start to delete it; drag across many."],
+	Session.Tool.START_POCKET:
+	[
+		KEY_J,
+		"Start pocket",
+		"Click to add a start pocket (spins the reels); click one to remove it."
+	],
+	Session.Tool.ATTACKER:
+	[KEY_A, "Attacker", "Click to add an attacker (opens on a jackpot); click one to remove it."],
+	Session.Tool.TULIP:
+	[KEY_U, "Tulip", "Click to add a tulip (opens after a catch); click one to remove it."],
 }
 ## Toggles.
 const SNAP_KEY := KEY_N
