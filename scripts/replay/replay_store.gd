@@ -63,7 +63,10 @@ static func read_file(path: String) -> Dictionary:
 		return {"error": "%s: the file cannot be read (%s)" % [path, reason]}
 	if file.get_length() > Reader.MAX_BYTES:
 		return {"error": "%s: the file is larger than %d bytes" % [path, Reader.MAX_BYTES]}
-	var read := Reader.read(file.get_as_text())
+	var bytes := file.get_buffer(file.get_length())
+	if bytes.has(0):
+		return {"error": "%s: the file contains a NUL byte; a replay is plain text" % path}
+	var read := Reader.read(bytes.get_string_from_utf8())
 	if read.has("error"):
 		return {"error": "%s: %s" % [path, read["error"]]}
 	return read
