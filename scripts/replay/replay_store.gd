@@ -11,17 +11,21 @@ const DIR := "user://replays"
 ## Where a board is looked for, in order: the shipped boards, then the player's.
 const BOARD_ROOTS: Array[String] = ["res://levels", "user://boards"]
 
+## Where the games keep their replays: DIR, or a test's own folder (so tests never touch
+## the player's replays).
+static var folder := DIR
+
 
 ## The best maze run on a board in a mode: user://replays/maze_<board>_<easy|hard>.replay
 ## (a board id "maze_classic" gives maze_classic_easy.replay).
 static func best_maze_path(board_id: String, hard: bool) -> String:
 	var mode := "hard" if hard else "easy"
-	return "%s/maze_%s_%s.replay" % [DIR, file_safe(board_id, "maze_"), mode]
+	return "%s/maze_%s_%s.replay" % [folder, file_safe(board_id, "maze_"), mode]
 
 
 ## The last pachinko game on a board: user://replays/pachinko_<board>_last.replay.
 static func last_pachinko_path(board_id: String) -> String:
-	return "%s/pachinko_%s_last.replay" % [DIR, file_safe(board_id, "pachinko_")]
+	return "%s/pachinko_%s_last.replay" % [folder, file_safe(board_id, "pachinko_")]
 
 
 ## A board id as a file name part, less `kind_prefix`: letters, digits, - and _ kept,
@@ -38,11 +42,11 @@ static func file_safe(board_id: String, kind_prefix := "") -> String:
 static func save(replay: Replay, path: String) -> Error:
 	if replay == null:
 		return ERR_INVALID_PARAMETER
-	var folder := path.get_base_dir()
-	if not folder.is_empty() and not DirAccess.dir_exists_absolute(folder):
-		var made := DirAccess.make_dir_recursive_absolute(folder)
+	var base := path.get_base_dir()
+	if not base.is_empty() and not DirAccess.dir_exists_absolute(base):
+		var made := DirAccess.make_dir_recursive_absolute(base)
 		if made != OK:
-			push_error("Could not make the folder %s: %s" % [folder, error_string(made)])
+			push_error("Could not make the folder %s: %s" % [base, error_string(made)])
 			return made
 	var file := FileAccess.open(path, FileAccess.WRITE)
 	if file == null:

@@ -42,3 +42,12 @@ static func record_live_maze(level: BoardLevel, hard: bool, frames: int) -> Repl
 		if rules.is_over():
 			break
 	return recorder
+
+
+## Deletes a test's replay folder and the files in it.
+static func remove_folder(folder: String) -> void:
+	if not DirAccess.dir_exists_absolute(folder):
+		return
+	for file_name in DirAccess.get_files_at(folder):
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(folder + "/" + file_name))
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(folder))

@@ -147,6 +147,9 @@ class TestCommand:
 	func before_each() -> void:
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(TEMP))
 
+	func after_all() -> void:
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(TEMP))
+
 	func _recorded() -> Replay:
 		var recorder := ReplayRecorder.new()
 		MazeAutoplay.run(Kit.load_level(MAZE_CLASSIC), 5.0, 1, false, recorder)
