@@ -1,13 +1,14 @@
 extends Node2D
 ## Draws the ghost of the best run: translucent balls at positions in board pixels, with a
-## dashed-looking rim so they read as "not a real ball" without colour. Put it where board
+## dashed rim so they read as "not a real ball" without colour. Put it where board
 ## pixels are its own coordinates (a child of the board drawing, or under a 3D view's 2D
 ## overlay) and call `show_balls` every frame; `clear` hides it.
 
-## Fill and rim of a ghost ball: the seed's ball colour, washed out.
-const FILL := Color(0.94, 0.39, 0.29, 0.28)
-const RIM := Color(1.0, 1.0, 1.0, 0.55)
-const RIM_WIDTH := 1.2
+## Fill and rim of a ghost ball: the seed's ball colour washed out, with a dashed rim in the
+## seed's purple so it reads on the light floor and beside a real ball.
+const FILL := Color(0.94, 0.39, 0.29, 0.38)
+const RIM := Color(0.38, 0.25, 0.46, 0.75)
+const RIM_WIDTH := 1.4
 const RIM_DASHES := 8
 
 var _positions := PackedVector2Array()
