@@ -81,6 +81,18 @@ func test_no_ghost_without_a_best_run_in_that_mode_or_for_a_changed_board() -> v
 	assert_null(GhostRun.load_best(level, false), "the board changed since: no ghost")
 
 
+func test_the_ghost_setting_is_saved_and_read_back() -> void:
+	var path := "user://test_ghost_setting.cfg"
+	var settings := GameSettings.new()
+	assert_true(settings.show_ghost, "on by default")
+	settings.set_value("show_ghost", false)
+	assert_eq(settings.save_file(path), OK)
+	var read := GameSettings.new()
+	assert_eq(read.load_file(path), "", "no problem reported")
+	assert_false(read.show_ghost)
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+
 class TestMazeScreen:
 	extends GutTest
 
