@@ -17,6 +17,8 @@ var _replay := Replay.new()
 ## World step count when the last frame was noted.
 var _noted_steps := 0
 var _recording := false
+## True once the recording grew past what a replay file may hold (ReplayReader's caps).
+var _too_long := false
 
 
 ## Records attempts on `rules` (each from its start until a reset). `rng_seed` is stored
@@ -53,6 +55,11 @@ func note_frame() -> void:
 	if not _recording:
 		return
 	var world := _world()
+	if world.step_count > Reader.MAX_STEPS or _replay.records.size() >= Reader.MAX_LINES - 1:
+		push_warning("ReplayRecorder: the game is too long for a replay; recording stopped")
+		_recording = false
+		_too_long = true
+		return
 	var steps := world.step_count - _noted_steps
 	_noted_steps = world.step_count
 	while steps > 0:
@@ -65,9 +72,10 @@ func note_frame() -> void:
 
 
 ## The replay so far, ended here (the pending frame noted, the state hash taken now). The
-## recorder goes on recording; null before a maze attempt started.
+## recorder goes on recording; null before a maze attempt started or when the game grew
+## too long for a replay file.
 func finish() -> Replay:
-	if _maze == null and _pachinko == null:
+	if (_maze == null and _pachinko == null) or _too_long:
 		return null
 	if _maze != null and _replay.records.is_empty() and not _recording:
 		return null
@@ -120,6 +128,7 @@ func _add_frame(steps: int) -> void:
 
 func _on_maze_started() -> void:
 	_replay.records.clear()
+	_too_long = false
 	_noted_steps = _maze.world.step_count
 	_recording = true
 
@@ -131,9 +140,13 @@ func _on_maze_reset() -> void:
 
 func _on_pachinko_started(_cup: int) -> void:
 	note_frame()
+	if not _recording:
+		return
 	_replay.records.append(["start", _pachinko.world.step_count])
 
 
 func _on_ball_launched(_ball_id: int, power: float, _speed: float) -> void:
 	note_frame()
+	if not _recording:
+		return
 	_replay.records.append(["fire", _pachinko.world.step_count, roundi(power * Replay.HUNDREDTHS)])

@@ -38,7 +38,8 @@ static func file_safe(board_id: String, kind_prefix := "") -> String:
 	return out
 
 
-## Writes `replay` to `path` (its folder made when missing). Returns OK or the file error.
+## Writes `replay` to `path` (its folder made when missing). Returns OK or the file error;
+## a null replay (nothing recorded, or too long) writes nothing.
 static func save(replay: Replay, path: String) -> Error:
 	if replay == null:
 		return ERR_INVALID_PARAMETER

@@ -182,3 +182,18 @@ class TestCommand:
 			str(ReplayStore.find_board(replay).get("error")), "no maze board 'no_such_board'"
 		)
 		assert_eq(ReplayCli.run({"replay": "user://no_such.replay"}), 2)
+
+
+class TestLimits:
+	extends GutTest
+
+	func test_a_game_too_long_for_a_file_stops_recording_and_saves_nothing() -> void:
+		var rules := PachinkoRules.new(Kit.load_level(PACHINKO_CLASSIC), 1)
+		var recorder := ReplayRecorder.new()
+		recorder.attach_pachinko(rules, 1)
+		rules.world.step_count = Reader.MAX_STEPS + 1  # as after hours of play
+		recorder.note_frame()
+		assert_false(recorder.is_recording())
+		assert_null(recorder.finish(), "no replay the reader would refuse")
+		assert_eq(ReplayStore.save(recorder.finish(), "user://never.replay"), ERR_INVALID_PARAMETER)
+		assert_false(FileAccess.file_exists("user://never.replay"))
