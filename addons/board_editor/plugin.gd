@@ -29,6 +29,10 @@ var _focused_issue := -1
 var _unsaved: Array[BoardLevel] = []
 var _refresh_queued := false
 var _visible := false
+# The 2D viewport's control (handed to the overlay drawing): the focus goes back there.
+var _viewport_control: Control
+# A dock field took the keyboard focus: the next viewport press only takes it back.
+var _focus_in_dock := false
 
 
 func _enter_tree() -> void:
@@ -41,6 +45,8 @@ func _enter_tree() -> void:
 	_dock.issue_focused.connect(focus_issue)
 	_dock.new_board_requested.connect(_new_board)
 	_dock.save_as_requested.connect(_save_as_file)
+	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
+	_dock.focus_return_requested.connect(_return_focus)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
 	_attach_tooling_hook()
 
@@ -93,14 +99,20 @@ func _forward_canvas_gui_input(event: InputEvent) -> bool:
 		_edit(_node)  # the board resource was set or swapped in the inspector
 	if _session == null:
 		return false
-	var used := _input.handle(event, _to_screen().affine_inverse())
+	if not _node.is_inside_tree():
+		return false  # the scene's tab is closing or switching (Ctrl+N): nothing to edit
+	var focused := not _focus_in_dock
+	var used := _input.handle(event, _to_screen().affine_inverse(), focused)
+	if not focused and event is InputEventMouseButton:
+		_return_focus()
 	if used or event is InputEventMouseMotion:
 		update_overlays()
 	return used
 
 
 func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
-	if _session == null or not is_instance_valid(_node):
+	_viewport_control = overlay
+	if _session == null or not is_instance_valid(_node) or not _node.is_inside_tree():
 		return
 	BoardOverlay.draw(
 		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
@@ -123,6 +135,11 @@ func get_session() -> Session:
 ## The input router (null when no board is edited); used by the screenshot hook.
 func get_board_input() -> BoardInput:
 	return _input
+
+
+## The problems found on the edited board (a copy; empty when none is edited).
+func get_issues() -> Array[BoardIssue]:
+	return _issues.duplicate()
 
 
 ## Marks problem `index` on the board (with its message) and in the dock's list.
@@ -156,7 +173,7 @@ func _release() -> void:
 	_session = null
 	_input = null
 	_node = null
-	_issues.clear()
+	_issues = []  # a new array: never clear one the board node may share
 	_focused_issue = -1
 	if _toolbar != null:
 		_toolbar.hide()
@@ -179,9 +196,8 @@ func _refresh() -> void:
 	if _session == null:
 		return
 	_session.prune_selection()
-	_issues = (
-		_node.issues() if is_instance_valid(_node) else BoardValidator.validate(_session.level)
-	)
+	# Validated here, every time: a board opened or selected again shows its problems at once.
+	_issues = BoardValidator.validate(_session.level)
 	_focused_issue = mini(_focused_issue, _issues.size() - 1)
 	_dock.show_board(_session, _issues)
 	if is_instance_valid(_node):
@@ -235,6 +251,13 @@ func _save_as_file() -> void:
 	if _session != null:
 		_dock.show_message(BoardFiles.save_as_file(_session.level))
 		_refresh()
+
+
+# Gives the keyboard back to the 2D viewport, so the tool keys work again after a dock field.
+func _return_focus() -> void:
+	_focus_in_dock = false
+	if is_instance_valid(_viewport_control) and _viewport_control.is_inside_tree():
+		_viewport_control.grab_focus()
 
 
 func _to_screen() -> Transform2D:

@@ -131,6 +131,7 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 
 static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	var area := _board_rect(level)
+	_check_goal_fits(level, area, issues)
 	var reach := level.wall_width * 0.5 + level.ball_radius
 	for i in level.ball_starts.size():
 		var s := level.ball_starts[i]
@@ -209,6 +210,27 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 				level.ball_starts[i],
 				"holes_block_goal"
 			)
+
+
+# The centre is on the board (checked above), but the ring can still hang over the edge:
+# then part of the goal is unreachable and it is drawn off the board.
+static func _check_goal_fits(level: BoardLevel, area: Rect2, issues: Array[BoardIssue]) -> void:
+	var c := level.goal_center
+	if area.grow(-level.goal_radius).has_point(c):
+		return
+	(
+		BoardIssue
+		. add_to(
+			issues,
+			WARNING,
+			(
+				"The goal at (%.1f, %.1f) with radius %.1f hangs off the board; move it inwards or shrink it."
+				% [c.x, c.y, level.goal_radius]
+			),
+			c,
+			"goal_off_board"
+		)
+	)
 
 
 static func _board_rect(level: BoardLevel) -> Rect2:

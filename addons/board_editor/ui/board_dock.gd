@@ -7,6 +7,10 @@ signal play_test_requested
 signal issue_focused(index: int)
 signal new_board_requested(kind: int)
 signal save_as_requested
+## A text field in the dock took the keyboard focus.
+signal field_focused
+## A field was submitted (Enter): the keyboard should go back to the viewport.
+signal focus_return_requested
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -67,6 +71,25 @@ func _init() -> void:
 	add_child(_problems)
 	show_board(null, [])
 	show_message("")
+	_watch_fields(self)
+
+
+# Every text field (the spin boxes' too) reports when it takes the focus and hands it
+# back on Enter, so the tool keys work again without a click that would also edit.
+func _watch_fields(node: Node) -> void:
+	for child in node.get_children():
+		_watch_fields(child)
+	var field := (node as SpinBox).get_line_edit() if node is SpinBox else node as LineEdit
+	if field == null:
+		if node is BaseButton:
+			(node as BaseButton).focus_mode = Control.FOCUS_NONE
+		return
+	field.focus_entered.connect(func() -> void: field_focused.emit())
+	field.text_submitted.connect(
+		func(_text: String) -> void:
+			field.release_focus()
+			focus_return_requested.emit()
+	)
 
 
 ## Shows a line of feedback under the buttons ("" hides it).
