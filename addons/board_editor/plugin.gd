@@ -13,6 +13,8 @@ const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
+const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 ## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
 ## this variable naming a script under res://tools/ or res://tests/, the plugin adds it as a
 ## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
@@ -24,6 +26,7 @@ var _session: Session
 var _input: BoardInput
 var _toolbar: BoardToolbar
 var _dock: BoardDock
+var _save_dialog: SaveAsDialog
 var _issues: Array[BoardIssue] = []
 var _focused_issue := -1
 var _unsaved: Array[BoardLevel] = []
@@ -48,6 +51,9 @@ func _enter_tree() -> void:
 	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
 	_dock.focus_return_requested.connect(_return_focus)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
+	_save_dialog = SaveAsDialog.new()
+	_save_dialog.save_confirmed.connect(_save_as_named)
+	EditorInterface.get_base_control().add_child(_save_dialog)
 	_attach_tooling_hook()
 
 
@@ -55,6 +61,7 @@ func _exit_tree() -> void:
 	_release()
 	remove_control_from_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
 	remove_control_from_docks(_dock)
+	_save_dialog.queue_free()
 	_toolbar.queue_free()
 	_dock.queue_free()
 
@@ -249,8 +256,20 @@ func _rebind(node: BoardNode) -> void:
 
 func _save_as_file() -> void:
 	if _session != null:
-		_dock.show_message(BoardFiles.save_as_file(_session.level))
-		_refresh()
+		_save_dialog.open_for(_session.level)
+
+
+## Names the board (one undo step) and writes it to levels/<kind>/<file_id>.board.
+func _save_as_named(file_id: String, display_name: String) -> void:
+	if _session == null:
+		return
+	var level := _session.level
+	var names := {
+		"display_name": display_name, "board_id": BoardFiles.board_id_for(level.kind, file_id)
+	}
+	_session.commit(SetPropertiesAction.new(level, names, "Name board"))
+	_dock.show_message(BoardFiles.save_as_file(level, file_id))
+	_refresh()
 
 
 # Gives the keyboard back to the 2D viewport, so the tool keys work again after a dock field.

@@ -114,6 +114,7 @@ func _check_play_test(level: BoardLevel) -> void:
 	# Never leave a request or a board copy behind for the next real game.
 	DirAccess.remove_absolute(PlaytestRequest.PATH)
 	DirAccess.remove_absolute(copy)
+	DirAccess.remove_absolute(copy + ".uid")
 	level.take_over_path(scratch_path)
 
 

@@ -41,8 +41,11 @@ func _init() -> void:
 	_play.pressed.connect(func() -> void: play_test_requested.emit())
 	add_child(_play)
 	_save_as = Button.new()
-	_save_as.text = "Save board as a level file"
-	_save_as.tooltip_text = "Write the board to levels/<kind>/ so the games and play-test can load it."
+	_save_as.text = "Save board as..."
+	_save_as.tooltip_text = (
+		"Name the board and write it to levels/<kind>/<name>.board,\n"
+		+ "where the games and play-test find it."
+	)
 	_save_as.pressed.connect(func() -> void: save_as_requested.emit())
 	add_child(_save_as)
 	_new_box = HBoxContainer.new()
@@ -105,8 +108,7 @@ func show_board(session: Session, issues: Array[BoardIssue], node_without_board 
 	_play.disabled = not editing
 	_options.visible = editing
 	_new_box.visible = node_without_board
-	var path := session.level.resource_path if editing else ""
-	_save_as.visible = editing and (path.is_empty() or path.contains("::"))
+	_save_as.visible = editing
 	if not editing:
 		_title.text = (
 			"This BoardNode has no board yet: start a new one."
