@@ -13,6 +13,7 @@ const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+const ViewFocus := preload("res://addons/board_editor/ui/view_focus.gd")
 const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 ## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
@@ -149,10 +150,14 @@ func get_issues() -> Array[BoardIssue]:
 	return _issues.duplicate()
 
 
-## Marks problem `index` on the board (with its message) and in the dock's list.
+## Marks problem `index` on the board (with its message) and in the dock's list, and
+## scrolls and zooms the 2D view to it.
 func focus_issue(index: int) -> void:
 	_focused_issue = index
 	_dock.select_issue(index)
+	if index >= 0 and index < _issues.size() and is_instance_valid(_node):
+		if _node.is_inside_tree():
+			ViewFocus.show_point(_node.get_global_transform() * _issues[index].position)
 	update_overlays()
 
 
@@ -206,7 +211,7 @@ func _refresh() -> void:
 	# Validated here, every time: a board opened or selected again shows its problems at once.
 	_issues = BoardValidator.validate(_session.level)
 	_focused_issue = mini(_focused_issue, _issues.size() - 1)
-	_dock.show_board(_session, _issues)
+	_dock.show_board(_session, _issues, false, _focused_issue)
 	if is_instance_valid(_node):
 		_node.update_configuration_warnings()
 		_node.queue_redraw()

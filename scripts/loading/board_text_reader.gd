@@ -185,6 +185,12 @@ static func _build(data: Dictionary) -> BoardLevel:
 		level.walls = _points(walls, ["ax", "ay", "bx", "by"])
 		level.ball_starts = _points(ball_starts, ["x", "y"])
 		level.holes = _points(holes, ["x", "y"])
+	for list: String in ItemIds.LISTS:
+		var ids := PackedInt32Array()
+		for item: Dictionary in data.get(list, []):
+			ids.append(_int_of(item.get("id", 0)))
+		level.set(ItemIds.LISTS[list], ids)
+	ItemIds.fill(level)  # missing or repeated ids get fresh numbers
 	return level
 
 

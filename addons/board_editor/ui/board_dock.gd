@@ -15,12 +15,14 @@ signal focus_return_requested
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
+const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
+const ProblemsList := preload("res://addons/board_editor/ui/problems_list.gd")
 
 var _title: Label
 var _counts: Label
 var _options: ToolOptions
-var _problems_title: Label
-var _problems: ItemList
+var _properties: PropertyPanel
+var _problems: ProblemsList
 var _play: Button
 var _new_box: HBoxContainer
 var _save_as: Button
@@ -61,16 +63,14 @@ func _init() -> void:
 	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
 	add_child(_status)
 	add_child(HSeparator.new())
+	_properties = PropertyPanel.new()
+	add_child(_properties)
+	add_child(HSeparator.new())
 	_options = ToolOptions.new()
 	add_child(_options)
 	add_child(HSeparator.new())
-	_problems_title = Label.new()
-	add_child(_problems_title)
-	_problems = ItemList.new()
-	_problems.custom_minimum_size = Vector2(0, 160)
-	_problems.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	_problems.auto_height = false
-	_problems.item_selected.connect(func(index: int) -> void: issue_focused.emit(index))
+	_problems = ProblemsList.new()
+	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))
 	add_child(_problems)
 	show_board(null, [])
 	show_message("")
@@ -103,10 +103,13 @@ func show_message(text: String) -> void:
 
 ## Shows `session`'s board (null: nothing is being edited) and its problems. With
 ## `node_without_board` the selected BoardNode has no board yet: offer new ones.
-func show_board(session: Session, issues: Array[BoardIssue], node_without_board := false) -> void:
+func show_board(
+	session: Session, issues: Array[BoardIssue], node_without_board := false, focused_issue := -1
+) -> void:
 	var editing := session != null and session.level != null
 	_play.disabled = not editing
 	_options.visible = editing
+	_properties.visible = editing
 	_new_box.visible = node_without_board
 	_save_as.visible = editing
 	if not editing:
@@ -116,8 +119,8 @@ func show_board(session: Session, issues: Array[BoardIssue], node_without_board 
 			else "Select a BoardNode with a board in a scene to edit it here."
 		)
 		_counts.text = ""
-		_problems_title.text = ""
-		_problems.clear()
+		_problems.show_issues([])
+		_problems.visible = false
 		return
 	var level := session.level
 	_title.text = (
@@ -143,50 +146,27 @@ func show_board(session: Session, issues: Array[BoardIssue], node_without_board 
 		]
 	)
 	_options.bind(session)
-	_show_issues(issues)
+	_properties.bind(session)
+	_problems.visible = true
+	_problems.show_issues(issues, focused_issue)
 
 
 ## Updates the tool settings (after a selection or settings change).
 func refresh_options() -> void:
 	_options.refresh()
+	_properties.refresh()
+
+
+## The selection panel (the self-check types into its fields).
+func properties() -> PropertyPanel:
+	return _properties
+
+
+## The problem list.
+func problems() -> ProblemsList:
+	return _problems
 
 
 ## Highlights problem `index` in the list (-1: none).
 func select_issue(index: int) -> void:
-	if index >= 0 and index < _problems.item_count:
-		_problems.select(index)
-	else:
-		_problems.deselect_all()
-
-
-func _show_issues(issues: Array[BoardIssue]) -> void:
-	var errors := 0
-	for issue in issues:
-		errors += 1 if issue.is_error() else 0
-	var selected := _problems.get_selected_items()
-	_problems.clear()
-	if issues.is_empty():
-		_problems_title.text = "No problems found."
-		return
-	_problems_title.text = (
-		"Problems: %d error%s, %d warning%s"
-		% [
-			errors,
-			"" if errors == 1 else "s",
-			issues.size() - errors,
-			"" if issues.size() - errors == 1 else "s",
-		]
-	)
-	var editor_theme := EditorInterface.get_editor_theme() if Engine.is_editor_hint() else null
-	for issue in issues:
-		var icon: Texture2D = null
-		if editor_theme != null:
-			icon = editor_theme.get_icon(
-				"StatusError" if issue.is_error() else "StatusWarning", "EditorIcons"
-			)
-		var index := _problems.add_item(issue.message, icon)
-		_problems.set_item_tooltip(
-			index, "%s at (%.0f, %.0f)" % [issue.kind, issue.position.x, issue.position.y]
-		)
-	if selected.size() == 1 and selected[0] < issues.size():
-		_problems.select(selected[0])
+	_problems.select_issue(index)
