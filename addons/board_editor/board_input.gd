@@ -11,6 +11,7 @@ const BoardTool := preload("res://addons/board_editor/tools/board_tool.gd")
 const SelectTool := preload("res://addons/board_editor/tools/select_tool.gd")
 const PlaceTool := preload("res://addons/board_editor/tools/place_tool.gd")
 const PatternTool := preload("res://addons/board_editor/tools/pattern_tool.gd")
+const CurveTool := preload("res://addons/board_editor/tools/curve_tool.gd")
 const PocketTool := preload("res://addons/board_editor/tools/pocket_tool.gd")
 const WallTool := preload("res://addons/board_editor/tools/wall_tool.gd")
 const HandlesTool := preload("res://addons/board_editor/tools/handles_tool.gd")
@@ -39,6 +40,7 @@ func _init(on_session: Session) -> void:
 		Session.Tool.SELECT: SelectTool.new(session),
 		Session.Tool.PIN: PlaceTool.new(session, Items.Kind.PIN),
 		Session.Tool.PATTERN: PatternTool.new(session),
+		Session.Tool.CURVE: CurveTool.new(session),
 		Session.Tool.POCKET: PocketTool.new(session),
 		Session.Tool.WALL: WallTool.new(session),
 		Session.Tool.HOLE: PlaceTool.new(session, Items.Kind.HOLE),

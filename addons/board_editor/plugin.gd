@@ -13,6 +13,7 @@ const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+const Layers := preload("res://addons/board_editor/core/layers.gd")
 const ViewFocus := preload("res://addons/board_editor/ui/view_focus.gd")
 const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
@@ -182,6 +183,8 @@ func _release() -> void:
 			_input.active_tool().cancel()
 		if _session.level.changed.is_connected(_on_level_changed):
 			_session.level.changed.disconnect(_on_level_changed)
+	if is_instance_valid(_node):
+		_node.editor_hidden_layers = 0
 	_session = null
 	_input = null
 	_node = null
@@ -225,6 +228,9 @@ func _on_selection_changed() -> void:
 
 func _on_settings_changed() -> void:
 	_toolbar.refresh()
+	_dock.refresh_options()
+	if is_instance_valid(_node) and _session != null:
+		_node.editor_hidden_layers = Layers.painter_mask(_session.hidden_layers)
 	update_overlays()
 
 

@@ -70,8 +70,8 @@ static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 		var old_ids: PackedInt32Array = before[id_field]
 		var old_keys := _keys(before[list], list)
 		var new_keys := _keys(level.get(list), list)
-		if old_keys == new_keys:
-			continue
+		if old_keys.size() == new_keys.size():
+			continue  # moved or edited in place: every item is still itself
 		# Items without a stored id had their place as id (see `of`).
 		var had := PackedInt32Array()
 		for i in old_keys.size():

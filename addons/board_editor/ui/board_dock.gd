@@ -17,11 +17,13 @@ const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const ProblemsList := preload("res://addons/board_editor/ui/problems_list.gd")
+const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
 
 var _title: Label
 var _counts: Label
 var _options: ToolOptions
 var _properties: PropertyPanel
+var _layers: LayersPanel
 var _problems: ProblemsList
 var _play: Button
 var _new_box: HBoxContainer
@@ -68,6 +70,8 @@ func _init() -> void:
 	add_child(HSeparator.new())
 	_options = ToolOptions.new()
 	add_child(_options)
+	_layers = LayersPanel.new()
+	add_child(_layers)
 	add_child(HSeparator.new())
 	_problems = ProblemsList.new()
 	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))
@@ -110,6 +114,8 @@ func show_board(
 	_play.disabled = not editing
 	_options.visible = editing
 	_properties.visible = editing
+	_layers.visible = editing
+	_layers.bind(session if editing else null)
 	_new_box.visible = node_without_board
 	_save_as.visible = editing
 	if not editing:
@@ -155,11 +161,17 @@ func show_board(
 func refresh_options() -> void:
 	_options.refresh()
 	_properties.refresh()
+	_layers.refresh()
 
 
 ## The selection panel (the self-check types into its fields).
 func properties() -> PropertyPanel:
 	return _properties
+
+
+## The layers panel.
+func layers() -> LayersPanel:
+	return _layers
 
 
 ## The problem list.

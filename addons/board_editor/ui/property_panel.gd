@@ -7,11 +7,24 @@ const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
+const Arrange := preload("res://addons/board_editor/core/arrange.gd")
+const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
+
+## Align buttons: [label, Arrange mode, tooltip].
+const ALIGN_BUTTONS := [
+	["Left", "left", "Line the selected items up on the leftmost one."],
+	["Centre", "center_x", "Line them up on a vertical line through their middle."],
+	["Right", "right", "Line them up on the rightmost one."],
+	["Top", "top", "Line them up on the topmost one."],
+	["Middle", "center_y", "Line them up on a horizontal line through their middle."],
+	["Bottom", "bottom", "Line them up on the lowest one."],
+]
 
 var _session: Session
 var _title: Label
 var _rows: Dictionary[String, HBoxContainer] = {}
 var _fields: Dictionary[String, SpinBox] = {}
+var _arrange: HFlowContainer
 
 
 func _init() -> void:
@@ -39,6 +52,35 @@ func _init() -> void:
 		add_child(row)
 		_rows[key] = row
 		_fields[key] = spin
+	_arrange = HFlowContainer.new()
+	add_child(_arrange)
+	for entry: Array in ALIGN_BUTTONS:
+		_arrange_button("Align " + str(entry[0]), entry[2], align.bind(str(entry[1])))
+	_arrange_button("Space across", "Space them evenly from left to right.", distribute.bind("x"))
+	_arrange_button("Space down", "Space them evenly from top to bottom.", distribute.bind("y"))
+
+
+## Lines the selection up (Arrange.ALIGN_MODES); one undo step.
+func align(mode: String) -> void:
+	var offsets := Arrange.align_offsets(_session.level, _session.selection, mode)
+	if not offsets.is_empty():
+		_session.commit(ArrangeAction.new(_session.level, offsets, "Align %s" % mode))
+
+
+## Spaces the selection evenly along "x" or "y"; one undo step.
+func distribute(axis: String) -> void:
+	var offsets := Arrange.distribute_offsets(_session.level, _session.selection, axis)
+	if not offsets.is_empty():
+		_session.commit(ArrangeAction.new(_session.level, offsets, "Distribute along %s" % axis))
+
+
+func _arrange_button(text: String, tooltip: String, action: Callable) -> void:
+	var button := Button.new()
+	button.text = text
+	button.tooltip_text = tooltip
+	button.focus_mode = Control.FOCUS_NONE
+	button.pressed.connect(func() -> void: action.call())
+	_arrange.add_child(button)
 
 
 ## Shows `session`'s selection and edits it from now on.
@@ -64,7 +106,8 @@ func refresh() -> void:
 	elif _session.selection.is_empty():
 		_title.text = "Nothing selected: click an item with the Select tool (Q)."
 	else:
-		_title.text = "%d items selected." % _session.selection.size()
+		_title.text = "%d items selected: align or space them." % _session.selection.size()
+	_arrange.visible = _session != null and _session.selection.size() >= 2
 	for key: String in _rows:
 		_rows[key].visible = values.has(key)
 		if values.has(key):

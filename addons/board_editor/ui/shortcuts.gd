@@ -16,6 +16,12 @@ const TOOLS := {
 	Session.Tool.PIN: [KEY_P, "Pin", "Click to place a pin."],
 	Session.Tool.PATTERN:
 	[KEY_T, "Pattern", "Click to stamp a row, lattice, arc or circle of pins (set in the dock)."],
+	Session.Tool.CURVE:
+	[
+		KEY_C,
+		"Peg curve",
+		"Drag a curve: pins follow it, a set count end to end or one every spacing (dock)."
+	],
 	Session.Tool.POCKET:
 	[KEY_K, "Pocket", "Click to add a pocket: rim pins and special pin, sized in the dock."],
 	Session.Tool.WALL: [KEY_L, "Wall", "Click-drag a wall; snapped to the maze grid or free."],

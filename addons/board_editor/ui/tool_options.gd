@@ -11,6 +11,7 @@ var _session: Session
 var _kind: OptionButton
 var _fields: Dictionary[String, SpinBox] = {}
 var _pattern_box: VBoxContainer
+var _curve_box: VBoxContainer
 var _pocket_box: VBoxContainer
 
 
@@ -25,6 +26,9 @@ func _init() -> void:
 	_add_field(_pattern_box, "spacing", "Spacing (px)", 2, 200, 0.5)
 	_add_field(_pattern_box, "rows", "Rows (lattice)", 1, 40, 1)
 	_add_field(_pattern_box, "radius", "Radius (arc, px)", 5, 600, 1)
+	_curve_box = _section("Peg curve (C)")
+	_add_field(_curve_box, "curve_count", "Pins (0: by spacing)", 0, 200, 1)
+	_add_field(_curve_box, "curve_spacing", "Spacing (px)", 4, 200, 0.5)
 	_pocket_box = _section("Next pocket placed")
 	_add_field(_pocket_box, "width", "Width (px)", 4, 200, 1)
 	_add_field(_pocket_box, "depth", "Depth (px)", 4, 200, 1)
@@ -43,6 +47,9 @@ func refresh() -> void:
 		return
 	var pachinko := _session.level.is_pachinko()
 	_pattern_box.visible = pachinko
+	_curve_box.visible = pachinko
+	_fields["curve_count"].set_value_no_signal(float(_session.curve["count"]))
+	_fields["curve_spacing"].set_value_no_signal(float(_session.curve["spacing"]))
 	_pocket_box.visible = pachinko
 	_kind.select(maxi(PatternAction.KINDS.find(str(_session.pattern["kind"])), 0))
 	for key: String in ["count", "spacing", "rows", "radius"]:
@@ -88,6 +95,11 @@ func _on_pattern_changed(index: int) -> void:
 
 func _on_field_changed(value: float, key: String) -> void:
 	if _session == null:
+		return
+	if key.begins_with("curve_"):
+		var setting := key.trim_prefix("curve_")
+		_session.curve[setting] = int(value) if setting == "count" else value
+		_session.settings_changed.emit()
 		return
 	if _session.pattern.has(key):
 		if key in ["count", "rows"]:
