@@ -65,13 +65,23 @@ func _init() -> void:
 	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
 	add_child(_status)
 	add_child(HSeparator.new())
+	# The panels scroll on their own, so the problem list below always keeps its room.
+	var scroll := ScrollContainer.new()
+	scroll.size_flags_vertical = Control.SIZE_EXPAND_FILL
+	scroll.size_flags_stretch_ratio = 1.5
+	scroll.custom_minimum_size = Vector2(0, 260)
+	scroll.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
+	add_child(scroll)
+	var panels := VBoxContainer.new()
+	panels.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+	scroll.add_child(panels)
 	_properties = PropertyPanel.new()
-	add_child(_properties)
-	add_child(HSeparator.new())
+	panels.add_child(_properties)
+	panels.add_child(HSeparator.new())
 	_options = ToolOptions.new()
-	add_child(_options)
+	panels.add_child(_options)
 	_layers = LayersPanel.new()
-	add_child(_layers)
+	panels.add_child(_layers)
 	add_child(HSeparator.new())
 	_problems = ProblemsList.new()
 	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))

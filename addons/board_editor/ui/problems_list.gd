@@ -8,7 +8,7 @@ extends VBoxContainer
 signal issue_focused(index: int)
 
 ## The list is at least this tall (px), and grows with the dock.
-const MIN_HEIGHT := 240.0
+const MIN_HEIGHT := 150.0
 
 var _title: Label
 var _rows: VBoxContainer
