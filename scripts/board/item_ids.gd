@@ -23,12 +23,13 @@ static func count(level: BoardLevel, list: String) -> int:
 	if list == "pockets":
 		return level.pockets.size()
 	var points: PackedVector2Array = level.get(list)
+	@warning_ignore("integer_division")  # whole walls only
 	return points.size() / 2 if list == "walls" else points.size()
 
 
 ## The id of item `index` of `list` (its place, 1-based, if the board has no id for it).
 static func of(level: BoardLevel, list: String, index: int) -> int:
-	var ids: PackedInt32Array = level.get(LISTS[list])
+	var ids := ids_of(level, list)
 	return ids[index] if index < ids.size() and ids[index] > 0 else index + 1
 
 
@@ -40,10 +41,17 @@ static func index_of(level: BoardLevel, list: String, id: int) -> int:
 	return -1
 
 
+## The stored ids of `list` (may be shorter than the list; see `of`).
+static func ids_of(level: BoardLevel, list: String) -> PackedInt32Array:
+	var id_field: String = LISTS[list]
+	var ids: PackedInt32Array = level.get(id_field)
+	return ids
+
+
 ## Makes every id array match its list: missing, zero or repeated ids get fresh numbers.
 static func fill(level: BoardLevel) -> void:
 	for list: String in LISTS:
-		var ids: PackedInt32Array = (level.get(LISTS[list]) as PackedInt32Array).duplicate()
+		var ids := ids_of(level, list).duplicate()
 		var total := count(level, list)
 		ids.resize(total)
 		var seen := {}
@@ -55,8 +63,9 @@ static func fill(level: BoardLevel) -> void:
 				fresh += 1
 				changed = true
 			seen[ids[i]] = true
-		if changed or ids.size() != (level.get(LISTS[list]) as PackedInt32Array).size():
-			level.set(LISTS[list], ids)
+		if changed or ids.size() != ids_of(level, list).size():
+			var id_field: String = LISTS[list]
+			level.set(id_field, ids)
 
 
 ## After an edit changed a list's length: items still at a position they had `before` (a
@@ -78,13 +87,15 @@ static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 			had.append(old_ids[i] if i < old_ids.size() and old_ids[i] > 0 else i + 1)
 		var free := {}
 		for i in old_keys.size():
-			(free.get_or_add(old_keys[i], []) as Array).append(had[i])
+			var waiting: Array = free.get_or_add(old_keys[i], [])
+			waiting.append(had[i])
 		var ids := PackedInt32Array()
 		var fresh := _largest(had) + 1
 		for key: Variant in new_keys:
 			var waiting: Array = free.get(key, [])
 			if not waiting.is_empty():
-				ids.append(int(waiting.pop_front()))
+				var kept: int = waiting.pop_front()
+				ids.append(kept)
 			else:
 				ids.append(fresh)
 				fresh += 1
@@ -95,13 +106,21 @@ static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 static func _keys(items: Variant, list: String) -> Array:
 	var keys: Array = []
 	if list == "pockets":
-		for entry: Variant in items:
-			keys.append((entry as Array)[0] if entry is Array else entry)
+		var entries: Array = items
+		for entry: Variant in entries:
+			if entry is Array:
+				var captured: Array = entry
+				keys.append(captured[0])
+			else:
+				keys.append(entry)
 		return keys
 	var points: PackedVector2Array = items
 	var step := 2 if list == "walls" else 1
 	for i in range(0, points.size() - step + 1, step):
-		keys.append(points[i] if step == 1 else [points[i], points[i + 1]])
+		if step == 1:
+			keys.append(points[i])
+		else:
+			keys.append([points[i], points[i + 1]])
 	return keys
 
 

@@ -189,7 +189,8 @@ static func _build(data: Dictionary) -> BoardLevel:
 		var ids := PackedInt32Array()
 		for item: Dictionary in data.get(list, []):
 			ids.append(_int_of(item.get("id", 0)))
-		level.set(ItemIds.LISTS[list], ids)
+		var id_field: String = ItemIds.LISTS[list]
+		level.set(id_field, ids)
 	ItemIds.fill(level)  # missing or repeated ids get fresh numbers
 	return level
 

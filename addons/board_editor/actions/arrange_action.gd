@@ -26,5 +26,6 @@ func _touched_fields() -> PackedStringArray:
 
 func _apply() -> void:
 	for item: Vector2i in _offsets:
-		var move := MoveItemsAction.new(level, [item] as Array[Vector2i], _offsets[item])
+		var offset: Vector2 = _offsets[item]
+		var move := MoveItemsAction.new(level, [item] as Array[Vector2i], offset)
 		move.do()

@@ -28,7 +28,8 @@ func do() -> void:
 	var fields := _touched_fields()
 	for list: String in ItemIds.LISTS:
 		if fields.has(list):
-			fields.append(ItemIds.LISTS[list])
+			var id_field: String = ItemIds.LISTS[list]
+			fields.append(id_field)
 	_before = Snapshot.capture(level, fields)
 	_apply()
 	# Items that survived the edit keep their ids; new ones get fresh ids (undo puts the

@@ -35,7 +35,8 @@ func _apply() -> void:
 	if not POINT_FIELDS.has(_field):
 		push_error("Set position: '%s' is not a point list of the board." % _field)
 		return
-	var points: PackedVector2Array = (level.get(_field) as PackedVector2Array).duplicate()
+	var current: PackedVector2Array = level.get(_field)
+	var points := current.duplicate()
 	if _index < 0 or _index >= points.size():
 		push_error("Set position: %s has no point %d." % [_field, _index])
 		return

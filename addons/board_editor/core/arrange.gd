@@ -55,7 +55,8 @@ static func distribute_offsets(
 	for k in order.size():
 		var item: Vector2i = order[k]
 		var offset := Vector2.ZERO
-		offset[along] = first + step * k - float(points[item][along])
+		var at: Vector2 = points[item]
+		offset[along] = first + step * k - at[along]
 		if not offset.is_zero_approx():
 			offsets[item] = offset
 	return offsets

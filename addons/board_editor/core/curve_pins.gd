@@ -24,7 +24,7 @@ static func along(path: PackedVector2Array, count: int, spacing: float) -> Packe
 		pins.append(path[0])
 		return pins
 	var step := total / float(count - 1) if count > 1 else maxf(spacing, 1.0)
-	var wanted := count if count > 1 else int(floor(total / step + 1e-6)) + 1
+	var wanted := count if count > 1 else int(floorf(total / step + 1e-6)) + 1
 	var segment := 1
 	var walked := 0.0  # length of the path before `segment`
 	for k in wanted:

@@ -20,7 +20,8 @@ static func name_of(level: BoardLevel, item: Vector2i) -> String:
 	if not KINDS.has(item.x):
 		return "Goal"
 	var entry: Array = KINDS[item.x]
-	return "%s %d" % [entry[0], ItemIds.of(level, entry[1], item.y)]
+	var list: String = entry[1]
+	return "%s %d" % [entry[0], ItemIds.of(level, list, item.y)]
 
 
 ## "Pin 143 at (255, 84)": the property panel's heading.

@@ -55,7 +55,8 @@ static func values_of(level: BoardLevel, item: Vector2i) -> Dictionary:
 ## The action that sets field `key` of `item` to `value`, or null when nothing changes.
 static func action_for(level: BoardLevel, item: Vector2i, key: String, value: float) -> BoardAction:
 	var now := values_of(level, item)
-	if not now.has(key) or is_equal_approx(float(now[key]), value):
+	var current: float = now.get(key, NAN)
+	if not now.has(key) or is_equal_approx(current, value):
 		return null
 	var at := Items.position_of(level, item)
 	var target := Vector2(value, at.y) if key == "x" else Vector2(at.x, value)

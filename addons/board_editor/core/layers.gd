@@ -23,7 +23,9 @@ const LAYERS := {
 static func for_kind(kind: int) -> Array[String]:
 	var names: Array[String] = []
 	for layer: String in LAYERS:
-		if int(LAYERS[layer][2]) == kind:
+		var entry: Array = LAYERS[layer]
+		var board_kind: int = entry[2]
+		if board_kind == kind:
 			names.append(layer)
 	return names
 
@@ -31,7 +33,9 @@ static func for_kind(kind: int) -> Array[String]:
 ## The layer an item belongs to ("" for none).
 static func of_item(item: Vector2i) -> String:
 	for layer: String in LAYERS:
-		if int(LAYERS[layer][0]) == item.x:
+		var entry: Array = LAYERS[layer]
+		var item_kind: int = entry[0]
+		if item_kind == item.x:
 			return layer
 	return ""
 
@@ -40,5 +44,7 @@ static func of_item(item: Vector2i) -> String:
 static func painter_mask(hidden: Array[String]) -> int:
 	var mask := 0
 	for layer in hidden:
-		mask |= int(LAYERS.get(layer, [-1, 0])[1])
+		var entry: Array = LAYERS.get(layer, [-1, 0])
+		var flags: int = entry[1]
+		mask |= flags
 	return mask

@@ -54,7 +54,9 @@ func cancel() -> bool:
 
 ## The pins a drawn `path` gives with the session's curve settings.
 func pins_for(path: PackedVector2Array) -> PackedVector2Array:
-	return CurvePins.along(path, int(session.curve["count"]), float(session.curve["spacing"]))
+	var count: int = session.curve["count"]
+	var spacing: float = session.curve["spacing"]
+	return CurvePins.along(path, count, spacing)
 
 
 func draw(canvas: Control, to_screen: Transform2D) -> void:

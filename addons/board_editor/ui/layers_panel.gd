@@ -58,8 +58,8 @@ func refresh() -> void:
 
 
 ## Hides (or shows) a layer, as the Show box does.
-func set_hidden(layer: String, hidden: bool) -> void:
-	_session.set_layer(layer, hidden, _session.locked_layers.has(layer))
+func set_hidden(layer: String, hide_layer: bool) -> void:
+	_session.set_layer(layer, hide_layer, _session.locked_layers.has(layer))
 
 
 func _box(text: String, tooltip: String, layer: String) -> CheckBox:

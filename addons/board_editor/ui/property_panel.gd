@@ -55,7 +55,8 @@ func _init() -> void:
 	_arrange = HFlowContainer.new()
 	add_child(_arrange)
 	for entry: Array in ALIGN_BUTTONS:
-		_arrange_button("Align " + str(entry[0]), entry[2], align.bind(str(entry[1])))
+		var tip: String = entry[2]
+		_arrange_button("Align " + str(entry[0]), tip, align.bind(str(entry[1])))
 	_arrange_button("Space across", "Space them evenly from left to right.", distribute.bind("x"))
 	_arrange_button("Space down", "Space them evenly from top to bottom.", distribute.bind("y"))
 
@@ -111,7 +112,8 @@ func refresh() -> void:
 	for key: String in _rows:
 		_rows[key].visible = values.has(key)
 		if values.has(key):
-			_fields[key].set_value_no_signal(float(values[key]))
+			var value: float = values[key]
+			_fields[key].set_value_no_signal(value)
 
 
 func _on_value_changed(value: float, key: String) -> void:

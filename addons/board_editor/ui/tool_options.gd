@@ -48,8 +48,10 @@ func refresh() -> void:
 	var pachinko := _session.level.is_pachinko()
 	_pattern_box.visible = pachinko
 	_curve_box.visible = pachinko
-	_fields["curve_count"].set_value_no_signal(float(_session.curve["count"]))
-	_fields["curve_spacing"].set_value_no_signal(float(_session.curve["spacing"]))
+	var curve_count: int = _session.curve["count"]
+	var curve_spacing: float = _session.curve["spacing"]
+	_fields["curve_count"].set_value_no_signal(curve_count)
+	_fields["curve_spacing"].set_value_no_signal(curve_spacing)
 	_pocket_box.visible = pachinko
 	_kind.select(maxi(PatternAction.KINDS.find(str(_session.pattern["kind"])), 0))
 	for key: String in ["count", "spacing", "rows", "radius"]:
@@ -98,7 +100,10 @@ func _on_field_changed(value: float, key: String) -> void:
 		return
 	if key.begins_with("curve_"):
 		var setting := key.trim_prefix("curve_")
-		_session.curve[setting] = int(value) if setting == "count" else value
+		if setting == "count":
+			_session.curve[setting] = int(value)
+		else:
+			_session.curve[setting] = value
 		_session.settings_changed.emit()
 		return
 	if _session.pattern.has(key):
