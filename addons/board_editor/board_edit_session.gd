@@ -11,16 +11,17 @@ signal selection_changed
 signal tool_changed(tool: int)
 signal settings_changed
 
-enum Tool { SELECT, PIN, PATTERN, POCKET, WALL, HOLE, GOAL, START, HANDLES, ERASE }
+enum Tool { SELECT, PIN, PATTERN, POCKET, WALL, HOLE, GOAL, START, HANDLES, ERASE, CURVE }
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const Snapping := preload("res://addons/board_editor/core/snapping.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
+const Layers := preload("res://addons/board_editor/core/layers.gd")
 
 ## Tools that make sense on each kind of board.
 const PACHINKO_TOOLS: Array[int] = [
-	Tool.SELECT, Tool.PIN, Tool.PATTERN, Tool.POCKET, Tool.HANDLES, Tool.ERASE
+	Tool.SELECT, Tool.PIN, Tool.PATTERN, Tool.CURVE, Tool.POCKET, Tool.HANDLES, Tool.ERASE
 ]
 const MAZE_TOOLS: Array[int] = [
 	Tool.SELECT, Tool.WALL, Tool.HOLE, Tool.GOAL, Tool.START, Tool.HANDLES, Tool.ERASE
@@ -43,10 +44,15 @@ var mirror_enabled := false
 var pattern := {
 	"kind": "row", "count": 7, "spacing": 30.0, "rows": 4, "radius": 120.0, "arc_deg": 120.0
 }
+## Peg line along a drawn curve: `count` pins end to end, or (count 0) one every `spacing` px.
+var curve := {"count": 20, "spacing": 24.0}
 ## Settings for new pockets.
 var pocket_width := 32.0
 var pocket_depth := 24.0
 var pocket_payout := 10
+## Layers (Layers.LAYERS names) the designer hid or locked.
+var hidden_layers: Array[String] = []
+var locked_layers: Array[String] = []
 ## The last copied items, relative to their centre.
 var clipboard := {}
 ## Receives `(action, already_applied)`; a plain history unless the plugin sets its own.
@@ -109,6 +115,29 @@ func set_snap(enabled: bool) -> void:
 func set_mirror(enabled: bool) -> void:
 	mirror_enabled = enabled
 	settings_changed.emit()
+
+
+## Hides or shows, locks or unlocks a layer; its items leave the selection.
+func set_layer(layer: String, hidden: bool, locked: bool) -> void:
+	for state: Array in [[hidden_layers, hidden], [locked_layers, locked]]:
+		var names: Array[String] = state[0]
+		if state[1] and not names.has(layer):
+			names.append(layer)
+		elif not state[1]:
+			names.erase(layer)
+	var kept: Array[Vector2i] = []
+	for item in selection:
+		if can_pick(item):
+			kept.append(item)
+	if kept != selection:
+		select(kept)
+	settings_changed.emit()
+
+
+## False for an item on a hidden or locked layer: tools cannot pick, move or erase it.
+func can_pick(item: Vector2i) -> bool:
+	var layer := Layers.of_item(item)
+	return not (hidden_layers.has(layer) or locked_layers.has(layer))
 
 
 ## Switches tool (ignores tools the board's kind has no use for).

@@ -64,9 +64,14 @@ const LISTS := {
 	"ball_starts": [64, {"x": ["coord"], "y": ["coord"]}],
 	"holes": [500, {"x": ["coord"], "y": ["coord"]}],
 }
-## Fields an item may leave out: a pin's pocket (-1 = a field pin) and its special flag.
+## Fields an item may leave out: its stable id (ItemIds; numbered in order when missing),
+## a pin's pocket (-1 = a field pin) and its special flag.
 const OPTIONAL_ITEM_FIELDS := {
-	"pins": {"pocket": ["int", 0, 199], "special": ["bool"]},
+	"pins": {"id": ["int", 1, ItemIds.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]},
+	"pockets": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"walls": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"ball_starts": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"holes": {"id": ["int", 1, ItemIds.MAX_ID]},
 }
 ## The key an item line uses for each list: `{"pin": {"x": 1, "y": 2}}` goes to "pins".
 const ITEM_KEYS := {

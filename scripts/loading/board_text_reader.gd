@@ -185,6 +185,13 @@ static func _build(data: Dictionary) -> BoardLevel:
 		level.walls = _points(walls, ["ax", "ay", "bx", "by"])
 		level.ball_starts = _points(ball_starts, ["x", "y"])
 		level.holes = _points(holes, ["x", "y"])
+	for list: String in ItemIds.LISTS:
+		var ids := PackedInt32Array()
+		for item: Dictionary in data.get(list, []):
+			ids.append(_int_of(item.get("id", 0)))
+		var id_field: String = ItemIds.LISTS[list]
+		level.set(id_field, ids)
+	ItemIds.fill(level)  # missing or repeated ids get fresh numbers
 	return level
 
 
