@@ -22,6 +22,7 @@ const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
+const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
 
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.
@@ -98,6 +99,10 @@ var _friction_dt := Vector2.ZERO
 var _has_friction := false
 var _dt := 0.0
 var _max_speed := 0.0
+## True when friction or the cap follow the seed's options (see PhysicsTuning).
+var _friction_against_gravity := false
+var _cap_per_axis := false
+var _caps_glance := false
 var _pin_e := 0.0
 var _wall_e := 0.0
 var _keep_tangent := 1.0
@@ -149,6 +154,9 @@ func begin(
 	_has_friction = _friction_dt != Vector2.ZERO
 	_dt = dt
 	_max_speed = t.max_speed
+	_friction_against_gravity = t.friction_against == PhysicsTuning.FrictionAgainst.GRAVITY
+	_cap_per_axis = t.speed_cap == PhysicsTuning.SpeedCap.PER_AXIS
+	_caps_glance = t.wall_cap_contact == PhysicsTuning.CapContact.GLANCE
 	_pin_e = t.restitution
 	_wall_e = t.wall_restitution
 	_keep_tangent = t.tangent_friction
@@ -237,12 +245,19 @@ func _move_ball(i: int) -> void:
 	_cur_b = ContactId.NONE
 	_n_a = Vector2.ZERO
 	_n_b = Vector2.ZERO
-	if _has_friction:
-		# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
-		_v -= _v.clamp(-_friction_dt, _friction_dt)
-	var speed2: float = _v.length_squared()
-	if speed2 > _max_speed * _max_speed:
-		_v *= _max_speed / sqrt(speed2)
+	if _friction_against_gravity or _cap_per_axis:
+		if _friction_against_gravity:
+			_v = SpeedRules.friction_against_gravity(_v, _gravity * _dt, _friction_dt)
+		elif _has_friction:
+			_v -= _v.clamp(-_friction_dt, _friction_dt)
+		_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+	else:
+		if _has_friction:
+			# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
+			_v -= _v.clamp(-_friction_dt, _friction_dt)
+		var speed2: float = _v.length_squared()
+		if speed2 > _max_speed * _max_speed:
+			_v *= _max_speed / sqrt(speed2)
 	if _rad[i] != _r:
 		_set_radius(_rad[i])
 	# Substeps: each moves at most the safe travel (velocity plus the ball-ball push, the
@@ -434,6 +449,8 @@ func respond(
 	var vn: float = _v.dot(nrm)
 	if vn >= 0.0:
 		return false  # already leaving: no bounce, and it presses on nothing
+	if surface == Surface.WALL_CAP and _caps_glance:
+		return _glance(id, nrm, vn, index)
 	var inside: bool = surface == Surface.RING
 	var side: float = -1.0 if inside else 1.0
 	var bounced := false
@@ -462,6 +479,25 @@ func respond(
 		_cur_b = id
 		_n_b = nrm
 	return bounced
+
+
+## A wall cap under CapContact.GLANCE: the ball keeps only its speed along the cap's
+## tangent (no bounce, and no turning to follow the curve), so it stops dead head-on and
+## otherwise leaves the cap along the tangent. A new contact faster than the bounce
+## threshold still queues a hit. Returns true on such a hit.
+func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
+	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
+	var hit: bool = not held and -vn > _threshold
+	if hit:
+		_queue(BallEvents.Kind.WALL_HIT, index, -vn)
+	_v -= nrm * vn
+	if _cur_a == ContactId.NONE or _cur_a == id:
+		_cur_a = id
+		_n_a = nrm
+	else:
+		_cur_b = id
+		_n_b = nrm
+	return hit
 
 
 ## Rest time and sleep of a ball that just moved slower than the rest speed.

@@ -101,7 +101,7 @@ var _woken_at_step := 0
 
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
-	tuning = p_tuning if p_tuning != null else PhysicsTuning.pachinko_defaults()
+	tuning = p_tuning if p_tuning != null else PhysicsTuning.new()
 	_lanes.threads = threads
 	gravity = tuning.gravity
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)

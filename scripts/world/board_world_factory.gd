@@ -23,11 +23,11 @@ static func build(level: BoardLevel, hard_mode: bool = false) -> BallWorld:
 	return world
 
 
-## The level's tuning, or the physics defaults for its kind when it has none.
+## The level's tuning, or its game's preset (TuningPresets) when it has none.
 static func tuning_for(level: BoardLevel) -> PhysicsTuning:
 	if level.tuning != null:
 		return level.tuning
-	return PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
+	return TuningPresets.for_kind(level.is_maze())
 
 
 static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:

@@ -23,7 +23,7 @@ func _energy(w: BallWorld) -> float:
 
 
 func test_ball_rides_the_ring_over_the_top_without_gaining_or_losing() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.min_horizontal_speed = 0.0
 	t.fixed_hz = 240.0
 	var w := _world(t)
@@ -51,7 +51,7 @@ func test_ball_rides_the_ring_over_the_top_without_gaining_or_losing() -> void:
 
 
 func test_weak_shot_rolls_back_down() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	var w := _world(t)
 	var lim := RING_R - BALL_R
 	var id := w.spawn_ball(CENTER + Vector2(0, lim), Vector2(600, 0), BALL_R)
@@ -64,7 +64,7 @@ func test_weak_shot_rolls_back_down() -> void:
 
 
 func test_gutter_drains_after_its_bounces_exactly_once() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	var w := _world(t)
 	w.set_gutter(45.0, 135.0, 3)
 	var drained: Array = []
@@ -80,7 +80,7 @@ func test_gutter_drains_after_its_bounces_exactly_once() -> void:
 
 
 func test_ball_resting_in_the_gutter_still_drains() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	var w := _world(t)
 	w.set_gutter(45.0, 135.0, 50)
 	var drained := [0]
@@ -92,7 +92,7 @@ func test_ball_resting_in_the_gutter_still_drains() -> void:
 
 
 func test_no_ball_leaves_the_ring_in_a_long_random_run() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.max_speed = 4000.0
 	var w := _world(t)
 	var rng := RandomNumberGenerator.new()
@@ -117,7 +117,7 @@ func test_no_ball_leaves_the_ring_in_a_long_random_run() -> void:
 
 
 func test_energy_never_grows_in_a_busy_board() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.min_horizontal_speed = 0.0
 	var w := _world(t)
 	for y: int in range(150, 850, 24):
