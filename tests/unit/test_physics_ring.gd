@@ -138,3 +138,29 @@ func test_energy_never_grows_in_a_busy_board() -> void:
 			# Per-ball slack of 1 px²/s² for float error.
 			assert_lt(e, e_prev + w.ball_count() * 1.0, "energy at step %d" % s)
 			e_prev = e
+
+
+func test_a_drain_arc_drains_a_resting_ball_after_its_own_slide_time() -> void:
+	for slide_time: float in [0.25, 1.0]:
+		var w := _world(TuningPresets.pachinko())
+		w.set_drain_arc(45.0, 135.0, 50, slide_time)
+		var drained_at := [-1]
+		w.ball_drained.connect(func(_b: int) -> void: drained_at[0] = w.step_count)
+		w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)
+		for _i: int in 240:
+			w.step(1.0 / 120.0)
+		assert_gt(drained_at[0], 0, "drained (slide time %s)" % slide_time)
+		assert_lte(drained_at[0] / 120.0, slide_time + 0.1, "not later than its slide time")
+		assert_gte(drained_at[0] / 120.0, slide_time - 0.1, "not sooner")
+
+
+func test_a_drain_arc_with_bad_numbers_is_refused() -> void:
+	var w := _world(TuningPresets.pachinko())
+	w.set_drain_arc(45.0, NAN, 3, 0.5)
+	w.set_drain_arc(45.0, 135.0, 0, 0.5)
+	w.set_drain_arc(45.0, 135.0, 3, -1.0)
+	assert_push_error_count(3, "each bad call names its problem")
+	w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)
+	for _i: int in 120:
+		w.step(1.0 / 120.0)
+	assert_eq(w.ball_count(), 1, "no arc was set, so nothing drains")
