@@ -101,6 +101,9 @@ const TUNING_RANGES := {
 	"rest_speed": [0.0, 10000.0],
 	"sleep_time": [0.0, 60.0],
 	"gutter_slide_time": [0.0, 60.0],
+	"speed_cap": [0, 1],  # PhysicsTuning.SpeedCap
+	"friction_against": [0, 1],  # PhysicsTuning.FrictionAgainst
+	"wall_cap_contact": [0, 1],  # PhysicsTuning.CapContact
 }
 ## A tuning field with no range of its own above gets this one.
 const TUNING_DEFAULT_RANGE := [-1000000.0, 1000000.0]

@@ -208,9 +208,7 @@ static func _value_for(current: Variant, value: Variant) -> Variant:
 
 
 static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTuning:
-	var tuning := (
-		PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
-	)
+	var tuning := TuningPresets.for_kind(level.is_maze())
 	for key: String in values:
 		tuning.set(key, _value_for(tuning.get(key), values[key]))
 	return tuning
