@@ -4,7 +4,7 @@ SHELL := /bin/bash
 GODOT := tools/godot.sh
 GD_SOURCES = $(shell git ls-files -co --exclude-standard '*.gd' | grep -v '^addons/gut/')
 
-.PHONY: play test setup lint format editor shots bench export export-check check-boards clean
+.PHONY: play test setup lint format editor shots bench export export-check check-boards clean seed-reference
 
 ## make play: the game window with a display, the headless autoplay demo without one
 play: setup
@@ -54,3 +54,7 @@ export-check: export
 
 clean:
 	rm -rf build .godot
+
+## make seed-reference: re-record the tilt maze tutorial's reference runs (needs node)
+seed-reference:
+	node tools/seed_reference/record.js

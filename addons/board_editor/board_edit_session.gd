@@ -22,6 +22,7 @@ enum Tool {
 	START,
 	HANDLES,
 	ERASE,
+	CURVE,
 	START_POCKET,
 	ATTACKER,
 	TULIP
@@ -31,12 +32,14 @@ const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const Snapping := preload("res://addons/board_editor/core/snapping.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
+const Layers := preload("res://addons/board_editor/core/layers.gd")
 
 ## Tools that make sense on each kind of board.
 const PACHINKO_TOOLS: Array[int] = [
 	Tool.SELECT,
 	Tool.PIN,
 	Tool.PATTERN,
+	Tool.CURVE,
 	Tool.POCKET,
 	Tool.HANDLES,
 	Tool.ERASE,
@@ -65,10 +68,15 @@ var mirror_enabled := false
 var pattern := {
 	"kind": "row", "count": 7, "spacing": 30.0, "rows": 4, "radius": 120.0, "arc_deg": 120.0
 }
+## Peg line along a drawn curve: `count` pins end to end, or (count 0) one every `spacing` px.
+var curve := {"count": 20, "spacing": 24.0}
 ## Settings for new pockets.
 var pocket_width := 32.0
 var pocket_depth := 24.0
 var pocket_payout := 10
+## Layers (Layers.LAYERS names) the designer hid or locked.
+var hidden_layers: Array[String] = []
+var locked_layers: Array[String] = []
 ## The last copied items, relative to their centre.
 var clipboard := {}
 ## Receives `(action, already_applied)`; a plain history unless the plugin sets its own.
@@ -131,6 +139,29 @@ func set_snap(enabled: bool) -> void:
 func set_mirror(enabled: bool) -> void:
 	mirror_enabled = enabled
 	settings_changed.emit()
+
+
+## Hides or shows, locks or unlocks a layer; its items leave the selection.
+func set_layer(layer: String, hidden: bool, locked: bool) -> void:
+	for state: Array in [[hidden_layers, hidden], [locked_layers, locked]]:
+		var names: Array[String] = state[0]
+		if state[1] and not names.has(layer):
+			names.append(layer)
+		elif not state[1]:
+			names.erase(layer)
+	var kept: Array[Vector2i] = []
+	for item in selection:
+		if can_pick(item):
+			kept.append(item)
+	if kept != selection:
+		select(kept)
+	settings_changed.emit()
+
+
+## False for an item on a hidden or locked layer: tools cannot pick, move or erase it.
+func can_pick(item: Vector2i) -> bool:
+	var layer := Layers.of_item(item)
+	return not (hidden_layers.has(layer) or locked_layers.has(layer))
 
 
 ## Switches tool (ignores tools the board's kind has no use for).

@@ -11,6 +11,7 @@ const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const MazeBoardView := preload("res://scenes/maze/maze_board_view.gd")
 const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const MazeNote := preload("res://scenes/maze/maze_note.gd")
+const MazeGhostView := preload("res://scenes/maze/maze_ghost_view.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
@@ -28,6 +29,9 @@ var mixer := TiltMixer.new()
 var _sounds: SoundBank
 var _load_problem := ""
 var _goal_count := 0
+var _recorder := ReplayRecorder.new()
+var _ghost: GhostRun
+var _ghost_view := MazeGhostView.new()
 
 @onready var _stage: MazeStage = $Stage
 @onready var _canvas: SubViewport = $BoardCanvas
@@ -59,6 +63,8 @@ func _ready() -> void:
 		_joystick.hide()
 		return
 	rules = MazeRules.new(level)
+	_recorder.attach_maze(rules)
+	_board_view.add_child(_ghost_view)
 	rules.won.connect(_on_won)
 	rules.lost.connect(_on_lost)
 	rules.game_reset.connect(_on_game_reset)
@@ -87,6 +93,10 @@ func _process(delta: float) -> void:
 		if mixer.source != TiltMixer.Source.JOYSTICK:
 			_joystick.head_offset = TiltInput.joystick_from_tilt(tilt)
 		rules.advance(delta)
+		_recorder.note_frame()
+	if _ghost != null:
+		_ghost.sync(rules.world.step_count)
+		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
 	_stage.set_tilt(rules.tilt)
 	_timer.text = "Time  %s" % _format_time(rules.elapsed)
 
@@ -132,6 +142,8 @@ func _on_calibrate() -> void:
 
 func _on_game_reset() -> void:
 	_goal_count = 0
+	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
+	_ghost_view.clear()
 	_joystick.release()
 	mixer.reset()
 	_stage.set_tilt(Vector2.ZERO)
@@ -149,6 +161,9 @@ func _on_game_reset() -> void:
 func _on_won(seconds: float) -> void:
 	_joystick.release()
 	var best := App.record_maze_time(rules.level.board_id, rules.hard_mode, seconds)
+	if best:
+		var path := ReplayStore.best_maze_path(rules.level.board_id, rules.hard_mode)
+		ReplayStore.save(_recorder.finish(), path)
 	var hint := "" if rules.hard_mode else "Press %s for hard mode" % _key("maze_hard_mode")
 	var line := "Your time: %s%s" % [_format_time(seconds), "  (a new best!)" if best else ""]
 	_note.show_note("Congrats, you did it!", "%s\n%s" % [line, hint] if hint else line)

@@ -24,6 +24,7 @@ var _level: BoardLevel
 var _controls := PachinkoInput.new()
 var _stats_refresh := 0.0
 var _bonus_view := BonusView.new()
+var _recorder: ReplayRecorder
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -75,6 +76,7 @@ func _process(delta: float) -> void:
 		return
 	_controls.poll(rules, delta)
 	rules.advance(delta)
+	_recorder.note_frame()
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:
@@ -110,7 +112,10 @@ func restart() -> void:
 
 
 func _new_rules() -> void:
-	rules = PachinkoRules.new(_level, int(Time.get_ticks_usec()))
+	var rng_seed := int(Time.get_ticks_usec())
+	rules = PachinkoRules.new(_level, rng_seed)
+	_recorder = ReplayRecorder.new()
+	_recorder.attach_pachinko(rules, rng_seed)
 	rules.state_changed.connect(_on_state_changed)
 	rules.cup_changed.connect(_on_cup_changed)
 	rules.power_changed.connect(_on_power_changed)
@@ -200,6 +205,7 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 func _on_game_ended(summary: Dictionary) -> void:
 	var paid: int = summary.get("game_payouts", 0)
 	var new_best := App.record_pachinko_balls(_level.board_id, paid)
+	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
 	instructions.show_game_over(_level, summary, best, new_best)
 	_show_notes()

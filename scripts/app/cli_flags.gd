@@ -57,6 +57,20 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--check-boards",
 	},
 	{
+		"flag": "--replay",
+		"command": true,
+		"value": Value.TEXT,
+		"placeholder": "FILE",
+		"runs": preload("res://scripts/replay/replay_cli.gd"),
+		"help":
+		(
+			"Play a replay file headless on its board and print one JSON line with the final"
+			+ " state hash; exit 0 when it matches the recorded one, 1 when not, 2 for a bad"
+			+ " file or a missing or changed board."
+		),
+		"example": "--replay=build/maze.replay",
+	},
+	{
 		"flag": "--board",
 		"for": ["--autoplay"],
 		"value": Value.TEXT,
@@ -94,6 +108,14 @@ const FLAGS: Array[Dictionary] = [
 		"default": false,
 		"help": "Hard mode: the maze's black holes are live (the pachinko game ignores it).",
 		"example": "--autoplay=maze --hard",
+	},
+	{
+		"flag": "--record",
+		"for": ["--autoplay"],
+		"value": Value.TEXT,
+		"placeholder": "FILE",
+		"help": "Save the autoplay's game as a replay file (play it with --replay=FILE).",
+		"example": "--autoplay=maze --seconds=30 --record=build/maze.replay",
 	},
 ]
 

@@ -34,6 +34,8 @@ var sfx_volume := 1.0
 var fullscreen := false
 ## Show the frames-per-second counter in a corner.
 var show_frame_counter := false
+## Show the ghost of the best maze run on the board and mode.
+var show_ghost := true
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
@@ -76,6 +78,7 @@ func reset_to_defaults() -> void:
 	sfx_volume = 1.0
 	fullscreen = false
 	show_frame_counter = false
+	show_ghost = true
 	tilt_sensitivity = 1.0
 	bindings = default_bindings()
 	changed.emit()
@@ -139,9 +142,9 @@ func set_value(key: String, value: Variant) -> void:
 		"fullscreen":
 			var on: bool = value
 			fullscreen = on
-		"show_frame_counter":
+		"show_frame_counter", "show_ghost":
 			var on: bool = value
-			show_frame_counter = on
+			set(key, on)
 		"tilt_sensitivity":
 			var sensitivity: float = value
 			tilt_sensitivity = clampf(sensitivity, MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
@@ -187,7 +190,14 @@ func save_file(path: String) -> Error:
 	var sections := [
 		["meta", {"version": VERSION}],
 		["audio", {"master_volume": master_volume, "sfx_volume": sfx_volume}],
-		["display", {"fullscreen": fullscreen, "show_frame_counter": show_frame_counter}],
+		[
+			"display",
+			{
+				"fullscreen": fullscreen,
+				"show_frame_counter": show_frame_counter,
+				"show_ghost": show_ghost
+			}
+		],
 		["controls", {"tilt_sensitivity": tilt_sensitivity}],
 		["input", input],
 	]
@@ -257,6 +267,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_number(audio, "sfx_volume", 0.0, 1.0, problems)
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
+	_read_flag(display, "show_ghost", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	var input: Dictionary = sections.get("input", {})
 	_read_bindings(input, problems)

@@ -192,6 +192,29 @@ const CURRENT_VERSION := 1
 		hole_radius = value
 		emit_changed()
 
+## Stable ids of the items, one per item, in the same order (see ItemIds): they survive a
+## neighbour being deleted, so messages and the editor can name an item for good.
+@export var pin_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		pin_ids = value
+		emit_changed()
+@export var pocket_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		pocket_ids = value
+		emit_changed()
+@export var wall_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		wall_ids = value
+		emit_changed()
+@export var hole_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		hole_ids = value
+		emit_changed()
+@export var start_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		start_ids = value
+		emit_changed()
+
 ## Fields of older file layouts that this version no longer declares, kept during a load so
 ## `BoardUpgrader` can convert them. Never saved.
 var legacy_fields: Dictionary = {}

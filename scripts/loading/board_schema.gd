@@ -76,9 +76,14 @@ const LISTS := {
 	"attackers": [4, BONUS_CUP],
 	"tulips": [32, BONUS_CUP],
 }
-## Fields an item may leave out: a pin's pocket (-1 = a field pin) and its special flag.
+## Fields an item may leave out: its stable id (ItemIds; numbered in order when missing),
+## a pin's pocket (-1 = a field pin) and its special flag.
 const OPTIONAL_ITEM_FIELDS := {
-	"pins": {"pocket": ["int", 0, 199], "special": ["bool"]},
+	"pins": {"id": ["int", 1, ItemIds.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]},
+	"pockets": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"walls": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"ball_starts": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"holes": {"id": ["int", 1, ItemIds.MAX_ID]},
 	"start_pockets": {"symbols": ["int", 2, 9]},
 	"attackers": {"open_seconds": ["float", 1.0, 30.0], "open_catches": ["int", 1, 50]},
 }
@@ -115,6 +120,9 @@ const TUNING_RANGES := {
 	"rest_speed": [0.0, 10000.0],
 	"sleep_time": [0.0, 60.0],
 	"gutter_slide_time": [0.0, 60.0],
+	"speed_cap": [0, 1],  # PhysicsTuning.SpeedCap
+	"friction_against": [0, 1],  # PhysicsTuning.FrictionAgainst
+	"wall_cap_contact": [0, 1],  # PhysicsTuning.CapContact
 }
 ## A tuning field with no range of its own above gets this one.
 const TUNING_DEFAULT_RANGE := [-1000000.0, 1000000.0]

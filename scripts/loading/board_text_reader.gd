@@ -186,6 +186,13 @@ static func _build(data: Dictionary) -> BoardLevel:
 		level.walls = _points(walls, ["ax", "ay", "bx", "by"])
 		level.ball_starts = _points(ball_starts, ["x", "y"])
 		level.holes = _points(holes, ["x", "y"])
+	for list: String in ItemIds.LISTS:
+		var ids := PackedInt32Array()
+		for item: Dictionary in data.get(list, []):
+			ids.append(_int_of(item.get("id", 0)))
+		var id_field: String = ItemIds.LISTS[list]
+		level.set(id_field, ids)
+	ItemIds.fill(level)  # missing or repeated ids get fresh numbers
 	return level
 
 
@@ -202,9 +209,7 @@ static func _value_for(current: Variant, value: Variant) -> Variant:
 
 
 static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTuning:
-	var tuning := (
-		PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
-	)
+	var tuning := TuningPresets.for_kind(level.is_maze())
 	for key: String in values:
 		tuning.set(key, _value_for(tuning.get(key), values[key]))
 	return tuning

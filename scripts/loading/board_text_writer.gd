@@ -29,13 +29,15 @@ static func write(level: BoardLevel) -> String:
 		lines.append('{"%s": %s}' % [field, _value(level.get(field))])
 	lines.append('{"tuning": %s}' % _tuning(level.tuning))
 	if level.is_pachinko():
-		_append_items(lines, "pin", _pin_items(level))
-		_append_items(lines, "pocket", _pocket_items(level))
+		_append_items(lines, "pin", _pin_items(level), _ids(level, "pins"))
+		_append_items(lines, "pocket", _pocket_items(level), _ids(level, "pockets"))
 		_append_bonus(lines, level)
 	else:
-		_append_items(lines, "wall", _point_items(level.walls, WALL_KEYS))
-		_append_items(lines, "ball_start", _point_items(level.ball_starts, POINT_KEYS))
-		_append_items(lines, "hole", _point_items(level.holes, POINT_KEYS))
+		var walls := _point_items(level.walls, WALL_KEYS)
+		_append_items(lines, "wall", walls, _ids(level, "walls"))
+		var starts := _point_items(level.ball_starts, POINT_KEYS)
+		_append_items(lines, "ball_start", starts, _ids(level, "ball_starts"))
+		_append_items(lines, "hole", _point_items(level.holes, POINT_KEYS), _ids(level, "holes"))
 	return "\n".join(lines) + "\n"
 
 
@@ -87,9 +89,19 @@ static func _exact(value: float) -> String:
 	return JSON.stringify(value, "", false, true)
 
 
-static func _append_items(lines: PackedStringArray, key: String, items: PackedStringArray) -> void:
-	for item in items:
-		lines.append('{"%s": %s}' % [key, item])
+# Each item line starts with its stable id: `{"pin": {"id": 17, "x": 255, "y": 84}}`.
+static func _append_items(
+	lines: PackedStringArray, key: String, items: PackedStringArray, ids: PackedInt32Array
+) -> void:
+	for i in items.size():
+		lines.append('{"%s": {"id": %d, %s}' % [key, ids[i], items[i].substr(1)])
+
+
+static func _ids(level: BoardLevel, list: String) -> PackedInt32Array:
+	var ids := PackedInt32Array()
+	for i in ItemIds.count(level, list):
+		ids.append(ItemIds.of(level, list, i))
+	return ids
 
 
 static func _pin_items(level: BoardLevel) -> PackedStringArray:

@@ -98,7 +98,13 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 	for i in level.pockets.size():
 		var spec: PocketSpec = level.pockets[i]
 		if spec == null:
-			BoardIssue.add_to(issues, ERROR, "Pocket %d is empty." % i, c, "bad_pocket")
+			BoardIssue.add_to(
+				issues,
+				ERROR,
+				"Pocket %d is empty." % ItemIds.of(level, "pockets", i),
+				c,
+				"bad_pocket"
+			)
 			ok = false
 		elif (
 			not spec.position.is_finite()
@@ -110,7 +116,10 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pocket %d needs a finite position and a positive width and depth." % i,
+				(
+					"Pocket %d needs a finite position and a positive width and depth."
+					% ItemIds.of(level, "pockets", i)
+				),
 				c,
 				"bad_pocket"
 			)
@@ -119,7 +128,10 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pocket %d pays %d balls; a payout cannot be negative." % [i, spec.payout],
+				(
+					"Pocket %d pays %d balls; a payout cannot be negative."
+					% [ItemIds.of(level, "pockets", i), spec.payout]
+				),
 				spec.position,
 				"bad_pocket"
 			)
@@ -127,7 +139,10 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 			BoardIssue.add_to(
 				issues,
 				WARNING,
-				"Pocket %d is shallower than half its width; its rim cannot be stamped." % i,
+				(
+					"Pocket %d is shallower than half its width; its rim cannot be stamped."
+					% ItemIds.of(level, "pockets", i)
+				),
 				spec.position,
 				"pocket_shallow"
 			)
@@ -242,7 +257,10 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pocket %d has no special pin, so it can never pay." % k,
+				(
+					"Pocket %d has no special pin, so it can never pay."
+					% ItemIds.of(level, "pockets", k)
+				),
 				spec.position,
 				"pocket_without_special"
 			)
@@ -253,7 +271,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 				WARNING,
 				(
 					"Pocket %d's mouth is %.1f px wide; a ball (%.0f px) cannot enter."
-					% [k, clear_mouth, level.ball_radius * 2.0]
+					% [ItemIds.of(level, "pockets", k), clear_mouth, level.ball_radius * 2.0]
 				),
 				spec.position,
 				"pocket_unreachable"
@@ -262,7 +280,10 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 			BoardIssue.add_to(
 				issues,
 				WARNING,
-				"Pocket %d's mouth is outside the field; no ball can enter it." % k,
+				(
+					"Pocket %d's mouth is outside the field; no ball can enter it."
+					% ItemIds.of(level, "pockets", k)
+				),
 				spec.position,
 				"pocket_unreachable"
 			)
@@ -272,7 +293,10 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 				BoardIssue.add_to(
 					issues,
 					WARNING,
-					"Pin %d blocks the mouth of pocket %d; no ball can enter." % [blocker, k],
+					(
+						"Pin %d blocks the mouth of pocket %d; no ball can enter."
+						% [ItemIds.of(level, "pins", blocker), ItemIds.of(level, "pockets", k)]
+					),
 					level.pins[blocker],
 					"pocket_unreachable"
 				)

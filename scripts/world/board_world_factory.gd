@@ -24,16 +24,19 @@ static func build(level: BoardLevel, hard_mode: bool = false) -> BallWorld:
 	return world
 
 
-## The level's tuning, or the physics defaults for its kind when it has none.
+## The level's tuning, or its game's preset (TuningPresets) when it has none.
 static func tuning_for(level: BoardLevel) -> PhysicsTuning:
 	if level.tuning != null:
 		return level.tuning
-	return PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
+	return TuningPresets.for_kind(level.is_maze())
 
 
 static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.set_ring(level.ring_center, level.ring_radius)
-	world.set_gutter(level.gutter_start_deg, level.gutter_end_deg, maxi(level.gutter_bounces, 1))
+	var slide_time := maxf(world.tuning.gutter_slide_time, 0.0)
+	var bounces := maxi(level.gutter_bounces, 1)
+	# The gutter: the drain arc of the ring.
+	world.set_drain_arc(level.gutter_start_deg, level.gutter_end_deg, bounces, slide_time)
 	var count := mini(level.pins.size(), mini(level.pin_pocket.size(), level.pin_special.size()))
 	# The pins' material: the board's minimum horizontal speed after a touch.
 	var min_speed_x := maxf(world.tuning.min_horizontal_speed, 0.0)

@@ -31,7 +31,8 @@ func test_the_same_seed_gives_the_same_result() -> void:
 	var a := MazeAutoplay.run(_level(), 15.0, 3)
 	var b := MazeAutoplay.run(_level(), 15.0, 3)
 	assert_eq(JSON.stringify(a), JSON.stringify(b))
-	assert_eq(int(a["frames_simulated"]), 1800, "15 s at 120 steps a second")
+	var steps_per_second := _level().tuning.fixed_hz
+	assert_eq(int(a["frames_simulated"]), roundi(15.0 * steps_per_second), "15 s of fixed steps")
 	var c := MazeAutoplay.run(_level(), 15.0, 4)
 	assert_ne(a["state_hash"], c["state_hash"], "another seed plays differently")
 
@@ -41,7 +42,8 @@ func test_hard_mode_autoplay_keeps_balls_out_of_holes() -> void:
 	assert_true(result["hard_mode"])
 	assert_true(result.has("balls_lost_in_holes"))
 	assert_eq(int(result["balls_lost_in_holes"]), 0, "the hole guard keeps every ball out")
-	assert_eq(int(result["frames_simulated"]), 1200, "no ball fell, so the game ran on")
+	var all_steps := roundi(10.0 * _level().tuning.fixed_hz)
+	assert_eq(int(result["frames_simulated"]), all_steps, "no ball fell, so the game ran on")
 
 
 func test_bad_input_is_refused_clearly() -> void:

@@ -12,10 +12,16 @@ var _game: Control
 
 func before_all() -> void:
 	App.load_player_files(TEST_SETTINGS, TEST_SAVE)
+	ReplayStore.folder = "user://test_maze_scene_replays"
 
 
 func after_all() -> void:
 	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
+	ReplayStore.folder = ReplayStore.DIR
+	var replays := "user://test_maze_scene_replays"
+	for file_name in DirAccess.get_files_at(replays):
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(replays + "/" + file_name))
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(replays))
 	for path in [TEST_SETTINGS, TEST_SAVE]:
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
 

@@ -25,8 +25,16 @@ func do() -> void:
 	if level == null:
 		push_error("Board action '%s': no board to edit." % get_name())
 		return
-	_before = Snapshot.capture(level, _touched_fields())
+	var fields := _touched_fields()
+	for list: String in ItemIds.LISTS:
+		if fields.has(list):
+			var id_field: String = ItemIds.LISTS[list]
+			fields.append(id_field)
+	_before = Snapshot.capture(level, fields)
 	_apply()
+	# Items that survived the edit keep their ids; new ones get fresh ids (undo puts the
+	# ids back with the lists).
+	ItemIds.reconcile(level, _before)
 	_applied = true
 	level.notify_edited()
 

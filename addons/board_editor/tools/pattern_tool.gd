@@ -22,4 +22,4 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var points := PatternAction.points_for(session.pattern, session.snap_point(hover))
 	if session.mirror_enabled:
 		points = Mirror.with_reflections(points, session.mirror_axis())
-	Draw.ghost_points(canvas, to_screen, points, level().pin_radius)
+	Draw.ghost_points(canvas, to_screen, points, level().pin_radius, level())

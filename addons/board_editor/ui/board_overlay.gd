@@ -99,7 +99,4 @@ static func _draw_issue(
 	var font := ThemeDB.fallback_font
 	canvas.draw_string(font, at + Vector2(-3, 5), "!", HORIZONTAL_ALIGNMENT_LEFT, -1, 13, color)
 	if focused:
-		var text_at := at + Vector2(radius + 4, 4)
-		var left := HORIZONTAL_ALIGNMENT_LEFT
-		canvas.draw_string(font, text_at + Vector2.ONE, issue.message, left, -1, 13, Color.BLACK)
-		canvas.draw_string(font, text_at, issue.message, left, -1, 13, Color.WHITE)
+		Draw.label(canvas, at + Vector2(radius + 8, 5), issue.message, color.lightened(0.5))

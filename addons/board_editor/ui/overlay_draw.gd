@@ -3,12 +3,19 @@ extends RefCounted
 ## Small drawing helpers for the editor overlay: board pixels in, screen pixels out, with a
 ## minimum on-screen size so tiny pins stay visible when zoomed out.
 
+const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
+
 const SELECT_COLOR := Color(0.35, 0.75, 1.0)
 const GHOST_COLOR := Color(0.3, 0.95, 0.5, 0.8)
 const ERROR_COLOR := Color(1.0, 0.25, 0.2)
 const WARNING_COLOR := Color(1.0, 0.7, 0.15)
 const HANDLE_COLOR := Color(1.0, 0.85, 0.3)
+const BLOCKED_COLOR := Color(1.0, 0.25, 0.2, 0.85)
 const MIN_RADIUS := 3.0
+## Handle squares (screen px): big enough to see and grab on a busy board.
+const HANDLE_SIZE := 12.0
+const HOT_HANDLE_SIZE := 15.0
+const LABEL_FONT_SIZE := 14
 
 
 ## A circle of `radius` board pixels at `center`.
@@ -28,12 +35,30 @@ static func circle(
 		canvas.draw_arc(to_screen * center, r, 0.0, TAU, 32, color, width, true)
 
 
-## Ghost pins: where a tool would put pins.
+## Ghost pins: where a tool would put pins; red where a pin would overlap one already on
+## `level` or leave it a gap a ball sticks in (HitTest.crowds_pin).
 static func ghost_points(
-	canvas: Control, to_screen: Transform2D, points: PackedVector2Array, radius: float
+	canvas: Control,
+	to_screen: Transform2D,
+	points: PackedVector2Array,
+	radius: float,
+	level: BoardLevel = null
 ) -> void:
 	for point in points:
-		circle(canvas, to_screen, point, radius, GHOST_COLOR, true)
+		var blocked := level != null and HitTest.crowds_pin(level, point)
+		circle(canvas, to_screen, point, radius, BLOCKED_COLOR if blocked else GHOST_COLOR, true)
+		if blocked:
+			circle(canvas, to_screen, point, radius + 3.0, BLOCKED_COLOR, false, 1.5)
+
+
+## Text on a dark box, readable on the dark pachinko field and the light maze floor alike.
+static func label(canvas: Control, at: Vector2, text: String, color := Color.WHITE) -> void:
+	var font := ThemeDB.fallback_font
+	var size := font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, LABEL_FONT_SIZE)
+	var box := Rect2(at + Vector2(-4, -size.y + 2), size + Vector2(8, 6))
+	canvas.draw_rect(box, Color(0.05, 0.05, 0.08, 0.82), true)
+	canvas.draw_rect(box, Color(1, 1, 1, 0.25), false, 1.0)
+	canvas.draw_string(font, at, text, HORIZONTAL_ALIGNMENT_LEFT, -1, LABEL_FONT_SIZE, color)
 
 
 ## A line between two board points.
@@ -45,10 +70,10 @@ static func line(
 
 ## A square handle at a board point.
 static func handle(canvas: Control, to_screen: Transform2D, at: Vector2, hot: bool) -> void:
-	var size := 10.0 if hot else 8.0
+	var size := HOT_HANDLE_SIZE if hot else HANDLE_SIZE
 	var rect := Rect2(to_screen * at - Vector2.ONE * size * 0.5, Vector2.ONE * size)
 	canvas.draw_rect(rect, HANDLE_COLOR if hot else Color(1, 1, 1), true)
-	canvas.draw_rect(rect, Color(0, 0, 0, 0.8), false, 1.0)
+	canvas.draw_rect(rect, Color(0, 0, 0, 0.9), false, 2.0)
 
 
 ## A circular arc on the board (angles in radians), drawn as a polyline.

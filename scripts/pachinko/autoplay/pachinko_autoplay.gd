@@ -14,14 +14,19 @@ const MAX_GAP := 1.2
 
 ## Plays `level` for `seconds` of game time with random powers from `rng_seed`. Returns shots,
 ## pocket_hits (per pocket), payouts, drained, balls_left, accounting_ok,
-## frames_simulated and more (see the keys).
-static func run(level: BoardLevel, seconds: float, rng_seed: int) -> Dictionary:
+## frames_simulated and more (see the keys). A `recorder` (optional) records the games for a
+## replay.
+static func run(
+	level: BoardLevel, seconds: float, rng_seed: int, recorder: ReplayRecorder = null
+) -> Dictionary:
 	if level == null or not level.is_pachinko():
 		push_error("PachinkoAutoplay: a pachinko board is needed")
 		return {"ok": false, "error": "not a pachinko board"}
 	var rng := RandomNumberGenerator.new()
 	rng.seed = rng_seed
 	var rules := PachinkoRules.new(level, rng_seed)
+	if recorder != null:
+		recorder.attach_pachinko(rules, rng_seed)
 	var frames := ceili(maxf(seconds, 0.0) / FRAME_SECONDS)
 	var steps := 0
 	var games := 1
@@ -39,6 +44,8 @@ static func run(level: BoardLevel, seconds: float, rng_seed: int) -> Dictionary:
 			rules.fire(rng.randf_range(0.0, 100.0))
 			next_shot = clock + rng.randf_range(MIN_GAP, MAX_GAP)
 		steps += rules.advance(FRAME_SECONDS)
+		if recorder != null:
+			recorder.note_frame()
 		peak_in_play = maxi(peak_in_play, rules.balls_in_play())
 		accounting_held = accounting_held and rules.accounting_ok()
 	var stats := rules.stats()

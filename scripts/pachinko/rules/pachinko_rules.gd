@@ -46,6 +46,9 @@ const StuckWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.g
 const CHARGE_PER_SECOND := 80.0
 ## Speed of the nudge given to a resting ball, px/s.
 const NUDGE_SPEED := 70.0
+## A shot's power is kept in whole hundredths (too fine to feel), so a replay stores it as a
+## whole number and plays it back bit for bit.
+const POWER_STEP := 0.01
 
 ## The board being played.
 var level: BoardLevel
@@ -170,6 +173,7 @@ func release() -> int:
 func fire(shot_power: float) -> int:
 	if state != State.PLAYING or not loaded or rail_blocked():
 		return -1
+	shot_power = snappedf(shot_power, POWER_STEP)
 	var speed := launch_speed(shot_power)
 	var id := world.spawn_ball(_launch_pos, _launch_dir * speed, level.ball_radius)
 	if id < 0:
@@ -198,6 +202,14 @@ func advance(delta: float) -> int:
 	var steps := world.advance(delta)
 	_after_steps(steps)
 	return steps
+
+
+## Runs exactly `count` fixed steps as one frame, as `advance` does for a frame that ran
+## `count` steps; replays play recorded frames with it.
+func run_steps(count: int) -> void:
+	for i in count:
+		world.step(_step_seconds)
+	_after_steps(count)
 
 
 ## Runs exactly one fixed simulation step.
