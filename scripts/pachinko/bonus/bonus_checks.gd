@@ -86,7 +86,8 @@ static func _check_inside_ring(level: BoardLevel, i: int, issues: Array[BoardIss
 	var points := BonusGeometry.rim_pins(level, spec)
 	for entry in BonusGeometry.wall_plan(level):
 		if entry["item"] == i:
-			points.append(entry["b"])
+			var tip: Vector2 = entry["b"]
+			points.append(tip)
 	var reach := level.ring_radius - level.pin_radius - level.ball_radius * 2.0
 	for p in points:
 		if p.distance_to(level.ring_center) > reach:
