@@ -28,6 +28,8 @@ var fullscreen := false
 var show_frame_counter := false
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
+## Gamepad rumble and phone vibration when a maze ball knocks a wall or drops into a hole.
+var vibration := true
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
 var bindings := {}
 
@@ -66,6 +68,7 @@ func reset_to_defaults() -> void:
 	fullscreen = false
 	show_frame_counter = false
 	tilt_sensitivity = 1.0
+	vibration = true
 	bindings = default_bindings()
 	changed.emit()
 
@@ -117,6 +120,9 @@ func set_value(key: String, value: Variant) -> void:
 		"tilt_sensitivity":
 			var sensitivity: float = value
 			tilt_sensitivity = clampf(sensitivity, MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
+		"vibration":
+			var on: bool = value
+			vibration = on
 		_:
 			push_error("GameSettings.set_value: unknown setting '%s'" % key)
 			return
@@ -157,7 +163,7 @@ func save_file(path: String) -> Error:
 		["meta", {"version": VERSION}],
 		["audio", {"master_volume": master_volume, "sfx_volume": sfx_volume}],
 		["display", {"fullscreen": fullscreen, "show_frame_counter": show_frame_counter}],
-		["controls", {"tilt_sensitivity": tilt_sensitivity}],
+		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
 		["input", input],
 	]
 	var error := IniText.write_file(path, IniText.format(FILE_HEADER % VERSION, sections))
@@ -198,6 +204,7 @@ func load_file(path: String) -> String:
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
+	_read_flag(controls, "vibration", problems)
 	var input: Dictionary = sections.get("input", {})
 	_read_bindings(input, problems)
 	changed.emit()
