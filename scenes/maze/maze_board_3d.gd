@@ -18,6 +18,8 @@ const BODY_DEPTH := 16.0
 const HOLE_DEPTH_PER_RADIUS := 1.3
 ## The floor shader's limit on holes; more are drawn without their cut-out.
 const MAX_HOLES := 64
+## The render layer of the floor alone: the sun's shadows are drawn on this layer only.
+const SHADOW_RECEIVER_LAYER := 2
 
 var _level: BoardLevel
 var _floor := MeshInstance3D.new()
@@ -32,8 +34,9 @@ func _ready() -> void:
 	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes]:
 		add_child(piece)
 	_floor.material_override = _floor_material
-	_walls.material_override = _plain(Palette.WALL, 0.55, 0.35)
-	_frame.material_override = _plain(Palette.WALL.lightened(0.1), 0.6, 0.3)
+	_floor.layers = 1 | SHADOW_RECEIVER_LAYER
+	_walls.material_override = _plain(Palette.WALL, 0.55, 0.0)
+	_frame.material_override = _plain(Palette.WALL.lightened(0.1), 0.6, 0.0)
 
 
 ## Builds the board for `level`; holes only when `hard` (the seed shows them in hard mode).
@@ -125,4 +128,8 @@ static func _plain(colour: Color, roughness: float, specular: float) -> Standard
 	mat.albedo_color = colour
 	mat.roughness = roughness
 	mat.metallic_specular = specular
+	if specular <= 0.0:
+		# flat matte faces light the same per vertex as per pixel, for a fraction of the cost
+		mat.specular_mode = BaseMaterial3D.SPECULAR_DISABLED
+		mat.shading_mode = BaseMaterial3D.SHADING_MODE_PER_VERTEX
 	return mat

@@ -10,7 +10,7 @@ extends RefCounted
 ## One mesh unit in board pixels is 1 / UNITS_PER_PX.
 const UNITS_PER_PX := 0.01
 ## Segments on each half of a round wall cap, and round a hole.
-const CAP_SEGMENTS := 8
+const CAP_SEGMENTS := 6
 const HOLE_SEGMENTS := 24
 ## Share of the wall height that the soft top edge (a chamfer) takes.
 const BEVEL_SHARE := 0.3
@@ -38,6 +38,7 @@ static func walls(
 	for i in range(0, ends.size() - 1, 2):
 		var outline := _stadium(ends[i], ends[i + 1], width * 0.5)
 		_extrude(st, board_size, outline, height, bevel)
+	st.index()  # shared corners once: software GL pays per vertex
 	return st.commit()
 
 

@@ -59,6 +59,10 @@ func _ready() -> void:
 	_sun.transform = facing
 	_sun.light_energy = SUN_ENERGY
 	_sun.light_specular = 0.0
+	# Its shadows only fall on the floor: the walls are too dark to show them, and drawing
+	# them again for this light would cost as much as the whole board (software GL).
+	_sun.light_cull_mask = MazeBoard3D.SHADOW_RECEIVER_LAYER
+	_sun.shadow_caster_mask = 0xFFFFF
 	_sun.shadow_enabled = true
 	_sun.directional_shadow_mode = DirectionalLight3D.SHADOW_ORTHOGONAL
 	_sun.directional_shadow_max_distance = 7.5
@@ -151,6 +155,10 @@ func lowest_board_point() -> float:
 static func ball_material(seed_red: bool) -> StandardMaterial3D:
 	var mat := StandardMaterial3D.new()
 	mat.albedo_texture = _ball_band_texture(Palette.BALL if seed_red else Color(0.78, 0.8, 0.83))
+	# a little glow of its own, so the ball stays as bright as the seed's beside the floor
+	mat.emission_enabled = true
+	mat.emission = (Palette.BALL if seed_red else Color(0.5, 0.52, 0.55)).darkened(0.4)
+	mat.emission_energy_multiplier = 0.6
 	if seed_red:
 		mat.roughness = 0.28
 		mat.metallic_specular = 0.7

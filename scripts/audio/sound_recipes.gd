@@ -147,13 +147,17 @@ static func _ball_roll() -> PackedFloat32Array:
 	var out := PackedFloat32Array()
 	out.resize(length)
 	for i in length:
-		var flutter := 0.75 + 0.25 * sin(TAU * 23.0 * float(i) / Synth.SAMPLE_RATE)
-		out[i] = rumble[i] + grain[i] * flutter
+		out[i] = rumble[i] + grain[i] * _flutter(i)
 	for i in seam:
 		var k := float(i) / float(seam)
-		var tail := rumble[length + i] + grain[length + i]
+		var tail := rumble[length + i] + grain[length + i] * _flutter(length + i)
 		out[i] = lerpf(tail, out[i], k)
 	return out
+
+
+# The grain's flutter: 23 whole cycles a second, so it too runs on across the loop's seam.
+static func _flutter(sample: int) -> float:
+	return 0.75 + 0.25 * sin(TAU * 23.0 * float(sample) / Synth.SAMPLE_RATE)
 
 
 ## A ball lost into a hole: a bright knock on the rim, a hollow low thud at the bottom,
