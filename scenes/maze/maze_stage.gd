@@ -27,7 +27,7 @@ const AMBIENT_ENERGY := 0.28
 const KEY_ENERGY := 0.37
 const SUN_ENERGY := 0.055
 ## Side of the sun's shadow map, in texels (sharp ball shadows, cheap on software GL).
-const SHADOW_MAP_SIZE := 1024
+const SHADOW_MAP_SIZE := 2048
 ## Board ids that keep the seed's red balls; every other board rolls steel.
 const SEED_RED_BOARDS: Array[String] = ["maze_classic"]
 
