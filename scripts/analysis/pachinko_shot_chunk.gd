@@ -30,7 +30,7 @@ var _table: RailExitTable
 var _world: BallWorld
 var _clear_speed := 0.0
 ## A ball whose highest reachable centre lies below this y can reach no special pin.
-var _hopeless_y := INF
+var _hopeless_y := -INF
 ## Per ball id (ids count up from 0 in a fresh world): its power band, the step its shot
 ## was fired on, and 1 once it is known to be out of the rail (the energy test applies).
 var _band_of := PackedInt32Array()
@@ -53,13 +53,13 @@ func _init(plan: AnalysisPlan, clear_speed: float, table: RailExitTable = null) 
 
 
 ## The y below which a ball's highest reachable point means it can touch no special pin
-## (INF when the board has none: every ball is then hopeless only by draining).
+## (-INF when the board has none: no ball out of the rail can be paid).
 static func hopeless_line(level: BoardLevel) -> float:
 	var line := -INF
 	for k in mini(level.pins.size(), level.pin_special.size()):
 		if level.pin_special[k] != 0:
 			line = maxf(line, level.pins[k].y + level.pin_radius + level.ball_radius)
-	return line + HOPELESS_MARGIN if line > -INF else INF
+	return line + HOPELESS_MARGIN if line > -INF else -INF
 
 
 ## The density cell of a board point, or -1 outside the board.
