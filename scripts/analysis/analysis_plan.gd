@@ -14,6 +14,8 @@ const MAX_BALL_SECONDS := 20.0
 ## Powers are drawn on this grid (a quarter of a point: finer than one pixel of drag), so
 ## every shot of one power climbs the rail the same way and the climb is simulated once.
 const POWER_STEP := 0.25
+## Shots the editor's Analyze button fires (and the cache's default entry).
+const EDITOR_SHOTS := 10000
 ## Side of a density grid cell in board pixels.
 const DENSITY_CELL := 5.0
 
