@@ -39,10 +39,11 @@ static func load_report(key: String) -> Dictionary:
 	if not FileAccess.file_exists(path):
 		return {}
 	var parsed: Variant = JSON.parse_string(FileAccess.get_file_as_string(path))
-	if not parsed is Dictionary or not _looks_like_report(parsed):
+	var report: Dictionary = parsed if parsed is Dictionary else {}
+	if not _looks_like_report(report):
 		push_warning("AnalysisCache: ignoring a damaged cache entry %s" % path)
 		return {}
-	return parsed
+	return report
 
 
 ## The stored heat map for `key`, or null.
@@ -76,9 +77,9 @@ static func _looks_like_report(report: Dictionary) -> bool:
 		if not report.get(field) is Array:
 			return false
 	for pocket: Variant in report["pockets"]:
-		if not pocket is Dictionary or not pocket.get("rate") is float:
+		if not pocket is Dictionary or not (pocket as Dictionary).get("rate") is float:
 			return false
 	for band: Variant in report["bands"]:
-		if not band is Dictionary or not band.get("pocket_rates") is Array:
+		if not band is Dictionary or not (band as Dictionary).get("pocket_rates") is Array:
 			return false
 	return true
