@@ -77,9 +77,16 @@ static func _looks_like_report(report: Dictionary) -> bool:
 		if not report.get(field) is Array:
 			return false
 	for pocket: Variant in report["pockets"]:
-		if not pocket is Dictionary or not (pocket as Dictionary).get("rate") is float:
+		if not _has(pocket, "rate", TYPE_FLOAT):
 			return false
 	for band: Variant in report["bands"]:
-		if not band is Dictionary or not (band as Dictionary).get("pocket_rates") is Array:
+		if not _has(band, "pocket_rates", TYPE_ARRAY):
 			return false
 	return true
+
+
+static func _has(item: Variant, field: String, type: Variant.Type) -> bool:
+	if not item is Dictionary:
+		return false
+	var fields: Dictionary = item
+	return typeof(fields.get(field)) == type

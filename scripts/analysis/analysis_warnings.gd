@@ -58,5 +58,6 @@ static func _number(value: Variant, fallback: float) -> float:
 	if value is float:
 		return value
 	if value is int:
-		return float(value as int)
+		var whole: int = value
+		return float(whole)
 	return fallback
