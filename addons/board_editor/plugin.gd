@@ -42,6 +42,8 @@ func _enter_tree() -> void:
 	_dock.new_board_requested.connect(_new_board)
 	_dock.save_as_requested.connect(_save_as_file)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
+	_dock.analysis.redraw_needed.connect(update_overlays)
+	_dock.analysis.results_changed.connect(_refresh)
 	_attach_tooling_hook()
 
 
@@ -102,6 +104,7 @@ func _forward_canvas_gui_input(event: InputEvent) -> bool:
 func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
 	if _session == null or not is_instance_valid(_node):
 		return
+	_dock.analysis.draw_over(overlay, _to_screen())
 	BoardOverlay.draw(
 		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
 	)
@@ -182,6 +185,7 @@ func _refresh() -> void:
 	_issues = (
 		_node.issues() if is_instance_valid(_node) else BoardValidator.validate(_session.level)
 	)
+	_issues.append_array(AnalysisWarnings.cached_issues(_session.level))
 	_focused_issue = mini(_focused_issue, _issues.size() - 1)
 	_dock.show_board(_session, _issues)
 	if is_instance_valid(_node):

@@ -69,6 +69,17 @@ static func build(plan: AnalysisPlan, tally: AnalysisTally, wall_s: float) -> Di
 	}
 
 
+## A number read from a report: a JSON number (float once parsed, int when fresh), or
+## `fallback` for anything else.
+static func number(value: Variant, fallback := 0.0) -> float:
+	if value is float:
+		return value
+	if value is int:
+		var whole: int = value
+		return float(whole)
+	return fallback
+
+
 static func _band(tally: AnalysisTally, b: int) -> Dictionary:
 	var n := tally.band_shots[b]
 	var rates: Array[float] = []

@@ -16,25 +16,25 @@ static func issues(level: BoardLevel, report: Dictionary) -> Array[BoardIssue]:
 	var out: Array[BoardIssue] = []
 	if level == null or report.is_empty():
 		return out
-	var shots := roundi(_number(report.get("shots"), 0.0))
+	var shots := roundi(AnalysisReport.number(report.get("shots"), 0.0))
 	var pockets: Array = report.get("pockets", [])
 	for dead: Variant in report.get("dead_pockets", []):
-		var p := roundi(_number(dead, -1.0))
+		var p := roundi(AnalysisReport.number(dead, -1.0))
 		var at := level.pockets[p].position if p >= 0 and p < level.pockets.size() else Vector2()
 		var text := "Pocket %d is dead: in %d analysed shots no power reaches it" % [p + 1, shots]
 		text += " (under 0.5%% at every power)."
 		BoardIssue.add_to(out, BoardIssue.Severity.WARNING, text, at, "analysis_dead_pocket")
-	var ret := _number(report.get("return"), 0.0)
+	var ret := AnalysisReport.number(report.get("return"), 0.0)
 	if ret >= RETURN_LIMIT and not pockets.is_empty():
 		var text := (
 			"At random power the board pays back %.2f ± %.2f balls per ball"
-			% [ret, _number(report.get("return_ci95"), 0.0)]
+			% [ret, AnalysisReport.number(report.get("return_ci95"), 0.0)]
 		)
 		text += ": the game cannot be lost. Lower some payouts."
 		BoardIssue.add_to(
 			out, BoardIssue.Severity.WARNING, text, level.ring_center, "analysis_return_high"
 		)
-	var aim := _number(report.get("aim_tv"), -1.0)
+	var aim := AnalysisReport.number(report.get("aim_tv"), -1.0)
 	if aim >= 0.0 and aim < AIM_MIN_DISTANCE:
 		var text := "Power does not aim: the weakest and the strongest shots land in the same"
 		text += (
@@ -51,13 +51,3 @@ static func issues(level: BoardLevel, report: Dictionary) -> Array[BoardIssue]:
 ## not been analysed since its last edit).
 static func cached_issues(level: BoardLevel) -> Array[BoardIssue]:
 	return issues(level, AnalysisCache.cached_report(level))
-
-
-# A JSON number (float once parsed, int when fresh), or `fallback` for anything else.
-static func _number(value: Variant, fallback: float) -> float:
-	if value is float:
-		return value
-	if value is int:
-		var whole: int = value
-		return float(whole)
-	return fallback

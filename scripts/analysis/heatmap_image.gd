@@ -39,6 +39,24 @@ static func render(level: BoardLevel, tally: AnalysisTally) -> Image:
 	return img
 
 
+## The density alone on a clear ground, one pixel per grid cell, for drawing over the
+## board itself (the editor's overlay scales it up).
+static func render_overlay(tally: AnalysisTally) -> Image:
+	var grid := tally.grid_size
+	var img := Image.create(grid.x, grid.y, false, Image.FORMAT_RGBA8)
+	var peak := 0
+	for c in tally.density:
+		peak = maxi(peak, c)
+	var scale := 1.0 / log(1.0 + peak) if peak > 0 else 0.0
+	for y in grid.y:
+		for x in grid.x:
+			var t := log(1.0 + tally.density[y * grid.x + x]) * scale
+			var colour := ramp(t)
+			colour.a = clampf(t * 2.5, 0.0, 0.85)
+			img.set_pixel(x, y, colour)
+	return img
+
+
 ## The ramp colour at t in 0..1.
 static func ramp(t: float) -> Color:
 	var x := clampf(t, 0.0, 1.0) * (RAMP.size() - 1)

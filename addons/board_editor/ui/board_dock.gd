@@ -11,6 +11,10 @@ signal save_as_requested
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
+const AnalysisPanel := preload("res://addons/board_editor/analysis/analysis_panel.gd")
+
+## The play-analysis section (Analyze button, progress, figures).
+var analysis: AnalysisPanel
 
 var _title: Label
 var _counts: Label
@@ -53,6 +57,8 @@ func _init() -> void:
 	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
 	add_child(_status)
+	analysis = AnalysisPanel.new()
+	add_child(analysis)
 	add_child(HSeparator.new())
 	_options = ToolOptions.new()
 	add_child(_options)
@@ -79,6 +85,7 @@ func show_message(text: String) -> void:
 ## `node_without_board` the selected BoardNode has no board yet: offer new ones.
 func show_board(session: Session, issues: Array[BoardIssue], node_without_board := false) -> void:
 	var editing := session != null and session.level != null
+	analysis.bind(session.level if editing else null)
 	_play.disabled = not editing
 	_options.visible = editing
 	_new_box.visible = node_without_board
