@@ -15,6 +15,8 @@ const RAMP: Array[Color] = [
 ]
 const BOARD_INK := Color(1.0, 1.0, 1.0, 0.35)
 const POCKET_INK := Color(0.55, 1.0, 0.6, 0.8)
+## Pixels per grid cell side in the overlay picture.
+const OVERLAY_ZOOM := 4
 ## The largest picture side, px (bigger boards are drawn smaller).
 const MAX_SIDE := 1024
 
@@ -39,8 +41,8 @@ static func render(level: BoardLevel, tally: AnalysisTally) -> Image:
 	return img
 
 
-## The density alone on a clear ground, one pixel per grid cell, for drawing over the
-## board itself (the editor's overlay scales it up).
+## The density alone on a clear ground, for drawing over the board itself: OVERLAY_ZOOM
+## pixels a grid cell, smoothed (the editor's overlay scales it to the board).
 static func render_overlay(tally: AnalysisTally) -> Image:
 	var grid := tally.grid_size
 	var img := Image.create(grid.x, grid.y, false, Image.FORMAT_RGBA8)
@@ -52,8 +54,9 @@ static func render_overlay(tally: AnalysisTally) -> Image:
 		for x in grid.x:
 			var t := log(1.0 + tally.density[y * grid.x + x]) * scale
 			var colour := ramp(t)
-			colour.a = clampf(t * 2.5, 0.0, 0.85)
+			colour.a = clampf(t * 1.6, 0.0, 0.8)
 			img.set_pixel(x, y, colour)
+	img.resize(grid.x * OVERLAY_ZOOM, grid.y * OVERLAY_ZOOM, Image.INTERPOLATE_BILINEAR)
 	return img
 
 

@@ -79,10 +79,10 @@ static func _card(canvas: Control, at: Vector2, report: Dictionary, pocket_count
 	]
 	var aim := AnalysisReport.number(report.get("aim_tv", -1.0))
 	lines.append("Aim: weakest vs strongest %s" % ("%.2f of 1" % aim if aim >= 0.0 else "unknown"))
-	var grid_w := 52.0 + CELL * pocket_count
-	var size := Vector2(
-		maxf(250.0, grid_w + 12.0), LINE * (lines.size() + 1) + CELL * bands.size() + 14.0
-	)
+	var width := 52.0 + CELL * pocket_count
+	for text in lines:
+		width = maxf(width, font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, FONT_SIZE).x)
+	var size := Vector2(width + 12.0, LINE * (lines.size() + 1) + CELL * bands.size() + 10.0)
 	canvas.draw_rect(Rect2(at, size), CARD_INK)
 	var y := at.y + LINE
 	for text in lines:
