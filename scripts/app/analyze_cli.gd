@@ -8,8 +8,8 @@ const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
 ## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).
 const EXIT_BAD_INPUT := 2
 const EXIT_FAILED := 1
-## Where the reports go, relative to the project folder.
-const OUT_DIR := "build/analysis"
+## Where the reports go, relative to the project folder (tests point it elsewhere).
+static var out_dir := "build/analysis"
 
 
 ## Runs the analysis `values` ask for (keys analyze, board, shots, runs, seed, threads);
@@ -25,7 +25,7 @@ static func run(values: Dictionary) -> int:
 	if threads < 1 or threads > 64:
 		return _fail(EXIT_BAD_INPUT, "--threads must be 1 to 64 (got %d)" % threads)
 	var name := "%s_%s" % [game, board_name.get_file().get_basename()]
-	var base := OUT_DIR.path_join(name)
+	var base := out_dir.path_join(name)
 	var abs_base := _out_dir().path_join(name)
 	var report: Dictionary
 	if game == "maze":
@@ -33,6 +33,8 @@ static func run(values: Dictionary) -> int:
 		if runs < 1:
 			return _fail(EXIT_BAD_INPUT, "--runs must be at least 1 (got %d)" % runs)
 		report = MazeAnalysis.run(loaded.level, runs, rng_seed, threads)
+		if report.has("error"):
+			return _fail(EXIT_BAD_INPUT, str(report["error"]))
 	else:
 		var shots: int = values.get("shots", 10000)
 		if shots < 1:
@@ -63,7 +65,7 @@ static func run(values: Dictionary) -> int:
 
 
 static func _out_dir() -> String:
-	var dir := ProjectSettings.globalize_path("res://").path_join(OUT_DIR)
+	var dir := ProjectSettings.globalize_path("res://").path_join(out_dir)
 	DirAccess.make_dir_recursive_absolute(dir)
 	return dir
 
