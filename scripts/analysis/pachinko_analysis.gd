@@ -27,6 +27,8 @@ var _task := -1
 var _cancelled := false
 var _mutex := Mutex.new()
 var _started_usec := 0
+## True in run() with one thread: the work then runs on the calling thread itself.
+var _inline := false
 
 
 func _init(p_plan: AnalysisPlan) -> void:
@@ -36,6 +38,7 @@ func _init(p_plan: AnalysisPlan) -> void:
 ## Runs the whole analysis on the calling thread and `plan.threads` threads; returns the
 ## tally, or null with an error for a plan that cannot run.
 func run() -> AnalysisTally:
+	_inline = plan.threads <= 1
 	if not start():
 		return null
 	while not poll():
@@ -128,15 +131,18 @@ func tally() -> AnalysisTally:
 	return merged
 
 
-# Runs `job(index)` for index 0..count-1: on this thread for one thread, else as one
-# high-priority group task (low-priority tasks get a single thread on two cores).
+# Runs `job(index)` for index 0..count-1: on this thread for a blocking one-thread run,
+# else as one high-priority group task (low-priority tasks get a single thread on two
+# cores), so a background run never blocks its caller.
 func _launch(job: Callable, count: int) -> void:
-	if plan.threads <= 1 or count <= 1:
+	if count == 0:
+		return
+	if _inline:
 		for i in count:
 			job.call(i)
 		return
 	_task = WorkerThreadPool.add_group_task(
-		job, count, mini(plan.threads, count), true, "Play analysis"
+		job, count, clampi(plan.threads, 1, count), true, "Play analysis"
 	)
 
 
