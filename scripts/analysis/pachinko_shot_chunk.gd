@@ -37,6 +37,12 @@ var _band_of := PackedInt32Array()
 var _born := PackedInt32Array()
 var _in_field := PackedByteArray()
 var _payouts := PackedInt32Array()
+## The density grid while the chunk runs (the tally's, moved here and back): a member of
+## this object, so the per-ball loops never look another object up. That matters on
+## threads: every access to another object goes through one engine-wide lock in debug
+## builds (the object database check), and two threads then queue on it.
+var _density := PackedInt64Array()
+var _grid := Vector2i.ZERO
 
 
 ## `clear_speed` is LaunchCalibration.clear_speed(plan.level), measured once beforehand on
@@ -77,6 +83,10 @@ static func cell_of(p: Vector2, board_size: Vector2) -> int:
 ## true the run stops early and returns false (the tally then holds only finished shots).
 func run(index: int, cancelled: Callable = Callable()) -> bool:
 	var levels := _plan.chunk_levels(index)
+	_density = tally.density
+	tally.density = PackedInt64Array()
+	_grid = tally.grid_size
+	var in_flight := _plan.in_flight
 	_world = BoardWorldFactory.build(_plan.level)
 	_world.threads = 1
 	_world.ball_contacts = false
@@ -89,7 +99,7 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	var fired := 0
 	var step := 0
 	while fired < levels.size() or _world.ball_count() > 0:
-		while fired < levels.size() and _world.ball_count() < _plan.in_flight:
+		while fired < levels.size() and _world.ball_count() < in_flight:
 			_fire(levels[fired], step)
 			fired += 1
 		tally.ball_steps += _world.ball_count()
@@ -102,8 +112,10 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 		if step % CHECK_EVERY == 0:
 			_drop_stuck(step - max_steps)
 			if cancelled.is_valid() and cancelled.call():
+				tally.density = _density
 				return false
 	tally.steps += step
+	tally.density = _density
 	_world = null
 	return true
 
@@ -136,19 +148,19 @@ func _fire(q: int, step: int) -> void:
 
 func _add_samples(cells: PackedInt32Array) -> void:
 	for c in cells:
-		tally.density[c] += 1
+		_density[c] += 1
 
 
 # Every ball in the world adds one sample to the cell it is in.
 func _sample_density() -> void:
-	var cell := AnalysisPlan.DENSITY_CELL
-	var cols := tally.grid_size.x
-	var rows := tally.grid_size.y
+	var inv_cell := 1.0 / AnalysisPlan.DENSITY_CELL
+	var cols := _grid.x
+	var rows := _grid.y
 	for p: Vector2 in _world.get_positions():
-		var cx := int(p.x / cell)
-		var cy := int(p.y / cell)
+		var cx := int(p.x * inv_cell)
+		var cy := int(p.y * inv_cell)
 		if p.x >= 0.0 and p.y >= 0.0 and cx < cols and cy < rows:
-			tally.density[cy * cols + cx] += 1
+			_density[cy * cols + cx] += 1
 
 
 # Balls out of the rail whose energy cannot lift them to any special pin: drained.

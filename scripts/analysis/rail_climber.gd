@@ -17,6 +17,12 @@ var _last_angle := PackedFloat32Array()
 var _travelled := PackedFloat32Array()
 var _last_vel := PackedVector2Array()
 var _step := 0
+## Per ball id: the density cells it passed (moved into the table at the end). Kept here,
+## with the board's numbers below, so the per-ball loop reads only this object's members
+## (see PachinkoShotChunk._density).
+var _cells: Array[PackedInt32Array] = []
+var _centre := Vector2.ZERO
+var _board_size := Vector2.ZERO
 
 
 func _init(level: BoardLevel, clear_speed: float) -> void:
@@ -27,6 +33,8 @@ func _init(level: BoardLevel, clear_speed: float) -> void:
 ## Climbs `levels`; returns a table with their fates.
 func climb(levels: PackedInt32Array) -> RailExitTable:
 	_table = RailExitTable.new()
+	_centre = _level.ring_center
+	_board_size = _level.size
 	_world = BoardWorldFactory.build(_level)
 	_world.threads = 1
 	_world.ball_contacts = false
@@ -43,7 +51,7 @@ func climb(levels: PackedInt32Array) -> RailExitTable:
 		_last_angle.append(start_angle)
 		_travelled.append(0.0)
 		_last_vel.append(direction * speed)
-		_table.samples[q] = PackedInt32Array()
+		_cells.append(PackedInt32Array())
 		assert(id == _level_of.size() - 1)
 	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)
 	var max_steps := int(RailExitTable.MAX_SECONDS / dt)
@@ -53,6 +61,8 @@ func climb(levels: PackedInt32Array) -> RailExitTable:
 		_follow(dt)
 	for id in _world.get_ids():
 		_table.fate[_level_of[id]] = RailExitTable.Fate.FULL
+	for id in _level_of.size():
+		_table.samples[_level_of[id]] = _cells[id]
 	return _table
 
 
@@ -70,13 +80,11 @@ func _follow(dt: float) -> void:
 	for k in ids.size():
 		var id := ids[k]
 		var q := _level_of[id]
-		var angle := (pos[k] - _level.ring_center).angle()
+		var angle := (pos[k] - _centre).angle()
 		_travelled[id] += wrapf(angle - _last_angle[id], -PI, PI) * sense
 		_last_angle[id] = angle
 		if sample:
-			var cell := PachinkoShotChunk.cell_of(pos[k], _level.size)
-			if cell >= 0:
-				_table.samples[q].append(cell)
+			_sample(id, pos[k])
 		var free := (vel[k] - _last_vel[id] - free_dv).length() < RailExitTable.FREE_FLIGHT_EPS
 		_last_vel[id] = vel[k]
 		if _travelled[id] > past and free:
@@ -86,6 +94,17 @@ func _follow(dt: float) -> void:
 			_table.exit_steps[q] = _step
 			_table.steps[q] = _step
 			_world.remove_ball(id)
+
+
+# Adds the density cell of `p` to ball `id`'s list (the same cells as
+# PachinkoShotChunk.cell_of, worked out here to stay off other objects).
+func _sample(id: int, p: Vector2) -> void:
+	var cx := int(p.x / AnalysisPlan.DENSITY_CELL)
+	var cy := int(p.y / AnalysisPlan.DENSITY_CELL)
+	var cols := maxi(ceili(_board_size.x / AnalysisPlan.DENSITY_CELL), 1)
+	var rows := maxi(ceili(_board_size.y / AnalysisPlan.DENSITY_CELL), 1)
+	if p.x >= 0.0 and p.y >= 0.0 and cx < cols and cy < rows:
+		_cells[id].append(cy * cols + cx)
 
 
 func _on_zone(ball_id: int, zone_index: int) -> void:
