@@ -7,8 +7,11 @@ extends RefCounted
 ## (JSON, PNG), never as code or resources.
 
 const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-## The cache folder (tests point it elsewhere).
-static var folder := "user://analysis"
+## The cache folder.
+const DEFAULT_FOLDER := "user://analysis"
+## Another folder for tests ("" uses DEFAULT_FOLDER). Left at its type's default on purpose:
+## the editor does not run the static initialisers of scripts that are not @tool.
+static var folder_override := ""
 
 
 ## The cache key of an analysis of `plan`'s board with its settings.
@@ -22,7 +25,7 @@ static func key_for(plan: AnalysisPlan) -> String:
 
 ## Stores a report and its heat map under `key`. Returns OK or the file error.
 static func save(key: String, report: Dictionary, heatmap: Image) -> Error:
-	var made := DirAccess.make_dir_recursive_absolute(folder)
+	var made := DirAccess.make_dir_recursive_absolute(folder())
 	if made != OK:
 		return made
 	var file := FileAccess.open(_path(key, "json"), FileAccess.WRITE)
@@ -62,8 +65,13 @@ static func cached_report(level: BoardLevel) -> Dictionary:
 	return load_report(key_for(AnalysisPlan.create(level, AnalysisPlan.EDITOR_SHOTS, 1)))
 
 
+## The folder entries are kept in.
+static func folder() -> String:
+	return folder_override if not folder_override.is_empty() else DEFAULT_FOLDER
+
+
 static func _path(key: String, ext: String) -> String:
-	return folder.path_join("%s.%s" % [key.validate_filename(), ext])
+	return folder().path_join("%s.%s" % [key.validate_filename(), ext])
 
 
 # The fields the overlay and the warnings read, with the types they need.

@@ -8,8 +8,11 @@ const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
 ## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).
 const EXIT_BAD_INPUT := 2
 const EXIT_FAILED := 1
-## Where the reports go, relative to the project folder (tests point it elsewhere).
-static var out_dir := "build/analysis"
+## Where the reports go, relative to the project folder.
+const OUT_DIR := "build/analysis"
+## Another folder for tests ("" uses OUT_DIR; a static initialiser would not run in the
+## editor for a script that is not @tool).
+static var out_dir_override := ""
 
 
 ## Runs the analysis `values` ask for (keys analyze, board, shots, runs, seed, threads);
@@ -25,7 +28,7 @@ static func run(values: Dictionary) -> int:
 	if threads < 1 or threads > 64:
 		return _fail(EXIT_BAD_INPUT, "--threads must be 1 to 64 (got %d)" % threads)
 	var name := "%s_%s" % [game, board_name.get_file().get_basename()]
-	var base := out_dir.path_join(name)
+	var base := _out_rel().path_join(name)
 	var abs_base := _out_dir().path_join(name)
 	var report: Dictionary
 	if game == "maze":
@@ -65,9 +68,13 @@ static func run(values: Dictionary) -> int:
 
 
 static func _out_dir() -> String:
-	var dir := ProjectSettings.globalize_path("res://").path_join(out_dir)
+	var dir := ProjectSettings.globalize_path("res://").path_join(_out_rel())
 	DirAccess.make_dir_recursive_absolute(dir)
 	return dir
+
+
+static func _out_rel() -> String:
+	return out_dir_override if not out_dir_override.is_empty() else OUT_DIR
 
 
 static func _fail(code: int, problem: String) -> int:

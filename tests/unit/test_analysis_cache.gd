@@ -7,8 +7,8 @@ var _saved_folder := ""
 
 
 func before_each() -> void:
-	_saved_folder = AnalysisCache.folder
-	AnalysisCache.folder = TEST_FOLDER
+	_saved_folder = AnalysisCache.folder_override
+	AnalysisCache.folder_override = TEST_FOLDER
 
 
 func after_each() -> void:
@@ -19,7 +19,7 @@ func after_each() -> void:
 	)
 	for file in files:
 		DirAccess.remove_absolute(TEST_FOLDER.path_join(file))
-	AnalysisCache.folder = _saved_folder
+	AnalysisCache.folder_override = _saved_folder
 
 
 func _classic() -> BoardLevel:

@@ -22,12 +22,12 @@ var _saved_dir := ""
 
 
 func before_each() -> void:
-	_saved_dir = AnalyzeCli.out_dir
-	AnalyzeCli.out_dir = "build/test_analysis"
+	_saved_dir = AnalyzeCli.out_dir_override
+	AnalyzeCli.out_dir_override = "build/test_analysis"
 
 
 func after_each() -> void:
-	AnalyzeCli.out_dir = _saved_dir
+	AnalyzeCli.out_dir_override = _saved_dir
 
 
 func test_a_pachinko_run_writes_its_report_and_heat_map() -> void:

@@ -9,15 +9,15 @@ var _saved_folder := ""
 
 
 func before_each() -> void:
-	_saved_folder = AnalysisCache.folder
-	AnalysisCache.folder = TEST_FOLDER
+	_saved_folder = AnalysisCache.folder_override
+	AnalysisCache.folder_override = TEST_FOLDER
 
 
 func after_each() -> void:
 	if DirAccess.dir_exists_absolute(TEST_FOLDER):
 		for file in DirAccess.get_files_at(TEST_FOLDER):
 			DirAccess.remove_absolute(TEST_FOLDER.path_join(file))
-	AnalysisCache.folder = _saved_folder
+	AnalysisCache.folder_override = _saved_folder
 
 
 func _panel() -> AnalysisPanel:
