@@ -56,6 +56,8 @@ func _enter_tree() -> void:
 	_save_dialog = SaveAsDialog.new()
 	_save_dialog.save_confirmed.connect(_save_as_named)
 	EditorInterface.get_base_control().add_child(_save_dialog)
+	_dock.analysis.redraw_needed.connect(update_overlays)
+	_dock.analysis.results_changed.connect(_refresh)
 	_attach_tooling_hook()
 
 
@@ -123,6 +125,7 @@ func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
 	_viewport_control = overlay
 	if _session == null or not is_instance_valid(_node) or not _node.is_inside_tree():
 		return
+	_dock.analysis.draw_over(overlay, _to_screen())
 	BoardOverlay.draw(
 		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
 	)
@@ -213,6 +216,7 @@ func _refresh() -> void:
 	_session.prune_selection()
 	# Validated here, every time: a board opened or selected again shows its problems at once.
 	_issues = BoardValidator.validate(_session.level)
+	_issues.append_array(AnalysisWarnings.cached_issues(_session.level))
 	_focused_issue = mini(_focused_issue, _issues.size() - 1)
 	_dock.show_board(_session, _issues, false, _focused_issue)
 	if is_instance_valid(_node):

@@ -71,8 +71,22 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--replay=build/maze.replay",
 	},
 	{
+		"flag": "--analyze",
+		"command": true,
+		"value": Value.CHOICE,
+		"choices": ["pachinko", "maze"],
+		"placeholder": "GAME",
+		"runs": preload("res://scripts/app/analyze_cli.gd"),
+		"help":
+		(
+			"Play analysis: fire many shots (pachinko) or play many pilot games (maze), print"
+			+ " one JSON line and write it to build/analysis/ (with a heat-map PNG for pachinko)."
+		),
+		"example": "--analyze=pachinko --board=classic --shots=10000 --seed=1 --threads=2",
+	},
+	{
 		"flag": "--board",
-		"for": ["--autoplay"],
+		"for": ["--autoplay", "--analyze"],
 		"value": Value.TEXT,
 		"placeholder": "ID",
 		"default": "classic",
@@ -94,7 +108,7 @@ const FLAGS: Array[Dictionary] = [
 	},
 	{
 		"flag": "--seed",
-		"for": ["--autoplay"],
+		"for": ["--autoplay", "--analyze"],
 		"value": Value.WHOLE,
 		"placeholder": "N",
 		"default": 1,
@@ -116,6 +130,32 @@ const FLAGS: Array[Dictionary] = [
 		"placeholder": "FILE",
 		"help": "Save the autoplay's game as a replay file (play it with --replay=FILE).",
 		"example": "--autoplay=maze --seconds=30 --record=build/maze.replay",
+	},
+	{
+		"flag": "--shots",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "N",
+		"default": 10000,
+		"help": "Shots the pachinko analysis fires, at uniform random power (default 10000).",
+		"example": "--analyze=pachinko --shots=2000",
+	},
+	{
+		"flag": "--runs",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "N",
+		"default": 20,
+		"help": "Games the maze analysis plays in each of easy and hard mode (default 20).",
+		"example": "--analyze=maze --board=catacombs --runs=20",
+	},
+	{
+		"flag": "--threads",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "T",
+		"help": "Worker threads for the analysis (default: every core). Figures do not change.",
+		"example": "--analyze=pachinko --threads=1",
 	},
 ]
 

@@ -38,6 +38,8 @@ var show_frame_counter := false
 var show_ghost := true
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
+## Gamepad rumble and phone vibration when a maze ball knocks a wall or drops into a hole.
+var vibration := true
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
 var bindings := {}
 
@@ -80,6 +82,7 @@ func reset_to_defaults() -> void:
 	show_frame_counter = false
 	show_ghost = true
 	tilt_sensitivity = 1.0
+	vibration = true
 	bindings = default_bindings()
 	changed.emit()
 
@@ -148,6 +151,9 @@ func set_value(key: String, value: Variant) -> void:
 		"tilt_sensitivity":
 			var sensitivity: float = value
 			tilt_sensitivity = clampf(sensitivity, MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
+		"vibration":
+			var on: bool = value
+			vibration = on
 		_:
 			push_error("GameSettings.set_value: unknown setting '%s'" % key)
 			return
@@ -198,7 +204,7 @@ func save_file(path: String) -> Error:
 				"show_ghost": show_ghost
 			}
 		],
-		["controls", {"tilt_sensitivity": tilt_sensitivity}],
+		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
 		["input", input],
 	]
 	var error := IniText.write_file(path, IniText.format(FILE_HEADER % VERSION, sections))
@@ -269,6 +275,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "show_frame_counter", problems)
 	_read_flag(display, "show_ghost", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
+	_read_flag(controls, "vibration", problems)
 	var input: Dictionary = sections.get("input", {})
 	_read_bindings(input, problems)
 	return problems

@@ -72,6 +72,9 @@ var use_zoning := true:
 	set(value):
 		use_zoning = value
 		_geo.dirty = true
+## False lets balls pass through each other (no ball-ball contacts): each ball then moves
+## as if alone, so one world can run many independent shots at once (the play analysis).
+var ball_contacts := true
 ## Worker threads the per-ball stages may use (default: every core; 1 = this thread only).
 ## Any value gives the same, bit-identical results; only the speed changes.
 var threads: int = OS.get_processor_count():
@@ -333,7 +336,10 @@ func step(dt: float) -> void:
 	_last_gravity = gravity
 	_last_friction = rolling_friction
 	_integrate(dt)
-	_pairs.find_pairs(_balls, _geo, _lanes)
+	if ball_contacts:
+		_pairs.find_pairs(_balls, _geo, _lanes)
+	else:
+		_pairs.lane_pairs.clear()
 	var t: PhysicsTuning = tuning
 	_pairs.solve(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
 	if _balls.woken:

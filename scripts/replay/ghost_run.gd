@@ -8,7 +8,7 @@ extends RefCounted
 ## up to that step and then stands still at its finish.
 
 ## Plays the best run in its own world (its balls: `positions()`, drawn by
-## scenes/maze/maze_ghost_view.gd).
+## scenes/maze/maze_ghost_3d.gd).
 var player: ReplayPlayer
 
 

@@ -48,7 +48,9 @@ class TestBadArguments:
 
 	# Each bad line, and a piece the error must contain to name what is wrong.
 	const CASES := [
-		[["--analyze=pachinko"], "unknown flag '--analyze'"],
+		[["--optimise=pachinko"], "unknown flag '--optimise'"],
+		[["--analyze=pinball"], "got 'pinball'"],
+		[["--analyze=pachinko", "--shots=many"], "--shots must be a whole number"],
 		[["--autoplay=maze", "--fast"], "unknown flag '--fast'"],
 		[["--autoplya=maze"], "did you mean --autoplay?"],
 		[["--autoplay=pinball"], "got 'pinball'"],
@@ -78,7 +80,7 @@ class TestBadArguments:
 		assert_false(CliParser.parse(PackedStringArray(["--zzz"])).error.contains("did you mean"))
 
 	func test_bad_flags_exit_2_without_running_anything() -> void:
-		var code := CommandLine.run(PackedStringArray(["--analyze=pachinko"]))
+		var code := CommandLine.run(PackedStringArray(["--optimise=pachinko"]))
 		assert_eq(code, CliFlags.EXIT_USAGE)
 		assert_eq(code, 2)
 

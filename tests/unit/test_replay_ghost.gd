@@ -155,8 +155,8 @@ class TestMazeScreen:
 			_game.call("_process", 1.0 / 60.0)
 		assert_gt(ghost.steps(), 100, "the ghost kept pace with the live game")
 		assert_eq(ghost.positions(), first[ghost.steps()], "where the best run was")
-		var view: Node2D = _game.get("_ghost_view")
-		assert_eq(view.get("_positions"), ghost.positions(), "the ghost view draws them")
+		var view: Node3D = _game.get("_ghost_view")
+		assert_eq(view.get("shown_positions"), ghost.positions(), "the ghost view draws them")
 
 	func test_the_setting_turns_the_ghost_off() -> void:
 		App.settings.set_value("show_ghost", false)

@@ -18,6 +18,10 @@ const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const ProblemsList := preload("res://addons/board_editor/ui/problems_list.gd")
 const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
+const AnalysisPanel := preload("res://addons/board_editor/analysis/analysis_panel.gd")
+
+## The play-analysis section (Analyze button, progress, figures).
+var analysis: AnalysisPanel
 
 var _title: Label
 var _counts: Label
@@ -64,6 +68,8 @@ func _init() -> void:
 	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
 	add_child(_status)
+	analysis = AnalysisPanel.new()
+	add_child(analysis)
 	add_child(HSeparator.new())
 	# The panels scroll on their own, so the problem list below always keeps its room.
 	var scroll := ScrollContainer.new()
@@ -121,6 +127,7 @@ func show_board(
 	session: Session, issues: Array[BoardIssue], node_without_board := false, focused_issue := -1
 ) -> void:
 	var editing := session != null and session.level != null
+	analysis.bind(session.level if editing else null)
 	_play.disabled = not editing
 	_options.visible = editing
 	_properties.visible = editing
