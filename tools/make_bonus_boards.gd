@@ -50,10 +50,10 @@ static func make_fever() -> BoardLevel:
 	_funnel(history, level, Vector2(350, 400), 13.0)
 	var attacker := {"open_seconds": 8.0, "open_catches": 10}
 	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 540), 64.0, 12, attacker)
-	_bonus(history, level, ROLE.TULIP, Vector2(215, 330), 26.0, 4, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(215, 330), 26.0, 3, {})
 	for mouth: Vector2 in [Vector2(150, 470)]:
 		Originals.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
-		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 5, CENTER))
+		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 4, CENTER))
 	return level
 
 

@@ -21,17 +21,21 @@ static func build(plan: AnalysisPlan, tally: AnalysisTally, wall_s: float) -> Di
 	var value := AnalysisTally.total(tally.band_value)
 	var value_sq := AnalysisTally.total(tally.band_value_sq)
 	var pockets: Array[Dictionary] = []
+	# The level's pockets, then the bonus pockets (with their "role").
+	var facts := BonusGeometry.world_pockets(level)
 	for p in tally.pocket_count:
 		var hits := tally.pocket_hits(p)
-		var spec: PocketSpec = level.pockets[p]
+		var fact: Dictionary = facts[p] if p < facts.size() else {}
+		var at: Vector2 = fact.get("position", Vector2.ZERO)
 		(
 			pockets
 			. append(
 				{
 					"id": p,
-					"payout": spec.payout if spec != null else 0,
-					"x": spec.position.x if spec != null else 0.0,
-					"y": spec.position.y if spec != null else 0.0,
+					"role": fact.get("role", "pocket"),
+					"payout": fact.get("payout", 0),
+					"x": at.x,
+					"y": at.y,
 					"hits": hits,
 					"rate": _round(float(hits) / n if n > 0 else 0.0),
 					"ci95": _round(AnalysisStats.rate_half_width(hits, n)),
@@ -43,7 +47,9 @@ static func build(plan: AnalysisPlan, tally: AnalysisTally, wall_s: float) -> Di
 		bands.append(_band(tally, b))
 	var dead: Array[int] = []
 	for p in AnalysisStats.dead_pockets(tally):
-		dead.append(p)
+		# An attacker's lid is shut without the rules' jackpots: never counted dead.
+		if p >= facts.size() or facts[p]["role"] != "attacker":
+			dead.append(p)
 	return {
 		"version": VERSION,
 		"game": "pachinko",

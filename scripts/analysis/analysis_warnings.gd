@@ -22,6 +22,11 @@ static func issues(level: BoardLevel, report: Dictionary) -> Array[BoardIssue]:
 		var p := roundi(AnalysisReport.number(dead, -1.0))
 		var at := level.pockets[p].position if p >= 0 and p < level.pockets.size() else Vector2()
 		var text := "Pocket %d is dead: in %d analysed shots no power reaches it" % [p + 1, shots]
+		var bonus := p - level.pockets.size()
+		if bonus >= 0 and bonus < level.bonus_pockets.size():
+			at = level.bonus_pockets[bonus].position
+			var name := BonusChecks.label(level, bonus)
+			text = "%s is dead: in %d analysed shots no power reaches it" % [name, shots]
 		text += " (under 0.5%% at every power)."
 		BoardIssue.add_to(out, BoardIssue.Severity.WARNING, text, at, "analysis_dead_pocket")
 	var ret := AnalysisReport.number(report.get("return"), 0.0)

@@ -125,7 +125,9 @@ func tally() -> AnalysisTally:
 		if chunk == null:
 			continue
 		if merged == null:
-			merged = AnalysisTally.new(plan.level.pockets.size(), plan.level.size)
+			merged = AnalysisTally.new(
+				BonusGeometry.world_pockets(plan.level).size(), plan.level.size
+			)
 		merged.merge(chunk.tally)
 	_mutex.unlock()
 	return merged

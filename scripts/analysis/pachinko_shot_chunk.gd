@@ -52,9 +52,12 @@ func _init(plan: AnalysisPlan, clear_speed: float, table: RailExitTable = null) 
 	_plan = plan
 	_clear_speed = clear_speed
 	_table = table
-	tally = AnalysisTally.new(plan.level.pockets.size(), plan.level.size)
-	for spec: PocketSpec in plan.level.pockets:
-		_payouts.append(maxi(spec.payout, 0) if spec != null else 0)
+	# The level's pockets and then the bonus pockets (closed: an attacker never catches).
+	var pockets := BonusGeometry.world_pockets(plan.level)
+	tally = AnalysisTally.new(pockets.size(), plan.level.size)
+	for pocket in pockets:
+		var payout: int = pocket["payout"]
+		_payouts.append(payout)
 	_hopeless_y = hopeless_line(plan.level)
 
 
@@ -65,6 +68,7 @@ static func hopeless_line(level: BoardLevel) -> float:
 	for k in mini(level.pins.size(), level.pin_special.size()):
 		if level.pin_special[k] != 0:
 			line = maxf(line, level.pins[k].y + level.pin_radius + level.ball_radius)
+	line = maxf(line, BonusGeometry.lowest_catch_y(level) + level.pin_radius + level.ball_radius)
 	return line + HOPELESS_MARGIN if line > -INF else -INF
 
 

@@ -176,3 +176,16 @@ func test_rules_pay_bonus_catches_and_report_the_counters() -> void:
 	assert_eq(stats["reel_spins"], 1)
 	assert_true(stats.has("jackpots") and stats.has("attacker_paid") and stats.has("tulip_opens"))
 	assert_true(rules.accounting_ok())
+
+
+func test_world_pockets_list_bonus_cups_after_the_levels_pockets() -> void:
+	var level := _bonus_board()
+	level.pockets = [PocketSpec.create(Vector2(350, 600), 22.0, 24.0, 4)]
+	var facts := BonusGeometry.world_pockets(level)
+	assert_eq(facts.size(), 4)
+	assert_eq(facts[0]["role"], "pocket")
+	assert_eq(facts[1]["role"], "start_pocket")
+	assert_eq(facts[1]["payout"], 3)
+	assert_eq(facts[3]["position"], TULIP)
+	assert_eq(BonusGeometry.bonus_index(level, 1), 0, "world pocket 1 is bonus pocket 0")
+	assert_eq(BonusGeometry.lowest_catch_y(level), ATTACKER.y + 32.0)

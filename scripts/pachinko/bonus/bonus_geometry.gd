@@ -84,5 +84,37 @@ static func rim_pins(level: BoardLevel, spec: BonusPocketSpec) -> PackedVector2A
 	return PocketStamp.pins_for(spec.as_pocket(), level.pin_radius, level.ball_radius)
 
 
+## Every pocket the world reports, by world pocket id: the level's pockets, then the bonus
+## pockets, each as {"payout", "position", "role"} ("pocket", "start_pocket", "attacker",
+## "tulip"). For counting catches without the rules (the play analysis).
+static func world_pockets(level: BoardLevel) -> Array[Dictionary]:
+	var out: Array[Dictionary] = []
+	for spec in level.pockets:
+		var at := spec.position if spec != null else Vector2.ZERO
+		out.append(
+			{
+				"payout": maxi(spec.payout, 0) if spec != null else 0,
+				"position": at,
+				"role": "pocket"
+			}
+		)
+	for spec in level.bonus_pockets:
+		var at := spec.position if spec != null else Vector2.ZERO
+		var pays := maxi(spec.payout, 0) if spec != null else 0
+		out.append(
+			{"payout": pays, "position": at, "role": spec.role_key() if spec != null else ""}
+		)
+	return out
+
+
+## The lowest catching pin of the bonus pockets (its y), or -INF for none.
+static func lowest_catch_y(level: BoardLevel) -> float:
+	var lowest := -INF
+	for spec in level.bonus_pockets:
+		if spec != null:
+			lowest = maxf(lowest, spec.position.y + spec.depth)
+	return lowest
+
+
 static func _part(item: int, part: Part, a: Vector2, b: Vector2) -> Dictionary:
 	return {"item": item, "part": part, "a": a, "b": b}
