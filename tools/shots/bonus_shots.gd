@@ -13,7 +13,7 @@ const BOARD := "res://levels/pachinko/fever.board"
 const NAMES: Array[String] = ["pachinko_bonus", "pachinko_jackpot"]
 const FRAME := 1.0 / 60.0
 ## Game seconds a shot may play before it gives up.
-const LIMIT := 900.0
+const LIMIT := 2400.0
 
 
 ## Opens the game on Fever, plays into the moment of `shot_name` and saves it.
@@ -33,7 +33,7 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		printerr("shots: %s: the moment did not come in %d s of play" % [shot_name, LIMIT])
 		return FAILED
 	if shot_name == "pachinko_jackpot":
-		_play_for(rules, 0.7)  # the banner at its height, balls heading for the open lid
+		_play_for(rules, 0.3)  # the banner at its height, balls heading for the open lid
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 
@@ -65,6 +65,7 @@ static func _play_for(rules: PachinkoRules, seconds: float) -> void:
 static func _tick(rules: PachinkoRules, frame: int) -> void:
 	if rules.state != PachinkoRules.State.PLAYING:
 		rules.start_game()
-	if rules.loaded and frame % 36 == 0:
-		rules.fire(15.0 + float(frame * 37 % 85))
+	if rules.loaded and frame % 45 == 0:
+		# Powers spread like a player's (a golden-ratio walk over 5..100).
+		rules.fire(5.0 + fmod(float(frame / 45) * 61.8034, 95.0))
 	rules.advance(FRAME)

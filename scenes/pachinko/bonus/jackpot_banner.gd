@@ -3,7 +3,7 @@ extends Node2D
 ## in the middle, then "ATTACKER OPEN" while it fades. Play goes on underneath: it is drawn
 ## over the balls but takes no input.
 
-const SECONDS := 2.6
+const SECONDS := 3.5
 
 var _center := Vector2.ZERO
 var _radius := 300.0
