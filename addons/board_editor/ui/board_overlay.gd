@@ -8,6 +8,7 @@ const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Draw := preload("res://addons/board_editor/ui/overlay_draw.gd")
 const BoardTool := preload("res://addons/board_editor/tools/board_tool.gd")
+const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 
 ## Grid lines closer than this on screen are not drawn.
 const MIN_GRID_PIXELS := 7.0
@@ -33,6 +34,11 @@ static func draw(
 	for item in session.selection:
 		if Items.is_valid(level, item):
 			_draw_selected(canvas, to_screen, level, item)
+	var arc := session.selected_arc()
+	if not arc.is_empty():
+		var pins: PackedInt32Array = arc["pins"]
+		var ends := PackedVector2Array([level.pins[pins[0]], level.pins[pins[-1]]])
+		Draw.center_mark(canvas, to_screen, PinArc.center_of(arc), ends)
 	for i in issues.size():
 		_draw_issue(canvas, to_screen, issues[i], i == focused_issue)
 	tool.draw(canvas, to_screen)
