@@ -99,6 +99,10 @@ static func _draw_issue(
 ) -> void:
 	var color := Draw.ERROR_COLOR if issue.is_error() else Draw.WARNING_COLOR
 	var at := to_screen * issue.position
+	if focused and issue.area.has_area():
+		# The whole area the problem covers (both items, the ring), as the jump framed it.
+		var box := Rect2(to_screen * issue.area.position, issue.area.size * to_screen.get_scale())
+		Draw.dashed_rect(canvas, box.grow(4.0), Color(color, 0.9))
 	var radius := 11.0 if focused else 8.0
 	canvas.draw_circle(at, radius, Color(color, 0.25))
 	canvas.draw_arc(at, radius, 0.0, TAU, 24, color, 2.0 if focused else 1.5, true)

@@ -107,3 +107,13 @@ static func center_mark(
 	canvas.draw_arc(at, 7.0, 0.0, TAU, 20, color, 2.0, true)
 	canvas.draw_line(at - Vector2(11, 0), at + Vector2(11, 0), color, 2.0)
 	canvas.draw_line(at - Vector2(0, 11), at + Vector2(0, 11), color, 2.0)
+
+
+## A dashed rectangle in screen pixels (a focused problem's area).
+static func dashed_rect(canvas: Control, box: Rect2, color: Color) -> void:
+	var corners := [box.position, Vector2(box.end.x, box.position.y), box.end]
+	corners.append(Vector2(box.position.x, box.end.y))
+	for i in 4:
+		var a: Vector2 = corners[i]
+		var b: Vector2 = corners[(i + 1) % 4]
+		canvas.draw_dashed_line(a, b, color, 2.0, 8.0)
