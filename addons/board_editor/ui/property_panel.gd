@@ -55,6 +55,9 @@ func _init() -> void:
 		add_child(row)
 		_rows[key] = row
 		_fields[key] = spin
+	# The arc's shape first: with a long selection the align buttons are the less often used.
+	_arc_fields = ArcFields.new()
+	add_child(_arc_fields)
 	_arrange = HFlowContainer.new()
 	add_child(_arrange)
 	for entry: Array in ALIGN_BUTTONS:
@@ -62,8 +65,6 @@ func _init() -> void:
 		_arrange_button("Align " + str(entry[0]), tip, align.bind(str(entry[1])))
 	_arrange_button("Space across", "Space them evenly from left to right.", distribute.bind("x"))
 	_arrange_button("Space down", "Space them evenly from top to bottom.", distribute.bind("y"))
-	_arc_fields = ArcFields.new()
-	add_child(_arc_fields)
 
 
 ## Lines the selection up (Arrange.ALIGN_MODES); one undo step.
