@@ -159,10 +159,8 @@ func focus_issue(index: int) -> void:
 	if index >= 0 and index < _issues.size() and is_instance_valid(_node):
 		if _node.is_inside_tree():
 			var area := _node.get_global_transform() * _issues[index].extent()
-			var view := (
-				_viewport_control.size if is_instance_valid(_viewport_control) else Vector2()
-			)
-			ViewFocus.show_area(area, view)
+			if is_instance_valid(_viewport_control):
+				ViewFocus.show_area(area, _viewport_control)
 	update_overlays()
 
 

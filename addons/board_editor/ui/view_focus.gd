@@ -31,20 +31,35 @@ static func zoom_for(current: float, area_size: Vector2, view_size: Vector2) -> 
 	return clampf(zoom, ZOOM_RANGE.x, ZOOM_RANGE.y)
 
 
-## Frames `global_area` (canvas coordinates) in a view of `view_size` screen px.
-static func show_area(global_area: Rect2, view_size: Vector2) -> bool:
+## Frames `global_area` (canvas coordinates) in `view`, the 2D viewport's control (the
+## one the plugin draws its overlay on; its own scroll bars move the view).
+static func show_area(global_area: Rect2, view: Control) -> bool:
+	var view_size := view.size
 	var main := EditorInterface.get_editor_main_screen()
 	var editors := main.find_children("*", "CanvasItemEditor", true, false)
 	if editors.is_empty() or not editors[0].has_method("center_at"):
 		return false
 	var editor: Node = editors[0]
+	var center := global_area.get_center()
+	var zoom := 1.0
 	var widgets := editor.find_children("*", "EditorZoomWidget", true, false)
 	if not widgets.is_empty() and widgets[0].has_method("get_zoom") and view_size.x > 0.0:
 		var widget: Node = widgets[0]
-		var zoom: float = widget.call("get_zoom")
+		zoom = widget.call("get_zoom")
 		var wanted := zoom_for(zoom, global_area.size, view_size)
 		if not is_equal_approx(wanted, zoom):
 			widget.call("set_zoom", wanted)
 			widget.emit_signal("zoom_changed", wanted)
-	editor.call("center_at", global_area.get_center())
+			zoom = wanted
+	# The view's scroll bars hold the canvas point at its top-left corner (Godot's
+	# view_offset): setting them centres the area at the new zoom. `center_at` read a canvas
+	# transform that lags a zoom change and landed thousands of pixels off.
+	var h_bars := view.find_children("*", "HScrollBar", false, false)
+	var v_bars := view.find_children("*", "VScrollBar", false, false)
+	if h_bars.is_empty() or v_bars.is_empty() or view_size.x <= 0.0:
+		editor.call("center_at", center)
+		return true
+	var corner := center - view_size / (2.0 * zoom)
+	(h_bars[0] as ScrollBar).value = corner.x
+	(v_bars[0] as ScrollBar).value = corner.y
 	return true
