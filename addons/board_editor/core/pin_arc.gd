@@ -75,7 +75,8 @@ static func fit(points: PackedVector2Array) -> Dictionary:
 	var first := (widest + 1) % count
 	var order := PackedInt32Array()
 	for k in count:
-		order.append(angles[(first + k) % count][1])
+		var index: int = angles[(first + k) % count][1]
+		order.append(index)
 	var start: float = angles[first][0]
 	var step := (360.0 - widest_gap) / float(count - 1)
 	var closed := absf(widest_gap - step) * deg_to_rad(1.0) * radius <= TOLERANCE

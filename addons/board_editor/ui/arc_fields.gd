@@ -72,7 +72,10 @@ func _on_value_changed(value: float, key: String) -> void:
 		return
 	# The other values stay exact (a field shows them rounded to its step).
 	var shape := _arc.duplicate()
-	shape[key] = int(value) if key == "count" else value
+	if key == "count":
+		shape[key] = roundi(value)
+	else:
+		shape[key] = value
 	var pins: PackedInt32Array = _arc["pins"]
 	var action := EditArcAction.new(_session.level, pins, shape)
 	_session.commit(action)
