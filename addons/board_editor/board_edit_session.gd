@@ -33,6 +33,7 @@ const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const Snapping := preload("res://addons/board_editor/core/snapping.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
+const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 
 ## Tools that make sense on each kind of board.
 const PACHINKO_TOOLS: Array[int] = [
@@ -83,6 +84,9 @@ var clipboard := {}
 var committer: Callable
 ## The plain history used when no committer is set.
 var history := ActionHistory.new()
+# The last selected_arc() answer and what it was computed from (the overlay asks each frame).
+var _arc_for: Array = []
+var _arc: Dictionary = {}
 
 
 func _init(on_level: BoardLevel = null) -> void:
@@ -198,3 +202,15 @@ func prune_selection() -> void:
 func selected_pocket() -> int:
 	var pockets := Items.indices_of(selection, Items.Kind.POCKET)
 	return pockets[0] if pockets.size() == 1 else -1
+
+
+## The pin arc the selection forms (PinArc.of_selection), or {}; remembered until the
+## selection or the pins change.
+func selected_arc() -> Dictionary:
+	if level == null:
+		return {}
+	if _arc_for.size() == 2 and _arc_for[0] == selection and _arc_for[1] == level.pins:
+		return _arc
+	_arc = PinArc.of_selection(level, selection)
+	_arc_for = [selection.duplicate(), level.pins]
+	return _arc

@@ -88,9 +88,21 @@ func handle(event: InputEvent, to_board: Transform2D, focused := true) -> bool:
 	return false
 
 
-## True for a board point on the board or within BOARD_MARGIN of it.
+## True for a board point on the board, on any item placed off it, or within BOARD_MARGIN
+## of either: a drag that starts there is the tool's (a box round pins above the board must
+## not fall through to Godot, which would deselect the board and hide the tool).
 func is_over_board(at: Vector2) -> bool:
-	return Rect2(Vector2.ZERO, session.level.size).grow(BOARD_MARGIN).has_point(at)
+	return edit_area(session.level).grow(BOARD_MARGIN).has_point(at)
+
+
+## The board's rectangle grown to hold every pin, wall, hole and ball start, on it or not.
+static func edit_area(level: BoardLevel) -> Rect2:
+	var area := Rect2(Vector2.ZERO, level.size)
+	for points: PackedVector2Array in [level.pins, level.walls, level.holes, level.ball_starts]:
+		for point in points:
+			if point.is_finite():
+				area = area.expand(point)
+	return area
 
 
 ## True for a key the board tool keeps from Godot even when it has no use for it: every key

@@ -155,13 +155,15 @@ func get_issues() -> Array[BoardIssue]:
 
 
 ## Marks problem `index` on the board (with its message) and in the dock's list, and
-## scrolls and zooms the 2D view to it.
+## scrolls and zooms the 2D view to frame it (all of it when it covers several items).
 func focus_issue(index: int) -> void:
 	_focused_issue = index
 	_dock.select_issue(index)
 	if index >= 0 and index < _issues.size() and is_instance_valid(_node):
 		if _node.is_inside_tree():
-			ViewFocus.show_point(_node.get_global_transform() * _issues[index].position)
+			var area := _node.get_global_transform() * _issues[index].extent()
+			if is_instance_valid(_viewport_control):
+				ViewFocus.show_area(area, _viewport_control)
 	update_overlays()
 
 

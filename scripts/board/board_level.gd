@@ -214,6 +214,14 @@ const CURRENT_VERSION := 1
 	set(value):
 		start_ids = value
 		emit_changed()
+## Per item list ("pins", "walls"...): the id the next new item of that list gets. It only
+## ever grows, so an id is never handed out twice in a board's life, even after the item
+## that had the highest id is deleted (ItemIds.next_id; a list missing here starts after its
+## largest id).
+@export var next_ids: Dictionary[String, int] = {}:
+	set(value):
+		next_ids = value
+		emit_changed()
 
 ## Fields of older file layouts that this version no longer declares, kept during a load so
 ## `BoardUpgrader` can convert them. Never saved.
@@ -256,6 +264,7 @@ func duplicate_level() -> BoardLevel:
 		bonus.append(spec.duplicate() as BonusPocketSpec if spec != null else null)
 	copy.bonus_pockets = bonus
 	copy.tuning = tuning.duplicate() as PhysicsTuning if tuning != null else null
+	copy.next_ids = next_ids.duplicate()
 	copy.legacy_fields = legacy_fields.duplicate(true)
 	return copy
 

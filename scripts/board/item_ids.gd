@@ -5,6 +5,8 @@ extends RefCounted
 ## overlap") still names the same two pins after an edit. Ids are per list, 1 and up, kept in
 ## BoardLevel's `*_ids` arrays beside the items and written in the board file (`"id": 17`).
 ## A board made in code, or a file without ids, numbers its items 1, 2, 3... in order.
+## New ids come from the board's per-list counter (BoardLevel.next_ids), which never goes
+## back: deleting the item with the highest id, or undoing an add, does not free its id.
 
 ## Item list -> its id array on BoardLevel.
 const LISTS := {
@@ -48,6 +50,15 @@ static func ids_of(level: BoardLevel, list: String) -> PackedInt32Array:
 	return ids
 
 
+## The id the next new item of `list` gets: the board's counter, and never one an item of
+## the list already has (a hand-edited file may hold a counter lower than its ids).
+static func next_id(level: BoardLevel, list: String) -> int:
+	var largest := 0
+	for i in count(level, list):
+		largest = maxi(largest, of(level, list, i))
+	return maxi(_counter(level, list), largest + 1)
+
+
 ## Makes every id array match its list: missing, zero or repeated ids get fresh numbers.
 static func fill(level: BoardLevel) -> void:
 	for list: String in LISTS:
@@ -55,7 +66,7 @@ static func fill(level: BoardLevel) -> void:
 		var total := count(level, list)
 		ids.resize(total)
 		var seen := {}
-		var fresh := _largest(ids) + 1
+		var fresh := maxi(_largest(ids) + 1, _counter(level, list))
 		var changed := false
 		for i in total:
 			if ids[i] <= 0 or seen.has(ids[i]):
@@ -66,10 +77,13 @@ static func fill(level: BoardLevel) -> void:
 		if changed or ids.size() != ids_of(level, list).size():
 			var id_field: String = LISTS[list]
 			level.set(id_field, ids)
+		if changed:
+			_advance(level, list, fresh)
 
 
 ## After an edit changed a list's length: items still at a position they had `before` (a
-## BoardFieldCopy capture of the lists and their ids) keep their id, new ones get fresh ids.
+## BoardFieldCopy capture of the lists and their ids) keep their id, new ones get fresh ids
+## from the board's counter, which moves past them.
 ## Pockets keep theirs by object, so a pocket re-stamped or moved is still itself.
 static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 	for list: String in LISTS:
@@ -90,7 +104,7 @@ static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 			var waiting: Array = free.get_or_add(old_keys[i], [])
 			waiting.append(had[i])
 		var ids := PackedInt32Array()
-		var fresh := _largest(had) + 1
+		var fresh := maxi(_largest(had) + 1, _counter(level, list))
 		for key: Variant in new_keys:
 			var waiting: Array = free.get(key, [])
 			if not waiting.is_empty():
@@ -100,6 +114,37 @@ static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 				ids.append(fresh)
 				fresh += 1
 		level.set(id_field, ids)
+		_advance(level, list, fresh)
+
+
+## The counters a board file has to keep: list -> next id, only for lists whose counter is
+## past their largest id + 1 (the top item was deleted); every other list's counter follows
+## from its ids, so an unchanged board writes no counter line.
+static func counters_to_save(level: BoardLevel) -> Dictionary[String, int]:
+	var saved: Dictionary[String, int] = {}
+	for list: String in LISTS:
+		var largest := 0
+		for i in count(level, list):
+			largest = maxi(largest, of(level, list, i))
+		var next := next_id(level, list)
+		if next > largest + 1:
+			saved[list] = next
+	return saved
+
+
+# The stored counter of `list` (1 when the board has none).
+static func _counter(level: BoardLevel, list: String) -> int:
+	var next: int = level.next_ids.get(list, 1)
+	return next
+
+
+# Moves the counter of `list` up to `next` (never down).
+static func _advance(level: BoardLevel, list: String, next: int) -> void:
+	if next <= _counter(level, list):
+		return
+	var counters := level.next_ids.duplicate()
+	counters[list] = next
+	level.next_ids = counters
 
 
 # What identifies an item across an edit: its position (a wall: both ends), a pocket its object.

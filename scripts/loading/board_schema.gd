@@ -87,6 +87,12 @@ const OPTIONAL_ITEM_FIELDS := {
 	"start_pockets": {"symbols": ["int", 2, 9]},
 	"attackers": {"open_seconds": ["float", 1.0, 30.0], "open_catches": ["int", 1, 50]},
 }
+## The optional header field holding the id counters: `{"next_ids": {"pins": 626}}`, list
+## name -> the id its next new item gets (BoardLevel.next_ids). Written only for a list whose
+## counter is past its largest id + 1; a counter at or below an id in use is raised on load.
+const NEXT_IDS_FIELD := "next_ids"
+## The range of one counter.
+const NEXT_ID_SPEC := ["int", 1, ItemIds.MAX_ID + 1]
 ## The key an item line uses for each list: `{"pin": {"x": 1, "y": 2}}` goes to "pins".
 const ITEM_KEYS := {
 	"pin": "pins",

@@ -9,6 +9,8 @@ extends RefCounted
 ## another file.
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
+## Top-level fields besides the kind's own (board_schema.gd) and its item lists.
+const OTHER_FIELDS: Array[String] = ["tuning", Schema.NEXT_IDS_FIELD]
 
 
 ## {"level": BoardLevel} or {"error": "what is wrong"} (the caller adds the file name).
@@ -89,7 +91,7 @@ static func _check_fields(data: Dictionary) -> String:
 	var fields := Schema.fields_for(kind)
 	var lists := Schema.lists_for(kind)
 	for key: Variant in data.keys():
-		if not fields.has(key) and not lists.has(key) and key != "tuning":
+		if not fields.has(key) and not lists.has(key) and not key in OTHER_FIELDS:
 			return 'unknown field "%s" for a %s board' % [key, kind]
 	for field: String in fields:
 		if not data.has(field):
@@ -102,7 +104,25 @@ static func _check_fields(data: Dictionary) -> String:
 		var problem := _check_list(list, data.get(list, []))
 		if not problem.is_empty():
 			return problem
+	var counters_problem := _check_counters(data.get(Schema.NEXT_IDS_FIELD, {}), lists)
+	if not counters_problem.is_empty():
+		return counters_problem
 	return _check_tuning(data.get("tuning", {}))
+
+
+# The optional id counters: an object of the board's list names and whole numbers.
+static func _check_counters(value: Variant, lists: Array[String]) -> String:
+	var field: String = Schema.NEXT_IDS_FIELD
+	if not value is Dictionary:
+		return '"%s" must be an object { ... }' % field
+	var counters: Dictionary = value
+	for key: Variant in counters.keys():
+		if not key in lists:
+			return '"%s" names "%s", which is not an item list of this board' % [field, key]
+		var problem := Schema.check_value(counters[key], Schema.NEXT_ID_SPEC)
+		if not problem.is_empty():
+			return '"%s" "%s" %s' % [field, key, problem]
+	return ""
 
 
 static func _check_list(list: String, value: Variant) -> String:
@@ -186,6 +206,11 @@ static func _build(data: Dictionary) -> BoardLevel:
 		level.walls = _points(walls, ["ax", "ay", "bx", "by"])
 		level.ball_starts = _points(ball_starts, ["x", "y"])
 		level.holes = _points(holes, ["x", "y"])
+	var counters: Dictionary = data.get(Schema.NEXT_IDS_FIELD, {})
+	var next_ids: Dictionary[String, int] = {}
+	for list: Variant in counters:
+		next_ids[str(list)] = _int_of(counters[list])
+	level.next_ids = next_ids
 	for list: String in ItemIds.LISTS:
 		var ids := PackedInt32Array()
 		for item: Dictionary in data.get(list, []):

@@ -28,6 +28,9 @@ static func write(level: BoardLevel) -> String:
 			continue
 		lines.append('{"%s": %s}' % [field, _value(level.get(field))])
 	lines.append('{"tuning": %s}' % _tuning(level.tuning))
+	var counters := ItemIds.counters_to_save(level)
+	if not counters.is_empty():
+		lines.append('{"%s": %s}' % [Schema.NEXT_IDS_FIELD, _counters(counters)])
 	if level.is_pachinko():
 		_append_items(lines, "pin", _pin_items(level), _ids(level, "pins"))
 		_append_items(lines, "pocket", _pocket_items(level), _ids(level, "pockets"))
@@ -80,6 +83,15 @@ static func _tuning(tuning: PhysicsTuning) -> String:
 		else:
 			text = JSON.stringify(value)
 		parts.append('"%s": %s' % [name, text])
+	return "{" + ", ".join(parts) + "}"
+
+
+# `{"pins": 626, "walls": 40}` in ItemIds.LISTS order, so the same board gives the same text.
+static func _counters(counters: Dictionary[String, int]) -> String:
+	var parts := PackedStringArray()
+	for list: String in ItemIds.LISTS:
+		if counters.has(list):
+			parts.append('"%s": %d' % [list, counters[list]])
 	return "{" + ", ".join(parts) + "}"
 
 

@@ -190,7 +190,13 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 		for j in i:
 			if s.distance_to(level.ball_starts[j]) < level.ball_radius * 2.0:
 				var text := "Ball starts %d and %d overlap: the balls would spawn inside each other."
-				BoardIssue.add_to(issues, ERROR, text % [j, i], s, "starts_overlap")
+				var ids := [
+					ItemIds.of(level, "ball_starts", j), ItemIds.of(level, "ball_starts", i)
+				]
+				var both := BoardIssue.around(
+					s, level.ball_radius, level.ball_starts[j], level.ball_radius
+				)
+				BoardIssue.add_covering(issues, ERROR, text % ids, s, "starts_overlap", both)
 	for h in level.holes.size():
 		var p := level.holes[h]
 		if not p.is_finite() or not area.has_point(p):
@@ -202,12 +208,13 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				"bad_hole"
 			)
 		elif p.distance_to(level.goal_center) < level.goal_radius + level.hole_radius:
-			BoardIssue.add_to(
+			BoardIssue.add_covering(
 				issues,
 				WARNING,
 				"Black hole %d overlaps the goal." % ItemIds.of(level, "holes", h),
 				p,
-				"hole_in_goal"
+				"hole_in_goal",
+				BoardIssue.around(p, level.hole_radius, level.goal_center, level.goal_radius)
 			)
 
 
@@ -215,7 +222,7 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 	var fill := MazeFlood.new(level, false)
 	for i in level.ball_starts.size():
 		if not fill.reaches_goal(level.ball_starts[i]):
-			BoardIssue.add_to(
+			BoardIssue.add_covering(
 				issues,
 				ERROR,
 				(
@@ -223,14 +230,17 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 					% ItemIds.of(level, "ball_starts", i)
 				),
 				level.ball_starts[i],
-				"start_cannot_reach_goal"
+				"start_cannot_reach_goal",
+				BoardIssue.around(
+					level.ball_starts[i], level.ball_radius, level.goal_center, level.goal_radius
+				)
 			)
 	if level.holes.is_empty():
 		return
 	var hard := MazeFlood.new(level, true, fill.free)
 	for i in level.ball_starts.size():
 		if fill.reaches_goal(level.ball_starts[i]) and not hard.reaches_goal(level.ball_starts[i]):
-			BoardIssue.add_to(
+			BoardIssue.add_covering(
 				issues,
 				WARNING,
 				(
@@ -238,7 +248,10 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 					% ItemIds.of(level, "ball_starts", i)
 				),
 				level.ball_starts[i],
-				"holes_block_goal"
+				"holes_block_goal",
+				BoardIssue.around(
+					level.ball_starts[i], level.ball_radius, level.goal_center, level.goal_radius
+				)
 			)
 
 
@@ -250,7 +263,7 @@ static func _check_goal_fits(level: BoardLevel, area: Rect2, issues: Array[Board
 		return
 	(
 		BoardIssue
-		. add_to(
+		. add_covering(
 			issues,
 			WARNING,
 			(
@@ -258,7 +271,8 @@ static func _check_goal_fits(level: BoardLevel, area: Rect2, issues: Array[Board
 				% [c.x, c.y, level.goal_radius]
 			),
 			c,
-			"goal_off_board"
+			"goal_off_board",
+			BoardIssue.around(c, level.goal_radius, c, level.goal_radius)
 		)
 	)
 

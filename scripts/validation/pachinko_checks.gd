@@ -49,12 +49,13 @@ static func _check_ring(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		or c.x + r > level.size.x + 0.5
 		or c.y + r > level.size.y + 0.5
 	):
-		BoardIssue.add_to(
+		BoardIssue.add_covering(
 			issues,
 			WARNING,
 			"The ring pokes out of the board's %s area." % level.size,
 			c,
-			"ring_outside_board"
+			"ring_outside_board",
+			BoardIssue.around(c, r, c, r)
 		)
 	return true
 

@@ -168,7 +168,7 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 						continue
 					var mid := (p + pins[j]) * 0.5
 					if d2 < touch2:
-						BoardIssue.add_to(
+						BoardIssue.add_covering(
 							issues,
 							WARNING,
 							(
@@ -176,14 +176,15 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 								% [ItemIds.of(level, "pins", i), ItemIds.of(level, "pins", j)]
 							),
 							mid,
-							"pin_overlap"
+							"pin_overlap",
+							BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
 						)
 					elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
 						# Rim pins of one pocket are meant to be closer than a ball.
 						var gap := sqrt(d2) - touch
 						(
 							BoardIssue
-							. add_to(
+							. add_covering(
 								issues,
 								WARNING,
 								(
@@ -196,7 +197,8 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 									]
 								),
 								mid,
-								"narrow_gap"
+								"narrow_gap",
+								BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
 							)
 						)
 

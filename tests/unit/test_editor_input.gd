@@ -117,3 +117,23 @@ func test_a_click_that_brings_the_focus_back_does_nothing_else() -> void:
 	assert_eq(session.level.pockets.size(), 0, "but it adds no pocket")
 	click(Vector2(300, 400))
 	assert_eq(session.level.pockets.size(), 1, "the next click does")
+
+
+func test_a_box_drag_round_pins_placed_above_the_board_stays_in_the_tool() -> void:
+	var level := pins(2)
+	level.pins = PackedVector2Array([Vector2(100, -90), Vector2(130, -95)])
+	start(level)
+	var press := InputEventMouseButton.new()
+	press.button_index = MOUSE_BUTTON_LEFT
+	press.pressed = true
+	press.position = Vector2(80, -120)  # above the board, beside the pins placed there
+	assert_true(input.handle(press, Transform2D.IDENTITY), "the press is the select tool's")
+	var motion := InputEventMouseMotion.new()
+	motion.position = Vector2(150, -70)
+	motion.button_mask = MOUSE_BUTTON_MASK_LEFT
+	assert_true(input.handle(motion, Transform2D.IDENTITY))
+	press.pressed = false
+	press.position = motion.position
+	assert_true(input.handle(press, Transform2D.IDENTITY))
+	assert_eq(session.selection.size(), 2, "the box picked both pins")
+	assert_false(input.is_over_board(Vector2(80, -400)), "far from board and items: Godot's")

@@ -20,6 +20,19 @@ func _pins(count: int) -> BoardLevel:
 	return level
 
 
+# A board the reader accepts, with `count` pins in a row.
+func _saveable_pins(count: int) -> BoardLevel:
+	var level := NewBoard.make(BoardLevel.Kind.PACHINKO)
+	var pins := PackedVector2Array()
+	for i in count:
+		pins.append(Vector2(200 + i * 20, 200))
+	level.pins = pins
+	level.pin_pocket.resize(count)
+	level.pin_pocket.fill(-1)
+	level.pin_special.resize(count)
+	return level
+
+
 func test_ids_survive_deleting_a_neighbour_and_undo_brings_it_back() -> void:
 	var session := Session.new(_pins(5))
 	var level := session.level
@@ -73,6 +86,72 @@ func test_repeated_ids_in_a_file_are_renumbered() -> void:
 	level.pin_ids = PackedInt32Array([7, 7, 0])
 	ItemIds.fill(level)
 	assert_eq(level.pin_ids, PackedInt32Array([7, 8, 9]))
+
+
+func test_deleting_the_highest_item_never_frees_its_id() -> void:
+	var session := Session.new(_saveable_pins(5))
+	var level := session.level
+	session.select([Items.make(Items.Kind.PIN, 4)] as Array[Vector2i])
+	Commands.delete_selection(session)
+	assert_string_contains(Writer.write(level), '{"next_ids": {"pins": 6}}')
+	_add_pin(session, Vector2(300, 300))
+	assert_eq(ItemIds.of(level, "pins", 4), 6, "pin 5 was deleted: the new pin is 6, not 5")
+	assert_false(Writer.write(level).contains("next_ids"), "6 is in use: no line needed")
+	session.select([Items.make(Items.Kind.PIN, 4)] as Array[Vector2i])
+	Commands.delete_selection(session)
+	var read: Dictionary = Reader.read(Writer.write(level))
+	var back: BoardLevel = read.get("level")
+	assert_not_null(back, str(read.get("error", "")))
+	if back == null:
+		return
+	assert_eq(ItemIds.next_id(back, "pins"), 7, "the counter survives a save and a load")
+	var reopened := Session.new(back)
+	_add_pin(reopened, Vector2(320, 300))
+	assert_eq(ItemIds.of(back, "pins", 4), 7, "pin 6 is gone too: the next pin is 7")
+
+
+func test_undo_of_an_add_keeps_the_id_used_and_redo_gives_it_back() -> void:
+	var session := Session.new(_pins(3))
+	var level := session.level
+	_add_pin(session, Vector2(300, 300))
+	assert_eq(ItemIds.of(level, "pins", 3), 4)
+	session.history.undo()
+	session.history.redo()
+	assert_eq(ItemIds.of(level, "pins", 3), 4, "a redo brings the pin back as pin 4")
+	session.history.undo()
+	_add_pin(session, Vector2(320, 300))
+	assert_eq(ItemIds.of(level, "pins", 3), 5, "id 4 was handed out once: the next add is 5")
+
+
+func test_a_board_whose_counter_follows_its_ids_writes_no_counter_line() -> void:
+	var level := _pins(4)
+	ItemIds.fill(level)
+	assert_false(Writer.write(level).contains("next_ids"))
+
+
+func test_counters_in_a_file_are_checked() -> void:
+	var text := Writer.write(_saveable_pins(3))
+	var cases := {
+		'{"next_ids": [4]}': '"next_ids" must be an object',
+		'{"next_ids": {"pegs": 4}}': '"pegs", which is not an item list',
+		'{"next_ids": {"walls": 4}}': '"walls", which is not an item list',
+		'{"next_ids": {"pins": 0}}': "must be between 1 and",
+		'{"next_ids": {"pins": 2.5}}': "must be a whole number",
+	}
+	for line: String in cases:
+		var read: Dictionary = Reader.read(text + line + "\n")
+		assert_false(read.has("level"), line)
+		assert_string_contains(str(read.get("error", "")), cases[line])
+	var low: BoardLevel = Reader.read(text + '{"next_ids": {"pins": 2}}\n').get("level")
+	assert_not_null(low, "a counter below the ids in use is not an error")
+	if low != null:
+		assert_eq(ItemIds.next_id(low, "pins"), 4, "it is raised past the largest id")
+
+
+func _add_pin(session: Session, at: Vector2) -> void:
+	var data := Items.empty_set()
+	data["pins"] = PackedVector2Array([at])
+	session.commit(AddItemsAction.new(session.level, data, "Add pin"))
 
 
 func _has_message(level: BoardLevel, text: String) -> bool:

@@ -93,3 +93,27 @@ static func board_arc(
 		var angle := lerpf(from, to, float(i) / float(steps))
 		points.append(to_screen * (center + Vector2.from_angle(angle) * radius))
 	canvas.draw_polyline(points, color, width, true)
+
+
+## An arc's centre mark: a cross in a ring, and dashed spokes to the arc's two ends.
+static func center_mark(
+	canvas: Control, to_screen: Transform2D, center: Vector2, ends: PackedVector2Array
+) -> void:
+	var at := to_screen * center
+	var color := Color(1.0, 0.85, 0.3)
+	for spoke_end in ends:
+		canvas.draw_dashed_line(at, to_screen * spoke_end, Color(color, 0.7), 1.5, 6.0)
+	canvas.draw_circle(at, 7.0, Color(0.05, 0.05, 0.08, 0.6))
+	canvas.draw_arc(at, 7.0, 0.0, TAU, 20, color, 2.0, true)
+	canvas.draw_line(at - Vector2(11, 0), at + Vector2(11, 0), color, 2.0)
+	canvas.draw_line(at - Vector2(0, 11), at + Vector2(0, 11), color, 2.0)
+
+
+## A dashed rectangle in screen pixels (a focused problem's area).
+static func dashed_rect(canvas: Control, box: Rect2, color: Color) -> void:
+	var corners := [box.position, Vector2(box.end.x, box.position.y), box.end]
+	corners.append(Vector2(box.position.x, box.end.y))
+	for i in 4:
+		var a: Vector2 = corners[i]
+		var b: Vector2 = corners[(i + 1) % 4]
+		canvas.draw_dashed_line(a, b, color, 2.0, 8.0)

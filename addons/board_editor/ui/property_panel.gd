@@ -1,7 +1,8 @@
 @tool
 extends VBoxContainer
 ## The dock's "Selection" panel: exact numbers for the one selected item (ItemProperties),
-## each change one undo step; with several items selected, their count.
+## each change one undo step; with several items selected, their count, align and space
+## buttons, and for pins on an arc the arc's shape (ArcFields).
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -9,6 +10,7 @@ const ItemProperties := preload("res://addons/board_editor/core/item_properties.
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const Arrange := preload("res://addons/board_editor/core/arrange.gd")
 const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
+const ArcFields := preload("res://addons/board_editor/ui/arc_fields.gd")
 
 ## Align buttons: [label, Arrange mode, tooltip].
 const ALIGN_BUTTONS := [
@@ -25,6 +27,7 @@ var _title: Label
 var _rows: Dictionary[String, HBoxContainer] = {}
 var _fields: Dictionary[String, SpinBox] = {}
 var _arrange: HFlowContainer
+var _arc_fields: ArcFields
 
 
 func _init() -> void:
@@ -52,6 +55,9 @@ func _init() -> void:
 		add_child(row)
 		_rows[key] = row
 		_fields[key] = spin
+	# The arc's shape first: with a long selection the align buttons are the less often used.
+	_arc_fields = ArcFields.new()
+	add_child(_arc_fields)
 	_arrange = HFlowContainer.new()
 	add_child(_arrange)
 	for entry: Array in ALIGN_BUTTONS:
@@ -87,11 +93,15 @@ func _arrange_button(text: String, tooltip: String, action: Callable) -> void:
 ## Shows `session`'s selection and edits it from now on.
 func bind(session: Session) -> void:
 	_session = session
+	_arc_fields.bind(session)
 	refresh()
 
 
-## The field for `key` (tests and the screenshot hook type into it).
+## The field for `key` (tests and the screenshot hook type into it); arc fields are
+## "arc_" + a PinArc key ("arc_radius").
 func field(key: String) -> SpinBox:
+	if key.begins_with("arc_"):
+		return _arc_fields.field(key.trim_prefix("arc_"))
 	return _fields[key]
 
 
@@ -108,6 +118,12 @@ func refresh() -> void:
 		_title.text = "Nothing selected: click an item with the Select tool (Q)."
 	else:
 		_title.text = "%d items selected: align or space them." % _session.selection.size()
+	var arc := _session.selected_arc() if _session != null else {}
+	if not arc.is_empty():
+		_title.text = (
+			"An arc of %d pins: shape it below, or align or space them." % _session.selection.size()
+		)
+	_arc_fields.show_arc(arc)
 	_arrange.visible = _session != null and _session.selection.size() >= 2
 	for key: String in _rows:
 		_rows[key].visible = values.has(key)
