@@ -92,7 +92,7 @@ static func make_pachinko() -> BoardLevel:
 	level.rail_end_deg = -105.0
 	level.gutter_start_deg = 60.0
 	level.gutter_end_deg = 120.0
-	level.gutter_bounces = 6
+	level.gutter_bounces = 7
 	level.pin_radius = 1.5
 	level.cup_start_balls = 25
 	var pockets: Array[PocketSpec] = []

@@ -78,6 +78,11 @@ func _process(delta: float) -> void:
 		stats_panel.show_stats(rules.stats())
 
 
+func _notification(what: int) -> void:
+	if what == NOTIFICATION_PAUSED and rules != null:
+		_controls.let_go(rules)
+
+
 func _input(event: InputEvent) -> void:
 	if rules != null and _controls.handle_pointer(rules, event, self):
 		get_viewport().set_input_as_handled()

@@ -57,6 +57,16 @@ func handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
 	return false
 
 
+## Drops any drawback without firing. Called when the game pauses: a key or button let go
+## while paused sends its release to no one, so without this the charge would go on
+## climbing after the pause and the next press would be ignored.
+func let_go(rules: PachinkoRules) -> void:
+	if _source != Source.NONE:
+		rules.cancel_draw()
+	_source = Source.NONE
+	_peak = 0.0
+
+
 ## Called every frame: a held key keeps charging.
 func poll(rules: PachinkoRules, delta: float) -> void:
 	if _source == Source.KEY:
