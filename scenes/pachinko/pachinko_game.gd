@@ -61,6 +61,10 @@ func _ready() -> void:
 		)
 	)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
+	launcher.handle_pressed.connect(_on_handle_pressed)
+	launcher.handle_turned.connect(
+		func(notches: float) -> void: _controls.turn_handle(rules, notches)
+	)
 	get_viewport().size_changed.connect(_layout)
 	_new_rules()
 	_layout()
@@ -115,6 +119,7 @@ func _new_rules() -> void:
 	rules.state_changed.connect(_on_state_changed)
 	rules.cup_changed.connect(_on_cup_changed)
 	rules.power_changed.connect(_on_power_changed)
+	rules.handle.changed.connect(launcher.set_handle)
 	rules.ball_loaded.connect(_on_loaded_changed)
 	rules.ball_launched.connect(_on_ball_launched)
 	rules.ball_won.connect(_on_ball_won)
@@ -129,11 +134,19 @@ func _new_rules() -> void:
 	cup.set_count(0)
 	launcher.set_power(0.0, 0.0)
 	launcher.set_loaded(false)
-	var charge_key := PachinkoInput.key_name(&"launch_charge", "the charge key")
-	launcher.set_hint(
-		(
-			"Press the red grip and\ndrag it up to draw back,\nor hold %s.\nLet go to fire."
-			% charge_key
+	launcher.set_handle(false, rules.handle.power)
+	(
+		launcher
+		. set_hint(
+			(
+				"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial\nor %s; %s / %s turn it."
+				% [
+					PachinkoInput.key_name(&"launch_charge", "the charge key"),
+					PachinkoInput.key_name(&"launch_handle", "the handle key"),
+					PachinkoInput.key_name(&"handle_weaker", "?"),
+					PachinkoInput.key_name(&"handle_stronger", "?"),
+				]
+			)
 		)
 	)
 	_show_notes()
@@ -189,6 +202,12 @@ func _on_flipper_pressed(at: Vector2) -> void:
 		rules.start_game()
 		return
 	_controls.begin_drag(rules, at)
+
+
+func _on_handle_pressed(at: Vector2) -> void:
+	if rules.state != PachinkoRules.State.PLAYING:
+		rules.start_game()
+	_controls.begin_handle_drag(rules, at)
 
 
 func _on_state_changed(state: PachinkoRules.State) -> void:

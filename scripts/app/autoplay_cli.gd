@@ -28,7 +28,7 @@ static func run(values: Dictionary) -> int:
 	if game == "maze":
 		result = script.call("run", loaded.level, seconds, values["seed"], values["hard"])
 	else:
-		result = script.call("run", loaded.level, seconds, values["seed"])
+		result = script.call("run", loaded.level, seconds, values["seed"], values["handle"])
 	var report := {"ok": true, "game": game, "board": loaded.level.board_id, "seed": values["seed"]}
 	report.merge(result)
 	print(JSON.stringify(report))

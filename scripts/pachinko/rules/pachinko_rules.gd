@@ -42,6 +42,7 @@ const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
 const Ledger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
 const StuckWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.gd")
 const PocketJam := preload("res://scripts/pachinko/rules/pocket_jam.gd")
+const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
 
 ## Power added per second while a key or button is held (full power in 1.25 s).
 const CHARGE_PER_SECOND := 80.0
@@ -63,6 +64,9 @@ var power := 0.0
 var drawing := false
 ## Where every ball went (counters for the stats panel and the autoplay).
 var ledger: Ledger
+## The handle: held, it streams balls at its strength (see launch_handle.gd); its
+## `changed` signal tells the view.
+var handle := LaunchHandle.new()
 
 var _in_play: Dictionary = {}
 var _origin := Vector2.ZERO
@@ -262,6 +266,8 @@ func stats() -> Dictionary:
 
 
 func _after_steps(steps: int) -> void:
+	if steps > 0 and handle.update(steps * _step_seconds) and fire(handle.shot_power(_rng)) >= 0:
+		handle.fired()
 	if steps <= 0 or _in_play.is_empty():
 		return
 	_reconcile()
@@ -315,6 +321,7 @@ func _check_game_over() -> void:
 	if state == State.PLAYING and cup == 0 and not loaded and _in_play.is_empty():
 		drawing = false
 		_set_power(0.0)
+		handle.let_go()
 		_set_state(State.GAME_OVER)
 		game_ended.emit(stats())
 
