@@ -139,7 +139,10 @@ func _new_rules() -> void:
 		launcher
 		. set_hint(
 			(
-				"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial\nor %s; %s / %s turn it."
+				(
+					"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial"
+					+ "\nor %s. Turn it with\n%s / %s."
+				)
 				% [
 					PachinkoInput.key_name(&"launch_charge", "the charge key"),
 					PachinkoInput.key_name(&"launch_handle", "the handle key"),
@@ -245,6 +248,7 @@ func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
 func _on_ball_won(_id: int, pocket: int, payout: int, at: Vector2) -> void:
 	board_view.pockets.celebrate(pocket)
 	board_view.effects.pocket_win(at, payout)
+	cup.pour(payout)
 	sounds.play(SoundBank.POCKET_WIN)
 	launcher.set_loaded(rules.loaded)
 

@@ -129,7 +129,7 @@ func _draw() -> void:
 	for i in lines.size():
 		draw_string(
 			font,
-			Vector2(BAR.end.x + 22.0, BAR.position.y + 22.0 + i * 19.0),
+			Vector2(BAR.end.x + 22.0, BAR.position.y + 6.0 + i * 18.0),
 			lines[i],
 			HORIZONTAL_ALIGNMENT_LEFT,
 			-1,
