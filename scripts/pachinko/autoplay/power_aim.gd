@@ -63,7 +63,9 @@ static func tv_distance(a: Dictionary, b: Dictionary) -> float:
 	for k: String in b:
 		keys[k] = true
 	for k: String in keys:
-		total += absf(float(a.get(k, 0.0)) - float(b.get(k, 0.0)))
+		var share_a: float = a.get(k, 0.0)
+		var share_b: float = b.get(k, 0.0)
+		total += absf(share_a - share_b)
 	return total * 0.5
 
 
@@ -93,7 +95,8 @@ static func _follow(rules: PachinkoRules, power: float) -> Dictionary:
 	if id < 0:
 		return {"entry_x": NAN, "outcome": TIMED_OUT}
 	var on_pin := func(ball: int, pin: int, _speed: float) -> void:
-		if ball == id and is_nan(first_pin[0]):
+		var seen: float = first_pin[0]
+		if ball == id and is_nan(seen):
 			first_pin[0] = rules.level.pins[pin].x
 	var on_won := func(ball: int, pocket: int, _payout: int, _at: Vector2) -> void:
 		if ball == id:
@@ -139,11 +142,13 @@ static func _catch_shares(shots: Array, from: float, to: float) -> Dictionary:
 		if shot["power"] < from or shot["power"] >= to or outcome < 0:
 			continue
 		var key := _outcome_name(outcome)
-		counts[key] = int(counts.get(key, 0)) + 1
+		var so_far: int = counts.get(key, 0)
+		counts[key] = so_far + 1
 		total += 1
 	var shares: Dictionary = {}
 	for key: String in counts:
-		shares[key] = snappedf(float(counts[key]) / float(total), 0.001)
+		var count: int = counts[key]
+		shares[key] = snappedf(float(count) / float(total), 0.001)
 	return shares
 
 
@@ -159,10 +164,13 @@ static func _bins(shots: Array) -> Array:
 			var p: float = shot["power"]
 			if p < from or (p >= to and to < 100.0) or p > to:
 				continue
-			var key := _outcome_name(shot["outcome"])
-			counts[key] = int(counts.get(key, 0)) + 1
-			if not is_nan(shot["entry_x"]):
-				xs += shot["entry_x"]
+			var outcome: int = shot["outcome"]
+			var entry_x: float = shot["entry_x"]
+			var key := _outcome_name(outcome)
+			var so_far: int = counts.get(key, 0)
+			counts[key] = so_far + 1
+			if not is_nan(entry_x):
+				xs += entry_x
 				n += 1
 		var mean := "-" if n == 0 else str(roundi(xs / n))
 		bins.append({"from": from, "to": to, "entry_x": mean, "counts": counts})

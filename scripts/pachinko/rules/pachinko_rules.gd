@@ -274,8 +274,9 @@ func _after_steps(steps: int) -> void:
 	var seconds := steps * _step_seconds
 	var jammed := _jam.update(level, world, _in_play.keys(), seconds)
 	for id: int in jammed:
+		var pocket: int = jammed[id]
 		world.remove_ball(id)
-		_on_ball_pocketed(id, jammed[id])
+		_on_ball_pocketed(id, pocket)
 	for id in _watcher.update(world, _in_play.keys(), seconds):
 		_nudge(id)
 
