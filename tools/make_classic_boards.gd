@@ -89,10 +89,10 @@ static func make_pachinko() -> BoardLevel:
 	level.ring_radius = 330.0
 	level.rail_width = 20.0
 	level.rail_start_deg = 40.0
-	level.rail_end_deg = -105.0
+	level.rail_end_deg = LaunchRail.AIMING_END_DEG
 	level.gutter_start_deg = 60.0
 	level.gutter_end_deg = 120.0
-	level.gutter_bounces = 6
+	level.gutter_bounces = 7
 	level.pin_radius = 1.5
 	level.cup_start_balls = 25
 	var pockets: Array[PocketSpec] = []
@@ -117,6 +117,11 @@ static func make_pachinko() -> BoardLevel:
 			)
 		)
 	field = PinPatterns.outside_rects(field, keep_out)
+	var clear_lane := PackedVector2Array()
+	for at in field:
+		if not LaunchRail.in_flight_lane(level, at):
+			clear_lane.append(at)
+	field = clear_lane
 	level.pins = field
 	var owners := PackedInt32Array()
 	owners.resize(field.size())

@@ -14,6 +14,9 @@ const Codec := preload("res://scripts/app/input_event_codec.gd")
 const AXIS_THRESHOLD := 0.6
 const ACTION_NAMES := {
 	"launch_charge": "Pachinko: launch (hold to charge)",
+	"launch_handle": "Pachinko: hold the handle (stream)",
+	"handle_stronger": "Pachinko: turn the handle stronger",
+	"handle_weaker": "Pachinko: turn the handle weaker",
 	"tilt_left": "Maze: tilt left",
 	"tilt_right": "Maze: tilt right",
 	"tilt_up": "Maze: tilt up",

@@ -4,6 +4,7 @@ extends Control
 ## actions, mouse and touch into calls on the rules. Sounds and effects follow the rules'
 ## signals.
 
+const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
@@ -66,6 +67,10 @@ func _ready() -> void:
 	add_child(_bonus_view)
 	_bonus_view.attach(board_view, sounds)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
+	launcher.handle_pressed.connect(_on_handle_pressed)
+	launcher.handle_turned.connect(
+		func(notches: float) -> void: _controls.turn_handle(rules, notches)
+	)
 	get_viewport().size_changed.connect(_layout)
 	_new_rules()
 	_layout()
@@ -82,6 +87,11 @@ func _process(delta: float) -> void:
 	if _stats_refresh <= 0.0:
 		_stats_refresh = 0.25
 		stats_panel.show_stats(rules.stats())
+
+
+func _notification(what: int) -> void:
+	if what == NOTIFICATION_PAUSED and rules != null:
+		_controls.let_go(rules)
 
 
 func _input(event: InputEvent) -> void:
@@ -119,6 +129,7 @@ func _new_rules() -> void:
 	rules.state_changed.connect(_on_state_changed)
 	rules.cup_changed.connect(_on_cup_changed)
 	rules.power_changed.connect(_on_power_changed)
+	rules.handle.changed.connect(launcher.set_handle)
 	rules.ball_loaded.connect(_on_loaded_changed)
 	rules.ball_launched.connect(_on_ball_launched)
 	rules.ball_won.connect(_on_ball_won)
@@ -134,11 +145,22 @@ func _new_rules() -> void:
 	cup.set_count(0)
 	launcher.set_power(0.0, 0.0)
 	launcher.set_loaded(false)
-	var charge_key := PachinkoInput.key_name(&"launch_charge", "the charge key")
-	launcher.set_hint(
-		(
-			"Press the red grip and\ndrag it up to draw back,\nor hold %s.\nLet go to fire."
-			% charge_key
+	launcher.set_handle(false, rules.handle.power)
+	(
+		launcher
+		. set_hint(
+			(
+				(
+					"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial"
+					+ "\nor %s. Turn it with\n%s / %s."
+				)
+				% [
+					PachinkoInput.key_name(&"launch_charge", "the charge key"),
+					PachinkoInput.key_name(&"launch_handle", "the handle key"),
+					PachinkoInput.key_name(&"handle_weaker", "?"),
+					PachinkoInput.key_name(&"handle_stronger", "?"),
+				]
+			)
 		)
 	)
 	_show_notes()
@@ -196,6 +218,12 @@ func _on_flipper_pressed(at: Vector2) -> void:
 	_controls.begin_drag(rules, at)
 
 
+func _on_handle_pressed(at: Vector2) -> void:
+	if rules.state != PachinkoRules.State.PLAYING:
+		rules.start_game()
+	_controls.begin_handle_drag(rules, at)
+
+
 func _on_state_changed(state: PachinkoRules.State) -> void:
 	if state == PachinkoRules.State.PLAYING:
 		instructions.visible = false
@@ -217,7 +245,7 @@ func _on_cup_changed(count: int) -> void:
 
 
 func _on_power_changed(power: float) -> void:
-	launcher.set_power(power, rules.flipper_degrees())
+	launcher.set_power(power, LaunchPower.flipper_degrees(rules.power))
 
 
 func _on_loaded_changed() -> void:
@@ -232,6 +260,7 @@ func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
 func _on_ball_won(_id: int, pocket: int, payout: int, at: Vector2) -> void:
 	board_view.pockets.celebrate(pocket)
 	board_view.effects.pocket_win(at, payout)
+	cup.pour(payout)
 	sounds.play(SoundBank.POCKET_WIN)
 	launcher.set_loaded(rules.loaded)
 

@@ -30,7 +30,9 @@ static func run(values: Dictionary) -> int:
 	if game == "maze":
 		result = script.call("run", loaded.level, seconds, values["seed"], values["hard"], recorder)
 	else:
-		result = script.call("run", loaded.level, seconds, values["seed"], recorder)
+		result = script.call(
+			"run", loaded.level, seconds, values["seed"], recorder, values["handle"]
+		)
 	var report := {"ok": true, "game": game, "board": loaded.level.board_id, "seed": values["seed"]}
 	report.merge(result)
 	if recorder != null:

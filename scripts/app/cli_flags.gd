@@ -116,6 +116,19 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--autoplay=pachinko --seed=7",
 	},
 	{
+		"flag": "--handle",
+		"for": ["--autoplay"],
+		"value": Value.WHOLE,
+		"placeholder": "POWER",
+		"default": -1,
+		"help":
+		(
+			"Pachinko: hold the handle at this strength (0-100) for a stream of 100 balls a"
+			+ " minute instead of single shots at random strengths (default: single shots)."
+		),
+		"example": "--autoplay=pachinko --handle=60",
+	},
+	{
 		"flag": "--hard",
 		"for": ["--autoplay"],
 		"value": Value.NONE,

@@ -21,7 +21,14 @@ class TestGoodArguments:
 		assert_eq(parsed.command, "--autoplay")
 		assert_eq(
 			parsed.values,
-			{"autoplay": "pachinko", "board": "classic", "seconds": 60.0, "seed": 7, "hard": true}
+			{
+				"autoplay": "pachinko",
+				"board": "classic",
+				"seconds": 60.0,
+				"seed": 7,
+				"hard": true,
+				"handle": -1
+			}
 		)
 		assert_typeof(parsed.values["seconds"], TYPE_FLOAT)
 		assert_typeof(parsed.values["seed"], TYPE_INT)
@@ -29,7 +36,10 @@ class TestGoodArguments:
 	func test_missing_options_take_the_table_defaults() -> void:
 		var parsed := CliParser.parse(PackedStringArray(["--autoplay=maze"]))
 		assert_eq(parsed.error, "")
-		assert_eq(parsed.values, {"autoplay": "maze", "board": "classic", "seed": 1, "hard": false})
+		assert_eq(
+			parsed.values,
+			{"autoplay": "maze", "board": "classic", "seed": 1, "hard": false, "handle": -1}
+		)
 
 	func test_no_arguments_means_the_normal_game() -> void:
 		var parsed := CliParser.parse(PackedStringArray())
