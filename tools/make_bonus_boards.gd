@@ -41,6 +41,7 @@ static func make_fever() -> BoardLevel:
 	)
 	_rows(history, level, 13, 34.0, 36.0, 130.0)
 	Originals.erase_pins_outside_field(history, level, 22.0)
+	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
 	var windmill := {"kind": "circle", "count": 6, "spacing": 16.0}
 	var spot := Vector2(350, 215)
@@ -69,6 +70,7 @@ static func make_hanami() -> BoardLevel:
 	)
 	_rows(history, level, 17, 28.0, 30.0, 120.0)
 	Originals.erase_pins_outside_field(history, level, 22.0)
+	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
 	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 3})
 	_funnel(history, level, Vector2(265, 450), 13.0)
