@@ -28,6 +28,11 @@ const KEY_ENERGY := 0.37
 const SUN_ENERGY := 0.055
 ## Side of the sun's shadow map, in texels (sharp ball shadows, cheap on software GL).
 const SHADOW_MAP_SIZE := 2048
+## The 3D picture is drawn at this share of the window's resolution and scaled up (the 2D
+## panel beside it stays sharp), smoothed by FXAA instead of MSAA: on software GL (llvmpipe)
+## MSAA alone cost two thirds of every frame, and the pixels drawn set most of the rest.
+## tools/maze_fps.sh measures the choices side by side.
+const RENDER_SCALE := 0.5
 ## Board ids that keep the seed's red balls; every other board rolls steel.
 const SEED_RED_BOARDS: Array[String] = ["maze_classic"]
 
@@ -47,6 +52,7 @@ func _ready() -> void:
 	world_env.environment = _environment()
 	add_child(world_env)
 	RenderingServer.directional_shadow_atlas_set_size(SHADOW_MAP_SIZE, true)
+	_use_render_settings(get_viewport())
 	# Two lights from the same place. The GL Compatibility renderer draws a light that casts
 	# shadows in a pass of its own and adds that pass to the picture after it is converted
 	# for the screen, so a strong shadowed light washes the seed's pale floor out to white.
@@ -79,6 +85,14 @@ func _ready() -> void:
 	_pivot.add_child(_balls)
 	get_viewport().size_changed.connect(_frame)
 	_frame()
+
+
+func _exit_tree() -> void:
+	# the window goes on to other screens: give them back the project's settings
+	var view := get_viewport()
+	view.scaling_3d_scale = 1.0
+	view.screen_space_aa = Viewport.SCREEN_SPACE_AA_DISABLED
+	view.msaa_3d = ProjectSettings.get_setting("rendering/anti_aliasing/quality/msaa_3d")
 
 
 ## Builds the board of `level` (holes shown when `hard`) and the look of its balls.
@@ -183,6 +197,14 @@ static func _ball_band_texture(colour: Color) -> ImageTexture:
 		for x in 64:
 			image.set_pixel(x, y, c)
 	return ImageTexture.create_from_image(image)
+
+
+# The window's 3D drawing as RENDER_SCALE says (see there).
+static func _use_render_settings(view: Viewport) -> void:
+	view.msaa_3d = Viewport.MSAA_DISABLED
+	view.screen_space_aa = Viewport.SCREEN_SPACE_AA_FXAA
+	view.scaling_3d_mode = Viewport.SCALING_3D_MODE_BILINEAR
+	view.scaling_3d_scale = RENDER_SCALE
 
 
 func _environment() -> Environment:

@@ -132,6 +132,24 @@ func test_the_sun_casts_shadows_and_stays_put_while_the_board_tilts() -> void:
 	assert_ne(walls.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF)
 
 
+# Software GL spent two thirds of each frame on MSAA: the 3D board is drawn at a lower
+# resolution with FXAA instead, and the window gets the project's settings back after it.
+func test_the_3d_board_is_drawn_small_without_msaa_and_the_window_is_given_back() -> void:
+	var view := _game.get_viewport()
+	var stage_script: GDScript = _stage().get_script()
+	var scale: float = stage_script.get_script_constant_map()["RENDER_SCALE"]
+	assert_lt(scale, 1.0)
+	assert_eq(view.scaling_3d_scale, scale)
+	assert_eq(view.msaa_3d, Viewport.MSAA_DISABLED)
+	assert_eq(view.screen_space_aa, Viewport.SCREEN_SPACE_AA_FXAA)
+	remove_child(_game)
+	assert_eq(view.scaling_3d_scale, 1.0)
+	assert_eq(view.screen_space_aa, Viewport.SCREEN_SPACE_AA_DISABLED)
+	var msaa: int = ProjectSettings.get_setting("rendering/anti_aliasing/quality/msaa_3d")
+	assert_eq(view.msaa_3d, msaa)
+	_game.free()
+
+
 # Bug 1: at full diagonal tilt a corner of the board dropped through the table's shadow.
 func test_no_tilt_puts_a_corner_of_the_board_through_the_table() -> void:
 	var stage := _stage()
