@@ -7,25 +7,21 @@ extends SceneTree
 ##   MAZE_FPS_ROUNDS=3  MAZE_FPS_FRAMES=40
 
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-## The stage's own shadow map size (the game scripts themselves are loaded once App exists).
-const SHADOW_MAP_SIZE: int = preload("res://scenes/maze/maze_stage.gd").SHADOW_MAP_SIZE
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
 const SCRATCH_SETTINGS := "user://fps_settings.cfg"
 const SCRATCH_SAVE := "user://fps_save.cfg"
 ## Variants: a name and the settings it changes from the game's own ("as shipped" changes
-## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*), shadow_map
-## (texels, 0 = no sun shadows).
-const MSAA_OFF := Viewport.MSAA_DISABLED
-const MSAA_2X := Viewport.MSAA_2X
+## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*),
+## hide (parts not drawn: floor, walls, frame, balls, table, shadows).
 const VARIANTS := [
-	["before (full res, MSAA 2x)", {"scale": 1.0, "msaa": MSAA_2X, "fxaa": false}],
+	["full res, MSAA 2x (GPU path)", {"scale": 1.0, "msaa": Viewport.MSAA_2X}],
 	["as shipped", {}],
 	["scale 0.6", {"scale": 0.6}],
+	["scale 0.67", {"scale": 0.67}],
 	["scale 0.75", {"scale": 0.75}],
-	["full res, FXAA", {"scale": 1.0}],
-	["as shipped, map 1024", {"shadow_map": 1024}],
-	["as shipped, no sun shadow", {"shadow_map": 0}],
+	["full res", {"scale": 1.0}],
+	["no shadows", {"hide": ["shadows"]}],
 ]
 
 var _angle := 0.0
@@ -56,88 +52,69 @@ func _run() -> void:
 		int(OS.get_environment("MAZE_FPS_FRAMES")) if OS.has_environment("MAZE_FPS_FRAMES") else 40
 	)
 	var rates := {}
+	var mains := {}
 	for variant: Array in VARIANTS:
 		rates[variant[0]] = PackedFloat64Array()
+		mains[variant[0]] = PackedFloat64Array()
 	await _frames(20)  # the game starts on the first tilt; let it settle
 	for r in rounds:
 		for variant: Array in VARIANTS:
 			_apply(stage, defaults.merged(variant[1], true))
 			await _frames(4)
-			rates[variant[0]].append(await _measure(frames))
+			var measured := await _measure(frames)
+			rates[variant[0]].append(measured[0])
+			mains[variant[0]].append(measured[1])
 			if r == 0 and OS.has_environment("MAZE_FPS_SHOTS"):
 				await _save_shot(variant[0])
 	_apply(stage, defaults)
 	var size := root.get_visible_rect().size
 	print(
 		(
-			"maze_fps: %dx%d on %s, %d rounds of %d frames, frames per CPU second (median, min-max):"
+			"maze_fps: %dx%d on %s, %d rounds of %d frames"
 			% [size.x, size.y, RenderingServer.get_video_adapter_name(), rounds, frames]
 		)
 	)
+	print("maze_fps:   variant                      frames/CPU s (min-max)   main thread ms/frame")
 	for variant: Array in VARIANTS:
 		var list: PackedFloat64Array = rates[variant[0]]
 		list.sort()
+		var main: PackedFloat64Array = mains[variant[0]]
+		main.sort()
 		print(
 			(
-				"maze_fps:   %-24s %5.1f  (%.1f-%.1f)"
-				% [variant[0], list[list.size() / 2], list[0], list[list.size() - 1]]
+				"maze_fps:   %-28s %5.1f (%.1f-%.1f)      %5.1f"
+				% [variant[0], list[list.size() / 2], list[0], list[-1], main[main.size() / 2]]
 			)
 		)
 	_release()
 	quit(0)
 
 
-func _read_settings(stage: Node3D) -> Dictionary:
-	var sun: DirectionalLight3D = stage.call("sun")
+func _read_settings(_stage: Node3D) -> Dictionary:
 	return {
 		"hide": [],
-		"fxaa": root.screen_space_aa == Viewport.SCREEN_SPACE_AA_FXAA,
-		"shadow_quality":
-		ProjectSettings.get_setting(
-			"rendering/lights_and_shadows/directional_shadow/soft_shadow_filter_quality"
-		),
-		"sky": true,
-		"side": true,
-		"stage": true,
 		"scale": root.scaling_3d_scale,
 		"msaa": root.msaa_3d,
-		"shadow_map": SHADOW_MAP_SIZE if sun.shadow_enabled else 0,
 	}
 
 
 func _apply(stage: Node3D, settings: Dictionary) -> void:
 	root.scaling_3d_scale = settings["scale"]
 	root.msaa_3d = settings["msaa"]
-	root.screen_space_aa = (
-		Viewport.SCREEN_SPACE_AA_FXAA if settings["fxaa"] else Viewport.SCREEN_SPACE_AA_DISABLED
-	)
-	RenderingServer.directional_soft_shadow_filter_set_quality(settings["shadow_quality"])
-	var sun: DirectionalLight3D = stage.call("sun")
-	stage.get_parent().get_node("Side").visible = settings["side"]
-	stage.visible = settings["stage"]
+	var board: Node3D = stage.call("board")
 	var parts := {
-		"floor": stage.call("board").call("part", "floor"),
-		"walls": stage.call("board").call("part", "walls"),
-		"frame": stage.call("board").call("part", "frame"),
-		"balls": stage.call("balls"),
-		"table": stage.get("_table"),
-		"key": stage.get("_key"),
+		"floor": [board.call("part", "floor")],
+		"walls": [board.call("part", "walls")],
+		"frame": [board.call("part", "frame")],
+		"balls": [stage.call("balls")],
+		"table": [stage.get("_table")],
+		"shadows": [board.call("part", "wall_shadows"), board.call("part", "frame_shadow")],
+		"wall_shadows": [board.call("part", "wall_shadows")],
+		"frame_shadow": [board.call("part", "frame_shadow")],
 	}
 	for part: String in parts:
-		(parts[part] as Node3D).visible = not settings["hide"].has(part)
-	for child in stage.get_children():
-		var env := child as WorldEnvironment
-		if env != null:
-			env.environment.reflected_light_source = (
-				Environment.REFLECTION_SOURCE_SKY
-				if settings["sky"]
-				else Environment.REFLECTION_SOURCE_BG
-			)
-			env.environment.background_mode = Environment.BG_COLOR
-	var shadow_map: int = settings["shadow_map"]
-	sun.shadow_enabled = shadow_map > 0
-	if shadow_map > 0:
-		RenderingServer.directional_shadow_atlas_set_size(shadow_map, true)
+		for node: Node3D in parts[part]:
+			node.visible = not settings["hide"].has(part)
 
 
 # Saves the window as build/maze_fps/<variant>.png, to see what a variant looks like.
@@ -149,20 +126,15 @@ func _save_shot(variant_name: String) -> void:
 	root.get_texture().get_image().save_png("%s/%s.png" % [folder, file_name])
 
 
-# Frames per CPU second over `count` frames; prints the main thread's share.
-func _measure(count: int) -> float:
+# [frames per CPU second, CPU ms a frame on the main thread] over `count` frames.
+func _measure(count: int) -> Array[float]:
+	var main_stat := "/proc/self/task/%d/stat" % OS.get_process_id()
 	var cpu_start := _cpu_seconds()
-	var main_start := _cpu_seconds("/proc/self/task/%d/stat" % OS.get_process_id())
+	var main_start := _cpu_seconds(main_stat)
 	await _frames(count)
 	var cpu := maxf(_cpu_seconds() - cpu_start, 0.001)
-	var main := _cpu_seconds("/proc/self/task/%d/stat" % OS.get_process_id()) - main_start
-	print(
-		(
-			"maze_fps: (%.0f ms CPU a frame, %.0f ms of it on the main thread)"
-			% [cpu * 1000.0 / count, main * 1000.0 / count]
-		)
-	)
-	return count / cpu
+	var main := _cpu_seconds(main_stat) - main_start
+	return [count / cpu, main * 1000.0 / count]
 
 
 # Runs `count` frames, tilting round as a player steering would.
