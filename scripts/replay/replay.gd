@@ -90,9 +90,10 @@ static func frame_steps(record: Array, frame: int) -> int:
 
 ## The tilt in hundredths of a degree of frame `frame` of a maze record.
 static func frame_tilt(record: Array, frame: int) -> Vector2i:
-	if record[0] == "tilts":
-		return Vector2i(record[2 + 3 * frame], record[3 + 3 * frame])
-	return Vector2i(record[3], record[4])
+	var at := 2 + 3 * frame if record[0] == "tilts" else 3
+	var x: int = record[at]
+	var y: int = record[at + 1]
+	return Vector2i(x, y)
 
 
 ## "maze" or "pachinko" for a board.

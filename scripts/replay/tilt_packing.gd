@@ -30,7 +30,8 @@ static func encode(numbers: Array) -> String:
 	for index in numbers.size():
 		var value: int = numbers[index]
 		if index >= PER_FRAME and index % PER_FRAME != 0:
-			value -= int(numbers[index - PER_FRAME])
+			var before: int = numbers[index - PER_FRAME]
+			value -= before
 		parts.append(_number_text(_fold(value)))
 	return "".join(parts)
 
