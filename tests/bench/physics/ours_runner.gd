@@ -221,3 +221,29 @@ static func pin_sweep(ball_r: float) -> Dictionary:
 			)
 		)
 	return by_pins
+
+
+## Where one thread's time goes on `scene`: CPU µs per step of each stage (see
+## BallWorld.stage_times()) over `steps` steps past the warm-up, harness rules included.
+static func stage_breakdown(scene: Dictionary, steps: int) -> Dictionary:
+	var w := build_world(scene)
+	w.threads = 1
+	w.profile_cpu_time = true
+	var side := OursSide.new(w)
+	var rng := RandomNumberGenerator.new()
+	rng.seed = RULES_SEED
+	for s: int in steps + WARMUP:
+		if s == WARMUP:
+			w.profile_stages = true
+		w.step(1.0 / float(scene["hz"]))
+		if rules_due(scene["mode"], s + 1):
+			harness_rules(scene["mode"], s + 1, w.get_positions(), rng, side, scene["hz"])
+	return w.stage_times()
+
+
+## Time per step with 4x the pins over the sweep's first row (pins → ball-steps per second).
+static func pin_cost(by_pins: Dictionary) -> float:
+	var speeds: Array = by_pins.values()
+	if speeds.size() < 2:
+		return 0.0
+	return float(speeds[0]) / maxf(float(speeds[speeds.size() - 1]), 1e-9)
