@@ -60,4 +60,5 @@ static func _profile(scene: Dictionary, steps: int, threads: int) -> String:
 	var awake := 0
 	for id: int in w.get_ids():
 		awake += 0 if w.is_ball_asleep(id) else 1
-	return "%s | awake at end %d of %d" % [", ".join(parts), awake, w.ball_count()]
+	var tail := "awake at end %d of %d, state hash %d" % [awake, w.ball_count(), w.state_hash()]
+	return "%s | %s" % [", ".join(parts), tail]
