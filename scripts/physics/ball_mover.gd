@@ -44,8 +44,9 @@ func move_range(from: int, to: int) -> void:
 
 
 ## One ball through the step: friction and the speed cap, then substeps (each: move, then
-## the narrow phase per shape kind), then its contacts, rest, sleep and sensors. The pin
-## candidates are tested inline (a call costs as much as a test); contacts call respond().
+## the narrow phase per shape kind), then its contacts, position, rest, sleep and sensors.
+## One call per ball: the pin candidates are tested and the ball written back inline (a
+## call costs as much as a test); contacts, walls and the rarer rules call out.
 func _move_ball(i: int) -> void:
 	_i = i
 	_p = _pos[i]
@@ -53,16 +54,8 @@ func _move_ball(i: int) -> void:
 	_gone = false
 	_held_a = _contact_a[i]
 	_held_b = _contact_b[i]
-	_cur_a = ContactId.NONE
-	_cur_b = ContactId.NONE
-	_n_a = Vector2.ZERO
-	_n_b = Vector2.ZERO
 	if _friction_against_gravity or _cap_per_axis:
-		if _friction_against_gravity:
-			_v = SpeedRules.friction_against_gravity(_v, _gravity * _dt, _friction_dt)
-		elif _has_friction:
-			_v -= _v.clamp(-_friction_dt, _friction_dt)
-		_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+		_apply_seed_speed_rules()
 	else:
 		if _has_friction:
 			# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
@@ -72,8 +65,7 @@ func _move_ball(i: int) -> void:
 			_v *= _max_speed / sqrt(speed2)
 	if _rad[i] != _r:
 		_set_radius(_rad[i])
-	# Substeps: each moves at most the safe travel (velocity plus the ball-ball push, the
-	# push capped at half the radius).
+	# Substeps of at most the safe travel (velocity plus push, capped at half the radius).
 	var push: Vector2 = _push[i]
 	var push_len := 0.0
 	if push != Vector2.ZERO:
@@ -109,28 +101,13 @@ func _move_ball(i: int) -> void:
 			if d.length_squared() < lim * lim and not _gone:
 				_touch_pin(k, d, lim)
 		if _has_walls and not _gone:
-			# The pins may have moved the ball: the walls of its cell now, if it has any.
-			var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
-				Vector2i.ZERO, _last_cell
-			)
-			var c: int = cell.y * _cols + cell.x
-			if _wall_start[c] < _wall_start[c + 1]:
-				_touch_walls(_wall_start[c], _wall_start[c + 1])
+			_touch_walls_of_cell()
 		if _gone:
 			break
-	_end_ball(i, p_start)
-
-
-## Writes back ball `i` after its substeps: contacts, position, velocity, rest and sleep,
-## then its sensors (which may remove it).
-func _end_ball(i: int, p_start: Vector2) -> void:
-	# A ball touching nothing now or last step has nothing to update: it saves writes for
-	# most of a flowing board.
+	# Write back. A ball touching nothing now or last step keeps its contact slots as they
+	# are: that saves writes for most of a flowing board.
 	if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
-		_contact_a[i] = _cur_a
-		_contact_b[i] = _cur_b
-		_support_a[i] = _n_a
-		_support_b[i] = _n_b
+		_write_contacts(i)
 	_pos[i] = _p
 	_vel[i] = _v
 	# The broad phase's key for next step (see BallStore.cell_keys).
@@ -143,10 +120,45 @@ func _end_ball(i: int, p_start: Vector2) -> void:
 		_rest[i] = 0.0
 	else:
 		_rest_or_sleep(i)
-	if _has_sensors:
-		var id: int = _ids[i]
-		if BallSensors.sense(_g, i, id, p_start, _p, _goal_mask, _zone_mask, events, event_speed):
-			_alive[i] = 0
+	if (
+		_has_sensors
+		and BallSensors.sense(
+			_g, i, _ids[i], p_start, _p, _goal_mask, _zone_mask, events, event_speed
+		)
+	):
+		_alive[i] = 0
+
+
+## Friction and the speed cap under the seed's options (PhysicsTuning.friction_against,
+## speed_cap).
+func _apply_seed_speed_rules() -> void:
+	if _friction_against_gravity:
+		_v = SpeedRules.friction_against_gravity(_v, _gravity * _dt, _friction_dt)
+	elif _has_friction:
+		_v -= _v.clamp(-_friction_dt, _friction_dt)
+	_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+
+
+## Stores the ball's contacts of this step and their normals (its supports next step),
+## then clears them for the next ball. (They are only ever set together, so a ball that
+## touched nothing leaves them clear without a call.)
+func _write_contacts(i: int) -> void:
+	_contact_a[i] = _cur_a
+	_contact_b[i] = _cur_b
+	_support_a[i] = _n_a
+	_support_b[i] = _n_b
+	_cur_a = ContactId.NONE
+	_cur_b = ContactId.NONE
+	_n_a = Vector2.ZERO
+	_n_b = Vector2.ZERO
+
+
+## Narrow phase, walls of the cell the ball is in now (the pins may have moved it).
+func _touch_walls_of_cell() -> void:
+	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+	var c: int = cell.y * _cols + cell.x
+	if _wall_start[c] < _wall_start[c + 1]:
+		_touch_walls(_wall_start[c], _wall_start[c + 1])
 
 
 ## The limits that depend on the ball radius (kept while consecutive balls share one).
