@@ -101,7 +101,7 @@ func _move_ball(i: int) -> void:
 			if d.length_squared() < lim * lim and not _gone:
 				_touch_pin(k, d, lim)
 		if _has_walls and not _gone:
-			_touch_walls_of_cell()
+			_touch_walls()
 		if _gone:
 			break
 	# Write back. A ball touching nothing now or last step keeps its contact slots as they
@@ -153,14 +153,6 @@ func _write_contacts(i: int) -> void:
 	_n_b = Vector2.ZERO
 
 
-## Narrow phase, walls of the cell the ball is in now (the pins may have moved it).
-func _touch_walls_of_cell() -> void:
-	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	var c: int = cell.y * _cols + cell.x
-	if _wall_start[c] < _wall_start[c + 1]:
-		_touch_walls(_wall_start[c], _wall_start[c + 1])
-
-
 ## The limits that depend on the ball radius (kept while consecutive balls share one).
 func _set_radius(r: float) -> void:
 	_r = r
@@ -209,10 +201,13 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 
 
-## Narrow phase, capsule walls: entries k0..k1 of the wall lists (the ball's cell). The
-## deepest contact first, then again (up to three times). At a joint the flat side of one
-## wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
-func _touch_walls(k0: int, k1: int) -> void:
+## Narrow phase, capsule walls of the cell the ball is in now (the pins may have moved
+## it): the deepest contact first, then again (up to three times). At a joint the flat side
+## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
+func _touch_walls() -> void:
+	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+	var k0: int = _wall_start[cell.y * _cols + cell.x]
+	var k1: int = _wall_start[cell.y * _cols + cell.x + 1]
 	for _pass: int in 3:
 		var found := 0
 		var best := -1
@@ -239,25 +234,22 @@ func _touch_walls(k0: int, k1: int) -> void:
 				best_lim = lim
 		if best < 0:
 			return
-		_touch_wall(best, best_q, best_s, best_lim)
+		# The deepest: wall `best` at its closest point best_q (best_s along it).
+		var d: Vector2 = _p - best_q
+		var d2: float = d.length_squared()
+		var nrm := Vector2(0.0, -1.0)
+		if d2 > EPS * EPS:
+			nrm = d / sqrt(d2)
+		elif _wall_inv_len2[best] > 0.0:
+			var wall_ab: Vector2 = _wall_ab[best]
+			nrm = Vector2(wall_ab.y, -wall_ab.x).normalized()
+		var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
+		var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
+		_p = best_q + nrm * best_lim
+		var id: int = (best << ContactId.KIND_BITS) | ContactId.KIND_WALL
+		respond(id, best_q, d, nrm, best_lim, surface, best)
 		if found == 1:
 			return
-
-
-## Answers the contact with wall `wall` at its closest point `q` (at `s` along it).
-func _touch_wall(wall: int, q: Vector2, s: float, lim: float) -> void:
-	var d: Vector2 = _p - q
-	var d2: float = d.length_squared()
-	var nrm := Vector2(0.0, -1.0)
-	if d2 > EPS * EPS:
-		nrm = d / sqrt(d2)
-	elif _wall_inv_len2[wall] > 0.0:
-		var ab: Vector2 = _wall_ab[wall]
-		nrm = Vector2(ab.y, -ab.x).normalized()
-	var on_cap: bool = s <= 0.0 or s >= 1.0
-	var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
-	_p = q + nrm * lim
-	respond((wall << ContactId.KIND_BITS) | ContactId.KIND_WALL, q, d, nrm, lim, surface, wall)
 
 
 ## The one contact response, for every surface. The narrow phase has put the ball back on
