@@ -257,7 +257,7 @@ func _touch_walls() -> void:
 ## points to the free side. Only a ball moving into the surface is answered: a new contact
 ## faster than the bounce threshold bounces (restitution on the normal speed, tangent
 ## friction on the rest, with the normal at the moment of impact on a round surface) and
-## queues a hit event; a persisting or gentle one slides (see ContactMath.slide). Either
+## queues a hit event; a persisting or gentle one slides (see below). Either
 ## way it is recorded as a contact (the ball's support). Returns true on a bounce.
 func respond(
 	id: int, centre: Vector2, d: Vector2, nrm: Vector2, lim: float, surface: int, index: int
@@ -284,10 +284,17 @@ func respond(
 		_queue(HIT_EVENT[surface], index, -vn)
 		bounced = true
 	else:
-		var curv := 0.0
+		# Slide: the normal speed goes, except the part that only comes from a round surface
+		# curving under the moving ball (capped by the curvature, substep time / radius),
+		# which turns into tangential speed: riding the ring or rolling round a cap loses
+		# nothing, while a push from gravity or other balls never turns into speed.
+		var vt: Vector2 = _v - nrm * vn
 		if surface != Surface.WALL_SIDE and lim > EPS:
-			curv = _h / lim
-		_v = ContactMath.slide(_v, nrm, vn, gn_dt, curv)
+			var t2: float = vt.length_squared()
+			if t2 > EPS:
+				var c: float = maxf(minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * (_h / lim))
+				vt *= sqrt((t2 + c * c) / t2)
+		_v = vt
 	if _cur_a == ContactId.NONE or _cur_a == id:
 		_cur_a = id
 		_n_a = nrm
