@@ -67,5 +67,6 @@ func _now() -> int:
 	if f == null:
 		cpu_time = false
 		return Time.get_ticks_usec()
-	# First field: nanoseconds this thread has run.
+	# First field: nanoseconds this thread has run (whole microseconds are enough).
+	@warning_ignore("integer_division")
 	return int(f.get_line().get_slice(" ", 0)) / 1000
