@@ -149,5 +149,6 @@ static func _in(value: float, low: float, high: float) -> bool:
 	return is_finite(value) and value >= low and value <= high
 
 
+# "8", "12.5": one decimal at most, none for a whole number.
 static func _num(value: float) -> String:
-	return str(snappedf(value, 0.1))
+	return str(snappedf(value, 0.1)).trim_suffix(".0")
