@@ -10,6 +10,7 @@ const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
+const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
 const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
 const Arrange := preload("res://addons/board_editor/core/arrange.gd")
 const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
@@ -161,3 +162,19 @@ func test_the_bonus_layer_hides_and_locks_bonus_pockets() -> void:
 	session.set_tool(Session.Tool.TULIP)
 	_press(TULIP_1 + Vector2(0, 4), true)
 	assert_eq(level.bonus_pockets.size(), 4, "nor removed by the tulip tool")
+	session.set_layer("Bonus pieces", false, false)
+	session.select([_bonus("tulips", 1)] as Array[Vector2i])
+	session.set_layer("Bonus pieces", true, false)
+	assert_eq(session.selection.size(), 0, "hiding the layer drops its pockets from the selection")
+
+
+func test_the_layers_panel_lists_bonus_pieces_with_show_and_lock() -> void:
+	_open()
+	var panel: LayersPanel = add_child_autofree(LayersPanel.new())
+	panel.bind(session)
+	var names := PackedStringArray()
+	for child in panel.find_children("*", "Label", true, false):
+		names.append((child as Label).text)
+	assert_has(names, "Bonus pieces")
+	panel.set_hidden("Bonus pieces", true)
+	assert_has(session.hidden_layers, "Bonus pieces")
