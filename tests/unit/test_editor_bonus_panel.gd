@@ -6,6 +6,7 @@ extends GutTest
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
+const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 
 var session: Session
 var panel: PropertyPanel
@@ -75,3 +76,12 @@ func test_a_too_narrow_tulip_is_named_by_its_id() -> void:
 	for issue in BoardValidator.errors(level):
 		messages.append(issue.message)
 	assert_string_contains("\n".join(messages), "Tulip 2 is 8 px wide; a ball needs at least 12.")
+
+
+func test_the_dock_counts_the_bonus_layer_on_a_pachinko_board_only() -> void:
+	var level := _select(0)
+	assert_string_contains(
+		BoardDock.count_text(level), "Start pockets: 1   Attackers: 1   Tulips: 2"
+	)
+	var maze := load("res://levels/maze/catacombs.board") as BoardLevel
+	assert_eq(BoardDock.count_text(maze), "Walls: 77   Holes: 6   Ball starts: 4")
