@@ -203,8 +203,10 @@ static func _keys(items: Variant, list: String) -> Array:
 				item = captured[0]
 			if role < 0:
 				keys.append(item)
-			elif item is BonusPocketSpec and (item as BonusPocketSpec).role == role:
-				keys.append(item)
+			elif item is BonusPocketSpec:
+				var spec: BonusPocketSpec = item
+				if spec.role == role:
+					keys.append(spec)
 		return keys
 	var points: PackedVector2Array = items
 	var step := 2 if list == "walls" else 1
