@@ -3,7 +3,7 @@
 # scene, selects its BoardNode, puts a tool to work (the plugin's shot hook, see
 # tools/shots/editor_shot_hook.gd), saves the editor window as a PNG through
 # tools/shots/shot_capture.gd (as the game's shots do) and quits.
-#   tools/editor_shots.sh                       both shots into build/shots/
+#   tools/editor_shots.sh                       the three shots into build/shots/
 #   SIZE=1920x1080 tools/editor_shots.sh        another window size
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -11,6 +11,7 @@ cd "$ROOT"
 SIZE=${SIZE:-1600x900}
 PACHINKO_SCENE=${PACHINKO_SCENE:-res://scenes/boards/pachinko_tulips.tscn}
 MAZE_SCENE=${MAZE_SCENE:-res://scenes/boards/maze_catacombs.tscn}
+BONUS_SCENE=${BONUS_SCENE:-res://scenes/boards/pachinko_hanami.tscn}
 mkdir -p build/shots
 # The editor reopens the scenes of its last session and saves them when a scene runs: start
 # it with none open for each shot, and put the developer's session back afterwards.
@@ -58,3 +59,4 @@ shoot() {
 
 shoot "$PACHINKO_SCENE" curve editor_pachinko.png
 shoot "$MAZE_SCENE" wall editor_maze.png
+shoot "$BONUS_SCENE" bonus editor_bonus.png

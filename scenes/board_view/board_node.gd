@@ -21,7 +21,17 @@ const MAX_WARNINGS := 12
 		_on_level_changed()
 ## Which BoardPainter layers to draw.
 @export_flags(
-	"Background", "Ring", "Rail", "Gutter", "Pins", "Pockets", "Walls", "Holes", "Goal", "Starts"
+	"Background",
+	"Ring",
+	"Rail",
+	"Gutter",
+	"Pins",
+	"Pockets",
+	"Walls",
+	"Holes",
+	"Goal",
+	"Starts",
+	"Bonus pockets"
 )
 var layers: int = BoardPainter.Layer.ALL:
 	set(value):

@@ -18,7 +18,8 @@ enum Layer {
 	HOLES = 128,
 	GOAL = 256,
 	STARTS = 512,
-	ALL = 1023,
+	BONUS = 1024,
+	ALL = 2047,
 }
 
 const BonusPainter := preload("res://scenes/pachinko/bonus/bonus_painter.gd")
@@ -128,6 +129,7 @@ static func _draw_pachinko(
 		for spec in level.pockets:
 			if spec != null:
 				_draw_pocket(canvas, spec, level.pin_radius)
+	if layers & Layer.BONUS:
 		BonusPainter.draw_all(canvas, level)
 	if layers & Layer.PINS:
 		_draw_pins(canvas, level, min_pin_radius)

@@ -214,6 +214,19 @@ const CURRENT_VERSION := 1
 	set(value):
 		start_ids = value
 		emit_changed()
+## Ids of the bonus pockets, one array per role, each in board order among its role.
+@export var start_pocket_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		start_pocket_ids = value
+		emit_changed()
+@export var attacker_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		attacker_ids = value
+		emit_changed()
+@export var tulip_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		tulip_ids = value
+		emit_changed()
 ## Per item list ("pins", "walls"...): the id the next new item of that list gets. It only
 ## ever grows, so an id is never handed out twice in a board's life, even after the item
 ## that had the highest id is deleted (ItemIds.next_id; a list missing here starts after its

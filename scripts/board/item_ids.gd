@@ -5,6 +5,9 @@ extends RefCounted
 ## overlap") still names the same two pins after an edit. Ids are per list, 1 and up, kept in
 ## BoardLevel's `*_ids` arrays beside the items and written in the board file (`"id": 17`).
 ## A board made in code, or a file without ids, numbers its items 1, 2, 3... in order.
+## The bonus pockets (BoardLevel.bonus_pockets) are three lists by role, each with its own
+## ids ("Tulip 2", "Attacker 1"), as the board file stores them (`start_pocket`, `attacker`,
+## `tulip` lines).
 ## New ids come from the board's per-list counter (BoardLevel.next_ids), which never goes
 ## back: deleting the item with the highest id, or undoing an add, does not free its id.
 
@@ -15,7 +18,13 @@ const LISTS := {
 	"walls": "wall_ids",
 	"holes": "hole_ids",
 	"ball_starts": "start_ids",
+	"start_pockets": "start_pocket_ids",
+	"attackers": "attacker_ids",
+	"tulips": "tulip_ids",
 }
+## The bonus lists, in BonusPocketSpec.Role order; their items are the board's
+## `bonus_pockets` of that role, in board order.
+const BONUS_LISTS: Array[String] = ["start_pockets", "attackers", "tulips"]
 ## The largest id a file may use.
 const MAX_ID := 9_999_999
 
@@ -24,6 +33,8 @@ const MAX_ID := 9_999_999
 static func count(level: BoardLevel, list: String) -> int:
 	if list == "pockets":
 		return level.pockets.size()
+	if BONUS_LISTS.has(list):
+		return _keys(level.bonus_pockets, list).size()
 	var points: PackedVector2Array = level.get(list)
 	@warning_ignore("integer_division")  # whole walls only
 	return points.size() / 2 if list == "walls" else points.size()
@@ -33,6 +44,36 @@ static func count(level: BoardLevel, list: String) -> int:
 static func of(level: BoardLevel, list: String, index: int) -> int:
 	var ids := ids_of(level, list)
 	return ids[index] if index < ids.size() and ids[index] > 0 else index + 1
+
+
+## The board field that holds the items of `list` ("bonus_pockets" for the bonus lists).
+static func field_of(list: String) -> String:
+	return "bonus_pockets" if BONUS_LISTS.has(list) else list
+
+
+## The id of bonus pocket `index` of `level.bonus_pockets` (unique among its role).
+static func of_bonus(level: BoardLevel, index: int) -> int:
+	var spec := level.bonus_pockets[index]
+	var list := BONUS_LISTS[spec.role]
+	var place := 0
+	for k in index:
+		var other := level.bonus_pockets[k]
+		if other != null and other.role == spec.role:
+			place += 1
+	return of(level, list, place)
+
+
+## The index in `level.bonus_pockets` of the bonus pocket of `list` with id `id`, or -1.
+static func bonus_index(level: BoardLevel, list: String, id: int) -> int:
+	var place := index_of(level, list, id)
+	var role := BONUS_LISTS.find(list)
+	for i in level.bonus_pockets.size():
+		var spec := level.bonus_pockets[i]
+		if spec != null and spec.role == role:
+			if place == 0:
+				return i
+			place -= 1
+	return -1
 
 
 ## The index of the item of `list` with id `id`, or -1.
@@ -84,15 +125,16 @@ static func fill(level: BoardLevel) -> void:
 ## After an edit changed a list's length: items still at a position they had `before` (a
 ## BoardFieldCopy capture of the lists and their ids) keep their id, new ones get fresh ids
 ## from the board's counter, which moves past them.
-## Pockets keep theirs by object, so a pocket re-stamped or moved is still itself.
+## Pockets and bonus pockets keep theirs by object, so one re-stamped or moved is still itself.
 static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 	for list: String in LISTS:
 		var id_field: String = LISTS[list]
-		if not before.has(list) or not before.has(id_field):
+		var field := field_of(list)
+		if not before.has(field) or not before.has(id_field):
 			continue
 		var old_ids: PackedInt32Array = before[id_field]
-		var old_keys := _keys(before[list], list)
-		var new_keys := _keys(level.get(list), list)
+		var old_keys := _keys(before[field], list)
+		var new_keys := _keys(level.get(field), list)
 		if old_keys.size() == new_keys.size():
 			continue  # moved or edited in place: every item is still itself
 		# Items without a stored id had their place as id (see `of`).
@@ -147,17 +189,24 @@ static func _advance(level: BoardLevel, list: String, next: int) -> void:
 	level.next_ids = counters
 
 
-# What identifies an item across an edit: its position (a wall: both ends), a pocket its object.
+# What identifies an item across an edit: its position (a wall: both ends), a pocket its
+# object. `items` is the board field (or its BoardFieldCopy capture: [object, values...]).
 static func _keys(items: Variant, list: String) -> Array:
 	var keys: Array = []
-	if list == "pockets":
+	if list == "pockets" or BONUS_LISTS.has(list):
+		var role := BONUS_LISTS.find(list)
 		var entries: Array = items
 		for entry: Variant in entries:
+			var item: Variant = entry
 			if entry is Array:
 				var captured: Array = entry
-				keys.append(captured[0])
-			else:
-				keys.append(entry)
+				item = captured[0]
+			if role < 0:
+				keys.append(item)
+			elif item is BonusPocketSpec:
+				var spec: BonusPocketSpec = item
+				if spec.role == role:
+					keys.append(spec)
 		return keys
 	var points: PackedVector2Array = items
 	var step := 2 if list == "walls" else 1

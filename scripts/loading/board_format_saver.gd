@@ -21,6 +21,26 @@ func _recognize_path(_resource: Resource, path: String) -> bool:
 	return path.get_extension().to_lower() == EXTENSION
 
 
+# A .board file keeps its uid beside it in `<file>.uid` (the text has no room for one), as
+# Godot does for every format without its own uid field. Without this, ResourceSaver.set_uid
+# on a board failed with "File unrecognized".
+func _set_uid(path: String, uid: int) -> Error:
+	if path.get_extension().to_lower() != EXTENSION:
+		return ERR_FILE_UNRECOGNIZED
+	if uid == ResourceUID.INVALID_ID:
+		return ERR_INVALID_PARAMETER
+	var text := ResourceUID.id_to_text(uid) + "\n"
+	var uid_path := path + ".uid"
+	if FileAccess.file_exists(uid_path) and FileAccess.get_file_as_string(uid_path) == text:
+		return OK
+	var file := FileAccess.open(uid_path, FileAccess.WRITE)
+	if file == null:
+		return FileAccess.get_open_error()
+	file.store_string(text)
+	file.close()
+	return OK
+
+
 func _save(resource: Resource, path: String, _flags: int) -> Error:
 	var level := resource as BoardLevel
 	if level == null:

@@ -84,8 +84,14 @@ const OPTIONAL_ITEM_FIELDS := {
 	"walls": {"id": ["int", 1, ItemIds.MAX_ID]},
 	"ball_starts": {"id": ["int", 1, ItemIds.MAX_ID]},
 	"holes": {"id": ["int", 1, ItemIds.MAX_ID]},
-	"start_pockets": {"symbols": ["int", 2, 9]},
-	"attackers": {"open_seconds": ["float", 1.0, 30.0], "open_catches": ["int", 1, 50]},
+	"start_pockets": {"id": ["int", 1, ItemIds.MAX_ID], "symbols": ["int", 2, 9]},
+	"attackers":
+	{
+		"id": ["int", 1, ItemIds.MAX_ID],
+		"open_seconds": ["float", 1.0, 30.0],
+		"open_catches": ["int", 1, 50],
+	},
+	"tulips": {"id": ["int", 1, ItemIds.MAX_ID]},
 }
 ## The optional header field holding the id counters: `{"next_ids": {"pins": 626}}`, list
 ## name -> the id its next new item gets (BoardLevel.next_ids). Written only for a list whose

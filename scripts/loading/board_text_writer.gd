@@ -150,16 +150,20 @@ static func _pocket_items(level: BoardLevel) -> PackedStringArray:
 	return items
 
 
-# The bonus pockets by role (start pockets, attackers, tulips), each role's own fields last.
+# The bonus pockets by role (start pockets, attackers, tulips), each with its id first and its
+# role's own fields last.
 # A board without them gets no line, so older boards keep their exact text.
 static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
 	for role: int in BonusPocketSpec.ROLE_KEYS.size():
+		var ids := _ids(level, ItemIds.BONUS_LISTS[role])
+		var place := 0
 		for spec in level.bonus_pockets:
 			if spec == null or spec.role != role:
 				continue
 			var text := (
-				'{"x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d'
+				'{"id": %d, "x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d'
 				% [
+					ids[place],
 					number(spec.position.x),
 					number(spec.position.y),
 					number(spec.width),
@@ -175,6 +179,7 @@ static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
 					% [number(spec.open_seconds), spec.open_catches]
 				)
 			lines.append('{"%s": %s}' % [spec.role_key(), text + "}"])
+			place += 1
 
 
 static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:

@@ -50,7 +50,7 @@ func test_bonus_lines_round_trip() -> void:
 	assert_eq(level.bonus_pockets[1].open_catches, 9)
 	var written := Writer.write(level)
 	assert_eq(written.split("\n").size(), text.split("\n").size(), "one line per item")
-	assert_string_contains(written, '{"start_pocket": {"x": 350, "y": 200, "width": 24')
+	assert_string_contains(written, '{"start_pocket": {"id": 1, "x": 350, "y": 200, "width": 24')
 	var again: BoardLevel = Reader.read(written)["level"]
 	assert_eq(Writer.write(again), written, "stable text")
 

@@ -72,7 +72,7 @@ func test_a_placed_board_saves_and_reads_back() -> void:
 	session.set_tool(Session.Tool.START_POCKET)
 	_click(Vector2(350, 470))
 	var text := Writer.write(level)
-	assert_string_contains(text, '{"start_pocket": {"x": 350, "y": 470')
+	assert_string_contains(text, '{"start_pocket": {"id": 1, "x": 350, "y": 470')
 	var again: BoardLevel = Reader.read(text)["level"]
 	assert_eq(again.bonus_pockets.size(), 1)
 	assert_eq(again.bonus_pockets[0].symbols, 3)

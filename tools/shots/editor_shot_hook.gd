@@ -6,8 +6,9 @@ extends Node
 ## same capture as the game's shots) and quits.
 ## Tools: "pattern" (pachinko: a lattice ghost and a selected pocket), "curve" (pachinko: a
 ## peg curve being drawn, red ghosts where it crowds pins, a pocket in the Selection panel)
-## or "wall" (maze: a wall dragged in mirror mode, the holes layer hidden, the view jumped to
-## the first problem).
+## "wall" (maze: a wall dragged in mirror mode, the holes layer hidden, the view jumped to
+## the first problem) or "bonus" (pachinko with a bonus layer: the attacker in the Selection
+## panel, the pins layer locked, a tulip dropped onto a start pocket and named by id).
 
 const ENV := "BOARD_EDITOR_SHOT"
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
@@ -107,6 +108,8 @@ func _stage(tool_name: String) -> void:
 		session.set_layer("Holes", true, false)
 	elif tool_name == "curve":
 		_stage_curve(session, input)
+	elif tool_name == "bonus":
+		_stage_bonus(session)
 	else:
 		session.set_tool(Session.Tool.PATTERN)
 		session.pattern["kind"] = "arc"
@@ -121,6 +124,26 @@ func _stage(tool_name: String) -> void:
 		if not level.pockets.is_empty():
 			session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
 	session.settings_changed.emit()
+
+
+# A bonus board in the Select tool: the attacker selected (its open seconds and catches in
+# the panel), the pins locked so a click can only pick bonus pieces and pockets, and a tulip
+# dropped onto the first start pocket for the validator to name.
+func _stage_bonus(session: Session) -> void:
+	var level := session.level
+	if level.bonus_pockets.is_empty():
+		push_error("Editor shot: the bonus shot needs a board with a bonus layer.")
+		return
+	var mouth := level.bonus_pockets[0].position + Vector2(18, 6)
+	var extra := Items.empty_set()
+	extra["bonus"] = [BonusPocketSpec.create(BonusPocketSpec.Role.TULIP, mouth, 26.0, 26.0, 3)]
+	session.commit(AddItemsAction.new(level, extra, "Add tulip"))
+	for i in level.bonus_pockets.size():
+		if level.bonus_pockets[i].role == BonusPocketSpec.Role.ATTACKER:
+			session.select([Items.make(Items.Kind.BONUS, i)] as Array[Vector2i])
+			break
+	session.set_layer("Pins", false, true)
+	session.set_tool(Session.Tool.SELECT)
 
 
 # A peg curve half drawn over the top of the field, a pocket selected for the panel.

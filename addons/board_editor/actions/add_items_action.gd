@@ -1,8 +1,9 @@
 @tool
 extends BoardAction
 ## Adds a set of things to a board: field pins, pockets (with their stamped rim pins and
-## special pin), walls, black holes and ball starts. Placing, pasting and duplicating are
-## all this action; `added` lists the new items so the editor can select them.
+## special pin), walls, black holes, ball starts and bonus pockets (kept in role order, as
+## the board file stores them). Placing, pasting and duplicating are all this action;
+## `added` lists the new items so the editor can select them.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const PocketPins := preload("res://addons/board_editor/core/pocket_pins.gd")
@@ -12,6 +13,7 @@ var added: Array[Vector2i] = []
 var _data: Dictionary
 var _name: String
 var _pockets: Array[PocketSpec] = []
+var _bonus: Array[BonusPocketSpec] = []
 
 
 ## `item_set` has the shape of BoardItems.empty_set(); positions are board pixels.
@@ -22,6 +24,9 @@ func _init(on_level: BoardLevel, item_set: Dictionary, action_name := "Add to bo
 	# The pocket resources are made once so a redo brings back the very same objects.
 	for spec: PocketSpec in item_set.get("pockets", []):
 		_pockets.append(PocketSpec.create(spec.position, spec.width, spec.depth, spec.payout))
+	if on_level != null and on_level.is_pachinko():
+		for spec: BonusPocketSpec in item_set.get("bonus", []):
+			_bonus.append(Items.moved_bonus(spec, Vector2.ZERO))
 
 
 func get_name() -> String:
@@ -35,7 +40,16 @@ func size() -> int:
 
 func _touched_fields() -> PackedStringArray:
 	return PackedStringArray(
-		["pins", "pin_pocket", "pin_special", "pockets", "walls", "holes", "ball_starts"]
+		[
+			"pins",
+			"pin_pocket",
+			"pin_special",
+			"pockets",
+			"walls",
+			"holes",
+			"ball_starts",
+			"bonus_pockets"
+		]
 	)
 
 
@@ -76,6 +90,23 @@ func _apply() -> void:
 	level.walls = _append_walls(level.walls.duplicate())
 	level.holes = _append_points(level.holes.duplicate(), "holes", Items.Kind.HOLE)
 	level.ball_starts = _append_points(level.ball_starts.duplicate(), "starts", Items.Kind.START)
+	if not _bonus.is_empty():
+		var bonus := level.bonus_pockets.duplicate()
+		for spec in _bonus:
+			bonus.insert(role_slot(bonus, spec.role), spec)
+		level.bonus_pockets = bonus
+		for spec in _bonus:
+			added.append(Items.make(Items.Kind.BONUS, level.bonus_pockets.find(spec)))
+
+
+## Where a new bonus pocket of `role` goes: after the last one of the same or an earlier
+## role, so the board stays in role order (start pockets, attackers, tulips).
+static func role_slot(pockets: Array[BonusPocketSpec], role: int) -> int:
+	var slot := 0
+	for i in pockets.size():
+		if pockets[i] != null and pockets[i].role <= role:
+			slot = i + 1
+	return slot
 
 
 func _append_walls(walls: PackedVector2Array) -> PackedVector2Array:

@@ -21,7 +21,9 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(["pins", "pockets", "walls", "holes", "ball_starts", "goal_center"])
+	return PackedStringArray(
+		["pins", "pockets", "walls", "holes", "ball_starts", "goal_center", "bonus_pockets"]
+	)
 
 
 func _apply() -> void:

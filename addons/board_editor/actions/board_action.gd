@@ -28,7 +28,7 @@ func do() -> void:
 		return
 	var fields := _touched_fields()
 	for list: String in ItemIds.LISTS:
-		if fields.has(list):
+		if fields.has(ItemIds.field_of(list)):
 			var id_field: String = ItemIds.LISTS[list]
 			fields.append(id_field)
 	_before = Snapshot.capture(level, fields)

@@ -1,7 +1,8 @@
 @tool
 extends BoardAction
 ## Removes items: pins, pockets (with their rim pins; the other pins' pocket indices are
-## renumbered), walls, holes and ball starts. The goal cannot be removed, only moved.
+## renumbered), walls, holes, ball starts and bonus pockets. The goal cannot be removed,
+## only moved.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 
@@ -19,7 +20,16 @@ func get_name() -> String:
 
 func _touched_fields() -> PackedStringArray:
 	return PackedStringArray(
-		["pins", "pin_pocket", "pin_special", "pockets", "walls", "holes", "ball_starts"]
+		[
+			"pins",
+			"pin_pocket",
+			"pin_special",
+			"pockets",
+			"walls",
+			"holes",
+			"ball_starts",
+			"bonus_pockets"
+		]
 	)
 
 
@@ -58,6 +68,13 @@ func _apply() -> void:
 	level.walls = walls
 	level.holes = _without(level.holes, Items.indices_of(_items, Items.Kind.HOLE))
 	level.ball_starts = _without(level.ball_starts, Items.indices_of(_items, Items.Kind.START))
+	var gone_bonus := Items.indices_of(_items, Items.Kind.BONUS)
+	if not gone_bonus.is_empty():
+		var bonus: Array[BonusPocketSpec] = []
+		for i in level.bonus_pockets.size():
+			if not gone_bonus.has(i):
+				bonus.append(level.bonus_pockets[i])
+		level.bonus_pockets = bonus
 
 
 static func _without(points: PackedVector2Array, gone: PackedInt32Array) -> PackedVector2Array:

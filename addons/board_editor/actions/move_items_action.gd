@@ -1,6 +1,7 @@
 @tool
 extends BoardAction
-## Moves items by an offset: a pocket takes its rim pins along, a wall both ends. In mirror
+## Moves items by an offset: a pocket takes its rim pins along, a wall both ends, a bonus
+## pocket its whole cup (its pins are stamped from its mouth). In mirror
 ## mode the partners move by the reflected offset and items on the axis only vertically.
 ## A drag calls `preview()` on every mouse move and is committed once on release.
 
@@ -45,7 +46,9 @@ func preview(offset: Vector2) -> void:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(["pins", "pockets", "walls", "holes", "ball_starts", "goal_center"])
+	return PackedStringArray(
+		["pins", "pockets", "walls", "holes", "ball_starts", "goal_center", "bonus_pockets"]
+	)
 
 
 func _apply() -> void:
@@ -78,6 +81,8 @@ func _apply() -> void:
 					starts[item.y] += offset
 				Items.Kind.GOAL:
 					level.goal_center += offset
+				Items.Kind.BONUS:
+					level.bonus_pockets[item.y].position += offset
 	level.pins = pins
 	level.walls = walls
 	level.holes = holes

@@ -3,8 +3,8 @@ extends "res://addons/board_editor/tools/board_tool.gd"
 ## Places one kind of bonus pocket (start pocket, attacker or tulip): a click adds one with
 ## that role's standard size and payout at the snapped mouse position (and its mirror image
 ## in mirror mode); a click on an existing bonus pocket removes it. Each click is one
-## undoable action. Finer values (payout, symbols, open seconds) are edited in the board
-## file's line for the pocket.
+## undoable action. Finer values (payout, symbols, open seconds) are edited in the dock's
+## Selection panel after picking the pocket with the Select tool.
 
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 ## Per role: [width, payout]; the depth follows from the width (a round-bottomed cup).
@@ -26,7 +26,9 @@ func _init(on_session: Session, placed_role: BonusPocketSpec.Role) -> void:
 func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 	var under := pocket_at(level(), at)
 	if under >= 0:
-		session.commit(BonusActions.RemoveBonus.new(level(), under))
+		# A hidden or locked "Bonus pieces" layer keeps its pockets: the click does nothing.
+		if session.can_pick(Items.make(Items.Kind.BONUS, under)):
+			session.commit(BonusActions.RemoveBonus.new(level(), under))
 		return true
 	session.commit(
 		BonusActions.AddBonus.new(level(), spec_at(session.snap_point(at)), session.mirror_axis())

@@ -4,8 +4,13 @@ extends RefCounted
 ## it changed. Arrays are copied: Godot 4 passes packed arrays by reference, so a capture
 ## that kept the board's own array would change along with it.
 ##
-## Pockets are resources that other code (the dock, the inspector) may hold on to, so a
-## capture keeps the same PocketSpec objects and their values, and a restore puts both back.
+## Pockets and bonus pockets are resources that other code (the dock, the inspector) may hold
+## on to, so a capture keeps the same objects and their values, and a restore puts both back.
+
+## The BonusPocketSpec fields a capture keeps (its role never changes after it is made).
+const BONUS_VALUES: Array[String] = [
+	"position", "width", "depth", "payout", "symbols", "open_seconds", "open_catches"
+]
 
 
 ## The values of `fields` on `level`, ready for `restore()`.
@@ -17,6 +22,14 @@ static func capture(level: BoardLevel, fields: PackedStringArray) -> Dictionary:
 			for spec: PocketSpec in level.pockets:
 				saved.append([spec, spec.position, spec.width, spec.depth, spec.payout])
 			snap[field] = saved
+		elif field == "bonus_pockets":
+			var kept: Array = []
+			for spec: BonusPocketSpec in level.bonus_pockets:
+				var entry: Array = [spec]
+				for value in BONUS_VALUES:
+					entry.append(spec.get(value) if spec != null else null)
+				kept.append(entry)
+			snap[field] = kept
 		else:
 			snap[field] = _copy(level.get(field))
 	return snap
@@ -35,6 +48,15 @@ static func restore(level: BoardLevel, snap: Dictionary) -> void:
 				spec.payout = entry[4]
 				specs.append(spec)
 			level.pockets = specs
+		elif field == "bonus_pockets":
+			var bonus: Array[BonusPocketSpec] = []
+			for entry: Array in snap[field]:
+				var spec: BonusPocketSpec = entry[0]
+				if spec != null:
+					for k in BONUS_VALUES.size():
+						spec.set(BONUS_VALUES[k], entry[k + 1])
+				bonus.append(spec)
+			level.bonus_pockets = bonus
 		else:
 			level.set(field, _copy(snap[field]))
 

@@ -3,10 +3,11 @@ extends RefCounted
 ## What the editor can select on a board, and how to read one item back.
 ##
 ## An item is a `Vector2i(kind, index)`: pins, pockets, walls (pair index), holes, ball
-## starts and the goal. Pins that belong to a pocket are never items of their own: the
-## pocket is (its rim pins are stamped, not placed one by one).
+## starts, the goal and bonus pockets (index into `bonus_pockets`). Pins that belong to a
+## pocket are never items of their own: the pocket is (its rim pins are stamped, not placed
+## one by one); a bonus pocket's pins are not on the board at all (the world stamps them).
 
-enum Kind { PIN, POCKET, WALL, HOLE, START, GOAL }
+enum Kind { PIN, POCKET, WALL, HOLE, START, GOAL, BONUS }
 
 ## Returned by the pickers when nothing is there.
 const NONE := Vector2i(-1, -1)
@@ -37,6 +38,8 @@ static func position_of(level: BoardLevel, item: Vector2i) -> Vector2:
 			return level.holes[item.y]
 		Kind.START:
 			return level.ball_starts[item.y]
+		Kind.BONUS:
+			return level.bonus_pockets[item.y].position
 		_:
 			return level.goal_center
 
@@ -58,6 +61,8 @@ static func is_valid(level: BoardLevel, item: Vector2i) -> bool:
 			return item.y < level.ball_starts.size()
 		Kind.GOAL:
 			return level.is_maze()
+		Kind.BONUS:
+			return item.y < level.bonus_pockets.size() and level.bonus_pockets[item.y] != null
 	return false
 
 
@@ -81,7 +86,7 @@ static func pocket_pins(level: BoardLevel, pocket_index: int) -> PackedInt32Arra
 
 
 ## A copy of the selected items as plain data, positions relative to `origin`, for the
-## clipboard and for duplicating: {pins, walls, holes, starts, pockets}.
+## clipboard and for duplicating: {pins, walls, holes, starts, pockets, bonus}.
 static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) -> Dictionary:
 	# Local arrays, stored at the end: a packed array taken out of a Dictionary is a copy.
 	var pins := PackedVector2Array()
@@ -89,6 +94,7 @@ static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) 
 	var holes := PackedVector2Array()
 	var starts := PackedVector2Array()
 	var pockets: Array = []
+	var bonus: Array = []
 	for item in items:
 		if not is_valid(level, item):
 			continue
@@ -107,7 +113,23 @@ static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) 
 				pockets.append(
 					PocketSpec.create(spec.position - origin, spec.width, spec.depth, spec.payout)
 				)
-	return {"pins": pins, "walls": walls, "holes": holes, "starts": starts, "pockets": pockets}
+			Kind.BONUS:
+				bonus.append(moved_bonus(level.bonus_pockets[item.y], -origin))
+	return {
+		"pins": pins,
+		"walls": walls,
+		"holes": holes,
+		"starts": starts,
+		"pockets": pockets,
+		"bonus": bonus,
+	}
+
+
+## A copy of bonus pocket `spec` (every field) moved by `offset`.
+static func moved_bonus(spec: BonusPocketSpec, offset: Vector2) -> BonusPocketSpec:
+	var copy := spec.duplicate() as BonusPocketSpec
+	copy.position = spec.position + offset
+	return copy
 
 
 ## An empty item set: the shape `extract()` returns and the add action takes.
@@ -118,6 +140,7 @@ static func empty_set() -> Dictionary:
 		"holes": PackedVector2Array(),
 		"starts": PackedVector2Array(),
 		"pockets": [],
+		"bonus": [],
 	}
 
 
@@ -134,6 +157,9 @@ static func offset_set(data: Dictionary, offset: Vector2) -> Dictionary:
 		moved_pockets.append(
 			PocketSpec.create(spec.position + offset, spec.width, spec.depth, spec.payout)
 		)
+	var moved_bonus_pockets: Array = moved["bonus"]
+	for spec: BonusPocketSpec in data.get("bonus", []):
+		moved_bonus_pockets.append(moved_bonus(spec, offset))
 	return moved
 
 
@@ -145,4 +171,5 @@ static func set_size(data: Dictionary) -> int:
 		var points: PackedVector2Array = data.get(key, PackedVector2Array())
 		total += points.size()
 	var pockets: Array = data.get("pockets", [])
-	return total + pockets.size()
+	var bonus: Array = data.get("bonus", [])
+	return total + pockets.size() + bonus.size()

@@ -19,7 +19,8 @@ const MAZE_HANDLES: Array[String] = ["goal_radius"]
 
 
 ## The item under `point` (within `tolerance` px of its shape), nearest first; NONE if
-## nothing is there. A pocket's rim pins pick the pocket.
+## nothing is there. A pocket's rim pins pick the pocket; a bonus pocket is picked inside
+## its cup (rim pins included).
 static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2i:
 	var best := Items.NONE
 	var best_distance := INF
@@ -53,6 +54,13 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 		if gap <= tolerance and gap < best_distance:
 			best_distance = gap
 			best = Items.make(Items.Kind.WALL, w)
+	for i in level.bonus_pockets.size():
+		var spec := level.bonus_pockets[i]
+		if spec != null and BonusChecks.cup_rect(level, spec).grow(tolerance).has_point(point):
+			var gap := spec.position.distance_to(point) * 0.5
+			if gap < best_distance:
+				best_distance = gap
+				best = Items.make(Items.Kind.BONUS, i)
 	if level.is_maze() and best == Items.NONE:
 		# The goal is big: only its middle picks it, so walls and starts inside stay reachable.
 		if level.goal_center.distance_to(point) <= maxf(tolerance, level.goal_radius * 0.35):
@@ -71,7 +79,7 @@ static func crowds_pin(level: BoardLevel, point: Vector2) -> bool:
 
 
 ## Every item whose representative point lies inside `rect` (a pocket once, however many of
-## its pins are inside; a wall when both its ends are inside).
+## its pins are inside; a wall when both its ends are inside; a bonus pocket by its mouth).
 static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:
 	var box := rect.abs()
 	var found: Array[Vector2i] = []
@@ -94,6 +102,10 @@ static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:
 	for i in level.ball_starts.size():
 		if box.has_point(level.ball_starts[i]):
 			found.append(Items.make(Items.Kind.START, i))
+	for i in level.bonus_pockets.size():
+		var spec := level.bonus_pockets[i]
+		if spec != null and box.has_point(spec.position):
+			found.append(Items.make(Items.Kind.BONUS, i))
 	if level.is_maze() and box.has_point(level.goal_center):
 		found.append(Items.make(Items.Kind.GOAL, 0))
 	return found

@@ -15,8 +15,11 @@ const KINDS := {
 }
 
 
-## "Pin 143", "Wall 12", "Goal".
+## "Pin 143", "Wall 12", "Tulip 3", "Goal".
 static func name_of(level: BoardLevel, item: Vector2i) -> String:
+	if item.x == Items.Kind.BONUS and Items.is_valid(level, item):
+		var spec := level.bonus_pockets[item.y]
+		return "%s %d" % [spec.role_name(), ItemIds.of_bonus(level, item.y)]
 	if not KINDS.has(item.x):
 		return "Goal"
 	var entry: Array = KINDS[item.x]

@@ -2,13 +2,16 @@
 extends RefCounted
 ## What the property panel shows and edits for a selection of one item: exact x / y for
 ## pins, holes, starts and the goal; a pocket's mouth, width, depth and payout; a wall's two
-## ends; the goal's radius. Each field edit becomes one action (one undo step).
+## ends; the goal's radius; a bonus pocket's mouth, size and payout, and per role its reel
+## symbols (start pocket) or how long and for how many catches it opens (attacker). Each
+## field edit becomes one action (one undo step).
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const SetPointAction := preload("res://addons/board_editor/actions/set_point_action.gd")
 const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket_action.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 
 ## Field key -> [label, lowest, highest, step]; positions are limited by the board size.
 const FIELDS := {
@@ -22,6 +25,9 @@ const FIELDS := {
 	"depth": ["Depth (px)", 4.0, 200.0, 1.0],
 	"payout": ["Payout (balls)", 0.0, 99.0, 1.0],
 	"radius": ["Radius (px)", 6.0, 200.0, 0.5],
+	"symbols": ["Reel symbols", 2.0, 9.0, 1.0],
+	"open_seconds": ["Opens for (s)", 1.0, 30.0, 0.5],
+	"open_catches": ["Closes after (catches)", 1.0, 50.0, 1.0],
 }
 const POINT_FIELD := {
 	Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "ball_starts"
@@ -49,7 +55,26 @@ static func values_of(level: BoardLevel, item: Vector2i) -> Dictionary:
 			return {"ax": a.x, "ay": a.y, "bx": b.x, "by": b.y}
 		Items.Kind.GOAL:
 			return {"x": at.x, "y": at.y, "radius": level.goal_radius}
+		Items.Kind.BONUS:
+			return _bonus_values(level.bonus_pockets[item.y])
 	return {"x": at.x, "y": at.y}
+
+
+# A bonus pocket's fields: the cup's, then its role's own.
+static func _bonus_values(spec: BonusPocketSpec) -> Dictionary:
+	var values := {
+		"x": spec.position.x,
+		"y": spec.position.y,
+		"width": spec.width,
+		"depth": spec.depth,
+		"payout": float(spec.payout),
+	}
+	if spec.role == BonusPocketSpec.Role.START:
+		values["symbols"] = float(spec.symbols)
+	elif spec.role == BonusPocketSpec.Role.ATTACKER:
+		values["open_seconds"] = spec.open_seconds
+		values["open_catches"] = float(spec.open_catches)
+	return values
 
 
 ## The action that sets field `key` of `item` to `value`, or null when nothing changes.
@@ -74,6 +99,10 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 			var point := level.walls[end]
 			point = Vector2(value, point.y) if key.ends_with("x") else Vector2(point.x, value)
 			return SetPointAction.new(level, "walls", end, point, "Set wall end")
+		Items.Kind.BONUS:
+			if key in ["x", "y"]:
+				return MoveItemsAction.new(level, [item] as Array[Vector2i], target - at)
+			return BonusActions.EditBonus.new(level, item.y, key, value)
 		Items.Kind.GOAL:
 			if key == "radius":
 				return SetPropertiesAction.new(level, {"goal_radius": value}, "Set goal radius")
@@ -84,4 +113,4 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 
 ## A short name for the item's kind ("pin", "ball start").
 static func _noun(item: Vector2i) -> String:
-	return ["pin", "pocket", "wall", "black hole", "ball start", "goal"][item.x]
+	return ["pin", "pocket", "wall", "black hole", "ball start", "goal", "bonus pocket"][item.x]

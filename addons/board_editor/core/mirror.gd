@@ -57,6 +57,17 @@ static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 			spots.append(mirrored)
 			pockets.append(PocketSpec.create(mirrored, spec.width, spec.depth, spec.payout))
 	result["pockets"] = pockets
+	var bonus: Array = []
+	var bonus_spots := PackedVector2Array()
+	for spec: BonusPocketSpec in data.get("bonus", []):
+		bonus.append(Items.moved_bonus(spec, Vector2.ZERO))
+		bonus_spots.append(spec.position)
+	for spec: BonusPocketSpec in data.get("bonus", []):
+		var mirrored := reflect(spec.position, axis)
+		if not _has_point(bonus_spots, mirrored):
+			bonus_spots.append(mirrored)
+			bonus.append(Items.moved_bonus(spec, mirrored - spec.position))
+	result["bonus"] = bonus
 	return result
 
 
@@ -81,9 +92,13 @@ static func partner(level: BoardLevel, item: Vector2i, axis: float) -> Vector2i:
 			count = level.holes.size()
 		Items.Kind.START:
 			count = level.ball_starts.size()
+		Items.Kind.BONUS:
+			count = level.bonus_pockets.size()
 	for i in count:
 		var other := Vector2i(item.x, i)
 		if item.x == Items.Kind.PIN and level.pin_pocket.size() > i and level.pin_pocket[i] >= 0:
+			continue
+		if item.x == Items.Kind.BONUS and not _same_role(level, item.y, i):
 			continue
 		if Items.position_of(level, other).distance_to(target) <= SAME_PLACE:
 			return other
@@ -126,6 +141,13 @@ static func split_for_move(
 			if not mirrored.has(other):
 				mirrored.append(other)
 	return {"direct": direct, "mirrored": mirrored, "on_axis": on_axis}
+
+
+# True when bonus pockets `a` and `b` have the same role (a tulip's partner is a tulip).
+static func _same_role(level: BoardLevel, a: int, b: int) -> bool:
+	var first := level.bonus_pockets[a]
+	var second := level.bonus_pockets[b]
+	return first != null and second != null and first.role == second.role
 
 
 static func _has_point(points: PackedVector2Array, point: Vector2) -> bool:

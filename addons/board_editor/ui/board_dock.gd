@@ -158,16 +158,7 @@ func show_board(
 			),
 		]
 	)
-	_counts.text = (
-		"Pins: %d   Pockets: %d\nWalls: %d   Holes: %d   Starts: %d"
-		% [
-			level.pins.size(),
-			level.pockets.size(),
-			Items.wall_count(level.walls),
-			level.holes.size(),
-			level.ball_starts.size()
-		]
-	)
+	_counts.text = count_text(level)
 	_options.bind(session)
 	_properties.bind(session)
 	_problems.visible = true
@@ -199,3 +190,23 @@ func problems() -> ProblemsList:
 ## Highlights problem `index` in the list (-1: none).
 func select_issue(index: int) -> void:
 	_problems.select_issue(index)
+
+
+## What the board holds, in its own kind's words: pins, pockets and the bonus layer on a
+## pachinko board; walls, holes and ball starts on a maze.
+static func count_text(level: BoardLevel) -> String:
+	if level.is_maze():
+		return (
+			"Walls: %d   Holes: %d   Ball starts: %d"
+			% [Items.wall_count(level.walls), level.holes.size(), level.ball_starts.size()]
+		)
+	return (
+		"Pins: %d   Pockets: %d\nStart pockets: %d   Attackers: %d   Tulips: %d"
+		% [
+			level.pins.size(),
+			level.pockets.size(),
+			ItemIds.count(level, "start_pockets"),
+			ItemIds.count(level, "attackers"),
+			ItemIds.count(level, "tulips"),
+		]
+	)

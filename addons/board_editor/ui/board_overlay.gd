@@ -92,6 +92,10 @@ static func _draw_selected(
 			Draw.circle(
 				canvas, to_screen, level.goal_center, level.goal_radius + 3.0, color, false, 2.5
 			)
+		Items.Kind.BONUS:
+			var cup := BonusChecks.cup_rect(level, level.bonus_pockets[item.y]).grow(3.0)
+			var frame := Rect2(to_screen * cup.position, cup.size * to_screen.get_scale())
+			canvas.draw_rect(frame, color, false, 2.0)
 
 
 static func _draw_issue(

@@ -36,9 +36,10 @@ func bind(session: Session) -> void:
 		name_label.text = layer
 		name_label.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 		_grid.add_child(name_label)
-		_grid.add_child(_box("Show", "Draw the %s; hidden ones cannot be picked." % layer, layer))
+		var what := layer.to_lower()
+		_grid.add_child(_box("Show", "Draw the %s; hidden ones cannot be picked." % what, layer))
 		_grid.add_child(
-			_box("Lock", "Keep the %s from being picked, moved or erased." % layer, layer)
+			_box("Lock", "Keep the %s from being picked, moved or erased." % what, layer)
 		)
 	refresh()
 

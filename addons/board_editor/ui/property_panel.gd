@@ -105,6 +105,11 @@ func field(key: String) -> SpinBox:
 	return _fields[key]
 
 
+## The heading over the fields ("Tulip 2 at (485, 330)").
+func title() -> String:
+	return _title.text
+
+
 ## Updates the title and the fields from the selection.
 func refresh() -> void:
 	var values := {}

@@ -31,7 +31,11 @@ const TOOLS := {
 	Session.Tool.HANDLES:
 	[KEY_D, "Handles", "Drag the ring, launch rail and gutter handles, or the goal's radius."],
 	Session.Tool.ERASE:
-	[KEY_X, "Erase", "Click a pin, pocket, wall, hole or start to delete it; drag across many."],
+	[
+		KEY_X,
+		"Erase",
+		"Click a pin, pocket, bonus pocket, wall, hole or start to delete it; drag across many."
+	],
 	Session.Tool.START_POCKET:
 	[
 		KEY_J,

@@ -35,15 +35,11 @@ static func cup_rect(level: BoardLevel, spec: BonusPocketSpec) -> Rect2:
 	return Rect2(top_left, Vector2(spec.width + grow * 2.0, spec.depth + grow * 2.0))
 
 
-## "Start pocket 2", "Tulip 1": the pocket's name for messages (counted from 1).
+## "Start pocket 2", "Tulip 1": the pocket's name for messages, by its stable id (ItemIds),
+## the number the board file and the editor use for it.
 static func label(level: BoardLevel, index: int) -> String:
 	var spec := level.bonus_pockets[index]
-	var number := 1
-	for k in index:
-		var other := level.bonus_pockets[k]
-		if other != null and other.role == spec.role:
-			number += 1
-	return "%s %d" % [spec.role_name(), number]
+	return "%s %d" % [spec.role_name(), ItemIds.of_bonus(level, index)]
 
 
 static func _check_values(level: BoardLevel, i: int, issues: Array[BoardIssue]) -> bool:
@@ -101,7 +97,8 @@ static func _check_field_pins(level: BoardLevel, i: int, issues: Array[BoardIssu
 	for k in level.pins.size():
 		if box.has_point(level.pins[k]):
 			var text := (
-				"Pin %d sits inside %s's cup; a ball could not get in." % [k, label(level, i)]
+				"Pin %d sits inside %s's cup; a ball could not get in."
+				% [ItemIds.of(level, "pins", k), label(level, i)]
 			)
 			BoardIssue.add_to(issues, ERROR, text, level.pins[k], "bonus_blocked")
 			return
@@ -113,7 +110,9 @@ static func _check_field_pins(level: BoardLevel, i: int, issues: Array[BoardIssu
 			pocket.position - Vector2(pocket.width * 0.5, 0.0), Vector2(pocket.width, pocket.depth)
 		)
 		if box.intersects(other):
-			var text := "%s overlaps pocket %d." % [label(level, i), k]
+			var text := (
+				"%s overlaps pocket %d." % [label(level, i), ItemIds.of(level, "pockets", k)]
+			)
 			BoardIssue.add_to(issues, ERROR, text, level.bonus_pockets[i].position, "bonus_overlap")
 			return
 
@@ -150,5 +149,6 @@ static func _in(value: float, low: float, high: float) -> bool:
 	return is_finite(value) and value >= low and value <= high
 
 
+# "8", "12.5": one decimal at most, none for a whole number.
 static func _num(value: float) -> String:
-	return str(snappedf(value, 0.1))
+	return str(snappedf(value, 0.1)).trim_suffix(".0")

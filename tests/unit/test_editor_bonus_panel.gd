@@ -1,0 +1,87 @@
+extends GutTest
+## The Selection panel for a bonus pocket: its mouth, size and payout, a start pocket's reel
+## symbols, an attacker's open seconds and catches, shown with exact values and each typed
+## value one undo step; a value the game cannot use is named by the pocket's id.
+
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
+const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
+
+var session: Session
+var panel: PropertyPanel
+
+
+# fever.board: start pocket 1, attacker 1, tulips 1 and 2 (bonus_pockets 0 to 3).
+func _select(index: int) -> BoardLevel:
+	var level := (load("res://levels/pachinko/fever.board") as BoardLevel).duplicate_level()
+	session = Session.new(level)
+	panel = add_child_autofree(PropertyPanel.new())
+	panel.bind(session)
+	session.select([Items.make(Items.Kind.BONUS, index)] as Array[Vector2i])
+	panel.refresh()
+	return level
+
+
+func _shown(key: String) -> bool:
+	return panel.field(key).get_parent().visible
+
+
+func test_an_attackers_fields_show_and_each_edit_is_one_undo_step() -> void:
+	var level := _select(1)
+	assert_eq(panel.title(), "Attacker 1 at (350, 540)")
+	assert_eq(panel.field("open_seconds").value, 8.0)
+	assert_eq(panel.field("open_catches").value, 10.0)
+	assert_eq(panel.field("width").value, 64.0)
+	assert_false(_shown("symbols"), "reel symbols belong to start pockets")
+	panel.field("open_seconds").value = 12.5
+	panel.field("open_catches").value = 6
+	panel.field("payout").value = 20
+	var attacker := level.bonus_pockets[1]
+	assert_eq([attacker.open_seconds, attacker.open_catches, attacker.payout], [12.5, 6, 20])
+	session.history.undo()
+	assert_eq(attacker.payout, 12, "one undo takes back only the payout")
+	assert_eq(attacker.open_catches, 6)
+	session.history.undo()
+	session.history.undo()
+	assert_eq([attacker.open_seconds, attacker.open_catches], [8.0, 10])
+	panel.refresh()  # the dock refreshes it on every board change
+	assert_eq(panel.field("open_seconds").value, 8.0, "the panel shows the undone value")
+
+
+func test_a_start_pockets_symbols_and_a_tulips_exact_position() -> void:
+	var level := _select(0)
+	assert_eq(panel.field("symbols").value, 3.0)
+	assert_false(_shown("open_seconds"))
+	panel.field("symbols").value = 7
+	assert_eq(level.bonus_pockets[0].symbols, 7)
+	session.select([Items.make(Items.Kind.BONUS, 3)] as Array[Vector2i])
+	panel.refresh()
+	assert_eq(panel.title(), "Tulip 2 at (485, 330)")
+	assert_false(_shown("symbols"), "a tulip has no reels")
+	panel.field("x").value = 470.5
+	panel.field("width").value = 30
+	assert_eq(level.bonus_pockets[3].position, Vector2(470.5, 330))
+	assert_eq(level.bonus_pockets[3].width, 30.0)
+	session.history.undo()
+	session.history.undo()
+	assert_eq(level.bonus_pockets[3].position, Vector2(485, 330))
+	assert_eq(level.bonus_pockets[0].symbols, 7, "the symbols edit is its own step")
+
+
+func test_a_too_narrow_tulip_is_named_by_its_id() -> void:
+	var level := _select(3)
+	panel.field("width").value = 8
+	var messages := PackedStringArray()
+	for issue in BoardValidator.errors(level):
+		messages.append(issue.message)
+	assert_string_contains("\n".join(messages), "Tulip 2 is 8 px wide; a ball needs at least 12.")
+
+
+func test_the_dock_counts_the_bonus_layer_on_a_pachinko_board_only() -> void:
+	var level := _select(0)
+	assert_string_contains(
+		BoardDock.count_text(level), "Start pockets: 1   Attackers: 1   Tulips: 2"
+	)
+	var maze := load("res://levels/maze/catacombs.board") as BoardLevel
+	assert_eq(BoardDock.count_text(maze), "Walls: 77   Holes: 6   Ball starts: 4")
