@@ -51,7 +51,10 @@ func show_start(level: BoardLevel) -> void:
 			)
 		)
 	)
-	_footer.text = "Click anywhere to start"
+	_footer.text = (
+		"Click anywhere or press %s to start"
+		% PachinkoInput.key_name(&"game_start", "the start key")
+	)
 	visible = true
 
 

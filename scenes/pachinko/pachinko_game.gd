@@ -208,7 +208,11 @@ func _is_start_event(event: InputEvent) -> bool:
 	var button := event as InputEventMouseButton
 	if button != null:
 		return button.pressed and button.button_index == MOUSE_BUTTON_LEFT
-	return event.is_action_pressed("game_start") or event.is_action_pressed("launch_charge")
+	# any of the keys a player reaches for first starts the game: start, charge or the handle
+	for action: String in ["game_start", "launch_charge", "launch_handle"]:
+		if event.is_action_pressed(action):
+			return true
+	return false
 
 
 func _on_flipper_pressed(at: Vector2) -> void:

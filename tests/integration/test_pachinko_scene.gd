@@ -52,6 +52,33 @@ func test_a_click_starts_and_a_flipper_drag_fires() -> void:
 	assert_eq(int(balls.get("last_drawn")), 2, "the fired ball and the loaded one, one batch")
 
 
+func test_the_start_charge_and_handle_keys_each_start_the_game() -> void:
+	for action: StringName in [&"game_start", &"launch_charge", &"launch_handle"]:
+		var game := _game()
+		var rules := game.get("rules") as PachinkoRules
+		var key := InputEventKey.new()
+		key.physical_keycode = _first_key(action)
+		key.pressed = true
+		assert_true(key.is_action_pressed(action), "a key is bound to %s" % action)
+		game.call("_unhandled_input", key)
+		assert_eq(rules.state, PachinkoRules.State.PLAYING, "%s starts the game" % action)
+		game.queue_free()
+
+
+func test_the_start_line_names_a_key() -> void:
+	var game := _game()
+	var footer := game.get_node("Instructions/Card/Margin/Box/Footer") as Label
+	assert_string_contains(footer.text, "press Enter to start")
+
+
+func _first_key(action: StringName) -> Key:
+	for event in InputMap.action_get_events(action):
+		var key := event as InputEventKey
+		if key != null:
+			return key.physical_keycode
+	return KEY_NONE
+
+
 func test_the_grip_is_the_flipper_and_the_rest_is_not() -> void:
 	var game := _game()
 	var launcher := game.get_node("Hud/Column/Launcher")
