@@ -111,6 +111,10 @@ func _unhandled_input(event: InputEvent) -> void:
 			rules.start_game()
 			sounds.play(SoundBank.UI_CLICK)
 			get_viewport().set_input_as_handled()
+			# a held charge or handle key goes on to charge or stream: the player pressed it
+			# to shoot, not only to close the instructions
+			if event is InputEventKey and not event.is_action_pressed("game_start"):
+				_controls.handle_action(rules, event)
 		return
 	if _controls.handle_action(rules, event):
 		get_viewport().set_input_as_handled()

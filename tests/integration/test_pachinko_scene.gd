@@ -62,6 +62,8 @@ func test_the_start_charge_and_handle_keys_each_start_the_game() -> void:
 		assert_true(key.is_action_pressed(action), "a key is bound to %s" % action)
 		game.call("_unhandled_input", key)
 		assert_eq(rules.state, PachinkoRules.State.PLAYING, "%s starts the game" % action)
+		if action == &"launch_handle":
+			assert_true(rules.handle.held, "and the held handle key streams at once")
 		game.queue_free()
 
 
