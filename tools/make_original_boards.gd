@@ -99,7 +99,7 @@ static func make_windmills() -> BoardLevel:
 		var hub := Items.empty_set()
 		hub["pins"] = PackedVector2Array([spot])
 		history.commit(AddItems.new(level, hub, "Add pin"))
-	for pocket: Array in [[Vector2(350, 390), 20], [Vector2(220, 560), 8]]:
+	for pocket: Array in [[Vector2(350, 390), 7], [Vector2(220, 560), 4]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
@@ -179,11 +179,8 @@ static func _save(level: BoardLevel) -> bool:
 		push_error("make_original_boards: %s has %d errors." % [level.board_id, errors.size()])
 		return false
 	var path := "res://levels/%s/%s.board" % [kind, id]
-	# Keep the file's uid (or give it one) so the editor never rewrites the file to add it.
-	var uid := ResourceLoader.get_resource_uid(path) if FileAccess.file_exists(path) else -1
+	# The file's uid lives in its .board.uid sidecar, which saving leaves alone.
 	var error := ResourceSaver.save(level, path)
-	if error == OK:
-		error = ResourceSaver.set_uid(path, uid if uid != -1 else ResourceUID.create_id())
 	if error != OK:
 		push_error("make_original_boards: could not write %s (%s)" % [path, error_string(error)])
 		return false
