@@ -77,12 +77,11 @@ static func make_hanami() -> BoardLevel:
 	Originals.erase_pins_outside_field(history, level, 22.0)
 	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
-	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 3})
-	_funnel(history, level, Vector2(265, 450), 13.0)
-	var attacker := {"open_seconds": 10.0, "open_catches": 8}
-	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 14, attacker)
-	_bonus(history, level, ROLE.TULIP, Vector2(185, 300), 26.0, 3, {})
-	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 2, {})
+	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 5})
+	var attacker := {"open_seconds": 8.0, "open_catches": 8}
+	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 10, attacker)
+	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 3, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 3, {})
 	return level
 
 
