@@ -104,7 +104,7 @@ static func make_windmills() -> BoardLevel:
 		var hub := Items.empty_set()
 		hub["pins"] = PackedVector2Array([spot])
 		history.commit(AddItems.new(level, hub, "Add pin"))
-	for pocket: Array in [[Vector2(350, 390), 7], [Vector2(220, 560), 4]]:
+	for pocket: Array in [[Vector2(350, 390), 5], [Vector2(220, 560), 5]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
