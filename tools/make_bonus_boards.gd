@@ -47,14 +47,19 @@ static func make_fever() -> BoardLevel:
 	var spot := Vector2(350, 215)
 	Originals.erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), CENTER)
 	history.commit(PatternAction.new(level, windmill, spot, CENTER))
-	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 2, {"symbols": 3})
+	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 2, {"symbols": 5})
 	_funnel(history, level, Vector2(350, 400), 13.0)
 	var attacker := {"open_seconds": 8.0, "open_catches": 10}
-	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 540), 64.0, 12, attacker)
-	_bonus(history, level, ROLE.TULIP, Vector2(215, 330), 26.0, 3, {})
-	for mouth: Vector2 in [Vector2(150, 470)]:
+	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 515), 64.0, 15, attacker)
+	# The funnel reaches past the cleared cup: clear round it too so no pin pinches a ball.
+	var funnel_room := Rect2(Vector2(350 - 32 - 44, 515 - 50), Vector2(2 * (32 + 44), 40))
+	Originals.erase_pins_in(history, level, funnel_room, CENTER)
+	_funnel(history, level, Vector2(350, 515), 32.0)
+	_guard(history, level, Vector2(350, 515) + Vector2(0.0, 38.0 + 11.0))
+	_bonus(history, level, ROLE.TULIP, Vector2(150, 330), 26.0, 3, {})
+	for mouth: Vector2 in [Vector2(240, 480)]:
 		Originals.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
-		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 4, CENTER))
+		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 3, CENTER))
 	return level
 
 
@@ -72,12 +77,11 @@ static func make_hanami() -> BoardLevel:
 	Originals.erase_pins_outside_field(history, level, 22.0)
 	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
-	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 3})
-	_funnel(history, level, Vector2(265, 450), 13.0)
-	var attacker := {"open_seconds": 10.0, "open_catches": 8}
-	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 14, attacker)
-	_bonus(history, level, ROLE.TULIP, Vector2(185, 300), 26.0, 3, {})
-	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 2, {})
+	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 5})
+	var attacker := {"open_seconds": 8.0, "open_catches": 8}
+	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 10, attacker)
+	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 3, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 3, {})
 	return level
 
 
@@ -90,6 +94,14 @@ static func _rows(
 		var pattern := {"kind": "row", "count": per_row - row % 2, "spacing": spacing}
 		var x := CENTER + (spacing * 0.5 if row % 2 == 1 else 0.0)
 		history.commit(PatternAction.new(level, pattern, Vector2(x, top + row * gap)))
+
+
+# A pin just under a cup's catching pin at `below`: balls bouncing up under the cup hit it
+# instead of touching the catching pin from outside (which pays as if caught).
+static func _guard(history: ActionHistory, level: BoardLevel, below: Vector2) -> void:
+	var guard := Items.empty_set()
+	guard["pins"] = PackedVector2Array([below])
+	history.commit(AddItems.new(level, guard, "Add pin"))
 
 
 # Clears the pins round a cup and adds a bonus pocket there (and its mirror image).

@@ -42,26 +42,31 @@ func _initialize() -> void:
 	quit(0 if ok else 1)
 
 
-## Tulip Garden: a dense staggered lattice; each pocket sits in a cleared bed with two
-## three-pin petal arcs beside its mouth that turn passing balls into it.
+## Tulip Garden: a dense staggered lattice; each pocket sits in a cleared bed, and the two
+## side pockets have petal pins beside their mouths that turn passing balls in. Petals on
+## every pocket caught 0.6 balls a shot (a return of 5.7), so the rest are bare and most
+## pockets pay two: many small wins.
 static func make_tulips() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := pachinko_base(
 		history,
 		"tulips",
 		"Tulip Garden",
-		"A dense field of pins with tulip pockets: petals beside each mouth steer balls in."
+		"A dense field of pins and many small pockets; petals steer balls into the side ones."
 	)
 	var axis := CENTER
 	history.commit(PatternAction.new(level, _lattice(27, 22.0, 31), Vector2(CENTER, CENTER)))
 	erase_pins_outside_field(history, level, 22.0)
-	# [mouth, payout]; all but the centre one are mirrored to the right half.
-	var tulips := [[Vector2(350, 280), 15], [Vector2(220, 240), 5], [Vector2(190, 420), 4]]
-	tulips += [[Vector2(280, 470), 8], [Vector2(350, 590), 3]]
+	# [mouth, payout, petals]; all but the centre ones are mirrored to the right half.
+	var tulips := [[Vector2(350, 280), 2, false], [Vector2(220, 240), 3, false]]
+	tulips += [[Vector2(190, 420), 2, true], [Vector2(280, 470), 2, false]]
+	tulips += [[Vector2(350, 590), 2, false]]
 	for tulip: Array in tulips:
 		var mouth: Vector2 = tulip[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(40, 34), Vector2(80, 78)), axis)
 		history.commit(PocketAction.new(level, mouth, 22.0, 24.0, tulip[1], axis))
+		if not tulip[2]:
+			continue
 		# Petals: two pins up and out from each side of the mouth, placed with the pin tool
 		# in mirror mode; a ball's width apart from the rim so none sticks between them.
 		var petal_pins := PackedVector2Array()
@@ -99,7 +104,7 @@ static func make_windmills() -> BoardLevel:
 		var hub := Items.empty_set()
 		hub["pins"] = PackedVector2Array([spot])
 		history.commit(AddItems.new(level, hub, "Add pin"))
-	for pocket: Array in [[Vector2(350, 390), 20], [Vector2(220, 560), 8]]:
+	for pocket: Array in [[Vector2(350, 390), 5], [Vector2(220, 560), 5]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
@@ -179,11 +184,8 @@ static func _save(level: BoardLevel) -> bool:
 		push_error("make_original_boards: %s has %d errors." % [level.board_id, errors.size()])
 		return false
 	var path := "res://levels/%s/%s.board" % [kind, id]
-	# Keep the file's uid (or give it one) so the editor never rewrites the file to add it.
-	var uid := ResourceLoader.get_resource_uid(path) if FileAccess.file_exists(path) else -1
+	# The file's uid lives in its .board.uid sidecar, which saving leaves alone.
 	var error := ResourceSaver.save(level, path)
-	if error == OK:
-		error = ResourceSaver.set_uid(path, uid if uid != -1 else ResourceUID.create_id())
 	if error != OK:
 		push_error("make_original_boards: could not write %s (%s)" % [path, error_string(error)])
 		return false

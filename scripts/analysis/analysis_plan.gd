@@ -33,6 +33,9 @@ var power_to := 100.0
 ## Balls in flight at once in one world. They pass through each other (no ball-ball
 ## contacts), so each flies as if alone; more at once only shares the per-step cost.
 var in_flight := 125
+## True: every bonus pocket stays open the whole run (attacker lids up, tulip wings
+## spread), to measure what they catch in the rounds the rules open them for (BonusEstimate).
+var bonus_open := false
 
 
 ## A plan for `shot_count` shots on `board` with the RNG seed `seed_value`.
@@ -42,6 +45,17 @@ static func create(board: BoardLevel, shot_count: int, seed_value: int) -> Analy
 	plan.shots = shot_count
 	plan.rng_seed = seed_value
 	return plan
+
+
+## A copy of this plan with every bonus pocket held open (same shots, seed and powers).
+func with_bonus_open() -> AnalysisPlan:
+	var copy := AnalysisPlan.create(level, shots, rng_seed)
+	copy.threads = threads
+	copy.power_from = power_from
+	copy.power_to = power_to
+	copy.in_flight = in_flight
+	copy.bonus_open = true
+	return copy
 
 
 ## What is wrong with the plan, or "" when it can run.

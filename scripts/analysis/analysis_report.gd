@@ -7,6 +7,11 @@ extends RefCounted
 ## return: balls back in the cup per ball shot (a pocket's payout, or 1 for a weak shot
 ## that rolled back down the rail), so a return of 1.0 or more means the game cannot be
 ## lost on average.
+##
+## expected_return (whole run and per band): return plus what the bonus layer adds when
+## the rules open its pockets (BonusEstimate, from a second run with them held open: pass
+## its tally as `open_tally`). It equals return on a board without a bonus layer, and is
+## left out for a bonus board analysed without the open run.
 
 ## Report format version (bump when keys change meaning).
 const VERSION := 1
@@ -15,7 +20,9 @@ const DECIMALS := 0.00001
 
 
 ## The report for `tally` from `plan` (wall time `wall_s` seconds).
-static func build(plan: AnalysisPlan, tally: AnalysisTally, wall_s: float) -> Dictionary:
+static func build(
+	plan: AnalysisPlan, tally: AnalysisTally, wall_s: float, open_tally: AnalysisTally = null
+) -> Dictionary:
 	var level := plan.level
 	var n := tally.total_shots()
 	var value := AnalysisTally.total(tally.band_value)
@@ -50,7 +57,7 @@ static func build(plan: AnalysisPlan, tally: AnalysisTally, wall_s: float) -> Di
 		# An attacker's lid is shut without the rules' jackpots: never counted dead.
 		if p >= facts.size() or facts[p]["role"] != "attacker":
 			dead.append(p)
-	return {
+	var report := {
 		"version": VERSION,
 		"game": "pachinko",
 		"board": level.board_id,
@@ -73,6 +80,31 @@ static func build(plan: AnalysisPlan, tally: AnalysisTally, wall_s: float) -> Di
 		"ball_steps": tally.ball_steps,
 		"density_cell": AnalysisPlan.DENSITY_CELL,
 	}
+	_add_expected(report, level, tally, open_tally)
+	return report
+
+
+# expected_return for the run and each band, and the bonus figures behind it.
+static func _add_expected(
+	report: Dictionary, level: BoardLevel, tally: AnalysisTally, open_tally: AnalysisTally
+) -> void:
+	var has_bonus := not level.bonus_pockets.is_empty()
+	if has_bonus and open_tally == null:
+		return
+	var bands: Array[Dictionary] = report["bands"]
+	for b in bands.size():
+		var added := 0.0
+		if has_bonus:
+			added = BonusEstimate.added_return(BonusEstimate.estimate(level, tally, open_tally, b))
+		bands[b]["expected_return"] = _round(number(bands[b]["return"]) + added)
+	var whole := BonusEstimate.estimate(level, tally, open_tally) if has_bonus else {}
+	if has_bonus:
+		var rounded := {}
+		for key: String in whole:
+			rounded[key] = _round(number(whole[key]))
+		report["bonus"] = rounded
+	var total := number(report["return"]) + BonusEstimate.added_return(whole)
+	report["expected_return"] = _round(total)
 
 
 ## A number read from a report: a JSON number (float once parsed, int when fresh), or

@@ -29,7 +29,8 @@ static func issues(level: BoardLevel, report: Dictionary) -> Array[BoardIssue]:
 			text = "%s is dead: in %d analysed shots no power reaches it" % [name, shots]
 		text += " (under 0.5%% at every power)."
 		BoardIssue.add_to(out, BoardIssue.Severity.WARNING, text, at, "analysis_dead_pocket")
-	var ret := AnalysisReport.number(report.get("return"), 0.0)
+	# With the bonus layer's rounds when the report has them (see AnalysisReport).
+	var ret := AnalysisReport.number(report.get("expected_return", report.get("return")), 0.0)
 	if ret >= RETURN_LIMIT and not pockets.is_empty():
 		var text := (
 			"At random power the board pays back %.2f ± %.2f balls per ball"

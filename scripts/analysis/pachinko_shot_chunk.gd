@@ -52,7 +52,7 @@ func _init(plan: AnalysisPlan, clear_speed: float, table: RailExitTable = null) 
 	_plan = plan
 	_clear_speed = clear_speed
 	_table = table
-	# The level's pockets and then the bonus pockets (closed: an attacker never catches).
+	# The level's pockets and then the bonus pockets (shut unless the plan holds them open).
 	var pockets := BonusGeometry.world_pockets(plan.level)
 	tally = AnalysisTally.new(pockets.size(), plan.level.size)
 	for pocket in pockets:
@@ -94,6 +94,8 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	_world = BoardWorldFactory.build(_plan.level)
 	_world.threads = 1
 	_world.ball_contacts = false
+	if _plan.bonus_open:
+		_open_bonus_parts()
 	_world.ball_pocketed.connect(_on_pocketed)
 	_world.ball_drained.connect(_on_drained)
 	_world.ball_entered_zone.connect(_on_zone)
@@ -122,6 +124,14 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	tally.density = _density
 	_world = null
 	return true
+
+
+# Lifts every attacker lid and spreads every tulip's wings (the world built them shut).
+func _open_bonus_parts() -> void:
+	var parts := BonusGeometry.wall_plan(_plan.level)
+	for wall in parts.size():
+		var part: BonusGeometry.Part = parts[wall]["part"]
+		_world.set_wall_enabled(wall, BonusGeometry.part_solid(part, true))
 
 
 # One shot of power level `q` at step `step`: from the rail table when it knows the climb.

@@ -48,7 +48,11 @@ static func run(values: Dictionary) -> int:
 		var tally := analysis.run()
 		if tally == null:
 			return _fail(EXIT_BAD_INPUT, plan.problem())
-		report = AnalysisReport.build(plan, tally, analysis.wall_seconds)
+		var open_tally: AnalysisTally = null
+		if not loaded.level.bonus_pockets.is_empty():
+			# The same shots again with the bonus pockets held open, for BonusEstimate.
+			open_tally = PachinkoAnalysis.new(plan.with_bonus_open()).run()
+		report = AnalysisReport.build(plan, tally, analysis.wall_seconds, open_tally)
 		report["heatmap"] = base + ".png"
 		var png_error := HeatmapImage.render(loaded.level, tally).save_png(abs_base + ".png")
 		if png_error != OK:

@@ -20,7 +20,7 @@ func test_accounting_holds_after_a_long_seeded_autoplay() -> void:
 	var hits := 0
 	for h: int in result["pocket_hits"]:
 		hits += h
-	assert_eq(hits * 4, int(result["payouts"]), "classic pockets pay 4 each")
+	assert_eq(hits * 3, int(result["payouts"]), "classic pockets pay 3 each")
 
 
 func test_the_same_seed_gives_the_same_result() -> void:

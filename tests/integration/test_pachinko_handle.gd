@@ -146,7 +146,8 @@ func test_the_autoplay_handle_mode_streams_and_repeats_for_a_seed() -> void:
 	var first := Autoplay.run(level, 30.0, 5, null, 60)
 	var again := Autoplay.run(level, 30.0, 5, null, 60)
 	assert_eq(first["mode"], "handle 60")
-	assert_between(int(first["shots"]), 45, 51, "a stream: 100 balls a minute")
+	# 50 a half minute, less a few when the cup runs dry and the next game starts.
+	assert_between(int(first["shots"]), 40, 51, "a stream: 100 balls a minute")
 	assert_true(first["accounting_ok"])
 	assert_eq(JSON.stringify(first), JSON.stringify(again), "the same seed plays the same")
 	var refused := Autoplay.run(level, 5.0, 1, null, 101)

@@ -47,10 +47,10 @@ func test_the_factory_adds_bonus_cups_after_the_pins_and_parts_first() -> void:
 	var level := _bonus_board()
 	var world := BoardWorldFactory.build(level)
 	var plan := BonusGeometry.wall_plan(level)
-	assert_eq(plan.size(), 1 + 4, "one lid and four wings")
-	assert_true(world.is_wall_enabled(0), "the lid starts closed")
-	assert_true(world.is_wall_enabled(1), "a closed wing is solid")
-	assert_false(world.is_wall_enabled(2), "an open wing is not")
+	assert_eq(plan.size(), 2 + 4, "a lid of two halves and four wings")
+	assert_true(world.is_wall_enabled(0) and world.is_wall_enabled(1), "the lid starts closed")
+	assert_true(world.is_wall_enabled(2), "a closed wing is solid")
+	assert_false(world.is_wall_enabled(3), "an open wing is not")
 	var pins := 0
 	for spec in level.bonus_pockets:
 		pins += BonusGeometry.rim_pins(level, spec).size()
@@ -99,11 +99,12 @@ func test_a_tulip_opens_after_a_catch_and_closes_after_the_next() -> void:
 	var machine := BonusMachine.new(level, world, 1)
 	assert_eq(machine.catch(2), 5)
 	assert_true(machine.is_open(2))
-	assert_false(world.is_wall_enabled(1), "upright wings gone")
-	assert_true(world.is_wall_enabled(2), "spread wings solid")
+	# Walls 0 and 1 are the lid's halves; the tulip's wings follow.
+	assert_false(world.is_wall_enabled(2), "upright wings gone")
+	assert_true(world.is_wall_enabled(3), "spread wings solid")
 	machine.catch(2)
 	assert_false(machine.is_open(2))
-	assert_true(world.is_wall_enabled(1))
+	assert_true(world.is_wall_enabled(2))
 	assert_eq(machine.tulip_opens, 1)
 
 

@@ -68,15 +68,17 @@ static func _draw_rim(canvas: CanvasItem, level: BoardLevel, spec: BonusPocketSp
 			canvas.draw_circle(pins[k], r, PinLayer.HEAD)
 
 
-# Closed: a gold bar across the mouth. Open: the two halves swung up on their hinges.
+# Closed: a gold roof across the mouth (the world's two lid halves). Open: the two halves
+# swung up on their hinges.
 static func _draw_lid(canvas: CanvasItem, spec: BonusPocketSpec, open: bool) -> void:
 	var half := spec.width * 0.5
 	var left := spec.position + Vector2(-half, 0.0)
 	var right := spec.position + Vector2(half, 0.0)
 	var width := BonusGeometry.PART_RADIUS * 2.0 + 1.0
 	if not open:
-		canvas.draw_line(left, right, Color(0.1, 0.05, 0.0), width + 2.0, true)
-		canvas.draw_line(left, right, LID, width, true)
+		var roof := PackedVector2Array([left, BonusGeometry.lid_ridge(spec), right])
+		canvas.draw_polyline(roof, Color(0.1, 0.05, 0.0), width + 2.0, true)
+		canvas.draw_polyline(roof, LID, width, true)
 		return
 	var flap := half * 0.8
 	for side: float in [-1.0, 1.0]:

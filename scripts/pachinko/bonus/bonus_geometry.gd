@@ -6,13 +6,16 @@ extends RefCounted
 ## Every bonus pocket is a PocketStamp cup whose pins are added after the level's own pins,
 ## tagged with pocket id `level.pockets.size() + index` (its special pin catches). Its moving
 ## parts are capsule walls, added to the world before any other wall so wall `k` of
-## `wall_plan()` is world wall `k`: an attacker's lid across the mouth (on while closed), a
-## tulip's two upright wings (on while closed) and two spread wings (on while open).
+## `wall_plan()` is world wall `k`: an attacker's lid across the mouth, two halves with a
+## low ridge (on while closed), a tulip's two upright wings (on while closed) and two spread
+## wings (on while open).
 
 enum Part { LID, WING_CLOSED, WING_OPEN }
 
 ## Capsule radius of a lid or a wing, px.
 const PART_RADIUS := 2.5
+## A shut lid's rise from each end to its ridge, per pixel across (a gentle roof).
+const LID_SLOPE := 0.2
 ## A tulip's wing length as a share of the mouth width.
 const WING_SHARE := 0.75
 ## An open wing leans out this far from upright, radians (about 50 degrees).
@@ -40,8 +43,11 @@ static func wall_plan(level: BoardLevel) -> Array[Dictionary]:
 		var half := spec.width * 0.5
 		var mouth := spec.position
 		if spec.role == BonusPocketSpec.Role.ATTACKER:
-			var lid_a := mouth + Vector2(-half, 0.0)
-			plan.append(_part(i, Part.LID, lid_a, mouth + Vector2(half, 0.0)))
+			# Two halves meeting in a low ridge, so balls roll off a shut lid instead
+			# of resting on it until the watcher nudges them.
+			var ridge := lid_ridge(spec)
+			plan.append(_part(i, Part.LID, mouth + Vector2(-half, 0.0), ridge))
+			plan.append(_part(i, Part.LID, ridge, mouth + Vector2(half, 0.0)))
 		elif spec.role == BonusPocketSpec.Role.TULIP:
 			for side: float in [-1.0, 1.0]:
 				var root := mouth + Vector2(side * half, 0.0)
@@ -50,6 +56,12 @@ static func wall_plan(level: BoardLevel) -> Array[Dictionary]:
 				var lean := Vector2(side * sin(WING_OPEN_ANGLE), -cos(WING_OPEN_ANGLE)) * wing
 				plan.append(_part(i, Part.WING_OPEN, root, root + lean))
 	return plan
+
+
+## The top of a shut attacker lid: its two halves rise to this point above the mouth's
+## middle.
+static func lid_ridge(spec: BonusPocketSpec) -> Vector2:
+	return spec.position + Vector2(0.0, -spec.width * LID_SLOPE * 0.5)
 
 
 ## True when a part is solid while its pocket is `open`.
