@@ -4,6 +4,9 @@ extends GutTest
 ## mirrored, aligned and duplicated like pockets (one undo step per gesture), named by id in
 ## the editor and in the validator's messages, and on their own "Bonus pieces" layer.
 
+## A frozen bonus board (the first Fever layout), so rebalancing the shipped boards never
+## moves the pieces these tests pick.
+const BONUS_BOARD := "res://tests/fixtures/boards/bonus_layout.board"
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -19,7 +22,7 @@ const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd"
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
 
-# fever.board: start pocket 1 at (350, 400), attacker 1 at (350, 540), tulips 1 and 2 at
+# bonus_layout.board: start pocket 1 at (350, 400), attacker 1 at (350, 540), tulips 1 and 2 at
 # (215, 330) and (485, 330), mirrored across x = 350.
 const TULIP_1 := Vector2(215, 330)
 const TULIP_2 := Vector2(485, 330)
@@ -29,7 +32,7 @@ var input: BoardInput
 
 
 func _open() -> BoardLevel:
-	var level := (load("res://levels/pachinko/fever.board") as BoardLevel).duplicate_level()
+	var level := (load(BONUS_BOARD) as BoardLevel).duplicate_level()
 	session = Session.new(level)
 	input = BoardInput.new(session)
 	session.snap_enabled = false

@@ -3,6 +3,9 @@ extends GutTest
 ## symbols, an attacker's open seconds and catches, shown with exact values and each typed
 ## value one undo step; a value the game cannot use is named by the pocket's id.
 
+## A frozen bonus board (the first Fever layout), so rebalancing the shipped boards never
+## moves the pieces these tests pick.
+const BONUS_BOARD := "res://tests/fixtures/boards/bonus_layout.board"
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
@@ -14,7 +17,7 @@ var panel: PropertyPanel
 
 # fever.board: start pocket 1, attacker 1, tulips 1 and 2 (bonus_pockets 0 to 3).
 func _select(index: int) -> BoardLevel:
-	var level := (load("res://levels/pachinko/fever.board") as BoardLevel).duplicate_level()
+	var level := (load(BONUS_BOARD) as BoardLevel).duplicate_level()
 	session = Session.new(level)
 	panel = add_child_autofree(PropertyPanel.new())
 	panel.bind(session)
