@@ -67,18 +67,15 @@ func _move_ball(i: int) -> void:
 		_set_radius(_rad[i])
 	# Substeps of at most the safe travel (velocity plus push, capped at half the radius).
 	var push: Vector2 = _push[i]
-	var push_len := 0.0
-	if push != Vector2.ZERO:
-		push_len = push.length()
-		if push_len > 0.5 * _r:
-			push *= 0.5 * _r / push_len
-			push_len = 0.5 * _r
 	var steps := 1
-	var travel: float = (_v * _dt + push).length() + push_len
-	if travel > _max_travel:
-		steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
+	if push != Vector2.ZERO:
+		steps = _steps_with_push(push)
+	else:
+		var travel: float = (_v * _dt).length()
+		if travel > _max_travel:
+			steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
+		_push_step = Vector2.ZERO
 	_h = _dt / steps
-	_push_step = push / steps
 	var p_start: Vector2 = _p
 	for sub: int in steps:
 		if _tracing and sub > 0:
@@ -87,20 +84,22 @@ func _move_ball(i: int) -> void:
 		_p += _v * _h + _push_step
 		if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
 			_touch_ring()
+		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+		var c: int = at.y * _cols + at.x
 		var k0 := 0
 		var k1: int = _pin_items.size()
 		if _zoned:
-			var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
-				Vector2i.ZERO, _last_cell
-			)
-			k0 = _pin_start[cell.y * _cols + cell.x]
-			k1 = _pin_start[cell.y * _cols + cell.x + 1]
+			k0 = _pin_start[c]
+			k1 = _pin_start[c + 1]
+		var moved := false
 		for k: int in range(k0, k1):
 			var d: Vector2 = _p - _pin_item_pos[k]
 			var lim: float = _pin_item_rad[k] + _r
 			if d.length_squared() < lim * lim and not _gone:
 				_touch_pin(k, d, lim)
-		if _has_walls and not _gone:
+				moved = true
+		# A ball no pin moved is still in cell c: an empty wall cell needs no call.
+		if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
 			_touch_walls()
 		if _gone:
 			break
@@ -120,13 +119,42 @@ func _move_ball(i: int) -> void:
 		_rest[i] = 0.0
 	else:
 		_rest_or_sleep(i)
-	if (
-		_has_sensors
-		and BallSensors.sense(
-			_g, i, _ids[i], p_start, _p, _goal_mask, _zone_mask, events, event_speed
-		)
-	):
+	if _has_sensors and _sensed(i, p_start):
 		_alive[i] = 0
+
+
+## The sensor pass of ball `i`, which moved from `p_start` to _p (see BallSensors): true
+## when it fell in a hole. With zones alone (no holes, no goals) BallSensors has work only
+## when the ball crossed a zone's edge, so that is looked for here first.
+func _sensed(i: int, p_start: Vector2) -> bool:
+	if _zones_only:
+		var mask: int = _zone_mask[i]
+		var crossed := false
+		for k: int in _zone_count:
+			var zr: float = _zone_rad[k]
+			if (_p.distance_squared_to(_zone_pos[k]) <= zr * zr) != ((mask & (1 << k)) != 0):
+				crossed = true
+				break
+		if not crossed:
+			return false
+	return BallSensors.sense(
+		_g, i, _ids[i], p_start, _p, _goal_mask, _zone_mask, events, event_speed
+	)
+
+
+## Substeps for a ball pushed by `push` (ball-ball separation, capped at half the radius
+## here), at most the safe travel each; sets the push share of each substep.
+func _steps_with_push(push: Vector2) -> int:
+	var push_len: float = push.length()
+	if push_len > 0.5 * _r:
+		push *= 0.5 * _r / push_len
+		push_len = 0.5 * _r
+	var steps := 1
+	var travel: float = (_v * _dt + push).length() + push_len
+	if travel > _max_travel:
+		steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
+	_push_step = push / steps
+	return steps
 
 
 ## Friction and the speed cap under the seed's options (PhysicsTuning.friction_against,

@@ -62,6 +62,12 @@ var _has_ring := false
 var _ring_center := Vector2.ZERO
 var _has_drain_arc := false
 var _has_sensors := false
+## True when the sensors are zones alone (no holes, no goals): the mover then looks for a
+## zone edge crossed before it calls BallSensors.
+var _zones_only := false
+var _zone_pos := PackedVector2Array()
+var _zone_rad := PackedFloat32Array()
+var _zone_count := 0
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
@@ -195,6 +201,10 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_ring_center = g.ring_center
 	_has_drain_arc = g.has_drain_arc
 	_has_sensors = not (g.hole_pos.is_empty() and g.goal_pos.is_empty() and g.zone_pos.is_empty())
+	_zones_only = g.hole_pos.is_empty() and g.goal_pos.is_empty()
+	_zone_pos = g.zone_pos
+	_zone_rad = g.zone_radius
+	_zone_count = g.zone_pos.size()
 	_origin = g.origin
 	_inv_cell = g.inv_cell
 	_cols = g.cols
