@@ -36,15 +36,44 @@ const HIT_EVENT: Array[int] = [
 const EPS := ContactMath.EPS
 
 
-## Moves the awake balls in slots from..to.
+## Moves the awake balls in slots from..to: each moves (_move_ball), then, still there,
+## gets its rest time or sleep and its sensor pass. Written out here rather than in a
+## call: this runs for every ball every step. With zones alone (no holes, no goals)
+## BallSensors has work only when the ball crossed a zone's edge, so that is looked for
+## first.
 func move_range(from: int, to: int) -> void:
 	for i: int in range(from, to):
-		if _asleep[i] == 0:
-			_move_ball(i)
+		if _asleep[i] != 0:
+			continue
+		_move_ball(i)
+		if _gone:
+			continue
+		if _v.length_squared() >= _rest_speed2:
+			_rest[i] = 0.0
+		else:
+			_rest_or_sleep(i)
+		if not _has_sensors:
+			continue
+		var crossed: bool = not _zones_only
+		if _zones_only:
+			var mask: int = _zone_mask[i]
+			for k: int in _zone_count:
+				var zr: float = _zone_rad[k]
+				if (_p.distance_squared_to(_zone_pos[k]) <= zr * zr) != ((mask & (1 << k)) != 0):
+					crossed = true
+					break
+		if (
+			crossed
+			and BallSensors.sense(
+				_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed
+			)
+		):
+			_alive[i] = 0
 
 
 ## One ball through the step: friction and the speed cap, then substeps (each: move, then
-## the narrow phase per shape kind), then its contacts, position, rest, sleep and sensors.
+## the narrow phase per shape kind), then its contacts and position (move_range does the
+## rest). Leaves _gone true when the ball left the board.
 ## One call per ball: the pin candidates are tested and the ball written back inline (a
 ## call costs as much as a test); contacts, walls and the rarer rules call out.
 func _move_ball(i: int) -> void:
@@ -76,7 +105,7 @@ func _move_ball(i: int) -> void:
 			steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
 		_push_step = Vector2.ZERO
 	_h = _dt / steps
-	var p_start: Vector2 = _p
+	_p_start = _p
 	for sub: int in steps:
 		if _tracing and sub > 0:
 			trace_ball.append(i)
@@ -114,32 +143,6 @@ func _move_ball(i: int) -> void:
 	_cell_keys[i] = ((cell.y * _cols + cell.x) << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
-		return
-	if _v.length_squared() >= _rest_speed2:
-		_rest[i] = 0.0
-	else:
-		_rest_or_sleep(i)
-	if _has_sensors and _sensed(i, p_start):
-		_alive[i] = 0
-
-
-## The sensor pass of ball `i`, which moved from `p_start` to _p (see BallSensors): true
-## when it fell in a hole. With zones alone (no holes, no goals) BallSensors has work only
-## when the ball crossed a zone's edge, so that is looked for here first.
-func _sensed(i: int, p_start: Vector2) -> bool:
-	if _zones_only:
-		var mask: int = _zone_mask[i]
-		var crossed := false
-		for k: int in _zone_count:
-			var zr: float = _zone_rad[k]
-			if (_p.distance_squared_to(_zone_pos[k]) <= zr * zr) != ((mask & (1 << k)) != 0):
-				crossed = true
-				break
-		if not crossed:
-			return false
-	return BallSensors.sense(
-		_g, i, _ids[i], p_start, _p, _goal_mask, _zone_mask, events, event_speed
-	)
 
 
 ## Substeps for a ball pushed by `push` (ball-ball separation, capped at half the radius

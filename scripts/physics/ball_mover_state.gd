@@ -109,6 +109,8 @@ var _n_a := Vector2.ZERO
 var _n_b := Vector2.ZERO
 ## Set when the ball left the world this substep (captured by a pin or drained).
 var _gone := false
+## Where the ball being moved started this step (for the sensors' path test).
+var _p_start := Vector2.ZERO
 # Per-radius limits, cached while consecutive balls share a radius.
 var _max_travel := 0.0
 var _ring_lim := 0.0
