@@ -138,9 +138,11 @@ func _move_ball(i: int) -> void:
 		_write_contacts(i)
 	_pos[i] = _p
 	_vel[i] = _v
-	# The broad phase's key for next step (see BallStore.cell_keys).
-	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	_cell_keys[i] = ((cell.y * _cols + cell.x) << BallPairs.SORT_SHIFT) | i
+	# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
+	# stale anyway (no broad phase ran: it bins every ball again before it reads them).
+	if _keyed:
+		var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+		_cell_keys[i] = ((cell.y * _cols + cell.x) << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
 

@@ -40,6 +40,8 @@ var _drain_time := PackedFloat32Array()
 var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
 var _cell_keys := PackedInt64Array()
+## False when the store's broad-phase keys are stale this step: then none are written.
+var _keyed := true
 var _g: StaticGeometry
 var _zoned := true
 var _pin_start := PackedInt32Array()
@@ -178,6 +180,7 @@ func _take_balls(b: BallStore) -> void:
 	_goal_mask = b.goal_mask
 	_zone_mask = b.zone_mask
 	_cell_keys = b.cell_keys
+	_keyed = b.keys_valid
 
 
 func _take_geometry(g: StaticGeometry) -> void:

@@ -57,8 +57,9 @@ var contact_b := PackedInt32Array()
 var push := PackedVector2Array()
 var index_of := PackedInt32Array()
 ## Each slot's broad-phase key (cell << BallPairs.SORT_SHIFT | slot), written by the
-## motion stage where the ball ended; `keys_valid` turns false whenever a ball is placed,
-## added or removed, or the grid changes, and the broad phase then bins every ball again.
+## motion stage where the ball ended while they are valid; `keys_valid` turns false
+## whenever a ball is placed, added or removed, the grid changes or a step runs without
+## ball contacts, and the broad phase then bins every ball again.
 var cell_keys := PackedInt64Array()
 var keys_valid := false
 ## 1 for a ball that touched another ball in this step's ball-ball pass: a sleeper held up

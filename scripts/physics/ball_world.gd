@@ -332,6 +332,9 @@ func step(dt: float) -> void:
 		_pairs.find_pairs(_balls, _geo, _lanes)
 	else:
 		_pairs.lane_pairs.clear()
+		# No broad phase: the motion stage skips the keys, and they are binned again when
+		# ball contacts come back on.
+		_balls.keys_valid = false
 	_clock.lap(StageClock.Stage.BROAD_PHASE)
 	var t: PhysicsTuning = tuning
 	_pairs.solve(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
