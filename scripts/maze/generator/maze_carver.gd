@@ -41,9 +41,9 @@ func carve(rng: RandomNumberGenerator, openness: float) -> void:
 		var here: Vector2i = stack.back()
 		var options: Array[Vector2i] = []
 		for step in steps:
-			var next := here + step
-			if contains(next) and seen[_index(next)] == 0:
-				options.append(next)
+			var neighbour := here + step
+			if contains(neighbour) and seen[_index(neighbour)] == 0:
+				options.append(neighbour)
 		if options.is_empty():
 			stack.pop_back()
 			continue

@@ -28,11 +28,16 @@ var blurb := ""
 ## title, blurb (missing keys keep their defaults).
 static func from_dict(values: Dictionary) -> MazeGenSettings:
 	var settings := MazeGenSettings.new()
-	settings.cols = int(values.get("cols", settings.cols))
-	settings.rows = int(values.get("rows", settings.rows))
-	settings.holes = int(values.get("holes", settings.holes))
-	settings.difficulty = float(values.get("difficulty", settings.difficulty))
-	settings.rng_seed = int(values.get("seed", settings.rng_seed))
+	var cols_value: int = values.get("cols", settings.cols)
+	var rows_value: int = values.get("rows", settings.rows)
+	var holes_value: int = values.get("holes", settings.holes)
+	var difficulty_value: float = values.get("difficulty", settings.difficulty)
+	var seed_value: int = values.get("seed", settings.rng_seed)
+	settings.cols = cols_value
+	settings.rows = rows_value
+	settings.holes = holes_value
+	settings.difficulty = difficulty_value
+	settings.rng_seed = seed_value
 	settings.id = str(values.get("id", settings.id))
 	settings.title = str(values.get("title", settings.title))
 	settings.blurb = str(values.get("blurb", settings.blurb))
