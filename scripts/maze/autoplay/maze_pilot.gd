@@ -36,6 +36,9 @@ const STALL_DRIFT := 2.0
 const GOAL_PATIENCE := 3.0
 ## Re-plans allowed before the pilot falls back to steering single balls.
 const MAX_PLANS := 60
+## While steering single balls on a grid maze, the pilot tries to gather again this often,
+## seconds (the balls have moved, so a plan may work now).
+const LEAD_PATIENCE := 4.0
 
 var nav: MazeNav
 var grid: MazeGrid
@@ -68,6 +71,7 @@ var _herd_cell := -1
 var _herd_time := 0.0
 var _herd_mark := Vector2.ZERO
 var _goal_time := 0.0
+var _lead_time := 0.0
 
 
 ## A pilot for `level` (holes avoided when `hard_mode`), stepping `dt` seconds per call,
@@ -111,6 +115,12 @@ func _steer(positions: PackedVector2Array, velocities: PackedVector2Array) -> Ve
 			return _hold_move(positions, velocities)
 		Phase.HERD:
 			return _herd(positions, velocities)
+	if planner != null and plans_made < MAX_PLANS:
+		_lead_time += _dt
+		if _lead_time >= LEAD_PATIENCE:
+			_lead_time = 0.0
+			phase = Phase.PLAN
+			return Vector2.ZERO
 	return steering.lead(positions, velocities)
 
 
