@@ -79,6 +79,15 @@ func closed_sides(cell: Vector2i) -> int:
 	return top + bottom + left + right
 
 
+## True when `a` and `b` are neighbouring cells of the grid with no wall between them.
+func is_open(a: Vector2i, b: Vector2i) -> bool:
+	if not contains(a) or not contains(b) or absi(a.x - b.x) + absi(a.y - b.y) != 1:
+		return false
+	if a.x != b.x:
+		return vertical[maxi(a.x, b.x) * rows + a.y] == 0
+	return horizontal[maxi(a.y, b.y) * cols + a.x] == 0
+
+
 ## Wall segments in cell units ([a, b] pairs of Vector2), runs along each grid line joined.
 func wall_segments() -> Array[PackedVector2Array]:
 	var walls: Array[PackedVector2Array] = []

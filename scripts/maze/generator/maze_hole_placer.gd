@@ -38,6 +38,7 @@ static func place(
 	_shuffle(corridors, rng)
 	var walls_free := MazeFlood.new(level, false).free
 	var holes := PackedVector2Array()
+	var blocked := {}
 	while holes.size() < count and not (dead_ends.is_empty() and corridors.is_empty()):
 		var from_corridor := (
 			corridors.size() > 0 and (dead_ends.is_empty() or rng.randf() < difficulty)
@@ -45,8 +46,13 @@ static func place(
 		var pick: Vector2i = corridors.pop_back() if from_corridor else dead_ends.pop_back()
 		holes.append((Vector2(pick) + Vector2(0.5, 0.5)) * cell)
 		level.holes = holes
-		if not _every_start_reaches_goal(level, walls_free):
+		blocked[pick] = true
+		if (
+			not _cells_reach_room(level, carver, cell, blocked)
+			or not _every_start_reaches_goal(level, walls_free)
+		):
 			holes.remove_at(holes.size() - 1)
+			blocked.erase(pick)
 	level.holes = holes
 	return holes.size()
 
@@ -60,6 +66,34 @@ static func _every_start_reaches_goal(level: BoardLevel, walls_free: PackedByteA
 	var flood := MazeFlood.new(level, true, walls_free)
 	for start in level.ball_starts:
 		if not flood.reaches_goal(start):
+			return false
+	return true
+
+
+# The stricter, fairer test: with every hole's whole cell closed, each start's cell still
+# joins the goal room through open cell sides. (The flood alone would accept a way that
+# squeezes past a hole at a junction, which no player should have to do.)
+static func _cells_reach_room(
+	level: BoardLevel, carver: MazeCarver, cell: float, blocked: Dictionary
+) -> bool:
+	var seen := {}
+	var queue: Array[Vector2i] = []
+	for room_cell in carver.room_cells():
+		seen[room_cell] = true
+		queue.append(room_cell)
+	var steps: Array[Vector2i] = [Vector2i.LEFT, Vector2i.RIGHT, Vector2i.UP, Vector2i.DOWN]
+	var head := 0
+	while head < queue.size():
+		var here := queue[head]
+		head += 1
+		for step in steps:
+			var next := here + step
+			if seen.has(next) or blocked.has(next) or not carver.is_open(here, next):
+				continue
+			seen[next] = true
+			queue.append(next)
+	for start in level.ball_starts:
+		if not seen.has(Vector2i((start / cell).floor())):
 			return false
 	return true
 
