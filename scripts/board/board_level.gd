@@ -183,6 +183,17 @@ const CURRENT_VERSION := 1
 		hole_radius = value
 		emit_changed()
 
+## Medal times of easy mode in seconds, [gold, silver, bronze] (empty: no medals yet).
+@export var medal_times_easy: PackedFloat64Array = PackedFloat64Array():
+	set(value):
+		medal_times_easy = value
+		emit_changed()
+## Medal times of hard mode in seconds, [gold, silver, bronze] (empty: no medals yet).
+@export var medal_times_hard: PackedFloat64Array = PackedFloat64Array():
+	set(value):
+		medal_times_hard = value
+		emit_changed()
+
 ## Fields of older file layouts that this version no longer declares, kept during a load so
 ## `BoardUpgrader` can convert them. Never saved.
 var legacy_fields: Dictionary = {}
