@@ -4,6 +4,7 @@ extends Button
 ## reachable with keyboard and gamepad) but not start.
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
+const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const CARD_SIZE := Vector2(300, 430)
 const THUMB_HEIGHT := 228.0
 
@@ -11,12 +12,19 @@ const THUMB_HEIGHT := 228.0
 var board_path := ""
 ## False for a board that failed to load.
 var playable := false
+## The board shown (null when it failed to load).
+var level: BoardLevel
+## True when the board is not open yet (maze progression).
+var locked := false
+var _box: VBoxContainer
+var _thumbnail: Control
 
 
 ## Fills the card from a load result; `best` is the best-result line ("" for none).
 func setup(result: BoardLoadResult, best: String) -> void:
 	board_path = result.path
 	playable = result.ok()
+	level = result.level
 	name = board_path.get_file().get_basename().validate_node_name()
 	theme_type_variation = &"CardButton"
 	custom_minimum_size = CARD_SIZE
@@ -27,19 +35,21 @@ func setup(result: BoardLoadResult, best: String) -> void:
 	box.mouse_filter = Control.MOUSE_FILTER_IGNORE
 	box.add_theme_constant_override("separation", 6)
 	add_child(box)
+	_box = box
 	var thumbnail := BoardThumbnail.new()
 	thumbnail.custom_minimum_size = Vector2(0, THUMB_HEIGHT)
 	thumbnail.mouse_filter = Control.MOUSE_FILTER_IGNORE
 	thumbnail.level = result.level
 	box.add_child(thumbnail)
+	_thumbnail = thumbnail
 	if playable:
-		var level := result.level
+		var shown := result.level
 		_add_label(
-			box, level.display_name if not level.display_name.is_empty() else level.board_id, &""
+			box, shown.display_name if not shown.display_name.is_empty() else shown.board_id, &""
 		)
 		_add_label(box, best if not best.is_empty() else "Not played yet", &"HintLabel")
-		_add_label(box, level.description, &"HintLabel", true)
-		tooltip_text = level.description
+		_add_label(box, shown.description, &"HintLabel", true)
+		tooltip_text = shown.description
 	else:
 		_add_label(box, "⚠ " + board_path.get_file(), &"WarningLabel")
 		_add_label(
@@ -51,6 +61,22 @@ func setup(result: BoardLoadResult, best: String) -> void:
 		)
 		tooltip_text = result.error
 		modulate = Color(1, 1, 1, 0.7)
+
+
+## Maze progression: medals per mode under the title, or a locked card that cannot start
+## and says what opens it.
+func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint: String) -> void:
+	if not playable:
+		return
+	locked = is_locked
+	var badges := MedalBadges.new()
+	badges.show_medals(easy, hard, hint if is_locked else "")
+	_box.add_child(badges)
+	_box.move_child(badges, 2)
+	if locked:
+		disabled = true
+		_thumbnail.modulate = Color(1, 1, 1, 0.3)
+		tooltip_text = hint
 
 
 func _add_label(

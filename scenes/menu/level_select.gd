@@ -4,6 +4,7 @@ extends Control
 ## greyed out with their error. Choosing a card starts the game on that board.
 
 const LevelCard := preload("res://scenes/menu/level_card.gd")
+const MazeCardProgress := preload("res://scenes/menu/maze_card_progress.gd")
 const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
 
 ## The game whose boards are listed ("pachinko" or "maze").
@@ -39,6 +40,8 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 		child.queue_free()
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
 	var broken := 0
+	if kind == "maze":
+		results = MazeProgress.sorted(results)
 	for result in results:
 		var card := LevelCard.new()
 		card.setup(result, _best_text(result))
@@ -47,6 +50,8 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 		else:
 			broken += 1
 		_grid.add_child(card)
+	if kind == "maze":
+		MazeCardProgress.apply(cards())
 	_summary.text = _summary_text(results.size(), broken)
 	var first := first_card()
 	if first != null:

@@ -16,6 +16,7 @@ const BindingList := preload("res://scenes/menu/binding_list.gd")
 @onready var _tilt_value: Label = %TiltValue
 @onready var _fullscreen: Button = %FullscreenCheck
 @onready var _frame_counter: Button = %FrameCounterCheck
+@onready var _unlock_all: Button = %UnlockAllCheck
 @onready var _bindings: BindingList = %Bindings
 @onready var _defaults: Button = %DefaultsButton
 @onready var _back: Button = %BackButton
@@ -32,10 +33,11 @@ func _ready() -> void:
 	_tilt.value_changed.connect(_on_value_changed.bind("tilt_sensitivity"))
 	_fullscreen.toggled.connect(_on_value_changed.bind("fullscreen"))
 	_frame_counter.toggled.connect(_on_value_changed.bind("show_frame_counter"))
+	_unlock_all.toggled.connect(_on_value_changed.bind("unlock_all_boards"))
 	_defaults.pressed.connect(_on_defaults_pressed)
 	_back.pressed.connect(close)
 	App.settings.changed.connect(_load_values)
-	for control: Control in [_master, _sfx, _tilt, _fullscreen, _frame_counter]:
+	for control: Control in [_master, _sfx, _tilt, _fullscreen, _frame_counter, _unlock_all]:
 		_mark_row_on_focus(control)
 	# on its own (not over a menu or a game) the screen brings its own background
 	_backdrop.visible = get_parent() == get_tree().root
@@ -70,6 +72,7 @@ func _load_values() -> void:
 	_tilt.set_value_no_signal(settings.tilt_sensitivity)
 	_fullscreen.set_pressed_no_signal(settings.fullscreen)
 	_frame_counter.set_pressed_no_signal(settings.show_frame_counter)
+	_unlock_all.set_pressed_no_signal(settings.unlock_all_boards)
 	_show_numbers()
 
 
@@ -81,6 +84,7 @@ func _on_value_changed(value: Variant, key: String) -> void:
 func _show_numbers() -> void:
 	_fullscreen.text = "On" if _fullscreen.button_pressed else "Off"
 	_frame_counter.text = "On" if _frame_counter.button_pressed else "Off"
+	_unlock_all.text = "On" if _unlock_all.button_pressed else "Off"
 	_master_value.text = "%d%%" % roundi(_master.value * 100.0)
 	_sfx_value.text = "%d%%" % roundi(_sfx.value * 100.0)
 	_tilt_value.text = "×%.2f" % _tilt.value

@@ -28,6 +28,8 @@ var fullscreen := false
 var show_frame_counter := false
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
+## Every maze board open from the start, instead of one after another.
+var unlock_all_boards := false
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
 var bindings := {}
 
@@ -66,6 +68,7 @@ func reset_to_defaults() -> void:
 	fullscreen = false
 	show_frame_counter = false
 	tilt_sensitivity = 1.0
+	unlock_all_boards = false
 	bindings = default_bindings()
 	changed.emit()
 
@@ -114,6 +117,9 @@ func set_value(key: String, value: Variant) -> void:
 		"show_frame_counter":
 			var on: bool = value
 			show_frame_counter = on
+		"unlock_all_boards":
+			var on: bool = value
+			unlock_all_boards = on
 		"tilt_sensitivity":
 			var sensitivity: float = value
 			tilt_sensitivity = clampf(sensitivity, MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
@@ -158,6 +164,7 @@ func save_file(path: String) -> Error:
 		["audio", {"master_volume": master_volume, "sfx_volume": sfx_volume}],
 		["display", {"fullscreen": fullscreen, "show_frame_counter": show_frame_counter}],
 		["controls", {"tilt_sensitivity": tilt_sensitivity}],
+		["progress", {"unlock_all_boards": unlock_all_boards}],
 		["input", input],
 	]
 	var error := IniText.write_file(path, IniText.format(FILE_HEADER % VERSION, sections))
@@ -197,6 +204,8 @@ func load_file(path: String) -> String:
 	_read_number(audio, "sfx_volume", 0.0, 1.0, problems)
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
+	var progress: Dictionary = sections.get("progress", {})
+	_read_flag(progress, "unlock_all_boards", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	var input: Dictionary = sections.get("input", {})
 	_read_bindings(input, problems)
