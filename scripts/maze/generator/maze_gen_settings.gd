@@ -1,3 +1,4 @@
+@tool
 class_name MazeGenSettings
 extends RefCounted
 ## What the maze generator is asked for: the grid, how many black holes, how hard, and the

@@ -1,3 +1,4 @@
+@tool
 class_name MazeGenerator
 extends RefCounted
 ## Builds a playable maze board from MazeGenSettings: the tutorial's 35 px cells, an open

@@ -1,3 +1,4 @@
+@tool
 extends RefCounted
 ## Puts black holes into a carved maze without ever cutting a start off from the goal: each
 ## candidate cell is tried in turn and kept only when a flood fill (MazeFlood, holes
