@@ -18,7 +18,7 @@ const NAMES := ["No medal", "Bronze", "Silver", "Gold"]
 ## a tenth of a second.
 static func from_pilot_time(pilot_seconds: float) -> PackedFloat64Array:
 	var times := PackedFloat64Array()
-	for factor in [GOLD_FACTOR, SILVER_FACTOR, BRONZE_FACTOR]:
+	for factor: float in [GOLD_FACTOR, SILVER_FACTOR, BRONZE_FACTOR]:
 		times.append(ceilf(pilot_seconds * factor * 10.0) / 10.0)
 	return times
 

@@ -94,7 +94,8 @@ static func _check_fields(data: Dictionary) -> String:
 			return 'unknown field "%s" for a %s board' % [key, kind]
 	for field: String in optional:
 		if data.has(field):
-			var problem := Schema.check_value(data[field], optional[field])
+			var spec: Array = optional[field]
+			var problem := Schema.check_value(data[field], spec)
 			if not problem.is_empty():
 				return '"%s" %s' % [field, problem]
 	for field: String in fields:
@@ -192,8 +193,10 @@ static func _build(data: Dictionary) -> BoardLevel:
 		level.ball_starts = _points(ball_starts, ["x", "y"])
 		level.holes = _points(holes, ["x", "y"])
 		var medals: Dictionary = data.get("medal_times", {})
-		level.medal_times_easy = _times(medals.get("easy", []))
-		level.medal_times_hard = _times(medals.get("hard", []))
+		var easy: Array = medals.get("easy", [])
+		var hard: Array = medals.get("hard", [])
+		level.medal_times_easy = _times(easy)
+		level.medal_times_hard = _times(hard)
 	return level
 
 

@@ -7,7 +7,9 @@ const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 
 
 func _make(values: Dictionary) -> Dictionary:
-	return MazeGenerator.generate(MazeGenSettings.from_dict(values))
+	var settings := MazeGenSettings.new()
+	settings.read(values)
+	return MazeGenerator.generate(settings)
 
 
 func test_a_generated_maze_is_a_valid_board_every_start_can_finish() -> void:

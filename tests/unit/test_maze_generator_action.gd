@@ -13,16 +13,18 @@ func _classic() -> BoardLevel:
 
 
 func _settings(values: Dictionary) -> MazeGenSettings:
-	return MazeGenSettings.from_dict(values)
+	var settings := MazeGenSettings.new()
+	settings.read(values)
+	return settings
 
 
 func test_one_undo_step_replaces_and_restores_the_board() -> void:
 	var level := _classic()
 	var before := Writer.write(level)
 	var session := Session.new(level)
-	var action := GenerateMazeAction.new(level, _settings({"cols": 14, "rows": 11, "seed": 4}))
-	assert_eq(action.error, "")
-	session.commit(action)
+	var made := MazeGenerator.generate(_settings({"cols": 14, "rows": 11, "seed": 4}))
+	var generated: BoardLevel = made["level"]
+	session.commit(GenerateMazeAction.new(level, generated))
 	var after := Writer.write(level)
 	assert_ne(after, before)
 	assert_eq(level.grid_cols, 14)
@@ -40,14 +42,15 @@ func test_one_undo_step_replaces_and_restores_the_board() -> void:
 
 
 func test_bad_requests_are_refused_without_touching_the_board() -> void:
-	var level := _classic()
-	var before := Writer.write(level)
-	var action := GenerateMazeAction.new(level, _settings({"cols": 1}))
-	assert_string_contains(action.error, "columns and rows")
 	var pachinko := BoardLoader.load_board("res://levels/pachinko/classic.board").level
-	var wrong := GenerateMazeAction.new(pachinko, _settings({}))
-	assert_string_contains(wrong.error, "maze boards only")
-	assert_eq(Writer.write(level), before)
+	var before := Writer.write(pachinko)
+	var session := Session.new(pachinko)
+	var button: GeneratorButton = autofree(GeneratorButton.new())
+	button.bind(session)
+	assert_string_contains(button.generate(), "maze boards only")
+	assert_eq(Writer.write(pachinko), before)
+	assert_eq(session.history.names().size(), 0, "nothing committed")
+	assert_string_contains(str(MazeGenerator.generate(_settings({"cols": 1}))["error"]), "rows")
 
 
 func test_the_toolbar_button_generates_through_the_session() -> void:

@@ -60,7 +60,9 @@ func settings() -> MazeGenSettings:
 	if _session != null and _session.level != null:
 		values["id"] = _session.level.board_id.trim_prefix("maze_")
 		values["title"] = _session.level.display_name
-	return MazeGenSettings.from_dict(values)
+	var chosen := MazeGenSettings.new()
+	chosen.read(values)
+	return chosen
 
 
 ## Opens the dialog with the edited board's grid size.
@@ -80,10 +82,13 @@ func open_dialog() -> void:
 func generate() -> String:
 	if _session == null or _session.level == null:
 		return "No board is being edited."
-	var action := GenerateMazeAction.new(_session.level, settings())
-	if not action.error.is_empty():
-		return action.error
-	_session.commit(action)
+	if not _session.level.is_maze():
+		return "The maze generator works on maze boards only."
+	var made := MazeGenerator.generate(settings())
+	if made.has("error"):
+		return made["error"]
+	var generated: BoardLevel = made["level"]
+	_session.commit(GenerateMazeAction.new(_session.level, generated))
 	return ""
 
 

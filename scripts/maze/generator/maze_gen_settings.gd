@@ -25,24 +25,23 @@ var title := "Generated maze"
 var blurb := ""
 
 
-## Settings from a dictionary with any of the keys cols, rows, holes, difficulty, seed, id,
-## title, blurb (missing keys keep their defaults).
-static func from_dict(values: Dictionary) -> MazeGenSettings:
-	var settings := MazeGenSettings.new()
-	var cols_value: int = values.get("cols", settings.cols)
-	var rows_value: int = values.get("rows", settings.rows)
-	var holes_value: int = values.get("holes", settings.holes)
-	var difficulty_value: float = values.get("difficulty", settings.difficulty)
-	var seed_value: int = values.get("seed", settings.rng_seed)
-	settings.cols = cols_value
-	settings.rows = rows_value
-	settings.holes = holes_value
-	settings.difficulty = difficulty_value
-	settings.rng_seed = seed_value
-	settings.id = str(values.get("id", settings.id))
-	settings.title = str(values.get("title", settings.title))
-	settings.blurb = str(values.get("blurb", settings.blurb))
-	return settings
+## Takes the values of a dictionary with any of the keys cols, rows, holes, difficulty,
+## seed, id, title, blurb (missing keys keep their values); returns self for chaining.
+func read(values: Dictionary) -> RefCounted:
+	var cols_value: int = values.get("cols", cols)
+	var rows_value: int = values.get("rows", rows)
+	var holes_value: int = values.get("holes", holes)
+	var difficulty_value: float = values.get("difficulty", difficulty)
+	var seed_value: int = values.get("seed", rng_seed)
+	cols = cols_value
+	rows = rows_value
+	holes = holes_value
+	difficulty = difficulty_value
+	rng_seed = seed_value
+	id = str(values.get("id", id))
+	title = str(values.get("title", title))
+	blurb = str(values.get("blurb", blurb))
+	return self
 
 
 ## The most holes a grid of these settings may ask for.
