@@ -130,21 +130,33 @@ func _plan(positions: PackedVector2Array) -> void:
 		phase = Phase.LEAD
 		return
 	# Hard mode also plans one-cell steps: hard slides alone run balls over the holes.
+	# In easy mode, once a herd has failed, one-cell steps help gather closer to the goal.
+	var steps := _hard or not _herd_failures.is_empty()
+	var order := _shuffled(MazeGrid.MOVES if steps else MazeGrid.FIRST_STEP)
+	var cells := planner.cells_of(positions)
+	var gathered := planner.plan(cells, order)
+	if not gathered and not steps:
+		# Hard slides alone cannot gather these balls: one-cell steps often can.
+		order = _shuffled(MazeGrid.MOVES)
+		gathered = planner.plan(cells, order)
+	if not gathered:
+		phase = Phase.LEAD
+		return
+	_move = 0
+	_start_move(cells, positions)
+
+
+# Moves 0 .. count-1 in the order the seed's random number shuffles them to.
+func _shuffled(count: int) -> PackedInt32Array:
 	var order := PackedInt32Array()
-	for m in MazeGrid.MOVES if _hard else MazeGrid.FIRST_STEP:
+	for m in count:
 		order.append(m)
 	for i in range(order.size() - 1, 0, -1):
 		var j := _rng.randi_range(0, i)
 		var t := order[i]
 		order[i] = order[j]
 		order[j] = t
-	var cells := planner.cells_of(positions)
-	var gathered := planner.plan(cells, order)
-	if not gathered:
-		phase = Phase.LEAD
-		return
-	_move = 0
-	_start_move(cells, positions)
+	return order
 
 
 func _start_move(cells: PackedInt32Array, positions: PackedVector2Array) -> void:
