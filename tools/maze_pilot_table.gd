@@ -9,6 +9,8 @@ extends SceneTree
 const MAZE_DIR := "res://levels/maze/"
 const SECONDS := 120.0
 const HARD_TARGET := 0.8
+## Hard medal times from the easy time when the pilot never wins hard mode.
+const HARD_FALLBACK := 1.5
 
 
 func _initialize() -> void:
@@ -71,6 +73,10 @@ func _write_medals(path: String, level: BoardLevel, easy: float, hard: PackedFlo
 		var sorted := hard.duplicate()
 		sorted.sort()
 		level.medal_times_hard = Medals.from_pilot_time(sorted[0])
+	elif easy > 0.0:
+		# The pilot never finished hard mode here: hard medals assume it is half as slow again.
+		level.medal_times_hard = Medals.from_pilot_time(easy * HARD_FALLBACK)
+		print("%s: no hard win, hard medals from %.1f × the easy time" % [path, HARD_FALLBACK])
 	var error := ResourceSaver.save(level, path)
 	if error != OK:
 		printerr("could not save %s: %s" % [path, error_string(error)])
