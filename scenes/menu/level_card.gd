@@ -73,6 +73,10 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 	badges.show_medals(easy, hard, hint if is_locked else "")
 	_box.add_child(badges)
 	_box.move_child(badges, 2)
+	# the medal row takes a line's height: the description gives one up to fit the card
+	var description := _box.get_child(_box.get_child_count() - 1) as Label
+	if description != null:
+		description.max_lines_visible = 2
 	if locked:
 		disabled = true
 		_thumbnail.modulate = Color(1, 1, 1, 0.3)
