@@ -4,7 +4,7 @@ SHELL := /bin/bash
 GODOT := tools/godot.sh
 GD_SOURCES = $(shell git ls-files -co --exclude-standard '*.gd' | grep -v '^addons/gut/')
 
-.PHONY: play test setup lint format editor shots bench export export-check check-boards clean
+.PHONY: play test setup lint format editor shots bench export export-check check-boards analyze clean seed-reference
 
 ## make play: the game window with a display, the headless autoplay demo without one
 play: setup
@@ -42,6 +42,16 @@ shots:
 check-boards: setup
 	@$(GODOT) --headless --path . -- --check-boards
 
+## make analyze: the play analysis of every board, one JSON line each; reports and heat
+## maps in build/analysis/ (pachinko: 10000 shots; maze: 20 pilot games in each mode)
+analyze: setup
+	@for f in levels/pachinko/*.board; do \
+		$(GODOT) --headless --path . -- --analyze=pachinko --board=$$(basename $$f .board) || exit 1; \
+	done
+	@for f in levels/maze/*.board; do \
+		$(GODOT) --headless --path . -- --analyze=maze --board=$$(basename $$f .board) || exit 1; \
+	done
+
 bench: setup
 	@tools/bench.sh
 
@@ -54,3 +64,7 @@ export-check: export
 
 clean:
 	rm -rf build .godot
+
+## make seed-reference: re-record the tilt maze tutorial's reference runs (needs node)
+seed-reference:
+	node tools/seed_reference/record.js

@@ -56,5 +56,5 @@ shoot() {
 	echo "editor_shots: wrote build/shots/$out"
 }
 
-shoot "$PACHINKO_SCENE" pattern editor_pachinko.png
+shoot "$PACHINKO_SCENE" curve editor_pachinko.png
 shoot "$MAZE_SCENE" wall editor_maze.png

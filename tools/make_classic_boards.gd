@@ -84,15 +84,15 @@ static func make_pachinko() -> BoardLevel:
 	level.description = "The original machine: five pockets, each paying four balls."
 	level.size = Vector2(700, 700)
 	level.ball_radius = 5.0
-	level.tuning = _tuning("pachinko_defaults")
+	level.tuning = TuningPresets.pachinko()
 	level.ring_center = Vector2(350, 350)
 	level.ring_radius = 330.0
 	level.rail_width = 20.0
 	level.rail_start_deg = 40.0
-	level.rail_end_deg = -105.0
+	level.rail_end_deg = LaunchRail.AIMING_END_DEG
 	level.gutter_start_deg = 60.0
 	level.gutter_end_deg = 120.0
-	level.gutter_bounces = 6
+	level.gutter_bounces = 7
 	level.pin_radius = 1.5
 	level.cup_start_balls = 25
 	var pockets: Array[PocketSpec] = []
@@ -117,6 +117,11 @@ static func make_pachinko() -> BoardLevel:
 			)
 		)
 	field = PinPatterns.outside_rects(field, keep_out)
+	var clear_lane := PackedVector2Array()
+	for at in field:
+		if not LaunchRail.in_flight_lane(level, at):
+			clear_lane.append(at)
+	field = clear_lane
 	level.pins = field
 	var owners := PackedInt32Array()
 	owners.resize(field.size())
@@ -139,7 +144,7 @@ static func make_maze() -> BoardLevel:
 	level.description = "Roll all four balls into the centre. Hard mode adds eight black holes."
 	level.size = Vector2(350, 315)
 	level.ball_radius = 5.0
-	level.tuning = _tuning("maze_defaults")
+	level.tuning = TuningPresets.maze_seed()
 	level.grid_cols = 10
 	level.grid_rows = 9
 	level.path_width = 25.0
@@ -172,17 +177,6 @@ static func _cell_centres(cells: Array) -> PackedVector2Array:
 static func _number(row: Array, index: int) -> float:
 	var value: float = row[index]
 	return value
-
-
-# The physics layer's defaults when it is there (it is written in parallel with the boards).
-static func _tuning(factory: String) -> PhysicsTuning:
-	for entry: Dictionary in ProjectSettings.get_global_class_list():
-		if entry["class"] == "PhysicsTuning":
-			var script: Script = load(str(entry["path"]))
-			var tuning: PhysicsTuning = script.call(factory)
-			return tuning
-	push_warning("make_classic_boards: PhysicsTuning is not there yet; the board has no tuning")
-	return null
 
 
 static func _save(level: BoardLevel, path: String) -> bool:

@@ -32,8 +32,8 @@ const BOARDS := [
 		"switchbacks",
 		"Switchbacks",
 		"Ten by ten cells of turns that double back on themselves.",
-		5,
-		5,
+		10,
+		10,
 		5,
 		0.3,
 		3,
@@ -74,7 +74,7 @@ const BOARDS := [
 		"Below the catacombs: fewer loops, and holes in the corridors as well as the dead ends.",
 		14,
 		12,
-		5,
+		10,
 		0.6,
 		13,
 	],
@@ -104,9 +104,10 @@ const BOARDS := [
 func _initialize() -> void:
 	var failed := false
 	for row: Array in BOARDS:
-		var settings := (
-			MazeGenSettings
-			. from_dict(
+		var settings := MazeGenSettings.new()
+		(
+			settings
+			. read(
 				{
 					"id": row[0],
 					"title": row[1],

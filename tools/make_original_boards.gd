@@ -72,6 +72,7 @@ static func make_tulips() -> BoardLevel:
 		var petals := Items.empty_set()
 		petals["pins"] = petal_pins
 		history.commit(AddItems.new(level, Mirror.mirror_set(petals, axis), "Add pin"))
+	shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	return level
 
 
@@ -104,7 +105,20 @@ static func make_windmills() -> BoardLevel:
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
 		var umbrella := {"kind": "arc", "count": 5, "spacing": 14.0, "radius": 28.0}
 		history.commit(PatternAction.new(level, umbrella, mouth + Vector2(-40, -10), axis))
+	# Ten degrees lower than the others: weak shots then drop to the right pocket.
+	shape_launch(history, level, LaunchRail.AIMING_END_DEG + 10.0)
 	return level
+
+
+## Opens the rail at `rail_end_deg` and erases the free pins in the flight lane under the
+## top of the ring, so launch power decides where a ball lands (see LaunchRail).
+static func shape_launch(history: ActionHistory, level: BoardLevel, rail_end_deg: float) -> void:
+	history.commit(SetProperties.new(level, {"rail_end_deg": rail_end_deg}, "Board settings"))
+	var doomed: Array[Vector2i] = []
+	for i in level.pins.size():
+		if level.pin_pocket[i] < 0 and LaunchRail.in_flight_lane(level, level.pins[i]):
+			doomed.append(Items.make(Items.Kind.PIN, i))
+	history.commit(DeleteItems.new(level, doomed))
 
 
 ## A fresh pachinko board with the classic machine's ring, rail and gutter.

@@ -35,6 +35,9 @@ fi
 echo "== editor smoke check (plugin enabled, headless)"
 tools/editor_smoke.sh || extra_failed=$((extra_failed + 1))
 
+echo "== editor self-check (the board tool inside the headless editor)"
+tools/editor_self_check.sh || extra_failed=$((extra_failed + 1))
+
 echo "== play check (the game window under Xvfb)"
 tools/play_check.sh
 play_status=$?

@@ -11,16 +11,42 @@ signal selection_changed
 signal tool_changed(tool: int)
 signal settings_changed
 
-enum Tool { SELECT, PIN, PATTERN, POCKET, WALL, HOLE, GOAL, START, HANDLES, ERASE }
+enum Tool {
+	SELECT,
+	PIN,
+	PATTERN,
+	POCKET,
+	WALL,
+	HOLE,
+	GOAL,
+	START,
+	HANDLES,
+	ERASE,
+	CURVE,
+	START_POCKET,
+	ATTACKER,
+	TULIP
+}
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const Snapping := preload("res://addons/board_editor/core/snapping.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
+const Layers := preload("res://addons/board_editor/core/layers.gd")
+const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 
 ## Tools that make sense on each kind of board.
 const PACHINKO_TOOLS: Array[int] = [
-	Tool.SELECT, Tool.PIN, Tool.PATTERN, Tool.POCKET, Tool.HANDLES, Tool.ERASE
+	Tool.SELECT,
+	Tool.PIN,
+	Tool.PATTERN,
+	Tool.CURVE,
+	Tool.POCKET,
+	Tool.HANDLES,
+	Tool.ERASE,
+	Tool.START_POCKET,
+	Tool.ATTACKER,
+	Tool.TULIP
 ]
 const MAZE_TOOLS: Array[int] = [
 	Tool.SELECT, Tool.WALL, Tool.HOLE, Tool.GOAL, Tool.START, Tool.HANDLES, Tool.ERASE
@@ -43,16 +69,24 @@ var mirror_enabled := false
 var pattern := {
 	"kind": "row", "count": 7, "spacing": 30.0, "rows": 4, "radius": 120.0, "arc_deg": 120.0
 }
+## Peg line along a drawn curve: `count` pins end to end, or (count 0) one every `spacing` px.
+var curve := {"count": 20, "spacing": 24.0}
 ## Settings for new pockets.
 var pocket_width := 32.0
 var pocket_depth := 24.0
 var pocket_payout := 10
+## Layers (Layers.LAYERS names) the designer hid or locked.
+var hidden_layers: Array[String] = []
+var locked_layers: Array[String] = []
 ## The last copied items, relative to their centre.
 var clipboard := {}
 ## Receives `(action, already_applied)`; a plain history unless the plugin sets its own.
 var committer: Callable
 ## The plain history used when no committer is set.
 var history := ActionHistory.new()
+# The last selected_arc() answer and what it was computed from (the overlay asks each frame).
+var _arc_for: Array = []
+var _arc: Dictionary = {}
 
 
 func _init(on_level: BoardLevel = null) -> void:
@@ -111,6 +145,29 @@ func set_mirror(enabled: bool) -> void:
 	settings_changed.emit()
 
 
+## Hides or shows, locks or unlocks a layer; its items leave the selection.
+func set_layer(layer: String, hidden: bool, locked: bool) -> void:
+	for state: Array in [[hidden_layers, hidden], [locked_layers, locked]]:
+		var names: Array[String] = state[0]
+		if state[1] and not names.has(layer):
+			names.append(layer)
+		elif not state[1]:
+			names.erase(layer)
+	var kept: Array[Vector2i] = []
+	for item in selection:
+		if can_pick(item):
+			kept.append(item)
+	if kept != selection:
+		select(kept)
+	settings_changed.emit()
+
+
+## False for an item on a hidden or locked layer: tools cannot pick, move or erase it.
+func can_pick(item: Vector2i) -> bool:
+	var layer := Layers.of_item(item)
+	return not (hidden_layers.has(layer) or locked_layers.has(layer))
+
+
 ## Switches tool (ignores tools the board's kind has no use for).
 func set_tool(new_tool: int) -> void:
 	if not available_tools().has(new_tool) or new_tool == tool:
@@ -145,3 +202,15 @@ func prune_selection() -> void:
 func selected_pocket() -> int:
 	var pockets := Items.indices_of(selection, Items.Kind.POCKET)
 	return pockets[0] if pockets.size() == 1 else -1
+
+
+## The pin arc the selection forms (PinArc.of_selection), or {}; remembered until the
+## selection or the pins change.
+func selected_arc() -> Dictionary:
+	if level == null:
+		return {}
+	if _arc_for.size() == 2 and _arc_for[0] == selection and _arc_for[1] == level.pins:
+		return _arc
+	_arc = PinArc.of_selection(level, selection)
+	_arc_for = [selection.duplicate(), level.pins]
+	return _arc

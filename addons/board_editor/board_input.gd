@@ -11,7 +11,9 @@ const BoardTool := preload("res://addons/board_editor/tools/board_tool.gd")
 const SelectTool := preload("res://addons/board_editor/tools/select_tool.gd")
 const PlaceTool := preload("res://addons/board_editor/tools/place_tool.gd")
 const PatternTool := preload("res://addons/board_editor/tools/pattern_tool.gd")
+const CurveTool := preload("res://addons/board_editor/tools/curve_tool.gd")
 const PocketTool := preload("res://addons/board_editor/tools/pocket_tool.gd")
+const BonusTool := preload("res://addons/board_editor/bonus/bonus_tool.gd")
 const WallTool := preload("res://addons/board_editor/tools/wall_tool.gd")
 const HandlesTool := preload("res://addons/board_editor/tools/handles_tool.gd")
 const EraseTool := preload("res://addons/board_editor/tools/erase_tool.gd")
@@ -20,10 +22,17 @@ const ARROWS := {
 	KEY_LEFT: Vector2.LEFT, KEY_RIGHT: Vector2.RIGHT, KEY_UP: Vector2.UP, KEY_DOWN: Vector2.DOWN
 }
 
+## Board pixels around the board where presses still belong to the board tool.
+const BOARD_MARGIN := 40.0
+
 ## The editor state.
 var session: Session
 ## Tool id -> tool object.
 var tools := {}
+# The mouse button whose press the tool took (-1: none): its drag and release are the tool's.
+var _owned_press := -1
+# The owned press only gave the viewport its focus back: its release does nothing either.
+var _focus_press := false
 
 
 func _init(on_session: Session) -> void:
@@ -32,6 +41,7 @@ func _init(on_session: Session) -> void:
 		Session.Tool.SELECT: SelectTool.new(session),
 		Session.Tool.PIN: PlaceTool.new(session, Items.Kind.PIN),
 		Session.Tool.PATTERN: PatternTool.new(session),
+		Session.Tool.CURVE: CurveTool.new(session),
 		Session.Tool.POCKET: PocketTool.new(session),
 		Session.Tool.WALL: WallTool.new(session),
 		Session.Tool.HOLE: PlaceTool.new(session, Items.Kind.HOLE),
@@ -39,6 +49,9 @@ func _init(on_session: Session) -> void:
 		Session.Tool.START: PlaceTool.new(session, Items.Kind.START),
 		Session.Tool.HANDLES: HandlesTool.new(session),
 		Session.Tool.ERASE: EraseTool.new(session),
+		Session.Tool.START_POCKET: BonusTool.new(session, BonusPocketSpec.Role.START),
+		Session.Tool.ATTACKER: BonusTool.new(session, BonusPocketSpec.Role.ATTACKER),
+		Session.Tool.TULIP: BonusTool.new(session, BonusPocketSpec.Role.TULIP),
 	}
 
 
@@ -48,19 +61,57 @@ func active_tool() -> BoardTool:
 
 
 ## Handles one event; `to_board` maps viewport pixels to board pixels. True when used.
-func handle(event: InputEvent, to_board: Transform2D) -> bool:
+## While a board is edited the tool owns the input over it: every click, drag and key
+## there is used (or swallowed), so nothing reaches Godot's own 2D tools. Left to Godot:
+## the wheel and the middle button (zoom and pan), presses well outside the board,
+## Ctrl/Cmd/Alt shortcuts the tool does not use (undo, save, new scene) and F1-F12.
+## `focused` is false when the viewport did not have the keyboard focus: that first press
+## only takes the focus back and performs no action.
+func handle(event: InputEvent, to_board: Transform2D, focused := true) -> bool:
 	if session.level == null:
 		return false
 	var tool := active_tool()
 	tool.pixel = to_board.get_scale().x
 	if event is InputEventMouseButton:
-		return _mouse_button(tool, event as InputEventMouseButton, to_board)
+		return _mouse_button(tool, event as InputEventMouseButton, to_board, focused)
 	if event is InputEventMouseMotion:
 		var moved := event as InputEventMouseMotion
-		return tool.motion(to_board * moved.position, moved)
-	if event is InputEventKey and (event as InputEventKey).pressed:
-		return handle_key(event as InputEventKey)
+		var used := tool.motion(to_board * moved.position, moved)
+		var buttons := moved.button_mask & (MOUSE_BUTTON_MASK_LEFT | MOUSE_BUTTON_MASK_RIGHT)
+		return (
+			used or _owned_press >= 0 or (buttons != 0 and is_over_board(to_board * moved.position))
+		)
+	if event is InputEventKey:
+		var key := event as InputEventKey
+		var used := handle_key(key) if key.pressed else false
+		return used or owns_key(key)
 	return false
+
+
+## True for a board point on the board, on any item placed off it, or within BOARD_MARGIN
+## of either: a drag that starts there is the tool's (a box round pins above the board must
+## not fall through to Godot, which would deselect the board and hide the tool).
+func is_over_board(at: Vector2) -> bool:
+	return edit_area(session.level).grow(BOARD_MARGIN).has_point(at)
+
+
+## The board's rectangle grown to hold every pin, wall, hole and ball start, on it or not.
+static func edit_area(level: BoardLevel) -> Rect2:
+	var area := Rect2(Vector2.ZERO, level.size)
+	for points: PackedVector2Array in [level.pins, level.walls, level.holes, level.ball_starts]:
+		for point in points:
+			if point.is_finite():
+				area = area.expand(point)
+	return area
+
+
+## True for a key the board tool keeps from Godot even when it has no use for it: every key
+## without Ctrl, Cmd or Alt, except F1-F12 (help, run) and Tab (focus moves).
+static func owns_key(key: InputEventKey) -> bool:
+	if key.is_command_or_control_pressed() or key.alt_pressed or key.meta_pressed:
+		return false
+	var code := key.keycode
+	return not (code >= KEY_F1 and code <= KEY_F12) and code != KEY_TAB
 
 
 ## Keyboard: tool keys, snap and mirror toggles, Escape, Delete, Ctrl+C/V/D, arrow nudges.
@@ -78,17 +129,44 @@ func handle_key(key: InputEventKey) -> bool:
 	if ARROWS.has(code) and not key.alt_pressed:
 		var scale := 10.0 if key.shift_pressed else 1.0
 		var arrow: Vector2 = ARROWS[code]
-		return Commands.nudge(session, arrow * scale)
+		Commands.nudge(session, arrow * scale)
+		return true  # with nothing selected the arrows must not move the board node
 	return false if key.echo else _toggle_key(key)
 
 
-func _mouse_button(tool: BoardTool, button: InputEventMouseButton, to_board: Transform2D) -> bool:
+func _mouse_button(
+	tool: BoardTool, button: InputEventMouseButton, to_board: Transform2D, focused: bool
+) -> bool:
+	var index := button.button_index
+	if index != MOUSE_BUTTON_LEFT and index != MOUSE_BUTTON_RIGHT:
+		return false  # wheel zoom and middle-button pan stay Godot's
 	var at := to_board * button.position
-	if button.button_index == MOUSE_BUTTON_LEFT:
-		return tool.press(at, button) if button.pressed else tool.release(at, button)
-	if button.button_index == MOUSE_BUTTON_RIGHT and button.pressed:
-		return tool.cancel()
-	return false
+	if not button.pressed:
+		return _mouse_release(tool, button, at)
+	if _owned_press < 0:
+		if not is_over_board(at):
+			return false
+		_owned_press = index
+		_focus_press = not focused
+	if _focus_press:
+		return true  # this click only brings the keyboard focus back to the viewport
+	if index == MOUSE_BUTTON_LEFT:
+		tool.press(at, button)
+	else:
+		tool.cancel()
+	return true
+
+
+# A release belongs to whoever took its press.
+func _mouse_release(tool: BoardTool, button: InputEventMouseButton, at: Vector2) -> bool:
+	if button.button_index != _owned_press:
+		return false
+	_owned_press = -1
+	if _focus_press:
+		_focus_press = false
+	elif button.button_index == MOUSE_BUTTON_LEFT:
+		tool.release(at, button)
+	return true
 
 
 # Ctrl+C / Ctrl+V / Ctrl+D; anything else with Ctrl (undo, save...) is the editor's.

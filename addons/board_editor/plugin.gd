@@ -14,6 +14,10 @@ const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+const Layers := preload("res://addons/board_editor/core/layers.gd")
+const ViewFocus := preload("res://addons/board_editor/ui/view_focus.gd")
+const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
+const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 ## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
 ## this variable naming a script under res://tools/ or res://tests/, the plugin adds it as a
 ## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
@@ -26,11 +30,16 @@ var _input: BoardInput
 var _toolbar: BoardToolbar
 var _generator: MazeGeneratorButton
 var _dock: BoardDock
+var _save_dialog: SaveAsDialog
 var _issues: Array[BoardIssue] = []
 var _focused_issue := -1
 var _unsaved: Array[BoardLevel] = []
 var _refresh_queued := false
 var _visible := false
+# The 2D viewport's control (handed to the overlay drawing): the focus goes back there.
+var _viewport_control: Control
+# A dock field took the keyboard focus: the next viewport press only takes it back.
+var _focus_in_dock := false
 
 
 func _enter_tree() -> void:
@@ -45,7 +54,14 @@ func _enter_tree() -> void:
 	_dock.issue_focused.connect(focus_issue)
 	_dock.new_board_requested.connect(_new_board)
 	_dock.save_as_requested.connect(_save_as_file)
+	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
+	_dock.focus_return_requested.connect(_return_focus)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
+	_save_dialog = SaveAsDialog.new()
+	_save_dialog.save_confirmed.connect(_save_as_named)
+	EditorInterface.get_base_control().add_child(_save_dialog)
+	_dock.analysis.redraw_needed.connect(update_overlays)
+	_dock.analysis.results_changed.connect(_refresh)
 	_attach_tooling_hook()
 
 
@@ -53,6 +69,7 @@ func _exit_tree() -> void:
 	_release()
 	remove_control_from_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
 	remove_control_from_docks(_dock)
+	_save_dialog.queue_free()
 	_toolbar.queue_free()
 	_dock.queue_free()
 
@@ -98,15 +115,22 @@ func _forward_canvas_gui_input(event: InputEvent) -> bool:
 		_edit(_node)  # the board resource was set or swapped in the inspector
 	if _session == null:
 		return false
-	var used := _input.handle(event, _to_screen().affine_inverse())
+	if not _node.is_inside_tree():
+		return false  # the scene's tab is closing or switching (Ctrl+N): nothing to edit
+	var focused := not _focus_in_dock
+	var used := _input.handle(event, _to_screen().affine_inverse(), focused)
+	if not focused and event is InputEventMouseButton:
+		_return_focus()
 	if used or event is InputEventMouseMotion:
 		update_overlays()
 	return used
 
 
 func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
-	if _session == null or not is_instance_valid(_node):
+	_viewport_control = overlay
+	if _session == null or not is_instance_valid(_node) or not _node.is_inside_tree():
 		return
+	_dock.analysis.draw_over(overlay, _to_screen())
 	BoardOverlay.draw(
 		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
 	)
@@ -130,10 +154,21 @@ func get_board_input() -> BoardInput:
 	return _input
 
 
-## Marks problem `index` on the board (with its message) and in the dock's list.
+## The problems found on the edited board (a copy; empty when none is edited).
+func get_issues() -> Array[BoardIssue]:
+	return _issues.duplicate()
+
+
+## Marks problem `index` on the board (with its message) and in the dock's list, and
+## scrolls and zooms the 2D view to frame it (all of it when it covers several items).
 func focus_issue(index: int) -> void:
 	_focused_issue = index
 	_dock.select_issue(index)
+	if index >= 0 and index < _issues.size() and is_instance_valid(_node):
+		if _node.is_inside_tree():
+			var area := _node.get_global_transform() * _issues[index].extent()
+			if is_instance_valid(_viewport_control):
+				ViewFocus.show_area(area, _viewport_control)
 	update_overlays()
 
 
@@ -158,10 +193,12 @@ func _release() -> void:
 			_input.active_tool().cancel()
 		if _session.level.changed.is_connected(_on_level_changed):
 			_session.level.changed.disconnect(_on_level_changed)
+	if is_instance_valid(_node):
+		_node.editor_hidden_layers = 0
 	_session = null
 	_input = null
 	_node = null
-	_issues.clear()
+	_issues = []  # a new array: never clear one the board node may share
 	_focused_issue = -1
 	if _toolbar != null:
 		_toolbar.hide()
@@ -184,11 +221,11 @@ func _refresh() -> void:
 	if _session == null:
 		return
 	_session.prune_selection()
-	_issues = (
-		_node.issues() if is_instance_valid(_node) else BoardValidator.validate(_session.level)
-	)
+	# Validated here, every time: a board opened or selected again shows its problems at once.
+	_issues = BoardValidator.validate(_session.level)
+	_issues.append_array(AnalysisWarnings.cached_issues(_session.level))
 	_focused_issue = mini(_focused_issue, _issues.size() - 1)
-	_dock.show_board(_session, _issues)
+	_dock.show_board(_session, _issues, false, _focused_issue)
 	if is_instance_valid(_node):
 		_node.update_configuration_warnings()
 		_node.queue_redraw()
@@ -202,6 +239,9 @@ func _on_selection_changed() -> void:
 
 func _on_settings_changed() -> void:
 	_toolbar.refresh()
+	_dock.refresh_options()
+	if is_instance_valid(_node) and _session != null:
+		_node.editor_hidden_layers = Layers.painter_mask(_session.hidden_layers)
 	update_overlays()
 
 
@@ -238,8 +278,27 @@ func _rebind(node: BoardNode) -> void:
 
 func _save_as_file() -> void:
 	if _session != null:
-		_dock.show_message(BoardFiles.save_as_file(_session.level))
-		_refresh()
+		_save_dialog.open_for(_session.level)
+
+
+## Names the board (one undo step) and writes it to levels/<kind>/<file_id>.board.
+func _save_as_named(file_id: String, display_name: String) -> void:
+	if _session == null:
+		return
+	var level := _session.level
+	var names := {
+		"display_name": display_name, "board_id": BoardFiles.board_id_for(level.kind, file_id)
+	}
+	_session.commit(SetPropertiesAction.new(level, names, "Name board"))
+	_dock.show_message(BoardFiles.save_as_file(level, file_id))
+	_refresh()
+
+
+# Gives the keyboard back to the 2D viewport, so the tool keys work again after a dock field.
+func _return_focus() -> void:
+	_focus_in_dock = false
+	if is_instance_valid(_viewport_control) and _viewport_control.is_inside_tree():
+		_viewport_control.grab_focus()
 
 
 func _to_screen() -> Transform2D:

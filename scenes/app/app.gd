@@ -3,7 +3,8 @@ extends Node
 ## command or refuse bad flags, and then quits; otherwise holds the player's settings and best
 ## results, the board each game should play, and the scene changes between menus and games.
 
-## Emitted once when the settings or best-results file was damaged and got replaced.
+## Emitted once for each problem with the settings or best-results file (the sentence names
+## the file, what was wrong, and where a damaged file was kept).
 signal problem_reported(message: String)
 
 const CommandLine := preload("res://scripts/app/command_line.gd")
@@ -44,8 +45,9 @@ func _ready() -> void:
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
 
 
-## Loads settings and best results, applies the settings, and replaces a damaged settings
-## file with the defaults right away so the problem is reported once, not on every start.
+## Loads settings and best results and applies the settings. After a problem the file is
+## written again right away (a damaged one was moved aside first, so nothing is lost), so the
+## problem is reported once, not on every start; a newer version's file is never written.
 func load_player_files(settings_path: String, save_path: String) -> void:
 	_settings_path = settings_path
 	var problem := settings.load_file(settings_path)
@@ -92,14 +94,14 @@ func current_board_path(kind: String) -> String:
 	return "res://levels/%s/classic.board" % kind
 
 
-## Best maze time on a board in seconds, -1 when none.
-func best_maze_time(board_id: String) -> float:
-	return save_data.best_maze_time(board_id)
+## Best maze time on a board in one mode (`hard` or easy) in seconds, -1 when none.
+func best_maze_time(board_id: String, hard: bool) -> float:
+	return save_data.best_maze_time(board_id, hard)
 
 
-## Records a finished maze run; true when it is a new best.
-func record_maze_time(board_id: String, seconds: float) -> bool:
-	return save_data.record_maze_time(board_id, seconds)
+## Records a finished maze run in one mode; true when it is a new best for that mode.
+func record_maze_time(board_id: String, hard: bool, seconds: float) -> bool:
+	return save_data.record_maze_time(board_id, hard, seconds)
 
 
 ## Most pachinko balls won on a board, -1 when none.

@@ -28,12 +28,18 @@ var layers: int = BoardPainter.Layer.ALL:
 		layers = value
 		queue_redraw()
 
+## BoardPainter layers the board editor hides for now (its layer panel); never saved.
+var editor_hidden_layers := 0:
+	set(value):
+		editor_hidden_layers = value
+		queue_redraw()
+
 var _issues: Array[BoardIssue] = []
 var _issues_stale := true
 
 
 func _draw() -> void:
-	BoardPainter.draw_board(self, level, Transform2D.IDENTITY, layers)
+	BoardPainter.draw_board(self, level, Transform2D.IDENTITY, layers & ~editor_hidden_layers)
 
 
 func _get_configuration_warnings() -> PackedStringArray:

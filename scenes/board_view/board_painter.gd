@@ -21,6 +21,7 @@ enum Layer {
 	ALL = 1023,
 }
 
+const BonusPainter := preload("res://scenes/pachinko/bonus/bonus_painter.gd")
 const PACHINKO_BACKGROUND := Color("14121f")
 const RING_COLOR := Color("8a4fbf")
 const RAIL_COLOR := Color("c9c3d6")
@@ -127,6 +128,7 @@ static func _draw_pachinko(
 		for spec in level.pockets:
 			if spec != null:
 				_draw_pocket(canvas, spec, level.pin_radius)
+		BonusPainter.draw_all(canvas, level)
 	if layers & Layer.PINS:
 		_draw_pins(canvas, level, min_pin_radius)
 

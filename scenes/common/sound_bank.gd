@@ -18,6 +18,10 @@ const GOAL_CHIME := Recipes.GOAL_CHIME
 const HOLE_FALL := Recipes.HOLE_FALL
 const FANFARE := Recipes.FANFARE
 const UI_CLICK := Recipes.UI_CLICK
+const REEL_STOP := Recipes.REEL_STOP
+const JACKPOT := Recipes.JACKPOT
+const TULIP_OPEN := Recipes.TULIP_OPEN
+const START_CATCH := Recipes.START_CATCH
 
 const PREFERRED_BUS := &"SFX"
 const FALLBACK_BUS := &"Master"

@@ -1,22 +1,23 @@
 extends Control
 ## The tilt maze screen: loads the board the App picked, owns the MazeRules, feeds it the
-## tilt from the joystick / keys / stick / accelerometer, and shows the result: the board
-## drawn 2D into a SubViewport, that texture on a quad tilting in 3D, and the seed's note,
-## with a timer, the best time and the mode beside the joystick.
+## tilt from the joystick / keys / stick / accelerometer, and shows the result: the board in
+## 3D with raised walls and rolling balls (maze_stage.gd), their sounds and rumble, and the
+## seed's note, with a timer, the best time and the mode beside the joystick.
 
 const Palette := preload("res://scenes/maze/maze_palette.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const MazeStage := preload("res://scenes/maze/maze_stage.gd")
-const MazeBoardView := preload("res://scenes/maze/maze_board_view.gd")
+const MazeBallSounds := preload("res://scenes/maze/maze_ball_sounds.gd")
+const MazeHaptics := preload("res://scenes/maze/maze_haptics.gd")
+const Recipes := preload("res://scripts/audio/sound_recipes.gd")
 const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const MazeNote := preload("res://scenes/maze/maze_note.gd")
+const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
-## Texture pixels per board pixel: sharp at 1080p, still fine when shrunk at 720p.
-const CANVAS_SCALE := 3.0
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -24,14 +25,18 @@ const THUD_MIN_SPEED := 20.0
 var rules: MazeRules
 ## Where the tilt comes from.
 var mixer := TiltMixer.new()
+## Gamepad rumble and phone buzz on knocks and drops.
+var haptics := MazeHaptics.new()
 
 var _sounds: SoundBank
 var _load_problem := ""
 var _goal_count := 0
+var _recorder := ReplayRecorder.new()
+var _ghost: GhostRun
+var _ghost_view := MazeGhost3D.new()
+var _rolling: MazeBallSounds
 
 @onready var _stage: MazeStage = $Stage
-@onready var _canvas: SubViewport = $BoardCanvas
-@onready var _board_view: MazeBoardView = $BoardCanvas/BoardView
 @onready var _joystick: MazeJoystick = %Joystick
 @onready var _note: MazeNote = %Note
 @onready var _title: Label = %Title
@@ -45,6 +50,11 @@ var _goal_count := 0
 func _ready() -> void:
 	_sounds = SoundBank.new()
 	add_child(_sounds)
+	SoundBank.warm([Recipes.BALL_ROLL, Recipes.BALL_DROP, SoundBank.WALL_THUD])
+	_rolling = MazeBallSounds.new()
+	add_child(_rolling)
+	haptics.enabled = App.settings.vibration
+	App.settings.changed.connect(_on_settings_changed)
 	_add_optional_scene(PAUSE_MENU)
 	_add_optional_scene(FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
@@ -59,15 +69,15 @@ func _ready() -> void:
 		_joystick.hide()
 		return
 	rules = MazeRules.new(level)
+	_recorder.attach_maze(rules)
+	_stage.add_on_board(_ghost_view)
+	_ghost_view.set_board_size(level.size)
 	rules.won.connect(_on_won)
 	rules.lost.connect(_on_lost)
 	rules.game_reset.connect(_on_game_reset)
 	rules.goal_count_changed.connect(_on_goal_count_changed)
 	rules.wall_bumped.connect(_on_wall_bumped)
-	_board_view.rules = rules
-	_board_view.scale = Vector2.ONE * CANVAS_SCALE
-	_canvas.size = Vector2i((level.size * CANVAS_SCALE).ceil())
-	_stage.set_board(_canvas.get_texture(), level.size)
+	_stage.set_level(level, rules.hard_mode)
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
 
@@ -87,14 +97,23 @@ func _process(delta: float) -> void:
 		if mixer.source != TiltMixer.Source.JOYSTICK:
 			_joystick.head_offset = TiltInput.joystick_from_tilt(tilt)
 		rules.advance(delta)
+		_recorder.note_frame()
+	if _ghost != null:
+		_ghost.sync(rules.world.step_count)
+		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
 	_stage.set_tilt(rules.tilt)
+	_stage.sync_balls(rules, delta)
+	if rules.is_playing():
+		_rolling.update(rules.world.get_velocities(), delta)
+	else:
+		_rolling.stop_all()
 	_timer.text = "Time  %s" % _format_time(rules.elapsed)
 
 
 func _unhandled_input(event: InputEvent) -> void:
 	if rules == null:
 		return
-	if event.is_action_pressed("maze_reset"):
+	if event.is_action_pressed("maze_reset") or event.is_action_pressed("game_restart"):
 		rules.reset()
 	elif event.is_action_pressed("maze_hard_mode"):
 		rules.set_hard_mode(true)
@@ -107,6 +126,11 @@ func _unhandled_input(event: InputEvent) -> void:
 	else:
 		return
 	get_viewport().set_input_as_handled()
+
+
+## The 3D stage showing the board (for tests and the screenshots).
+func stage() -> MazeStage:
+	return _stage
 
 
 func _start() -> void:
@@ -126,15 +150,21 @@ func _on_joystick_pressed() -> void:
 
 
 func _on_calibrate() -> void:
+	# the joystick lets go, or the next pointer move would take the tilt straight back
+	_joystick.engaged = false
 	mixer.calibrate()
 	_sounds.play(SoundBank.UI_CLICK, -8.0)
 
 
 func _on_game_reset() -> void:
 	_goal_count = 0
+	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
+	_ghost_view.set_board_size(rules.level.size)
+	_ghost_view.clear()
 	_joystick.release()
 	mixer.reset()
 	_stage.set_tilt(Vector2.ZERO)
+	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
 	var hint := (
@@ -148,7 +178,10 @@ func _on_game_reset() -> void:
 
 func _on_won(seconds: float) -> void:
 	_joystick.release()
-	var best := App.record_maze_time(rules.level.board_id, seconds)
+	var best := App.record_maze_time(rules.level.board_id, rules.hard_mode, seconds)
+	if best:
+		var path := ReplayStore.best_maze_path(rules.level.board_id, rules.hard_mode)
+		ReplayStore.save(_recorder.finish(), path)
 	var hint := "" if rules.hard_mode else "Press %s for hard mode" % _key("maze_hard_mode")
 	var line := "Your time: %s%s" % [_format_time(seconds), "  (a new best!)" if best else ""]
 	_note.show_note("Congrats, you did it!", "%s\n%s" % [line, hint] if hint else line)
@@ -156,13 +189,16 @@ func _on_won(seconds: float) -> void:
 	_sounds.play(SoundBank.FANFARE)
 
 
-func _on_lost(_hole: int) -> void:
+func _on_lost(hole: int) -> void:
 	_joystick.release()
+	_stage.set_lost_hole(hole)
+	_sounds.play(Recipes.BALL_DROP)
+	haptics.drop()
 	_note.show_note(
 		"A ball fell into a black hole! Press %s to reset the game." % _key("maze_reset"),
 		"Back to easy? Press %s" % _key("maze_easy_mode")
 	)
-	_sounds.play(SoundBank.HOLE_FALL)
+	_sounds.play(SoundBank.HOLE_FALL, -9.0)
 
 
 func _on_goal_count_changed(count: int) -> void:
@@ -173,6 +209,11 @@ func _on_goal_count_changed(count: int) -> void:
 
 func _on_wall_bumped(speed: float) -> void:
 	_sounds.play_impact(SoundBank.WALL_THUD, speed, THUD_MIN_SPEED, 94.0)
+	haptics.knock(speed)
+
+
+func _on_settings_changed() -> void:
+	haptics.enabled = App.settings.vibration
 
 
 func _on_restart_requested() -> void:
@@ -181,7 +222,7 @@ func _on_restart_requested() -> void:
 
 
 func _show_best() -> void:
-	var best := App.best_maze_time(rules.level.board_id)
+	var best := App.best_maze_time(rules.level.board_id, rules.hard_mode)
 	_best.text = "Best  %s" % (_format_time(best) if best >= 0.0 else "--")
 
 

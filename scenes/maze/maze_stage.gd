@@ -1,95 +1,124 @@
 extends Node3D
-## The 3D stage that gives the board true perspective, as the seed's CSS rotateX/rotateY
-## with `perspective: 600px` did: a quad textured with the 2D board, on a tray with some
-## depth, rotated by the tilt, seen by a perspective camera 600 seed pixels away.
-## One 3D unit is 100 board pixels.
+## The 3D stage of the tilt maze: the board built from the level (maze_board_3d.gd) and its
+## balls (maze_balls_3d.gd) on a pivot that the tilt rotates, as the seed's CSS rotateX /
+## rotateY with `perspective: 600px` did; a sun that stays put while the board tilts, so
+## walls and balls cast moving shadows; and a table far enough below that no corner of the
+## board ever reaches it, with the board's shadow on it. One 3D unit is 100 board pixels.
 
 const Palette := preload("res://scenes/maze/maze_palette.gd")
+const MazeBoard3D := preload("res://scenes/maze/maze_board_3d.gd")
+const MazeBalls3D := preload("res://scenes/maze/maze_balls_3d.gd")
+const MazeTableShadow := preload("res://scenes/maze/maze_table_shadow.gd")
+const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const UNITS_PER_PX := 0.01
 ## The seed's CSS perspective distance, in board pixels.
 const PERSPECTIVE_PX := 600.0
-## Margin of the tray around the board, and its thickness, in board pixels.
-const TRAY_MARGIN := 9.0
-const TRAY_DEPTH := 14.0
-## How far below the board the table (and the board's shadow) is, in board pixels.
-const SHADOW_DROP_PX := 60.0
+## The table sits this far (board pixels) below the lowest point any tilt gives the board.
+const TABLE_CLEARANCE_PX := 10.0
+## Where the sun shines (x right, y up the screen, z out of the screen): from the upper
+## left and in front, so shadows fall down and to the right as on a desk lamp's board.
+const SUN_DIRECTION := Vector3(0.42, -0.5, -1.0)
 ## Share of the screen height the board fills, and where its centre sits across the
 ## screen (-1 left edge, 1 right edge).
-const HEIGHT_SHARE := 0.86
+const HEIGHT_SHARE := 0.84
 const CENTRE_ACROSS := -0.27
+## Light energies: the ambient fill, the key light that shades, the sun whose shadows show.
+const AMBIENT_ENERGY := 0.28
+const KEY_ENERGY := 0.37
+const SUN_ENERGY := 0.055
+## Side of the sun's shadow map, in texels (sharp ball shadows, cheap on software GL).
+const SHADOW_MAP_SIZE := 2048
+## Board ids that keep the seed's red balls; every other board rolls steel.
+const SEED_RED_BOARDS: Array[String] = ["maze_classic"]
 
 var _pivot := Node3D.new()
-var _board := MeshInstance3D.new()
-var _tray := MeshInstance3D.new()
+var _board: MazeBoard3D = MazeBoard3D.new()
+var _balls: MazeBalls3D = MazeBalls3D.new()
 var _camera := Camera3D.new()
-var _shadow := MeshInstance3D.new()
+var _sun := DirectionalLight3D.new()
+var _key := DirectionalLight3D.new()
+var _table: MazeTableShadow = MazeTableShadow.new()
+var _table_z := -1.0
 var _board_size := Vector2(350.0, 315.0)
 
 
 func _ready() -> void:
-	var env := Environment.new()
-	env.background_mode = Environment.BG_COLOR
-	env.background_color = Palette.BACKGROUND
-	env.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
-	env.ambient_light_color = Color.WHITE
-	env.ambient_light_energy = 0.55
 	var world_env := WorldEnvironment.new()
-	world_env.environment = env
+	world_env.environment = _environment()
 	add_child(world_env)
-	var sun := DirectionalLight3D.new()
-	sun.rotation_degrees = Vector3(-35.0, -25.0, 0.0)
-	sun.light_energy = 0.8
-	add_child(sun)
+	RenderingServer.directional_shadow_atlas_set_size(SHADOW_MAP_SIZE, true)
+	# Two lights from the same place. The GL Compatibility renderer draws a light that casts
+	# shadows in a pass of its own and adds that pass to the picture after it is converted
+	# for the screen, so a strong shadowed light washes the seed's pale floor out to white.
+	# The key light (no shadows) does the shading with the ambient light; the sun adds only
+	# the little that its shadows take away.
+	var facing := Transform3D(Basis.looking_at(SUN_DIRECTION.normalized(), Vector3.UP))
+	_key.transform = facing
+	_key.light_energy = KEY_ENERGY
+	add_child(_key)
+	_sun.transform = facing
+	_sun.light_energy = SUN_ENERGY
+	_sun.light_specular = 0.0
+	# Its shadows only fall on the floor: the walls are too dark to show them, and drawing
+	# them again for this light would cost as much as the whole board (software GL).
+	_sun.light_cull_mask = MazeBoard3D.SHADOW_RECEIVER_LAYER
+	_sun.shadow_caster_mask = 0xFFFFF
+	_sun.shadow_enabled = true
+	_sun.directional_shadow_mode = DirectionalLight3D.SHADOW_ORTHOGONAL
+	_sun.directional_shadow_max_distance = 7.5
+	_sun.shadow_bias = 0.06
+	_sun.shadow_normal_bias = 1.2
+	_sun.shadow_blur = 1.5
+	add_child(_sun)
 	add_child(_camera)
 	_camera.current = true
-	add_child(_shadow)
+	_table.colour = Palette.JOYSTICK
+	add_child(_table)
 	add_child(_pivot)
-	_pivot.add_child(_tray)
 	_pivot.add_child(_board)
+	_pivot.add_child(_balls)
 	get_viewport().size_changed.connect(_frame)
 	_frame()
 
 
-## Shows `texture` (the 2D board, `board_size` board pixels) on the tilting quad.
-func set_board(texture: Texture2D, board_size: Vector2) -> void:
-	_board_size = board_size
-	var quad := QuadMesh.new()
-	quad.size = board_size * UNITS_PER_PX
-	_board.mesh = quad
-	var mat := StandardMaterial3D.new()
-	mat.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
-	mat.albedo_texture = texture
-	mat.texture_filter = BaseMaterial3D.TEXTURE_FILTER_LINEAR
-	_board.material_override = mat
-	var box := BoxMesh.new()
-	var margin := Vector2.ONE * TRAY_MARGIN * 2.0
-	box.size = Vector3(
-		(board_size.x + margin.x) * UNITS_PER_PX,
-		(board_size.y + margin.y) * UNITS_PER_PX,
-		TRAY_DEPTH * UNITS_PER_PX
-	)
-	_tray.mesh = box
-	var tray_mat := StandardMaterial3D.new()
-	tray_mat.albedo_color = Palette.WALL.lightened(0.12)
-	tray_mat.roughness = 0.7
-	_tray.material_override = tray_mat
-	_tray.position = Vector3(0.0, 0.0, -TRAY_DEPTH * 0.5 * UNITS_PER_PX - 0.002)
-	# A soft shadow on the table below the board: it stays put while the board tilts.
-	var shadow_quad := QuadMesh.new()
-	shadow_quad.size = Vector2(box.size.x, box.size.y) * 1.04
-	_shadow.mesh = shadow_quad
-	var shadow_mat := StandardMaterial3D.new()
-	shadow_mat.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
-	shadow_mat.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
-	shadow_mat.albedo_color = Color(Palette.JOYSTICK, 0.13)
-	_shadow.material_override = shadow_mat
+## Builds the board of `level` (holes shown when `hard`) and the look of its balls.
+func set_level(level: BoardLevel, hard: bool) -> void:
+	_board_size = level.size
+	_board.build(level, hard)
+	_balls.clear()
+	_balls.hole_depth_px = _board.hole_depth_px()
+	_balls.material = ball_material(level.board_id in SEED_RED_BOARDS)
 	_frame()
+
+
+## Shows or hides the holes and forgets the balls (the world was rebuilt).
+func set_hard_mode(hard: bool) -> void:
+	_board.set_hard_mode(hard)
+	_balls.clear()
+
+
+## Puts `node` on the tilting board (it tilts with it), in the same mesh units as the balls.
+func add_on_board(node: Node3D) -> void:
+	_pivot.add_child(node)
+
+
+## Marks the hole a ball fell into; -1 for none.
+func set_lost_hole(index: int) -> void:
+	_board.set_lost_hole(index)
+
+
+## Moves, rolls and drops the balls to match `rules`' world (call every frame).
+func sync_balls(rules: MazeRules, delta: float) -> void:
+	_balls.sync(rules, delta)
 
 
 ## Rotates the board: +x tilt lowers the right edge (balls roll right), +y lowers the
 ## bottom edge (balls roll down the screen), as the seed's rotateY / rotateX.
 func set_tilt(tilt_deg: Vector2) -> void:
-	_pivot.rotation = Vector3(deg_to_rad(tilt_deg.y), deg_to_rad(tilt_deg.x), 0.0)
+	var turned := Vector3(deg_to_rad(tilt_deg.y), deg_to_rad(tilt_deg.x), 0.0)
+	if turned != _pivot.rotation:
+		_pivot.rotation = turned
+		_cast_table_shadow()
 
 
 ## The board's current rotation in degrees (x = tilt across, y = tilt down), for tests.
@@ -102,8 +131,93 @@ func camera() -> Camera3D:
 	return _camera
 
 
-# Places the camera the seed's perspective distance away and picks the field of view so the
-# board fills HEIGHT_SHARE of the screen, then slides the board left of the screen centre.
+## The 3D board (floor, walls, frame, holes), for tests.
+func board() -> MazeBoard3D:
+	return _board
+
+
+## The 3D balls, for tests.
+func balls() -> MazeBalls3D:
+	return _balls
+
+
+## The sun, for tests.
+func sun() -> DirectionalLight3D:
+	return _sun
+
+
+## Height (stage z) of the table under the board.
+func table_height() -> float:
+	return _table_z
+
+
+## The lowest point (stage z) of the board's body as it is tilted now.
+func lowest_board_point() -> float:
+	return _lowest_point(_pivot.transform)
+
+
+## The balls' surface: the seed's glossy red-orange, or polished steel.
+static func ball_material(seed_red: bool) -> StandardMaterial3D:
+	var mat := StandardMaterial3D.new()
+	mat.albedo_texture = _ball_band_texture(Palette.BALL if seed_red else Color(0.78, 0.8, 0.83))
+	# a little glow of its own, so the ball stays as bright as the seed's beside the floor
+	mat.emission_enabled = true
+	mat.emission = (Palette.BALL if seed_red else Color(0.5, 0.52, 0.55)).darkened(0.4)
+	mat.emission_energy_multiplier = 0.6
+	if seed_red:
+		mat.roughness = 0.28
+		mat.metallic_specular = 0.7
+	else:
+		mat.metallic = 0.9
+		mat.roughness = 0.22
+	return mat
+
+
+# A ball texture with a faint band round its equator, so the roll can be seen.
+static func _ball_band_texture(colour: Color) -> ImageTexture:
+	var image := Image.create(64, 32, false, Image.FORMAT_RGB8)
+	var band := colour.darkened(0.22)
+	for y in 32:
+		var v := absf((float(y) + 0.5) / 32.0 - 0.5)
+		var c := band if v < 0.045 else colour
+		for x in 64:
+			image.set_pixel(x, y, c)
+	return ImageTexture.create_from_image(image)
+
+
+func _environment() -> Environment:
+	var env := Environment.new()
+	env.background_mode = Environment.BG_COLOR
+	env.background_color = Palette.BACKGROUND
+	env.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
+	env.ambient_light_color = Color.WHITE
+	env.ambient_light_energy = AMBIENT_ENERGY
+	env.ambient_light_sky_contribution = 0.0
+	# A soft studio sky, seen only in the steel balls' reflections.
+	var sky_material := ProceduralSkyMaterial.new()
+	sky_material.sky_top_color = Color(0.95, 0.94, 0.92)
+	sky_material.sky_horizon_color = Palette.BACKGROUND
+	sky_material.ground_bottom_color = Palette.WALL
+	sky_material.ground_horizon_color = Palette.BACKGROUND.darkened(0.2)
+	var sky := Sky.new()
+	sky.sky_material = sky_material
+	env.sky = sky
+	env.reflected_light_source = Environment.REFLECTION_SOURCE_SKY
+	return env
+
+
+# The lowest z of the board's outer box under the pivot transform `pose`.
+func _lowest_point(pose: Transform3D) -> float:
+	var box := _board.outer_box()
+	var lowest := INF
+	for i in 8:
+		lowest = minf(lowest, (pose * box.get_endpoint(i)).z)
+	return lowest
+
+
+# Places the camera the seed's perspective distance away, picks the field of view so the
+# board fills HEIGHT_SHARE of the screen, slides the board left of the screen centre, and
+# puts the table under the lowest point any tilt can give the board.
 func _frame() -> void:
 	var distance := PERSPECTIVE_PX * UNITS_PER_PX
 	var half_height := _board_size.y * UNITS_PER_PX * 0.5 / HEIGHT_SHARE
@@ -112,4 +226,18 @@ func _frame() -> void:
 	var view := get_viewport().get_visible_rect().size if is_inside_tree() else Vector2(16, 9)
 	var aspect := view.x / maxf(view.y, 1.0)
 	_pivot.position = Vector3(CENTRE_ACROSS * half_height * aspect, 0.0, 0.0)
-	_shadow.position = _pivot.position + Vector3(0.05, -0.07, -SHADOW_DROP_PX * UNITS_PER_PX)
+	var lowest := 0.0
+	var m := deg_to_rad(TiltInput.MAX_TILT_DEG)
+	for corner: Vector2 in [Vector2(m, m), Vector2(m, -m), Vector2(-m, m), Vector2(-m, -m)]:
+		var pose := Transform3D(Basis.from_euler(Vector3(corner.y, corner.x, 0.0)), Vector3.ZERO)
+		lowest = minf(lowest, _lowest_point(pose))
+	_table_z = lowest - TABLE_CLEARANCE_PX * UNITS_PER_PX
+	_cast_table_shadow()
+
+
+func _cast_table_shadow() -> void:
+	var box := _board.outer_box()
+	var corners := PackedVector3Array()
+	for i in 8:
+		corners.append(_pivot.transform * box.get_endpoint(i))
+	_table.cast(corners, SUN_DIRECTION.normalized(), _table_z)

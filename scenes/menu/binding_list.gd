@@ -2,6 +2,8 @@ extends GridContainer
 ## The controls part of the settings screen: one row per game action with its keyboard and
 ## gamepad bindings. Choosing a binding waits for the next key (or gamepad button / stick),
 ## which replaces that column's binding; Esc cancels a key capture, any key a gamepad one.
+## Delete, Backspace or a right click on a binding removes it (pause always keeps one:
+## removing its last binding brings the default back).
 
 ## A binding changed (the settings were updated; the owner saves them).
 signal binding_changed
@@ -12,6 +14,9 @@ const Codec := preload("res://scripts/app/input_event_codec.gd")
 const AXIS_THRESHOLD := 0.6
 const ACTION_NAMES := {
 	"launch_charge": "Pachinko: launch (hold to charge)",
+	"launch_handle": "Pachinko: hold the handle (stream)",
+	"handle_stronger": "Pachinko: turn the handle stronger",
+	"handle_weaker": "Pachinko: turn the handle weaker",
 	"tilt_left": "Maze: tilt left",
 	"tilt_right": "Maze: tilt right",
 	"tilt_up": "Maze: tilt up",
@@ -112,9 +117,31 @@ func _binding_button(action: String, gamepad: bool) -> Button:
 	button.theme_type_variation = &"SmallButton"
 	button.clip_text = true
 	button.text = _describe(action, gamepad)
-	button.tooltip_text = "Choose, then press the new %s" % ["button" if gamepad else "key"]
+	button.tooltip_text = (
+		"Choose, then press the new %s. Delete or right-click removes it."
+		% ["button" if gamepad else "key"]
+	)
 	button.pressed.connect(_start_capture.bind(action, gamepad, button))
+	button.gui_input.connect(_on_binding_input.bind(action, gamepad, button))
 	return button
+
+
+## Removes the binding of one column on Delete, Backspace or a right click.
+func _on_binding_input(event: InputEvent, action: String, gamepad: bool, button: Button) -> void:
+	if is_capturing() or not event.is_pressed() or event.is_echo():
+		return
+	var key := event as InputEventKey
+	var mouse := event as InputEventMouseButton
+	var wants_clear := key != null and key.physical_keycode in [KEY_DELETE, KEY_BACKSPACE]
+	wants_clear = wants_clear or (mouse != null and mouse.button_index == MOUSE_BUTTON_RIGHT)
+	if not wants_clear:
+		return
+	var cleared := App.settings.clear_binding(action, gamepad)
+	button.text = _describe(action, gamepad)
+	if not cleared:
+		button.text += " (%s needs one)" % action_title(action)
+	button.accept_event()
+	binding_changed.emit()
 
 
 func _describe(action: String, gamepad: bool) -> String:

@@ -8,17 +8,25 @@ const FRAME_COLOR := Color(0.33, 0.4, 0.57)
 const BROKEN_COLOR := Color(0.75, 0.38, 0.34)
 const MARGIN := 6.0
 
-## The board to draw; null draws the "broken board" cross.
+## The board to draw; null draws the "broken board" cross (unless `waiting`).
 var level: BoardLevel = null:
 	set(value):
 		level = value
+		waiting = false
+		queue_redraw()
+## True while the board is still loading: an empty frame, no cross.
+var waiting := false:
+	set(value):
+		waiting = value
 		queue_redraw()
 
 
 func _draw() -> void:
 	var rect := Rect2(Vector2.ZERO, size)
 	draw_rect(rect, BACK_COLOR)
-	if level == null:
+	if level == null and waiting:
+		pass
+	elif level == null:
 		var centre := size * 0.5
 		var arm := minf(size.x, size.y) * 0.18
 		draw_line(centre - Vector2(arm, arm), centre + Vector2(arm, arm), BROKEN_COLOR, 6.0)

@@ -1,91 +1,125 @@
 extends Button
-## One board in the level select: its thumbnail, name, description and best result. A board
-## that failed to load shows greyed out with its error; it can take focus (so the message is
+## One board in the level select: its thumbnail, name, description and best result. While
+## its file loads (off the main thread) the card says so; a board that failed to load shows
+## greyed out with its error. A greyed or loading card can take focus (so the message is
 ## reachable with keyboard and gamepad) but not start.
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
-const CARD_SIZE := Vector2(300, 430)
-const THUMB_HEIGHT := 228.0
+const CARD_SIZE := Vector2(300, 400)
+const THUMB_HEIGHT := 206.0
 
 ## The board file this card stands for.
 var board_path := ""
-## False for a board that failed to load.
+## False for a board that failed to load or is still loading.
 var playable := false
-## The board shown (null when it failed to load).
-var level: BoardLevel
+## True while the board's file is still loading.
+var loading := false
+## True for one of the player's own boards (user://boards/).
+var mine := false
+## The board shown (null while loading or when it failed to load).
+var level: BoardLevel = null
 ## True when the board is not open yet (maze progression).
 var locked := false
-var _box: VBoxContainer
-var _thumbnail: Control
+
+var _box: VBoxContainer = null
+var _thumbnail: BoardThumbnail = null
+var _badges: MedalBadges = null
+
+
+## Shows the card of `path` as "Loading…" until `setup` fills it in.
+func show_loading(path: String) -> void:
+	_prepare(path)
+	loading = true
+	playable = false
+	disabled = true
+	_thumbnail.waiting = true
+	_add_label(path.get_file(), &"")
+	_add_label("Loading…", &"HintLabel")
+	tooltip_text = path
 
 
 ## Fills the card from a load result; `best` is the best-result line ("" for none).
 func setup(result: BoardLoadResult, best: String) -> void:
-	board_path = result.path
+	_prepare(result.path)
+	loading = false
 	playable = result.ok()
-	level = result.level
-	name = board_path.get_file().get_basename().validate_node_name()
-	theme_type_variation = &"CardButton"
-	custom_minimum_size = CARD_SIZE
+	level = result.level if playable else null
+	locked = false
 	disabled = not playable
-	focus_mode = Control.FOCUS_ALL
-	var box := VBoxContainer.new()
-	box.set_anchors_and_offsets_preset(Control.PRESET_FULL_RECT, Control.PRESET_MODE_MINSIZE, 14)
-	box.mouse_filter = Control.MOUSE_FILTER_IGNORE
-	box.add_theme_constant_override("separation", 6)
-	add_child(box)
-	_box = box
-	var thumbnail := BoardThumbnail.new()
-	thumbnail.custom_minimum_size = Vector2(0, THUMB_HEIGHT)
-	thumbnail.mouse_filter = Control.MOUSE_FILTER_IGNORE
-	thumbnail.level = result.level
-	box.add_child(thumbnail)
-	_thumbnail = thumbnail
+	_thumbnail.level = result.level
+	var file_line := "My board: %s" % board_path.get_file() if mine else ""
 	if playable:
 		var shown := result.level
-		_add_label(
-			box, shown.display_name if not shown.display_name.is_empty() else shown.board_id, &""
-		)
-		_add_label(box, best if not best.is_empty() else "Not played yet", &"HintLabel")
-		_add_label(box, shown.description, &"HintLabel", true)
+		_add_label(shown.display_name if not shown.display_name.is_empty() else shown.board_id, &"")
+		if not file_line.is_empty():
+			_add_label(file_line, &"HintLabel")
+		_add_label(best if not best.is_empty() else "Not played yet", &"HintLabel")
+		_add_label(shown.description, &"HintLabel", true)
 		tooltip_text = shown.description
 	else:
-		_add_label(box, "⚠ " + board_path.get_file(), &"WarningLabel")
-		_add_label(
-			box,
-			"Can't be played: " + result.error.trim_prefix(board_path + ": "),
-			&"HintLabel",
-			true,
-			4
-		)
+		_add_label("⚠ " + board_path.get_file(), &"WarningLabel")
+		var reason := result.error.trim_prefix(board_path + ": ")
+		_add_label("Can't be played: " + reason, &"HintLabel", true, 4)
 		tooltip_text = result.error
-		modulate = Color(1, 1, 1, 0.7)
+	modulate = Color(1, 1, 1, 1.0 if playable else 0.7)
 
 
 ## Maze progression: medals per mode under the title, or a locked card that cannot start
-## and says what opens it.
+## and says what opens it. Called again after every load, so it replaces an earlier row.
 func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint: String) -> void:
 	if not playable:
 		return
 	locked = is_locked
-	var badges := MedalBadges.new()
-	badges.show_medals(easy, hard, hint if is_locked else "")
-	_box.add_child(badges)
-	_box.move_child(badges, 2)
-	# the medal row takes a line's height: the description gives one up to fit the card
-	var description := _box.get_child(_box.get_child_count() - 1) as Label
-	if description != null:
-		description.max_lines_visible = 2
-	if locked:
-		disabled = true
-		_thumbnail.modulate = Color(1, 1, 1, 0.3)
-		tooltip_text = hint
+	if _badges == null:
+		_badges = MedalBadges.new()
+		_box.add_child(_badges)
+		_box.move_child(_badges, 2)
+		# the medal row takes a line's height: the description gives one up to fit the card
+		var description := _box.get_child(_box.get_child_count() - 1) as Label
+		if description != null:
+			description.max_lines_visible = 2
+	_badges.show_medals(easy, hard, hint if is_locked else "")
+	disabled = locked
+	_thumbnail.modulate = Color(1, 1, 1, 0.3 if locked else 1.0)
+	tooltip_text = hint if locked else level.description
 
 
-func _add_label(
-	box: VBoxContainer, words: String, variation: StringName, wraps := false, lines := 3
-) -> void:
+## The medal row, or null when the card has none.
+func medal_badges() -> MedalBadges:
+	return _badges
+
+
+## The texts of the card's labels, top to bottom.
+func texts() -> PackedStringArray:
+	var found := PackedStringArray()
+	for label in find_children("*", "Label", true, false):
+		found.append((label as Label).text)
+	return found
+
+
+# Empties the card and gives it its thumbnail again.
+func _prepare(path: String) -> void:
+	board_path = path
+	name = board_path.get_file().get_basename().validate_node_name()
+	theme_type_variation = &"CardButton"
+	custom_minimum_size = CARD_SIZE
+	focus_mode = Control.FOCUS_ALL
+	if _box != null:
+		_box.free()  # at once: the card is refilled in place, nothing of the old box may linger
+	_badges = null
+	_box = VBoxContainer.new()
+	_box.set_anchors_and_offsets_preset(Control.PRESET_FULL_RECT, Control.PRESET_MODE_MINSIZE, 14)
+	_box.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_box.add_theme_constant_override("separation", 6)
+	add_child(_box)
+	_thumbnail = BoardThumbnail.new()
+	_thumbnail.custom_minimum_size = Vector2(0, THUMB_HEIGHT)
+	_thumbnail.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_box.add_child(_thumbnail)
+
+
+func _add_label(words: String, variation: StringName, wraps := false, lines := 3) -> void:
 	var label := Label.new()
 	label.text = words
 	label.theme_type_variation = variation
@@ -95,6 +129,6 @@ func _add_label(
 		label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 		label.max_lines_visible = lines
 		label.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	else:
-		label.clip_text = true
-	box.add_child(label)
+	# a long text is cut at the card's edge, never drawn over the next card
+	label.clip_text = true
+	_box.add_child(label)

@@ -1,28 +1,77 @@
 extends Control
-## The level select of one game (App.level_select_kind): every board file in levels/<kind>/
-## as a card with its thumbnail, name and best result; boards that fail to load are listed
-## greyed out with their error. Choosing a card starts the game on that board.
+## The level select of one game (App.level_select_kind): the shipped boards (levels/<kind>/)
+## and the player's own ("My boards", user://boards/<kind>/), one card per file. Files load
+## off the main thread (BoardListLoading): cards say "Loading…" and fill in, so a slow or
+## hostile file never stops the screen; a board that fails to load is greyed with its error.
+## My boards can be imported (button or a file dropped on the window), exported and deleted.
+## Shipped maze boards come in the order they open (MazeProgress) with medals and locks.
 
-const LevelCard := preload("res://scenes/menu/level_card.gd")
+const LevelSlot := preload("res://scenes/menu/level_slot.gd")
 const MazeCardProgress := preload("res://scenes/menu/maze_card_progress.gd")
+const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
 
 ## The game whose boards are listed ("pachinko" or "maze").
 var kind := "pachinko"
+## The player's boards folder (tests point it at a scratch folder before adding the screen).
+var user_root := BoardLoader.USER_DIR
+## Loads one file (path, kind, root) -> BoardLoadResult; empty means BoardLoader.load_listed.
+## Tests pass a slow one.
+var load_one := Callable()
+
+var _loadings: Dictionary = {}  # the grid a loading fills -> its BoardListLoading
+var _first_focus: Control = null
 
 @onready var _title: Label = %TitleLabel
 @onready var _summary: Label = %SummaryLabel
+@onready var _status: Label = %StatusLabel
 @onready var _grid: GridContainer = %Cards
+@onready var _my_grid: GridContainer = %MyCards
+@onready var _my_empty: Label = %MyBoardsEmpty
+@onready var _folder: Label = %FolderLabel
 @onready var _back: Button = %BackButton
+@onready var _import: Button = %ImportButton
+@onready var _dialogs: Dialogs = %Dialogs
+@onready var _scroll: ScrollContainer = %Scroll
 
 
 func _ready() -> void:
 	_back.pressed.connect(App.go_to_menu)
+	_import.pressed.connect(_dialogs.ask_import)
+	_dialogs.import_chosen.connect(_import_one)
+	_dialogs.export_chosen.connect(export_board)
+	_dialogs.delete_confirmed.connect(delete_board)
+	get_window().files_dropped.connect(import_files)
 	kind = App.level_select_kind
-	show_boards(BoardLoader.list_boards(_kind_enum(kind)))
+	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
+	_status.text = ""
+	reload()
+
+
+func _exit_tree() -> void:
+	for loading: BoardListLoading in _loadings.values():
+		loading.cancel()
+	_loadings.clear()
+
+
+func _process(_delta: float) -> void:
+	if _loadings.is_empty():
+		return
+	for grid: GridContainer in _loadings.keys():
+		var loading: BoardListLoading = _loadings[grid]
+		for done in loading.take_finished():
+			var path: String = done["path"]
+			var result: BoardLoadResult = done["result"]
+			_fill(grid, path, result)
+		if not loading.is_busy():
+			_loadings.erase(grid)
+	if _loadings.is_empty():
+		_loaded()
 
 
 func _unhandled_input(event: InputEvent) -> void:
+	if _dialogs.open_dialog() != null:
+		return
 	if event.is_action_pressed("ui_cancel"):
 		App.go_to_menu()
 		get_viewport().set_input_as_handled()
@@ -33,39 +82,101 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 
 
-## Lists these load results as cards (one per file, broken ones greyed) and focuses the first.
+## Lists and loads every board file again (shipped and My boards).
+func reload() -> void:
+	_folder.text = "Folder: %s" % _shown_path("%s/%s" % [user_root, kind])
+	_load_section(_grid, BoardLoader.LEVELS_DIR)
+	_load_section(_my_grid, user_root)
+
+
+## Shows the boards of another My boards folder (the screenshots use a scratch one).
+func use_folder(root: String) -> void:
+	user_root = root
+	reload()
+
+
+## True while some board file is still loading.
+func is_loading() -> bool:
+	return not _loadings.is_empty()
+
+
+## Lists these load results as the shipped boards' cards (one per file, broken ones greyed),
+## at once, and focuses the first playable one.
 func show_boards(results: Array[BoardLoadResult]) -> void:
-	for child in _grid.get_children():
-		_grid.remove_child(child)
-		child.queue_free()
-	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
-	var broken := 0
+	if _loadings.has(_grid):
+		_cancel(_grid)
+		_loadings.erase(_grid)
+	_clear(_grid)
 	if kind == "maze":
 		results = MazeProgress.sorted(results)
 	for result in results:
-		var card := LevelCard.new()
-		card.setup(result, _best_text(result))
-		if card.playable:
-			card.pressed.connect(App.start_game.bind(kind, card.board_path))
-		else:
-			broken += 1
-		_grid.add_child(card)
-	if kind == "maze":
-		MazeCardProgress.apply(cards())
-	_summary.text = _summary_text(results.size(), broken)
-	var first := first_card()
-	if first != null:
-		first.grab_focus()
+		_add_slot(_grid, result.path)
+		_fill(_grid, result.path, result)
+	_loaded()
+
+
+## Imports board files (a drop on the window, or the file dialog's pick) into My boards and
+## says what happened to each.
+func import_files(sources: PackedStringArray) -> void:
+	var lines := PackedStringArray()
+	var refused := false
+	for source in sources:
+		var outcome := UserBoards.import_file(source, user_root)
+		if outcome.has("error"):
+			refused = true
+			lines.append("Not imported: %s" % outcome["error"])
+			continue
+		var result: BoardLoadResult = outcome["result"]
+		var line := (
+			'Imported "%s" into My boards as %s'
+			% [result.level.display_name, str(outcome["path"]).get_file()]
+		)
+		var its_kind := BoardLevel.kind_name(result.level.kind)
+		if its_kind != kind:
+			line += (
+				" (a %s board: find it in the %s list)" % [its_kind, TITLES.get(its_kind, its_kind)]
+			)
+		lines.append(line + ".")
+	_say("\n".join(lines), refused)
+	_load_section(_my_grid, user_root)
+
+
+## Writes the file of `board_path` to `target` (the export dialog's pick) and says so.
+func export_board(board_path: String, target: String) -> void:
+	var roots: Array[String] = [BoardLoader.LEVELS_DIR + "/", user_root + "/"]
+	var error := UserBoards.export_file(board_path, target, roots)
+	if error == OK:
+		_say("Exported %s to %s." % [board_path.get_file(), target], false)
 	else:
-		_back.grab_focus()
+		_say("Could not export %s: %s." % [board_path.get_file(), error_string(error)], true)
 
 
-## The cards shown, in order.
+## Deletes one of the player's boards (after the dialog's confirmation) and says so.
+func delete_board(board_path: String) -> void:
+	var error := UserBoards.delete_file(board_path, user_root)
+	if error == OK:
+		_say("Deleted %s from My boards." % board_path.get_file(), false)
+	else:
+		_say("Could not delete %s: %s." % [board_path.get_file(), error_string(error)], true)
+	_load_section(_my_grid, user_root)
+
+
+## The cards shown (shipped boards first, then My boards), in order.
 func cards() -> Array[Button]:
 	var result: Array[Button] = []
-	for child in _grid.get_children():
-		if child is Button and not child.is_queued_for_deletion():
-			result.append(child as Button)
+	for grid: GridContainer in [_grid, _my_grid]:
+		for slot: Node in grid.get_children():
+			if slot is LevelSlot and not slot.is_queued_for_deletion():
+				result.append((slot as LevelSlot).card)
+	return result
+
+
+## The slots of My boards, in order.
+func my_slots() -> Array[LevelSlot]:
+	var result: Array[LevelSlot] = []
+	for slot in _my_grid.get_children():
+		if slot is LevelSlot and not slot.is_queued_for_deletion():
+			result.append(slot as LevelSlot)
 	return result
 
 
@@ -78,29 +189,181 @@ func first_card() -> Button:
 	return all[0] if not all.is_empty() else null
 
 
+func _grid_first_card() -> Button:
+	for slot in _grid.get_children():
+		if slot is LevelSlot:
+			return (slot as LevelSlot).card
+	return null
+
+
+func _import_one(source: String) -> void:
+	import_files(PackedStringArray([source]))
+
+
+# Shows a card saying "Loading…" for every file in `<root>/<kind>/` and starts loading them.
+func _load_section(grid: GridContainer, root: String) -> void:
+	if _loadings.has(grid):
+		_cancel(grid)
+	_clear(grid)
+	var kind_value := _kind_enum(kind)
+	var jobs: Array[Dictionary] = []
+	var paths := BoardLoader.list_files(kind_value, root)
+	if kind == "maze" and grid == _grid:
+		paths = _in_maze_order(paths)
+	for path in paths:
+		_add_slot(grid, path)
+		jobs.append({"path": path, "kind": kind_value, "root": root})
+	_loadings[grid] = BoardListLoading.new(jobs, load_one)
+	_update_summary()
+	if not is_instance_valid(_first_focus):
+		_first_focus = first_card() if first_card() != null else _import
+		_first_focus.grab_focus()
+
+
+func _cancel(grid: GridContainer) -> void:
+	var loading: BoardListLoading = _loadings[grid]
+	loading.cancel()
+
+
+func _add_slot(grid: GridContainer, path: String) -> void:
+	var slot := LevelSlot.new(path, grid == _my_grid)
+	slot.export_requested.connect(_dialogs.ask_export)
+	slot.delete_requested.connect(_dialogs.ask_delete)
+	slot.card.pressed.connect(func() -> void: App.start_game(kind, slot.card.board_path))
+	grid.add_child(slot)
+
+
+func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
+	for slot in grid.get_children():
+		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
+			(slot as LevelSlot).fill(result, _best_text(result))
+	if kind == "maze":
+		# at once, not only when all have loaded: a locked board never starts meanwhile
+		_show_maze_progress()
+	_update_summary()
+
+
+# Everything has loaded: the first playable card takes the focus the loading card held.
+func _loaded() -> void:
+	_update_summary()
+	var focused := get_viewport().gui_get_focus_owner()
+	var stuck := focused == _first_focus and focused is Button and (focused as Button).disabled
+	if focused == null or stuck:
+		var first := first_card()
+		(first if first != null else _back).grab_focus()
+	if get_viewport().gui_get_focus_owner() == _grid_first_card():
+		# the first row from its top, not scrolled to wherever the loading card sat
+		_scroll.set_deferred("scroll_vertical", 0)
+	_first_focus = get_viewport().gui_get_focus_owner()
+
+
+# Shipped mazes in the order they open (by the ids loaded), then medals and locks on them;
+# the player's own boards get their medals and are never locked.
+func _show_maze_progress() -> void:
+	var slots: Array[LevelSlot] = []
+	for slot in _grid.get_children():
+		if slot is LevelSlot:
+			slots.append(slot as LevelSlot)
+	slots.sort_custom(
+		func(a: LevelSlot, b: LevelSlot) -> bool: return _slot_rank(a) < _slot_rank(b)
+	)
+	var shipped: Array[Button] = []
+	for i in slots.size():
+		_grid.move_child(slots[i], i)
+		shipped.append(slots[i].card)
+	MazeCardProgress.apply(shipped)
+	var mine: Array[Button] = []
+	for slot in my_slots():
+		mine.append(slot.card)
+	MazeCardProgress.apply(mine, false)
+
+
+# A slot's place in the play order; its index breaks ties, so the sort keeps listed order.
+static func _slot_rank(slot: LevelSlot) -> int:
+	var card := slot.card
+	var board_id := card.level.board_id if card.level != null else ""
+	return MazeProgress.rank(board_id) * 10000 + slot.get_index()
+
+
+# Shipped maze files before they load, in the order their ids (maze_<file name>) open.
+static func _in_maze_order(paths: Array[String]) -> Array[String]:
+	var keyed: Array = []
+	for i in paths.size():
+		var guessed_id := "maze_" + paths[i].get_file().get_basename()
+		keyed.append([MazeProgress.rank(guessed_id) * 10000 + i, paths[i]])
+	keyed.sort_custom(func(a: Array, b: Array) -> bool: return a[0] < b[0])
+	var ordered: Array[String] = []
+	for entry: Array in keyed:
+		ordered.append(str(entry[1]))
+	return ordered
+
+
+# Frees the grid's slots at once (never called from one of their own signals).
+func _clear(grid: GridContainer) -> void:
+	for child in grid.get_children():
+		child.free()
+
+
+func _update_summary() -> void:
+	var total := 0
+	var broken := 0
+	var waiting := 0
+	var locked := 0
+	for card: Button in cards():
+		total += 1
+		waiting += 1 if card.get("loading") else 0
+		broken += 1 if not card.get("playable") and not card.get("loading") else 0
+		locked += 1 if card.get("locked") else 0
+	var mine := my_slots().size()
+	_my_empty.visible = mine == 0
+	if total == 0:
+		_summary.text = "No boards found in levels/%s/ or in My boards." % kind
+		return
+	var text := "%d board%s" % [total, "" if total == 1 else "s"]
+	if mine > 0:
+		text += " (%d of your own)" % mine
+	if waiting > 0:
+		text += ", %d loading…" % waiting
+	if broken > 0:
+		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
+	if locked > 0:
+		text += ", %d locked (finish the board before each to open it)" % locked
+	_summary.text = text
+
+
+func _say(message: String, is_problem: bool) -> void:
+	_status.text = message
+	_status.theme_type_variation = &"WarningLabel" if is_problem else &"HintLabel"
+
+
 func _best_text(result: BoardLoadResult) -> String:
 	if not result.ok():
 		return ""
 	var board_id := result.level.board_id
 	if kind == "maze":
-		var seconds := App.best_maze_time(board_id)
-		if seconds <= 0.0:
+		var easy := App.best_maze_time(board_id, false)
+		var hard := App.best_maze_time(board_id, true)
+		if easy <= 0.0 and hard <= 0.0:
 			return ""
-		# the same m:ss.t the maze's own clock shows
-		var minutes := floori(seconds / 60.0)
-		var whole := int(seconds)
-		return "Best time: %d:%02d.%d" % [minutes, whole % 60, int(fmod(seconds, 1.0) * 10.0)]
+		if hard <= 0.0:
+			return "Best time: %s" % _clock_text(easy)
+		if easy <= 0.0:
+			return "Best time (hard): %s" % _clock_text(hard)
+		# each mode's best on one line of the card, under that mode's medal
+		return "Easy %s · Hard %s" % [_clock_text(easy), _clock_text(hard)]
 	var balls := App.best_pachinko_balls(board_id)
 	return "Best: %d balls won" % balls if balls >= 0 else ""
 
 
-func _summary_text(total: int, broken: int) -> String:
-	if total == 0:
-		return "No boards found in levels/%s/." % kind
-	var text := "%d board%s" % [total, "" if total == 1 else "s"]
-	if broken > 0:
-		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
-	return text
+# the same m:ss.t the maze's own clock shows
+static func _clock_text(seconds: float) -> String:
+	var whole := int(seconds)
+	return "%d:%02d.%d" % [floori(seconds / 60.0), whole % 60, int(fmod(seconds, 1.0) * 10.0)]
+
+
+# Players know their files by the real path, not by user://.
+static func _shown_path(path: String) -> String:
+	return path.replace("user://", OS.get_user_data_dir() + "/")
 
 
 static func _is_navigation(event: InputEvent) -> bool:

@@ -14,6 +14,8 @@ var _settings: Control = null
 @onready var _notice: Control = %Notice
 @onready var _notice_label: Label = %NoticeLabel
 @onready var _version: Label = %VersionLabel
+@onready var _hint: Label = %Hint
+@onready var _title_gap: Control = %Gap
 
 
 func _ready() -> void:
@@ -25,6 +27,10 @@ func _ready() -> void:
 	var problems := App.take_problems()
 	_notice.visible = not problems.is_empty()
 	_notice_label.text = "⚠ " + "\n⚠ ".join(problems)
+	# a long banner would run into the hint line: the banner matters more, so it takes the room
+	_hint.visible = problems.is_empty()
+	if not problems.is_empty():
+		_title_gap.custom_minimum_size.y = 16.0
 	_focus_first()
 
 

@@ -20,12 +20,27 @@ func show_start(level: BoardLevel) -> void:
 				[
 					"You get [b]%d balls[/b] in your cup." % level.cup_start_balls,
 					(
-						"[b]Press on the flipper and drag up[/b] to draw it back: the red bar shows the"
-						+ " power. Let go to fire."
+						"[b]One shot:[/b] press the red grip and drag up to draw the flipper back (the"
+						+ (
+							" red bar shows the power), or hold [b]%s[/b]; let go to fire."
+							% PachinkoInput.key_name(&"launch_charge", "the charge key")
+						)
 					),
 					(
-						"Or hold [b]%s[/b] (or the gamepad trigger) to charge and release to fire."
-						% PachinkoInput.key_name(&"launch_charge", "the charge key")
+						(
+							"[b]A stream:[/b] hold the [b]handle dial[/b], [b]%s[/b] or the right"
+							+ " trigger and balls fly out at its strength, 100 a minute. Turn it with"
+							+ " [b]%s[/b] / [b]%s[/b], the wheel or a drag on the dial."
+						)
+						% [
+							PachinkoInput.key_name(&"launch_handle", "the handle key"),
+							PachinkoInput.key_name(&"handle_weaker", "?"),
+							PachinkoInput.key_name(&"handle_stronger", "?"),
+						]
+					),
+					(
+						"[b]Power aims:[/b] a weak shot drops in near the rail on the right, a strong"
+						+ " one carries across the top to the left."
 					),
 					(
 						"A ball that falls into a [b]pocket[/b] pays balls back into the cup. A shot too"

@@ -4,6 +4,7 @@ extends Control
 ## actions, mouse and touch into calls on the rules. Sounds and effects follow the rules'
 ## signals.
 
+const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
@@ -11,6 +12,7 @@ const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
 const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
 const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
+const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -22,6 +24,8 @@ var rules: PachinkoRules
 var _level: BoardLevel
 var _controls := PachinkoInput.new()
 var _stats_refresh := 0.0
+var _bonus_view := BonusView.new()
+var _recorder: ReplayRecorder
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -60,7 +64,13 @@ func _ready() -> void:
 			]
 		)
 	)
+	add_child(_bonus_view)
+	_bonus_view.attach(board_view, sounds)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
+	launcher.handle_pressed.connect(_on_handle_pressed)
+	launcher.handle_turned.connect(
+		func(notches: float) -> void: _controls.turn_handle(rules, notches)
+	)
 	get_viewport().size_changed.connect(_layout)
 	_new_rules()
 	_layout()
@@ -71,11 +81,17 @@ func _process(delta: float) -> void:
 		return
 	_controls.poll(rules, delta)
 	rules.advance(delta)
+	_recorder.note_frame()
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:
 		_stats_refresh = 0.25
 		stats_panel.show_stats(rules.stats())
+
+
+func _notification(what: int) -> void:
+	if what == NOTIFICATION_PAUSED and rules != null:
+		_controls.let_go(rules)
 
 
 func _input(event: InputEvent) -> void:
@@ -106,10 +122,14 @@ func restart() -> void:
 
 
 func _new_rules() -> void:
-	rules = PachinkoRules.new(_level, int(Time.get_ticks_usec()))
+	var rng_seed := int(Time.get_ticks_usec())
+	rules = PachinkoRules.new(_level, rng_seed)
+	_recorder = ReplayRecorder.new()
+	_recorder.attach_pachinko(rules, rng_seed)
 	rules.state_changed.connect(_on_state_changed)
 	rules.cup_changed.connect(_on_cup_changed)
 	rules.power_changed.connect(_on_power_changed)
+	rules.handle.changed.connect(launcher.set_handle)
 	rules.ball_loaded.connect(_on_loaded_changed)
 	rules.ball_launched.connect(_on_ball_launched)
 	rules.ball_won.connect(_on_ball_won)
@@ -119,16 +139,28 @@ func _new_rules() -> void:
 	rules.world.pin_hit.connect(_on_pin_hit)
 	rules.world.ring_hit.connect(_on_ring_hit)
 	board_view.bind(rules)
+	_bonus_view.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
 	cup.set_count(0)
 	launcher.set_power(0.0, 0.0)
 	launcher.set_loaded(false)
-	var charge_key := PachinkoInput.key_name(&"launch_charge", "the charge key")
-	launcher.set_hint(
-		(
-			"Press the red grip and\ndrag it up to draw back,\nor hold %s.\nLet go to fire."
-			% charge_key
+	launcher.set_handle(false, rules.handle.power)
+	(
+		launcher
+		. set_hint(
+			(
+				(
+					"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial"
+					+ "\nor %s. Turn it with\n%s / %s."
+				)
+				% [
+					PachinkoInput.key_name(&"launch_charge", "the charge key"),
+					PachinkoInput.key_name(&"launch_handle", "the handle key"),
+					PachinkoInput.key_name(&"handle_weaker", "?"),
+					PachinkoInput.key_name(&"handle_stronger", "?"),
+				]
+			)
 		)
 	)
 	_show_notes()
@@ -186,6 +218,12 @@ func _on_flipper_pressed(at: Vector2) -> void:
 	_controls.begin_drag(rules, at)
 
 
+func _on_handle_pressed(at: Vector2) -> void:
+	if rules.state != PachinkoRules.State.PLAYING:
+		rules.start_game()
+	_controls.begin_handle_drag(rules, at)
+
+
 func _on_state_changed(state: PachinkoRules.State) -> void:
 	if state == PachinkoRules.State.PLAYING:
 		instructions.visible = false
@@ -195,6 +233,7 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 func _on_game_ended(summary: Dictionary) -> void:
 	var paid: int = summary.get("game_payouts", 0)
 	var new_best := App.record_pachinko_balls(_level.board_id, paid)
+	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
 	instructions.show_game_over(_level, summary, best, new_best)
 	_show_notes()
@@ -206,7 +245,7 @@ func _on_cup_changed(count: int) -> void:
 
 
 func _on_power_changed(power: float) -> void:
-	launcher.set_power(power, rules.flipper_degrees())
+	launcher.set_power(power, LaunchPower.flipper_degrees(rules.power))
 
 
 func _on_loaded_changed() -> void:
@@ -221,6 +260,7 @@ func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
 func _on_ball_won(_id: int, pocket: int, payout: int, at: Vector2) -> void:
 	board_view.pockets.celebrate(pocket)
 	board_view.effects.pocket_win(at, payout)
+	cup.pour(payout)
 	sounds.play(SoundBank.POCKET_WIN)
 	launcher.set_loaded(rules.loaded)
 

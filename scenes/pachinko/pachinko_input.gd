@@ -1,16 +1,45 @@
 extends RefCounted
-## Turns the player's input into flipper calls on the rules: a press on the flipper and a
-## drag (mouse or touch, which Godot delivers as mouse events), the `launch_charge` action
-## held and released (keyboard, gamepad button, or an analog trigger whose depth sets the
-## power), or the left stick pulled down (`tilt_down` from a joypad axis) as a drawback.
+## Turns the player's input into flipper and handle calls on the rules.
+## The flipper (one shot): a press on the red grip and a drag up (mouse or touch, which
+## Godot delivers as mouse events), the `launch_charge` action held and released (keyboard,
+## gamepad button, or an analog axis whose depth sets the power), or the left stick pulled
+## down (`tilt_down` from a joypad axis).
+## The handle (a stream): held with the pointer on the dial (dragging up or down while
+## holding turns it), with the `launch_handle` key, or with the gamepad's right trigger,
+## whose depth is the strength. `handle_stronger` / `handle_weaker` and the mouse wheel on
+## the dial turn it.
 
 enum Source { NONE, POINTER, KEY, ANALOG }
 
 ## Stick pulls smaller than this are ignored.
 const STICK_DEADZONE := 0.25
+## Strength change per press of a turn key or notch of the wheel.
+const HANDLE_STEP := 2.0
+## Strength change per pixel of a drag on the held dial (up is stronger).
+const HANDLE_DRAG_PER_PIXEL := 0.5
+
+const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 var _source := Source.NONE
 var _peak := 0.0
+var _handle_source := Source.NONE
+var _handle_origin := Vector2.ZERO
+var _handle_origin_power := 0.0
+
+
+## The pointer went down on the handle's dial at `at` (viewport coordinates): hold it.
+func begin_handle_drag(rules: PachinkoRules, at: Vector2) -> void:
+	if rules.state != PachinkoRules.State.PLAYING or _handle_source != Source.NONE:
+		return
+	_handle_source = Source.POINTER
+	_handle_origin = at
+	_handle_origin_power = rules.handle.power
+	rules.handle.grip()
+
+
+## The wheel turned over the dial by `notches` (up is positive).
+func turn_handle(rules: PachinkoRules, notches: float) -> void:
+	rules.handle.set_power(rules.handle.power + notches * HANDLE_STEP)
 
 
 ## Starts a pointer drawback at `at` (viewport coordinates).
@@ -21,6 +50,8 @@ func begin_drag(rules: PachinkoRules, at: Vector2) -> void:
 
 ## Mouse motion and release during a pointer drawback. True when the event was used.
 func handle_pointer(rules: PachinkoRules, event: InputEvent, _owner: Node) -> bool:
+	if _handle_source == Source.POINTER:
+		return _handle_pointer(rules, event)
 	if _source != Source.POINTER:
 		return false
 	var motion := event as InputEventMouseMotion
@@ -38,6 +69,8 @@ func handle_pointer(rules: PachinkoRules, event: InputEvent, _owner: Node) -> bo
 
 ## Charge key, button, trigger and stick events. True when the event was used.
 func handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
+	if _handle_action(rules, event):
+		return true
 	if _source == Source.POINTER:
 		return false
 	var axis := event as InputEventJoypadMotion
@@ -57,12 +90,73 @@ func handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
 	return false
 
 
+## Drops any drawback without firing. Called when the game pauses: a key or button let go
+## while paused sends its release to no one, so without this the charge would go on
+## climbing after the pause and the next press would be ignored.
+func let_go(rules: PachinkoRules) -> void:
+	if _source != Source.NONE:
+		rules.cancel_draw()
+	_source = Source.NONE
+	_peak = 0.0
+	_handle_source = Source.NONE
+	rules.handle.let_go()
+
+
 ## Called every frame: a held key keeps charging.
 func poll(rules: PachinkoRules, delta: float) -> void:
 	if _source == Source.KEY:
 		rules.charge(delta)
 	if _source != Source.NONE and not rules.drawing:
 		_source = Source.NONE  # the game ended or restarted under us
+	if _handle_source != Source.NONE and not rules.handle.held:
+		_handle_source = Source.NONE
+
+
+func _handle_pointer(rules: PachinkoRules, event: InputEvent) -> bool:
+	var motion := event as InputEventMouseMotion
+	if motion != null:
+		var turned := (_handle_origin.y - motion.position.y) * HANDLE_DRAG_PER_PIXEL
+		rules.handle.set_power(_handle_origin_power + turned)
+		return true
+	var button := event as InputEventMouseButton
+	if button != null and not button.pressed and button.button_index == MOUSE_BUTTON_LEFT:
+		rules.handle.let_go()
+		_handle_source = Source.NONE
+		return true
+	return false
+
+
+# The handle key, the trigger (its depth is the strength) and the turn keys.
+func _handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
+	var axis := event as InputEventJoypadMotion
+	if axis != null and event.is_action("launch_handle"):
+		var depth := absf(axis.axis_value)
+		if depth > STICK_DEADZONE and rules.state == PachinkoRules.State.PLAYING:
+			var share := (depth - STICK_DEADZONE) / (1.0 - STICK_DEADZONE)
+			rules.handle.set_power(lerpf(LaunchPower.CLEAR_POWER, LaunchPower.MAX_POWER, share))
+			if _handle_source == Source.NONE:
+				_handle_source = Source.ANALOG
+				rules.handle.grip()
+		elif _handle_source == Source.ANALOG:
+			rules.handle.let_go()
+			_handle_source = Source.NONE
+		return true
+	if event.is_action_pressed("launch_handle") and _handle_source == Source.NONE:
+		if rules.state == PachinkoRules.State.PLAYING:
+			_handle_source = Source.KEY
+			rules.handle.grip()
+		return true
+	if event.is_action_released("launch_handle") and _handle_source == Source.KEY:
+		rules.handle.let_go()
+		_handle_source = Source.NONE
+		return true
+	if event.is_action_pressed("handle_stronger", true):
+		turn_handle(rules, 1.0)
+		return true
+	if event.is_action_pressed("handle_weaker", true):
+		turn_handle(rules, -1.0)
+		return true
+	return false
 
 
 # An analog trigger or stick: the power follows its depth upwards; letting it spring back

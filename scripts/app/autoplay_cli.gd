@@ -6,13 +6,14 @@ const GAMES := {
 	"pachinko": "res://scripts/pachinko/autoplay/pachinko_autoplay.gd",
 	"maze": "res://scripts/maze/autoplay/maze_autoplay.gd",
 }
+const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
 const DEFAULT_SECONDS := {"pachinko": 60.0, "maze": 120.0}
 ## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).
 const EXIT_BAD_BOARD := 2
 
 
 ## Runs the autoplay `values` ask for (keys autoplay, board, seconds, seed, hard; seconds
-## may be absent); prints one JSON line; returns the exit code.
+## and record may be absent); prints one JSON line; returns the exit code.
 static func run(values: Dictionary) -> int:
 	var game: String = values["autoplay"]
 	var seconds: float = values.get("seconds", DEFAULT_SECONDS[game])
@@ -25,12 +26,22 @@ static func run(values: Dictionary) -> int:
 	var game_path: String = GAMES[game]
 	var script: Script = load(game_path)
 	var result: Dictionary
+	var recorder := ReplayCli.recorder_for(values)
 	if game == "maze":
-		result = script.call("run", loaded.level, seconds, values["seed"], values["hard"])
+		result = script.call("run", loaded.level, seconds, values["seed"], values["hard"], recorder)
 	else:
-		result = script.call("run", loaded.level, seconds, values["seed"])
+		result = script.call(
+			"run", loaded.level, seconds, values["seed"], recorder, values["handle"]
+		)
 	var report := {"ok": true, "game": game, "board": loaded.level.board_id, "seed": values["seed"]}
 	report.merge(result)
+	if recorder != null:
+		var problem := ReplayCli.save_recording(recorder, values)
+		if not problem.is_empty():
+			printerr("autoplay: %s" % problem)
+			print(JSON.stringify({"ok": false, "error": problem}))
+			return EXIT_BAD_BOARD
+		report["replay"] = values["record"]
 	print(JSON.stringify(report))
 	return 0
 

@@ -57,12 +57,44 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--check-boards",
 	},
 	{
+		"flag": "--replay",
+		"command": true,
+		"value": Value.TEXT,
+		"placeholder": "FILE",
+		"runs": preload("res://scripts/replay/replay_cli.gd"),
+		"help":
+		(
+			"Play a replay file headless on its board and print one JSON line with the final"
+			+ " state hash; exit 0 when it matches the recorded one, 1 when not, 2 for a bad"
+			+ " file or a missing or changed board."
+		),
+		"example": "--replay=build/maze.replay",
+	},
+	{
+		"flag": "--analyze",
+		"command": true,
+		"value": Value.CHOICE,
+		"choices": ["pachinko", "maze"],
+		"placeholder": "GAME",
+		"runs": preload("res://scripts/app/analyze_cli.gd"),
+		"help":
+		(
+			"Play analysis: fire many shots (pachinko) or play many pilot games (maze), print"
+			+ " one JSON line and write it to build/analysis/ (with a heat-map PNG for pachinko)."
+		),
+		"example": "--analyze=pachinko --board=classic --shots=10000 --seed=1 --threads=2",
+	},
+	{
 		"flag": "--board",
-		"for": ["--autoplay"],
+		"for": ["--autoplay", "--analyze"],
 		"value": Value.TEXT,
 		"placeholder": "ID",
 		"default": "classic",
-		"help": "The board: a name in levels/<game>/ or a res:// path (default classic).",
+		"help":
+		(
+			"The board: a name in levels/<game>/, or a res://levels/ or user://boards/ path"
+			+ " (default classic)."
+		),
 		"example": "--autoplay=maze --board=catacombs",
 	},
 	{
@@ -76,12 +108,25 @@ const FLAGS: Array[Dictionary] = [
 	},
 	{
 		"flag": "--seed",
-		"for": ["--autoplay"],
+		"for": ["--autoplay", "--analyze"],
 		"value": Value.WHOLE,
 		"placeholder": "N",
 		"default": 1,
 		"help": "Random seed: the same seed on the same build plays the same game (default 1).",
 		"example": "--autoplay=pachinko --seed=7",
+	},
+	{
+		"flag": "--handle",
+		"for": ["--autoplay"],
+		"value": Value.WHOLE,
+		"placeholder": "POWER",
+		"default": -1,
+		"help":
+		(
+			"Pachinko: hold the handle at this strength (0-100) for a stream of 100 balls a"
+			+ " minute instead of single shots at random strengths (default: single shots)."
+		),
+		"example": "--autoplay=pachinko --handle=60",
 	},
 	{
 		"flag": "--hard",
@@ -90,6 +135,40 @@ const FLAGS: Array[Dictionary] = [
 		"default": false,
 		"help": "Hard mode: the maze's black holes are live (the pachinko game ignores it).",
 		"example": "--autoplay=maze --hard",
+	},
+	{
+		"flag": "--record",
+		"for": ["--autoplay"],
+		"value": Value.TEXT,
+		"placeholder": "FILE",
+		"help": "Save the autoplay's game as a replay file (play it with --replay=FILE).",
+		"example": "--autoplay=maze --seconds=30 --record=build/maze.replay",
+	},
+	{
+		"flag": "--shots",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "N",
+		"default": 10000,
+		"help": "Shots the pachinko analysis fires, at uniform random power (default 10000).",
+		"example": "--analyze=pachinko --shots=2000",
+	},
+	{
+		"flag": "--runs",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "N",
+		"default": 20,
+		"help": "Games the maze analysis plays in each of easy and hard mode (default 20).",
+		"example": "--analyze=maze --board=catacombs --runs=20",
+	},
+	{
+		"flag": "--threads",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "T",
+		"help": "Worker threads for the analysis (default: every core). Figures do not change.",
+		"example": "--analyze=pachinko --threads=1",
 	},
 ]
 

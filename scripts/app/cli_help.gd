@@ -23,10 +23,14 @@ static func text() -> String:
 	lines.append("Options (with the command they name):")
 	lines.append_array(_rows(false))
 	lines.append("")
+	lines.append("Exit codes: %d done;" % CliFlags.EXIT_OK)
+	lines.append(
+		"  1 a board refused (--check-boards) or a replay that ended elsewhere (--replay);"
+	)
 	lines.append(
 		(
-			"Exit codes: %d done; %d unknown flag, bad value or a board that cannot be loaded."
-			% [CliFlags.EXIT_OK, CliFlags.EXIT_USAGE]
+			"  %d unknown flag, bad value, or a board or replay that cannot be read."
+			% CliFlags.EXIT_USAGE
 		)
 	)
 	return "\n".join(lines)

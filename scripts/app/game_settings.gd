@@ -2,8 +2,10 @@ class_name GameSettings
 extends RefCounted
 ## The player's settings: volumes, window mode, frame counter, tilt sensitivity and the
 ## key and gamepad bindings of every game action. Saved as a readable INI file
-## (user://settings.cfg). A damaged or unknown-version file is reported by `load_file`
-## and replaced with defaults; it never stops the game.
+## (user://settings.cfg). `load_file` reads it as data and validates every value: an
+## unreadable value gets its default, a damaged file is moved aside (kept for the player) and
+## the defaults are used, a file from a newer version is left untouched and never saved over.
+## Either way it names the problem in one sentence and never stops the game.
 
 ## Emitted after any value changed through a setter or a load.
 signal changed
@@ -11,7 +13,13 @@ signal changed
 const VERSION := 1
 const MIN_TILT_SENSITIVITY := 0.25
 const MAX_TILT_SENSITIVITY := 3.0
+## Actions that must keep a keyboard and a gamepad binding: without one, a player on that
+## device has no way out of a game.
+const REQUIRED_ACTIONS: Array[String] = ["pause"]
+## More bindings than this on one action is not a file a person wrote.
+const MAX_BINDINGS_PER_ACTION := 16
 const IniText := preload("res://scripts/app/ini_text.gd")
+const UserFile := preload("res://scripts/app/user_file.gd")
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 const FILE_HEADER := (
 	"Board Studio settings (format version %d). Delete this file to restore the defaults.\n"
@@ -26,12 +34,19 @@ var sfx_volume := 1.0
 var fullscreen := false
 ## Show the frames-per-second counter in a corner.
 var show_frame_counter := false
+## Show the ghost of the best maze run on the board and mode.
+var show_ghost := true
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
 ## Every maze board open from the start, instead of one after another.
 var unlock_all_boards := false
+## Gamepad rumble and phone vibration when a maze ball knocks a wall or drops into a hole.
+var vibration := true
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
 var bindings := {}
+
+# a file from a newer version, loaded as defaults: never written over during this run
+var _untouchable_path := ""
 
 
 func _init() -> void:
@@ -67,8 +82,10 @@ func reset_to_defaults() -> void:
 	sfx_volume = 1.0
 	fullscreen = false
 	show_frame_counter = false
+	show_ghost = true
 	tilt_sensitivity = 1.0
 	unlock_all_boards = false
+	vibration = true
 	bindings = default_bindings()
 	changed.emit()
 
@@ -96,6 +113,23 @@ func rebind(action: String, event: InputEvent, gamepad: bool) -> void:
 	changed.emit()
 
 
+## Removes the keyboard (gamepad = false) or gamepad events of an action. A column of an
+## action in [constant REQUIRED_ACTIONS] is never left empty: its shipped bindings come back
+## instead. Returns false when that happened.
+func clear_binding(action: String, gamepad: bool) -> bool:
+	if not bindings.has(action):
+		push_error("GameSettings.clear_binding: unknown action '%s'" % action)
+		return false
+	var events: Array[InputEvent] = []
+	for old: InputEvent in bindings[action]:
+		if Codec.is_gamepad(old) != gamepad:
+			events.append(old)
+	var kept := _with_required_columns(action, events)
+	bindings[action] = kept
+	changed.emit()
+	return kept.size() == events.size()
+
+
 ## Restores the shipped bindings of every action.
 func restore_default_bindings() -> void:
 	bindings = default_bindings()
@@ -114,15 +148,15 @@ func set_value(key: String, value: Variant) -> void:
 		"fullscreen":
 			var on: bool = value
 			fullscreen = on
-		"show_frame_counter":
+		"show_frame_counter", "show_ghost", "unlock_all_boards":
 			var on: bool = value
-			show_frame_counter = on
-		"unlock_all_boards":
-			var on: bool = value
-			unlock_all_boards = on
+			set(key, on)
 		"tilt_sensitivity":
 			var sensitivity: float = value
 			tilt_sensitivity = clampf(sensitivity, MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
+		"vibration":
+			var on: bool = value
+			vibration = on
 		_:
 			push_error("GameSettings.set_value: unknown setting '%s'" % key)
 			return
@@ -149,8 +183,11 @@ func apply() -> void:
 			InputMap.action_add_event(action, event)
 
 
-## Writes the settings as readable text. Returns OK or the file error.
+## Writes the settings as readable text. Returns OK or the file error; a file from a newer
+## version that `load_file` read is never written over (ERR_FILE_NO_PERMISSION, no write).
 func save_file(path: String) -> Error:
+	if not _untouchable_path.is_empty() and path == _untouchable_path:
+		return ERR_FILE_NO_PERMISSION
 	var input := {}
 	for action: String in bindings:
 		var codes: Array[String] = []
@@ -162,8 +199,15 @@ func save_file(path: String) -> Error:
 	var sections := [
 		["meta", {"version": VERSION}],
 		["audio", {"master_volume": master_volume, "sfx_volume": sfx_volume}],
-		["display", {"fullscreen": fullscreen, "show_frame_counter": show_frame_counter}],
-		["controls", {"tilt_sensitivity": tilt_sensitivity}],
+		[
+			"display",
+			{
+				"fullscreen": fullscreen,
+				"show_frame_counter": show_frame_counter,
+				"show_ghost": show_ghost
+			}
+		],
+		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
 		["progress", {"unlock_all_boards": unlock_all_boards}],
 		["input", input],
 	]
@@ -174,28 +218,57 @@ func save_file(path: String) -> Error:
 
 
 ## Reads settings from a file. Returns "" when all was well (or there was no file yet),
-## otherwise a sentence for the player naming the problem; unreadable values are replaced
-## by their defaults (a damaged or unknown-version file: every value).
+## otherwise a sentence for the player naming the problem and where the old file went.
+## Values that cannot be used get their defaults one by one; a file that is not readable
+## text, or has no usable version, is moved aside and every value gets its default.
 func load_file(path: String) -> String:
 	reset_to_defaults()
-	var read := IniText.read_file(path)
+	_untouchable_path = ""
+	var read := IniText.read_versioned_file(path)
 	if read.has("missing"):
 		return ""
 	if read.has("error"):
+		var why: String = read["error"]
+		var damaged := (
+			"%s could not be read (%s), so the defaults are used." % [path.get_file(), why]
+		)
+		return _set_aside(path, damaged)
+	var version: int = read["version"]
+	if version > VERSION:
+		_untouchable_path = path
 		return (
-			"The settings file %s is damaged (%s), so the defaults are used."
-			% [path, read["error"]]
+			(
+				"%s is from a newer version of Board Studio (format %d): the defaults are used, "
+				+ "and the file is left as it is (changes are not saved)."
+			)
+			% [path.get_file(), version]
 		)
 	var sections: Dictionary = read["sections"]
-	var meta: Dictionary = sections.get("meta", {})
-	var version: Variant = meta.get("version")
-	var is_number := version is float or version is int
-	var whole: int = version if is_number else 0
-	if not is_number or whole != VERSION:
-		return (
-			"The settings file %s has an unknown version (%s), so the defaults are used."
-			% [path, str(version)]
+	var line_problems: PackedStringArray = read["problems"]
+	var problems := _read_values(sections)
+	problems.append_array(line_problems)
+	changed.emit()
+	if problems.is_empty():
+		return ""
+	return _set_aside(
+		path,
+		(
+			"Some settings in %s could not be used and got their defaults: %s."
+			% [path.get_file(), ", ".join(problems)]
 		)
+	)
+
+
+# Moves a file with a problem aside (or, when it cannot be moved, never writes it) and
+# returns `sentence` followed by where the old file is.
+func _set_aside(path: String, sentence: String) -> String:
+	var kept := UserFile.keep_aside(path)
+	_untouchable_path = path if kept.is_empty() else ""
+	return "%s %s" % [sentence, UserFile.kept_note(kept)]
+
+
+# Takes every known value it can use from the sections; returns the keys it could not use.
+func _read_values(sections: Dictionary) -> PackedStringArray:
 	var problems := PackedStringArray()
 	var audio: Dictionary = sections.get("audio", {})
 	var display: Dictionary = sections.get("display", {})
@@ -204,18 +277,14 @@ func load_file(path: String) -> String:
 	_read_number(audio, "sfx_volume", 0.0, 1.0, problems)
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
+	_read_flag(display, "show_ghost", problems)
+	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
+	_read_flag(controls, "vibration", problems)
 	var progress: Dictionary = sections.get("progress", {})
 	_read_flag(progress, "unlock_all_boards", problems)
-	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	var input: Dictionary = sections.get("input", {})
 	_read_bindings(input, problems)
-	changed.emit()
-	if problems.is_empty():
-		return ""
-	return (
-		"Some settings in %s were unreadable and got their defaults: %s."
-		% [path, ", ".join(problems)]
-	)
+	return problems
 
 
 func _read_number(
@@ -250,21 +319,48 @@ func _read_bindings(input: Dictionary, problems: PackedStringArray) -> void:
 		if not bindings.has(action):
 			continue  # an action a later version removed: nothing to bind
 		var codes: Variant = input[action]
-		if not codes is Array:
+		var events := _events_from(codes)
+		if events.is_empty() and REQUIRED_ACTIONS.has(action):
+			problems.append("%s (it needs a binding)" % action)
+		elif events.is_empty() and not (codes is Array and codes == []):
 			problems.append(action)
-			continue
-		var events: Array[InputEvent] = []
-		var readable := true
-		for code: Variant in codes:
-			var event: InputEvent = Codec.decode(str(code)) if code is String else null
-			if event == null:
-				readable = false
-				break
-			events.append(event)
-		if readable:
-			bindings[action] = events
 		else:
-			problems.append(action)
+			bindings[action] = _with_required_columns(action, events)
+
+
+# `events` with the shipped keyboard or gamepad bindings added for a required action that
+# has none of that kind.
+func _with_required_columns(action: String, events: Array[InputEvent]) -> Array[InputEvent]:
+	if not REQUIRED_ACTIONS.has(action):
+		return events
+	var result := events.duplicate()
+	for gamepad: bool in [false, true]:
+		if events.any(func(event: InputEvent) -> bool: return Codec.is_gamepad(event) == gamepad):
+			continue
+		for shipped: InputEvent in default_bindings().get(action, []):
+			if Codec.is_gamepad(shipped) == gamepad:
+				result.append(shipped)
+	return result
+
+
+# The events a list of binding codes names; empty when it is not such a list.
+func _events_from(codes: Variant) -> Array[InputEvent]:
+	var events: Array[InputEvent] = []
+	if not codes is Array:
+		return events
+	var list: Array = codes
+	if list.size() > MAX_BINDINGS_PER_ACTION:
+		return events
+	for code: Variant in list:
+		# a short code with short numbers: longer digit runs are not a key and overflow int()
+		var sane := code is String and str(code).length() <= 40
+		sane = sane and RegEx.create_from_string("\\d{10}").search(str(code)) == null
+		var event: InputEvent = Codec.decode(str(code)) if sane else null
+		if event == null:
+			events.clear()
+			return events
+		events.append(event)
+	return events
 
 
 func _apply_bus(bus_name: String, volume: float) -> void:

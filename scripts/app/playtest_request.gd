@@ -9,6 +9,7 @@ extends RefCounted
 ## `written_at` (unix seconds) less than [constant MAX_AGE_SECONDS] old. A request that
 ## fails any check is removed with a warning saying why.
 
+const UserFile := preload("res://scripts/app/user_file.gd")
 const PATH := "user://playtest_request.json"
 ## Where builds before the JSON request wrote it with ConfigFile: removed unread.
 const LEGACY_PATH := "user://playtest_request.cfg"
@@ -42,14 +43,16 @@ static func write(board_path: String, kind: String, path := PATH) -> String:
 
 
 ## Reads the request at `path` as data: {"board", "kind", "problem"}, where "problem" is ""
-## or why the request cannot be used (then board and kind are "").
+## or why the request cannot be used (then board and kind are ""). The bytes are checked
+## first (size, NUL, UTF-16, UTF-8; a byte order mark is dropped), so no engine error is printed.
 static func read(path := PATH, now := Time.get_unix_time_from_system()) -> Dictionary:
-	var file := FileAccess.open(path, FileAccess.READ)
-	if file == null:
-		return _refused("it cannot be read (%s)" % error_string(FileAccess.get_open_error()))
-	if file.get_length() > MAX_BYTES:
-		return _refused("it is larger than %d bytes" % MAX_BYTES)
-	var text := file.get_as_text()
+	var bytes := UserFile.read_text(path, MAX_BYTES)
+	if bytes.has("missing"):
+		return _refused("it does not exist")
+	if bytes.has("error"):
+		var why: String = bytes["error"]
+		return _refused(why)
+	var text: String = bytes["text"]
 	var json := JSON.new()
 	if json.parse(text) != OK:
 		var where := json.get_error_line() + 1  # the parser counts lines from 0

@@ -1,65 +1,85 @@
 extends RefCounted
-## The player's best results per board: fastest maze time, most pachinko balls won.
-## Kept in a readable INI file (user://save.cfg); a damaged file is reported and the
-## records start empty rather than stopping the game.
+## The player's best results per board: fastest maze time in each mode (easy, hard), most
+## pachinko balls won.
+## Kept in a readable INI file (user://save.cfg), read as data: a board id of any text
+## round-trips, an unusable record is dropped on its own, a damaged file is moved aside
+## (kept for the player) and the records start empty, a file from a newer version is left
+## untouched and never saved over. None of it stops the game.
 
 const IniText := preload("res://scripts/app/ini_text.gd")
-const VERSION := 1
+const UserFile := preload("res://scripts/app/user_file.gd")
+## Version 2 keeps a maze time per mode; version 1 had one time per board, read as easy.
+const VERSION := 2
+const MAZE_SECTIONS := {false: "maze_best_seconds_easy", true: "maze_best_seconds_hard"}
+## The version 1 section: every time in it was an easy-mode time.
+const LEGACY_MAZE_SECTION := "maze_best_seconds"
+## Records past this in the message are only counted.
+const MAX_LISTED := 5
+## A pachinko count past this is not a game anyone played.
+const MAX_BALLS := 1_000_000_000
+
 const HEADER := "Board Studio best results (format version %d), per board id."
 
-var _maze_times := {}
+## hard (bool) -> {board id: seconds}
+var _maze_times := {false: {}, true: {}}
 var _pachinko_balls := {}
 var _path := ""
+# a damaged file that could not be moved aside, or one from a newer version: never written
+var _untouchable := false
 
 
-## Loads the records from `path` and remembers it for saving. Returns "" or the problem.
+## Loads the records from `path` and remembers it for saving. Returns "" or a sentence for
+## the player naming the problem and where the old file went.
 func load_file(path: String) -> String:
 	_path = path
-	_maze_times = {}
+	_untouchable = false
+	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
-	var read := IniText.read_file(path)
+	var read := IniText.read_versioned_file(path)
 	if read.has("missing"):
 		return ""
 	if read.has("error"):
+		var why: String = read["error"]
+		var damaged := (
+			"The best results in %s could not be read (%s), so they start empty."
+			% [path.get_file(), why]
+		)
+		return _set_aside(path, damaged)
+	var version: int = read["version"]
+	if version > VERSION:
+		_untouchable = true
 		return (
-			"The best results file %s is damaged (%s); starting a fresh one."
-			% [path, read["error"]]
+			(
+				"%s is from a newer version of Board Studio (format %d): it is left as it is, "
+				+ "and this run's best results are not saved."
+			)
+			% [path.get_file(), version]
 		)
 	var sections: Dictionary = read["sections"]
-	var meta: Dictionary = sections.get("meta", {})
-	var version: Variant = meta.get("version")
-	var is_number := version is float or version is int
-	var whole: int = version if is_number else 0
-	if not is_number or whole != VERSION:
-		return (
-			"The best results file %s has an unknown version (%s); starting a fresh one."
-			% [path, str(version)]
+	var line_problems: PackedStringArray = read["problems"]
+	var problems := _read_records(sections, version)
+	problems.append_array(line_problems)
+	if problems.is_empty():
+		return ""
+	return _set_aside(
+		path,
+		(
+			"Some best results in %s could not be used and are left out: %s."
+			% [path.get_file(), ", ".join(problems)]
 		)
-	var maze: Dictionary = sections.get("maze_best_seconds", {})
-	for board_id: String in maze:
-		var seconds: Variant = maze[board_id]
-		if not (seconds is float or seconds is int):
-			continue
-		var time: float = seconds
-		if is_finite(time) and time > 0:
-			_maze_times[board_id] = time
-	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
-	for board_id: String in pachinko:
-		var balls: Variant = pachinko[board_id]
-		if (balls is float or balls is int) and balls >= 0:
-			var count: int = balls
-			_pachinko_balls[board_id] = count
-	return ""
+	)
 
 
-## Fastest time on a maze board in seconds, or -1 when there is none yet.
-func best_maze_time(board_id: String) -> float:
-	var time: float = _maze_times.get(board_id, -1.0)
+## Fastest time on a maze board in one mode (`hard` or easy) in seconds, or -1 when there is
+## none yet.
+func best_maze_time(board_id: String, hard: bool) -> float:
+	var times: Dictionary = _maze_times[hard]
+	var time: float = times.get(board_id, -1.0)
 	return time
 
 
-## Records a finished maze run; true (and saved) when it beats the best time.
-func record_maze_time(board_id: String, seconds: float) -> bool:
+## Records a finished maze run in one mode; true (and saved) when it beats that mode's best.
+func record_maze_time(board_id: String, hard: bool, seconds: float) -> bool:
 	if board_id.is_empty() or not is_finite(seconds) or seconds <= 0.0:
 		push_error(
 			(
@@ -68,10 +88,11 @@ func record_maze_time(board_id: String, seconds: float) -> bool:
 			)
 		)
 		return false
-	var best := best_maze_time(board_id)
+	var best := best_maze_time(board_id, hard)
 	if best > 0.0 and seconds >= best:
 		return false
-	_maze_times[board_id] = seconds
+	var times: Dictionary = _maze_times[hard]
+	times[board_id] = seconds
 	save()
 	return true
 
@@ -100,15 +121,70 @@ func record_pachinko_balls(board_id: String, balls: int) -> bool:
 
 
 ## Writes the records to the file they were loaded from (nothing when never loaded).
+## A file `load_file` must not write over (newer version, or damaged and not movable) is
+## left alone: ERR_FILE_NO_PERMISSION, the records stay for this run.
 func save() -> Error:
 	if _path.is_empty():
 		return OK
+	if _untouchable:
+		return ERR_FILE_NO_PERMISSION
 	var sections := [
 		["meta", {"version": VERSION}],
-		["maze_best_seconds", _maze_times],
+		[MAZE_SECTIONS[false], _maze_times[false]],
+		[MAZE_SECTIONS[true], _maze_times[true]],
 		["pachinko_best_balls", _pachinko_balls],
 	]
 	var error := IniText.write_file(_path, IniText.format(HEADER % VERSION, sections))
 	if error != OK:
 		push_error("Could not save best results to %s: %s" % [_path, error_string(error)])
 	return error
+
+
+# Moves a file with a problem aside (or, when it cannot be moved, never writes it) and
+# returns `sentence` followed by where the old file is.
+func _set_aside(path: String, sentence: String) -> String:
+	var kept := UserFile.keep_aside(path)
+	_untouchable = kept.is_empty()
+	return "%s %s" % [sentence, UserFile.kept_note(kept)]
+
+
+# Takes every usable record from the sections of a file of `version`; returns the records
+# it could not use (a few named, then a count).
+func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
+	var refused := PackedStringArray()
+	if version == 1:
+		var legacy: Dictionary = sections.get(LEGACY_MAZE_SECTION, {})
+		_read_maze_times(legacy, false, refused)
+	else:
+		for hard: bool in MAZE_SECTIONS:
+			var section: Dictionary = sections.get(MAZE_SECTIONS[hard], {})
+			_read_maze_times(section, hard, refused)
+	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
+	for board_id: String in pachinko:
+		var balls: Variant = pachinko[board_id]
+		var number: float = balls if balls is float or balls is int else NAN
+		if board_id.is_empty() or not is_finite(number) or number < 0 or number > MAX_BALLS:
+			refused.append(_shown(board_id))
+		else:
+			_pachinko_balls[board_id] = int(number)
+	if refused.size() > MAX_LISTED:
+		var more := refused.size() - MAX_LISTED
+		refused.resize(MAX_LISTED)
+		refused.append("%d more" % more)
+	return refused
+
+
+func _read_maze_times(section: Dictionary, hard: bool, refused: PackedStringArray) -> void:
+	var times: Dictionary = _maze_times[hard]
+	for board_id: String in section:
+		var seconds: Variant = section[board_id]
+		var time: float = seconds if seconds is float or seconds is int else NAN
+		if board_id.is_empty() or not is_finite(time) or time <= 0.0:
+			refused.append(_shown(board_id))
+		else:
+			times[board_id] = time
+
+
+# A board id as a message shows it: short, with control characters visible.
+static func _shown(board_id: String) -> String:
+	return "'%s'" % board_id.left(40).c_escape()

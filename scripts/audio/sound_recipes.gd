@@ -17,6 +17,17 @@ const GOAL_CHIME := &"goal_chime"
 const HOLE_FALL := &"hole_fall"
 const FANFARE := &"fanfare"
 const UI_CLICK := &"ui_click"
+## A maze ball rolling on the board: a seamless loop, pitched and faded by its speed.
+const BALL_ROLL := &"ball_roll"
+## A maze ball dropping into a hole: a knock on the rim, then a hollow thud below.
+const BALL_DROP := &"ball_drop"
+## Length of the rolling loop, in seconds.
+const ROLL_LOOP_SECONDS := 1.0
+## The bonus layer: a reel landing, the jackpot, a tulip opening, the start pocket's catch.
+const REEL_STOP := &"reel_stop"
+const JACKPOT := &"jackpot"
+const TULIP_OPEN := &"tulip_open"
+const START_CATCH := &"start_catch"
 
 
 ## Every recipe name, in a stable order.
@@ -33,6 +44,12 @@ static func names() -> Array[StringName]:
 		HOLE_FALL,
 		FANFARE,
 		UI_CLICK,
+		BALL_ROLL,
+		BALL_DROP,
+		REEL_STOP,
+		JACKPOT,
+		TULIP_OPEN,
+		START_CATCH,
 	]
 
 
@@ -63,6 +80,19 @@ static func build(sound: StringName) -> AudioStreamWAV:
 			)
 		UI_CLICK:
 			return Synth.to_stream(Synth.partials(0.05, [_p(2400.0, 1.0, 90.0)]), 0.5)
+		BALL_ROLL:
+			return Synth.to_loop(_ball_roll(), 0.8)
+		BALL_DROP:
+			return Synth.to_stream(_ball_drop(), 0.85)
+		REEL_STOP:
+			return Synth.to_stream(_reel_stop(), 0.7)
+		JACKPOT:
+			var notes: Array[float] = [523.0, 659.0, 784.0, 1047.0, 784.0, 1047.0, 1319.0, 1568.0]
+			return Synth.to_stream(_arpeggio(notes, 0.085), 0.85)
+		TULIP_OPEN:
+			return Synth.to_stream(Synth.sweep(0.16, 520.0, 1180.0, 0.6, 14.0), 0.6)
+		START_CATCH:
+			return Synth.to_stream(_arpeggio([1319.0, 1760.0], 0.05), 0.7)
 	push_error("SoundRecipes: no recipe for sound '%s'" % sound)
 	return null
 
@@ -123,6 +153,50 @@ static func _wall_thud() -> PackedFloat32Array:
 	var knock := Synth.partials(0.12, [_p(140.0, 1.0, 35.0), _p(330.0, 0.45, 50.0)])
 	var tap := Synth.noise(0.03, 0.4, 150.0, 0.7, 21)
 	return Synth.mix([knock, tap])
+
+
+## A ball rolling on wood: dark rumbling noise with a faint grain that flutters, made one
+## loop long with its end cross-faded into its start so the loop has no seam.
+static func _ball_roll() -> PackedFloat32Array:
+	var length := int(ROLL_LOOP_SECONDS * Synth.SAMPLE_RATE)
+	var seam := int(0.15 * Synth.SAMPLE_RATE)
+	var rumble := Synth.noise(ROLL_LOOP_SECONDS + 0.15, 1.0, 0.0, 0.985, 31)
+	var grain := Synth.noise(ROLL_LOOP_SECONDS + 0.15, 0.25, 0.0, 0.6, 32)
+	var out := PackedFloat32Array()
+	out.resize(length)
+	for i in length:
+		out[i] = rumble[i] + grain[i] * _flutter(i)
+	for i in seam:
+		var k := float(i) / float(seam)
+		var tail := rumble[length + i] + grain[length + i] * _flutter(length + i)
+		out[i] = lerpf(tail, out[i], k)
+	return out
+
+
+# The grain's flutter: 23 whole cycles a second, so it too runs on across the loop's seam.
+static func _flutter(sample: int) -> float:
+	return 0.75 + 0.25 * sin(TAU * 23.0 * float(sample) / Synth.SAMPLE_RATE)
+
+
+## A ball lost into a hole: a bright knock on the rim, a hollow low thud at the bottom,
+## and a small rattle as it settles.
+static func _ball_drop() -> PackedFloat32Array:
+	var rim := Synth.partials(0.08, [_p(900.0, 0.6, 60.0), _p(1750.0, 0.3, 80.0)])
+	var thud := Synth.partials(0.3, [_p(105.0, 1.0, 14.0), _p(212.0, 0.45, 20.0)])
+	var rattle := Synth.partials(0.1, [_p(620.0, 0.35, 45.0)])
+	var out := rim.duplicate()
+	Synth.overlay(out, Synth.noise(0.05, 0.3, 60.0, 0.5, 33), 0.0)
+	Synth.overlay(out, thud, 0.16)
+	Synth.overlay(out, rattle, 0.3)
+	Synth.overlay(out, rattle, 0.37)
+	return out
+
+
+## A reel landing on its symbol: a short knock under a small bell.
+static func _reel_stop() -> PackedFloat32Array:
+	var knock := Synth.partials(0.08, [_p(220.0, 1.0, 45.0), _p(520.0, 0.4, 60.0)])
+	var bell := Synth.partials(0.2, [_p(1568.0, 0.5, 18.0), _p(2350.0, 0.2, 25.0)])
+	return Synth.mix([knock, bell])
 
 
 static func _p(freq: float, amp: float, decay: float) -> PackedFloat32Array:

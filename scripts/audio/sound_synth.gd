@@ -119,3 +119,17 @@ static func to_stream(samples: PackedFloat32Array, peak: float = 0.9) -> AudioSt
 	stream.stereo = false
 	stream.data = data
 	return stream
+
+
+## Like `to_stream`, but the clip loops forever from its first sample to its last, with no
+## fade at the seam (the samples should already run smoothly from their end into their start).
+static func to_loop(samples: PackedFloat32Array, peak: float = 0.9) -> AudioStreamWAV:
+	# to_stream fades its last 5 ms: give it a copy of the start to fade that is never played
+	var padded := samples.duplicate()
+	var pad := mini(samples.size(), int(0.01 * SAMPLE_RATE))
+	padded.append_array(samples.slice(0, pad))
+	var stream := to_stream(padded, peak)
+	stream.loop_mode = AudioStreamWAV.LOOP_FORWARD
+	stream.loop_begin = 0
+	stream.loop_end = samples.size()
+	return stream

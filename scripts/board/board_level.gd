@@ -131,6 +131,15 @@ const CURRENT_VERSION := 1
 		cup_start_balls = value
 		emit_changed()
 
+## The bonus layer: start pockets, attackers and tulips (BonusPocketSpec), start pockets
+## first, then attackers, then tulips. Their pins are not in `pins`: the world factory
+## stamps them from these specs (BonusGeometry).
+@export var bonus_pockets: Array[BonusPocketSpec] = []:
+	set(value):
+		bonus_pockets = value
+		_watch_pockets()
+		emit_changed()
+
 @export_group("Maze")
 ## Maze cells across.
 @export var grid_cols: int = 0:
@@ -193,12 +202,42 @@ const CURRENT_VERSION := 1
 	set(value):
 		medal_times_hard = value
 		emit_changed()
+## Stable ids of the items, one per item, in the same order (see ItemIds): they survive a
+## neighbour being deleted, so messages and the editor can name an item for good.
+@export var pin_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		pin_ids = value
+		emit_changed()
+@export var pocket_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		pocket_ids = value
+		emit_changed()
+@export var wall_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		wall_ids = value
+		emit_changed()
+@export var hole_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		hole_ids = value
+		emit_changed()
+@export var start_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		start_ids = value
+		emit_changed()
+## Per item list ("pins", "walls"...): the id the next new item of that list gets. It only
+## ever grows, so an id is never handed out twice in a board's life, even after the item
+## that had the highest id is deleted (ItemIds.next_id; a list missing here starts after its
+## largest id).
+@export var next_ids: Dictionary[String, int] = {}:
+	set(value):
+		next_ids = value
+		emit_changed()
 
 ## Fields of older file layouts that this version no longer declares, kept during a load so
 ## `BoardUpgrader` can convert them. Never saved.
 var legacy_fields: Dictionary = {}
 
-var _watched: Array[PocketSpec] = []
+var _watched: Array[Resource] = []
 
 
 func _init() -> void:
@@ -230,7 +269,12 @@ func duplicate_level() -> BoardLevel:
 	for spec in pockets:
 		specs.append(spec.duplicate() as PocketSpec if spec != null else null)
 	copy.pockets = specs
+	var bonus: Array[BonusPocketSpec] = []
+	for spec in bonus_pockets:
+		bonus.append(spec.duplicate() as BonusPocketSpec if spec != null else null)
+	copy.bonus_pockets = bonus
 	copy.tuning = tuning.duplicate() as PhysicsTuning if tuning != null else null
+	copy.next_ids = next_ids.duplicate()
 	copy.legacy_fields = legacy_fields.duplicate(true)
 	return copy
 
@@ -256,7 +300,10 @@ func _watch_pockets() -> void:
 		if spec != null and spec.changed.is_connected(emit_changed):
 			spec.changed.disconnect(emit_changed)
 	_watched.clear()
-	for spec in pockets:
+	var watch: Array[Resource] = []
+	watch.append_array(pockets)
+	watch.append_array(bonus_pockets)
+	for spec in watch:
 		if spec != null and not spec.changed.is_connected(emit_changed):
 			spec.changed.connect(emit_changed)
 			_watched.append(spec)

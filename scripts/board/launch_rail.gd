@@ -10,13 +10,25 @@ extends RefCounted
 const GUIDE_WALL_RADIUS := 2.0
 ## Largest angle between two guide points, degrees (keeps the capsule chain smooth).
 const GUIDE_STEP_DEG := 3.0
-## The deflector past the rail's end: a ramp leaving the ring DEFLECTOR_OUTER_DEG past the
-## end and reaching DEFLECTOR_DEPTH rail widths inside the ring DEFLECTOR_INNER_DEG past it.
-## A fast ball riding the ring slides off along it into the field instead of riding on round
-## the ring into the gutter; the wedge it makes with the ring opens away from the rail.
-const DEFLECTOR_OUTER_DEG := 8.0
-const DEFLECTOR_INNER_DEG := 25.0
+## The deflector on the far side: a ramp leaving the ring DEFLECTOR_OUTER_DEG past the
+## rail's end and reaching DEFLECTOR_DEPTH rail widths inside the ring DEFLECTOR_INNER_DEG
+## past it. A ball leaves the rail in free flight and its speed decides how far across the
+## top it carries (that is how power aims), so nothing may stand in that flight; past the
+## farthest flight, a ball that meets the ring and rides it (a knock from another ball)
+## slides off the ramp into the field instead of riding round into the gutter.
+const DEFLECTOR_OUTER_DEG := 100.0
+const DEFLECTOR_INNER_DEG := 115.0
 const DEFLECTOR_DEPTH := 1.5
+## Where the rail should open for power to aim (degrees): short of the top on the right, so a
+## ball leaves heading up and left and its speed decides how far it carries.
+const AIMING_END_DEG := -55.0
+## The flight lane under the top of the ring, kept clear of free pins: within
+## FLIGHT_LANE_DEPTH px of the ring between FLIGHT_LANE_FROM_DEG and FLIGHT_LANE_TO_DEG. A
+## ball crosses it in free flight, so a strong shot lands farther from the rail than a weak
+## one; with pins there every shot hits the same first pins and power stops aiming.
+const FLIGHT_LANE_DEPTH := 80.0
+const FLIGHT_LANE_FROM_DEG := -160.0
+const FLIGHT_LANE_TO_DEG := -20.0
 
 
 ## Radius of the guide arc's centre line.
@@ -95,6 +107,18 @@ static func launch_direction(level: BoardLevel) -> Vector2:
 ## Where the ball leaves the channel into the field: riding the ring at `rail_end_deg`.
 static func entry_point(level: BoardLevel) -> Vector2:
 	return level.ring_center + _unit(level.rail_end_deg) * riding_radius(level)
+
+
+## True when `point` lies in the flight lane under the top of the ring (see
+## FLIGHT_LANE_DEPTH), where board builders leave no free pin.
+static func in_flight_lane(level: BoardLevel, point: Vector2) -> bool:
+	var rel := point - level.ring_center
+	var degrees := rad_to_deg(rel.angle())
+	return (
+		level.ring_radius - rel.length() < FLIGHT_LANE_DEPTH
+		and degrees > FLIGHT_LANE_FROM_DEG
+		and degrees < FLIGHT_LANE_TO_DEG
+	)
 
 
 ## The highest point (smallest y) a ball passes on its way from the launch position to the

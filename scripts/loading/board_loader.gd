@@ -9,6 +9,11 @@ const Reader := preload("res://scripts/loading/board_text_reader.gd")
 const LEVELS_DIR := "res://levels"
 ## The folders boards may be loaded from: the shipped boards and the player's own.
 const BOARD_ROOTS: Array[String] = ["res://levels/", "user://boards/"]
+## The player's own boards ("My boards"), one folder per game kind like levels/.
+const USER_DIR := "user://boards"
+## A board loaded from the user folder is known as this prefix + its file name, so a player's
+## board that reuses a shipped board's id never shares (or overwrites) that board's best results.
+const USER_ID_PREFIX := "my:"
 ## At most this many validator errors are quoted in a refusal message.
 const ERRORS_QUOTED := 3
 
@@ -29,7 +34,21 @@ static func load_board(path: String, roots: Array[String] = BOARD_ROOTS) -> Boar
 		)
 	if not path.ends_with(".board"):
 		return _fail(result, "a board file must be a .board file")
-	return _finish(result, _read_board_file(result, path))
+	var level := _read_board_file(result, path)
+	if level != null and path.begins_with("user://"):
+		level.board_id = USER_ID_PREFIX + UserBoards.safe_stem(path.get_file().get_basename())
+	return _finish(result, level)
+
+
+## Reads and validates board text that is not (yet) in a board folder, such as a file the
+## player is importing: the same reader and validator as `load_board`. `label` names the
+## file in the error message.
+static func load_bytes(bytes: PackedByteArray, label: String) -> BoardLoadResult:
+	var result := BoardLoadResult.new()
+	result.path = label
+	if bytes.size() > Reader.Schema.MAX_FILE_BYTES:
+		return _fail(result, "the file is larger than %d bytes" % Reader.Schema.MAX_FILE_BYTES)
+	return _finish(result, _read_bytes(result, bytes))
 
 
 ## Loads a board saved in the old text-resource layout (.tres), for the converter and its
@@ -93,7 +112,10 @@ static func _read_board_file(result: BoardLoadResult, path: String) -> BoardLeve
 	if size != null and size.get_length() > Reader.Schema.MAX_FILE_BYTES:
 		result.error = "the file is larger than %d bytes" % Reader.Schema.MAX_FILE_BYTES
 		return null
-	var bytes := FileAccess.get_file_as_bytes(path)
+	return _read_bytes(result, FileAccess.get_file_as_bytes(path))
+
+
+static func _read_bytes(result: BoardLoadResult, bytes: PackedByteArray) -> BoardLevel:
 	if bytes.has(0):
 		result.error = "the file contains a NUL byte; a board file is plain text"
 		return null

@@ -51,6 +51,14 @@ const MAZE := {
 const MAZE_OPTIONAL := {"medal_times": ["medals", 0.1, 36000.0]}
 ## The modes medal times are given for.
 const MEDAL_MODES: Array[String] = ["easy", "hard"]
+## The fields every bonus pocket has: a cup a 10 px ball fits into, paying a sane amount.
+const BONUS_CUP := {
+	"x": ["coord"],
+	"y": ["coord"],
+	"width": ["float", 16.0, 160.0],
+	"depth": ["float", 8.0, 200.0],
+	"payout": ["int", 0, 100],
+}
 ## List name → [most items, item field → spec]. Optional item fields are in OPTIONAL_ITEM_FIELDS.
 const LISTS := {
 	"pins": [5000, {"x": ["coord"], "y": ["coord"]}],
@@ -68,22 +76,44 @@ const LISTS := {
 	"walls": [4000, {"ax": ["coord"], "ay": ["coord"], "bx": ["coord"], "by": ["coord"]}],
 	"ball_starts": [64, {"x": ["coord"], "y": ["coord"]}],
 	"holes": [500, {"x": ["coord"], "y": ["coord"]}],
+	# The bonus layer (BonusPocketSpec): cups with a role, all optional.
+	"start_pockets": [4, BONUS_CUP],
+	"attackers": [4, BONUS_CUP],
+	"tulips": [32, BONUS_CUP],
 }
-## Fields an item may leave out: a pin's pocket (-1 = a field pin) and its special flag.
+## Fields an item may leave out: its stable id (ItemIds; numbered in order when missing),
+## a pin's pocket (-1 = a field pin) and its special flag.
 const OPTIONAL_ITEM_FIELDS := {
-	"pins": {"pocket": ["int", 0, 199], "special": ["bool"]},
+	"pins": {"id": ["int", 1, ItemIds.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]},
+	"pockets": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"walls": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"ball_starts": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"holes": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"start_pockets": {"symbols": ["int", 2, 9]},
+	"attackers": {"open_seconds": ["float", 1.0, 30.0], "open_catches": ["int", 1, 50]},
 }
+## The optional header field holding the id counters: `{"next_ids": {"pins": 626}}`, list
+## name -> the id its next new item gets (BoardLevel.next_ids). Written only for a list whose
+## counter is past its largest id + 1; a counter at or below an id in use is raised on load.
+const NEXT_IDS_FIELD := "next_ids"
+## The range of one counter.
+const NEXT_ID_SPEC := ["int", 1, ItemIds.MAX_ID + 1]
 ## The key an item line uses for each list: `{"pin": {"x": 1, "y": 2}}` goes to "pins".
 const ITEM_KEYS := {
 	"pin": "pins",
 	"pocket": "pockets",
 	"wall": "walls",
 	"ball_start": "ball_starts",
-	"hole": "holes"
+	"hole": "holes",
+	"start_pocket": "start_pockets",
+	"attacker": "attackers",
+	"tulip": "tulips",
 }
 ## A file may not have more lines than this (every list full, plus the fields).
 const MAX_LINES := 12000
-const PACHINKO_LISTS: Array[String] = ["pins", "pockets"]
+const PACHINKO_LISTS: Array[String] = ["pins", "pockets", "start_pockets", "attackers", "tulips"]
+## The bonus lists in BonusPocketSpec.Role order (a board keeps its bonus pockets so).
+const BONUS_LISTS: Array[String] = ["start_pockets", "attackers", "tulips"]
 const MAZE_LISTS: Array[String] = ["walls", "ball_starts", "holes"]
 ## Tuning fields: name → [min, max]; the fields themselves are PhysicsTuning's properties.
 const TUNING_RANGES := {
@@ -101,6 +131,9 @@ const TUNING_RANGES := {
 	"rest_speed": [0.0, 10000.0],
 	"sleep_time": [0.0, 60.0],
 	"gutter_slide_time": [0.0, 60.0],
+	"speed_cap": [0, 1],  # PhysicsTuning.SpeedCap
+	"friction_against": [0, 1],  # PhysicsTuning.FrictionAgainst
+	"wall_cap_contact": [0, 1],  # PhysicsTuning.CapContact
 }
 ## A tuning field with no range of its own above gets this one.
 const TUNING_DEFAULT_RANGE := [-1000000.0, 1000000.0]

@@ -9,6 +9,8 @@ extends RefCounted
 ## another file.
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
+## Top-level fields besides the kind's own (board_schema.gd) and its item lists.
+const OTHER_FIELDS: Array[String] = ["tuning", Schema.NEXT_IDS_FIELD]
 
 
 ## {"level": BoardLevel} or {"error": "what is wrong"} (the caller adds the file name).
@@ -90,7 +92,8 @@ static func _check_fields(data: Dictionary) -> String:
 	var lists := Schema.lists_for(kind)
 	var optional := Schema.optional_fields_for(kind)
 	for key: Variant in data.keys():
-		if not fields.has(key) and not lists.has(key) and not optional.has(key) and key != "tuning":
+		var known := fields.has(key) or lists.has(key) or optional.has(key)
+		if not known and not key in OTHER_FIELDS:
 			return 'unknown field "%s" for a %s board' % [key, kind]
 	for field: String in optional:
 		if data.has(field):
@@ -109,7 +112,25 @@ static func _check_fields(data: Dictionary) -> String:
 		var problem := _check_list(list, data.get(list, []))
 		if not problem.is_empty():
 			return problem
+	var counters_problem := _check_counters(data.get(Schema.NEXT_IDS_FIELD, {}), lists)
+	if not counters_problem.is_empty():
+		return counters_problem
 	return _check_tuning(data.get("tuning", {}))
+
+
+# The optional id counters: an object of the board's list names and whole numbers.
+static func _check_counters(value: Variant, lists: Array[String]) -> String:
+	var field: String = Schema.NEXT_IDS_FIELD
+	if not value is Dictionary:
+		return '"%s" must be an object { ... }' % field
+	var counters: Dictionary = value
+	for key: Variant in counters.keys():
+		if not key in lists:
+			return '"%s" names "%s", which is not an item list of this board' % [field, key]
+		var problem := Schema.check_value(counters[key], Schema.NEXT_ID_SPEC)
+		if not problem.is_empty():
+			return '"%s" "%s" %s' % [field, key, problem]
+	return ""
 
 
 static func _check_list(list: String, value: Variant) -> String:
@@ -185,6 +206,7 @@ static func _build(data: Dictionary) -> BoardLevel:
 		var pockets: Array = data.get("pockets", [])
 		_build_pins(level, pins)
 		_build_pockets(level, pockets)
+		_build_bonus(level, data)
 	else:
 		var walls: Array = data.get("walls", [])
 		var ball_starts: Array = data.get("ball_starts", [])
@@ -197,6 +219,18 @@ static func _build(data: Dictionary) -> BoardLevel:
 		var hard: Array = medals.get("hard", [])
 		level.medal_times_easy = _times(easy)
 		level.medal_times_hard = _times(hard)
+	var counters: Dictionary = data.get(Schema.NEXT_IDS_FIELD, {})
+	var next_ids: Dictionary[String, int] = {}
+	for list: Variant in counters:
+		next_ids[str(list)] = _int_of(counters[list])
+	level.next_ids = next_ids
+	for list: String in ItemIds.LISTS:
+		var ids := PackedInt32Array()
+		for item: Dictionary in data.get(list, []):
+			ids.append(_int_of(item.get("id", 0)))
+		var id_field: String = ItemIds.LISTS[list]
+		level.set(id_field, ids)
+	ItemIds.fill(level)  # missing or repeated ids get fresh numbers
 	return level
 
 
@@ -213,9 +247,7 @@ static func _value_for(current: Variant, value: Variant) -> Variant:
 
 
 static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTuning:
-	var tuning := (
-		PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
-	)
+	var tuning := TuningPresets.for_kind(level.is_maze())
 	for key: String in values:
 		tuning.set(key, _value_for(tuning.get(key), values[key]))
 	return tuning
@@ -242,6 +274,31 @@ static func _build_pockets(level: BoardLevel, items: Array) -> void:
 		var depth := _float_of(item["depth"])
 		specs.append(PocketSpec.create(at, width, depth, _int_of(item["payout"])))
 	level.pockets = specs
+
+
+# The bonus lists, in role order (start pockets, attackers, tulips).
+static func _build_bonus(level: BoardLevel, data: Dictionary) -> void:
+	var specs: Array[BonusPocketSpec] = []
+	for role in Schema.BONUS_LISTS.size():
+		var items: Array = data.get(Schema.BONUS_LISTS[role], [])
+		for item: Dictionary in items:
+			var at := Vector2(_float_of(item["x"]), _float_of(item["y"]))
+			var spec := BonusPocketSpec.create(
+				role,
+				at,
+				_float_of(item["width"]),
+				_float_of(item["depth"]),
+				_int_of(item["payout"])
+			)
+			spec.symbols = _int_of(item.get("symbols", BonusPocketSpec.DEFAULT_SYMBOLS))
+			spec.open_seconds = _float_of(
+				item.get("open_seconds", BonusPocketSpec.DEFAULT_OPEN_SECONDS)
+			)
+			spec.open_catches = _int_of(
+				item.get("open_catches", BonusPocketSpec.DEFAULT_OPEN_CATCHES)
+			)
+			specs.append(spec)
+	level.bonus_pockets = specs
 
 
 static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:

@@ -30,13 +30,19 @@ static func write(level: BoardLevel) -> String:
 	if level.is_maze():
 		_append_medals(lines, level)
 	lines.append('{"tuning": %s}' % _tuning(level.tuning))
+	var counters := ItemIds.counters_to_save(level)
+	if not counters.is_empty():
+		lines.append('{"%s": %s}' % [Schema.NEXT_IDS_FIELD, _counters(counters)])
 	if level.is_pachinko():
-		_append_items(lines, "pin", _pin_items(level))
-		_append_items(lines, "pocket", _pocket_items(level))
+		_append_items(lines, "pin", _pin_items(level), _ids(level, "pins"))
+		_append_items(lines, "pocket", _pocket_items(level), _ids(level, "pockets"))
+		_append_bonus(lines, level)
 	else:
-		_append_items(lines, "wall", _point_items(level.walls, WALL_KEYS))
-		_append_items(lines, "ball_start", _point_items(level.ball_starts, POINT_KEYS))
-		_append_items(lines, "hole", _point_items(level.holes, POINT_KEYS))
+		var walls := _point_items(level.walls, WALL_KEYS)
+		_append_items(lines, "wall", walls, _ids(level, "walls"))
+		var starts := _point_items(level.ball_starts, POINT_KEYS)
+		_append_items(lines, "ball_start", starts, _ids(level, "ball_starts"))
+		_append_items(lines, "hole", _point_items(level.holes, POINT_KEYS), _ids(level, "holes"))
 	return "\n".join(lines) + "\n"
 
 
@@ -82,6 +88,15 @@ static func _tuning(tuning: PhysicsTuning) -> String:
 	return "{" + ", ".join(parts) + "}"
 
 
+# `{"pins": 626, "walls": 40}` in ItemIds.LISTS order, so the same board gives the same text.
+static func _counters(counters: Dictionary[String, int]) -> String:
+	var parts := PackedStringArray()
+	for list: String in ItemIds.LISTS:
+		if counters.has(list):
+			parts.append('"%s": %d' % [list, counters[list]])
+	return "{" + ", ".join(parts) + "}"
+
+
 static func _exact(value: float) -> String:
 	if value == floorf(value) and absf(value) < 1e15:
 		return str(int(value))
@@ -103,9 +118,19 @@ static func _append_medals(lines: PackedStringArray, level: BoardLevel) -> void:
 		lines.append('{"medal_times": {%s}}' % ", ".join(parts))
 
 
-static func _append_items(lines: PackedStringArray, key: String, items: PackedStringArray) -> void:
-	for item in items:
-		lines.append('{"%s": %s}' % [key, item])
+# Each item line starts with its stable id: `{"pin": {"id": 17, "x": 255, "y": 84}}`.
+static func _append_items(
+	lines: PackedStringArray, key: String, items: PackedStringArray, ids: PackedInt32Array
+) -> void:
+	for i in items.size():
+		lines.append('{"%s": {"id": %d, %s}' % [key, ids[i], items[i].substr(1)])
+
+
+static func _ids(level: BoardLevel, list: String) -> PackedInt32Array:
+	var ids := PackedInt32Array()
+	for i in ItemIds.count(level, list):
+		ids.append(ItemIds.of(level, list, i))
+	return ids
 
 
 static func _pin_items(level: BoardLevel) -> PackedStringArray:
@@ -140,6 +165,33 @@ static func _pocket_items(level: BoardLevel) -> PackedStringArray:
 			)
 		)
 	return items
+
+
+# The bonus pockets by role (start pockets, attackers, tulips), each role's own fields last.
+# A board without them gets no line, so older boards keep their exact text.
+static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
+	for role: int in BonusPocketSpec.ROLE_KEYS.size():
+		for spec in level.bonus_pockets:
+			if spec == null or spec.role != role:
+				continue
+			var text := (
+				'{"x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d'
+				% [
+					number(spec.position.x),
+					number(spec.position.y),
+					number(spec.width),
+					number(spec.depth),
+					spec.payout
+				]
+			)
+			if role == BonusPocketSpec.Role.START:
+				text += ', "symbols": %d' % spec.symbols
+			elif role == BonusPocketSpec.Role.ATTACKER:
+				text += (
+					', "open_seconds": %s, "open_catches": %d'
+					% [number(spec.open_seconds), spec.open_catches]
+				)
+			lines.append('{"%s": %s}' % [spec.role_key(), text + "}"])
 
 
 static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:

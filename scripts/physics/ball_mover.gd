@@ -1,4 +1,4 @@
-extends RefCounted
+extends "res://scripts/physics/ball_mover_state.gd"
 ## The motion stage for one lane of balls: each awake ball moves by its velocity plus its
 ## ball-ball separation, in substeps short enough that no ball can cross a pin, a wall or
 ## the ring; each substep runs the narrow phase per shape kind (ring, pins, walls), and
@@ -15,13 +15,10 @@ extends RefCounted
 ## round; a wall's flat side does not curve.
 enum Surface { RING, PIN, WALL_CAP, WALL_SIDE }
 
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
-const BallEvents := preload("res://scripts/physics/ball_events.gd")
-const ContactId := preload("res://scripts/physics/contact_id.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
+const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
 
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.
@@ -37,183 +34,6 @@ const HIT_EVENT: Array[int] = [
 ]
 ## Distances below this count as zero (px).
 const EPS := ContactMath.EPS
-
-## This lane's events of the step, in order (see BallEvents), and its path points.
-var events := PackedInt32Array()
-var event_speed := PackedFloat32Array()
-var trace_ball := PackedInt32Array()
-var trace_pos := PackedVector2Array()
-
-# The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
-# only), static geometry (read only) and constants. Members rather than reads through the
-# store and geometry objects: a member is one indexed read, a named read a hash lookup.
-var _pos := PackedVector2Array()
-var _vel := PackedVector2Array()
-var _rad := PackedFloat32Array()
-var _push := PackedVector2Array()
-var _ids := PackedInt32Array()
-var _alive := PackedByteArray()
-var _asleep := PackedByteArray()
-var _rest := PackedFloat32Array()
-var _contact_a := PackedInt32Array()
-var _contact_b := PackedInt32Array()
-var _support_a := PackedVector2Array()
-var _support_b := PackedVector2Array()
-var _support_ball := PackedVector2Array()
-var _sleep_ball_normal := PackedVector2Array()
-var _gutter_hits := PackedInt32Array()
-var _gutter_time := PackedFloat32Array()
-var _goal_mask := PackedInt32Array()
-var _zone_mask := PackedInt32Array()
-var _cell_keys := PackedInt64Array()
-var _g: StaticGeometry
-var _zoned := true
-var _pin_start := PackedInt32Array()
-var _pin_items := PackedInt32Array()
-var _pin_item_pos := PackedVector2Array()
-var _pin_item_rad := PackedFloat32Array()
-var _pin_special := PackedByteArray()
-var _pin_pocket := PackedInt32Array()
-var _pin_min_speed_x := PackedFloat64Array()
-var _wall_start := PackedInt32Array()
-var _wall_items := PackedInt32Array()
-var _wall_item_a := PackedVector2Array()
-var _wall_item_ab := PackedVector2Array()
-var _wall_item_inv := PackedFloat32Array()
-var _wall_item_rad := PackedFloat32Array()
-var _wall_ab := PackedVector2Array()
-var _wall_inv_len2 := PackedFloat32Array()
-var _has_walls := false
-var _has_ring := false
-var _ring_center := Vector2.ZERO
-var _has_gutter := false
-var _has_sensors := false
-var _origin := Vector2.ZERO
-var _inv_cell := 1.0
-var _cols := 1
-var _last_cell := Vector2i.ZERO
-var _gravity := Vector2.ZERO
-## Per-axis rolling friction for one step (px/s), and whether there is any.
-var _friction_dt := Vector2.ZERO
-var _has_friction := false
-var _dt := 0.0
-var _max_speed := 0.0
-var _pin_e := 0.0
-var _wall_e := 0.0
-var _keep_tangent := 1.0
-var _threshold := 0.0
-var _rest_speed2 := 0.0
-## 0 while no ball may fall asleep (just after a wake-up).
-var _sleep_time := 0.0
-## A ball pushed apart by more than a resting ball moves in a step is still settling.
-var _settled_push := 0.0
-var _gutter_slide_time := 0.0
-var _tracing := false
-# The ball being moved: slot, position, velocity, radius, substep time, push per substep.
-var _i := 0
-var _p := Vector2.ZERO
-var _v := Vector2.ZERO
-var _r := -1.0
-var _h := 0.0
-var _push_step := Vector2.ZERO
-# Contacts of last step (a persisting one slides) and of this one, with their normals.
-var _held_a := ContactId.NONE
-var _held_b := ContactId.NONE
-var _cur_a := ContactId.NONE
-var _cur_b := ContactId.NONE
-var _n_a := Vector2.ZERO
-var _n_b := Vector2.ZERO
-## Set when the ball left the world this substep (pocketed or drained).
-var _gone := false
-# Per-radius limits, cached while consecutive balls share a radius.
-var _max_travel := 0.0
-var _ring_lim := 0.0
-var _ring_lim2 := 0.0
-
-
-## Takes this step's state and constants and clears the lane's buffers. Called on the
-## world's thread before the lanes run; `may_sleep` is false just after a wake-up.
-func begin(
-	b: BallStore,
-	g: StaticGeometry,
-	t: PhysicsTuning,
-	gravity: Vector2,
-	friction: Vector2,
-	dt: float,
-	may_sleep: bool
-) -> void:
-	_take_balls(b)
-	_take_geometry(g)
-	_gravity = gravity
-	_friction_dt = friction.max(Vector2.ZERO) * dt
-	_has_friction = _friction_dt != Vector2.ZERO
-	_dt = dt
-	_max_speed = t.max_speed
-	_pin_e = t.restitution
-	_wall_e = t.wall_restitution
-	_keep_tangent = t.tangent_friction
-	_threshold = t.bounce_threshold
-	_rest_speed2 = t.rest_speed * t.rest_speed
-	_sleep_time = t.sleep_time if may_sleep else 0.0
-	_settled_push = t.rest_speed * dt
-	_gutter_slide_time = t.gutter_slide_time
-	_tracing = b.tracing
-	_r = -1.0
-	events.resize(0)
-	event_speed.resize(0)
-	trace_ball.resize(0)
-	trace_pos.resize(0)
-
-
-func _take_balls(b: BallStore) -> void:
-	_pos = b.pos
-	_vel = b.vel
-	_rad = b.radius
-	_push = b.push
-	_ids = b.ids
-	_alive = b.alive
-	_asleep = b.asleep
-	_rest = b.rest
-	_contact_a = b.contact_a
-	_contact_b = b.contact_b
-	_support_a = b.support_static
-	_support_b = b.support_static2
-	_support_ball = b.support_ball
-	_sleep_ball_normal = b.sleep_ball_normal
-	_gutter_hits = b.gutter_hits
-	_gutter_time = b.gutter_time
-	_goal_mask = b.goal_mask
-	_zone_mask = b.zone_mask
-	_cell_keys = b.cell_keys
-
-
-func _take_geometry(g: StaticGeometry) -> void:
-	_g = g
-	_zoned = g.zoned
-	_pin_start = g.pin_start
-	_pin_items = g.pin_items if g.zoned else g.all_pins
-	_pin_item_pos = g.pin_item_pos if g.zoned else g.pin_pos
-	_pin_item_rad = g.pin_item_radius if g.zoned else g.pin_radius
-	_pin_special = g.pin_special
-	_pin_pocket = g.pin_pocket
-	_pin_min_speed_x = g.pin_min_speed_x
-	_wall_start = g.wall_start
-	_wall_items = g.wall_items
-	_wall_item_a = g.wall_item_a
-	_wall_item_ab = g.wall_item_ab
-	_wall_item_inv = g.wall_item_inv
-	_wall_item_rad = g.wall_item_radius
-	_wall_ab = g.wall_ab
-	_wall_inv_len2 = g.wall_inv_len2
-	_has_walls = not g.wall_a.is_empty()
-	_has_ring = g.has_ring
-	_ring_center = g.ring_center
-	_has_gutter = g.has_gutter
-	_has_sensors = not (g.hole_pos.is_empty() and g.goal_pos.is_empty() and g.zone_pos.is_empty())
-	_origin = g.origin
-	_inv_cell = g.inv_cell
-	_cols = g.cols
-	_last_cell = Vector2i(g.cols - 1, g.rows - 1)
 
 
 ## Moves the awake balls in slots from..to.
@@ -237,12 +57,19 @@ func _move_ball(i: int) -> void:
 	_cur_b = ContactId.NONE
 	_n_a = Vector2.ZERO
 	_n_b = Vector2.ZERO
-	if _has_friction:
-		# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
-		_v -= _v.clamp(-_friction_dt, _friction_dt)
-	var speed2: float = _v.length_squared()
-	if speed2 > _max_speed * _max_speed:
-		_v *= _max_speed / sqrt(speed2)
+	if _friction_against_gravity or _cap_per_axis:
+		if _friction_against_gravity:
+			_v = SpeedRules.friction_against_gravity(_v, _gravity * _dt, _friction_dt)
+		elif _has_friction:
+			_v -= _v.clamp(-_friction_dt, _friction_dt)
+		_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+	else:
+		if _has_friction:
+			# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
+			_v -= _v.clamp(-_friction_dt, _friction_dt)
+		var speed2: float = _v.length_squared()
+		if speed2 > _max_speed * _max_speed:
+			_v *= _max_speed / sqrt(speed2)
 	if _rad[i] != _r:
 		_set_radius(_rad[i])
 	# Substeps: each moves at most the safe travel (velocity plus the ball-ball push, the
@@ -331,7 +158,7 @@ func _set_radius(r: float) -> void:
 
 
 ## Narrow phase, ring: the ball's centre stays within ring radius - r of the centre.
-## Called only when it is past that. In the gutter arc a bounce counts toward draining,
+## Called only when it is past that. On the drain arc a bounce counts toward draining,
 ## and so does time spent rolling there.
 func _touch_ring() -> void:
 	var d: Vector2 = _p - _ring_center
@@ -339,23 +166,23 @@ func _touch_ring() -> void:
 	var nrm: Vector2 = -d / dist
 	_p = _ring_center + d * (_ring_lim / dist)
 	var bounced: bool = respond(ContactId.RING, _ring_center, d, nrm, _ring_lim, Surface.RING, 0)
-	if not _has_gutter or not _g.in_gutter(d):
+	if not _has_drain_arc or not _g.in_drain_arc(d):
 		return
 	if bounced:
-		_gutter_hits[_i] += 1
-	_gutter_time[_i] += _h
-	if _gutter_hits[_i] >= _g.gutter_bounces or _gutter_time[_i] >= _gutter_slide_time:
+		_drain_hits[_i] += 1
+	_drain_time[_i] += _h
+	if _drain_hits[_i] >= _g.drain_bounces or _drain_time[_i] >= _drain_slide_time:
 		_queue(BallEvents.Kind.DRAINED, 0, 0.0)
 		_gone = true
 
 
 ## Narrow phase, pins: the ball overlaps pin list entry `k` (offset `d` from its centre,
-## contact distance `lim`). A special pin pockets the ball; after touching any other, the
+## contact distance `lim`). A capturing pin removes the ball; after touching any other, the
 ## ball keeps the pin's minimum horizontal speed.
 func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 	var pin: int = _pin_items[k]
-	if _pin_special[pin] != 0:
-		_queue(BallEvents.Kind.POCKETED, _pin_pocket[pin], 0.0)
+	if _pin_captures[pin] != 0:
+		_queue(BallEvents.Kind.CAPTURED, _pin_tag[pin], 0.0)
 		_gone = true
 		return
 	var d2: float = d.length_squared()
@@ -434,6 +261,8 @@ func respond(
 	var vn: float = _v.dot(nrm)
 	if vn >= 0.0:
 		return false  # already leaving: no bounce, and it presses on nothing
+	if surface == Surface.WALL_CAP and _caps_glance:
+		return _glance(id, nrm, vn, index)
 	var inside: bool = surface == Surface.RING
 	var side: float = -1.0 if inside else 1.0
 	var bounced := false
@@ -464,24 +293,36 @@ func respond(
 	return bounced
 
 
+## A wall cap under CapContact.GLANCE: the ball keeps only its speed along the cap's
+## tangent (no bounce, and no turning to follow the curve), so it stops dead head-on and
+## otherwise leaves the cap along the tangent. A new contact faster than the bounce
+## threshold still queues a hit. Returns true on such a hit.
+func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
+	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
+	var hit: bool = not held and -vn > _threshold
+	if hit:
+		_queue(BallEvents.Kind.WALL_HIT, index, -vn)
+	_v -= nrm * vn
+	if _cur_a == ContactId.NONE or _cur_a == id:
+		_cur_a = id
+		_n_a = nrm
+	else:
+		_cur_b = id
+		_n_b = nrm
+	return hit
+
+
 ## Rest time and sleep of a ball that just moved slower than the rest speed.
 func _rest_or_sleep(i: int) -> void:
 	var rested: float = _rest[i] + _dt
 	_rest[i] = rested
 	if _sleep_time <= 0.0 or rested < _sleep_time:
 		return
-	# A ball still being pushed apart is settling; one lying in the gutter must still drain.
+	# A ball still being pushed apart is settling; one lying on the drain arc must still drain.
 	var push: Vector2 = _push[i]
-	if push.length() >= _settled_push or _gutter_time[i] != 0.0 or _gutter_hits[i] != 0:
+	if push.length() >= _settled_push or _drain_time[i] != 0.0 or _drain_hits[i] != 0:
 		return
 	var on_ball: Vector2 = _support_ball[i]
 	_asleep[i] = BallStore.SLEEP_HELD if on_ball == Vector2.ZERO else BallStore.SLEEP_ON_BALLS
 	_sleep_ball_normal[i] = on_ball
 	_vel[i] = Vector2.ZERO
-
-
-func _queue(kind: int, index: int, speed: float) -> void:
-	events.append(kind)
-	events.append(_ids[_i])
-	events.append(index)
-	event_speed.append(speed)

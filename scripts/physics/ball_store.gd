@@ -20,9 +20,9 @@ var ids := PackedInt32Array()
 var alive := PackedByteArray()
 ## Seconds the ball's speed has stayed under the tuning's rest speed.
 var rest := PackedFloat32Array()
-## Gutter bounces so far, and seconds of sliding gutter contact.
-var gutter_hits := PackedInt32Array()
-var gutter_time := PackedFloat32Array()
+## Bounces on the drain arc so far, and seconds of rolling on it.
+var drain_hits := PackedInt32Array()
+var drain_time := PackedFloat32Array()
 ## Bit g set while the ball's centre is inside goal g (zones likewise).
 var goal_mask := PackedInt32Array()
 var zone_mask := PackedInt32Array()
@@ -80,8 +80,8 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	ids.append(id)
 	alive.append(1)
 	rest.append(0.0)
-	gutter_hits.append(0)
-	gutter_time.append(0.0)
+	drain_hits.append(0)
+	drain_time.append(0.0)
 	goal_mask.append(0)
 	zone_mask.append(0)
 	contact_a.append(ContactId.NONE)
@@ -130,8 +130,8 @@ func own_buffers() -> void:
 	support_static[0] = support_static[0]
 	support_static2[0] = support_static2[0]
 	sleep_ball_normal[0] = sleep_ball_normal[0]
-	gutter_hits[0] = gutter_hits[0]
-	gutter_time[0] = gutter_time[0]
+	drain_hits[0] = drain_hits[0]
+	drain_time[0] = drain_time[0]
 	goal_mask[0] = goal_mask[0]
 	zone_mask[0] = zone_mask[0]
 	cell_keys[0] = cell_keys[0]
@@ -161,8 +161,8 @@ func compact() -> void:
 			ids[w] = ids[i]
 			alive[w] = 1
 			rest[w] = rest[i]
-			gutter_hits[w] = gutter_hits[i]
-			gutter_time[w] = gutter_time[i]
+			drain_hits[w] = drain_hits[i]
+			drain_time[w] = drain_time[i]
 			goal_mask[w] = goal_mask[i]
 			zone_mask[w] = zone_mask[i]
 			contact_a[w] = contact_a[i]
@@ -179,8 +179,8 @@ func compact() -> void:
 	ids.resize(w)
 	alive.resize(w)
 	rest.resize(w)
-	gutter_hits.resize(w)
-	gutter_time.resize(w)
+	drain_hits.resize(w)
+	drain_time.resize(w)
 	goal_mask.resize(w)
 	zone_mask.resize(w)
 	contact_a.resize(w)

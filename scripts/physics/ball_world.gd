@@ -8,7 +8,7 @@ extends RefCounted
 ## Add the static shapes, call build_grid() (adding later rebuilds lazily), spawn balls,
 ## then call advance(delta) every frame (or step(dt) directly). Events come out as signals
 ## at the end of each step, in the order they happened within it; balls removed by an event
-## (pocketed, drained, fell in a hole) are already gone when the signal arrives.
+## (captured by a pin, drained, fell in a hole) are already gone when the signal arrives.
 ##
 ## A step runs as stages (see step()); the per-ball ones run on `threads` worker threads,
 ## and any thread count gives bit-identical results. The engine knows shapes, materials and
@@ -24,10 +24,10 @@ signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 ## A ball bounced off the ring border.
 @warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ring_hit(ball_id: int, impact_speed: float)
-## A ball touched a special pin (a pocket's bottom pin); it has been removed.
+## A ball touched a capturing pin (its tag in pocket_id); it has been removed.
 @warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_pocketed(ball_id: int, pocket_id: int)
-## A ball used up its gutter bounces (or rolled in the gutter); it has been removed.
+## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
 @warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_drained(ball_id: int)
 ## A ball's centre came within a hole's radius; it has been removed.
@@ -47,20 +47,17 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
+const MotionStage := preload("res://scripts/physics/motion_stage.gd")
 const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
 ## hitch slows the game down instead of freezing it.
 const MAX_STEPS_PER_ADVANCE := 8
-## Goals and zones are tracked per ball in one int bit mask each.
-const MAX_SENSORS := 31
+## Goals and zones are tracked per ball in one int bit mask each: at most this many of each.
+const MAX_SENSORS := StaticGeometry.MAX_SENSORS
 ## Balls smaller than this still get a grid sized for it (px).
 const MIN_GRID_BALL_RADIUS := 5.0
-const SENSOR_HOLE := 0
-const SENSOR_GOAL := 1
-const SENSOR_ZONE := 2
 
 ## The constants in use (restitution, caps, fixed_hz, ...).
 var tuning: PhysicsTuning
@@ -75,6 +72,9 @@ var use_zoning := true:
 	set(value):
 		use_zoning = value
 		_geo.dirty = true
+## False lets balls pass through each other (no ball-ball contacts): each ball then moves
+## as if alone, so one world can run many independent shots at once (the play analysis).
+var ball_contacts := true
 ## Worker threads the per-ball stages may use (default: every core; 1 = this thread only).
 ## Any value gives the same, bit-identical results; only the speed changes.
 var threads: int = OS.get_processor_count():
@@ -86,8 +86,7 @@ var _balls := BallStore.new()
 var _geo := StaticGeometry.new()
 var _lanes := BallLanes.new()
 var _pairs := BallPairs.new()
-## One motion stage worker per lane.
-var _movers: Array[BallMover] = []
+var _motion := MotionStage.new(_balls, _geo, _lanes)
 ## This step's events (see BallEvents), gathered from the lanes in lane order.
 var _events := PackedInt32Array()
 var _event_speed := PackedFloat32Array()
@@ -101,53 +100,36 @@ var _woken_at_step := 0
 
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
-	tuning = p_tuning if p_tuning != null else PhysicsTuning.pachinko_defaults()
+	tuning = p_tuning if p_tuning != null else PhysicsTuning.new()
 	_lanes.threads = threads
 	gravity = tuning.gravity
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
 
 
-## Adds a pin (a fixed circle); `pocket` tags it with a pocket id, `special` makes a ball
-## that touches it pocketed. `min_speed_x` is the pin's material: after touching it, a ball
-## keeps at least this horizontal speed in px/s (the Flash chapter's 0.5 px/tick, so no
-## ball balances on a pin top); 0 leaves the ball alone. Returns the pin index, or -1 with
-## an error on bad input.
-func add_pin(
-	pos: Vector2, radius: float, pocket := -1, special := false, min_speed_x := 0.0
-) -> int:
-	if not pos.is_finite() or not is_finite(radius) or radius < 0.0:
-		var problem: String = "BallWorld.add_pin: needs a finite position and radius >= 0 (got %s, %s)"
-		push_error(problem % [pos, radius])
-		return -1
-	if not is_finite(min_speed_x) or min_speed_x < 0.0:
-		var problem: String = "BallWorld.add_pin: min_speed_x must be finite and >= 0 (got %s)"
-		push_error(problem % min_speed_x)
-		return -1
-	_geo.pin_pos.append(pos)
-	_geo.pin_radius.append(radius)
-	_geo.pin_pocket.append(pocket)
-	_geo.pin_special.append(1 if special else 0)
-	_geo.pin_min_speed_x.append(min_speed_x)
-	_geo.dirty = true
-	return _geo.pin_pos.size() - 1
+## Adds a pin (a fixed circle). `tag` is the owner's number for it (-1: none); a pin that
+## `captures` removes a ball that touches it and reports ball_pocketed(ball, tag).
+## `min_speed_x` is the pin's material: after touching it, a ball keeps at least this
+## horizontal speed in px/s (the Flash chapter's 0.5 px/tick, so no ball balances on a pin
+## top); 0 leaves the ball alone. Returns the pin index, or -1 with an error on bad input.
+func add_pin(pos: Vector2, radius: float, tag := -1, captures := false, min_speed_x := 0.0) -> int:
+	return _geo.add_pin(pos, radius, tag, captures, min_speed_x)
 
 
 ## Adds a capsule wall: the segment a-b grown by `radius`, with round caps. Returns its
 ## index, or -1 on bad input. A zero-length wall is a round post.
 func add_wall(a: Vector2, b: Vector2, radius: float) -> int:
-	if not a.is_finite() or not b.is_finite() or not is_finite(radius) or radius < 0.0:
-		var problem: String = "BallWorld.add_wall: needs finite ends and radius >= 0 (got %s, %s, %s)"
-		push_error(problem % [a, b, radius])
-		return -1
-	var ab: Vector2 = b - a
-	var len2: float = ab.length_squared()
-	_geo.wall_a.append(a)
-	_geo.wall_b.append(b)
-	_geo.wall_ab.append(ab)
-	_geo.wall_inv_len2.append(1.0 / len2 if len2 > 1e-12 else 0.0)
-	_geo.wall_radius.append(radius)
-	_geo.dirty = true
-	return _geo.wall_a.size() - 1
+	return _geo.add_wall(a, b, radius)
+
+
+## Switches wall `index` on or off (a gate that opens and closes). The grid is rebuilt on
+## the next step, which also wakes every sleeper, so a ball resting on a gate falls.
+func set_wall_enabled(index: int, enabled: bool) -> void:
+	_geo.set_wall_enabled(index, enabled)
+
+
+## False while wall `index` is switched off (see set_wall_enabled).
+func is_wall_enabled(index: int) -> bool:
+	return index >= 0 and index < _geo.wall_a.size() and _geo.wall_off[index] == 0
 
 
 ## Sets the ring border: balls stay inside the circle.
@@ -162,34 +144,41 @@ func set_ring(center: Vector2, radius: float) -> void:
 	_geo.dirty = true
 
 
-## Marks the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) as the
-## gutter: a ball is drained after `bounces` bounces there, or after rolling there for
-## tuning.gutter_slide_time seconds.
-func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
-	if not is_finite(from_deg) or not is_finite(to_deg) or bounces < 1:
-		var problem: String = "BallWorld.set_gutter: needs finite angles and bounces >= 1"
-		problem += " (got %s, %s, %d)"
-		push_error(problem % [from_deg, to_deg, bounces])
+## Makes the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) drain:
+## a ball there is removed (ball_drained) after `bounces` bounces on it, or after rolling on
+## it for `slide_time` seconds.
+func set_drain_arc(from_deg: float, to_deg: float, bounces: int, slide_time: float) -> void:
+	var finite: bool = is_finite(from_deg) and is_finite(to_deg) and is_finite(slide_time)
+	if not finite or bounces < 1 or slide_time < 0.0:
+		var problem: String = "BallWorld.set_drain_arc: needs finite angles, bounces >= 1 and"
+		problem += " slide_time >= 0 (got %s, %s, %d, %s)"
+		push_error(problem % [from_deg, to_deg, bounces, slide_time])
 		return
-	_geo.has_gutter = true
-	_geo.gutter_from = from_deg
-	_geo.gutter_to = to_deg
-	_geo.gutter_bounces = bounces
+	_geo.has_drain_arc = true
+	_geo.drain_from = from_deg
+	_geo.drain_to = to_deg
+	_geo.drain_bounces = bounces
+	_geo.drain_slide_time = slide_time
+
+
+## Deprecated name of set_drain_arc(), with tuning.gutter_slide_time as the slide time.
+func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
+	set_drain_arc(from_deg, to_deg, bounces, tuning.gutter_slide_time)
 
 
 ## Adds a hole: a ball whose centre comes within `radius` falls in. Returns its index.
 func add_hole(center: Vector2, radius: float) -> int:
-	return _add_sensor(SENSOR_HOLE, center, radius)
+	return _geo.add_sensor(StaticGeometry.SENSOR_HOLE, center, radius)
 
 
 ## Adds a goal: entering and leaving it are reported, the ball stays. Returns its index.
 func add_goal(center: Vector2, radius: float) -> int:
-	return _add_sensor(SENSOR_GOAL, center, radius)
+	return _geo.add_sensor(StaticGeometry.SENSOR_GOAL, center, radius)
 
 
 ## Adds a generic sensor zone: entering it is reported. Returns its index.
 func add_zone(center: Vector2, radius: float) -> int:
-	return _add_sensor(SENSOR_ZONE, center, radius)
+	return _geo.add_sensor(StaticGeometry.SENSOR_ZONE, center, radius)
 
 
 ## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
@@ -347,14 +336,20 @@ func step(dt: float) -> void:
 	_last_gravity = gravity
 	_last_friction = rolling_friction
 	_integrate(dt)
-	_pairs.find_pairs(_balls, _geo, _lanes)
+	if ball_contacts:
+		_pairs.find_pairs(_balls, _geo, _lanes)
+	else:
+		_pairs.lane_pairs.clear()
 	var t: PhysicsTuning = tuning
 	_pairs.solve(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
 	if _balls.woken:
 		_balls.woken = false
 		_woken_at_step = step_count
 	BallSleep.settle(_balls, gravity, rolling_friction, dt, turned)
-	_move_balls(dt, (step_count - _woken_at_step) * dt >= t.sleep_time)
+	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
+	_motion.run(tuning, gravity, rolling_friction, dt, may_sleep)
+	_events.append_array(_motion.events)
+	_event_speed.append_array(_motion.event_speed)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
@@ -381,31 +376,6 @@ func advance(delta: float) -> int:
 ## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.
 func state_hash() -> int:
 	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
-
-
-func _add_sensor(kind: int, center: Vector2, radius: float) -> int:
-	var what: String = ["add_hole", "add_goal", "add_zone"][kind]
-	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
-		var problem: String = "BallWorld.%s: needs a finite centre and radius > 0 (got %s, %s)"
-		push_error(problem % [what, center, radius])
-		return -1
-	if kind == SENSOR_HOLE:
-		_geo.hole_pos.append(center)
-		_geo.hole_radius.append(radius)
-		return _geo.hole_pos.size() - 1
-	if kind == SENSOR_GOAL:
-		if _geo.goal_pos.size() >= MAX_SENSORS:
-			push_error("BallWorld.add_goal: at most %d goals per world" % MAX_SENSORS)
-			return -1
-		_geo.goal_pos.append(center)
-		_geo.goal_radius.append(radius)
-		return _geo.goal_pos.size() - 1
-	if _geo.zone_pos.size() >= MAX_SENSORS:
-		push_error("BallWorld.add_zone: at most %d zones per world" % MAX_SENSORS)
-		return -1
-	_geo.zone_pos.append(center)
-	_geo.zone_radius.append(radius)
-	return _geo.zone_pos.size() - 1
 
 
 func _emit_events() -> void:
@@ -439,28 +409,3 @@ func _inputs_ok(dt: float) -> bool:
 ## the motion stage, as each ball is read.
 func _integrate(dt: float) -> void:
 	_balls.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gravity * dt) * _balls.vel
-
-
-## Motion stage over every awake ball, one mover per lane; their events and path points
-## are gathered in lane order, which is ball order.
-func _move_balls(dt: float, may_sleep: bool) -> void:
-	var n: int = _balls.ids.size()
-	var lanes: int = _lanes.lanes_for(n)
-	while _movers.size() < lanes:
-		_movers.append(BallMover.new())
-	if lanes > 1:
-		_balls.own_buffers()
-	for lane: int in lanes:
-		_movers[lane].begin(_balls, _geo, tuning, gravity, rolling_friction, dt, may_sleep)
-	_lanes.run(_move_lane, n)
-	for lane: int in lanes:
-		var mover: BallMover = _movers[lane]
-		_events.append_array(mover.events)
-		_event_speed.append_array(mover.event_speed)
-		if _balls.tracing:
-			_balls.trace_ball.append_array(mover.trace_ball)
-			_balls.trace_pos.append_array(mover.trace_pos)
-
-
-func _move_lane(lane: int, from: int, to: int) -> void:
-	_movers[lane].move_range(from, to)

@@ -1,14 +1,18 @@
 class_name PhysicsTuning
 extends Resource
-## Per-board physics constants in pixels and seconds, converted from the two seeds.
-##
-## The Flash pachinko chapter counts in 30 ms ticks, the tilt maze in ~16 ms frames:
-## a constant of k px/tick becomes k / 0.03 px/s, and k px/tick² becomes k / 0.03² px/s².
+## Per-board physics constants and material options, in pixels and seconds. The games'
+## presets (converted from the two seeds) are in TuningPresets; these field defaults are the
+## pachinko preset's.
+
+## What max_speed limits (see speed_cap).
+enum SpeedCap { TOTAL, PER_AXIS }
+## What rolling friction pushes against (see friction_against).
+enum FrictionAgainst { VELOCITY, GRAVITY }
+## How a ball answers a wall cap (see wall_cap_contact).
+enum CapContact { ROLL_ROUND, GLANCE }
 
 ## Flash chapter: one tick is 30 ms.
 const FLASH_TICK := 0.03
-## Tilt maze tutorial: one animation frame is ~16 ms.
-const MAZE_FRAME := 0.016
 
 ## Gravity in px/s². The maze rules overwrite the world's copy every frame from the tilt.
 @export var gravity: Vector2 = Vector2(0.0, 0.7 / (FLASH_TICK * FLASH_TICK))
@@ -32,6 +36,18 @@ const MAZE_FRAME := 0.016
 ## balances on a pin top (Flash: 0.5 px/tick). A pin material: BoardWorldFactory gives it
 ## to each pin it adds; the world itself does not read it.
 @export var min_horizontal_speed: float = 0.5 / FLASH_TICK
+## What max_speed caps: the speed (TOTAL) or each axis on its own (PER_AXIS, as the tilt
+## maze seed does: a diagonal then rolls up to √2 times faster than a straight run).
+@export var speed_cap: SpeedCap = SpeedCap.TOTAL
+## What rolling friction opposes, per axis: the ball's velocity (VELOCITY), or the downhill
+## direction of gravity (GRAVITY, as the tilt maze seed does: it only lowers the downhill
+## pull, to zero at most; an axis with no gravity slows as with VELOCITY).
+@export var friction_against: FrictionAgainst = FrictionAgainst.VELOCITY
+## How a ball answers a wall's round cap: like any round surface (ROLL_ROUND: bounces with
+## wall_restitution, then rolls round the curve), or GLANCE, as the tilt maze seed's
+## rollAroundCap: only the speed along the cap's tangent is kept, so a head-on hit stops
+## dead and a glancing one goes on along the tangent, leaving the cap.
+@export var wall_cap_contact: CapContact = CapContact.ROLL_ROUND
 ## Fixed simulation steps per second.
 @export var fixed_hz: float = 120.0
 ## Normal approach speed (px/s) below which a new contact does not bounce: resting balls
@@ -49,42 +65,12 @@ const MAZE_FRAME := 0.016
 @export var gutter_slide_time: float = 0.5
 
 
-## The Flash pachinko chapter's constants: gravity 0.7 px/tick², bounce 0.6, min horizontal
-## speed 0.5 px/tick. Flash capped speed at 10 px/tick (333 px/s); our launch rail makes the
-## ball ride the inside of the ring up and over, which needs sqrt(5·g·R) at the bottom
-## (about 1,400 px/s for a 500 px ring), so the cap here is 1,600 px/s.
+## Deprecated: the game presets live in TuningPresets (scripts/world); kept one round so
+## branches written against it still run.
 static func pachinko_defaults() -> PhysicsTuning:
-	var t := PhysicsTuning.new()
-	t.gravity = Vector2(0.0, 0.7 / (FLASH_TICK * FLASH_TICK))
-	t.restitution = 0.6
-	t.wall_restitution = 0.6
-	t.ball_restitution = 0.6
-	t.tangent_friction = 0.6
-	t.rolling_friction = 0.0
-	t.tilt_gravity = 0.0
-	t.max_speed = 1600.0
-	t.min_horizontal_speed = 0.5 / FLASH_TICK
-	t.fixed_hz = 120.0
-	t.bounce_threshold = 30.0
-	t.rest_speed = 8.0
-	return t
+	return TuningPresets.pachinko()
 
 
-## The tilt maze's constants: g = 2 px/frame² (7,812.5 px/s² at 90°), friction μ = 0.01
-## (so μ·g = 78.125 px/s²), max speed 1.5 px/frame (93.75 px/s), walls keep 1/3 of the
-## normal speed, no tangential loss. Gravity starts at zero: the tilt sets it.
+## Deprecated: see TuningPresets.maze().
 static func maze_defaults() -> PhysicsTuning:
-	var t := PhysicsTuning.new()
-	t.tilt_gravity = 2.0 / (MAZE_FRAME * MAZE_FRAME)
-	t.gravity = Vector2.ZERO
-	t.restitution = 1.0 / 3.0
-	t.wall_restitution = 1.0 / 3.0
-	t.ball_restitution = 1.0 / 3.0
-	t.tangent_friction = 1.0
-	t.rolling_friction = 0.01 * t.tilt_gravity
-	t.max_speed = 1.5 / MAZE_FRAME
-	t.min_horizontal_speed = 0.0
-	t.fixed_hz = 120.0
-	t.bounce_threshold = 10.0
-	t.rest_speed = 2.0
-	return t
+	return TuningPresets.maze()

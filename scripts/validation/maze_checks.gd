@@ -107,7 +107,7 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Wall %d has an end that is not a number." % w,
+				"Wall %d has an end that is not a number." % ItemIds.of(level, "walls", w),
 				Vector2.ZERO,
 				"not_finite"
 			)
@@ -115,7 +115,10 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Wall %d at (%.0f, %.0f) has zero length." % [w, a.x, a.y],
+				(
+					"Wall %d at (%.0f, %.0f) has zero length."
+					% [ItemIds.of(level, "walls", w), a.x, a.y]
+				),
 				a,
 				"wall_zero_length"
 			)
@@ -123,7 +126,7 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Wall %d runs off the board." % w,
+				"Wall %d runs off the board." % ItemIds.of(level, "walls", w),
 				a if not area.has_point(a) else b,
 				"wall_outside"
 			)
@@ -131,18 +134,26 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 
 static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	var area := _board_rect(level)
+	_check_goal_fits(level, area, issues)
 	var reach := level.wall_width * 0.5 + level.ball_radius
 	for i in level.ball_starts.size():
 		var s := level.ball_starts[i]
 		if not s.is_finite():
 			BoardIssue.add_to(
-				issues, ERROR, "Ball start %d is not a number." % i, Vector2.ZERO, "not_finite"
+				issues,
+				ERROR,
+				"Ball start %d is not a number." % ItemIds.of(level, "ball_starts", i),
+				Vector2.ZERO,
+				"not_finite"
 			)
 		elif not area.grow(-level.ball_radius).has_point(s):
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Ball start %d at (%.0f, %.0f) is off the board." % [i, s.x, s.y],
+				(
+					"Ball start %d at (%.0f, %.0f) is off the board."
+					% [ItemIds.of(level, "ball_starts", i), s.x, s.y]
+				),
 				s,
 				"start_outside"
 			)
@@ -150,7 +161,10 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Ball start %d at (%.0f, %.0f) is inside a wall." % [i, s.x, s.y],
+				(
+					"Ball start %d at (%.0f, %.0f) is inside a wall."
+					% [ItemIds.of(level, "ball_starts", i), s.x, s.y]
+				),
 				s,
 				"start_in_wall"
 			)
@@ -158,31 +172,49 @@ static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Ball start %d is in a black hole: hard mode would be lost at once." % i,
+				(
+					"Ball start %d is in a black hole: hard mode would be lost at once."
+					% ItemIds.of(level, "ball_starts", i)
+				),
 				s,
 				"start_in_hole"
 			)
 		elif s.distance_to(level.goal_center) < level.goal_radius:
 			BoardIssue.add_to(
-				issues, WARNING, "Ball start %d is already in the goal." % i, s, "start_in_goal"
+				issues,
+				WARNING,
+				"Ball start %d is already in the goal." % ItemIds.of(level, "ball_starts", i),
+				s,
+				"start_in_goal"
 			)
 		for j in i:
 			if s.distance_to(level.ball_starts[j]) < level.ball_radius * 2.0:
 				var text := "Ball starts %d and %d overlap: the balls would spawn inside each other."
-				BoardIssue.add_to(issues, ERROR, text % [j, i], s, "starts_overlap")
+				var ids := [
+					ItemIds.of(level, "ball_starts", j), ItemIds.of(level, "ball_starts", i)
+				]
+				var both := BoardIssue.around(
+					s, level.ball_radius, level.ball_starts[j], level.ball_radius
+				)
+				BoardIssue.add_covering(issues, ERROR, text % ids, s, "starts_overlap", both)
 	for h in level.holes.size():
 		var p := level.holes[h]
 		if not p.is_finite() or not area.has_point(p):
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Black hole %d is not on the board." % h,
+				"Black hole %d is not on the board." % ItemIds.of(level, "holes", h),
 				Vector2.ZERO if not p.is_finite() else p,
 				"bad_hole"
 			)
 		elif p.distance_to(level.goal_center) < level.goal_radius + level.hole_radius:
-			BoardIssue.add_to(
-				issues, WARNING, "Black hole %d overlaps the goal." % h, p, "hole_in_goal"
+			BoardIssue.add_covering(
+				issues,
+				WARNING,
+				"Black hole %d overlaps the goal." % ItemIds.of(level, "holes", h),
+				p,
+				"hole_in_goal",
+				BoardIssue.around(p, level.hole_radius, level.goal_center, level.goal_radius)
 			)
 
 
@@ -190,25 +222,59 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 	var fill := MazeFlood.new(level, false)
 	for i in level.ball_starts.size():
 		if not fill.reaches_goal(level.ball_starts[i]):
-			BoardIssue.add_to(
+			BoardIssue.add_covering(
 				issues,
 				ERROR,
-				"Ball start %d cannot roll to the goal: walls close it in." % i,
+				(
+					"Ball start %d cannot roll to the goal: walls close it in."
+					% ItemIds.of(level, "ball_starts", i)
+				),
 				level.ball_starts[i],
-				"start_cannot_reach_goal"
+				"start_cannot_reach_goal",
+				BoardIssue.around(
+					level.ball_starts[i], level.ball_radius, level.goal_center, level.goal_radius
+				)
 			)
 	if level.holes.is_empty():
 		return
 	var hard := MazeFlood.new(level, true, fill.free)
 	for i in level.ball_starts.size():
 		if fill.reaches_goal(level.ball_starts[i]) and not hard.reaches_goal(level.ball_starts[i]):
-			BoardIssue.add_to(
+			BoardIssue.add_covering(
 				issues,
 				WARNING,
-				"In hard mode, black holes cut ball start %d off from the goal." % i,
+				(
+					"In hard mode, black holes cut ball start %d off from the goal."
+					% ItemIds.of(level, "ball_starts", i)
+				),
 				level.ball_starts[i],
-				"holes_block_goal"
+				"holes_block_goal",
+				BoardIssue.around(
+					level.ball_starts[i], level.ball_radius, level.goal_center, level.goal_radius
+				)
 			)
+
+
+# The centre is on the board (checked above), but the ring can still hang over the edge:
+# then part of the goal is unreachable and it is drawn off the board.
+static func _check_goal_fits(level: BoardLevel, area: Rect2, issues: Array[BoardIssue]) -> void:
+	var c := level.goal_center
+	if area.grow(-level.goal_radius).has_point(c):
+		return
+	(
+		BoardIssue
+		. add_covering(
+			issues,
+			WARNING,
+			(
+				"The goal at (%.1f, %.1f) with radius %.1f hangs off the board; move it inwards or shrink it."
+				% [c.x, c.y, level.goal_radius]
+			),
+			c,
+			"goal_off_board",
+			BoardIssue.around(c, level.goal_radius, c, level.goal_radius)
+		)
+	)
 
 
 static func _board_rect(level: BoardLevel) -> Rect2:

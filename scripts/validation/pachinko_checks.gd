@@ -16,6 +16,7 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	PinChecks.check_pins(level, issues)
 	_check_pockets(level, issues)
 	PinChecks.check_pin_pairs(level, issues)
+	BonusChecks.check(level, issues)
 
 
 # Ring, pin radius, array lengths and pocket specs: what every later check relies on.
@@ -48,12 +49,13 @@ static func _check_ring(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 		or c.x + r > level.size.x + 0.5
 		or c.y + r > level.size.y + 0.5
 	):
-		BoardIssue.add_to(
+		BoardIssue.add_covering(
 			issues,
 			WARNING,
 			"The ring pokes out of the board's %s area." % level.size,
 			c,
-			"ring_outside_board"
+			"ring_outside_board",
+			BoardIssue.around(c, r, c, r)
 		)
 	return true
 
@@ -97,7 +99,13 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 	for i in level.pockets.size():
 		var spec: PocketSpec = level.pockets[i]
 		if spec == null:
-			BoardIssue.add_to(issues, ERROR, "Pocket %d is empty." % i, c, "bad_pocket")
+			BoardIssue.add_to(
+				issues,
+				ERROR,
+				"Pocket %d is empty." % ItemIds.of(level, "pockets", i),
+				c,
+				"bad_pocket"
+			)
 			ok = false
 		elif (
 			not spec.position.is_finite()
@@ -109,7 +117,10 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pocket %d needs a finite position and a positive width and depth." % i,
+				(
+					"Pocket %d needs a finite position and a positive width and depth."
+					% ItemIds.of(level, "pockets", i)
+				),
 				c,
 				"bad_pocket"
 			)
@@ -118,7 +129,10 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pocket %d pays %d balls; a payout cannot be negative." % [i, spec.payout],
+				(
+					"Pocket %d pays %d balls; a payout cannot be negative."
+					% [ItemIds.of(level, "pockets", i), spec.payout]
+				),
 				spec.position,
 				"bad_pocket"
 			)
@@ -126,7 +140,10 @@ static func _check_pocket_specs(level: BoardLevel, issues: Array[BoardIssue]) ->
 			BoardIssue.add_to(
 				issues,
 				WARNING,
-				"Pocket %d is shallower than half its width; its rim cannot be stamped." % i,
+				(
+					"Pocket %d is shallower than half its width; its rim cannot be stamped."
+					% ItemIds.of(level, "pockets", i)
+				),
 				spec.position,
 				"pocket_shallow"
 			)
@@ -226,7 +243,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 		var owner := level.pin_pocket[i]
 		if owner >= 0 and owner < specials.size() and level.pin_special[i] != 0:
 			specials[owner] += 1
-	if level.pockets.is_empty():
+	if level.pockets.is_empty() and level.bonus_pockets.is_empty():
 		BoardIssue.add_to(
 			issues,
 			WARNING,
@@ -241,7 +258,10 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pocket %d has no special pin, so it can never pay." % k,
+				(
+					"Pocket %d has no special pin, so it can never pay."
+					% ItemIds.of(level, "pockets", k)
+				),
 				spec.position,
 				"pocket_without_special"
 			)
@@ -252,7 +272,7 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 				WARNING,
 				(
 					"Pocket %d's mouth is %.1f px wide; a ball (%.0f px) cannot enter."
-					% [k, clear_mouth, level.ball_radius * 2.0]
+					% [ItemIds.of(level, "pockets", k), clear_mouth, level.ball_radius * 2.0]
 				),
 				spec.position,
 				"pocket_unreachable"
@@ -261,7 +281,10 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 			BoardIssue.add_to(
 				issues,
 				WARNING,
-				"Pocket %d's mouth is outside the field; no ball can enter it." % k,
+				(
+					"Pocket %d's mouth is outside the field; no ball can enter it."
+					% ItemIds.of(level, "pockets", k)
+				),
 				spec.position,
 				"pocket_unreachable"
 			)
@@ -271,7 +294,10 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 				BoardIssue.add_to(
 					issues,
 					WARNING,
-					"Pin %d blocks the mouth of pocket %d; no ball can enter." % [blocker, k],
+					(
+						"Pin %d blocks the mouth of pocket %d; no ball can enter."
+						% [ItemIds.of(level, "pins", blocker), ItemIds.of(level, "pockets", k)]
+					),
 					level.pins[blocker],
 					"pocket_unreachable"
 				)

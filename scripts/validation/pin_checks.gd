@@ -23,7 +23,11 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 		var p := level.pins[i]
 		if not p.is_finite():
 			BoardIssue.add_to(
-				issues, ERROR, "Pin %d has a position that is not a number." % i, c, "not_finite"
+				issues,
+				ERROR,
+				"Pin %d has a position that is not a number." % ItemIds.of(level, "pins", i),
+				c,
+				"not_finite"
 			)
 			continue
 		_check_pin_owner(level, i, issues)
@@ -32,7 +36,10 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pin %d at (%.0f, %.0f) is outside the ring." % [i, p.x, p.y],
+				(
+					"Pin %d at (%.0f, %.0f) is outside the ring."
+					% [ItemIds.of(level, "pins", i), p.x, p.y]
+				),
 				p,
 				"pin_outside_ring"
 			)
@@ -42,7 +49,10 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pin %d at (%.0f, %.0f) sits in the launch rail." % [i, p.x, p.y],
+				(
+					"Pin %d at (%.0f, %.0f) sits in the launch rail."
+					% [ItemIds.of(level, "pins", i), p.x, p.y]
+				),
 				p,
 				"pin_in_rail"
 			)
@@ -60,7 +70,10 @@ static func _check_pin_owner(level: BoardLevel, i: int, issues: Array[BoardIssue
 		BoardIssue.add_to(
 			issues,
 			ERROR,
-			"Pin %d belongs to pocket %d, which does not exist." % [i, owner],
+			(
+				"Pin %d belongs to pocket %d, which does not exist."
+				% [ItemIds.of(level, "pins", i), owner]
+			),
 			level.pins[i],
 			"bad_pin_pocket"
 		)
@@ -68,7 +81,7 @@ static func _check_pin_owner(level: BoardLevel, i: int, issues: Array[BoardIssue
 		BoardIssue.add_to(
 			issues,
 			ERROR,
-			"Pin %d is a special pin but belongs to no pocket." % i,
+			"Pin %d is a special pin but belongs to no pocket." % ItemIds.of(level, "pins", i),
 			level.pins[i],
 			"special_without_pocket"
 		)
@@ -90,7 +103,7 @@ static func _check_pin_gaps(
 				WARNING,
 				(
 					"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
-					% [i, maxf(deflector_gap, 0.0), diameter]
+					% [ItemIds.of(level, "pins", i), maxf(deflector_gap, 0.0), diameter]
 				),
 				p,
 				"narrow_gap_rail"
@@ -105,7 +118,7 @@ static func _check_pin_gaps(
 			WARNING,
 			(
 				"Pin %d leaves a %.1f px gap to %s; a ball (%.0f px) would stick there."
-				% [i, maxf(edge_gap, 0.0), what, diameter]
+				% [ItemIds.of(level, "pins", i), maxf(edge_gap, 0.0), what, diameter]
 			),
 			p,
 			code
@@ -155,23 +168,37 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 						continue
 					var mid := (p + pins[j]) * 0.5
 					if d2 < touch2:
-						BoardIssue.add_to(
-							issues, WARNING, "Pins %d and %d overlap." % [i, j], mid, "pin_overlap"
+						BoardIssue.add_covering(
+							issues,
+							WARNING,
+							(
+								"Pins %d and %d overlap."
+								% [ItemIds.of(level, "pins", i), ItemIds.of(level, "pins", j)]
+							),
+							mid,
+							"pin_overlap",
+							BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
 						)
 					elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
 						# Rim pins of one pocket are meant to be closer than a ball.
 						var gap := sqrt(d2) - touch
 						(
 							BoardIssue
-							. add_to(
+							. add_covering(
 								issues,
 								WARNING,
 								(
 									"Pins %d and %d leave a %.1f px gap; a ball (%.0f px) would stick in it."
-									% [i, j, gap, reach - touch]
+									% [
+										ItemIds.of(level, "pins", i),
+										ItemIds.of(level, "pins", j),
+										gap,
+										reach - touch
+									]
 								),
 								mid,
-								"narrow_gap"
+								"narrow_gap",
+								BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
 							)
 						)
 

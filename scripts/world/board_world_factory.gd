@@ -2,9 +2,10 @@ class_name BoardWorldFactory
 extends RefCounted
 ## Builds the physics world for a board: the one place that turns level data into shapes.
 ##
-## Pachinko: ring, gutter, pins (with pocket ids and special flags), the launch rail's guide
-## arc, its stopper and the deflector past its end as capsules (in that order), and the
-## rail's return zone as zone 0.
+## Pachinko: ring, gutter, pins (with pocket ids and special flags), the bonus pockets' pins
+## and then their lids and wings (the first walls, see BonusGeometry), the launch rail's
+## guide arc, its stopper and the deflector past its end as capsules (in that order), and
+## the rail's return zone as zone 0.
 ## Maze: the level's walls (same indices as in the level), then four invisible edge walls
 ## that keep balls on the board, the goal (goal 0) and, in hard mode only, the black holes.
 
@@ -23,22 +24,29 @@ static func build(level: BoardLevel, hard_mode: bool = false) -> BallWorld:
 	return world
 
 
-## The level's tuning, or the physics defaults for its kind when it has none.
+## The level's tuning, or its game's preset (TuningPresets) when it has none.
 static func tuning_for(level: BoardLevel) -> PhysicsTuning:
 	if level.tuning != null:
 		return level.tuning
-	return PhysicsTuning.maze_defaults() if level.is_maze() else PhysicsTuning.pachinko_defaults()
+	return TuningPresets.for_kind(level.is_maze())
 
 
 static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.set_ring(level.ring_center, level.ring_radius)
-	world.set_gutter(level.gutter_start_deg, level.gutter_end_deg, maxi(level.gutter_bounces, 1))
+	var slide_time := maxf(world.tuning.gutter_slide_time, 0.0)
+	var bounces := maxi(level.gutter_bounces, 1)
+	# The gutter: the drain arc of the ring.
+	world.set_drain_arc(level.gutter_start_deg, level.gutter_end_deg, bounces, slide_time)
 	var count := mini(level.pins.size(), mini(level.pin_pocket.size(), level.pin_special.size()))
 	# The pins' material: the board's minimum horizontal speed after a touch.
 	var min_speed_x := maxf(world.tuning.min_horizontal_speed, 0.0)
 	for i in count:
 		var special := level.pin_special[i] != 0
 		world.add_pin(level.pins[i], level.pin_radius, level.pin_pocket[i], special, min_speed_x)
+	# The bonus pockets: their cups after the level's pins, their lids and wings as the
+	# first walls (BonusGeometry's contract with BonusMachine).
+	BonusGeometry.add_pins(world, level, min_speed_x)
+	BonusGeometry.add_walls(world, level)
 	var guide := LaunchRail.guide_points(level)
 	for i in guide.size() - 1:
 		world.add_wall(guide[i], guide[i + 1], LaunchRail.GUIDE_WALL_RADIUS)

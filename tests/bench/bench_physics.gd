@@ -185,9 +185,9 @@ func _on_process_frame() -> void:
 	Engine.max_physics_steps_per_frame = 32
 	_side = GodotSide.new()
 	var maze: bool = spec[1] == "maze"
-	var g := PhysicsTuning.pachinko_defaults().gravity
+	var g := TuningPresets.pachinko().gravity
 	if maze:
-		g = MazeTilt.gravity(Scenes.maze_tilt(0.0), PhysicsTuning.maze_defaults().tilt_gravity)
+		g = MazeTilt.gravity(Scenes.maze_tilt(0.0), TuningPresets.maze().tilt_gravity)
 	_side.build(scene, g, 1.0 / 3.0 if maze else 0.6, spec[1] == "fast")
 	_check = SweptCheck.new(scene) if job[2] else null
 	_prev = scene["pos"]

@@ -84,6 +84,12 @@ func _run() -> void:
 	_expect(written, "saving the scene did not write the board")
 	if OS.get_environment("BOARD_EDITOR_SELF_CHECK_PLAY") == "1":
 		await _check_play_test(level)
+	if not fresh:
+		await _check_problems_survive_reselect(root as BoardNode)
+		session = _plugin.call("get_session")
+		_check_input_stays_in_the_tool(session)
+		await _check_drag_everything(session, history)
+		_check_node_outside_the_tree(root as BoardNode)
 	if fresh:
 		for step in 3:  # the drag, the added wall, then the new board itself
 			history.undo()
@@ -100,13 +106,15 @@ func _check_play_test(level: BoardLevel) -> void:
 	_plugin.call("_play_test")
 	await _frames(30)
 	var named: String = PlaytestRequest.read(PlaytestRequest.PATH)["board"]
-	_expect(EditorInterface.is_playing_scene() or named == copy, "play-test did not start")
+	var said: String = (_plugin.get("_dock") as Node).get("_status").text
+	_expect(EditorInterface.is_playing_scene() or named == copy, "play-test did not start: " + said)
 	var playing := EditorInterface.get_playing_scene()
 	print("board editor self-check: play-test scene '%s', request '%s'" % [playing, named])
 	EditorInterface.stop_playing_scene()
 	# Never leave a request or a board copy behind for the next real game.
 	DirAccess.remove_absolute(PlaytestRequest.PATH)
 	DirAccess.remove_absolute(copy)
+	DirAccess.remove_absolute(copy + ".uid")
 	level.take_over_path(scratch_path)
 
 
@@ -139,6 +147,141 @@ func _check_drag(session: Session, history: UndoRedo) -> void:
 	_expect(_position(session.level) == start, "undo did not take the whole drag back")
 	history.redo()
 	_expect(_position(session.level) == moved, "redo did not repeat the drag")
+
+
+# Select the board, select nothing, select it again: the dock, the markers and the node's
+# warnings show the same problems each time (they once came back as "No problems found").
+func _check_problems_survive_reselect(root: BoardNode) -> void:
+	var session: Session = _plugin.call("get_session")
+	if BoardValidator.validate(session.level).is_empty():
+		# A pin (or start) on top of another: a warning to keep.
+		var data := Items.empty_set()
+		var twin := (
+			session.level.ball_starts[0] if session.level.is_maze() else session.level.pins[0]
+		)
+		data["starts" if session.level.is_maze() else "pins"] = PackedVector2Array([twin])
+		session.commit(AddItemsAction.new(session.level, data, "Self-check overlap"))
+		await _frames(2)
+	var before: int = (_plugin.call("get_issues") as Array).size()
+	_expect(before > 0, "the board shows no problems to keep")
+	var warnings := root._get_configuration_warnings().size()
+	EditorInterface.get_selection().clear()
+	EditorInterface.edit_node(null)
+	await _frames(5)
+	EditorInterface.get_selection().add_node(root)
+	EditorInterface.edit_node(root)
+	await _frames(5)
+	var after: int = (_plugin.call("get_issues") as Array).size()
+	print("board editor self-check: %d problems before, %d after selecting again" % [before, after])
+	_expect(
+		after == before, "selecting the board again lost its problems (%d -> %d)" % [before, after]
+	)
+	_expect(
+		root._get_configuration_warnings().size() == warnings,
+		"selecting the board again emptied the node's warnings"
+	)
+
+
+# Keys, right-clicks, arrows with nothing selected and drags on empty board go through the
+# plugin exactly as the viewport sends them; each must be the board tool's, not Godot's.
+func _check_input_stays_in_the_tool(session: Session) -> void:
+	session.select([])
+	var corner := _screen_point(session.level.size - Vector2(3, 3))
+	var events: Array[InputEvent] = []
+	for code: Key in [KEY_W, KEY_E, KEY_R, KEY_V, KEY_LEFT]:
+		var key := InputEventKey.new()
+		key.keycode = code
+		key.pressed = true
+		events.append(key)
+	for button: MouseButton in [MOUSE_BUTTON_RIGHT, MOUSE_BUTTON_LEFT]:
+		var press := InputEventMouseButton.new()
+		press.button_index = button
+		press.pressed = true
+		press.position = corner
+		var drag := InputEventMouseMotion.new()
+		drag.position = corner - Vector2(30, 30)
+		drag.button_mask = MOUSE_BUTTON_MASK_LEFT if button == MOUSE_BUTTON_LEFT else 0
+		var release := press.duplicate() as InputEventMouseButton
+		release.pressed = false
+		events.append_array([press, drag, release])
+	var position := (_plugin.get("_node") as Node2D).position
+	for event in events:
+		var used: bool = _plugin.call("_forward_canvas_gui_input", event)
+		var drag_only := (
+			event is InputEventMouseMotion and (event as InputEventMouseMotion).button_mask == 0
+		)
+		_expect(used or drag_only, "the board tool let %s through to Godot" % event.as_text())
+	_expect((_plugin.get("_node") as Node2D).position == position, "the board node moved")
+
+
+# Drags every pin and pocket of the board through the plugin with the overlay drawn each
+# step; the shell script fails on any error the editor prints meanwhile.
+func _check_drag_everything(session: Session, history: UndoRedo) -> void:
+	var level := session.level
+	var everything: Array[Vector2i] = []
+	var kinds := {Items.Kind.PIN: level.pins.size(), Items.Kind.POCKET: level.pockets.size()}
+	if level.is_maze():
+		kinds = {
+			Items.Kind.WALL: Items.wall_count(level.walls), Items.Kind.HOLE: level.holes.size()
+		}
+	for kind: int in kinds:
+		for i in int(kinds[kind]):
+			everything.append(Items.make(kind, i))
+	session.set_tool(Session.Tool.SELECT)
+	session.select(everything)
+	var grab := Items.position_of(level, everything[0])
+	var before := Items.position_of(level, everything[0])
+	var steps := 12
+	for i in steps + 2:
+		var event: InputEvent
+		if i == 0 or i == steps + 1:
+			var button := InputEventMouseButton.new()
+			button.button_index = MOUSE_BUTTON_LEFT
+			button.pressed = i == 0
+			event = button
+		else:
+			var motion := InputEventMouseMotion.new()
+			motion.button_mask = MOUSE_BUTTON_MASK_LEFT
+			event = motion
+		var offset := Vector2(2, 1) * float(mini(i, steps))
+		(event as InputEventMouse).position = _screen_point(grab + offset)
+		_plugin.call("_forward_canvas_gui_input", event)
+		await _frames(1)
+	print(
+		(
+			"board editor self-check: dragged %d items, the first from %s to %s"
+			% [everything.size(), before, Items.position_of(level, everything[0])]
+		)
+	)
+	_expect(Items.position_of(level, everything[0]) != before, "dragging everything moved nothing")
+	_expect(
+		history.get_current_action_name().begins_with("Move"), "dragging everything is not one step"
+	)
+	history.undo()
+	_expect(Items.position_of(level, everything[0]) == before, "undo did not put everything back")
+	session.select([])
+
+
+# Ctrl+N and closing a scene take the edited node out of the tree while the plugin still
+# draws and gets input: both must quietly do nothing (no "!is_inside_tree()" errors).
+func _check_node_outside_the_tree(root: BoardNode) -> void:
+	var loose := BoardNode.new()
+	loose.level = root.level
+	_plugin.call("_edit", loose)
+	var overlay := Control.new()
+	_plugin.call("_forward_canvas_draw_over_viewport", overlay)
+	var key := InputEventKey.new()
+	key.keycode = KEY_P
+	key.pressed = true
+	_plugin.call("_forward_canvas_gui_input", key)
+	_plugin.call("_edit", root)
+	overlay.free()
+	loose.free()
+
+
+func _screen_point(board_point: Vector2) -> Vector2:
+	var node := _plugin.get("_node") as Node2D
+	return node.get_viewport_transform() * node.get_global_transform() * board_point
 
 
 func _position(level: BoardLevel) -> Vector2:

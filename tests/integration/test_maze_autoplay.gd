@@ -32,7 +32,8 @@ func test_the_same_seed_gives_the_same_result() -> void:
 	var a := MazeAutoplay.run(_level(), 15.0, 3)
 	var b := MazeAutoplay.run(_level(), 15.0, 3)
 	assert_eq(JSON.stringify(a), JSON.stringify(b))
-	assert_eq(int(a["frames_simulated"]), 1800, "15 s at 120 steps a second")
+	var steps_per_second := _level().tuning.fixed_hz
+	assert_eq(int(a["frames_simulated"]), roundi(15.0 * steps_per_second), "15 s of fixed steps")
 	var c := MazeAutoplay.run(_level(), 15.0, 4)
 	assert_ne(a["state_hash"], c["state_hash"], "another seed plays differently")
 
@@ -41,14 +42,15 @@ func test_hard_mode_autoplay_keeps_balls_out_of_holes() -> void:
 	var result := MazeAutoplay.run(_level(), 10.0, 2, true)
 	assert_true(result["hard_mode"])
 	assert_true(result.has("balls_lost_in_holes"))
-	assert_eq(int(result["balls_lost_in_holes"]), 0, "no ball lost in the first 10 s")
-	assert_eq(int(result["frames_simulated"]), 1200, "no ball fell, so the game ran on")
+	assert_eq(int(result["balls_lost_in_holes"]), 0, "the hole guard keeps every ball out")
+	var all_steps := roundi(10.0 * _level().tuning.fixed_hz)
+	assert_eq(int(result["frames_simulated"]), all_steps, "no ball fell, so the game ran on")
 
 
 func test_hole_guard_checks_a_new_wish_at_once() -> void:
 	# A ball resting just beside the hole at (297.5, 52.5): tilting left is safe and passes;
 	# the next step a new plan wants right, into the hole, before the next timed check.
-	var guard := MazeHoleGuard.new(_level(), 1.0 / 120.0)
+	var guard := MazeHoleGuard.new(_level(), 1.0 / _level().tuning.fixed_hz)
 	var at := PackedVector2Array([Vector2(290.9, 59.75)])
 	var still := PackedVector2Array([Vector2.ZERO])
 	assert_eq(guard.filter(Vector2(-9.7, 0.0), at, still), Vector2(-9.7, 0.0), "safe: passes")

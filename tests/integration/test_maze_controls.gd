@@ -72,3 +72,30 @@ func test_a_broken_reading_never_gives_a_broken_tilt() -> void:
 	var tilt := TiltInput.tilt_from_accelerometer(Vector3(INF, NAN, 0.0), FLAT, 1.0)
 	assert_true(tilt.is_finite())
 	assert_eq(TiltInput.clamp_tilt(Vector2(NAN, INF)), Vector2(0.0, 0.0))
+
+
+# Bug 4: after the joystick moved by even a pixel, Calibrate could not give control back to
+# the accelerometer until a reset.
+func test_calibrate_hands_control_back_from_the_joystick_to_the_accelerometer() -> void:
+	var mixer := TiltMixer.new()
+	var held := Vector3(0.0, 2.0, -9.6)
+	mixer.update(1.0 / 60.0, Vector2.ZERO, held)
+	assert_eq(mixer.source, TiltMixer.Source.ACCELEROMETER)
+	mixer.joystick_moved(Vector2(1.0, 0.0))
+	mixer.update(1.0 / 60.0, Vector2.ZERO, held)
+	assert_eq(mixer.source, TiltMixer.Source.JOYSTICK, "the joystick took over")
+	mixer.calibrate()
+	assert_eq(mixer.source, TiltMixer.Source.ACCELEROMETER, "Calibrate gives it back")
+	var tipped_right := held + Vector3(2.0, 0.0, 0.0)
+	for i in 120:
+		mixer.update(1.0 / 60.0, Vector2.ZERO, tipped_right)
+	assert_gt(mixer.tilt.x, 5.0, "the phone tilts the board again")
+
+
+func test_calibrate_from_keys_also_hands_control_back() -> void:
+	var mixer := TiltMixer.new()
+	var held := Vector3(0.0, 0.0, -9.8)
+	mixer.update(1.0 / 60.0, Vector2(1.0, 0.0), held)
+	assert_eq(mixer.source, TiltMixer.Source.KEYS)
+	mixer.calibrate()
+	assert_eq(mixer.source, TiltMixer.Source.ACCELEROMETER)

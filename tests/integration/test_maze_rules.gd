@@ -139,7 +139,7 @@ func _one_wall_board() -> BoardLevel:
 	level.ball_starts = PackedVector2Array([Vector2(150.0, 90.0)])
 	level.goal_center = Vector2(250.0, 250.0)
 	level.goal_radius = 20.0
-	level.tuning = PhysicsTuning.maze_defaults()
+	level.tuning = TuningPresets.maze()
 	return level
 
 

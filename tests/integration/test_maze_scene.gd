@@ -1,7 +1,8 @@
 extends GutTest
-## The maze screen headless: the board is a SubViewport texture on a quad that tilts in 3D,
-## the joystick starts and tilts, keys tilt smoothly, Space / H / E reset and switch, and a
-## win shows the seed's message and saves the best time.
+## The maze screen headless: the board is built in 3D from the level (raised walls, frame,
+## holes in hard mode, rolling balls, a fixed sun), no tilt sinks it through the table, the
+## joystick starts and tilts, keys tilt smoothly, Space / R / Back / H / E reset and switch,
+## and a win shows the seed's message and saves the best time.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const TEST_SETTINGS := "user://test_maze_settings.cfg"
@@ -12,10 +13,16 @@ var _game: Control
 
 func before_all() -> void:
 	App.load_player_files(TEST_SETTINGS, TEST_SAVE)
+	ReplayStore.folder = "user://test_maze_scene_replays"
 
 
 func after_all() -> void:
 	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
+	ReplayStore.folder = ReplayStore.DIR
+	var replays := "user://test_maze_scene_replays"
+	for file_name in DirAccess.get_files_at(replays):
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(replays + "/" + file_name))
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(replays))
 	for path in [TEST_SETTINGS, TEST_SAVE]:
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
 
@@ -44,21 +51,96 @@ func _press(action: String) -> void:
 	_game.call("_unhandled_input", event)
 
 
-func test_the_board_is_a_viewport_texture_on_a_quad_seen_in_perspective() -> void:
+func _stage() -> Node3D:
+	return _game.get_node("Stage")
+
+
+func test_the_board_is_built_in_3d_from_the_level() -> void:
 	var rules := _rules()
 	assert_not_null(rules, "the classic board loaded")
-	var canvas: SubViewport = _game.get_node("BoardCanvas")
-	assert_eq(Vector2(canvas.size), rules.level.size * 3.0, "drawn at 3 texture px per board px")
-	var stage: Node3D = _game.get_node("Stage")
+	var stage := _stage()
 	var camera: Camera3D = stage.call("camera")
 	assert_eq(camera.projection, Camera3D.PROJECTION_PERSPECTIVE)
-	var quads := stage.find_children("*", "MeshInstance3D", true, false)
-	var textured := false
-	for node in quads:
-		var mat := (node as MeshInstance3D).material_override as StandardMaterial3D
-		if mat != null and mat.albedo_texture == canvas.get_texture():
-			textured = true
-	assert_true(textured, "a 3D quad shows the board's SubViewport")
+	var board: Node3D = stage.call("board")
+	var walls: MeshInstance3D = board.call("part", "walls")
+	assert_not_null(walls.mesh, "the walls are a mesh")
+	var wall_box := walls.mesh.get_aabb()
+	var height: float = board.call("wall_height_px")
+	assert_almost_eq(wall_box.end.z, height * 0.01, 0.0001, "walls stand up from the floor")
+	assert_almost_eq(wall_box.position.z, 0.0, 0.0001, "and start on it")
+	assert_gt(height, rules.level.ball_radius * 2.0, "higher than a ball")
+	# walls reach the level's outermost wall ends, caps included
+	var half_wall := rules.level.wall_width * 0.5
+	var x_min := INF
+	for p in rules.level.walls:
+		x_min = minf(x_min, p.x)
+	assert_almost_eq(
+		wall_box.position.x, (x_min - half_wall - rules.level.size.x * 0.5) * 0.01, 0.002
+	)
+	var frame: MeshInstance3D = board.call("part", "frame")
+	assert_gt(frame.mesh.get_aabb().end.z, wall_box.end.z, "the frame stands above the walls")
+	var floor_part: MeshInstance3D = board.call("part", "floor")
+	assert_true(floor_part.material_override is ShaderMaterial, "the floor paints goal and holes")
+	var holes: MeshInstance3D = board.call("part", "holes")
+	assert_null(holes.mesh, "easy mode: no holes")
+
+
+func test_hard_mode_sinks_the_holes_into_the_floor() -> void:
+	_press("maze_hard_mode")
+	var board: Node3D = _stage().call("board")
+	var holes: MeshInstance3D = board.call("part", "holes")
+	assert_not_null(holes.mesh, "hard mode: holes")
+	var box := holes.mesh.get_aabb()
+	assert_lt(box.position.z, -0.05, "the holes go down into the board")
+	var floor_mat: ShaderMaterial = (
+		(board.call("part", "floor") as MeshInstance3D).material_override
+	)
+	assert_eq(floor_mat.get_shader_parameter("hole_count"), _rules().level.holes.size())
+	_press("maze_easy_mode")
+	assert_null(holes.mesh, "back to easy: the holes close")
+	assert_eq(floor_mat.get_shader_parameter("hole_count"), 0)
+
+
+func test_balls_are_lit_spheres_that_roll_with_their_motion() -> void:
+	var rules := _rules()
+	_game.call("_process", 0.016)
+	var balls: Node3D = _stage().call("balls")
+	assert_eq(balls.call("shown_count"), rules.ball_total(), "one sphere per ball")
+	var id := rules.world.get_ids()[0]
+	var node: MeshInstance3D = balls.call("node_for", id)
+	assert_true(node.mesh is SphereMesh)
+	var mat := node.material_override as StandardMaterial3D
+	assert_ne(mat.shading_mode, BaseMaterial3D.SHADING_MODE_UNSHADED, "lit by the sun")
+	var before := node.basis
+	_game.call("_start")
+	rules.world.set_ball_position(id, rules.world.get_ball_position(id) + Vector2(4.0, 0.0))
+	_game.call("_process", 0.0)
+	assert_false(node.basis.is_equal_approx(before), "moving turned the ball")
+	var expected := rules.world.get_ball_position(id)
+	var local := Vector3(expected.x - 175.0, 157.5 - expected.y, rules.level.ball_radius) * 0.01
+	assert_almost_eq(node.position.distance_to(local), 0.0, 0.0001, "it sits on the floor")
+
+
+func test_the_sun_casts_shadows_and_stays_put_while_the_board_tilts() -> void:
+	var stage := _stage()
+	var sun: DirectionalLight3D = stage.call("sun")
+	assert_true(sun.shadow_enabled)
+	var before := sun.global_transform
+	stage.call("set_tilt", Vector2(12.0, -12.0))
+	assert_true(sun.global_transform.is_equal_approx(before), "the light is not on the board")
+	var walls: MeshInstance3D = (stage.call("board") as Node3D).call("part", "walls")
+	assert_ne(walls.cast_shadow, GeometryInstance3D.SHADOW_CASTING_SETTING_OFF)
+
+
+# Bug 1: at full diagonal tilt a corner of the board dropped through the table's shadow.
+func test_no_tilt_puts_a_corner_of_the_board_through_the_table() -> void:
+	var stage := _stage()
+	var table: float = stage.call("table_height")
+	for x in [-12.0, -6.0, 0.0, 6.0, 12.0]:
+		for y in [-12.0, -6.0, 0.0, 6.0, 12.0]:
+			stage.call("set_tilt", Vector2(x, y))
+			var lowest: float = stage.call("lowest_board_point")
+			assert_gt(lowest, table, "tilt (%s, %s): the board stays above the table" % [x, y])
 
 
 func test_the_joystick_starts_the_game_and_tilts_the_board() -> void:
@@ -113,6 +195,27 @@ func test_space_h_and_e_reset_and_switch_modes() -> void:
 	assert_string_contains(_note(), "Ready for hard mode? Press H")
 
 
+# Bug 3: the README promises R and the gamepad's Back restart both games.
+func test_r_and_the_gamepad_back_button_restart_the_maze() -> void:
+	var restarts: Array[InputEvent] = []
+	var key := InputEventKey.new()
+	key.physical_keycode = KEY_R
+	key.pressed = true
+	restarts.append(key)
+	var back := InputEventJoypadButton.new()
+	back.button_index = JOY_BUTTON_BACK
+	back.pressed = true
+	restarts.append(back)
+	for event in restarts:
+		_game.call("_start")
+		_rules().set_tilt(Vector2(12.0, 12.0))
+		_rules().advance(0.5)
+		assert_ne(_rules().ball_positions(), _rules().level.ball_starts, "the balls rolled")
+		_game.call("_unhandled_input", event)
+		assert_eq(_rules().state, MazeRules.State.READY, "%s restarts" % event.as_text())
+		assert_eq(_rules().ball_positions(), _rules().level.ball_starts)
+
+
 func test_a_win_shows_the_message_and_saves_the_best_time() -> void:
 	var rules := _rules()
 	_game.call("_start")
@@ -125,7 +228,7 @@ func test_a_win_shows_the_message_and_saves_the_best_time() -> void:
 	assert_eq(rules.state, MazeRules.State.WON)
 	assert_string_contains(_note(), "Congrats, you did it!")
 	assert_string_contains(_note(), "Press H for hard mode")
-	var best := App.best_maze_time(rules.level.board_id)
+	var best := App.best_maze_time(rules.level.board_id, false)
 	assert_almost_eq(best, rules.elapsed, 0.001, "the time is saved as the best")
 
 

@@ -13,7 +13,7 @@ func _small_board() -> BoardLevel:
 	level.display_name = "Small"
 	level.size = Vector2(520, 520)
 	level.ball_radius = 5.0
-	level.tuning = PhysicsTuning.pachinko_defaults()
+	level.tuning = TuningPresets.pachinko()
 	level.ring_center = Vector2(260, 260)
 	level.ring_radius = 240.0
 	level.rail_width = 20.0

@@ -59,13 +59,13 @@ func test_drawback_maps_to_power_and_flipper_rotation() -> void:
 	assert_true(rules.press_flipper(Vector2(40, 300)))
 	rules.drag_to(Vector2(40, 250))
 	assert_almost_eq(rules.power, 50.0, 0.001, "50 px up is half power")
-	assert_almost_eq(rules.flipper_degrees(), 10.0, 0.001)
+	assert_almost_eq(LaunchPower.flipper_degrees(rules.power), 10.0, 0.001)
 	rules.drag_to(Vector2(10, 120))
 	assert_eq(rules.power, 100.0, "power stops at 100")
-	assert_eq(rules.flipper_degrees(), 20.0, "the flipper stops at 20 degrees")
+	assert_eq(LaunchPower.flipper_degrees(rules.power), 20.0, "the flipper stops at 20 degrees")
 	rules.drag_to(Vector2(40, 380))
 	assert_eq(rules.power, 0.0, "dragging down gives no power")
-	assert_eq(rules.flipper_degrees(), 0.0)
+	assert_eq(LaunchPower.flipper_degrees(rules.power), 0.0)
 
 
 func test_release_without_drawback_fires_nothing() -> void:

@@ -80,19 +80,19 @@ func test_holding_the_charge_key_fires_on_release() -> void:
 	assert_eq(rules.power, 0.0)
 
 
-func test_a_gamepad_trigger_sets_the_power_and_fires_when_let_go() -> void:
+func test_the_left_stick_pulled_down_draws_back_and_fires_when_let_go() -> void:
 	var game := _game()
 	var rules := game.get("rules") as PachinkoRules
 	rules.start_game()
-	var trigger := InputEventJoypadMotion.new()
-	trigger.axis = JOY_AXIS_TRIGGER_RIGHT
-	trigger.axis_value = 1.0
-	game.call("_unhandled_input", trigger)
-	assert_true(rules.drawing, "pulling the trigger draws the flipper back")
+	var stick := InputEventJoypadMotion.new()
+	stick.axis = JOY_AXIS_LEFT_Y
+	stick.axis_value = 1.0
+	game.call("_unhandled_input", stick)
+	assert_true(rules.drawing, "pulling the stick down draws the flipper back")
 	assert_eq(rules.power, 100.0)
-	trigger.axis_value = 0.0
-	game.call("_unhandled_input", trigger)
-	assert_eq(rules.ledger.shots, 1, "letting the trigger go fired")
+	stick.axis_value = 0.0
+	game.call("_unhandled_input", stick)
+	assert_eq(rules.ledger.shots, 1, "letting the stick go fired")
 
 
 func test_a_broken_board_path_shows_the_problem() -> void:

@@ -71,7 +71,7 @@ class TestRoundTrip:
 				pin_lines += 1
 		assert_eq(pin_lines, level.pins.size() + level.pockets.size(), "a line per pin and pocket")
 		level.pins[0] = Vector2(397.0096, 12.3449)
-		assert_string_contains(Writer.write(level), '{"x": 397.01, "y": 12.34')
+		assert_string_contains(Writer.write(level), '"x": 397.01, "y": 12.34')
 
 	func test_adding_a_pin_is_a_one_line_diff() -> void:
 		var level := _shipped("res://levels/pachinko/classic")
@@ -84,7 +84,8 @@ class TestRoundTrip:
 		var added := Array(after)
 		for line in before:
 			added.erase(line)
-		assert_eq(added, ['{"pin": {"x": 100, "y": 100}}'], "the one new line")
+		var line := '{"pin": {"id": %d, "x": 100, "y": 100}}' % level.pins.size()
+		assert_eq(added, [line], "the one new line, with the pin's new id")
 
 	func test_a_numbers_text_never_shows_float_noise() -> void:
 		assert_eq(Writer.number(350.0), "350")
@@ -129,7 +130,7 @@ class TestHostile:
 		assert_string_contains(
 			_error_of(base.replace('"format_version": 1', '"format_version": 99')), "newer"
 		)
-		assert_string_contains(_error_of(base.replace('{"x": ', '{"script": 1, "x": ')), "script")
+		assert_string_contains(_error_of(base.replace('"x": ', '"script": 1, "x": ')), "script")
 		assert_string_contains(_error_of(base + '{"pin": {"x": 1, "y": 2}, "hole": 1}'), "alone")
 		assert_string_contains(_error_of(base + char(0)), "NUL")
 

@@ -58,7 +58,11 @@ func test_the_reasons_are_the_real_problems() -> void:
 func test_shipped_boards_all_pass_the_check() -> void:
 	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		var lines := CheckCli.check_folder(BoardLoader.LEVELS_DIR, kind)
-		assert_eq(lines.size(), BoardLoader.list_files(kind).size(), "one line per board file")
+		var folder := BoardLoader.LEVELS_DIR.path_join(BoardLevel.kind_name(kind))
+		var files := Array(DirAccess.get_files_at(folder)).filter(
+			func(file: String) -> bool: return file.ends_with(".board")
+		)
+		assert_eq(lines.size(), files.size(), "one line per shipped board")
 		assert_gte(lines.size(), 3)
 		for line in lines:
 			assert_true(line["ok"], str(line["error"]))

@@ -33,6 +33,14 @@ func test_maze_starts() -> void:
 	assert_has(_codes(level), "no_starts")
 
 
+func test_goal_hanging_off_the_board_is_a_warning() -> void:
+	var level := _maze()
+	level.goal_center = Vector2(level.size.x - 5.0, level.size.y * 0.5)
+	assert_has(_codes(level), "goal_off_board")
+	level = _maze()
+	assert_does_not_have(_codes(level), "goal_off_board")
+
+
 func test_start_that_cannot_reach_the_goal() -> void:
 	var level := _maze()
 	# Close the gap at the right end of the inner wall: the start's strip is sealed off.

@@ -101,6 +101,6 @@ func test_missing_tuning_uses_the_defaults_and_null_level_is_refused() -> void:
 	var level: BoardLevel = (load(CLASSIC) as BoardLevel).duplicate_level()
 	level.tuning = null
 	var world := BoardWorldFactory.build(level)
-	assert_almost_eq(world.gravity.y, PhysicsTuning.pachinko_defaults().gravity.y, 1e-3)
+	assert_almost_eq(world.gravity.y, TuningPresets.pachinko().gravity.y, 1e-3)
 	assert_null(BoardWorldFactory.build(null))
 	assert_push_error("no level")

@@ -21,7 +21,14 @@ class TestGoodArguments:
 		assert_eq(parsed.command, "--autoplay")
 		assert_eq(
 			parsed.values,
-			{"autoplay": "pachinko", "board": "classic", "seconds": 60.0, "seed": 7, "hard": true}
+			{
+				"autoplay": "pachinko",
+				"board": "classic",
+				"seconds": 60.0,
+				"seed": 7,
+				"hard": true,
+				"handle": -1
+			}
 		)
 		assert_typeof(parsed.values["seconds"], TYPE_FLOAT)
 		assert_typeof(parsed.values["seed"], TYPE_INT)
@@ -29,7 +36,10 @@ class TestGoodArguments:
 	func test_missing_options_take_the_table_defaults() -> void:
 		var parsed := CliParser.parse(PackedStringArray(["--autoplay=maze"]))
 		assert_eq(parsed.error, "")
-		assert_eq(parsed.values, {"autoplay": "maze", "board": "classic", "seed": 1, "hard": false})
+		assert_eq(
+			parsed.values,
+			{"autoplay": "maze", "board": "classic", "seed": 1, "hard": false, "handle": -1}
+		)
 
 	func test_no_arguments_means_the_normal_game() -> void:
 		var parsed := CliParser.parse(PackedStringArray())
@@ -48,7 +58,9 @@ class TestBadArguments:
 
 	# Each bad line, and a piece the error must contain to name what is wrong.
 	const CASES := [
-		[["--analyze=pachinko"], "unknown flag '--analyze'"],
+		[["--optimise=pachinko"], "unknown flag '--optimise'"],
+		[["--analyze=pinball"], "got 'pinball'"],
+		[["--analyze=pachinko", "--shots=many"], "--shots must be a whole number"],
 		[["--autoplay=maze", "--fast"], "unknown flag '--fast'"],
 		[["--autoplya=maze"], "did you mean --autoplay?"],
 		[["--autoplay=pinball"], "got 'pinball'"],
@@ -78,7 +90,7 @@ class TestBadArguments:
 		assert_false(CliParser.parse(PackedStringArray(["--zzz"])).error.contains("did you mean"))
 
 	func test_bad_flags_exit_2_without_running_anything() -> void:
-		var code := CommandLine.run(PackedStringArray(["--analyze=pachinko"]))
+		var code := CommandLine.run(PackedStringArray(["--optimise=pachinko"]))
 		assert_eq(code, CliFlags.EXIT_USAGE)
 		assert_eq(code, 2)
 

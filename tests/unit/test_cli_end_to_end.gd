@@ -8,7 +8,7 @@ const DEADLINE_MS := 60000
 
 func test_unknown_flag_exits_2_naming_it_instead_of_starting_the_game() -> void:
 	var project := ProjectSettings.globalize_path("res://")
-	var args := PackedStringArray(["--headless", "--path", project, "--", "--analyze=pachinko"])
+	var args := PackedStringArray(["--headless", "--path", project, "--", "--optimise=pachinko"])
 	var started := OS.execute_with_pipe(OS.get_executable_path(), args)
 	assert_false(started.is_empty(), "the game binary started")
 	if started.is_empty():
@@ -23,4 +23,4 @@ func test_unknown_flag_exits_2_naming_it_instead_of_starting_the_game() -> void:
 	assert_false(hung, "the start with an unknown flag never ended")
 	var errors := (started["stderr"] as FileAccess).get_as_text()
 	assert_eq(OS.get_process_exit_code(pid), 2, errors)
-	assert_string_contains(errors, "unknown flag '--analyze'")
+	assert_string_contains(errors, "unknown flag '--optimise'")

@@ -70,3 +70,30 @@ func test_save_all_writes_edits_to_the_board_file() -> void:
 	BoardFiles.save_all([level] as Array[BoardLevel])
 	var saved := ResourceLoader.load(SCRATCH, "", ResourceLoader.CACHE_MODE_IGNORE) as BoardLevel
 	assert_eq(saved.holes, PackedVector2Array([Vector2(52.5, 52.5)]))
+
+
+func test_save_as_names_the_file_after_the_board() -> void:
+	assert_eq(BoardFiles.file_id_for("  Tulip Garden 2! "), "tulip_garden_2")
+	assert_eq(BoardFiles.file_id_for("Été"), "t", "letters outside a-z are dropped")
+	var pachinko := BoardLevel.Kind.PACHINKO
+	assert_eq(BoardFiles.path_for(pachinko, "rain"), "res://levels/pachinko/rain.board")
+	assert_eq(BoardFiles.new_file_problem(pachinko, "fresh_board_x"), "")
+	assert_string_contains(BoardFiles.new_file_problem(pachinko, "classic"), "already exists")
+	assert_string_contains(BoardFiles.new_file_problem(pachinko, "../up"), "not allowed")
+	assert_string_contains(BoardFiles.new_file_problem(pachinko, ""), "name")
+
+
+func test_save_as_writes_the_named_board_file() -> void:
+	var level := NewBoard.make(BoardLevel.Kind.MAZE)
+	var path := BoardFiles.path_for(level.kind, "zz_save_as_test")
+	level.display_name = "Save-as test"
+	var said := BoardFiles.save_as_file(level, "zz_save_as_test")
+	assert_string_contains(said, path)
+	assert_eq(level.resource_path, path, "the board's home is the new file")
+	var loaded := BoardLoader.load_board(path)
+	assert_eq(loaded.error, "")
+	assert_eq(loaded.level.display_name if loaded.level != null else "", "Save-as test")
+	assert_string_contains(BoardFiles.save_as_file(level, "zz_save_as_test"), "already exists")
+	level.take_over_path("")
+	DirAccess.remove_absolute(path)
+	DirAccess.remove_absolute(path + ".uid")

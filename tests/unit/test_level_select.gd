@@ -5,6 +5,7 @@ extends GutTest
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
 const SaveDataScript := preload("res://scripts/app/save_data.gd")
 const SAVE := "user://test_level_select_save.cfg"
+const EMPTY_USER_ROOT := "user://test_level_select_no_boards"
 
 var _real_save: RefCounted = null
 
@@ -23,7 +24,10 @@ func after_each() -> void:
 func _open(kind: String) -> Control:
 	App.level_select_kind = kind
 	var screen := LevelSelectScene.instantiate() as Control
+	# a scratch My boards folder: the tests never see the player's own boards
+	screen.set("user_root", EMPTY_USER_ROOT)
 	add_child_autofree(screen)
+	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
 	return screen
 
 
@@ -40,7 +44,7 @@ func test_every_board_file_gets_a_card() -> void:
 		var expected := BoardLoader.list_boards(
 			BoardLevel.Kind.MAZE if kind == "maze" else BoardLevel.Kind.PACHINKO
 		)
-		var screen := _open(kind)
+		var screen: Control = await _open(kind)
 		var cards: Array = screen.call("cards")
 		assert_eq(cards.size(), expected.size(), kind)
 		var ok_paths := PackedStringArray()
@@ -56,7 +60,7 @@ func test_every_board_file_gets_a_card() -> void:
 
 
 func test_broken_board_is_listed_greyed_with_its_error() -> void:
-	var screen := _open("maze")
+	var screen: Control = await _open("maze")
 	var good := BoardLoader.list_boards(BoardLevel.Kind.MAZE)
 	var broken := BoardLoader.load_board("res://levels/maze/does_not_exist.board")
 	var results: Array[BoardLoadResult] = []
@@ -73,25 +77,19 @@ func test_broken_board_is_listed_greyed_with_its_error() -> void:
 	assert_true(last.disabled, "a broken board cannot start")
 	assert_eq(last.focus_mode, Control.FOCUS_ALL, "its reason is reachable by keyboard")
 	assert_string_contains(last.tooltip_text, "does not exist")
-	var texts := PackedStringArray()
-	for label in last.find_children("*", "Label", true, false):
-		texts.append((label as Label).text)
-	assert_string_contains(" ".join(texts), "does_not_exist.board")
+	assert_string_contains(" ".join(last.call("texts")), "does_not_exist.board")
 	assert_string_contains(str((screen.get_node("%SummaryLabel") as Label).text), "2 could not")
 
 
 func test_first_playable_card_takes_focus() -> void:
-	var screen := _open("pachinko")
+	var screen: Control = await _open("pachinko")
 	var first: Button = screen.call("first_card")
 	assert_not_null(first)
 	assert_true(first.has_focus())
 
 
 func _card_texts(screen: Control) -> PackedStringArray:
-	var texts := PackedStringArray()
-	for label in (screen.call("first_card") as Button).find_children("*", "Label", true, false):
-		texts.append((label as Label).text)
-	return texts
+	return (screen.call("first_card") as Button).call("texts")
 
 
 func test_best_results_are_shown_on_the_cards() -> void:
@@ -101,8 +99,8 @@ func test_best_results_are_shown_on_the_cards() -> void:
 	var pachinko_id := BoardLoader.list_boards(BoardLevel.Kind.PACHINKO)[0].level.board_id
 	var mazes := MazeProgress.sorted(BoardLoader.list_boards(BoardLevel.Kind.MAZE))
 	var maze_id := mazes[0].level.board_id
-	assert_has(_card_texts(_open("pachinko")), "Not played yet")
+	assert_has(_card_texts(await _open("pachinko")), "Not played yet")
 	App.record_pachinko_balls(pachinko_id, 23)
-	App.record_maze_time(maze_id, 101.34)
-	assert_has(_card_texts(_open("pachinko")), "Best: 23 balls won")
-	assert_has(_card_texts(_open("maze")), "Best time: 1:41.3", "the maze clock's m:ss.t")
+	App.record_maze_time(maze_id, false, 101.34)
+	assert_has(_card_texts(await _open("pachinko")), "Best: 23 balls won")
+	assert_has(_card_texts(await _open("maze")), "Best time: 1:41.3", "the maze clock's m:ss.t")

@@ -8,6 +8,7 @@ const LevelCard := preload("res://scenes/menu/level_card.gd")
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const SAVE := "user://test_maze_progress_save.cfg"
 const SETTINGS := "user://test_maze_progress_settings.cfg"
+const EMPTY_USER_ROOT := "user://test_maze_progress_no_boards"
 
 var _real_save: RefCounted = null
 
@@ -57,25 +58,45 @@ func test_unlock_all_setting_is_saved_and_read() -> void:
 
 
 func test_level_select_locks_and_medals() -> void:
-	var cards := _maze_cards()
+	var cards: Array[LevelCard] = await _maze_cards()
 	assert_false(cards[0].locked, "the first board is open")
 	assert_true(cards[1].locked and cards[1].disabled, "the second waits for the first")
 	assert_string_contains(cards[1].tooltip_text, cards[0].level.display_name)
 	var gold: float = cards[0].level.medal_times_easy[0]
 	_record(cards[0].level.board_id, gold - 0.5)
-	cards = _maze_cards()
+	cards = await _maze_cards()
 	assert_false(cards[1].locked, "finishing the first opens the second")
 	assert_true(cards[2].locked)
 	assert_eq(_badges(cards[0]).easy_medal, Medals.Medal.GOLD)
 	App.settings.unlock_all_boards = true
-	for card in _maze_cards():
+	for card in await _maze_cards():
 		assert_false(card.locked, "Unlock all opens %s" % card.board_path)
+
+
+func test_easy_and_hard_keep_their_own_medal_and_time() -> void:
+	var cards: Array[LevelCard] = await _maze_cards()
+	var first := cards[0]
+	var hard_gold: float = first.level.medal_times_hard[0]
+	var easy_bronze: float = first.level.medal_times_easy[2]
+	App.record_maze_time(first.level.board_id, true, hard_gold - 0.1)
+	App.record_maze_time(first.level.board_id, false, easy_bronze)
+	cards = await _maze_cards()
+	var badges := _badges(cards[0])
+	assert_eq(badges.hard_medal, Medals.Medal.GOLD, "a hard finish earns the hard medal")
+	assert_eq(badges.easy_medal, Medals.Medal.BRONZE, "the easy medal from the easy time")
+	var text := " ".join(cards[0].texts())
+	assert_string_contains(text, "Easy 0:")
+	assert_string_contains(text, " · Hard 0:")
+	assert_false(cards[1].locked, "a hard finish opens the next board too")
 
 
 func _maze_cards() -> Array[LevelCard]:
 	App.level_select_kind = "maze"
 	var screen := LevelSelectScene.instantiate() as Control
+	# a scratch My boards folder: the tests never see the player's own boards
+	screen.set("user_root", EMPTY_USER_ROOT)
 	add_child_autofree(screen)
+	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
 	var out: Array[LevelCard] = []
 	for card: Button in screen.call("cards"):
 		out.append(card as LevelCard)
@@ -89,11 +110,6 @@ func _badges(card: LevelCard) -> MedalBadges:
 	return null
 
 
-# Records an easy-mode finish with whichever save API this build has (per board, or per
-# board and mode).
+# Records an easy-mode finish.
 func _record(board_id: String, seconds: float) -> void:
-	var save: Object = App.save_data
-	if save.get_method_argument_count(&"record_maze_time") >= 3:
-		save.call(&"record_maze_time", board_id, false, seconds)
-	else:
-		save.call(&"record_maze_time", board_id, seconds)
+	App.record_maze_time(board_id, false, seconds)

@@ -4,7 +4,7 @@ extends GutTest
 
 
 func _free_world(e: float) -> BallWorld:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.gravity = Vector2.ZERO
 	t.ball_restitution = e
 	t.min_horizontal_speed = 0.0
@@ -76,7 +76,7 @@ func test_two_balls_on_one_point_separate_without_nan() -> void:
 
 
 func test_pile_in_the_ring_loses_energy_and_stays_inside() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	var w := BallWorld.new(t)
 	w.set_ring(Vector2(0, 0), 100.0)
 	var rng := RandomNumberGenerator.new()

@@ -3,7 +3,7 @@ extends GutTest
 
 
 func _world() -> BallWorld:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.gravity = Vector2.ZERO
 	t.max_speed = 10000.0
 	var w := BallWorld.new(t)

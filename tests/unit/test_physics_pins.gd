@@ -6,7 +6,7 @@ const DT := 1.0 / 2000.0
 
 
 func _world() -> BallWorld:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.gravity = Vector2.ZERO
 	var w := BallWorld.new(t)
 	return w
@@ -99,7 +99,7 @@ func test_special_pin_pockets_once_and_removes_the_ball() -> void:
 
 
 func test_fast_ball_does_not_tunnel_through_a_pin() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.gravity = Vector2.ZERO
 	t.max_speed = 5000.0
 	t.min_horizontal_speed = 0.0

@@ -23,7 +23,7 @@ func _energy(w: BallWorld) -> float:
 
 
 func test_ball_rides_the_ring_over_the_top_without_gaining_or_losing() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.min_horizontal_speed = 0.0
 	t.fixed_hz = 240.0
 	var w := _world(t)
@@ -51,7 +51,7 @@ func test_ball_rides_the_ring_over_the_top_without_gaining_or_losing() -> void:
 
 
 func test_weak_shot_rolls_back_down() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	var w := _world(t)
 	var lim := RING_R - BALL_R
 	var id := w.spawn_ball(CENTER + Vector2(0, lim), Vector2(600, 0), BALL_R)
@@ -64,7 +64,7 @@ func test_weak_shot_rolls_back_down() -> void:
 
 
 func test_gutter_drains_after_its_bounces_exactly_once() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	var w := _world(t)
 	w.set_gutter(45.0, 135.0, 3)
 	var drained: Array = []
@@ -80,7 +80,7 @@ func test_gutter_drains_after_its_bounces_exactly_once() -> void:
 
 
 func test_ball_resting_in_the_gutter_still_drains() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	var w := _world(t)
 	w.set_gutter(45.0, 135.0, 50)
 	var drained := [0]
@@ -92,7 +92,7 @@ func test_ball_resting_in_the_gutter_still_drains() -> void:
 
 
 func test_no_ball_leaves_the_ring_in_a_long_random_run() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.max_speed = 4000.0
 	var w := _world(t)
 	var rng := RandomNumberGenerator.new()
@@ -117,7 +117,7 @@ func test_no_ball_leaves_the_ring_in_a_long_random_run() -> void:
 
 
 func test_energy_never_grows_in_a_busy_board() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.min_horizontal_speed = 0.0
 	var w := _world(t)
 	for y: int in range(150, 850, 24):
@@ -138,3 +138,29 @@ func test_energy_never_grows_in_a_busy_board() -> void:
 			# Per-ball slack of 1 px²/s² for float error.
 			assert_lt(e, e_prev + w.ball_count() * 1.0, "energy at step %d" % s)
 			e_prev = e
+
+
+func test_a_drain_arc_drains_a_resting_ball_after_its_own_slide_time() -> void:
+	for slide_time: float in [0.25, 1.0]:
+		var w := _world(TuningPresets.pachinko())
+		w.set_drain_arc(45.0, 135.0, 50, slide_time)
+		var drained_at := [-1]
+		w.ball_drained.connect(func(_b: int) -> void: drained_at[0] = w.step_count)
+		w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)
+		for _i: int in 240:
+			w.step(1.0 / 120.0)
+		assert_gt(drained_at[0], 0, "drained (slide time %s)" % slide_time)
+		assert_lte(drained_at[0] / 120.0, slide_time + 0.1, "not later than its slide time")
+		assert_gte(drained_at[0] / 120.0, slide_time - 0.1, "not sooner")
+
+
+func test_a_drain_arc_with_bad_numbers_is_refused() -> void:
+	var w := _world(TuningPresets.pachinko())
+	w.set_drain_arc(45.0, NAN, 3, 0.5)
+	w.set_drain_arc(45.0, 135.0, 0, 0.5)
+	w.set_drain_arc(45.0, 135.0, 3, -1.0)
+	assert_push_error_count(3, "each bad call names its problem")
+	w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)
+	for _i: int in 120:
+		w.step(1.0 / 120.0)
+	assert_eq(w.ball_count(), 1, "no arc was set, so nothing drains")

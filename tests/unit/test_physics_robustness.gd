@@ -4,7 +4,7 @@ extends GutTest
 
 
 func _busy_world(seed_value: int) -> BallWorld:
-	var w := BallWorld.new(PhysicsTuning.pachinko_defaults())
+	var w := BallWorld.new(TuningPresets.pachinko())
 	w.set_ring(Vector2(0, 0), 200.0)
 	w.set_gutter(60.0, 120.0, 3)
 	w.add_wall(Vector2(-150, 50), Vector2(-20, 90), 3.0)
@@ -41,7 +41,7 @@ func test_different_inputs_differ() -> void:
 
 
 func test_advance_runs_whole_fixed_steps() -> void:
-	var w := BallWorld.new(PhysicsTuning.pachinko_defaults())
+	var w := BallWorld.new(TuningPresets.pachinko())
 	w.tuning.fixed_hz = 100.0
 	assert_eq(w.advance(0.025), 2)
 	assert_eq(w.advance(0.005), 1, "the remainder carried over")
@@ -50,7 +50,7 @@ func test_advance_runs_whole_fixed_steps() -> void:
 
 
 func test_ball_exactly_on_a_pin_centre_is_pushed_out() -> void:
-	var w := BallWorld.new(PhysicsTuning.pachinko_defaults())
+	var w := BallWorld.new(TuningPresets.pachinko())
 	w.add_pin(Vector2(10, 10), 1.5)
 	var id := w.spawn_ball(Vector2(10, 10), Vector2.ZERO, 5.0)
 	for _i: int in 30:
@@ -61,7 +61,7 @@ func test_ball_exactly_on_a_pin_centre_is_pushed_out() -> void:
 
 
 func test_ball_exactly_on_a_wall_segment_is_pushed_out() -> void:
-	var w := BallWorld.new(PhysicsTuning.maze_defaults())
+	var w := BallWorld.new(TuningPresets.maze())
 	w.add_wall(Vector2(0, 0), Vector2(100, 0), 5.0)
 	var id := w.spawn_ball(Vector2(50, 0), Vector2.ZERO, 5.0)
 	w.step(1.0 / 120.0)
@@ -71,7 +71,7 @@ func test_ball_exactly_on_a_wall_segment_is_pushed_out() -> void:
 
 
 func test_zero_length_wall_and_zero_radius_pin_are_fine() -> void:
-	var w := BallWorld.new(PhysicsTuning.maze_defaults())
+	var w := BallWorld.new(TuningPresets.maze())
 	assert_eq(w.add_wall(Vector2(5, 5), Vector2(5, 5), 0.0), 0)
 	assert_eq(w.add_pin(Vector2(50, 5), 0.0), 0)
 	var a := w.spawn_ball(Vector2(5, 5), Vector2(10, 0), 5.0)

@@ -6,7 +6,7 @@ const DT := 1.0 / 120.0
 
 
 func _world() -> BallWorld:
-	var t := PhysicsTuning.maze_defaults()
+	var t := TuningPresets.maze()
 	t.max_speed = 5000.0
 	t.rolling_friction = 0.0
 	return BallWorld.new(t)

@@ -8,7 +8,7 @@ const BALL_R := 5.0
 
 
 func _ring_world() -> BallWorld:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.min_horizontal_speed = 0.0
 	var w := BallWorld.new(t)
 	w.set_ring(CENTER, RING_R)
@@ -48,7 +48,7 @@ func test_sleep_time_zero_never_sleeps() -> void:
 
 
 func test_a_falling_ball_wakes_a_sleeper_and_shares_momentum() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.gravity = Vector2.ZERO
 	t.min_horizontal_speed = 0.0
 	t.ball_restitution = 1.0
@@ -64,7 +64,7 @@ func test_a_falling_ball_wakes_a_sleeper_and_shares_momentum() -> void:
 
 
 func test_a_slow_touch_does_not_wake_a_sleeper() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.gravity = Vector2.ZERO
 	var w := BallWorld.new(t)
 	var still := w.spawn_ball(Vector2(100, 0), Vector2.ZERO, BALL_R)
@@ -111,7 +111,7 @@ func test_moving_a_ball_by_hand_wakes_it() -> void:
 
 
 func test_a_sleeper_whose_ball_support_is_knocked_away_falls() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.min_horizontal_speed = 0.0
 	# Elastic: the hitter stops dead where the lower ball was, clear of the upper one.
 	t.ball_restitution = 1.0

@@ -10,7 +10,7 @@ const HZ := 120.0
 ## A right-angled corner: a floor along y = 100 and a wall along x = 100, joined at
 ## (100, 100), with a ball of radius 5 resting in the inside corner.
 func _corner_world() -> BallWorld:
-	var w := BallWorld.new(PhysicsTuning.maze_defaults())
+	var w := BallWorld.new(TuningPresets.maze())
 	w.add_wall(Vector2(0, 100), Vector2(100, 100), 5.0)
 	w.add_wall(Vector2(100, 0), Vector2(100, 100), 5.0)
 	return w
@@ -57,7 +57,7 @@ func test_a_corner_sleeper_wakes_and_rolls_when_the_tilt_turns_out() -> void:
 
 
 func test_friction_holds_a_sleeper_on_a_gentle_slope_but_not_a_steep_one() -> void:
-	var t := PhysicsTuning.maze_defaults()
+	var t := TuningPresets.maze()
 	var w := BallWorld.new(t)
 	var id := w.spawn_ball(Vector2(50, 50), Vector2.ZERO, BALL_R)
 	_steps(w, 30)

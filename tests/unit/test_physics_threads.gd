@@ -7,7 +7,7 @@ const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 
 ## A ring board with pins, a wall and a gutter, crowded enough for several lanes.
 func _pachinko_world(threads: int) -> BallWorld:
-	var w := BallWorld.new(PhysicsTuning.pachinko_defaults())
+	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = threads
 	w.set_ring(Vector2.ZERO, 220.0)
 	w.set_gutter(60.0, 120.0, 3)
@@ -26,7 +26,7 @@ func _pachinko_world(threads: int) -> BallWorld:
 
 ## Walls only, tilted, with friction and sleep: the maze's path through the stages.
 func _maze_world(threads: int) -> BallWorld:
-	var t := PhysicsTuning.maze_defaults()
+	var t := TuningPresets.maze()
 	var w := BallWorld.new(t)
 	w.threads = threads
 	for k: int in 10:

@@ -4,7 +4,7 @@ extends GutTest
 
 
 func test_pachinko_defaults_convert_the_flash_constants() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	assert_almost_eq(t.gravity.y, 777.78, 0.01, "0.7 px/tick² at 30 ms")
 	assert_eq(t.gravity.x, 0.0)
 	assert_almost_eq(t.restitution, 0.6, 1e-6)
@@ -13,7 +13,7 @@ func test_pachinko_defaults_convert_the_flash_constants() -> void:
 
 
 func test_maze_defaults_convert_the_tutorial_constants() -> void:
-	var t := PhysicsTuning.maze_defaults()
+	var t := TuningPresets.maze()
 	assert_almost_eq(t.tilt_gravity, 7812.5, 0.001, "2 px/frame² at 16 ms")
 	assert_almost_eq(t.rolling_friction, 78.125, 0.001, "μ = 0.01")
 	assert_almost_eq(t.max_speed, 93.75, 0.001, "1.5 px/frame")
@@ -38,7 +38,7 @@ func test_slow_never_passes_zero() -> void:
 
 
 func test_flat_maze_friction_stops_a_ball_without_reversing_it() -> void:
-	var w := BallWorld.new(PhysicsTuning.maze_defaults())
+	var w := BallWorld.new(TuningPresets.maze())
 	MazeTilt.apply(w, Vector2.ZERO)
 	var id := w.spawn_ball(Vector2.ZERO, Vector2(60, -30), 5.0)
 	var prev := w.get_ball_velocity(id)
@@ -58,7 +58,7 @@ func test_maze_at_12_degrees_matches_the_seed_speeds() -> void:
 	while seed_v < 1.5:
 		seed_v = minf(seed_v + 2.0 * sin(deg_to_rad(12.0)) - 0.02 * cos(deg_to_rad(12.0)), 1.5)
 		frames += 1
-	var w := BallWorld.new(PhysicsTuning.maze_defaults())
+	var w := BallWorld.new(TuningPresets.maze())
 	MazeTilt.apply(w, Vector2(12, 0))
 	var id := w.spawn_ball(Vector2.ZERO, Vector2.ZERO, 5.0)
 	var steps := 0
@@ -73,10 +73,79 @@ func test_maze_at_12_degrees_matches_the_seed_speeds() -> void:
 
 
 func test_speed_cap_holds_under_gravity() -> void:
-	var t := PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.pachinko()
 	t.max_speed = 300.0
 	var w := BallWorld.new(t)
 	var id := w.spawn_ball(Vector2.ZERO, Vector2.ZERO, 5.0)
 	for _i: int in 240:
 		w.step(1.0 / 120.0)
 	assert_almost_eq(w.get_ball_velocity(id).length(), 300.0, 0.01)
+
+
+func _open_world(tuning: PhysicsTuning) -> Dictionary:
+	var w := BallWorld.new(tuning)
+	w.build_grid()
+	var id := w.spawn_ball(Vector2(500, 500), Vector2.ZERO, 5.0)
+	return {"world": w, "id": id}
+
+
+func test_per_axis_speed_cap_lets_a_diagonal_roll_faster() -> void:
+	var t := TuningPresets.maze()
+	t.speed_cap = PhysicsTuning.SpeedCap.PER_AXIS
+	var run := _open_world(t)
+	var w: BallWorld = run["world"]
+	MazeTilt.apply(w, Vector2(12.0, 12.0))
+	for _s in 60:
+		w.step(1.0 / 120.0)
+	var v := w.get_ball_velocity(int(run["id"]))
+	assert_almost_eq(v.x, t.max_speed, 1e-3, "each axis reaches the cap")
+	assert_almost_eq(v.y, t.max_speed, 1e-3)
+	t.speed_cap = PhysicsTuning.SpeedCap.TOTAL
+	run = _open_world(t)
+	w = run["world"]
+	MazeTilt.apply(w, Vector2(12.0, 12.0))
+	for _s in 60:
+		w.step(1.0 / 120.0)
+	assert_almost_eq(w.get_ball_velocity(int(run["id"])).length(), t.max_speed, 1e-3)
+
+
+func test_friction_against_gravity_only_lowers_the_downhill_pull() -> void:
+	var dt := 1.0 / 120.0
+	for mode: int in [
+		PhysicsTuning.FrictionAgainst.VELOCITY, PhysicsTuning.FrictionAgainst.GRAVITY
+	]:
+		var t := TuningPresets.maze()
+		t.friction_against = mode
+		var run := _open_world(t)
+		var w: BallWorld = run["world"]
+		var id: int = run["id"]
+		w.set_ball_velocity(id, Vector2(-50.0, 0.0))  # rolling uphill
+		w.gravity = Vector2(1000.0, 0.0)
+		w.rolling_friction = Vector2(100.0, 100.0)
+		w.step(dt)
+		# Against the velocity friction helps gravity turn it; against gravity it resists.
+		var expected := -50.0 + (1000.0 + (100.0 if mode == 0 else -100.0)) * dt
+		assert_almost_eq(w.get_ball_velocity(id).x, expected, 1e-3, "mode %d" % mode)
+
+
+func test_a_tilt_friction_can_hold_never_rolls_the_ball_uphill() -> void:
+	var t := TuningPresets.maze()
+	t.friction_against = PhysicsTuning.FrictionAgainst.GRAVITY
+	var run := _open_world(t)
+	var w: BallWorld = run["world"]
+	w.gravity = Vector2(50.0, 0.0)
+	w.rolling_friction = Vector2(78.125, 78.125)
+	for _s in 30:
+		w.step(1.0 / 120.0)
+	assert_eq(w.get_ball_position(int(run["id"])), Vector2(500, 500), "friction holds it")
+
+
+func test_board_files_may_choose_the_seed_options() -> void:
+	var classic: BoardLevel = BoardLoader.load_board("res://levels/maze/classic.board").level
+	assert_eq(classic.tuning.speed_cap, PhysicsTuning.SpeedCap.PER_AXIS)
+	assert_eq(classic.tuning.friction_against, PhysicsTuning.FrictionAgainst.GRAVITY)
+	assert_eq(classic.tuning.wall_cap_contact, PhysicsTuning.CapContact.GLANCE)
+	var other: BoardLevel = BoardLoader.load_board("res://levels/maze/catacombs.board").level
+	assert_eq(other.tuning.speed_cap, PhysicsTuning.SpeedCap.TOTAL, "others keep theirs")
+	var fields: Dictionary = load("res://scripts/loading/board_schema.gd").tuning_fields()
+	assert_eq(fields["speed_cap"][2], 1.0, "the schema bounds the option to its values")

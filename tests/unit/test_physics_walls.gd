@@ -6,7 +6,7 @@ const HZ := 120.0
 
 
 func _maze_world() -> BallWorld:
-	var t := PhysicsTuning.maze_defaults()
+	var t := TuningPresets.maze()
 	t.rolling_friction = 0.0
 	return BallWorld.new(t)
 
@@ -103,7 +103,7 @@ func test_zero_length_wall_is_a_round_post() -> void:
 
 
 func test_balls_never_cross_walls_in_a_long_random_run() -> void:
-	var t := PhysicsTuning.maze_defaults()
+	var t := TuningPresets.maze()
 	t.max_speed = 3000.0
 	var w := BallWorld.new(t)
 	var rng := RandomNumberGenerator.new()

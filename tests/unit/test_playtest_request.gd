@@ -172,3 +172,60 @@ class TestHostileFile:
 		assert_false(FileAccess.file_exists(MARKER), "the payload ran")
 		assert_false(FileAccess.file_exists(PlaytestRequest.LEGACY_PATH))
 		assert_push_warning("old format")
+
+
+## The play-test part of tests/fixtures/hostile_user_files/: every file is refused for the
+## reason it gives (never by an engine error), removed with a warning, and no payload runs.
+class TestHostileCorpus:
+	extends GutTest
+
+	const CORPUS := "res://tests/fixtures/hostile_user_files/playtest/"
+	const MARKER := "user://hostile_user_files_marker.txt"
+	## fixture -> a piece of the problem it must give
+	const EXPECTED := {
+		"configfile_payload.json": "not JSON",
+		"deep_nesting.json": "too deep",
+		"duplicate_keys.json": "the board must be a file",
+		"gd_resource_header.json": "not JSON",
+		"huge_number.json": "format must be 1",
+		"invalid_utf8.json": "not UTF-8 text",
+		"nan_and_inf.json": "not JSON",
+		"nul_bytes.json": "NUL bytes",
+		"path_escape.json": "the board must be a file",
+		"payload_as_a_value.json": "the board must be a file",
+		"two_objects.json": "not JSON",
+		"utf16.json": "UTF-16",
+	}
+
+	func before_each() -> void:
+		DirAccess.remove_absolute(MARKER)
+
+	func after_each() -> void:
+		for path: String in [MARKER, SCRATCH]:
+			DirAccess.remove_absolute(path)
+
+	func test_every_fixture_is_listed() -> void:
+		var names := Array(DirAccess.get_files_at(CORPUS))
+		names.sort()
+		var listed := EXPECTED.keys()
+		listed.sort()
+		assert_eq(names, listed)
+
+	func test_every_fixture_is_refused_for_its_reason_and_removed() -> void:
+		for name: String in EXPECTED:
+			var bytes := FileAccess.get_file_as_bytes(CORPUS + name)
+			var file := FileAccess.open(SCRATCH, FileAccess.WRITE)
+			file.store_buffer(bytes)
+			file.close()
+			assert_string_contains(PlaytestRequest.read(SCRATCH)["problem"], EXPECTED[name], name)
+			assert_eq(PlaytestRequest.take("maze", SCRATCH), "", name)
+			assert_false(FileAccess.file_exists(SCRATCH), "%s removed" % name)
+			assert_false(FileAccess.file_exists(MARKER), "%s: the payload ran" % name)
+		assert_push_warning_count(EXPECTED.size())
+
+	func test_bom_and_crlf_requests_are_read_as_usual() -> void:
+		var request := Files.fresh_request()
+		var text := JSON.stringify(request, "\t").replace("\n", "\r\n")
+		Files.write_text(SCRATCH, "\ufeff" + text + "\r\n")
+		assert_eq(PlaytestRequest.read(SCRATCH)["problem"], "")
+		assert_eq(PlaytestRequest.take("maze", SCRATCH), BOARD)

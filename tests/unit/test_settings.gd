@@ -1,12 +1,14 @@
 extends GutTest
 ## Player settings: a save/load round trip, readable text, and recovery from damaged,
-## unknown-version and out-of-range files (defaults, one clear message, never a crash).
+## newer-version and out-of-range files (defaults, one clear message, never a crash).
 
 const PATH := "user://test_settings.cfg"
 
 
 func after_each() -> void:
-	DirAccess.remove_absolute(PATH)
+	for name in DirAccess.get_files_at("user://"):
+		if name.begins_with(PATH.get_file()):
+			DirAccess.remove_absolute("user://" + name)
 
 
 func _write(text: String) -> void:
@@ -53,8 +55,8 @@ func test_damaged_file_is_reported_and_defaults_used() -> void:
 	var settings := GameSettings.new()
 	settings.set_value("tilt_sensitivity", 2.0)
 	var message := settings.load_file(PATH)
-	assert_string_contains(message, PATH)
-	assert_string_contains(message, "damaged")
+	assert_string_contains(message, PATH.get_file())
+	assert_string_contains(message, "could not be read")
 	assert_eq(settings.tilt_sensitivity, 1.0)
 	assert_eq(settings.master_volume, 1.0)
 
@@ -64,21 +66,27 @@ func test_binary_garbage_is_reported() -> void:
 	file.store_buffer(PackedByteArray([0, 159, 146, 150, 0, 255, 10, 91]))
 	file.close()
 	var message := GameSettings.new().load_file(PATH)
-	assert_string_contains(message, "damaged")
+	assert_string_contains(message, "NUL bytes")
 
 
-func test_unknown_version_is_reported_and_defaults_used() -> void:
-	_write("[meta]\nversion=99\n\n[audio]\nmaster_volume=0.2\n")
+func test_newer_version_is_reported_defaults_used_and_never_saved_over() -> void:
+	var newer := "[meta]\nversion=99\n\n[audio]\nmaster_volume=0.2\n"
+	_write(newer)
 	var settings := GameSettings.new()
 	var message := settings.load_file(PATH)
-	assert_string_contains(message, "unknown version")
+	assert_string_contains(message, "newer version")
 	assert_string_contains(message, "99")
+	assert_string_contains(message, "left as it is")
 	assert_eq(settings.master_volume, 1.0)
+	settings.set_value("master_volume", 0.7)
+	assert_eq(settings.save_file(PATH), ERR_FILE_NO_PERMISSION)
+	assert_eq(FileAccess.get_file_as_string(PATH), newer, "the newer file is untouched")
+	assert_eq(settings.save_file(PATH + ".other"), OK, "other paths still save")
 
 
-func test_missing_version_is_reported() -> void:
+func test_missing_version_is_reported_as_damage() -> void:
 	_write("[audio]\nmaster_volume=0.2\n")
-	assert_string_contains(GameSettings.new().load_file(PATH), "unknown version")
+	assert_string_contains(GameSettings.new().load_file(PATH), "no [meta] version")
 
 
 func test_bad_values_are_named_and_the_rest_kept() -> void:

@@ -4,6 +4,7 @@ extends GutTest
 
 const PATH := "user://test_settings_input.cfg"
 const Codec := preload("res://scripts/app/input_event_codec.gd")
+const BindingList := preload("res://scenes/menu/binding_list.gd")
 
 
 func after_each() -> void:
@@ -96,7 +97,7 @@ func _key_press(code: Key) -> InputEventKey:
 
 
 func test_the_controls_screen_rebinds_with_the_next_key_and_esc_cancels() -> void:
-	var list := (load("res://scenes/menu/binding_list.gd") as GDScript).new() as GridContainer
+	var list := BindingList.new() as GridContainer
 	add_child_autofree(list)
 	var button: Button = list.get_node("tilt_up_key")
 	button.pressed.emit()
@@ -115,3 +116,24 @@ func test_the_controls_screen_rebinds_with_the_next_key_and_esc_cancels() -> voi
 	trigger.axis_value = 0.9
 	list.call("_input", trigger)
 	assert_eq(pad.text, "Left trigger")
+
+
+func test_the_controls_screen_removes_a_binding_but_pause_keeps_one() -> void:
+	var list := BindingList.new() as GridContainer
+	add_child_autofree(list)
+	var restart: Button = list.get_node("game_restart_key")
+	restart.gui_input.emit(_key_press(KEY_DELETE))
+	assert_eq(restart.text, "(none)")
+	assert_true(App.settings.events_for("game_restart").all(Codec.is_gamepad), "keys gone")
+	var right_click := InputEventMouseButton.new()
+	right_click.button_index = MOUSE_BUTTON_RIGHT
+	right_click.pressed = true
+	var restart_pad: Button = list.get_node("game_restart_pad")
+	restart_pad.gui_input.emit(right_click)
+	assert_eq(restart_pad.text, "(none)", "a right click removes too")
+	for column in ["pause_key", "pause_pad"]:
+		var pause: Button = list.get_node(column)
+		var before := pause.text
+		pause.gui_input.emit(_key_press(KEY_BACKSPACE) if column == "pause_key" else right_click)
+		assert_string_contains(pause.text, before, "%s: the pause binding stays" % column)
+		assert_string_contains(pause.text, "Pause needs one", column)

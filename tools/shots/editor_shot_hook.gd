@@ -4,8 +4,10 @@ extends Node
 ## BOARD_EDITOR_SHOT="<scene.tscn>;<tool>;<out.png>" it opens the scene, selects its
 ## BoardNode, shows a tool in use, saves the editor window as a PNG (shot_capture.gd, the
 ## same capture as the game's shots) and quits.
-## Tools: "pattern" (pachinko: a lattice ghost and a selected pocket) or "wall" (maze:
-## a wall being dragged in mirror mode).
+## Tools: "pattern" (pachinko: a lattice ghost and a selected pocket), "curve" (pachinko: a
+## peg curve being drawn, red ghosts where it crowds pins, a pocket in the Selection panel)
+## or "wall" (maze: a wall dragged in mirror mode, the holes layer hidden, the view jumped to
+## the first problem).
 
 const ENV := "BOARD_EDITOR_SHOT"
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
@@ -57,7 +59,11 @@ func _run() -> void:
 	_stage(parts[1])
 	_frame_board(node as BoardNode)
 	await _frames(5)
-	_plugin.call("focus_issue", 0)
+	if parts[1] == "wall":
+		_plugin.call("focus_issue", 0)  # jump-to-problem: centred and zoomed in
+	else:
+		_plugin.set("_focused_issue", 0)
+		_plugin.call("update_overlays")
 	var window := EditorInterface.get_base_control().get_viewport()
 	var error: Error = await ShotCapture.save(window, parts[2])
 	# Take the staged edit back so the board file is left as it was.
@@ -98,6 +104,9 @@ func _stage(tool_name: String) -> void:
 		)
 		session.commit(AddItemsAction.new(level, trap, "Add wall"))
 		session.select([Items.make(Items.Kind.WALL, level.walls.size() / 2 - 1)] as Array[Vector2i])
+		session.set_layer("Holes", true, false)
+	elif tool_name == "curve":
+		_stage_curve(session, input)
 	else:
 		session.set_tool(Session.Tool.PATTERN)
 		session.pattern["kind"] = "arc"
@@ -112,6 +121,26 @@ func _stage(tool_name: String) -> void:
 		if not level.pockets.is_empty():
 			session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
 	session.settings_changed.emit()
+
+
+# A peg curve half drawn over the top of the field, a pocket selected for the panel.
+func _stage_curve(session: Session, input: RefCounted) -> void:
+	var level := session.level
+	if not level.pockets.is_empty():
+		session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+	session.set_tool(Session.Tool.CURVE)
+	session.curve["count"] = 20
+	var tool: RefCounted = input.call("active_tool")
+	tool.set("pixel", 0.5)
+	var press := InputEventMouseButton.new()
+	press.button_index = MOUSE_BUTTON_LEFT
+	press.pressed = true
+	var from := level.ring_center + Vector2(-230, -40)
+	tool.call("press", from, press)
+	for k in range(1, 25):
+		var t := float(k) / 24.0
+		var at := from + Vector2(400.0 * t, -150.0 * sin(t * PI))
+		tool.call("motion", at, InputEventMouseMotion.new())
 
 
 # Zooms the 2D view out until the whole board fits and centres it. The 2D editor offers no

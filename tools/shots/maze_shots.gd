@@ -1,9 +1,10 @@
 extends RefCounted
 ## The maze shots: "maze_start" the waiting board, "maze_tilt" the board mid-tilt under the
 ## arrow keys, "maze_win" a board the autoplay's pilot solved, "maze_lost" hard mode with a
-## ball in a black hole. Each opens the game as the level select does (App.start_game) and
-## plays it with the player's own input actions or through the screen's rules
-## (MazeGame.rules); balls are never placed by hand.
+## ball in a black hole, "maze_fall" a ball half way down a hole. Each opens the game as the
+## level select does (App.start_game) and plays it with the player's own input actions or
+## through the screen's rules (MazeGame.rules); balls are never placed by hand. The start and
+## tilt shots also print the frame rate.
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
@@ -12,12 +13,16 @@ const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
 ## The shots this file takes, in order.
-const NAMES: Array[String] = ["maze_start", "maze_tilt", "maze_win", "maze_lost"]
+const NAMES: Array[String] = ["maze_start", "maze_tilt", "maze_win", "maze_lost", "maze_fall"]
 ## Pilot seeds tried, and physics steps per try, before the win shot gives up.
 const WIN_ATTEMPTS := 10
 const WIN_MAX_STEPS := 14400
 ## How long a tilt that should drop a ball into a hole may take.
 const LOSS_TIMEOUT := 5.0
+## How far down its hole the ball is in the fall shot (0 at the rim, 1 out of sight).
+const FALL_SHOT_PROGRESS := 0.4
+## How long the frame rate is measured in the tilt shot, in seconds.
+const FPS_SECONDS := 3.0
 
 
 ## Opens the game, plays it into the moment of `shot_name` and saves it. OK or the reason
@@ -37,15 +42,25 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	match shot_name:
 		"maze_start":
 			await _wait(tree, 0.6)  # the note fades in
+			await _report_fps(tree, shot_name)  # drawing only: nothing moves yet
 		"maze_tilt":
 			# Right and a little down, as a gamepad stick pushed part way.
 			_press_tilt(Vector2(0.9, 0.6))
 			await _wait(tree, 1.3)
+			await _report_fps(tree, shot_name)
 		"maze_win":
 			staged = await _win(tree, rules)
 			await _wait(tree, 2.2)  # the board levels out and the note comes up
 		"maze_lost":
 			staged = await _lose(tree, rules)
+			if staged == OK:
+				await _wait(tree, 2.2)  # the board levels out and the note comes up
+		"maze_fall":
+			staged = await _lose(tree, rules)
+			if staged == OK:
+				staged = await _mid_fall(tree, (game as MazeGame).stage())
+			if staged == OK:  # the fall is under way: take the very next frame
+				return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name), 0)
 	if staged != OK:
 		return staged
 	var error: Error = await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
@@ -105,8 +120,17 @@ static func _lose(tree: SceneTree, rules: MazeRules) -> Error:
 		await tree.process_frame
 		waited += tree.root.get_process_delta_time()
 	_release_tilt()
-	await _wait(tree, 2.2)  # the board levels out and the note comes up
 	return OK if rules.state == MazeRules.State.LOST else FAILED
+
+
+# Waits until the lost ball is about half way down its hole.
+static func _mid_fall(tree: SceneTree, stage: MazeGame.MazeStage) -> Error:
+	for frame in 120:
+		if stage.balls().fall_progress() >= FALL_SHOT_PROGRESS:
+			return OK
+		await tree.process_frame
+	printerr("shots: maze_fall: no ball fell into a hole")
+	return FAILED
 
 
 # The player's key press for `action`, through the same input path a keyboard takes.
@@ -118,6 +142,53 @@ static func _press(action: StringName) -> void:
 	var release := InputEventAction.new()
 	release.action = action
 	Input.parse_input_event(release)
+
+
+# Counts the frames drawn in FPS_SECONDS of play and prints the rate (the 3D board must stay
+# smooth on software GL; the README quotes this number). The machine may be shared, so it
+# also prints frames per second of this process's own CPU time: the rate the game would
+# reach on one core of its own (software GL uses more when it has them).
+static func _report_fps(tree: SceneTree, shot_name: String) -> void:
+	RenderingServer.viewport_set_measure_render_time(tree.root.get_viewport_rid(), true)
+	var frames := 0
+	var start := Time.get_ticks_usec()
+	var cpu_start := _cpu_seconds()
+	while Time.get_ticks_usec() - start < int(FPS_SECONDS * 1000000.0):
+		await tree.process_frame
+		frames += 1
+	var seconds := float(Time.get_ticks_usec() - start) / 1000000.0
+	var cpu := _cpu_seconds() - cpu_start
+	var size := tree.root.get_visible_rect().size
+	var line := (
+		"shots: %s: %.1f fps at %dx%d on %s"
+		% [shot_name, frames / seconds, size.x, size.y, RenderingServer.get_video_adapter_name()]
+	)
+	if cpu > 0.0:
+		line += ", %.1f frames per CPU second" % (frames / cpu)
+	var vp := tree.root.get_viewport_rid()
+	line += (
+		" [process %.1f ms, physics %.1f ms, render cpu %.1f ms gpu %.1f ms]"
+		% [
+			Performance.get_monitor(Performance.TIME_PROCESS) * 1000.0,
+			Performance.get_monitor(Performance.TIME_PHYSICS_PROCESS) * 1000.0,
+			RenderingServer.viewport_get_measured_render_time_cpu(vp),
+			RenderingServer.viewport_get_measured_render_time_gpu(vp),
+		]
+	)
+	print(line)
+
+
+# User + system CPU seconds this process has used (Linux); 0 where /proc is missing.
+static func _cpu_seconds() -> float:
+	var file := FileAccess.open("/proc/self/stat", FileAccess.READ)
+	if file == null:
+		return 0.0
+	var text := file.get_line()  # /proc files report no length: read a line, not the size
+	# the fields after the command name (which is in brackets and may hold spaces)
+	var fields := text.substr(text.rfind(")") + 2).split(" ")
+	if fields.size() < 13:
+		return 0.0
+	return (fields[11].to_float() + fields[12].to_float()) / 100.0
 
 
 static func _wait(tree: SceneTree, seconds: float) -> void:

@@ -9,8 +9,25 @@ const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const SETTINGS := "res://scenes/menu/settings_menu.tscn"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"menu_main", "menu_level_select_pachinko", "menu_level_select_maze", "menu_settings"
+	"menu_main",
+	"menu_notice",
+	"menu_level_select_pachinko",
+	"menu_level_select_maze",
+	"menu_my_boards",
+	"menu_settings",
 ]
+## The problems the notice shot shows: as many lines as a badly damaged user folder gives.
+const NOTICE_PROBLEMS: Array[String] = [
+	"Settings: the file was damaged (line 3); kept as settings.cfg.bad-20261122-101500.",
+	"Settings: master_volume (line 4) is not a number; using the default.",
+	"Settings: pause had no key; Escape is bound again.",
+	"Best results: the file is from a newer version of the game; it is left untouched and not saved.",
+	"Best results: 2 records could not be read and were skipped.",
+]
+## The My boards shot's own scratch folder: the player's real boards never show in it.
+const SHOT_BOARDS := "user://shots_boards"
+## A file the loader refuses, shown greyed with its reason in the My boards shot.
+const REFUSED_BOARD := "res://tests/fixtures/hostile_boards/pachinko/restitution_5.board"
 
 
 ## Opens the screen of `shot_name` and saves it. OK or the reason it failed.
@@ -21,6 +38,12 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 			# The title screen focuses the game whose level select was seen last.
 			App.level_select_kind = "pachinko"
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
+		"menu_notice":
+			# What a player sees after the game kept a damaged settings file aside.
+			App.level_select_kind = "pachinko"
+			for problem: String in NOTICE_PROBLEMS:
+				App.pending_problems.append(problem)
+			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_level_select_pachinko":
 			screen = await ScreenOpener.open(
 				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
@@ -30,6 +53,14 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 			screen = await ScreenOpener.open(
 				tree, App.go_to_level_select.bind("maze"), LEVEL_SELECT
 			)
+			if screen != null:
+				await _wait_loaded(tree, screen)
+		"menu_my_boards":
+			screen = await ScreenOpener.open(
+				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+			)
+			if screen != null:
+				await _show_my_boards(tree, screen)
 		"menu_settings":
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 			if screen != null:
@@ -44,14 +75,13 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 
-# A player two boards in: medals on the first two mazes, the third open, the rest locked.
+# A player one board in: medals on the first maze, the second open, the rest locked.
 # The shot's save is in memory only (the player's own file is never touched).
 static func _sample_progress() -> void:
 	App.settings.unlock_all_boards = false
 	var save: Object = load("res://scripts/app/save_data.gd").new()
 	App.save_data = save
 	var finishes := [["maze_garden", false, 0.95], ["maze_garden", true, 1.3]]
-	finishes += [["maze_classic", false, 1.8]]
 	for loaded in BoardLoader.list_boards(BoardLevel.Kind.MAZE):
 		for finish: Array in finishes:
 			if loaded.ok() and loaded.level.board_id == finish[0]:
@@ -59,8 +89,47 @@ static func _sample_progress() -> void:
 				var times := Medals.times_for(loaded.level, hard)
 				var share: float = finish[2]
 				var seconds := times[0] * share if times.size() == 3 else 60.0
-				# per board and mode when the save has modes, else per board
-				if save.get_method_argument_count(&"record_maze_time") >= 3:
-					save.call(&"record_maze_time", finish[0], hard, seconds)
-				elif not hard:
-					save.call(&"record_maze_time", finish[0], seconds)
+				save.call(&"record_maze_time", finish[0], hard, seconds)
+
+
+# Waits until every card of the level select has loaded (their files load off the main thread).
+static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
+	for frame in 240:
+		if not screen.call("is_loading"):
+			break
+		await tree.process_frame
+	for frame in 3:
+		await tree.process_frame
+
+
+# Fills a scratch My boards folder (one imported board, one refused file), imports the
+# board as the Import button would, and scrolls to the section.
+static func _show_my_boards(tree: SceneTree, screen: Node) -> void:
+	_empty_folder(SHOT_BOARDS + "/pachinko")
+	DirAccess.make_dir_recursive_absolute(SHOT_BOARDS + "/pachinko")
+	var refused := FileAccess.open(SHOT_BOARDS + "/pachinko/bouncy.board", FileAccess.WRITE)
+	refused.store_buffer(FileAccess.get_file_as_bytes(REFUSED_BOARD))
+	refused.close()
+	screen.call("use_folder", SHOT_BOARDS)
+	var source := ProjectSettings.globalize_path("res://levels/pachinko/windmills.board")
+	screen.call("import_files", PackedStringArray([source]))
+	for frame in 120:
+		await tree.process_frame
+		if not screen.call("is_loading"):
+			break
+	var slots: Array = screen.call("my_slots")
+	if not slots.is_empty():
+		(slots[0].get("card") as Control).grab_focus()
+	for frame in 10:
+		await tree.process_frame
+	# down to the end, so the cards' Export and Delete buttons show too
+	var scroll := screen.get_node("%Scroll") as ScrollContainer
+	scroll.scroll_vertical = int(scroll.get_v_scroll_bar().max_value)
+	for frame in 3:
+		await tree.process_frame
+
+
+static func _empty_folder(folder: String) -> void:
+	if DirAccess.dir_exists_absolute(folder):
+		for file_name in DirAccess.get_files_at(folder):
+			DirAccess.remove_absolute(folder.path_join(file_name))

@@ -1,8 +1,9 @@
 extends RefCounted
-## The pachinko shots: "pachinko_start" the instructions, "pachinko_play" many balls in play
-## with the flipper drawn back, "pachinko_win" the moment a pocket pays out, "pachinko_over"
-## game over. Each opens the game as the level select does (App.start_game) and plays the
-## screen's own rules (PachinkoGame.rules) forward at 60 fps; nothing is faked.
+## The pachinko shots: "pachinko_start" the instructions, "pachinko_play" a stream
+## from the held handle with struck pins lit and the flipper drawn back, "pachinko_win"
+## the moment a pocket pays out, "pachinko_over" game over. Each opens the game as the
+## level select does (App.start_game) and plays the screen's own rules
+## (PachinkoGame.rules) forward at 60 fps; nothing is faked.
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
@@ -29,7 +30,8 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		return ERR_CANT_OPEN
 	match shot_name:
 		"pachinko_play":
-			_play(rules)
+			_play(rules, game.get_node("BoardView/PinLights"))
+			game.get_node("Hud/Column/Stats").call("show_stats", rules.stats())
 		"pachinko_win":
 			if not _win(rules):
 				printerr("shots: pachinko_win: no pocket paid out in 90 s of play")
@@ -41,12 +43,14 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 
-static func _play(rules: PachinkoRules) -> void:
+static func _play(rules: PachinkoRules, pin_lights: Node) -> void:
 	rules.start_game()
-	for frame in 60 * 4:
-		if rules.loaded and frame % 8 == 0:
-			rules.fire(20.0 + float(frame * 53 % 80))
+	rules.handle.set_power(72.0)
+	rules.handle.grip()
+	for frame in 60 * 5:
 		rules.advance(FRAME)
+		# The lights fade per frame; played forward here, they need the frames too.
+		pin_lights.call("_process", FRAME)
 	# Grab the flipper and draw it back, as a held mouse button does.
 	rules.press_flipper(Vector2(0, 100))
 	rules.drag_to(Vector2(0, 35))
@@ -76,7 +80,8 @@ static func _over(rules: PachinkoRules) -> bool:
 	for frame in 60 * 240:
 		if rules.state == PachinkoRules.State.GAME_OVER:
 			break
-		if rules.loaded and frame % 30 == 0:
-			rules.fire(20.0 + float(frame * 53 % 80))
+		# Lone weak shots, which seldom pay: the cup runs dry in a minute or two.
+		if rules.loaded and frame % 20 == 0:
+			rules.fire(20.0 + float(frame * 53 % 10))
 		rules.advance(FRAME)
 	return rules.state == PachinkoRules.State.GAME_OVER

@@ -13,6 +13,7 @@ const Snapshot := preload("res://addons/board_editor/core/board_field_copy.gd")
 ## The board this action edits.
 var level: BoardLevel
 var _before: Dictionary = {}
+var _ids_after: Dictionary = {}
 var _applied := false
 
 
@@ -25,8 +26,22 @@ func do() -> void:
 	if level == null:
 		push_error("Board action '%s': no board to edit." % get_name())
 		return
-	_before = Snapshot.capture(level, _touched_fields())
+	var fields := _touched_fields()
+	for list: String in ItemIds.LISTS:
+		if fields.has(list):
+			var id_field: String = ItemIds.LISTS[list]
+			fields.append(id_field)
+	_before = Snapshot.capture(level, fields)
 	_apply()
+	if _ids_after.is_empty():
+		# Items that survived the edit keep their ids; new ones get fresh ids from the board's
+		# counter. Undo puts the ids back with the lists but never the counter, so an id
+		# handed out once is never handed out again.
+		ItemIds.reconcile(level, _before)
+		_ids_after = Snapshot.capture(level, _id_fields(fields))
+	else:
+		# A redo: the new items get the very ids they had the first time.
+		Snapshot.restore(level, _ids_after)
 	_applied = true
 	level.notify_edited()
 
@@ -48,6 +63,16 @@ func get_name() -> String:
 ## True between a `do()` and the matching `undo()`.
 func is_applied() -> bool:
 	return _applied
+
+
+# The id arrays among `fields`.
+static func _id_fields(fields: PackedStringArray) -> PackedStringArray:
+	var ids := PackedStringArray()
+	for list: String in ItemIds.LISTS:
+		var id_field: String = ItemIds.LISTS[list]
+		if fields.has(id_field):
+			ids.append(id_field)
+	return ids
 
 
 ## The BoardLevel fields `_apply()` may change.

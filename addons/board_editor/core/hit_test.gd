@@ -60,6 +60,16 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 	return best
 
 
+## True when a new pin at `point` would overlap a pin of `level` or leave it a gap narrower
+## than a ball (the validator's overlap and narrow-gap warnings): ghosts turn red there.
+static func crowds_pin(level: BoardLevel, point: Vector2) -> bool:
+	var reach := level.pin_radius * 2.0 + level.ball_radius * 2.0
+	for pin in level.pins:
+		if pin.distance_squared_to(point) < reach * reach:
+			return true
+	return false
+
+
 ## Every item whose representative point lies inside `rect` (a pocket once, however many of
 ## its pins are inside; a wall when both its ends are inside).
 static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:

@@ -21,10 +21,10 @@ static func pachinko_settings(id: String, title: String, blurb: String) -> Dicti
 		"ring_radius": 330.0,
 		"rail_width": 20.0,
 		"rail_start_deg": 40.0,
-		"rail_end_deg": -105.0,
+		"rail_end_deg": -55.0,
 		"gutter_start_deg": 60.0,
 		"gutter_end_deg": 120.0,
-		"gutter_bounces": 6,
+		"gutter_bounces": 7,
 		"pin_radius": 1.5,
 		"cup_start_balls": 25,
 	}

@@ -6,9 +6,10 @@ extends RefCounted
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Draw := preload("res://addons/board_editor/ui/overlay_draw.gd")
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 
 ## How close (screen px) the mouse must be to pick something.
-const PICK_PIXELS := 6.0
+const PICK_PIXELS := 8.0
 
 ## The editor state this tool works on.
 var session: Session
@@ -51,6 +52,12 @@ func draw(_canvas: Control, _to_screen: Transform2D) -> void:
 ## The session's board.
 func level() -> BoardLevel:
 	return session.level
+
+
+## The item under `at` that the tool may touch (nothing on a hidden or locked layer).
+func pick(at: Vector2) -> Vector2i:
+	var item := HitTest.pick(level(), at, tolerance())
+	return item if item == Items.NONE or session.can_pick(item) else Items.NONE
 
 
 ## Pick tolerance in board pixels.

@@ -4,7 +4,6 @@ extends "res://addons/board_editor/tools/board_tool.gd"
 ## marked and deleted together on release, as one undo step. In mirror mode the mirrored
 ## partners go too. A pocket goes with all its pins; the goal cannot be erased, only moved.
 
-const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 
@@ -68,5 +67,5 @@ func _mark(at: Vector2) -> void:
 
 
 func _erasable(at: Vector2) -> Vector2i:
-	var item := HitTest.pick(level(), at, tolerance())
+	var item := pick(at)
 	return Items.NONE if item.x == Items.Kind.GOAL else item

@@ -4,7 +4,6 @@ extends "res://addons/board_editor/tools/board_tool.gd"
 ## gutter's ends (pachinko), the goal's radius (maze). Live preview, one undo step; right
 ## click or Escape while dragging puts the handle back.
 
-const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 
 const NAMES := {
@@ -77,6 +76,5 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	for handle: String in points:
 		Draw.handle(canvas, to_screen, points[handle], handle == hot)
 	if not hot.is_empty():
-		var at := to_screen * points[hot] + Vector2(10, -10)
-		var font := ThemeDB.fallback_font
-		canvas.draw_string(font, at, str(NAMES.get(hot, hot)), HORIZONTAL_ALIGNMENT_LEFT, -1, 14)
+		var at := to_screen * points[hot] + Vector2(12, -12)
+		Draw.label(canvas, at, str(NAMES.get(hot, hot)))

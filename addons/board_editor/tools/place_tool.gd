@@ -45,6 +45,9 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var spots := PackedVector2Array([spot])
 	if session.mirror_enabled and kind != Items.Kind.GOAL:
 		spots.append(Vector2(2.0 * session.mirror_axis() - spot.x, spot.y))
+	if kind == Items.Kind.PIN:
+		Draw.ghost_points(canvas, to_screen, spots, radius, level())
+		return
 	for point in spots:
 		Draw.circle(canvas, to_screen, point, radius, Draw.GHOST_COLOR, kind != Items.Kind.GOAL)
 

@@ -3,7 +3,6 @@ extends "res://addons/board_editor/tools/board_tool.gd"
 ## Select / move: click picks (shift adds, ctrl toggles), dragging empty space draws a
 ## selection box, dragging a selected item moves the selection (live, one undo step).
 
-const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 
@@ -22,7 +21,7 @@ func press(at: Vector2, event: InputEventMouseButton) -> bool:
 	_pressed = true
 	_press_at = at
 	_box_mode = 1 if event.shift_pressed else (2 if event.ctrl_pressed else 0)
-	_anchor = HitTest.pick(level(), at, tolerance())
+	_anchor = pick(at)
 	var selection: Array[Vector2i] = session.selection
 	if _anchor == Items.NONE:
 		_boxing = true
@@ -85,7 +84,7 @@ func cancel() -> bool:
 func draw(canvas: Control, to_screen: Transform2D) -> void:
 	if not _pressed:
 		# What a click would pick.
-		var under := HitTest.pick(level(), hover, tolerance())
+		var under := pick(hover)
 		if under != Items.NONE:
 			var at := to_screen * Items.position_of(level(), under)
 			canvas.draw_arc(at, 10.0, 0.0, TAU, 24, Color(Draw.SELECT_COLOR, 0.6), 1.0, true)
@@ -121,7 +120,8 @@ func _snapped_delta(raw: Vector2) -> Vector2:
 
 
 func _finish_box(rect: Rect2) -> void:
-	var found := HitTest.in_rect(level(), rect)
+	var found: Array[Vector2i] = []
+	found.assign(HitTest.in_rect(level(), rect).filter(session.can_pick))
 	var selection: Array[Vector2i] = session.selection.duplicate()
 	if _box_mode == 0:
 		selection = found

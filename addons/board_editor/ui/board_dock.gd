@@ -7,16 +7,28 @@ signal play_test_requested
 signal issue_focused(index: int)
 signal new_board_requested(kind: int)
 signal save_as_requested
+## A text field in the dock took the keyboard focus.
+signal field_focused
+## A field was submitted (Enter): the keyboard should go back to the viewport.
+signal focus_return_requested
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
+const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
+const ProblemsList := preload("res://addons/board_editor/ui/problems_list.gd")
+const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
+const AnalysisPanel := preload("res://addons/board_editor/analysis/analysis_panel.gd")
+
+## The play-analysis section (Analyze button, progress, figures).
+var analysis: AnalysisPanel
 
 var _title: Label
 var _counts: Label
 var _options: ToolOptions
-var _problems_title: Label
-var _problems: ItemList
+var _properties: PropertyPanel
+var _layers: LayersPanel
+var _problems: ProblemsList
 var _play: Button
 var _new_box: HBoxContainer
 var _save_as: Button
@@ -37,8 +49,11 @@ func _init() -> void:
 	_play.pressed.connect(func() -> void: play_test_requested.emit())
 	add_child(_play)
 	_save_as = Button.new()
-	_save_as.text = "Save board as a level file"
-	_save_as.tooltip_text = "Write the board to levels/<kind>/ so the games and play-test can load it."
+	_save_as.text = "Save board as..."
+	_save_as.tooltip_text = (
+		"Name the board and write it to levels/<kind>/<name>.board,\n"
+		+ "where the games and play-test find it."
+	)
 	_save_as.pressed.connect(func() -> void: save_as_requested.emit())
 	add_child(_save_as)
 	_new_box = HBoxContainer.new()
@@ -53,20 +68,51 @@ func _init() -> void:
 	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
 	add_child(_status)
+	analysis = AnalysisPanel.new()
+	add_child(analysis)
 	add_child(HSeparator.new())
+	# The panels scroll on their own, so the problem list below always keeps its room.
+	var scroll := ScrollContainer.new()
+	scroll.size_flags_vertical = Control.SIZE_EXPAND_FILL
+	scroll.size_flags_stretch_ratio = 1.5
+	scroll.custom_minimum_size = Vector2(0, 260)
+	scroll.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
+	add_child(scroll)
+	var panels := VBoxContainer.new()
+	panels.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+	scroll.add_child(panels)
+	_properties = PropertyPanel.new()
+	panels.add_child(_properties)
+	panels.add_child(HSeparator.new())
 	_options = ToolOptions.new()
-	add_child(_options)
+	panels.add_child(_options)
+	_layers = LayersPanel.new()
+	panels.add_child(_layers)
 	add_child(HSeparator.new())
-	_problems_title = Label.new()
-	add_child(_problems_title)
-	_problems = ItemList.new()
-	_problems.custom_minimum_size = Vector2(0, 160)
-	_problems.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	_problems.auto_height = false
-	_problems.item_selected.connect(func(index: int) -> void: issue_focused.emit(index))
+	_problems = ProblemsList.new()
+	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))
 	add_child(_problems)
 	show_board(null, [])
 	show_message("")
+	_watch_fields(self)
+
+
+# Every text field (the spin boxes' too) reports when it takes the focus and hands it
+# back on Enter, so the tool keys work again without a click that would also edit.
+func _watch_fields(node: Node) -> void:
+	for child in node.get_children():
+		_watch_fields(child)
+	var field := (node as SpinBox).get_line_edit() if node is SpinBox else node as LineEdit
+	if field == null:
+		if node is BaseButton:
+			(node as BaseButton).focus_mode = Control.FOCUS_NONE
+		return
+	field.focus_entered.connect(func() -> void: field_focused.emit())
+	field.text_submitted.connect(
+		func(_text: String) -> void:
+			field.release_focus()
+			focus_return_requested.emit()
+	)
 
 
 ## Shows a line of feedback under the buttons ("" hides it).
@@ -77,13 +123,18 @@ func show_message(text: String) -> void:
 
 ## Shows `session`'s board (null: nothing is being edited) and its problems. With
 ## `node_without_board` the selected BoardNode has no board yet: offer new ones.
-func show_board(session: Session, issues: Array[BoardIssue], node_without_board := false) -> void:
+func show_board(
+	session: Session, issues: Array[BoardIssue], node_without_board := false, focused_issue := -1
+) -> void:
 	var editing := session != null and session.level != null
+	analysis.bind(session.level if editing else null)
 	_play.disabled = not editing
 	_options.visible = editing
+	_properties.visible = editing
+	_layers.visible = editing
+	_layers.bind(session if editing else null)
 	_new_box.visible = node_without_board
-	var path := session.level.resource_path if editing else ""
-	_save_as.visible = editing and (path.is_empty() or path.contains("::"))
+	_save_as.visible = editing
 	if not editing:
 		_title.text = (
 			"This BoardNode has no board yet: start a new one."
@@ -91,8 +142,8 @@ func show_board(session: Session, issues: Array[BoardIssue], node_without_board 
 			else "Select a BoardNode with a board in a scene to edit it here."
 		)
 		_counts.text = ""
-		_problems_title.text = ""
-		_problems.clear()
+		_problems.show_issues([])
+		_problems.visible = false
 		return
 	var level := session.level
 	_title.text = (
@@ -118,50 +169,33 @@ func show_board(session: Session, issues: Array[BoardIssue], node_without_board 
 		]
 	)
 	_options.bind(session)
-	_show_issues(issues)
+	_properties.bind(session)
+	_problems.visible = true
+	_problems.show_issues(issues, focused_issue)
 
 
 ## Updates the tool settings (after a selection or settings change).
 func refresh_options() -> void:
 	_options.refresh()
+	_properties.refresh()
+	_layers.refresh()
+
+
+## The selection panel (the self-check types into its fields).
+func properties() -> PropertyPanel:
+	return _properties
+
+
+## The layers panel.
+func layers() -> LayersPanel:
+	return _layers
+
+
+## The problem list.
+func problems() -> ProblemsList:
+	return _problems
 
 
 ## Highlights problem `index` in the list (-1: none).
 func select_issue(index: int) -> void:
-	if index >= 0 and index < _problems.item_count:
-		_problems.select(index)
-	else:
-		_problems.deselect_all()
-
-
-func _show_issues(issues: Array[BoardIssue]) -> void:
-	var errors := 0
-	for issue in issues:
-		errors += 1 if issue.is_error() else 0
-	var selected := _problems.get_selected_items()
-	_problems.clear()
-	if issues.is_empty():
-		_problems_title.text = "No problems found."
-		return
-	_problems_title.text = (
-		"Problems: %d error%s, %d warning%s"
-		% [
-			errors,
-			"" if errors == 1 else "s",
-			issues.size() - errors,
-			"" if issues.size() - errors == 1 else "s",
-		]
-	)
-	var editor_theme := EditorInterface.get_editor_theme() if Engine.is_editor_hint() else null
-	for issue in issues:
-		var icon: Texture2D = null
-		if editor_theme != null:
-			icon = editor_theme.get_icon(
-				"StatusError" if issue.is_error() else "StatusWarning", "EditorIcons"
-			)
-		var index := _problems.add_item(issue.message, icon)
-		_problems.set_item_tooltip(
-			index, "%s at (%.0f, %.0f)" % [issue.kind, issue.position.x, issue.position.y]
-		)
-	if selected.size() == 1 and selected[0] < issues.size():
-		_problems.select(selected[0])
+	_problems.select_issue(index)

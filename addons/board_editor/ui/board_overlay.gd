@@ -8,6 +8,7 @@ const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Draw := preload("res://addons/board_editor/ui/overlay_draw.gd")
 const BoardTool := preload("res://addons/board_editor/tools/board_tool.gd")
+const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 
 ## Grid lines closer than this on screen are not drawn.
 const MIN_GRID_PIXELS := 7.0
@@ -33,6 +34,11 @@ static func draw(
 	for item in session.selection:
 		if Items.is_valid(level, item):
 			_draw_selected(canvas, to_screen, level, item)
+	var arc := session.selected_arc()
+	if not arc.is_empty():
+		var pins: PackedInt32Array = arc["pins"]
+		var ends := PackedVector2Array([level.pins[pins[0]], level.pins[pins[-1]]])
+		Draw.center_mark(canvas, to_screen, PinArc.center_of(arc), ends)
 	for i in issues.size():
 		_draw_issue(canvas, to_screen, issues[i], i == focused_issue)
 	tool.draw(canvas, to_screen)
@@ -93,13 +99,14 @@ static func _draw_issue(
 ) -> void:
 	var color := Draw.ERROR_COLOR if issue.is_error() else Draw.WARNING_COLOR
 	var at := to_screen * issue.position
+	if focused and issue.area.has_area():
+		# The whole area the problem covers (both items, the ring), as the jump framed it.
+		var box := Rect2(to_screen * issue.area.position, issue.area.size * to_screen.get_scale())
+		Draw.dashed_rect(canvas, box.grow(4.0), Color(color, 0.9))
 	var radius := 11.0 if focused else 8.0
 	canvas.draw_circle(at, radius, Color(color, 0.25))
 	canvas.draw_arc(at, radius, 0.0, TAU, 24, color, 2.0 if focused else 1.5, true)
 	var font := ThemeDB.fallback_font
 	canvas.draw_string(font, at + Vector2(-3, 5), "!", HORIZONTAL_ALIGNMENT_LEFT, -1, 13, color)
 	if focused:
-		var text_at := at + Vector2(radius + 4, 4)
-		var left := HORIZONTAL_ALIGNMENT_LEFT
-		canvas.draw_string(font, text_at + Vector2.ONE, issue.message, left, -1, 13, Color.BLACK)
-		canvas.draw_string(font, text_at, issue.message, left, -1, 13, Color.WHITE)
+		Draw.label(canvas, at + Vector2(radius + 8, 5), issue.message, color.lightened(0.5))

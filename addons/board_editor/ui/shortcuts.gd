@@ -2,27 +2,46 @@
 extends RefCounted
 ## The board editor's keyboard shortcuts. Editor plugins cannot use the game's input map,
 ## so the editor keys live here, in one table, shown in every tooltip. Undo and redo are
-## the editor's own Ctrl+Z / Ctrl+Shift+Z.
+## the editor's own Ctrl+Z / Ctrl+Shift+Z. The letters avoid Godot's own 2D keys (W move,
+## E rotate, S scale, R ruler, V pivot, G pan); Q picks Select, as it does in Godot. While a
+## board is edited every plain key over the viewport is the board tool's (BoardInput), so a
+## letter with no use here does nothing rather than switching a Godot tool.
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 
 ## Tool -> [key, name, tooltip].
 const TOOLS := {
 	Session.Tool.SELECT:
-	[KEY_V, "Select", "Click to pick, drag a box, shift adds, ctrl toggles; drag to move."],
+	[KEY_Q, "Select", "Click to pick, drag a box, shift adds, ctrl toggles; drag to move."],
 	Session.Tool.PIN: [KEY_P, "Pin", "Click to place a pin."],
 	Session.Tool.PATTERN:
 	[KEY_T, "Pattern", "Click to stamp a row, lattice, arc or circle of pins (set in the dock)."],
+	Session.Tool.CURVE:
+	[
+		KEY_C,
+		"Peg curve",
+		"Drag a curve: pins follow it, a set count end to end or one every spacing (dock)."
+	],
 	Session.Tool.POCKET:
 	[KEY_K, "Pocket", "Click to add a pocket: rim pins and special pin, sized in the dock."],
-	Session.Tool.WALL: [KEY_W, "Wall", "Click-drag a wall; snapped to the maze grid or free."],
-	Session.Tool.HOLE: [KEY_H, "Black hole", "Click to place a black hole (hard mode)."],
-	Session.Tool.GOAL: [KEY_G, "Goal", "Click to move the goal; resize it with the handles tool."],
+	Session.Tool.WALL: [KEY_L, "Wall", "Click-drag a wall; snapped to the maze grid or free."],
+	Session.Tool.HOLE: [KEY_O, "Black hole", "Click to place a black hole (hard mode)."],
+	Session.Tool.GOAL: [KEY_U, "Goal", "Click to move the goal; resize it with the handles tool."],
 	Session.Tool.START: [KEY_B, "Ball start", "Click to add a ball start (one ball each)."],
 	Session.Tool.HANDLES:
-	[KEY_R, "Handles", "Drag the ring, launch rail and gutter handles, or the goal's radius."],
+	[KEY_D, "Handles", "Drag the ring, launch rail and gutter handles, or the goal's radius."],
 	Session.Tool.ERASE:
-	[KEY_E, "Erase", "Click a pin, pocket, wall, hole or start to delete it; drag across many."],
+	[KEY_X, "Erase", "Click a pin, pocket, wall, hole or start to delete it; drag across many."],
+	Session.Tool.START_POCKET:
+	[
+		KEY_J,
+		"Start pocket",
+		"Click to add a start pocket (spins the reels); click one to remove it."
+	],
+	Session.Tool.ATTACKER:
+	[KEY_A, "Attacker", "Click to add an attacker (opens on a jackpot); click one to remove it."],
+	Session.Tool.TULIP:
+	[KEY_F, "Tulip", "Click to add a tulip (opens after a catch); click one to remove it."],
 }
 ## Toggles.
 const SNAP_KEY := KEY_N

@@ -1,18 +1,17 @@
 @tool
 extends VBoxContainer
 ## The dock's tool settings: the pin pattern (kind, count, spacing, rows, arc radius) and
-## the pocket inspector (width, depth, payout). With one pocket selected the pocket fields
-## edit that pocket (undoably, its pins re-stamped); otherwise they set the next pocket.
+## the size and payout of the next pocket placed. (A placed pocket is edited in the
+## Selection panel, PropertyPanel.)
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
-const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket_action.gd")
 
 var _session: Session
 var _kind: OptionButton
 var _fields: Dictionary[String, SpinBox] = {}
-var _pocket_title: Label
 var _pattern_box: VBoxContainer
+var _curve_box: VBoxContainer
 var _pocket_box: VBoxContainer
 
 
@@ -27,9 +26,10 @@ func _init() -> void:
 	_add_field(_pattern_box, "spacing", "Spacing (px)", 2, 200, 0.5)
 	_add_field(_pattern_box, "rows", "Rows (lattice)", 1, 40, 1)
 	_add_field(_pattern_box, "radius", "Radius (arc, px)", 5, 600, 1)
-	_pocket_box = _section("Pocket")
-	_pocket_title = Label.new()
-	_pocket_box.add_child(_pocket_title)
+	_curve_box = _section("Peg curve (C)")
+	_add_field(_curve_box, "curve_count", "Pins (0: by spacing)", 0, 200, 1)
+	_add_field(_curve_box, "curve_spacing", "Spacing (px)", 4, 200, 0.5)
+	_pocket_box = _section("Next pocket placed")
 	_add_field(_pocket_box, "width", "Width (px)", 4, 200, 1)
 	_add_field(_pocket_box, "depth", "Depth (px)", 4, 200, 1)
 	_add_field(_pocket_box, "payout", "Payout (balls)", 0, 99, 1)
@@ -47,26 +47,19 @@ func refresh() -> void:
 		return
 	var pachinko := _session.level.is_pachinko()
 	_pattern_box.visible = pachinko
+	_curve_box.visible = pachinko
+	var curve_count: int = _session.curve["count"]
+	var curve_spacing: float = _session.curve["spacing"]
+	_fields["curve_count"].set_value_no_signal(curve_count)
+	_fields["curve_spacing"].set_value_no_signal(curve_spacing)
 	_pocket_box.visible = pachinko
 	_kind.select(maxi(PatternAction.KINDS.find(str(_session.pattern["kind"])), 0))
 	for key: String in ["count", "spacing", "rows", "radius"]:
 		var setting: float = _session.pattern[key]
 		_fields[key].set_value_no_signal(setting)
-	var index := _session.selected_pocket()
-	var width := _session.pocket_width
-	var depth := _session.pocket_depth
-	var payout := _session.pocket_payout
-	if index >= 0:
-		var spec: PocketSpec = _session.level.pockets[index]
-		width = spec.width
-		depth = spec.depth
-		payout = spec.payout
-		_pocket_title.text = "Selected pocket %d" % (index + 1)
-	else:
-		_pocket_title.text = "Next pocket placed"
-	_fields["width"].set_value_no_signal(width)
-	_fields["depth"].set_value_no_signal(depth)
-	_fields["payout"].set_value_no_signal(payout)
+	_fields["width"].set_value_no_signal(_session.pocket_width)
+	_fields["depth"].set_value_no_signal(_session.pocket_depth)
+	_fields["payout"].set_value_no_signal(_session.pocket_payout)
 
 
 func _section(title: String) -> VBoxContainer:
@@ -105,6 +98,14 @@ func _on_pattern_changed(index: int) -> void:
 func _on_field_changed(value: float, key: String) -> void:
 	if _session == null:
 		return
+	if key.begins_with("curve_"):
+		var setting := key.trim_prefix("curve_")
+		if setting == "count":
+			_session.curve[setting] = int(value)
+		else:
+			_session.curve[setting] = value
+		_session.settings_changed.emit()
+		return
 	if _session.pattern.has(key):
 		if key in ["count", "rows"]:
 			_session.pattern[key] = int(value)
@@ -112,13 +113,6 @@ func _on_field_changed(value: float, key: String) -> void:
 			_session.pattern[key] = value
 		_session.settings_changed.emit()
 		return
-	var width := _fields["width"].value
-	var depth := _fields["depth"].value
-	var payout := int(_fields["payout"].value)
-	var index := _session.selected_pocket()
-	if index >= 0:
-		_session.commit(EditPocketAction.new(_session.level, index, width, depth, payout))
-	else:
-		_session.pocket_width = width
-		_session.pocket_depth = depth
-		_session.pocket_payout = payout
+	_session.pocket_width = _fields["width"].value
+	_session.pocket_depth = _fields["depth"].value
+	_session.pocket_payout = int(_fields["payout"].value)

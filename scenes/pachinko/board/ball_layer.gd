@@ -6,6 +6,13 @@ extends Node2D
 const BALL_TEXTURE_SIZE := 64
 ## The ball texture spans this many ball diameters: room for the ball's soft shadow.
 const SHADOW_SPAN := 1.6
+## Balls are drawn this much larger than their physical size, with a dark rim, so they
+## stand out on the busy fascia (the physics keeps the true radius).
+const DRAW_SCALE := 1.2
+
+## Where the ball's dark rim begins, as a share of its radius, and its colour.
+const RIM_FROM := 0.8
+const RIM_COLOR := Color(0.07, 0.05, 0.12)
 
 # Built once per run and shared by every ball layer.
 static var _shared_texture: ImageTexture
@@ -41,8 +48,9 @@ func _draw() -> void:
 		return
 	var started := Time.get_ticks_usec()
 	var positions := _rules.world.get_positions()
-	var size := Vector2(_radius, _radius) * 2.0 * SHADOW_SPAN
-	var offset := Vector2(_radius, _radius) * SHADOW_SPAN
+	var shown := _radius * DRAW_SCALE
+	var size := Vector2(shown, shown) * 2.0 * SHADOW_SPAN
+	var offset := Vector2(shown, shown) * SHADOW_SPAN
 	for p in positions:
 		draw_texture_rect(_texture, Rect2(p - offset, size), false)
 	var drawn := positions.size()
@@ -118,5 +126,9 @@ static func make_ball_image(size: int) -> Image:
 				* 0.25
 			)
 			var v := clampf(shade + spec * 0.9 + bounce, 0.0, 1.0)
-			image.set_pixel(x, y, Color(v * 0.93, v * 0.95, v, edge))
+			var steel := Color(v * 0.93, v * 0.95, v)
+			# A dark rim: the ball's outline reads on light and dark art alike.
+			var rim := clampf((d - RIM_FROM) / (1.0 - RIM_FROM), 0.0, 1.0)
+			steel = steel.lerp(RIM_COLOR, rim * 0.85)
+			image.set_pixel(x, y, Color(steel, edge))
 	return image

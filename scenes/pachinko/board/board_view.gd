@@ -12,6 +12,7 @@ const GutterArt := preload("res://scenes/pachinko/board/gutter_art.gd")
 const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
 const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
 const WinEffects := preload("res://scenes/pachinko/board/win_effects.gd")
+const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
 const FASCIA_SIZE := 1000.0
 ## How far the plate reaches beyond the ring, as a share of the ring radius.
 const PLATE_REACH := 1.1
@@ -48,10 +49,22 @@ func bind(rules: PachinkoRules) -> void:
 	for layer in layers:
 		layer.setup(level)
 	balls.bind(rules)
+	_pin_lights().bind(rules)
 	fascia.position = level.ring_center
 	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
 	_bake_scale = 0.0
 	_rebake()
+
+
+## The pin flashes, made on first use and drawn under the balls.
+func _pin_lights() -> PinLights:
+	var lights := get_node_or_null(^"PinLights") as PinLights
+	if lights == null:
+		lights = PinLights.new()
+		lights.name = "PinLights"
+		add_child(lights)
+		move_child(lights, balls.get_index())
+	return lights
 
 
 ## Scales and places the board so its plate fills `area` (screen pixels), centred.

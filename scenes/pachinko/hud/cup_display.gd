@@ -1,15 +1,24 @@
 extends Control
 ## The ball cup: a chrome tray heaped with balls (more balls, a bigger heap) and the count
-## written large on its front. The count bounces when balls are paid in.
+## written large on its front. Paid balls pour in from above one after another and the
+## count bounces as they land.
 
 const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
 const MAX_HEAP := 40
 const TRAY := Color("b9bfcc")
 const TRAY_DARK := Color("4b5064")
 
+## Most falling balls shown for one payout (a big one still pours for a moment).
+const MAX_POUR := 14
+## Seconds between two poured balls, and the fall's acceleration (px/s²).
+const POUR_GAP := 0.07
+const POUR_GRAVITY := 1500.0
+
 var _count := 0
 var _bump := 0.0
 var _ball: Texture2D
+## Balls falling into the cup: x, y, speed and seconds still to wait, per ball.
+var _falling: Array[Vector4] = []
 
 
 ## Shows `balls` balls; a rise bounces the number.
@@ -19,6 +28,21 @@ func set_count(balls: int) -> void:
 		set_process(true)
 	_count = balls
 	queue_redraw()
+
+
+## Pours `balls` paid balls into the cup (an animation; the count is already set).
+func pour(balls: int) -> void:
+	var shown := mini(balls, MAX_POUR)
+	for i in shown:
+		var x := size.x * 0.5 + (float(i % 5) - 2.0) * 14.0
+		_falling.append(Vector4(x, -12.0, 0.0, POUR_GAP * i))
+	if shown > 0:
+		set_process(true)
+
+
+## Balls still falling into the cup.
+func pouring() -> int:
+	return _falling.size()
 
 
 ## The count shown.
@@ -34,8 +58,21 @@ func _ready() -> void:
 
 func _process(delta: float) -> void:
 	_bump = maxf(_bump - delta * 3.0, 0.0)
+	var landing := size.y * 0.45
+	var still: Array[Vector4] = []
+	for ball in _falling:
+		if ball.w > 0.0:
+			ball.w -= delta
+		else:
+			ball.z += POUR_GRAVITY * delta
+			ball.y += ball.z * delta
+		if ball.y < landing:
+			still.append(ball)
+		else:
+			_bump = 1.0  # each landing ball bounces the count
+	_falling = still
 	queue_redraw()
-	if _bump <= 0.0:
+	if _bump <= 0.0 and _falling.is_empty():
 		set_process(false)
 
 
@@ -62,6 +99,10 @@ func _draw() -> void:
 			)
 			placed += 1
 		row += 1
+	for ball in _falling:
+		if ball.w <= 0.0:
+			var at := Vector2(ball.x, ball.y)
+			draw_texture_rect(_ball, Rect2(at - Vector2(r, r), Vector2(r, r) * 2.0), false)
 	# The tray in front of the heap.
 	var tray := PackedVector2Array(
 		[

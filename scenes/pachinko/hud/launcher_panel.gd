@@ -1,15 +1,27 @@
 extends Control
-## The launcher: a vertical power bar that fills red from 0 to 100 and the flipper lever,
-## which turns 0–20° with the power. A press on the lever starts a drawback (the game
-## tracks the drag from there); the loaded-ball light shows whether a shot is ready.
+## The launcher: a vertical power bar that fills red from 0 to 100, the flipper lever,
+## which turns 0–20° with the power, and the handle's dial. A press on the lever starts a
+## drawback (the game tracks the drag from there); a press on the dial holds the handle
+## (a stream of balls) and the wheel over it turns it; the loaded-ball light shows whether
+## a shot is ready.
 
 ## The pointer went down on the flipper at `at` (viewport coordinates).
 signal flipper_pressed(at: Vector2)
+## The pointer went down on the handle's dial at `at` (viewport coordinates).
+signal handle_pressed(at: Vector2)
+## The wheel turned over the dial: `notches` up (positive) or down.
+signal handle_turned(notches: float)
 
 const BAR := Rect2(12, 44, 34, 180)
 const PIVOT := Vector2(272, 196)
 const LEVER_LENGTH := 150.0
 const RED := Color("e23b3b")
+## The handle's dial: centre and radius; its pointer sweeps DIAL_SWEEP_DEG for 0..100.
+const DIAL_CENTER := Vector2(262, 92)
+const DIAL_RADIUS := 27.0
+const DIAL_START_DEG := 135.0
+const DIAL_SWEEP_DEG := 270.0
+const STREAM := Color("6cf07a")
 const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 var _power := 0.0
@@ -17,6 +29,8 @@ var _degrees := 0.0
 var _loaded := false
 var _blocked := false
 var _hint := ""
+var _handle_held := false
+var _handle_power := 0.0
 
 
 ## Shows the current drawback.
@@ -45,6 +59,18 @@ func set_hint(text: String) -> void:
 	queue_redraw()
 
 
+## Shows the handle: held (streaming) or not, and its strength.
+func set_handle(held: bool, power: float) -> void:
+	_handle_held = held
+	_handle_power = power
+	queue_redraw()
+
+
+## True when `local` (this control's coordinates) is on the handle's dial.
+func is_on_handle(local: Vector2) -> bool:
+	return local.distance_to(DIAL_CENTER) <= DIAL_RADIUS + 6.0
+
+
 ## True when `local` (this control's coordinates) is on the flipper lever.
 func is_on_flipper(local: Vector2) -> bool:
 	var lever := Transform2D(deg_to_rad(_degrees), PIVOT)
@@ -59,7 +85,19 @@ func _ready() -> void:
 
 func _gui_input(event: InputEvent) -> void:
 	var press := event as InputEventMouseButton
-	if press != null and press.pressed and press.button_index == MOUSE_BUTTON_LEFT:
+	if press == null or not press.pressed:
+		return
+	if is_on_handle(press.position):
+		match press.button_index:
+			MOUSE_BUTTON_LEFT:
+				handle_pressed.emit(press.global_position)
+			MOUSE_BUTTON_WHEEL_UP:
+				handle_turned.emit(press.factor if press.factor > 0.0 else 1.0)
+			MOUSE_BUTTON_WHEEL_DOWN:
+				handle_turned.emit(-(press.factor if press.factor > 0.0 else 1.0))
+		accept_event()
+		return
+	if press.button_index == MOUSE_BUTTON_LEFT:
 		if is_on_flipper(press.position):
 			flipper_pressed.emit(press.global_position)
 			accept_event()
@@ -68,6 +106,7 @@ func _gui_input(event: InputEvent) -> void:
 func _draw() -> void:
 	_draw_bar()
 	_draw_lever()
+	_draw_dial()
 	var font := get_theme_default_font()
 	var lamp_at := Vector2(BAR.position.x + 9.0, 16.0)
 	draw_circle(lamp_at, 9.0, Color("1c1a24"))
@@ -76,6 +115,9 @@ func _draw() -> void:
 	if _loaded and _blocked:
 		lamp = Color("f0b64a")
 		status = "Wait: a ball is rolling back"
+	elif _loaded and _handle_held:
+		lamp = STREAM
+		status = "Handle held: balls streaming"
 	elif _loaded:
 		lamp = Color("6cf07a")
 		status = "Ball ready: fire!"
@@ -87,11 +129,11 @@ func _draw() -> void:
 	for i in lines.size():
 		draw_string(
 			font,
-			Vector2(BAR.end.x + 22.0, BAR.position.y + 22.0 + i * 19.0),
+			Vector2(BAR.end.x + 22.0, BAR.position.y + 6.0 + i * 18.0),
 			lines[i],
 			HORIZONTAL_ALIGNMENT_LEFT,
 			-1,
-			14,
+			13,
 			Color("b8aee0")
 		)
 
@@ -155,3 +197,22 @@ func _draw_lever() -> void:
 		PackedVector2Array([tip + Vector2(0, -9), tip + Vector2(-7, 2), tip + Vector2(7, 2)]),
 		Color(1, 1, 1, 0.45)
 	)
+
+
+func _draw_dial() -> void:
+	var font := get_theme_default_font()
+	var lit := STREAM if _handle_held else Color("8a82aa")
+	draw_circle(DIAL_CENTER, DIAL_RADIUS + 4.0, Color("14111d"))
+	draw_circle(DIAL_CENTER, DIAL_RADIUS, Color("2a2536"))
+	var start := deg_to_rad(DIAL_START_DEG)
+	var sweep := deg_to_rad(DIAL_SWEEP_DEG)
+	var share := clampf(_handle_power / 100.0, 0.0, 1.0)
+	draw_arc(DIAL_CENTER, DIAL_RADIUS - 5.0, start, start + sweep, 40, Color("3b3548"), 5.0, true)
+	draw_arc(DIAL_CENTER, DIAL_RADIUS - 5.0, start, start + sweep * share, 40, lit, 5.0, true)
+	var pointer := Vector2.from_angle(start + sweep * share)
+	draw_line(DIAL_CENTER, DIAL_CENTER + pointer * (DIAL_RADIUS - 9.0), Color("eef1f7"), 4.0, true)
+	draw_circle(DIAL_CENTER, 7.0, RED.darkened(0.1) if not _handle_held else STREAM.darkened(0.2))
+	var label := "HANDLE %d" % roundi(_handle_power)
+	var width := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, 12).x
+	var at := DIAL_CENTER + Vector2(-width * 0.5, DIAL_RADIUS + 18.0)
+	draw_string(font, at, label, HORIZONTAL_ALIGNMENT_LEFT, -1, 12, lit.lightened(0.3))

@@ -10,7 +10,14 @@ const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 ## Plays `level` for up to `seconds` of simulated time with the pilot seeded by `rng_seed`.
 ## Returns won, time_to_win (-1 when not won), balls_in_goal (at the end),
 ## max_balls_in_goal, balls_lost_in_holes, frames_simulated, hard_mode, state_hash.
-static func run(level: BoardLevel, seconds: float, rng_seed: int, hard_mode := false) -> Dictionary:
+## A `recorder` (optional) records the run for a replay.
+static func run(
+	level: BoardLevel,
+	seconds: float,
+	rng_seed: int,
+	hard_mode := false,
+	recorder: ReplayRecorder = null
+) -> Dictionary:
 	if level == null or not level.is_maze():
 		push_error("MazeAutoplay: a maze board is needed")
 		return {"ok": false, "error": "MazeAutoplay: a maze board is needed"}
@@ -22,6 +29,8 @@ static func run(level: BoardLevel, seconds: float, rng_seed: int, hard_mode := f
 	var rng := RandomNumberGenerator.new()
 	rng.seed = rng_seed
 	var pilot := MazePilot.new(level, hard_mode, rng, rules.step_seconds())
+	if recorder != null:
+		recorder.attach_maze(rules, rng_seed)
 	rules.start()
 	var frames := 0
 	var most_in_goal := 0
@@ -30,6 +39,8 @@ static func run(level: BoardLevel, seconds: float, rng_seed: int, hard_mode := f
 		var world := rules.world
 		rules.set_tilt(pilot.decide(world.get_positions(), world.get_velocities()))
 		rules.step()
+		if recorder != null:
+			recorder.note_frame()
 		frames += 1
 		most_in_goal = maxi(most_in_goal, rules.balls_in_goal)
 	var won := rules.state == MazeRules.State.WON

@@ -25,6 +25,9 @@ signal goal_count_changed(balls_in_goal: int)
 enum State { READY, PLAYING, WON, LOST }
 
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
+## The tilt is kept in whole hundredths of a degree (too fine to feel), so a replay stores
+## it as whole numbers and plays it back bit for bit.
+const TILT_STEPS_PER_DEGREE := 100.0
 
 ## The board being played.
 var level: BoardLevel
@@ -82,7 +85,8 @@ func is_over() -> bool:
 ## Sets the board's tilt in degrees per axis, clamped to ±12°. Gravity and friction follow
 ## at once; the view eases its own picture of the board toward it.
 func set_tilt(tilt_deg: Vector2) -> void:
-	tilt = TiltInput.clamp_tilt(tilt_deg)
+	var steps := (TiltInput.clamp_tilt(tilt_deg) * TILT_STEPS_PER_DEGREE).round()
+	tilt = steps / TILT_STEPS_PER_DEGREE
 	_apply_tilt()
 
 
@@ -121,6 +125,19 @@ func step() -> void:
 	_apply_tilt()
 	world.step(_step_dt)
 	_after_steps(1)
+
+
+## Runs exactly `count` fixed steps as one frame, as `advance` does for a frame that ran
+## `count` steps; replays and the ghost play recorded frames with it. Returns the steps run
+## (0 unless playing).
+func run_steps(count: int) -> int:
+	if state != State.PLAYING or count <= 0:
+		return 0
+	_apply_tilt()
+	for i in count:
+		world.step(_step_dt)
+	_after_steps(count)
+	return count
 
 
 ## Length of one physics step, in seconds.

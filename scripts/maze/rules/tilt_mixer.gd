@@ -59,12 +59,12 @@ func has_accelerometer() -> bool:
 	return _last_accel.length() > MIN_ACCEL
 
 
-## Takes the current accelerometer reading as flat and hands control back to it.
+## Takes the current accelerometer reading as flat and hands control back to it, whichever
+## control had it (the joystick too: moving it once must not lock the phone out).
 func calibrate() -> void:
 	if has_accelerometer():
 		neutral = _last_accel
-		if source == Source.KEYS or source == Source.NONE:
-			source = Source.ACCELEROMETER
+		source = Source.ACCELEROMETER
 
 
 ## Flattens the board and forgets which control was used (a reset).

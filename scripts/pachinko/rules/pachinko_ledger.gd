@@ -44,9 +44,16 @@ func balances(cup: int, loaded: int, in_play: int) -> bool:
 	return cup + loaded + in_play + drained + won == given + paid
 
 
-## Balls paid back per ball shot (0 before the first shot).
+## Shots that reached the field: launches minus weak shots that rolled back to the cup.
+func field_shots() -> int:
+	return maxi(shots - returned, 0)
+
+
+## Balls paid back per ball that reached the field (0 before the first). A weak shot that
+## rolled back cost nothing, so it is not a shot here.
 func payout_ratio() -> float:
-	return float(paid) / float(shots) if shots > 0 else 0.0
+	var played := field_shots()
+	return float(paid) / float(played) if played > 0 else 0.0
 
 
 ## A plain snapshot for the stats panel, the autoplay JSON and tests.

@@ -41,11 +41,16 @@ const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibrat
 const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
 const Ledger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
 const StuckWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.gd")
+const PocketJam := preload("res://scripts/pachinko/rules/pocket_jam.gd")
+const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
 
 ## Power added per second while a key or button is held (full power in 1.25 s).
 const CHARGE_PER_SECOND := 80.0
 ## Speed of the nudge given to a resting ball, px/s.
 const NUDGE_SPEED := 70.0
+## A shot's power is kept in whole hundredths (too fine to feel), so a replay stores it as a
+## whole number and plays it back bit for bit.
+const POWER_STEP := 0.01
 
 ## The board being played.
 var level: BoardLevel
@@ -62,10 +67,16 @@ var power := 0.0
 var drawing := false
 ## Where every ball went (counters for the stats panel and the autoplay).
 var ledger: Ledger
+## The bonus layer: reels, attackers, tulips (idle on a board without bonus pockets).
+var bonus: BonusMachine
+## The handle: held, it streams balls at its strength (see launch_handle.gd); its
+## `changed` signal tells the view.
+var handle := LaunchHandle.new()
 
 var _in_play: Dictionary = {}
 var _origin := Vector2.ZERO
 var _watcher := StuckWatcher.new()
+var _jam := PocketJam.new()
 var _rng := RandomNumberGenerator.new()
 var _step_seconds := 1.0 / 60.0
 var _launch_pos := Vector2.ZERO
@@ -84,10 +95,12 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 		level = BoardLevel.new()
 		ledger = Ledger.new(0)
 		world = BallWorld.new()
+		bonus = BonusMachine.new(level, world, rng_seed)
 		return
 	level = board
 	ledger = Ledger.new(board.pockets.size())
 	world = BoardWorldFactory.build(board)
+	bonus = BonusMachine.new(board, world, rng_seed)
 	# The world's own tuning: the board's, or the defaults when the board has none.
 	_step_seconds = 1.0 / maxf(world.tuning.fixed_hz, 1.0)
 	_launch_pos = LaunchRail.launch_position(board)
@@ -148,6 +161,13 @@ func set_power(value: float) -> void:
 		_set_power(clampf(value, 0.0, LaunchPower.MAX_POWER))
 
 
+## Lets go of the flipper without firing (the game was paused mid-drawback, and the
+## release may never arrive): power drops to zero and the next press starts afresh.
+func cancel_draw() -> void:
+	drawing = false
+	_set_power(0.0)
+
+
 ## Lets the flipper go. With some power and a loaded ball it fires; returns the new ball's
 ## id, or -1 when nothing was fired.
 func release() -> int:
@@ -166,6 +186,7 @@ func release() -> int:
 func fire(shot_power: float) -> int:
 	if state != State.PLAYING or not loaded or rail_blocked():
 		return -1
+	shot_power = snappedf(shot_power, POWER_STEP)
 	var speed := launch_speed(shot_power)
 	var id := world.spawn_ball(_launch_pos, _launch_dir * speed, level.ball_radius)
 	if id < 0:
@@ -175,6 +196,16 @@ func fire(shot_power: float) -> int:
 	ledger.shots += 1
 	ball_launched.emit(id, shot_power, speed)
 	_load_next()
+	return id
+
+
+## Puts an extra ball in play at `at` moving at `velocity` (tests and tools: a ball dropped
+## onto the field). It counts as given, not as a shot. Returns its id, or -1.
+func place_ball(at: Vector2, velocity: Vector2 = Vector2.ZERO) -> int:
+	var id := world.spawn_ball(at, velocity, level.ball_radius)
+	if id >= 0:
+		_in_play[id] = true
+		ledger.given += 1
 	return id
 
 
@@ -194,6 +225,14 @@ func advance(delta: float) -> int:
 	var steps := world.advance(delta)
 	_after_steps(steps)
 	return steps
+
+
+## Runs exactly `count` fixed steps as one frame, as `advance` does for a frame that ran
+## `count` steps; replays play recorded frames with it.
+func run_steps(count: int) -> void:
+	for i in count:
+		world.step(_step_seconds)
+	_after_steps(count)
 
 
 ## Runs exactly one fixed simulation step.
@@ -217,11 +256,6 @@ func ball_ids() -> Array:
 	return _in_play.keys()
 
 
-## Flipper rotation for the current drawback, degrees (0..20).
-func flipper_degrees() -> float:
-	return LaunchPower.flipper_degrees(power)
-
-
 ## True when cup + loaded + in play + drained + won adds up to every ball given or paid,
 ## and the world holds exactly the balls the rules think are in play.
 func accounting_ok() -> bool:
@@ -239,14 +273,25 @@ func stats() -> Dictionary:
 	out["game_payouts"] = ledger.paid - _game_start_paid
 	out["game_shots"] = ledger.shots - _game_start_shots
 	out["accounting_ok"] = accounting_ok()
+	out.merge(bonus.counters())
 	return out
 
 
 func _after_steps(steps: int) -> void:
+	if steps > 0:
+		bonus.advance(steps * _step_seconds)
+	if steps > 0 and handle.update(steps * _step_seconds) and fire(handle.shot_power(_rng)) >= 0:
+		handle.fired()
 	if steps <= 0 or _in_play.is_empty():
 		return
 	_reconcile()
-	for id in _watcher.update(world, _in_play.keys(), steps * _step_seconds):
+	var seconds := steps * _step_seconds
+	var jammed := _jam.update(level, world, _in_play.keys(), seconds)
+	for id: int in jammed:
+		var pocket: int = jammed[id]
+		world.remove_ball(id)
+		_on_ball_pocketed(id, pocket)
+	for id in _watcher.update(world, _in_play.keys(), seconds):
 		_nudge(id)
 
 
@@ -284,12 +329,14 @@ func _load_next() -> void:
 func _leave_play(id: int) -> void:
 	_in_play.erase(id)
 	_watcher.forget(id)
+	_jam.forget(id)
 
 
 func _check_game_over() -> void:
 	if state == State.PLAYING and cup == 0 and not loaded and _in_play.is_empty():
 		drawing = false
 		_set_power(0.0)
+		handle.let_go()
 		_set_state(State.GAME_OVER)
 		game_ended.emit(stats())
 
@@ -315,6 +362,10 @@ func _on_ball_pocketed(ball_id: int, pocket_id: int) -> void:
 	if pocket_id >= 0 and pocket_id < level.pockets.size():
 		payout = maxi(level.pockets[pocket_id].payout, 0)
 		at = level.pockets[pocket_id].position
+	elif BonusGeometry.bonus_index(level, pocket_id) >= 0:
+		var index := BonusGeometry.bonus_index(level, pocket_id)
+		payout = bonus.catch(index)
+		at = level.bonus_pockets[index].position
 	ledger.record_win(pocket_id, payout)
 	cup += payout
 	cup_changed.emit(cup)

@@ -90,7 +90,7 @@ func set_gravity(g: Vector2) -> void:
 
 ## Maze tilt in degrees → gravity, as MazeTilt maps it for BallWorld.
 func tilt(deg: Vector2) -> void:
-	set_gravity(MazeTilt.gravity(deg, PhysicsTuning.maze_defaults().tilt_gravity))
+	set_gravity(MazeTilt.gravity(deg, TuningPresets.maze().tilt_gravity))
 
 
 ## Every ball's centre, in spawn order (the order of the scene's `pos`).

@@ -40,7 +40,7 @@ class OursSide:
 ## The scene as a BallWorld with the seed tuning for its mode.
 static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	var maze: bool = scene["mode"] == "maze"
-	var t := PhysicsTuning.maze_defaults() if maze else PhysicsTuning.pachinko_defaults()
+	var t := TuningPresets.maze() if maze else TuningPresets.pachinko()
 	t.fixed_hz = scene["hz"]
 	if scene["mode"] == "fast":
 		t.max_speed = 4000.0

@@ -1,0 +1,209 @@
+@tool
+extends VBoxContainer
+## The dock's play-analysis section: Analyze fires AnalysisPlan.EDITOR_SHOTS shots at the
+## board on worker threads (PachinkoAnalysis) while the editor stays responsive, with a
+## progress bar and Cancel; the figures and the heat map update as chunks of shots finish.
+## A finished run is cached per board content (AnalysisCache), so reopening a board, or
+## undoing back to an analysed state, shows its figures at once. The overlay itself is
+## drawn by analysis_overlay_draw.gd when the plugin calls draw_over().
+
+## The overlay should be redrawn (new figures, or none to show).
+signal redraw_needed
+## A run finished or the shown result changed: the board's problem list may change.
+signal results_changed
+
+const OverlayDraw := preload("res://addons/board_editor/analysis/analysis_overlay_draw.gd")
+## Partial figures are refreshed at most this often while a run goes on, ms.
+const UPDATE_MS := 400
+
+## Shots a run fires (tests fire fewer).
+var shots := AnalysisPlan.EDITOR_SHOTS
+
+var _level: BoardLevel
+var _key := ""
+var _report: Dictionary = {}
+var _heat: ImageTexture
+var _run: PachinkoAnalysis
+var _run_key := ""
+var _run_level: BoardLevel
+var _run_started := 0
+var _last_update := 0
+var _shown_shots := -1
+
+var _analyze: Button
+var _cancel: Button
+var _progress: ProgressBar
+var _status: Label
+var _show: CheckBox
+
+
+func _init() -> void:
+	name = "PlayAnalysis"
+	var title := Label.new()
+	title.text = "Play analysis"
+	add_child(title)
+	var row := HBoxContainer.new()
+	_analyze = Button.new()
+	_analyze.text = "Analyze"
+	_analyze.tooltip_text = (
+		"Fire %d shots at random power on worker threads: heat map, pocket rates, aim map" % shots
+	)
+	_analyze.pressed.connect(start)
+	row.add_child(_analyze)
+	_cancel = Button.new()
+	_cancel.text = "Cancel"
+	_cancel.disabled = true
+	_cancel.pressed.connect(cancel)
+	row.add_child(_cancel)
+	_show = CheckBox.new()
+	_show.text = "Show"
+	_show.button_pressed = true
+	_show.toggled.connect(func(_on: bool) -> void: redraw_needed.emit())
+	row.add_child(_show)
+	add_child(row)
+	_progress = ProgressBar.new()
+	_progress.max_value = 1.0
+	_progress.visible = false
+	add_child(_progress)
+	_status = Label.new()
+	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+	add_child(_status)
+	set_process(false)
+
+
+## Shows the analysis of `level` (null or a maze: the section hides). Called after every
+## edit: a changed board shows its cached figures, or none.
+func bind(level: BoardLevel) -> void:
+	visible = level != null and level.is_pachinko()
+	_level = level if visible else null
+	var key := AnalysisCache.key_for(_plan_for(_level)) if _level != null else ""
+	if key == _key:
+		return
+	_key = key
+	if _run != null and _run_key == key:
+		return  # the running analysis is of this very content: keep its partial figures
+	_report = AnalysisCache.load_report(key) if not key.is_empty() else {}
+	var image := AnalysisCache.load_heatmap(key) if not _report.is_empty() else null
+	_heat = ImageTexture.create_from_image(image) if image != null else null
+	_say_result()
+	redraw_needed.emit()
+	results_changed.emit()
+
+
+## Starts an analysis of the bound board (a snapshot of it: edits during the run do not
+## reach the worker threads).
+func start() -> void:
+	if _level == null or _run != null:
+		return
+	_run_level = _level.duplicate_level()
+	var plan := _plan_for(_run_level)
+	plan.threads = OS.get_processor_count()
+	_run_key = _key
+	_run = PachinkoAnalysis.new(plan)
+	if not _run.start():
+		_status.text = "This board cannot be analysed: %s." % plan.problem()
+		_run = null
+		return
+	_run_started = Time.get_ticks_msec()
+	_shown_shots = -1
+	_analyze.disabled = true
+	_cancel.disabled = false
+	_progress.visible = true
+	_progress.value = 0.0
+	_status.text = "Climbing the rail at every power..."
+	set_process(true)
+
+
+## Stops the running analysis; the shots finished so far stay on the board.
+func cancel() -> void:
+	if _run != null:
+		_run.cancel()
+
+
+## True while an analysis runs.
+func is_running() -> bool:
+	return _run != null
+
+
+## The figures shown (an AnalysisReport dictionary; empty when none).
+func report() -> Dictionary:
+	return _report
+
+
+## Draws the figures over the board (the plugin calls it from its viewport overlay).
+func draw_over(canvas: Control, to_screen: Transform2D) -> void:
+	if _level != null and _show.button_pressed and (_run == null or _run_key == _key):
+		OverlayDraw.draw(canvas, to_screen, _level, _report, _heat)
+
+
+func _process(_delta: float) -> void:
+	if _run == null:
+		set_process(false)
+		return
+	var done := _run.poll()
+	_progress.value = _run.progress()
+	if done:
+		_finish()
+	elif Time.get_ticks_msec() - _last_update >= UPDATE_MS:
+		_last_update = Time.get_ticks_msec()
+		_show_partial(false)
+
+
+# Rebuilds the figures and heat map from the chunks finished so far; `final` ones (the
+# whole run) go into the cache.
+func _show_partial(final: bool) -> void:
+	var tally := _run.tally()
+	if tally == null or (tally.total_shots() == _shown_shots and not final):
+		return
+	_shown_shots = tally.total_shots()
+	var seconds := (Time.get_ticks_msec() - _run_started) / 1000.0
+	var fresh := AnalysisReport.build(_run.plan, tally, seconds)
+	var image := HeatmapImage.render_overlay(tally)
+	if _run_key == _key:
+		_report = fresh
+		_heat = ImageTexture.create_from_image(image)
+		redraw_needed.emit()
+	_status.text = (
+		"%d of %d shots (%.0f shots/s)..." % [_shown_shots, _run.plan.shots, fresh["shots_per_s"]]
+	)
+	if final:
+		var saved := AnalysisCache.save(_run_key, fresh, image)
+		if saved != OK:
+			push_warning("Play analysis: could not cache the result (%s)" % error_string(saved))
+
+
+func _finish() -> void:
+	var cancelled := _run.phase == PachinkoAnalysis.Phase.CANCELLED
+	_show_partial(not cancelled)
+	var seconds := (Time.get_ticks_msec() - _run_started) / 1000.0
+	_run = null
+	_analyze.disabled = false
+	_cancel.disabled = true
+	_progress.visible = false
+	set_process(false)
+	if cancelled:
+		_status.text = "Cancelled: the figures are from the %d shots done." % maxi(_shown_shots, 0)
+	else:
+		_say_result()
+		_status.text += "\n%d shots in %.1f s." % [shots, seconds]
+	redraw_needed.emit()
+	results_changed.emit()
+
+
+func _say_result() -> void:
+	if _report.is_empty():
+		_status.text = "Not analysed since the last edit." if _level != null else ""
+		return
+	var dead: Array = _report.get("dead_pockets", [])
+	_status.text = (
+		"Return %.2f ± %.2f balls per ball; %s."
+		% [
+			AnalysisReport.number(_report.get("return", 0.0)),
+			AnalysisReport.number(_report.get("return_ci95", 0.0)),
+			"no dead pockets" if dead.is_empty() else "%d dead pocket(s)" % dead.size(),
+		]
+	)
+
+
+func _plan_for(level: BoardLevel) -> AnalysisPlan:
+	return AnalysisPlan.create(level, shots, 1)

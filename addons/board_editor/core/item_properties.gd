@@ -1,0 +1,87 @@
+@tool
+extends RefCounted
+## What the property panel shows and edits for a selection of one item: exact x / y for
+## pins, holes, starts and the goal; a pocket's mouth, width, depth and payout; a wall's two
+## ends; the goal's radius. Each field edit becomes one action (one undo step).
+
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
+const SetPointAction := preload("res://addons/board_editor/actions/set_point_action.gd")
+const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket_action.gd")
+const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
+
+## Field key -> [label, lowest, highest, step]; positions are limited by the board size.
+const FIELDS := {
+	"x": ["x (px)", -50.0, 2000.0, 0.5],
+	"y": ["y (px)", -50.0, 2000.0, 0.5],
+	"ax": ["End A x (px)", -50.0, 2000.0, 0.5],
+	"ay": ["End A y (px)", -50.0, 2000.0, 0.5],
+	"bx": ["End B x (px)", -50.0, 2000.0, 0.5],
+	"by": ["End B y (px)", -50.0, 2000.0, 0.5],
+	"width": ["Width (px)", 4.0, 200.0, 1.0],
+	"depth": ["Depth (px)", 4.0, 200.0, 1.0],
+	"payout": ["Payout (balls)", 0.0, 99.0, 1.0],
+	"radius": ["Radius (px)", 6.0, 200.0, 0.5],
+}
+const POINT_FIELD := {
+	Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "ball_starts"
+}
+
+
+## The editable fields of `item` in display order, with their current values.
+static func values_of(level: BoardLevel, item: Vector2i) -> Dictionary:
+	if not Items.is_valid(level, item):
+		return {}
+	var at := Items.position_of(level, item)
+	match item.x:
+		Items.Kind.POCKET:
+			var spec: PocketSpec = level.pockets[item.y]
+			return {
+				"x": at.x,
+				"y": at.y,
+				"width": spec.width,
+				"depth": spec.depth,
+				"payout": float(spec.payout)
+			}
+		Items.Kind.WALL:
+			var a := level.walls[item.y * 2]
+			var b := level.walls[item.y * 2 + 1]
+			return {"ax": a.x, "ay": a.y, "bx": b.x, "by": b.y}
+		Items.Kind.GOAL:
+			return {"x": at.x, "y": at.y, "radius": level.goal_radius}
+	return {"x": at.x, "y": at.y}
+
+
+## The action that sets field `key` of `item` to `value`, or null when nothing changes.
+static func action_for(level: BoardLevel, item: Vector2i, key: String, value: float) -> BoardAction:
+	var now := values_of(level, item)
+	var current: float = now.get(key, NAN)
+	if not now.has(key) or is_equal_approx(current, value):
+		return null
+	var at := Items.position_of(level, item)
+	var target := Vector2(value, at.y) if key == "x" else Vector2(at.x, value)
+	match item.x:
+		Items.Kind.POCKET:
+			if key in ["x", "y"]:
+				return MoveItemsAction.new(level, [item] as Array[Vector2i], target - at)
+			var spec: PocketSpec = level.pockets[item.y]
+			var width := value if key == "width" else spec.width
+			var depth := value if key == "depth" else spec.depth
+			var payout := int(value) if key == "payout" else spec.payout
+			return EditPocketAction.new(level, item.y, width, depth, payout)
+		Items.Kind.WALL:
+			var end := item.y * 2 + (1 if key.begins_with("b") else 0)
+			var point := level.walls[end]
+			point = Vector2(value, point.y) if key.ends_with("x") else Vector2(point.x, value)
+			return SetPointAction.new(level, "walls", end, point, "Set wall end")
+		Items.Kind.GOAL:
+			if key == "radius":
+				return SetPropertiesAction.new(level, {"goal_radius": value}, "Set goal radius")
+			return SetPropertiesAction.new(level, {"goal_center": target}, "Set goal position")
+	var field: String = POINT_FIELD[item.x]
+	return SetPointAction.new(level, field, item.y, target, "Set %s position" % _noun(item))
+
+
+## A short name for the item's kind ("pin", "ball start").
+static func _noun(item: Vector2i) -> String:
+	return ["pin", "pocket", "wall", "black hole", "ball start", "goal"][item.x]

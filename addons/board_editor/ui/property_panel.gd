@@ -1,0 +1,142 @@
+@tool
+extends VBoxContainer
+## The dock's "Selection" panel: exact numbers for the one selected item (ItemProperties),
+## each change one undo step; with several items selected, their count, align and space
+## buttons, and for pins on an arc the arc's shape (ArcFields).
+
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
+const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
+const Arrange := preload("res://addons/board_editor/core/arrange.gd")
+const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
+const ArcFields := preload("res://addons/board_editor/ui/arc_fields.gd")
+
+## Align buttons: [label, Arrange mode, tooltip].
+const ALIGN_BUTTONS := [
+	["Left", "left", "Line the selected items up on the leftmost one."],
+	["Centre", "center_x", "Line them up on a vertical line through their middle."],
+	["Right", "right", "Line them up on the rightmost one."],
+	["Top", "top", "Line them up on the topmost one."],
+	["Middle", "center_y", "Line them up on a horizontal line through their middle."],
+	["Bottom", "bottom", "Line them up on the lowest one."],
+]
+
+var _session: Session
+var _title: Label
+var _rows: Dictionary[String, HBoxContainer] = {}
+var _fields: Dictionary[String, SpinBox] = {}
+var _arrange: HFlowContainer
+var _arc_fields: ArcFields
+
+
+func _init() -> void:
+	var heading := Label.new()
+	heading.text = "Selection"
+	heading.add_theme_color_override("font_color", Color(0.6, 0.8, 1.0))
+	add_child(heading)
+	_title = Label.new()
+	_title.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+	add_child(_title)
+	for key: String in ItemProperties.FIELDS:
+		var spec: Array = ItemProperties.FIELDS[key]
+		var row := HBoxContainer.new()
+		var label := Label.new()
+		label.text = spec[0]
+		label.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+		row.add_child(label)
+		var spin := SpinBox.new()
+		spin.min_value = spec[1]
+		spin.max_value = spec[2]
+		spin.step = spec[3]
+		spin.custom_minimum_size = Vector2(96, 0)
+		spin.value_changed.connect(_on_value_changed.bind(key))
+		row.add_child(spin)
+		add_child(row)
+		_rows[key] = row
+		_fields[key] = spin
+	# The arc's shape first: with a long selection the align buttons are the less often used.
+	_arc_fields = ArcFields.new()
+	add_child(_arc_fields)
+	_arrange = HFlowContainer.new()
+	add_child(_arrange)
+	for entry: Array in ALIGN_BUTTONS:
+		var tip: String = entry[2]
+		_arrange_button("Align " + str(entry[0]), tip, align.bind(str(entry[1])))
+	_arrange_button("Space across", "Space them evenly from left to right.", distribute.bind("x"))
+	_arrange_button("Space down", "Space them evenly from top to bottom.", distribute.bind("y"))
+
+
+## Lines the selection up (Arrange.ALIGN_MODES); one undo step.
+func align(mode: String) -> void:
+	var offsets := Arrange.align_offsets(_session.level, _session.selection, mode)
+	if not offsets.is_empty():
+		_session.commit(ArrangeAction.new(_session.level, offsets, "Align %s" % mode))
+
+
+## Spaces the selection evenly along "x" or "y"; one undo step.
+func distribute(axis: String) -> void:
+	var offsets := Arrange.distribute_offsets(_session.level, _session.selection, axis)
+	if not offsets.is_empty():
+		_session.commit(ArrangeAction.new(_session.level, offsets, "Distribute along %s" % axis))
+
+
+func _arrange_button(text: String, tooltip: String, action: Callable) -> void:
+	var button := Button.new()
+	button.text = text
+	button.tooltip_text = tooltip
+	button.focus_mode = Control.FOCUS_NONE
+	button.pressed.connect(func() -> void: action.call())
+	_arrange.add_child(button)
+
+
+## Shows `session`'s selection and edits it from now on.
+func bind(session: Session) -> void:
+	_session = session
+	_arc_fields.bind(session)
+	refresh()
+
+
+## The field for `key` (tests and the screenshot hook type into it); arc fields are
+## "arc_" + a PinArc key ("arc_radius").
+func field(key: String) -> SpinBox:
+	if key.begins_with("arc_"):
+		return _arc_fields.field(key.trim_prefix("arc_"))
+	return _fields[key]
+
+
+## Updates the title and the fields from the selection.
+func refresh() -> void:
+	var values := {}
+	if _session == null or _session.level == null:
+		_title.text = ""
+	elif _session.selection.size() == 1:
+		var item: Vector2i = _session.selection[0]
+		values = ItemProperties.values_of(_session.level, item)
+		_title.text = ItemNames.title(_session.level, item)
+	elif _session.selection.is_empty():
+		_title.text = "Nothing selected: click an item with the Select tool (Q)."
+	else:
+		_title.text = "%d items selected: align or space them." % _session.selection.size()
+	var arc := _session.selected_arc() if _session != null else {}
+	if not arc.is_empty():
+		_title.text = (
+			"An arc of %d pins: shape it below, or align or space them." % _session.selection.size()
+		)
+	_arc_fields.show_arc(arc)
+	_arrange.visible = _session != null and _session.selection.size() >= 2
+	for key: String in _rows:
+		_rows[key].visible = values.has(key)
+		if values.has(key):
+			var value: float = values[key]
+			_fields[key].set_value_no_signal(value)
+
+
+func _on_value_changed(value: float, key: String) -> void:
+	if _session == null or _session.selection.size() != 1:
+		return
+	var item: Vector2i = _session.selection[0]
+	var action := ItemProperties.action_for(_session.level, item, key, value)
+	if action != null:
+		_session.commit(action)
+	refresh()

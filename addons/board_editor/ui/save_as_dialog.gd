@@ -1,0 +1,90 @@
+@tool
+extends ConfirmationDialog
+## "Save board as": the designer names the board and picks its file, levels/<kind>/<id>.board.
+## The file name follows the name as it is typed and can be edited; the path and any problem
+## (a bad or taken name) show before Save is allowed.
+
+## The designer confirmed: `file_id` names levels/<kind>/<file_id>.board.
+signal save_confirmed(file_id: String, display_name: String)
+
+const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+
+var _kind := BoardLevel.Kind.PACHINKO
+var _name_field: LineEdit
+var _id_field: LineEdit
+var _path_label: Label
+var _id_edited := false
+
+
+func _init() -> void:
+	title = "Save board as"
+	ok_button_text = "Save"
+	var grid := GridContainer.new()
+	grid.columns = 2
+	_name_field = _row(grid, "Board name", "Shown in the level list, e.g. Tulip Garden")
+	_id_field = _row(grid, "File name", "lower_case_with_underscores")
+	_path_label = Label.new()
+	_path_label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+	_path_label.custom_minimum_size = Vector2(380, 0)
+	var box := VBoxContainer.new()
+	box.add_child(grid)
+	box.add_child(_path_label)
+	add_child(box)
+	_name_field.text_changed.connect(_on_name_changed)
+	_id_field.text_changed.connect(
+		func(_text: String) -> void:
+			_id_edited = true
+			_update()
+	)
+	confirmed.connect(_on_confirmed)
+	register_text_enter(_id_field)
+	register_text_enter(_name_field)
+
+
+## Opens the dialog for `level`, starting from its current name.
+func open_for(level: BoardLevel) -> void:
+	_kind = level.kind
+	_name_field.text = level.display_name
+	_id_edited = false
+	_id_field.text = BoardFiles.file_id_for(level.display_name)
+	_update()
+	popup_centered()
+	_name_field.grab_focus()
+	_name_field.select_all()
+
+
+## The file the dialog would write now.
+func chosen_path() -> String:
+	return BoardFiles.path_for(_kind, _id_field.text)
+
+
+func _row(grid: GridContainer, text: String, hint: String) -> LineEdit:
+	var label := Label.new()
+	label.text = text
+	grid.add_child(label)
+	var field := LineEdit.new()
+	field.placeholder_text = hint
+	field.custom_minimum_size = Vector2(260, 0)
+	grid.add_child(field)
+	return field
+
+
+func _on_name_changed(text: String) -> void:
+	if not _id_edited:
+		_id_field.text = BoardFiles.file_id_for(text)
+	_update()
+
+
+func _update() -> void:
+	var problem := BoardFiles.new_file_problem(_kind, _id_field.text)
+	if _name_field.text.strip_edges().is_empty():
+		problem = "Give the board a name."
+	get_ok_button().disabled = not problem.is_empty()
+	_path_label.text = problem if not problem.is_empty() else "Writes " + chosen_path()
+	var color := Color(1.0, 0.6, 0.4) if not problem.is_empty() else Color(0.7, 0.9, 0.7)
+	_path_label.add_theme_color_override("font_color", color)
+
+
+func _on_confirmed() -> void:
+	if BoardFiles.new_file_problem(_kind, _id_field.text).is_empty():
+		save_confirmed.emit(_id_field.text, _name_field.text.strip_edges())

@@ -1,0 +1,56 @@
+extends Node3D
+## The ghost of the best run in the 3D maze: translucent balls standing where the best run's
+## balls were at the same step. It lives on the tilting board (the stage's `add_on_board`),
+## so it tilts with it; it casts no shadow and takes no light, so it reads as "not a real
+## ball" beside the lit ones. Call `show_balls` every frame and `clear` on a reset.
+
+const Meshes := preload("res://scenes/maze/maze_meshes.gd")
+## The ghost's colour: the seed's ball washed out, see-through.
+const FILL := Color(0.62, 0.5, 0.95, 0.42)
+
+## Ghost ball positions last shown, in board pixels (read by tests).
+var shown_positions := PackedVector2Array()
+
+var _board_size := Vector2(350.0, 315.0)
+var _mesh := SphereMesh.new()
+var _material := StandardMaterial3D.new()
+var _nodes: Array[MeshInstance3D] = []
+
+
+func _init() -> void:
+	_mesh.rings = 8
+	_mesh.radial_segments = 16
+	_material.shading_mode = BaseMaterial3D.SHADING_MODE_UNSHADED
+	_material.transparency = BaseMaterial3D.TRANSPARENCY_ALPHA
+	_material.albedo_color = FILL
+
+
+## Sets the board size (pixels) that positions are measured on.
+func set_board_size(board_size: Vector2) -> void:
+	_board_size = board_size
+
+
+## Shows ghost balls at `positions` (board pixels) with `radius` pixels.
+func show_balls(positions: PackedVector2Array, radius: float) -> void:
+	shown_positions = positions
+	_mesh.radius = radius * Meshes.UNITS_PER_PX
+	_mesh.height = radius * 2.0 * Meshes.UNITS_PER_PX
+	while _nodes.size() < positions.size():
+		var node := MeshInstance3D.new()
+		node.mesh = _mesh
+		node.material_override = _material
+		node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		add_child(node)
+		_nodes.append(node)
+	for i in _nodes.size():
+		var node := _nodes[i]
+		node.visible = i < positions.size()
+		if node.visible:
+			node.position = Meshes.to_local(_board_size, positions[i], radius)
+
+
+## Hides the ghost.
+func clear() -> void:
+	shown_positions = PackedVector2Array()
+	for node in _nodes:
+		node.visible = false

@@ -1,0 +1,77 @@
+extends Node
+## Wires the bonus layer's pictures and sounds to a game: puts the bonus art and the reels
+## into the board view under the balls and the jackpot moment over them, and answers the
+## BonusMachine's signals (lamps, reel sounds, the jackpot, tulips opening).
+
+const BonusArt := preload("res://scenes/pachinko/bonus/bonus_art.gd")
+const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
+const JackpotBanner := preload("res://scenes/pachinko/bonus/jackpot_banner.gd")
+
+var art := BonusArt.new()
+var reels := ReelDisplay.new()
+var banner := JackpotBanner.new()
+
+var _sounds: SoundBank
+var _rules: PachinkoRules
+
+
+## Adds the layers to `board_view` (a Node2D with a "Balls" child) and keeps `sounds`.
+func attach(board_view: Node2D, sounds: SoundBank) -> void:
+	_sounds = sounds
+	var balls := board_view.get_node_or_null("Balls")
+	var under := balls.get_index() if balls != null else board_view.get_child_count()
+	board_view.add_child(art)
+	board_view.move_child(art, under)
+	board_view.add_child(reels)
+	board_view.move_child(reels, under + 1)
+	board_view.add_child(banner)
+	SoundBank.warm(
+		[SoundBank.REEL_STOP, SoundBank.JACKPOT, SoundBank.TULIP_OPEN, SoundBank.START_CATCH]
+	)
+
+
+## Shows the bonus layer of `rules` (a new game's rules each time).
+func bind(rules: PachinkoRules) -> void:
+	_rules = rules
+	var machine := rules.bonus
+	art.bind(rules.level, machine)
+	reels.bind(rules.level, machine)
+	machine.start_caught.connect(_on_start_caught)
+	machine.reel_stopped.connect(_on_reel_stopped)
+	machine.reels_finished.connect(_on_reels_finished)
+	machine.attacker_changed.connect(_on_attacker_changed)
+	machine.tulip_changed.connect(_on_tulip_changed)
+	rules.ball_won.connect(_on_ball_won)
+
+
+func _on_ball_won(_id: int, pocket: int, _payout: int, _at: Vector2) -> void:
+	art.flash(BonusGeometry.bonus_index(_rules.level, pocket))
+
+
+func _on_start_caught(_index: int, _queued: int) -> void:
+	_play(SoundBank.START_CATCH, -4.0)
+
+
+func _on_reel_stopped(reel: int, _symbol: int) -> void:
+	_play(SoundBank.REEL_STOP, -6.0, 1.0 + reel * 0.08)
+
+
+func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
+	if jackpot:
+		banner.show_jackpot(_rules.level.ring_center, _rules.level.ring_radius)
+		_play(SoundBank.JACKPOT)
+
+
+func _on_attacker_changed(index: int, _open: bool) -> void:
+	art.flash(index)
+
+
+func _on_tulip_changed(index: int, open: bool) -> void:
+	art.flash(index)
+	if open:
+		_play(SoundBank.TULIP_OPEN, -6.0)
+
+
+func _play(sound: StringName, volume_db := 0.0, pitch := 1.0) -> void:
+	if _sounds != null:
+		_sounds.play(sound, volume_db, pitch)

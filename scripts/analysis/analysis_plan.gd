@@ -1,0 +1,112 @@
+class_name AnalysisPlan
+extends RefCounted
+## What a pachinko play analysis should do: the board, how many shots, the power each shot
+## gets, the RNG seed, and how the work is cut up. The figures depend only on the board,
+## `shots`, `rng_seed` and the power range: shots are split into fixed chunks of CHUNK_SHOTS,
+## each with its own seed, whatever the thread count.
+
+## Shots per chunk: one chunk runs in one world on one thread, start to end.
+const CHUNK_SHOTS := 250
+## Power bands the report splits the power range into (the aim map's rows).
+const BAND_COUNT := 5
+## Longest a ball is followed, seconds of game time, before it counts as stuck.
+const MAX_BALL_SECONDS := 20.0
+## Powers are drawn on this grid (a quarter of a point: finer than one pixel of drag), so
+## every shot of one power climbs the rail the same way and the climb is simulated once.
+const POWER_STEP := 0.25
+## Shots the editor's Analyze button fires (and the cache's default entry).
+const EDITOR_SHOTS := 10000
+## Side of a density grid cell in board pixels.
+const DENSITY_CELL := 5.0
+
+## The board analysed (a pachinko board).
+var level: BoardLevel
+## Number of shots to fire.
+var shots := 10000
+## RNG seed: the same seed and shots give the same figures.
+var rng_seed := 1
+## Worker threads (1 runs every chunk on the calling thread).
+var threads := 1
+## Each shot's power is uniform over power_from..power_to (0..100 is the whole range).
+var power_from := 0.0
+var power_to := 100.0
+## Balls in flight at once in one world. They pass through each other (no ball-ball
+## contacts), so each flies as if alone; more at once only shares the per-step cost.
+var in_flight := 125
+
+
+## A plan for `shot_count` shots on `board` with the RNG seed `seed_value`.
+static func create(board: BoardLevel, shot_count: int, seed_value: int) -> AnalysisPlan:
+	var plan := AnalysisPlan.new()
+	plan.level = board
+	plan.shots = shot_count
+	plan.rng_seed = seed_value
+	return plan
+
+
+## What is wrong with the plan, or "" when it can run.
+func problem() -> String:
+	if level == null or not level.is_pachinko() or level.ring_radius <= 0.0:
+		return "the analysis needs a pachinko board with a ring"
+	if shots < 1:
+		return "the analysis needs at least one shot (got %d)" % shots
+	if not (is_finite(power_from) and is_finite(power_to)):
+		return "the power range must be finite numbers"
+	if power_from < 0.0 or power_to > 100.0 or power_from > power_to:
+		return "the power range must lie within 0..100 (got %s..%s)" % [power_from, power_to]
+	if in_flight < 1:
+		return "at least one ball must be in flight (got %d)" % in_flight
+	return ""
+
+
+## Number of chunks the shots are cut into.
+func chunk_count() -> int:
+	return ceili(float(shots) / CHUNK_SHOTS)
+
+
+## Shots in chunk `index` (the last chunk may be short).
+func chunk_shots(index: int) -> int:
+	return mini(CHUNK_SHOTS, shots - index * CHUNK_SHOTS)
+
+
+## The RNG seed of chunk `index`: it depends only on the plan's seed and the index.
+func chunk_seed(index: int) -> int:
+	return hash([rng_seed, index, "pachinko-analysis"])
+
+
+## Power levels on the POWER_STEP grid over 0..100.
+static func level_count() -> int:
+	return roundi(100.0 / POWER_STEP) + 1
+
+
+## The power level (index on the POWER_STEP grid) nearest `power`.
+static func level_of(power: float) -> int:
+	return clampi(roundi(power / POWER_STEP), 0, level_count() - 1)
+
+
+## The power of level `power_level`.
+static func power_of(power_level: int) -> float:
+	return power_level * POWER_STEP
+
+
+## The power level of each shot of chunk `index`, in firing order (the chunk's RNG).
+func chunk_levels(index: int) -> PackedInt32Array:
+	var rng := RandomNumberGenerator.new()
+	rng.seed = chunk_seed(index)
+	var out := PackedInt32Array()
+	out.resize(chunk_shots(index))
+	for k in out.size():
+		out[k] = level_of(rng.randf_range(power_from, power_to))
+	return out
+
+
+## The power band (0..BAND_COUNT-1) a shot of `power` belongs to: the whole 0..100 range
+## cut in five equal bands, so bands mean the same power on every plan.
+static func band_of(power: float) -> int:
+	return clampi(int(power / (100.0 / BAND_COUNT)), 0, BAND_COUNT - 1)
+
+
+## The power range of band `band`: [from, to].
+static func band_range(band: int) -> Vector2:
+	var width := 100.0 / BAND_COUNT
+	return Vector2(band * width, (band + 1) * width)

@@ -1,0 +1,112 @@
+class_name AnalysisTally
+extends RefCounted
+## The raw counts of a pachinko analysis: what each shot did, per power band and pocket,
+## and where balls went (a density grid). All counts are whole numbers, so merging chunk
+## tallies gives the same totals in any order; the report turns them into figures.
+
+## What a shot ended as.
+enum Outcome { POCKETED, DRAINED, RETURNED, STUCK }
+
+var pocket_count := 0
+var band_count := AnalysisPlan.BAND_COUNT
+## Per band: shots fired, shots rolled back, drained, stuck.
+var band_shots := PackedInt64Array()
+var band_returned := PackedInt64Array()
+var band_drained := PackedInt64Array()
+var band_stuck := PackedInt64Array()
+## Per band: the sum of each shot's value (balls back in the cup: the pocket's payout, 1
+## for a shot that rolled back, else 0) and of its square, for the sample variance.
+var band_value := PackedInt64Array()
+var band_value_sq := PackedInt64Array()
+## Catches per band and pocket: index band * pocket_count + pocket.
+var band_pocket_hits := PackedInt64Array()
+## Ball samples per density cell, row-major over grid_size.
+var density := PackedInt64Array()
+var grid_size := Vector2i.ZERO
+## Simulation steps run and ball-steps simulated (for the speed figures).
+var steps := 0
+var ball_steps := 0
+
+
+func _init(pockets: int = 0, board_size: Vector2 = Vector2.ZERO) -> void:
+	pocket_count = maxi(pockets, 0)
+	for counts: PackedInt64Array in _band_arrays():
+		counts.resize(band_count)
+	band_pocket_hits.resize(band_count * pocket_count)
+	grid_size = Vector2i(
+		maxi(ceili(board_size.x / AnalysisPlan.DENSITY_CELL), 1),
+		maxi(ceili(board_size.y / AnalysisPlan.DENSITY_CELL), 1)
+	)
+	density.resize(grid_size.x * grid_size.y)
+
+
+## Records one finished shot fired in `band`: `outcome`, and for a catch its `pocket` and
+## `payout`.
+func record(band: int, outcome: Outcome, pocket := -1, payout := 0) -> void:
+	band_shots[band] += 1
+	var value := 0
+	match outcome:
+		Outcome.POCKETED:
+			value = payout
+			if pocket >= 0 and pocket < pocket_count:
+				band_pocket_hits[band * pocket_count + pocket] += 1
+		Outcome.RETURNED:
+			value = 1
+			band_returned[band] += 1
+		Outcome.DRAINED:
+			band_drained[band] += 1
+		Outcome.STUCK:
+			band_stuck[band] += 1
+	band_value[band] += value
+	band_value_sq[band] += value * value
+
+
+## Adds another tally's counts (same board) to this one.
+func merge(other: AnalysisTally) -> void:
+	var mine := _band_arrays()
+	var theirs := other._band_arrays()
+	for a in mine.size():
+		_add_into(mine[a], theirs[a])
+	_add_into(band_pocket_hits, other.band_pocket_hits)
+	_add_into(density, other.density)
+	steps += other.steps
+	ball_steps += other.ball_steps
+
+
+## Shots recorded in every band.
+func total_shots() -> int:
+	return _sum(band_shots)
+
+
+## Catches of `pocket` over every band.
+func pocket_hits(pocket: int) -> int:
+	var hits := 0
+	for band in band_count:
+		hits += band_pocket_hits[band * pocket_count + pocket]
+	return hits
+
+
+## Catches of `pocket` in `band`.
+func hits_in_band(band: int, pocket: int) -> int:
+	return band_pocket_hits[band * pocket_count + pocket]
+
+
+static func total(counts: PackedInt64Array) -> int:
+	return _sum(counts)
+
+
+func _band_arrays() -> Array[PackedInt64Array]:
+	# Packed arrays are values: hand back the members themselves through this one list.
+	return [band_shots, band_returned, band_drained, band_stuck, band_value, band_value_sq]
+
+
+static func _sum(counts: PackedInt64Array) -> int:
+	var s := 0
+	for c in counts:
+		s += c
+	return s
+
+
+static func _add_into(into: PackedInt64Array, from: PackedInt64Array) -> void:
+	for i in mini(into.size(), from.size()):
+		into[i] += from[i]

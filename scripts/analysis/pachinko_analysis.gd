@@ -1,0 +1,169 @@
+class_name PachinkoAnalysis
+extends RefCounted
+## Runs a pachinko play analysis (an AnalysisPlan) on worker threads, blocking (run()) or
+## in the background (start(), then poll() each frame; cancel() stops it). Two phases, each
+## one high-priority WorkerThreadPool group task: the rail climbs of the power levels the
+## shots use (RailExitTable), then the chunks of shots (PachinkoShotChunk), each in its own
+## world. Chunk results are merged in chunk order, so the figures depend only on the plan,
+## never on the thread count or which thread finished first.
+
+## IDLE: not started; CLIMBS, SHOTS: the two phases; DONE; CANCELLED.
+enum Phase { IDLE, CLIMBS, SHOTS, DONE, CANCELLED }
+
+const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibration.gd")
+
+var plan: AnalysisPlan
+var phase := Phase.IDLE
+## Seconds from start to done (wall clock).
+var wall_seconds := 0.0
+
+var _clear_speed := 0.0
+var _table := RailExitTable.new()
+var _groups: Array[PackedInt32Array] = []
+var _group_results: Array[RailExitTable] = []
+var _chunk_results: Array[PachinkoShotChunk] = []
+var _chunks_done := 0
+var _task := -1
+var _cancelled := false
+var _mutex := Mutex.new()
+var _started_usec := 0
+## True in run() with one thread: the work then runs on the calling thread itself.
+var _inline := false
+
+
+func _init(p_plan: AnalysisPlan) -> void:
+	plan = p_plan
+
+
+## Runs the whole analysis on the calling thread and `plan.threads` threads; returns the
+## tally, or null with an error for a plan that cannot run.
+func run() -> AnalysisTally:
+	_inline = plan.threads <= 1
+	if not start():
+		return null
+	while not poll():
+		if _task >= 0:
+			WorkerThreadPool.wait_for_group_task_completion(_task)
+			_task = -1
+	return tally()
+
+
+## Begins the analysis in the background. False (with an error) for a bad plan.
+func start() -> bool:
+	var problem := plan.problem()
+	if not problem.is_empty():
+		push_error("PachinkoAnalysis: %s" % problem)
+		return false
+	_started_usec = Time.get_ticks_usec()
+	# Measured here, on one thread: LaunchCalibration's cache is not thread-safe.
+	_clear_speed = LaunchCalibration.clear_speed(plan.level)
+	var needed := PackedByteArray()
+	needed.resize(AnalysisPlan.level_count())
+	for c in plan.chunk_count():
+		for q in plan.chunk_levels(c):
+			needed[q] = 1
+	_groups = RailExitTable.groups_for(needed)
+	_group_results.resize(_groups.size())
+	_chunk_results.resize(plan.chunk_count())
+	phase = Phase.CLIMBS
+	_launch(_climb_group, _groups.size())
+	return true
+
+
+## Moves the analysis on; call it often (each frame). Returns true once it is done or
+## cancelled. Never waits for the workers.
+func poll() -> bool:
+	if phase == Phase.DONE or phase == Phase.CANCELLED or phase == Phase.IDLE:
+		return phase != Phase.IDLE
+	if _task >= 0 and not WorkerThreadPool.is_group_task_completed(_task):
+		return false
+	if _task >= 0:
+		WorkerThreadPool.wait_for_group_task_completion(_task)
+		_task = -1
+	if _cancelled:
+		phase = Phase.CANCELLED
+	elif phase == Phase.CLIMBS:
+		for g in _groups.size():
+			_table.store(_group_results[g], _groups[g])
+		_group_results.clear()
+		phase = Phase.SHOTS
+		_launch(_run_chunk, plan.chunk_count())
+		return false
+	else:
+		phase = Phase.DONE
+	wall_seconds = (Time.get_ticks_usec() - _started_usec) / 1e6
+	return true
+
+
+## Asks the workers to stop; poll() then reports done with phase CANCELLED.
+func cancel() -> void:
+	_cancelled = true
+
+
+## Share of the work done, 0..1 (by chunks of shots).
+func progress() -> float:
+	if phase == Phase.DONE:
+		return 1.0
+	_mutex.lock()
+	var done := _chunks_done
+	_mutex.unlock()
+	return float(done) / maxf(plan.chunk_count(), 1)
+
+
+## Shots finished so far (the chunks done, whole).
+func shots_done() -> int:
+	var t := tally()
+	return t.total_shots() if t != null else 0
+
+
+## The merged counts of every chunk finished so far, in chunk order (all of them once
+## done); null before any chunk finished.
+func tally() -> AnalysisTally:
+	var merged: AnalysisTally = null
+	_mutex.lock()
+	for chunk in _chunk_results:
+		if chunk == null:
+			continue
+		if merged == null:
+			merged = AnalysisTally.new(
+				BonusGeometry.world_pockets(plan.level).size(), plan.level.size
+			)
+		merged.merge(chunk.tally)
+	_mutex.unlock()
+	return merged
+
+
+# Runs `job(index)` for index 0..count-1: on this thread for a blocking one-thread run,
+# else as one high-priority group task (low-priority tasks get a single thread on two
+# cores), so a background run never blocks its caller.
+func _launch(job: Callable, count: int) -> void:
+	if count == 0:
+		return
+	if _inline:
+		for i in count:
+			job.call(i)
+		return
+	_task = WorkerThreadPool.add_group_task(
+		job, count, clampi(plan.threads, 1, count), true, "Play analysis"
+	)
+
+
+func _climb_group(g: int) -> void:
+	if _cancelled:
+		return
+	var part := RailExitTable.climb_group(plan.level, _clear_speed, _groups[g])
+	_mutex.lock()
+	_group_results[g] = part
+	_mutex.unlock()
+
+
+func _run_chunk(c: int) -> void:
+	if _cancelled:
+		return
+	var chunk := PachinkoShotChunk.new(plan, _clear_speed, _table)
+	if not chunk.run(c, func() -> bool: return _cancelled):
+		return
+	_mutex.lock()
+	_chunk_results[c] = chunk
+	_chunks_done += 1
+	_mutex.unlock()

@@ -1,0 +1,205 @@
+class_name PachinkoShotChunk
+extends RefCounted
+## Runs one chunk of an analysis: its shots, fired into one fresh world on the calling
+## thread, each ball followed until it is paid, drained, rolled back or stuck. The balls
+## pass through each other (BallWorld.ball_contacts off), so many fly at once and each
+## behaves as if alone; the chunk's seed alone decides every power.
+##
+## Two shortcuts that change no outcome: a shot starts where RailExitTable says its power
+## leaves the rail (the climb is the same for every shot of that power), and a ball whose
+## energy can no longer lift it to any pocket's special pin is counted as drained at once
+## (the gutter takes it in the end; no contact adds energy except the pins' small minimum
+## horizontal speed and the game's nudge, both inside HOPELESS_MARGIN).
+
+const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
+
+## Density samples are taken every this many steps (each ball's cell, once).
+const SAMPLE_EVERY := 2
+## Hopeless balls are looked for every this many steps.
+const HOPELESS_EVERY := 4
+## Stuck balls and the cancel flag are checked every this many steps.
+const CHECK_EVERY := 60
+## Height (px) a ball may still gain beyond its energy: the pins' minimum horizontal speed,
+## the game's nudge for a resting ball, and the integrator's rounding.
+const HOPELESS_MARGIN := 8.0
+
+var tally: AnalysisTally
+
+var _plan: AnalysisPlan
+var _table: RailExitTable
+var _world: BallWorld
+var _clear_speed := 0.0
+## A ball whose highest reachable centre lies below this y can reach no special pin.
+var _hopeless_y := -INF
+## Per ball id (ids count up from 0 in a fresh world): its power band, the step its shot
+## was fired on, and 1 once it is known to be out of the rail (the energy test applies).
+var _band_of := PackedInt32Array()
+var _born := PackedInt32Array()
+var _in_field := PackedByteArray()
+var _payouts := PackedInt32Array()
+## The density grid while the chunk runs (the tally's, moved here and back): a member of
+## this object, so the per-ball loops never look another object up. That matters on
+## threads: every access to another object goes through one engine-wide lock in debug
+## builds (the object database check), and two threads then queue on it.
+var _density := PackedInt64Array()
+var _grid := Vector2i.ZERO
+
+
+## `clear_speed` is LaunchCalibration.clear_speed(plan.level), measured once beforehand on
+## the calling thread (its cache is not shared safely between threads). `table` holds the
+## rail climbs of every power level the chunk uses (null: every shot is simulated in full).
+func _init(plan: AnalysisPlan, clear_speed: float, table: RailExitTable = null) -> void:
+	_plan = plan
+	_clear_speed = clear_speed
+	_table = table
+	# The level's pockets and then the bonus pockets (closed: an attacker never catches).
+	var pockets := BonusGeometry.world_pockets(plan.level)
+	tally = AnalysisTally.new(pockets.size(), plan.level.size)
+	for pocket in pockets:
+		var payout: int = pocket["payout"]
+		_payouts.append(payout)
+	_hopeless_y = hopeless_line(plan.level)
+
+
+## The y below which a ball's highest reachable point means it can touch no special pin
+## (-INF when the board has none: no ball out of the rail can be paid).
+static func hopeless_line(level: BoardLevel) -> float:
+	var line := -INF
+	for k in mini(level.pins.size(), level.pin_special.size()):
+		if level.pin_special[k] != 0:
+			line = maxf(line, level.pins[k].y + level.pin_radius + level.ball_radius)
+	line = maxf(line, BonusGeometry.lowest_catch_y(level) + level.pin_radius + level.ball_radius)
+	return line + HOPELESS_MARGIN if line > -INF else -INF
+
+
+## The density cell of a board point, or -1 outside the board.
+static func cell_of(p: Vector2, board_size: Vector2) -> int:
+	var cols := maxi(ceili(board_size.x / AnalysisPlan.DENSITY_CELL), 1)
+	var rows := maxi(ceili(board_size.y / AnalysisPlan.DENSITY_CELL), 1)
+	var cx := int(p.x / AnalysisPlan.DENSITY_CELL)
+	var cy := int(p.y / AnalysisPlan.DENSITY_CELL)
+	if p.x < 0.0 or p.y < 0.0 or cx >= cols or cy >= rows:
+		return -1
+	return cy * cols + cx
+
+
+## Fires the shots of chunk `index`. `cancelled` is polled now and then; when it returns
+## true the run stops early and returns false (the tally then holds only finished shots).
+func run(index: int, cancelled: Callable = Callable()) -> bool:
+	var levels := _plan.chunk_levels(index)
+	_density = tally.density
+	tally.density = PackedInt64Array()
+	_grid = tally.grid_size
+	var in_flight := _plan.in_flight
+	_world = BoardWorldFactory.build(_plan.level)
+	_world.threads = 1
+	_world.ball_contacts = false
+	_world.ball_pocketed.connect(_on_pocketed)
+	_world.ball_drained.connect(_on_drained)
+	_world.ball_entered_zone.connect(_on_zone)
+	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)
+	var max_steps := int(AnalysisPlan.MAX_BALL_SECONDS / dt)
+	var hopeless_ok := _world.gravity.x == 0.0 and _world.gravity.y > 0.0
+	var fired := 0
+	var step := 0
+	while fired < levels.size() or _world.ball_count() > 0:
+		while fired < levels.size() and _world.ball_count() < in_flight:
+			_fire(levels[fired], step)
+			fired += 1
+		tally.ball_steps += _world.ball_count()
+		_world.step(dt)
+		step += 1
+		if step % SAMPLE_EVERY == 0:
+			_sample_density()
+		if hopeless_ok and step % HOPELESS_EVERY == 0:
+			_drop_hopeless()
+		if step % CHECK_EVERY == 0:
+			_drop_stuck(step - max_steps)
+			if cancelled.is_valid() and cancelled.call():
+				tally.density = _density
+				return false
+	tally.steps += step
+	tally.density = _density
+	_world = null
+	return true
+
+
+# One shot of power level `q` at step `step`: from the rail table when it knows the climb.
+func _fire(q: int, step: int) -> void:
+	var band := AnalysisPlan.band_of(AnalysisPlan.power_of(q))
+	var fate := _table.fate[q] if _table != null else RailExitTable.Fate.UNKNOWN
+	if fate == RailExitTable.Fate.RETURNED or fate == RailExitTable.Fate.EXIT:
+		_add_samples(_table.samples[q])
+	if fate == RailExitTable.Fate.RETURNED:
+		tally.record(band, AnalysisTally.Outcome.RETURNED)
+		return
+	var id := -1
+	if fate == RailExitTable.Fate.EXIT:
+		id = _world.spawn_ball(_table.exit_pos[q], _table.exit_vel[q], _plan.level.ball_radius)
+		step -= _table.exit_steps[q]
+	else:
+		var speed := LaunchPower.launch_speed(AnalysisPlan.power_of(q), _clear_speed)
+		var launch := LaunchRail.launch_position(_plan.level)
+		var direction := LaunchRail.launch_direction(_plan.level)
+		id = _world.spawn_ball(launch, direction * speed, _plan.level.ball_radius)
+	_band_of.resize(id + 1)
+	_born.resize(id + 1)
+	_in_field.resize(id + 1)
+	_band_of[id] = band
+	_born[id] = step
+	_in_field[id] = 1 if fate == RailExitTable.Fate.EXIT else 0
+
+
+func _add_samples(cells: PackedInt32Array) -> void:
+	for c in cells:
+		_density[c] += 1
+
+
+# Every ball in the world adds one sample to the cell it is in.
+func _sample_density() -> void:
+	var inv_cell := 1.0 / AnalysisPlan.DENSITY_CELL
+	var cols := _grid.x
+	var rows := _grid.y
+	for p: Vector2 in _world.get_positions():
+		var cx := int(p.x * inv_cell)
+		var cy := int(p.y * inv_cell)
+		if p.x >= 0.0 and p.y >= 0.0 and cx < cols and cy < rows:
+			_density[cy * cols + cx] += 1
+
+
+# Balls out of the rail whose energy cannot lift them to any special pin: drained.
+func _drop_hopeless() -> void:
+	var ids := _world.get_ids()
+	var pos := _world.get_positions()
+	var vel := _world.get_velocities()
+	var two_g := 2.0 * _world.gravity.y
+	for k in ids.size():
+		var id := ids[k]
+		if _in_field[id] != 0 and pos[k].y - vel[k].length_squared() / two_g > _hopeless_y:
+			_world.remove_ball(id)
+			tally.record(_band_of[id], AnalysisTally.Outcome.DRAINED)
+
+
+# Balls fired before `born_before` have flown too long: they count as stuck.
+func _drop_stuck(born_before: int) -> void:
+	for id: int in _world.get_ids():
+		if _born[id] < born_before:
+			_world.remove_ball(id)
+			tally.record(_band_of[id], AnalysisTally.Outcome.STUCK)
+
+
+func _on_pocketed(ball_id: int, pocket_id: int) -> void:
+	var payout := _payouts[pocket_id] if pocket_id >= 0 and pocket_id < _payouts.size() else 0
+	tally.record(_band_of[ball_id], AnalysisTally.Outcome.POCKETED, pocket_id, payout)
+
+
+func _on_drained(ball_id: int) -> void:
+	tally.record(_band_of[ball_id], AnalysisTally.Outcome.DRAINED)
+
+
+# Zone 0 is the rail's return zone: a weak shot rolled back into the cup.
+func _on_zone(ball_id: int, zone_index: int) -> void:
+	if zone_index != 0:
+		return
+	_world.remove_ball(ball_id)
+	tally.record(_band_of[ball_id], AnalysisTally.Outcome.RETURNED)

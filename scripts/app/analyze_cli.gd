@@ -1,0 +1,83 @@
+extends RefCounted
+## The `--analyze` command: a play analysis of one board, headless. Pachinko fires
+## `--shots` shots (AnalysisPlan); the maze plays `--runs` autoplay games in easy and hard
+## mode (MazeAnalysis). Prints one JSON line and writes it, with a heat-map PNG for
+## pachinko, to build/analysis/<game>_<board>.json. command_line.gd hands it the flags.
+
+const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
+## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).
+const EXIT_BAD_INPUT := 2
+const EXIT_FAILED := 1
+## Where the reports go, relative to the project folder.
+const OUT_DIR := "build/analysis"
+## Another folder for tests ("" uses OUT_DIR; a static initialiser would not run in the
+## editor for a script that is not @tool).
+static var out_dir_override := ""
+
+
+## Runs the analysis `values` ask for (keys analyze, board, shots, runs, seed, threads);
+## returns the exit code.
+static func run(values: Dictionary) -> int:
+	var game: String = values["analyze"]
+	var rng_seed: int = values["seed"]
+	var board_name := str(values["board"])
+	var loaded := BoardLoader.load_board(AutoplayCli.resolve_board_path(game, board_name))
+	if loaded.level == null:
+		return _fail(EXIT_BAD_INPUT, loaded.error)
+	var threads: int = values.get("threads", OS.get_processor_count())
+	if threads < 1 or threads > 64:
+		return _fail(EXIT_BAD_INPUT, "--threads must be 1 to 64 (got %d)" % threads)
+	var name := "%s_%s" % [game, board_name.get_file().get_basename()]
+	var base := _out_rel().path_join(name)
+	var abs_base := _out_dir().path_join(name)
+	var report: Dictionary
+	if game == "maze":
+		var runs: int = values.get("runs", MazeAnalysis.DEFAULT_RUNS)
+		if runs < 1:
+			return _fail(EXIT_BAD_INPUT, "--runs must be at least 1 (got %d)" % runs)
+		report = MazeAnalysis.run(loaded.level, runs, rng_seed, threads)
+		if report.has("error"):
+			return _fail(EXIT_BAD_INPUT, str(report["error"]))
+	else:
+		var shots: int = values.get("shots", 10000)
+		if shots < 1:
+			return _fail(EXIT_BAD_INPUT, "--shots must be at least 1 (got %d)" % shots)
+		var plan := AnalysisPlan.create(loaded.level, shots, rng_seed)
+		plan.threads = threads
+		var analysis := PachinkoAnalysis.new(plan)
+		var tally := analysis.run()
+		if tally == null:
+			return _fail(EXIT_BAD_INPUT, plan.problem())
+		report = AnalysisReport.build(plan, tally, analysis.wall_seconds)
+		report["heatmap"] = base + ".png"
+		var png_error := HeatmapImage.render(loaded.level, tally).save_png(abs_base + ".png")
+		if png_error != OK:
+			return _fail(
+				EXIT_FAILED, "could not write %s (%s)" % [base + ".png", error_string(png_error)]
+			)
+	report["ok"] = true
+	report["report"] = base + ".json"
+	var text := JSON.stringify(report)
+	var file := FileAccess.open(abs_base + ".json", FileAccess.WRITE)
+	if file == null:
+		return _fail(EXIT_FAILED, "could not write %s.json" % base)
+	file.store_line(text)
+	file.close()
+	print(text)
+	return 0
+
+
+static func _out_dir() -> String:
+	var dir := ProjectSettings.globalize_path("res://").path_join(_out_rel())
+	DirAccess.make_dir_recursive_absolute(dir)
+	return dir
+
+
+static func _out_rel() -> String:
+	return out_dir_override if not out_dir_override.is_empty() else OUT_DIR
+
+
+static func _fail(code: int, problem: String) -> int:
+	printerr("analyze: %s" % problem)
+	print(JSON.stringify({"ok": false, "error": problem}))
+	return code

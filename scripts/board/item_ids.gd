@@ -1,0 +1,176 @@
+class_name ItemIds
+extends RefCounted
+## Stable item ids: every pin, pocket, wall, black hole and ball start has a number that stays
+## its own when a neighbour is deleted or added, so a problem message ("Pins 143 and 459
+## overlap") still names the same two pins after an edit. Ids are per list, 1 and up, kept in
+## BoardLevel's `*_ids` arrays beside the items and written in the board file (`"id": 17`).
+## A board made in code, or a file without ids, numbers its items 1, 2, 3... in order.
+## New ids come from the board's per-list counter (BoardLevel.next_ids), which never goes
+## back: deleting the item with the highest id, or undoing an add, does not free its id.
+
+## Item list -> its id array on BoardLevel.
+const LISTS := {
+	"pins": "pin_ids",
+	"pockets": "pocket_ids",
+	"walls": "wall_ids",
+	"holes": "hole_ids",
+	"ball_starts": "start_ids",
+}
+## The largest id a file may use.
+const MAX_ID := 9_999_999
+
+
+## How many items `list` holds (walls are point pairs).
+static func count(level: BoardLevel, list: String) -> int:
+	if list == "pockets":
+		return level.pockets.size()
+	var points: PackedVector2Array = level.get(list)
+	@warning_ignore("integer_division")  # whole walls only
+	return points.size() / 2 if list == "walls" else points.size()
+
+
+## The id of item `index` of `list` (its place, 1-based, if the board has no id for it).
+static func of(level: BoardLevel, list: String, index: int) -> int:
+	var ids := ids_of(level, list)
+	return ids[index] if index < ids.size() and ids[index] > 0 else index + 1
+
+
+## The index of the item of `list` with id `id`, or -1.
+static func index_of(level: BoardLevel, list: String, id: int) -> int:
+	for i in count(level, list):
+		if of(level, list, i) == id:
+			return i
+	return -1
+
+
+## The stored ids of `list` (may be shorter than the list; see `of`).
+static func ids_of(level: BoardLevel, list: String) -> PackedInt32Array:
+	var id_field: String = LISTS[list]
+	var ids: PackedInt32Array = level.get(id_field)
+	return ids
+
+
+## The id the next new item of `list` gets: the board's counter, and never one an item of
+## the list already has (a hand-edited file may hold a counter lower than its ids).
+static func next_id(level: BoardLevel, list: String) -> int:
+	var largest := 0
+	for i in count(level, list):
+		largest = maxi(largest, of(level, list, i))
+	return maxi(_counter(level, list), largest + 1)
+
+
+## Makes every id array match its list: missing, zero or repeated ids get fresh numbers.
+static func fill(level: BoardLevel) -> void:
+	for list: String in LISTS:
+		var ids := ids_of(level, list).duplicate()
+		var total := count(level, list)
+		ids.resize(total)
+		var seen := {}
+		var fresh := maxi(_largest(ids) + 1, _counter(level, list))
+		var changed := false
+		for i in total:
+			if ids[i] <= 0 or seen.has(ids[i]):
+				ids[i] = fresh
+				fresh += 1
+				changed = true
+			seen[ids[i]] = true
+		if changed or ids.size() != ids_of(level, list).size():
+			var id_field: String = LISTS[list]
+			level.set(id_field, ids)
+		if changed:
+			_advance(level, list, fresh)
+
+
+## After an edit changed a list's length: items still at a position they had `before` (a
+## BoardFieldCopy capture of the lists and their ids) keep their id, new ones get fresh ids
+## from the board's counter, which moves past them.
+## Pockets keep theirs by object, so a pocket re-stamped or moved is still itself.
+static func reconcile(level: BoardLevel, before: Dictionary) -> void:
+	for list: String in LISTS:
+		var id_field: String = LISTS[list]
+		if not before.has(list) or not before.has(id_field):
+			continue
+		var old_ids: PackedInt32Array = before[id_field]
+		var old_keys := _keys(before[list], list)
+		var new_keys := _keys(level.get(list), list)
+		if old_keys.size() == new_keys.size():
+			continue  # moved or edited in place: every item is still itself
+		# Items without a stored id had their place as id (see `of`).
+		var had := PackedInt32Array()
+		for i in old_keys.size():
+			had.append(old_ids[i] if i < old_ids.size() and old_ids[i] > 0 else i + 1)
+		var free := {}
+		for i in old_keys.size():
+			var waiting: Array = free.get_or_add(old_keys[i], [])
+			waiting.append(had[i])
+		var ids := PackedInt32Array()
+		var fresh := maxi(_largest(had) + 1, _counter(level, list))
+		for key: Variant in new_keys:
+			var waiting: Array = free.get(key, [])
+			if not waiting.is_empty():
+				var kept: int = waiting.pop_front()
+				ids.append(kept)
+			else:
+				ids.append(fresh)
+				fresh += 1
+		level.set(id_field, ids)
+		_advance(level, list, fresh)
+
+
+## The counters a board file has to keep: list -> next id, only for lists whose counter is
+## past their largest id + 1 (the top item was deleted); every other list's counter follows
+## from its ids, so an unchanged board writes no counter line.
+static func counters_to_save(level: BoardLevel) -> Dictionary[String, int]:
+	var saved: Dictionary[String, int] = {}
+	for list: String in LISTS:
+		var largest := 0
+		for i in count(level, list):
+			largest = maxi(largest, of(level, list, i))
+		var next := next_id(level, list)
+		if next > largest + 1:
+			saved[list] = next
+	return saved
+
+
+# The stored counter of `list` (1 when the board has none).
+static func _counter(level: BoardLevel, list: String) -> int:
+	var next: int = level.next_ids.get(list, 1)
+	return next
+
+
+# Moves the counter of `list` up to `next` (never down).
+static func _advance(level: BoardLevel, list: String, next: int) -> void:
+	if next <= _counter(level, list):
+		return
+	var counters := level.next_ids.duplicate()
+	counters[list] = next
+	level.next_ids = counters
+
+
+# What identifies an item across an edit: its position (a wall: both ends), a pocket its object.
+static func _keys(items: Variant, list: String) -> Array:
+	var keys: Array = []
+	if list == "pockets":
+		var entries: Array = items
+		for entry: Variant in entries:
+			if entry is Array:
+				var captured: Array = entry
+				keys.append(captured[0])
+			else:
+				keys.append(entry)
+		return keys
+	var points: PackedVector2Array = items
+	var step := 2 if list == "walls" else 1
+	for i in range(0, points.size() - step + 1, step):
+		if step == 1:
+			keys.append(points[i])
+		else:
+			keys.append([points[i], points[i + 1]])
+	return keys
+
+
+static func _largest(ids: PackedInt32Array) -> int:
+	var largest := 0
+	for id in ids:
+		largest = maxi(largest, id)
+	return largest

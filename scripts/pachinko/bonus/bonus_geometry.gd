@@ -1,0 +1,120 @@
+class_name BonusGeometry
+extends RefCounted
+## The shapes of a board's bonus pockets, computed from the level alone so the world
+## factory, the rules and the views agree on them without sharing state.
+##
+## Every bonus pocket is a PocketStamp cup whose pins are added after the level's own pins,
+## tagged with pocket id `level.pockets.size() + index` (its special pin catches). Its moving
+## parts are capsule walls, added to the world before any other wall so wall `k` of
+## `wall_plan()` is world wall `k`: an attacker's lid across the mouth (on while closed), a
+## tulip's two upright wings (on while closed) and two spread wings (on while open).
+
+enum Part { LID, WING_CLOSED, WING_OPEN }
+
+## Capsule radius of a lid or a wing, px.
+const PART_RADIUS := 2.5
+## A tulip's wing length as a share of the mouth width.
+const WING_SHARE := 0.75
+## An open wing leans out this far from upright, radians (about 50 degrees).
+const WING_OPEN_ANGLE := 0.87
+
+
+## The pocket id the world reports for bonus pocket `index` of `level`.
+static func pocket_id(level: BoardLevel, index: int) -> int:
+	return level.pockets.size() + index
+
+
+## The bonus pocket index for a world pocket id, or -1 for one of the level's own pockets.
+static func bonus_index(level: BoardLevel, world_pocket_id: int) -> int:
+	var index := world_pocket_id - level.pockets.size()
+	return index if index >= 0 and index < level.bonus_pockets.size() else -1
+
+
+## The moving parts, in world wall order: [{"item": index, "part": Part, "a", "b"}].
+static func wall_plan(level: BoardLevel) -> Array[Dictionary]:
+	var plan: Array[Dictionary] = []
+	for i in level.bonus_pockets.size():
+		var spec := level.bonus_pockets[i]
+		if spec == null:
+			continue
+		var half := spec.width * 0.5
+		var mouth := spec.position
+		if spec.role == BonusPocketSpec.Role.ATTACKER:
+			var lid_a := mouth + Vector2(-half, 0.0)
+			plan.append(_part(i, Part.LID, lid_a, mouth + Vector2(half, 0.0)))
+		elif spec.role == BonusPocketSpec.Role.TULIP:
+			for side: float in [-1.0, 1.0]:
+				var root := mouth + Vector2(side * half, 0.0)
+				var wing := spec.width * WING_SHARE
+				plan.append(_part(i, Part.WING_CLOSED, root, root + Vector2(0.0, -wing)))
+				var lean := Vector2(side * sin(WING_OPEN_ANGLE), -cos(WING_OPEN_ANGLE)) * wing
+				plan.append(_part(i, Part.WING_OPEN, root, root + lean))
+	return plan
+
+
+## True when a part is solid while its pocket is `open`.
+static func part_solid(part: Part, open: bool) -> bool:
+	return open if part == Part.WING_OPEN else not open
+
+
+## Adds the moving parts to `world`, closed; call before any other wall.
+static func add_walls(world: BallWorld, level: BoardLevel) -> void:
+	for entry in wall_plan(level):
+		var a: Vector2 = entry["a"]
+		var b: Vector2 = entry["b"]
+		var index := world.add_wall(a, b, PART_RADIUS)
+		var part: Part = entry["part"]
+		world.set_wall_enabled(index, part_solid(part, false))
+
+
+## Adds every bonus pocket's rim and catching pin to `world` (after the level's pins).
+static func add_pins(world: BallWorld, level: BoardLevel, min_speed_x: float) -> void:
+	for i in level.bonus_pockets.size():
+		var spec := level.bonus_pockets[i]
+		if spec == null:
+			continue
+		var stamp := rim_pins(level, spec)
+		for k in stamp.size():
+			var special := k == stamp.size() - 1
+			world.add_pin(stamp[k], level.pin_radius, pocket_id(level, i), special, min_speed_x)
+
+
+## The rim pins of one bonus pocket, the catching pin last (PocketStamp's shape).
+static func rim_pins(level: BoardLevel, spec: BonusPocketSpec) -> PackedVector2Array:
+	return PocketStamp.pins_for(spec.as_pocket(), level.pin_radius, level.ball_radius)
+
+
+## Every pocket the world reports, by world pocket id: the level's pockets, then the bonus
+## pockets, each as {"payout", "position", "role"} ("pocket", "start_pocket", "attacker",
+## "tulip"). For counting catches without the rules (the play analysis).
+static func world_pockets(level: BoardLevel) -> Array[Dictionary]:
+	var out: Array[Dictionary] = []
+	for spec in level.pockets:
+		var at := spec.position if spec != null else Vector2.ZERO
+		out.append(
+			{
+				"payout": maxi(spec.payout, 0) if spec != null else 0,
+				"position": at,
+				"role": "pocket"
+			}
+		)
+	for spec in level.bonus_pockets:
+		var at := spec.position if spec != null else Vector2.ZERO
+		var pays := maxi(spec.payout, 0) if spec != null else 0
+		out.append(
+			{"payout": pays, "position": at, "role": spec.role_key() if spec != null else ""}
+		)
+	return out
+
+
+## The lowest catching pin of the bonus pockets (its y), or -INF for none.
+static func lowest_catch_y(level: BoardLevel) -> float:
+	var lowest := -INF
+	for spec in level.bonus_pockets:
+		if spec != null:
+			lowest = maxf(lowest, spec.position.y + spec.depth)
+	return lowest
+
+
+static func _part(item: int, part: Part, a: Vector2, b: Vector2) -> Dictionary:
+	return {"item": item, "part": part, "a": a, "b": b}

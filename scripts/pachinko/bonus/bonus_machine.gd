@@ -1,0 +1,193 @@
+class_name BonusMachine
+extends RefCounted
+## The bonus layer of a pachinko machine, without pictures: start pockets spin the reels,
+## a jackpot (three equal symbols) opens the attackers' lids for a while, and tulips open
+## after a catch and close after the next. It owns no balls: PachinkoRules tells it about
+## catches (`catch`) and time (`advance`), and it switches the lids and wings in the world.
+## Reel results come from a generator seeded from the game's seed, so the same seed and
+## the same shots give the same spins, jackpots and payouts.
+
+## A start pocket caught a ball; `queued` spins are waiting (the one under way excluded).
+signal start_caught(index: int, queued: int)
+## The reels began a spin with `symbols` symbols per reel.
+signal reels_started(symbols: int)
+## One reel stopped on `symbol`.
+signal reel_stopped(reel: int, symbol: int)
+## Every reel stopped; `jackpot` when they match.
+signal reels_finished(result: PackedInt32Array, jackpot: bool)
+## Attacker `index` opened (after a jackpot) or closed (time or catches used up).
+signal attacker_changed(index: int, open: bool)
+## Tulip `index` opened or closed.
+signal tulip_changed(index: int, open: bool)
+
+## Spins a start pocket can hold while the reels are busy (real machines show four lamps).
+const MAX_QUEUED := 4
+
+## Spins started.
+var reel_spins := 0
+## Spins that ended on three equal symbols.
+var jackpots := 0
+## Balls the attackers paid.
+var attacker_paid := 0
+## Times a tulip opened.
+var tulip_opens := 0
+## The reels (read by the view).
+var reels := ReelSet.new()
+
+var _level: BoardLevel
+var _world: BallWorld
+var _rng := RandomNumberGenerator.new()
+## Symbol counts of the spins waiting, oldest first.
+var _queued := PackedInt32Array()
+## Per bonus pocket: 1 while open (attacker lid up, tulip wings spread).
+var _open := PackedByteArray()
+## Per attacker: seconds and catches left in its open round.
+var _time_left := PackedFloat64Array()
+var _catches_left := PackedInt32Array()
+## World wall index → [bonus pocket index, BonusGeometry.Part].
+var _walls: Array[Dictionary] = []
+
+
+## The bonus layer of `level` over `world` (built by BoardWorldFactory, which put the lids
+## and wings first among its walls). `rng_seed` fixes the reel results.
+func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
+	_level = level
+	_world = world
+	_rng.seed = hash([rng_seed, "reels"])
+	var count := level.bonus_pockets.size() if level != null else 0
+	_open.resize(count)
+	_time_left.resize(count)
+	_catches_left.resize(count)
+	if level != null and world != null:
+		_walls = BonusGeometry.wall_plan(level)
+		if _walls.size() > world.wall_count():
+			push_error("BonusMachine: the world lacks the bonus walls; lids will not move")
+			_walls.clear()
+	reels.reel_stopped.connect(
+		func(reel: int, symbol: int) -> void: reel_stopped.emit(reel, symbol)
+	)
+	reels.spin_finished.connect(_on_spin_finished)
+
+
+## True when the board has any bonus pocket.
+func has_bonus() -> bool:
+	return not _open.is_empty()
+
+
+## A ball reached the catching pin of bonus pocket `index`: returns the balls it pays.
+func catch(index: int) -> int:
+	if index < 0 or index >= _open.size():
+		return 0
+	var spec := _level.bonus_pockets[index]
+	match spec.role:
+		BonusPocketSpec.Role.START:
+			if _queued.size() < MAX_QUEUED:
+				_queued.append(spec.symbols)
+			start_caught.emit(index, _queued.size())
+		BonusPocketSpec.Role.ATTACKER:
+			attacker_paid += spec.payout
+			if is_open(index):
+				_catches_left[index] -= 1
+				if _catches_left[index] <= 0:
+					_set_open(index, false)
+		BonusPocketSpec.Role.TULIP:
+			_set_open(index, not is_open(index))
+			if is_open(index):
+				tulip_opens += 1
+	return maxi(spec.payout, 0)
+
+
+## Runs the timers for `delta` seconds of game time: open attackers count down, the reels
+## turn, and a waiting spin starts once the reels are free and no attacker is open.
+func advance(delta: float) -> void:
+	if _open.is_empty() or delta <= 0.0:
+		return
+	for i in _open.size():
+		if _open[i] != 0 and _is_attacker(i):
+			_time_left[i] -= delta
+			if _time_left[i] <= 0.0:
+				_set_open(i, false)
+	if reels.busy():
+		reels.advance(delta)
+	elif not _queued.is_empty() and not any_attacker_open():
+		_start_spin()
+
+
+## True while bonus pocket `index` is open.
+func is_open(index: int) -> bool:
+	return index >= 0 and index < _open.size() and _open[index] != 0
+
+
+## True while any attacker's lid is up (a jackpot round).
+func any_attacker_open() -> bool:
+	for i in _open.size():
+		if _open[i] != 0 and _is_attacker(i):
+			return true
+	return false
+
+
+## Seconds left in attacker `index`'s open round (0 when closed).
+func time_left(index: int) -> float:
+	return _time_left[index] if is_open(index) else 0.0
+
+
+## Catches left in attacker `index`'s open round (0 when closed).
+func catches_left(index: int) -> int:
+	return _catches_left[index] if is_open(index) else 0
+
+
+## Spins waiting for the reels.
+func queued_spins() -> int:
+	return _queued.size()
+
+
+## The counters the stats panel and the autoplay report.
+func counters() -> Dictionary:
+	return {
+		"reel_spins": reel_spins,
+		"jackpots": jackpots,
+		"attacker_paid": attacker_paid,
+		"tulip_opens": tulip_opens,
+	}
+
+
+func _start_spin() -> void:
+	var symbol_count := maxi(_queued[0], 1)
+	_queued.remove_at(0)
+	var landing := PackedInt32Array()
+	for reel in ReelSet.REELS:
+		landing.append(_rng.randi_range(0, symbol_count - 1))
+	reel_spins += 1
+	reels.start(landing, symbol_count)
+	reels_started.emit(symbol_count)
+
+
+func _on_spin_finished(result: PackedInt32Array, jackpot: bool) -> void:
+	if jackpot:
+		jackpots += 1
+		for i in _open.size():
+			if _is_attacker(i):
+				var spec := _level.bonus_pockets[i]
+				_time_left[i] = spec.open_seconds
+				_catches_left[i] = spec.open_catches
+				_set_open(i, true)
+	reels_finished.emit(result, jackpot)
+
+
+func _is_attacker(index: int) -> bool:
+	return _level.bonus_pockets[index].role == BonusPocketSpec.Role.ATTACKER
+
+
+func _set_open(index: int, open: bool) -> void:
+	if is_open(index) == open:
+		return
+	_open[index] = 1 if open else 0
+	for wall in _walls.size():
+		var entry: Dictionary = _walls[wall]
+		if entry["item"] == index:
+			var part: BonusGeometry.Part = entry["part"]
+			_world.set_wall_enabled(wall, BonusGeometry.part_solid(part, open))
+	if _is_attacker(index):
+		attacker_changed.emit(index, open)
+	else:
+		tulip_changed.emit(index, open)

@@ -1,0 +1,88 @@
+class_name ReelSet
+extends RefCounted
+## The three digital reels a start pocket spins. A spin's result is fixed when it starts
+## (drawn by BonusMachine from the game's seeded generator); the reels then stop one by one,
+## left to right. When the first two already match (a "reach"), the last reel keeps the
+## player waiting a little longer. Time is game time, so a replay stops them identically.
+
+## A reel stopped showing `symbol`.
+signal reel_stopped(reel: int, symbol: int)
+## Every reel stopped; `jackpot` when all three show the same symbol.
+signal spin_finished(result: PackedInt32Array, jackpot: bool)
+
+const REELS := 3
+## Seconds after the start at which each reel stops.
+const STOP_SECONDS: Array[float] = [0.9, 1.4, 1.9]
+## Extra seconds the last reel spins during a reach.
+const REACH_EXTRA := 1.2
+## Pause after the last reel stops before the next spin may start, seconds.
+const SETTLE_SECONDS := 0.5
+
+## Symbols per reel of the spin under way (or the last one).
+var symbols := BonusPocketSpec.DEFAULT_SYMBOLS
+## The spin's result: one symbol per reel.
+var result := PackedInt32Array([0, 0, 0])
+## Reels stopped so far in this spin (REELS when idle).
+var stopped := REELS
+## Seconds since the spin started.
+var elapsed := 0.0
+
+
+## True from a spin's start until its result has settled.
+func busy() -> bool:
+	return stopped < REELS or elapsed < _last_stop() + SETTLE_SECONDS
+
+
+## Starts a spin that will land on `landing` (REELS symbols below `symbol_count`).
+func start(landing: PackedInt32Array, symbol_count: int) -> void:
+	symbols = maxi(symbol_count, 1)
+	result = landing.duplicate()
+	stopped = 0
+	elapsed = 0.0
+
+
+## True when the first two reels match, so the last one is the decider.
+func is_reach() -> bool:
+	return result.size() == REELS and result[0] == result[1]
+
+
+## True when every reel shows the same symbol.
+func is_jackpot() -> bool:
+	return is_reach() and result[1] == result[2]
+
+
+## The seconds at which reel `reel` stops in this spin.
+func stop_time(reel: int) -> float:
+	var at: float = STOP_SECONDS[clampi(reel, 0, REELS - 1)]
+	if reel == REELS - 1 and is_reach():
+		at += REACH_EXTRA
+	return at
+
+
+## Runs the reels for `delta` seconds; stops each reel whose time has come.
+func advance(delta: float) -> void:
+	if not busy():
+		return
+	elapsed += delta
+	while stopped < REELS and elapsed >= stop_time(stopped):
+		stopped += 1
+		reel_stopped.emit(stopped - 1, result[stopped - 1])
+		if stopped == REELS:
+			spin_finished.emit(result, is_jackpot())
+
+
+## The symbol reel `reel` shows now: its result once stopped, else a rolling symbol (for
+## drawing; the rolling one depends on time only).
+func shown_symbol(reel: int) -> int:
+	if reel < stopped:
+		return result[reel]
+	return (int(elapsed * 14.0) + reel * 2 + result[reel]) % symbols
+
+
+## True while reel `reel` is still turning.
+func is_spinning(reel: int) -> bool:
+	return reel >= stopped
+
+
+func _last_stop() -> float:
+	return stop_time(REELS - 1)

@@ -1,0 +1,205 @@
+extends RefCounted
+## What one motion-stage lane works with: the step's ball arrays, static geometry and
+## constants, copied into members by begin(), plus the lane's event and path buffers and
+## the ball being moved. BallMover (the motion itself) extends it. Internal to
+## scripts/physics.
+##
+## Members rather than reads through the store and geometry objects: a member is one indexed
+## read, a named read a hash lookup, and the motion stage reads them per substep.
+
+const BallStore := preload("res://scripts/physics/ball_store.gd")
+const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const BallEvents := preload("res://scripts/physics/ball_events.gd")
+const ContactId := preload("res://scripts/physics/contact_id.gd")
+
+## This lane's events of the step, in order (see BallEvents), and its path points.
+var events := PackedInt32Array()
+var event_speed := PackedFloat32Array()
+var trace_ball := PackedInt32Array()
+var trace_pos := PackedVector2Array()
+
+# The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
+# only), static geometry (read only) and constants. Members rather than reads through the
+# store and geometry objects: a member is one indexed read, a named read a hash lookup.
+var _pos := PackedVector2Array()
+var _vel := PackedVector2Array()
+var _rad := PackedFloat32Array()
+var _push := PackedVector2Array()
+var _ids := PackedInt32Array()
+var _alive := PackedByteArray()
+var _asleep := PackedByteArray()
+var _rest := PackedFloat32Array()
+var _contact_a := PackedInt32Array()
+var _contact_b := PackedInt32Array()
+var _support_a := PackedVector2Array()
+var _support_b := PackedVector2Array()
+var _support_ball := PackedVector2Array()
+var _sleep_ball_normal := PackedVector2Array()
+var _drain_hits := PackedInt32Array()
+var _drain_time := PackedFloat32Array()
+var _goal_mask := PackedInt32Array()
+var _zone_mask := PackedInt32Array()
+var _cell_keys := PackedInt64Array()
+var _g: StaticGeometry
+var _zoned := true
+var _pin_start := PackedInt32Array()
+var _pin_items := PackedInt32Array()
+var _pin_item_pos := PackedVector2Array()
+var _pin_item_rad := PackedFloat32Array()
+var _pin_captures := PackedByteArray()
+var _pin_tag := PackedInt32Array()
+var _pin_min_speed_x := PackedFloat64Array()
+var _wall_start := PackedInt32Array()
+var _wall_items := PackedInt32Array()
+var _wall_item_a := PackedVector2Array()
+var _wall_item_ab := PackedVector2Array()
+var _wall_item_inv := PackedFloat32Array()
+var _wall_item_rad := PackedFloat32Array()
+var _wall_ab := PackedVector2Array()
+var _wall_inv_len2 := PackedFloat32Array()
+var _has_walls := false
+var _has_ring := false
+var _ring_center := Vector2.ZERO
+var _has_drain_arc := false
+var _has_sensors := false
+var _origin := Vector2.ZERO
+var _inv_cell := 1.0
+var _cols := 1
+var _last_cell := Vector2i.ZERO
+var _gravity := Vector2.ZERO
+## Per-axis rolling friction for one step (px/s), and whether there is any.
+var _friction_dt := Vector2.ZERO
+var _has_friction := false
+var _dt := 0.0
+var _max_speed := 0.0
+## True when friction or the cap follow the seed's options (see PhysicsTuning).
+var _friction_against_gravity := false
+var _cap_per_axis := false
+var _caps_glance := false
+var _pin_e := 0.0
+var _wall_e := 0.0
+var _keep_tangent := 1.0
+var _threshold := 0.0
+var _rest_speed2 := 0.0
+## 0 while no ball may fall asleep (just after a wake-up).
+var _sleep_time := 0.0
+## A ball pushed apart by more than a resting ball moves in a step is still settling.
+var _settled_push := 0.0
+var _drain_slide_time := 0.0
+var _tracing := false
+# The ball being moved: slot, position, velocity, radius, substep time, push per substep.
+var _i := 0
+var _p := Vector2.ZERO
+var _v := Vector2.ZERO
+var _r := -1.0
+var _h := 0.0
+var _push_step := Vector2.ZERO
+# Contacts of last step (a persisting one slides) and of this one, with their normals.
+var _held_a := ContactId.NONE
+var _held_b := ContactId.NONE
+var _cur_a := ContactId.NONE
+var _cur_b := ContactId.NONE
+var _n_a := Vector2.ZERO
+var _n_b := Vector2.ZERO
+## Set when the ball left the world this substep (captured by a pin or drained).
+var _gone := false
+# Per-radius limits, cached while consecutive balls share a radius.
+var _max_travel := 0.0
+var _ring_lim := 0.0
+var _ring_lim2 := 0.0
+
+
+## Takes this step's state and constants and clears the lane's buffers. Called on the
+## world's thread before the lanes run; `may_sleep` is false just after a wake-up.
+func begin(
+	b: BallStore,
+	g: StaticGeometry,
+	t: PhysicsTuning,
+	gravity: Vector2,
+	friction: Vector2,
+	dt: float,
+	may_sleep: bool
+) -> void:
+	_take_balls(b)
+	_take_geometry(g)
+	_gravity = gravity
+	_friction_dt = friction.max(Vector2.ZERO) * dt
+	_has_friction = _friction_dt != Vector2.ZERO
+	_dt = dt
+	_max_speed = t.max_speed
+	_friction_against_gravity = t.friction_against == PhysicsTuning.FrictionAgainst.GRAVITY
+	_cap_per_axis = t.speed_cap == PhysicsTuning.SpeedCap.PER_AXIS
+	_caps_glance = t.wall_cap_contact == PhysicsTuning.CapContact.GLANCE
+	_pin_e = t.restitution
+	_wall_e = t.wall_restitution
+	_keep_tangent = t.tangent_friction
+	_threshold = t.bounce_threshold
+	_rest_speed2 = t.rest_speed * t.rest_speed
+	_sleep_time = t.sleep_time if may_sleep else 0.0
+	_settled_push = t.rest_speed * dt
+	_drain_slide_time = g.drain_slide_time
+	_tracing = b.tracing
+	_r = -1.0
+	events.resize(0)
+	event_speed.resize(0)
+	trace_ball.resize(0)
+	trace_pos.resize(0)
+
+
+func _take_balls(b: BallStore) -> void:
+	_pos = b.pos
+	_vel = b.vel
+	_rad = b.radius
+	_push = b.push
+	_ids = b.ids
+	_alive = b.alive
+	_asleep = b.asleep
+	_rest = b.rest
+	_contact_a = b.contact_a
+	_contact_b = b.contact_b
+	_support_a = b.support_static
+	_support_b = b.support_static2
+	_support_ball = b.support_ball
+	_sleep_ball_normal = b.sleep_ball_normal
+	_drain_hits = b.drain_hits
+	_drain_time = b.drain_time
+	_goal_mask = b.goal_mask
+	_zone_mask = b.zone_mask
+	_cell_keys = b.cell_keys
+
+
+func _take_geometry(g: StaticGeometry) -> void:
+	_g = g
+	_zoned = g.zoned
+	_pin_start = g.pin_start
+	_pin_items = g.pin_items if g.zoned else g.all_pins
+	_pin_item_pos = g.pin_item_pos if g.zoned else g.pin_pos
+	_pin_item_rad = g.pin_item_radius if g.zoned else g.pin_radius
+	_pin_captures = g.pin_captures
+	_pin_tag = g.pin_tag
+	_pin_min_speed_x = g.pin_min_speed_x
+	_wall_start = g.wall_start
+	_wall_items = g.wall_items
+	_wall_item_a = g.wall_item_a
+	_wall_item_ab = g.wall_item_ab
+	_wall_item_inv = g.wall_item_inv
+	_wall_item_rad = g.wall_item_radius
+	_wall_ab = g.wall_ab
+	_wall_inv_len2 = g.wall_inv_len2
+	_has_walls = not g.wall_a.is_empty()
+	_has_ring = g.has_ring
+	_ring_center = g.ring_center
+	_has_drain_arc = g.has_drain_arc
+	_has_sensors = not (g.hole_pos.is_empty() and g.goal_pos.is_empty() and g.zone_pos.is_empty())
+	_origin = g.origin
+	_inv_cell = g.inv_cell
+	_cols = g.cols
+	_last_cell = Vector2i(g.cols - 1, g.rows - 1)
+
+
+## Queues an event of `kind` for the ball being moved (see BallEvents).
+func _queue(kind: int, index: int, speed: float) -> void:
+	events.append(kind)
+	events.append(_ids[_i])
+	events.append(index)
+	event_speed.append(speed)

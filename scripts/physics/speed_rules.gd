@@ -1,0 +1,35 @@
+extends RefCounted
+## Rolling friction and the speed cap for the tuning options that are not the motion
+## stage's inline defaults (friction against velocity, a cap on the total speed): friction
+## against gravity's downhill direction and a cap per axis, as the tilt maze seed does.
+## Internal to scripts/physics.
+
+
+## Velocity `v` (this step's gravity already added) after friction that opposes the
+## downhill direction: per axis, `friction_dt` (px/s this step) comes off the pull
+## `gravity_dt`, down to zero at most, so a gentle tilt holds the ball instead of rolling it
+## uphill (the seed's joystick never reaches such a tilt). An axis with no pull slows toward
+## zero and never past it.
+static func friction_against_gravity(
+	v: Vector2, gravity_dt: Vector2, friction_dt: Vector2
+) -> Vector2:
+	return Vector2(
+		_axis_against_gravity(v.x, gravity_dt.x, friction_dt.x),
+		_axis_against_gravity(v.y, gravity_dt.y, friction_dt.y)
+	)
+
+
+## `v` with its total speed capped at `cap`, or each axis capped when `per_axis`.
+static func capped(v: Vector2, cap: float, per_axis: bool) -> Vector2:
+	if per_axis:
+		return v.clamp(Vector2(-cap, -cap), Vector2(cap, cap))
+	var speed2: float = v.length_squared()
+	if speed2 > cap * cap:
+		return v * (cap / sqrt(speed2))
+	return v
+
+
+static func _axis_against_gravity(v: float, pull: float, friction: float) -> float:
+	if pull == 0.0:
+		return v - clampf(v, -friction, friction)
+	return v - signf(pull) * minf(friction, absf(pull))

@@ -1,0 +1,69 @@
+class_name Replay
+extends RefCounted
+## One recorded game as plain data: which board (its id and a hash of its content), the
+## seed, the mode, and the inputs as a list of records, plus the step count and the world's
+## state hash at the end. Playing the records through the same rules on the same board must
+## end in the same state hash (ReplayPlayer). Read and written as JSON Lines by
+## ReplayReader / ReplayWriter; the format is described in docs/architecture.md.
+##
+## A record is an Array whose first item names it; the rest are whole numbers:
+## [br]- `["tilt", frames, steps, x, y]`: maze, `frames` frames in a row, each running `steps`
+##   fixed steps with the tilt (x, y) in hundredths of a degree (run-length encoded).
+## [br]- `["run", frames, steps]`: pachinko, `frames` frames of `steps` steps each.
+## [br]- `["start", step]`: pachinko, a game started (the cup was filled) before `step`.
+## [br]- `["fire", step, power]`: pachinko, a shot with power in hundredths (0..10000).
+## Events carry the world's step count when they happened, a check the reader makes.
+
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
+## The format this build writes and reads.
+const VERSION := 1
+const MAZE := "maze"
+const PACHINKO := "pachinko"
+## Pachinko has one mode; the maze has easy and hard.
+const PACHINKO_MODE := "normal"
+## Record kinds and how many numbers follow the name, per game.
+const RECORD_SIZES := {
+	MAZE: {"tilt": 4},
+	PACHINKO: {"run": 2, "start": 1, "fire": 2},
+}
+## Tilt and power are kept in hundredths by the rules (MazeRules, PachinkoRules).
+const HUNDREDTHS := 100.0
+
+## "maze" or "pachinko".
+var game := MAZE
+## The board's `board_id`.
+var board_id := ""
+## SHA-256 of the board's canonical text (`content_hash`): the board played must be this one.
+var board_hash := ""
+## The seed the rules were built with (pachinko nudges; the maze autoplay's pilot).
+var rng_seed := 0
+## Maze: black holes live. Pachinko: always false.
+var hard := false
+## The world's fixed steps per second when recorded.
+var step_hz := 120
+## Fixed steps the world ran in the whole recording.
+var steps := 0
+## `BallWorld.state_hash()` at the end of the recording.
+var state_hash := 0
+## Seconds on the game's clock at the end (the maze's run time), for showing only.
+var seconds := 0.0
+## The records, in order (see the class notes).
+var records: Array[Array] = []
+
+
+## The mode's name as the file writes it: "easy" or "hard" for the maze, "normal" for pachinko.
+func mode_name() -> String:
+	if game == PACHINKO:
+		return PACHINKO_MODE
+	return "hard" if hard else "easy"
+
+
+## The content hash of a board: SHA-256 of the text BoardTextWriter makes from it, so the same
+## board gives the same hash however its file was laid out.
+static func content_hash(level: BoardLevel) -> String:
+	return BoardTextWriter.write(level).sha256_text()
+
+
+## "maze" or "pachinko" for a board.
+static func game_of(level: BoardLevel) -> String:
+	return MAZE if level.is_maze() else PACHINKO

@@ -1,0 +1,152 @@
+class_name ReplayRecorder
+extends RefCounted
+## Records a game as it is played, for a Replay: attach it to the rules, call `note_frame()`
+## after every frame that advanced them, and `finish()` when a replay is wanted.
+##
+## The maze records one attempt: from `MazeRules.started` until the next reset, the tilt of
+## every frame and how many fixed steps it ran. Pachinko records the rules' whole life (its
+## world never restarts): the steps of every frame, each game start and each shot's power.
+## Frames matter, not just steps: the rules check wins and stuck balls once per frame, so a
+## replay runs the same steps in the same frames.
+
+const Reader := preload("res://scripts/replay/replay_reader.gd")
+
+var _maze: MazeRules
+var _pachinko: PachinkoRules
+var _replay := Replay.new()
+## World step count when the last frame was noted.
+var _noted_steps := 0
+var _recording := false
+## True once the recording grew past what a replay file may hold (ReplayReader's caps).
+var _too_long := false
+
+
+## Records attempts on `rules` (each from its start until a reset). `rng_seed` is stored
+## for reference (the maze has no randomness of its own).
+func attach_maze(rules: MazeRules, rng_seed := 0) -> void:
+	_maze = rules
+	_begin(rules.level, rng_seed, rules.step_seconds())
+	rules.started.connect(_on_maze_started)
+	rules.game_reset.connect(_on_maze_reset)
+	if rules.is_playing():
+		_on_maze_started()
+
+
+## Records everything `rules` does from now on; it must be fresh (its world not stepped
+## yet). `rng_seed` must be the seed the rules were built with.
+func attach_pachinko(rules: PachinkoRules, rng_seed: int) -> void:
+	_pachinko = rules
+	_begin(rules.level, rng_seed, rules.step_seconds())
+	if rules.world.step_count != 0:
+		push_error("ReplayRecorder: attach to fresh PachinkoRules, before any step")
+	rules.game_started.connect(_on_pachinko_started)
+	rules.ball_launched.connect(_on_ball_launched)
+	_recording = true
+
+
+## True while frames are being recorded (a maze attempt is under way).
+func is_recording() -> bool:
+	return _recording
+
+
+## Notes the frame that just ran: the steps since the last note (none: nothing to note) and,
+## in the maze, the tilt they ran with.
+func note_frame() -> void:
+	if not _recording:
+		return
+	var world := _world()
+	if world.step_count > Reader.MAX_STEPS or _replay.records.size() >= Reader.MAX_LINES - 1:
+		push_warning("ReplayRecorder: the game is too long for a replay; recording stopped")
+		_recording = false
+		_too_long = true
+		return
+	var steps := world.step_count - _noted_steps
+	_noted_steps = world.step_count
+	while steps > 0:
+		# The world runs at most MAX_STEPS_PER_FRAME a frame; more means frames were missed.
+		var chunk := mini(steps, Reader.MAX_STEPS_PER_FRAME)
+		if steps > chunk:
+			push_warning("ReplayRecorder: %d steps in one frame; a frame was not noted" % steps)
+		_add_frame(chunk)
+		steps -= chunk
+
+
+## The replay so far, ended here (the pending frame noted, the state hash taken now). The
+## recorder goes on recording; null before a maze attempt started or when the game grew
+## too long for a replay file.
+func finish() -> Replay:
+	if (_maze == null and _pachinko == null) or _too_long:
+		return null
+	if _maze != null and _replay.records.is_empty() and not _recording:
+		return null
+	note_frame()
+	var done := Replay.new()
+	done.game = _replay.game
+	done.board_id = _replay.board_id
+	done.board_hash = _replay.board_hash
+	done.rng_seed = _replay.rng_seed
+	done.step_hz = _replay.step_hz
+	done.hard = _maze.hard_mode if _maze != null else false
+	done.steps = _world().step_count
+	done.state_hash = _world().state_hash()
+	done.seconds = _maze.elapsed if _maze != null else 0.0
+	for record in _replay.records:
+		done.records.append(record.duplicate())
+	return done
+
+
+func _begin(level: BoardLevel, rng_seed: int, step_seconds: float) -> void:
+	_replay = Replay.new()
+	_replay.game = Replay.game_of(level)
+	_replay.board_id = level.board_id
+	_replay.board_hash = Replay.content_hash(level)
+	_replay.rng_seed = rng_seed
+	_replay.step_hz = roundi(1.0 / step_seconds)
+
+
+func _world() -> BallWorld:
+	return _maze.world if _maze != null else _pachinko.world
+
+
+func _add_frame(steps: int) -> void:
+	var record: Array = ["run", 1, steps]
+	if _maze != null:
+		var tilt := (_maze.tilt * Replay.HUNDREDTHS).round()
+		record = ["tilt", 1, steps, int(tilt.x), int(tilt.y)]
+	var records := _replay.records
+	if not records.is_empty():
+		var last: Array = records[-1]
+		if (
+			last.size() == record.size()
+			and last[0] == record[0]
+			and last.slice(2) == record.slice(2)
+		):
+			last[1] += 1
+			return
+	records.append(record)
+
+
+func _on_maze_started() -> void:
+	_replay.records.clear()
+	_too_long = false
+	_noted_steps = _maze.world.step_count
+	_recording = true
+
+
+func _on_maze_reset() -> void:
+	_replay.records.clear()
+	_recording = false
+
+
+func _on_pachinko_started(_cup: int) -> void:
+	note_frame()
+	if not _recording:
+		return
+	_replay.records.append(["start", _pachinko.world.step_count])
+
+
+func _on_ball_launched(_ball_id: int, power: float, _speed: float) -> void:
+	note_frame()
+	if not _recording:
+		return
+	_replay.records.append(["fire", _pachinko.world.step_count, roundi(power * Replay.HUNDREDTHS)])

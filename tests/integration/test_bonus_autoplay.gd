@@ -1,0 +1,24 @@
+extends GutTest
+## The bonus boards under the autoplay: the reels spin, a jackpot comes within ten minutes,
+## every ball is accounted for, and the same seed gives the same report.
+
+const FEVER := "res://levels/pachinko/fever.board"
+const AutoplayScript := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
+
+
+func test_ten_minutes_on_fever_bring_spins_and_a_jackpot() -> void:
+	var level: BoardLevel = load(FEVER)
+	var report: Dictionary = AutoplayScript.run(level, 600.0, 7)
+	assert_gt(report["reel_spins"], 0, "the start pocket caught balls")
+	assert_gt(report["jackpots"], 0, "at least one jackpot")
+	assert_gt(report["attacker_paid"], 0, "the open attacker caught balls")
+	assert_gt(report["tulip_opens"], 0)
+	assert_true(report["accounting_ok"])
+
+
+func test_the_same_seed_gives_the_same_report() -> void:
+	var level: BoardLevel = load(FEVER)
+	var first := JSON.stringify(AutoplayScript.run(level, 60.0, 3))
+	var second := JSON.stringify(AutoplayScript.run(level, 60.0, 3))
+	assert_eq(first, second)
+	assert_string_contains(first, '"reel_spins"')

@@ -1,0 +1,52 @@
+extends GutTest
+## Power aims: on every shipped board a ball leaves the rail in free flight short of the
+## top, and a stronger shot carries farther across the top before it meets its first pin
+## (the chapter's launch speed, 3.5 + 0.065 * power px per 30 ms tick, is what moves it).
+
+const PowerAim := preload("res://scripts/pachinko/autoplay/power_aim.gd")
+const BOARDS := ["classic", "tulips", "windmills"]
+
+
+func _board(id: String) -> BoardLevel:
+	var loaded := BoardLoader.load_board("res://levels/pachinko/%s.board" % id)
+	assert_not_null(loaded.level, "%s loads" % id)
+	return loaded.level
+
+
+func _mean_entry_x(level: BoardLevel, powers: Array) -> float:
+	var sum := 0.0
+	for power: float in powers:
+		var shot := PowerAim.shoot(level, power)
+		assert_false(is_nan(shot["entry_x"]), "power %s reached a pin" % power)
+		sum += shot["entry_x"]
+	return sum / powers.size()
+
+
+func test_strong_shots_carry_across_the_top_and_weak_ones_drop_near_the_rail() -> void:
+	for id: String in BOARDS:
+		var level := _board(id)
+		var weak := _mean_entry_x(level, [14.0, 16.0, 18.0])
+		var strong := _mean_entry_x(level, [92.0, 96.0, 100.0])
+		assert_gt(
+			weak - strong, 60.0, "%s: weak enters at x %d, strong at x %d" % [id, weak, strong]
+		)
+		var exit := LaunchRail.entry_point(level)
+		assert_gt(exit.x, level.ring_center.x, "%s: the rail opens right of the top" % id)
+
+
+func test_the_flight_lane_has_no_free_pin() -> void:
+	for id: String in BOARDS:
+		var level := _board(id)
+		var in_lane := 0
+		for i in level.pins.size():
+			if level.pin_pocket[i] < 0 and LaunchRail.in_flight_lane(level, level.pins[i]):
+				in_lane += 1
+		assert_eq(in_lane, 0, "%s: no pin in the way of a shot's flight" % id)
+
+
+func test_total_variation_is_zero_for_equal_and_one_for_disjoint_shares() -> void:
+	assert_eq(PowerAim.tv_distance({"p0": 0.5, "p1": 0.5}, {"p1": 0.5, "p0": 0.5}), 0.0)
+	assert_eq(PowerAim.tv_distance({"p0": 1.0}, {"p1": 1.0}), 1.0)
+	assert_almost_eq(
+		PowerAim.tv_distance({"p0": 0.75, "p1": 0.25}, {"p0": 0.25, "p1": 0.75}), 0.5, 1e-6
+	)

@@ -1,0 +1,58 @@
+extends GutTest
+## Lights and juice: a struck pin glows and fades (one canvas item for every lit pin), paid
+## balls pour into the cup, and balls are drawn larger than their physics with a dark rim.
+
+const GAME := "res://scenes/pachinko/pachinko_game.tscn"
+const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
+
+
+func _game() -> Control:
+	var game := (load(GAME) as PackedScene).instantiate() as Control
+	add_child_autofree(game)
+	return game
+
+
+func test_a_struck_pin_lights_up_and_fades() -> void:
+	var game := _game()
+	var rules := game.get("rules") as PachinkoRules
+	var lights := game.get_node("BoardView/PinLights")
+	assert_not_null(lights, "one pin-lights layer")
+	assert_eq(lights.get_child_count(), 0, "no node per pin")
+	rules.world.pin_hit.emit(0, 7, 400.0)
+	rules.world.pin_hit.emit(0, 9, 40.0)
+	assert_eq(lights.call("glow_of", 7), 1.0, "a hard hit lights fully")
+	assert_almost_eq(float(lights.call("glow_of", 9)), 0.35, 0.001, "a tap still shows")
+	lights.call("_process", 0.2)
+	assert_lt(float(lights.call("glow_of", 7)), 1.0, "fading")
+	assert_gt(float(lights.call("glow_of", 7)), 0.0)
+	lights.call("_process", 1.0)
+	assert_eq(lights.call("glow_of", 7), 0.0, "out")
+	assert_false(lights.is_processing(), "asleep when nothing is lit")
+
+
+func test_the_ball_layer_sits_above_the_lights() -> void:
+	var game := _game()
+	var view := game.get_node("BoardView")
+	assert_lt(
+		view.get_node("PinLights").get_index(), view.get_node("Balls").get_index(), "balls on top"
+	)
+
+
+func test_paid_balls_pour_into_the_cup() -> void:
+	var game := _game()
+	var cup := game.get_node("Hud/Column/Cup")
+	cup.call("pour", 4)
+	assert_eq(cup.call("pouring"), 4, "four balls on their way")
+	for i in 60:
+		cup.call("_process", 1.0 / 60.0)
+	assert_eq(cup.call("pouring"), 0, "all landed within a second")
+	cup.call("pour", 500)
+	assert_eq(cup.call("pouring"), 14, "a big payout pours a capped stream")
+
+
+func test_balls_have_a_dark_rim() -> void:
+	var image := BallLayer.make_ball_image(64)
+	var rim := image.get_pixel(32, 4)  # just inside the top edge
+	var middle := image.get_pixel(32, 32)
+	assert_lt(rim.get_luminance(), middle.get_luminance() * 0.5, "the outline is dark")
+	assert_gt(BallLayer.DRAW_SCALE, 1.0, "drawn a little larger than the physics")

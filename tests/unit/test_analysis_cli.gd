@@ -1,0 +1,58 @@
+extends GutTest
+## The --analyze command once its flags are parsed: the JSON line's keys, the files it
+## writes, and bad input.
+
+const AnalyzeCli := preload("res://scripts/app/analyze_cli.gd")
+const KEYS := [
+	"board",
+	"shots",
+	"seed",
+	"threads",
+	"wall_s",
+	"shots_per_s",
+	"return",
+	"return_ci95",
+	"pockets",
+	"bands",
+	"dead_pockets",
+	"heatmap"
+]
+
+var _saved_dir := ""
+
+
+func before_each() -> void:
+	_saved_dir = AnalyzeCli.out_dir_override
+	AnalyzeCli.out_dir_override = "build/test_analysis"
+
+
+func after_each() -> void:
+	AnalyzeCli.out_dir_override = _saved_dir
+
+
+func test_a_pachinko_run_writes_its_report_and_heat_map() -> void:
+	var values := {"analyze": "pachinko", "board": "classic", "shots": 300, "seed": 4, "threads": 2}
+	assert_eq(AnalyzeCli.run(values), 0)
+	var json := ProjectSettings.globalize_path("res://build/test_analysis/pachinko_classic.json")
+	var report: Dictionary = JSON.parse_string(FileAccess.get_file_as_string(json))
+	for key: String in KEYS:
+		assert_true(report.has(key), "the report has %s" % key)
+	assert_eq(report["shots"], 300.0)
+	assert_eq((report["bands"] as Array).size(), 5)
+	var pocket: Dictionary = report["pockets"][0]
+	for key: String in ["id", "payout", "hits", "rate", "ci95"]:
+		assert_true(pocket.has(key), "a pocket has %s" % key)
+	var png := ProjectSettings.globalize_path("res://" + str(report["heatmap"]))
+	var image := Image.load_from_file(png)
+	assert_not_null(image, "the heat map is a PNG")
+	if image != null:
+		assert_eq(image.get_size(), Vector2i(700, 700), "drawn at the board's size")
+
+
+func test_bad_input_exits_2() -> void:
+	var missing := {"analyze": "pachinko", "board": "no_such_board", "shots": 10, "seed": 1}
+	assert_eq(AnalyzeCli.run(missing), 2)
+	var no_shots := {"analyze": "pachinko", "board": "classic", "shots": 0, "seed": 1}
+	assert_eq(AnalyzeCli.run(no_shots), 2)
+	var wrong_game := {"analyze": "maze", "board": "res://levels/pachinko/classic.board", "seed": 1}
+	assert_eq(AnalyzeCli.run(wrong_game), 2)

@@ -1,0 +1,100 @@
+extends GutTest
+## The pachinko play analysis against the real physics: a board with a known answer, the
+## same figures on any thread count, the rail hand-over changing nothing, cancel.
+
+const TIMING_KEYS := ["wall_s", "shots_per_s", "threads"]
+
+
+func _classic() -> BoardLevel:
+	return BoardLoader.load_board("res://levels/pachinko/classic.board").level
+
+
+func test_a_board_without_pins_returns_only_the_weak_shots() -> void:
+	# No pins, no pockets: every shot too weak for the rail rolls back (worth one ball) and
+	# every other one drains, so the return is the share of powers below the clearing one.
+	var bare := _classic().duplicate_level()
+	bare.pockets = []
+	bare.pins = PackedVector2Array()
+	bare.pin_pocket = PackedInt32Array()
+	bare.pin_special = PackedByteArray()
+	var plan := AnalysisPlan.create(bare, 400, 3)
+	var tally := PachinkoAnalysis.new(plan).run()
+	var report := AnalysisReport.build(plan, tally, 1.0)
+	var weak := 0
+	for c in plan.chunk_count():
+		for q in plan.chunk_levels(c):
+			if AnalysisPlan.power_of(q) < 12.0:
+				weak += 1
+	assert_eq(report["shots"], 400)
+	assert_eq(report["returned"], weak, "exactly the shots below power 12 roll back")
+	assert_eq(report["drained"], 400 - weak)
+	assert_almost_eq(report["return"], weak / 400.0, 1e-4)
+	# The sample from a uniform power is near the true share 11.875 / 100.
+	assert_almost_eq(report["return"], 0.11875, report["return_ci95"] * 1.5)
+
+
+func test_a_fixed_power_gives_one_outcome_with_no_spread() -> void:
+	var plan := AnalysisPlan.create(_classic(), 60, 1)
+	plan.power_from = 70.0
+	plan.power_to = 70.0
+	var report := AnalysisReport.build(plan, PachinkoAnalysis.new(plan).run(), 1.0)
+	assert_true(report["return"] == 0.0 or report["return"] == 4.0, "every shot the same")
+	assert_eq(report["return_ci95"], 0.0)
+	var band: Dictionary = report["bands"][3]
+	assert_eq(band["shots"], 60, "power 70 lies in the fourth band")
+
+
+func test_figures_are_the_same_on_one_and_two_threads() -> void:
+	var reports: Array[Dictionary] = []
+	for threads in [1, 2]:
+		var plan := AnalysisPlan.create(_classic(), 520, 11)
+		plan.threads = threads
+		var analysis := PachinkoAnalysis.new(plan)
+		var report := AnalysisReport.build(plan, analysis.run(), analysis.wall_seconds)
+		for key: String in TIMING_KEYS:
+			report.erase(key)
+		reports.append(report)
+	assert_eq(JSON.stringify(reports[0]), JSON.stringify(reports[1]))
+	assert_gt(reports[0]["pockets"][1]["hits"], 0, "a real run catches balls")
+
+
+func test_the_rail_hand_over_changes_no_outcome() -> void:
+	# The same chunk fired from the launcher (no table) and from the rail exits.
+	var plan := AnalysisPlan.create(_classic(), 120, 5)
+	var analysis := PachinkoAnalysis.new(plan)
+	var with_table := analysis.run()
+	var clear: float = PachinkoAnalysis.LaunchCalibration.clear_speed(plan.level)
+	var full := PachinkoShotChunk.new(plan, clear, null)
+	assert_true(full.run(0))
+	assert_eq(with_table.band_pocket_hits, full.tally.band_pocket_hits)
+	assert_eq(with_table.band_value, full.tally.band_value)
+	assert_eq(with_table.band_returned, full.tally.band_returned)
+	assert_lt(with_table.ball_steps, full.tally.ball_steps, "the climbs were not simulated")
+
+
+func test_cancel_stops_a_background_run() -> void:
+	var plan := AnalysisPlan.create(_classic(), 5000, 2)
+	plan.threads = 2
+	var analysis := PachinkoAnalysis.new(plan)
+	assert_true(analysis.start())
+	analysis.cancel()
+	var started := Time.get_ticks_msec()
+	while not analysis.poll():
+		OS.delay_msec(5)
+	assert_eq(analysis.phase, PachinkoAnalysis.Phase.CANCELLED)
+	assert_lt(Time.get_ticks_msec() - started, 5000, "stopped long before 5000 shots")
+	var partial := analysis.tally()
+	assert_true(partial == null or partial.total_shots() < 5000)
+
+
+func test_a_plan_that_cannot_run_is_refused_with_a_reason() -> void:
+	var maze := BoardLoader.load_board("res://levels/maze/classic.board").level
+	var plan := AnalysisPlan.create(maze, 10, 1)
+	assert_string_contains(plan.problem(), "pachinko board")
+	assert_null(PachinkoAnalysis.new(plan).run())
+	assert_push_error("pachinko board")
+	var bad := AnalysisPlan.create(_classic(), 0, 1)
+	assert_string_contains(bad.problem(), "at least one shot")
+	bad.shots = 10
+	bad.power_to = 150.0
+	assert_string_contains(bad.problem(), "0..100")

@@ -1,0 +1,236 @@
+extends GutTest
+## Replays: a recorded game plays back to the same state hash, for both games, whether it
+## was recorded by the autoplay (one step a frame) or frame by frame with uneven frame times
+## as the real games run; the file round-trips; `--replay` answers with the right exit code.
+
+const MAZE_CLASSIC := "res://levels/maze/classic.board"
+const PACHINKO_CLASSIC := "res://levels/pachinko/classic.board"
+const Reader := preload("res://scripts/replay/replay_reader.gd")
+const Writer := preload("res://scripts/replay/replay_writer.gd")
+const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
+const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
+const TEMP := "user://test_replay.replay"
+const Kit := preload("res://tests/unit/replay_kit.gd")
+
+
+class TestFormat:
+	extends GutTest
+
+	func test_a_replay_survives_writing_and_reading() -> void:
+		var replay := Replay.new()
+		replay.game = Replay.MAZE
+		replay.board_id = "maze_classic"
+		replay.board_hash = "ab".repeat(32)
+		replay.rng_seed = 1776351234567
+		replay.hard = true
+		replay.steps = 7
+		replay.state_hash = 4294967295
+		replay.seconds = 0.058
+		replay.records.append(["tilt", 2, 2, 1200, -1187])
+		replay.records.append(["tilt", 1, 3, 0, 5])
+		var text := Writer.write(replay)
+		assert_eq(text, Writer.write(replay), "the same replay, the same text")
+		var back: Replay = Reader.read(text)["replay"]
+		assert_eq(back.board_id, "maze_classic")
+		assert_eq(back.board_hash, replay.board_hash)
+		assert_eq(back.rng_seed, 1776351234567, "a large seed is kept exactly")
+		assert_eq(back.state_hash, 4294967295)
+		assert_true(back.hard)
+		assert_eq(back.steps, 7)
+		assert_almost_eq(back.seconds, 0.058, 0.0005)
+		assert_eq(back.records, replay.records)
+		assert_eq(text.count("\n"), 3, "a header line and one line per record")
+
+	func test_the_best_run_and_last_game_paths() -> void:
+		assert_eq(
+			ReplayStore.best_maze_path("maze_classic", true),
+			"user://replays/maze_classic_hard.replay"
+		)
+		assert_eq(
+			ReplayStore.best_maze_path("my board/..", false),
+			"user://replays/maze_my_board____easy.replay"
+		)
+		assert_eq(
+			ReplayStore.last_pachinko_path("pachinko_tulips"),
+			"user://replays/pachinko_tulips_last.replay"
+		)
+
+	func test_tilt_and_power_are_kept_in_hundredths() -> void:
+		var rules := MazeRules.new(Kit.load_level(MAZE_CLASSIC))
+		rules.set_tilt(Vector2(1.23456, -7.891))
+		assert_almost_eq(rules.tilt.x, 1.23, 0.00001)
+		assert_almost_eq(rules.tilt.y, -7.89, 0.00001)
+		var again := rules.tilt
+		rules.set_tilt(Vector2(123, -789) / 100.0)
+		assert_eq(rules.tilt, again, "the hundredths a file holds give the very same tilt")
+
+
+class TestMaze:
+	extends GutTest
+
+	func test_an_autoplay_run_replays_to_the_same_state_hash() -> void:
+		var level := Kit.load_level(MAZE_CLASSIC)
+		var recorder := ReplayRecorder.new()
+		var result := MazeAutoplay.run(level, 20.0, 1, false, recorder)
+		var replay := recorder.finish()
+		assert_eq(replay.state_hash, int(result["state_hash"]), "recorded at the autoplay's end")
+		assert_eq(replay.steps, int(result["frames_simulated"]))
+		var played := Kit.play(replay, level)
+		assert_true(played["match"], str(played))
+		assert_eq(played["state_hash"], result["state_hash"])
+
+	func test_a_game_with_uneven_frames_replays_exactly() -> void:
+		var level := Kit.load_level(MAZE_CLASSIC)
+		var replay := Kit.record_live_maze(level, false, 900).finish()
+		assert_gt(replay.steps, 900, "frames of several steps were recorded")
+		var played := Kit.play(replay, level)
+		assert_true(played["match"], str(played))
+
+	func test_a_hard_run_lost_in_a_hole_replays_exactly() -> void:
+		var level := Kit.load_level(MAZE_CLASSIC)
+		var recorder := Kit.record_live_maze(level, true, 3000)
+		var replay := recorder.finish()
+		assert_true(replay.hard)
+		var played := Kit.play(replay, level)
+		assert_true(played["match"], str(played))
+
+	func test_a_minute_of_play_is_a_small_file() -> void:
+		var recorder := ReplayRecorder.new()
+		MazeAutoplay.run(Kit.load_level(MAZE_CLASSIC), 60.0, 2, false, recorder)
+		var text := Writer.write(recorder.finish())
+		assert_lt(text.length(), 40 * 1024, "a minute at 120 steps a second, run-length encoded")
+
+
+class TestPachinko:
+	extends GutTest
+
+	func test_an_autoplay_game_replays_to_the_same_state_hash() -> void:
+		var level := Kit.load_level(PACHINKO_CLASSIC)
+		var recorder := ReplayRecorder.new()
+		var result := PachinkoAutoplay.run(level, 40.0, 3, recorder)
+		var replay := recorder.finish()
+		assert_eq(replay.state_hash, int(result["state_hash"]))
+		assert_gt(int(result["shots"]), 10)
+		var played := Kit.play(replay, level)
+		assert_true(played["match"], str(played))
+
+	func test_charged_shots_with_uneven_frames_replay_exactly() -> void:
+		var level := Kit.load_level(PACHINKO_CLASSIC)
+		var rules := PachinkoRules.new(level, 99)
+		var recorder := ReplayRecorder.new()
+		recorder.attach_pachinko(rules, 99)
+		var rng := RandomNumberGenerator.new()
+		rng.seed = 11
+		rules.start_game()
+		var holding := 0.0
+		for frame in 1500:
+			var delta := rng.randf_range(0.005, 0.035)
+			if not rules.drawing and rules.loaded and rng.randf() < 0.05:
+				rules.begin_charge()
+				holding = rng.randf_range(0.3, 1.3)
+			elif rules.drawing:
+				rules.charge(delta)
+				holding -= delta
+				if holding <= 0.0:
+					rules.release()
+			rules.advance(delta)
+			recorder.note_frame()
+		var replay := recorder.finish()
+		assert_gt(rules.ledger.shots, 5, "shots were fired")
+		var played := Kit.play(replay, level)
+		assert_true(played["match"], str(played))
+
+
+class TestCommand:
+	extends GutTest
+
+	func before_each() -> void:
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(TEMP))
+
+	func after_all() -> void:
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(TEMP))
+
+	func _recorded() -> Replay:
+		var recorder := ReplayRecorder.new()
+		MazeAutoplay.run(Kit.load_level(MAZE_CLASSIC), 5.0, 1, false, recorder)
+		return recorder.finish()
+
+	func test_a_matching_replay_exits_0() -> void:
+		assert_eq(ReplayStore.save(_recorded(), TEMP), OK)
+		assert_eq(ReplayCli.run({"replay": TEMP}), 0)
+
+	func test_a_wrong_final_hash_exits_1() -> void:
+		var replay := _recorded()
+		replay.state_hash += 1
+		ReplayStore.save(replay, TEMP)
+		assert_eq(ReplayCli.run({"replay": TEMP}), 1)
+
+	func test_a_changed_board_exits_2_and_says_so() -> void:
+		var replay := _recorded()
+		replay.board_hash = "0".repeat(64)
+		ReplayStore.save(replay, TEMP)
+		assert_eq(ReplayCli.run({"replay": TEMP}), 2)
+		var found := ReplayStore.find_board(replay)
+		assert_string_contains(str(found.get("error")), "has changed since the replay was recorded")
+
+	func test_a_missing_board_or_file_exits_2() -> void:
+		var replay := _recorded()
+		replay.board_id = "no_such_board"
+		ReplayStore.save(replay, TEMP)
+		assert_eq(ReplayCli.run({"replay": TEMP}), 2)
+		assert_string_contains(
+			str(ReplayStore.find_board(replay).get("error")), "no maze board 'no_such_board'"
+		)
+		assert_eq(ReplayCli.run({"replay": "user://no_such.replay"}), 2)
+
+
+class TestLimits:
+	extends GutTest
+
+	func test_a_game_too_long_for_a_file_stops_recording_and_saves_nothing() -> void:
+		var rules := PachinkoRules.new(Kit.load_level(PACHINKO_CLASSIC), 1)
+		var recorder := ReplayRecorder.new()
+		recorder.attach_pachinko(rules, 1)
+		rules.world.step_count = Reader.MAX_STEPS + 1  # as after hours of play
+		recorder.note_frame()
+		assert_false(recorder.is_recording())
+		assert_null(recorder.finish(), "no replay the reader would refuse")
+		assert_eq(ReplayStore.save(recorder.finish(), "user://never.replay"), ERR_INVALID_PARAMETER)
+		assert_false(FileAccess.file_exists("user://never.replay"))
+
+
+class TestPachinkoScreen:
+	extends GutTest
+
+	const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
+	const FOLDER := "user://test_replay_pachinko"
+
+	func before_each() -> void:
+		ReplayStore.folder = FOLDER
+
+	func after_each() -> void:
+		Kit.remove_folder(FOLDER)
+		ReplayStore.folder = ReplayStore.DIR
+
+	func test_the_screen_keeps_the_last_game_as_a_replay_that_plays_back() -> void:
+		var game: Control = GAME.instantiate()
+		add_child_autofree(game)
+		var rules: PachinkoRules = game.get("rules")
+		for frame in 20:
+			game.call("_process", 1.0 / 60.0)
+		rules.start_game()
+		for shot in 4:
+			rules.begin_charge()
+			rules.charge(0.55 + 0.137 * shot)
+			rules.release()
+			for frame in 40:
+				game.call("_process", 1.0 / 60.0)
+		assert_eq(rules.ledger.shots, 4, "four charged shots")
+		game.call("_on_game_ended", rules.stats())
+		var path := ReplayStore.last_pachinko_path(rules.level.board_id)
+		assert_eq(path, FOLDER + "/pachinko_classic_last.replay")
+		var read := ReplayStore.read_file(path)
+		assert_true(read.has("replay"), str(read.get("error")))
+		var played := ReplayPlayer.new(read["replay"], rules.level).play_to_end()
+		assert_true(played["match"], str(played))
+		assert_eq(played["state_hash"], rules.world.state_hash(), "the screen's own game")

@@ -1,0 +1,170 @@
+extends GutTest
+## The ghost of the best run: a saved best maze run played in its own world, in step with a
+## live attempt, shows the balls where the best run had them at the same step; the maze
+## screen saves a best run and shows its ghost on the next attempt.
+
+const MAZE_CLASSIC := "res://levels/maze/classic.board"
+const Kit := preload("res://tests/unit/replay_kit.gd")
+const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
+const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
+const GAME := preload("res://scenes/maze/maze_game.tscn")
+const TEST_FOLDER := "user://test_replay_ghost"
+const TEST_SETTINGS := "user://test_ghost_settings.cfg"
+const TEST_SAVE := "user://test_ghost_save.cfg"
+
+
+func before_each() -> void:
+	ReplayStore.folder = TEST_FOLDER
+	Kit.remove_folder(TEST_FOLDER)
+
+
+func after_each() -> void:
+	Kit.remove_folder(TEST_FOLDER)
+	ReplayStore.folder = ReplayStore.DIR
+
+
+## A first attempt played frame by frame as the game does; returns the replay and the ball
+## positions after every frame, by step count.
+func _first_attempt(level: BoardLevel) -> Array:
+	var rules := MazeRules.new(level)
+	var recorder := ReplayRecorder.new()
+	recorder.attach_maze(rules)
+	rules.start()
+	var seen := {}
+	var rng := RandomNumberGenerator.new()
+	rng.seed = 5
+	var angle := 0.0
+	for frame in 600:
+		var delta := rng.randf_range(0.006, 0.03)
+		angle += delta
+		rules.set_tilt(Vector2(cos(angle), sin(angle * 1.7)) * 12.0)
+		rules.advance(delta)
+		recorder.note_frame()
+		seen[rules.world.step_count] = rules.world.get_positions()
+	return [recorder.finish(), seen]
+
+
+func test_the_ghost_shows_the_best_run_step_for_step() -> void:
+	var level := Kit.load_level(MAZE_CLASSIC)
+	var first := _first_attempt(level)
+	var replay: Replay = first[0]
+	var seen: Dictionary = first[1]
+	assert_eq(ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false)), OK)
+	var ghost := GhostRun.load_best(level, false)
+	assert_not_null(ghost, "the second attempt finds the best run")
+	assert_eq(ghost.positions(), Kit.load_level(MAZE_CLASSIC).ball_starts, "it waits at the start")
+	var compared := 0
+	var live_steps := 0
+	while live_steps < replay.steps:
+		live_steps += 1 + (live_steps % 3)  # the live game's own, different frames
+		ghost.sync(live_steps)
+		assert_lte(ghost.steps(), live_steps, "the ghost never runs ahead")
+		if seen.has(ghost.steps()):
+			assert_eq(ghost.positions(), seen[ghost.steps()], "step %d" % ghost.steps())
+			compared += 1
+	assert_gt(compared, 100, "positions were compared all along the run")
+	ghost.sync(replay.steps + 1000)
+	assert_true(ghost.is_finished())
+	assert_eq(ghost.positions(), seen[replay.steps], "it stays where the best run ended")
+	ghost.restart()
+	assert_eq(ghost.steps(), 0, "a reset sends it back to the start")
+
+
+func test_no_ghost_without_a_best_run_in_that_mode_or_for_a_changed_board() -> void:
+	var level := Kit.load_level(MAZE_CLASSIC)
+	assert_null(GhostRun.load_best(level, false), "nothing saved yet")
+	var replay: Replay = _first_attempt(level)[0]
+	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
+	assert_null(GhostRun.load_best(level, true), "the easy run is no ghost for hard mode")
+	replay.board_hash = "f".repeat(64)
+	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
+	assert_null(GhostRun.load_best(level, false), "the board changed since: no ghost")
+
+
+func test_the_ghost_setting_is_saved_and_read_back() -> void:
+	var path := "user://test_ghost_setting.cfg"
+	var settings := GameSettings.new()
+	assert_true(settings.show_ghost, "on by default")
+	settings.set_value("show_ghost", false)
+	assert_eq(settings.save_file(path), OK)
+	var read := GameSettings.new()
+	assert_eq(read.load_file(path), "", "no problem reported")
+	assert_false(read.show_ghost)
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+
+class TestMazeScreen:
+	extends GutTest
+
+	var _game: Control
+
+	func before_all() -> void:
+		App.load_player_files(TEST_SETTINGS, TEST_SAVE)
+
+	func after_all() -> void:
+		App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
+		for path in [TEST_SETTINGS, TEST_SAVE]:
+			DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+	func before_each() -> void:
+		ReplayStore.folder = TEST_FOLDER
+		Kit.remove_folder(TEST_FOLDER)
+		_game = GAME.instantiate()
+		add_child_autofree(_game)
+
+	func after_each() -> void:
+		Kit.remove_folder(TEST_FOLDER)
+		ReplayStore.folder = ReplayStore.DIR
+
+	func _rules() -> MazeRules:
+		return _game.get("rules")
+
+	## Plays an attempt through the screen as a player would: the joystick moved each frame
+	## (by the autoplay's pilot) and the screen's own `_process`. Returns positions by step.
+	func _play_attempt(frames: int) -> Dictionary:
+		var rules := _rules()
+		var mixer: Object = _game.get("mixer")
+		var rng := RandomNumberGenerator.new()
+		rng.seed = 1
+		var pilot := MazePilot.new(rules.level, false, rng, rules.step_seconds())
+		_game.call("_start")
+		var seen := {}
+		for frame in frames:
+			var tilt := pilot.decide(rules.world.get_positions(), rules.world.get_velocities())
+			mixer.call("joystick_moved", TiltInput.joystick_from_tilt(tilt))
+			_game.call("_process", 1.0 / 60.0)
+			seen[rules.world.step_count] = rules.world.get_positions()
+			if rules.is_over():
+				break
+		return seen
+
+	func test_a_best_run_is_saved_and_its_ghost_shows_on_the_next_attempt() -> void:
+		var rules := _rules()
+		var path := ReplayStore.best_maze_path(rules.level.board_id, false)
+		assert_eq(_game.get("_ghost"), null, "no ghost before any best run")
+		var first := _play_attempt(60 * 120)
+		assert_eq(rules.state, MazeRules.State.WON, "the pilot won the first attempt")
+		assert_true(FileAccess.file_exists(path), "the best run was saved")
+		var saved: Replay = ReplayStore.read_file(path)["replay"]
+		assert_true(Kit.play(saved, rules.level)["match"], "and it replays to its own end")
+		rules.reset()
+		var ghost: GhostRun = _game.get("_ghost")
+		assert_not_null(ghost, "the second attempt has a ghost")
+		_game.call("_start")
+		for frame in 90:
+			_game.call("_process", 1.0 / 60.0)
+		assert_gt(ghost.steps(), 100, "the ghost kept pace with the live game")
+		assert_eq(ghost.positions(), first[ghost.steps()], "where the best run was")
+		var view: Node3D = _game.get("_ghost_view")
+		assert_eq(view.get("shown_positions"), ghost.positions(), "the ghost view draws them")
+
+	func test_the_setting_turns_the_ghost_off() -> void:
+		App.settings.set_value("show_ghost", false)
+		var rules := _rules()
+		var replay: Replay = Kit.record_live_maze(rules.level, false, 200).finish()
+		ReplayStore.save(replay, ReplayStore.best_maze_path(rules.level.board_id, false))
+		rules.reset()
+		assert_eq(_game.get("_ghost"), null, "no ghost when the setting is off")
+		App.settings.set_value("show_ghost", true)
+		rules.reset()
+		assert_not_null(_game.get("_ghost"), "and back when it is on")

@@ -1,0 +1,60 @@
+extends GutTest
+## Best results: the maze keeps one best time per board and mode (easy and hard never share
+## one), version 1 files migrate with their times as easy times, pachinko keeps the most balls.
+
+const SaveData := preload("res://scripts/app/save_data.gd")
+const PATH := "user://test_save_data.cfg"
+
+
+func after_each() -> void:
+	DirAccess.remove_absolute(PATH)
+
+
+func _write(text: String) -> void:
+	var file := FileAccess.open(PATH, FileAccess.WRITE)
+	file.store_string(text)
+	file.close()
+
+
+func _loaded() -> SaveData:
+	var data := SaveData.new()
+	assert_eq(data.load_file(PATH), "", "loads without a problem")
+	return data
+
+
+func test_easy_and_hard_keep_their_own_best_time() -> void:
+	var data := _loaded()
+	assert_true(data.record_maze_time("classic", false, 40.0))
+	assert_true(data.record_maze_time("classic", true, 55.0), "a slower hard run is a hard best")
+	assert_true(data.record_maze_time("classic", true, 50.0))
+	assert_false(data.record_maze_time("classic", false, 45.0))
+	assert_eq(data.best_maze_time("classic", false), 40.0)
+	assert_eq(data.best_maze_time("classic", true), 50.0)
+
+
+func test_both_modes_survive_a_reload() -> void:
+	var data := _loaded()
+	data.record_maze_time("classic", false, 40.0)
+	data.record_maze_time("classic", true, 65.5)
+	data.record_pachinko_balls("classic", 12)
+	var again := _loaded()
+	assert_eq(again.best_maze_time("classic", false), 40.0)
+	assert_eq(again.best_maze_time("classic", true), 65.5)
+	assert_eq(again.best_pachinko_balls("classic"), 12)
+	assert_eq(again.best_maze_time("other", true), -1.0)
+
+
+func test_a_version_1_file_migrates_its_times_as_easy() -> void:
+	_write(
+		"[meta]\nversion=1\n\n[maze_best_seconds]\nclassic=33.5\n\n[pachinko_best_balls]\nclassic=7\n"
+	)
+	var data := _loaded()
+	assert_eq(data.best_maze_time("classic", false), 33.5)
+	assert_eq(data.best_maze_time("classic", true), -1.0, "version 1 never told the modes apart")
+	assert_eq(data.best_pachinko_balls("classic"), 7)
+	data.record_maze_time("classic", true, 80.0)
+	var text := FileAccess.get_file_as_string(PATH)
+	assert_string_contains(text, "version=%d" % SaveData.VERSION)
+	var again := _loaded()
+	assert_eq(again.best_maze_time("classic", false), 33.5, "the migrated time is kept")
+	assert_eq(again.best_maze_time("classic", true), 80.0)

@@ -1,0 +1,159 @@
+extends SceneTree
+## Builds the two bonus-layer boards with the board editor's own actions (pin rows, pocket
+## stamps, the bonus tool's AddBonus in mirror mode), checks each with BoardValidator and
+## saves it with its level scene:
+##   tools/godot.sh --headless --path . -s res://tools/make_bonus_boards.gd
+## pachinko/fever: rows of pins over a start pocket with a funnel, the attacker below it,
+## two tulips and two plain pockets.
+## pachinko/hanami: a denser field with two start pockets, a high attacker and four tulips.
+
+const Originals := preload("res://tools/make_original_boards.gd")
+const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
+const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
+const PocketAction := preload("res://addons/board_editor/actions/pocket_action.gd")
+const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
+const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
+
+const CENTER := 350.0
+const ROLE := BonusPocketSpec.Role
+
+
+func _initialize() -> void:
+	var ok := true
+	for board: BoardLevel in [make_fever(), make_hanami()]:
+		ok = _save(board) and ok
+	quit(0 if ok else 1)
+
+
+## Fever: the classic layout of a real machine. The start pocket sits in the middle under a
+## funnel of pins; a jackpot opens the wide attacker below it; tulips and plain pockets on
+## the flanks.
+static func make_fever() -> BoardLevel:
+	var history := ActionHistory.new()
+	var level := Originals.pachinko_base(
+		history,
+		"fever",
+		"Fever",
+		"Hit the start pocket to spin the reels: three of a kind opens the attacker below."
+	)
+	_rows(history, level, 13, 34.0, 36.0, 130.0)
+	Originals.erase_pins_outside_field(history, level, 22.0)
+	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
+	_clear_reels(history, level)
+	var windmill := {"kind": "circle", "count": 6, "spacing": 16.0}
+	var spot := Vector2(350, 215)
+	Originals.erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), CENTER)
+	history.commit(PatternAction.new(level, windmill, spot, CENTER))
+	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 2, {"symbols": 3})
+	_funnel(history, level, Vector2(350, 400), 13.0)
+	var attacker := {"open_seconds": 8.0, "open_catches": 10}
+	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 540), 64.0, 12, attacker)
+	_bonus(history, level, ROLE.TULIP, Vector2(215, 330), 26.0, 3, {})
+	for mouth: Vector2 in [Vector2(150, 470)]:
+		Originals.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
+		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 4, CENTER))
+	return level
+
+
+## Hanami: a dense field of pins; two start pockets low on either side, the attacker high in
+## the middle where most balls pass, and four tulips.
+static func make_hanami() -> BoardLevel:
+	var history := ActionHistory.new()
+	var level := Originals.pachinko_base(
+		history,
+		"hanami",
+		"Hanami",
+		"Four tulips and two start pockets: a jackpot lifts the attacker's lid in the middle."
+	)
+	_rows(history, level, 17, 28.0, 30.0, 120.0)
+	Originals.erase_pins_outside_field(history, level, 22.0)
+	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
+	_clear_reels(history, level)
+	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 3})
+	_funnel(history, level, Vector2(265, 450), 13.0)
+	var attacker := {"open_seconds": 10.0, "open_catches": 8}
+	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 14, attacker)
+	_bonus(history, level, ROLE.TULIP, Vector2(185, 300), 26.0, 3, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 2, {})
+	return level
+
+
+# `count` rows of pins, `spacing` apart, every other row shifted half a step.
+static func _rows(
+	history: ActionHistory, level: BoardLevel, count: int, spacing: float, gap: float, top: float
+) -> void:
+	var per_row := int(600.0 / spacing)
+	for row in count:
+		var pattern := {"kind": "row", "count": per_row - row % 2, "spacing": spacing}
+		var x := CENTER + (spacing * 0.5 if row % 2 == 1 else 0.0)
+		history.commit(PatternAction.new(level, pattern, Vector2(x, top + row * gap)))
+
+
+# Clears the pins round a cup and adds a bonus pocket there (and its mirror image).
+static func _bonus(
+	history: ActionHistory,
+	level: BoardLevel,
+	role: BonusPocketSpec.Role,
+	mouth: Vector2,
+	width: float,
+	payout: int,
+	extra: Dictionary
+) -> void:
+	var depth := maxf(width * 0.5 + 6.0, 26.0)
+	Originals.erase_pins_in(history, level, _clear_rect(mouth, width, depth), CENTER)
+	var spec := BonusPocketSpec.create(role, mouth, width, depth, payout)
+	for key: String in extra:
+		spec.set(key, extra[key])
+	history.commit(BonusActions.AddBonus.new(level, spec, CENTER))
+
+
+# Room round a cup: a ball's width beside the rim and the wings' reach above the mouth.
+static func _clear_rect(mouth: Vector2, width: float, depth: float) -> Rect2:
+	var half := width * 0.5 + 22.0
+	return Rect2(mouth - Vector2(half, 34.0), Vector2(half * 2.0, depth + 44.0))
+
+
+# Two short slanted rows of pins above `mouth` that steer balls into it.
+static func _funnel(history: ActionHistory, level: BoardLevel, mouth: Vector2, half: float) -> void:
+	var pins := PackedVector2Array()
+	for side: float in [-1.0, 1.0]:
+		for step in 3:
+			pins.append(mouth + Vector2(side * (half + 10.0 + step * 10.0), -16.0 - step * 10.0))
+	var funnel := Items.empty_set()
+	funnel["pins"] = pins
+	var data := funnel if mouth.x == CENTER else Mirror.mirror_set(funnel, CENTER)
+	history.commit(AddItems.new(level, data, "Add pin"))
+
+
+# Validates and writes the board and its level scene; false (and why) on a failure.
+static func _save(level: BoardLevel) -> bool:
+	var errors := BoardValidator.errors(level)
+	for issue in BoardValidator.validate(level):
+		print("  %s" % issue)
+	if not errors.is_empty():
+		push_error("make_bonus_boards: %s has %d errors." % [level.board_id, errors.size()])
+		return false
+	var id := level.board_id.trim_prefix("pachinko_")
+	var path := "res://levels/pachinko/%s.board" % id
+	var error := ResourceSaver.save(level, path)
+	var scene_path := "res://scenes/boards/pachinko_%s.tscn" % id
+	var scene := FileAccess.open(scene_path, FileAccess.WRITE)
+	if error != OK or scene == null:
+		push_error("make_bonus_boards: could not write %s or its scene" % path)
+		return false
+	scene.store_string(Originals.SCENE_TEXT % path)
+	scene.close()
+	var bonus := level.bonus_pockets.size()
+	print("wrote %s (%d pins, %d bonus pockets)" % [path, level.pins.size(), bonus])
+	return true
+
+
+# No pins under the reels' window, so no ball bounces off a pin hidden behind it.
+static func _clear_reels(history: ActionHistory, level: BoardLevel) -> void:
+	var half := ReelDisplay.HALF + Vector2(6.0, 6.0)
+	Originals.erase_pins_in(
+		history, level, Rect2(ReelDisplay.spot(level) - half, half * 2.0), CENTER
+	)

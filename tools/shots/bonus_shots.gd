@@ -1,0 +1,71 @@
+extends RefCounted
+## The bonus layer's shots on the Fever board: "pachinko_bonus" the reels turning (one
+## landed, two rolling), and "pachinko_jackpot" the jackpot moment with the attacker open. Each
+## opens the game as the level select does and plays the screen's own rules forward at
+## 60 fps until the moment comes; nothing is faked.
+
+const ShotCapture := preload("res://tools/shots/shot_capture.gd")
+const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
+const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
+const BOARD := "res://levels/pachinko/fever.board"
+## The shots this file takes, in order.
+const NAMES: Array[String] = ["pachinko_bonus", "pachinko_jackpot"]
+const FRAME := 1.0 / 60.0
+## Game seconds a shot may play before it gives up.
+const LIMIT := 2400.0
+
+
+## Opens the game on Fever, plays into the moment of `shot_name` and saves it.
+static func take(tree: SceneTree, shot_name: String) -> Error:
+	if not shot_name in NAMES:
+		printerr("shots: bonus_shots has no shot '%s'" % shot_name)
+		return ERR_INVALID_PARAMETER
+	var game := await ScreenOpener.open(tree, App.start_game.bind("pachinko", BOARD), GAME_SCENE)
+	if game == null:
+		return ERR_CANT_OPEN
+	var rules := (game as PachinkoGame).rules
+	if rules == null:
+		printerr("shots: %s: the game has no rules (the board did not load)" % shot_name)
+		return ERR_CANT_OPEN
+	var wanted := _spinning if shot_name == "pachinko_bonus" else _jackpot
+	if not _play_until(rules, wanted):
+		printerr("shots: %s: the moment did not come in %d s of play" % [shot_name, LIMIT])
+		return FAILED
+	if shot_name == "pachinko_jackpot":
+		_play_for(rules, 0.3)  # the banner at its height, balls heading for the open lid
+	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
+
+
+# The first reel has landed and the others still turn.
+static func _spinning(rules: PachinkoRules) -> bool:
+	return rules.bonus.reels.stopped == 1
+
+
+static func _jackpot(rules: PachinkoRules) -> bool:
+	return rules.bonus.any_attacker_open()
+
+
+static func _play_until(rules: PachinkoRules, moment: Callable) -> bool:
+	var frame := 0
+	while frame < int(LIMIT / FRAME):
+		_tick(rules, frame)
+		frame += 1
+		if moment.call(rules):
+			return true
+	return false
+
+
+static func _play_for(rules: PachinkoRules, seconds: float) -> void:
+	for frame in int(seconds / FRAME):
+		_tick(rules, frame)
+
+
+# One frame of steady play: a new game when one ends, a shot every 0.6 s.
+static func _tick(rules: PachinkoRules, frame: int) -> void:
+	if rules.state != PachinkoRules.State.PLAYING:
+		rules.start_game()
+	if rules.loaded and frame % 45 == 0:
+		# Powers spread like a player's (a golden-ratio walk over 5..100).
+		rules.fire(5.0 + fmod(float(frame / 45) * 61.8034, 95.0))
+	rules.advance(FRAME)

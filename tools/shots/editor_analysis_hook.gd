@@ -1,0 +1,63 @@
+@tool
+extends Node
+## Screenshot hook for tools/editor_analysis_shot.sh. When the editor starts with
+## BOARD_EDITOR_ANALYSIS_SHOT="<scene.tscn>;<out.png>" it opens the scene, selects its
+## BoardNode, presses Analyze in the board dock, waits for the run to finish (the editor
+## keeps drawing meanwhile), saves the editor window as a PNG and quits.
+
+const ENV := "BOARD_EDITOR_ANALYSIS_SHOT"
+const ShotCapture := preload("res://tools/shots/shot_capture.gd")
+const EditorShotHook := preload("res://tools/shots/editor_shot_hook.gd")
+## Longest wait for the analysis, seconds.
+const RUN_LIMIT := 200.0
+
+var _plugin: EditorPlugin
+
+
+func _init(plugin: EditorPlugin) -> void:
+	_plugin = plugin
+
+
+func _ready() -> void:
+	_run.call_deferred()
+
+
+func _run() -> void:
+	var parts := OS.get_environment(ENV).split(";")
+	if parts.size() != 2:
+		push_error("%s must be '<scene>;<png>', got '%s'." % [ENV, ";".join(parts)])
+		get_tree().quit(1)
+		return
+	OS.low_processor_usage_mode = false
+	get_tree().create_timer(RUN_LIMIT + 60.0).timeout.connect(get_tree().quit.bind(1))
+	await _frames(60)
+	EditorInterface.open_scene_from_path(parts[0])
+	await _frames(20)
+	var node := EditorInterface.get_edited_scene_root() as BoardNode
+	if node == null:
+		push_error("Analysis shot: %s has no BoardNode at its root." % parts[0])
+		get_tree().quit(1)
+		return
+	EditorInterface.set_main_screen_editor("2D")
+	EditorInterface.get_selection().clear()
+	EditorInterface.get_selection().add_node(node)
+	EditorInterface.edit_node(node)
+	await _frames(20)
+	var framer := EditorShotHook.new(_plugin)
+	framer.call("_frame_board", node)
+	framer.free()
+	var dock: Node = _plugin.get("_dock")
+	var panel: Node = dock.get("analysis")
+	panel.call("start")
+	var started := Time.get_ticks_msec()
+	while panel.call("is_running") and Time.get_ticks_msec() - started < RUN_LIMIT * 1000.0:
+		await _frames(10)
+	print("Analysis shot: run took %.1f s" % ((Time.get_ticks_msec() - started) / 1000.0))
+	var window := EditorInterface.get_base_control().get_viewport()
+	var error: Error = await ShotCapture.save(window, parts[1])
+	get_tree().quit(0 if error == OK else 1)
+
+
+func _frames(count: int) -> void:
+	for i in count:
+		await get_tree().process_frame
