@@ -1,12 +1,16 @@
 extends Node3D
 ## The maze board in 3D, built from its level data: the floor (a quad whose shader paints
 ## the goal ring and cuts the holes), every wall raised as one mesh, the frame round the
-## board, and in hard mode the holes as dark tubes under the floor. Lives under the stage's
-## tilting pivot; the balls are a sibling (maze_balls_3d.gd). Heights are in board pixels.
+## board, and in hard mode the holes as dark tubes under the floor. The walls and the frame
+## are drawn a second time flattened onto the floor along the sun as their shadows
+## (maze_floor_shadow.gdshader; the balls use the same `shadow_material`). Lives under the
+## stage's tilting pivot; the balls are a sibling (maze_balls_3d.gd). Heights are in board
+## pixels.
 
 const Palette := preload("res://scenes/maze/maze_palette.gd")
 const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const FLOOR_SHADER := preload("res://scenes/maze/maze_floor.gdshader")
+const SHADOW_SHADER := preload("res://scenes/maze/maze_floor_shadow.gdshader")
 ## Walls stand this many ball radii above the floor (a Labyrinth wall is about a ball high).
 const WALL_HEIGHT_PER_RADIUS := 2.4
 ## The frame is this much taller than the walls, and this wide, in board pixels.
@@ -18,23 +22,35 @@ const BODY_DEPTH := 16.0
 const HOLE_DEPTH_PER_RADIUS := 1.3
 ## The floor shader's limit on holes; more are drawn without their cut-out.
 const MAX_HOLES := 64
-## The render layer of the floor alone: the sun's shadows are drawn on this layer only.
-const SHADOW_RECEIVER_LAYER := 2
+## Share of the light a shadow leaves on the floor (of its colour's linear value).
+const SHADOW_LIGHT_LEFT := 0.78
+## The floor's albedo is raised by this: the seed's pale floor stays as bright as it was
+## when a shadowed light's extra pass lit it (that pass was added after the conversion for
+## the screen and brightened it far more than its energy said), while the walls and balls
+## keep the light they had.
+const FLOOR_GAIN := 1.22
 
 var _level: BoardLevel
 var _floor := MeshInstance3D.new()
 var _walls := MeshInstance3D.new()
 var _frame := MeshInstance3D.new()
 var _holes := MeshInstance3D.new()
+var _wall_shadows := MeshInstance3D.new()
+var _frame_shadow := MeshInstance3D.new()
 var _floor_material := ShaderMaterial.new()
+var _shadow_material := ShaderMaterial.new()
 
 
 func _ready() -> void:
 	_floor_material.shader = FLOOR_SHADER
-	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes]:
+	_shadow_material.shader = SHADOW_SHADER
+	_shadow_material.set_shader_parameter("light_left", SHADOW_LIGHT_LEFT)
+	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes, _wall_shadows, _frame_shadow]:
+		piece.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		add_child(piece)
 	_floor.material_override = _floor_material
-	_floor.layers = 1 | SHADOW_RECEIVER_LAYER
+	_wall_shadows.material_override = _shadow_material
+	_frame_shadow.material_override = _shadow_material
 	_walls.material_override = _plain(Palette.WALL, 0.55, 0.0)
 	_frame.material_override = _plain(Palette.WALL.lightened(0.1), 0.6, 0.0)
 
@@ -49,15 +65,17 @@ func build(level: BoardLevel, hard: bool) -> void:
 	var wall_height := wall_height_px()
 	_walls.mesh = Meshes.walls(size, level.walls, level.wall_width, wall_height)
 	_frame.mesh = Meshes.frame(size, FRAME_MARGIN, wall_height + FRAME_EXTRA_HEIGHT, BODY_DEPTH)
-	var m := _floor_material
-	m.set_shader_parameter("floor_color", Palette.BACKGROUND)
-	m.set_shader_parameter("goal_color", Palette.GOAL)
-	m.set_shader_parameter("rim_color", Palette.HOLE_RIM.darkened(0.4))
-	m.set_shader_parameter("lost_color", Palette.HOLE_LOST)
-	m.set_shader_parameter("board_size", size)
-	m.set_shader_parameter("goal_center", level.goal_center)
-	m.set_shader_parameter("goal_radius", level.goal_radius)
-	m.set_shader_parameter("hole_radius", level.hole_radius)
+	_wall_shadows.mesh = _walls.mesh
+	_frame_shadow.mesh = Meshes.frame_lip(size, wall_height + FRAME_EXTRA_HEIGHT)
+	_set_paint("floor_color", Palette.BACKGROUND)
+	_set_paint("floor_gain", FLOOR_GAIN)
+	_set_paint("goal_color", Palette.GOAL)
+	_set_paint("rim_color", Palette.HOLE_RIM.darkened(0.4))
+	_set_paint("lost_color", Palette.HOLE_LOST)
+	_set_paint("board_size", size)
+	_set_paint("goal_center", level.goal_center)
+	_set_paint("goal_radius", level.goal_radius)
+	_set_paint("hole_radius", level.hole_radius)
 	set_hard_mode(hard)
 
 
@@ -71,8 +89,8 @@ func set_hard_mode(hard: bool) -> void:
 		centres = centres.slice(0, MAX_HOLES)
 	var padded := centres.duplicate()
 	padded.resize(MAX_HOLES)
-	_floor_material.set_shader_parameter("holes", padded)
-	_floor_material.set_shader_parameter("hole_count", centres.size())
+	_set_paint("holes", padded)
+	_set_paint("hole_count", centres.size())
 	var rim := Color(0.42, 0.4, 0.38)
 	_holes.mesh = Meshes.holes(_level.size, centres, _level.hole_radius, hole_depth_px(), rim)
 	if _holes.mesh != null:
@@ -85,7 +103,21 @@ func set_hard_mode(hard: bool) -> void:
 
 ## Marks the hole a ball fell into (red rim); -1 for none.
 func set_lost_hole(index: int) -> void:
-	_floor_material.set_shader_parameter("lost_hole", index)
+	_set_paint("lost_hole", index)
+
+
+## The material that draws a mesh as its shadow on this floor (walls, frame, balls).
+func shadow_material() -> ShaderMaterial:
+	return _shadow_material
+
+
+## Points the shadows along `sun_direction` (world space, the way the light travels) for
+## the board where it is now; call after every move of the board.
+func cast_shadows(sun_direction: Vector3) -> void:
+	var to_world := global_transform
+	_shadow_material.set_shader_parameter("sun_direction", sun_direction.normalized())
+	_shadow_material.set_shader_parameter("world_from_board", Projection(to_world))
+	_shadow_material.set_shader_parameter("board_from_world", Projection(to_world.affine_inverse()))
 
 
 ## How tall the walls stand, in board pixels.
@@ -109,18 +141,24 @@ func outer_box() -> AABB:
 	return AABB(lo, hi - lo)
 
 
-## The mesh parts by name, for tests: "floor", "walls", "frame", "holes".
+## The mesh parts by name, for tests: "floor", "walls", "frame", "holes", "wall_shadows",
+## "frame_shadow".
 func part(part_name: String) -> MeshInstance3D:
-	match part_name:
-		"floor":
-			return _floor
-		"walls":
-			return _walls
-		"frame":
-			return _frame
-		"holes":
-			return _holes
-	return null
+	var parts := {
+		"floor": _floor,
+		"walls": _walls,
+		"frame": _frame,
+		"holes": _holes,
+		"wall_shadows": _wall_shadows,
+		"frame_shadow": _frame_shadow,
+	}
+	return parts.get(part_name)
+
+
+# A floor-paint uniform: the floor and its shadows paint the same floor.
+func _set_paint(uniform: String, value: Variant) -> void:
+	_floor_material.set_shader_parameter(uniform, value)
+	_shadow_material.set_shader_parameter(uniform, value)
 
 
 static func _plain(colour: Color, roughness: float, specular: float) -> StandardMaterial3D:

@@ -22,12 +22,17 @@ const SUN_DIRECTION := Vector3(0.42, -0.5, -1.0)
 ## screen (-1 left edge, 1 right edge).
 const HEIGHT_SHARE := 0.84
 const CENTRE_ACROSS := -0.27
-## Light energies: the ambient fill, the key light that shades, the sun whose shadows show.
+## Light energies: the ambient fill and the sun that shades.
 const AMBIENT_ENERGY := 0.28
-const KEY_ENERGY := 0.37
-const SUN_ENERGY := 0.055
-## Side of the sun's shadow map, in texels (sharp ball shadows, cheap on software GL).
-const SHADOW_MAP_SIZE := 2048
+const SUN_ENERGY := 0.42
+## On software GL the 3D picture is drawn at this share of the window's resolution and
+## scaled up smoothly (the 2D panel beside it stays sharp), without MSAA: on llvmpipe MSAA
+## alone cost two thirds of every frame, and the pixels drawn set most of the rest (FXAA
+## would smooth the edges, but the GL Compatibility renderer has none). A graphics card
+## draws at full resolution with the project's MSAA. tools/maze_fps.sh measures the choices.
+const SOFTWARE_GL_RENDER_SCALE := 0.5
+## Words in the names of software GL drivers (RenderingServer.get_video_adapter_name()).
+const SOFTWARE_GL_NAMES: Array[String] = ["llvmpipe", "softpipe", "swrast", "swiftshader"]
 ## Board ids that keep the seed's red balls; every other board rolls steel.
 const SEED_RED_BOARDS: Array[String] = ["maze_classic"]
 
@@ -36,7 +41,6 @@ var _board: MazeBoard3D = MazeBoard3D.new()
 var _balls: MazeBalls3D = MazeBalls3D.new()
 var _camera := Camera3D.new()
 var _sun := DirectionalLight3D.new()
-var _key := DirectionalLight3D.new()
 var _table: MazeTableShadow = MazeTableShadow.new()
 var _table_z := -1.0
 var _board_size := Vector2(350.0, 315.0)
@@ -46,29 +50,13 @@ func _ready() -> void:
 	var world_env := WorldEnvironment.new()
 	world_env.environment = _environment()
 	add_child(world_env)
-	RenderingServer.directional_shadow_atlas_set_size(SHADOW_MAP_SIZE, true)
-	# Two lights from the same place. The GL Compatibility renderer draws a light that casts
-	# shadows in a pass of its own and adds that pass to the picture after it is converted
-	# for the screen, so a strong shadowed light washes the seed's pale floor out to white.
-	# The key light (no shadows) does the shading with the ambient light; the sun adds only
-	# the little that its shadows take away.
-	var facing := Transform3D(Basis.looking_at(SUN_DIRECTION.normalized(), Vector3.UP))
-	_key.transform = facing
-	_key.light_energy = KEY_ENERGY
-	add_child(_key)
-	_sun.transform = facing
+	use_render_settings(get_viewport(), RenderingServer.get_video_adapter_name())
+	# One light, no shadow map: the shadows are geometry on the floor, cast along the same
+	# direction (maze_board_3d.gd). A shadow map cost a third of each frame on software GL
+	# (its own pass over the floor, and jagged edges on thin walls at any affordable size).
+	_sun.transform = Transform3D(Basis.looking_at(SUN_DIRECTION.normalized(), Vector3.UP))
 	_sun.light_energy = SUN_ENERGY
-	_sun.light_specular = 0.0
-	# Its shadows only fall on the floor: the walls are too dark to show them, and drawing
-	# them again for this light would cost as much as the whole board (software GL).
-	_sun.light_cull_mask = MazeBoard3D.SHADOW_RECEIVER_LAYER
-	_sun.shadow_caster_mask = 0xFFFFF
-	_sun.shadow_enabled = true
-	_sun.directional_shadow_mode = DirectionalLight3D.SHADOW_ORTHOGONAL
-	_sun.directional_shadow_max_distance = 7.5
-	_sun.shadow_bias = 0.06
-	_sun.shadow_normal_bias = 1.2
-	_sun.shadow_blur = 1.5
+	_sun.shadow_enabled = false
 	add_child(_sun)
 	add_child(_camera)
 	_camera.current = true
@@ -81,6 +69,11 @@ func _ready() -> void:
 	_frame()
 
 
+func _exit_tree() -> void:
+	# the window goes on to other screens: give them back the project's settings
+	use_render_settings(get_viewport(), "")
+
+
 ## Builds the board of `level` (holes shown when `hard`) and the look of its balls.
 func set_level(level: BoardLevel, hard: bool) -> void:
 	_board_size = level.size
@@ -88,6 +81,7 @@ func set_level(level: BoardLevel, hard: bool) -> void:
 	_balls.clear()
 	_balls.hole_depth_px = _board.hole_depth_px()
 	_balls.material = ball_material(level.board_id in SEED_RED_BOARDS)
+	_balls.shadow_material = _board.shadow_material()
 	_frame()
 
 
@@ -118,7 +112,7 @@ func set_tilt(tilt_deg: Vector2) -> void:
 	var turned := Vector3(deg_to_rad(tilt_deg.y), deg_to_rad(tilt_deg.x), 0.0)
 	if turned != _pivot.rotation:
 		_pivot.rotation = turned
-		_cast_table_shadow()
+		_cast_shadows()
 
 
 ## The board's current rotation in degrees (x = tilt across, y = tilt down), for tests.
@@ -185,6 +179,27 @@ static func _ball_band_texture(colour: Color) -> ImageTexture:
 	return ImageTexture.create_from_image(image)
 
 
+## Sets how `view` draws 3D for the graphics adapter named `adapter_name`: scaled down and
+## without MSAA on software GL (SOFTWARE_GL_RENDER_SCALE), the project's settings otherwise.
+static func use_render_settings(view: Viewport, adapter_name: String) -> void:
+	view.scaling_3d_mode = Viewport.SCALING_3D_MODE_BILINEAR
+	if is_software_gl(adapter_name):
+		view.msaa_3d = Viewport.MSAA_DISABLED
+		view.scaling_3d_scale = SOFTWARE_GL_RENDER_SCALE
+	else:
+		view.msaa_3d = ProjectSettings.get_setting("rendering/anti_aliasing/quality/msaa_3d")
+		view.scaling_3d_scale = 1.0
+
+
+## True when `adapter_name` is a software GL driver (drawing on the CPU).
+static func is_software_gl(adapter_name: String) -> bool:
+	var lower := adapter_name.to_lower()
+	for word in SOFTWARE_GL_NAMES:
+		if lower.contains(word):
+			return true
+	return false
+
+
 func _environment() -> Environment:
 	var env := Environment.new()
 	env.background_mode = Environment.BG_COLOR
@@ -232,10 +247,13 @@ func _frame() -> void:
 		var pose := Transform3D(Basis.from_euler(Vector3(corner.y, corner.x, 0.0)), Vector3.ZERO)
 		lowest = minf(lowest, _lowest_point(pose))
 	_table_z = lowest - TABLE_CLEARANCE_PX * UNITS_PER_PX
-	_cast_table_shadow()
+	_cast_shadows()
 
 
-func _cast_table_shadow() -> void:
+# The shadows on the board and the board's on the table, for the board where it is now.
+func _cast_shadows() -> void:
+	if is_inside_tree():
+		_board.cast_shadows(global_transform.basis * SUN_DIRECTION)
 	var box := _board.outer_box()
 	var corners := PackedVector3Array()
 	for i in 8:

@@ -44,8 +44,9 @@ func move_range(from: int, to: int) -> void:
 
 
 ## One ball through the step: friction and the speed cap, then substeps (each: move, then
-## the narrow phase per shape kind), then its contacts, rest, sleep and sensors. The pin
-## candidates are tested inline (a call costs as much as a test); contacts call respond().
+## the narrow phase per shape kind), then its contacts, position, rest, sleep and sensors.
+## One call per ball: the pin candidates are tested and the ball written back inline (a
+## call costs as much as a test); contacts, walls and the rarer rules call out.
 func _move_ball(i: int) -> void:
 	_i = i
 	_p = _pos[i]
@@ -53,16 +54,8 @@ func _move_ball(i: int) -> void:
 	_gone = false
 	_held_a = _contact_a[i]
 	_held_b = _contact_b[i]
-	_cur_a = ContactId.NONE
-	_cur_b = ContactId.NONE
-	_n_a = Vector2.ZERO
-	_n_b = Vector2.ZERO
 	if _friction_against_gravity or _cap_per_axis:
-		if _friction_against_gravity:
-			_v = SpeedRules.friction_against_gravity(_v, _gravity * _dt, _friction_dt)
-		elif _has_friction:
-			_v -= _v.clamp(-_friction_dt, _friction_dt)
-		_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+		_apply_seed_speed_rules()
 	else:
 		if _has_friction:
 			# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
@@ -72,8 +65,7 @@ func _move_ball(i: int) -> void:
 			_v *= _max_speed / sqrt(speed2)
 	if _rad[i] != _r:
 		_set_radius(_rad[i])
-	# Substeps: each moves at most the safe travel (velocity plus the ball-ball push, the
-	# push capped at half the radius).
+	# Substeps of at most the safe travel (velocity plus push, capped at half the radius).
 	var push: Vector2 = _push[i]
 	var push_len := 0.0
 	if push != Vector2.ZERO:
@@ -109,28 +101,13 @@ func _move_ball(i: int) -> void:
 			if d.length_squared() < lim * lim and not _gone:
 				_touch_pin(k, d, lim)
 		if _has_walls and not _gone:
-			# The pins may have moved the ball: the walls of its cell now, if it has any.
-			var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
-				Vector2i.ZERO, _last_cell
-			)
-			var c: int = cell.y * _cols + cell.x
-			if _wall_start[c] < _wall_start[c + 1]:
-				_touch_walls(_wall_start[c], _wall_start[c + 1])
+			_touch_walls()
 		if _gone:
 			break
-	_end_ball(i, p_start)
-
-
-## Writes back ball `i` after its substeps: contacts, position, velocity, rest and sleep,
-## then its sensors (which may remove it).
-func _end_ball(i: int, p_start: Vector2) -> void:
-	# A ball touching nothing now or last step has nothing to update: it saves writes for
-	# most of a flowing board.
+	# Write back. A ball touching nothing now or last step keeps its contact slots as they
+	# are: that saves writes for most of a flowing board.
 	if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
-		_contact_a[i] = _cur_a
-		_contact_b[i] = _cur_b
-		_support_a[i] = _n_a
-		_support_b[i] = _n_b
+		_write_contacts(i)
 	_pos[i] = _p
 	_vel[i] = _v
 	# The broad phase's key for next step (see BallStore.cell_keys).
@@ -143,10 +120,37 @@ func _end_ball(i: int, p_start: Vector2) -> void:
 		_rest[i] = 0.0
 	else:
 		_rest_or_sleep(i)
-	if _has_sensors:
-		var id: int = _ids[i]
-		if BallSensors.sense(_g, i, id, p_start, _p, _goal_mask, _zone_mask, events, event_speed):
-			_alive[i] = 0
+	if (
+		_has_sensors
+		and BallSensors.sense(
+			_g, i, _ids[i], p_start, _p, _goal_mask, _zone_mask, events, event_speed
+		)
+	):
+		_alive[i] = 0
+
+
+## Friction and the speed cap under the seed's options (PhysicsTuning.friction_against,
+## speed_cap).
+func _apply_seed_speed_rules() -> void:
+	if _friction_against_gravity:
+		_v = SpeedRules.friction_against_gravity(_v, _gravity * _dt, _friction_dt)
+	elif _has_friction:
+		_v -= _v.clamp(-_friction_dt, _friction_dt)
+	_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+
+
+## Stores the ball's contacts of this step and their normals (its supports next step),
+## then clears them for the next ball. (They are only ever set together, so a ball that
+## touched nothing leaves them clear without a call.)
+func _write_contacts(i: int) -> void:
+	_contact_a[i] = _cur_a
+	_contact_b[i] = _cur_b
+	_support_a[i] = _n_a
+	_support_b[i] = _n_b
+	_cur_a = ContactId.NONE
+	_cur_b = ContactId.NONE
+	_n_a = Vector2.ZERO
+	_n_b = Vector2.ZERO
 
 
 ## The limits that depend on the ball radius (kept while consecutive balls share one).
@@ -197,10 +201,13 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 
 
-## Narrow phase, capsule walls: entries k0..k1 of the wall lists (the ball's cell). The
-## deepest contact first, then again (up to three times). At a joint the flat side of one
-## wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
-func _touch_walls(k0: int, k1: int) -> void:
+## Narrow phase, capsule walls of the cell the ball is in now (the pins may have moved
+## it): the deepest contact first, then again (up to three times). At a joint the flat side
+## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
+func _touch_walls() -> void:
+	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+	var k0: int = _wall_start[cell.y * _cols + cell.x]
+	var k1: int = _wall_start[cell.y * _cols + cell.x + 1]
 	for _pass: int in 3:
 		var found := 0
 		var best := -1
@@ -227,25 +234,22 @@ func _touch_walls(k0: int, k1: int) -> void:
 				best_lim = lim
 		if best < 0:
 			return
-		_touch_wall(best, best_q, best_s, best_lim)
+		# The deepest: wall `best` at its closest point best_q (best_s along it).
+		var d: Vector2 = _p - best_q
+		var d2: float = d.length_squared()
+		var nrm := Vector2(0.0, -1.0)
+		if d2 > EPS * EPS:
+			nrm = d / sqrt(d2)
+		elif _wall_inv_len2[best] > 0.0:
+			var wall_ab: Vector2 = _wall_ab[best]
+			nrm = Vector2(wall_ab.y, -wall_ab.x).normalized()
+		var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
+		var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
+		_p = best_q + nrm * best_lim
+		var id: int = (best << ContactId.KIND_BITS) | ContactId.KIND_WALL
+		respond(id, best_q, d, nrm, best_lim, surface, best)
 		if found == 1:
 			return
-
-
-## Answers the contact with wall `wall` at its closest point `q` (at `s` along it).
-func _touch_wall(wall: int, q: Vector2, s: float, lim: float) -> void:
-	var d: Vector2 = _p - q
-	var d2: float = d.length_squared()
-	var nrm := Vector2(0.0, -1.0)
-	if d2 > EPS * EPS:
-		nrm = d / sqrt(d2)
-	elif _wall_inv_len2[wall] > 0.0:
-		var ab: Vector2 = _wall_ab[wall]
-		nrm = Vector2(ab.y, -ab.x).normalized()
-	var on_cap: bool = s <= 0.0 or s >= 1.0
-	var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
-	_p = q + nrm * lim
-	respond((wall << ContactId.KIND_BITS) | ContactId.KIND_WALL, q, d, nrm, lim, surface, wall)
 
 
 ## The one contact response, for every surface. The narrow phase has put the ball back on
@@ -253,7 +257,7 @@ func _touch_wall(wall: int, q: Vector2, s: float, lim: float) -> void:
 ## points to the free side. Only a ball moving into the surface is answered: a new contact
 ## faster than the bounce threshold bounces (restitution on the normal speed, tangent
 ## friction on the rest, with the normal at the moment of impact on a round surface) and
-## queues a hit event; a persisting or gentle one slides (see ContactMath.slide). Either
+## queues a hit event; a persisting or gentle one slides (see below). Either
 ## way it is recorded as a contact (the ball's support). Returns true on a bounce.
 func respond(
 	id: int, centre: Vector2, d: Vector2, nrm: Vector2, lim: float, surface: int, index: int
@@ -280,10 +284,17 @@ func respond(
 		_queue(HIT_EVENT[surface], index, -vn)
 		bounced = true
 	else:
-		var curv := 0.0
+		# Slide: the normal speed goes, except the part that only comes from a round surface
+		# curving under the moving ball (capped by the curvature, substep time / radius),
+		# which turns into tangential speed: riding the ring or rolling round a cap loses
+		# nothing, while a push from gravity or other balls never turns into speed.
+		var vt: Vector2 = _v - nrm * vn
 		if surface != Surface.WALL_SIDE and lim > EPS:
-			curv = _h / lim
-		_v = ContactMath.slide(_v, nrm, vn, gn_dt, curv)
+			var t2: float = vt.length_squared()
+			if t2 > EPS:
+				var c: float = maxf(minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * (_h / lim))
+				vt *= sqrt((t2 + c * c) / t2)
+		_v = vt
 	if _cur_a == ContactId.NONE or _cur_a == id:
 		_cur_a = id
 		_n_a = nrm

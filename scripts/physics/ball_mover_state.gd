@@ -140,6 +140,10 @@ func begin(
 	_drain_slide_time = g.drain_slide_time
 	_tracing = b.tracing
 	_r = -1.0
+	_cur_a = ContactId.NONE
+	_cur_b = ContactId.NONE
+	_n_a = Vector2.ZERO
+	_n_b = Vector2.ZERO
 	events.resize(0)
 	event_speed.resize(0)
 	trace_ball.resize(0)

@@ -114,13 +114,7 @@ func solve(
 	_wake_speed = wake_speed
 	_gravity_dt = gravity_dt
 	for pairs: PackedInt32Array in lane_pairs:
-		for m: int in range(0, pairs.size(), 2):
-			var i: int = pairs[m]
-			var j: int = pairs[m + 1]
-			_touching[i] = 1
-			_touching[j] = 1
-			if _asleep[i] == 0 or _asleep[j] == 0:
-				_solve_pair(i, j)
+		_solve_pairs(pairs)
 	b.support_ball = _sup_next
 
 
@@ -171,60 +165,68 @@ func _find_in_range(lane: int, from: int, to: int) -> void:
 					out.append(j)
 
 
-## One touching pair, at least one of them awake. Written out in one function (the
-## solve runs once per touching pair, and a call costs about as much as the work).
-func _solve_pair(i: int, j: int) -> void:
-	var d: Vector2 = _pos[j] - _pos[i]
-	var dist: float = sqrt(d.length_squared())
-	var nrm := Vector2(1.0, 0.0)
-	if dist > EPS:
-		nrm = d / dist
-	var sleep_i: bool = _asleep[i] != 0
-	var sleep_j: bool = _asleep[j] != 0
-	# A real hit wakes the sleeper, which then answers as a free ball. A sleeper's velocity
-	# holds just this step's gravity, which the other ball got too: a ball merely pressing
-	# on it under gravity does not count as a hit.
-	if (sleep_i or sleep_j) and (_vel[i] - _vel[j]).dot(nrm) > _wake_speed:
-		var woken: int = i if sleep_i else j
-		_asleep[woken] = 0
-		_rest[woken] = 0.0
-		sleep_i = _asleep[i] != 0
-		sleep_j = _asleep[j] != 0
-	var vi: Vector2 = Vector2.ZERO if sleep_i else _vel[i]
-	var vj: Vector2 = Vector2.ZERO if sleep_j else _vel[j]
-	# A ball held from behind (asleep, or pressed last step on a static shape or a held
-	# ball that faces the other ball) does not give way: the other takes the whole response.
-	var fixed_i: bool = (
-		sleep_i
-		or _sup_a[i].dot(nrm) > SUPPORT_COS
-		or _sup_b[i].dot(nrm) > SUPPORT_COS
-		or _sup_prev[i].dot(nrm) > SUPPORT_COS
-	)
-	var fixed_j: bool = (
-		sleep_j
-		or _sup_a[j].dot(nrm) < -SUPPORT_COS
-		or _sup_b[j].dot(nrm) < -SUPPORT_COS
-		or _sup_prev[j].dot(nrm) < -SUPPORT_COS
-	)
-	var s: Vector2 = nrm * (maxf(_rad[i] + _rad[j] - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
-	if fixed_j and not fixed_i:
-		# The support cancels j's own motion into it: only i's speed counts.
-		_bounce_off_held(i, vi, -nrm)
-		_push[i] -= s * 2.0
-		_sup_next[i] = -nrm
-	elif fixed_i and not fixed_j:
-		_bounce_off_held(j, vj, nrm)
-		_push[j] += s * 2.0
-		_sup_next[j] = nrm
-	elif not (sleep_i or sleep_j):
-		var vn: float = (vj - vi).dot(nrm)
-		if vn < 0.0:
-			var e: float = _restitution if -vn > _threshold else 0.0
-			var imp: Vector2 = nrm * (-(1.0 + e) * vn * 0.5)
-			_vel[i] = vi - imp
-			_vel[j] = vj + imp
-		_push[i] -= s
-		_push[j] += s
+## Answers the touching pairs (i, j) of one lane's list in order. Each pair is written out
+## in the loop (a call per pair costs about as much as the work), and skipped when both
+## balls sleep.
+func _solve_pairs(pairs: PackedInt32Array) -> void:
+	for m: int in range(0, pairs.size(), 2):
+		var i: int = pairs[m]
+		var j: int = pairs[m + 1]
+		_touching[i] = 1
+		_touching[j] = 1
+		if _asleep[i] != 0 and _asleep[j] != 0:
+			continue
+		var d: Vector2 = _pos[j] - _pos[i]
+		var dist: float = sqrt(d.length_squared())
+		var nrm := Vector2(1.0, 0.0)
+		if dist > EPS:
+			nrm = d / dist
+		var sleep_i: bool = _asleep[i] != 0
+		var sleep_j: bool = _asleep[j] != 0
+		# A real hit wakes the sleeper, which then answers as a free ball. A sleeper's velocity
+		# holds just this step's gravity, which the other ball got too: a ball merely pressing
+		# on it under gravity does not count as a hit.
+		if (sleep_i or sleep_j) and (_vel[i] - _vel[j]).dot(nrm) > _wake_speed:
+			var woken: int = i if sleep_i else j
+			_asleep[woken] = 0
+			_rest[woken] = 0.0
+			sleep_i = _asleep[i] != 0
+			sleep_j = _asleep[j] != 0
+		var vi: Vector2 = Vector2.ZERO if sleep_i else _vel[i]
+		var vj: Vector2 = Vector2.ZERO if sleep_j else _vel[j]
+		# A ball held from behind (asleep, or pressed last step on a static shape or a held
+		# ball that faces the other ball) does not give way: the other takes the whole response.
+		var fixed_i: bool = (
+			sleep_i
+			or _sup_a[i].dot(nrm) > SUPPORT_COS
+			or _sup_b[i].dot(nrm) > SUPPORT_COS
+			or _sup_prev[i].dot(nrm) > SUPPORT_COS
+		)
+		var fixed_j: bool = (
+			sleep_j
+			or _sup_a[j].dot(nrm) < -SUPPORT_COS
+			or _sup_b[j].dot(nrm) < -SUPPORT_COS
+			or _sup_prev[j].dot(nrm) < -SUPPORT_COS
+		)
+		var s: Vector2 = nrm * (maxf(_rad[i] + _rad[j] - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
+		if fixed_j and not fixed_i:
+			# The support cancels j's own motion into it: only i's speed counts.
+			_bounce_off_held(i, vi, -nrm)
+			_push[i] -= s * 2.0
+			_sup_next[i] = -nrm
+		elif fixed_i and not fixed_j:
+			_bounce_off_held(j, vj, nrm)
+			_push[j] += s * 2.0
+			_sup_next[j] = nrm
+		elif not (sleep_i or sleep_j):
+			var vn: float = (vj - vi).dot(nrm)
+			if vn < 0.0:
+				var e: float = _restitution if -vn > _threshold else 0.0
+				var imp: Vector2 = nrm * (-(1.0 + e) * vn * 0.5)
+				_vel[i] = vi - imp
+				_vel[j] = vj + imp
+			_push[i] -= s
+			_push[j] += s
 
 
 ## Ball `i` (velocity `v`) against a ball that does not give way, along `nrm` (pointing

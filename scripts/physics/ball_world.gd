@@ -15,33 +15,27 @@ extends RefCounted
 ## sensors, not games: the maze tilt (MazeTilt), the pins' minimum horizontal speed and the
 ## sensors are set from outside (BoardWorldFactory, the rules).
 
+# The signals are emitted by ball_events.gd at the end of a step.
+@warning_ignore_start("unused_signal")
 ## A ball bounced off a pin (for sound); impact_speed is the normal speed in px/s.
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
 ## A ball bounced off a capsule wall.
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 ## A ball bounced off the ring border.
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ring_hit(ball_id: int, impact_speed: float)
 ## A ball touched a capturing pin (its tag in pocket_id); it has been removed.
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_pocketed(ball_id: int, pocket_id: int)
 ## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_drained(ball_id: int)
 ## A ball's centre came within a hole's radius; it has been removed.
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_fell_in_hole(ball_id: int, hole_index: int)
 ## A ball's centre moved inside a goal's radius (the ball stays).
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_reached_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved back out of a goal's radius.
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_left_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved inside a zone's radius (the ball stays).
-@warning_ignore("unused_signal")  # emitted by ball_events.gd at the end of a step
 signal ball_entered_zone(ball_id: int, zone_index: int)
+@warning_ignore_restore("unused_signal")
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
@@ -50,6 +44,7 @@ const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const MotionStage := preload("res://scripts/physics/motion_stage.gd")
 const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
+const StageClock := preload("res://scripts/physics/stage_clock.gd")
 
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
 ## hitch slows the game down instead of freezing it.
@@ -81,12 +76,24 @@ var threads: int = OS.get_processor_count():
 	set(value):
 		threads = maxi(value, 1)
 		_lanes.threads = threads
+## True times each stage of every step (see stage_times()); off by default.
+var profile_stages := false:
+	set(value):
+		profile_stages = value
+		_clock.enabled = value
+		_clock.reset()
+## With profile_stages: count this thread's CPU time rather than wall time (Linux).
+var profile_cpu_time := false:
+	set(value):
+		profile_cpu_time = value
+		_clock.cpu_time = value
 
 var _balls := BallStore.new()
 var _geo := StaticGeometry.new()
 var _lanes := BallLanes.new()
 var _pairs := BallPairs.new()
 var _motion := MotionStage.new(_balls, _geo, _lanes)
+var _clock := StageClock.new()
 ## This step's events (see BallEvents), gathered from the lanes in lane order.
 var _events := PackedInt32Array()
 var _event_speed := PackedFloat32Array()
@@ -134,31 +141,14 @@ func is_wall_enabled(index: int) -> bool:
 
 ## Sets the ring border: balls stay inside the circle.
 func set_ring(center: Vector2, radius: float) -> void:
-	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
-		var problem: String = "BallWorld.set_ring: needs a finite centre and radius > 0 (got %s, %s)"
-		push_error(problem % [center, radius])
-		return
-	_geo.has_ring = true
-	_geo.ring_center = center
-	_geo.ring_radius = radius
-	_geo.dirty = true
+	_geo.set_ring(center, radius)
 
 
 ## Makes the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) drain:
 ## a ball there is removed (ball_drained) after `bounces` bounces on it, or after rolling on
 ## it for `slide_time` seconds.
 func set_drain_arc(from_deg: float, to_deg: float, bounces: int, slide_time: float) -> void:
-	var finite: bool = is_finite(from_deg) and is_finite(to_deg) and is_finite(slide_time)
-	if not finite or bounces < 1 or slide_time < 0.0:
-		var problem: String = "BallWorld.set_drain_arc: needs finite angles, bounces >= 1 and"
-		problem += " slide_time >= 0 (got %s, %s, %d, %s)"
-		push_error(problem % [from_deg, to_deg, bounces, slide_time])
-		return
-	_geo.has_drain_arc = true
-	_geo.drain_from = from_deg
-	_geo.drain_to = to_deg
-	_geo.drain_bounces = bounces
-	_geo.drain_slide_time = slide_time
+	_geo.set_drain_arc(from_deg, to_deg, bounces, slide_time)
 
 
 ## Deprecated name of set_drain_arc(), with tuning.gutter_slide_time as the slide time.
@@ -335,24 +325,31 @@ func step(dt: float) -> void:
 	var turned: bool = gravity != _last_gravity or rolling_friction != _last_friction
 	_last_gravity = gravity
 	_last_friction = rolling_friction
+	_clock.start()
 	_integrate(dt)
+	_clock.lap(StageClock.Stage.INTEGRATE)
 	if ball_contacts:
 		_pairs.find_pairs(_balls, _geo, _lanes)
 	else:
 		_pairs.lane_pairs.clear()
+	_clock.lap(StageClock.Stage.BROAD_PHASE)
 	var t: PhysicsTuning = tuning
 	_pairs.solve(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
 	if _balls.woken:
 		_balls.woken = false
 		_woken_at_step = step_count
+	_clock.lap(StageClock.Stage.BALL_SOLVE)
 	BallSleep.settle(_balls, gravity, rolling_friction, dt, turned)
+	_clock.lap(StageClock.Stage.SLEEP)
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
 	_motion.run(tuning, gravity, rolling_friction, dt, may_sleep)
+	_clock.lap(StageClock.Stage.MOTION)
 	_events.append_array(_motion.events)
 	_event_speed.append_array(_motion.event_speed)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
+	_clock.lap(StageClock.Stage.EVENTS, true)
 
 
 ## Feeds the accumulator and runs every whole step of 1 / tuning.fixed_hz it holds (at most
@@ -371,6 +368,12 @@ func advance(delta: float) -> int:
 	if ran == MAX_STEPS_PER_ADVANCE and _accumulator >= h:
 		_accumulator = 0.0
 	return ran
+
+
+## Average wall time per step of each stage in µs since profile_stages was turned on, by
+## stage name (integrate, broad_phase, ball_solve, sleep, motion, events) plus "total".
+func stage_times() -> Dictionary:
+	return _clock.per_step()
 
 
 ## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.

@@ -1,25 +1,10 @@
 extends RefCounted
-## Two pieces of the contact response that need more than one line: sliding along a
-## curved surface, and finding the moment of impact. Internal to scripts/physics.
+## A piece of the contact response that needs more than one line: finding the moment of
+## impact (the slide along a surface is written out in BallMover.respond(), which runs on
+## every persisting contact). Internal to scripts/physics.
 
 ## Distances below this count as zero (px).
 const EPS := 1e-6
-
-
-## Velocity after a sliding contact (a persisting or gentle one): the normal speed is
-## removed, except the part that only comes from the surface curving under a moving ball
-## (capped by the curvature `curv` = substep time / radius of curvature). That part turns
-## into tangential speed, so riding the ring or rolling round a cap loses nothing, while a
-## push from gravity or other balls is never turned into speed.
-static func slide(v: Vector2, nrm: Vector2, vn: float, gn_dt: float, curv: float) -> Vector2:
-	var vt: Vector2 = v - nrm * vn
-	if curv <= 0.0:
-		return vt
-	var t2: float = vt.length_squared()
-	if t2 <= EPS:
-		return vt
-	var c: float = maxf(minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * curv)
-	return vt * sqrt((t2 + c * c) / t2)
 
 
 ## How long ago (0..h seconds) a ball at offset `d` from a round surface's centre, moving at

@@ -300,6 +300,33 @@ func in_drain_arc(d: Vector2) -> bool:
 	return fposmod(rad_to_deg(atan2(d.y, d.x)) - drain_from, 360.0) <= span
 
 
+## Sets the ring border (BallWorld.set_ring); refuses a non-finite centre or radius <= 0.
+func set_ring(center: Vector2, radius: float) -> void:
+	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
+		var problem: String = "BallWorld.set_ring: needs a finite centre and radius > 0 (got %s, %s)"
+		push_error(problem % [center, radius])
+		return
+	has_ring = true
+	ring_center = center
+	ring_radius = radius
+	dirty = true
+
+
+## Makes a ring arc drain (BallWorld.set_drain_arc); refuses bad input with an error.
+func set_drain_arc(from_deg: float, to_deg: float, bounces: int, slide_time: float) -> void:
+	var finite: bool = is_finite(from_deg) and is_finite(to_deg) and is_finite(slide_time)
+	if not finite or bounces < 1 or slide_time < 0.0:
+		var problem: String = "BallWorld.set_drain_arc: needs finite angles, bounces >= 1 and"
+		problem += " slide_time >= 0 (got %s, %s, %d, %s)"
+		push_error(problem % [from_deg, to_deg, bounces, slide_time])
+		return
+	has_drain_arc = true
+	drain_from = from_deg
+	drain_to = to_deg
+	drain_bounces = bounces
+	drain_slide_time = slide_time
+
+
 ## Adds a pin; returns its index, or -1 with an error naming the bad input.
 func add_pin(pos: Vector2, radius: float, tag: int, captures: bool, min_speed_x: float) -> int:
 	if not pos.is_finite() or not is_finite(radius) or radius < 0.0:

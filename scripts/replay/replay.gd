@@ -8,27 +8,35 @@ extends RefCounted
 ##
 ## A record is an Array whose first item names it; the rest are whole numbers:
 ## [br]- `["tilt", frames, steps, x, y]`: maze, `frames` frames in a row, each running `steps`
-##   fixed steps with the tilt (x, y) in hundredths of a degree (run-length encoded).
+##   fixed steps with the tilt (x, y) in hundredths of a degree (run-length encoded: a held tilt).
+## [br]- `["tilts", steps, x, y, steps, x, y, ...]`: maze, up to MAX_PACKED_FRAMES frames whose
+##   tilt changes every frame, each with its own steps and tilt (format 2). The file packs
+##   them into one short text (tilt_packing.gd): `["tilts", "BAA..."]`.
 ## [br]- `["run", frames, steps]`: pachinko, `frames` frames of `steps` steps each.
 ## [br]- `["start", step]`: pachinko, a game started (the cup was filled) before `step`.
 ## [br]- `["fire", step, power]`: pachinko, a shot with power in hundredths (0..10000).
 ## Events carry the world's step count when they happened, a check the reader makes.
 
 const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-## The format this build writes and reads.
-const VERSION := 1
+## The format this build writes; it reads this one and every older one (format 1 has no
+## `"tilts"` records).
+const VERSION := 2
+## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
+const MAX_PACKED_FRAMES := 250
 const MAZE := "maze"
 const PACHINKO := "pachinko"
 ## Pachinko has one mode; the maze has easy and hard.
 const PACHINKO_MODE := "normal"
 ## Record kinds and how many numbers follow the name, per game.
 const RECORD_SIZES := {
-	MAZE: {"tilt": 4},
+	MAZE: {"tilt": 4, "tilts": 1},
 	PACHINKO: {"run": 2, "start": 1, "fire": 2},
 }
 ## Tilt and power are kept in hundredths by the rules (MazeRules, PachinkoRules).
 const HUNDREDTHS := 100.0
 
+## The format version of the file it was read from (VERSION when made by this build).
+var format_version := VERSION
 ## "maze" or "pachinko".
 var game := MAZE
 ## The board's `board_id`.
@@ -62,6 +70,30 @@ func mode_name() -> String:
 ## board gives the same hash however its file was laid out.
 static func content_hash(level: BoardLevel) -> String:
 	return BoardTextWriter.write(level).sha256_text()
+
+
+## How many frames a `"tilt"`, `"tilts"` or `"run"` record plays (0 for an event).
+static func frame_count(record: Array) -> int:
+	match record[0]:
+		"tilt", "run":
+			return record[1]
+		"tilts":
+			@warning_ignore("integer_division")
+			return (record.size() - 1) / 3
+	return 0
+
+
+## The fixed steps of frame `frame` of a `"tilt"`, `"tilts"` or `"run"` record.
+static func frame_steps(record: Array, frame: int) -> int:
+	return record[1 + 3 * frame] if record[0] == "tilts" else record[2]
+
+
+## The tilt in hundredths of a degree of frame `frame` of a maze record.
+static func frame_tilt(record: Array, frame: int) -> Vector2i:
+	var at := 2 + 3 * frame if record[0] == "tilts" else 3
+	var x: int = record[at]
+	var y: int = record[at + 1]
+	return Vector2i(x, y)
 
 
 ## "maze" or "pachinko" for a board.

@@ -17,7 +17,8 @@ var pachinko: PachinkoRules
 var diverged := ""
 
 var _record := 0
-var _frames_left := 0
+## The frame of the current record played next.
+var _frame := 0
 
 
 ## Builds the rules for `replay` on `level` and starts the maze attempt.
@@ -77,22 +78,24 @@ func advance_to(target_steps: int) -> void:
 		_play_next()
 
 
-# Steps of the next record when it is a frame, 0 when it is an event.
+# Steps of the next frame when the next record is a frame record, 0 when it is an event.
 func _next_frame_steps() -> int:
 	var record: Array = replay.records[_record]
-	return record[2] if record[0] == "tilt" or record[0] == "run" else 0
+	if Replay.frame_count(record) == 0:
+		return 0
+	return Replay.frame_steps(record, _frame)
 
 
-# Plays one event, or one frame of a run of frames.
+# Plays one event, or the next frame of a frame record.
 func _play_next() -> void:
 	var record: Array = replay.records[_record]
 	var kind: String = record[0]
-	if kind == "tilt" or kind == "run":
-		if _frames_left == 0:
-			_frames_left = record[1]
-		_play_frame(record)
-		_frames_left -= 1
-		if _frames_left == 0:
+	var frames := Replay.frame_count(record)
+	if frames > 0:
+		_play_frame(record, _frame)
+		_frame += 1
+		if _frame == frames:
+			_frame = 0
 			_record += 1
 		return
 	_record += 1
@@ -102,12 +105,13 @@ func _play_next() -> void:
 		diverged = "the shot at step %d could not be fired" % steps()
 
 
-func _play_frame(record: Array) -> void:
-	var count: int = record[2]
+func _play_frame(record: Array, frame: int) -> void:
+	var count := Replay.frame_steps(record, frame)
 	if maze == null:
 		pachinko.run_steps(count)
 		return
-	maze.set_tilt(Vector2(_hundredths(record[3]), _hundredths(record[4])))
+	var tilt := Replay.frame_tilt(record, frame)
+	maze.set_tilt(Vector2(_hundredths(tilt.x), _hundredths(tilt.y)))
 	if maze.run_steps(count) == 0:
 		diverged = "the run ended at step %d, before the recording did" % steps()
 

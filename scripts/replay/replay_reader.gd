@@ -32,6 +32,10 @@ const HEADER_KEYS := [
 	"seconds"
 ]
 const MODES := {"maze": ["easy", "hard"], "pachinko": ["normal"]}
+const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
+## Longest packed text of one "tilts" record: MAX_PACKED_FRAMES frames of three numbers of
+## at most TiltPacking.MAX_DIGITS digits.
+const MAX_PACKED_CHARS := Replay.MAX_PACKED_FRAMES * 3 * TiltPacking.MAX_DIGITS
 
 
 ## {"replay": Replay} or {"error": "what is wrong"} (the caller adds the file name).
@@ -89,6 +93,7 @@ static func _read_header(data: Variant, replay: Replay) -> String:
 			"format %d is newer than this game reads (%d): update the game"
 			% [version, Replay.VERSION]
 		)
+	replay.format_version = version
 	var problem := _read_names(header, replay)
 	if not problem.is_empty():
 		return problem
@@ -154,6 +159,8 @@ static func _read_record(data: Variant, replay: Replay, step: int) -> Dictionary
 	if not sizes.has(kind):
 		var known := ", ".join(PackedStringArray(sizes.keys()))
 		return {"error": 'unknown %s record "%s" (known: %s)' % [replay.game, kind, known]}
+	if kind == "tilts":
+		return _read_packed(record, replay, step)
 	var size: int = sizes[kind]
 	if record.size() != size + 1:
 		return {"error": '"%s" takes %d numbers, got %d' % [kind, size, record.size() - 1]}
@@ -173,6 +180,37 @@ static func _read_record(data: Variant, replay: Replay, step: int) -> Dictionary
 		step += numbers[0] * numbers[1]
 		if step > MAX_STEPS:
 			return {"error": "more than %d steps in all" % MAX_STEPS}
+	return {"step": step}
+
+
+# A "tilts" record: ["tilts", "packed frames"], unpacked and checked frame by frame.
+static func _read_packed(record: Array, replay: Replay, step: int) -> Dictionary:
+	if replay.format_version < 2:
+		return {"error": '"tilts" records came with format 2; this file says format 1'}
+	if record.size() != 2 or not record[1] is String:
+		return {"error": '"tilts" takes one text of packed frames, like ["tilts", "CAA"]'}
+	var packed: String = record[1]
+	if packed.length() > MAX_PACKED_CHARS:
+		return {
+			"error": '"tilts": the packed frames are longer than %d characters' % MAX_PACKED_CHARS
+		}
+	var unpacked := TiltPacking.decode(packed)
+	if unpacked.has("error"):
+		return {"error": '"tilts": %s' % unpacked["error"]}
+	var numbers: Array = unpacked["numbers"]
+	if numbers.size() > Replay.MAX_PACKED_FRAMES * 3:
+		return {"error": '"tilts": more than %d frames' % Replay.MAX_PACKED_FRAMES}
+	for index in range(0, numbers.size(), 3):
+		var frame: Array[int] = [1, numbers[index], numbers[index + 1], numbers[index + 2]]
+		var problem := _check_record("tilt", frame, step)
+		if not problem.is_empty():
+			return {"error": problem.replace('"tilt"', '"tilts"')}
+		step += numbers[index]
+	if step > MAX_STEPS:
+		return {"error": "more than %d steps in all" % MAX_STEPS}
+	var built: Array = ["tilts"]
+	built.append_array(numbers)
+	replay.records.append(built)
 	return {"step": step}
 
 

@@ -10,6 +10,9 @@ extends RefCounted
 ## replay runs the same steps in the same frames.
 
 const Reader := preload("res://scripts/replay/replay_reader.gd")
+## Frames of one tilt in a row that are worth a "tilt" record of their own (a line of about
+## 25 characters) rather than three packed digits each.
+const HELD_FRAMES := 10
 
 var _maze: MazeRules
 var _pachinko: PachinkoRules
@@ -109,21 +112,44 @@ func _world() -> BallWorld:
 
 
 func _add_frame(steps: int) -> void:
-	var record: Array = ["run", 1, steps]
 	if _maze != null:
 		var tilt := (_maze.tilt * Replay.HUNDREDTHS).round()
-		record = ["tilt", 1, steps, int(tilt.x), int(tilt.y)]
+		_add_maze_frame(steps, int(tilt.x), int(tilt.y))
+		return
 	var records := _replay.records
-	if not records.is_empty():
-		var last: Array = records[-1]
-		if (
-			last.size() == record.size()
-			and last[0] == record[0]
-			and last.slice(2) == record.slice(2)
-		):
+	if not records.is_empty() and records[-1][0] == "run" and records[-1][2] == steps:
+		records[-1][1] += 1
+		return
+	records.append(["run", 1, steps])
+
+
+# A held tilt grows a "tilt" record; a changing one goes into a "tilts" record, and once the
+# tilt has stayed the same for HELD_FRAMES frames they move out into a "tilt" record.
+func _add_maze_frame(steps: int, x: int, y: int) -> void:
+	var records := _replay.records
+	var last: Array = records[-1] if not records.is_empty() else []
+	if (
+		last.is_empty()
+		or last[0] != "tilts"
+		or Replay.frame_count(last) >= Replay.MAX_PACKED_FRAMES
+	):
+		if not last.is_empty() and last[0] == "tilt" and last.slice(2) == [steps, x, y]:
 			last[1] += 1
+		else:
+			records.append(["tilts", steps, x, y])
+		return
+	last.append_array([steps, x, y])
+	var frames := Replay.frame_count(last)
+	if frames < HELD_FRAMES:
+		return
+	var frame := [steps, x, y]
+	for back in range(frames - HELD_FRAMES, frames - 1):
+		if last.slice(1 + 3 * back, 4 + 3 * back) != frame:
 			return
-	records.append(record)
+	last.resize(last.size() - 3 * HELD_FRAMES)
+	if last.size() == 1:
+		records.pop_back()
+	records.append(["tilt", HELD_FRAMES, steps, x, y])
 
 
 func _on_maze_started() -> void:

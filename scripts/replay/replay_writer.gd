@@ -1,6 +1,9 @@
 extends RefCounted
 ## Writes a Replay as JSON Lines: one header object, then one record (a JSON array) per
-## line. The same replay always gives the same text; ReplayReader reads it back.
+## line. The same replay always gives the same text; ReplayReader reads it back. A
+## `"tilts"` record's frames are packed into one text (tilt_packing.gd).
+
+const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 
 
 ## The file text for `replay`, ending in a newline.
@@ -31,5 +34,8 @@ static func write(replay: Replay) -> String:
 		)
 	)
 	for record: Array in replay.records:
-		lines.append(JSON.stringify(record))
+		if record[0] == "tilts":
+			lines.append(JSON.stringify(["tilts", TiltPacking.encode(record.slice(1))]))
+		else:
+			lines.append(JSON.stringify(record))
 	return "\n".join(lines) + "\n"

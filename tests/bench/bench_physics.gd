@@ -58,6 +58,8 @@ var _threads := 1
 var _threads_identical := false
 var _thread_hashes := {}
 var _thread_scaling := {}
+## Scenario → CPU µs per step of each stage on one thread (see Ours.stage_breakdown()).
+var _stages := {}
 ## Phase name → {"cpu_s", "wall_s", ...}, in the order the phases ran.
 var _phases := {}
 ## Scenario name → its FloorKernel (S3 has none: its balls need 17 substeps a step to stay
@@ -138,6 +140,12 @@ func _thread_extras() -> void:
 	_threads_identical = identical
 	print("  threads %d, identical states for 1/2/4 threads: %s" % [_threads, identical])
 	_phase_end("ours thread identity")
+	_phase_begin()
+	for spec: Array in _specs:
+		if spec[0] in ["S1", "S2", "S4"] and _wanted(spec[0]):
+			var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
+			_stages[spec[0]] = Ours.stage_breakdown(scene, THREAD_SCALING_STEPS / 2)
+	_phase_end("ours stage breakdown")
 	if not _wanted("S1"):
 		return
 	_phase_begin()
@@ -344,6 +352,9 @@ func _finish() -> void:
 		"threads_identical": _threads_identical,
 		"thread_hashes": _thread_hashes,
 		"scale": _scale,
+		"pin_cost_4x": Ours.pin_cost(_scale.get("pins", {})),
+		"pin_cost_4x_crush": Ours.pin_cost(_scale.get("pins_crush", {})),
+		"stages_1_thread_us": _stages,
 		"cpus_allowed": _proc_status("Cpus_allowed_list"),
 		"godot_job_budget_s": JOB_BUDGET_S,
 		"phase_seconds": _phases,

@@ -11,6 +11,7 @@ const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
 const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const TEMP := "user://test_replay.replay"
 const Kit := preload("res://tests/unit/replay_kit.gd")
+const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 
 
 class TestFormat:
@@ -40,6 +41,45 @@ class TestFormat:
 		assert_almost_eq(back.seconds, 0.058, 0.0005)
 		assert_eq(back.records, replay.records)
 		assert_eq(text.count("\n"), 3, "a header line and one line per record")
+
+	func test_packed_frames_survive_writing_and_reading() -> void:
+		var replay := Replay.new()
+		replay.board_id = "maze_classic"
+		replay.board_hash = "cd".repeat(32)
+		replay.steps = 2 + 8 + 1 + 3
+		replay.records.append(["tilts", 2, 1200, -1200, 8, -1200, 1200, 1, -1199, 1187])
+		replay.records.append(["tilt", 1, 3, 0, 5])
+		var text := Writer.write(replay)
+		assert_string_contains(text, '["tilts","')
+		assert_string_contains(text, '{"replay": 2,', "files are written in format 2")
+		var read := Reader.read(text)
+		assert_true(read.has("replay"), str(read.get("error")))
+		assert_eq((read["replay"] as Replay).records, replay.records)
+
+	func test_a_small_tilt_change_costs_one_character() -> void:
+		var record := ["tilts", 1, 500, -300]
+		for frame in 100:
+			record.append_array([1, 500 + frame % 7, -300 - frame % 5])
+		var packed := TiltPacking.encode(record.slice(1))
+		assert_lt(packed.length(), 101 * 3 + 6, "steps, x and y in a character each")
+		assert_eq(TiltPacking.decode(packed)["numbers"], record.slice(1))
+
+	func test_a_format_1_file_still_reads_and_plays() -> void:
+		var level := Kit.load_level(MAZE_CLASSIC)
+		var replay := Kit.record_live_maze(level, false, 300).finish()
+		var lines := PackedStringArray()
+		for record: Array in replay.records:
+			for frame in Replay.frame_count(record):
+				var tilt := Replay.frame_tilt(record, frame)
+				var steps := Replay.frame_steps(record, frame)
+				lines.append(JSON.stringify(["tilt", 1, steps, tilt.x, tilt.y]))
+		var text := Writer.write(replay).get_slice("\n", 0).replace('"replay": 2', '"replay": 1')
+		var read := Reader.read(text + "\n" + "\n".join(lines) + "\n")
+		assert_true(read.has("replay"), str(read.get("error")))
+		var old: Replay = read["replay"]
+		assert_eq(old.format_version, 1)
+		var played := ReplayPlayer.new(old, level).play_to_end()
+		assert_true(played["match"], str(played))
 
 	func test_the_best_run_and_last_game_paths() -> void:
 		assert_eq(
@@ -99,6 +139,25 @@ class TestMaze:
 		MazeAutoplay.run(Kit.load_level(MAZE_CLASSIC), 60.0, 2, false, recorder)
 		var text := Writer.write(recorder.finish())
 		assert_lt(text.length(), 40 * 1024, "a minute at 120 steps a second, run-length encoded")
+
+	func test_a_minute_of_tilt_changing_every_frame_is_a_small_file() -> void:
+		var level := Kit.load_level(MAZE_CLASSIC)
+		var rules := MazeRules.new(level)
+		var recorder := ReplayRecorder.new()
+		recorder.attach_maze(rules)
+		rules.start()
+		var frames := roundi(60.0 / rules.step_seconds())
+		for frame in frames:
+			var angle := frame * 0.01
+			rules.set_tilt(Vector2(cos(angle), sin(angle * 1.3)) * 11.87)
+			rules.step()
+			recorder.note_frame()
+		var replay := recorder.finish()
+		assert_eq(replay.steps, frames, "the run lasted the whole minute")
+		var text := Writer.write(replay)
+		assert_lt(text.length(), 40 * 1024, "%d frames, each with its own tilt" % frames)
+		var played := Kit.play(replay, level)
+		assert_true(played["match"], str(played))
 
 
 class TestPachinko:

@@ -1,7 +1,9 @@
 extends RefCounted
 ## The maze shots: "maze_start" the waiting board, "maze_tilt" the board mid-tilt under the
 ## arrow keys, "maze_win" a board the autoplay's pilot solved, "maze_lost" hard mode with a
-## ball in a black hole, "maze_fall" a ball half way down a hole. Each opens the game as the
+## ball in a black hole, "maze_fall" a ball half way down a hole, "maze_ghost" a second
+## attempt beside the ghost of the best run (the autoplay's winning run, saved as the game
+## saves a best run). Replays go to a scratch folder, never the player's. Each opens the game as the
 ## level select does (App.start_game) and plays it with the player's own input actions or
 ## through the screen's rules (MazeGame.rules); balls are never placed by hand. The start and
 ## tilt shots also print the frame rate.
@@ -13,7 +15,19 @@ const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
 ## The shots this file takes, in order.
-const NAMES: Array[String] = ["maze_start", "maze_tilt", "maze_win", "maze_lost", "maze_fall"]
+const NAMES: Array[String] = [
+	"maze_start", "maze_tilt", "maze_win", "maze_lost", "maze_fall", "maze_ghost"
+]
+## Where the shots' replays (best runs) go instead of the player's folder.
+const SCRATCH_REPLAYS := "user://shots_replays"
+## The best run the ghost shot plays: the autoplay's pilot with this seed, for at most this
+## long (it wins the classic board in about 50 s).
+const GHOST_SEED := 2
+const GHOST_RUN_SECONDS := 120.0
+## The second attempt: tilted this way (up and left, while the best run rolls down first)
+## for this long before the shot.
+const GHOST_LIVE_TILT := Vector2(-0.7, -0.9)
+const GHOST_SHOT_SECONDS := 1.6
 ## Pilot seeds tried, and physics steps per try, before the win shot gives up.
 const WIN_ATTEMPTS := 10
 const WIN_MAX_STEPS := 14400
@@ -28,6 +42,14 @@ const FPS_SECONDS := 3.0
 ## Opens the game, plays it into the moment of `shot_name` and saves it. OK or the reason
 ## it failed.
 static func take(tree: SceneTree, shot_name: String) -> Error:
+	var player_folder := ReplayStore.folder
+	ReplayStore.folder = SCRATCH_REPLAYS
+	var error: Error = await _take(tree, shot_name)
+	ReplayStore.folder = player_folder
+	return error
+
+
+static func _take(tree: SceneTree, shot_name: String) -> Error:
 	if not shot_name in NAMES:
 		printerr("shots: maze_shots has no shot '%s'" % shot_name)
 		return ERR_INVALID_PARAMETER
@@ -61,6 +83,8 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 				staged = await _mid_fall(tree, (game as MazeGame).stage())
 			if staged == OK:  # the fall is under way: take the very next frame
 				return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name), 0)
+		"maze_ghost":
+			staged = await _second_attempt(tree, game as MazeGame)
 	if staged != OK:
 		return staged
 	var error: Error = await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
@@ -103,6 +127,32 @@ static func _win(tree: SceneTree, rules: MazeRules) -> Error:
 			return OK
 	printerr("shots: maze_win: the pilot won none of %d tries" % WIN_ATTEMPTS)
 	return FAILED
+
+
+# Saves the pilot's winning run as the best run (as the game saves one), then starts a new
+# attempt tilted another way: the screen shows the best run's ghost beside the live balls.
+static func _second_attempt(tree: SceneTree, game: MazeGame) -> Error:
+	var rules := game.rules
+	var recorder := ReplayRecorder.new()
+	var run := MazeAutoplay.run(rules.level, GHOST_RUN_SECONDS, GHOST_SEED, false, recorder)
+	if not run.get("won", false):
+		printerr("shots: maze_ghost: the pilot did not win: %s" % run)
+		return FAILED
+	var best := recorder.finish()
+	var path := ReplayStore.best_maze_path(rules.level.board_id, false)
+	if ReplayStore.save(best, path) != OK:
+		printerr("shots: maze_ghost: could not save %s" % path)
+		return FAILED
+	App.record_maze_time(rules.level.board_id, false, best.seconds)
+	rules.reset()  # a new attempt: the screen loads the best run as its ghost
+	await tree.process_frame
+	_press_tilt(GHOST_LIVE_TILT)  # the first tilt starts the attempt
+	await _wait(tree, GHOST_SHOT_SECONDS)
+	if game.get("_ghost") == null:
+		_release_tilt()
+		printerr("shots: maze_ghost: the second attempt shows no ghost")
+		return FAILED
+	return OK
 
 
 # Hard mode, then tilt right: on the classic board the top-left ball rolls along the top

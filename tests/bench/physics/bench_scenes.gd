@@ -35,8 +35,11 @@ static func pin_lattice(pitch: float) -> PackedVector2Array:
 
 
 ## A scene dictionary: name, hz, steps, ring (bool), pins, pin_r, walls (pairs), wall_r,
-## balls (positions), vels, ball_r, mode ("flow", "pile", "fast", "maze").
-static func make(name: String, mode: String, pitch: float, balls: int, hz: float) -> Dictionary:
+## balls (positions), vels, ball_r, mode ("flow", "pile", "fast", "maze"). `ball_r` other
+## than BALL_R is for flow scenes only (the pin sweep's balls that fit a 12 px lattice).
+static func make(
+	name: String, mode: String, pitch: float, balls: int, hz: float, ball_r := BALL_R
+) -> Dictionary:
 	var rng := RandomNumberGenerator.new()
 	rng.seed = hash(name)
 	var scene := {
@@ -48,7 +51,7 @@ static func make(name: String, mode: String, pitch: float, balls: int, hz: float
 		"pin_r": PIN_R,
 		"walls": PackedVector2Array(),
 		"wall_r": MAZE_WALL_R,
-		"ball_r": BALL_R,
+		"ball_r": ball_r,
 		"pos": PackedVector2Array(),
 		"vel": PackedVector2Array(),
 	}
@@ -65,7 +68,7 @@ static func make(name: String, mode: String, pitch: float, balls: int, hz: float
 		for _i: int in balls:
 			var p: Vector2 = random_in_field(rng) if mode == "fast" else respawn_point(rng, true)
 			var tries := 0
-			while not _clear_of(near, p) and tries < 1000:
+			while not _clear_of(near, p, ball_r) and tries < 1000:
 				tries += 1
 				p = random_in_field(rng) if mode == "fast" else respawn_point(rng, true)
 			scene["pos"].append(p)
@@ -211,10 +214,10 @@ static func _bin_pins(pins: PackedVector2Array) -> Dictionary:
 	return near
 
 
-static func _clear_of(near: Dictionary, p: Vector2) -> bool:
+static func _clear_of(near: Dictionary, p: Vector2, ball_r := BALL_R) -> bool:
 	var cx: int = floori(p.x / 16.0)
 	var cy: int = floori(p.y / 16.0)
-	var clear2: float = (PIN_R + BALL_R + 0.5) ** 2
+	var clear2: float = (PIN_R + ball_r + 0.5) ** 2
 	for dy: int in range(-1, 2):
 		for dx: int in range(-1, 2):
 			var list: PackedVector2Array = near.get(

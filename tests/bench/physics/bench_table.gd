@@ -80,6 +80,20 @@ static func print_table(out: Dictionary, warmup: int, budget_s: float) -> void:
 		)
 	)
 	print("scale: %s" % JSON.stringify(out["scale"]))
+	var cost: String = "4x the pins costs %.2fx the time (balls flowing); %.2fx with 5 px balls"
+	print(
+		(
+			(cost + " (a crush: they can't pass a 12 px lattice)")
+			% [out["pin_cost_4x"], out["pin_cost_4x_crush"]]
+		)
+	)
+	print("one thread, CPU us per step by stage:")
+	var stages: Dictionary = out["stages_1_thread_us"]
+	for scene: String in stages:
+		var parts := PackedStringArray()
+		for stage: String in stages[scene]:
+			parts.append("%s %.0f" % [stage, stages[scene][stage]])
+		print("  %s: %s" % [scene, ", ".join(parts)])
 	print("")
 	print("seconds per phase (CPU / wall):")
 	var phases: Dictionary = out["phase_seconds"]

@@ -14,6 +14,8 @@ const WARMUP := 5
 ## Respawns and relaunches happen every this many steps.
 const RULES_EVERY := 8
 const RULES_SEED := 99
+## Ball radius of the pin-density sweep: 7 px balls pass the 9 px gaps of a 12 px lattice.
+const PIN_SWEEP_BALL_R := 3.5
 
 
 ## BallWorld seen through the same small interface as the Godot side.
@@ -193,11 +195,55 @@ static func scale_sweep() -> Dictionary:
 		var r: Dictionary = run(scene, steps + WARMUP, false)
 		by_balls[str(n)] = r["ball_steps_per_s"]
 		print("  scale balls %d: %.0f ball-steps/s" % [n, r["ball_steps_per_s"]])
+	return {
+		"balls": by_balls,
+		"pins": pin_sweep(PIN_SWEEP_BALL_R),
+		"pins_crush": pin_sweep(Scenes.BALL_R)
+	}
+
+
+## S1 with 1,250 → 5,000 pins (pitch 24 → 17 → 12 px) and 1,000 balls of radius `ball_r`:
+## pins → ball-steps per second. With PIN_SWEEP_BALL_R the balls flow through every
+## lattice, so the rows differ only in the pins; with the scenes' 5 px balls the 12 px
+## lattice (9 px gaps) stops every ball, and 1,000 of them crush into a cap that holds
+## about 680 ("pins_crush": a pile of ~5,000 touching pairs, not a pin cost).
+static func pin_sweep(ball_r: float) -> Dictionary:
 	var by_pins := {}
 	for pitch: float in [24.0, 17.0, 12.0]:
-		var scene: Dictionary = Scenes.make("S1", "flow", pitch, 1000, 240.0)
+		var scene: Dictionary = Scenes.make("S1", "flow", pitch, 1000, 240.0, ball_r)
 		var pins: int = (scene["pins"] as PackedVector2Array).size()
 		var r: Dictionary = run(scene, 400 + WARMUP, false)
 		by_pins[str(pins)] = r["ball_steps_per_s"]
-		print("  scale pins %d: %.0f ball-steps/s" % [pins, r["ball_steps_per_s"]])
-	return {"balls": by_balls, "pins": by_pins}
+		print(
+			(
+				"  scale pins %d (balls r %.1f): %.0f ball-steps/s"
+				% [pins, ball_r, r["ball_steps_per_s"]]
+			)
+		)
+	return by_pins
+
+
+## Where one thread's time goes on `scene`: CPU µs per step of each stage (see
+## BallWorld.stage_times()) over `steps` steps past the warm-up, harness rules included.
+static func stage_breakdown(scene: Dictionary, steps: int) -> Dictionary:
+	var w := build_world(scene)
+	w.threads = 1
+	w.profile_cpu_time = true
+	var side := OursSide.new(w)
+	var rng := RandomNumberGenerator.new()
+	rng.seed = RULES_SEED
+	for s: int in steps + WARMUP:
+		if s == WARMUP:
+			w.profile_stages = true
+		w.step(1.0 / float(scene["hz"]))
+		if rules_due(scene["mode"], s + 1):
+			harness_rules(scene["mode"], s + 1, w.get_positions(), rng, side, scene["hz"])
+	return w.stage_times()
+
+
+## Time per step with 4x the pins over the sweep's first row (pins → ball-steps per second).
+static func pin_cost(by_pins: Dictionary) -> float:
+	var speeds: Array = by_pins.values()
+	if speeds.size() < 2:
+		return 0.0
+	return float(speeds[0]) / maxf(float(speeds[speeds.size() - 1]), 1e-9)

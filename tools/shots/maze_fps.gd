@@ -1,0 +1,166 @@
+extends SceneTree
+## The 3D maze's frame rate, side by side: opens the classic maze as the player does, keeps
+## the board tilting round (balls rolling, the board's shadow moving), and measures frames
+## per second of this process's CPU time for each variant of the render settings in turn,
+## in rounds (A B C A B C ...), so a machine shared with other work treats every variant
+## alike. Run by tools/maze_fps.sh under Xvfb (a real window, software GL).
+##   MAZE_FPS_ROUNDS=3  MAZE_FPS_FRAMES=40
+
+const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
+const BOARD := "res://levels/maze/classic.board"
+const SCRATCH_SETTINGS := "user://fps_settings.cfg"
+const SCRATCH_SAVE := "user://fps_save.cfg"
+## Variants: a name and the settings it changes from the game's own ("as shipped" changes
+## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*),
+## hide (parts not drawn: floor, walls, frame, balls, table, shadows).
+const VARIANTS := [
+	["full res, MSAA 2x (GPU path)", {"scale": 1.0, "msaa": Viewport.MSAA_2X}],
+	["as shipped", {}],
+	["scale 0.6", {"scale": 0.6}],
+	["scale 0.67", {"scale": 0.67}],
+	["scale 0.75", {"scale": 0.75}],
+	["full res", {"scale": 1.0}],
+	["no shadows", {"hide": ["shadows"]}],
+]
+
+var _angle := 0.0
+
+
+func _initialize() -> void:
+	_run.call_deferred()
+
+
+func _run() -> void:
+	for scratch in [SCRATCH_SETTINGS, SCRATCH_SAVE]:
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(scratch))
+	var app := root.get_node("/root/App")
+	app.call("load_player_files", SCRATCH_SETTINGS, SCRATCH_SAVE)
+	var game := await ScreenOpener.open(
+		self, app.call.bind("start_game", "maze", BOARD), GAME_SCENE
+	)
+	if game == null or game.get("rules") == null:
+		printerr("maze_fps: the maze did not open")
+		quit(1)
+		return
+	var stage: Node3D = game.call("stage")
+	var defaults := _read_settings(stage)
+	var rounds := (
+		int(OS.get_environment("MAZE_FPS_ROUNDS")) if OS.has_environment("MAZE_FPS_ROUNDS") else 3
+	)
+	var frames := (
+		int(OS.get_environment("MAZE_FPS_FRAMES")) if OS.has_environment("MAZE_FPS_FRAMES") else 40
+	)
+	var rates := {}
+	var mains := {}
+	for variant: Array in VARIANTS:
+		rates[variant[0]] = PackedFloat64Array()
+		mains[variant[0]] = PackedFloat64Array()
+	await _frames(20)  # the game starts on the first tilt; let it settle
+	for r in rounds:
+		for variant: Array in VARIANTS:
+			_apply(stage, defaults.merged(variant[1], true))
+			await _frames(4)
+			var measured := await _measure(frames)
+			rates[variant[0]].append(measured[0])
+			mains[variant[0]].append(measured[1])
+			if r == 0 and OS.has_environment("MAZE_FPS_SHOTS"):
+				await _save_shot(variant[0])
+	_apply(stage, defaults)
+	var size := root.get_visible_rect().size
+	print(
+		(
+			"maze_fps: %dx%d on %s, %d rounds of %d frames"
+			% [size.x, size.y, RenderingServer.get_video_adapter_name(), rounds, frames]
+		)
+	)
+	print("maze_fps:   variant                      frames/CPU s (min-max)   main thread ms/frame")
+	for variant: Array in VARIANTS:
+		var list: PackedFloat64Array = rates[variant[0]]
+		list.sort()
+		var main: PackedFloat64Array = mains[variant[0]]
+		main.sort()
+		print(
+			(
+				"maze_fps:   %-28s %5.1f (%.1f-%.1f)      %5.1f"
+				% [variant[0], list[list.size() / 2], list[0], list[-1], main[main.size() / 2]]
+			)
+		)
+	_release()
+	quit(0)
+
+
+func _read_settings(_stage: Node3D) -> Dictionary:
+	return {
+		"hide": [],
+		"scale": root.scaling_3d_scale,
+		"msaa": root.msaa_3d,
+	}
+
+
+func _apply(stage: Node3D, settings: Dictionary) -> void:
+	root.scaling_3d_scale = settings["scale"]
+	root.msaa_3d = settings["msaa"]
+	var board: Node3D = stage.call("board")
+	var parts := {
+		"floor": [board.call("part", "floor")],
+		"walls": [board.call("part", "walls")],
+		"frame": [board.call("part", "frame")],
+		"balls": [stage.call("balls")],
+		"table": [stage.get("_table")],
+		"shadows": [board.call("part", "wall_shadows"), board.call("part", "frame_shadow")],
+		"wall_shadows": [board.call("part", "wall_shadows")],
+		"frame_shadow": [board.call("part", "frame_shadow")],
+	}
+	for part: String in parts:
+		for node: Node3D in parts[part]:
+			node.visible = not settings["hide"].has(part)
+
+
+# Saves the window as build/maze_fps/<variant>.png, to see what a variant looks like.
+func _save_shot(variant_name: String) -> void:
+	await RenderingServer.frame_post_draw
+	var folder := ProjectSettings.globalize_path("res://build/maze_fps")
+	DirAccess.make_dir_recursive_absolute(folder)
+	var file_name := variant_name.replace(" ", "_").replace(",", "")
+	root.get_texture().get_image().save_png("%s/%s.png" % [folder, file_name])
+
+
+# [frames per CPU second, CPU ms a frame on the main thread] over `count` frames.
+func _measure(count: int) -> Array[float]:
+	var main_stat := "/proc/self/task/%d/stat" % OS.get_process_id()
+	var cpu_start := _cpu_seconds()
+	var main_start := _cpu_seconds(main_stat)
+	await _frames(count)
+	var cpu := maxf(_cpu_seconds() - cpu_start, 0.001)
+	var main := _cpu_seconds(main_stat) - main_start
+	return [count / cpu, main * 1000.0 / count]
+
+
+# Runs `count` frames, tilting round as a player steering would.
+func _frames(count: int) -> void:
+	for i in count:
+		_angle += 0.05
+		_tilt(Vector2(cos(_angle), sin(_angle * 1.3)))
+		await process_frame
+
+
+func _tilt(strength: Vector2) -> void:
+	_release()
+	Input.action_press("tilt_right" if strength.x > 0.0 else "tilt_left", absf(strength.x))
+	Input.action_press("tilt_down" if strength.y > 0.0 else "tilt_up", absf(strength.y))
+
+
+func _release() -> void:
+	for action: StringName in [&"tilt_left", &"tilt_right", &"tilt_up", &"tilt_down"]:
+		Input.action_release(action)
+
+
+# User + system CPU seconds of this process, all its threads (software GL's too).
+static func _cpu_seconds(path := "/proc/self/stat") -> float:
+	var file := FileAccess.open(path, FileAccess.READ)
+	if file == null:
+		return 0.0
+	var text := file.get_line()
+	var fields := text.substr(text.rfind(")") + 2).split(" ")
+	return (fields[11].to_float() + fields[12].to_float()) / 100.0
