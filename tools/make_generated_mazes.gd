@@ -91,10 +91,10 @@ const BOARDS := [
 	[
 		"the_deep",
 		"The Deep",
-		"The largest maze, with the fewest loops and sixteen holes.",
+		"The largest maze, with the fewest loops and a dozen holes.",
 		18,
 		14,
-		16,
+		12,
 		0.85,
 		19,
 	],
