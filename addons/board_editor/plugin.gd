@@ -9,6 +9,7 @@ const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
 const BoardOverlay := preload("res://addons/board_editor/ui/board_overlay.gd")
 const BoardToolbar := preload("res://addons/board_editor/ui/board_toolbar.gd")
+const MazeGeneratorButton := preload("res://addons/board_editor/generator/maze_generator_button.gd")
 const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
@@ -27,6 +28,7 @@ var _node: BoardNode
 var _session: Session
 var _input: BoardInput
 var _toolbar: BoardToolbar
+var _generator: MazeGeneratorButton
 var _dock: BoardDock
 var _save_dialog: SaveAsDialog
 var _issues: Array[BoardIssue] = []
@@ -44,6 +46,8 @@ func _enter_tree() -> void:
 	_toolbar = BoardToolbar.new()
 	_toolbar.hide()
 	_toolbar.play_test_requested.connect(_play_test)
+	_generator = MazeGeneratorButton.new()
+	_toolbar.add_child(_generator)
 	add_control_to_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
 	_dock = BoardDock.new()
 	_dock.play_test_requested.connect(_play_test)
@@ -91,6 +95,7 @@ func _edit(object: Object) -> void:
 	_input = BoardInput.new(_session)
 	level.changed.connect(_on_level_changed)
 	_toolbar.bind(_session)
+	_generator.bind(_session)
 	_toolbar.visible = _visible
 	_refresh()
 

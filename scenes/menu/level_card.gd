@@ -5,6 +5,7 @@ extends Button
 ## reachable with keyboard and gamepad) but not start.
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
+const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const CARD_SIZE := Vector2(300, 400)
 const THUMB_HEIGHT := 206.0
 
@@ -16,9 +17,14 @@ var playable := false
 var loading := false
 ## True for one of the player's own boards (user://boards/).
 var mine := false
+## The board shown (null while loading or when it failed to load).
+var level: BoardLevel = null
+## True when the board is not open yet (maze progression).
+var locked := false
 
 var _box: VBoxContainer = null
 var _thumbnail: BoardThumbnail = null
+var _badges: MedalBadges = null
 
 
 ## Shows the card of `path` as "Loading…" until `setup` fills it in.
@@ -38,23 +44,50 @@ func setup(result: BoardLoadResult, best: String) -> void:
 	_prepare(result.path)
 	loading = false
 	playable = result.ok()
+	level = result.level if playable else null
+	locked = false
 	disabled = not playable
 	_thumbnail.level = result.level
 	var file_line := "My board: %s" % board_path.get_file() if mine else ""
 	if playable:
-		var level := result.level
-		_add_label(level.display_name if not level.display_name.is_empty() else level.board_id, &"")
+		var shown := result.level
+		_add_label(shown.display_name if not shown.display_name.is_empty() else shown.board_id, &"")
 		if not file_line.is_empty():
 			_add_label(file_line, &"HintLabel")
 		_add_label(best if not best.is_empty() else "Not played yet", &"HintLabel")
-		_add_label(level.description, &"HintLabel", true)
-		tooltip_text = level.description
+		_add_label(shown.description, &"HintLabel", true)
+		tooltip_text = shown.description
 	else:
 		_add_label("⚠ " + board_path.get_file(), &"WarningLabel")
 		var reason := result.error.trim_prefix(board_path + ": ")
 		_add_label("Can't be played: " + reason, &"HintLabel", true, 4)
 		tooltip_text = result.error
 	modulate = Color(1, 1, 1, 1.0 if playable else 0.7)
+
+
+## Maze progression: medals per mode under the title, or a locked card that cannot start
+## and says what opens it. Called again after every load, so it replaces an earlier row.
+func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint: String) -> void:
+	if not playable:
+		return
+	locked = is_locked
+	if _badges == null:
+		_badges = MedalBadges.new()
+		_box.add_child(_badges)
+		_box.move_child(_badges, 2)
+		# the medal row takes a line's height: the description gives one up to fit the card
+		var description := _box.get_child(_box.get_child_count() - 1) as Label
+		if description != null:
+			description.max_lines_visible = 2
+	_badges.show_medals(easy, hard, hint if is_locked else "")
+	disabled = locked
+	_thumbnail.modulate = Color(1, 1, 1, 0.3 if locked else 1.0)
+	tooltip_text = hint if locked else level.description
+
+
+## The medal row, or null when the card has none.
+func medal_badges() -> MedalBadges:
+	return _badges
 
 
 ## The texts of the card's labels, top to bottom.
@@ -74,6 +107,7 @@ func _prepare(path: String) -> void:
 	focus_mode = Control.FOCUS_ALL
 	if _box != null:
 		_box.free()  # at once: the card is refilled in place, nothing of the old box may linger
+	_badges = null
 	_box = VBoxContainer.new()
 	_box.set_anchors_and_offsets_preset(Control.PRESET_FULL_RECT, Control.PRESET_MODE_MINSIZE, 14)
 	_box.mouse_filter = Control.MOUSE_FILTER_IGNORE

@@ -4,8 +4,10 @@ extends Control
 ## off the main thread (BoardListLoading): cards say "Loading…" and fill in, so a slow or
 ## hostile file never stops the screen; a board that fails to load is greyed with its error.
 ## My boards can be imported (button or a file dropped on the window), exported and deleted.
+## Shipped maze boards come in the order they open (MazeProgress) with medals and locks.
 
 const LevelSlot := preload("res://scenes/menu/level_slot.gd")
+const MazeCardProgress := preload("res://scenes/menu/maze_card_progress.gd")
 const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
 
@@ -105,6 +107,8 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 		_cancel(_grid)
 		_loadings.erase(_grid)
 	_clear(_grid)
+	if kind == "maze":
+		results = MazeProgress.sorted(results)
 	for result in results:
 		_add_slot(_grid, result.path)
 		_fill(_grid, result.path, result)
@@ -203,7 +207,10 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	_clear(grid)
 	var kind_value := _kind_enum(kind)
 	var jobs: Array[Dictionary] = []
-	for path in BoardLoader.list_files(kind_value, root):
+	var paths := BoardLoader.list_files(kind_value, root)
+	if kind == "maze" and grid == _grid:
+		paths = _in_maze_order(paths)
+	for path in paths:
 		_add_slot(grid, path)
 		jobs.append({"path": path, "kind": kind_value, "root": root})
 	_loadings[grid] = BoardListLoading.new(jobs, load_one)
@@ -230,6 +237,9 @@ func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
 	for slot in grid.get_children():
 		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
 			(slot as LevelSlot).fill(result, _best_text(result))
+	if kind == "maze":
+		# at once, not only when all have loaded: a locked board never starts meanwhile
+		_show_maze_progress()
 	_update_summary()
 
 
@@ -247,6 +257,47 @@ func _loaded() -> void:
 	_first_focus = get_viewport().gui_get_focus_owner()
 
 
+# Shipped mazes in the order they open (by the ids loaded), then medals and locks on them;
+# the player's own boards get their medals and are never locked.
+func _show_maze_progress() -> void:
+	var slots: Array[LevelSlot] = []
+	for slot in _grid.get_children():
+		if slot is LevelSlot:
+			slots.append(slot as LevelSlot)
+	slots.sort_custom(
+		func(a: LevelSlot, b: LevelSlot) -> bool: return _slot_rank(a) < _slot_rank(b)
+	)
+	var shipped: Array[Button] = []
+	for i in slots.size():
+		_grid.move_child(slots[i], i)
+		shipped.append(slots[i].card)
+	MazeCardProgress.apply(shipped)
+	var mine: Array[Button] = []
+	for slot in my_slots():
+		mine.append(slot.card)
+	MazeCardProgress.apply(mine, false)
+
+
+# A slot's place in the play order; its index breaks ties, so the sort keeps listed order.
+static func _slot_rank(slot: LevelSlot) -> int:
+	var card := slot.card
+	var board_id := card.level.board_id if card.level != null else ""
+	return MazeProgress.rank(board_id) * 10000 + slot.get_index()
+
+
+# Shipped maze files before they load, in the order their ids (maze_<file name>) open.
+static func _in_maze_order(paths: Array[String]) -> Array[String]:
+	var keyed: Array = []
+	for i in paths.size():
+		var guessed_id := "maze_" + paths[i].get_file().get_basename()
+		keyed.append([MazeProgress.rank(guessed_id) * 10000 + i, paths[i]])
+	keyed.sort_custom(func(a: Array, b: Array) -> bool: return a[0] < b[0])
+	var ordered: Array[String] = []
+	for entry: Array in keyed:
+		ordered.append(str(entry[1]))
+	return ordered
+
+
 # Frees the grid's slots at once (never called from one of their own signals).
 func _clear(grid: GridContainer) -> void:
 	for child in grid.get_children():
@@ -257,10 +308,12 @@ func _update_summary() -> void:
 	var total := 0
 	var broken := 0
 	var waiting := 0
+	var locked := 0
 	for card: Button in cards():
 		total += 1
 		waiting += 1 if card.get("loading") else 0
-		broken += 1 if card.disabled and not card.get("loading") else 0
+		broken += 1 if not card.get("playable") and not card.get("loading") else 0
+		locked += 1 if card.get("locked") else 0
 	var mine := my_slots().size()
 	_my_empty.visible = mine == 0
 	if total == 0:
@@ -273,6 +326,8 @@ func _update_summary() -> void:
 		text += ", %d loading…" % waiting
 	if broken > 0:
 		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
+	if locked > 0:
+		text += ", %d locked (finish the board before each to open it)" % locked
 	_summary.text = text
 
 
@@ -290,12 +345,12 @@ func _best_text(result: BoardLoadResult) -> String:
 		var hard := App.best_maze_time(board_id, true)
 		if easy <= 0.0 and hard <= 0.0:
 			return ""
-		var parts := PackedStringArray()
-		if easy > 0.0:
-			parts.append("Best time: %s" % _clock_text(easy))
-		if hard > 0.0:
-			parts.append("Hard: %s" % _clock_text(hard))
-		return "  ·  ".join(parts)
+		if hard <= 0.0:
+			return "Best time: %s" % _clock_text(easy)
+		if easy <= 0.0:
+			return "Best time (hard): %s" % _clock_text(hard)
+		# each mode's best on one line of the card, under that mode's medal
+		return "Easy %s · Hard %s" % [_clock_text(easy), _clock_text(hard)]
 	var balls := App.best_pachinko_balls(board_id)
 	return "Best: %d balls won" % balls if balls >= 0 else ""
 

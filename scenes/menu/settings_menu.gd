@@ -18,6 +18,7 @@ const BindingList := preload("res://scenes/menu/binding_list.gd")
 @onready var _frame_counter: Button = %FrameCounterCheck
 @onready var _ghost: Button = %GhostCheck
 @onready var _vibration: Button = %VibrationCheck
+@onready var _unlock_all: Button = %UnlockAllCheck
 @onready var _bindings: BindingList = %Bindings
 @onready var _defaults: Button = %DefaultsButton
 @onready var _back: Button = %BackButton
@@ -36,10 +37,14 @@ func _ready() -> void:
 	_frame_counter.toggled.connect(_on_value_changed.bind("show_frame_counter"))
 	_ghost.toggled.connect(_on_value_changed.bind("show_ghost"))
 	_vibration.toggled.connect(_on_value_changed.bind("vibration"))
+	_unlock_all.toggled.connect(_on_value_changed.bind("unlock_all_boards"))
 	_defaults.pressed.connect(_on_defaults_pressed)
 	_back.pressed.connect(close)
 	App.settings.changed.connect(_load_values)
-	for control: Control in [_master, _sfx, _tilt, _fullscreen, _frame_counter, _ghost, _vibration]:
+	var rows: Array[Control] = [
+		_master, _sfx, _tilt, _fullscreen, _frame_counter, _ghost, _vibration, _unlock_all
+	]
+	for control: Control in rows:
 		_mark_row_on_focus(control)
 	# on its own (not over a menu or a game) the screen brings its own background
 	_backdrop.visible = get_parent() == get_tree().root
@@ -76,6 +81,7 @@ func _load_values() -> void:
 	_frame_counter.set_pressed_no_signal(settings.show_frame_counter)
 	_ghost.set_pressed_no_signal(settings.show_ghost)
 	_vibration.set_pressed_no_signal(settings.vibration)
+	_unlock_all.set_pressed_no_signal(settings.unlock_all_boards)
 	_show_numbers()
 
 
@@ -89,6 +95,7 @@ func _show_numbers() -> void:
 	_frame_counter.text = "On" if _frame_counter.button_pressed else "Off"
 	_ghost.text = "On" if _ghost.button_pressed else "Off"
 	_vibration.text = "On" if _vibration.button_pressed else "Off"
+	_unlock_all.text = "On" if _unlock_all.button_pressed else "Off"
 	_master_value.text = "%d%%" % roundi(_master.value * 100.0)
 	_sfx_value.text = "%d%%" % roundi(_sfx.value * 100.0)
 	_tilt_value.text = "×%.2f" % _tilt.value

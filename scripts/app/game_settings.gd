@@ -38,6 +38,8 @@ var show_frame_counter := false
 var show_ghost := true
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
+## Every maze board open from the start, instead of one after another.
+var unlock_all_boards := false
 ## Gamepad rumble and phone vibration when a maze ball knocks a wall or drops into a hole.
 var vibration := true
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
@@ -82,6 +84,7 @@ func reset_to_defaults() -> void:
 	show_frame_counter = false
 	show_ghost = true
 	tilt_sensitivity = 1.0
+	unlock_all_boards = false
 	vibration = true
 	bindings = default_bindings()
 	changed.emit()
@@ -145,7 +148,7 @@ func set_value(key: String, value: Variant) -> void:
 		"fullscreen":
 			var on: bool = value
 			fullscreen = on
-		"show_frame_counter", "show_ghost":
+		"show_frame_counter", "show_ghost", "unlock_all_boards":
 			var on: bool = value
 			set(key, on)
 		"tilt_sensitivity":
@@ -205,6 +208,7 @@ func save_file(path: String) -> Error:
 			}
 		],
 		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
+		["progress", {"unlock_all_boards": unlock_all_boards}],
 		["input", input],
 	]
 	var error := IniText.write_file(path, IniText.format(FILE_HEADER % VERSION, sections))
@@ -276,6 +280,8 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "show_ghost", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	_read_flag(controls, "vibration", problems)
+	var progress: Dictionary = sections.get("progress", {})
+	_read_flag(progress, "unlock_all_boards", problems)
 	var input: Dictionary = sections.get("input", {})
 	_read_bindings(input, problems)
 	return problems

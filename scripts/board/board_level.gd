@@ -192,6 +192,16 @@ const CURRENT_VERSION := 1
 		hole_radius = value
 		emit_changed()
 
+## Medal times of easy mode in seconds, [gold, silver, bronze] (empty: no medals yet).
+@export var medal_times_easy: PackedFloat64Array = PackedFloat64Array():
+	set(value):
+		medal_times_easy = value
+		emit_changed()
+## Medal times of hard mode in seconds, [gold, silver, bronze] (empty: no medals yet).
+@export var medal_times_hard: PackedFloat64Array = PackedFloat64Array():
+	set(value):
+		medal_times_hard = value
+		emit_changed()
 ## Stable ids of the items, one per item, in the same order (see ItemIds): they survive a
 ## neighbour being deleted, so messages and the editor can name an item for good.
 @export var pin_ids: PackedInt32Array = PackedInt32Array():

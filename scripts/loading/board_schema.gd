@@ -46,6 +46,11 @@ const MAZE := {
 	"goal_radius": ["float", 1.0, 2048.0],
 	"hole_radius": ["float", 0.0, 500.0],
 }
+## Fields a maze file may leave out: medal times per mode,
+## `{"medal_times": {"easy": [gold, silver, bronze], "hard": [...]}}` in seconds.
+const MAZE_OPTIONAL := {"medal_times": ["medals", 0.1, 36000.0]}
+## The modes medal times are given for.
+const MEDAL_MODES: Array[String] = ["easy", "hard"]
 ## The fields every bonus pocket has: a cup a 10 px ball fits into, paying a sane amount.
 const BONUS_CUP := {
 	"x": ["coord"],
@@ -147,6 +152,11 @@ static func fields_for(kind_name: String) -> Dictionary:
 	return fields
 
 
+## The top-level fields a board of `kind_name` may leave out.
+static func optional_fields_for(kind_name: String) -> Dictionary:
+	return MAZE_OPTIONAL if kind_name == "maze" else {}
+
+
 ## The item lists a board of `kind_name` has.
 static func lists_for(kind_name: String) -> Array[String]:
 	return PACHINKO_LISTS if kind_name == "pachinko" else MAZE_LISTS
@@ -204,6 +214,9 @@ static func check_value(value: Variant, spec: Array) -> String:
 			)
 		"int":
 			return check_number(value, _bound(spec, 1), _bound(spec, 2), true)
+		"medals":
+			return _check_medals(value, _bound(spec, 1), _bound(spec, 2))
+
 	return check_number(value, _bound(spec, 1), _bound(spec, 2), false)
 
 
@@ -219,6 +232,32 @@ static func check_number(value: Variant, low: float, high: float, whole: bool) -
 	if number < low or number > high:
 		return "must be between %s and %s, got %s" % [_short(low), _short(high), _short(number)]
 	return ""
+
+
+# Medal times: {"easy": [gold, silver, bronze], "hard": [...]}, each mode optional, each
+# time in [low, high] and no faster than the medal above it.
+static func _check_medals(value: Variant, low: float, high: float) -> String:
+	if not value is Dictionary:
+		return 'must be an object {"easy": [gold, silver, bronze], "hard": [...]}'
+	var modes: Dictionary = value
+	for mode: Variant in modes.keys():
+		if not mode in MEDAL_MODES:
+			return 'has an unknown mode "%s" (only "easy" and "hard")' % mode
+		var times: Array = modes[mode] if modes[mode] is Array else []
+		if times.size() != 3:
+			return '"%s" must be three times [gold, silver, bronze] in seconds' % mode
+		for i in 3:
+			var problem := check_number(times[i], low, high, false)
+			if not problem.is_empty():
+				return '"%s" %s' % [mode, problem]
+			if i > 0 and _float(times[i]) < _float(times[i - 1]):
+				return '"%s" times must not get faster from gold to bronze' % mode
+	return ""
+
+
+static func _float(value: Variant) -> float:
+	var number: float = value
+	return number
 
 
 # The number at `index` of a spec ([type, min, max]) as a float.

@@ -90,9 +90,17 @@ static func _check_fields(data: Dictionary) -> String:
 	var kind: String = data["kind"]
 	var fields := Schema.fields_for(kind)
 	var lists := Schema.lists_for(kind)
+	var optional := Schema.optional_fields_for(kind)
 	for key: Variant in data.keys():
-		if not fields.has(key) and not lists.has(key) and not key in OTHER_FIELDS:
+		var known := fields.has(key) or lists.has(key) or optional.has(key)
+		if not known and not key in OTHER_FIELDS:
 			return 'unknown field "%s" for a %s board' % [key, kind]
+	for field: String in optional:
+		if data.has(field):
+			var spec: Array = optional[field]
+			var problem := Schema.check_value(data[field], spec)
+			if not problem.is_empty():
+				return '"%s" %s' % [field, problem]
 	for field: String in fields:
 		if not data.has(field):
 			return 'the field "%s" is missing' % field
@@ -206,6 +214,11 @@ static func _build(data: Dictionary) -> BoardLevel:
 		level.walls = _points(walls, ["ax", "ay", "bx", "by"])
 		level.ball_starts = _points(ball_starts, ["x", "y"])
 		level.holes = _points(holes, ["x", "y"])
+		var medals: Dictionary = data.get("medal_times", {})
+		var easy: Array = medals.get("easy", [])
+		var hard: Array = medals.get("hard", [])
+		level.medal_times_easy = _times(easy)
+		level.medal_times_hard = _times(hard)
 	var counters: Dictionary = data.get(Schema.NEXT_IDS_FIELD, {})
 	var next_ids: Dictionary[String, int] = {}
 	for list: Variant in counters:
@@ -294,6 +307,13 @@ static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:
 		for i: int in range(0, keys.size(), 2):
 			points.append(Vector2(_float_of(item[keys[i]]), _float_of(item[keys[i + 1]])))
 	return points
+
+
+static func _times(values: Array) -> PackedFloat64Array:
+	var times := PackedFloat64Array()
+	for value: Variant in values:
+		times.append(_float_of(value))
+	return times
 
 
 # A checked JSON number as a float (typed, so no unsafe conversion warning).

@@ -27,6 +27,8 @@ static func write(level: BoardLevel) -> String:
 		if field in ["format", "format_version", "kind"]:
 			continue
 		lines.append('{"%s": %s}' % [field, _value(level.get(field))])
+	if level.is_maze():
+		_append_medals(lines, level)
 	lines.append('{"tuning": %s}' % _tuning(level.tuning))
 	var counters := ItemIds.counters_to_save(level)
 	if not counters.is_empty():
@@ -99,6 +101,21 @@ static func _exact(value: float) -> String:
 	if value == floorf(value) and absf(value) < 1e15:
 		return str(int(value))
 	return JSON.stringify(value, "", false, true)
+
+
+# The optional medal times line, only for a board that has some.
+static func _append_medals(lines: PackedStringArray, level: BoardLevel) -> void:
+	var parts := PackedStringArray()
+	for mode in Schema.MEDAL_MODES:
+		var times: PackedFloat64Array = (
+			level.medal_times_easy if mode == "easy" else level.medal_times_hard
+		)
+		if times.size() == 3:
+			parts.append(
+				'"%s": [%s, %s, %s]' % [mode, number(times[0]), number(times[1]), number(times[2])]
+			)
+	if not parts.is_empty():
+		lines.append('{"medal_times": {%s}}' % ", ".join(parts))
 
 
 # Each item line starts with its stable id: `{"pin": {"id": 17, "x": 255, "y": 84}}`.

@@ -49,9 +49,12 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
 			)
 		"menu_level_select_maze":
+			_sample_progress()
 			screen = await ScreenOpener.open(
 				tree, App.go_to_level_select.bind("maze"), LEVEL_SELECT
 			)
+			if screen != null:
+				await _wait_loaded(tree, screen)
 		"menu_my_boards":
 			screen = await ScreenOpener.open(
 				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
@@ -70,6 +73,33 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if screen == null:
 		return ERR_CANT_OPEN
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
+
+
+# A player one board in: medals on the first maze, the second open, the rest locked.
+# The shot's save is in memory only (the player's own file is never touched).
+static func _sample_progress() -> void:
+	App.settings.unlock_all_boards = false
+	var save: Object = load("res://scripts/app/save_data.gd").new()
+	App.save_data = save
+	var finishes := [["maze_garden", false, 0.95], ["maze_garden", true, 1.3]]
+	for loaded in BoardLoader.list_boards(BoardLevel.Kind.MAZE):
+		for finish: Array in finishes:
+			if loaded.ok() and loaded.level.board_id == finish[0]:
+				var hard: bool = finish[1]
+				var times := Medals.times_for(loaded.level, hard)
+				var share: float = finish[2]
+				var seconds := times[0] * share if times.size() == 3 else 60.0
+				save.call(&"record_maze_time", finish[0], hard, seconds)
+
+
+# Waits until every card of the level select has loaded (their files load off the main thread).
+static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
+	for frame in 240:
+		if not screen.call("is_loading"):
+			break
+		await tree.process_frame
+	for frame in 3:
+		await tree.process_frame
 
 
 # Fills a scratch My boards folder (one imported board, one refused file), imports the

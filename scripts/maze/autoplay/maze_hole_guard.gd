@@ -11,6 +11,10 @@ const RECHECK := 0.2
 const SHARES: Array[float] = [1.0, 0.6, 0.3, 0.0]
 ## Brakes tried when even a flat board is not safe: against the balls' mean motion.
 const BRAKE_DEG := 6.0
+## Between checks a wish passes unchecked only while it stays this close to the tilt last
+## checked, degrees per axis: a steering loop's small corrections pass, but a new plan's
+## first tilt (often the other way) is checked at once.
+const TRUST_SLACK_DEG := 2.0
 
 var _probe: BallWorld
 var _radius := 5.0
@@ -19,6 +23,7 @@ var _fell := false
 var _since_check := INF
 var _choice := Vector2.ZERO
 var _trusted := false
+var _checked := Vector2.ZERO
 
 
 func _init(level: BoardLevel, dt: float) -> void:
@@ -36,11 +41,13 @@ func filter(
 	if _probe == null:
 		return wanted
 	_since_check += _dt
-	if _since_check < RECHECK:
+	var changed := wanted.distance_to(_checked) > TRUST_SLACK_DEG
+	if _since_check < RECHECK and not changed:
 		# Between checks a safe wish passes live (a steering loop needs its feedback); an
 		# overruled one stays overruled until the next check.
 		return wanted if _trusted else _choice
 	_since_check = 0.0
+	_checked = wanted
 	var candidates: Array[Vector2] = []
 	for share in SHARES:
 		candidates.append(wanted * share)

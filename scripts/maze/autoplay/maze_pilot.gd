@@ -36,6 +36,9 @@ const STALL_DRIFT := 2.0
 const GOAL_PATIENCE := 3.0
 ## Re-plans allowed before the pilot falls back to steering single balls.
 const MAX_PLANS := 60
+## While steering single balls on a grid maze, the pilot tries to gather again this often,
+## seconds (the balls have moved, so a plan may work now).
+const LEAD_PATIENCE := 4.0
 
 var nav: MazeNav
 var grid: MazeGrid
@@ -68,6 +71,7 @@ var _herd_cell := -1
 var _herd_time := 0.0
 var _herd_mark := Vector2.ZERO
 var _goal_time := 0.0
+var _lead_time := 0.0
 
 
 ## A pilot for `level` (holes avoided when `hard_mode`), stepping `dt` seconds per call,
@@ -111,6 +115,12 @@ func _steer(positions: PackedVector2Array, velocities: PackedVector2Array) -> Ve
 			return _hold_move(positions, velocities)
 		Phase.HERD:
 			return _herd(positions, velocities)
+	if planner != null and plans_made < MAX_PLANS:
+		_lead_time += _dt
+		if _lead_time >= LEAD_PATIENCE:
+			_lead_time = 0.0
+			phase = Phase.PLAN
+			return Vector2.ZERO
 	return steering.lead(positions, velocities)
 
 
@@ -120,21 +130,33 @@ func _plan(positions: PackedVector2Array) -> void:
 		phase = Phase.LEAD
 		return
 	# Hard mode also plans one-cell steps: hard slides alone run balls over the holes.
+	# In easy mode, once a herd has failed, one-cell steps help gather closer to the goal.
+	var steps := _hard or not _herd_failures.is_empty()
+	var order := _shuffled(MazeGrid.MOVES if steps else MazeGrid.FIRST_STEP)
+	var cells := planner.cells_of(positions)
+	var gathered := planner.plan(cells, order)
+	if not gathered and not steps:
+		# Hard slides alone cannot gather these balls: one-cell steps often can.
+		order = _shuffled(MazeGrid.MOVES)
+		gathered = planner.plan(cells, order)
+	if not gathered:
+		phase = Phase.LEAD
+		return
+	_move = 0
+	_start_move(cells, positions)
+
+
+# Moves 0 .. count-1 in the order the seed's random number shuffles them to.
+func _shuffled(count: int) -> PackedInt32Array:
 	var order := PackedInt32Array()
-	for m in MazeGrid.MOVES if _hard else MazeGrid.FIRST_STEP:
+	for m in count:
 		order.append(m)
 	for i in range(order.size() - 1, 0, -1):
 		var j := _rng.randi_range(0, i)
 		var t := order[i]
 		order[i] = order[j]
 		order[j] = t
-	var cells := planner.cells_of(positions)
-	var gathered := planner.plan(cells, order)
-	if not gathered:
-		phase = Phase.LEAD
-		return
-	_move = 0
-	_start_move(cells, positions)
+	return order
 
 
 func _start_move(cells: PackedInt32Array, positions: PackedVector2Array) -> void:

@@ -1,0 +1,59 @@
+class_name MazeProgress
+extends RefCounted
+## The order the shipped maze boards open in: each opens once the one before it has been
+## finished in either mode (the "Unlock all maze boards" setting opens them all). Boards not
+## in the order (a designer's own) are always open and listed after them.
+
+## Shipped boards from the first to open to the last.
+const ORDER: Array[String] = [
+	"maze_garden",
+	"maze_classic",
+	"maze_cloister",
+	"maze_switchbacks",
+	"maze_crossroads",
+	"maze_courtyards",
+	"maze_long_hall",
+	"maze_tower",
+	"maze_catacombs",
+	"maze_undercroft",
+	"maze_labyrinth",
+	"maze_the_deep",
+]
+
+
+## Where `board_id` comes in the order (boards not in it come after every one that is).
+static func rank(board_id: String) -> int:
+	var at := ORDER.find(board_id)
+	return at if at >= 0 else ORDER.size()
+
+
+## The load results in the order boards open; broken files and other boards keep their
+## listed order after the shipped ones.
+static func sorted(results: Array[BoardLoadResult]) -> Array[BoardLoadResult]:
+	var keyed: Array = []
+	for i in results.size():
+		var result := results[i]
+		var key := rank(result.level.board_id) if result.ok() else ORDER.size()
+		keyed.append([key, i, result])
+	keyed.sort_custom(
+		func(a: Array, b: Array) -> bool: return a[0] < b[0] or (a[0] == b[0] and a[1] < b[1])
+	)
+	var out: Array[BoardLoadResult] = []
+	for entry: Array in keyed:
+		var result: BoardLoadResult = entry[2]
+		out.append(result)
+	return out
+
+
+## For boards listed in `board_ids` (in play order), whether each is locked: a board in the
+## order is locked until the board before it in the list is finished (`finished` holds the
+## ids finished in either mode). Nothing is locked when `unlock_all`.
+static func locks(board_ids: Array[String], finished: Dictionary, unlock_all: bool) -> Array[bool]:
+	var locked: Array[bool] = []
+	var previous_done := true
+	for board_id in board_ids:
+		var ranked := rank(board_id) < ORDER.size()
+		locked.append(ranked and not unlock_all and not previous_done)
+		if ranked:
+			previous_done = finished.has(board_id)
+	return locked

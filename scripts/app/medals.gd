@@ -1,0 +1,54 @@
+class_name Medals
+extends RefCounted
+## Bronze, silver and gold for maze times. A board's medal times per mode are stored in its
+## file (`medal_times` → BoardLevel.medal_times_easy / _hard, [gold, silver, bronze] in
+## seconds); the medal a player holds is computed from their best time for that board and
+## mode (SaveData), so nothing extra is saved.
+
+enum Medal { NONE, BRONZE, SILVER, GOLD }
+
+## Medal times as multiples of the autoplay pilot's time (tools/maze_pilot_table.gd).
+const GOLD_FACTOR := 1.1
+const SILVER_FACTOR := 1.5
+const BRONZE_FACTOR := 2.2
+const NAMES := ["No medal", "Bronze", "Silver", "Gold"]
+
+
+## [gold, silver, bronze] for a board the pilot finished in `pilot_seconds`, rounded up to
+## a tenth of a second.
+static func from_pilot_time(pilot_seconds: float) -> PackedFloat64Array:
+	var times := PackedFloat64Array()
+	for factor: float in [GOLD_FACTOR, SILVER_FACTOR, BRONZE_FACTOR]:
+		times.append(ceilf(pilot_seconds * factor * 10.0) / 10.0)
+	return times
+
+
+## The medal times of `level` in hard or easy mode (empty when it has none).
+static func times_for(level: BoardLevel, hard: bool) -> PackedFloat64Array:
+	if level == null:
+		return PackedFloat64Array()
+	return level.medal_times_hard if hard else level.medal_times_easy
+
+
+## The medal a finish in `seconds` earns against `times` ([gold, silver, bronze]); a time
+## of 0 or less (not finished) earns none.
+static func medal_for_time(times: PackedFloat64Array, seconds: float) -> Medal:
+	if times.size() != 3 or not is_finite(seconds) or seconds <= 0.0:
+		return Medal.NONE
+	if seconds <= times[0]:
+		return Medal.GOLD
+	if seconds <= times[1]:
+		return Medal.SILVER
+	if seconds <= times[2]:
+		return Medal.BRONZE
+	return Medal.NONE
+
+
+## The medal of a best time `best_seconds` (-1 = never finished) on `level` in that mode.
+static func medal(level: BoardLevel, hard: bool, best_seconds: float) -> Medal:
+	return medal_for_time(times_for(level, hard), best_seconds)
+
+
+## "Gold", "Silver", "Bronze" or "No medal".
+static func name_of(which: Medal) -> String:
+	return NAMES[which]

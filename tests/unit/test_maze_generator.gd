@@ -1,0 +1,81 @@
+extends GutTest
+## The maze generator: valid, solvable boards (holes never cut a start off), the same seed
+## gives the same board, difficulty changes the maze, and bad settings are refused by name.
+
+const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
+
+
+func _make(values: Dictionary) -> Dictionary:
+	var settings := MazeGenSettings.new()
+	settings.read(values)
+	return MazeGenerator.generate(settings)
+
+
+func test_a_generated_maze_is_a_valid_board_every_start_can_finish() -> void:
+	for s in range(1, 21):
+		var cols := 4 + s % 9
+		var rows := 4 + (s * 7) % 11
+		var made := _make(
+			{"cols": cols, "rows": rows, "holes": floori(cols * rows / 6.0), "seed": s}
+		)
+		assert_false(made.has("error"), "seed %d: %s" % [s, made.get("error", "")])
+		var level: BoardLevel = made["level"]
+		assert_eq(level.size, Vector2(cols, rows) * 35.0)
+		assert_eq(level.ball_starts.size(), 4)
+		for issue in BoardValidator.validate(level):
+			assert_false(issue.is_error(), "seed %d: %s" % [s, issue.message])
+			assert_ne(issue.kind, "holes_block_goal", "seed %d: %s" % [s, issue.message])
+		var with_holes := MazeFlood.new(level, true)
+		for start in level.ball_starts:
+			assert_true(with_holes.reaches_goal(start), "seed %d: start %s is cut off" % [s, start])
+
+
+func test_holes_are_placed_as_asked_and_keep_off_starts_and_goal() -> void:
+	var made := _make({"cols": 14, "rows": 12, "holes": 12, "seed": 5, "difficulty": 0.8})
+	var level: BoardLevel = made["level"]
+	assert_eq(int(made["holes_placed"]), 12)
+	assert_eq(level.holes.size(), 12)
+	for hole in level.holes:
+		assert_gt(hole.distance_to(level.goal_center), level.goal_radius + level.hole_radius)
+		for start in level.ball_starts:
+			assert_gt(hole.distance_to(start), 35.0 * 1.5, "no hole beside a start")
+
+
+func test_the_same_seed_gives_the_same_board_and_another_seed_another() -> void:
+	var values := {"cols": 12, "rows": 10, "holes": 8, "seed": 42, "difficulty": 0.4}
+	var a := Writer.write(_make(values)["level"])
+	var b := Writer.write(_make(values)["level"])
+	assert_eq(a, b)
+	values["seed"] = 43
+	assert_ne(a, Writer.write(_make(values)["level"]))
+
+
+func test_harder_mazes_have_more_walls_and_holes_in_corridors() -> void:
+	var easy: BoardLevel = _make({"cols": 16, "rows": 14, "holes": 0, "difficulty": 0.0})["level"]
+	var hard: BoardLevel = _make({"cols": 16, "rows": 14, "holes": 0, "difficulty": 1.0})["level"]
+	assert_gt(_wall_length(hard), _wall_length(easy) * 1.2, "fewer loops knocked out")
+
+
+func test_bad_settings_are_refused_by_name() -> void:
+	assert_string_contains(str(_make({"cols": 2})["error"]), "columns and rows")
+	assert_string_contains(str(_make({"rows": 99})["error"]), "columns and rows")
+	assert_string_contains(str(_make({"holes": -1})["error"]), "Black holes")
+	assert_string_contains(str(_make({"holes": 1000})["error"]), "Black holes")
+	assert_string_contains(str(_make({"difficulty": NAN})["error"]), "Difficulty")
+	assert_string_contains(str(_make({"difficulty": 1.5})["error"]), "Difficulty")
+	assert_string_contains(str(MazeGenerator.generate(null)["error"]), "settings")
+
+
+func test_smallest_maze_still_works() -> void:
+	var made := _make({"cols": 4, "rows": 4, "holes": 4, "seed": 9})
+	assert_false(made.has("error"), str(made.get("error", "")))
+	var level: BoardLevel = made["level"]
+	assert_eq(level.goal_center, Vector2(70, 70))
+
+
+func _wall_length(level: BoardLevel) -> float:
+	var total := 0.0
+	for i in range(0, level.walls.size(), 2):
+		total += level.walls[i].distance_to(level.walls[i + 1])
+	return total

@@ -1,0 +1,115 @@
+extends GutTest
+## Maze progression: boards open one after another in MazeProgress.ORDER (the settings can
+## open them all), and the level select shows the locks and each board's medals.
+
+const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
+const SaveDataScript := preload("res://scripts/app/save_data.gd")
+const LevelCard := preload("res://scenes/menu/level_card.gd")
+const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
+const SAVE := "user://test_maze_progress_save.cfg"
+const SETTINGS := "user://test_maze_progress_settings.cfg"
+const EMPTY_USER_ROOT := "user://test_maze_progress_no_boards"
+
+var _real_save: RefCounted = null
+
+
+func before_each() -> void:
+	_real_save = App.save_data
+	var scratch: RefCounted = SaveDataScript.new()
+	scratch.call("load_file", SAVE)
+	App.save_data = scratch
+	App.settings.unlock_all_boards = false
+
+
+func after_each() -> void:
+	App.save_data = _real_save
+	App.settings.unlock_all_boards = false
+	DirAccess.remove_absolute(SAVE)
+	DirAccess.remove_absolute(SETTINGS)
+
+
+func test_every_shipped_maze_is_in_the_order_once() -> void:
+	var listed := BoardLoader.list_boards(BoardLevel.Kind.MAZE)
+	assert_gte(listed.size(), 12, "twelve boards or more")
+	for loaded in listed:
+		assert_lt(MazeProgress.rank(loaded.level.board_id), MazeProgress.ORDER.size(), loaded.path)
+	var sorted := MazeProgress.sorted(listed)
+	assert_eq(sorted[0].level.board_id, MazeProgress.ORDER[0])
+	assert_eq(sorted[-1].level.board_id, MazeProgress.ORDER[-1])
+
+
+func test_locks_open_one_board_after_another() -> void:
+	var ids: Array[String] = ["maze_garden", "maze_classic", "maze_cloister", "my_own"]
+	assert_eq(MazeProgress.locks(ids, {}, false), [false, true, true, false] as Array[bool])
+	var done := {"maze_garden": true}
+	assert_eq(MazeProgress.locks(ids, done, false), [false, false, true, false] as Array[bool])
+	assert_eq(MazeProgress.locks(ids, {}, true), [false, false, false, false] as Array[bool])
+
+
+func test_unlock_all_setting_is_saved_and_read() -> void:
+	var settings := GameSettings.new()
+	settings.set_value("unlock_all_boards", true)
+	settings.save_file(SETTINGS)
+	var again := GameSettings.new()
+	assert_eq(again.load_file(SETTINGS), "")
+	assert_true(again.unlock_all_boards)
+	again.reset_to_defaults()
+	assert_false(again.unlock_all_boards)
+
+
+func test_level_select_locks_and_medals() -> void:
+	var cards: Array[LevelCard] = await _maze_cards()
+	assert_false(cards[0].locked, "the first board is open")
+	assert_true(cards[1].locked and cards[1].disabled, "the second waits for the first")
+	assert_string_contains(cards[1].tooltip_text, cards[0].level.display_name)
+	var gold: float = cards[0].level.medal_times_easy[0]
+	_record(cards[0].level.board_id, gold - 0.5)
+	cards = await _maze_cards()
+	assert_false(cards[1].locked, "finishing the first opens the second")
+	assert_true(cards[2].locked)
+	assert_eq(_badges(cards[0]).easy_medal, Medals.Medal.GOLD)
+	App.settings.unlock_all_boards = true
+	for card in await _maze_cards():
+		assert_false(card.locked, "Unlock all opens %s" % card.board_path)
+
+
+func test_easy_and_hard_keep_their_own_medal_and_time() -> void:
+	var cards: Array[LevelCard] = await _maze_cards()
+	var first := cards[0]
+	var hard_gold: float = first.level.medal_times_hard[0]
+	var easy_bronze: float = first.level.medal_times_easy[2]
+	App.record_maze_time(first.level.board_id, true, hard_gold - 0.1)
+	App.record_maze_time(first.level.board_id, false, easy_bronze)
+	cards = await _maze_cards()
+	var badges := _badges(cards[0])
+	assert_eq(badges.hard_medal, Medals.Medal.GOLD, "a hard finish earns the hard medal")
+	assert_eq(badges.easy_medal, Medals.Medal.BRONZE, "the easy medal from the easy time")
+	var text := " ".join(cards[0].texts())
+	assert_string_contains(text, "Easy 0:")
+	assert_string_contains(text, " · Hard 0:")
+	assert_false(cards[1].locked, "a hard finish opens the next board too")
+
+
+func _maze_cards() -> Array[LevelCard]:
+	App.level_select_kind = "maze"
+	var screen := LevelSelectScene.instantiate() as Control
+	# a scratch My boards folder: the tests never see the player's own boards
+	screen.set("user_root", EMPTY_USER_ROOT)
+	add_child_autofree(screen)
+	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	var out: Array[LevelCard] = []
+	for card: Button in screen.call("cards"):
+		out.append(card as LevelCard)
+	return out
+
+
+func _badges(card: LevelCard) -> MedalBadges:
+	for node in card.find_children("*", "Control", true, false):
+		if node is MedalBadges:
+			return node as MedalBadges
+	return null
+
+
+# Records an easy-mode finish.
+func _record(board_id: String, seconds: float) -> void:
+	App.record_maze_time(board_id, false, seconds)

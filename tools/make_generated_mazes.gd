@@ -1,0 +1,147 @@
+extends SceneTree
+## Regenerates the maze boards made with MazeGenerator (scripts/maze/generator/) and saves
+## each as levels/maze/<id>.board; the same settings always write the same file:
+##   tools/godot.sh --headless --path . -s res://tools/make_generated_mazes.gd
+## Medal times are kept from the file already there (tools/maze_pilot_table.gd
+## --write-medals sets them from the autoplay pilot's times). Afterwards
+## tools/make_board_scenes.gd adds a level scene for any new board.
+
+## One row per board: id, title, blurb, cols, rows, holes, difficulty, seed.
+const BOARDS := [
+	[
+		"garden",
+		"Garden Path",
+		"A small, open maze to learn the tilt: loops everywhere and two holes tucked away.",
+		6,
+		6,
+		2,
+		0.0,
+		11,
+	],
+	[
+		"cloister",
+		"Cloister",
+		"Short corridors round a quiet goal room; three holes wait in the dead ends.",
+		8,
+		7,
+		3,
+		0.1,
+		7,
+	],
+	[
+		"switchbacks",
+		"Switchbacks",
+		"Ten by ten cells of turns that double back on themselves.",
+		10,
+		10,
+		5,
+		0.3,
+		3,
+	],
+	[
+		"crossroads",
+		"Crossroads",
+		"A wide maze where many ways cross: pick the one that keeps all four together.",
+		12,
+		9,
+		6,
+		0.35,
+		21,
+	],
+	[
+		"long_hall",
+		"Long Hall",
+		"Sixteen cells across and only six down: long rolls, sharp stops.",
+		16,
+		6,
+		6,
+		0.4,
+		5,
+	],
+	[
+		"tower",
+		"Tower",
+		"A tall, narrow maze: the balls climb and fall past holes on every floor.",
+		8,
+		14,
+		7,
+		0.5,
+		9,
+	],
+	[
+		"undercroft",
+		"Undercroft",
+		"Below the catacombs: fewer loops, and holes in the corridors as well as the dead ends.",
+		14,
+		12,
+		10,
+		0.6,
+		13,
+	],
+	[
+		"labyrinth",
+		"Labyrinth",
+		"Sixteen by fourteen cells with a dozen holes: patience wins here.",
+		16,
+		14,
+		12,
+		0.7,
+		17,
+	],
+	[
+		"the_deep",
+		"The Deep",
+		"The largest maze, with the fewest loops and a dozen holes.",
+		18,
+		14,
+		12,
+		0.85,
+		19,
+	],
+]
+
+
+func _initialize() -> void:
+	var failed := false
+	for row: Array in BOARDS:
+		var settings := MazeGenSettings.new()
+		(
+			settings
+			. read(
+				{
+					"id": row[0],
+					"title": row[1],
+					"blurb": row[2],
+					"cols": row[3],
+					"rows": row[4],
+					"holes": row[5],
+					"difficulty": row[6],
+					"seed": row[7],
+				}
+			)
+		)
+		var made := MazeGenerator.generate(settings)
+		if made.has("error"):
+			printerr("%s: %s" % [settings.id, made["error"]])
+			failed = true
+			continue
+		var level: BoardLevel = made["level"]
+		var path := "res://levels/maze/%s.board" % settings.id
+		_keep_medals(level, path)
+		var error := ResourceSaver.save(level, path)
+		if error != OK:
+			printerr("%s: could not save (%s)" % [path, error_string(error)])
+			failed = true
+			continue
+		print("%s: %d × %d, %d holes" % [path, settings.cols, settings.rows, made["holes_placed"]])
+	quit(1 if failed else 0)
+
+
+# Medal times belong to the pilot's measurements, not to the layout: keep the old ones.
+func _keep_medals(level: BoardLevel, path: String) -> void:
+	if not FileAccess.file_exists(path):
+		return
+	var old := BoardLoader.load_board(path)
+	if old.level != null:
+		level.medal_times_easy = old.level.medal_times_easy
+		level.medal_times_hard = old.level.medal_times_hard

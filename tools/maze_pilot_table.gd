@@ -1,0 +1,103 @@
+extends SceneTree
+## Plays every maze board in levels/maze/ with the autoplay pilot and prints a Markdown
+## table: easy mode with seed 1, hard mode with seeds 1..5 (wins, balls lost, times).
+##   tools/godot.sh --headless --path . -s res://tools/maze_pilot_table.gd
+## Options after `--`: `--board=ID` (one board), `--hard-seeds=N` (seeds 1..N in hard mode),
+## `--write-medals` (store medal times from the pilot's times in each board file, see
+## Medals). Exits 1 when a board fails easy seed 1 or hard wins fall under 80 %.
+
+const MAZE_DIR := "res://levels/maze/"
+const SECONDS := 120.0
+const HARD_TARGET := 0.8
+## Hard medal times from the easy time when the pilot never wins hard mode.
+const HARD_FALLBACK := 1.5
+
+
+func _initialize() -> void:
+	var options := _options()
+	var hard_seeds: int = options.get("hard_seeds", 5)
+	var only: String = options.get("board", "")
+	print("| board | easy s1 | hard wins | hard lost balls | hard times |")
+	print("|---|---|---|---|---|")
+	var hard_won := 0
+	var hard_runs := 0
+	var easy_failed := 0
+	for file in _board_files():
+		var loaded := BoardLoader.load_board(MAZE_DIR + file)
+		if loaded.level == null:
+			printerr(loaded.error)
+			easy_failed += 1
+			continue
+		var level := loaded.level
+		if not only.is_empty() and level.board_id != only and file.get_basename() != only:
+			continue
+		var easy := MazeAutoplay.run(level, SECONDS, 1, false)
+		var easy_time: float = easy["time_to_win"]
+		if not easy["won"]:
+			easy_failed += 1
+		var wins := 0
+		var lost := 0
+		var times := PackedFloat64Array()
+		for s in range(1, hard_seeds + 1):
+			var hard := MazeAutoplay.run(level, SECONDS, s, true)
+			lost += int(hard["balls_lost_in_holes"])
+			if hard["won"]:
+				wins += 1
+				times.append(float(hard["time_to_win"]))
+		hard_won += wins
+		hard_runs += hard_seeds
+		print(
+			(
+				"| %s | %s | %d/%d | %d | %s |"
+				% [
+					file.get_basename(),
+					("%.1f s" % easy_time) if easy["won"] else "LOST",
+					wins,
+					hard_seeds,
+					lost,
+					", ".join(Array(times).map(func(t: float) -> String: return "%.1f" % t)),
+				]
+			)
+		)
+		if options.has("write_medals"):
+			_write_medals(MAZE_DIR + file, level, easy_time, times)
+	var rate := float(hard_won) / maxf(1.0, float(hard_runs))
+	print("hard mode: %d of %d won (%.0f %%)" % [hard_won, hard_runs, rate * 100.0])
+	quit(0 if easy_failed == 0 and rate >= HARD_TARGET else 1)
+
+
+func _write_medals(path: String, level: BoardLevel, easy: float, hard: PackedFloat64Array) -> void:
+	if easy > 0.0:
+		level.medal_times_easy = Medals.from_pilot_time(easy)
+	if not hard.is_empty():
+		var sorted := hard.duplicate()
+		sorted.sort()
+		level.medal_times_hard = Medals.from_pilot_time(sorted[0])
+	elif easy > 0.0:
+		# The pilot never finished hard mode here: hard medals assume it is half as slow again.
+		level.medal_times_hard = Medals.from_pilot_time(easy * HARD_FALLBACK)
+		print("%s: no hard win, hard medals from %.1f × the easy time" % [path, HARD_FALLBACK])
+	var error := ResourceSaver.save(level, path)
+	if error != OK:
+		printerr("could not save %s: %s" % [path, error_string(error)])
+
+
+func _board_files() -> PackedStringArray:
+	var files := PackedStringArray()
+	for file in DirAccess.get_files_at(MAZE_DIR):
+		if file.get_extension() == "board":
+			files.append(file)
+	files.sort()
+	return files
+
+
+func _options() -> Dictionary:
+	var options := {}
+	for arg in OS.get_cmdline_user_args():
+		if arg.begins_with("--board="):
+			options["board"] = arg.trim_prefix("--board=")
+		elif arg.begins_with("--hard-seeds="):
+			options["hard_seeds"] = maxi(1, arg.trim_prefix("--hard-seeds=").to_int())
+		elif arg == "--write-medals":
+			options["write_medals"] = true
+	return options
