@@ -7,6 +7,7 @@ extends SceneTree
 ## back through the data-only reader; only then is the .tres removed (--keep keeps it) and
 ## every level scene that referred to it pointed at the new file.
 
+const LegacyBoardLoader := preload("res://tools/legacy_boards/legacy_board_loader.gd")
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
 const SCENES_DIR := "res://scenes/boards"
@@ -32,7 +33,7 @@ func _initialize() -> void:
 
 ## Converts one .tres board; "" or what went wrong (nothing is removed on failure).
 static func convert_board(path: String, keep: bool) -> String:
-	var loaded := BoardLoader.load_legacy(path)
+	var loaded := LegacyBoardLoader.load_board(path)
 	if not loaded.ok():
 		return loaded.error
 	var text := Writer.write(loaded.level)

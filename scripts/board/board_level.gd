@@ -12,7 +12,7 @@ extends Resource
 
 enum Kind { PACHINKO, MAZE }
 
-## The format this code writes. Older files are upgraded by `BoardUpgrader` on load.
+## The format this code writes. Older files are upgraded by the converter (tools/legacy_boards/).
 const CURRENT_VERSION := 1
 
 @export_group("Common")
@@ -247,7 +247,7 @@ const CURRENT_VERSION := 1
 		emit_changed()
 
 ## Fields of older file layouts that this version no longer declares, kept during a load so
-## `BoardUpgrader` can convert them. Never saved.
+## the converter (tools/legacy_boards/board_upgrader.gd) can convert them. Never saved.
 var legacy_fields: Dictionary = {}
 
 var _watched: Array[Resource] = []

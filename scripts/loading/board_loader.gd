@@ -2,9 +2,9 @@ class_name BoardLoader
 extends RefCounted
 ## Loads boards safely: `.board` files inside the board folders (the shipped levels/ and the
 ## player's user://boards/), read as data by BoardTextReader and validated. A broken board
-## never stops the others. `load_legacy` reads the old .tres layout for the converter.
+## never stops the others. Old .tres boards are read only by the converter
+## (tools/legacy_boards/legacy_board_loader.gd), never by the game.
 
-const FileCheck := preload("res://scripts/loading/board_file_check.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
 const LEVELS_DIR := "res://levels"
 ## The folders boards may be loaded from: the shipped boards and the player's own.
@@ -51,34 +51,19 @@ static func load_bytes(bytes: PackedByteArray, label: String) -> BoardLoadResult
 	return _finish(result, _read_bytes(result, bytes))
 
 
-## Loads a board saved in the old text-resource layout (.tres), for the converter and its
-## tests only: the file is checked as text, then handed to Godot's resource parser, which
-## can build objects. The game never calls this; convert only files you trust.
-static func load_legacy(path: String) -> BoardLoadResult:
+## Validates a `level` built elsewhere (the legacy converter) as if it had been read from
+## `path`: the same checks and messages as `load_board`.
+static func validated(path: String, level: BoardLevel) -> BoardLoadResult:
 	var result := BoardLoadResult.new()
 	result.path = path
-	if not path.begins_with("res://") or not path.ends_with(".tres"):
-		return _fail(result, "only res:// .tres files are trusted to load as old boards")
-	var checked := {"error": "", "version": -1}
-	if FileAccess.file_exists(path):
-		checked = FileCheck.check(path)
-	elif not FileAccess.file_exists(path + ".remap"):
-		return _fail(result, "the file does not exist")
-	# else: an exported build converted our own shipped file to binary; it is trusted as is.
-	var problem: String = checked["error"]
-	if not problem.is_empty():
-		return _fail(result, problem)
-	var resource: Resource = ResourceLoader.load(path, "", ResourceLoader.CACHE_MODE_REUSE)
-	if resource == null:
-		return _fail(result, "the file could not be parsed as a resource")
-	if not resource is BoardLevel:
-		return _fail(result, "the file is not a BoardLevel")
-	var level := resource as BoardLevel
-	var from_version: int = checked["version"] if checked["version"] >= 0 else level.version
-	var upgrade_problem := BoardUpgrader.upgrade(level, from_version)
-	if not upgrade_problem.is_empty():
-		return _fail(result, upgrade_problem)
 	return _finish(result, level)
+
+
+## Why `path` cannot be loaded, in the loader's own message form ("<path>: <problem>").
+static func refused(path: String, problem: String) -> BoardLoadResult:
+	var result := BoardLoadResult.new()
+	result.path = path
+	return _fail(result, problem)
 
 
 ## "" when `path` is a board file inside one of BOARD_ROOTS, reached without `..` or a

@@ -2,6 +2,8 @@ extends GutTest
 ## Broken board files are refused with a message naming the file and the problem; the
 ## others keep loading. Old files are upgraded.
 
+const LegacyBoardLoader := preload("res://tools/legacy_boards/legacy_board_loader.gd")
+const Upgrader := preload("res://tools/legacy_boards/board_upgrader.gd")
 const DIR := "res://tests/fixtures/boards/"
 ## Fixture → words its refusal must contain.
 const BROKEN := {
@@ -29,7 +31,7 @@ const BROKEN := {
 func test_each_broken_file_is_refused_with_its_problem() -> void:
 	for name: String in BROKEN:
 		var path := DIR + name + ".tres"
-		var loaded := BoardLoader.load_legacy(path)
+		var loaded := LegacyBoardLoader.load_board(path)
 		assert_null(loaded.level, name)
 		assert_false(loaded.ok(), name)
 		assert_string_contains(loaded.error, path, false)
@@ -38,18 +40,18 @@ func test_each_broken_file_is_refused_with_its_problem() -> void:
 
 
 func test_missing_file_and_untrusted_places_are_refused() -> void:
-	var missing := BoardLoader.load_legacy(DIR + "no_such_board.tres")
+	var missing := LegacyBoardLoader.load_board(DIR + "no_such_board.tres")
 	assert_string_contains(missing.error, "does not exist")
-	var outside := BoardLoader.load_legacy("user://some_board.tres")
+	var outside := LegacyBoardLoader.load_board("user://some_board.tres")
 	assert_string_contains(outside.error, "only res://")
-	var binary := BoardLoader.load_legacy(DIR + "tiny_pachinko.res")
+	var binary := LegacyBoardLoader.load_board(DIR + "tiny_pachinko.res")
 	assert_string_contains(binary.error, ".tres")
-	assert_string_contains(BoardLoader.load_legacy("").error, "only res://")
+	assert_string_contains(LegacyBoardLoader.load_board("").error, "only res://")
 
 
 func test_good_fixtures_load() -> void:
 	for name: String in ["tiny_pachinko", "tiny_maze"]:
-		var loaded := BoardLoader.load_legacy(DIR + name + ".tres")
+		var loaded := LegacyBoardLoader.load_board(DIR + name + ".tres")
 		assert_true(loaded.ok(), loaded.error)
 		assert_eq(loaded.warnings.size(), 0, name)
 
@@ -72,7 +74,7 @@ func test_a_broken_board_does_not_stop_the_others() -> void:
 
 
 func test_version_0_pachinko_is_upgraded() -> void:
-	var loaded := BoardLoader.load_legacy(DIR + "v0_pachinko.tres")
+	var loaded := LegacyBoardLoader.load_board(DIR + "v0_pachinko.tres")
 	assert_true(loaded.ok(), loaded.error)
 	var level := loaded.level
 	assert_eq(level.version, BoardLevel.CURRENT_VERSION)
@@ -86,8 +88,8 @@ func test_version_0_pachinko_is_upgraded() -> void:
 
 
 func test_version_0_maze_walls_become_pixel_segments() -> void:
-	var old := BoardLoader.load_legacy(DIR + "v0_maze.tres")
-	var current := BoardLoader.load_legacy(DIR + "tiny_maze.tres")
+	var old := LegacyBoardLoader.load_board(DIR + "v0_maze.tres")
+	var current := LegacyBoardLoader.load_board(DIR + "tiny_maze.tres")
 	assert_true(old.ok(), old.error)
 	assert_eq(old.level.walls, current.level.walls)
 	assert_eq(old.level.version, BoardLevel.CURRENT_VERSION)
@@ -95,6 +97,6 @@ func test_version_0_maze_walls_become_pixel_segments() -> void:
 
 func test_upgrader_refuses_unknown_versions_and_leftover_fields() -> void:
 	var level := BoardLevel.new()
-	assert_string_contains(BoardUpgrader.upgrade(level, 7), "unknown version 7")
+	assert_string_contains(Upgrader.upgrade(level, 7), "unknown version 7")
 	level.legacy_fields["mystery"] = 1
-	assert_string_contains(BoardUpgrader.upgrade(level, 1), "mystery")
+	assert_string_contains(Upgrader.upgrade(level, 1), "mystery")

@@ -3,6 +3,7 @@ extends GutTest
 ## valid board: never an engine parse error, never a crash. The files are written to
 ## build/ (ignored by git and by the editor) because only res:// boards are loaded.
 
+const LegacyBoardLoader := preload("res://tools/legacy_boards/legacy_board_loader.gd")
 const DIR := "res://build/test_board_fuzz"
 const SOURCES := ["tiny_pachinko", "tiny_maze", "v0_pachinko"]
 const CASES_PER_SOURCE := 40
@@ -37,7 +38,7 @@ func test_mangled_files_are_refused_cleanly() -> void:
 			var file := FileAccess.open(path, FileAccess.WRITE)
 			file.store_string(_mangle(base, rng))
 			file.close()
-			var loaded := BoardLoader.load_legacy(path)
+			var loaded := LegacyBoardLoader.load_board(path)
 			if loaded.ok():
 				assert_eq(BoardValidator.errors(loaded.level).size(), 0, path)
 			else:

@@ -1,4 +1,3 @@
-class_name BoardUpgrader
 extends RefCounted
 ## Brings boards saved by older versions up to `BoardLevel.CURRENT_VERSION`, one step at a
 ## time. Each step reads the old fields the loader kept in `level.legacy_fields`.

@@ -5,7 +5,7 @@ extends RefCounted
 ## field must be one the board knows (or an old one the upgrader converts) with the right
 ## type. Returns the file's version (0 when it has no `version` line: the prototype format).
 
-const ValueCheck := preload("res://scripts/loading/board_value_check.gd")
+const ValueCheck := preload("res://tools/legacy_boards/board_value_check.gd")
 const MAX_BYTES := 4 * 1024 * 1024
 
 
