@@ -1,7 +1,7 @@
 # gdlint: disable=max-public-methods
 # The contract in docs/architecture.md is one façade; its getters are small on purpose.
 class_name BallWorld
-extends RefCounted
+extends "res://scripts/physics/world_shapes.gd"
 ## Fixed-step ball physics in GDScript, with no Node and no built-in physics: circles
 ## (balls) against pins, capsule walls, a ring border and each other, plus sensors.
 ##
@@ -38,7 +38,6 @@ signal ball_entered_zone(ball_id: int, zone_index: int)
 @warning_ignore_restore("unused_signal")
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const MotionStage := preload("res://scripts/physics/motion_stage.gd")
@@ -89,7 +88,6 @@ var profile_cpu_time := false:
 		_clock.cpu_time = value
 
 var _balls := BallStore.new()
-var _geo := StaticGeometry.new()
 var _lanes := BallLanes.new()
 var _pairs := BallPairs.new()
 var _motion := MotionStage.new(_balls, _geo, _lanes)
@@ -113,62 +111,9 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
 
 
-## Adds a pin (a fixed circle). `tag` is the owner's number for it (-1: none); a pin that
-## `captures` removes a ball that touches it and reports ball_pocketed(ball, tag).
-## `min_speed_x` is the pin's material: after touching it, a ball keeps at least this
-## horizontal speed in px/s (the Flash chapter's 0.5 px/tick, so no ball balances on a pin
-## top); 0 leaves the ball alone. Returns the pin index, or -1 with an error on bad input.
-func add_pin(pos: Vector2, radius: float, tag := -1, captures := false, min_speed_x := 0.0) -> int:
-	return _geo.add_pin(pos, radius, tag, captures, min_speed_x)
-
-
-## Adds a capsule wall: the segment a-b grown by `radius`, with round caps. Returns its
-## index, or -1 on bad input. A zero-length wall is a round post.
-func add_wall(a: Vector2, b: Vector2, radius: float) -> int:
-	return _geo.add_wall(a, b, radius)
-
-
-## Switches wall `index` on or off (a gate that opens and closes). The grid is rebuilt on
-## the next step, which also wakes every sleeper, so a ball resting on a gate falls.
-func set_wall_enabled(index: int, enabled: bool) -> void:
-	_geo.set_wall_enabled(index, enabled)
-
-
-## False while wall `index` is switched off (see set_wall_enabled).
-func is_wall_enabled(index: int) -> bool:
-	return index >= 0 and index < _geo.wall_a.size() and _geo.wall_off[index] == 0
-
-
-## Sets the ring border: balls stay inside the circle.
-func set_ring(center: Vector2, radius: float) -> void:
-	_geo.set_ring(center, radius)
-
-
-## Makes the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) drain:
-## a ball there is removed (ball_drained) after `bounces` bounces on it, or after rolling on
-## it for `slide_time` seconds.
-func set_drain_arc(from_deg: float, to_deg: float, bounces: int, slide_time: float) -> void:
-	_geo.set_drain_arc(from_deg, to_deg, bounces, slide_time)
-
-
 ## Deprecated name of set_drain_arc(), with tuning.gutter_slide_time as the slide time.
 func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
 	set_drain_arc(from_deg, to_deg, bounces, tuning.gutter_slide_time)
-
-
-## Adds a hole: a ball whose centre comes within `radius` falls in. Returns its index.
-func add_hole(center: Vector2, radius: float) -> int:
-	return _geo.add_sensor(StaticGeometry.SENSOR_HOLE, center, radius)
-
-
-## Adds a goal: entering and leaving it are reported, the ball stays. Returns its index.
-func add_goal(center: Vector2, radius: float) -> int:
-	return _geo.add_sensor(StaticGeometry.SENSOR_GOAL, center, radius)
-
-
-## Adds a generic sensor zone: entering it is reported. Returns its index.
-func add_zone(center: Vector2, radius: float) -> int:
-	return _geo.add_sensor(StaticGeometry.SENSOR_ZONE, center, radius)
 
 
 ## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
@@ -212,14 +157,6 @@ func has_ball(id: int) -> bool:
 
 func ball_count() -> int:
 	return _balls.ids.size()
-
-
-func pin_count() -> int:
-	return _geo.pin_pos.size()
-
-
-func wall_count() -> int:
-	return _geo.wall_a.size()
 
 
 ## Position of a ball, or Vector2.ZERO for an unknown id.
