@@ -135,68 +135,82 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	var area := _board_rect(level)
 	_check_goal_fits(level, area, issues)
-	var reach := level.wall_width * 0.5 + level.ball_radius
 	for i in level.ball_starts.size():
-		var s := level.ball_starts[i]
-		if not s.is_finite():
-			BoardIssue.add_to(
-				issues,
-				ERROR,
-				"Ball start %d is not a number." % ItemIds.of(level, "ball_starts", i),
-				Vector2.ZERO,
-				"not_finite"
+		_check_start(level, area, i, issues)
+		_check_start_overlaps(level, i, issues)
+	_check_holes(level, area, issues)
+
+
+# Ball start i: a number, on the board, clear of walls and holes, not already in the goal.
+static func _check_start(level: BoardLevel, area: Rect2, i: int, issues: Array[BoardIssue]) -> void:
+	var s := level.ball_starts[i]
+	var reach := level.wall_width * 0.5 + level.ball_radius
+	if not s.is_finite():
+		BoardIssue.add_to(
+			issues,
+			ERROR,
+			"Ball start %d is not a number." % ItemIds.of(level, "ball_starts", i),
+			Vector2.ZERO,
+			"not_finite"
+		)
+	elif not area.grow(-level.ball_radius).has_point(s):
+		BoardIssue.add_to(
+			issues,
+			ERROR,
+			(
+				"Ball start %d at (%.0f, %.0f) is off the board."
+				% [ItemIds.of(level, "ball_starts", i), s.x, s.y]
+			),
+			s,
+			"start_outside"
+		)
+	elif _nearest_wall_distance(level, s) < reach - 0.01:
+		BoardIssue.add_to(
+			issues,
+			ERROR,
+			(
+				"Ball start %d at (%.0f, %.0f) is inside a wall."
+				% [ItemIds.of(level, "ball_starts", i), s.x, s.y]
+			),
+			s,
+			"start_in_wall"
+		)
+	elif _in_any(level.holes, level.hole_radius, s):
+		BoardIssue.add_to(
+			issues,
+			ERROR,
+			(
+				"Ball start %d is in a black hole: hard mode would be lost at once."
+				% ItemIds.of(level, "ball_starts", i)
+			),
+			s,
+			"start_in_hole"
+		)
+	elif s.distance_to(level.goal_center) < level.goal_radius:
+		BoardIssue.add_to(
+			issues,
+			WARNING,
+			"Ball start %d is already in the goal." % ItemIds.of(level, "ball_starts", i),
+			s,
+			"start_in_goal"
+		)
+
+
+# Ball start i against every earlier one: two balls may not spawn inside each other.
+static func _check_start_overlaps(level: BoardLevel, i: int, issues: Array[BoardIssue]) -> void:
+	var s := level.ball_starts[i]
+	for j in i:
+		if s.distance_to(level.ball_starts[j]) < level.ball_radius * 2.0:
+			var text := "Ball starts %d and %d overlap: the balls would spawn inside each other."
+			var ids := [ItemIds.of(level, "ball_starts", j), ItemIds.of(level, "ball_starts", i)]
+			var both := BoardIssue.around(
+				s, level.ball_radius, level.ball_starts[j], level.ball_radius
 			)
-		elif not area.grow(-level.ball_radius).has_point(s):
-			BoardIssue.add_to(
-				issues,
-				ERROR,
-				(
-					"Ball start %d at (%.0f, %.0f) is off the board."
-					% [ItemIds.of(level, "ball_starts", i), s.x, s.y]
-				),
-				s,
-				"start_outside"
-			)
-		elif _nearest_wall_distance(level, s) < reach - 0.01:
-			BoardIssue.add_to(
-				issues,
-				ERROR,
-				(
-					"Ball start %d at (%.0f, %.0f) is inside a wall."
-					% [ItemIds.of(level, "ball_starts", i), s.x, s.y]
-				),
-				s,
-				"start_in_wall"
-			)
-		elif _in_any(level.holes, level.hole_radius, s):
-			BoardIssue.add_to(
-				issues,
-				ERROR,
-				(
-					"Ball start %d is in a black hole: hard mode would be lost at once."
-					% ItemIds.of(level, "ball_starts", i)
-				),
-				s,
-				"start_in_hole"
-			)
-		elif s.distance_to(level.goal_center) < level.goal_radius:
-			BoardIssue.add_to(
-				issues,
-				WARNING,
-				"Ball start %d is already in the goal." % ItemIds.of(level, "ball_starts", i),
-				s,
-				"start_in_goal"
-			)
-		for j in i:
-			if s.distance_to(level.ball_starts[j]) < level.ball_radius * 2.0:
-				var text := "Ball starts %d and %d overlap: the balls would spawn inside each other."
-				var ids := [
-					ItemIds.of(level, "ball_starts", j), ItemIds.of(level, "ball_starts", i)
-				]
-				var both := BoardIssue.around(
-					s, level.ball_radius, level.ball_starts[j], level.ball_radius
-				)
-				BoardIssue.add_covering(issues, ERROR, text % ids, s, "starts_overlap", both)
+			BoardIssue.add_covering(issues, ERROR, text % ids, s, "starts_overlap", both)
+
+
+# Every black hole on the board and clear of the goal.
+static func _check_holes(level: BoardLevel, area: Rect2, issues: Array[BoardIssue]) -> void:
 	for h in level.holes.size():
 		var p := level.holes[h]
 		if not p.is_finite() or not area.has_point(p):
