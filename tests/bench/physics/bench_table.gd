@@ -5,6 +5,13 @@ extends RefCounted
 ## Prints the scenario rows, the GDScript floor lines, the S1 extras and the phase times.
 ## `warmup`: untimed steps at the start of each timing run; `budget_s`: a Godot job's budget.
 static func print_table(out: Dictionary, warmup: int, budget_s: float) -> void:
+	_print_scenarios(out, warmup, budget_s)
+	_print_summary(out)
+	_print_phases(out)
+
+
+# One row per scenario, then what the rows mean and the swept-check notes.
+static func _print_scenarios(out: Dictionary, warmup: int, budget_s: float) -> void:
 	print("")
 	print(
 		(
@@ -58,6 +65,10 @@ static func print_table(out: Dictionary, warmup: int, budget_s: float) -> void:
 	print("checked: steps the swept check covered, ours/godot (budget %.0f s)" % budget_s)
 	for note: String in notes:
 		print(note)
+
+
+# The GDScript floor, zoning, threads, scaling and the per-stage times.
+static func _print_summary(out: Dictionary) -> void:
 	for name: String in out["scenarios"]:
 		var r: Dictionary = out["scenarios"][name]
 		if r.has("floor_vs_godot"):
@@ -94,6 +105,10 @@ static func print_table(out: Dictionary, warmup: int, budget_s: float) -> void:
 		for stage: String in stages[scene]:
 			parts.append("%s %.0f" % [stage, stages[scene][stage]])
 		print("  %s: %s" % [scene, ", ".join(parts)])
+
+
+# Seconds per phase and the total.
+static func _print_phases(out: Dictionary) -> void:
 	print("")
 	print("seconds per phase (CPU / wall):")
 	var phases: Dictionary = out["phase_seconds"]
