@@ -14,7 +14,7 @@ PACK=build/export/board_studio.pck
 # Editor-only and development files; export_presets.cfg's exclude_filter leaves them out.
 FORBIDDEN=(
 	'tests/*' 'tools/*' 'build/*' 'docs/*' 'addons/gut/*' 'addons/board_editor/*'
-	'*shot*' '*self_check*' 'scenes/boards/*' 'scenes/board_view/board_node.*'
+	'*shots*' '*shot_capture*' '*shot_hook*' '*self_check*' 'scenes/boards/*' 'scenes/board_view/board_node.*'
 )
 # The screens the player can reach; each must load from the pack alone.
 SCREENS=(

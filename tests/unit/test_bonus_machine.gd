@@ -190,3 +190,14 @@ func test_world_pockets_list_bonus_cups_after_the_levels_pockets() -> void:
 	assert_eq(facts[3]["position"], TULIP)
 	assert_eq(BonusGeometry.bonus_index(level, 1), 0, "world pocket 1 is bonus pocket 0")
 	assert_eq(BonusGeometry.lowest_catch_y(level), ATTACKER.y + 32.0)
+
+
+func test_rules_with_a_bonus_layer_are_freed_when_dropped() -> void:
+	# A reference cycle (machine -> reels -> a connection holding the machine) once kept
+	# every game's rules, world and bonus machine alive until exit.
+	var rules := PachinkoRules.new(_bonus_board(), 3)
+	var machine_ref: WeakRef = weakref(rules.bonus)
+	var world_ref: WeakRef = weakref(rules.world)
+	rules = null
+	assert_null(machine_ref.get_ref(), "the bonus machine is freed with its rules")
+	assert_null(world_ref.get_ref(), "and so is the world")

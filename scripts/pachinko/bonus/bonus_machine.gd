@@ -63,9 +63,9 @@ func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
 		if _walls.size() > world.wall_count():
 			push_error("BonusMachine: the world lacks the bonus walls; lids will not move")
 			_walls.clear()
-	reels.reel_stopped.connect(
-		func(reel: int, symbol: int) -> void: reel_stopped.emit(reel, symbol)
-	)
+	# Methods, not a lambda: a lambda would hold this machine, which holds the reels that
+	# hold the lambda, and the cycle would keep the machine and its world alive forever.
+	reels.reel_stopped.connect(_on_reel_stopped)
 	reels.spin_finished.connect(_on_spin_finished)
 
 
@@ -160,6 +160,10 @@ func _start_spin() -> void:
 	reel_spins += 1
 	reels.start(landing, symbol_count)
 	reels_started.emit(symbol_count)
+
+
+func _on_reel_stopped(reel: int, symbol: int) -> void:
+	reel_stopped.emit(reel, symbol)
 
 
 func _on_spin_finished(result: PackedInt32Array, jackpot: bool) -> void:
