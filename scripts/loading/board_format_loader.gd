@@ -30,8 +30,8 @@ func _exists(path: String) -> bool:
 
 
 func _load(path: String, _original_path: String, _sub_threads: bool, _cache_mode: int) -> Variant:
-	var text := FileAccess.get_file_as_string(path)
-	if text.is_empty() and FileAccess.get_open_error() != OK:
+	var bytes := FileAccess.get_file_as_bytes(path)
+	if bytes.is_empty() and FileAccess.get_open_error() != OK:
 		push_error(
 			(
 				"%s: the file could not be read (%s)"
@@ -39,7 +39,7 @@ func _load(path: String, _original_path: String, _sub_threads: bool, _cache_mode
 			)
 		)
 		return ERR_CANT_OPEN
-	var read := Reader.read(text)
+	var read := Reader.read_bytes(bytes)
 	if read.has("error"):
 		push_error("%s: %s" % [path, read["error"]])
 		return ERR_FILE_CORRUPT

@@ -101,10 +101,7 @@ static func _read_board_file(result: BoardLoadResult, path: String) -> BoardLeve
 
 
 static func _read_bytes(result: BoardLoadResult, bytes: PackedByteArray) -> BoardLevel:
-	if bytes.has(0):
-		result.error = "the file contains a NUL byte; a board file is plain text"
-		return null
-	var read := Reader.read(bytes.get_string_from_utf8())
+	var read := Reader.read_bytes(bytes)
 	if read.has("error"):
 		result.error = read["error"]
 		return null

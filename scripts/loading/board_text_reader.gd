@@ -13,12 +13,19 @@ const Schema := preload("res://scripts/loading/board_schema.gd")
 const OTHER_FIELDS: Array[String] = ["tuning", Schema.NEXT_IDS_FIELD]
 
 
+## Like read(), from the file's raw bytes. A NUL byte is refused here, before decoding,
+## because a Godot String cannot hold one: decoding would silently turn it into U+FFFD.
+static func read_bytes(bytes: PackedByteArray) -> Dictionary:
+	if bytes.has(0):
+		return _error("the file contains a NUL byte; a board file is plain text")
+	return read(bytes.get_string_from_utf8())
+
+
 ## {"level": BoardLevel} or {"error": "what is wrong"} (the caller adds the file name).
+## Callers holding bytes use read_bytes(), which also refuses NUL bytes.
 static func read(text: String) -> Dictionary:
 	if text.length() > Schema.MAX_FILE_BYTES:
 		return _error("the file is larger than %d bytes" % Schema.MAX_FILE_BYTES)
-	if text.contains(char(0)):
-		return _error("the file contains a NUL byte; a board file is plain text")
 	text = text.trim_prefix(char(0xFEFF))  # a UTF-8 byte order mark some editors add
 	var gathered := _gather_lines(text)
 	if gathered.has("error"):
