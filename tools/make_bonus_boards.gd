@@ -116,7 +116,7 @@ static func _bonus(
 ) -> void:
 	var depth := maxf(width * 0.5 + 6.0, 26.0)
 	Originals.erase_pins_in(history, level, _clear_rect(mouth, width, depth), CENTER)
-	var spec := BonusPocketSpec.create(role, mouth, width, depth, payout)
+	var spec := BonusPocketSpec.of_role(role, mouth, width, depth, payout)
 	for key: String in extra:
 		spec.set(key, extra[key])
 	history.commit(BonusActions.AddBonus.new(level, spec, CENTER))

@@ -290,7 +290,7 @@ static func _build_bonus(level: BoardLevel, data: Dictionary) -> void:
 		var items: Array = data.get(Schema.BONUS_LISTS[role], [])
 		for item: Dictionary in items:
 			var at := Vector2(_float_of(item["x"]), _float_of(item["y"]))
-			var spec := BonusPocketSpec.create(
+			var spec := BonusPocketSpec.of_role(
 				role,
 				at,
 				_float_of(item["width"]),

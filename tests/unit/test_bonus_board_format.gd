@@ -111,16 +111,16 @@ func _validated(specs: Array[BonusPocketSpec]) -> Array[String]:
 
 func test_validator_refuses_bad_bonus_pockets() -> void:
 	var role := BonusPocketSpec.Role
-	var outside := BonusPocketSpec.create(role.TULIP, Vector2(350, 30), 24.0, 26.0, 5)
+	var outside := BonusPocketSpec.of_role(role.TULIP, Vector2(350, 30), 24.0, 26.0, 5)
 	assert_has(_validated([outside]), "bonus_outside error")
-	var shallow := BonusPocketSpec.create(role.TULIP, Vector2(60, 350), 40.0, 10.0, 5)
+	var shallow := BonusPocketSpec.of_role(role.TULIP, Vector2(60, 350), 40.0, 10.0, 5)
 	assert_has(_validated([shallow]), "bad_bonus error")
-	var on_pins := BonusPocketSpec.create(role.TULIP, Vector2(350, 200), 24.0, 26.0, 5)
+	var on_pins := BonusPocketSpec.of_role(role.TULIP, Vector2(350, 200), 24.0, 26.0, 5)
 	assert_has(_validated([on_pins]), "bonus_blocked error", "classic's field pins fill it")
-	var nan_spot := BonusPocketSpec.create(role.START, Vector2(NAN, 1), 24.0, 26.0, 5)
+	var nan_spot := BonusPocketSpec.of_role(role.START, Vector2(NAN, 1), 24.0, 26.0, 5)
 	assert_has(_validated([nan_spot]), "bad_bonus error")
-	var no_start := BonusPocketSpec.create(role.ATTACKER, Vector2(350, 640), 40.0, 20.0, 5)
+	var no_start := BonusPocketSpec.of_role(role.ATTACKER, Vector2(350, 640), 40.0, 20.0, 5)
 	assert_has(_validated([no_start]), "bonus_no_start")
-	var wild := BonusPocketSpec.create(role.START, Vector2(350, 350), 24.0, 26.0, 5)
+	var wild := BonusPocketSpec.of_role(role.START, Vector2(350, 350), 24.0, 26.0, 5)
 	wild.symbols = 40
 	assert_has(_validated([wild]), "bad_bonus error")

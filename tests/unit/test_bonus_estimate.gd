@@ -8,12 +8,12 @@ const ROLE := BonusPocketSpec.Role
 # A start pocket (2 symbols), an attacker (pays 10, 6 s or 10 catches) and a tulip (pays 4).
 func _level() -> BoardLevel:
 	var level := BoardLevel.new()
-	var start := BonusPocketSpec.create(ROLE.START, Vector2(300, 300), 26.0, 26.0, 2)
+	var start := BonusPocketSpec.of_role(ROLE.START, Vector2(300, 300), 26.0, 26.0, 2)
 	start.symbols = 2
-	var attacker := BonusPocketSpec.create(ROLE.ATTACKER, Vector2(350, 500), 60.0, 36.0, 10)
+	var attacker := BonusPocketSpec.of_role(ROLE.ATTACKER, Vector2(350, 500), 60.0, 36.0, 10)
 	attacker.open_seconds = 6.0
 	attacker.open_catches = 10
-	var tulip := BonusPocketSpec.create(ROLE.TULIP, Vector2(200, 300), 26.0, 26.0, 4)
+	var tulip := BonusPocketSpec.of_role(ROLE.TULIP, Vector2(200, 300), 26.0, 26.0, 4)
 	var specs: Array[BonusPocketSpec] = [start, attacker, tulip]
 	level.bonus_pockets = specs
 	return level

@@ -18,12 +18,12 @@ func _bonus_board() -> BoardLevel:
 	level.pin_pocket = PackedInt32Array()
 	level.pin_special = PackedByteArray()
 	level.pockets = []
-	var start := BonusPocketSpec.create(BonusPocketSpec.Role.START, START, 24.0, 26.0, 3)
+	var start := BonusPocketSpec.of_role(BonusPocketSpec.Role.START, START, 24.0, 26.0, 3)
 	start.symbols = 2
-	var attacker := BonusPocketSpec.create(BonusPocketSpec.Role.ATTACKER, ATTACKER, 60.0, 32.0, 15)
+	var attacker := BonusPocketSpec.of_role(BonusPocketSpec.Role.ATTACKER, ATTACKER, 60.0, 32.0, 15)
 	attacker.open_seconds = 5.0
 	attacker.open_catches = 2
-	var tulip := BonusPocketSpec.create(BonusPocketSpec.Role.TULIP, TULIP, 24.0, 26.0, 5)
+	var tulip := BonusPocketSpec.of_role(BonusPocketSpec.Role.TULIP, TULIP, 24.0, 26.0, 5)
 	level.bonus_pockets = [start, attacker, tulip]
 	return level
 

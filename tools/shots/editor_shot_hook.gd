@@ -136,7 +136,7 @@ func _stage_bonus(session: Session) -> void:
 		return
 	var mouth := level.bonus_pockets[0].position + Vector2(18, 6)
 	var extra := Items.empty_set()
-	extra["bonus"] = [BonusPocketSpec.create(BonusPocketSpec.Role.TULIP, mouth, 26.0, 26.0, 3)]
+	extra["bonus"] = [BonusPocketSpec.of_role(BonusPocketSpec.Role.TULIP, mouth, 26.0, 26.0, 3)]
 	session.commit(AddItemsAction.new(level, extra, "Add tulip"))
 	for i in level.bonus_pockets.size():
 		if level.bonus_pockets[i].role == BonusPocketSpec.Role.ATTACKER:

@@ -41,7 +41,7 @@ func spec_at(mouth: Vector2) -> BonusPocketSpec:
 	var values: Array = DEFAULTS[role]
 	var width: float = values[0]
 	var payout: int = values[1]
-	var spec := BonusPocketSpec.create(role, mouth, width, maxf(width * 0.5 + 6.0, 26.0), payout)
+	var spec := BonusPocketSpec.of_role(role, mouth, width, maxf(width * 0.5 + 6.0, 26.0), payout)
 	if role == BonusPocketSpec.Role.START:
 		spec.symbols = 3
 	return spec

@@ -1,10 +1,11 @@
 @tool
 class_name BonusPocketSpec
-extends Resource
-## One pocket of a pachinko machine's bonus layer: a cup of rim pins like a PocketSpec, with
-## a role. A START pocket spins the reels when it catches a ball; an ATTACKER is a wide cup
-## under a lid that opens only after a jackpot; a TULIP has two wings that open wide after
-## a catch and close again after the next one.
+extends PocketSpec
+## One pocket of a pachinko machine's bonus layer: a PocketSpec cup (position, width,
+## depth, payout; the depth is at least half the width) with a role. A START pocket spins
+## the reels when it catches a ball; an ATTACKER is a wide cup under a lid that opens only
+## after a jackpot; a TULIP has two wings that open wide after a catch and close again
+## after the next one.
 ##
 ## Board files hold one per line: `{"start_pocket": {...}}`, `{"attacker": {...}}`,
 ## `{"tulip": {...}}` (see board_schema.gd for the fields and their ranges).
@@ -22,26 +23,6 @@ const DEFAULT_OPEN_CATCHES := 10
 @export var role: Role = Role.START:
 	set(value):
 		role = value
-		emit_changed()
-## Centre of the mouth (the opening at the top), board pixels.
-@export var position: Vector2 = Vector2.ZERO:
-	set(value):
-		position = value
-		emit_changed()
-## Inside width of the mouth, pixels.
-@export var width: float = 0.0:
-	set(value):
-		width = value
-		emit_changed()
-## From the mouth down to the catching pin's centre, pixels (at least half the width).
-@export var depth: float = 0.0:
-	set(value):
-		depth = value
-		emit_changed()
-## Balls paid into the cup per catch.
-@export var payout: int = 0:
-	set(value):
-		payout = value
 		emit_changed()
 ## START: symbols on each reel; three equal symbols are a jackpot (odds 1 in symbols²).
 @export var symbols: int = DEFAULT_SYMBOLS:
@@ -61,7 +42,8 @@ const DEFAULT_OPEN_CATCHES := 10
 
 
 ## A bonus pocket of `kind` (a Role) at `at` (a convenience for code, tests and the editor).
-static func create(
+## (Not `create`: that is PocketSpec's, without a role.)
+static func of_role(
 	kind: Role, at: Vector2, mouth_width: float, cup_depth: float, pays: int
 ) -> BonusPocketSpec:
 	var spec := BonusPocketSpec.new()
