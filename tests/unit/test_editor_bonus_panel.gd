@@ -1,7 +1,8 @@
 extends GutTest
 ## The Selection panel for a bonus pocket: its mouth, size and payout, a start pocket's reel
 ## symbols, an attacker's open seconds and catches, shown with exact values and each typed
-## value one undo step; a value the game cannot use is named by the pocket's id.
+## value one undo step; a value the game cannot use is named by the pocket's id; the role
+## picker turns one kind of bonus pocket into another.
 
 ## A frozen bonus board (the first Fever layout), so rebalancing the shipped boards never
 ## moves the pieces these tests pick.
@@ -88,3 +89,36 @@ func test_the_dock_counts_the_bonus_layer_on_a_pachinko_board_only() -> void:
 	)
 	var maze := load("res://levels/maze/catacombs.board") as BoardLevel
 	assert_eq(BoardDock.count_text(maze), "Walls: 77   Holes: 6   Ball starts: 4")
+
+
+func test_the_role_picker_turns_a_tulip_into_a_start_pocket_in_one_undo_step() -> void:
+	var level := _select(3)
+	var tulip := level.bonus_pockets[3]
+	assert_true(panel.role_picker().get_parent().visible, "a bonus pocket shows its role")
+	assert_eq(panel.role_picker().selected, BonusPocketSpec.Role.TULIP)
+	panel.role_picker().select(BonusPocketSpec.Role.START)
+	panel.role_picker().item_selected.emit(BonusPocketSpec.Role.START)
+	var roles: Array = level.bonus_pockets.map(func(s: BonusPocketSpec) -> int: return s.role)
+	assert_eq(roles, [0, 0, 1, 2], "the new start pocket sits with the start pockets")
+	var made := level.bonus_pockets[1]
+	assert_eq([made.position, made.width, made.payout], [tulip.position, tulip.width, tulip.payout])
+	assert_eq(session.selection, [Items.make(Items.Kind.BONUS, 1)] as Array[Vector2i])
+	assert_eq(panel.title(), "Start pocket 2 at (485, 330)", "a fresh id in its new list")
+	assert_true(_shown("symbols"), "a start pocket has reels")
+	assert_eq(session.history.names(), PackedStringArray(["Make bonus pocket a start pocket"]))
+	session.history.undo()
+	assert_eq(level.bonus_pockets[3], tulip, "undo brings back the very same tulip")
+	assert_eq(tulip.role, BonusPocketSpec.Role.TULIP)
+	assert_eq(ItemIds.of_bonus(level, 3), 2, "under its own id")
+
+
+func test_picking_the_same_role_or_a_pin_changes_nothing() -> void:
+	var level := _select(1)
+	panel.set_role(BonusPocketSpec.Role.ATTACKER)
+	assert_eq(session.history.names().size(), 0)
+	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
+	panel.refresh()
+	assert_false(panel.role_picker().get_parent().visible, "a pin has no role")
+	panel.set_role(BonusPocketSpec.Role.TULIP)
+	assert_eq(session.history.names().size(), 0)
+	assert_eq(level.bonus_pockets[1].role, BonusPocketSpec.Role.ATTACKER)

@@ -1,8 +1,9 @@
 @tool
 extends RefCounted
-## The undoable edits of the bonus layer: add a bonus pocket (and its mirror image) or
-## remove one. Both keep `level.bonus_pockets` in role order (start pockets, attackers,
-## tulips), the order a board file stores them in, so a saved board reads back the same.
+## The undoable edits of the bonus layer: add a bonus pocket (and its mirror image), remove
+## one, change one's numbers or its role. They keep `level.bonus_pockets` in role order (start
+## pockets, attackers, tulips), the order a board file stores them in, so a saved board reads
+## back the same.
 
 
 ## Adds bonus pockets; `added` holds their indices after `do()`.
@@ -107,3 +108,40 @@ class EditBonus:
 			spec.set(_field, roundi(_value))
 		else:
 			spec.set(_field, _value)
+
+
+## Turns the bonus pocket at `index` into another role (a tulip into a start pocket...). The
+## pocket is replaced by a copy with the new role, moved to its role's place in the list:
+## it takes a fresh id in that role's list, and undo brings back the very same pocket with
+## its old role and id. The cup (position, size, payout) and the other role fields stay.
+class SetBonusRole:
+	extends BoardAction
+
+	## Where the pocket is in `level.bonus_pockets` after the last `do()` (-1 if unchanged).
+	var moved_to := -1
+	var _index: int
+	var _role: BonusPocketSpec.Role
+
+	func _init(on_level: BoardLevel, index: int, role: BonusPocketSpec.Role) -> void:
+		super(on_level)
+		_index = index
+		_role = role
+
+	func get_name() -> String:
+		return "Make bonus pocket a %s" % BonusPocketSpec.ROLE_NAMES[_role].to_lower()
+
+	func _touched_fields() -> PackedStringArray:
+		return PackedStringArray(["bonus_pockets"])
+
+	func _apply() -> void:
+		moved_to = -1
+		if _index < 0 or _index >= level.bonus_pockets.size():
+			push_error("Bonus pocket role: there is no bonus pocket %d." % _index)
+			return
+		var pockets := level.bonus_pockets.duplicate()
+		var changed := pockets[_index].duplicate() as BonusPocketSpec
+		changed.role = _role
+		pockets.remove_at(_index)
+		pockets.insert(AddBonus._slot_for(pockets, _role), changed)
+		level.bonus_pockets = pockets
+		moved_to = level.bonus_pockets.find(changed)

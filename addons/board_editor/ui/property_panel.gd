@@ -11,6 +11,7 @@ const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const Arrange := preload("res://addons/board_editor/core/arrange.gd")
 const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
 const ArcFields := preload("res://addons/board_editor/ui/arc_fields.gd")
+const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 
 ## Align buttons: [label, Arrange mode, tooltip].
 const ALIGN_BUTTONS := [
@@ -28,6 +29,8 @@ var _rows: Dictionary[String, HBoxContainer] = {}
 var _fields: Dictionary[String, SpinBox] = {}
 var _arrange: HFlowContainer
 var _arc_fields: ArcFields
+var _role_row: HBoxContainer
+var _role: OptionButton
 
 
 func _init() -> void:
@@ -38,6 +41,7 @@ func _init() -> void:
 	_title = Label.new()
 	_title.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	add_child(_title)
+	_add_role_row()
 	for key: String in ItemProperties.FIELDS:
 		var spec: Array = ItemProperties.FIELDS[key]
 		var row := HBoxContainer.new()
@@ -65,6 +69,43 @@ func _init() -> void:
 		_arrange_button("Align " + str(entry[0]), tip, align.bind(str(entry[1])))
 	_arrange_button("Space across", "Space them evenly from left to right.", distribute.bind("x"))
 	_arrange_button("Space down", "Space them evenly from top to bottom.", distribute.bind("y"))
+
+
+# A bonus pocket's role (start pocket, attacker, tulip), shown for one selected bonus pocket.
+func _add_role_row() -> void:
+	_role_row = HBoxContainer.new()
+	var label := Label.new()
+	label.text = "Role"
+	label.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+	_role_row.add_child(label)
+	_role = OptionButton.new()
+	_role.tooltip_text = "What the pocket does when it catches a ball."
+	for name: String in BonusPocketSpec.ROLE_NAMES:
+		_role.add_item(name)
+	_role.item_selected.connect(set_role)
+	_role_row.add_child(_role)
+	add_child(_role_row)
+
+
+## Gives the one selected bonus pocket another role (one undo step); it stays selected.
+func set_role(role: int) -> void:
+	if _session == null or _session.selection.size() != 1:
+		return
+	var item: Vector2i = _session.selection[0]
+	if item.x != Items.Kind.BONUS or not Items.is_valid(_session.level, item):
+		return
+	if _session.level.bonus_pockets[item.y].role == role:
+		return
+	var action := BonusActions.SetBonusRole.new(_session.level, item.y, role)
+	_session.commit(action)
+	if action.moved_to >= 0:
+		_session.select([Vector2i(Items.Kind.BONUS, action.moved_to)] as Array[Vector2i])
+	refresh()
+
+
+## The role picker (tests and the screenshot hook choose in it).
+func role_picker() -> OptionButton:
+	return _role
 
 
 ## Lines the selection up (Arrange.ALIGN_MODES); one undo step.
@@ -129,6 +170,7 @@ func refresh() -> void:
 			"An arc of %d pins: shape it below, or align or space them." % _session.selection.size()
 		)
 	_arc_fields.show_arc(arc)
+	_show_role()
 	_arrange.visible = _session != null and _session.selection.size() >= 2
 	for key: String in _rows:
 		_rows[key].visible = values.has(key)
@@ -145,3 +187,14 @@ func _on_value_changed(value: float, key: String) -> void:
 	if action != null:
 		_session.commit(action)
 	refresh()
+
+
+func _show_role() -> void:
+	var bonus := -1
+	if _session != null and _session.level != null and _session.selection.size() == 1:
+		var item: Vector2i = _session.selection[0]
+		if item.x == Items.Kind.BONUS and Items.is_valid(_session.level, item):
+			bonus = item.y
+	_role_row.visible = bonus >= 0
+	if bonus >= 0:
+		_role.select(_session.level.bonus_pockets[bonus].role)

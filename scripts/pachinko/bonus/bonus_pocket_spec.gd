@@ -14,6 +14,8 @@ enum Role { START, ATTACKER, TULIP }
 
 ## The file key of each role, in Role order.
 const ROLE_KEYS: Array[String] = ["start_pocket", "attacker", "tulip"]
+## Words for each role, in Role order.
+const ROLE_NAMES: Array[String] = ["Start pocket", "Attacker", "Tulip"]
 ## Defaults of the role-specific fields (what a file line may leave out).
 const DEFAULT_SYMBOLS := 5
 const DEFAULT_OPEN_SECONDS := 8.0
@@ -67,4 +69,4 @@ func as_pocket() -> PocketSpec:
 
 ## Words for the player and the editor ("Start pocket", "Attacker", "Tulip").
 func role_name() -> String:
-	return ["Start pocket", "Attacker", "Tulip"][role]
+	return ROLE_NAMES[role]
