@@ -139,7 +139,8 @@ class SetBonusRole:
 			push_error("Bonus pocket role: there is no bonus pocket %d." % _index)
 			return
 		var pockets := level.bonus_pockets.duplicate()
-		var changed := pockets[_index].duplicate() as BonusPocketSpec
+		var original: BonusPocketSpec = level.bonus_pockets[_index]
+		var changed := original.duplicate() as BonusPocketSpec
 		changed.role = _role
 		pockets.remove_at(_index)
 		pockets.insert(AddBonus._slot_for(pockets, _role), changed)

@@ -80,8 +80,8 @@ func _add_role_row() -> void:
 	_role_row.add_child(label)
 	_role = OptionButton.new()
 	_role.tooltip_text = "What the pocket does when it catches a ball."
-	for name: String in BonusPocketSpec.ROLE_NAMES:
-		_role.add_item(name)
+	for role_name: String in BonusPocketSpec.ROLE_NAMES:
+		_role.add_item(role_name)
 	_role.item_selected.connect(set_role)
 	_role_row.add_child(_role)
 	add_child(_role_row)
