@@ -24,7 +24,8 @@ var rules: PachinkoRules
 var _level: BoardLevel
 var _controls := PachinkoInput.new()
 var _stats_refresh := 0.0
-var _bonus_view := BonusView.new()
+# Made once a board has loaded: a game with no board never owns one outside the tree.
+var _bonus_view: BonusView
 var _recorder: ReplayRecorder
 
 @onready var board_view: BoardView = $BoardView
@@ -64,6 +65,7 @@ func _ready() -> void:
 			]
 		)
 	)
+	_bonus_view = BonusView.new()
 	add_child(_bonus_view)
 	_bonus_view.attach(board_view, sounds)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
