@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Screenshot of the board editor after a play analysis: opens the Godot editor under Xvfb
-# on a pachinko board scene, presses Analyze in the board dock (the hook
+# on a board scene (SCENE=, pachinko classic by default; a maze scene analyses the maze), presses Analyze in the board dock (the hook
 # tools/shots/editor_analysis_hook.gd), waits for the run and saves the editor window.
 #   tools/editor_analysis_shot.sh [out.png]     default build/shots/editor_analysis.png
 set -euo pipefail

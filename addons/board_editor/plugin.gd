@@ -62,6 +62,7 @@ func _enter_tree() -> void:
 	EditorInterface.get_base_control().add_child(_save_dialog)
 	_dock.analysis.redraw_needed.connect(update_overlays)
 	_dock.analysis.results_changed.connect(_refresh)
+	_dock.maze_analysis.redraw_needed.connect(update_overlays)
 	_attach_tooling_hook()
 
 
@@ -131,6 +132,7 @@ func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
 	if _session == null or not is_instance_valid(_node) or not _node.is_inside_tree():
 		return
 	_dock.analysis.draw_over(overlay, _to_screen())
+	_dock.maze_analysis.draw_over(overlay, _to_screen())
 	BoardOverlay.draw(
 		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
 	)

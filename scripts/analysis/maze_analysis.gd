@@ -5,7 +5,8 @@ extends RefCounted
 ## holes catch balls, and a difficulty figure: the pilot's expected seconds of play per win
 ## in hard mode (time played over every run / runs won). Runs are independent games on
 ## worker threads (high-priority group tasks); results are gathered by run index, so the
-## figures never depend on the thread count.
+## figures never depend on the thread count. A hole is named by its stable id ("id") and
+## its place in the board's list ("index").
 
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 
@@ -16,44 +17,103 @@ const RUN_SECONDS := 120.0
 var _level: BoardLevel
 var _seed := 1
 var _runs := 0
+var _threads := 1
 var _results: Array[Dictionary] = []
 var _mutex := Mutex.new()
+var _games_done := 0
+var _cancelled := false
+var _task := -1
+var _started_usec := 0
 
 
-## Plays the runs and returns the report (a plain Dictionary, JSON-ready).
+## Plays the runs and returns the report (a plain Dictionary, JSON-ready), blocking.
 static func run(level: BoardLevel, runs: int, rng_seed: int, threads: int) -> Dictionary:
 	if level == null or not level.is_maze():
 		return {"ok": false, "error": "the maze analysis needs a maze board"}
+	var analysis := MazeAnalysis.create(level, runs, rng_seed)
+	if threads <= 1:
+		analysis._started_usec = Time.get_ticks_usec()
+		for i in analysis.games():
+			analysis._play(i)
+	else:
+		analysis.start(threads)
+		WorkerThreadPool.wait_for_group_task_completion(analysis._task)
+		analysis._task = -1
+	return analysis.report()
+
+
+## An analysis of `level` (a maze; the caller keeps it unchanged while it runs) that plays
+## `runs` games per mode from seed `rng_seed`; start() runs it without blocking.
+static func create(level: BoardLevel, runs: int, rng_seed: int) -> MazeAnalysis:
 	var analysis := MazeAnalysis.new()
 	analysis._level = level
 	analysis._seed = rng_seed
 	analysis._runs = maxi(runs, 1)
-	var started := Time.get_ticks_usec()
 	analysis._results.resize(analysis._runs * 2)
-	var count := analysis._runs * 2
-	if threads <= 1:
-		for i in count:
-			analysis._play(i)
-	else:
-		var task := WorkerThreadPool.add_group_task(
-			analysis._play, count, mini(threads, count), true, "Maze analysis"
-		)
-		WorkerThreadPool.wait_for_group_task_completion(task)
-	var wall := (Time.get_ticks_usec() - started) / 1e6
-	var report := {
+	return analysis
+
+
+## Starts the games on `threads` worker threads (high priority) and returns at once; poll()
+## tells when they are done.
+func start(threads: int) -> void:
+	_threads = maxi(threads, 1)
+	_started_usec = Time.get_ticks_usec()
+	_task = WorkerThreadPool.add_group_task(
+		_play, games(), mini(_threads, games()), true, "Maze analysis"
+	)
+
+
+## True once every game has finished (or stopped after cancel()).
+func poll() -> bool:
+	if _task < 0:
+		return true
+	if not WorkerThreadPool.is_group_task_completed(_task):
+		return false
+	WorkerThreadPool.wait_for_group_task_completion(_task)
+	_task = -1
+	return true
+
+
+## Stops the games at their next frame; the report then counts only finished games.
+func cancel() -> void:
+	_cancelled = true
+
+
+## True after cancel().
+func is_cancelled() -> bool:
+	return _cancelled
+
+
+## Games in all: `runs` easy and `runs` hard.
+func games() -> int:
+	return _runs * 2
+
+
+## Games finished so far (any thread may be adding to it).
+func games_done() -> int:
+	_mutex.lock()
+	var done := _games_done
+	_mutex.unlock()
+	return done
+
+
+## The report of the finished games (call once poll() is true).
+func report() -> Dictionary:
+	var wall := (Time.get_ticks_usec() - _started_usec) / 1e6
+	var figures := {
 		"version": AnalysisReport.VERSION,
 		"game": "maze",
-		"board": level.board_id,
-		"runs": analysis._runs,
-		"seed": rng_seed,
-		"threads": threads,
+		"board": _level.board_id,
+		"runs": _runs,
+		"seed": _seed,
+		"threads": _threads,
 		"wall_s": snappedf(wall, 0.001),
-		"easy": analysis._mode_figures(false),
-		"hard": analysis._mode_figures(true),
+		"easy": _mode_figures(false),
+		"hard": _mode_figures(true),
 	}
-	var hard: Dictionary = report["hard"]
-	report["difficulty"] = hard["seconds_per_win"]
-	return report
+	var hard: Dictionary = figures["hard"]
+	figures["difficulty"] = hard["seconds_per_win"]
+	return figures
 
 
 # Game i: runs 0..runs-1 are easy, runs..2·runs-1 hard; seed + (i mod runs).
@@ -69,6 +129,8 @@ func _play(i: int) -> void:
 		var limit := ceili(RUN_SECONDS / rules.step_seconds())
 		var frames := 0
 		while frames < limit and rules.is_playing():
+			if _cancelled:
+				return  # an unfinished game counts nowhere
 			var world := rules.world
 			rules.set_tilt(pilot.decide(world.get_positions(), world.get_velocities()))
 			rules.step()
@@ -78,6 +140,7 @@ func _play(i: int) -> void:
 		out["hole"] = rules.lost_hole
 	_mutex.lock()
 	_results[i] = out
+	_games_done += 1
 	_mutex.unlock()
 
 
@@ -86,9 +149,11 @@ func _mode_figures(hard: bool) -> Dictionary:
 	var played := 0.0
 	var win_times := PackedFloat64Array()
 	var holes := {}
+	var games_played := 0
 	for r: Dictionary in _results:
 		if r.is_empty() or r["hard"] != hard:
 			continue
+		games_played += 1
 		played += r["seconds"]
 		if r["won"]:
 			wins += 1
@@ -99,11 +164,14 @@ func _mode_figures(hard: bool) -> Dictionary:
 	win_times.sort()
 	var hole_list: Array[Dictionary] = []
 	for h: int in holes.keys():
-		hole_list.append({"id": h, "balls": holes[h], "at": _hole_at(h)})
+		var id := ItemIds.of(_level, "holes", h)
+		hole_list.append({"id": id, "index": h, "balls": holes[h], "at": _hole_at(h)})
 	hole_list.sort_custom(func(a: Dictionary, b: Dictionary) -> bool: return a["id"] < b["id"])
-	var ci := AnalysisStats.wilson(wins, _runs)
+	var ci := AnalysisStats.wilson(wins, games_played)
 	return {
-		"solve_rate": snappedf(float(wins) / _runs, 0.0001),
+		"games": games_played,
+		"wins": wins,
+		"solve_rate": snappedf(float(wins) / maxi(games_played, 1), 0.0001),
 		"solve_rate_ci95": snappedf((ci.y - ci.x) * 0.5, 0.0001),
 		"median_time_s": snappedf(_median(win_times), 0.01) if wins > 0 else -1.0,
 		"mean_time_s": snappedf(_mean(win_times), 0.01) if wins > 0 else -1.0,

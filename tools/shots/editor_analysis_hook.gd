@@ -2,8 +2,8 @@
 extends Node
 ## Screenshot hook for tools/editor_analysis_shot.sh. When the editor starts with
 ## BOARD_EDITOR_ANALYSIS_SHOT="<scene.tscn>;<out.png>" it opens the scene, selects its
-## BoardNode, presses Analyze in the board dock, waits for the run to finish (the editor
-## keeps drawing meanwhile), saves the editor window as a PNG and quits.
+## BoardNode, presses Analyze in the board dock (the maze section on a maze board), waits
+## for the run to finish (the editor keeps drawing meanwhile), saves the editor window as a PNG and quits.
 
 const ENV := "BOARD_EDITOR_ANALYSIS_SHOT"
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
@@ -47,7 +47,8 @@ func _run() -> void:
 	framer.call("_frame_board", node)
 	framer.free()
 	var dock: Node = _plugin.get("_dock")
-	var panel: Node = dock.get("analysis")
+	var is_maze := node.level != null and node.level.is_maze()
+	var panel: Node = dock.get("maze_analysis" if is_maze else "analysis")
 	panel.call("start")
 	var started := Time.get_ticks_msec()
 	while panel.call("is_running") and Time.get_ticks_msec() - started < RUN_LIMIT * 1000.0:

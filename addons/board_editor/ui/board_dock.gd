@@ -19,9 +19,12 @@ const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const ProblemsList := preload("res://addons/board_editor/ui/problems_list.gd")
 const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
 const AnalysisPanel := preload("res://addons/board_editor/analysis/analysis_panel.gd")
+const MazeAnalysisPanel := preload("res://addons/board_editor/analysis/maze_analysis_panel.gd")
 
 ## The play-analysis section (Analyze button, progress, figures).
 var analysis: AnalysisPanel
+## The maze boards' play-analysis section (the autoplay pilot's games).
+var maze_analysis: MazeAnalysisPanel
 
 var _title: Label
 var _counts: Label
@@ -70,6 +73,8 @@ func _init() -> void:
 	add_child(_status)
 	analysis = AnalysisPanel.new()
 	add_child(analysis)
+	maze_analysis = MazeAnalysisPanel.new()
+	add_child(maze_analysis)
 	add_child(HSeparator.new())
 	# The panels scroll on their own, so the problem list below always keeps its room.
 	var scroll := ScrollContainer.new()
@@ -128,6 +133,7 @@ func show_board(
 ) -> void:
 	var editing := session != null and session.level != null
 	analysis.bind(session.level if editing else null)
+	maze_analysis.bind(session.level if editing else null)
 	_play.disabled = not editing
 	_options.visible = editing
 	_properties.visible = editing

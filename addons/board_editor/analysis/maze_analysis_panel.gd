@@ -1,0 +1,181 @@
+@tool
+extends VBoxContainer
+## The dock's play-analysis section for maze boards: Analyze lets the autoplay pilot play
+## the board (MazeAnalysis: RUNS games in easy and RUNS in hard mode) on worker threads while
+## the editor stays responsive, with a progress bar and Cancel. The result (solve rate and
+## median time per mode, the holes that swallowed balls) shows in the dock and over the
+## board; it is kept per board content for the editor session, so undoing back to an
+## analysed board shows its figures again.
+
+## The overlay should be redrawn (new figures, or none to show).
+signal redraw_needed
+
+const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
+## First seed of the games: the same board always gives the same figures.
+const SEED := 1
+
+## Games per mode a run plays (tests play fewer).
+var runs := 6
+
+# Board content hash -> report, for this editor session.
+var _results := {}
+var _level: BoardLevel
+var _key := ""
+var _report: Dictionary = {}
+var _run: MazeAnalysis
+var _run_key := ""
+var _run_level: BoardLevel
+
+var _analyze: Button
+var _cancel: Button
+var _progress: ProgressBar
+var _status: Label
+var _show: CheckBox
+
+
+func _init() -> void:
+	name = "MazeAnalysis"
+	var title := Label.new()
+	title.text = "Play analysis"
+	add_child(title)
+	var row := HBoxContainer.new()
+	_analyze = Button.new()
+	_analyze.text = "Analyze"
+	_analyze.tooltip_text = (
+		"Let the autoplay pilot play %d games in easy and %d in hard mode: solve rates, times, "
+		+ "and the holes that catch balls."
+	)
+	_analyze.pressed.connect(start)
+	row.add_child(_analyze)
+	_cancel = Button.new()
+	_cancel.text = "Cancel"
+	_cancel.disabled = true
+	_cancel.pressed.connect(cancel)
+	row.add_child(_cancel)
+	_show = CheckBox.new()
+	_show.text = "Show"
+	_show.button_pressed = true
+	_show.toggled.connect(func(_on: bool) -> void: redraw_needed.emit())
+	row.add_child(_show)
+	add_child(row)
+	_progress = ProgressBar.new()
+	_progress.max_value = 1.0
+	_progress.visible = false
+	add_child(_progress)
+	_status = Label.new()
+	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+	add_child(_status)
+	set_process(false)
+
+
+func _ready() -> void:
+	_analyze.tooltip_text = _analyze.tooltip_text % [runs, runs]
+
+
+## Shows the analysis of `level` (null or a pachinko board: the section hides). Called after
+## every edit: a changed board shows the figures of that very content, or none.
+func bind(level: BoardLevel) -> void:
+	visible = level != null and level.is_maze()
+	_level = level if visible else null
+	var key := Writer.write(_level).sha256_text() if _level != null else ""
+	if key == _key:
+		return
+	_key = key
+	_report = _results.get(key, {})
+	_say_result()
+	redraw_needed.emit()
+
+
+## Starts an analysis of a snapshot of the bound board (edits during the run do not reach
+## the games).
+func start() -> void:
+	if _level == null or _run != null:
+		return
+	_run_level = _level.duplicate_level()
+	_run_key = _key
+	_run = MazeAnalysis.create(_run_level, runs, SEED)
+	_run.start(OS.get_processor_count())
+	_analyze.disabled = true
+	_cancel.disabled = false
+	_progress.visible = true
+	_progress.value = 0.0
+	_status.text = "The pilot is playing %d games..." % _run.games()
+	set_process(true)
+
+
+## Stops the running analysis at the games' next frame; nothing is kept.
+func cancel() -> void:
+	if _run != null:
+		_run.cancel()
+
+
+## True while an analysis runs.
+func is_running() -> bool:
+	return _run != null
+
+
+## The figures shown (a MazeAnalysis report; empty when none).
+func report() -> Dictionary:
+	return _report
+
+
+## Draws the figures over the board (the plugin calls it from its viewport overlay).
+func draw_over(canvas: Control, to_screen: Transform2D) -> void:
+	if _level != null and _show.button_pressed and not _report.is_empty():
+		OverlayDraw.draw(canvas, to_screen, _level, _report)
+
+
+func _process(_delta: float) -> void:
+	if _run == null:
+		set_process(false)
+		return
+	_progress.value = float(_run.games_done()) / _run.games()
+	if _run.poll():
+		_finish()
+
+
+func _finish() -> void:
+	var cancelled := _run.is_cancelled()
+	var finished := _run.report()
+	_run = null
+	_run_level = null
+	_analyze.disabled = false
+	_cancel.disabled = true
+	_progress.visible = false
+	set_process(false)
+	if cancelled:
+		_say_result()
+		_status.text = "Cancelled: no figures kept.\n" + _status.text
+		return
+	_results[_run_key] = finished
+	if _run_key == _key:
+		_report = finished
+	_say_result()
+	var games: int = finished["runs"]
+	var seconds: float = finished["wall_s"]
+	_status.text += "\n%d games in %.1f s." % [games * 2, seconds]
+	redraw_needed.emit()
+
+
+func _exit_tree() -> void:
+	if _run != null:
+		_run.cancel()
+		while not _run.poll():
+			OS.delay_msec(5)  # the games stop within a frame of play each
+		_run = null
+
+
+func _say_result() -> void:
+	if _report.is_empty():
+		_status.text = "Not analysed since the last edit." if _level != null else ""
+		return
+	var lines := PackedStringArray()
+	for mode: String in ["easy", "hard"]:
+		var figures: Dictionary = _report[mode]
+		lines.append(OverlayDraw.mode_line(mode, figures))
+	var hard: Dictionary = _report["hard"]
+	var holes: Array = hard.get("holes", [])
+	if not holes.is_empty():
+		lines.append(OverlayDraw.holes_line(holes))
+	_status.text = "\n".join(lines)
