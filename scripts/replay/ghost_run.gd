@@ -18,7 +18,8 @@ func _init(replay: Replay, level: BoardLevel) -> void:
 
 
 ## The ghost of the best run saved for `level` in a mode, or null when there is none, it
-## cannot be read, or the board changed since it was recorded (a warning says which).
+## cannot be read, the board changed since it was recorded, or the run was recorded under
+## another physics version (a warning says which).
 static func load_best(level: BoardLevel, hard: bool) -> GhostRun:
 	if level == null or not level.is_maze():
 		return null
@@ -32,6 +33,9 @@ static func load_best(level: BoardLevel, hard: bool) -> GhostRun:
 	var replay: Replay = read["replay"]
 	if replay.game != Replay.MAZE or replay.hard != hard or replay.board_id != level.board_id:
 		push_warning("No ghost: %s is not a %s run on this board" % [path, replay.mode_name()])
+		return null
+	if not replay.physics_problem().is_empty():
+		push_warning("No ghost: %s %s" % [path, replay.physics_problem()])
 		return null
 	if replay.board_hash != Replay.content_hash(level):
 		push_warning("No ghost: the board changed since %s was recorded" % path)

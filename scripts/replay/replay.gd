@@ -19,8 +19,12 @@ extends RefCounted
 
 const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 ## The format this build writes; it reads this one and every older one (format 1 has no
-## `"tilts"` records).
-const VERSION := 2
+## `"tilts"` records; formats 1 and 2 have no `"physics"`, their runs are physics 1).
+const VERSION := 3
+## The physics behaviour this build plays runs with (BallWorld.PHYSICS_VERSION). A run
+## recorded under another one cannot be replayed exactly: the same inputs roll the balls
+## differently, so the replay and its ghost are refused, by name, instead of drifting.
+const PHYSICS_VERSION := 1
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := "maze"
@@ -37,6 +41,8 @@ const HUNDREDTHS := 100.0
 
 ## The format version of the file it was read from (VERSION when made by this build).
 var format_version := VERSION
+## The physics behaviour the run was recorded with (PHYSICS_VERSION when recorded here).
+var physics_version := PHYSICS_VERSION
 ## "maze" or "pachinko".
 var game := MAZE
 ## The board's `board_id`.
@@ -99,3 +105,16 @@ static func frame_tilt(record: Array, frame: int) -> Vector2i:
 ## "maze" or "pachinko" for a board.
 static func game_of(level: BoardLevel) -> String:
 	return MAZE if level.is_maze() else PACHINKO
+
+
+## Why this build cannot replay the run exactly, or "" when it can.
+func physics_problem() -> String:
+	if physics_version == PHYSICS_VERSION:
+		return ""
+	return (
+		(
+			"it was recorded with physics version %d and this game runs version %d, which rolls "
+			+ "the balls differently"
+		)
+		% [physics_version, PHYSICS_VERSION]
+	)

@@ -17,6 +17,9 @@ static func run(values: Dictionary) -> int:
 	if read.has("error"):
 		return _refuse(path, str(read["error"]))
 	var replay: Replay = read["replay"]
+	var physics := replay.physics_problem()
+	if not physics.is_empty():
+		return _refuse(path, "%s: cannot be replayed: %s" % [path, physics])
 	var board := ReplayStore.find_board(replay)
 	if board.has("error"):
 		return _refuse(path, "%s: %s" % [path, board["error"]])

@@ -29,8 +29,13 @@ const HEADER_KEYS := [
 	"step_hz",
 	"steps",
 	"state_hash",
-	"seconds"
+	"seconds",
+	"physics",
 ]
+## Header fields older formats do not have: field -> first format with it.
+const LATER_KEYS := {"physics": 3}
+## Physics versions a file may name (BallWorld keeps its history small).
+const MAX_PHYSICS := 1000
 const MODES := {"maze": ["easy", "hard"], "pachinko": ["normal"]}
 const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 ## Longest packed text of one "tilts" record: MAX_PACKED_FRAMES frames of three numbers of
@@ -82,9 +87,8 @@ static func _read_header(data: Variant, replay: Replay) -> String:
 	for key: Variant in header:
 		if not HEADER_KEYS.has(key):
 			return 'unknown header field "%s"' % str(key)
-	for key: String in HEADER_KEYS:
-		if not header.has(key):
-			return 'the header has no "%s"' % key
+	if not header.has("replay"):
+		return 'the header has no "replay"'
 	var version: Variant = _whole(header["replay"], 1, MAX_WHOLE)
 	if version == null:
 		return '"replay" (the format version) must be a whole number from 1'
@@ -94,6 +98,21 @@ static func _read_header(data: Variant, replay: Replay) -> String:
 			% [version, Replay.VERSION]
 		)
 	replay.format_version = version
+	for key: String in HEADER_KEYS:
+		var since: int = LATER_KEYS.get(key, 1)
+		if version >= since and not header.has(key):
+			return 'the header has no "%s"' % key
+		if version < since and header.has(key):
+			return '"%s" came with format %d; this file says format %d' % [key, since, version]
+	replay.physics_version = 1
+	if header.has("physics"):
+		var physics: Variant = _whole(header["physics"], 1, MAX_PHYSICS)
+		if physics == null:
+			return (
+				'"physics" (the physics version) must be a whole number from 1 to %d'
+				% (MAX_PHYSICS)
+			)
+		replay.physics_version = physics
 	var problem := _read_names(header, replay)
 	if not problem.is_empty():
 		return problem

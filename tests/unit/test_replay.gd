@@ -51,7 +51,8 @@ class TestFormat:
 		replay.records.append(["tilt", 1, 3, 0, 5])
 		var text := Writer.write(replay)
 		assert_string_contains(text, '["tilts","')
-		assert_string_contains(text, '{"replay": 2,', "files are written in format 2")
+		assert_string_contains(text, '{"replay": 3,', "files are written in format 3")
+		assert_string_contains(text, '"physics": %d}' % Replay.PHYSICS_VERSION)
 		var read := Reader.read(text)
 		assert_true(read.has("replay"), str(read.get("error")))
 		assert_eq((read["replay"] as Replay).records, replay.records)
@@ -73,11 +74,14 @@ class TestFormat:
 				var tilt := Replay.frame_tilt(record, frame)
 				var steps := Replay.frame_steps(record, frame)
 				lines.append(JSON.stringify(["tilt", 1, steps, tilt.x, tilt.y]))
-		var text := Writer.write(replay).get_slice("\n", 0).replace('"replay": 2', '"replay": 1')
+		var text := Writer.write(replay).get_slice("\n", 0).replace('"replay": 3', '"replay": 1')
+		text = text.replace(', "physics": %d' % Replay.PHYSICS_VERSION, "")
 		var read := Reader.read(text + "\n" + "\n".join(lines) + "\n")
 		assert_true(read.has("replay"), str(read.get("error")))
 		var old: Replay = read["replay"]
 		assert_eq(old.format_version, 1)
+		assert_eq(old.physics_version, 1, "files before format 3 were recorded with physics 1")
+		old.physics_version = Replay.PHYSICS_VERSION  # recorded just now, by this build
 		var played := ReplayPlayer.new(old, level).play_to_end()
 		assert_true(played["match"], str(played))
 
@@ -231,6 +235,35 @@ class TestCommand:
 		assert_eq(ReplayCli.run({"replay": TEMP}), 2)
 		var found := ReplayStore.find_board(replay)
 		assert_string_contains(str(found.get("error")), "has changed since the replay was recorded")
+
+	func test_a_run_from_another_physics_version_exits_2_naming_both() -> void:
+		var replay := _recorded()
+		replay.physics_version = Replay.PHYSICS_VERSION + 1
+		ReplayStore.save(replay, TEMP)
+		var read: Replay = ReplayStore.read_file(TEMP)["replay"]
+		assert_eq(read.physics_version, Replay.PHYSICS_VERSION + 1, "read back as written")
+		assert_eq(ReplayCli.run({"replay": TEMP}), 2)
+		assert_string_contains(
+			read.physics_problem(),
+			(
+				"recorded with physics version %d and this game runs version %d"
+				% [Replay.PHYSICS_VERSION + 1, Replay.PHYSICS_VERSION]
+			)
+		)
+
+	func test_the_physics_field_belongs_to_format_3_and_up() -> void:
+		var header := Writer.write(_recorded()).get_slice("\n", 0)
+		var physics := ', "physics": %d' % Replay.PHYSICS_VERSION
+		var cases := {
+			header.replace(physics, ""): 'the header has no "physics"',
+			header.replace('"replay": 3', '"replay": 2'): '"physics" came with format 3',
+			header.replace(physics, ', "physics": 0'): '"physics" (the physics version) must',
+			header.replace(physics, ', "physics": "2"'): '"physics" (the physics version) must',
+			header.replace(physics, ', "physics": 1e300'): '"physics" (the physics version) must',
+		}
+		for text: String in cases:
+			var error := str(Reader.read(text + "\n").get("error"))
+			assert_string_contains(error, cases[text], text)
 
 	func test_a_missing_board_or_file_exits_2() -> void:
 		var replay := _recorded()

@@ -70,7 +70,7 @@ func test_the_ghost_shows_the_best_run_step_for_step() -> void:
 	assert_eq(ghost.steps(), 0, "a reset sends it back to the start")
 
 
-func test_no_ghost_without_a_best_run_in_that_mode_or_for_a_changed_board() -> void:
+func test_no_ghost_without_a_best_run_in_that_mode_for_a_changed_board_or_physics() -> void:
 	var level := Kit.load_level(MAZE_CLASSIC)
 	assert_null(GhostRun.load_best(level, false), "nothing saved yet")
 	var replay: Replay = _first_attempt(level)[0]
@@ -79,6 +79,13 @@ func test_no_ghost_without_a_best_run_in_that_mode_or_for_a_changed_board() -> v
 	replay.board_hash = "f".repeat(64)
 	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
 	assert_null(GhostRun.load_best(level, false), "the board changed since: no ghost")
+	replay.board_hash = Replay.content_hash(level)
+	replay.physics_version = Replay.PHYSICS_VERSION + 1
+	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
+	assert_null(GhostRun.load_best(level, false), "another physics version rolls differently")
+	replay.physics_version = Replay.PHYSICS_VERSION
+	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
+	assert_not_null(GhostRun.load_best(level, false), "the same run under this physics: a ghost")
 
 
 func test_the_ghost_setting_is_saved_and_read_back() -> void:
