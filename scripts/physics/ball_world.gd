@@ -41,7 +41,6 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const MotionStage := preload("res://scripts/physics/motion_stage.gd")
-const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const StageClock := preload("res://scripts/physics/stage_clock.gd")
 
@@ -250,9 +249,10 @@ func take_step_paths() -> Dictionary:
 
 
 ## Runs one step of `dt` seconds, then emits its events in order. The stages: integrate
-## (gravity), broad phase (touching ball pairs), ball-ball solve, sleep (sleepers stay or
-## wake), motion (per ball: friction and speed cap, then substeps with the narrow phase per
-## shape kind and one contact response, then rest, sleep and sensors), events.
+## (gravity), broad phase (touching ball pairs), ball-ball solve, motion (per ball: a
+## sleeper stays or wakes; an awake ball gets friction and the speed cap, then substeps with
+## the narrow phase per shape kind and one contact response, then rest, sleep and sensors),
+## events.
 func step(dt: float) -> void:
 	if not _inputs_ok(dt):
 		return
@@ -279,10 +279,8 @@ func step(dt: float) -> void:
 		_balls.woken = false
 		_woken_at_step = step_count
 	_clock.lap(StageClock.Stage.BALL_SOLVE)
-	BallSleep.settle(_balls, gravity, rolling_friction, dt, turned)
-	_clock.lap(StageClock.Stage.SLEEP)
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
-	_motion.run(tuning, gravity, rolling_friction, dt, may_sleep)
+	_motion.run(tuning, gravity, rolling_friction, dt, turned, may_sleep)
 	_clock.lap(StageClock.Stage.MOTION)
 	_events.append_array(_motion.events)
 	_event_speed.append_array(_motion.event_speed)
@@ -311,7 +309,7 @@ func advance(delta: float) -> int:
 
 
 ## Average wall time per step of each stage in µs since profile_stages was turned on, by
-## stage name (integrate, broad_phase, ball_solve, sleep, motion, events) plus "total".
+## stage name (integrate, broad_phase, ball_solve, motion, events) plus "total".
 func stage_times() -> Dictionary:
 	return _clock.per_step()
 
