@@ -291,7 +291,8 @@ func _touch_walls() -> void:
 ## faster than the bounce threshold bounces (restitution on the normal speed, tangent
 ## friction on the rest, with the normal at the moment of impact on a round surface) and
 ## queues a hit event; a persisting or gentle one slides (see below). Either
-## way it is recorded as a contact (the ball's support). Returns true on a bounce.
+## way it is recorded as a contact (the ball's support). Returns true on a bounce. (Hits
+## nobody listens to are not queued: see BallMoverState._hits_heard.)
 func respond(
 	id: int, centre: Vector2, d: Vector2, nrm: Vector2, lim: float, surface: int, index: int
 ) -> bool:
@@ -314,7 +315,9 @@ func respond(
 			vn = minf(_v.dot(nrm), 0.0)
 		var e: float = _wall_e if surface >= Surface.WALL_CAP else _pin_e
 		_v = (_v - nrm * vn) * _keep_tangent - nrm * (vn * e)
-		_queue(HIT_EVENT[surface], index, -vn)
+		var kind: int = HIT_EVENT[surface]
+		if _hits_heard[kind] != 0:
+			_queue(kind, index, -vn)
 		bounced = true
 	else:
 		# Slide: the normal speed goes, except the part that only comes from a round surface
@@ -344,7 +347,7 @@ func respond(
 func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
 	var hit: bool = not held and -vn > _threshold
-	if hit:
+	if hit and _hits_heard[BallEvents.Kind.WALL_HIT] != 0:
 		_queue(BallEvents.Kind.WALL_HIT, index, -vn)
 	_v -= nrm * vn
 	if _cur_a == ContactId.NONE or _cur_a == id:

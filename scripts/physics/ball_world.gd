@@ -280,6 +280,7 @@ func step(dt: float) -> void:
 		_woken_at_step = step_count
 	_clock.lap(StageClock.Stage.BALL_SOLVE)
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
+	_hear_hits()
 	_motion.run(tuning, gravity, rolling_friction, dt, turned, may_sleep)
 	_clock.lap(StageClock.Stage.MOTION)
 	_events.append_array(_motion.events)
@@ -317,6 +318,15 @@ func stage_times() -> Dictionary:
 ## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.
 func state_hash() -> int:
 	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
+
+
+## Tells the motion stage which hit events have listeners: hits are most of a busy board's
+## events, and one nobody hears need not be queued, gathered or emitted.
+func _hear_hits() -> void:
+	var heard: PackedByteArray = _motion.hits_heard
+	heard[BallEvents.Kind.PIN_HIT] = 1 if pin_hit.has_connections() else 0
+	heard[BallEvents.Kind.WALL_HIT] = 1 if wall_hit.has_connections() else 0
+	heard[BallEvents.Kind.RING_HIT] = 1 if ring_hit.has_connections() else 0
 
 
 func _emit_events() -> void:

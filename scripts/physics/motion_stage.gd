@@ -13,6 +13,8 @@ const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 ## This step's events (see BallEvents) and their speeds, in ball order.
 var events := PackedInt32Array()
 var event_speed := PackedFloat32Array()
+## 1 for each hit event kind that is queued (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT).
+var hits_heard := PackedByteArray([1, 1, 1])
 
 var _balls: BallStore
 var _geo: StaticGeometry
@@ -57,7 +59,7 @@ func run(
 	if lanes > 1:
 		_balls.own_buffers()
 	for lane: int in lanes:
-		_movers[lane].begin(_balls, _geo, tuning, gravity, friction, dt, may_sleep)
+		_movers[lane].begin(_balls, _geo, tuning, gravity, friction, dt, may_sleep, hits_heard)
 	_lanes.run(_move_lane, n)
 	events.resize(0)
 	event_speed.resize(0)
