@@ -1,12 +1,11 @@
 extends RefCounted
 ## Splits a per-ball stage over worker threads: balls 0..n are cut into contiguous ranges
-## ("lanes"), a few per thread, dealt out in turn: with T threads, the calling thread runs
-## lanes 0, T, 2T, ... and high-priority WorkerThreadPool tasks the others (the pool gives
-## low-priority work only a share of its threads: one thread on two cores). Dealing
-## several small lanes evens out the load, as sleeping balls and crowded cells are not
-## spread evenly; dealing them up front (rather than letting threads take the next free
-## one) keeps a pool thread that wakes late from leaving all the work to the caller.
-## Internal to scripts/physics.
+## ("lanes"), a few per thread. The calling thread and high-priority WorkerThreadPool tasks
+## (the pool gives low-priority work only a share of its threads: one thread on two cores)
+## each take the next lane not yet taken until none is left: a pool thread that wakes late,
+## or that another program holds off its core, then leaves its share to the others instead
+## of the whole stage waiting for it. Several small lanes per thread even out the load, as
+## sleeping balls and crowded cells are not spread evenly. Internal to scripts/physics.
 ##
 ## A stage run this way must read only the last state and write only its own balls (and
 ## its lane's own output buffers, merged afterwards in lane order): then the result does
@@ -26,6 +25,11 @@ var _job := Callable()
 var _count := 0
 var _lanes := 1
 var _workers := 1
+## The next lane nobody has taken yet, under _taking.
+var _next_lane := 0
+var _taking := Mutex.new()
+## True while run_by_worker() runs: the job also gets the worker's number.
+var _with_worker := false
 
 
 ## How many lanes a stage over `count` balls uses: 1 when threads is 1, and 1 inside a
@@ -39,17 +43,38 @@ func lanes_for(count: int) -> int:
 	return clampi(most_lanes, 1, threads * LANES_PER_THREAD)
 
 
+## Workers (threads, the calling one included) a stage over `count` balls runs on.
+func workers_for(count: int) -> int:
+	return mini(threads, lanes_for(count))
+
+
 ## Calls `job(lane, from, to)` once per lane, covering 0..count without overlap, and
 ## returns once every lane is done. Returns the number of lanes used.
 func run(job: Callable, count: int) -> int:
+	_with_worker = false
+	return _run(job, count)
+
+
+## As run(), but calls `job(worker, lane, from, to)`: `worker` (0 is the calling thread,
+## below workers_for(count)) lets a stage keep one set of working state per thread.
+func run_by_worker(job: Callable, count: int) -> int:
+	_with_worker = true
+	return _run(job, count)
+
+
+func _run(job: Callable, count: int) -> int:
 	var lanes: int = lanes_for(count)
 	if lanes == 1:
-		job.call(0, 0, count)
+		if _with_worker:
+			job.call(0, 0, 0, count)
+		else:
+			job.call(0, 0, count)
 		return 1
 	_job = job
 	_count = count
 	_lanes = lanes
 	_workers = mini(threads, lanes)
+	_next_lane = 0
 	var task: int = WorkerThreadPool.add_group_task(
 		_run_pool_worker, _workers - 1, _workers - 1, true, "BallWorld lanes"
 	)
@@ -67,12 +92,21 @@ func _run_pool_worker(task: int) -> void:
 	_run_lanes_of(task + 1)
 
 
-## Runs the lanes dealt to `worker` (0 is the calling thread).
+## Runs lanes on `worker` (0 is the calling thread) until none is left.
 func _run_lanes_of(worker: int) -> void:
-	for lane: int in range(worker, _lanes, _workers):
+	while true:
+		_taking.lock()
+		var lane: int = _next_lane
+		_next_lane += 1
+		_taking.unlock()
+		if lane >= _lanes:
+			return
 		# whole ball indices: lane k runs balls [count·k / lanes, count·(k+1) / lanes)
 		@warning_ignore("integer_division")
 		var first := _count * lane / _lanes
 		@warning_ignore("integer_division")
 		var past := _count * (lane + 1) / _lanes
-		_job.call(lane, first, past)
+		if _with_worker:
+			_job.call(worker, lane, first, past)
+		else:
+			_job.call(lane, first, past)
