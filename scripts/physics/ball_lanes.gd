@@ -22,14 +22,15 @@ const LANES_PER_THREAD := 4
 var threads := 1
 
 var _job := Callable()
-var _count := 0
+## Lane k covers items _bounds[k] .. _bounds[k + 1].
+var _bounds := PackedInt32Array()
 var _lanes := 1
 var _workers := 1
 ## The next lane nobody has taken yet, under _taking.
 var _next_lane := 0
 var _taking := Mutex.new()
-## True while run_by_worker() runs: the job also gets the worker's number.
-var _with_worker := false
+## True while run() runs: the job gets no worker number.
+var _without_worker := false
 
 
 ## How many lanes a stage over `count` balls uses: 1 when threads is 1, and 1 inside a
@@ -51,27 +52,43 @@ func workers_for(count: int) -> int:
 ## Calls `job(lane, from, to)` once per lane, covering 0..count without overlap, and
 ## returns once every lane is done. Returns the number of lanes used.
 func run(job: Callable, count: int) -> int:
-	_with_worker = false
-	return _run(job, count)
+	_without_worker = true
+	return _run(job, even_bounds(count, lanes_for(count)))
 
 
 ## As run(), but calls `job(worker, lane, from, to)`: `worker` (0 is the calling thread,
 ## below workers_for(count)) lets a stage keep one set of working state per thread.
 func run_by_worker(job: Callable, count: int) -> int:
-	_with_worker = true
-	return _run(job, count)
+	_without_worker = false
+	return _run(job, even_bounds(count, lanes_for(count)))
 
 
-func _run(job: Callable, count: int) -> int:
-	var lanes: int = lanes_for(count)
-	if lanes == 1:
-		if _with_worker:
-			job.call(0, 0, 0, count)
-		else:
-			job.call(0, 0, count)
-		return 1
+## As run_by_worker(), over lanes the caller cut: lane k covers items bounds[k] ..
+## bounds[k + 1] (items may be anything, e.g. rows of cells; bounds must not decrease).
+func run_spans(job: Callable, bounds: PackedInt32Array) -> int:
+	_without_worker = false
+	return _run(job, bounds)
+
+
+## Bounds of `lanes` lanes over `count` items, as even as whole items allow: lane k covers
+## count·k / lanes .. count·(k+1) / lanes.
+static func even_bounds(count: int, lanes: int) -> PackedInt32Array:
+	var bounds := PackedInt32Array()
+	bounds.resize(lanes + 1)
+	for k: int in lanes + 1:
+		@warning_ignore("integer_division")
+		bounds[k] = count * k / lanes
+	return bounds
+
+
+func _run(job: Callable, bounds: PackedInt32Array) -> int:
+	var lanes: int = bounds.size() - 1
+	if lanes == 1 or threads <= 1 or _in_pool_task():
+		for lane: int in lanes:
+			_call(job, 0, lane, bounds[lane], bounds[lane + 1])
+		return lanes
 	_job = job
-	_count = count
+	_bounds = bounds
 	_lanes = lanes
 	_workers = mini(threads, lanes)
 	_next_lane = 0
@@ -101,12 +118,11 @@ func _run_lanes_of(worker: int) -> void:
 		_taking.unlock()
 		if lane >= _lanes:
 			return
-		# whole ball indices: lane k runs balls [count·k / lanes, count·(k+1) / lanes)
-		@warning_ignore("integer_division")
-		var first := _count * lane / _lanes
-		@warning_ignore("integer_division")
-		var past := _count * (lane + 1) / _lanes
-		if _with_worker:
-			_job.call(worker, lane, first, past)
-		else:
-			_job.call(lane, first, past)
+		_call(_job, worker, lane, _bounds[lane], _bounds[lane + 1])
+
+
+func _call(job: Callable, worker: int, lane: int, from: int, to: int) -> void:
+	if _without_worker:
+		job.call(lane, from, to)
+	else:
+		job.call(worker, lane, from, to)
