@@ -23,7 +23,9 @@ signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
 signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 ## A ball bounced off the ring border.
 signal ring_hit(ball_id: int, impact_speed: float)
-## A ball touched a capturing pin (its tag in pocket_id); it has been removed.
+## A ball touched a capturing pin (the pin's tag); it has been removed.
+signal ball_captured(ball_id: int, tag: int)
+## Deprecated name of ball_captured, kept one release (emitted only while connected).
 signal ball_pocketed(ball_id: int, pocket_id: int)
 ## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
 signal ball_drained(ball_id: int)
@@ -110,9 +112,9 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
 
 
-## Deprecated name of set_drain_arc(), with tuning.gutter_slide_time as the slide time.
+## Deprecated name of set_drain_arc(), with tuning.drain_slide_time as the slide time.
 func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
-	set_drain_arc(from_deg, to_deg, bounces, tuning.gutter_slide_time)
+	set_drain_arc(from_deg, to_deg, bounces, tuning.drain_slide_time)
 
 
 ## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.

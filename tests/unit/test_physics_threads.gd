@@ -10,7 +10,7 @@ func _pachinko_world(threads: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = threads
 	w.set_ring(Vector2.ZERO, 220.0)
-	w.set_gutter(60.0, 120.0, 3)
+	w.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
 	w.add_wall(Vector2(-150, 60), Vector2(-20, 100), 3.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 7
@@ -48,7 +48,7 @@ func _run(w: BallWorld, steps: int) -> Array:
 	w.pin_hit.connect(func(b: int, p: int, s: float) -> void: log.append(["pin", b, p, s]))
 	w.wall_hit.connect(func(b: int, k: int, s: float) -> void: log.append(["wall", b, k, s]))
 	w.ring_hit.connect(func(b: int, s: float) -> void: log.append(["ring", b, s]))
-	w.ball_pocketed.connect(func(b: int, p: int) -> void: log.append(["pocket", b, p]))
+	w.ball_captured.connect(func(b: int, p: int) -> void: log.append(["pocket", b, p]))
 	w.ball_drained.connect(func(b: int) -> void: log.append(["drain", b]))
 	w.ball_reached_goal.connect(func(b: int, g: int) -> void: log.append(["goal", b, g]))
 	for _i: int in steps:
