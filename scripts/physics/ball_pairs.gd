@@ -28,6 +28,9 @@ const SORT_MASK := (1 << 21) - 1
 const SORT_SENTINEL := 0x7fffffffffffffff
 ## Rows of cells per stripe: at least 2, or stripes of one parity could share a ball.
 const STRIPE_ROWS := 2
+## Fewer pairs than this (of one parity) are answered on the world's thread: handing them
+## to the threads would cost more than it saves (the same result either way).
+const PAIRS_WORTH_THREADS := 64
 
 ## Each stripe's touching pairs, as (i, j) slot pairs in key order.
 var stripe_pairs: Array[PackedInt32Array] = []
@@ -46,6 +49,8 @@ var _stripe_first := PackedInt32Array()
 var _lane_bounds := PackedInt32Array()
 ## True while find() also answers the even stripes it has listed.
 var _solve_even := false
+## Pairs find() listed in each lane's stripes, by parity: lane k's at [2k] (even), [2k + 1].
+var _lane_pair_counts := PackedInt32Array()
 ## The parity of stripes solve_stripes() answers.
 var _parity := 0
 
@@ -66,6 +71,7 @@ func find(b: BallStore, g: StaticGeometry, lanes: BallLanes, solve_even: bool) -
 	var n: int = b.ids.size()
 	if n < 2:
 		_lane_bounds = PackedInt32Array([0, 0])
+		_lane_pair_counts = PackedInt32Array([0, 0])
 		return
 	_pos = b.pos
 	_rad = b.radius
@@ -84,13 +90,24 @@ func find(b: BallStore, g: StaticGeometry, lanes: BallLanes, solve_even: bool) -
 	_keys.sort()
 	_cut_stripes(g.rows, n, lanes.lanes_for(n))
 	_solve_even = solve_even
+	_lane_pair_counts.resize(2 * (_lane_bounds.size() - 1))
+	_lane_pair_counts.fill(0)
 	lanes.run_spans(_find_stripes, _lane_bounds)
 
 
-## Answers the pairs of every stripe of `parity` (0 even, 1 odd), side by side.
+## Answers the pairs of every stripe of `parity` (0 even, 1 odd), side by side; a few
+## pairs on the world's thread.
 func solve_stripes(lanes: BallLanes, parity: int) -> void:
 	_parity = parity
-	lanes.run_spans(_solve_stripes, _lane_bounds)
+	var count := 0
+	for k: int in range(parity, _lane_pair_counts.size(), 2):
+		count += _lane_pair_counts[k]
+	if count == 0:
+		return
+	if count < PAIRS_WORTH_THREADS:
+		_solve_stripes(0, 0, 0, _lane_bounds[_lane_bounds.size() - 1])
+	else:
+		lanes.run_spans(_solve_stripes, _lane_bounds)
 
 
 ## Hands the step's supports to the store; runs every step, after the solve.
@@ -117,7 +134,7 @@ func _cut_stripes(rows: int, n: int, lanes: int) -> void:
 	_lane_bounds[lanes] = stripes
 
 
-func _find_stripes(_worker: int, _lane: int, from: int, to: int) -> void:
+func _find_stripes(_worker: int, lane: int, from: int, to: int) -> void:
 	for s: int in range(from, to):
 		var first: int = _stripe_first[s]
 		var past: int = _stripe_first[s + 1]
@@ -125,7 +142,11 @@ func _find_stripes(_worker: int, _lane: int, from: int, to: int) -> void:
 			continue
 		var pairs: PackedInt32Array = stripe_pairs[s]
 		_find_in_range(pairs, first, past)
-		if _solve_even and s % 2 == 0 and not pairs.is_empty():
+		if pairs.is_empty():
+			continue
+		@warning_ignore("integer_division")
+		_lane_pair_counts[2 * lane + s % 2] += pairs.size() / 2
+		if _solve_even and s % 2 == 0:
 			_solve.solve_pairs(pairs)
 
 
