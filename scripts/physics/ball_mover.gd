@@ -106,6 +106,9 @@ func _move_ball(i: int) -> void:
 		_push_step = Vector2.ZERO
 	_h = _dt / steps
 	_p_start = _p
+	# The cell the ball is in (for its broad-phase key), while no contact has moved it since.
+	var c := 0
+	var cell_stale := true
 	for sub: int in steps:
 		if _tracing and sub > 0:
 			trace_ball.append(i)
@@ -114,7 +117,7 @@ func _move_ball(i: int) -> void:
 		if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
 			_touch_ring()
 		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		var c: int = at.y * _cols + at.x
+		c = at.y * _cols + at.x
 		var k0 := 0
 		var k1: int = _pin_items.size()
 		if _zoned:
@@ -128,8 +131,10 @@ func _move_ball(i: int) -> void:
 				_touch_pin(k, d, lim)
 				moved = true
 		# A ball no pin moved is still in cell c: an empty wall cell needs no call.
+		cell_stale = moved
 		if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
 			_touch_walls()
+			cell_stale = true
 		if _gone:
 			break
 	# Write back. A ball touching nothing now or last step keeps its contact slots as they
@@ -141,8 +146,10 @@ func _move_ball(i: int) -> void:
 	# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
 	# stale anyway (no broad phase ran: it bins every ball again before it reads them).
 	if _keyed:
-		var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		_cell_keys[i] = ((cell.y * _cols + cell.x) << BallPairs.SORT_SHIFT) | i
+		if cell_stale:
+			var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+			c = at.y * _cols + at.x
+		_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
 
