@@ -96,7 +96,7 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	_world.ball_contacts = false
 	if _plan.bonus_open:
 		_open_bonus_parts()
-	_world.ball_pocketed.connect(_on_pocketed)
+	_world.ball_captured.connect(_on_pocketed)
 	_world.ball_drained.connect(_on_drained)
 	_world.ball_entered_zone.connect(_on_zone)
 	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)

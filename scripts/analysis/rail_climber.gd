@@ -40,7 +40,7 @@ func climb(levels: PackedInt32Array) -> RailExitTable:
 	_world.ball_contacts = false
 	_world.ball_entered_zone.connect(_on_zone)
 	_world.ball_drained.connect(_on_gone)
-	_world.ball_pocketed.connect(_on_pocketed)
+	_world.ball_captured.connect(_on_pocketed)
 	var start := LaunchRail.launch_position(_level)
 	var direction := LaunchRail.launch_direction(_level)
 	var start_angle := (start - _level.ring_center).angle()

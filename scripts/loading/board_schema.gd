@@ -136,11 +136,13 @@ const TUNING_RANGES := {
 	"bounce_threshold": [0.0, 10000.0],
 	"rest_speed": [0.0, 10000.0],
 	"sleep_time": [0.0, 60.0],
-	"gutter_slide_time": [0.0, 60.0],
+	"drain_slide_time": [0.0, 60.0],
 	"speed_cap": [0, 1],  # PhysicsTuning.SpeedCap
 	"friction_against": [0, 1],  # PhysicsTuning.FrictionAgainst
 	"wall_cap_contact": [0, 1],  # PhysicsTuning.CapContact
 }
+## Old names of tuning fields a file may still use (read as the new name, never written).
+const RENAMED_TUNING := {"gutter_slide_time": "drain_slide_time"}
 ## A tuning field with no range of its own above gets this one.
 const TUNING_DEFAULT_RANGE := [-1000000.0, 1000000.0]
 

@@ -185,9 +185,10 @@ static func _check_tuning(value: Variant) -> String:
 	var known := Schema.tuning_fields()
 	var tuning: Dictionary = value
 	for key: Variant in tuning.keys():
-		if not known.has(key):
+		var field: Variant = Schema.RENAMED_TUNING.get(key, key)
+		if not known.has(field):
 			return 'unknown tuning field "%s"' % key
-		var spec: Array = known[key]
+		var spec: Array = known[field]
 		var type: int = spec[0]
 		var type_name := (
 			"vec2" if type == TYPE_VECTOR2 else ("int" if type == TYPE_INT else "float")

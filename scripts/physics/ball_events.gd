@@ -19,7 +19,9 @@ static func emit_all(world: BallWorld, ev: PackedInt32Array, evs: PackedFloat32A
 			Kind.RING_HIT:
 				world.ring_hit.emit(id, evs[e])
 			Kind.CAPTURED:
-				world.ball_pocketed.emit(id, index)
+				world.ball_captured.emit(id, index)
+				if world.ball_pocketed.has_connections():
+					world.ball_pocketed.emit(id, index)
 			Kind.DRAINED:
 				world.ball_drained.emit(id)
 			Kind.HOLE:

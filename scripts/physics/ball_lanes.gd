@@ -1,12 +1,11 @@
 extends RefCounted
 ## Splits a per-ball stage over worker threads: balls 0..n are cut into contiguous ranges
-## ("lanes"), a few per thread, dealt out in turn: with T threads, the calling thread runs
-## lanes 0, T, 2T, ... and high-priority WorkerThreadPool tasks the others (the pool gives
-## low-priority work only a share of its threads: one thread on two cores). Dealing
-## several small lanes evens out the load, as sleeping balls and crowded cells are not
-## spread evenly; dealing them up front (rather than letting threads take the next free
-## one) keeps a pool thread that wakes late from leaving all the work to the caller.
-## Internal to scripts/physics.
+## ("lanes"), a few per thread. The calling thread and high-priority WorkerThreadPool tasks
+## (the pool gives low-priority work only a share of its threads: one thread on two cores)
+## each take the next lane not yet taken until none is left: a pool thread that wakes late,
+## or that another program holds off its core, then leaves its share to the others instead
+## of the whole stage waiting for it. Several small lanes per thread even out the load, as
+## sleeping balls and crowded cells are not spread evenly. Internal to scripts/physics.
 ##
 ## A stage run this way must read only the last state and write only its own balls (and
 ## its lane's own output buffers, merged afterwards in lane order): then the result does
@@ -23,9 +22,15 @@ const LANES_PER_THREAD := 4
 var threads := 1
 
 var _job := Callable()
-var _count := 0
+## Lane k covers items _bounds[k] .. _bounds[k + 1].
+var _bounds := PackedInt32Array()
 var _lanes := 1
 var _workers := 1
+## The next lane nobody has taken yet, under _taking.
+var _next_lane := 0
+var _taking := Mutex.new()
+## True while run() runs: the job gets no worker number.
+var _without_worker := false
 
 
 ## How many lanes a stage over `count` balls uses: 1 when threads is 1, and 1 inside a
@@ -39,17 +44,54 @@ func lanes_for(count: int) -> int:
 	return clampi(most_lanes, 1, threads * LANES_PER_THREAD)
 
 
+## Workers (threads, the calling one included) a stage over `count` balls runs on.
+func workers_for(count: int) -> int:
+	return mini(threads, lanes_for(count))
+
+
 ## Calls `job(lane, from, to)` once per lane, covering 0..count without overlap, and
 ## returns once every lane is done. Returns the number of lanes used.
 func run(job: Callable, count: int) -> int:
-	var lanes: int = lanes_for(count)
-	if lanes == 1:
-		job.call(0, 0, count)
-		return 1
+	_without_worker = true
+	return _run(job, even_bounds(count, lanes_for(count)))
+
+
+## As run(), but calls `job(worker, lane, from, to)`: `worker` (0 is the calling thread,
+## below workers_for(count)) lets a stage keep one set of working state per thread.
+func run_by_worker(job: Callable, count: int) -> int:
+	_without_worker = false
+	return _run(job, even_bounds(count, lanes_for(count)))
+
+
+## As run_by_worker(), over lanes the caller cut: lane k covers items bounds[k] ..
+## bounds[k + 1] (items may be anything, e.g. rows of cells; bounds must not decrease).
+func run_spans(job: Callable, bounds: PackedInt32Array) -> int:
+	_without_worker = false
+	return _run(job, bounds)
+
+
+## Bounds of `lanes` lanes over `count` items, as even as whole items allow: lane k covers
+## count·k / lanes .. count·(k+1) / lanes.
+static func even_bounds(count: int, lanes: int) -> PackedInt32Array:
+	var bounds := PackedInt32Array()
+	bounds.resize(lanes + 1)
+	for k: int in lanes + 1:
+		@warning_ignore("integer_division")
+		bounds[k] = count * k / lanes
+	return bounds
+
+
+func _run(job: Callable, bounds: PackedInt32Array) -> int:
+	var lanes: int = bounds.size() - 1
+	if lanes == 1 or threads <= 1 or _in_pool_task():
+		for lane: int in lanes:
+			_call(job, 0, lane, bounds[lane], bounds[lane + 1])
+		return lanes
 	_job = job
-	_count = count
+	_bounds = bounds
 	_lanes = lanes
 	_workers = mini(threads, lanes)
+	_next_lane = 0
 	var task: int = WorkerThreadPool.add_group_task(
 		_run_pool_worker, _workers - 1, _workers - 1, true, "BallWorld lanes"
 	)
@@ -67,12 +109,20 @@ func _run_pool_worker(task: int) -> void:
 	_run_lanes_of(task + 1)
 
 
-## Runs the lanes dealt to `worker` (0 is the calling thread).
+## Runs lanes on `worker` (0 is the calling thread) until none is left.
 func _run_lanes_of(worker: int) -> void:
-	for lane: int in range(worker, _lanes, _workers):
-		# whole ball indices: lane k runs balls [count·k / lanes, count·(k+1) / lanes)
-		@warning_ignore("integer_division")
-		var first := _count * lane / _lanes
-		@warning_ignore("integer_division")
-		var past := _count * (lane + 1) / _lanes
-		_job.call(lane, first, past)
+	while true:
+		_taking.lock()
+		var lane: int = _next_lane
+		_next_lane += 1
+		_taking.unlock()
+		if lane >= _lanes:
+			return
+		_call(_job, worker, lane, _bounds[lane], _bounds[lane + 1])
+
+
+func _call(job: Callable, worker: int, lane: int, from: int, to: int) -> void:
+	if _without_worker:
+		job.call(lane, from, to)
+	else:
+		job.call(worker, lane, from, to)

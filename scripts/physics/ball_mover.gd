@@ -106,6 +106,9 @@ func _move_ball(i: int) -> void:
 		_push_step = Vector2.ZERO
 	_h = _dt / steps
 	_p_start = _p
+	# The cell the ball is in (for its broad-phase key), while no contact has moved it since.
+	var c := 0
+	var cell_stale := true
 	for sub: int in steps:
 		if _tracing and sub > 0:
 			trace_ball.append(i)
@@ -114,7 +117,7 @@ func _move_ball(i: int) -> void:
 		if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
 			_touch_ring()
 		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		var c: int = at.y * _cols + at.x
+		c = at.y * _cols + at.x
 		var k0 := 0
 		var k1: int = _pin_items.size()
 		if _zoned:
@@ -128,8 +131,10 @@ func _move_ball(i: int) -> void:
 				_touch_pin(k, d, lim)
 				moved = true
 		# A ball no pin moved is still in cell c: an empty wall cell needs no call.
+		cell_stale = moved
 		if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
 			_touch_walls()
+			cell_stale = true
 		if _gone:
 			break
 	# Write back. A ball touching nothing now or last step keeps its contact slots as they
@@ -141,8 +146,10 @@ func _move_ball(i: int) -> void:
 	# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
 	# stale anyway (no broad phase ran: it bins every ball again before it reads them).
 	if _keyed:
-		var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		_cell_keys[i] = ((cell.y * _cols + cell.x) << BallPairs.SORT_SHIFT) | i
+		if cell_stale:
+			var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+			c = at.y * _cols + at.x
+		_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
 
@@ -291,7 +298,8 @@ func _touch_walls() -> void:
 ## faster than the bounce threshold bounces (restitution on the normal speed, tangent
 ## friction on the rest, with the normal at the moment of impact on a round surface) and
 ## queues a hit event; a persisting or gentle one slides (see below). Either
-## way it is recorded as a contact (the ball's support). Returns true on a bounce.
+## way it is recorded as a contact (the ball's support). Returns true on a bounce. (Hits
+## nobody listens to are not queued: see BallMoverState._hits_heard.)
 func respond(
 	id: int, centre: Vector2, d: Vector2, nrm: Vector2, lim: float, surface: int, index: int
 ) -> bool:
@@ -314,7 +322,9 @@ func respond(
 			vn = minf(_v.dot(nrm), 0.0)
 		var e: float = _wall_e if surface >= Surface.WALL_CAP else _pin_e
 		_v = (_v - nrm * vn) * _keep_tangent - nrm * (vn * e)
-		_queue(HIT_EVENT[surface], index, -vn)
+		var kind: int = HIT_EVENT[surface]
+		if _hits_heard[kind] != 0:
+			_queue(kind, index, -vn)
 		bounced = true
 	else:
 		# Slide: the normal speed goes, except the part that only comes from a round surface
@@ -344,7 +354,7 @@ func respond(
 func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
 	var hit: bool = not held and -vn > _threshold
-	if hit:
+	if hit and _hits_heard[BallEvents.Kind.WALL_HIT] != 0:
 		_queue(BallEvents.Kind.WALL_HIT, index, -vn)
 	_v -= nrm * vn
 	if _cur_a == ContactId.NONE or _cur_a == id:

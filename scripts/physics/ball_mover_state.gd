@@ -40,6 +40,9 @@ var _drain_time := PackedFloat32Array()
 var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
 var _cell_keys := PackedInt64Array()
+## 1 for each hit event kind (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT) some signal
+## handler listens to: the others are not queued (on a busy board most events are hits).
+var _hits_heard := PackedByteArray([1, 1, 1])
 ## False when the store's broad-phase keys are stale this step: then none are written.
 var _keyed := true
 var _g: StaticGeometry
@@ -120,7 +123,8 @@ var _ring_lim2 := 0.0
 
 
 ## Takes this step's state and constants and clears the lane's buffers. Called on the
-## world's thread before the lanes run; `may_sleep` is false just after a wake-up.
+## world's thread before the lanes run; `may_sleep` is false just after a wake-up;
+## `hits_heard` has 1 for each hit event kind to queue (see _hits_heard).
 func begin(
 	b: BallStore,
 	g: StaticGeometry,
@@ -128,8 +132,10 @@ func begin(
 	gravity: Vector2,
 	friction: Vector2,
 	dt: float,
-	may_sleep: bool
+	may_sleep: bool,
+	hits_heard: PackedByteArray
 ) -> void:
+	_hits_heard = hits_heard
 	_take_balls(b)
 	_take_geometry(g)
 	_gravity = gravity

@@ -1,7 +1,9 @@
 extends RefCounted
 ## The sleepers' part of a BallWorld step: each sleeping ball either stays put or wakes and
-## moves with the awake balls in that same step. Internal to scripts/physics; BallWorld runs
-## it once per step, before the motion phase (which skips every ball still asleep).
+## moves with the awake balls in that same step. Internal to scripts/physics; the motion
+## stage runs it on each lane's balls just before moving them (the mover skips every ball
+## still asleep). Each sleeper reads and writes only its own slots, so lanes may run it
+## side by side.
 ##
 ## A sleeper keeps the normals of what held it as it fell asleep (BallStore.support_static,
 ## support_static2, sleep_ball_normal). When gravity or friction changed, it stays asleep
@@ -18,18 +20,15 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const HELD_SLACK := 1e-3
 
 
-## Settles every sleeper for one step of `dt` s under `gravity` with per-axis rolling
-## `friction` (px/s²; below zero counts as zero, as in the motion stage). `turned` says gravity
-## or friction changed since the last step. A sleeper that stays gets its velocity zeroed
-## (the gravity phase added this step's pull) and `dt` more rest; one that wakes keeps its
-## velocity and moves this step.
+## Settles the sleepers in slots from..to for one step of `dt` s under `gravity` with
+## per-axis rolling `friction` (px/s²; below zero counts as zero, as in the motion stage).
+## `turned` says gravity or friction changed since the last step. A sleeper that stays gets
+## its velocity zeroed (the gravity phase added this step's pull) and `dt` more rest; one
+## that wakes keeps its velocity and moves this step.
 static func settle(
-	b: BallStore, gravity: Vector2, friction: Vector2, dt: float, turned: bool
+	b: BallStore, from: int, to: int, gravity: Vector2, friction: Vector2, dt: float, turned: bool
 ) -> void:
 	var asleep: PackedByteArray = b.asleep
-	var n: int = asleep.size()
-	if asleep.count(0) == n:
-		return
 	var vel: PackedVector2Array = b.vel
 	var rest: PackedFloat32Array = b.rest
 	var touching: PackedByteArray = b.touching
@@ -40,7 +39,7 @@ static func settle(
 	var slack: float = HELD_SLACK * gravity.length()
 	var fx: float = maxf(friction.x, 0.0) + slack
 	var fy: float = maxf(friction.y, 0.0) + slack
-	for i: int in n:
+	for i: int in range(from, to):
 		var kind: int = asleep[i]
 		if kind == 0:
 			continue
@@ -72,6 +71,3 @@ static func settle(
 		else:
 			asleep[i] = 0
 			rest[i] = 0.0
-	b.vel = vel
-	b.rest = rest
-	b.asleep = asleep

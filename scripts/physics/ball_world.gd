@@ -23,7 +23,9 @@ signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
 signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 ## A ball bounced off the ring border.
 signal ring_hit(ball_id: int, impact_speed: float)
-## A ball touched a capturing pin (its tag in pocket_id); it has been removed.
+## A ball touched a capturing pin (the pin's tag); it has been removed.
+signal ball_captured(ball_id: int, tag: int)
+## Deprecated name of ball_captured, kept one release (emitted only while connected).
 signal ball_pocketed(ball_id: int, pocket_id: int)
 ## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
 signal ball_drained(ball_id: int)
@@ -41,7 +43,6 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const MotionStage := preload("res://scripts/physics/motion_stage.gd")
-const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const StageClock := preload("res://scripts/physics/stage_clock.gd")
 
@@ -111,9 +112,9 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
 
 
-## Deprecated name of set_drain_arc(), with tuning.gutter_slide_time as the slide time.
+## Deprecated name of set_drain_arc(), with tuning.drain_slide_time as the slide time.
 func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
-	set_drain_arc(from_deg, to_deg, bounces, tuning.gutter_slide_time)
+	set_drain_arc(from_deg, to_deg, bounces, tuning.drain_slide_time)
 
 
 ## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
@@ -250,9 +251,10 @@ func take_step_paths() -> Dictionary:
 
 
 ## Runs one step of `dt` seconds, then emits its events in order. The stages: integrate
-## (gravity), broad phase (touching ball pairs), ball-ball solve, sleep (sleepers stay or
-## wake), motion (per ball: friction and speed cap, then substeps with the narrow phase per
-## shape kind and one contact response, then rest, sleep and sensors), events.
+## (gravity), broad phase (touching ball pairs), ball-ball solve, motion (per ball: a
+## sleeper stays or wakes; an awake ball gets friction and the speed cap, then substeps with
+## the narrow phase per shape kind and one contact response, then rest, sleep and sensors),
+## events.
 func step(dt: float) -> void:
 	if not _inputs_ok(dt):
 		return
@@ -265,24 +267,14 @@ func step(dt: float) -> void:
 	_clock.start()
 	_integrate(dt)
 	_clock.lap(StageClock.Stage.INTEGRATE)
-	if ball_contacts:
-		_pairs.find_pairs(_balls, _geo, _lanes)
-	else:
-		_pairs.lane_pairs.clear()
-		# No broad phase: the motion stage skips the keys, and they are binned again when
-		# ball contacts come back on.
-		_balls.keys_valid = false
-	_clock.lap(StageClock.Stage.BROAD_PHASE)
+	_ball_contacts_stages(dt)
 	var t: PhysicsTuning = tuning
-	_pairs.solve(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
 	if _balls.woken:
 		_balls.woken = false
 		_woken_at_step = step_count
-	_clock.lap(StageClock.Stage.BALL_SOLVE)
-	BallSleep.settle(_balls, gravity, rolling_friction, dt, turned)
-	_clock.lap(StageClock.Stage.SLEEP)
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
-	_motion.run(tuning, gravity, rolling_friction, dt, may_sleep)
+	_hear_hits()
+	_motion.run(tuning, gravity, rolling_friction, dt, turned, may_sleep)
 	_clock.lap(StageClock.Stage.MOTION)
 	_events.append_array(_motion.events)
 	_event_speed.append_array(_motion.event_speed)
@@ -290,6 +282,29 @@ func step(dt: float) -> void:
 	step_count += 1
 	_emit_events()
 	_clock.lap(StageClock.Stage.EVENTS, true)
+
+
+## Broad phase and ball-ball solve (see BallPairs). Off the clock, the broad phase's lanes
+## answer the even stripes as they go, and a second hand-off the odd ones; while profiling,
+## the broad phase runs alone so that each stage is timed apart (the same result).
+func _ball_contacts_stages(dt: float) -> void:
+	var t: PhysicsTuning = tuning
+	_pairs.begin(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
+	if not ball_contacts:
+		# No broad phase: the motion stage skips the keys, and they are binned again when
+		# ball contacts come back on.
+		_balls.keys_valid = false
+		_clock.lap(StageClock.Stage.BROAD_PHASE)
+	elif profile_stages:
+		_pairs.find(_balls, _geo, _lanes, false)
+		_clock.lap(StageClock.Stage.BROAD_PHASE)
+		_pairs.solve_stripes(_lanes, 0)
+		_pairs.solve_stripes(_lanes, 1)
+	else:
+		_pairs.find(_balls, _geo, _lanes, true)
+		_pairs.solve_stripes(_lanes, 1)
+	_pairs.finish(_balls)
+	_clock.lap(StageClock.Stage.BALL_SOLVE)
 
 
 ## Feeds the accumulator and runs every whole step of 1 / tuning.fixed_hz it holds (at most
@@ -311,7 +326,7 @@ func advance(delta: float) -> int:
 
 
 ## Average wall time per step of each stage in µs since profile_stages was turned on, by
-## stage name (integrate, broad_phase, ball_solve, sleep, motion, events) plus "total".
+## stage name (integrate, broad_phase, ball_solve, motion, events) plus "total".
 func stage_times() -> Dictionary:
 	return _clock.per_step()
 
@@ -319,6 +334,15 @@ func stage_times() -> Dictionary:
 ## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.
 func state_hash() -> int:
 	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
+
+
+## Tells the motion stage which hit events have listeners: hits are most of a busy board's
+## events, and one nobody hears need not be queued, gathered or emitted.
+func _hear_hits() -> void:
+	var heard: PackedByteArray = _motion.hits_heard
+	heard[BallEvents.Kind.PIN_HIT] = 1 if pin_hit.has_connections() else 0
+	heard[BallEvents.Kind.WALL_HIT] = 1 if wall_hit.has_connections() else 0
+	heard[BallEvents.Kind.RING_HIT] = 1 if ring_hit.has_connections() else 0
 
 
 func _emit_events() -> void:

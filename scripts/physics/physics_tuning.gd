@@ -60,9 +60,16 @@ const FLASH_TICK := 0.03
 ## gravity change it cannot bear (its walls and friction no longer hold it), the ball under
 ## it leaves, or a ball is moved or removed. 0 turns sleeping off.
 @export var sleep_time: float = 0.1
-## Seconds of sliding ring contact inside the gutter arc that also drain a ball: a ball
+## Seconds of sliding ring contact inside the drain arc that also drain a ball: a ball
 ## that rolls instead of bouncing must leave too.
-@export var gutter_slide_time: float = 0.5
+@export var drain_slide_time: float = 0.5
+## Deprecated name of drain_slide_time, kept one release (board files written before the
+## rename still carry it; it is not stored, so files are written with the new name).
+var gutter_slide_time: float:
+	get:
+		return drain_slide_time
+	set(value):
+		drain_slide_time = value
 
 
 ## Deprecated: the game presets live in TuningPresets (scripts/world); kept one round so

@@ -3,11 +3,11 @@ extends RefCounted
 ## step's time goes. Off in play: the world only laps it while BallWorld.profile_stages is
 ## on. Internal to scripts/physics.
 
-## The stages, in the order a step runs them.
-enum Stage { INTEGRATE, BROAD_PHASE, BALL_SOLVE, SLEEP, MOTION, EVENTS }
+## The stages, in the order a step runs them (the sleepers are settled in the motion stage).
+enum Stage { INTEGRATE, BROAD_PHASE, BALL_SOLVE, MOTION, EVENTS }
 
 ## Names of the stages, as stage_times() reports them.
-const NAMES: Array[String] = ["integrate", "broad_phase", "ball_solve", "sleep", "motion", "events"]
+const NAMES: Array[String] = ["integrate", "broad_phase", "ball_solve", "motion", "events"]
 
 ## Microseconds spent per stage since the last reset, and steps timed.
 var usec := PackedInt64Array()

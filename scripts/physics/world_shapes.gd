@@ -9,7 +9,7 @@ var _geo := StaticGeometry.new()
 
 
 ## Adds a pin (a fixed circle). `tag` is the owner's number for it (-1: none); a pin that
-## `captures` removes a ball that touches it and reports ball_pocketed(ball, tag).
+## `captures` removes a ball that touches it and reports ball_captured(ball, tag).
 ## `min_speed_x` is the pin's material: after touching it, a ball keeps at least this
 ## horizontal speed in px/s (the Flash chapter's 0.5 px/tick, so no ball balances on a pin
 ## top); 0 leaves the ball alone. Returns the pin index, or -1 with an error on bad input.

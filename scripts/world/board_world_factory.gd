@@ -33,7 +33,7 @@ static func tuning_for(level: BoardLevel) -> PhysicsTuning:
 
 static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.set_ring(level.ring_center, level.ring_radius)
-	var slide_time := maxf(world.tuning.gutter_slide_time, 0.0)
+	var slide_time := maxf(world.tuning.drain_slide_time, 0.0)
 	var bounces := maxi(level.gutter_bounces, 1)
 	# The gutter: the drain arc of the ring.
 	world.set_drain_arc(level.gutter_start_deg, level.gutter_end_deg, bounces, slide_time)

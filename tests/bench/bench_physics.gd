@@ -58,8 +58,10 @@ var _threads := 1
 var _threads_identical := false
 var _thread_hashes := {}
 var _thread_scaling := {}
-## Scenario → CPU µs per step of each stage on one thread (see Ours.stage_breakdown()).
+## Scenario → CPU µs per step of each stage on one thread, and wall µs on every core (see
+## Ours.stage_breakdown()).
 var _stages := {}
+var _stages_all := {}
 ## Phase name → {"cpu_s", "wall_s", ...}, in the order the phases ran.
 var _phases := {}
 ## Scenario name → its FloorKernel (S3 has none: its balls need 17 substeps a step to stay
@@ -145,6 +147,9 @@ func _thread_extras() -> void:
 		if spec[0] in ["S1", "S2", "S4"] and _wanted(spec[0]):
 			var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
 			_stages[spec[0]] = Ours.stage_breakdown(scene, THREAD_SCALING_STEPS / 2)
+			_stages_all[spec[0]] = Ours.stage_breakdown(
+				scene, THREAD_SCALING_STEPS / 2, OS.get_processor_count()
+			)
 	_phase_end("ours stage breakdown")
 	if not _wanted("S1"):
 		return
@@ -355,6 +360,7 @@ func _finish() -> void:
 		"pin_cost_4x": Ours.pin_cost(_scale.get("pins", {})),
 		"pin_cost_4x_crush": Ours.pin_cost(_scale.get("pins_crush", {})),
 		"stages_1_thread_us": _stages,
+		"stages_all_threads_us": _stages_all,
 		"cpus_allowed": _proc_status("Cpus_allowed_list"),
 		"godot_job_budget_s": JOB_BUDGET_S,
 		"phase_seconds": _phases,

@@ -32,13 +32,13 @@ func _bonus_board() -> BoardLevel:
 func _drop(world: BallWorld, mouth: Vector2, seconds := 3.0) -> int:
 	var caught := [-1]
 	var on_pocket := func(_id: int, pocket: int) -> void: caught[0] = pocket
-	world.ball_pocketed.connect(on_pocket)
+	world.ball_captured.connect(on_pocket)
 	var id := world.spawn_ball(mouth + Vector2(0.5, -40.0), Vector2.ZERO, 5.0)
 	for step in int(seconds / DT):
 		world.step(DT)
 		if not world.has_ball(id):
 			break
-	world.ball_pocketed.disconnect(on_pocket)
+	world.ball_captured.disconnect(on_pocket)
 	world.remove_ball(id)
 	return caught[0]
 

@@ -66,7 +66,7 @@ func test_weak_shot_rolls_back_down() -> void:
 func test_gutter_drains_after_its_bounces_exactly_once() -> void:
 	var t := TuningPresets.pachinko()
 	var w := _world(t)
-	w.set_gutter(45.0, 135.0, 3)
+	w.set_drain_arc(45.0, 135.0, 3, w.tuning.drain_slide_time)
 	var drained: Array = []
 	var rings := [0]
 	w.ball_drained.connect(func(b: int) -> void: drained.append(b))
@@ -82,7 +82,7 @@ func test_gutter_drains_after_its_bounces_exactly_once() -> void:
 func test_ball_resting_in_the_gutter_still_drains() -> void:
 	var t := TuningPresets.pachinko()
 	var w := _world(t)
-	w.set_gutter(45.0, 135.0, 50)
+	w.set_drain_arc(45.0, 135.0, 50, w.tuning.drain_slide_time)
 	var drained := [0]
 	w.ball_drained.connect(func(_b: int) -> void: drained[0] += 1)
 	w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)

@@ -6,7 +6,7 @@ extends GutTest
 func _busy_world(seed_value: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.set_ring(Vector2(0, 0), 200.0)
-	w.set_gutter(60.0, 120.0, 3)
+	w.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
 	w.add_wall(Vector2(-150, 50), Vector2(-20, 90), 3.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = seed_value

@@ -3,6 +3,7 @@ extends GutTest
 ## and 4 threads must give bit-identical worlds and the same events in the same order.
 
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
+const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 
 
 ## A ring board with pins, a wall and a gutter, crowded enough for several lanes.
@@ -10,7 +11,7 @@ func _pachinko_world(threads: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = threads
 	w.set_ring(Vector2.ZERO, 220.0)
-	w.set_gutter(60.0, 120.0, 3)
+	w.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
 	w.add_wall(Vector2(-150, 60), Vector2(-20, 100), 3.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 7
@@ -48,7 +49,7 @@ func _run(w: BallWorld, steps: int) -> Array:
 	w.pin_hit.connect(func(b: int, p: int, s: float) -> void: log.append(["pin", b, p, s]))
 	w.wall_hit.connect(func(b: int, k: int, s: float) -> void: log.append(["wall", b, k, s]))
 	w.ring_hit.connect(func(b: int, s: float) -> void: log.append(["ring", b, s]))
-	w.ball_pocketed.connect(func(b: int, p: int) -> void: log.append(["pocket", b, p]))
+	w.ball_captured.connect(func(b: int, p: int) -> void: log.append(["pocket", b, p]))
 	w.ball_drained.connect(func(b: int) -> void: log.append(["drain", b]))
 	w.ball_reached_goal.connect(func(b: int, g: int) -> void: log.append(["goal", b, g]))
 	for _i: int in steps:
@@ -84,6 +85,35 @@ func test_path_recording_is_the_same_for_any_thread_count() -> void:
 	assert_gt((paths[0]["points"] as PackedVector2Array).size(), 0, "fast balls substepped")
 	assert_eq(paths[1]["slots"], paths[0]["slots"])
 	assert_eq(paths[1]["points"], paths[0]["points"])
+
+
+## A pile in a bowl: hundreds of touching pairs over many stripes, so the ball-ball solve
+## runs on the threads (more pairs than BallPairs.PAIRS_WORTH_THREADS of each parity).
+func _pile_world(threads: int) -> BallWorld:
+	var w := BallWorld.new(TuningPresets.pachinko())
+	w.threads = threads
+	w.set_ring(Vector2.ZERO, 160.0)
+	var rng := RandomNumberGenerator.new()
+	rng.seed = 5
+	for _i: int in 900:
+		var p := Vector2(rng.randf_range(-120, 120), rng.randf_range(-40, 140))
+		w.spawn_ball(p, Vector2(rng.randf_range(-50, 50), 0), 4.0)
+	return w
+
+
+func test_a_pile_solved_on_the_threads_is_bit_identical_for_1_2_and_4_threads() -> void:
+	var worlds: Array[BallWorld] = [_pile_world(1), _pile_world(2), _pile_world(4)]
+	var most_pairs := 0
+	for _s: int in 90:
+		for w: BallWorld in worlds:
+			w.step(1.0 / 240.0)
+		var pairs := 0
+		for list: PackedInt32Array in worlds[2]._pairs.stripe_pairs:
+			pairs += list.size() >> 1
+		most_pairs = maxi(most_pairs, pairs)
+	assert_gt(most_pairs, 4 * BallPairs.PAIRS_WORTH_THREADS, "the pile has pairs for the threads")
+	assert_eq(worlds[1].state_hash(), worlds[0].state_hash(), "2 threads")
+	assert_eq(worlds[2].state_hash(), worlds[0].state_hash(), "4 threads")
 
 
 func test_lanes_cover_every_ball_once_on_several_threads() -> void:

@@ -2,6 +2,9 @@ extends GutTest
 ## Seed constants converted to px and seconds, the tilt → gravity / friction mapping, the
 ## speed cap, and friction that only slows.
 
+const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const Writer := preload("res://scripts/loading/board_text_writer.gd")
+
 
 func test_pachinko_defaults_convert_the_flash_constants() -> void:
 	var t := TuningPresets.pachinko()
@@ -149,3 +152,28 @@ func test_board_files_may_choose_the_seed_options() -> void:
 	assert_eq(other.tuning.speed_cap, PhysicsTuning.SpeedCap.TOTAL, "others keep theirs")
 	var fields: Dictionary = load("res://scripts/loading/board_schema.gd").tuning_fields()
 	assert_eq(fields["speed_cap"][2], 1.0, "the schema bounds the option to its values")
+
+
+func test_gutter_slide_time_is_the_deprecated_name_of_drain_slide_time() -> void:
+	var t := PhysicsTuning.new()
+	t.gutter_slide_time = 1.25
+	assert_eq(t.drain_slide_time, 1.25, "the old name writes the new field")
+	t.drain_slide_time = 0.75
+	assert_eq(t.gutter_slide_time, 0.75, "and reads it")
+
+
+func test_a_board_file_with_the_old_gutter_slide_time_key_still_reads() -> void:
+	var path := "res://levels/pachinko/classic.board"
+	var text := FileAccess.get_file_as_string(path)
+	var old_text := text.replace('"drain_slide_time"', '"gutter_slide_time"')
+	assert_string_contains(old_text, '"gutter_slide_time": ')
+	old_text = old_text.replace('"gutter_slide_time": 0.5', '"gutter_slide_time": 2.5')
+	var read: Dictionary = Reader.read(old_text)
+	assert_false(read.has("error"), str(read.get("error", "")))
+	if read.has("error"):
+		return
+	var level: BoardLevel = read["level"]
+	assert_eq(level.tuning.drain_slide_time, 2.5, "read as drain_slide_time")
+	var written: String = Writer.write(level)
+	assert_string_contains(written, '"drain_slide_time": 2.5')
+	assert_false(written.contains("gutter_slide_time"), "written with the new name only")

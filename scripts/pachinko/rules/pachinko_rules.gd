@@ -106,7 +106,7 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 	_launch_pos = LaunchRail.launch_position(board)
 	_launch_dir = LaunchRail.launch_direction(board)
 	_clear_speed = LaunchCalibration.clear_speed(board)
-	world.ball_pocketed.connect(_on_ball_pocketed)
+	world.ball_captured.connect(_on_ball_pocketed)
 	world.ball_drained.connect(_on_ball_drained)
 	world.ball_entered_zone.connect(_on_ball_entered_zone)
 

@@ -98,13 +98,18 @@ static func _print_summary(out: Dictionary) -> void:
 			% [out["pin_cost_4x"], out["pin_cost_4x_crush"]]
 		)
 	)
-	print("one thread, CPU us per step by stage:")
-	var stages: Dictionary = out["stages_1_thread_us"]
-	for scene: String in stages:
-		var parts := PackedStringArray()
-		for stage: String in stages[scene]:
-			parts.append("%s %.0f" % [stage, stages[scene][stage]])
-		print("  %s: %s" % [scene, ", ".join(parts)])
+	var headings := {
+		"stages_1_thread_us": "one thread, CPU us per step by stage:",
+		"stages_all_threads_us": "every core, wall us per step by stage:",
+	}
+	for key: String in headings:
+		print(headings[key])
+		var stages: Dictionary = out.get(key, {})
+		for scene: String in stages:
+			var parts := PackedStringArray()
+			for stage: String in stages[scene]:
+				parts.append("%s %.0f" % [stage, stages[scene][stage]])
+			print("  %s: %s" % [scene, ", ".join(parts)])
 
 
 # Seconds per phase and the total.

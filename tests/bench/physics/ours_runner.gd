@@ -223,12 +223,13 @@ static func pin_sweep(ball_r: float) -> Dictionary:
 	return by_pins
 
 
-## Where one thread's time goes on `scene`: CPU µs per step of each stage (see
-## BallWorld.stage_times()) over `steps` steps past the warm-up, harness rules included.
-static func stage_breakdown(scene: Dictionary, steps: int) -> Dictionary:
+## Where the time goes on `scene`: µs per step of each stage (see BallWorld.stage_times())
+## over `steps` steps past the warm-up, harness rules included. One thread (`threads` 1):
+## that thread's CPU time; more: wall time (the pool threads' CPU is not the world's).
+static func stage_breakdown(scene: Dictionary, steps: int, threads := 1) -> Dictionary:
 	var w := build_world(scene)
-	w.threads = 1
-	w.profile_cpu_time = true
+	w.threads = threads
+	w.profile_cpu_time = threads == 1
 	var side := OursSide.new(w)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = RULES_SEED

@@ -1,0 +1,153 @@
+extends RefCounted
+## The ball–ball solve: answers touching pairs between equal masses, with velocity
+## impulses now and separation as a displacement (`push`) that the motion stage sweeps with
+## the ball's own travel. Internal to scripts/physics; BallPairs owns one and hands it the
+## pairs of one stripe of cell rows at a time.
+##
+## Within a list the order matters (a ball's new velocity feeds its next pair), so each list
+## is answered in order on one thread. Lists of stripes that share no ball may be answered
+## side by side: the solve writes only the two balls of each pair, and reads only them.
+
+const BallStore := preload("res://scripts/physics/ball_store.gd")
+
+## A support counts when its normal is within about 60° of the line between two balls.
+const SUPPORT_COS := 0.5
+## Share of a ball-ball overlap each ball moves apart per step.
+const PUSH_SHARE := 0.4
+## Overlap (px) two balls keep rather than being pushed apart: a resting pair stays in
+## touch, so each step's contact takes gravity's approach away. Pushed fully apart, it
+## would fall back in every step and never settle.
+const CONTACT_SLOP := 0.05
+## Distances below this count as zero (px).
+const EPS := 1e-6
+
+# The step's view of the balls and its constants (set by begin()).
+var _pos := PackedVector2Array()
+var _rad := PackedFloat32Array()
+var _vel := PackedVector2Array()
+var _push := PackedVector2Array()
+var _touching := PackedByteArray()
+var _asleep := PackedByteArray()
+var _rest := PackedFloat32Array()
+var _sup_a := PackedVector2Array()
+var _sup_b := PackedVector2Array()
+var _sup_prev := PackedVector2Array()
+var _sup_next := PackedVector2Array()
+var _restitution := 0.0
+var _threshold := 0.0
+var _wake_speed := 0.0
+var _gravity_dt := Vector2.ZERO
+
+
+## Takes this step's balls and constants, and clears last step's pushes and touches. A
+## sleeping ball acts as a fixed ball unless hit faster than `wake_speed`, which wakes it;
+## contacts slower than `threshold` do not bounce. Against a held ball, the approach this
+## step's gravity (`gravity_dt`) gave does not count toward the threshold, as on a static
+## shape: otherwise a ball lying on a held ball would bounce on it for ever. Runs on the
+## world's thread before any list is answered.
+func begin(
+	b: BallStore, restitution: float, threshold: float, wake_speed: float, gravity_dt: Vector2
+) -> void:
+	var n: int = b.ids.size()
+	# The lists may be answered on several threads: every array they write needs a buffer
+	# of its own first (see BallStore.own_buffers()).
+	b.own_buffers()
+	b.push.fill(Vector2.ZERO)
+	b.touching.resize(n)
+	b.touching.fill(0)
+	_sup_next = PackedVector2Array()
+	_sup_next.resize(n)
+	_pos = b.pos
+	_rad = b.radius
+	_vel = b.vel
+	_push = b.push
+	_touching = b.touching
+	_asleep = b.asleep
+	_rest = b.rest
+	_sup_a = b.support_static
+	_sup_b = b.support_static2
+	_sup_prev = b.support_ball
+	_restitution = restitution
+	_threshold = threshold
+	_wake_speed = wake_speed
+	_gravity_dt = gravity_dt
+
+
+## Hands the supports found this step to the store (each ball's ball support next step).
+func finish(b: BallStore) -> void:
+	b.support_ball = _sup_next
+
+
+## Answers the touching pairs (i, j) of one stripe's list in order. Each pair is written out
+## in the loop (a call per pair costs about as much as the work), and skipped when both
+## balls sleep.
+func solve_pairs(pairs: PackedInt32Array) -> void:
+	for m: int in range(0, pairs.size(), 2):
+		var i: int = pairs[m]
+		var j: int = pairs[m + 1]
+		_touching[i] = 1
+		_touching[j] = 1
+		if _asleep[i] != 0 and _asleep[j] != 0:
+			continue
+		var d: Vector2 = _pos[j] - _pos[i]
+		var dist: float = sqrt(d.length_squared())
+		var nrm := Vector2(1.0, 0.0)
+		if dist > EPS:
+			nrm = d / dist
+		var sleep_i: bool = _asleep[i] != 0
+		var sleep_j: bool = _asleep[j] != 0
+		# A real hit wakes the sleeper, which then answers as a free ball. A sleeper's velocity
+		# holds just this step's gravity, which the other ball got too: a ball merely pressing
+		# on it under gravity does not count as a hit.
+		if (sleep_i or sleep_j) and (_vel[i] - _vel[j]).dot(nrm) > _wake_speed:
+			var woken: int = i if sleep_i else j
+			_asleep[woken] = 0
+			_rest[woken] = 0.0
+			sleep_i = _asleep[i] != 0
+			sleep_j = _asleep[j] != 0
+		var vi: Vector2 = Vector2.ZERO if sleep_i else _vel[i]
+		var vj: Vector2 = Vector2.ZERO if sleep_j else _vel[j]
+		# A ball held from behind (asleep, or pressed last step on a static shape or a held
+		# ball that faces the other ball) does not give way: the other takes the whole response.
+		var fixed_i: bool = (
+			sleep_i
+			or _sup_a[i].dot(nrm) > SUPPORT_COS
+			or _sup_b[i].dot(nrm) > SUPPORT_COS
+			or _sup_prev[i].dot(nrm) > SUPPORT_COS
+		)
+		var fixed_j: bool = (
+			sleep_j
+			or _sup_a[j].dot(nrm) < -SUPPORT_COS
+			or _sup_b[j].dot(nrm) < -SUPPORT_COS
+			or _sup_prev[j].dot(nrm) < -SUPPORT_COS
+		)
+		var s: Vector2 = nrm * (maxf(_rad[i] + _rad[j] - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
+		if fixed_j and not fixed_i:
+			# The support cancels j's own motion into it: only i's speed counts.
+			_bounce_off_held(i, vi, -nrm)
+			_push[i] -= s * 2.0
+			_sup_next[i] = -nrm
+		elif fixed_i and not fixed_j:
+			_bounce_off_held(j, vj, nrm)
+			_push[j] += s * 2.0
+			_sup_next[j] = nrm
+		elif not (sleep_i or sleep_j):
+			var vn: float = (vj - vi).dot(nrm)
+			if vn < 0.0:
+				var e: float = _restitution if -vn > _threshold else 0.0
+				var imp: Vector2 = nrm * (-(1.0 + e) * vn * 0.5)
+				_vel[i] = vi - imp
+				_vel[j] = vj + imp
+			_push[i] -= s
+			_push[j] += s
+
+
+## Ball `i` (velocity `v`) against a ball that does not give way, along `nrm` (pointing
+## from the held ball to `i`).
+func _bounce_off_held(i: int, v: Vector2, nrm: Vector2) -> void:
+	var vn: float = v.dot(nrm)
+	if vn >= 0.0:
+		return
+	var hit: float = -vn - maxf(-_gravity_dt.dot(nrm), 0.0)
+	var e: float = _restitution if hit > _threshold else 0.0
+	_vel[i] = v - nrm * ((1.0 + e) * vn)
