@@ -24,7 +24,7 @@ const VERSION := 3
 ## The physics behaviour this build plays runs with (BallWorld.PHYSICS_VERSION). A run
 ## recorded under another one cannot be replayed exactly: the same inputs roll the balls
 ## differently, so the replay and its ghost are refused, by name, instead of drifting.
-const PHYSICS_VERSION := 1
+const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := "maze"
