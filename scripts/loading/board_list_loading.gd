@@ -47,13 +47,16 @@ func take_finished() -> Array[Dictionary]:
 
 
 ## True while some file has not finished loading (or a finished one was not taken yet).
+## Threads that have ended are joined here: a loading that is not busy holds no thread, so
+## dropping it never destroys a thread nobody waited for.
 func is_busy() -> bool:
+	# Join first, then look at the lists: a thread that ended before the join has put its
+	# last result in `_finished` already, so it cannot land after the look.
+	var running := not join_ended()
 	_mutex.lock()
-	var busy := not _queue.is_empty() or not _finished.is_empty()
+	var pending := not _queue.is_empty() or not _finished.is_empty()
 	_mutex.unlock()
-	for thread in _threads:
-		busy = busy or thread.is_alive()
-	return busy
+	return running or pending
 
 
 ## Drops the files not started yet; threads busy with a file are joined later, without
