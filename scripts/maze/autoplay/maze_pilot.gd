@@ -74,6 +74,8 @@ var _still_time := 0.0
 var _settle_mark := PackedVector2Array()
 var _expected := PackedInt32Array()
 var _move_start := PackedInt32Array()
+## The balls' cells (sorted) when the move began.
+var _move_cells := PackedInt32Array()
 var _origin := PackedVector2Array()
 var _step_done := false
 var _hard := false
@@ -188,6 +190,7 @@ func _start_move(cells: PackedInt32Array, positions: PackedVector2Array) -> void
 	_still_time = 0.0
 	_settle_mark = positions.duplicate()
 	_expected = planner.predict(cells, planner.moves[_move])
+	_move_cells = cells.duplicate()
 	_move_start = PackedInt32Array()
 	for p in positions:
 		_move_start.append(grid.cell_at(p))
@@ -294,6 +297,9 @@ func _pack_cell(positions: PackedVector2Array) -> int:
 # from its cell with this tilt, so the next plan does not repeat the same mistake.
 func _learn(positions: PackedVector2Array) -> void:
 	var dir := planner.moves[_move]
+	# What this move did to these balls together is remembered as it is (balls bump into
+	# each other the same way again); what each lone ball did teaches the grid.
+	planner.remember(_move_cells, dir, planner.cells_of(positions))
 	for i in mini(positions.size(), _move_start.size()):
 		if _touches_another(positions, i):
 			continue  # stopped by a ball, not by the board: nothing to learn about the cell

@@ -28,6 +28,8 @@ var target := PackedInt32Array()
 var moves := PackedInt32Array()
 
 var _bits := 1
+## What moves really did from some states: _learned[state key][move] → the state key after.
+var _learned := {}
 var _cell_distance := PackedFloat32Array()
 ## A cell this near the goal (path length, px) holds a pack that is already in it.
 var _goal_reach := 0.0
@@ -81,14 +83,19 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 			break  # gathered in the goal: nothing better to find
 		if keys.size() >= MAX_STATES:
 			continue
+		var learned: Dictionary = _learned.get(keys[head], {})
 		for d in order:
 			var deadly := false
-			for b in n:
-				next[b] = slides[state[b] * stride + d]
-				deadly = deadly or next[b] < 0
+			if learned.has(d):
+				_decode(learned[d], next)
+			else:
+				for b in n:
+					next[b] = slides[state[b] * stride + d]
+					deadly = deadly or next[b] < 0
 			if deadly:
 				continue  # a ball would roll over a black hole
-			grid.queue_up(state, next, n, d)
+			if not learned.has(d):
+				grid.queue_up(state, next, n, d)
 			var longest := 0.0
 			for b in n:
 				longest = maxf(longest, grid.travel(state[b], next[b]))
@@ -116,12 +123,28 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 
 ## The balls' cells after `moves[0..count)` from `cells` (sorted).
 func predict(cells: PackedInt32Array, dir: int) -> PackedInt32Array:
+	var known: Dictionary = _learned.get(_encode(cells), {}) if not cells.is_empty() else {}
+	if known.has(dir):
+		var after := cells.duplicate()
+		_decode(known[dir], after)
+		return after
 	var next := PackedInt32Array()
 	for c in cells:
 		next.append(grid.slide(c, dir))
 	grid.queue_up(cells, next, cells.size(), dir)
 	next.sort()
 	return next
+
+
+## Remembers that `move` took balls in `before` (cells, sorted) to `after` (sorted): plans
+## from that state expect it from now on.
+func remember(before: PackedInt32Array, move: int, after: PackedInt32Array) -> void:
+	if before.size() != after.size() or before.is_empty() or before.size() * _bits > 62:
+		return
+	var key := _encode(before)
+	var known: Dictionary = _learned.get(key, {})
+	known[move] = _encode(after)
+	_learned[key] = known
 
 
 ## Never gather in `cell` again (the pack did not make it from there to the goal).
