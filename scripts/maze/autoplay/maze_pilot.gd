@@ -2,16 +2,18 @@ extends RefCounted
 ## The autoplay's hand on the board: each physics step it looks at every ball and picks one
 ## tilt for all of them.
 ##
-## On a grid maze it first gathers the balls: the MazeSlidePlanner finds hard tilts that
-## herd every ball into one cell near the goal, and the pilot holds each tilt until the
-## balls stop, re-planning whenever the balls end somewhere the plan did not expect. Then
-## it rolls the pack along its path (MazeNav) into the goal circle and brakes there. On a
-## board that is not a grid, or when gathering fails, it steers the ball nearest the goal.
-## In hard mode the plans also use one-cell steps (tilt, then brake) and never roll a ball
-## over a hole, and a MazeHoleGuard vets every tilt on a private copy of the board.
-## Whatever the physics does differently from the grid model is learned as it happens.
+## On a grid maze it first gathers the balls: the MazeSlidePlanner searches hard tilts held
+## until the balls stop (slides) and tilts braked after 1-3 cells (steps) for the quickest
+## way to herd every ball into one cell in or near the goal, and the pilot plays each move,
+## re-planning whenever the balls end somewhere the plan did not expect (and remembering
+## what really happened, so the next plan does not repeat the mistake). A plan that cannot
+## gather them yet still brings them nearer, and the pilot plans again from there. Then it
+## rolls the pack along its path (MazeNav) into the goal circle and brakes there. On a
+## board that is not a grid, or when planning fails, it steers the ball nearest the goal.
+## In hard mode the plans never roll a ball into a black hole's cell (a step stops short of
+## it), and a MazeHoleGuard vets every tilt on a private copy of the board.
 ## The seed's random number picks the gains, the tilt strength and the order plans try
-## directions in, so seeds play differently and the same seed always plays the same.
+## moves in, so seeds play differently and the same seed always plays the same.
 
 enum Phase { PLAN, MOVE, HERD, LEAD }
 
@@ -147,16 +149,11 @@ func _plan(positions: PackedVector2Array) -> void:
 	if plans_made > MAX_PLANS:
 		phase = Phase.LEAD
 		return
-	# Hard mode also plans one-cell steps: hard slides alone run balls over the holes.
-	# In easy mode, once a herd has failed, one-cell steps help gather closer to the goal.
-	var steps := _hard or not _herd_failures.is_empty()
-	var order := _shuffled(MazeGrid.MOVES if steps else MazeGrid.FIRST_STEP)
+	# Slides and steps in both modes: a step stops a ball short of a hole, or of the far
+	# wall of a long corridor, and often gathers the balls sooner.
+	var order := _shuffled(MazeGrid.MOVES)
 	var cells := planner.cells_of(positions)
 	_gathering = planner.plan(cells, order)
-	if not _gathering and not steps:
-		# Hard slides alone cannot gather these balls: one-cell steps often can.
-		order = _shuffled(MazeGrid.MOVES)
-		_gathering = planner.plan(cells, order)
 	if planner.moves.is_empty():
 		phase = Phase.LEAD
 		return
