@@ -17,8 +17,8 @@ func _initialize() -> void:
 	var options := _options()
 	var hard_seeds: int = options.get("hard_seeds", 5)
 	var only: String = options.get("board", "")
-	print("| board | easy s1 | hard wins | hard lost balls | hard times |")
-	print("|---|---|---|---|---|")
+	print("| board | easy s1 | hard wins | hard lost balls | closest to a hole | hard times |")
+	print("|---|---|---|---|---|---|")
 	var hard_won := 0
 	var hard_runs := 0
 	var easy_failed := 0
@@ -38,9 +38,12 @@ func _initialize() -> void:
 		var wins := 0
 		var lost := 0
 		var times := PackedFloat64Array()
+		var closest := INF
 		for s in range(1, hard_seeds + 1):
 			var hard := MazeAutoplay.run(level, SECONDS, s, true)
 			lost += int(hard["balls_lost_in_holes"])
+			if float(hard["closest_hole_gap"]) >= 0.0:
+				closest = minf(closest, float(hard["closest_hole_gap"]))
 			if hard["won"]:
 				wins += 1
 				times.append(float(hard["time_to_win"]))
@@ -48,13 +51,14 @@ func _initialize() -> void:
 		hard_runs += hard_seeds
 		print(
 			(
-				"| %s | %s | %d/%d | %d | %s |"
+				"| %s | %s | %d/%d | %d | %s | %s |"
 				% [
 					file.get_basename(),
 					("%.1f s" % easy_time) if easy["won"] else "LOST",
 					wins,
 					hard_seeds,
 					lost,
+					("%.1f px" % closest) if is_finite(closest) else "-",
 					", ".join(Array(times).map(func(t: float) -> String: return "%.1f" % t)),
 				]
 			)

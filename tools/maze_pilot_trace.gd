@@ -5,7 +5,7 @@ extends SceneTree
 ## `--every` seconds with the pilot's phase and the balls' cells. For finding out why the
 ## pilot loses a board:
 ##   tools/godot.sh --headless --path . -s res://tools/maze_pilot_trace.gd -- --board=the_deep
-## Options after `--`: `--board=ID` (needed), `--seeds=A-B` (default 1-5), `--every=S`
+## Options after `--`: `--board=ID` or `--generated=COLS,ROWS,HOLES,DIFFICULTY,SEED`, `--seeds=A-B` (default 1-5), `--every=S`
 ## (a progress line every S seconds, 0 for none; default 0), `--easy`.
 
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
@@ -18,18 +18,36 @@ func _initialize() -> void:
 	for arg in OS.get_cmdline_user_args():
 		var parts := arg.trim_prefix("--").split("=", true, 1)
 		args[parts[0]] = parts[1] if parts.size() > 1 else "1"
-	var board: String = args.get("board", "")
-	var loaded := BoardLoader.load_board("res://levels/maze/%s.board" % board)
-	if loaded.level == null:
-		printerr("maze_pilot_trace: %s" % loaded.error)
+	var level := _level(args)
+	if level == null:
 		quit(1)
 		return
 	var seeds: PackedStringArray = String(args.get("seeds", "1-5")).split("-")
 	var first := seeds[0].to_int()
 	var last := seeds[seeds.size() - 1].to_int()
 	for s in range(first, last + 1):
-		_trace(loaded.level, s, not args.has("easy"), float(args.get("every", "0")))
+		_trace(level, s, not args.has("easy"), float(args.get("every", "0")))
 	quit(0)
+
+
+# The board named by --board=ID, or a maze made by the generator from
+# --generated=cols,rows,holes,difficulty,seed.
+func _level(args: Dictionary) -> BoardLevel:
+	if args.has("generated"):
+		var v: PackedStringArray = String(args["generated"]).split(",")
+		var settings := MazeGenSettings.new()
+		var values := {"cols": v[0].to_int(), "rows": v[1].to_int(), "holes": v[2].to_int()}
+		values["difficulty"] = v[3].to_float()
+		values["seed"] = v[4].to_int()
+		settings.read(values)
+		var made := MazeGenerator.generate(settings)
+		if made.has("error"):
+			printerr("maze_pilot_trace: %s" % made["error"])
+		return made.get("level")
+	var loaded := BoardLoader.load_board("res://levels/maze/%s.board" % args.get("board", ""))
+	if loaded.level == null:
+		printerr("maze_pilot_trace: %s" % loaded.error)
+	return loaded.level
 
 
 func _trace(level: BoardLevel, rng_seed: int, hard: bool, every: float) -> void:
@@ -40,6 +58,7 @@ func _trace(level: BoardLevel, rng_seed: int, hard: bool, every: float) -> void:
 	rules.start()
 	var limit := ceili(SECONDS / rules.step_seconds())
 	var closest := INF
+	var closest_at := ""
 	var next_line := every
 	var frames := 0
 	var phase_time := {}
@@ -50,7 +69,12 @@ func _trace(level: BoardLevel, rng_seed: int, hard: bool, every: float) -> void:
 	while frames < limit and rules.is_playing():
 		var world := rules.world
 		var positions := world.get_positions()
-		closest = minf(closest, _hole_gap(level, positions))
+		var gap := _hole_gap(level, positions)
+		if gap < closest:
+			closest = gap
+			closest_at = "%s at %.1f s" % [PHASES[pilot.phase], rules.elapsed]
+			if pilot.phase == MazePilot.Phase.MOVE:
+				closest_at += " move %d, balls %s" % [pilot.planner.moves[pilot._move], positions]
 		rules.set_tilt(pilot.decide(positions, world.get_velocities()))
 		phase_time[pilot.phase] = phase_time.get(pilot.phase, 0.0) + rules.step_seconds()
 		rules.step()
@@ -98,7 +122,7 @@ func _trace(level: BoardLevel, rng_seed: int, hard: bool, every: float) -> void:
 		)
 	print(
 		(
-			"seed %d: %s; phase %s, plans %d, corrections %d, closest edge gap %.1f px, in goal %d; %s"
+			"seed %d: %s; phase %s, plans %d, corrections %d, closest edge gap %.1f px (%s), in goal %d; %s"
 			% [
 				rng_seed,
 				outcome,
@@ -106,6 +130,7 @@ func _trace(level: BoardLevel, rng_seed: int, hard: bool, every: float) -> void:
 				pilot.plans_made,
 				pilot.corrections,
 				closest,
+				closest_at,
 				rules.balls_in_goal,
 				", ".join(times),
 			]

@@ -192,27 +192,42 @@ func _step(index: int, move: int, slot: int) -> int:
 
 
 # Rolls from `index` toward `step` and stores the last cell passed in arrivals[`slot`].
+# A diagonal tilt pulls along both axes at once, so where both open the ball may go either
+# way first: the model takes x first, but if y first meets a hole the move counts as deadly.
 func _roll(index: int, step: Vector2i, slot: int) -> int:
+	var end := _roll_path(index, step, false, slot)
+	if end >= 0 and step.x != 0 and step.y != 0 and _roll_path(index, step, true, -1) < 0:
+		return -1
+	return end
+
+
+# One way of rolling: at each cell the x axis first (or y when `y_first`); -1 on a hole.
+# Stores the last cell passed in arrivals[`slot`] unless `slot` is -1.
+func _roll_path(index: int, step: Vector2i, y_first: bool, slot: int) -> int:
 	var c := index % cols
 	@warning_ignore("integer_division")  # the row of a cell index: whole rows
 	var r := index / cols
-	arrivals[slot] = index
+	var last := index
+	var axes := (
+		[Vector2i(0, step.y), Vector2i(step.x, 0)]
+		if y_first
+		else [Vector2i(step.x, 0), Vector2i(0, step.y)]
+	)
 	for _guard in cols + rows + 2:
 		var moved := false
-		if step.x != 0 and is_open(c, r, step.x, 0):
-			arrivals[slot] = r * cols + c
-			c += step.x
-			moved = true
-			if hole_cells[r * cols + c] != 0:
-				return -1
-		if step.y != 0 and is_open(c, r, 0, step.y):
-			arrivals[slot] = r * cols + c
-			r += step.y
+		for axis: Vector2i in axes:
+			if axis == Vector2i.ZERO or not is_open(c, r, axis.x, axis.y):
+				continue
+			last = r * cols + c
+			c += axis.x
+			r += axis.y
 			moved = true
 			if hole_cells[r * cols + c] != 0:
 				return -1
 		if not moved:
 			break
+	if slot >= 0:
+		arrivals[slot] = last
 	return r * cols + c
 
 
