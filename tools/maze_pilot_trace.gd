@@ -5,8 +5,9 @@ extends SceneTree
 ## `--every` seconds with the pilot's phase and the balls' cells. For finding out why the
 ## pilot loses a board:
 ##   tools/godot.sh --headless --path . -s res://tools/maze_pilot_trace.gd -- --board=the_deep
-## Options after `--`: `--board=ID` or `--generated=COLS,ROWS,HOLES,DIFFICULTY,SEED`, `--seeds=A-B` (default 1-5), `--every=S`
-## (a progress line every S seconds, 0 for none; default 0), `--easy`.
+## Options after `--`: `--board=ID` or `--generated=COLS,ROWS,HOLES,DIFFICULTY,SEED` (a
+## maze from the generator), `--seeds=A-B` (default 1-5), `--every=S` (a progress line
+## every S seconds, 0 for none; default 0), `--easy`.
 
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const SECONDS := 120.0
