@@ -163,12 +163,12 @@ func _build_slides() -> void:
 			slides[index * MOVES + m] = _step(index, m, index * MOVES + m)
 
 
-# True when `cell` is walled on both sides across the way in from `back` (a neighbour).
-func _is_corridor(cell: int, back: int) -> bool:
-	var c := cell % cols
+# True when `index` is walled on both sides across the way in from `back` (a neighbour).
+func _is_corridor(index: int, back: int) -> bool:
+	var c := index % cols
 	@warning_ignore("integer_division")  # the row of a cell index: whole rows
-	var r := cell / cols
-	if absi(cell - back) == 1:  # came in along x
+	var r := index / cols
+	if absi(index - back) == 1:  # came in along x
 		return not is_open(c, r, 0, 1) and not is_open(c, r, 0, -1)
 	return not is_open(c, r, 1, 0) and not is_open(c, r, -1, 0)
 

@@ -87,7 +87,8 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 		for d in order:
 			var deadly := false
 			if learned.has(d):
-				_decode(learned[d], next)
+				var after: int = learned[d]
+				_decode(after, next)
 			else:
 				for b in n:
 					next[b] = slides[state[b] * stride + d]
@@ -126,7 +127,8 @@ func predict(cells: PackedInt32Array, dir: int) -> PackedInt32Array:
 	var known: Dictionary = _learned.get(_encode(cells), {}) if not cells.is_empty() else {}
 	if known.has(dir):
 		var after := cells.duplicate()
-		_decode(known[dir], after)
+		var key: int = known[dir]
+		_decode(key, after)
 		return after
 	var next := PackedInt32Array()
 	for c in cells:
