@@ -9,7 +9,9 @@ const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 
 ## Plays `level` for up to `seconds` of simulated time with the pilot seeded by `rng_seed`.
 ## Returns won, time_to_win (-1 when not won), balls_in_goal (at the end),
-## max_balls_in_goal, balls_lost_in_holes, frames_simulated, hard_mode, state_hash.
+## max_balls_in_goal, balls_lost_in_holes, closest_hole_gap (the least room, px, any ball's
+## centre kept from a live hole's rim; -1 with no live holes), frames_simulated, hard_mode,
+## state_hash.
 ## A `recorder` (optional) records the run for a replay.
 static func run(
 	level: BoardLevel,
@@ -34,9 +36,12 @@ static func run(
 	rules.start()
 	var frames := 0
 	var most_in_goal := 0
+	var holes := level.holes if hard_mode else PackedVector2Array()
+	var closest := INF
 	var limit := ceili(seconds / rules.step_seconds())
 	while frames < limit and rules.is_playing():
 		var world := rules.world
+		closest = minf(closest, _hole_gap(world.get_positions(), holes, level.hole_radius))
 		rules.set_tilt(pilot.decide(world.get_positions(), world.get_velocities()))
 		rules.step()
 		if recorder != null:
@@ -50,7 +55,19 @@ static func run(
 		"balls_in_goal": rules.balls_in_goal,
 		"max_balls_in_goal": most_in_goal,
 		"balls_lost_in_holes": rules.balls_lost(),
+		"closest_hole_gap": snappedf(closest, 0.01) if is_finite(closest) else -1.0,
 		"frames_simulated": frames,
 		"hard_mode": hard_mode,
 		"state_hash": rules.world.state_hash(),
 	}
+
+
+# Least distance from a ball's centre to a hole's rim, px (INF with no holes).
+static func _hole_gap(
+	positions: PackedVector2Array, holes: PackedVector2Array, radius: float
+) -> float:
+	var gap := INF
+	for p in positions:
+		for h in holes:
+			gap = minf(gap, p.distance_to(h) - radius)
+	return gap

@@ -18,12 +18,16 @@ const DIRECTIONS: Array[Vector2i] = [
 	Vector2i(-1, 1),
 	Vector2i(-1, -1),
 ]
-## Moves per cell: the eight hard tilts (slides), then four one-cell steps (right, left,
-## down, up: DIRECTIONS 0..3) made by tilting and braking.
-const MOVES := 12
+## Moves per cell: the eight hard tilts (slides), then steps made by tilting and braking:
+## one cell right, left, down, up (DIRECTIONS 0..3), then two cells each way, and so on up
+## to MAX_RUN cells. A step stops short of a hole that a slide would roll into.
+const MAX_RUN := 3
 const FIRST_STEP := 8
+const MOVES := FIRST_STEP + 4 * MAX_RUN
 ## How far off a grid line a wall end may be and still count as on it, px.
 const SNAP := 0.5
+## Balls that fit in a line in one corridor cell.
+const QUEUE_CAP := 3
 
 var cols := 0
 var rows := 0
@@ -38,6 +42,10 @@ var vertical := PackedByteArray()
 ## slides[cell_index * MOVES + move] → the cell a move takes a ball to, or -1 when the
 ## ball would roll over a black hole on the way.
 var slides := PackedInt32Array()
+## arrivals[cell_index * MOVES + move] → the cell a ball passes last before it stops
+## (the cell it started in when it does not move). Balls that stop in one corridor cell
+## queue back into it (see `queue_up`).
+var arrivals := PackedInt32Array()
 ## 1 for a cell with a black hole in it (hard mode).
 var hole_cells := PackedByteArray()
 
@@ -98,53 +106,128 @@ func slide(index: int, move: int) -> int:
 	return slides[index * MOVES + move]
 
 
-## True for a one-cell step, false for a slide.
+## Balls that end a move in one corridor cell queue up: at most QUEUE_CAP fit in a line
+## between its walls (a ball is 10 px across, a corridor cell 25 px long), so the rest wait
+## in the cell they arrived from. Moves the extra balls of `ends` (the cells `move` takes
+## balls from `starts` to, first `n` entries) back, in place.
+func queue_up(starts: PackedInt32Array, ends: PackedInt32Array, n: int, move: int) -> void:
+	for b in n:
+		var end := ends[b]
+		var count := 0
+		for o in n:
+			if ends[o] == end:
+				count += 1
+		if count <= QUEUE_CAP or starts[b] == end:
+			continue
+		var back := arrivals[starts[b] * MOVES + move]
+		if back != end and _is_corridor(end, back):
+			ends[b] = back
+
+
+## True for a step (tilt, then brake after some cells), false for a slide.
 static func is_step(move: int) -> bool:
 	return move >= FIRST_STEP
 
 
 ## The direction of a move, in cells.
 static func direction(move: int) -> Vector2i:
-	return DIRECTIONS[move - FIRST_STEP] if is_step(move) else DIRECTIONS[move]
+	return DIRECTIONS[(move - FIRST_STEP) % 4] if is_step(move) else DIRECTIONS[move]
+
+
+## The step of `cells` (1..MAX_RUN) cells toward DIRECTIONS[`dir`] (0..3).
+static func step_move(dir: int, cells: int) -> int:
+	return FIRST_STEP + (cells - 1) * 4 + dir
+
+
+## Cells a step goes at most (0 for a slide).
+static func run_length(move: int) -> int:
+	@warning_ignore("integer_division")  # whole runs of four directions
+	return (move - FIRST_STEP) / 4 + 1 if is_step(move) else 0
+
+
+## Straight-line px between the centres of cells `a` and `b` along the grid (how far a ball
+## rolls from one to the other in a move).
+func travel(a: int, b: int) -> float:
+	@warning_ignore("integer_division")  # rows of cell indices: whole rows
+	var rows_apart := absi(a / cols - b / cols)
+	return absi(a % cols - b % cols) * cell.x + rows_apart * cell.y
 
 
 func _build_slides() -> void:
 	slides.resize(cell_count() * MOVES)
+	arrivals.resize(cell_count() * MOVES)
 	for index in cell_count():
 		for d in FIRST_STEP:
-			slides[index * MOVES + d] = _roll(index, DIRECTIONS[d])
-		for d in MOVES - FIRST_STEP:
-			slides[index * MOVES + FIRST_STEP + d] = _step(index, DIRECTIONS[d])
+			slides[index * MOVES + d] = _roll(index, DIRECTIONS[d], index * MOVES + d)
+		for m in range(FIRST_STEP, MOVES):
+			slides[index * MOVES + m] = _step(index, m, index * MOVES + m)
 
 
-func _step(index: int, step: Vector2i) -> int:
+# True when `index` is walled on both sides across the way in from `back` (a neighbour).
+func _is_corridor(index: int, back: int) -> bool:
 	var c := index % cols
 	@warning_ignore("integer_division")  # the row of a cell index: whole rows
 	var r := index / cols
-	if not is_open(c, r, step.x, step.y):
-		return index
-	var next := (r + step.y) * cols + c + step.x
-	return -1 if hole_cells[next] != 0 else next
+	if absi(index - back) == 1:  # came in along x
+		return not is_open(c, r, 0, 1) and not is_open(c, r, 0, -1)
+	return not is_open(c, r, 1, 0) and not is_open(c, r, -1, 0)
 
 
-func _roll(index: int, step: Vector2i) -> int:
+# Steps from `index` by `move` and stores the last cell passed in arrivals[`slot`].
+func _step(index: int, move: int, slot: int) -> int:
+	var step := direction(move)
 	var c := index % cols
 	@warning_ignore("integer_division")  # the row of a cell index: whole rows
 	var r := index / cols
+	arrivals[slot] = index
+	for _s in run_length(move):
+		if not is_open(c, r, step.x, step.y):
+			break
+		arrivals[slot] = r * cols + c
+		c += step.x
+		r += step.y
+		if hole_cells[r * cols + c] != 0:
+			return -1
+	return r * cols + c
+
+
+# Rolls from `index` toward `step` and stores the last cell passed in arrivals[`slot`].
+# A diagonal tilt pulls along both axes at once, so where both open the ball may go either
+# way first: the model takes x first, but if y first meets a hole the move counts as deadly.
+func _roll(index: int, step: Vector2i, slot: int) -> int:
+	var end := _roll_path(index, step, false, slot)
+	if end >= 0 and step.x != 0 and step.y != 0 and _roll_path(index, step, true, -1) < 0:
+		return -1
+	return end
+
+
+# One way of rolling: at each cell the x axis first (or y when `y_first`); -1 on a hole.
+# Stores the last cell passed in arrivals[`slot`] unless `slot` is -1.
+func _roll_path(index: int, step: Vector2i, y_first: bool, slot: int) -> int:
+	var c := index % cols
+	@warning_ignore("integer_division")  # the row of a cell index: whole rows
+	var r := index / cols
+	var last := index
+	var axes := (
+		[Vector2i(0, step.y), Vector2i(step.x, 0)]
+		if y_first
+		else [Vector2i(step.x, 0), Vector2i(0, step.y)]
+	)
 	for _guard in cols + rows + 2:
 		var moved := false
-		if step.x != 0 and is_open(c, r, step.x, 0):
-			c += step.x
-			moved = true
-			if hole_cells[r * cols + c] != 0:
-				return -1
-		if step.y != 0 and is_open(c, r, 0, step.y):
-			r += step.y
+		for axis: Vector2i in axes:
+			if axis == Vector2i.ZERO or not is_open(c, r, axis.x, axis.y):
+				continue
+			last = r * cols + c
+			c += axis.x
+			r += axis.y
 			moved = true
 			if hole_cells[r * cols + c] != 0:
 				return -1
 		if not moved:
 			break
+	if slot >= 0:
+		arrivals[slot] = last
 	return r * cols + c
 
 

@@ -10,6 +10,8 @@ const SPACING := 2.5
 const COMFORT := 6.0
 ## How much a path pays for hugging a wall (multiplies its length at zero clearance).
 const HUG_COST := 3.0
+## Room a path keeps between a ball's centre and a hole's rim, in ball radii.
+const HOLE_ROOM := 2.0
 ## Distance of unreachable points.
 const FAR := 1.0e9
 
@@ -74,8 +76,10 @@ func _build_clearance(level: BoardLevel, with_holes: bool) -> void:
 	for w in range(0, walls.size() - 1, 2):
 		_stamp_segment(walls[w], walls[w + 1], reach)
 	if with_holes:
+		# A ball falls once its centre is over the hole: paths keep a ball's width clear of
+		# the rim (HOLE_ROOM), and like to keep COMFORT more.
 		for h in level.holes:
-			_stamp_segment(h, h, level.hole_radius + level.ball_radius * 0.5)
+			_stamp_segment(h, h, level.hole_radius + level.ball_radius * HOLE_ROOM)
 	# The board's own edge is a wall too.
 	for r in rows:
 		for c in cols:

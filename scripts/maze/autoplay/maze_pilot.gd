@@ -2,16 +2,18 @@ extends RefCounted
 ## The autoplay's hand on the board: each physics step it looks at every ball and picks one
 ## tilt for all of them.
 ##
-## On a grid maze it first gathers the balls: the MazeSlidePlanner finds hard tilts that
-## herd every ball into one cell near the goal, and the pilot holds each tilt until the
-## balls stop, re-planning whenever the balls end somewhere the plan did not expect. Then
-## it rolls the pack along its path (MazeNav) into the goal circle and brakes there. On a
-## board that is not a grid, or when gathering fails, it steers the ball nearest the goal.
-## In hard mode the plans also use one-cell steps (tilt, then brake) and never roll a ball
-## over a hole, and a MazeHoleGuard vets every tilt on a private copy of the board.
-## Whatever the physics does differently from the grid model is learned as it happens.
+## On a grid maze it first gathers the balls: the MazeSlidePlanner searches hard tilts held
+## until the balls stop (slides) and tilts braked after 1-3 cells (steps) for the quickest
+## way to herd every ball into one cell in or near the goal, and the pilot plays each move,
+## re-planning whenever the balls end somewhere the plan did not expect (and remembering
+## what really happened, so the next plan does not repeat the mistake). A plan that cannot
+## gather them yet still brings them nearer, and the pilot plans again from there. Then it
+## rolls the pack along its path (MazeNav) into the goal circle and brakes there. On a
+## board that is not a grid, or when planning fails, it steers the ball nearest the goal.
+## In hard mode the plans never roll a ball into a black hole's cell (a step stops short of
+## it), and a MazeHoleGuard vets every tilt on a private copy of the board.
 ## The seed's random number picks the gains, the tilt strength and the order plans try
-## directions in, so seeds play differently and the same seed always plays the same.
+## moves in, so seeds play differently and the same seed always plays the same.
 
 enum Phase { PLAN, MOVE, HERD, LEAD }
 
@@ -34,6 +36,17 @@ const STALL_SECONDS := 1.0
 const STALL_DRIFT := 2.0
 ## Seconds the pack may sit in the goal without winning before it is gathered again.
 const GOAL_PATIENCE := 3.0
+## A step rolls at most this share of the speed cap and plans to stop braking at
+## STEP_BRAKE px/s² (a full tilt brakes at ~1700), or on rolling friction alone while balls
+## wait at walls; the last px it slows at STEP_APPROACH_RATE px/s per px left.
+const STEP_SPEED_SHARE := 0.9
+const STEP_BRAKE := 500.0
+const STEP_APPROACH_RATE := 7.0
+## A step is done once the movers stop within STEP_DONE_SLACK px short of its end or
+## STEP_OVERSHOOT px past it (still in the cell it aimed for).
+const STEP_STUCK_SECONDS := 0.5
+const STEP_DONE_SLACK := 2.5
+const STEP_OVERSHOOT := 10.0
 ## Re-plans allowed before the pilot falls back to steering single balls.
 const MAX_PLANS := 60
 ## While steering single balls on a grid maze, the pilot tries to gather again this often,
@@ -63,15 +76,21 @@ var _still_time := 0.0
 var _settle_mark := PackedVector2Array()
 var _expected := PackedInt32Array()
 var _move_start := PackedInt32Array()
+## The balls' cells (sorted) when the move began.
+var _move_cells := PackedInt32Array()
 var _origin := PackedVector2Array()
 var _step_done := false
 var _hard := false
+## True while the plan being played ends with every ball gathered.
+var _gathering := false
 var _herd_failures := {}
 var _herd_cell := -1
 var _herd_time := 0.0
 var _herd_mark := Vector2.ZERO
 var _goal_time := 0.0
 var _lead_time := 0.0
+## Rolling friction's slowing on a flat board, px/s².
+var _coast_decel := 78.125
 
 
 ## A pilot for `level` (holes avoided when `hard_mode`), stepping `dt` seconds per call,
@@ -90,6 +109,7 @@ func _init(level: BoardLevel, hard_mode: bool, rng: RandomNumberGenerator, dt: f
 	else:
 		phase = Phase.LEAD
 	var tuning := level.tuning as PhysicsTuning
+	_coast_decel = tuning.rolling_friction if tuning != null else 78.125
 	steering = MazeSteering.new(level, nav, tuning.max_speed if tuning != null else 93.75)
 	steering.gain = rng.randf_range(0.15, 0.3)
 	steering.lookahead = rng.randf_range(9.0, 15.0)
@@ -129,19 +149,15 @@ func _plan(positions: PackedVector2Array) -> void:
 	if plans_made > MAX_PLANS:
 		phase = Phase.LEAD
 		return
-	# Hard mode also plans one-cell steps: hard slides alone run balls over the holes.
-	# In easy mode, once a herd has failed, one-cell steps help gather closer to the goal.
-	var steps := _hard or not _herd_failures.is_empty()
-	var order := _shuffled(MazeGrid.MOVES if steps else MazeGrid.FIRST_STEP)
+	# Slides and steps in both modes: a step stops a ball short of a hole, or of the far
+	# wall of a long corridor, and often gathers the balls sooner.
+	var order := _shuffled(MazeGrid.MOVES)
 	var cells := planner.cells_of(positions)
-	var gathered := planner.plan(cells, order)
-	if not gathered and not steps:
-		# Hard slides alone cannot gather these balls: one-cell steps often can.
-		order = _shuffled(MazeGrid.MOVES)
-		gathered = planner.plan(cells, order)
-	if not gathered:
+	_gathering = planner.plan(cells, order)
+	if planner.moves.is_empty():
 		phase = Phase.LEAD
 		return
+	# A plan that does not gather still brings the balls nearer: play it, then plan again.
 	_move = 0
 	_start_move(cells, positions)
 
@@ -161,13 +177,17 @@ func _shuffled(count: int) -> PackedInt32Array:
 
 func _start_move(cells: PackedInt32Array, positions: PackedVector2Array) -> void:
 	if _move >= planner.moves.size():
-		_begin_herd(positions)
+		if _gathering:
+			_begin_herd(positions)
+		else:
+			phase = Phase.PLAN
 		return
 	phase = Phase.MOVE
 	_move_time = 0.0
 	_still_time = 0.0
 	_settle_mark = positions.duplicate()
 	_expected = planner.predict(cells, planner.moves[_move])
+	_move_cells = cells.duplicate()
 	_move_start = PackedInt32Array()
 	for p in positions:
 		_move_start.append(grid.cell_at(p))
@@ -181,7 +201,8 @@ func _hold_move(positions: PackedVector2Array, velocities: PackedVector2Array) -
 	var done := false
 	if MazeGrid.is_step(move):
 		tilt = _step_tilt(positions, velocities, move)
-		done = _step_done
+		# A step whose balls stopped short (a ball ahead, a cap) is over too.
+		done = _step_done or (_move_time > STEP_STUCK_SECONDS and _settled(positions))
 	else:
 		done = _settled(positions)
 	if not done and _move_time <= MOVE_TIMEOUT:
@@ -215,34 +236,42 @@ func _settled(positions: PackedVector2Array) -> bool:
 	return settled
 
 
-# A one-cell step: the balls that are free to go travel one cell and brake to a stop (they
-# all move alike in the open, so the mean of their travel is steered). Sets `_step_done`.
+# A step: the balls that are free to go the whole way travel its cells and stop (they all
+# move alike in the open, so the mean of their travel is steered). Balls that meet a wall
+# sooner wait there; while any waits, the tilt never turns back (it would roll them off
+# their wall) and the movers coast to a stop on rolling friction alone. Sets `_step_done`.
 func _step_tilt(
 	positions: PackedVector2Array, velocities: PackedVector2Array, move: int
 ) -> Vector2:
 	var dir := Vector2(MazeGrid.direction(move))
-	var length := absf(dir.dot(grid.cell))
+	var goes := PackedFloat32Array()
+	var length := 0.0
+	for i in _move_start.size():
+		goes.append(grid.travel(_move_start[i], grid.slide(_move_start[i], move)))
+		length = maxf(length, goes[i])
 	var travelled := 0.0
 	var speed := 0.0
 	var moving := 0
-	for i in mini(positions.size(), _move_start.size()):
-		if grid.slide(_move_start[i], move) == _move_start[i]:
-			continue  # held by a wall: it stays
+	for i in mini(positions.size(), goes.size()):
+		if goes[i] < length - 0.5:
+			continue
 		travelled += (positions[i] - _origin[i]).dot(dir)
 		speed += velocities[i].dot(dir)
 		moving += 1
-	if moving == 0:
+	if moving == 0 or length <= 0.0:
 		_step_done = true
 		return Vector2.ZERO
+	var waiting := moving < mini(positions.size(), goes.size())
 	var left := length - travelled / float(moving)
 	speed /= float(moving)
-	var cap := steering.max_speed * 0.5
-	var wanted := clampf(left * 4.0, -cap, cap)
-	_step_done = absf(left) < 1.5 and absf(speed) < 4.0
+	var brake := _coast_decel * 0.8 if waiting else STEP_BRAKE
+	var wanted := minf(steering.max_speed * STEP_SPEED_SHARE, sqrt(2.0 * brake * absf(left)))
+	wanted = signf(left) * minf(wanted, absf(left) * STEP_APPROACH_RATE)
+	_step_done = absf(speed) < 4.0 and left < STEP_DONE_SLACK and left > -STEP_OVERSHOOT
 	var amount := (wanted - speed) * steering.gain
-	if absf(left) > 1.5 and absf(amount) < MazeSteering.MIN_NUDGE_DEG:
-		amount = signf(left) * MazeSteering.MIN_NUDGE_DEG
-	return dir * clampf(amount, -hard_tilt, hard_tilt)
+	if left > STEP_DONE_SLACK and absf(amount) < MazeSteering.MIN_NUDGE_DEG:
+		amount = MazeSteering.MIN_NUDGE_DEG
+	return dir * clampf(amount, 0.0 if waiting else -hard_tilt, hard_tilt)
 
 
 func _begin_herd(positions: PackedVector2Array) -> void:
@@ -265,12 +294,26 @@ func _pack_cell(positions: PackedVector2Array) -> int:
 # from its cell with this tilt, so the next plan does not repeat the same mistake.
 func _learn(positions: PackedVector2Array) -> void:
 	var dir := planner.moves[_move]
+	# What this move did to these balls together is remembered as it is (balls bump into
+	# each other the same way again); what each lone ball did teaches the grid.
+	planner.remember(_move_cells, dir, planner.cells_of(positions))
 	for i in mini(positions.size(), _move_start.size()):
+		if _touches_another(positions, i):
+			continue  # stopped by a ball, not by the board: nothing to learn about the cell
 		var from := _move_start[i]
 		var landed := grid.cell_at(positions[i])
 		if grid.slide(from, dir) != landed:
 			grid.slides[from * MazeGrid.MOVES + dir] = landed
 			corrections += 1
+
+
+# True when ball `i` rests against another ball (within a ball's width and a little).
+func _touches_another(positions: PackedVector2Array, i: int) -> bool:
+	var reach := _level.ball_radius * 2.0 + 2.0
+	for o in positions.size():
+		if o != i and positions[o].distance_to(positions[i]) <= reach:
+			return true
+	return false
 
 
 # Rolls the gathered pack to the goal: each ball asks for the velocity that follows its own

@@ -9,12 +9,17 @@ extends RefCounted
 const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
 const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
 
-## Cost of one more move, in pixels of distance left to the goal.
-const MOVE_COST := 8.0
-## Once the balls can be gathered, plans at most this many moves longer are still tried.
-const EXTRA_MOVES := 4
-## Search no further than this many states.
+## A plan's cost is the time it takes, in px a ball rolls at full speed: each move costs
+## its longest roll plus MOVE_COST for starting and stopping.
+const MOVE_COST := 30.0
+## How much the search trusts its estimate of the cost left (> 1: it finds a plan sooner,
+## not always the quickest).
+const HEURISTIC_WEIGHT := 2.5
+## Share of a plan's cost that counts when it cannot gather the balls.
+const SCATTERED_COST_SHARE := 0.2
+## Search no further than this many states, and grow at most MAX_EXPANDED of them.
 const MAX_STATES := 250000
+const MAX_EXPANDED := 25000
 
 var grid: MazeGrid
 var nav: MazeNav
@@ -23,7 +28,11 @@ var target := PackedInt32Array()
 var moves := PackedInt32Array()
 
 var _bits := 1
+## What moves really did from some states: _learned[state key][move] → the state key after.
+var _learned := {}
 var _cell_distance := PackedFloat32Array()
+## A cell this near the goal (path length, px) holds a pack that is already in it.
+var _goal_reach := 0.0
 
 
 func _init(p_grid: MazeGrid, p_nav: MazeNav) -> void:
@@ -34,11 +43,14 @@ func _init(p_grid: MazeGrid, p_nav: MazeNav) -> void:
 	_cell_distance.resize(grid.cell_count())
 	for i in grid.cell_count():
 		_cell_distance[i] = minf(nav.distance_at(grid.cell_center(i)), 1.0e6)
+	_goal_reach = grid.cell.length() * 0.75
 
 
-## Plans from balls in `cells`; `order` is the order directions are tried (ties go to the
-## first, so a shuffled order gives another equally short plan). Returns false when no
-## state gathers the balls (then `target` is the state nearest the goal found).
+## Plans from balls in `cells`; `order` is the order moves are tried (ties go to the first,
+## so a shuffled order gives another plan). Best-first: the states whose balls are nearest
+## the goal are grown first, so big mazes with many balls are searched where it matters.
+## Returns true when the plan gathers every ball in one cell; otherwise `moves` lead to the
+## state nearest the goal found (`target`), a start to plan again from.
 func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 	var n := cells.size()
 	if n == 0 or n * _bits > 62:
@@ -46,45 +58,58 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 	var keys := PackedInt64Array([_encode(cells)])
 	var parents := PackedInt32Array([-1])
 	var dirs := PackedByteArray([0])
-	var depth := PackedInt32Array([0])
+	var spent := PackedFloat32Array([0.0])
 	var seen := {keys[0]: 0}
+	var open := _Frontier.new()
+	open.push(0.0, 0)
 	var best := 0
 	var best_score := INF
-	var gathered := false
-	var depth_limit := 1 << 30
-	var head := 0
 	var state := PackedInt32Array()
 	state.resize(n)
 	var next := PackedInt32Array()
 	next.resize(n)
 	var slides := grid.slides
 	var stride := MazeGrid.MOVES
-	while head < keys.size():
+	var expanded := 0
+	while not open.is_empty() and expanded < MAX_EXPANDED:
+		var head := open.pop()
+		expanded += 1
 		_decode(keys[head], state)
-		var score := _score(state, depth[head])
+		var score := _score(state, spent[head])
 		if score < best_score:
 			best_score = score
 			best = head
-		if _all_same(state) and not gathered:
-			gathered = true
-			# A gathering this many moves deeper would have to be much nearer the goal.
-			depth_limit = depth[head] + EXTRA_MOVES
-		if keys.size() < MAX_STATES and depth[head] < depth_limit:
-			for d in order:
-				var deadly := false
+		if _all_same(state) and _cell_distance[state[0]] <= _goal_reach:
+			break  # gathered in the goal: nothing better to find
+		if keys.size() >= MAX_STATES:
+			continue
+		var learned: Dictionary = _learned.get(keys[head], {})
+		for d in order:
+			var deadly := false
+			if learned.has(d):
+				var after: int = learned[d]
+				_decode(after, next)
+			else:
 				for b in n:
 					next[b] = slides[state[b] * stride + d]
 					deadly = deadly or next[b] < 0
-				if deadly:
-					continue  # a ball would roll over a black hole
-				var key := _sorted_key(next, n)
-				if not seen.has(key):
-					seen[key] = keys.size()
-					keys.append(key)
-					parents.append(head)
-					dirs.append(d)
-					depth.append(depth[head] + 1)
-		head += 1
+			if deadly:
+				continue  # a ball would roll over a black hole
+			if not learned.has(d):
+				grid.queue_up(state, next, n, d)
+			var longest := 0.0
+			for b in n:
+				longest = maxf(longest, grid.travel(state[b], next[b]))
+			var key := _sorted_key(next, n)
+			if seen.has(key):
+				continue
+			seen[key] = keys.size()
+			var cost := spent[head] + MOVE_COST + longest
+			open.push(cost + HEURISTIC_WEIGHT * _estimate(next), keys.size())
+			keys.append(key)
+			parents.append(head)
+			dirs.append(d)
+			spent.append(cost)
 	target = PackedInt32Array()
 	target.resize(n)
 	_decode(keys[best], target)
@@ -94,16 +119,34 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 		moves.append(dirs[at])
 		at = parents[at]
 	moves.reverse()
-	return gathered
+	return _all_same(target)
 
 
 ## The balls' cells after `moves[0..count)` from `cells` (sorted).
 func predict(cells: PackedInt32Array, dir: int) -> PackedInt32Array:
+	var known: Dictionary = _learned.get(_encode(cells), {}) if not cells.is_empty() else {}
+	if known.has(dir):
+		var after := cells.duplicate()
+		var key: int = known[dir]
+		_decode(key, after)
+		return after
 	var next := PackedInt32Array()
 	for c in cells:
 		next.append(grid.slide(c, dir))
+	grid.queue_up(cells, next, cells.size(), dir)
 	next.sort()
 	return next
+
+
+## Remembers that `move` took balls in `before` (cells, sorted) to `after` (sorted): plans
+## from that state expect it from now on.
+func remember(before: PackedInt32Array, move: int, after: PackedInt32Array) -> void:
+	if before.size() != after.size() or before.is_empty() or before.size() * _bits > 62:
+		return
+	var key := _encode(before)
+	var known: Dictionary = _learned.get(key, {})
+	known[move] = _encode(after)
+	_learned[key] = known
 
 
 ## Never gather in `cell` again (the pack did not make it from there to the goal).
@@ -126,16 +169,28 @@ func cells_of(positions: PackedVector2Array) -> PackedInt32Array:
 	return cells
 
 
-# A gathered state scores its cell's distance to the goal; a scattered one scores far worse
-# (the sum of every ball's distance), so a gathering always wins when one exists.
-func _score(state: PackedInt32Array, moves_so_far: int) -> float:
-	var cost := MOVE_COST * float(moves_so_far)
+# A gathered state scores its cell's distance to the goal plus what the moves there cost
+# (`spent`); a scattered one scores far worse (the sum of every ball's distance, the cost
+# counting less: a plan that only brings the balls nearer should bring them as near as it
+# can), so a gathering always wins when one exists.
+func _score(state: PackedInt32Array, spent: float) -> float:
 	if _all_same(state):
-		return cost + _cell_distance[state[0]]
+		return spent + _cell_distance[state[0]]
 	var total := 1.0e5
 	for c in state:
 		total += _cell_distance[c]
-	return cost + total
+	return total + spent * SCATTERED_COST_SHARE
+
+
+# The cost left from `state`, estimated: the farthest ball's path length to the goal, with
+# the mean of all of them so a state with more balls nearer sorts first.
+func _estimate(state: PackedInt32Array) -> float:
+	var far := 0.0
+	var total := 0.0
+	for c in state:
+		far = maxf(far, _cell_distance[c])
+		total += _cell_distance[c]
+	return 0.5 * (far + total / float(state.size()))
 
 
 static func _all_same(state: PackedInt32Array) -> bool:
@@ -174,3 +229,51 @@ func _decode(key: int, out: PackedInt32Array) -> void:
 	for i in range(out.size() - 1, -1, -1):
 		out[i] = key & mask
 		key >>= _bits
+
+
+# A binary min-heap of (priority, node) pairs: the search frontier.
+class _Frontier:
+	var _cost := PackedFloat32Array()
+	var _node := PackedInt32Array()
+
+	func is_empty() -> bool:
+		return _node.is_empty()
+
+	func push(cost: float, node: int) -> void:
+		var m := _node.size()
+		_cost.append(cost)
+		_node.append(node)
+		while m > 0:
+			var parent := (m - 1) >> 1
+			if _cost[parent] <= cost:
+				break
+			_cost[m] = _cost[parent]
+			_node[m] = _node[parent]
+			m = parent
+		_cost[m] = cost
+		_node[m] = node
+
+	func pop() -> int:
+		var top := _node[0]
+		var size := _node.size() - 1
+		var last_cost := _cost[size]
+		var last_node := _node[size]
+		_cost.resize(size)
+		_node.resize(size)
+		if size == 0:
+			return top
+		var k := 0
+		while true:
+			var child := 2 * k + 1
+			if child >= size:
+				break
+			if child + 1 < size and _cost[child + 1] < _cost[child]:
+				child += 1
+			if last_cost <= _cost[child]:
+				break
+			_cost[k] = _cost[child]
+			_node[k] = _node[child]
+			k = child
+		_cost[k] = last_cost
+		_node[k] = last_node
+		return top
