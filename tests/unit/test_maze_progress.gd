@@ -6,6 +6,7 @@ const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
 const SaveDataScript := preload("res://scripts/app/save_data.gd")
 const LevelCard := preload("res://scenes/menu/level_card.gd")
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
+const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const SAVE := "user://test_maze_progress_save.cfg"
 const SETTINGS := "user://test_maze_progress_settings.cfg"
 const EMPTY_USER_ROOT := "user://test_maze_progress_no_boards"
@@ -85,8 +86,8 @@ func test_easy_and_hard_keep_their_own_medal_and_time() -> void:
 	assert_eq(badges.hard_medal, Medals.Medal.GOLD, "a hard finish earns the hard medal")
 	assert_eq(badges.easy_medal, Medals.Medal.BRONZE, "the easy medal from the easy time")
 	var text := " ".join(cards[0].texts())
-	assert_string_contains(text, "Easy 0:")
-	assert_string_contains(text, " · Hard 0:")
+	assert_string_contains(text, "Easy %s" % LevelSelect._clock_text(easy_bronze))
+	assert_string_contains(text, " · Hard %s" % LevelSelect._clock_text(hard_gold - 0.1))
 	assert_false(cards[1].locked, "a hard finish opens the next board too")
 
 

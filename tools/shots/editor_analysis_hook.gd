@@ -3,7 +3,8 @@ extends Node
 ## Screenshot hook for tools/editor_analysis_shot.sh. When the editor starts with
 ## BOARD_EDITOR_ANALYSIS_SHOT="<scene.tscn>;<out.png>" it opens the scene, selects its
 ## BoardNode, presses Analyze in the board dock (the maze section on a maze board), waits
-## for the run to finish (the editor keeps drawing meanwhile), saves the editor window as a PNG and quits.
+## for the run to finish (the editor keeps drawing meanwhile), saves the editor window as a
+## PNG and quits.
 
 const ENV := "BOARD_EDITOR_ANALYSIS_SHOT"
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
