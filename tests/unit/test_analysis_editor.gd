@@ -68,7 +68,7 @@ func test_cancel_keeps_the_editor_usable() -> void:
 	panel.cancel()
 	_finish(panel)
 	assert_false(panel.is_running())
-	assert_string_contains(panel._status.text, "Cancelled")
+	assert_string_contains(panel._controls.status.text, "Cancelled")
 	assert_true(
 		AnalysisCache.load_report(AnalysisCache.key_for(panel._plan_for(panel._level))).is_empty(),
 		"a cancelled run is not cached"

@@ -43,14 +43,14 @@ func test_the_pilots_games_show_and_stay_for_the_same_board() -> void:
 	for mode: String in ["easy", "hard"]:
 		var figures: Dictionary = report[mode]
 		assert_eq(figures["games"], 1, "%s: one game played" % mode)
-	assert_string_contains(panel._status.text, "Easy: won ")
-	assert_string_contains(panel._status.text, "2 games in ")
+	assert_string_contains(panel._controls.status.text, "Easy: won ")
+	assert_string_contains(panel._controls.status.text, "2 games in ")
 	# An edit makes the figures stale; undoing back to the same content brings them back.
 	var start := level.ball_starts[0]
 	level.ball_starts[0] = start + Vector2(0, 5)
 	panel.bind(level)
 	assert_true(panel.report().is_empty(), "an edited board has no figures")
-	assert_string_contains(panel._status.text, "Not analysed")
+	assert_string_contains(panel._controls.status.text, "Not analysed")
 	level.ball_starts[0] = start
 	panel.bind(level)
 	assert_eq(panel.report(), report, "the same content shows its figures again")
@@ -67,7 +67,7 @@ func test_cancel_stops_the_games_and_keeps_nothing() -> void:
 	assert_lt(Time.get_ticks_msec() - started, 20000, "cancelled games stop at their next frame")
 	assert_false(panel.is_running())
 	assert_true(panel.report().is_empty())
-	assert_string_contains(panel._status.text, "Cancelled")
+	assert_string_contains(panel._controls.status.text, "Cancelled")
 
 
 func test_a_pachinko_board_hides_the_section() -> void:

@@ -13,6 +13,7 @@ signal redraw_needed
 signal results_changed
 
 const OverlayDraw := preload("res://addons/board_editor/analysis/analysis_overlay_draw.gd")
+const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 ## Partial figures are refreshed at most this often while a run goes on, ms.
 const UPDATE_MS := 400
 
@@ -30,44 +31,15 @@ var _run_started := 0
 var _last_update := 0
 var _shown_shots := -1
 
-var _analyze: Button
-var _cancel: Button
-var _progress: ProgressBar
-var _status: Label
-var _show: CheckBox
+var _controls: Controls
 
 
 func _init() -> void:
 	name = "PlayAnalysis"
-	var title := Label.new()
-	title.text = "Play analysis"
-	add_child(title)
-	var row := HBoxContainer.new()
-	_analyze = Button.new()
-	_analyze.text = "Analyze"
-	_analyze.tooltip_text = (
+	var tip := (
 		"Fire %d shots at random power on worker threads: heat map, pocket rates, aim map" % shots
 	)
-	_analyze.pressed.connect(start)
-	row.add_child(_analyze)
-	_cancel = Button.new()
-	_cancel.text = "Cancel"
-	_cancel.disabled = true
-	_cancel.pressed.connect(cancel)
-	row.add_child(_cancel)
-	_show = CheckBox.new()
-	_show.text = "Show"
-	_show.button_pressed = true
-	_show.toggled.connect(func(_on: bool) -> void: redraw_needed.emit())
-	row.add_child(_show)
-	add_child(row)
-	_progress = ProgressBar.new()
-	_progress.max_value = 1.0
-	_progress.visible = false
-	add_child(_progress)
-	_status = Label.new()
-	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
-	add_child(_status)
+	_controls = Controls.new(self, tip, start, cancel, _on_show_toggled)
 	set_process(false)
 
 
@@ -101,16 +73,16 @@ func start() -> void:
 	_run_key = _key
 	_run = PachinkoAnalysis.new(plan)
 	if not _run.start():
-		_status.text = "This board cannot be analysed: %s." % plan.problem()
+		_controls.status.text = "This board cannot be analysed: %s." % plan.problem()
 		_run = null
 		return
 	_run_started = Time.get_ticks_msec()
 	_shown_shots = -1
-	_analyze.disabled = true
-	_cancel.disabled = false
-	_progress.visible = true
-	_progress.value = 0.0
-	_status.text = "Climbing the rail at every power..."
+	_controls.analyze.disabled = true
+	_controls.cancel.disabled = false
+	_controls.progress.visible = true
+	_controls.progress.value = 0.0
+	_controls.status.text = "Climbing the rail at every power..."
 	set_process(true)
 
 
@@ -132,7 +104,7 @@ func report() -> Dictionary:
 
 ## Draws the figures over the board (the plugin calls it from its viewport overlay).
 func draw_over(canvas: Control, to_screen: Transform2D) -> void:
-	if _level != null and _show.button_pressed and (_run == null or _run_key == _key):
+	if _level != null and _controls.show.button_pressed and (_run == null or _run_key == _key):
 		OverlayDraw.draw(canvas, to_screen, _level, _report, _heat)
 
 
@@ -141,7 +113,7 @@ func _process(_delta: float) -> void:
 		set_process(false)
 		return
 	var done := _run.poll()
-	_progress.value = _run.progress()
+	_controls.progress.value = _run.progress()
 	if done:
 		_finish()
 	elif Time.get_ticks_msec() - _last_update >= UPDATE_MS:
@@ -163,7 +135,7 @@ func _show_partial(final: bool) -> void:
 		_report = fresh
 		_heat = ImageTexture.create_from_image(image)
 		redraw_needed.emit()
-	_status.text = (
+	_controls.status.text = (
 		"%d of %d shots (%.0f shots/s)..." % [_shown_shots, _run.plan.shots, fresh["shots_per_s"]]
 	)
 	if final:
@@ -177,25 +149,27 @@ func _finish() -> void:
 	_show_partial(not cancelled)
 	var seconds := (Time.get_ticks_msec() - _run_started) / 1000.0
 	_run = null
-	_analyze.disabled = false
-	_cancel.disabled = true
-	_progress.visible = false
+	_controls.analyze.disabled = false
+	_controls.cancel.disabled = true
+	_controls.progress.visible = false
 	set_process(false)
 	if cancelled:
-		_status.text = "Cancelled: the figures are from the %d shots done." % maxi(_shown_shots, 0)
+		_controls.status.text = (
+			"Cancelled: the figures are from the %d shots done." % maxi(_shown_shots, 0)
+		)
 	else:
 		_say_result()
-		_status.text += "\n%d shots in %.1f s." % [shots, seconds]
+		_controls.status.text += "\n%d shots in %.1f s." % [shots, seconds]
 	redraw_needed.emit()
 	results_changed.emit()
 
 
 func _say_result() -> void:
 	if _report.is_empty():
-		_status.text = "Not analysed since the last edit." if _level != null else ""
+		_controls.status.text = "Not analysed since the last edit." if _level != null else ""
 		return
 	var dead: Array = _report.get("dead_pockets", [])
-	_status.text = (
+	_controls.status.text = (
 		"Return %.2f ± %.2f balls per ball; %s."
 		% [
 			AnalysisReport.number(_report.get("return", 0.0)),
@@ -207,3 +181,7 @@ func _say_result() -> void:
 
 func _plan_for(level: BoardLevel) -> AnalysisPlan:
 	return AnalysisPlan.create(level, shots, 1)
+
+
+func _on_show_toggled(_on: bool) -> void:
+	redraw_needed.emit()

@@ -12,6 +12,7 @@ signal redraw_needed
 
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
+const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 ## First seed of the games: the same board always gives the same figures.
 const SEED := 1
 
@@ -27,50 +28,21 @@ var _run: MazeAnalysis
 var _run_key := ""
 var _run_level: BoardLevel
 
-var _analyze: Button
-var _cancel: Button
-var _progress: ProgressBar
-var _status: Label
-var _show: CheckBox
+var _controls: Controls
 
 
 func _init() -> void:
 	name = "MazeAnalysis"
-	var title := Label.new()
-	title.text = "Play analysis"
-	add_child(title)
-	var row := HBoxContainer.new()
-	_analyze = Button.new()
-	_analyze.text = "Analyze"
-	_analyze.tooltip_text = (
+	var tip := (
 		"Let the autoplay pilot play %d games in easy and %d in hard mode: solve rates, times, "
 		+ "and the holes that catch balls."
 	)
-	_analyze.pressed.connect(start)
-	row.add_child(_analyze)
-	_cancel = Button.new()
-	_cancel.text = "Cancel"
-	_cancel.disabled = true
-	_cancel.pressed.connect(cancel)
-	row.add_child(_cancel)
-	_show = CheckBox.new()
-	_show.text = "Show"
-	_show.button_pressed = true
-	_show.toggled.connect(func(_on: bool) -> void: redraw_needed.emit())
-	row.add_child(_show)
-	add_child(row)
-	_progress = ProgressBar.new()
-	_progress.max_value = 1.0
-	_progress.visible = false
-	add_child(_progress)
-	_status = Label.new()
-	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
-	add_child(_status)
+	_controls = Controls.new(self, tip, start, cancel, _on_show_toggled)
 	set_process(false)
 
 
 func _ready() -> void:
-	_analyze.tooltip_text = _analyze.tooltip_text % [runs, runs]
+	_controls.analyze.tooltip_text = _controls.analyze.tooltip_text % [runs, runs]
 
 
 ## Shows the analysis of `level` (null or a pachinko board: the section hides). Called after
@@ -96,11 +68,11 @@ func start() -> void:
 	_run_key = _key
 	_run = MazeAnalysis.create(_run_level, runs, SEED)
 	_run.start(OS.get_processor_count())
-	_analyze.disabled = true
-	_cancel.disabled = false
-	_progress.visible = true
-	_progress.value = 0.0
-	_status.text = "The pilot is playing %d games..." % _run.games()
+	_controls.analyze.disabled = true
+	_controls.cancel.disabled = false
+	_controls.progress.visible = true
+	_controls.progress.value = 0.0
+	_controls.status.text = "The pilot is playing %d games..." % _run.games()
 	set_process(true)
 
 
@@ -122,7 +94,7 @@ func report() -> Dictionary:
 
 ## Draws the figures over the board (the plugin calls it from its viewport overlay).
 func draw_over(canvas: Control, to_screen: Transform2D) -> void:
-	if _level != null and _show.button_pressed and not _report.is_empty():
+	if _level != null and _controls.show.button_pressed and not _report.is_empty():
 		OverlayDraw.draw(canvas, to_screen, _level, _report)
 
 
@@ -130,7 +102,7 @@ func _process(_delta: float) -> void:
 	if _run == null:
 		set_process(false)
 		return
-	_progress.value = float(_run.games_done()) / _run.games()
+	_controls.progress.value = float(_run.games_done()) / _run.games()
 	if _run.poll():
 		_finish()
 
@@ -140,13 +112,13 @@ func _finish() -> void:
 	var finished := _run.report()
 	_run = null
 	_run_level = null
-	_analyze.disabled = false
-	_cancel.disabled = true
-	_progress.visible = false
+	_controls.analyze.disabled = false
+	_controls.cancel.disabled = true
+	_controls.progress.visible = false
 	set_process(false)
 	if cancelled:
 		_say_result()
-		_status.text = "Cancelled: no figures kept.\n" + _status.text
+		_controls.status.text = "Cancelled: no figures kept.\n" + _controls.status.text
 		return
 	_results[_run_key] = finished
 	if _run_key == _key:
@@ -154,7 +126,7 @@ func _finish() -> void:
 	_say_result()
 	var games: int = finished["runs"]
 	var seconds: float = finished["wall_s"]
-	_status.text += "\n%d games in %.1f s." % [games * 2, seconds]
+	_controls.status.text += "\n%d games in %.1f s." % [games * 2, seconds]
 	redraw_needed.emit()
 
 
@@ -168,7 +140,7 @@ func _exit_tree() -> void:
 
 func _say_result() -> void:
 	if _report.is_empty():
-		_status.text = "Not analysed since the last edit." if _level != null else ""
+		_controls.status.text = "Not analysed since the last edit." if _level != null else ""
 		return
 	var lines := PackedStringArray()
 	for mode: String in ["easy", "hard"]:
@@ -178,4 +150,8 @@ func _say_result() -> void:
 	var holes: Array = hard.get("holes", [])
 	if not holes.is_empty():
 		lines.append(OverlayDraw.holes_line(holes))
-	_status.text = "\n".join(lines)
+	_controls.status.text = "\n".join(lines)
+
+
+func _on_show_toggled(_on: bool) -> void:
+	redraw_needed.emit()

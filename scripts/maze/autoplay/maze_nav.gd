@@ -5,6 +5,7 @@ extends RefCounted
 ## does not scrape caps. The autoplay steers each ball down this field.
 
 ## Lattice spacing in pixels.
+const MinHeap := preload("res://scripts/maze/autoplay/min_heap.gd")
 const SPACING := 2.5
 ## Extra clearance (px) beyond touching that the paths try to keep.
 const COMFORT := 6.0
@@ -113,32 +114,13 @@ func _build_distance() -> void:
 	var dist := distance
 	var clear := clearance
 	dist[start] = 0.0
-	# Dijkstra with a binary heap kept inline in two local packed arrays (hot loop).
-	var heap_cost := PackedFloat32Array([0.0])
-	var heap_idx := PackedInt32Array([start])
-	var size := 1
+	var frontier := MinHeap.new()
+	frontier.push(0.0, start)
 	var dcs := PackedInt32Array([1, -1, 0, 0, 1, 1, -1, -1])
 	var drs := PackedInt32Array([0, 0, 1, -1, 1, -1, 1, -1])
-	while size > 0:
-		var cost: float = heap_cost[0]
-		var i: int = heap_idx[0]
-		size -= 1
-		var last_cost: float = heap_cost[size]
-		var last_idx: int = heap_idx[size]
-		var k := 0
-		while true:
-			var child := 2 * k + 1
-			if child >= size:
-				break
-			if child + 1 < size and heap_cost[child + 1] < heap_cost[child]:
-				child += 1
-			if last_cost <= heap_cost[child]:
-				break
-			heap_cost[k] = heap_cost[child]
-			heap_idx[k] = heap_idx[child]
-			k = child
-		heap_cost[k] = last_cost
-		heap_idx[k] = last_idx
+	while not frontier.is_empty():
+		var i := frontier.pop()
+		var cost := frontier.last_cost
 		if cost > dist[i]:
 			continue
 		var c := i % cols
@@ -158,20 +140,7 @@ func _build_distance() -> void:
 			var next_cost := cost + length * (1.0 + HUG_COST * hug)
 			if next_cost < dist[j]:
 				dist[j] = next_cost
-				if size >= heap_cost.size():
-					heap_cost.resize(size * 2 + 8)
-					heap_idx.resize(size * 2 + 8)
-				var m := size
-				size += 1
-				while m > 0:
-					var parent := (m - 1) >> 1
-					if heap_cost[parent] <= next_cost:
-						break
-					heap_cost[m] = heap_cost[parent]
-					heap_idx[m] = heap_idx[parent]
-					m = parent
-				heap_cost[m] = next_cost
-				heap_idx[m] = j
+				frontier.push(next_cost, j)
 	distance = dist
 
 

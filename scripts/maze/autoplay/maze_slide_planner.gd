@@ -6,6 +6,7 @@ extends RefCounted
 ## gathers every ball into one cell close to the goal; from there the pack rolls in as one.
 ## (One tilt moves every ball, so gathering first is what makes the goal reachable.)
 
+const MinHeap := preload("res://scripts/maze/autoplay/min_heap.gd")
 const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
 const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
 
@@ -60,7 +61,7 @@ func plan(cells: PackedInt32Array, order: PackedInt32Array) -> bool:
 	var dirs := PackedByteArray([0])
 	var spent := PackedFloat32Array([0.0])
 	var seen := {keys[0]: 0}
-	var open := _Frontier.new()
+	var open := MinHeap.new()
 	open.push(0.0, 0)
 	var best := 0
 	var best_score := INF
@@ -229,51 +230,3 @@ func _decode(key: int, out: PackedInt32Array) -> void:
 	for i in range(out.size() - 1, -1, -1):
 		out[i] = key & mask
 		key >>= _bits
-
-
-# A binary min-heap of (priority, node) pairs: the search frontier.
-class _Frontier:
-	var _cost := PackedFloat32Array()
-	var _node := PackedInt32Array()
-
-	func is_empty() -> bool:
-		return _node.is_empty()
-
-	func push(cost: float, node: int) -> void:
-		var m := _node.size()
-		_cost.append(cost)
-		_node.append(node)
-		while m > 0:
-			var parent := (m - 1) >> 1
-			if _cost[parent] <= cost:
-				break
-			_cost[m] = _cost[parent]
-			_node[m] = _node[parent]
-			m = parent
-		_cost[m] = cost
-		_node[m] = node
-
-	func pop() -> int:
-		var top := _node[0]
-		var size := _node.size() - 1
-		var last_cost := _cost[size]
-		var last_node := _node[size]
-		_cost.resize(size)
-		_node.resize(size)
-		if size == 0:
-			return top
-		var k := 0
-		while true:
-			var child := 2 * k + 1
-			if child >= size:
-				break
-			if child + 1 < size and _cost[child + 1] < _cost[child]:
-				child += 1
-			if last_cost <= _cost[child]:
-				break
-			_cost[k] = _cost[child]
-			_node[k] = _node[child]
-			k = child
-		_cost[k] = last_cost
-		_node[k] = last_node
-		return top
