@@ -4,6 +4,7 @@ extends VBoxContainer
 ## centre, radius, start and end angle and pin count, each change one undo step that
 ## reshapes the arc (EditArcAction) and keeps it selected.
 
+const NumberRow := preload("res://addons/board_editor/ui/number_row.gd")
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 const EditArcAction := preload("res://addons/board_editor/actions/edit_arc_action.gd")
@@ -31,18 +32,9 @@ func _init() -> void:
 	add_child(heading)
 	for key: String in PinArc.KEYS:
 		var spec: Array = FIELDS[key]
-		var row := HBoxContainer.new()
-		var label := Label.new()
-		label.text = spec[0]
-		label.size_flags_horizontal = Control.SIZE_EXPAND_FILL
-		row.add_child(label)
-		var spin := SpinBox.new()
-		spin.min_value = spec[1]
-		spin.max_value = spec[2]
-		spin.step = spec[3]
-		spin.custom_minimum_size = Vector2(96, 0)
+		var row := NumberRow.make(spec)
+		var spin := NumberRow.spin_of(row)
 		spin.value_changed.connect(_on_value_changed.bind(key))
-		row.add_child(spin)
 		add_child(row)
 		_fields[key] = spin
 

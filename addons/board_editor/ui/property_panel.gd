@@ -4,6 +4,7 @@ extends VBoxContainer
 ## each change one undo step; with several items selected, their count, align and space
 ## buttons, and for pins on an arc the arc's shape (ArcFields).
 
+const NumberRow := preload("res://addons/board_editor/ui/number_row.gd")
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
@@ -44,18 +45,9 @@ func _init() -> void:
 	_add_role_row()
 	for key: String in ItemProperties.FIELDS:
 		var spec: Array = ItemProperties.FIELDS[key]
-		var row := HBoxContainer.new()
-		var label := Label.new()
-		label.text = spec[0]
-		label.size_flags_horizontal = Control.SIZE_EXPAND_FILL
-		row.add_child(label)
-		var spin := SpinBox.new()
-		spin.min_value = spec[1]
-		spin.max_value = spec[2]
-		spin.step = spec[3]
-		spin.custom_minimum_size = Vector2(96, 0)
+		var row := NumberRow.make(spec)
+		var spin := NumberRow.spin_of(row)
 		spin.value_changed.connect(_on_value_changed.bind(key))
-		row.add_child(spin)
 		add_child(row)
 		_rows[key] = row
 		_fields[key] = spin
