@@ -58,85 +58,115 @@ func _trace(level: BoardLevel, rng_seed: int, hard: bool, every: float) -> void:
 	var pilot := MazePilot.new(level, hard, rng, rules.step_seconds())
 	rules.start()
 	var limit := ceili(SECONDS / rules.step_seconds())
-	var closest := INF
-	var closest_at := ""
+	var stats := _TraceStats.new()
 	var next_line := every
 	var frames := 0
-	var phase_time := {}
-	var move_stats := {}
-	var last_key := ""
-	var last_kind := ""
-	var last_time := 0.0
 	while frames < limit and rules.is_playing():
 		var world := rules.world
 		var positions := world.get_positions()
-		var gap := _hole_gap(level, positions)
-		if gap < closest:
-			closest = gap
-			closest_at = "%s at %.1f s" % [PHASES[pilot.phase], rules.elapsed]
-			if pilot.phase == MazePilot.Phase.MOVE:
-				closest_at += " move %d, balls %s" % [pilot.planner.moves[pilot._move], positions]
+		stats.note_gap(_hole_gap(level, positions), pilot, rules.elapsed, positions)
 		rules.set_tilt(pilot.decide(positions, world.get_velocities()))
-		phase_time[pilot.phase] = phase_time.get(pilot.phase, 0.0) + rules.step_seconds()
+		stats.note_phase(pilot.phase, rules.step_seconds())
 		rules.step()
 		frames += 1
-		var key := "%d/%d/%d" % [pilot.plans_made, pilot._move, pilot.phase]
-		if key != last_key:
-			if last_kind != "":
-				_add_stat(move_stats, last_kind, last_time)
-			last_key = key
-			last_kind = ""
-			if pilot.phase == MazePilot.Phase.MOVE:
-				last_kind = (
-					"step" if pilot.grid.is_step(pilot.planner.moves[pilot._move]) else "slide"
-				)
-		last_time = pilot._move_time
+		stats.note_move(pilot)
 		if every > 0.0 and rules.elapsed >= next_line:
 			next_line += every
-			print(
-				(
-					"  %5.1f s %s plans %d in goal %d cells %s"
-					% [
-						rules.elapsed,
-						PHASES[pilot.phase],
-						pilot.plans_made,
-						rules.balls_in_goal,
-						pilot.planner.cells_of(positions) if pilot.planner != null else [],
-					]
-				)
-			)
-	var times := []
-	for p: int in phase_time:
-		times.append("%s %.0f s" % [PHASES[p], phase_time[p]])
-	for kind: String in move_stats:
-		var st: Array = move_stats[kind]
-		times.append(
-			"%s x%d avg %.2f s, %d timed out" % [kind, st[0], st[1] / maxf(1.0, st[0]), st[2]]
-		)
-	var outcome := "TIMEOUT"
-	if rules.state == MazeRules.State.WON:
-		outcome = "WON %.1f s" % rules.elapsed
-	elif rules.state == MazeRules.State.LOST:
-		outcome = (
-			"FELL in hole %d at %.1f s (%s)"
-			% [rules.lost_hole, rules.elapsed, level.holes[rules.lost_hole]]
-		)
+			print(_progress_line(rules, pilot, positions))
 	print(
 		(
 			"seed %d: %s; phase %s, plans %d, corrections %d, closest edge gap %.1f px (%s), in goal %d; %s"
 			% [
 				rng_seed,
-				outcome,
+				_outcome(rules, level),
 				PHASES[pilot.phase],
 				pilot.plans_made,
 				pilot.corrections,
-				closest,
-				closest_at,
+				stats.closest,
+				stats.closest_at,
 				rules.balls_in_goal,
-				", ".join(times),
+				", ".join(stats.lines()),
 			]
 		)
 	)
+
+
+func _progress_line(rules: MazeRules, pilot: MazePilot, positions: PackedVector2Array) -> String:
+	return (
+		"  %5.1f s %s plans %d in goal %d cells %s"
+		% [
+			rules.elapsed,
+			PHASES[pilot.phase],
+			pilot.plans_made,
+			rules.balls_in_goal,
+			pilot.planner.cells_of(positions) if pilot.planner != null else [],
+		]
+	)
+
+
+func _outcome(rules: MazeRules, level: BoardLevel) -> String:
+	if rules.state == MazeRules.State.WON:
+		return "WON %.1f s" % rules.elapsed
+	if rules.state == MazeRules.State.LOST:
+		return (
+			"FELL in hole %d at %.1f s (%s)"
+			% [rules.lost_hole, rules.elapsed, level.holes[rules.lost_hole]]
+		)
+	return "TIMEOUT"
+
+
+# What one traced game did: the closest call to a hole, seconds per pilot phase, and each
+# kind of move (slide, step) with its count, mean time and timeouts.
+class _TraceStats:
+	var closest := INF
+	var closest_at := ""
+	var phase_time := {}
+	var move_stats := {}
+	var _last_key := ""
+	var _last_kind := ""
+	var _last_time := 0.0
+
+	func note_gap(gap: float, pilot: MazePilot, at: float, positions: PackedVector2Array) -> void:
+		if gap >= closest:
+			return
+		closest = gap
+		closest_at = "%s at %.1f s" % [PHASES[pilot.phase], at]
+		if pilot.phase == MazePilot.Phase.MOVE:
+			closest_at += " move %d, balls %s" % [pilot.planner.moves[pilot._move], positions]
+
+	func note_phase(phase: int, seconds: float) -> void:
+		phase_time[phase] = phase_time.get(phase, 0.0) + seconds
+
+	func note_move(pilot: MazePilot) -> void:
+		var key := "%d/%d/%d" % [pilot.plans_made, pilot._move, pilot.phase]
+		if key != _last_key:
+			if _last_kind != "":
+				_add_stat(_last_kind, _last_time)
+			_last_key = key
+			_last_kind = ""
+			if pilot.phase == MazePilot.Phase.MOVE:
+				var move: int = pilot.planner.moves[pilot._move]
+				_last_kind = "step" if pilot.grid.is_step(move) else "slide"
+		_last_time = pilot._move_time
+
+	func lines() -> Array:
+		var out := []
+		for p: int in phase_time:
+			out.append("%s %.0f s" % [PHASES[p], phase_time[p]])
+		for kind: String in move_stats:
+			var st: Array = move_stats[kind]
+			out.append(
+				"%s x%d avg %.2f s, %d timed out" % [kind, st[0], st[1] / maxf(1.0, st[0]), st[2]]
+			)
+		return out
+
+	func _add_stat(kind: String, seconds: float) -> void:
+		var st: Array = move_stats.get(kind, [0, 0.0, 0])
+		st[0] += 1
+		st[1] += seconds
+		if seconds > MazePilot.MOVE_TIMEOUT:
+			st[2] += 1
+		move_stats[kind] = st
 
 
 # Smallest gap between a ball's centre and a hole's rim, px (negative: over the hole).
@@ -146,12 +176,3 @@ func _hole_gap(level: BoardLevel, positions: PackedVector2Array) -> float:
 		for h in level.holes:
 			gap = minf(gap, p.distance_to(h) - level.hole_radius)
 	return gap
-
-
-func _add_stat(stats: Dictionary, kind: String, seconds: float) -> void:
-	var st: Array = stats.get(kind, [0, 0.0, 0])
-	st[0] += 1
-	st[1] += seconds
-	if seconds > MazePilot.MOVE_TIMEOUT:
-		st[2] += 1
-	stats[kind] = st

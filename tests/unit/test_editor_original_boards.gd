@@ -28,17 +28,17 @@ func test_files_match_what_the_editor_actions_build() -> void:
 		var built: BoardLevel = (recipe[0] as Script).call(recipe[1])
 		# The file is the built board in its saved form (coordinates rounded to 0.01 px),
 		# plus the medal times measured later by tools/maze_pilot_table.gd.
-		var saved := ResourceLoader.load(path) as BoardLevel
+		var saved := BoardLoader.load_board(path).level
 		built.medal_times_easy = saved.medal_times_easy
 		built.medal_times_hard = saved.medal_times_hard
 		assert_eq(FileAccess.get_file_as_string(path), Writer.write(built), path)
 
 
 func test_boards_differ_in_character() -> void:
-	var tulips := ResourceLoader.load("res://levels/pachinko/tulips.board") as BoardLevel
-	var windmills := ResourceLoader.load("res://levels/pachinko/windmills.board") as BoardLevel
+	var tulips := BoardLoader.load_board("res://levels/pachinko/tulips.board").level
+	var windmills := BoardLoader.load_board("res://levels/pachinko/windmills.board").level
 	assert_gt(tulips.pins.size(), windmills.pins.size() * 2, "tulips is the dense one")
 	assert_gt(tulips.pockets.size(), windmills.pockets.size())
-	var catacombs := ResourceLoader.load("res://levels/maze/catacombs.board") as BoardLevel
+	var catacombs := BoardLoader.load_board("res://levels/maze/catacombs.board").level
 	assert_eq(Vector2i(catacombs.grid_cols, catacombs.grid_rows), Vector2i(14, 12))
 	assert_gt(catacombs.holes.size(), 0)
