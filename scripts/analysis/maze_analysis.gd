@@ -31,14 +31,8 @@ static func run(level: BoardLevel, runs: int, rng_seed: int, threads: int) -> Di
 	if level == null or not level.is_maze():
 		return {"ok": false, "error": "the maze analysis needs a maze board"}
 	var analysis := MazeAnalysis.create(level, runs, rng_seed)
-	if threads <= 1:
-		analysis._started_usec = Time.get_ticks_usec()
-		for i in analysis.games():
-			analysis._play(i)
-	else:
-		analysis.start(threads)
-		WorkerThreadPool.wait_for_group_task_completion(analysis._task)
-		analysis._task = -1
+	analysis.start(threads)
+	analysis.wait()
 	return analysis.report()
 
 
@@ -69,9 +63,15 @@ func poll() -> bool:
 		return true
 	if not WorkerThreadPool.is_group_task_completed(_task):
 		return false
-	WorkerThreadPool.wait_for_group_task_completion(_task)
-	_task = -1
+	wait()
 	return true
+
+
+## Blocks until every game has finished (or stopped after cancel()).
+func wait() -> void:
+	if _task >= 0:
+		WorkerThreadPool.wait_for_group_task_completion(_task)
+		_task = -1
 
 
 ## Stops the games at their next frame; the report then counts only finished games.

@@ -12,6 +12,12 @@ const POINT_KEYS: Array[String] = ["x", "y"]
 const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
 
 
+## SHA-256 of write(level): the same board gives the same hash however its file was laid
+## out, and any edit changes it (replays, analysis results).
+static func content_hash(level: BoardLevel) -> String:
+	return write(level).sha256_text()
+
+
 ## The file text for `level`.
 static func write(level: BoardLevel) -> String:
 	var kind := BoardLevel.kind_name(level.kind)

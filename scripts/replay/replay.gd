@@ -72,10 +72,9 @@ func mode_name() -> String:
 	return "hard" if hard else "easy"
 
 
-## The content hash of a board: SHA-256 of the text BoardTextWriter makes from it, so the same
-## board gives the same hash however its file was laid out.
+## The content hash of a board (BoardTextWriter.content_hash).
 static func content_hash(level: BoardLevel) -> String:
-	return BoardTextWriter.write(level).sha256_text()
+	return BoardTextWriter.content_hash(level)
 
 
 ## How many frames a `"tilt"`, `"tilts"` or `"run"` record plays (0 for an event).

@@ -50,7 +50,7 @@ func _ready() -> void:
 func bind(level: BoardLevel) -> void:
 	visible = level != null and level.is_maze()
 	_level = level if visible else null
-	var key := Writer.write(_level).sha256_text() if _level != null else ""
+	var key := Writer.content_hash(_level) if _level != null else ""
 	if key == _key:
 		return
 	_key = key
@@ -133,8 +133,7 @@ func _finish() -> void:
 func _exit_tree() -> void:
 	if _run != null:
 		_run.cancel()
-		while not _run.poll():
-			OS.delay_msec(5)  # the games stop within a frame of play each
+		_run.wait()  # the games stop within a frame of play each
 		_run = null
 
 
