@@ -104,15 +104,8 @@ static func _read_header(data: Variant, replay: Replay) -> String:
 			return 'the header has no "%s"' % key
 		if version < since and header.has(key):
 			return '"%s" came with format %d; this file says format %d' % [key, since, version]
-	replay.physics_version = 1
-	if header.has("physics"):
-		var physics: Variant = _whole(header["physics"], 1, MAX_PHYSICS)
-		if physics == null:
-			return (
-				'"physics" (the physics version) must be a whole number from 1 to %d'
-				% (MAX_PHYSICS)
-			)
-		replay.physics_version = physics
+	if not header.has("physics"):
+		header["physics"] = 1  # files before format 3 were recorded with physics 1
 	var problem := _read_names(header, replay)
 	if not problem.is_empty():
 		return problem
@@ -148,6 +141,7 @@ static func _read_numbers(header: Dictionary, replay: Replay) -> String:
 		["step_hz", 1, 1000],
 		["steps", 0, MAX_STEPS],
 		["state_hash", 0, MAX_WHOLE],
+		["physics", 1, MAX_PHYSICS],
 	]
 	for check: Array in checks:
 		var low: int = check[1]
@@ -160,6 +154,7 @@ static func _read_numbers(header: Dictionary, replay: Replay) -> String:
 	replay.step_hz = header["step_hz"]
 	replay.steps = header["steps"]
 	replay.state_hash = header["state_hash"]
+	replay.physics_version = header["physics"]
 	var value: Variant = header["seconds"]
 	var seconds: float = value if value is float or value is int else -1.0
 	if not is_finite(seconds) or seconds < 0.0:

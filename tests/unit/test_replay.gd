@@ -257,9 +257,12 @@ class TestCommand:
 		var cases := {
 			header.replace(physics, ""): 'the header has no "physics"',
 			header.replace('"replay": 3', '"replay": 2'): '"physics" came with format 3',
-			header.replace(physics, ', "physics": 0'): '"physics" (the physics version) must',
-			header.replace(physics, ', "physics": "2"'): '"physics" (the physics version) must',
-			header.replace(physics, ', "physics": 1e300'): '"physics" (the physics version) must',
+			header.replace(physics, ', "physics": 0'):
+			'"physics" must be a whole number from 1 to 1000',
+			header.replace(physics, ', "physics": "2"'):
+			'"physics" must be a whole number from 1 to 1000',
+			header.replace(physics, ', "physics": 1e300'):
+			'"physics" must be a whole number from 1 to 1000',
 		}
 		for text: String in cases:
 			var error := str(Reader.read(text + "\n").get("error"))

@@ -32,18 +32,10 @@ func _run() -> void:
 	OS.low_processor_usage_mode = false
 	get_tree().create_timer(RUN_LIMIT + 60.0).timeout.connect(get_tree().quit.bind(1))
 	await _frames(60)
-	EditorInterface.open_scene_from_path(parts[0])
-	await _frames(20)
-	var node := EditorInterface.get_edited_scene_root() as BoardNode
+	var node := await EditorShotHook.open_board(get_tree(), parts[0])
 	if node == null:
-		push_error("Analysis shot: %s has no BoardNode at its root." % parts[0])
 		get_tree().quit(1)
 		return
-	EditorInterface.set_main_screen_editor("2D")
-	EditorInterface.get_selection().clear()
-	EditorInterface.get_selection().add_node(node)
-	EditorInterface.edit_node(node)
-	await _frames(20)
 	var framer := EditorShotHook.new(_plugin)
 	framer.call("_frame_board", node)
 	framer.free()

@@ -27,6 +27,32 @@ func _ready() -> void:
 	_run.call_deferred()
 
 
+## Opens `scene_path` in the editor and selects its BoardNode (the root or the first one
+## below it) in the 2D screen, so the board tool edits it; null, with the reason pushed as
+## an error, when there is no such scene or it holds no BoardNode.
+static func open_board(tree: SceneTree, scene_path: String) -> BoardNode:
+	if not ResourceLoader.exists(scene_path):
+		push_error("Editor shot: no scene %s." % scene_path)
+		return null
+	EditorInterface.open_scene_from_path(scene_path)
+	for i in 20:
+		await tree.process_frame
+	var root := EditorInterface.get_edited_scene_root()
+	var node: Node = root
+	if root != null and not root is BoardNode:
+		node = root.find_children("*", "BoardNode", true, false).front()
+	if not node is BoardNode:
+		push_error("Editor shot: %s has no BoardNode." % scene_path)
+		return null
+	EditorInterface.set_main_screen_editor("2D")
+	EditorInterface.get_selection().clear()
+	EditorInterface.get_selection().add_node(node)
+	EditorInterface.edit_node(node)
+	for i in 20:
+		await tree.process_frame
+	return node as BoardNode
+
+
 func _run() -> void:
 	var parts := OS.get_environment(ENV).split(";")
 	if parts.size() != 3:
@@ -38,25 +64,10 @@ func _run() -> void:
 	# Never hang the caller: give up after two minutes whatever happens.
 	get_tree().create_timer(120.0).timeout.connect(get_tree().quit.bind(1))
 	await _frames(60)
-	if not ResourceLoader.exists(parts[0]):
-		push_error("Editor shot: no scene %s." % parts[0])
+	var node := await open_board(get_tree(), parts[0])
+	if node == null:
 		get_tree().quit(1)
 		return
-	EditorInterface.open_scene_from_path(parts[0])
-	await _frames(20)
-	var root := EditorInterface.get_edited_scene_root()
-	var node: Node = root
-	if root != null and not root is BoardNode:
-		node = root.find_children("*", "BoardNode", true, false).front()
-	if not node is BoardNode:
-		push_error("Editor shot: %s has no BoardNode." % parts[0])
-		get_tree().quit(1)
-		return
-	EditorInterface.set_main_screen_editor("2D")
-	EditorInterface.get_selection().clear()
-	EditorInterface.get_selection().add_node(node)
-	EditorInterface.edit_node(node)
-	await _frames(20)
 	_stage(parts[1])
 	_frame_board(node as BoardNode)
 	await _frames(5)
