@@ -12,7 +12,7 @@
 # debootstrap, no Debian archive, no Xvfb). Exits 1 when a check fails.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-cd "$ROOT"
+cd "$ROOT" || exit 1
 HERE=tools/release
 REPORT=build/release-check
 skip() { echo "release-check: SKIPPED: $*"; exit 77; }

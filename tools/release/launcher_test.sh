@@ -17,7 +17,7 @@ check() { # name condition-status detail
 # A stand-in game folder: FAKE=crash crashes (SIGSEGV), FAKE=crash-hw crashes unless the
 # software renderer was asked for, FAKE=fail exits 1; otherwise it prints its arguments.
 make_folder() {
-	local folder=$tmp/game
+	local folder="$tmp/my games/board studio" # spaces: players unpack anywhere
 	rm -rf "$folder"
 	mkdir -p "$folder/engine/lib/dri"
 	cp "$HERE/files/board-studio" "$folder/board-studio"

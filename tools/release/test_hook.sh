@@ -4,7 +4,7 @@
 # reason for the part it cannot do. Exit 0 passed, 1 failed, 77 the release check skipped.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-cd "$ROOT"
+cd "$ROOT" || exit 1
 skip() { echo "release check: SKIPPED: $*"; exit 77; }
 
 tools/release/launcher_test.sh || exit 1
