@@ -37,7 +37,7 @@ OUT=build/release
 STAGE=$OUT/$NAME
 ARCHIVE=$OUT/$NAME-linux-x86_64.tar.gz
 rm -rf "$OUT"
-mkdir -p "$STAGE/engine/lib/dri" "$STAGE/licenses"
+mkdir -p "$STAGE/engine/lib" "$STAGE/licenses"
 ENGINE=$STAGE/engine
 EXPORT=$OUT/export
 tools/export.sh --unpatched "$EXPORT" >/dev/null || die "the export failed (above)."
@@ -48,16 +48,17 @@ cp "$EXPORT/board_studio.x86_64" "$ENGINE/godot"
 patchelf --set-interpreter lib/ld-linux-x86-64.so.2 "$ENGINE/godot"
 cp "$EXPORT/board_studio.pck" "$ENGINE/board-studio.pck"
 rm -rf "$EXPORT"
+say "exported the game (${SECONDS} s)"
 cp "$LOADER" "$ENGINE/board-studio"
 chmod 755 "$ENGINE/board-studio" "$ENGINE/godot"
 
 # --- the libraries: the ldd closure of the runtime and of Mesa's GL -----------------------
-# Mesa: glvnd's libGL / libGLX / libEGL, Mesa's vendor libraries, and the DRI drivers for
-# the usual desktop GPUs (all one file, libdril_dri.so, with libgallium behind it) plus
-# swrast (llvmpipe), the software renderer that works everywhere.
+# Mesa: glvnd's libGL / libGLX / libEGL and Mesa's vendor libraries, which link libgallium:
+# every Mesa driver (llvmpipe, the software renderer, and the GPU drivers) is inside it since
+# Mesa 24.2, so no dri/*_dri.so is ever loaded (the running game maps none). libudev: SDL
+# loads it for gamepads.
 GL_ROOTS=(libGL.so.1 libGLX.so.0 libGLX_mesa.so.0 libEGL.so.1 libEGL_mesa.so.0 libGLdispatch.so.0
 	libudev.so.1)
-DRI_DRIVERS=(swrast kms_swrast iris crocus i915 radeonsi r600 r300 nouveau virtio_gpu vmwgfx)
 search=$LIBDIR:$LIBDIR/pulseaudio
 closure() { # elf... -> resolved paths of every library they need
 	local f
@@ -67,7 +68,6 @@ closure() { # elf... -> resolved paths of every library they need
 }
 roots=("$ENGINE/godot")
 for lib in "${GL_ROOTS[@]}"; do roots+=("$LIBDIR/$lib"); done
-roots+=("$LIBDIR/dri/libdril_dri.so")
 if closure "${roots[@]}" | grep -q 'not$'; then
 	closure "${roots[@]}" >&2 || true
 	die "some libraries are missing from the prefix (above)."
@@ -80,8 +80,6 @@ for path in "${libs[@]}"; do
 done
 # the loader is also lib/ld-linux-x86-64.so.2 (one file, two names): the runtime's interpreter
 ln -f "$ENGINE/board-studio" "$ENGINE/lib/ld-linux-x86-64.so.2"
-cp "$LIBDIR/dri/libdril_dri.so" "$ENGINE/lib/dri/"
-for driver in "${DRI_DRIVERS[@]}"; do ln -s libdril_dri.so "$ENGINE/lib/dri/${driver}_dri.so"; done
 mkdir -p "$ENGINE/share/glvnd/egl_vendor.d"
 cp "$SYSROOT/usr/share/glvnd/egl_vendor.d/50_mesa.json" "$ENGINE/share/glvnd/egl_vendor.d/"
 
@@ -122,10 +120,11 @@ python3 "$HERE/licences.py" "$SYSROOT" "$ENGINE/lib" "$STAGE/licenses" ||
 	die "a bundled library has no licence notice (above)."
 
 # --- the manifest the launcher checks, then the archive ------------------------------------
+say "folder ready (${SECONDS} s)"
 "$HERE/manifest.sh" "$STAGE"
 python3 "$HERE/elf_paths.py" --forbid "$PREFIX" --forbid "$ROOT" "$STAGE" || die "an ELF in the folder names a path outside it (above)."
 tar -C "$OUT" --owner=0 --group=0 --numeric-owner -czf "$ARCHIVE" "$NAME"
-say "$ARCHIVE: $(du -m "$ARCHIVE" | cut -f1) MB packed, $(du -sm "$STAGE" | cut -f1) MB unpacked"
+say "$ARCHIVE (${SECONDS} s): $(du -m "$ARCHIVE" | cut -f1) MB packed, $(du -sm "$STAGE" | cut -f1) MB unpacked"
 say "largest files:"
 (cd "$STAGE" && find . -type f -printf '%s %P\n' | sort -rn | head -n 8 |
 	awk '{ printf "  %6.1f MB  %s\n", $1 / 1048576, $2 }')

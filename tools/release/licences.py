@@ -25,7 +25,6 @@ EXCEPTIONS = {
     "libz": "zlib1g",
     "libpulsecommon": "libpulse0",
     "libgallium": "mesa-libgallium",
-    "libdril_dri": "libgl1-mesa-dri",
     "libbrotlicommon": "libbrotli1",
     "libbrotlidec": "libbrotli1",
     "libicudata": "libicu78",
