@@ -87,6 +87,12 @@ run FAKE=fail -- --headless
 [ "$status" = 1 ] && [ -z "$err" ]
 check "a game that exits with an error of its own gets no extra words" $? "status $status, err '$err'"
 
+chmod -x "$game/engine/board-studio"
+run -- --headless
+[ "$status" = 126 ] && [[ $err == *"the system refused to run the engine in its folder ($game)"* ]]
+check "a folder where programs may not run (noexec) is said in one sentence" $? "status $status, err '$err'"
+chmod +x "$game/engine/board-studio"
+
 rm "$game/MANIFEST"
 run -- --headless
 [ "$status" = 1 ] && [[ $err == *"the file MANIFEST is missing from its folder ($game)."* ]]
