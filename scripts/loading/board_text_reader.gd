@@ -182,7 +182,7 @@ static func _check_item(item: Variant, required: Dictionary, optional: Dictionar
 static func _check_tuning(value: Variant) -> String:
 	if not value is Dictionary:
 		return '"tuning" must be an object { ... }'
-	var known := Schema.tuning_fields()
+	var known := BoardRanges.tuning_fields()
 	var tuning: Dictionary = value
 	for key: Variant in tuning.keys():
 		var field: Variant = Schema.RENAMED_TUNING.get(key, key)

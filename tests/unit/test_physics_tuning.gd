@@ -150,7 +150,7 @@ func test_board_files_may_choose_the_seed_options() -> void:
 	assert_eq(classic.tuning.wall_cap_contact, PhysicsTuning.CapContact.GLANCE)
 	var other: BoardLevel = BoardLoader.load_board("res://levels/maze/catacombs.board").level
 	assert_eq(other.tuning.speed_cap, PhysicsTuning.SpeedCap.TOTAL, "others keep theirs")
-	var fields: Dictionary = load("res://scripts/loading/board_schema.gd").tuning_fields()
+	var fields := BoardRanges.tuning_fields()
 	assert_eq(fields["speed_cap"][2], 1.0, "the schema bounds the option to its values")
 
 
