@@ -257,7 +257,9 @@ static func _value_for(current: Variant, value: Variant) -> Variant:
 static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTuning:
 	var tuning := TuningPresets.for_kind(level.is_maze())
 	for key: String in values:
-		tuning.set(key, _value_for(tuning.get(key), values[key]))
+		# An old name is stored under its new one (the check already let it through so).
+		var field: String = Schema.RENAMED_TUNING.get(key, key)
+		tuning.set(field, _value_for(tuning.get(field), values[key]))
 	return tuning
 
 

@@ -154,14 +154,6 @@ func test_board_files_may_choose_the_seed_options() -> void:
 	assert_eq(fields["speed_cap"][2], 1.0, "the schema bounds the option to its values")
 
 
-func test_gutter_slide_time_is_the_deprecated_name_of_drain_slide_time() -> void:
-	var t := PhysicsTuning.new()
-	t.gutter_slide_time = 1.25
-	assert_eq(t.drain_slide_time, 1.25, "the old name writes the new field")
-	t.drain_slide_time = 0.75
-	assert_eq(t.gutter_slide_time, 0.75, "and reads it")
-
-
 func test_a_board_file_with_the_old_gutter_slide_time_key_still_reads() -> void:
 	var path := "res://levels/pachinko/classic.board"
 	var text := FileAccess.get_file_as_string(path)
