@@ -2,7 +2,7 @@ extends RefCounted
 ## The events of a step: queued as (kind, ball id, index) triples plus a speed each, in the
 ## order they happened, then emitted as BallWorld's signals. Internal to scripts/physics.
 
-enum Kind { PIN_HIT, WALL_HIT, RING_HIT, CAPTURED, DRAINED, HOLE, GOAL, GOAL_LEFT, ZONE }
+enum Kind { PIN_HIT, WALL_HIT, RING_HIT, BLADE_HIT, CAPTURED, DRAINED, HOLE, GOAL, GOAL_LEFT, ZONE }
 
 
 ## Emits every queued event on `world`.
@@ -18,6 +18,8 @@ static func emit_all(world: BallWorld, ev: PackedInt32Array, evs: PackedFloat32A
 				world.wall_hit.emit(id, index, evs[e])
 			Kind.RING_HIT:
 				world.ring_hit.emit(id, evs[e])
+			Kind.BLADE_HIT:
+				world.windmill_hit.emit(id, index, evs[e])
 			Kind.CAPTURED:
 				world.ball_captured.emit(id, index)
 				if world.ball_pocketed.has_connections():
