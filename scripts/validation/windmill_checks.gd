@@ -69,7 +69,8 @@ static func _value_problem(level: BoardLevel, spec: WindmillSpec) -> String:
 			"turns at %s degrees a second; at most %s"
 			% [_num(spec.speed), _num(WindmillSpec.MAX_SPEED)]
 		)
-	var top := BoardWorldFactory.tuning_for(level).max_speed
+	var tuning := level.tuning if level.tuning != null else TuningPresets.for_kind(false)
+	var top := tuning.max_speed
 	if spec.tip_speed() > top:
 		var fastest := rad_to_deg(top / spec.sweep_radius())
 		return (
