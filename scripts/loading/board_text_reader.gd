@@ -154,8 +154,24 @@ static func _check_list(list: String, value: Variant) -> String:
 	var optional: Dictionary = Schema.OPTIONAL_ITEM_FIELDS.get(list, {})
 	for i in items.size():
 		var problem := _check_item(items[i], required, optional)
+		if problem.is_empty() and list == "windmills":
+			problem = _check_windmill_drive(items[i])
 		if not problem.is_empty():
 			return "%s item %d: %s" % [list, i + 1, problem]
+	return ""
+
+
+# A windmill is driven ("speed") or free ("friction"): exactly one of the two.
+static func _check_windmill_drive(item: Dictionary) -> String:
+	var driven := item.has("speed")
+	var free := item.has("friction")
+	if driven and free:
+		return (
+			'give "speed" (a driven wheel, degrees a second) or "friction" (a free wheel),'
+			+ " not both"
+		)
+	if not driven and not free:
+		return 'needs "speed" (a driven wheel, degrees a second) or "friction" (a free wheel)'
 	return ""
 
 
@@ -220,6 +236,7 @@ static func _build(data: Dictionary) -> BoardLevel:
 		_build_pins(level, pins)
 		_build_pockets(level, pockets)
 		_build_bonus(level, data)
+		_build_windmills(level, data.get("windmills", []))
 	else:
 		var walls: Array = data.get("walls", [])
 		var ball_starts: Array = data.get("ball_starts", [])
@@ -314,6 +331,21 @@ static func _build_bonus(level: BoardLevel, data: Dictionary) -> void:
 			)
 			specs.append(spec)
 	level.bonus_pockets = specs
+
+
+static func _build_windmills(level: BoardLevel, items: Array) -> void:
+	var specs: Array[WindmillSpec] = []
+	for item: Dictionary in items:
+		var at := Vector2(_float_of(item["x"]), _float_of(item["y"]))
+		var blades := _int_of(item["blades"])
+		var length := _float_of(item["length"])
+		if item.has("friction"):
+			specs.append(
+				WindmillSpec.spinning_free(at, blades, length, _float_of(item["friction"]))
+			)
+		else:
+			specs.append(WindmillSpec.driven(at, blades, length, _float_of(item["speed"])))
+	level.windmills = specs
 
 
 static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:
