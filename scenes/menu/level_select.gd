@@ -73,8 +73,9 @@ func _unhandled_input(event: InputEvent) -> void:
 	if _dialogs.open_dialog() != null:
 		return
 	if event.is_action_pressed("ui_cancel"):
-		App.go_to_menu()
+		# handled first: the scene change takes this screen out of the tree (no viewport then)
 		get_viewport().set_input_as_handled()
+		App.go_to_menu()
 	elif _is_navigation(event) and get_viewport().gui_get_focus_owner() == null:
 		# a mouse click on empty space drops focus: the keys and the pad take it back
 		var first := first_card()
