@@ -6,8 +6,10 @@ extends GutTest
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const PACHINKO := "res://scenes/pachinko/pachinko_game.tscn"
-const ROOT := "user://test_menu_routes"
-const MY_BOARD := "my_route.board"
+## The player's own boards folder: only boards there (or shipped) play. The test's board
+## sorts first and is removed afterwards.
+const ROOT := "user://boards"
+const MY_BOARD := "0_test_menu_route.board"
 ## Enough frames for a deferred scene change and a level select's loading.
 const MAX_FRAMES := 600
 
@@ -20,7 +22,6 @@ func before_each() -> void:
 	var away := InputEventMouseMotion.new()
 	away.position = Vector2(2, 2)
 	get_tree().root.push_input(away)
-	_remove_tree(ROOT)
 	DirAccess.make_dir_recursive_absolute(ROOT + "/pachinko")
 	var file := FileAccess.open("%s/pachinko/%s" % [ROOT, MY_BOARD], FileAccess.WRITE)
 	file.store_buffer(FileAccess.get_file_as_bytes("res://levels/pachinko/classic.board"))
@@ -37,7 +38,7 @@ func after_each() -> void:
 
 
 func after_all() -> void:
-	_remove_tree(ROOT)
+	DirAccess.remove_absolute("%s/pachinko/%s" % [ROOT, MY_BOARD])
 
 
 func test_escape_leaves_the_level_select_without_a_script_error() -> void:
@@ -71,7 +72,6 @@ func _route_to_my_board_and_back() -> void:
 	await _press("ui_accept")
 	var screen := await _became(LEVEL_SELECT)
 	assert_not_null(screen, "Enter / A opens the pachinko level select")
-	screen.call("use_folder", ROOT)
 	await _loaded(screen)
 	var wanted := "%s/pachinko/%s" % [ROOT, MY_BOARD]
 	var seen: Array[String] = []
@@ -83,7 +83,9 @@ func _route_to_my_board_and_back() -> void:
 		seen.append(str(card.get("board_path")).get_file())
 		await _press("ui_down")
 	var focused := get_viewport().gui_get_focus_owner()
-	assert_eq(str(focused.get("board_path")) if focused != null else "", wanted, "Down reaches My boards")
+	assert_eq(
+		str(focused.get("board_path")) if focused != null else "", wanted, "Down reaches My boards"
+	)
 	assert_lt(seen.size(), 4, "one press per row: %s" % ", ".join(seen))
 	await _press("ui_accept")
 	var game := await _became(PACHINKO)
@@ -162,13 +164,3 @@ func _loaded(screen: Node) -> void:
 			break
 		await get_tree().process_frame
 	await get_tree().process_frame
-
-
-static func _remove_tree(path: String) -> void:
-	if not DirAccess.dir_exists_absolute(path):
-		return
-	for folder in DirAccess.get_directories_at(path):
-		_remove_tree(path.path_join(folder))
-	for file_name in DirAccess.get_files_at(path):
-		DirAccess.remove_absolute(path.path_join(file_name))
-	DirAccess.remove_absolute(path)
