@@ -58,6 +58,7 @@ func _ready() -> void:
 	_add_optional_scene(PAUSE_MENU)
 	_add_optional_scene(FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
+	_joystick.sensitivity = App.settings.tilt_sensitivity
 	_joystick.pressed.connect(_on_joystick_pressed)
 	_joystick.moved.connect(mixer.joystick_moved)
 	_calibrate.pressed.connect(_on_calibrate)
@@ -214,6 +215,8 @@ func _on_wall_bumped(speed: float) -> void:
 
 func _on_settings_changed() -> void:
 	haptics.enabled = App.settings.vibration
+	mixer.sensitivity = App.settings.tilt_sensitivity
+	_joystick.sensitivity = App.settings.tilt_sensitivity
 
 
 func _on_restart_requested() -> void:
