@@ -19,6 +19,14 @@ const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
+## The side panel: a column on the right of a landscape window (this share of its width,
+## within these bounds, and this far from the edge), a band along the bottom of a portrait one
+## (this share of its height). The board is framed in the rest, so no text lies over it.
+const SIDE_SHARE := 0.3
+const SIDE_MIN_WIDTH := 260.0
+const SIDE_MAX_WIDTH := 350.0
+const SIDE_EDGE := 30.0
+const PORTRAIT_SIDE_SHARE := 0.45
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -39,6 +47,7 @@ var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
 
 @onready var _stage: MazeStage = $Stage
+@onready var _side: VBoxContainer = $Side
 @onready var _joystick: MazeJoystick = %Joystick
 @onready var _note: MazeNote = %Note
 @onready var _title: Label = %Title
@@ -86,6 +95,8 @@ func _ready() -> void:
 	rules.goal_count_changed.connect(_on_goal_count_changed)
 	rules.wall_bumped.connect(_on_wall_bumped)
 	_stage.set_level(level, rules.hard_mode)
+	get_viewport().size_changed.connect(_layout)
+	_layout()
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
 
@@ -205,6 +216,37 @@ func _on_won(seconds: float) -> void:
 	if summary.medal != Medals.Medal.NONE:
 		# a chime on top, higher for a better medal
 		_sounds.play(SoundBank.GOAL_CHIME, -4.0, 1.0 + 0.25 * float(summary.medal))
+
+
+## Puts the side panel where the window's shape leaves room (a column on the right, or a
+## band along the bottom of a portrait window) and frames the board in the rest. Returns the
+## board's region (screen pixels).
+func _layout() -> Rect2:
+	var view := get_viewport_rect().size
+	var region: Rect2
+	if view.x >= view.y:
+		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
+		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
+		_side.offset_left = -width - SIDE_EDGE
+		_side.offset_right = -SIDE_EDGE
+		_side.offset_top = SIDE_EDGE
+		_side.offset_bottom = -SIDE_EDGE
+		region = Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
+		_joystick.ui_scale = minf(2.0, width / MazeJoystick.drawn_size(1.0))
+	else:
+		var height := view.y * PORTRAIT_SIDE_SHARE
+		_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
+		_side.offset_left = SIDE_EDGE
+		_side.offset_right = -SIDE_EDGE
+		_side.offset_top = -height
+		_side.offset_bottom = -SIDE_EDGE * 0.5
+		region = Rect2(0.0, 0.0, view.x, view.y - height)
+		_joystick.ui_scale = 1.4
+	_stage.set_board_region(region)
+	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
+	_win_panel.position = region.position
+	_win_panel.size = region.size
+	return region
 
 
 ## The win panel (for tests and the screenshots).

@@ -22,7 +22,11 @@ const GLOW_DELAY := 4.0
 const GLOW_PERIOD := 0.6
 
 ## Screen pixels per seed pixel, for drawing.
-@export var ui_scale := 2.0
+@export var ui_scale := 2.0:
+	set(value):
+		ui_scale = maxf(value, 0.5)
+		custom_minimum_size = Vector2.ONE * drawn_size(ui_scale)
+		queue_redraw()
 ## Scales the pointer's travel (the settings' tilt sensitivity): at 1 a pointer moved 15
 ## screen pixels tilts the board fully, as in the seed; at 2, 7.5 pixels do.
 var sensitivity := 1.0
@@ -42,7 +46,7 @@ var _clock := 0.0
 
 
 func _ready() -> void:
-	custom_minimum_size = Vector2.ONE * (ARROW_DISTANCE + ARROW_HALF + 8.0) * 2.0 * ui_scale
+	custom_minimum_size = Vector2.ONE * drawn_size(ui_scale)
 	mouse_filter = Control.MOUSE_FILTER_STOP
 
 
@@ -50,6 +54,11 @@ func _process(delta: float) -> void:
 	_clock += delta
 	if glowing:
 		queue_redraw()
+
+
+## The width and height (px) the joystick and its arrows take at `scale`.
+static func drawn_size(scale: float) -> float:
+	return (ARROW_DISTANCE + ARROW_HALF + 8.0) * 2.0 * scale
 
 
 ## Stops following the pointer and centres the head (a reset or the end of a game).

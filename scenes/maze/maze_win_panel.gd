@@ -72,7 +72,7 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 	_medal.text = medal_text
 	_medal.visible = not medal_text.is_empty()
 	var colour: Color = MedalBadges.COLORS.get(summary.medal, INK)
-	_medal.add_theme_color_override("font_color", colour.darkened(0.35))
+	_medal.add_theme_color_override("font_color", colour.darkened(0.55))
 	_best.text = summary.best_line()
 	_headline.text = (
 		"%s medal!" % Medals.name_of(summary.medal)
