@@ -61,7 +61,8 @@ func test_the_board_is_built_in_3d_from_the_level() -> void:
 	assert_not_null(rules, "the classic board loaded")
 	var stage := _stage()
 	var camera: Camera3D = stage.call("camera")
-	assert_eq(camera.projection, Camera3D.PROJECTION_PERSPECTIVE)
+	# a perspective view, its frustum shifted to seat the board in its region
+	assert_eq(camera.projection, Camera3D.PROJECTION_FRUSTUM)
 	var board: Node3D = stage.call("board")
 	var walls: MeshInstance3D = board.call("part", "walls")
 	assert_not_null(walls.mesh, "the walls are a mesh")
