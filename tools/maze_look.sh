@@ -21,10 +21,10 @@ W=${SIZE%x*}
 H=${SIZE#*x}
 export XDG_DATA_HOME="$SCRATCH"
 xvfb-run -a -s "-screen 0 ${SIZE}x24" bash -c '
-	timeout -s INT -k 5 20 tools/godot.sh --rendering-driver opengl3 --resolution '"$SIZE"' --position 0,0 --path . \
+	timeout -s INT -k 5 32 tools/godot.sh --rendering-driver opengl3 --resolution '"$SIZE"' --position 0,0 --path . \
 		res://scenes/maze/maze_game.tscn >"'"$OUT"'/'"$BOARD"'_'"$SIZE"'.log" 2>&1 &
 	game=$!
-	sleep 6
+	sleep 18
 	shot() { import -window root "'"$OUT"'/'"$BOARD"'_'"$SIZE"'_$1.png"; }
 	shot 0
 	xdotool key Right

@@ -24,8 +24,10 @@ var offset := Vector2.ZERO
 ## True when the board is larger than its region at the smallest ball size: the view
 ## follows `follow()`'s point instead of showing the whole board.
 var zoomed := false
-## How many pixels across a ball is drawn (at the board's height).
+## How many pixels across a ball is drawn (at the board's height), in the view's units.
 var ball_px := 0.0
+## Screen pixels per view unit (the window's stretch: 1 when the view is drawn 1:1).
+var screen_scale := 1.0
 
 var _view := Vector2(1280.0, 720.0)
 var _region := Rect2(0.0, 0.0, 1280.0, 720.0)
@@ -75,9 +77,12 @@ func project(p: Vector3) -> Vector2:
 	return _view * 0.5 + Vector2(q.x, -q.y) / _k
 
 
-## The smallest ball size for this screen (px).
+## The smallest ball size for this screen, in view units (MIN_BALL_PX screen pixels on a
+## screen at least REFERENCE_SCREEN pixels each way).
 func min_ball_px() -> float:
-	return MIN_BALL_PX * clampf(minf(_view.x, _view.y) / REFERENCE_SCREEN, 0.5, 1.0)
+	var screen := _view * screen_scale
+	var wanted := MIN_BALL_PX * clampf(minf(screen.x, screen.y) / REFERENCE_SCREEN, 0.5, 1.0)
+	return wanted / maxf(screen_scale, 0.01)
 
 
 ## The region the board is fitted into (margins taken off).

@@ -282,6 +282,10 @@ func _frame() -> void:
 			lowest = minf(lowest, p.z)
 	_framing.distance = distance
 	_framing.near = _camera.near
+	# the window may stretch the view (project stretch settings): balls are measured on screen
+	_framing.screen_scale = (
+		get_viewport().get_final_transform().get_scale().y if is_inside_tree() else 1.0
+	)
 	_framing.fit(points, view, region, _ball_radius * 2.0 * UNITS_PER_PX)
 	if _framing.zoomed:
 		_framing.follow(_follow_at)
