@@ -70,21 +70,3 @@ const FLASH_TICK := 0.03
 ## Seconds of sliding ring contact inside the drain arc that also drain a ball: a ball
 ## that rolls instead of bouncing must leave too.
 @export var drain_slide_time: float = 0.5
-## Deprecated name of drain_slide_time, kept one release (board files written before the
-## rename still carry it; it is not stored, so files are written with the new name).
-var gutter_slide_time: float:
-	get:
-		return drain_slide_time
-	set(value):
-		drain_slide_time = value
-
-
-## Deprecated: the game presets live in TuningPresets (scripts/world); kept one round so
-## branches written against it still run.
-static func pachinko_defaults() -> PhysicsTuning:
-	return TuningPresets.pachinko()
-
-
-## Deprecated: see TuningPresets.maze().
-static func maze_defaults() -> PhysicsTuning:
-	return TuningPresets.maze()
