@@ -84,6 +84,8 @@ static func _tuning(tuning: PhysicsTuning) -> String:
 	names.sort()
 	for name: String in names:
 		var value: Variant = source.get(name)
+		if name in BoardRanges.TUNING_WRITTEN_WHEN_SET and value == 0.0:
+			continue
 		var text := ""
 		if value is Vector2:
 			var v: Vector2 = value
