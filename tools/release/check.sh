@@ -30,8 +30,14 @@ reason=$(mktemp)
 rootfs=$("$HERE/bookworm_root.sh" 2>"$reason") || { r=$(tail -n 1 "$reason"); rm -f "$reason"; skip "$r"; }
 rm -f "$reason"
 
+# a check that was killed (no EXIT trap ran) leaves its scratch folder: drop those whose
+# process is gone, and never count another running check's folder as part of the root
+for stale in "$rootfs"/tmp/release-check.*; do
+	[ -d "$stale" ] || continue
+	kill -0 "${stale##*.}" 2>/dev/null || rm -rf "$stale"
+done
 # the root must be clean: no Godot, no project, no X or GL libraries of its own
-leftover=$(find "$rootfs" -xdev \( -iname '*godot*' -o -name project.godot -o -name 'libX11.so*' \
+leftover=$(find "$rootfs" -xdev -path "$rootfs/tmp/release-check.*" -prune -o \( -iname '*godot*' -o -name project.godot -o -name 'libX11.so*' \
 	-o -name 'libGL*.so*' -o -name 'libasound.so*' \) -print -quit 2>/dev/null)
 [ -z "$leftover" ] || { echo "release-check: the Debian 12 root is not clean ($leftover); remove $rootfs* to remake it." >&2; exit 1; }
 
