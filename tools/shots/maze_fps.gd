@@ -37,7 +37,7 @@ func _run() -> void:
 	var app := root.get_node("/root/App")
 	app.call("load_player_files", SCRATCH_SETTINGS, SCRATCH_SAVE)
 	var game := await ScreenOpener.open(
-		self, app.call.bind("start_game", "maze", BOARD), GAME_SCENE
+		self, app.call.bind("start_game", BoardLevel.MAZE_NAME, BOARD), GAME_SCENE
 	)
 	if game == null or game.get("rules") == null:
 		printerr("maze_fps: the maze did not open")

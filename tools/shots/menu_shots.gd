@@ -36,28 +36,28 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	match shot_name:
 		"menu_main":
 			# The title screen focuses the game whose level select was seen last.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_notice":
 			# What a player sees after the game kept a damaged settings file aside.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			for problem: String in NOTICE_PROBLEMS:
 				App.pending_problems.append(problem)
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_level_select_pachinko":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 		"menu_level_select_maze":
 			_sample_progress()
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("maze"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.MAZE_NAME), LEVEL_SELECT
 			)
 			if screen != null:
 				await _wait_loaded(tree, screen)
 		"menu_my_boards":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 			if screen != null:
 				await _show_my_boards(tree, screen)

@@ -6,8 +6,8 @@ extends RefCounted
 const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const REQUEST_PATH := PlaytestRequest.PATH
 const GAME_SCENES := {
-	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
-	"maze": "res://scenes/maze/maze_game.tscn",
+	BoardLevel.PACHINKO_NAME: "res://scenes/pachinko/pachinko_game.tscn",
+	BoardLevel.MAZE_NAME: "res://scenes/maze/maze_game.tscn",
 }
 
 
