@@ -62,7 +62,9 @@ static func read(text: String) -> Dictionary:
 		if line.is_empty():
 			continue
 		if json.parse(line) != OK:
-			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
+			return _error(
+				"line %d is not valid JSON: %s" % [number + 1, JsonErrors.parse_error(json)]
+			)
 		var repeated := JsonKeys.repeated(line)
 		if not repeated.is_empty():
 			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])

@@ -40,16 +40,17 @@ func test_the_reasons_are_the_real_problems() -> void:
 		"duplicate_key.board": "given twice",
 		"huge_count.board": "at most 5000",
 		"inf.board": "finite",
-		"nan.board": "NaN",
+		"nan.board": "NaN and infinity are not JSON numbers",
 		"newer_version.board": "newer than this game reads",
 		"nul_byte.board": "NUL",
 		"binary.board": "NUL",
-		"object_raw.board": "Object",
+		"object_raw.board": "Godot values such as Object(...) are not JSON",
 		"resource_path.board": "resource_path",
 		"restitution_5.board": "restitution",
 		"ring_huge.board": "ring_radius",
 		"sleep_negative.board": "sleep_time",
 		"unknown_field.board": "metadata/payload",
+		"system_file_text.board": "line 1 is not valid JSON",
 		"repeated_key_escaped.board": 'the key "format_version" is given twice',
 		"repeated_key_in_item.board": 'line 19: the key "x" is given twice',
 		"repeated_key_in_tuning.board": 'the key "restitution" is given twice',
@@ -58,6 +59,10 @@ func test_the_reasons_are_the_real_problems() -> void:
 	}
 	for file: String in expected:
 		assert_string_contains(reasons.get(file, "(missing)"), expected[file], file)
+	var system_file: String = reasons["system_file_text.board"]
+	assert_false(
+		system_file.contains("root"), "the refusal does not quote the file: " + system_file
+	)
 
 
 func test_shipped_boards_all_pass_the_check() -> void:

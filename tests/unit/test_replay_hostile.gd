@@ -35,6 +35,7 @@ const EXPECTED := {
 	"seed_fraction.replay": '"seed" must be a whole number',
 	"seed_huge.replay": '"seed" must be a whole number',
 	"short_record.replay": '"tilt" takes 4 numbers, got 2',
+	"system_file_text.replay": "line 1 is not valid JSON: Expected 'true', 'false', or 'null'",
 	"steps_huge.replay": '"steps" must be a whole number',
 	"steps_mismatch.replay": "the records run 4 steps but the header says 400",
 	"string_number.replay": "item 1 must be a whole number",
@@ -74,6 +75,7 @@ func test_every_hostile_file_is_refused_fast_with_its_problem_named() -> void:
 		assert_string_contains(error, path, file_name + ": the message names the file")
 		assert_true(EXPECTED.has(file_name), file_name + " has an expected reason in this test")
 		assert_string_contains(error, str(EXPECTED.get(file_name, "?")), file_name)
+		assert_false(error.contains("root"), file_name + ": the refusal does not quote the file")
 		checked += 1
 	assert_eq(checked, EXPECTED.size(), "every file of the corpus was checked")
 
