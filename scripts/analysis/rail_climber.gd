@@ -25,6 +25,15 @@ var _centre := Vector2.ZERO
 var _board_size := Vector2.ZERO
 
 
+## Climbs every power level in `levels` side by side on `level` (a pachinko board) and
+## returns a table holding their results (other levels stay UNKNOWN). Thread-safe: it
+## touches nothing shared. `clear_speed` is LaunchCalibration.clear_speed(level).
+static func climb_group(
+	level: BoardLevel, clear_speed: float, levels: PackedInt32Array
+) -> RailExitTable:
+	return RailClimber.new(level, clear_speed).climb(levels)
+
+
 func _init(level: BoardLevel, clear_speed: float) -> void:
 	_level = level
 	_clear_speed = clear_speed

@@ -60,7 +60,7 @@ static func groups_for(needed: PackedByteArray) -> Array[PackedInt32Array]:
 	return groups
 
 
-## Copies a climbed group's results (from climb_group) into the table.
+## Copies a climbed group's results (from RailClimber.climb_group) into the table.
 func store(part: RailExitTable, levels: PackedInt32Array) -> void:
 	for q in levels:
 		fate[q] = part.fate[q]
@@ -69,13 +69,3 @@ func store(part: RailExitTable, levels: PackedInt32Array) -> void:
 		exit_steps[q] = part.exit_steps[q]
 		steps[q] = part.steps[q]
 		samples[q] = part.samples[q]
-
-
-## Climbs every power level in `levels` side by side on `level` (a pachinko board) and
-## returns a table holding their results (other levels stay UNKNOWN). Thread-safe: it
-## touches nothing shared. `clear_speed` is LaunchCalibration.clear_speed(level).
-static func climb_group(
-	level: BoardLevel, clear_speed: float, levels: PackedInt32Array
-) -> RailExitTable:
-	var climber := RailClimber.new(level, clear_speed)
-	return climber.climb(levels)
