@@ -56,7 +56,7 @@ static func _gather_lines(text: String) -> Dictionary:
 			)
 		if not json.data is Dictionary:
 			return _error("line %d is not a JSON object { ... }" % (number + 1))
-		var repeated := JsonKeys.repeated(line)
+		var repeated := JsonKeys.repeated(line, json.data)
 		if not repeated.is_empty():
 			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var object: Dictionary = json.data

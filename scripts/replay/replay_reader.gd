@@ -65,7 +65,7 @@ static func read(text: String) -> Dictionary:
 			return _error(
 				"line %d is not valid JSON: %s" % [number + 1, JsonErrors.parse_error(json)]
 			)
-		var repeated := JsonKeys.repeated(line)
+		var repeated := JsonKeys.repeated(line, json.data)
 		if not repeated.is_empty():
 			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var problem := ""

@@ -65,6 +65,21 @@ func test_the_reasons_are_the_real_problems() -> void:
 	)
 
 
+func test_oversized_mazes_are_refused_by_their_limit() -> void:
+	var expected := {
+		"crowded_walls.board": "42 walls cross one spot near (192, 18); at most 12 may",
+		"flood_boundary_copies.board": "this board's grid takes at most 10448 px",
+		"flood_diagonals.board": "The walls are 160727 px long together",
+	}
+	var lines := CheckCli.check_folder(ROOT, BoardLevel.Kind.MAZE)
+	assert_eq(lines.size(), expected.size(), "one line per maze of the corpus")
+	for line in lines:
+		var file := str(line["path"]).get_file()
+		assert_false(line["ok"], file + " is refused")
+		assert_string_contains(str(line["error"]), expected.get(file, "(not listed)"), file)
+		assert_lt(float(line["load_ms"]), MAX_MS, file + " loads fast")
+
+
 func test_shipped_boards_all_pass_the_check() -> void:
 	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		var lines := CheckCli.check_folder(BoardLoader.LEVELS_DIR, kind)
