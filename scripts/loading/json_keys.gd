@@ -24,12 +24,13 @@ static func repeated(text: String, parsed: Variant = null) -> String:
 		if character == '"':
 			var end := _string_end(text, at)
 			if _followed_by_colon(text, end + 1) and not objects.is_empty():
-				var keys: Variant = objects.back()
-				if keys is Dictionary:
+				var open: Variant = objects.back()
+				if open is Dictionary:
+					var keys: Dictionary = open
 					var key := _decoded(text.substr(at, end - at + 1))
-					if (keys as Dictionary).has(key):
+					if keys.has(key):
 						return key
-					(keys as Dictionary)[key] = true
+					keys[key] = true
 			at = end + 1
 			continue
 		if character == "{":
@@ -46,8 +47,9 @@ static func repeated(text: String, parsed: Variant = null) -> String:
 static func _key_count(value: Variant) -> int:
 	var count := 0
 	if value is Dictionary:
-		count = (value as Dictionary).size()
-		for inner: Variant in (value as Dictionary).values():
+		var object: Dictionary = value
+		count = object.size()
+		for inner: Variant in object.values():
 			count += _key_count(inner)
 	elif value is Array:
 		for inner: Variant in value:
