@@ -20,6 +20,10 @@ var user_root := BoardLoader.USER_DIR
 var load_one := Callable()
 
 var _loadings: Dictionary = {}  # the grid a loading fills -> its BoardListLoading
+var _importing: BoardListLoading = null  # imports check and copy off the main thread
+var _import_waiting := PackedStringArray()  # files dropped while an import was running
+var _import_lines := PackedStringArray()  # what happened to each file imported so far
+var _import_refused := false
 var _first_focus: Control = null
 
 @onready var _title: Label = %TitleLabel
@@ -52,9 +56,14 @@ func _exit_tree() -> void:
 	for loading: BoardListLoading in _loadings.values():
 		loading.cancel()
 	_loadings.clear()
+	if _importing != null:
+		_importing.cancel()
+		_importing = null
 
 
 func _process(_delta: float) -> void:
+	if _importing != null:
+		_poll_imports()
 	if _loadings.is_empty():
 		return
 	for grid: GridContainer in _loadings.keys():
@@ -95,9 +104,9 @@ func use_folder(root: String) -> void:
 	reload()
 
 
-## True while some board file is still loading.
+## True while some board file is still loading or being imported.
 func is_loading() -> bool:
-	return not _loadings.is_empty()
+	return not _loadings.is_empty() or _importing != null
 
 
 ## Lists these load results as the shipped boards' cards (one per file, broken ones greyed),
@@ -115,29 +124,51 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 	_loaded()
 
 
-## Imports board files (a drop on the window, or the file dialog's pick) into My boards and
-## says what happened to each.
+## Imports board files (a drop on the window, or the file dialog's pick) into My boards off
+## the main thread (each is read and checked first, which a large board makes slow), then
+## says what happened to each. Files dropped while an import runs wait for it to finish.
 func import_files(sources: PackedStringArray) -> void:
-	var lines := PackedStringArray()
-	var refused := false
-	for source in sources:
-		var outcome := UserBoards.import_file(source, user_root)
-		if outcome.has("error"):
-			refused = true
-			lines.append("Not imported: %s" % outcome["error"])
+	_import_waiting.append_array(sources)
+	if _importing == null:
+		_start_imports()
+
+
+# One thread imports the waiting files in order (each picks a free file name in turn).
+func _start_imports() -> void:
+	var jobs: Array[Dictionary] = []
+	for source in _import_waiting:
+		jobs.append({"path": source, "kind": _kind_enum(kind), "root": user_root})
+	_import_waiting = PackedStringArray()
+	_importing = BoardListLoading.new(jobs, UserBoards.import_result, 1)
+	_say("Importing %d file%s…" % [jobs.size(), "" if jobs.size() == 1 else "s"], false)
+
+
+func _poll_imports() -> void:
+	for done in _importing.take_finished():
+		var result: BoardLoadResult = done["result"]
+		if not result.ok():
+			_import_refused = true
+			_import_lines.append("Not imported: %s" % result.error)
 			continue
-		var result: BoardLoadResult = outcome["result"]
 		var line := (
 			'Imported "%s" into My boards as %s'
-			% [result.level.display_name, str(outcome["path"]).get_file()]
+			% [result.level.display_name, result.path.get_file()]
 		)
 		var its_kind := BoardLevel.kind_name(result.level.kind)
 		if its_kind != kind:
 			line += (
 				" (a %s board: find it in the %s list)" % [its_kind, TITLES.get(its_kind, its_kind)]
 			)
-		lines.append(line + ".")
-	_say("\n".join(lines), refused)
+		_import_lines.append(line + ".")
+	if _importing.is_busy():
+		return
+	if not _import_waiting.is_empty():
+		_start_imports()
+		return
+	_importing = null
+	_say("\n".join(_import_lines), _import_refused)
+	_import_lines = PackedStringArray()
+	_import_refused = false
 	_load_section(_my_grid, user_root)
 
 

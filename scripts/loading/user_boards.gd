@@ -43,6 +43,19 @@ static func import_file(source: String, root: String = BoardLoader.USER_DIR) -> 
 	return {"path": target, "result": BoardLoader.load_board(target, roots)}
 
 
+## `import_file` as one BoardLoadResult, the form BoardListLoading hands back, so imports
+## run off the main thread: the new file's result (its path is the file in My boards), or a
+## result with no level whose error says why `source` was not imported.
+static func import_result(source: String, _kind: int, root: String) -> BoardLoadResult:
+	var outcome := import_file(source, root)
+	if outcome.has("result"):
+		return outcome["result"]
+	var refused := BoardLoadResult.new()
+	refused.path = source
+	refused.error = outcome["error"]
+	return refused
+
+
 ## `<folder>/<stem>.board` if no file has that name, else the first free `<stem>_N.board`;
 ## "" when every suffix up to MAX_CLASH_SUFFIX is taken.
 static func free_path(folder: String, stem: String) -> String:

@@ -127,6 +127,19 @@ func test_import_and_delete_through_the_screen() -> void:
 	assert_true(FileAccess.file_exists(GOOD), "the shipped board is untouched")
 
 
+func test_an_import_runs_off_the_main_thread() -> void:
+	var screen := _open()
+	await _loaded(screen)
+	var source := ProjectSettings.globalize_path(GOOD)
+	screen.call("import_files", PackedStringArray([source]))
+	var status := screen.get_node("%StatusLabel") as Label
+	assert_eq(status.text, "Importing 1 file…", "the call returns before the file is checked")
+	assert_true(screen.call("is_loading"), "the screen waits for the import like a loading")
+	await _loaded(screen)
+	assert_string_contains(status.text, 'Imported "Classic" into My boards as classic.board')
+	assert_eq((screen.call("my_slots") as Array).size(), 1)
+
+
 func test_shipped_boards_offer_export_but_never_delete() -> void:
 	var screen := _open()
 	await _loaded(screen)
