@@ -33,12 +33,9 @@ static func write(board_path: String, kind: String, path := PATH) -> String:
 	var problem := check(request, now)
 	if not problem.is_empty():
 		return "Play-test: %s." % problem
-	var file := FileAccess.open(path, FileAccess.WRITE)
-	if file == null:
-		var why := error_string(FileAccess.get_open_error())
-		return "Play-test: could not write %s (%s)." % [path, why]
-	file.store_string(JSON.stringify(request, "\t", false) + "\n")
-	file.close()
+	var written := SafeWrite.write_text(path, JSON.stringify(request, "\t", false) + "\n")
+	if written != OK:
+		return "Play-test: could not write %s (%s)." % [path, error_string(written)]
 	return ""
 
 
