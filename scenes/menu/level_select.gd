@@ -19,6 +19,12 @@ const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.
 const MAX_COLUMNS := 4
 const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
+## At most this many files of a folder get a card (README "Safety"); the rest are counted.
+const MAX_LISTED := 200
+## At most this many loaded files fill their card in one frame, so a burst never stalls one.
+const FILLS_PER_FRAME := 24
+## At most this many cards are made in one frame: the screen shows at once and fills up.
+const SLOTS_PER_FRAME := 24
 
 ## The game whose boards are listed ("pachinko" or "maze").
 var kind := "pachinko"
@@ -33,6 +39,9 @@ var _importing: BoardListLoading = null  # imports check and copy off the main t
 var _import_waiting := PackedStringArray()  # files dropped while an import was running
 var _import_lines := PackedStringArray()  # what happened to each file imported so far
 var _import_refused := false
+var _not_listed := 0  # files in My boards past MAX_LISTED
+var _unslotted: Dictionary = {}  # grid -> the listed paths that have no card yet
+var _early: Dictionary = {}  # grid -> {path: BoardLoadResult} loaded before its card was made
 var _first_focus: Control = null
 var _columns := 3
 # after a delete: the board whose card takes the focus (the next one), and where the list
@@ -83,13 +92,20 @@ func _process(_delta: float) -> void:
 		_poll_imports()
 	if _loadings.is_empty():
 		return
+	for grid: GridContainer in _unslotted.keys():
+		_add_slots(grid)
 	for grid: GridContainer in _loadings.keys():
 		var loading: BoardListLoading = _loadings[grid]
-		for done in loading.take_finished():
+		for done in loading.take_finished(FILLS_PER_FRAME):
 			var path: String = done["path"]
 			var result: BoardLoadResult = done["result"]
-			_fill(grid, path, result)
-		if not loading.is_busy():
+			var unslotted: Array[String] = _unslotted.get(grid, [] as Array[String])
+			if unslotted.has(path):
+				var early: Dictionary = _early.get_or_add(grid, {})
+				early[path] = result
+			else:
+				_fill(grid, path, result)
+		if not loading.is_busy() and not _unslotted.has(grid):
 			_loadings.erase(grid)
 	if _loadings.is_empty():
 		_loaded()
@@ -277,11 +293,16 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	var kind_value := _kind_enum(kind)
 	var jobs: Array[Dictionary] = []
 	var paths := BoardLoader.list_files(kind_value, root)
+	if grid == _my_grid:
+		_not_listed = maxi(0, paths.size() - MAX_LISTED)
+		paths = paths.slice(0, MAX_LISTED)
 	if kind == "maze" and grid == _grid:
 		paths = _in_maze_order(paths)
 	for path in paths:
-		_add_slot(grid, path)
 		jobs.append({"path": path, "kind": kind_value, "root": root})
+	_unslotted[grid] = paths
+	_early.erase(grid)
+	_add_slots(grid)
 	_loadings[grid] = BoardListLoading.new(jobs, load_one)
 	_update_summary()
 	_link_focus()
@@ -290,6 +311,23 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	elif not is_instance_valid(_first_focus):
 		_first_focus = first_card() if first_card() != null else _import
 		_first_focus.grab_focus()
+
+
+# Makes the next SLOTS_PER_FRAME cards of `grid` (filled at once when their file loaded first).
+func _add_slots(grid: GridContainer) -> void:
+	var paths: Array[String] = _unslotted.get(grid, [] as Array[String])
+	var count := mini(SLOTS_PER_FRAME, paths.size())
+	var early: Dictionary = _early.get(grid, {})
+	for path: String in paths.slice(0, count):
+		_add_slot(grid, path)
+		if early.has(path):
+			var result: BoardLoadResult = early[path]
+			_fill(grid, path, result)
+			early.erase(path)
+	if count == paths.size():
+		_unslotted.erase(grid)
+	else:
+		_unslotted[grid] = paths.slice(count)
 
 
 func _cancel(grid: GridContainer) -> void:
@@ -480,6 +518,11 @@ func _update_summary() -> void:
 		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
 	if locked > 0:
 		text += ", %d locked (finish the board before each to open it)" % locked
+	if _not_listed > 0:
+		text += (
+			"; %d more files in My boards are not listed (at most %d are)"
+			% [_not_listed, MAX_LISTED]
+		)
 	_summary.text = text
 
 

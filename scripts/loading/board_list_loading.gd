@@ -37,11 +37,15 @@ func _init(jobs: Array[Dictionary], load_one := Callable(), workers := WORKERS) 
 
 
 ## The jobs that finished since the last call, each its job dictionary plus "result"
-## (a BoardLoadResult), in the order they finished.
-func take_finished() -> Array[Dictionary]:
+## (a BoardLoadResult), in the order they finished; at most `most` of them when it is not
+## negative (the rest wait for the next call).
+func take_finished(most := -1) -> Array[Dictionary]:
 	_mutex.lock()
 	var done := _finished
 	_finished = []
+	if most >= 0 and done.size() > most:
+		_finished = done.slice(most)
+		done = done.slice(0, most)
 	_mutex.unlock()
 	join_ended()
 	return done
