@@ -22,6 +22,7 @@ const EXPECTED := {
 	"godot_object.replay": "not valid JSON",
 	"header_array.replay": "first line must be the header",
 	"inf.replay": "item 3 must be a whole number",
+	"longer_than_a_game.replay": '"steps" must be a whole number from 0 to 144000',
 	"missing_field.replay": 'the header has no "board_hash"',
 	"nan.replay": "not valid JSON",
 	"newer_version.replay": "newer than this game reads",
