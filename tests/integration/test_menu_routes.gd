@@ -39,6 +39,8 @@ func after_each() -> void:
 
 func after_all() -> void:
 	DirAccess.remove_absolute("%s/pachinko/%s" % [ROOT, MY_BOARD])
+	# the route picked the board this test removes: later scenes must not ask for it
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
 
 
 func test_escape_leaves_the_level_select_without_a_script_error() -> void:
