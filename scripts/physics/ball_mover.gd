@@ -442,8 +442,9 @@ func _touch_wheels(t: float) -> bool:
 
 ## The nearest blade of wheel `m` at `t` s into the step, answered if it touches the ball:
 ## the response runs in the blade's frame (the ball's speed less the blade's surface speed
-## at the contact), so a moving blade throws the ball; the ball is held to the top speed;
-## a free wheel gets the opposite angular impulse (queued, added up after the step).
+## at the contact), so a moving blade throws the ball; it keeps the blades' least
+## horizontal speed and is held to the top speed; a free wheel gets the opposite angular
+## impulse (queued, added up after the step).
 func _touch_blade(m: int, t: float) -> bool:
 	var c: Vector2 = _wheel_center[m]
 	var q: Vector2 = _p - c
@@ -476,6 +477,9 @@ func _touch_blade(m: int, t: float) -> bool:
 	_v -= surface_v
 	respond(id, axis, d, nrm, lim, surface, m)
 	_v += surface_v
+	var min_speed_x: float = _wheel_min_speed_x[m]
+	if absf(_v.x) < min_speed_x:
+		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 	var speed2: float = _v.length_squared()
 	if speed2 > _max_speed * _max_speed:
 		_v *= _max_speed / sqrt(speed2)

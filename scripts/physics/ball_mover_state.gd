@@ -89,6 +89,7 @@ var _wheel_angle := PackedFloat64Array()
 var _wheel_omega := PackedFloat64Array()
 var _wheel_free := PackedByteArray()
 var _wheel_inv_inertia := PackedFloat64Array()
+var _wheel_min_speed_x := PackedFloat64Array()
 var _wheel_start := PackedInt32Array()
 var _wheel_items := PackedInt32Array()
 var _wheel_margin := 0.0
@@ -264,6 +265,7 @@ func _take_wheels(w: Windmills) -> void:
 	_wheel_omega = w.omega
 	_wheel_free = w.free
 	_wheel_inv_inertia = w.inv_inertia
+	_wheel_min_speed_x = w.min_speed_x
 	_wheel_start = w.start
 	_wheel_items = w.items
 	_wheel_margin = w.margin

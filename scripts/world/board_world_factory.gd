@@ -57,14 +57,16 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.add_wall(deflector[0], deflector[1], LaunchRail.GUIDE_WALL_RADIUS)
 	# Zone 0: a ball that rolls back down the rail lands here and returns to the cup.
 	world.add_zone(LaunchRail.return_zone_center(level), LaunchRail.return_zone_radius(level))
-	# The windmills: world windmill i is the level's windmill i.
+	# The windmills: world windmill i is the level's windmill i; their blades share the
+	# pins' material, so no ball balances in the V of two blades.
 	for spec in level.windmills:
 		if spec != null:
-			add_windmill(world, spec)
+			add_windmill(world, spec, min_speed_x)
 
 
-## Adds `spec` to `world` as a windmill (degrees in the board, radians in the world).
-static func add_windmill(world: BallWorld, spec: WindmillSpec) -> int:
+## Adds `spec` to `world` as a windmill (degrees in the board, radians in the world), its
+## blades keeping a ball's horizontal speed at `min_speed_x` or more.
+static func add_windmill(world: BallWorld, spec: WindmillSpec, min_speed_x: float) -> int:
 	var speed := 0.0 if spec.free_spin else deg_to_rad(spec.speed)
 	var friction := deg_to_rad(spec.friction) if spec.free_spin else 0.0
 	return world.add_windmill(
@@ -74,7 +76,8 @@ static func add_windmill(world: BallWorld, spec: WindmillSpec) -> int:
 		WindmillSpec.BLADE_RADIUS,
 		speed,
 		spec.free_spin,
-		friction
+		friction,
+		min_speed_x
 	)
 
 
