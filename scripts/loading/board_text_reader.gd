@@ -201,7 +201,7 @@ static func _check_item(item: Variant, required: Dictionary, optional: Dictionar
 static func _check_tuning(value: Variant) -> String:
 	if not value is Dictionary:
 		return '"tuning" must be an object { ... }'
-	var known := Schema.tuning_fields()
+	var known := BoardRanges.tuning_fields()
 	var tuning: Dictionary = value
 	for key: Variant in tuning.keys():
 		var field: Variant = Schema.RENAMED_TUNING.get(key, key)
@@ -279,7 +279,9 @@ static func _value_for(current: Variant, value: Variant) -> Variant:
 static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTuning:
 	var tuning := TuningPresets.for_kind(level.is_maze())
 	for key: String in values:
-		tuning.set(key, _value_for(tuning.get(key), values[key]))
+		# An old name is stored under its new one (the check already let it through so).
+		var field: String = Schema.RENAMED_TUNING.get(key, key)
+		tuning.set(field, _value_for(tuning.get(field), values[key]))
 	return tuning
 
 

@@ -78,7 +78,7 @@ static func _value(value: Variant) -> String:
 static func _tuning(tuning: PhysicsTuning) -> String:
 	var parts := PackedStringArray()
 	var source := tuning if tuning != null else PhysicsTuning.new()
-	var names := Schema.tuning_fields().keys()
+	var names := BoardRanges.tuning_fields().keys()
 	names.sort()
 	for name: String in names:
 		var value: Variant = source.get(name)

@@ -26,8 +26,6 @@ signal ring_hit(ball_id: int, impact_speed: float)
 signal windmill_hit(ball_id: int, windmill_index: int, impact_speed: float)
 ## A ball touched a capturing pin (the pin's tag); it has been removed.
 signal ball_captured(ball_id: int, tag: int)
-## Deprecated name of ball_captured, kept one release (emitted only while connected).
-signal ball_pocketed(ball_id: int, pocket_id: int)
 ## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
 signal ball_drained(ball_id: int)
 ## A ball's centre came within a hole's radius; it has been removed.
@@ -114,11 +112,6 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 	_lanes.threads = threads
 	gravity = tuning.gravity
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
-
-
-## Deprecated name of set_drain_arc(), with tuning.drain_slide_time as the slide time.
-func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
-	set_drain_arc(from_deg, to_deg, bounces, tuning.drain_slide_time)
 
 
 ## Bins the static shapes and the windmills into the grid. Adding shapes or bigger balls
@@ -388,8 +381,6 @@ func _emit_events() -> void:
 				windmill_hit.emit(id, index, evs[e])
 			BallEvents.Kind.CAPTURED:
 				ball_captured.emit(id, index)
-				if ball_pocketed.has_connections():
-					ball_pocketed.emit(id, index)
 			BallEvents.Kind.DRAINED:
 				ball_drained.emit(id)
 			BallEvents.Kind.HOLE:

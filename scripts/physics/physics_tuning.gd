@@ -63,10 +63,3 @@ const FLASH_TICK := 0.03
 ## Seconds of sliding ring contact inside the drain arc that also drain a ball: a ball
 ## that rolls instead of bouncing must leave too.
 @export var drain_slide_time: float = 0.5
-## Deprecated name of drain_slide_time, kept one release (board files written before the
-## rename still carry it; it is not stored, so files are written with the new name).
-var gutter_slide_time: float:
-	get:
-		return drain_slide_time
-	set(value):
-		drain_slide_time = value

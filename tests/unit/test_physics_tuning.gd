@@ -150,16 +150,8 @@ func test_board_files_may_choose_the_seed_options() -> void:
 	assert_eq(classic.tuning.wall_cap_contact, PhysicsTuning.CapContact.GLANCE)
 	var other: BoardLevel = BoardLoader.load_board("res://levels/maze/catacombs.board").level
 	assert_eq(other.tuning.speed_cap, PhysicsTuning.SpeedCap.TOTAL, "others keep theirs")
-	var fields: Dictionary = load("res://scripts/loading/board_schema.gd").tuning_fields()
+	var fields := BoardRanges.tuning_fields()
 	assert_eq(fields["speed_cap"][2], 1.0, "the schema bounds the option to its values")
-
-
-func test_gutter_slide_time_is_the_deprecated_name_of_drain_slide_time() -> void:
-	var t := PhysicsTuning.new()
-	t.gutter_slide_time = 1.25
-	assert_eq(t.drain_slide_time, 1.25, "the old name writes the new field")
-	t.drain_slide_time = 0.75
-	assert_eq(t.gutter_slide_time, 0.75, "and reads it")
 
 
 func test_a_board_file_with_the_old_gutter_slide_time_key_still_reads() -> void:

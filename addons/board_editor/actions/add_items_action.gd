@@ -42,19 +42,7 @@ func size() -> int:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(
-		[
-			"pins",
-			"pin_pocket",
-			"pin_special",
-			"pockets",
-			"walls",
-			"holes",
-			"ball_starts",
-			"bonus_pockets",
-			"windmills"
-		]
-	)
+	return PackedStringArray(Items.ITEM_FIELDS)
 
 
 func _apply() -> void:
@@ -97,7 +85,7 @@ func _apply() -> void:
 	if not _bonus.is_empty():
 		var bonus := level.bonus_pockets.duplicate()
 		for spec in _bonus:
-			bonus.insert(role_slot(bonus, spec.role), spec)
+			bonus.insert(BonusPocketSpec.role_slot(bonus, spec.role), spec)
 		level.bonus_pockets = bonus
 		for spec in _bonus:
 			added.append(Items.make(Items.Kind.BONUS, level.bonus_pockets.find(spec)))
@@ -107,16 +95,6 @@ func _apply() -> void:
 			added.append(Items.make(Items.Kind.WINDMILL, wheels.size()))
 			wheels.append(spec)
 		level.windmills = wheels
-
-
-## Where a new bonus pocket of `role` goes: after the last one of the same or an earlier
-## role, so the board stays in role order (start pockets, attackers, tulips).
-static func role_slot(pockets: Array[BonusPocketSpec], role: int) -> int:
-	var slot := 0
-	for i in pockets.size():
-		if pockets[i] != null and pockets[i].role <= role:
-			slot = i + 1
-	return slot
 
 
 func _append_walls(walls: PackedVector2Array) -> PackedVector2Array:

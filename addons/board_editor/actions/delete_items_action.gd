@@ -19,19 +19,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(
-		[
-			"pins",
-			"pin_pocket",
-			"pin_special",
-			"pockets",
-			"walls",
-			"holes",
-			"ball_starts",
-			"bonus_pockets",
-			"windmills"
-		]
-	)
+	return PackedStringArray(Items.ITEM_FIELDS)
 
 
 func _apply() -> void:

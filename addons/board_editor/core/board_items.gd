@@ -11,6 +11,18 @@ enum Kind { PIN, POCKET, WALL, HOLE, START, GOAL, BONUS, WINDMILL }
 
 ## Returned by the pickers when nothing is there.
 const NONE := Vector2i(-1, -1)
+## The BoardLevel fields that hold items (what adding or deleting items may change).
+const ITEM_FIELDS: Array[String] = [
+	"pins",
+	"pin_pocket",
+	"pin_special",
+	"pockets",
+	"walls",
+	"holes",
+	"ball_starts",
+	"bonus_pockets",
+	"windmills",
+]
 
 
 ## The item of `kind` at `index`.
