@@ -209,14 +209,19 @@ func _set_radius(r: float) -> void:
 
 
 ## Narrow phase, ring: the ball's centre stays within ring radius - r of the centre.
-## Called only when it is past that. On the drain arc a bounce counts toward draining,
-## and so does time spent rolling there.
+## Called only when it is past that. A bounce then leaves the ball the ring's least
+## horizontal speed (as a pin does). On the drain arc a bounce counts toward draining, and
+## so does time spent rolling there.
 func _touch_ring() -> void:
 	var d: Vector2 = _p - _ring_center
 	var dist: float = sqrt(d.length_squared())
 	var nrm: Vector2 = -d / dist
 	_p = _ring_center + d * (_ring_lim / dist)
 	var bounced: bool = respond(ContactId.RING, _ring_center, d, nrm, _ring_lim, Surface.RING, 0)
+	# Only a bounce (the chapter's ring hit): a ball riding the ring up or down the rail
+	# must be free to stop and roll back, which a kept sideways speed would forbid.
+	if bounced and absf(_v.x) < _ring_min_speed_x:
+		_v.x = _ring_min_speed_x if _v.x >= 0.0 else -_ring_min_speed_x
 	if not _has_drain_arc or not _g.in_drain_arc(d):
 		return
 	if bounced:

@@ -70,6 +70,7 @@ var _wall_inv_len2 := PackedFloat32Array()
 var _has_walls := false
 var _has_ring := false
 var _ring_center := Vector2.ZERO
+var _ring_min_speed_x := 0.0
 var _has_drain_arc := false
 var _has_sensors := false
 ## True when the sensors are zones alone (no holes, no goals): the mover then looks for a
@@ -240,6 +241,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_has_walls = not g.wall_a.is_empty()
 	_has_ring = g.has_ring
 	_ring_center = g.ring_center
+	_ring_min_speed_x = g.ring_min_speed_x
 	_has_drain_arc = g.has_drain_arc
 	_has_sensors = not (g.hole_pos.is_empty() and g.goal_pos.is_empty() and g.zone_pos.is_empty())
 	_zones_only = g.hole_pos.is_empty() and g.goal_pos.is_empty()

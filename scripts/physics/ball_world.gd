@@ -46,8 +46,10 @@ const StageClock := preload("res://scripts/physics/stage_clock.gd")
 
 ## The physics behaviour: bumped whenever the same inputs roll the balls differently (a new
 ## contact order, a changed response), so replays of older runs are refused by name instead
-## of drifting (Replay.PHYSICS_VERSION). 2: ball pairs solved in stripes of cell rows.
-const PHYSICS_VERSION := 2
+## of drifting (Replay.PHYSICS_VERSION). 2: ball pairs solved in stripes of cell rows. 3: a
+## bounce off the ring leaves the ball the ring's least horizontal speed, as a pin hit does
+## (the chapter).
+const PHYSICS_VERSION := 3
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
 ## hitch slows the game down instead of freezing it.
 const MAX_STEPS_PER_ADVANCE := 8

@@ -79,9 +79,11 @@ func get_windmill_speed(index: int) -> float:
 	return _wheels.omega[index] if index >= 0 and index < _wheels.count() else 0.0
 
 
-## Sets the ring border: balls stay inside the circle.
-func set_ring(center: Vector2, radius: float) -> void:
-	_geo.set_ring(center, radius)
+## Sets the ring border: balls stay inside the circle. `min_speed_x` is its material, as a
+## pin's (add_pin): the least horizontal speed a ball keeps after bouncing off it (a ball
+## riding the ring keeps its own, so it can stop and roll back down the launch rail).
+func set_ring(center: Vector2, radius: float, min_speed_x := 0.0) -> void:
+	_geo.set_ring(center, radius, min_speed_x)
 
 
 ## Makes the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) drain:

@@ -33,7 +33,9 @@ static func tuning_for(level: BoardLevel) -> PhysicsTuning:
 
 
 static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
-	world.set_ring(level.ring_center, level.ring_radius)
+	# The ring shares the pins' material: the chapter resolves a ring hit as a pin hit.
+	var least_speed_x := maxf(world.tuning.min_horizontal_speed, 0.0)
+	world.set_ring(level.ring_center, level.ring_radius, least_speed_x)
 	var slide_time := maxf(world.tuning.drain_slide_time, 0.0)
 	var bounces := maxi(level.gutter_bounces, 1)
 	# The gutter: the drain arc of the ring.
