@@ -184,6 +184,10 @@ func _apply_seed_speed_rules() -> void:
 	elif _has_friction:
 		_v -= _v.clamp(-_friction_dt, _friction_dt)
 	_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+	if _x_cap_friction_time > 0.0 and _dt > 0.0:
+		_v.x = SpeedRules.x_after_cap(
+			_v.x, _gravity.x, _max_speed, _friction_dt.x / _dt * _x_cap_friction_time
+		)
 
 
 ## Stores the ball's contacts of this step and their normals (its supports next step),
@@ -369,6 +373,10 @@ func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 	if hit and _hits_heard[BallEvents.Kind.WALL_HIT] != 0:
 		_queue(BallEvents.Kind.WALL_HIT, index, -vn)
 	_v -= nrm * vn
+	# The seed puts the ball back on the cap where its whole move would have ended and then
+	# moves it on by the kept speed: along a cap it goes twice its tangential speed. That is
+	# what lets a ball rolled dead at a cap slide off it within the seed's 16 frames.
+	_p += _v * _h
 	if _cur_a == ContactId.NONE or _cur_a == id:
 		_cur_a = id
 		_n_a = nrm

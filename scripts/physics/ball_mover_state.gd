@@ -112,6 +112,8 @@ var _dt := 0.0
 var _max_speed := 0.0
 ## True when friction or the cap follow the seed's options (see PhysicsTuning).
 var _friction_against_gravity := false
+## Seconds of x friction that come off after the per-axis cap (PhysicsTuning.x_cap_friction_time).
+var _x_cap_friction_time := 0.0
 var _cap_per_axis := false
 var _caps_glance := false
 var _pin_e := 0.0
@@ -174,6 +176,7 @@ func begin(
 	_max_speed = t.max_speed
 	_friction_against_gravity = t.friction_against == PhysicsTuning.FrictionAgainst.GRAVITY
 	_cap_per_axis = t.speed_cap == PhysicsTuning.SpeedCap.PER_AXIS
+	_x_cap_friction_time = t.x_cap_friction_time if _cap_per_axis else 0.0
 	_caps_glance = t.wall_cap_contact == PhysicsTuning.CapContact.GLANCE
 	_pin_e = t.restitution
 	_wall_e = t.wall_restitution
