@@ -94,6 +94,7 @@ func _ready() -> void:
 	rules.game_reset.connect(_on_game_reset)
 	rules.goal_count_changed.connect(_on_goal_count_changed)
 	rules.wall_bumped.connect(_on_wall_bumped)
+	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
 	get_viewport().size_changed.connect(_layout)
 	_layout()
