@@ -40,6 +40,9 @@ const SHADOW_LIGHT_LEFT := 0.78
 ## keep the light they had.
 const FLOOR_GAIN := 1.22
 
+## The tutorial's flat colours instead of wood (set before `build`).
+var tutorial_look := false
+
 var _level: BoardLevel
 var _floor := MeshInstance3D.new()
 var _walls := MeshInstance3D.new()
@@ -51,8 +54,6 @@ var _floor_material := ShaderMaterial.new()
 var _shadow_material := ShaderMaterial.new()
 var _wall_material := ShaderMaterial.new()
 var _frame_material := ShaderMaterial.new()
-## The tutorial's flat colours instead of wood (set before `build`).
-var tutorial_look := false
 
 
 func _ready() -> void:

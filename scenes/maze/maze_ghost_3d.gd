@@ -7,6 +7,8 @@ extends Node3D
 
 const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const GHOST_SHADER := preload("res://scenes/maze/maze_ghost.gdshader")
+## How much of the ghost's body hides what is behind it (its rim and highlight show more).
+const OPACITY := 0.42
 
 ## Ghost ball positions last shown, in board pixels (read by tests).
 var shown_positions := PackedVector2Array()
@@ -22,6 +24,7 @@ func _init() -> void:
 	_mesh.rings = 12
 	_mesh.radial_segments = 24
 	_material.shader = GHOST_SHADER
+	_material.set_shader_parameter("opacity", OPACITY)
 
 
 ## Sets the board size (pixels) that positions are measured on.

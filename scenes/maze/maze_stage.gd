@@ -38,6 +38,10 @@ const SOFTWARE_GL_NAMES: Array[String] = ["llvmpipe", "softpipe", "swrast", "swi
 ## size in pixels.
 const ROOM_SIZE := Vector2i(256, 128)
 
+## The tutorial's flat colours and red balls instead of wood and steel (set before
+## `set_level`).
+var tutorial_look := false
+
 var _pivot := Node3D.new()
 var _board: MazeBoard3D = MazeBoard3D.new()
 var _balls: MazeBalls3D = MazeBalls3D.new()
@@ -50,9 +54,6 @@ var _ball_radius := 5.0
 var _framing := MazeFraming.new()
 var _region := Rect2()
 var _follow_at := Vector2.ZERO
-## The tutorial's flat colours and red balls instead of wood and steel (set before
-## `set_level`).
-var tutorial_look := false
 
 
 func _ready() -> void:
