@@ -12,7 +12,7 @@ extends RefCounted
 const MIN_BALL_PX := 14.0
 const REFERENCE_SCREEN := 720.0
 ## Space kept free round the board inside its region (px).
-const MARGIN_PX := 12.0
+const MARGIN_PX := 8.0
 
 ## The camera's distance from the board's centre, and its near plane (units).
 var distance := 6.0

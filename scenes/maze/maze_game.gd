@@ -22,10 +22,10 @@ const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## The side panel: a column on the right of a landscape window (this share of its width,
 ## within these bounds, and this far from the edge), a band along the bottom of a portrait one
 ## (this share of its height). The board is framed in the rest, so no text lies over it.
-const SIDE_SHARE := 0.3
+const SIDE_SHARE := 0.2
 const SIDE_MIN_WIDTH := 260.0
 const SIDE_MAX_WIDTH := 350.0
-const SIDE_EDGE := 30.0
+const SIDE_EDGE := 24.0
 const PORTRAIT_SIDE_SHARE := 0.45
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
@@ -242,7 +242,7 @@ func _layout() -> Rect2:
 		_side.offset_top = -height
 		_side.offset_bottom = -SIDE_EDGE * 0.5
 		region = Rect2(0.0, 0.0, view.x, view.y - height)
-		_joystick.ui_scale = 1.4
+		_joystick.ui_scale = 2.0
 	_stage.set_board_region(region)
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
@@ -292,6 +292,7 @@ func _show_next_medal() -> void:
 
 func _on_lost(hole: int) -> void:
 	_joystick.release()
+	_next_medal.text = ""
 	_stage.set_lost_hole(hole)
 	_sounds.play(Recipes.BALL_DROP)
 	haptics.drop()
