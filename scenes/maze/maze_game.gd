@@ -27,6 +27,8 @@ const SIDE_MIN_WIDTH := 260.0
 const SIDE_MAX_WIDTH := 350.0
 const SIDE_EDGE := 24.0
 const PORTRAIT_SIDE_SHARE := 0.45
+## The height (px) the side panel's text takes in a portrait band, beside the joystick.
+const PORTRAIT_TEXT_HEIGHT := 380.0
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -242,7 +244,10 @@ func _layout() -> Rect2:
 		_side.offset_top = -height
 		_side.offset_bottom = -SIDE_EDGE * 0.5
 		region = Rect2(0.0, 0.0, view.x, view.y - height)
-		_joystick.ui_scale = 2.0
+		# the joystick takes what the band's text leaves
+		_joystick.ui_scale = clampf(
+			(height - PORTRAIT_TEXT_HEIGHT) / MazeJoystick.drawn_size(1.0), 0.8, 2.0
+		)
 	_stage.set_board_region(region)
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
