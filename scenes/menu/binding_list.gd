@@ -32,6 +32,7 @@ const ACTION_NAMES := {
 	"game_restart": "Restart",
 	"pause": "Pause",
 	"toggle_frame_counter": "Show / hide frame counter",
+	"board_actions": "Level select: a board's menu (play, export, delete)",
 }
 
 var _capture_action := ""

@@ -93,7 +93,8 @@ const LISTS := {
 	],
 }
 ## Fields an item may leave out: its stable id (ItemIds; numbered in order when missing),
-## a pin's pocket (-1 = a field pin) and its special flag.
+## a pin's pocket and its special flag. Rim pins are stamped from their pocket now; a pin
+## with "pocket" (written by older versions) is read and dropped, so those files still load.
 const OPTIONAL_ITEM_FIELDS := {
 	"pins": {"id": ["int", 1, ItemIds.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]},
 	"pockets": {"id": ["int", 1, ItemIds.MAX_ID]},

@@ -231,10 +231,16 @@ static func _build(data: Dictionary) -> BoardLevel:
 	var tuning: Dictionary = data.get("tuning", {})
 	level.tuning = _build_tuning(level, tuning)
 	if level.is_pachinko():
-		var pins: Array = data.get("pins", [])
+		# Files before rim pins were derived stored each pocket's pins (`"pocket": k`): the
+		# pocket line is the truth, so those are dropped and every pocket stamps its own.
+		var stored: Array = data.get("pins", [])
+		var pins := _field_pins(stored)
+		data["pins"] = pins  # the ids read below are the field pins' only
 		var pockets: Array = data.get("pockets", [])
 		_build_pins(level, pins)
 		_build_pockets(level, pockets)
+		for k in level.pockets.size():
+			PocketStamp.apply(level, k)
 		_build_bonus(level, data)
 		_build_windmills(level, data.get("windmills", []))
 	else:
@@ -285,13 +291,21 @@ static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTunin
 	return tuning
 
 
+static func _field_pins(items: Array) -> Array:
+	var kept: Array = []
+	for item: Dictionary in items:
+		if not item.has("pocket"):
+			kept.append(item)
+	return kept
+
+
 static func _build_pins(level: BoardLevel, items: Array) -> void:
 	var pins := PackedVector2Array()
 	var pockets := PackedInt32Array()
 	var special := PackedByteArray()
 	for item: Dictionary in items:
 		pins.append(Vector2(_float_of(item["x"]), _float_of(item["y"])))
-		pockets.append(_int_of(item.get("pocket", -1)))
+		pockets.append(-1)
 		special.append(1 if item.get("special", false) else 0)
 	level.pins = pins
 	level.pin_pocket = pockets

@@ -254,8 +254,19 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 			"no_pockets"
 		)
 	var clear_ring := level.ring_radius - level.ball_radius
+	var leaving := _rims_leaving_field(level)
 	for k in level.pockets.size():
 		var spec: PocketSpec = level.pockets[k]
+		if leaving.has(k):
+			var at: Vector2 = leaving[k][0]
+			BoardIssue.add_to(
+				issues,
+				ERROR,
+				"Pocket %d's rim is %s." % [ItemIds.of(level, "pockets", k), leaving[k][1]],
+				at,
+				"pocket_outside_field"
+			)
+			continue
 		if specials[k] == 0:
 			BoardIssue.add_to(
 				issues,
@@ -297,12 +308,30 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 					issues,
 					WARNING,
 					(
-						"Pin %d blocks the mouth of pocket %d; no ball can enter."
-						% [ItemIds.of(level, "pins", blocker), ItemIds.of(level, "pockets", k)]
+						"%s blocks the mouth of pocket %d; no ball can enter."
+						% [_pin_name(level, blocker), ItemIds.of(level, "pockets", k)]
 					),
 					level.pins[blocker],
 					"pocket_unreachable"
 				)
+
+
+# Pocket index -> [where, what] for each pocket with a rim pin off the field (the first one).
+static func _rims_leaving_field(level: BoardLevel) -> Dictionary:
+	var leaving := {}
+	for i in level.pins.size():
+		var owner := level.pin_pocket[i]
+		if owner < 0 or leaving.has(owner) or not level.pins[i].is_finite():
+			continue
+		var where := PinChecks.where_outside(level, level.pins[i])
+		if not where.is_empty():
+			leaving[owner] = [level.pins[i], where]
+	return leaving
+
+
+static func _pin_name(level: BoardLevel, i: int) -> String:
+	var label := ItemIds.pin_label(level, i)
+	return label.left(1).to_upper() + label.substr(1)
 
 
 # A pin (not of pocket k) inside pocket k's mouth opening or cup, else -1.
