@@ -18,10 +18,10 @@ const LevelCard := preload("res://scenes/menu/level_card.gd")
 const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.
 const MAX_COLUMNS := 4
-const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
+const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
 
-## The game whose boards are listed ("pachinko" or "maze").
-var kind := "pachinko"
+## The game whose boards are listed (a name of BoardLevel.KIND_NAMES).
+var kind := BoardLevel.PACHINKO_NAME
 ## The player's boards folder (tests point it at a scratch folder before adding the screen).
 var user_root := BoardLoader.USER_DIR
 ## Loads one file (path, kind, root) -> BoardLoadResult; empty means BoardLoader.load_listed.
@@ -130,7 +130,7 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 		_cancel(_grid)
 		_loadings.erase(_grid)
 	_clear(_grid)
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		results = MazeProgress.sorted(results)
 	for result in results:
 		_add_slot(_grid, result.path)
@@ -243,10 +243,10 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	if _loadings.has(grid):
 		_cancel(grid)
 	_clear(grid)
-	var kind_value := _kind_enum(kind)
+	var kind_value := BoardLevel.kind_named(kind)
 	var jobs: Array[Dictionary] = []
 	var paths := BoardLoader.list_files(kind_value, root)
-	if kind == "maze" and grid == _grid:
+	if kind == BoardLevel.MAZE_NAME and grid == _grid:
 		paths = _in_maze_order(paths)
 	for path in paths:
 		_add_slot(grid, path)
@@ -357,7 +357,7 @@ func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
 	for slot in grid.get_children():
 		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
 			(slot as LevelSlot).fill(result, _best_text(result))
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
 		_link_focus()
@@ -461,7 +461,7 @@ func _best_text(result: BoardLoadResult) -> String:
 	if not result.ok():
 		return ""
 	var board_id := result.level.board_id
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		var easy := App.best_maze_time(board_id, false)
 		var hard := App.best_maze_time(board_id, true)
 		if easy <= 0.0 and hard <= 0.0:
@@ -492,7 +492,3 @@ static func _is_navigation(event: InputEvent) -> bool:
 		if event.is_action_pressed(action):
 			return true
 	return false
-
-
-static func _kind_enum(kind_name: String) -> int:
-	return BoardLevel.Kind.MAZE if kind_name == "maze" else BoardLevel.Kind.PACHINKO
