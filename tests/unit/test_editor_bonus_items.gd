@@ -151,6 +151,10 @@ func test_align_and_duplicate_bonus_pockets() -> void:
 	var copy: Vector2i = session.selection[0]
 	assert_eq(ItemNames.name_of(level, copy), "Tulip 3", "the copy is selected, with a new id")
 	assert_eq(level.bonus_pockets[copy.y].payout, 3, "a copy keeps the payout")
+	var overlaps := BoardValidator.validate(level).filter(
+		func(issue: BoardIssue) -> bool: return issue.message.contains("Tulip 3 overlaps")
+	)
+	assert_eq(overlaps.size(), 0, "the copy sits clear of the original")
 
 
 func test_the_bonus_layer_hides_and_locks_bonus_pockets() -> void:

@@ -8,6 +8,7 @@ const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
 
 ## How far each field is moved: small enough to stay valid, large enough to show in the file.
 const STEP := {
@@ -223,3 +224,21 @@ func test_a_pocket_outside_the_ring_is_one_error_naming_the_pocket() -> void:
 	for issue in errors:
 		messages.append(issue.message)
 	assert_eq(messages, PackedStringArray(["Pocket 2's rim is outside the ring."]))
+
+
+func test_a_duplicated_pocket_never_overlaps_its_original() -> void:
+	var level := _load("res://levels/pachinko/classic.board")
+	var session := Session.new(level)
+	var errors_before := BoardValidator.errors(level).size()
+	session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+	assert_true(Commands.duplicate_selection(session))
+	assert_eq(level.pockets.size(), 6)
+	var gap := level.pockets[5].position.x - level.pockets[0].position.x
+	assert_gte(gap, level.pockets[0].width + level.ball_radius * 2.0, "a ball clear of it")
+	var nearest := INF
+	for a in Items.pocket_pins(level, 0):
+		for b in Items.pocket_pins(level, 5):
+			nearest = minf(nearest, level.pins[a].distance_to(level.pins[b]))
+	var clear := nearest - level.pin_radius * 2.0
+	assert_gte(clear, level.ball_radius * 2.0, "the rims leave a ball's width between them")
+	assert_eq(BoardValidator.errors(level).size(), errors_before)

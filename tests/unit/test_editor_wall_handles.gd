@@ -73,3 +73,16 @@ func test_dragging_the_middle_of_a_wall_still_moves_the_whole_wall() -> void:
 	_helper.press(Vector2(70, 125), false)
 	assert_eq(session.level.walls[0], Vector2(35, 125))
 	assert_eq(session.level.walls[1], Vector2(105, 125))
+
+
+func test_erase_on_a_ball_start_over_a_wall_erases_the_start() -> void:
+	var level := _corner_board()
+	# A start sitting over the first wall, 3 px below its line.
+	level.ball_starts = PackedVector2Array([Vector2(70, 108)])
+	ItemIds.fill(level)
+	_helper.start(level)
+	var session := _helper.session
+	session.set_tool(Session.Tool.ERASE)
+	_helper.click(Vector2(70, 106))  # inside the start, and deeper inside the wall
+	assert_eq(session.level.ball_starts.size(), 0, "the start is gone")
+	assert_eq(Items.wall_count(session.level.walls), 2, "the wall under it stays")

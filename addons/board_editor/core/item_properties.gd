@@ -13,7 +13,8 @@ const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 
-## Field key -> [label, lowest, highest, step]; positions are limited by the board size.
+## Field key -> [label, lowest, highest, arrow step, whole numbers only]; values keep the
+## board file's 0.01 px precision (NumberRow).
 const FIELDS := {
 	"x": ["x (px)", -50.0, 2000.0, 0.5],
 	"y": ["y (px)", -50.0, 2000.0, 0.5],
@@ -23,11 +24,11 @@ const FIELDS := {
 	"by": ["End B y (px)", -50.0, 2000.0, 0.5],
 	"width": ["Width (px)", 4.0, 200.0, 1.0],
 	"depth": ["Depth (px)", 4.0, 200.0, 1.0],
-	"payout": ["Payout (balls)", 0.0, 99.0, 1.0],
+	"payout": ["Payout (balls)", 0.0, 99.0, 1.0, true],
 	"radius": ["Radius (px)", 6.0, 200.0, 0.5],
-	"symbols": ["Reel symbols", 2.0, 9.0, 1.0],
+	"symbols": ["Reel symbols", 2.0, 9.0, 1.0, true],
 	"open_seconds": ["Opens for (s)", 1.0, 30.0, 0.5],
-	"open_catches": ["Closes after (catches)", 1.0, 50.0, 1.0],
+	"open_catches": ["Closes after (catches)", 1.0, 50.0, 1.0, true],
 }
 const POINT_FIELD := {
 	Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "ball_starts"
