@@ -54,6 +54,7 @@ func _init(on_session: Session) -> void:
 		Session.Tool.START_POCKET: BonusTool.new(session, BonusPocketSpec.Role.START),
 		Session.Tool.ATTACKER: BonusTool.new(session, BonusPocketSpec.Role.ATTACKER),
 		Session.Tool.TULIP: BonusTool.new(session, BonusPocketSpec.Role.TULIP),
+		Session.Tool.WINDMILL: PlaceTool.new(session, Items.Kind.WINDMILL),
 	}
 
 

@@ -1,7 +1,7 @@
 class_name ItemIds
 extends RefCounted
-## Stable item ids: every pin, pocket, wall, black hole and ball start has a number that stays
-## its own when a neighbour is deleted or added, so a problem message ("Pins 143 and 459
+## Stable item ids: every pin, pocket, windmill, wall, black hole and ball start has a number
+## that stays its own when a neighbour is deleted or added, so a problem message ("Pins 143 and 459
 ## overlap") still names the same two pins after an edit. Ids are per list, 1 and up, kept in
 ## BoardLevel's `*_ids` arrays beside the items and written in the board file (`"id": 17`).
 ## A board made in code, or a file without ids, numbers its items 1, 2, 3... in order.
@@ -24,6 +24,7 @@ const LISTS := {
 	"start_pockets": "start_pocket_ids",
 	"attackers": "attacker_ids",
 	"tulips": "tulip_ids",
+	"windmills": "windmill_ids",
 }
 ## The bonus lists, in BonusPocketSpec.Role order; their items are the board's
 ## `bonus_pockets` of that role, in board order.
@@ -36,6 +37,8 @@ const MAX_ID := 9_999_999
 static func count(level: BoardLevel, list: String) -> int:
 	if list == "pockets":
 		return level.pockets.size()
+	if list == "windmills":
+		return level.windmills.size()
 	if BONUS_LISTS.has(list):
 		return _keys(level.bonus_pockets, list).size()
 	var points: PackedVector2Array = level.get(list)
@@ -263,10 +266,11 @@ static func _advance(level: BoardLevel, list: String, next: int) -> void:
 
 
 # What identifies an item across an edit: its position (a wall: both ends), a pocket its
-# object. `items` is the board field (or its BoardFieldCopy capture: [object, values...]).
+# object (a windmill too). `items` is the board field (or its BoardFieldCopy capture:
+# [object, values...]).
 static func _keys(items: Variant, list: String) -> Array:
 	var keys: Array = []
-	if list == "pockets" or BONUS_LISTS.has(list):
+	if list == "pockets" or list == "windmills" or BONUS_LISTS.has(list):
 		var role := BONUS_LISTS.find(list)
 		var entries: Array = items
 		for entry: Variant in entries:

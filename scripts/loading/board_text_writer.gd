@@ -45,6 +45,7 @@ static func write(level: BoardLevel) -> String:
 		_append_items(lines, "pin", _pin_items(level), _ids(level, "pins"))
 		_append_items(lines, "pocket", _pocket_items(level), _ids(level, "pockets"))
 		_append_bonus(lines, level)
+		_append_items(lines, "windmill", _windmill_items(level), _ids(level, "windmills"))
 	else:
 		var walls := _point_items(level.walls, WALL_KEYS)
 		_append_items(lines, "wall", walls, _ids(level, "walls"))
@@ -79,10 +80,12 @@ static func _value(value: Variant) -> String:
 static func _tuning(tuning: PhysicsTuning) -> String:
 	var parts := PackedStringArray()
 	var source := tuning if tuning != null else PhysicsTuning.new()
-	var names := Schema.tuning_fields().keys()
+	var names := BoardRanges.tuning_fields().keys()
 	names.sort()
 	for name: String in names:
 		var value: Variant = source.get(name)
+		if name in BoardRanges.TUNING_WRITTEN_WHEN_SET and value == 0.0:
+			continue
 		var text := ""
 		if value is Vector2:
 			var v: Vector2 = value
@@ -206,6 +209,25 @@ static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
 				)
 			lines.append('{"%s": %s}' % [spec.role_key(), text + "}"])
 			place += 1
+
+
+# A driven wheel writes its speed, a free one its friction (WindmillSpec). A board without
+# windmills gets no line, so older boards keep their exact text.
+static func _windmill_items(level: BoardLevel) -> PackedStringArray:
+	var items := PackedStringArray()
+	for spec in level.windmills:
+		if spec == null:
+			continue
+		var text := (
+			'{"x": %s, "y": %s, "blades": %d, "length": %s'
+			% [number(spec.position.x), number(spec.position.y), spec.blades, number(spec.length)]
+		)
+		if spec.free_spin:
+			text += ', "friction": %s}' % number(spec.friction)
+		else:
+			text += ', "speed": %s}' % number(spec.speed)
+		items.append(text)
+	return items
 
 
 static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:

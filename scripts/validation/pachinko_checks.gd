@@ -1,8 +1,9 @@
 extends RefCounted
 ## BoardValidator's pachinko checks: ring, rail, gutter, cup and pockets; the pins
-## themselves are checked by pin_checks.gd.
+## themselves are checked by pin_checks.gd, the windmills by windmill_checks.gd.
 
 const PinChecks := preload("res://scripts/validation/pin_checks.gd")
+const WindmillChecks := preload("res://scripts/validation/windmill_checks.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Extra width the launch channel needs beyond the ball and the guide wall, in pixels.
@@ -17,6 +18,7 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	_check_pockets(level, issues)
 	PinChecks.check_pin_pairs(level, issues)
 	BonusChecks.check(level, issues)
+	WindmillChecks.check(level, issues)
 
 
 # Ring, pin radius, array lengths and pocket specs: what every later check relies on.

@@ -137,16 +137,8 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 	var pins := level.pins
 	var touch := 2.0 * level.pin_radius
 	var reach := touch + 2.0 * level.ball_radius
-	var cell := maxf(reach, 1.0)
-	var grid := {}
-	for i in pins.size():
-		if not pins[i].is_finite():
-			continue
-		var key := Vector2i(floori(pins[i].x / cell), floori(pins[i].y / cell))
-		var bucket: PackedInt32Array = grid.get(key, PackedInt32Array())
-		bucket.append(i)
-		grid[key] = bucket
-	if _crowded(level, grid, cell, issues):
+	var grid := PointGrid.new(pins, maxf(reach, 1.0))
+	if _crowded(level, grid, issues):
 		return
 	var pair_issues_before := issues.size()
 	var touch2 := touch * touch - 1e-6
@@ -164,49 +156,44 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 				"narrow_gap"
 			)
 			return
-		var base := Vector2i(floori(p.x / cell), floori(p.y / cell))
-		for dy in range(-1, 2):
-			for dx in range(-1, 2):
-				var bucket: PackedInt32Array = grid.get(base + Vector2i(dx, dy), PackedInt32Array())
-				for j in bucket:
-					if j <= i:
-						continue
-					var d2 := p.distance_squared_to(pins[j])
-					if d2 >= reach2:
-						continue
-					var mid := (p + pins[j]) * 0.5
-					if d2 < touch2:
-						BoardIssue.add_covering(
-							issues,
-							WARNING,
-							"%s overlap." % _pins(level, i, j),
-							mid,
-							"pin_overlap",
-							BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
-						)
-					elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
-						# Rim pins of one pocket are meant to be closer than a ball.
-						var gap := sqrt(d2) - touch
-						BoardIssue.add_covering(
-							issues,
-							WARNING,
-							(
-								"%s leave a %.1f px gap; a ball (%.0f px) would stick in it."
-								% [_pins(level, i, j), gap, reach - touch]
-							),
-							mid,
-							"narrow_gap",
-							BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
-						)
+		for j in grid.near(p):
+			if j <= i:
+				continue
+			var d2 := p.distance_squared_to(pins[j])
+			if d2 >= reach2:
+				continue
+			var mid := (p + pins[j]) * 0.5
+			if d2 < touch2:
+				BoardIssue.add_covering(
+					issues,
+					WARNING,
+					"%s overlap." % _pins(level, i, j),
+					mid,
+					"pin_overlap",
+					BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
+				)
+			elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
+				# Rim pins of one pocket are meant to be closer than a ball.
+				var gap := sqrt(d2) - touch
+				BoardIssue.add_covering(
+					issues,
+					WARNING,
+					(
+						"%s leave a %.1f px gap; a ball (%.0f px) would stick in it."
+						% [_pins(level, i, j), gap, reach - touch]
+					),
+					mid,
+					"narrow_gap",
+					BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
+				)
 
 
 # A spot holding far more pins than fit there without overlapping is a broken board, and
 # checking its pins pair by pair would take minutes: refuse it with one error instead.
-static func _crowded(
-	level: BoardLevel, grid: Dictionary, cell: float, issues: Array[BoardIssue]
-) -> bool:
-	for key: Vector2i in grid:
-		var bucket: PackedInt32Array = grid[key]
+static func _crowded(level: BoardLevel, grid: PointGrid, issues: Array[BoardIssue]) -> bool:
+	var cell := grid.cell
+	for key: Vector2i in grid.buckets:
+		var bucket: PackedInt32Array = grid.buckets[key]
 		if bucket.size() > CROWDED_CELL_PINS:
 			var at := (Vector2(key) + Vector2(0.5, 0.5)) * cell
 			(
