@@ -25,10 +25,19 @@ const STEP := {
 	"symbols": 1.0,
 	"open_seconds": 1.0,
 	"open_catches": 1.0,
+	"blades": 1.0,
+	"length": 3.0,
+	"free": 1.0,
+	"speed": 30.0,
+	"friction": 20.0,
 }
 
 
 func _load(path: String) -> BoardLevel:
+	if not path.begins_with("res://"):
+		var read: Dictionary = Reader.read(path)  # board text (a board made in the test)
+		assert_not_null(read.get("level"), str(read.get("error", "")))
+		return read.get("level")
 	var result := BoardLoader.load_board(path)
 	assert_not_null(result.level, result.error)
 	return result.level
@@ -48,8 +57,9 @@ func _changed_lines(before: String, after: String) -> PackedStringArray:
 	return changed
 
 
-# Edits every field of `item` one at a time (each from the board as loaded) and checks that
-# the saved text changes in one line, which `line_start` begins.
+# Edits every field of `item` one at a time (each from the board as loaded from `path`, a
+# file or board text) and checks that the saved text changes in one line, which
+# `line_start` begins.
 func _check_each_field(path: String, item: Vector2i, line_start: String) -> void:
 	var fields := ItemProperties.values_of(_load(path), item)
 	assert_false(fields.is_empty(), "%s has item %s" % [path, item])
@@ -242,3 +252,13 @@ func test_a_duplicated_pocket_never_overlaps_its_original() -> void:
 	var clear := nearest - level.pin_radius * 2.0
 	assert_gte(clear, level.ball_radius * 2.0, "the rims leave a ball's width between them")
 	assert_eq(BoardValidator.errors(level).size(), errors_before)
+
+
+func test_each_field_of_a_windmill_changes_only_its_line() -> void:
+	var level := _load("res://levels/pachinko/classic.board")
+	var wheel := WindmillSpec.new()
+	wheel.position = Vector2(350, 470)
+	level.windmills = [wheel] as Array[WindmillSpec]
+	ItemIds.fill(level)
+	var text := Writer.write(level)
+	_check_each_field(text, Items.make(Items.Kind.WINDMILL, 0), '{"windmill": {"id": 1, ')
