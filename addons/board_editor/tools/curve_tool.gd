@@ -38,9 +38,9 @@ func release(at: Vector2, _event: InputEventMouseButton) -> bool:
 		return true
 	var data := Items.empty_set()
 	data["pins"] = pins
-	var action := AddItemsAction.new(
-		level(), session.mirrored(data), "Add a %d-pin curve" % pins.size()
-	)
+	var placed := session.mirrored(data)
+	var count: int = (placed["pins"] as PackedVector2Array).size()  # both halves when mirrored
+	var action := AddItemsAction.new(level(), placed, "Add a %d-pin curve" % count)
 	session.commit(action)
 	session.select(action.added)
 	return true
