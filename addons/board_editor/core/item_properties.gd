@@ -13,6 +13,7 @@ const SetPointAction := preload("res://addons/board_editor/actions/set_point_act
 const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket_action.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const EditWindmillAction := preload("res://addons/board_editor/actions/edit_windmill_action.gd")
 
 ## Field key -> [label, lowest, highest, arrow step, whole numbers only]; values keep the
@@ -139,6 +140,29 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 			return SetPropertiesAction.new(level, {"goal_center": target}, "Set goal position")
 	var field: String = POINT_FIELD[item.x]
 	return SetPointAction.new(level, field, item.y, target, "Set %s position" % _noun(item))
+
+
+## The action that sets x or y of `item` in mirror mode (axis x `axis`): its mirror twin
+## moves with it, as a drag moves both; null when the item has no twin (then `action_for`).
+static func mirrored_action_for(
+	level: BoardLevel, item: Vector2i, key: String, value: float, axis: float
+) -> BoardAction:
+	if not key in ["x", "y"] or item.x in [Items.Kind.GOAL, Items.Kind.WALL]:
+		return null
+	if not Items.is_valid(level, item):
+		return null
+	var twin := Mirror.partner(level, item, axis)
+	if twin == Items.NONE or twin == item:
+		return null
+	var at := Items.position_of(level, item)
+	var target := Vector2(value, at.y) if key == "x" else Vector2(at.x, value)
+	if target == at:
+		return null
+	var split := Mirror.split_for_move(level, [item] as Array[Vector2i], axis, at.x)
+	var direct: Array[Vector2i] = split["direct"]
+	var mirrored: Array[Vector2i] = split["mirrored"]
+	var on_axis: Array[Vector2i] = split["on_axis"]
+	return MoveItemsAction.new(level, direct, target - at, mirrored, on_axis)
 
 
 ## A short name for the item's kind ("pin", "ball start").
