@@ -2,8 +2,9 @@ class_name AnalysisCache
 extends RefCounted
 ## Keeps analysis results per board content, so reopening a board shows its figures at
 ## once and any edit makes them stale: the key is a hash of the board's file text without
-## its name lines (BoardTextWriter.play_text: a rename or "Save board as" keeps the figures,
-## and an undo back to analysed content finds them again) and of the run's settings. Each entry is a JSON
+## its name lines (BoardTextWriter.play_text: a rename or "Save board as" keeps the
+## figures, and an undo back to analysed content finds them again) and of the run's
+## settings. Each entry is a JSON
 ## report and the heat-map PNG beside it, in user://analysis/. Read back as data only
 ## (JSON, PNG), never as code or resources.
 

@@ -12,19 +12,17 @@ const Schema := preload("res://scripts/loading/board_schema.gd")
 const PRECISION := 0.01
 const POINT_KEYS: Array[String] = ["x", "y"]
 const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
+## The lines of a board's text that name or describe it (and the id counters and medal
+## times) but never change how it plays: `play_text` leaves them out.
+const NAMING_FIELDS: Array[String] = [
+	"board_id", "display_name", "description", "medal_times", Schema.NEXT_IDS_FIELD
+]
 
 
 ## SHA-256 of write(level): the same board gives the same hash however its file was laid
 ## out, and any edit changes it (replays, analysis results).
 static func content_hash(level: BoardLevel) -> String:
 	return write(level).sha256_text()
-
-
-## The lines of a board's text that name or describe it (and the id counters and medal
-## times) but never change how it plays: `play_text` leaves them out.
-const NAMING_FIELDS: Array[String] = [
-	"board_id", "display_name", "description", "medal_times", Schema.NEXT_IDS_FIELD
-]
 
 
 ## The board's text without its naming lines (NAMING_FIELDS): what a play analysis depends

@@ -39,7 +39,8 @@ func release(at: Vector2, _event: InputEventMouseButton) -> bool:
 	var data := Items.empty_set()
 	data["pins"] = pins
 	var placed := session.mirrored(data)
-	var count: int = (placed["pins"] as PackedVector2Array).size()  # both halves when mirrored
+	var placed_pins: PackedVector2Array = placed["pins"]
+	var count := placed_pins.size()  # both halves when mirrored
 	var action := AddItemsAction.new(level(), placed, "Add a %d-pin curve" % count)
 	session.commit(action)
 	session.select(action.added)
