@@ -97,6 +97,15 @@ func _file_dialog(mode: FileDialog.FileMode, title: String) -> FileDialog:
 	dialog.filters = PackedStringArray(FILTERS)
 	dialog.title = title
 	dialog.use_native_dialog = false
+	# one list of folders and board files, a path and a name: nothing a player must learn first
+	dialog.display_mode = FileDialog.DISPLAY_LIST
+	dialog.favorites_enabled = false
+	dialog.recent_list_enabled = false
+	dialog.layout_toggle_enabled = false
+	dialog.file_sort_options_enabled = false
+	dialog.hidden_files_toggle_enabled = false
+	dialog.deleting_enabled = false
+	dialog.overwrite_warning_enabled = true
 	add_child(dialog)
 	return dialog
 
