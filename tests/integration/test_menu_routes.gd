@@ -84,8 +84,8 @@ func test_down_enter_enter_on_a_card_never_writes_a_file() -> void:
 	assert_eq(DirAccess.get_files_at(EXPORTS).size(), 0, "no file in the start folder")
 	for target in targets:
 		assert_false(FileAccess.file_exists(target), "no file at %s" % target)
-		if FileAccess.file_exists(target) and target.ends_with("classic.board"):
-			DirAccess.remove_absolute(target)  # the old code's stray export, cleaned away
+	for stray in exported:
+		DirAccess.remove_absolute(stray)  # what the old trap wrote, cleaned away
 
 
 func test_keys_alone_reach_a_board_of_my_own_and_come_back() -> void:
