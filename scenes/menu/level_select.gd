@@ -446,7 +446,7 @@ func _update_summary() -> void:
 	if waiting > 0:
 		text += ", %d loading…" % waiting
 	if broken > 0:
-		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
+		text += ", %d could not be loaded (greyed)" % broken
 	if locked > 0:
 		text += ", %d locked (finish the board before each to open it)" % locked
 	_summary.text = text
