@@ -73,6 +73,7 @@ func setup(result: BoardLoadResult, best: String) -> void:
 
 ## Maze progression: medals per mode under the title, or a locked card that cannot start
 ## and says what opens it. Called again after every load, so it replaces an earlier row.
+## The medal times shown come from the card's board.
 func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint: String) -> void:
 	if not playable:
 		return
@@ -84,7 +85,13 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 		# the medal row takes a line's height: the description gives one up to fit the card
 		if _long_text != null:
 			_long_text.set_resting_lines(2)
-	_badges.show_medals(easy, hard, hint if is_locked else "")
+	_badges.show_medals(
+		easy,
+		hard,
+		hint if is_locked else "",
+		Medals.times_for(level, false),
+		Medals.times_for(level, true)
+	)
 	disabled = locked
 	_thumbnail.modulate = Color(1, 1, 1, 0.3 if locked else 1.0)
 	tooltip_text = hint if locked else level.description

@@ -36,7 +36,7 @@ static func play(values: Dictionary) -> Dictionary:
 	if BoardLevel.kind_name(loaded.level.kind) != game:
 		var kind := BoardLevel.kind_name(loaded.level.kind)
 		return {"ok": false, "error": "%s: a %s board, not a %s board" % [board_path, kind, game]}
-	var script: Script = load(GAMES[game])
+	var script: Script = load(str(GAMES[game]))
 	var result: Dictionary
 	var recorder := ReplayCli.recorder_for(values)
 	if game == "maze":

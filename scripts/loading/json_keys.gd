@@ -21,12 +21,13 @@ static func repeated(text: String) -> String:
 		if character == '"':
 			var end := _string_end(text, at)
 			if _followed_by_colon(text, end + 1) and not objects.is_empty():
-				var keys: Variant = objects.back()
-				if keys is Dictionary:
+				var top: Variant = objects.back()
+				if top is Dictionary:
+					var keys: Dictionary = top
 					var key := _decoded(text.substr(at, end - at + 1))
-					if (keys as Dictionary).has(key):
+					if keys.has(key):
 						return key
-					(keys as Dictionary)[key] = true
+					keys[key] = true
 			at = end + 1
 			continue
 		if character == "{":

@@ -68,11 +68,7 @@ func start() -> void:
 	_run_key = _key
 	_run = MazeAnalysis.create(_run_level, runs, SEED)
 	_run.start(OS.get_processor_count())
-	_controls.analyze.disabled = true
-	_controls.cancel.disabled = false
-	_controls.progress.visible = true
-	_controls.progress.value = 0.0
-	_controls.status.text = "The pilot is playing %d games..." % _run.games()
+	_controls.show_running("The pilot is playing %d games..." % _run.games())
 	set_process(true)
 
 
@@ -112,9 +108,7 @@ func _finish() -> void:
 	var finished := _run.report()
 	_run = null
 	_run_level = null
-	_controls.analyze.disabled = false
-	_controls.cancel.disabled = true
-	_controls.progress.visible = false
+	_controls.show_idle()
 	set_process(false)
 	if cancelled:
 		_say_result()
