@@ -200,6 +200,25 @@ func test_the_delete_question_names_a_refused_file_once() -> void:
 	(dialogs.call("open_dialog") as Window).hide()
 
 
+func test_a_refused_file_and_a_message_move_nothing() -> void:
+	var screen: Control = await _open()
+	var header: Control = screen.get_node("%TitleLabel").get_parent()
+	var scroll: Control = screen.get_node("%Scroll")
+	var before := [header.get_global_rect(), scroll.get_global_rect()]
+	var broken := "%s/pachinko/broken.board" % ROOT
+	var file := FileAccess.open(broken, FileAccess.WRITE)
+	file.store_string("not a board")
+	file.close()
+	var refused := ProjectSettings.globalize_path(broken)
+	screen.call("import_files", PackedStringArray([refused, refused]))
+	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	await wait_physics_frames(3)
+	var summary := str((screen.get_node("%SummaryLabel") as Label).text)
+	assert_string_contains(summary, "could not be loaded", "the refused file is listed")
+	assert_ne(str((screen.get_node("%StatusLabel") as Label).text), "", "and a message shows")
+	assert_eq([header.get_global_rect(), scroll.get_global_rect()], before, "nothing moved")
+
+
 static func _remove_tree(path: String) -> void:
 	if not DirAccess.dir_exists_absolute(path):
 		return
