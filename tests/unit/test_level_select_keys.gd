@@ -68,6 +68,9 @@ func test_arrows_go_card_to_card_and_reach_my_boards() -> void:
 	assert_eq(cards.size(), 7, "five shipped boards and two of mine")
 	var columns: int = (screen.get_node("%Cards") as GridContainer).columns
 	assert_eq(columns, (screen.get_node("%MyCards") as GridContainer).columns, "grids line up")
+	var left := (cards[0] as Control).global_position.x
+	assert_eq((cards[5] as Control).global_position.x, left, "My boards start under the first")
+	assert_eq((cards[6] as Control).global_position.x, (cards[1] as Control).global_position.x)
 	for i in cards.size():
 		var card: Control = cards[i]
 		var below := _neighbour(card, SIDE_BOTTOM)
