@@ -186,7 +186,9 @@ func open_card_menu(card: LevelCard) -> void:
 	var slot := card.get_parent() as LevelSlot
 	if slot == null:
 		return
-	_card_menu.open_for(card.board_path, card.get_global_rect(), card.playable, slot.is_mine())
+	# a locked maze board or one that did not load offers Play greyed, like its card
+	var can_play := card.playable and not card.disabled
+	_card_menu.open_for(card.board_path, card.get_global_rect(), can_play, slot.is_mine())
 
 
 ## The card menu (for tests).

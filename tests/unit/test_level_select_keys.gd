@@ -197,6 +197,11 @@ func test_the_delete_question_names_a_refused_file_once() -> void:
 	var screen: Control = await _open()
 	var slot: Node = (screen.call("my_slots") as Array)[0]
 	var dialogs: Node = screen.get_node("%Dialogs")
+	screen.call("open_card_menu", slot.get("card"))
+	var menu: PopupMenu = screen.call("card_menu")
+	assert_true(menu.is_item_disabled(0), "a board that did not load offers Play greyed")
+	assert_eq(menu.call("entries")[2], "Delete…", "but it can be deleted")
+	menu.hide()
 	dialogs.call("ask_delete", broken, slot.call("shown_name"))
 	var question := str(dialogs.call("delete_question"))
 	assert_eq(question.count("broken.board"), 1, question)
