@@ -122,6 +122,12 @@ func _route_to_my_board_and_back() -> void:
 		str(focused.get("board_path")) if focused != null else "", wanted, "Down reaches My boards"
 	)
 	assert_lt(seen.size(), 4, "one press per row: %s" % ", ".join(seen))
+	await _press("board_actions")
+	var card_menu: PopupMenu = screen.call("card_menu")
+	assert_true(card_menu.visible, "X / Square opens the card's menu")
+	await _press("ui_cancel")
+	assert_false(card_menu.visible, "Esc / B closes it again")
+	assert_eq(str(get_viewport().gui_get_focus_owner().get("board_path")), wanted, "on my card")
 	await _press("ui_accept")
 	var game := await _became(PACHINKO)
 	assert_not_null(game, "Enter / A plays the board")
