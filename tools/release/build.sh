@@ -126,5 +126,6 @@ python3 "$HERE/elf_paths.py" --forbid "$PREFIX" --forbid "$ROOT" "$STAGE" || die
 tar -C "$OUT" --owner=0 --group=0 --numeric-owner -czf "$ARCHIVE" "$NAME"
 say "$ARCHIVE (${SECONDS} s): $(du -m "$ARCHIVE" | cut -f1) MB packed, $(du -sm "$STAGE" | cut -f1) MB unpacked"
 say "largest files:"
-(cd "$STAGE" && find . -type f -printf '%s %P\n' | sort -rn | head -n 8 |
-	awk '{ printf "  %6.1f MB  %s\n", $1 / 1048576, $2 }')
+# awk reads the whole list (no head): under pipefail an early exit would SIGPIPE sort
+(cd "$STAGE" && find . -type f -printf '%s %P\n' | sort -rn |
+	awk 'NR <= 8 { printf "  %6.1f MB  %s\n", $1 / 1048576, $2 }')
