@@ -25,7 +25,8 @@ enum Tool {
 	CURVE,
 	START_POCKET,
 	ATTACKER,
-	TULIP
+	TULIP,
+	WINDMILL
 }
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -47,7 +48,8 @@ const PACHINKO_TOOLS: Array[int] = [
 	Tool.ERASE,
 	Tool.START_POCKET,
 	Tool.ATTACKER,
-	Tool.TULIP
+	Tool.TULIP,
+	Tool.WINDMILL
 ]
 const MAZE_TOOLS: Array[int] = [
 	Tool.SELECT, Tool.WALL, Tool.HOLE, Tool.GOAL, Tool.START, Tool.HANDLES, Tool.ERASE

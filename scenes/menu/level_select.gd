@@ -5,10 +5,19 @@ extends Control
 ## hostile file never stops the screen; a board that fails to load is greyed with its error.
 ## My boards can be imported (button or a file dropped on the window), exported and deleted.
 ## Shipped maze boards come in the order they open (MazeProgress) with medals and locks.
+## The arrows and the d-pad move card to card (CardGridFocus), Enter / A plays, and a card's
+## own menu (board_actions: X / Square, or a right click) offers Play, Export and Delete.
 
 const LevelSlot := preload("res://scenes/menu/level_slot.gd")
 const MazeCardProgress := preload("res://scenes/menu/maze_card_progress.gd")
 const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
+const CardActionsMenu := preload("res://scenes/menu/card_actions_menu.gd")
+const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
+const LevelCard := preload("res://scenes/menu/level_card.gd")
+## Room between cards, across and down (the grids' separations in the scene).
+const CARD_GAP := 22
+## At most this many cards in a row, however wide the window.
+const MAX_COLUMNS := 4
 const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
 
 ## The game whose boards are listed (a name of BoardLevel.KIND_NAMES).
@@ -21,6 +30,11 @@ var load_one := Callable()
 
 var _loadings: Dictionary = {}  # the grid a loading fills -> its BoardListLoading
 var _first_focus: Control = null
+var _columns := 3
+# after a delete: the board whose card takes the focus (the next one), and where the list
+# was scrolled to, so the player stays where they were
+var _refocus_path := ""
+var _kept_scroll := -1
 
 @onready var _title: Label = %TitleLabel
 @onready var _summary: Label = %SummaryLabel
@@ -33,6 +47,7 @@ var _first_focus: Control = null
 @onready var _import: Button = %ImportButton
 @onready var _dialogs: Dialogs = %Dialogs
 @onready var _scroll: ScrollContainer = %Scroll
+@onready var _card_menu: CardActionsMenu = %CardMenu
 
 
 func _ready() -> void:
@@ -41,6 +56,8 @@ func _ready() -> void:
 	_dialogs.import_chosen.connect(_import_one)
 	_dialogs.export_chosen.connect(export_board)
 	_dialogs.delete_confirmed.connect(delete_board)
+	_card_menu.chosen.connect(_on_card_menu_chosen)
+	_scroll.resized.connect(_fit_columns)
 	get_window().files_dropped.connect(import_files)
 	kind = App.level_select_kind
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
@@ -70,11 +87,17 @@ func _process(_delta: float) -> void:
 
 
 func _unhandled_input(event: InputEvent) -> void:
-	if _dialogs.open_dialog() != null:
+	if _dialogs.open_dialog() != null or _card_menu.visible:
 		return
-	if event.is_action_pressed("ui_cancel"):
-		App.go_to_menu()
+	if event.is_action_pressed("board_actions"):
+		var focused := get_viewport().gui_get_focus_owner()
+		if focused is LevelCard:
+			get_viewport().set_input_as_handled()
+			open_card_menu(focused as LevelCard)
+	elif event.is_action_pressed("ui_cancel"):
+		# handled first: the scene change takes this screen out of the tree (no viewport then)
 		get_viewport().set_input_as_handled()
+		App.go_to_menu()
 	elif _is_navigation(event) and get_viewport().gui_get_focus_owner() == null:
 		# a mouse click on empty space drops focus: the keys and the pad take it back
 		var first := first_card()
@@ -112,6 +135,7 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 	for result in results:
 		_add_slot(_grid, result.path)
 		_fill(_grid, result.path, result)
+	_link_focus()
 	_loaded()
 
 
@@ -151,8 +175,22 @@ func export_board(board_path: String, target: String) -> void:
 		_say("Could not export %s: %s." % [board_path.get_file(), error_string(error)], true)
 
 
+## Opens the card's own menu (Play, Export a copy…, and Delete… on the player's boards).
+func open_card_menu(card: LevelCard) -> void:
+	var slot := card.get_parent() as LevelSlot
+	if slot == null:
+		return
+	_card_menu.open_for(card.board_path, card.get_global_rect(), card.playable, slot.is_mine())
+
+
+## The card menu (for tests).
+func card_menu() -> CardActionsMenu:
+	return _card_menu
+
+
 ## Deletes one of the player's boards (after the dialog's confirmation) and says so.
 func delete_board(board_path: String) -> void:
+	_keep_place_after_delete(board_path)
 	var error := UserBoards.delete_file(board_path, user_root)
 	if error == OK:
 		_say("Deleted %s from My boards." % board_path.get_file(), false)
@@ -215,7 +253,10 @@ func _load_section(grid: GridContainer, root: String) -> void:
 		jobs.append({"path": path, "kind": kind_value, "root": root})
 	_loadings[grid] = BoardListLoading.new(jobs, load_one)
 	_update_summary()
-	if not is_instance_valid(_first_focus):
+	_link_focus()
+	if _refocus_path != "":
+		_take_place_back()
+	elif not is_instance_valid(_first_focus):
 		_first_focus = first_card() if first_card() != null else _import
 		_first_focus.grab_focus()
 
@@ -230,7 +271,86 @@ func _add_slot(grid: GridContainer, path: String) -> void:
 	slot.export_requested.connect(_dialogs.ask_export)
 	slot.delete_requested.connect(_dialogs.ask_delete)
 	slot.card.pressed.connect(func() -> void: App.start_game(kind, slot.card.board_path))
+	slot.card.gui_input.connect(_on_card_gui_input.bind(slot.card))
 	grid.add_child(slot)
+
+
+func _on_card_gui_input(event: InputEvent, card: LevelCard) -> void:
+	var click := event as InputEventMouseButton
+	if click != null and click.pressed and click.button_index == MOUSE_BUTTON_RIGHT:
+		card.grab_focus()
+		open_card_menu(card)
+		card.accept_event()
+
+
+func _on_card_menu_chosen(choice: CardActionsMenu.Choice, board_path: String) -> void:
+	var slot := _slot_of(board_path)
+	if slot == null:
+		return
+	match choice:
+		CardActionsMenu.Choice.PLAY:
+			if slot.card.playable and not slot.card.disabled:
+				App.start_game(kind, board_path)
+		CardActionsMenu.Choice.EXPORT:
+			_dialogs.ask_export(board_path)
+		CardActionsMenu.Choice.DELETE:
+			if slot.is_mine():
+				_dialogs.ask_delete(board_path, slot.shown_name())
+
+
+func _slot_of(board_path: String) -> LevelSlot:
+	for grid: GridContainer in [_grid, _my_grid]:
+		for slot in grid.get_children():
+			if slot is LevelSlot and (slot as LevelSlot).card.board_path == board_path:
+				return slot as LevelSlot
+	return null
+
+
+# As many columns as the list is wide (both sections alike, so their cards line up), then
+# the arrows' neighbours again.
+func _fit_columns() -> void:
+	var card_width := LevelCard.CARD_SIZE.x + CARD_GAP
+	var fits := floori((_scroll.size.x - 16.0 + CARD_GAP) / card_width)
+	var columns := clampi(fits, 1, MAX_COLUMNS)
+	if columns == _columns:
+		return
+	_columns = columns
+	_grid.columns = columns
+	_my_grid.columns = columns
+	_link_focus()
+
+
+func _link_focus() -> void:
+	var sections: Array = []
+	for grid: GridContainer in [_grid, _my_grid]:
+		var section: Array[Control] = []
+		for slot in grid.get_children():
+			if slot is LevelSlot and not slot.is_queued_for_deletion():
+				section.append((slot as LevelSlot).card)
+		sections.append(section)
+	CardGridFocus.link(sections, _columns)
+
+
+# Before a delete: remember the card after the deleted one (or before it, for the last) and
+# the scroll, so the list does not jump back to the top.
+func _keep_place_after_delete(board_path: String) -> void:
+	var mine := my_slots()
+	_refocus_path = ""
+	for i in mine.size():
+		if mine[i].card.board_path == board_path:
+			var neighbour := i + 1 if i + 1 < mine.size() else i - 1
+			if neighbour >= 0:
+				_refocus_path = mine[neighbour].card.board_path
+	if _refocus_path == "":
+		_refocus_path = board_path  # none left: the Import button takes the focus
+	_kept_scroll = _scroll.scroll_vertical
+
+
+func _take_place_back() -> void:
+	var slot := _slot_of(_refocus_path)
+	(slot.card if slot != null else _import as Control).grab_focus()
+	_scroll.set_deferred("scroll_vertical", _kept_scroll)
+	_refocus_path = ""
 
 
 func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
@@ -240,6 +360,7 @@ func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
 	if kind == BoardLevel.MAZE_NAME:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
+		_link_focus()
 	_update_summary()
 
 

@@ -147,6 +147,13 @@ const CURRENT_VERSION := 1
 		_watch_pockets()
 		emit_changed()
 
+## The windmills (WindmillSpec): wheels of blades the world turns (BallWorld.add_windmill).
+@export var windmills: Array[WindmillSpec] = []:
+	set(value):
+		windmills = value
+		_watch_pockets()
+		emit_changed()
+
 @export_group("Maze")
 ## Maze cells across.
 @export var grid_cols: int = 0:
@@ -244,6 +251,10 @@ const CURRENT_VERSION := 1
 	set(value):
 		tulip_ids = value
 		emit_changed()
+@export var windmill_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		windmill_ids = value
+		emit_changed()
 ## Per item list ("pins", "walls"...): the id the next new item of that list gets. It only
 ## ever grows, so an id is never handed out twice in a board's life, even after the item
 ## that had the highest id is deleted (ItemIds.next_id; a list missing here starts after its
@@ -281,7 +292,7 @@ func notify_edited() -> void:
 	emit_changed()
 
 
-## An independent copy: pockets and tuning are copied too, so editing the copy never
+## An independent copy: pockets, windmills and tuning are copied too, so editing the copy never
 ## touches this board (Resource.duplicate shares sub-resources inside arrays).
 func duplicate_level() -> BoardLevel:
 	var copy := duplicate(false) as BoardLevel
@@ -293,6 +304,10 @@ func duplicate_level() -> BoardLevel:
 	for spec in bonus_pockets:
 		bonus.append(spec.duplicate() as BonusPocketSpec if spec != null else null)
 	copy.bonus_pockets = bonus
+	var wheels: Array[WindmillSpec] = []
+	for spec in windmills:
+		wheels.append(spec.duplicate() as WindmillSpec if spec != null else null)
+	copy.windmills = wheels
 	copy.tuning = tuning.duplicate() as PhysicsTuning if tuning != null else null
 	copy.next_ids = next_ids.duplicate()
 	copy.legacy_fields = legacy_fields.duplicate(true)
@@ -324,7 +339,7 @@ static func kind_choices() -> String:
 	return " or ".join(KIND_NAMES.map(func(name: String) -> String: return '"%s"' % name))
 
 
-# A pocket edited on its own (in the inspector, say) changes the board too.
+# A pocket or windmill edited on its own (in the inspector, say) changes the board too.
 func _watch_pockets() -> void:
 	for spec in _watched:
 		if spec != null and spec.changed.is_connected(emit_changed):
@@ -333,6 +348,7 @@ func _watch_pockets() -> void:
 	var watch: Array[Resource] = []
 	watch.append_array(pockets)
 	watch.append_array(bonus_pockets)
+	watch.append_array(windmills)
 	for spec in watch:
 		if spec != null and not spec.changed.is_connected(emit_changed):
 			spec.changed.connect(emit_changed)

@@ -21,10 +21,14 @@ const TUNING := {
 	"rest_speed": [0.0, 10000.0],
 	"sleep_time": [0.0, 60.0],
 	"drain_slide_time": [0.0, 60.0],
+	"x_cap_friction_time": [0.0, 1.0],
 	"speed_cap": [0, 1],  # PhysicsTuning.SpeedCap
 	"friction_against": [0, 1],  # PhysicsTuning.FrictionAgainst
 	"wall_cap_contact": [0, 1],  # PhysicsTuning.CapContact
 }
+## Tuning fields written only when they are not 0: added after boards were shipped, so every
+## board that leaves them off keeps its text (and its content hash, which replays check).
+const TUNING_WRITTEN_WHEN_SET: Array[String] = ["x_cap_friction_time"]
 ## A tuning field with no range of its own above gets this one.
 const TUNING_DEFAULT := [-1000000.0, 1000000.0]
 ## Bonus pockets (BonusPocketSpec): balls paid per catch, symbols per reel (start pockets),

@@ -80,9 +80,21 @@ const LISTS := {
 	"start_pockets": [4, BONUS_CUP],
 	"attackers": [4, BONUS_CUP],
 	"tulips": [32, BONUS_CUP],
+	# Windmills (WindmillSpec): driven at "speed" or free with "friction" (one of the two).
+	"windmills":
+	[
+		64,
+		{
+			"x": ["coord"],
+			"y": ["coord"],
+			"blades": ["int", WindmillSpec.BLADES_RANGE.x, WindmillSpec.BLADES_RANGE.y],
+			"length": ["float", WindmillSpec.LENGTH_RANGE.x, WindmillSpec.LENGTH_RANGE.y],
+		}
+	],
 }
 ## Fields an item may leave out: its stable id (ItemIds; numbered in order when missing),
-## a pin's pocket (-1 = a field pin) and its special flag.
+## a pin's pocket and its special flag. Rim pins are stamped from their pocket now; a pin
+## with "pocket" (written by older versions) is read and dropped, so those files still load.
 const OPTIONAL_ITEM_FIELDS := {
 	"pins": {"id": ["int", 1, ItemIds.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]},
 	"pockets": {"id": ["int", 1, ItemIds.MAX_ID]},
@@ -103,6 +115,12 @@ const OPTIONAL_ITEM_FIELDS := {
 		["int", BoardRanges.BONUS_OPEN_CATCHES[0], BoardRanges.BONUS_OPEN_CATCHES[1]],
 	},
 	"tulips": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"windmills":
+	{
+		"id": ["int", 1, ItemIds.MAX_ID],
+		"speed": ["float", -WindmillSpec.MAX_SPEED, WindmillSpec.MAX_SPEED],
+		"friction": ["float", 0.0, WindmillSpec.MAX_FRICTION],
+	},
 }
 ## The optional header field holding the id counters: `{"next_ids": {"pins": 626}}`, list
 ## name -> the id its next new item gets (BoardLevel.next_ids). Written only for a list whose
@@ -120,10 +138,13 @@ const ITEM_KEYS := {
 	"start_pocket": "start_pockets",
 	"attacker": "attackers",
 	"tulip": "tulips",
+	"windmill": "windmills",
 }
 ## A file may not have more lines than this (every list full, plus the fields).
 const MAX_LINES := 12000
-const PACHINKO_LISTS: Array[String] = ["pins", "pockets", "start_pockets", "attackers", "tulips"]
+const PACHINKO_LISTS: Array[String] = [
+	"pins", "pockets", "start_pockets", "attackers", "tulips", "windmills"
+]
 ## The bonus lists in BonusPocketSpec.Role order (a board keeps its bonus pockets so).
 const BONUS_LISTS: Array[String] = ["start_pockets", "attackers", "tulips"]
 const MAZE_LISTS: Array[String] = ["walls", "ball_starts", "holes"]

@@ -154,8 +154,24 @@ static func _check_list(list: String, value: Variant) -> String:
 	var optional: Dictionary = Schema.OPTIONAL_ITEM_FIELDS.get(list, {})
 	for i in items.size():
 		var problem := _check_item(items[i], required, optional)
+		if problem.is_empty() and list == "windmills":
+			problem = _check_windmill_drive(items[i])
 		if not problem.is_empty():
 			return "%s item %d: %s" % [list, i + 1, problem]
+	return ""
+
+
+# A windmill is driven ("speed") or free ("friction"): exactly one of the two.
+static func _check_windmill_drive(item: Dictionary) -> String:
+	var driven := item.has("speed")
+	var free := item.has("friction")
+	if driven and free:
+		return (
+			'give "speed" (a driven wheel, degrees a second) or "friction" (a free wheel),'
+			+ " not both"
+		)
+	if not driven and not free:
+		return 'needs "speed" (a driven wheel, degrees a second) or "friction" (a free wheel)'
 	return ""
 
 
@@ -215,11 +231,18 @@ static func _build(data: Dictionary) -> BoardLevel:
 	var tuning: Dictionary = data.get("tuning", {})
 	level.tuning = _build_tuning(level, tuning)
 	if level.is_pachinko():
-		var pins: Array = data.get("pins", [])
+		# Files before rim pins were derived stored each pocket's pins (`"pocket": k`): the
+		# pocket line is the truth, so those are dropped and every pocket stamps its own.
+		var stored: Array = data.get("pins", [])
+		var pins := _field_pins(stored)
+		data["pins"] = pins  # the ids read below are the field pins' only
 		var pockets: Array = data.get("pockets", [])
 		_build_pins(level, pins)
 		_build_pockets(level, pockets)
+		for k in level.pockets.size():
+			PocketStamp.apply(level, k)
 		_build_bonus(level, data)
+		_build_windmills(level, data.get("windmills", []))
 	else:
 		var walls: Array = data.get("walls", [])
 		var ball_starts: Array = data.get("ball_starts", [])
@@ -268,13 +291,21 @@ static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTunin
 	return tuning
 
 
+static func _field_pins(items: Array) -> Array:
+	var kept: Array = []
+	for item: Dictionary in items:
+		if not item.has("pocket"):
+			kept.append(item)
+	return kept
+
+
 static func _build_pins(level: BoardLevel, items: Array) -> void:
 	var pins := PackedVector2Array()
 	var pockets := PackedInt32Array()
 	var special := PackedByteArray()
 	for item: Dictionary in items:
 		pins.append(Vector2(_float_of(item["x"]), _float_of(item["y"])))
-		pockets.append(_int_of(item.get("pocket", -1)))
+		pockets.append(-1)
 		special.append(1 if item.get("special", false) else 0)
 	level.pins = pins
 	level.pin_pocket = pockets
@@ -314,6 +345,21 @@ static func _build_bonus(level: BoardLevel, data: Dictionary) -> void:
 			)
 			specs.append(spec)
 	level.bonus_pockets = specs
+
+
+static func _build_windmills(level: BoardLevel, items: Array) -> void:
+	var specs: Array[WindmillSpec] = []
+	for item: Dictionary in items:
+		var at := Vector2(_float_of(item["x"]), _float_of(item["y"]))
+		var blades := _int_of(item["blades"])
+		var length := _float_of(item["length"])
+		if item.has("friction"):
+			specs.append(
+				WindmillSpec.spinning_free(at, blades, length, _float_of(item["friction"]))
+			)
+		else:
+			specs.append(WindmillSpec.driven(at, blades, length, _float_of(item["speed"])))
+	level.windmills = specs
 
 
 static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:

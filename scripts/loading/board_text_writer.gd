@@ -1,8 +1,10 @@
 extends RefCounted
 ## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per line
 ## in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a hole) in
-## the board's own order, coordinates rounded to 0.01 px. Adding a pin adds one line;
-## deleting one removes one line (no commas between lines to shift). The same board always
+## the board's own order, coordinates rounded to 0.01 px. A pocket's rim pins are not
+## written: the pocket's line is the whole pocket, and the reader stamps its pins, so a
+## pocket edit is a one-line diff. Adding a pin adds one line; deleting one removes one line
+## (no commas between lines to shift). The same board always
 ## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
@@ -43,6 +45,7 @@ static func write(level: BoardLevel) -> String:
 		_append_items(lines, "pin", _pin_items(level), _ids(level, "pins"))
 		_append_items(lines, "pocket", _pocket_items(level), _ids(level, "pockets"))
 		_append_bonus(lines, level)
+		_append_items(lines, "windmill", _windmill_items(level), _ids(level, "windmills"))
 	else:
 		var walls := _point_items(level.walls, WALL_KEYS)
 		_append_items(lines, "wall", walls, _ids(level, "walls"))
@@ -81,6 +84,8 @@ static func _tuning(tuning: PhysicsTuning) -> String:
 	names.sort()
 	for name: String in names:
 		var value: Variant = source.get(name)
+		if name in BoardRanges.TUNING_WRITTEN_WHEN_SET and value == 0.0:
+			continue
 		var text := ""
 		if value is Vector2:
 			var v: Vector2 = value
@@ -135,6 +140,8 @@ static func _append_items(
 static func _ids(level: BoardLevel, list: String) -> PackedInt32Array:
 	var ids := PackedInt32Array()
 	for i in ItemIds.count(level, list):
+		if list == "pins" and ItemIds.is_rim_pin(level, i):
+			continue  # stamped from its pocket, not stored
 		ids.append(ItemIds.of(level, list, i))
 	return ids
 
@@ -142,11 +149,10 @@ static func _ids(level: BoardLevel, list: String) -> PackedInt32Array:
 static func _pin_items(level: BoardLevel) -> PackedStringArray:
 	var items := PackedStringArray()
 	for i in level.pins.size():
+		if ItemIds.is_rim_pin(level, i):
+			continue  # a pocket's rim: the reader stamps it from the pocket line
 		var pin := level.pins[i]
 		var text := '{"x": %s, "y": %s' % [number(pin.x), number(pin.y)]
-		var pocket := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
-		if pocket >= 0:
-			text += ', "pocket": %d' % pocket
 		if i < level.pin_special.size() and level.pin_special[i] != 0:
 			text += ', "special": true'
 		items.append(text + "}")
@@ -203,6 +209,25 @@ static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
 				)
 			lines.append('{"%s": %s}' % [spec.role_key(), text + "}"])
 			place += 1
+
+
+# A driven wheel writes its speed, a free one its friction (WindmillSpec). A board without
+# windmills gets no line, so older boards keep their exact text.
+static func _windmill_items(level: BoardLevel) -> PackedStringArray:
+	var items := PackedStringArray()
+	for spec in level.windmills:
+		if spec == null:
+			continue
+		var text := (
+			'{"x": %s, "y": %s, "blades": %d, "length": %s'
+			% [number(spec.position.x), number(spec.position.y), spec.blades, number(spec.length)]
+		)
+		if spec.free_spin:
+			text += ', "friction": %s}' % number(spec.friction)
+		else:
+			text += ', "speed": %s}' % number(spec.speed)
+		items.append(text)
+	return items
 
 
 static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:

@@ -5,7 +5,8 @@ extends RefCounted
 ## Pachinko: ring, gutter, pins (with pocket ids and special flags), the bonus pockets' pins
 ## and then their lids and wings (the first walls, see BonusGeometry), the launch rail's
 ## guide arc, its stopper and the deflector past its end as capsules (in that order), and
-## the rail's return zone as zone 0.
+## the rail's return zone as zone 0, then the windmills (world windmill i = level windmill i;
+## a null entry, refused by the validator, is skipped).
 ## Maze: the level's walls (same indices as in the level), then four invisible edge walls
 ## that keep balls on the board, the goal (goal 0) and, in hard mode only, the black holes.
 
@@ -56,6 +57,25 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.add_wall(deflector[0], deflector[1], LaunchRail.GUIDE_WALL_RADIUS)
 	# Zone 0: a ball that rolls back down the rail lands here and returns to the cup.
 	world.add_zone(LaunchRail.return_zone_center(level), LaunchRail.return_zone_radius(level))
+	# The windmills: world windmill i is the level's windmill i.
+	for spec in level.windmills:
+		if spec != null:
+			add_windmill(world, spec)
+
+
+## Adds `spec` to `world` as a windmill (degrees in the board, radians in the world).
+static func add_windmill(world: BallWorld, spec: WindmillSpec) -> int:
+	var speed := 0.0 if spec.free_spin else deg_to_rad(spec.speed)
+	var friction := deg_to_rad(spec.friction) if spec.free_spin else 0.0
+	return world.add_windmill(
+		spec.position,
+		spec.blades,
+		spec.length,
+		WindmillSpec.BLADE_RADIUS,
+		speed,
+		spec.free_spin,
+		friction
+	)
 
 
 static func _build_maze(world: BallWorld, level: BoardLevel, hard_mode: bool) -> void:

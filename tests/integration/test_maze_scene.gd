@@ -9,6 +9,7 @@ const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const TEST_SETTINGS := "user://test_maze_settings.cfg"
 const TEST_SAVE := "user://test_maze_save.cfg"
+const SaveData := preload("res://scripts/app/save_data.gd")
 
 var _game: MazeGame
 
@@ -62,7 +63,8 @@ func test_the_board_is_built_in_3d_from_the_level() -> void:
 	assert_not_null(rules, "the classic board loaded")
 	var stage := _stage()
 	var camera: Camera3D = stage.camera()
-	assert_eq(camera.projection, Camera3D.PROJECTION_PERSPECTIVE)
+	# a perspective view, its frustum shifted to seat the board in its region
+	assert_eq(camera.projection, Camera3D.PROJECTION_FRUSTUM)
 	var board := stage.board()
 	var walls: MeshInstance3D = board.part("walls")
 	assert_not_null(walls.mesh, "the walls are a mesh")
@@ -283,6 +285,49 @@ func test_a_win_shows_the_message_and_saves_the_best_time() -> void:
 	assert_string_contains(_note(), "Press H for hard mode")
 	var best := App.best_maze_time(rules.level.board_id, false)
 	assert_almost_eq(best, rules.elapsed, 0.001, "the time is saved as the best")
+
+
+func test_the_next_medal_time_shows_while_playing() -> void:
+	var rules := _rules()
+	_game._start()
+	rules.advance(0.1)
+	_game._process(0.016)
+	var label: Label = _game.get_node("%NextMedal")
+	var gold: float = rules.level.medal_times_easy[0]
+	assert_eq(label.text, "Gold by %s" % MazeWinSummary.clock(gold))
+	rules.elapsed = gold + 0.5
+	_game._process(0.0)
+	assert_string_contains(label.text, "Silver by ")
+
+
+func test_a_win_shows_the_panel_with_medal_best_and_next_board() -> void:
+	var rules := _rules()
+	var kept := App.save_data
+	App.save_data = SaveData.new()  # in memory only: never written
+	App.record_maze_time(rules.level.board_id, false, 500.0)
+	_game._start()
+	rules.advance(0.25)
+	var ids := rules.world.get_ids()
+	for i in ids.size():
+		rules.world.set_ball_position(ids[i], rules.level.goal_center + Vector2(i * 10 - 15, 0))
+	rules.step()
+	var panel := _game.win_panel()
+	assert_true(panel.visible, "the win panel shows")
+	var texts: PackedStringArray = panel.texts()
+	assert_eq(texts[0], "Gold medal!", "a quick finish is gold")
+	assert_string_contains(texts[1], MazeWinSummary.clock(rules.elapsed))
+	assert_eq(texts[2], "Gold!")
+	assert_string_contains(texts[3], "New best: ")
+	var buttons: Array[Button] = panel.buttons()
+	assert_true(buttons[0].visible, "classic has a next board")
+	assert_eq(buttons[0].text, "Next board")
+	await wait_process_frames(2)
+	assert_true(buttons[0].has_focus(), "Next board has the keyboard and pad focus")
+	assert_eq(buttons[0].focus_neighbor_right, NodePath(), "a row: focus moves by position")
+	buttons[1].pressed.emit()
+	assert_eq(rules.state, MazeRules.State.READY, "Retry starts the board again")
+	assert_false(panel.visible, "and hides the panel")
+	App.save_data = kept
 
 
 func test_a_loss_names_the_reset_key() -> void:

@@ -89,6 +89,21 @@ func test_easy_and_hard_keep_their_own_medal_and_time() -> void:
 	assert_string_contains(text, "Easy %s" % LevelSelect._clock_text(easy_bronze))
 	assert_string_contains(text, " · Hard %s" % LevelSelect._clock_text(hard_gold - 0.1))
 	assert_false(cards[1].locked, "a hard finish opens the next board too")
+	var rows := badges.row_texts()
+	var easy: PackedFloat64Array = first.level.medal_times_easy
+	assert_eq(
+		rows[0],
+		(
+			"Easy: Bronze · gold %s, silver %s, bronze %s"
+			% [
+				MazeWinSummary.clock(easy[0]),
+				MazeWinSummary.clock(easy[1]),
+				MazeWinSummary.clock(easy[2])
+			]
+		),
+		"the card shows the three easy times"
+	)
+	assert_string_starts_with(rows[1], "Hard: Gold · gold %s" % MazeWinSummary.clock(hard_gold))
 
 
 func _maze_cards() -> Array[LevelCard]:

@@ -1,8 +1,8 @@
 @tool
 extends BoardAction
 ## Adds a set of things to a board: field pins, pockets (with their stamped rim pins and
-## special pin), walls, black holes, ball starts and bonus pockets (kept in role order, as
-## the board file stores them). Placing, pasting and duplicating are all this action;
+## special pin), walls, black holes, ball starts, bonus pockets (kept in role order, as
+## the board file stores them) and windmills. Placing, pasting and duplicating are all this action;
 ## `added` lists the new items so the editor can select them.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -14,6 +14,7 @@ var _data: Dictionary
 var _name: String
 var _pockets: Array[PocketSpec] = []
 var _bonus: Array[BonusPocketSpec] = []
+var _windmills: Array[WindmillSpec] = []
 
 
 ## `item_set` has the shape of BoardItems.empty_set(); positions are board pixels.
@@ -27,6 +28,8 @@ func _init(on_level: BoardLevel, item_set: Dictionary, action_name := "Add to bo
 	if on_level != null and on_level.is_pachinko():
 		for spec: BonusPocketSpec in item_set.get("bonus", []):
 			_bonus.append(Items.moved_bonus(spec, Vector2.ZERO))
+		for spec: WindmillSpec in item_set.get("windmills", []):
+			_windmills.append(spec.moved(Vector2.ZERO))
 
 
 func get_name() -> String:
@@ -86,6 +89,12 @@ func _apply() -> void:
 		level.bonus_pockets = bonus
 		for spec in _bonus:
 			added.append(Items.make(Items.Kind.BONUS, level.bonus_pockets.find(spec)))
+	if not _windmills.is_empty():
+		var wheels := level.windmills.duplicate()
+		for spec in _windmills:
+			added.append(Items.make(Items.Kind.WINDMILL, wheels.size()))
+			wheels.append(spec)
+		level.windmills = wheels
 
 
 func _append_walls(walls: PackedVector2Array) -> PackedVector2Array:
