@@ -177,7 +177,7 @@ func import_files(sources: PackedStringArray) -> void:
 func _start_imports() -> void:
 	var jobs: Array[Dictionary] = []
 	for source in _import_waiting:
-		jobs.append({"path": source, "kind": _kind_enum(kind), "root": user_root})
+		jobs.append({"path": source, "kind": BoardLevel.kind_named(kind), "root": user_root})
 	_import_waiting = PackedStringArray()
 	_importing = BoardListLoading.new(jobs, UserBoards.import_result, 1)
 	_say("Importing %d file%s…" % [jobs.size(), "" if jobs.size() == 1 else "s"], false)
