@@ -72,7 +72,7 @@ func _ready() -> void:
 	add_child(_win_panel)
 	_win_panel.next_board_chosen.connect(_on_next_board)
 	_win_panel.retry_chosen.connect(_on_retry)
-	_win_panel.menu_chosen.connect(App.go_to_level_select.bind("maze"))
+	_win_panel.menu_chosen.connect(App.go_to_level_select.bind(BoardLevel.MAZE_NAME))
 	_add_optional_scene(PAUSE_MENU)
 	_add_optional_scene(FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
@@ -263,7 +263,7 @@ func win_panel() -> MazeWinPanel:
 func _on_next_board() -> void:
 	var path := _next_board_path()
 	if not path.is_empty():
-		App.start_game("maze", path)
+		App.start_game(BoardLevel.MAZE_NAME, path)
 
 
 func _on_retry() -> void:

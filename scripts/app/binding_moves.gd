@@ -10,12 +10,13 @@ extends RefCounted
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 
 
-## The game an action belongs to: "maze", "pachinko", or "" for the general ones.
+## The game an action belongs to (a name of BoardLevel.KIND_NAMES), or "" for the general
+## ones.
 static func game_of(action: String) -> String:
 	if action.begins_with("tilt_") or action.begins_with("maze_"):
-		return "maze"
+		return BoardLevel.MAZE_NAME
 	if action.begins_with("launch_") or action.begins_with("handle_"):
-		return "pachinko"
+		return BoardLevel.PACHINKO_NAME
 	return ""
 
 

@@ -289,14 +289,14 @@ func test_a_win_shows_the_message_and_saves_the_best_time() -> void:
 
 func test_the_next_medal_time_shows_while_playing() -> void:
 	var rules := _rules()
-	_game.call("_start")
+	_game._start()
 	rules.advance(0.1)
-	_game.call("_process", 0.016)
+	_game._process(0.016)
 	var label: Label = _game.get_node("%NextMedal")
 	var gold: float = rules.level.medal_times_easy[0]
 	assert_eq(label.text, "Gold by %s" % MazeWinSummary.clock(gold))
 	rules.elapsed = gold + 0.5
-	_game.call("_process", 0.0)
+	_game._process(0.0)
 	assert_string_contains(label.text, "Silver by ")
 
 
@@ -305,20 +305,20 @@ func test_a_win_shows_the_panel_with_medal_best_and_next_board() -> void:
 	var kept := App.save_data
 	App.save_data = SaveData.new()  # in memory only: never written
 	App.record_maze_time(rules.level.board_id, false, 500.0)
-	_game.call("_start")
+	_game._start()
 	rules.advance(0.25)
 	var ids := rules.world.get_ids()
 	for i in ids.size():
 		rules.world.set_ball_position(ids[i], rules.level.goal_center + Vector2(i * 10 - 15, 0))
 	rules.step()
-	var panel: Control = _game.call("win_panel")
+	var panel := _game.win_panel()
 	assert_true(panel.visible, "the win panel shows")
-	var texts: PackedStringArray = panel.call("texts")
+	var texts: PackedStringArray = panel.texts()
 	assert_eq(texts[0], "Gold medal!", "a quick finish is gold")
 	assert_string_contains(texts[1], MazeWinSummary.clock(rules.elapsed))
 	assert_eq(texts[2], "Gold!")
 	assert_string_contains(texts[3], "New best: ")
-	var buttons: Array[Button] = panel.call("buttons")
+	var buttons: Array[Button] = panel.buttons()
 	assert_true(buttons[0].visible, "classic has a next board")
 	assert_eq(buttons[0].text, "Next board")
 	await wait_process_frames(2)

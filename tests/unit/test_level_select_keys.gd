@@ -4,6 +4,7 @@ extends GutTest
 ## Delete, the focused card shows its whole description, and Delete keeps the player's place.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
+const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const ROOT := "user://test_level_select_keys"
 const CLASSIC := "res://levels/pachinko/classic.board"
 const THEME := preload("res://scenes/menu/ui_theme.tres")
@@ -35,12 +36,12 @@ func _copy(target_name: String, description := "") -> String:
 	return target
 
 
-func _open() -> Control:
+func _open() -> LevelSelect:
 	App.level_select_kind = "pachinko"
-	var screen := LevelSelectScene.instantiate() as Control
+	var screen := LevelSelectScene.instantiate() as LevelSelect
 	screen.set("user_root", ROOT)
 	add_child_autofree(screen)
-	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	await wait_physics_frames(2)
 	return screen
 
@@ -63,8 +64,8 @@ func _press(action: StringName) -> void:
 func test_arrows_go_card_to_card_and_reach_my_boards() -> void:
 	_copy("a_mine.board")
 	_copy("b_mine.board")
-	var screen: Control = await _open()
-	var cards: Array = screen.call("cards")
+	var screen: LevelSelect = await _open()
+	var cards: Array = screen.cards()
 	assert_eq(cards.size(), 7, "five shipped boards and two of mine")
 	var columns: int = (screen.get_node("%Cards") as GridContainer).columns
 	assert_eq(columns, (screen.get_node("%MyCards") as GridContainer).columns, "grids line up")
@@ -87,27 +88,27 @@ func test_arrows_go_card_to_card_and_reach_my_boards() -> void:
 	await _press(&"ui_down")
 	await _press(&"ui_down")
 	assert_eq(get_viewport().gui_get_focus_owner(), cards[5], "two presses to My boards")
-	for slot: Node in screen.call("my_slots"):
-		assert_eq((slot.call("export_button") as Button).focus_mode, Control.FOCUS_NONE)
+	for slot: Node in screen.my_slots():
+		assert_eq((slot.export_button() as Button).focus_mode, Control.FOCUS_NONE)
 
 
 func test_a_cards_menu_offers_play_export_and_delete() -> void:
 	var mine := _copy("mine.board")
-	var screen: Control = await _open()
-	var menu: PopupMenu = screen.call("card_menu")
-	(screen.call("first_card") as Control).grab_focus()
+	var screen: LevelSelect = await _open()
+	var menu: PopupMenu = screen.card_menu()
+	(screen.first_card() as Control).grab_focus()
 	await _press(&"board_actions")
 	assert_true(menu.visible, "X / Square opens the focused card's menu")
-	assert_eq(menu.call("entries"), PackedStringArray(["Play", "Export a copy…"]))
+	assert_eq(menu.entries(), PackedStringArray(["Play", "Export a copy…"]))
 	assert_eq(menu.theme, THEME, "in the game's theme")
 	menu.hide()
-	var my_card: Control = (screen.call("my_slots") as Array)[0].get("card")
+	var my_card: Control = (screen.my_slots() as Array)[0].get("card")
 	my_card.grab_focus()
 	await _press(&"board_actions")
-	assert_eq(menu.call("entries"), PackedStringArray(["Play", "Export a copy…", "Delete…"]))
+	assert_eq(menu.entries(), PackedStringArray(["Play", "Export a copy…", "Delete…"]))
 	menu.id_pressed.emit(1)  # Export a copy…
 	var dialogs: Node = screen.get_node("%Dialogs")
-	var export_dialog: FileDialog = dialogs.call("export_dialog")
+	var export_dialog: FileDialog = dialogs.export_dialog()
 	assert_true(export_dialog.visible, "the export asks where, in a file dialog")
 	assert_eq(export_dialog.current_file, mine.get_file(), "showing the file's name")
 	assert_eq(export_dialog.theme, THEME)
@@ -118,29 +119,24 @@ func test_a_cards_menu_offers_play_export_and_delete() -> void:
 
 func test_the_focused_card_shows_its_whole_description() -> void:
 	_copy("long.board", LONG_DESCRIPTION)
-	var screen: Control = await _open()
-	var card: Control = (screen.call("my_slots") as Array)[0].get("card")
-	var text: RefCounted = card.call("long_text")
-	assert_false(text.call("shows_whole_text"), "unfocused, a long description is cut")
+	var screen: LevelSelect = await _open()
+	var card: Control = (screen.my_slots() as Array)[0].get("card")
+	var text: RefCounted = card.long_text()
+	assert_false(text.shows_whole_text(), "unfocused, a long description is cut")
 	card.grab_focus()
 	await wait_physics_frames(3)
 	var label: Label = text.get("label")
 	assert_true(
-		text.call("shows_whole_text"),
+		text.shows_whole_text(),
 		(
 			"focused, the card shows all of it (%d lines, %d shown, %s tall, %d skipped)"
-			% [
-				text.call("wrapped_lines"),
-				label.max_lines_visible,
-				label.size.y,
-				label.lines_skipped
-			]
+			% [text.wrapped_lines(), label.max_lines_visible, label.size.y, label.lines_skipped]
 		)
 	)
 	assert_eq(card.size, Vector2(300, 400), "the card keeps its size (nothing moves)")
-	(screen.call("first_card") as Control).grab_focus()
+	(screen.first_card() as Control).grab_focus()
 	await wait_physics_frames(3)
-	assert_false(text.call("shows_whole_text"), "cut again once the focus moves on")
+	assert_false(text.shows_whole_text(), "cut again once the focus moves on")
 
 
 func test_a_description_too_long_for_the_card_reads_through() -> void:
@@ -148,22 +144,20 @@ func test_a_description_too_long_for_the_card_reads_through() -> void:
 		PackedStringArray([LONG_DESCRIPTION, LONG_DESCRIPTION, LONG_DESCRIPTION])
 	)
 	_copy("longest.board", longest)
-	var screen: Control = await _open()
-	var card: Control = (screen.call("my_slots") as Array)[0].get("card")
-	var text: RefCounted = card.call("long_text")
+	var screen: LevelSelect = await _open()
+	var card: Control = (screen.my_slots() as Array)[0].get("card")
+	var text: RefCounted = card.long_text()
 	card.grab_focus()
 	await wait_physics_frames(3)
-	assert_true(
-		text.call("reads_through"), "%d lines cannot show at once" % text.call("wrapped_lines")
-	)
-	assert_false(text.call("shows_last_line"))
+	assert_true(text.reads_through(), "%d lines cannot show at once" % text.wrapped_lines())
+	assert_false(text.shows_last_line())
 	for step in 40:
-		text.call("advance", 0.5)
-		if text.call("shows_last_line"):
+		text.advance(0.5)
+		if text.shows_last_line():
 			break
-	assert_true(text.call("shows_last_line"), "the text moves on to its last line")
+	assert_true(text.shows_last_line(), "the text moves on to its last line")
 	for step in 40:
-		text.call("advance", 0.5)
+		text.advance(0.5)
 		if (text.get("label") as Label).lines_skipped == 0:
 			break
 	assert_eq((text.get("label") as Label).lines_skipped, 0, "and starts again from the top")
@@ -172,8 +166,8 @@ func test_a_description_too_long_for_the_card_reads_through() -> void:
 func test_delete_keeps_the_players_place() -> void:
 	for i in 7:
 		_copy("board_%d.board" % i)
-	var screen: Control = await _open()
-	var slots: Array = screen.call("my_slots")
+	var screen: LevelSelect = await _open()
+	var slots: Array = screen.my_slots()
 	var doomed: Control = slots[4].get("card")
 	var next_path := str(slots[5].get("card").get("board_path"))
 	doomed.grab_focus()
@@ -181,8 +175,8 @@ func test_delete_keeps_the_players_place() -> void:
 	var scroll: ScrollContainer = screen.get_node("%Scroll")
 	var before := scroll.scroll_vertical
 	assert_gt(before, 0, "the list is scrolled down to the card")
-	screen.call("delete_board", str(doomed.get("board_path")))
-	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	screen.delete_board(str(doomed.get("board_path")))
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	await wait_physics_frames(3)
 	var focused := get_viewport().gui_get_focus_owner()
 	assert_eq(str(focused.get("board_path")) if focused != null else "", next_path)
@@ -194,22 +188,22 @@ func test_the_delete_question_names_a_refused_file_once() -> void:
 	var file := FileAccess.open(broken, FileAccess.WRITE)
 	file.store_string("not a board")
 	file.close()
-	var screen: Control = await _open()
-	var slot: Node = (screen.call("my_slots") as Array)[0]
+	var screen: LevelSelect = await _open()
+	var slot: Node = (screen.my_slots() as Array)[0]
 	var dialogs: Node = screen.get_node("%Dialogs")
-	screen.call("open_card_menu", slot.get("card"))
-	var menu: PopupMenu = screen.call("card_menu")
+	screen.open_card_menu(slot.get("card"))
+	var menu: PopupMenu = screen.card_menu()
 	assert_true(menu.is_item_disabled(0), "a board that did not load offers Play greyed")
-	assert_eq(menu.call("entries")[2], "Delete…", "but it can be deleted")
+	assert_eq(menu.entries()[2], "Delete…", "but it can be deleted")
 	menu.hide()
-	dialogs.call("ask_delete", broken, slot.call("shown_name"))
-	var question := str(dialogs.call("delete_question"))
+	dialogs.ask_delete(broken, slot.shown_name())
+	var question := str(dialogs.delete_question())
 	assert_eq(question.count("broken.board"), 1, question)
-	(dialogs.call("open_dialog") as Window).hide()
+	(dialogs.open_dialog() as Window).hide()
 
 
 func test_a_refused_file_and_a_message_move_nothing() -> void:
-	var screen: Control = await _open()
+	var screen: LevelSelect = await _open()
 	var header: Control = screen.get_node("%TitleLabel").get_parent()
 	var scroll: Control = screen.get_node("%Scroll")
 	var before := [header.get_global_rect(), scroll.get_global_rect()]
@@ -218,8 +212,8 @@ func test_a_refused_file_and_a_message_move_nothing() -> void:
 	file.store_string("not a board")
 	file.close()
 	var refused := ProjectSettings.globalize_path(broken)
-	screen.call("import_files", PackedStringArray([refused, refused]))
-	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	screen.import_files(PackedStringArray([refused, refused]))
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	await wait_physics_frames(3)
 	var summary := str((screen.get_node("%SummaryLabel") as Label).text)
 	assert_string_contains(summary, "could not be loaded", "the refused file is listed")

@@ -111,7 +111,7 @@ func test_a_board_that_takes_5_seconds_does_not_stop_the_screen() -> void:
 func test_import_and_delete_through_the_screen() -> void:
 	var screen := _open()
 	await _loaded(screen)
-	assert_eq((screen.my_slots() as Array).size(), 0)
+	assert_eq(screen.my_slots().size(), 0)
 	assert_true((screen.get_node("%MyBoardsEmpty") as Label).visible, "the empty hint shows")
 	var source := ProjectSettings.globalize_path(GOOD)
 	screen.import_files(PackedStringArray([source, source]))
@@ -126,7 +126,7 @@ func test_import_and_delete_through_the_screen() -> void:
 	assert_not_null(slots[0].delete_button(), "My boards can be deleted")
 	screen.delete_board(str(card.get("board_path")))
 	await _loaded(screen)
-	assert_eq((screen.my_slots() as Array).size(), 1)
+	assert_eq(screen.my_slots().size(), 1)
 	assert_true(FileAccess.file_exists(GOOD), "the shipped board is untouched")
 
 
@@ -134,13 +134,13 @@ func test_an_import_runs_off_the_main_thread() -> void:
 	var screen := _open()
 	await _loaded(screen)
 	var source := ProjectSettings.globalize_path(GOOD)
-	screen.call("import_files", PackedStringArray([source]))
+	screen.import_files(PackedStringArray([source]))
 	var status := screen.get_node("%StatusLabel") as Label
 	assert_eq(status.text, "Importing 1 file…", "the call returns before the file is checked")
-	assert_true(screen.call("is_loading"), "the screen waits for the import like a loading")
+	assert_true(screen.is_loading(), "the screen waits for the import like a loading")
 	await _loaded(screen)
 	assert_string_contains(status.text, 'Imported "Classic" into My boards as classic.board')
-	assert_eq((screen.call("my_slots") as Array).size(), 1)
+	assert_eq(screen.my_slots().size(), 1)
 
 
 func test_ten_thousand_files_list_the_first_few_hundred_and_say_so() -> void:
@@ -149,16 +149,16 @@ func test_ten_thousand_files_list_the_first_few_hundred_and_say_so() -> void:
 		FileAccess.open("%s/f%05d.board" % [folder, index], FileAccess.WRITE).close()
 	var screen := _open()
 	var listed := LevelSelect.MAX_LISTED
-	var first_frame := (screen.call("my_slots") as Array).size()
+	var first_frame := screen.my_slots().size()
 	assert_eq(first_frame, LevelSelect.SLOTS_PER_FRAME, "the first frame makes only a few cards")
 	await _loaded(screen)
-	assert_eq((screen.call("my_slots") as Array).size(), listed, "only the first files get a card")
+	assert_eq(screen.my_slots().size(), listed, "only the first files get a card")
 	var summary := (screen.get_node("%SummaryLabel") as Label).text
 	assert_string_contains(
 		summary,
 		"%d more files in My boards are not listed (at most %d are)" % [10000 - listed, listed]
 	)
-	var slots: Array = screen.call("my_slots")
+	var slots: Array = screen.my_slots()
 	assert_eq(str(slots[0].get("card").get("board_path")).get_file(), "f00000.board")
 	assert_true(slots.all(func(slot: Node) -> bool: return slot.get("card").disabled), "all empty")
 

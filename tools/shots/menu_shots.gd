@@ -69,19 +69,19 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 			if screen != null:
 				await _show_my_boards(tree, screen as LevelSelect)
 		"menu_card_menu":
-			screen = await _level_select(tree, "pachinko")
+			screen = await _level_select(tree, BoardLevel.PACHINKO_NAME)
 			if screen != null:
 				# on the second card, as the board_actions key (X / Square) opens it
 				await _press(tree, &"ui_right")
 				await _press(tree, &"board_actions")
 		"menu_export_dialog":
-			screen = await _level_select(tree, "pachinko")
+			screen = await _level_select(tree, BoardLevel.PACHINKO_NAME)
 			if screen != null:
 				var card: Control = screen.call("first_card")
 				screen.get_node("%Dialogs").call("ask_export", str(card.get("board_path")))
 		"menu_delete_dialog":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 			if screen != null:
 				await _show_my_boards(tree, screen as LevelSelect)
@@ -92,10 +92,12 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 						"ask_delete", str(card.get("board_path")), slots[0].call("shown_name")
 					)
 		"menu_pause":
-			App.request_board("pachinko", "res://levels/pachinko/classic.board")
+			App.request_board(BoardLevel.PACHINKO_NAME, "res://levels/pachinko/classic.board")
 			screen = await ScreenOpener.open(
 				tree,
-				App.start_game.bind("pachinko", "res://levels/pachinko/classic.board"),
+				App.start_game.bind(
+					BoardLevel.PACHINKO_NAME, "res://levels/pachinko/classic.board"
+				),
 				PACHINKO
 			)
 			if screen != null:
