@@ -15,16 +15,16 @@ const SAVE_PATH := "user://save.cfg"
 const MENU_SCENE := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT_SCENE := "res://scenes/menu/level_select.tscn"
 const GAME_SCENES := {
-	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
-	"maze": "res://scenes/maze/maze_game.tscn",
+	BoardLevel.PACHINKO_NAME: "res://scenes/pachinko/pachinko_game.tscn",
+	BoardLevel.MAZE_NAME: "res://scenes/maze/maze_game.tscn",
 }
 
 ## The player's settings (volumes, window, frame counter, tilt sensitivity, bindings).
 var settings := GameSettings.new()
 ## Best results per board.
 var save_data := SaveData.new()
-## Which game the level select lists ("pachinko" or "maze").
-var level_select_kind := "pachinko"
+## Which game the level select lists (a name of BoardLevel.KIND_NAMES).
+var level_select_kind := BoardLevel.PACHINKO_NAME
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 

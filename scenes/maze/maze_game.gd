@@ -329,7 +329,7 @@ func _show_best() -> void:
 
 
 func _load_level() -> BoardLevel:
-	var path := App.current_board_path("maze")
+	var path := App.current_board_path(BoardLevel.MAZE_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level != null and loaded.level.is_maze():
 		return loaded.level

@@ -18,7 +18,7 @@ const LevelCard := preload("res://scenes/menu/level_card.gd")
 const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.
 const MAX_COLUMNS := 4
-const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
+const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
 ## At most this many files of a folder get a card (README "Safety"); the rest are counted.
 const MAX_LISTED := 200
 ## At most this many loaded files fill their card in one frame, so a burst never stalls one.
@@ -26,8 +26,8 @@ const FILLS_PER_FRAME := 24
 ## At most this many cards are made in one frame: the screen shows at once and fills up.
 const SLOTS_PER_FRAME := 24
 
-## The game whose boards are listed ("pachinko" or "maze").
-var kind := "pachinko"
+## The game whose boards are listed (a name of BoardLevel.KIND_NAMES).
+var kind := BoardLevel.PACHINKO_NAME
 ## The player's boards folder (tests point it at a scratch folder before adding the screen).
 var user_root := BoardLoader.USER_DIR
 ## Loads one file (path, kind, root) -> BoardLoadResult; empty means BoardLoader.load_listed.
@@ -155,7 +155,7 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 		_cancel(_grid)
 		_loadings.erase(_grid)
 	_clear(_grid)
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		results = MazeProgress.sorted(results)
 	for result in results:
 		_add_slot(_grid, result.path)
@@ -177,7 +177,7 @@ func import_files(sources: PackedStringArray) -> void:
 func _start_imports() -> void:
 	var jobs: Array[Dictionary] = []
 	for source in _import_waiting:
-		jobs.append({"path": source, "kind": _kind_enum(kind), "root": user_root})
+		jobs.append({"path": source, "kind": BoardLevel.kind_named(kind), "root": user_root})
 	_import_waiting = PackedStringArray()
 	_importing = BoardListLoading.new(jobs, UserBoards.import_result, 1)
 	_say("Importing %d file%s…" % [jobs.size(), "" if jobs.size() == 1 else "s"], false)
@@ -290,13 +290,13 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	if _loadings.has(grid):
 		_cancel(grid)
 	_clear(grid)
-	var kind_value := _kind_enum(kind)
+	var kind_value := BoardLevel.kind_named(kind)
 	var jobs: Array[Dictionary] = []
 	var paths := BoardLoader.list_files(kind_value, root)
 	if grid == _my_grid:
 		_not_listed = maxi(0, paths.size() - MAX_LISTED)
 		paths = paths.slice(0, MAX_LISTED)
-	if kind == "maze" and grid == _grid:
+	if kind == BoardLevel.MAZE_NAME and grid == _grid:
 		paths = _in_maze_order(paths)
 	for path in paths:
 		jobs.append({"path": path, "kind": kind_value, "root": root})
@@ -426,7 +426,7 @@ func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
 	for slot in grid.get_children():
 		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
 			(slot as LevelSlot).fill(result, _best_text(result))
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
 		_link_focus()
@@ -532,7 +532,7 @@ func _best_text(result: BoardLoadResult) -> String:
 	if not result.ok():
 		return ""
 	var board_id := result.level.board_id
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		var easy := App.best_maze_time(board_id, false)
 		var hard := App.best_maze_time(board_id, true)
 		if easy <= 0.0 and hard <= 0.0:
@@ -563,7 +563,3 @@ static func _is_navigation(event: InputEvent) -> bool:
 		if event.is_action_pressed(action):
 			return true
 	return false
-
-
-static func _kind_enum(kind_name: String) -> int:
-	return BoardLevel.Kind.MAZE if kind_name == "maze" else BoardLevel.Kind.PACHINKO

@@ -25,7 +25,7 @@ const FIELDS := ["format", "board", "kind", "written_at"]
 const BOARD_PATTERN := "^res://levels/(pachinko|maze)/[A-Za-z0-9_-]+\\.board$"
 
 
-## Writes a request to play `board_path` in the game `kind` ("pachinko" or "maze").
+## Writes a request to play `board_path` in the game `kind` (BoardLevel.KIND_NAMES).
 ## Returns "" or a sentence saying what went wrong (nothing is written then).
 static func write(board_path: String, kind: String, path := PATH) -> String:
 	var now := Time.get_unix_time_from_system()
@@ -78,8 +78,8 @@ static func check(request: Dictionary, now: float) -> String:
 	if not _is_number(format) or _float_of(format) != FORMAT:
 		return "format must be %d, got %s" % [FORMAT, _shown(request["format"])]
 	var kind: Variant = request["kind"]
-	if not kind is String or not ["pachinko", "maze"].has(kind):
-		return 'kind must be "pachinko" or "maze", got %s' % _shown(kind)
+	if BoardLevel.kind_named(kind) < 0:
+		return "kind must be %s, got %s" % [BoardLevel.kind_choices(), _shown(kind)]
 	var board: Variant = request["board"]
 	if not board is String or not _board_path_ok(str(board), str(kind)):
 		var wanted := "res://levels/%s/<name>.board" % kind

@@ -93,8 +93,8 @@ static func _check_header(data: Dictionary) -> String:
 			% [version, Schema.FORMAT_VERSION]
 		)
 	var kind: Variant = data.get("kind")
-	if not kind is String or not kind in ["pachinko", "maze"]:
-		return '"kind" must be "pachinko" or "maze"'
+	if BoardLevel.kind_named(kind) < 0:
+		return '"kind" must be ' + BoardLevel.kind_choices()
 	return ""
 
 
@@ -225,7 +225,7 @@ static func _check_tuning(value: Variant) -> String:
 static func _build(data: Dictionary) -> BoardLevel:
 	var level := BoardLevel.new()
 	var kind: String = data["kind"]
-	level.kind = BoardLevel.Kind.MAZE if kind == "maze" else BoardLevel.Kind.PACHINKO
+	level.kind = BoardLevel.kind_named(kind) as BoardLevel.Kind
 	for field: String in Schema.fields_for(kind):
 		if field in ["format", "format_version", "kind"]:
 			continue

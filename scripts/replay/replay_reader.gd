@@ -38,7 +38,7 @@ const HEADER_KEYS := [
 const LATER_KEYS := {"physics": 3}
 ## Physics versions a file may name (BallWorld keeps its history small).
 const MAX_PHYSICS := 1000
-const MODES := {"maze": ["easy", "hard"], "pachinko": ["normal"]}
+const MODES := {Replay.MAZE: ["easy", "hard"], Replay.PACHINKO: [Replay.PACHINKO_MODE]}
 const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 ## Longest packed text of one "tilts" record: MAX_PACKED_FRAMES frames of three numbers of
 ## at most TiltPacking.MAX_DIGITS digits.
@@ -122,7 +122,7 @@ static func _read_header(data: Variant, replay: Replay) -> String:
 static func _read_names(header: Dictionary, replay: Replay) -> String:
 	var game: Variant = header["game"]
 	if not MODES.has(game):
-		return '"game" must be "maze" or "pachinko"'
+		return '"game" must be ' + BoardLevel.kind_choices()
 	replay.game = game
 	var board := str(header["board"]) if header["board"] is String else ""
 	if board.is_empty() or board.length() > 64:

@@ -52,7 +52,7 @@ const EXPECTED := {
 	"tilts_unfinished_number.replay": "end in the middle of a number",
 	"unknown_field.replay": 'unknown header field "script"',
 	"unknown_record.replay": 'unknown maze record "teleport"',
-	"wrong_game.replay": '"game" must be "maze" or "pachinko"',
+	"wrong_game.replay": '"game" must be "pachinko" or "maze"',
 	"wrong_game_record.replay": 'unknown maze record "fire"',
 }
 
