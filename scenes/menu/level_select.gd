@@ -14,6 +14,7 @@ const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const CardActionsMenu := preload("res://scenes/menu/card_actions_menu.gd")
 const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
 const LevelCard := preload("res://scenes/menu/level_card.gd")
+const Codec := preload("res://scripts/app/input_event_codec.gd")
 ## Room between cards, across and down (the grids' separations in the scene).
 const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.
@@ -61,6 +62,7 @@ var _kept_scroll := -1
 @onready var _dialogs: Dialogs = %Dialogs
 @onready var _scroll: ScrollContainer = %Scroll
 @onready var _card_menu: CardActionsMenu = %CardMenu
+@onready var _hint: Label = %Hint
 
 
 func _ready() -> void:
@@ -75,6 +77,10 @@ func _ready() -> void:
 	kind = App.level_select_kind
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
 	_status.text = ""
+	_hint.text = (
+		"Arrows / D-pad: choose a board · Enter / A: play · %s: its menu · Esc / B: back"
+		% _menu_keys()
+	)
 	reload()
 
 
@@ -227,7 +233,9 @@ func open_card_menu(card: LevelCard) -> void:
 	var slot := card.get_parent() as LevelSlot
 	if slot == null:
 		return
-	_card_menu.open_for(card.board_path, card.get_global_rect(), card.playable, slot.is_mine())
+	# a locked maze board or one that did not load offers Play greyed, like its card
+	var can_play := card.playable and not card.disabled
+	_card_menu.open_for(card.board_path, card.get_global_rect(), can_play, slot.is_mine())
 
 
 ## The card menu (for tests).
@@ -515,7 +523,7 @@ func _update_summary() -> void:
 	if waiting > 0:
 		text += ", %d loading…" % waiting
 	if broken > 0:
-		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
+		text += ", %d could not be loaded (greyed)" % broken
 	if locked > 0:
 		text += ", %d locked (finish the board before each to open it)" % locked
 	if _not_listed > 0:
@@ -556,6 +564,19 @@ static func _clock_text(seconds: float) -> String:
 # Players know their files by the real path, not by user://.
 static func _shown_path(path: String) -> String:
 	return path.replace("user://", OS.get_user_data_dir() + "/")
+
+
+# The card menu's first key and first pad button as the player has them bound.
+static func _menu_keys() -> String:
+	var names := PackedStringArray()
+	for wanted: bool in [true, false]:
+		for event in App.settings.events_for("board_actions"):
+			if (event is InputEventKey) == wanted:
+				names.append(Codec.describe(event))
+				break
+	if names.size() == 2 and names[1].begins_with(names[0] + " /"):
+		names.remove_at(0)  # the X key and the pad's "X / Square" read as one
+	return " / ".join(names) if not names.is_empty() else "Right click"
 
 
 static func _is_navigation(event: InputEvent) -> bool:
