@@ -527,10 +527,7 @@ func _update_summary() -> void:
 	if locked > 0:
 		text += ", %d locked (finish the board before each to open it)" % locked
 	if _not_listed > 0:
-		text += (
-			"; %d more files in My boards are not listed (at most %d are)"
-			% [_not_listed, MAX_LISTED]
-		)
+		text += "; %d more files not listed" % _not_listed  # short: the line has one row
 	_summary.text = text
 
 
