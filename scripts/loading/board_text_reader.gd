@@ -157,7 +157,8 @@ static func _check_list(list: String, value: Variant) -> String:
 	for i in items.size():
 		var problem := _check_item(items[i], required, optional)
 		if problem.is_empty() and list == "windmills":
-			problem = _check_windmill_drive(items[i])
+			var wheel: Dictionary = items[i]
+			problem = _check_windmill_drive(wheel)
 		if not problem.is_empty():
 			return "%s item %d: %s" % [list, i + 1, problem]
 	return ""
@@ -244,7 +245,8 @@ static func _build(data: Dictionary) -> BoardLevel:
 		for k in level.pockets.size():
 			PocketStamp.apply(level, k)
 		_build_bonus(level, data)
-		_build_windmills(level, data.get("windmills", []))
+		var wheels: Array = data.get("windmills", [])
+		_build_windmills(level, wheels)
 	else:
 		var walls: Array = data.get("walls", [])
 		var ball_starts: Array = data.get("ball_starts", [])

@@ -20,6 +20,7 @@ const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
+const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.
@@ -329,7 +330,7 @@ func respond(
 	var bounced := false
 	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
 	var gn_dt: float = _gravity.dot(nrm) * _dt
-	if not held and minf(gn_dt, 0.0) - vn > _threshold:
+	if not held and ContactRule.bounces(vn, gn_dt, _threshold):
 		if surface < Surface.WALL_SIDE:
 			var back: Vector2 = d - _v * ContactMath.back_off(d, _v, lim, _h, inside)
 			if back.length_squared() > EPS:
@@ -369,7 +370,8 @@ func respond(
 ## threshold still queues a hit. Returns true on such a hit.
 func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
-	var hit: bool = not held and -vn > _threshold
+	# The seed's glancing cap counts the whole approach, gravity's share too.
+	var hit: bool = not held and ContactRule.bounces(vn, 0.0, _threshold)
 	if hit and _hits_heard[BallEvents.Kind.WALL_HIT] != 0:
 		_queue(BallEvents.Kind.WALL_HIT, index, -vn)
 	_v -= nrm * vn

@@ -9,6 +9,7 @@ extends RefCounted
 ## side by side: the solve writes only the two balls of each pair, and reads only them.
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
+const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
 ## A support counts when its normal is within about 60° of the line between two balls.
 const SUPPORT_COS := 0.5
@@ -134,7 +135,8 @@ func solve_pairs(pairs: PackedInt32Array) -> void:
 		elif not (sleep_i or sleep_j):
 			var vn: float = (vj - vi).dot(nrm)
 			if vn < 0.0:
-				var e: float = _restitution if -vn > _threshold else 0.0
+				# Gravity moves both balls alike: it adds nothing to their approach.
+				var e: float = _restitution if ContactRule.bounces(vn, 0.0, _threshold) else 0.0
 				var imp: Vector2 = nrm * (-(1.0 + e) * vn * 0.5)
 				_vel[i] = vi - imp
 				_vel[j] = vj + imp
@@ -148,6 +150,6 @@ func _bounce_off_held(i: int, v: Vector2, nrm: Vector2) -> void:
 	var vn: float = v.dot(nrm)
 	if vn >= 0.0:
 		return
-	var hit: float = -vn - maxf(-_gravity_dt.dot(nrm), 0.0)
-	var e: float = _restitution if hit > _threshold else 0.0
+	var bounces: bool = ContactRule.bounces(vn, _gravity_dt.dot(nrm), _threshold)
+	var e: float = _restitution if bounces else 0.0
 	_vel[i] = v - nrm * ((1.0 + e) * vn)

@@ -109,6 +109,9 @@ var _last_friction := Vector2.ZERO
 ## step_count when every ball was last woken: none sleeps again for tuning.sleep_time, so a
 ## ball whose rest time is already long still gets to move after a wake-up.
 var _woken_at_step := 0
+## True from the start of step() until its signals are out: a handler that steps the world
+## from inside them is refused (the step would run inside another, half done).
+var _stepping := false
 
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
@@ -264,10 +267,15 @@ func take_step_paths() -> Dictionary:
 ## (gravity), broad phase (touching ball pairs), ball-ball solve, motion (per ball: a
 ## sleeper stays or wakes; an awake ball gets friction and the speed cap, then substeps with
 ## the narrow phase per shape kind and one contact response, then rest, sleep and sensors),
-## events.
+## events. A handler of one of those events that calls step() is refused with an error.
 func step(dt: float) -> void:
+	if _stepping:
+		var problem: String = "BallWorld.step: called from a handler of this world's own signal"
+		push_error(problem + " (the step is not over yet); step again after the signal returns")
+		return
 	if not _inputs_ok(dt):
 		return
+	_stepping = true
 	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()
 	# A gravity change wakes only the sleepers it would move (BallSleep checks each).
@@ -293,6 +301,7 @@ func step(dt: float) -> void:
 	_balls.compact()
 	step_count += 1
 	_emit_events()
+	_stepping = false
 	_clock.lap(StageClock.Stage.EVENTS, true)
 
 
@@ -367,7 +376,7 @@ func _emit_events() -> void:
 	if ev.is_empty():
 		return
 	var evs: PackedFloat32Array = _event_speed
-	# Fresh buffers first: a handler may step the world again.
+	# Fresh buffers first: a handler may add or remove balls (it may not step: see step()).
 	_events = PackedInt32Array()
 	_event_speed = PackedFloat32Array()
 	for e: int in evs.size():

@@ -123,3 +123,21 @@ func test_removed_ids_stay_gone_and_are_not_reused() -> void:
 	assert_eq(w.get_ball_position(c), Vector2(40, 0))
 	w.remove_ball(12345)
 	assert_eq(w.ball_count(), 2)
+
+
+## A handler that steps the world from inside the step's own signal would run a step inside
+## a half-done one: it is refused with an error, and the outer step finishes as usual.
+func test_a_step_from_inside_a_steps_signal_is_refused() -> void:
+	var w := BallWorld.new(TuningPresets.pachinko())
+	w.set_ring(Vector2.ZERO, 100.0)
+	w.spawn_ball(Vector2(0, 80), Vector2(0, 400), 5.0)
+	var inner := [0]
+	var step_inside := func(_ball: int, _speed: float) -> void:
+		inner[0] = w.step_count
+		w.step(1.0 / 120.0)
+	w.ring_hit.connect(step_inside)
+	for _i: int in 10:
+		w.step(1.0 / 120.0)
+	assert_gt(inner[0], 0, "the ball hit the ring and the handler tried to step")
+	assert_eq(w.step_count, 10, "only the outer steps ran")
+	assert_push_error("called from a handler of this world's own signal")

@@ -68,7 +68,8 @@ static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 			bonus_spots.append(mirrored)
 			bonus.append(Items.moved_bonus(spec, mirrored - spec.position))
 	result["bonus"] = bonus
-	result["windmills"] = _mirrored_windmills(data.get("windmills", []), axis)
+	var wheels: Array = data.get("windmills", [])
+	result["windmills"] = _mirrored_windmills(wheels, axis)
 	return result
 
 

@@ -58,8 +58,10 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	if kind == Items.Kind.PIN:
 		Draw.ghost_points(canvas, to_screen, spots, radius, level())
 		return
+	# The goal and a windmill's sweep are big: an outline keeps the board under them visible.
+	var filled := kind != Items.Kind.GOAL and kind != Items.Kind.WINDMILL
 	for point in spots:
-		Draw.circle(canvas, to_screen, point, radius, Draw.GHOST_COLOR, kind != Items.Kind.GOAL)
+		Draw.circle(canvas, to_screen, point, radius, Draw.GHOST_COLOR, filled)
 
 
 ## The windmill this tool places at `at`: four blades turning clockwise (WindmillSpec's
