@@ -295,17 +295,19 @@ func open_new_board_dialog() -> void:
 func create_new_board(kind: int, file_id: String, display_name: String) -> void:
 	var made := NewBoardFiles.create(kind, file_id, display_name)
 	if made.has("error"):
-		_dock.show_message(made["error"])
+		_dock.show_message(str(made["error"]))
 		return
+	var board_path: String = made["board"]
+	var scene_path: String = made["scene"]
 	var filesystem := EditorInterface.get_resource_filesystem()
-	filesystem.update_file(made["board"])
-	filesystem.update_file(made["scene"])
-	EditorInterface.open_scene_from_path(made["scene"])
+	filesystem.update_file(board_path)
+	filesystem.update_file(scene_path)
+	EditorInterface.open_scene_from_path(scene_path)
 	var root := EditorInterface.get_edited_scene_root()
 	if root is BoardNode:
 		EditorInterface.get_selection().clear()
 		EditorInterface.get_selection().add_node(root)
-	_dock.show_message("New board: %s and %s." % [made["board"], made["scene"]])
+	_dock.show_message("New board: %s and %s." % [board_path, scene_path])
 
 
 func _save_as_file() -> void:

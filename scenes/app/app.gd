@@ -45,6 +45,12 @@ func _ready() -> void:
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
 
 
+# The game is quitting (App leaves the tree last, after the scenes that cancelled their
+# board loadings): wait for those loading threads, so none is destroyed while it runs.
+func _exit_tree() -> void:
+	BoardListLoading.wait_for_cancelled()
+
+
 ## Loads settings and best results and applies the settings. After a problem the file is
 ## written again right away (a damaged one was moved aside first, so nothing is lost), so the
 ## problem is reported once, not on every start; a newer version's file is never written.

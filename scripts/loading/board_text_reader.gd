@@ -51,10 +51,12 @@ static func _gather_lines(text: String) -> Dictionary:
 		if line.is_empty():
 			continue
 		if json.parse(line) != OK:
-			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
+			return _error(
+				"line %d is not valid JSON: %s" % [number + 1, JsonErrors.parse_error(json)]
+			)
 		if not json.data is Dictionary:
 			return _error("line %d is not a JSON object { ... }" % (number + 1))
-		var repeated := JsonKeys.repeated(line)
+		var repeated := JsonKeys.repeated(line, json.data)
 		if not repeated.is_empty():
 			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var object: Dictionary = json.data

@@ -12,12 +12,35 @@ const Schema := preload("res://scripts/loading/board_schema.gd")
 const PRECISION := 0.01
 const POINT_KEYS: Array[String] = ["x", "y"]
 const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
+## The lines of a board's text that name or describe it (and the id counters and medal
+## times) but never change how it plays: `play_text` leaves them out.
+const NAMING_FIELDS: Array[String] = [
+	"board_id", "display_name", "description", "medal_times", Schema.NEXT_IDS_FIELD
+]
 
 
 ## SHA-256 of write(level): the same board gives the same hash however its file was laid
 ## out, and any edit changes it (replays, analysis results).
 static func content_hash(level: BoardLevel) -> String:
 	return write(level).sha256_text()
+
+
+## The board's text without its naming lines (NAMING_FIELDS): what a play analysis depends
+## on, so renaming a board or saving it under a new name keeps its analysis.
+static func play_text(level: BoardLevel) -> String:
+	var kept := PackedStringArray()
+	for line in write(level).split("\n"):
+		var named := NAMING_FIELDS.any(
+			func(field: String) -> bool: return line.begins_with('{"%s": ' % field)
+		)
+		if not named:
+			kept.append(line)
+	return "\n".join(kept)
+
+
+## SHA-256 of play_text(level): the key of a board's play analysis.
+static func play_hash(level: BoardLevel) -> String:
+	return play_text(level).sha256_text()
 
 
 ## The file text for `level`.

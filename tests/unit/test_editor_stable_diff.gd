@@ -8,6 +8,7 @@ const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
 
 ## How far each field is moved: small enough to stay valid, large enough to show in the file.
 const STEP := {
@@ -24,10 +25,19 @@ const STEP := {
 	"symbols": 1.0,
 	"open_seconds": 1.0,
 	"open_catches": 1.0,
+	"blades": 1.0,
+	"length": 3.0,
+	"free": 1.0,
+	"speed": 30.0,
+	"friction": 20.0,
 }
 
 
 func _load(path: String) -> BoardLevel:
+	if not path.begins_with("res://"):
+		var read: Dictionary = Reader.read(path)  # board text (a board made in the test)
+		assert_not_null(read.get("level"), str(read.get("error", "")))
+		return read.get("level")
 	var result := BoardLoader.load_board(path)
 	assert_not_null(result.level, result.error)
 	return result.level
@@ -47,8 +57,9 @@ func _changed_lines(before: String, after: String) -> PackedStringArray:
 	return changed
 
 
-# Edits every field of `item` one at a time (each from the board as loaded) and checks that
-# the saved text changes in one line, which `line_start` begins.
+# Edits every field of `item` one at a time (each from the board as loaded from `path`, a
+# file or board text) and checks that the saved text changes in one line, which
+# `line_start` begins.
 func _check_each_field(path: String, item: Vector2i, line_start: String) -> void:
 	var fields := ItemProperties.values_of(_load(path), item)
 	assert_false(fields.is_empty(), "%s has item %s" % [path, item])
@@ -223,3 +234,31 @@ func test_a_pocket_outside_the_ring_is_one_error_naming_the_pocket() -> void:
 	for issue in errors:
 		messages.append(issue.message)
 	assert_eq(messages, PackedStringArray(["Pocket 2's rim is outside the ring."]))
+
+
+func test_a_duplicated_pocket_never_overlaps_its_original() -> void:
+	var level := _load("res://levels/pachinko/classic.board")
+	var session := Session.new(level)
+	var errors_before := BoardValidator.errors(level).size()
+	session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+	assert_true(Commands.duplicate_selection(session))
+	assert_eq(level.pockets.size(), 6)
+	var gap := level.pockets[5].position.x - level.pockets[0].position.x
+	assert_gte(gap, level.pockets[0].width + level.ball_radius * 2.0, "a ball clear of it")
+	var nearest := INF
+	for a in Items.pocket_pins(level, 0):
+		for b in Items.pocket_pins(level, 5):
+			nearest = minf(nearest, level.pins[a].distance_to(level.pins[b]))
+	var clear := nearest - level.pin_radius * 2.0
+	assert_gte(clear, level.ball_radius * 2.0, "the rims leave a ball's width between them")
+	assert_eq(BoardValidator.errors(level).size(), errors_before)
+
+
+func test_each_field_of_a_windmill_changes_only_its_line() -> void:
+	var level := _load("res://levels/pachinko/classic.board")
+	var wheel := WindmillSpec.new()
+	wheel.position = Vector2(350, 470)
+	level.windmills = [wheel] as Array[WindmillSpec]
+	ItemIds.fill(level)
+	var text := Writer.write(level)
+	_check_each_field(text, Items.make(Items.Kind.WINDMILL, 0), '{"windmill": {"id": 1, ')

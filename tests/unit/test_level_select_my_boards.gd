@@ -130,6 +130,39 @@ func test_import_and_delete_through_the_screen() -> void:
 	assert_true(FileAccess.file_exists(GOOD), "the shipped board is untouched")
 
 
+func test_an_import_runs_off_the_main_thread() -> void:
+	var screen := _open()
+	await _loaded(screen)
+	var source := ProjectSettings.globalize_path(GOOD)
+	screen.call("import_files", PackedStringArray([source]))
+	var status := screen.get_node("%StatusLabel") as Label
+	assert_eq(status.text, "Importing 1 file…", "the call returns before the file is checked")
+	assert_true(screen.call("is_loading"), "the screen waits for the import like a loading")
+	await _loaded(screen)
+	assert_string_contains(status.text, 'Imported "Classic" into My boards as classic.board')
+	assert_eq((screen.call("my_slots") as Array).size(), 1)
+
+
+func test_ten_thousand_files_list_the_first_few_hundred_and_say_so() -> void:
+	var folder := ROOT + "/pachinko"
+	for index in 10000:
+		FileAccess.open("%s/f%05d.board" % [folder, index], FileAccess.WRITE).close()
+	var screen := _open()
+	var listed := LevelSelect.MAX_LISTED
+	var first_frame := (screen.call("my_slots") as Array).size()
+	assert_eq(first_frame, LevelSelect.SLOTS_PER_FRAME, "the first frame makes only a few cards")
+	await _loaded(screen)
+	assert_eq((screen.call("my_slots") as Array).size(), listed, "only the first files get a card")
+	var summary := (screen.get_node("%SummaryLabel") as Label).text
+	assert_string_contains(
+		summary,
+		"%d more files in My boards are not listed (at most %d are)" % [10000 - listed, listed]
+	)
+	var slots: Array = screen.call("my_slots")
+	assert_eq(str(slots[0].get("card").get("board_path")).get_file(), "f00000.board")
+	assert_true(slots.all(func(slot: Node) -> bool: return slot.get("card").disabled), "all empty")
+
+
 func test_shipped_boards_offer_export_but_never_delete() -> void:
 	var screen := _open()
 	await _loaded(screen)

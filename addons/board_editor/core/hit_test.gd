@@ -19,8 +19,9 @@ const MAZE_HANDLES: Array[String] = ["goal_radius"]
 
 
 ## The item under `point` (within `tolerance` px of its shape), nearest first; NONE if
-## nothing is there. A pocket's rim pins pick the pocket; a bonus pocket is picked inside
-## its cup (rim pins included), a windmill inside the circle its blades sweep.
+## nothing is there. A click inside a pin, hole or ball start picks it even over a wall. A
+## pocket's rim pins pick the pocket; a bonus pocket is picked inside its cup (rim pins
+## included), a windmill inside the circle its blades sweep.
 static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2i:
 	var best := Items.NONE
 	var best_distance := INF
@@ -51,7 +52,9 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 			point, level.walls[w * 2], level.walls[w * 2 + 1]
 		)
 		var gap := closest.distance_to(point) - level.wall_width * 0.5
-		if gap <= tolerance and gap < best_distance:
+		# A start, hole or pin drawn over a wall wins a click inside it: the wall is bigger
+		# and can be picked anywhere else along its length.
+		if gap <= tolerance and gap < best_distance and best_distance > 0.0:
 			best_distance = gap
 			best = Items.make(Items.Kind.WALL, w)
 	for i in level.bonus_pockets.size():

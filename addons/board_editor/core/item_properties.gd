@@ -13,9 +13,11 @@ const SetPointAction := preload("res://addons/board_editor/actions/set_point_act
 const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket_action.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
+const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const EditWindmillAction := preload("res://addons/board_editor/actions/edit_windmill_action.gd")
 
-## Field key -> [label, lowest, highest, step]; positions are limited by the board size.
+## Field key -> [label, lowest, highest, arrow step, whole numbers only]; values keep the
+## board file's 0.01 px precision (NumberRow).
 const FIELDS := {
 	"x": ["x (px)", -50.0, 2000.0, 0.5],
 	"y": ["y (px)", -50.0, 2000.0, 0.5],
@@ -25,14 +27,14 @@ const FIELDS := {
 	"by": ["End B y (px)", -50.0, 2000.0, 0.5],
 	"width": ["Width (px)", 4.0, 200.0, 1.0],
 	"depth": ["Depth (px)", 4.0, 200.0, 1.0],
-	"payout": ["Payout (balls)", 0.0, 99.0, 1.0],
+	"payout": ["Payout (balls)", 0.0, 99.0, 1.0, true],
 	"radius": ["Radius (px)", 6.0, 200.0, 0.5],
-	"symbols": ["Reel symbols", 2.0, 9.0, 1.0],
+	"symbols": ["Reel symbols", 2.0, 9.0, 1.0, true],
 	"open_seconds": ["Opens for (s)", 1.0, 30.0, 0.5],
-	"open_catches": ["Closes after (catches)", 1.0, 50.0, 1.0],
-	"blades": ["Blades", 2.0, 12.0, 1.0],
+	"open_catches": ["Closes after (catches)", 1.0, 50.0, 1.0, true],
+	"blades": ["Blades", 2.0, 12.0, 1.0, true],
 	"length": ["Blade length (px)", 8.0, 120.0, 0.5],
-	"free": ["Spins free (1) or driven (0)", 0.0, 1.0, 1.0],
+	"free": ["Spins free (1) or driven (0)", 0.0, 1.0, 1.0, true],
 	"speed": ["Speed (degrees/s, + clockwise)", -3600.0, 3600.0, 5.0],
 	"friction": ["Friction (degrees/s²)", 0.0, 36000.0, 5.0],
 }
@@ -138,6 +140,29 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 			return SetPropertiesAction.new(level, {"goal_center": target}, "Set goal position")
 	var field: String = POINT_FIELD[item.x]
 	return SetPointAction.new(level, field, item.y, target, "Set %s position" % _noun(item))
+
+
+## The action that sets x or y of `item` in mirror mode (axis x `axis`): its mirror twin
+## moves with it, as a drag moves both; null when the item has no twin (then `action_for`).
+static func mirrored_action_for(
+	level: BoardLevel, item: Vector2i, key: String, value: float, axis: float
+) -> BoardAction:
+	if not key in ["x", "y"] or item.x in [Items.Kind.GOAL, Items.Kind.WALL]:
+		return null
+	if not Items.is_valid(level, item):
+		return null
+	var twin := Mirror.partner(level, item, axis)
+	if twin == Items.NONE or twin == item:
+		return null
+	var at := Items.position_of(level, item)
+	var target := Vector2(value, at.y) if key == "x" else Vector2(at.x, value)
+	if target == at:
+		return null
+	var split := Mirror.split_for_move(level, [item] as Array[Vector2i], axis, at.x)
+	var direct: Array[Vector2i] = split["direct"]
+	var mirrored: Array[Vector2i] = split["mirrored"]
+	var on_axis: Array[Vector2i] = split["on_axis"]
+	return MoveItemsAction.new(level, direct, target - at, mirrored, on_axis)
 
 
 ## A short name for the item's kind ("pin", "ball start").

@@ -36,7 +36,7 @@ func _init() -> void:
 	_kind_pick.add_item("Tilt maze", BoardLevel.Kind.MAZE)
 	_kind_pick.item_selected.connect(
 		func(index: int) -> void:
-			_kind = _kind_pick.get_item_id(index)
+			_kind = _kind_pick.get_item_id(index) as BoardLevel.Kind
 			_update()
 	)
 	grid.add_child(_kind_pick)
@@ -76,7 +76,7 @@ func open_for(level: BoardLevel) -> void:
 ## Opens the dialog as "New board…": pick the game, name the board.
 func open_new() -> void:
 	_set_mode(true)
-	_kind = _kind_pick.get_selected_id()
+	_kind = _kind_pick.get_selected_id() as BoardLevel.Kind
 	_name_field.text = ""
 	_id_edited = false
 	_id_field.text = ""
