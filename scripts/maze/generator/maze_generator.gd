@@ -16,10 +16,12 @@ const PATH_WIDTH := 25.0
 const WALL_WIDTH := 10.0
 const BALL_RADIUS := 5.0
 ## The goal ring fits inside the 2 × 2 goal room with its dashed line clear of the room's
-## walls: 35 px to the walls' middle, less half a wall (5) and half the ring's line (2.5).
-const GOAL_RADIUS := 27.5
-## Half the width of the dashed line the goal ring is drawn with (px).
-const RING_LINE_HALF := 2.5
+## walls: the floor paints the line RING_LINE px wide just outside the radius, and the walls'
+## faces stand 35 − 5 = 30 px from the centre: 24 + 5 leaves a pixel between them.
+const GOAL_RADIUS := 24.0
+## The width of the dashed line the goal ring is drawn with, outside its radius (px; the
+## floor shader's goal_line).
+const RING_LINE := 5.0
 const HOLE_RADIUS := 9.0
 ## Share of the inner walls knocked out at difficulty 0 and at difficulty 1.
 const OPENNESS_EASY := 0.35
@@ -67,10 +69,10 @@ static func generate(settings: MazeGenSettings) -> Dictionary:
 	return {"level": level, "holes_placed": placed}
 
 
-## The index of the first wall of `level` that reaches into its goal ring (drawn with a line
-## RING_LINE_HALF px either side of goal_radius), or -1 when the ring is clear.
+## The index of the first wall of `level` that reaches into its goal ring (the circle and
+## its RING_LINE px line outside it), or -1 when the ring is clear.
 static func wall_in_goal_ring(level: BoardLevel) -> int:
-	var reach := level.goal_radius + RING_LINE_HALF + level.wall_width * 0.5
+	var reach := level.goal_radius + RING_LINE + level.wall_width * 0.5
 	for w in range(level.walls.size() >> 1):
 		var near := Geometry2D.get_closest_point_to_segment(
 			level.goal_center, level.walls[w * 2], level.walls[w * 2 + 1]
