@@ -4,6 +4,7 @@ extends RefCounted
 ## grown by the ball radius, so a cell is free exactly where a ball's centre fits).
 
 const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
+const MazeLimits := preload("res://scripts/validation/maze_limits.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Below this a wall counts as zero length, in pixels.
@@ -11,7 +12,7 @@ const MIN_WALL_LENGTH := 0.01
 
 
 static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
-	if not _check_shape(level, issues):
+	if not _check_shape(level, issues) or not MazeLimits.check(level, issues):
 		return
 	_check_walls(level, issues)
 	_check_points(level, issues)

@@ -5,6 +5,7 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const SETTINGS := "res://scenes/menu/settings_menu.tscn"
@@ -42,48 +43,48 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	match shot_name:
 		"menu_main":
 			# The title screen focuses the game whose level select was seen last.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_notice":
 			# What a player sees after the game kept a damaged settings file aside.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			for problem: String in NOTICE_PROBLEMS:
 				App.pending_problems.append(problem)
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_level_select_pachinko":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 		"menu_level_select_maze":
 			_sample_progress()
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("maze"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.MAZE_NAME), LEVEL_SELECT
 			)
 			if screen != null:
-				await _wait_loaded(tree, screen)
+				await _wait_loaded(tree, screen as LevelSelect)
 		"menu_my_boards":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 			if screen != null:
-				await _show_my_boards(tree, screen)
+				await _show_my_boards(tree, screen as LevelSelect)
 		"menu_card_menu":
-			screen = await _level_select(tree, "pachinko")
+			screen = await _level_select(tree, BoardLevel.PACHINKO_NAME)
 			if screen != null:
 				# on the second card, as the board_actions key (X / Square) opens it
 				await _press(tree, &"ui_right")
 				await _press(tree, &"board_actions")
 		"menu_export_dialog":
-			screen = await _level_select(tree, "pachinko")
+			screen = await _level_select(tree, BoardLevel.PACHINKO_NAME)
 			if screen != null:
 				var card: Control = screen.call("first_card")
 				screen.get_node("%Dialogs").call("ask_export", str(card.get("board_path")))
 		"menu_delete_dialog":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 			if screen != null:
-				await _show_my_boards(tree, screen)
+				await _show_my_boards(tree, screen as LevelSelect)
 				var slots: Array = screen.call("my_slots")
 				if not slots.is_empty():
 					var card: Control = slots[0].get("card")
@@ -91,10 +92,12 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 						"ask_delete", str(card.get("board_path")), slots[0].call("shown_name")
 					)
 		"menu_pause":
-			App.request_board("pachinko", "res://levels/pachinko/classic.board")
+			App.request_board(BoardLevel.PACHINKO_NAME, "res://levels/pachinko/classic.board")
 			screen = await ScreenOpener.open(
 				tree,
-				App.start_game.bind("pachinko", "res://levels/pachinko/classic.board"),
+				App.start_game.bind(
+					BoardLevel.PACHINKO_NAME, "res://levels/pachinko/classic.board"
+				),
 				PACHINKO
 			)
 			if screen != null:
@@ -113,11 +116,11 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 
-static func _level_select(tree: SceneTree, game: String) -> Node:
+static func _level_select(tree: SceneTree, game: String) -> LevelSelect:
 	var screen := await ScreenOpener.open(tree, App.go_to_level_select.bind(game), LEVEL_SELECT)
 	if screen != null:
-		await _wait_loaded(tree, screen)
-	return screen
+		await _wait_loaded(tree, screen as LevelSelect)
+	return screen as LevelSelect
 
 
 # Presses and lets go of an input action, as a key or a pad button would.
@@ -149,9 +152,9 @@ static func _sample_progress() -> void:
 
 
 # Waits until every card of the level select has loaded (their files load off the main thread).
-static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
+static func _wait_loaded(tree: SceneTree, screen: LevelSelect) -> void:
 	for frame in 240:
-		if not screen.call("is_loading"):
+		if not screen.is_loading():
 			break
 		await tree.process_frame
 	for frame in 3:
@@ -160,20 +163,20 @@ static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
 
 # Fills a scratch My boards folder (one imported board, one refused file), imports the
 # board as the Import button would, and scrolls to the section.
-static func _show_my_boards(tree: SceneTree, screen: Node) -> void:
+static func _show_my_boards(tree: SceneTree, screen: LevelSelect) -> void:
 	_empty_folder(SHOT_BOARDS + "/pachinko")
 	DirAccess.make_dir_recursive_absolute(SHOT_BOARDS + "/pachinko")
 	var refused := FileAccess.open(SHOT_BOARDS + "/pachinko/bouncy.board", FileAccess.WRITE)
 	refused.store_buffer(FileAccess.get_file_as_bytes(REFUSED_BOARD))
 	refused.close()
-	screen.call("use_folder", SHOT_BOARDS)
+	screen.use_folder(SHOT_BOARDS)
 	var source := ProjectSettings.globalize_path("res://levels/pachinko/windmills.board")
-	screen.call("import_files", PackedStringArray([source]))
+	screen.import_files(PackedStringArray([source]))
 	for frame in 120:
 		await tree.process_frame
-		if not screen.call("is_loading"):
+		if not screen.is_loading():
 			break
-	var slots: Array = screen.call("my_slots")
+	var slots: Array = screen.my_slots()
 	if not slots.is_empty():
 		(slots[0].get("card") as Control).grab_focus()
 	for frame in 10:
