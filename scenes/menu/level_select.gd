@@ -313,7 +313,6 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	_add_slots(grid)
 	_loadings[grid] = BoardListLoading.new(jobs, load_one)
 	_update_summary()
-	_link_focus()
 	if _refocus_path != "":
 		_take_place_back()
 	elif not is_instance_valid(_first_focus):
@@ -336,6 +335,7 @@ func _add_slots(grid: GridContainer) -> void:
 		_unslotted.erase(grid)
 	else:
 		_unslotted[grid] = paths.slice(count)
+	_link_focus()  # the new cards take their places in the arrows' order
 
 
 func _cancel(grid: GridContainer) -> void:

@@ -116,11 +116,11 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 
-static func _level_select(tree: SceneTree, game: String) -> Node:
+static func _level_select(tree: SceneTree, game: String) -> LevelSelect:
 	var screen := await ScreenOpener.open(tree, App.go_to_level_select.bind(game), LEVEL_SELECT)
 	if screen != null:
-		await _wait_loaded(tree, screen)
-	return screen
+		await _wait_loaded(tree, screen as LevelSelect)
+	return screen as LevelSelect
 
 
 # Presses and lets go of an input action, as a key or a pad button would.
