@@ -26,8 +26,7 @@ const FIELDS: Array[String] = [
 static func capture(session: Session) -> Dictionary:
 	var kept := {"tool": session.tool}
 	for field in FIELDS:
-		var value: Variant = session.get(field)
-		kept[field] = value.duplicate(true) if value is Dictionary else value
+		kept[field] = _copy(session.get(field))
 	return kept
 
 
@@ -35,9 +34,16 @@ static func capture(session: Session) -> Dictionary:
 static func apply(session: Session, kept: Dictionary) -> void:
 	for field in FIELDS:
 		if kept.has(field):
-			var value: Variant = kept[field]
-			session.set(field, value.duplicate(true) if value is Dictionary else value)
+			session.set(field, _copy(kept[field]))
 	var tool: int = kept.get("tool", Session.Tool.SELECT)
 	if session.available_tools().has(tool):
 		session.set_tool(tool)
 	session.settings_changed.emit()
+
+
+# A value as its own copy: dictionaries deep-copied, so the two sessions never share one.
+static func _copy(value: Variant) -> Variant:
+	if value is Dictionary:
+		var table: Dictionary = value
+		return table.duplicate(true)
+	return value
