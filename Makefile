@@ -73,6 +73,7 @@ release:
 release-check:
 	@ls build/release/board-studio-*-linux-x86_64.tar.gz >/dev/null 2>&1 || $(MAKE) --no-print-directory release
 	@tools/release/launcher_test.sh
+	@tools/release/elf_paths_test.sh
 	@tools/release/check.sh
 
 clean:

@@ -3,7 +3,7 @@
 # (the joystick dragged with the mouse, then the arrow keys), and saves screenshots of the
 # whole screen to build/look/<board>_<size>_<n>.png. A scratch user folder keeps the
 # player's own settings and best times out of it.
-#   tools/maze_look.sh garden 1280x720
+#   tools/maze_look.sh garden 1280x720 [tutorial]   (tutorial: the tutorial's look setting)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -17,15 +17,17 @@ USERDIR="$SCRATCH/godot/app_userdata/Board Studio"
 mkdir -p "$USERDIR"
 printf '{"format": 1, "board": "res://levels/maze/%s.board", "kind": "maze", "written_at": %s}\n' \
 	"$BOARD" "$(date +%s)" >"$USERDIR/playtest_request.json"
-W=${SIZE%x*}
-H=${SIZE#*x}
+LOOK=${3:-}
+if [ "$LOOK" = tutorial ]; then
+	printf '[meta]\nversion=1\n[display]\nmaze_tutorial_look=true\n' >"$USERDIR/settings.cfg"
+fi
 export XDG_DATA_HOME="$SCRATCH"
 xvfb-run -a -s "-screen 0 ${SIZE}x24" bash -c '
 	timeout -s INT -k 5 32 tools/godot.sh --rendering-driver opengl3 --resolution '"$SIZE"' --position 0,0 --path . \
 		res://scenes/maze/maze_game.tscn >"'"$OUT"'/'"$BOARD"'_'"$SIZE"'.log" 2>&1 &
 	game=$!
 	sleep 18
-	shot() { import -window root "'"$OUT"'/'"$BOARD"'_'"$SIZE"'_$1.png"; }
+	shot() { import -window root "'"$OUT"'/'"$BOARD"'_'"$SIZE$LOOK"'_$1.png"; }
 	shot 0
 	xdotool key Right
 	xdotool keydown Right keydown Down
@@ -37,4 +39,4 @@ xvfb-run -a -s "-screen 0 ${SIZE}x24" bash -c '
 	xdotool keyup Left
 	wait $game || true
 '
-ls "$OUT"/"$BOARD"_"$SIZE"_*.png
+ls "$OUT"/"$BOARD"_"$SIZE$LOOK"_*.png

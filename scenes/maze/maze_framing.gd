@@ -12,7 +12,7 @@ extends RefCounted
 const MIN_BALL_PX := 14.0
 const REFERENCE_SCREEN := 720.0
 ## Space kept free round the board inside its region (px).
-const MARGIN_PX := 12.0
+const MARGIN_PX := 8.0
 
 ## The camera's distance from the board's centre, and its near plane (units).
 var distance := 6.0
@@ -35,11 +35,11 @@ var _bounds := Rect2()
 var _k := 1.0
 
 
-## Fits `points` (the board's outer corners under every tilt it can take) into `region`
+## Fits `points` (the board's outer corners under every tilt it can take) into `area`
 ## of a `view`-sized screen, for balls `ball_diameter` units across.
-func fit(points: PackedVector3Array, view: Vector2, region: Rect2, ball_diameter: float) -> void:
+func fit(points: PackedVector3Array, view: Vector2, area: Rect2, ball_diameter: float) -> void:
 	_view = Vector2(maxf(view.x, 1.0), maxf(view.y, 1.0))
-	_region = region.grow(-MARGIN_PX)
+	_region = area.grow(-MARGIN_PX)
 	if _region.size.x < 1.0 or _region.size.y < 1.0:
 		_region = Rect2(Vector2.ZERO, _view)
 	_bounds = Rect2(_at_near(points[0]), Vector2.ZERO)

@@ -22,11 +22,13 @@ const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## The side panel: a column on the right of a landscape window (this share of its width,
 ## within these bounds, and this far from the edge), a band along the bottom of a portrait one
 ## (this share of its height). The board is framed in the rest, so no text lies over it.
-const SIDE_SHARE := 0.3
+const SIDE_SHARE := 0.2
 const SIDE_MIN_WIDTH := 260.0
 const SIDE_MAX_WIDTH := 350.0
-const SIDE_EDGE := 30.0
+const SIDE_EDGE := 24.0
 const PORTRAIT_SIDE_SHARE := 0.45
+## The height (px) the side panel's text takes in a portrait band, beside the joystick.
+const PORTRAIT_TEXT_HEIGHT := 380.0
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -94,6 +96,7 @@ func _ready() -> void:
 	rules.game_reset.connect(_on_game_reset)
 	rules.goal_count_changed.connect(_on_goal_count_changed)
 	rules.wall_bumped.connect(_on_wall_bumped)
+	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
 	get_viewport().size_changed.connect(_layout)
 	_layout()
@@ -241,7 +244,10 @@ func _layout() -> Rect2:
 		_side.offset_top = -height
 		_side.offset_bottom = -SIDE_EDGE * 0.5
 		region = Rect2(0.0, 0.0, view.x, view.y - height)
-		_joystick.ui_scale = 1.4
+		# the joystick takes what the band's text leaves
+		_joystick.ui_scale = clampf(
+			(height - PORTRAIT_TEXT_HEIGHT) / MazeJoystick.drawn_size(1.0), 0.8, 2.0
+		)
 	_stage.set_board_region(region)
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
@@ -291,6 +297,7 @@ func _show_next_medal() -> void:
 
 func _on_lost(hole: int) -> void:
 	_joystick.release()
+	_next_medal.text = ""
 	_stage.set_lost_hole(hole)
 	_sounds.play(Recipes.BALL_DROP)
 	haptics.drop()
@@ -329,7 +336,7 @@ func _show_best() -> void:
 
 
 func _load_level() -> BoardLevel:
-	var path := App.current_board_path("maze")
+	var path := App.current_board_path(BoardLevel.MAZE_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level != null and loaded.level.is_maze():
 		return loaded.level

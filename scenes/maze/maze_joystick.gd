@@ -56,9 +56,9 @@ func _process(delta: float) -> void:
 		queue_redraw()
 
 
-## The width and height (px) the joystick and its arrows take at `scale`.
-static func drawn_size(scale: float) -> float:
-	return (ARROW_DISTANCE + ARROW_HALF + 8.0) * 2.0 * scale
+## The width and height (px) the joystick and its arrows take at `drawn_scale`.
+static func drawn_size(drawn_scale: float) -> float:
+	return (ARROW_DISTANCE + ARROW_HALF + 8.0) * 2.0 * drawn_scale
 
 
 ## Stops following the pointer and centres the head (a reset or the end of a game).

@@ -34,8 +34,13 @@ const SUN_ENERGY := 0.42
 const SOFTWARE_GL_RENDER_SCALE := 0.5
 ## Words in the names of software GL drivers (RenderingServer.get_video_adapter_name()).
 const SOFTWARE_GL_NAMES: Array[String] = ["llvmpipe", "softpipe", "swrast", "swiftshader"]
-## Board ids that keep the seed's red balls; every other board rolls steel.
-const SEED_RED_BOARDS: Array[String] = ["maze_classic"]
+## The room the steel balls reflect (a panorama made here, seen only in the balls): its
+## size in pixels.
+const ROOM_SIZE := Vector2i(256, 128)
+
+## The tutorial's flat colours and red balls instead of wood and steel (set before
+## `set_level`).
+var tutorial_look := false
 
 var _pivot := Node3D.new()
 var _board: MazeBoard3D = MazeBoard3D.new()
@@ -84,10 +89,11 @@ func set_level(level: BoardLevel, hard: bool) -> void:
 	_board_size = level.size
 	_ball_radius = level.ball_radius
 	_follow_at = Vector2.ZERO
+	_board.tutorial_look = tutorial_look
 	_board.build(level, hard)
 	_balls.clear()
 	_balls.hole_depth_px = _board.hole_depth_px()
-	_balls.material = ball_material(level.board_id in SEED_RED_BOARDS)
+	_balls.material = ball_material(tutorial_look)
 	_balls.shadow_material = _board.shadow_material()
 	_frame()
 
@@ -183,7 +189,7 @@ func lowest_board_point() -> float:
 	return _lowest_point(_pivot.transform)
 
 
-## The balls' surface: the seed's glossy red-orange, or polished steel.
+## The balls' surface: the seed's glossy red-orange (the tutorial's look), or polished steel.
 static func ball_material(seed_red: bool) -> StandardMaterial3D:
 	var mat := StandardMaterial3D.new()
 	mat.albedo_texture = _ball_band_texture(Palette.BALL if seed_red else Color(0.78, 0.8, 0.83))
@@ -195,8 +201,10 @@ static func ball_material(seed_red: bool) -> StandardMaterial3D:
 		mat.roughness = 0.28
 		mat.metallic_specular = 0.7
 	else:
-		mat.metallic = 0.9
-		mat.roughness = 0.22
+		# polished: the room (room_panorama) shows in it; less glow of its own
+		mat.metallic = 0.95
+		mat.roughness = 0.14
+		mat.emission_energy_multiplier = 0.3
 	return mat
 
 
@@ -241,17 +249,46 @@ func _environment() -> Environment:
 	env.ambient_light_color = Color.WHITE
 	env.ambient_light_energy = AMBIENT_ENERGY
 	env.ambient_light_sky_contribution = 0.0
-	# A soft studio sky, seen only in the steel balls' reflections.
-	var sky_material := ProceduralSkyMaterial.new()
-	sky_material.sky_top_color = Color(0.95, 0.94, 0.92)
-	sky_material.sky_horizon_color = Palette.BACKGROUND
-	sky_material.ground_bottom_color = Palette.WALL
-	sky_material.ground_horizon_color = Palette.BACKGROUND.darkened(0.2)
+	# The room round the table, seen only in the steel balls' reflections.
+	var sky_material := PanoramaSkyMaterial.new()
+	sky_material.panorama = ImageTexture.create_from_image(room_panorama(ROOM_SIZE))
 	var sky := Sky.new()
 	sky.sky_material = sky_material
+	sky.radiance_size = Sky.RADIANCE_SIZE_64
 	env.sky = sky
 	env.reflected_light_source = Environment.REFLECTION_SOURCE_SKY
 	return env
+
+
+## A room for the balls to reflect, as an equirectangular panorama `size` big: a pale
+## ceiling with two long lamps, warm walls with three bright windows, a dark wooden floor.
+## Made of rectangles and gradients only (no file, nothing copied).
+static func room_panorama(size: Vector2i) -> Image:
+	var image := Image.create(size.x, size.y, false, Image.FORMAT_RGB8)
+	var ceiling := Color(0.86, 0.85, 0.82)
+	var wall := Color(0.72, 0.62, 0.5)
+	var floor_colour := Color(0.25, 0.17, 0.11)
+	var window := Color(0.95, 0.97, 1.0)
+	var lamp := Color(1.0, 0.98, 0.92)
+	for y in size.y:
+		var v := (float(y) + 0.5) / float(size.y)  # 0 straight up, 1 straight down
+		for x in size.x:
+			var u := (float(x) + 0.5) / float(size.x)
+			var c := wall
+			if v < 0.3:
+				c = ceiling.lerp(wall, v / 0.3)
+				# two lamps across the ceiling
+				if absf(v - 0.12) < 0.03 and (absf(u - 0.2) < 0.12 or absf(u - 0.7) < 0.12):
+					c = lamp
+			elif v > 0.56:
+				c = wall.darkened(0.3).lerp(floor_colour, minf((v - 0.56) / 0.1, 1.0))
+			else:
+				# three windows round the walls, with a bar across each
+				var pane := fmod(u * 3.0, 1.0)
+				if absf(pane - 0.5) < 0.16 and v > 0.34 and v < 0.52 and absf(v - 0.43) > 0.008:
+					c = window
+			image.set_pixel(x, y, c)
+	return image
 
 
 # The lowest z of the board's outer box under the pivot transform `pose`.

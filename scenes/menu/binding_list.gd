@@ -240,7 +240,8 @@ func _on_move_confirmed() -> void:
 		return
 	var action: String = _pending_move["action"]
 	var gamepad: bool = _pending_move["gamepad"]
-	BindingMoves.move(App.settings, action, _pending_move["event"], gamepad)
+	var event: InputEvent = _pending_move["event"]
+	BindingMoves.move(App.settings, action, event, gamepad)
 	_pending_move = {}
 	_refresh(action, gamepad)
 

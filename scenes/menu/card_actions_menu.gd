@@ -31,7 +31,7 @@ func open_for(board_path: String, card_rect: Rect2, playable: bool, mine: bool) 
 	add_item("Export a copy…", Choice.EXPORT)
 	if mine:
 		add_item("Delete…", Choice.DELETE)
-	var corner := card_rect.position + Vector2(card_rect.size.x * 0.12, card_rect.size.y * 0.3)
+	var corner := card_rect.position + Vector2(card_rect.size.x * 0.12, card_rect.size.y * 0.1)
 	popup(Rect2i(Vector2i(corner), Vector2i(int(card_rect.size.x * 0.76), 0)))
 	set_focused_item(0 if playable else 1)
 

@@ -7,10 +7,9 @@ extends Button
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
+const CardLongText := preload("res://scenes/menu/card_long_text.gd")
 const CARD_SIZE := Vector2(300, 400)
 const THUMB_HEIGHT := 206.0
-## The least a focused card's thumbnail keeps, so the board stays recognisable.
-const THUMB_MIN_HEIGHT := 56.0
 ## Greyed (a board that cannot be played), but opaque: the backdrop never shows through text.
 const GREYED := Color(0.72, 0.72, 0.76, 1.0)
 
@@ -30,8 +29,7 @@ var locked := false
 var _box: VBoxContainer = null
 var _thumbnail: BoardThumbnail = null
 var _badges: MedalBadges = null
-var _long_text: Label = null  # the description or the error: shown whole while focused
-var _long_lines := 3  # how many of its lines show while the card is not focused
+var _long_text: CardLongText = null  # the description or the error: whole while focused
 
 
 ## Shows the card of `path` as "Loading…" until `setup` fills it in.
@@ -62,15 +60,15 @@ func setup(result: BoardLoadResult, best: String) -> void:
 		if not file_line.is_empty():
 			_add_label(file_line, &"HintLabel")
 		_add_label(best if not best.is_empty() else "Not played yet", &"HintLabel")
-		_long_text = _add_label(shown.description, &"HintLabel", true)
+		_long_text = _long(_add_label(shown.description, &"HintLabel", true), 3)
 		tooltip_text = shown.description
 	else:
 		_add_label("⚠ " + board_path.get_file(), &"WarningLabel")
 		var reason := result.error.trim_prefix(board_path + ": ")
-		_long_text = _add_label("Can't be played: " + reason, &"HintLabel", true, 4)
+		_long_text = _long(_add_label("Can't be played: " + reason, &"HintLabel", true, 4), 4)
 		tooltip_text = result.error
 	modulate = Color.WHITE if playable else GREYED
-	_fit_long_text()
+	_long_text.set_focused(has_focus())
 
 
 ## Maze progression: medals per mode under the title, or a locked card that cannot start
@@ -85,8 +83,8 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 		_box.add_child(_badges)
 		_box.move_child(_badges, 2)
 		# the medal row takes a line's height: the description gives one up to fit the card
-		_long_lines = 2
-		_fit_long_text()
+		if _long_text != null:
+			_long_text.set_resting_lines(2)
 	_badges.show_medals(
 		easy,
 		hard,
@@ -99,12 +97,10 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 	tooltip_text = hint if locked else level.description
 
 
-## True when the card shows every line of its description (or error).
-func shows_whole_text() -> bool:
-	if _long_text == null:
-		return true
-	var shown := _long_text.max_lines_visible
-	return shown < 0 or shown >= _long_text.get_line_count()
+## The card's description (or its error), fitted to the card and its focus; null while it
+## loads.
+func long_text() -> CardLongText:
+	return _long_text
 
 
 ## The medal row, or null when the card has none.
@@ -127,12 +123,11 @@ func _prepare(path: String) -> void:
 	theme_type_variation = &"CardButton"
 	custom_minimum_size = CARD_SIZE
 	focus_mode = Control.FOCUS_ALL
-	if not focus_entered.is_connected(_fit_long_text):
-		focus_entered.connect(_fit_long_text)
-		focus_exited.connect(_fit_long_text)
-		resized.connect(_fit_long_text)
+	if not focus_entered.is_connected(_on_focus_changed):
+		focus_entered.connect(_on_focus_changed)
+		focus_exited.connect(_on_focus_changed)
 	_long_text = null
-	_long_lines = 3
+	set_process(false)
 	if _box != null:
 		_box.free()  # at once: the card is refilled in place, nothing of the old box may linger
 	_badges = null
@@ -147,23 +142,19 @@ func _prepare(path: String) -> void:
 	_box.add_child(_thumbnail)
 
 
-# Unfocused, the long text keeps to its lines (ending in "…"); focused, the thumbnail gives
-# up height, down to THUMB_MIN_HEIGHT, so the long text shows whole (a 600-character board
-# description may still not fit: it shows as much as fits).
-func _fit_long_text() -> void:
-	if _long_text == null or _thumbnail == null:
-		return
-	if not has_focus():
-		_long_text.max_lines_visible = _long_lines
-		_thumbnail.custom_minimum_size.y = THUMB_HEIGHT
-		return
-	var line_height := _long_text.get_line_height() + _long_text.get_theme_constant("line_spacing")
-	var spare := int((THUMB_HEIGHT - THUMB_MIN_HEIGHT) / maxf(line_height, 1.0))
-	var wanted := _long_text.get_line_count()
-	var shown := mini(wanted, _long_lines + spare)
-	_long_text.max_lines_visible = maxi(shown, _long_lines)
-	var extra := maxi(shown - _long_lines, 0)
-	_thumbnail.custom_minimum_size.y = THUMB_HEIGHT - extra * line_height
+func _process(delta: float) -> void:
+	if _long_text != null:
+		_long_text.advance(delta)
+
+
+func _on_focus_changed() -> void:
+	if _long_text != null:
+		_long_text.set_focused(has_focus())
+	set_process(has_focus())
+
+
+func _long(label: Label, resting_lines: int) -> CardLongText:
+	return CardLongText.new(label, _thumbnail, THUMB_HEIGHT, resting_lines)
 
 
 func _add_label(words: String, variation: StringName, wraps := false, lines := 3) -> Label:
@@ -179,6 +170,4 @@ func _add_label(words: String, variation: StringName, wraps := false, lines := 3
 	# a long text is cut at the card's edge, never drawn over the next card
 	label.clip_text = true
 	_box.add_child(label)
-	if wraps:
-		_long_lines = lines
 	return label

@@ -14,14 +14,21 @@ const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const CardActionsMenu := preload("res://scenes/menu/card_actions_menu.gd")
 const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
 const LevelCard := preload("res://scenes/menu/level_card.gd")
+const Codec := preload("res://scripts/app/input_event_codec.gd")
 ## Room between cards, across and down (the grids' separations in the scene).
 const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.
 const MAX_COLUMNS := 4
-const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
+const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
+## At most this many files of a folder get a card (README "Safety"); the rest are counted.
+const MAX_LISTED := 200
+## At most this many loaded files fill their card in one frame, so a burst never stalls one.
+const FILLS_PER_FRAME := 24
+## At most this many cards are made in one frame: the screen shows at once and fills up.
+const SLOTS_PER_FRAME := 24
 
-## The game whose boards are listed ("pachinko" or "maze").
-var kind := "pachinko"
+## The game whose boards are listed (a name of BoardLevel.KIND_NAMES).
+var kind := BoardLevel.PACHINKO_NAME
 ## The player's boards folder (tests point it at a scratch folder before adding the screen).
 var user_root := BoardLoader.USER_DIR
 ## Loads one file (path, kind, root) -> BoardLoadResult; empty means BoardLoader.load_listed.
@@ -29,6 +36,13 @@ var user_root := BoardLoader.USER_DIR
 var load_one := Callable()
 
 var _loadings: Dictionary = {}  # the grid a loading fills -> its BoardListLoading
+var _importing: BoardListLoading = null  # imports check and copy off the main thread
+var _import_waiting := PackedStringArray()  # files dropped while an import was running
+var _import_lines := PackedStringArray()  # what happened to each file imported so far
+var _import_refused := false
+var _not_listed := 0  # files in My boards past MAX_LISTED
+var _unslotted: Dictionary = {}  # grid -> the listed paths that have no card yet
+var _early: Dictionary = {}  # grid -> {path: BoardLoadResult} loaded before its card was made
 var _first_focus: Control = null
 var _columns := 3
 # after a delete: the board whose card takes the focus (the next one), and where the list
@@ -48,6 +62,7 @@ var _kept_scroll := -1
 @onready var _dialogs: Dialogs = %Dialogs
 @onready var _scroll: ScrollContainer = %Scroll
 @onready var _card_menu: CardActionsMenu = %CardMenu
+@onready var _hint: Label = %Hint
 
 
 func _ready() -> void:
@@ -62,6 +77,10 @@ func _ready() -> void:
 	kind = App.level_select_kind
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
 	_status.text = ""
+	_hint.text = (
+		"Arrows / D-pad: choose a board · Enter / A: play · %s: its menu · Esc / B: back"
+		% _menu_keys()
+	)
 	reload()
 
 
@@ -69,18 +88,30 @@ func _exit_tree() -> void:
 	for loading: BoardListLoading in _loadings.values():
 		loading.cancel()
 	_loadings.clear()
+	if _importing != null:
+		_importing.cancel()
+		_importing = null
 
 
 func _process(_delta: float) -> void:
+	if _importing != null:
+		_poll_imports()
 	if _loadings.is_empty():
 		return
+	for grid: GridContainer in _unslotted.keys():
+		_add_slots(grid)
 	for grid: GridContainer in _loadings.keys():
 		var loading: BoardListLoading = _loadings[grid]
-		for done in loading.take_finished():
+		for done in loading.take_finished(FILLS_PER_FRAME):
 			var path: String = done["path"]
 			var result: BoardLoadResult = done["result"]
-			_fill(grid, path, result)
-		if not loading.is_busy():
+			var unslotted: Array[String] = _unslotted.get(grid, [] as Array[String])
+			if unslotted.has(path):
+				var early: Dictionary = _early.get_or_add(grid, {})
+				early[path] = result
+			else:
+				_fill(grid, path, result)
+		if not loading.is_busy() and not _unslotted.has(grid):
 			_loadings.erase(grid)
 	if _loadings.is_empty():
 		_loaded()
@@ -118,9 +149,9 @@ func use_folder(root: String) -> void:
 	reload()
 
 
-## True while some board file is still loading.
+## True while some board file is still loading or being imported.
 func is_loading() -> bool:
-	return not _loadings.is_empty()
+	return not _loadings.is_empty() or _importing != null
 
 
 ## Lists these load results as the shipped boards' cards (one per file, broken ones greyed),
@@ -130,7 +161,7 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 		_cancel(_grid)
 		_loadings.erase(_grid)
 	_clear(_grid)
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		results = MazeProgress.sorted(results)
 	for result in results:
 		_add_slot(_grid, result.path)
@@ -139,29 +170,51 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 	_loaded()
 
 
-## Imports board files (a drop on the window, or the file dialog's pick) into My boards and
-## says what happened to each.
+## Imports board files (a drop on the window, or the file dialog's pick) into My boards off
+## the main thread (each is read and checked first, which a large board makes slow), then
+## says what happened to each. Files dropped while an import runs wait for it to finish.
 func import_files(sources: PackedStringArray) -> void:
-	var lines := PackedStringArray()
-	var refused := false
-	for source in sources:
-		var outcome := UserBoards.import_file(source, user_root)
-		if outcome.has("error"):
-			refused = true
-			lines.append("Not imported: %s" % outcome["error"])
+	_import_waiting.append_array(sources)
+	if _importing == null:
+		_start_imports()
+
+
+# One thread imports the waiting files in order (each picks a free file name in turn).
+func _start_imports() -> void:
+	var jobs: Array[Dictionary] = []
+	for source in _import_waiting:
+		jobs.append({"path": source, "kind": BoardLevel.kind_named(kind), "root": user_root})
+	_import_waiting = PackedStringArray()
+	_importing = BoardListLoading.new(jobs, UserBoards.import_result, 1)
+	_say("Importing %d file%s…" % [jobs.size(), "" if jobs.size() == 1 else "s"], false)
+
+
+func _poll_imports() -> void:
+	for done in _importing.take_finished():
+		var result: BoardLoadResult = done["result"]
+		if not result.ok():
+			_import_refused = true
+			_import_lines.append("Not imported: %s" % result.error)
 			continue
-		var result: BoardLoadResult = outcome["result"]
 		var line := (
 			'Imported "%s" into My boards as %s'
-			% [result.level.display_name, str(outcome["path"]).get_file()]
+			% [result.level.display_name, result.path.get_file()]
 		)
 		var its_kind := BoardLevel.kind_name(result.level.kind)
 		if its_kind != kind:
 			line += (
 				" (a %s board: find it in the %s list)" % [its_kind, TITLES.get(its_kind, its_kind)]
 			)
-		lines.append(line + ".")
-	_say("\n".join(lines), refused)
+		_import_lines.append(line + ".")
+	if _importing.is_busy():
+		return
+	if not _import_waiting.is_empty():
+		_start_imports()
+		return
+	_importing = null
+	_say("\n".join(_import_lines), _import_refused)
+	_import_lines = PackedStringArray()
+	_import_refused = false
 	_load_section(_my_grid, user_root)
 
 
@@ -180,7 +233,9 @@ func open_card_menu(card: LevelCard) -> void:
 	var slot := card.get_parent() as LevelSlot
 	if slot == null:
 		return
-	_card_menu.open_for(card.board_path, card.get_global_rect(), card.playable, slot.is_mine())
+	# a locked maze board or one that did not load offers Play greyed, like its card
+	var can_play := card.playable and not card.disabled
+	_card_menu.open_for(card.board_path, card.get_global_rect(), can_play, slot.is_mine())
 
 
 ## The card menu (for tests).
@@ -243,14 +298,19 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	if _loadings.has(grid):
 		_cancel(grid)
 	_clear(grid)
-	var kind_value := _kind_enum(kind)
+	var kind_value := BoardLevel.kind_named(kind)
 	var jobs: Array[Dictionary] = []
 	var paths := BoardLoader.list_files(kind_value, root)
-	if kind == "maze" and grid == _grid:
+	if grid == _my_grid:
+		_not_listed = maxi(0, paths.size() - MAX_LISTED)
+		paths = paths.slice(0, MAX_LISTED)
+	if kind == BoardLevel.MAZE_NAME and grid == _grid:
 		paths = _in_maze_order(paths)
 	for path in paths:
-		_add_slot(grid, path)
 		jobs.append({"path": path, "kind": kind_value, "root": root})
+	_unslotted[grid] = paths
+	_early.erase(grid)
+	_add_slots(grid)
 	_loadings[grid] = BoardListLoading.new(jobs, load_one)
 	_update_summary()
 	_link_focus()
@@ -259,6 +319,23 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	elif not is_instance_valid(_first_focus):
 		_first_focus = first_card() if first_card() != null else _import
 		_first_focus.grab_focus()
+
+
+# Makes the next SLOTS_PER_FRAME cards of `grid` (filled at once when their file loaded first).
+func _add_slots(grid: GridContainer) -> void:
+	var paths: Array[String] = _unslotted.get(grid, [] as Array[String])
+	var count := mini(SLOTS_PER_FRAME, paths.size())
+	var early: Dictionary = _early.get(grid, {})
+	for path: String in paths.slice(0, count):
+		_add_slot(grid, path)
+		if early.has(path):
+			var result: BoardLoadResult = early[path]
+			_fill(grid, path, result)
+			early.erase(path)
+	if count == paths.size():
+		_unslotted.erase(grid)
+	else:
+		_unslotted[grid] = paths.slice(count)
 
 
 func _cancel(grid: GridContainer) -> void:
@@ -357,7 +434,7 @@ func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
 	for slot in grid.get_children():
 		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
 			(slot as LevelSlot).fill(result, _best_text(result))
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
 		_link_focus()
@@ -446,9 +523,14 @@ func _update_summary() -> void:
 	if waiting > 0:
 		text += ", %d loading…" % waiting
 	if broken > 0:
-		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
+		text += ", %d could not be loaded (greyed)" % broken
 	if locked > 0:
 		text += ", %d locked (finish the board before each to open it)" % locked
+	if _not_listed > 0:
+		text += (
+			"; %d more files in My boards are not listed (at most %d are)"
+			% [_not_listed, MAX_LISTED]
+		)
 	_summary.text = text
 
 
@@ -461,7 +543,7 @@ func _best_text(result: BoardLoadResult) -> String:
 	if not result.ok():
 		return ""
 	var board_id := result.level.board_id
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		var easy := App.best_maze_time(board_id, false)
 		var hard := App.best_maze_time(board_id, true)
 		if easy <= 0.0 and hard <= 0.0:
@@ -487,12 +569,21 @@ static func _shown_path(path: String) -> String:
 	return path.replace("user://", OS.get_user_data_dir() + "/")
 
 
+# The card menu's first key and first pad button as the player has them bound.
+static func _menu_keys() -> String:
+	var names := PackedStringArray()
+	for wanted: bool in [true, false]:
+		for event in App.settings.events_for("board_actions"):
+			if (event is InputEventKey) == wanted:
+				names.append(Codec.describe(event))
+				break
+	if names.size() == 2 and names[1].begins_with(names[0] + " /"):
+		names.remove_at(0)  # the X key and the pad's "X / Square" read as one
+	return " / ".join(names) if not names.is_empty() else "Right click"
+
+
 static func _is_navigation(event: InputEvent) -> bool:
 	for action: String in ["ui_up", "ui_down", "ui_left", "ui_right"]:
 		if event.is_action_pressed(action):
 			return true
 	return false
-
-
-static func _kind_enum(kind_name: String) -> int:
-	return BoardLevel.Kind.MAZE if kind_name == "maze" else BoardLevel.Kind.PACHINKO

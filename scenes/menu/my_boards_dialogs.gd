@@ -39,7 +39,6 @@ func _ready() -> void:
 	_delete_dialog.theme = THEME
 	_delete_dialog.title = "Delete a board"
 	_delete_dialog.ok_button_text = "Delete"
-	_delete_dialog.get_label().autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	_delete_dialog.confirmed.connect(func() -> void: delete_confirmed.emit(_delete_path))
 	add_child(_delete_dialog)
 
@@ -67,7 +66,8 @@ func ask_delete(board_path: String, shown_name: String) -> void:
 	_delete_dialog.dialog_text = (
 		"Delete %s from My boards?\nThis removes the file; it cannot be undone." % named
 	)
-	_delete_dialog.popup_centered(Vector2i(_fitted(Vector2i(720, 0)).x, 0))
+	_delete_dialog.reset_size()  # as small as its two lines: no blank half
+	_delete_dialog.popup_centered()
 	_delete_dialog.get_cancel_button().grab_focus()
 
 
@@ -97,6 +97,15 @@ func _file_dialog(mode: FileDialog.FileMode, title: String) -> FileDialog:
 	dialog.filters = PackedStringArray(FILTERS)
 	dialog.title = title
 	dialog.use_native_dialog = false
+	# one list of folders and board files, a path and a name: nothing a player must learn first
+	dialog.display_mode = FileDialog.DISPLAY_LIST
+	dialog.favorites_enabled = false
+	dialog.recent_list_enabled = false
+	dialog.layout_toggle_enabled = false
+	dialog.file_sort_options_enabled = false
+	dialog.hidden_files_toggle_enabled = false
+	dialog.deleting_enabled = false
+	dialog.overwrite_warning_enabled = true
 	add_child(dialog)
 	return dialog
 

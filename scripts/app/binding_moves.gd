@@ -101,8 +101,10 @@ static func _has_code(events: Array[InputEvent], code: String) -> bool:
 
 
 static func _shipped_together(defaults: Dictionary, a: String, b: String, code: String) -> bool:
+	var listed_a: Array = defaults.get(a, [])
+	var listed_b: Array = defaults.get(b, [])
 	var shipped_a: Array[InputEvent] = []
-	shipped_a.assign(defaults.get(a, []))
+	shipped_a.assign(listed_a)
 	var shipped_b: Array[InputEvent] = []
-	shipped_b.assign(defaults.get(b, []))
+	shipped_b.assign(listed_b)
 	return _has_code(shipped_a, code) and _has_code(shipped_b, code)

@@ -45,6 +45,8 @@ var fullscreen := false
 var show_frame_counter := false
 ## Show the ghost of the best maze run on the board and mode.
 var show_ghost := true
+## Draw the tilt maze in the tutorial's flat colours instead of wood and steel.
+var maze_tutorial_look := false
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
 ## Every maze board open from the start, instead of one after another.
@@ -92,6 +94,7 @@ func reset_to_defaults() -> void:
 	fullscreen = false
 	show_frame_counter = false
 	show_ghost = true
+	maze_tutorial_look = false
 	tilt_sensitivity = 1.0
 	unlock_all_boards = false
 	vibration = true
@@ -157,7 +160,7 @@ func set_value(key: String, value: Variant) -> void:
 		"fullscreen":
 			var on: bool = value
 			fullscreen = on
-		"show_frame_counter", "show_ghost", "unlock_all_boards":
+		"show_frame_counter", "show_ghost", "unlock_all_boards", "maze_tutorial_look":
 			var on: bool = value
 			set(key, on)
 		"tilt_sensitivity":
@@ -213,7 +216,8 @@ func save_file(path: String) -> Error:
 			{
 				"fullscreen": fullscreen,
 				"show_frame_counter": show_frame_counter,
-				"show_ghost": show_ghost
+				"show_ghost": show_ghost,
+				"maze_tutorial_look": maze_tutorial_look
 			}
 		],
 		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
@@ -254,6 +258,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
 	_read_flag(display, "show_ghost", problems)
+	_read_flag(display, "maze_tutorial_look", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	_read_flag(controls, "vibration", problems)
 	var progress: Dictionary = sections.get("progress", {})

@@ -26,7 +26,8 @@ static func run(path: String, version: int, take: Callable, words: Dictionary) -
 	if read.has("missing"):
 		return loaded
 	if read.has("error"):
-		loaded._set_aside(path, words["damaged"] % [path.get_file(), read["error"]])
+		var damaged: String = words["damaged"] % [path.get_file(), read["error"]]
+		loaded._set_aside(path, damaged)
 		return loaded
 	var file_version: int = read["version"]
 	if file_version > version:
@@ -34,9 +35,11 @@ static func run(path: String, version: int, take: Callable, words: Dictionary) -
 		loaded.message = words["newer"] % [path.get_file(), file_version]
 		return loaded
 	var problems: PackedStringArray = take.call(read["sections"], file_version)
-	problems.append_array(read["problems"])
+	var unreadable_lines: PackedStringArray = read["problems"]
+	problems.append_array(unreadable_lines)
 	if not problems.is_empty():
-		loaded._set_aside(path, words["partly"] % [path.get_file(), ", ".join(problems)])
+		var partly: String = words["partly"] % [path.get_file(), ", ".join(problems)]
+		loaded._set_aside(path, partly)
 	return loaded
 
 

@@ -11,6 +11,13 @@ extends Resource
 ## Setters emit `changed`; after editing a packed array in place call `notify_edited()`.
 
 enum Kind { PACHINKO, MAZE }
+## Each Kind's name, in Kind order: the one spelling of a game wherever it is text (a board
+## file's "kind", the folders levels/<name>/ and user://boards/<name>/, a replay's "game",
+## the command line, the game scenes).
+const KIND_NAMES: Array[String] = ["pachinko", "maze"]
+## KIND_NAMES[Kind.PACHINKO] and KIND_NAMES[Kind.MAZE], for code that names one game.
+const PACHINKO_NAME: String = KIND_NAMES[Kind.PACHINKO]
+const MAZE_NAME: String = KIND_NAMES[Kind.MAZE]
 
 ## The format this code writes. Older files are upgraded by the converter (tools/legacy_boards/).
 const CURRENT_VERSION := 1
@@ -317,9 +324,19 @@ func is_maze() -> bool:
 	return kind == Kind.MAZE
 
 
-## The folder name for a kind ("pachinko" / "maze").
+## The name of a kind (KIND_NAMES); an unknown kind is named as pachinko, the first.
 static func kind_name(of_kind: int) -> String:
-	return "maze" if of_kind == Kind.MAZE else "pachinko"
+	return KIND_NAMES[of_kind] if of_kind >= 0 and of_kind < KIND_NAMES.size() else PACHINKO_NAME
+
+
+## The Kind called `name` (KIND_NAMES), or -1 when it is no game's name (or no text).
+static func kind_named(name: Variant) -> int:
+	return KIND_NAMES.find(name) if name is String else -1
+
+
+## The names of the kinds for a message: "pachinko" or "maze" (quoted).
+static func kind_choices() -> String:
+	return " or ".join(KIND_NAMES.map(func(name: String) -> String: return '"%s"' % name))
 
 
 # A pocket or windmill edited on its own (in the inspector, say) changes the board too.

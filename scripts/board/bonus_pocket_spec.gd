@@ -72,12 +72,12 @@ func role_name() -> String:
 	return ROLE_NAMES[role]
 
 
-## Where a new bonus pocket of `role` goes in `pockets`: after the last one of the same or an
-## earlier role, so a board stays in role order (start pockets, attackers, tulips), the order
-## its file stores them in.
-static func role_slot(pockets: Array[BonusPocketSpec], role: int) -> int:
+## Where a new bonus pocket of `new_role` goes in `pockets`: after the last one of the same
+## or an earlier role, so a board stays in role order (start pockets, attackers, tulips), the
+## order its file stores them in.
+static func role_slot(pockets: Array[BonusPocketSpec], new_role: int) -> int:
 	var slot := 0
 	for i in pockets.size():
-		if pockets[i] != null and pockets[i].role <= role:
+		if pockets[i] != null and pockets[i].role <= new_role:
 			slot = i + 1
 	return slot

@@ -33,5 +33,6 @@ func near(point: Vector2) -> PackedInt32Array:
 	var base := key_of(point)
 	for dy in range(-1, 2):
 		for dx in range(-1, 2):
-			found.append_array(buckets.get(base + Vector2i(dx, dy), PackedInt32Array()))
+			var bucket: PackedInt32Array = buckets.get(base + Vector2i(dx, dy), PackedInt32Array())
+			found.append_array(bucket)
 	return found

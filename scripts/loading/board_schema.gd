@@ -152,21 +152,21 @@ const MAZE_LISTS: Array[String] = ["walls", "ball_starts", "holes"]
 const RENAMED_TUNING := {"gutter_slide_time": "drain_slide_time"}
 
 
-## The top-level fields a board of `kind_name` ("pachinko" / "maze") must have.
+## The top-level fields a board of `kind_name` (BoardLevel.KIND_NAMES) must have.
 static func fields_for(kind_name: String) -> Dictionary:
 	var fields := COMMON.duplicate()
-	fields.merge(PACHINKO if kind_name == "pachinko" else MAZE)
+	fields.merge(MAZE if kind_name == BoardLevel.MAZE_NAME else PACHINKO)
 	return fields
 
 
 ## The top-level fields a board of `kind_name` may leave out.
 static func optional_fields_for(kind_name: String) -> Dictionary:
-	return MAZE_OPTIONAL if kind_name == "maze" else {}
+	return MAZE_OPTIONAL if kind_name == BoardLevel.MAZE_NAME else {}
 
 
 ## The item lists a board of `kind_name` has.
 static func lists_for(kind_name: String) -> Array[String]:
-	return PACHINKO_LISTS if kind_name == "pachinko" else MAZE_LISTS
+	return MAZE_LISTS if kind_name == BoardLevel.MAZE_NAME else PACHINKO_LISTS
 
 
 ## "" when `value` fits `spec` ([type, min, max]), else what is wrong with it.
@@ -179,9 +179,7 @@ static func check_value(value: Variant, spec: Array) -> String:
 			return "" if value is bool else "must be true or false"
 		"kind":
 			return (
-				""
-				if value is String and value in ["pachinko", "maze"]
-				else ('must be "pachinko" or "maze"')
+				"" if BoardLevel.kind_named(value) >= 0 else "must be " + BoardLevel.kind_choices()
 			)
 		"string":
 			if not value is String:

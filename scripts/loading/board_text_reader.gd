@@ -51,10 +51,12 @@ static func _gather_lines(text: String) -> Dictionary:
 		if line.is_empty():
 			continue
 		if json.parse(line) != OK:
-			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
+			return _error(
+				"line %d is not valid JSON: %s" % [number + 1, JsonErrors.parse_error(json)]
+			)
 		if not json.data is Dictionary:
 			return _error("line %d is not a JSON object { ... }" % (number + 1))
-		var repeated := JsonKeys.repeated(line)
+		var repeated := JsonKeys.repeated(line, json.data)
 		if not repeated.is_empty():
 			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var object: Dictionary = json.data
@@ -91,8 +93,8 @@ static func _check_header(data: Dictionary) -> String:
 			% [version, Schema.FORMAT_VERSION]
 		)
 	var kind: Variant = data.get("kind")
-	if not kind is String or not kind in ["pachinko", "maze"]:
-		return '"kind" must be "pachinko" or "maze"'
+	if BoardLevel.kind_named(kind) < 0:
+		return '"kind" must be ' + BoardLevel.kind_choices()
 	return ""
 
 
@@ -223,7 +225,7 @@ static func _check_tuning(value: Variant) -> String:
 static func _build(data: Dictionary) -> BoardLevel:
 	var level := BoardLevel.new()
 	var kind: String = data["kind"]
-	level.kind = BoardLevel.Kind.MAZE if kind == "maze" else BoardLevel.Kind.PACHINKO
+	level.kind = BoardLevel.kind_named(kind) as BoardLevel.Kind
 	for field: String in Schema.fields_for(kind):
 		if field in ["format", "format_version", "kind"]:
 			continue

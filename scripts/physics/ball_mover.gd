@@ -213,14 +213,19 @@ func _set_radius(r: float) -> void:
 
 
 ## Narrow phase, ring: the ball's centre stays within ring radius - r of the centre.
-## Called only when it is past that. On the drain arc a bounce counts toward draining,
-## and so does time spent rolling there.
+## Called only when it is past that. A bounce then leaves the ball the ring's least
+## horizontal speed (as a pin does). On the drain arc a bounce counts toward draining, and
+## so does time spent rolling there.
 func _touch_ring() -> void:
 	var d: Vector2 = _p - _ring_center
 	var dist: float = sqrt(d.length_squared())
 	var nrm: Vector2 = -d / dist
 	_p = _ring_center + d * (_ring_lim / dist)
 	var bounced: bool = respond(ContactId.RING, _ring_center, d, nrm, _ring_lim, Surface.RING, 0)
+	# Only a bounce (the chapter's ring hit): a ball riding the ring up or down the rail
+	# must be free to stop and roll back, which a kept sideways speed would forbid.
+	if bounced and absf(_v.x) < _ring_min_speed_x:
+		_v.x = _ring_min_speed_x if _v.x >= 0.0 else -_ring_min_speed_x
 	if not _has_drain_arc or not _g.in_drain_arc(d):
 		return
 	if bounced:
@@ -450,8 +455,9 @@ func _touch_wheels(t: float) -> bool:
 
 ## The nearest blade of wheel `m` at `t` s into the step, answered if it touches the ball:
 ## the response runs in the blade's frame (the ball's speed less the blade's surface speed
-## at the contact), so a moving blade throws the ball; the ball is held to the top speed;
-## a free wheel gets the opposite angular impulse (queued, added up after the step).
+## at the contact), so a moving blade throws the ball; it keeps the blades' least
+## horizontal speed and is held to the top speed; a free wheel gets the opposite angular
+## impulse (queued, added up after the step).
 func _touch_blade(m: int, t: float) -> bool:
 	var c: Vector2 = _wheel_center[m]
 	var q: Vector2 = _p - c
@@ -484,6 +490,9 @@ func _touch_blade(m: int, t: float) -> bool:
 	_v -= surface_v
 	respond(id, axis, d, nrm, lim, surface, m)
 	_v += surface_v
+	var min_speed_x: float = _wheel_min_speed_x[m]
+	if absf(_v.x) < min_speed_x:
+		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 	var speed2: float = _v.length_squared()
 	if speed2 > _max_speed * _max_speed:
 		_v *= _max_speed / sqrt(speed2)

@@ -70,6 +70,7 @@ var _wall_inv_len2 := PackedFloat32Array()
 var _has_walls := false
 var _has_ring := false
 var _ring_center := Vector2.ZERO
+var _ring_min_speed_x := 0.0
 var _has_drain_arc := false
 var _has_sensors := false
 ## True when the sensors are zones alone (no holes, no goals): the mover then looks for a
@@ -89,6 +90,7 @@ var _wheel_angle := PackedFloat64Array()
 var _wheel_omega := PackedFloat64Array()
 var _wheel_free := PackedByteArray()
 var _wheel_inv_inertia := PackedFloat64Array()
+var _wheel_min_speed_x := PackedFloat64Array()
 var _wheel_start := PackedInt32Array()
 var _wheel_items := PackedInt32Array()
 var _wheel_margin := 0.0
@@ -242,6 +244,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_has_walls = not g.wall_a.is_empty()
 	_has_ring = g.has_ring
 	_ring_center = g.ring_center
+	_ring_min_speed_x = g.ring_min_speed_x
 	_has_drain_arc = g.has_drain_arc
 	_has_sensors = not (g.hole_pos.is_empty() and g.goal_pos.is_empty() and g.zone_pos.is_empty())
 	_zones_only = g.hole_pos.is_empty() and g.goal_pos.is_empty()
@@ -267,6 +270,7 @@ func _take_wheels(w: Windmills) -> void:
 	_wheel_omega = w.omega
 	_wheel_free = w.free
 	_wheel_inv_inertia = w.inv_inertia
+	_wheel_min_speed_x = w.min_speed_x
 	_wheel_start = w.start
 	_wheel_items = w.items
 	_wheel_margin = w.margin

@@ -48,8 +48,10 @@ const StageClock := preload("res://scripts/physics/stage_clock.gd")
 ## contact order, a changed response), so replays of older runs are refused by name instead
 ## of drifting (Replay.PHYSICS_VERSION). 2: ball pairs solved in stripes of cell rows.
 ## 3: a glancing cap (PhysicsTuning.CapContact.GLANCE) carries the ball on along its tangent
-## as the seed does, and PER_AXIS caps may hold x under y (x_cap_friction_time).
-const PHYSICS_VERSION := 3
+## as the seed does, and PER_AXIS caps may hold x under y (x_cap_friction_time). 4: a bounce
+## off the ring leaves the ball the ring's least horizontal speed, as a pin hit does (the
+## chapter).
+const PHYSICS_VERSION := 4
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
 ## hitch slows the game down instead of freezing it.
 const MAX_STEPS_PER_ADVANCE := 8

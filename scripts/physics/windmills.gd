@@ -36,6 +36,9 @@ var omega := PackedFloat64Array()
 var free := PackedByteArray()
 ## A free wheel's friction (rad/s²) and 1 / moment of inertia (in ball masses · px²).
 var friction := PackedFloat64Array()
+## Material: the least horizontal speed (px/s) a ball keeps after touching a blade, so none
+## balances in the V of two blades (as the pins' min_speed_x).
+var min_speed_x := PackedFloat64Array()
 var inv_inertia := PackedFloat64Array()
 ## The grid: wheels of cell c are items[start[c] .. start[c + 1]) (empty until bin()).
 var start := PackedInt32Array()
@@ -60,7 +63,8 @@ func add(
 	radius: float,
 	speed: float,
 	spins_free: bool,
-	slowing: float
+	slowing: float,
+	least_speed_x: float
 ) -> int:
 	var numbers_ok: bool = (
 		at.is_finite()
@@ -68,11 +72,14 @@ func add(
 		and is_finite(radius)
 		and is_finite(speed)
 		and is_finite(slowing)
+		and is_finite(least_speed_x)
+		and least_speed_x >= 0.0
 	)
 	if not numbers_ok or blade_count < 1 or blade_length <= 0.0 or radius <= 0.0 or slowing < 0.0:
-		var problem: String = "BallWorld.add_windmill: needs a finite centre, speed and friction >= 0,"
-		problem += " at least one blade, length > 0 and blade radius > 0 (got %s, %d, %s, %s, %s, %s)"
-		push_error(problem % [at, blade_count, blade_length, radius, speed, slowing])
+		var problem: String = "BallWorld.add_windmill: needs a finite centre and speed, friction and"
+		problem += " min_speed_x >= 0, at least one blade, length > 0 and blade radius > 0"
+		problem += " (got %s, %d, %s, %s, %s, %s, %s)"
+		push_error(problem % [at, blade_count, blade_length, radius, speed, slowing, least_speed_x])
 		return -1
 	center.append(at)
 	blades.append(blade_count)
@@ -83,6 +90,7 @@ func add(
 	omega.append(speed)
 	free.append(1 if spins_free else 0)
 	friction.append(slowing)
+	min_speed_x.append(least_speed_x)
 	inv_inertia.append(3.0 / (blade_count * BLADE_MASS * blade_length * blade_length))
 	min_blade_radius = minf(min_blade_radius, radius)
 	return center.size() - 1

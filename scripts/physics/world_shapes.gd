@@ -41,8 +41,9 @@ func is_wall_enabled(index: int) -> bool:
 ## tip cap) and radius `blade_radius`, turning about `center`. `speed` is in rad/s, positive
 ## clockwise on screen: a driven wheel (`free` false) keeps it; a free wheel starts at it,
 ## is spun by the balls that strike it and slowed by `friction` rad/s². Blade tips never
-## move faster than tuning.max_speed (a faster speed is held to it). Returns its index, or
-## -1 with an error on bad input.
+## move faster than tuning.max_speed (a faster speed is held to it). `min_speed_x` is the
+## blades' material, as a pin's (add_pin): the least horizontal speed a ball keeps after
+## touching one. Returns its index, or -1 with an error on bad input.
 func add_windmill(
 	center: Vector2,
 	blades: int,
@@ -50,9 +51,12 @@ func add_windmill(
 	blade_radius: float,
 	speed: float,
 	free: bool = false,
-	friction: float = 0.0
+	friction: float = 0.0,
+	min_speed_x: float = 0.0
 ) -> int:
-	var index: int = _wheels.add(center, blades, length, blade_radius, speed, free, friction)
+	var index: int = _wheels.add(
+		center, blades, length, blade_radius, speed, free, friction, min_speed_x
+	)
 	if index >= 0:
 		var cap: float = _max_tip_speed() / _wheels.reach[index]
 		_wheels.omega[index] = clampf(speed, -cap, cap)
@@ -75,9 +79,11 @@ func get_windmill_speed(index: int) -> float:
 	return _wheels.omega[index] if index >= 0 and index < _wheels.count() else 0.0
 
 
-## Sets the ring border: balls stay inside the circle.
-func set_ring(center: Vector2, radius: float) -> void:
-	_geo.set_ring(center, radius)
+## Sets the ring border: balls stay inside the circle. `min_speed_x` is its material, as a
+## pin's (add_pin): the least horizontal speed a ball keeps after bouncing off it (a ball
+## riding the ring keeps its own, so it can stop and roll back down the launch rail).
+func set_ring(center: Vector2, radius: float, min_speed_x := 0.0) -> void:
+	_geo.set_ring(center, radius, min_speed_x)
 
 
 ## Makes the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) drain:

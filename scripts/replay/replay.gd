@@ -27,8 +27,8 @@ const VERSION := 3
 const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
-const MAZE := "maze"
-const PACHINKO := "pachinko"
+const MAZE := BoardLevel.MAZE_NAME
+const PACHINKO := BoardLevel.PACHINKO_NAME
 ## Pachinko has one mode; the maze has easy and hard.
 const PACHINKO_MODE := "normal"
 ## Record kinds and how many numbers follow the name, per game.
@@ -43,7 +43,7 @@ const HUNDREDTHS := 100.0
 var format_version := VERSION
 ## The physics behaviour the run was recorded with (PHYSICS_VERSION when recorded here).
 var physics_version := PHYSICS_VERSION
-## "maze" or "pachinko".
+## The game's name (BoardLevel.KIND_NAMES).
 var game := MAZE
 ## The board's `board_id`.
 var board_id := ""
@@ -101,9 +101,9 @@ static func frame_tilt(record: Array, frame: int) -> Vector2i:
 	return Vector2i(x, y)
 
 
-## "maze" or "pachinko" for a board.
+## The game's name for a board (BoardLevel.KIND_NAMES).
 static func game_of(level: BoardLevel) -> String:
-	return MAZE if level.is_maze() else PACHINKO
+	return BoardLevel.kind_name(level.kind)
 
 
 ## Why this build cannot replay the run exactly, or "" when it can.

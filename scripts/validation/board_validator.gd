@@ -103,7 +103,7 @@ static func _check_tuning(tuning: PhysicsTuning, issues: Array[BoardIssue]) -> v
 		var low: float = fields[name][1]
 		var high: float = fields[name][2]
 		var value: Variant = tuning.get(name)
-		var parts: Array = [value.x, value.y] if value is Vector2 else [float(value)]
+		var parts: Array = [value.x, value.y] if value is Vector2 else [value]
 		for part: float in parts:
 			if not is_finite(part) or part < low or part > high:
 				var text := (

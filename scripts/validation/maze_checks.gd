@@ -4,6 +4,7 @@ extends RefCounted
 ## grown by the ball radius, so a cell is free exactly where a ball's centre fits).
 
 const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
+const MazeLimits := preload("res://scripts/validation/maze_limits.gd")
 const MazeGaps := preload("res://scripts/validation/maze_gaps.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
@@ -19,6 +20,9 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 		_skipped_reachability(
 			"the maze's grid, walls, goal or starts have the errors above", issues
 		)
+		return
+	if not MazeLimits.check(level, issues):
+		_skipped_reachability("the maze is past the size limits above", issues)
 		return
 	var walls_ok := _check_walls(level, issues)
 	var bad_starts := _check_points(level, issues)

@@ -33,7 +33,9 @@ static func tuning_for(level: BoardLevel) -> PhysicsTuning:
 
 
 static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
-	world.set_ring(level.ring_center, level.ring_radius)
+	# The ring shares the pins' material: the chapter resolves a ring hit as a pin hit.
+	var least_speed_x := maxf(world.tuning.min_horizontal_speed, 0.0)
+	world.set_ring(level.ring_center, level.ring_radius, least_speed_x)
 	var slide_time := maxf(world.tuning.drain_slide_time, 0.0)
 	var bounces := maxi(level.gutter_bounces, 1)
 	# The gutter: the drain arc of the ring.
@@ -57,14 +59,16 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.add_wall(deflector[0], deflector[1], LaunchRail.GUIDE_WALL_RADIUS)
 	# Zone 0: a ball that rolls back down the rail lands here and returns to the cup.
 	world.add_zone(LaunchRail.return_zone_center(level), LaunchRail.return_zone_radius(level))
-	# The windmills: world windmill i is the level's windmill i.
+	# The windmills: world windmill i is the level's windmill i; their blades share the
+	# pins' material, so no ball balances in the V of two blades.
 	for spec in level.windmills:
 		if spec != null:
-			add_windmill(world, spec)
+			add_windmill(world, spec, min_speed_x)
 
 
-## Adds `spec` to `world` as a windmill (degrees in the board, radians in the world).
-static func add_windmill(world: BallWorld, spec: WindmillSpec) -> int:
+## Adds `spec` to `world` as a windmill (degrees in the board, radians in the world), its
+## blades keeping a ball's horizontal speed at `min_speed_x` or more.
+static func add_windmill(world: BallWorld, spec: WindmillSpec, min_speed_x: float) -> int:
 	var speed := 0.0 if spec.free_spin else deg_to_rad(spec.speed)
 	var friction := deg_to_rad(spec.friction) if spec.free_spin else 0.0
 	return world.add_windmill(
@@ -74,7 +78,8 @@ static func add_windmill(world: BallWorld, spec: WindmillSpec) -> int:
 		WindmillSpec.BLADE_RADIUS,
 		speed,
 		spec.free_spin,
-		friction
+		friction,
+		min_speed_x
 	)
 
 

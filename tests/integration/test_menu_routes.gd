@@ -10,6 +10,8 @@ const PACHINKO := "res://scenes/pachinko/pachinko_game.tscn"
 ## sorts first and is removed afterwards.
 const ROOT := "user://boards"
 const MY_BOARD := "0_test_menu_route.board"
+## Where the trap test's file dialogs open.
+const EXPORTS := "user://test_menu_routes_exports"
 ## Enough frames for a deferred scene change and a level select's loading.
 const MAX_FRAMES := 600
 
@@ -23,6 +25,7 @@ func before_each() -> void:
 	away.position = Vector2(2, 2)
 	get_tree().root.push_input(away)
 	DirAccess.make_dir_recursive_absolute(ROOT + "/pachinko")
+	DirAccess.make_dir_recursive_absolute(EXPORTS)
 	var file := FileAccess.open("%s/pachinko/%s" % [ROOT, MY_BOARD], FileAccess.WRITE)
 	file.store_buffer(FileAccess.get_file_as_bytes("res://levels/pachinko/classic.board"))
 	file.close()
@@ -39,6 +42,11 @@ func after_each() -> void:
 
 func after_all() -> void:
 	DirAccess.remove_absolute("%s/pachinko/%s" % [ROOT, MY_BOARD])
+	for file_name in DirAccess.get_files_at(EXPORTS):
+		DirAccess.remove_absolute(EXPORTS.path_join(file_name))
+	DirAccess.remove_absolute(EXPORTS)
+	# the route picked the board this test removes: later scenes must not ask for it
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
 
 
 func test_escape_leaves_the_level_select_without_a_script_error() -> void:
@@ -53,6 +61,33 @@ func test_escape_leaves_the_level_select_without_a_script_error() -> void:
 	var menu := await _became(MAIN_MENU)
 	assert_not_null(menu, "Esc goes back to the title screen")
 	assert_engine_error_count(0, "no error on the way out (was: set_input_as_handled on null)")
+
+
+func test_down_enter_enter_on_a_card_never_writes_a_file() -> void:
+	# the old trap: Down went to the card's Export button, Enter opened the file dialog and a
+	# second Enter wrote <documents>/classic.board without the player meaning to export
+	_keys = true
+	var screen := await _open(App.go_to_level_select.bind("pachinko"), LEVEL_SELECT)
+	await _loaded(screen)
+	var dialogs := screen.get_node("%Dialogs")
+	dialogs.set("start_folder", ProjectSettings.globalize_path(EXPORTS))
+	var exported: Array[String] = []
+	dialogs.connect(
+		"export_chosen", func(_board: String, target: String) -> void: exported.append(target)
+	)
+	var targets: Array[String] = []
+	for dialog in dialogs.get_children():
+		if dialog is FileDialog:
+			targets.append((dialog as FileDialog).current_path)
+	assert_eq(_focused_text(), "", "a card has the focus")
+	for action: String in ["ui_down", "ui_accept", "ui_accept"]:
+		await _press(action)
+	assert_eq(exported, [] as Array[String], "nothing was exported")
+	assert_eq(DirAccess.get_files_at(EXPORTS).size(), 0, "no file in the start folder")
+	for target in targets:
+		assert_false(FileAccess.file_exists(target), "no file at %s" % target)
+	for stray in exported:
+		DirAccess.remove_absolute(stray)  # what the old trap wrote, cleaned away
 
 
 func test_keys_alone_reach_a_board_of_my_own_and_come_back() -> void:
@@ -87,6 +122,12 @@ func _route_to_my_board_and_back() -> void:
 		str(focused.get("board_path")) if focused != null else "", wanted, "Down reaches My boards"
 	)
 	assert_lt(seen.size(), 4, "one press per row: %s" % ", ".join(seen))
+	await _press("board_actions")
+	var card_menu: PopupMenu = screen.call("card_menu")
+	assert_true(card_menu.visible, "X / Square opens the card's menu")
+	await _press("ui_cancel")
+	assert_false(card_menu.visible, "Esc / B closes it again")
+	assert_eq(str(get_viewport().gui_get_focus_owner().get("board_path")), wanted, "on my card")
 	await _press("ui_accept")
 	var game := await _became(PACHINKO)
 	assert_not_null(game, "Enter / A plays the board")

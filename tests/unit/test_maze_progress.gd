@@ -16,8 +16,8 @@ var _real_save: RefCounted = null
 
 func before_each() -> void:
 	_real_save = App.save_data
-	var scratch: RefCounted = SaveDataScript.new()
-	scratch.call("load_file", SAVE)
+	var scratch := SaveDataScript.new()
+	scratch.load_file(SAVE)
 	App.save_data = scratch
 	App.settings.unlock_all_boards = false
 
@@ -108,13 +108,13 @@ func test_easy_and_hard_keep_their_own_medal_and_time() -> void:
 
 func _maze_cards() -> Array[LevelCard]:
 	App.level_select_kind = "maze"
-	var screen := LevelSelectScene.instantiate() as Control
+	var screen := LevelSelectScene.instantiate() as LevelSelect
 	# a scratch My boards folder: the tests never see the player's own boards
 	screen.set("user_root", EMPTY_USER_ROOT)
 	add_child_autofree(screen)
-	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	var out: Array[LevelCard] = []
-	for card: Button in screen.call("cards"):
+	for card: Button in screen.cards():
 		out.append(card as LevelCard)
 	return out
 

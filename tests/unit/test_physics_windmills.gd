@@ -195,3 +195,16 @@ func test_windmill_world_is_bit_identical_for_1_2_and_4_threads() -> void:
 	assert_eq(hashes[2], hashes[0])
 	assert_eq(hits[1], hits[0])
 	assert_eq(hits[2], hits[0])
+
+
+func test_a_ball_never_rests_on_a_blade_with_the_boards_least_sideways_speed() -> void:
+	var w := BallWorld.new(TuningPresets.pachinko())
+	var least: float = w.tuning.min_horizontal_speed
+	# A wheel held still with blade 0 flat along +x: a ball dropped on it would lie there.
+	w.add_windmill(Vector2.ZERO, 4, LENGTH, BLADE_R, 0.0, false, 0.0, least)
+	w.build_grid()
+	var id := w.spawn_ball(Vector2(14.0, -60.0), Vector2.ZERO, BALL_R)
+	for _i: int in 360:
+		w.step(DT)
+	var p := w.get_ball_position(id)
+	assert_true(p.y > 0.0 or absf(p.x) > LENGTH + BALL_R, "the ball rolled off, at %s" % p)

@@ -3,9 +3,11 @@
 # and no project, as a player's machine would have it:
 #   (a) both headless autoplays run from the unpacked folder inside a debootstrapped bookworm
 #       root, and their JSON equals the build tree's game (same seed, same state hash);
-#   (b) the window opens there under Xvfb for 15 s: screenshot build/release-check/menu.png,
-#       every library the running game has mapped comes from the folder, and it printed none
-#       of the warnings a player should not see (fontconfig, XKB, ALSA, GL loader);
+#   (b) the window opens there under Xvfb for 15 s: screenshot build/release-check/menu.png;
+#       then the keyboard (xdotool) opens Tilt Maze's first board: maze.png, the 3D board
+#       drawn by the folder's Mesa; every library the running game has mapped comes from the
+#       folder, and it printed none of the warnings a player should not see (fontconfig,
+#       XKB, ALSA, GL loader);
 #   (c) no ELF in the folder names a path outside it (tools/release/elf_paths.py);
 #   (d) a missing and a damaged file each get the launcher's one sentence naming the file.
 # Prints SKIPPED with the reason and exits 77 when this machine cannot do it (no root, no
@@ -28,11 +30,18 @@ reason=$(mktemp)
 rootfs=$("$HERE/bookworm_root.sh" 2>"$reason") || { r=$(tail -n 1 "$reason"); rm -f "$reason"; skip "$r"; }
 rm -f "$reason"
 
+# a check that was killed (no EXIT trap ran) leaves its scratch folder: drop those whose
+# process is gone, and never count another running check's folder as part of the root
+for stale in "$rootfs"/tmp/release-check.*; do
+	[ -d "$stale" ] || continue
+	kill -0 "${stale##*.}" 2>/dev/null || rm -rf "$stale"
+done
 # the root must be clean: no Godot, no project, no X or GL libraries of its own
-leftover=$(find "$rootfs" -xdev \( -iname '*godot*' -o -name project.godot -o -name 'libX11.so*' \
+leftover=$(find "$rootfs" -xdev -path "$rootfs/tmp/release-check.*" -prune -o \( -iname '*godot*' -o -name project.godot -o -name 'libX11.so*' \
 	-o -name 'libGL*.so*' -o -name 'libasound.so*' \) -print -quit 2>/dev/null)
 [ -z "$leftover" ] || { echo "release-check: the Debian 12 root is not clean ($leftover); remove $rootfs* to remake it." >&2; exit 1; }
 
+rm -rf "$REPORT"
 mkdir -p "$REPORT"
 work=/tmp/release-check.$$ # inside the root
 scratch=$rootfs$work
@@ -82,13 +91,21 @@ for spec in "pachinko 60" "maze 60"; do
 done
 
 # (b) the window under Xvfb
-if ! command -v Xvfb >/dev/null || ! command -v xwd >/dev/null || ! command -v xwdtopnm >/dev/null; then
-	if command -v apt-get >/dev/null; then
-		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq xvfb x11-apps netpbm >/dev/null 2>&1 || true
-	fi
+have_x_tools() {
+	command -v Xvfb >/dev/null && command -v xwd >/dev/null && command -v xwdtopnm >/dev/null &&
+		command -v xdotool >/dev/null
+}
+if ! have_x_tools && command -v apt-get >/dev/null; then
+	DEBIAN_FRONTEND=noninteractive apt-get install -y -qq xvfb x11-apps netpbm xdotool >/dev/null 2>&1 || true
 fi
-if ! command -v Xvfb >/dev/null || ! command -v xwd >/dev/null || ! command -v xwdtopnm >/dev/null; then
-	echo "release-check: SKIPPED the window part: no Xvfb, xwd or netpbm here (apt-get install xvfb x11-apps netpbm)"
+shoot() { # display name: the whole screen as build/release-check/NAME.png; prints its brightness
+	xwd -root -display "$1" 2>/dev/null | xwdtopnm 2>/dev/null >"$REPORT/$2.ppm"
+	pnmtopng <"$REPORT/$2.ppm" >"$REPORT/$2.png" 2>/dev/null
+	python3 "$HERE/mean_brightness.py" "$REPORT/$2.ppm" 2>/dev/null || echo 0
+	rm -f "$REPORT/$2.ppm"
+}
+if ! have_x_tools; then
+	echo "release-check: SKIPPED the window part: no Xvfb, xwd, netpbm or xdotool here (apt-get install xvfb x11-apps netpbm xdotool)"
 else
 	n=90
 	while [ -e "/tmp/.X11-unix/X$n" ] || [ -e "/tmp/.X$n-lock" ]; do n=$((n + 1)); done
@@ -99,7 +116,22 @@ else
 	game_pid=$!
 	sleep 15
 	engine=$(pgrep -f "^$game/engine/board-studio --library-path" | head -n 1)
-	xwd -root -display ":$n" 2>/dev/null | xwdtopnm 2>/dev/null | pnmtopng >"$REPORT/menu.png" 2>/dev/null
+	menu_light=$(shoot ":$n" menu)
+	# Tilt Maze (second button), then its first board once the level select has loaded it:
+	# Enter until the light maze board fills the screen (the menus are dark), 40 s at most.
+	maze_light=0
+	window=$(DISPLAY=":$n" xdotool search --name "Board Studio" 2>/dev/null | head -n 1)
+	if [ -n "$window" ]; then
+		DISPLAY=":$n" xdotool windowfocus "$window" key Down sleep 0.5 key Return
+		for _ in $(seq 20); do
+			sleep 2
+			maze_light=$(shoot ":$n" maze)
+			[ "$maze_light" -gt 128 ] && break
+			DISPLAY=":$n" xdotool windowfocus "$window" key Return
+		done
+		sleep 3 # the balls roll in after the board appears
+		maze_light=$(shoot ":$n" maze)
+	fi
 	outside=
 	if [ -n "$engine" ]; then
 		outside=$(awk '$6 ~ /\.so/ { print $6 }' "/proc/$engine/maps" | sort -u | grep -v "^$scratch/$folder_name/" || true)
@@ -117,10 +149,15 @@ else
 	else
 		ok "the window ran 15 s; all $mapped libraries it mapped are the folder's"
 	fi
-	if [ -s "$REPORT/menu.png" ]; then
-		ok "screenshot of the window: $REPORT/menu.png"
+	if [ -s "$REPORT/menu.png" ] && [ "$menu_light" -gt 8 ]; then
+		ok "the main menu drew (brightness $menu_light; screenshot $REPORT/menu.png)"
 	else
-		fail "no screenshot could be taken"
+		fail "the window drew nothing at the main menu ($REPORT/menu.png)"
+	fi
+	if [ "$maze_light" -gt 128 ]; then
+		ok "the maze board drew in 3D (brightness $maze_light; screenshot $REPORT/maze.png)"
+	else
+		fail "the maze board never showed (last screenshot $REPORT/maze.png)"
 	fi
 	noise=$(grep -iE 'fontconfig|xkbcommon|compose|ALSA lib|MESA-LOADER|libEGL warning|glx: failed|cannot open shared|not found' \
 		"$REPORT/window.log" | head -n 5)

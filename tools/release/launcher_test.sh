@@ -29,7 +29,8 @@ crash-hw) [ -n "${LIBGL_ALWAYS_SOFTWARE:-}" ] || kill -SEGV $$ ;;
 fail) exit 1 ;;
 esac
 echo "args: $*"
-echo "software: ${LIBGL_ALWAYS_SOFTWARE:-no}"
+echo "software: ${LIBGL_ALWAYS_SOFTWARE:-no} ${__GLX_VENDOR_LIBRARY_NAME:-any}"
+echo "alsa: ${ALSA_CONFIG_PATH:-system}"
 EOF
 	chmod 755 "$folder/board-studio" "$folder/engine/board-studio"
 	echo "engine" >"$folder/engine/godot"
@@ -87,6 +88,12 @@ run FAKE=fail -- --headless
 [ "$status" = 1 ] && [ -z "$err" ]
 check "a game that exits with an error of its own gets no extra words" $? "status $status, err '$err'"
 
+chmod -x "$game/engine/board-studio"
+run -- --headless
+[ "$status" = 126 ] && [[ $err == *"the system refused to run the engine in its folder ($game)"* ]]
+check "a folder where programs may not run (noexec) is said in one sentence" $? "status $status, err '$err'"
+chmod +x "$game/engine/board-studio"
+
 rm "$game/MANIFEST"
 run -- --headless
 [ "$status" = 1 ] && [[ $err == *"the file MANIFEST is missing from its folder ($game)."* ]]
@@ -102,7 +109,7 @@ run -- --headless -- --help
 check "no display is fine for --headless" $? "status $status, err '$err'"
 
 run DISPLAY=:99 FAKE=crash-hw --
-[ "$status" = 0 ] && [[ $err == *"starting again with Mesa's software renderer"* ]] && [[ $out == *"software: 1"* ]]
+[ "$status" = 0 ] && [[ $err == *"starting again with Mesa's software renderer"* ]] && [[ $out == *"software: 1 mesa"* ]]
 check "a crash at the start of a window retries once with the software renderer" $? "status $status, out '$out', err '$err'"
 
 run DISPLAY=:99 FAKE=crash --
@@ -110,7 +117,23 @@ run DISPLAY=:99 FAKE=crash --
 check "a crash that stays is one sentence after one retry, never a loop" $? "status $status, err '$err'"
 
 run DISPLAY=:99 BOARD_STUDIO_SOFTWARE_GL=1 --
-[ "$status" = 0 ] && [[ $out == *"software: 1"* ]]
+[ "$status" = 0 ] && [[ $out == *"software: 1 mesa"* ]]
 check "BOARD_STUDIO_SOFTWARE_GL=1 asks Mesa for the software renderer" $? "status $status, out '$out'"
+
+run PULSE_SERVER=unix:/tmp/some-server -- --headless
+if [ -f /usr/share/alsa/alsa.conf ]; then
+	[[ $out == *"alsa: system"* ]]
+else
+	[[ $out == *"alsa: $game/engine/share/alsa/alsa.conf"* ]]
+fi
+check "with a sound server, ALSA keeps the system's config where there is one" $? "out '$out'"
+
+run XDG_RUNTIME_DIR="$tmp/no-such-dir" -- --headless
+if ls /dev/snd/pcmC* >/dev/null 2>&1; then
+	[[ $out == *"alsa: "* ]] # a sound card here: either is right
+else
+	[[ $out == *"alsa: $game/engine/share/alsa/alsa.conf"* ]]
+fi
+check "with no sound card and no sound server, ALSA gets the folder's silent config" $? "out '$out'"
 
 exit $failed

@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# make test's release part: the launcher's error-path tests always; then, when this machine
-# can, make release and the release check (tools/release/check.sh). Prints SKIPPED with the
-# reason for the part it cannot do. Exit 0 passed, 1 failed, 77 the release check skipped.
+# make test's release part: the tests of the launcher's error paths and of elf_paths.py
+# always; then, when this machine can, make release and the release check
+# (tools/release/check.sh). Prints SKIPPED with the reason for the part it cannot do.
+# Exit 0 passed, 1 failed, 77 the release check skipped.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$ROOT" || exit 1
 skip() { echo "release check: SKIPPED: $*"; exit 77; }
 
-tools/release/launcher_test.sh || exit 1
+status=0
+tools/release/launcher_test.sh || status=1
+tools/release/elf_paths_test.sh || status=1
+[ "$status" = 0 ] || exit 1
 
 GODOT=$(sed -n 's/^GODOT=//p' build/tools.env 2>/dev/null)
 PREFIX=$(sed -n 's/^GODOT_PREFIX=//p' build/tools.env 2>/dev/null)

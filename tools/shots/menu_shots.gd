@@ -1,12 +1,15 @@
 extends RefCounted
-## The menu shots: the title screen, each game's level select, and the settings over the
-## title screen (as its Settings button shows them).
+## The menu shots: the title screen, each game's level select, a card's menu and the My
+## boards dialogs, the settings over the title screen (as its Settings button shows them),
+## and the pause menu over a game.
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const SETTINGS := "res://scenes/menu/settings_menu.tscn"
+const PACHINKO := "res://scenes/pachinko/pachinko_game.tscn"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
 	"menu_main",
@@ -14,7 +17,11 @@ const NAMES: Array[String] = [
 	"menu_level_select_pachinko",
 	"menu_level_select_maze",
 	"menu_my_boards",
+	"menu_card_menu",
+	"menu_export_dialog",
+	"menu_delete_dialog",
 	"menu_settings",
+	"menu_pause",
 ]
 ## The problems the notice shot shows: as many lines as a badly damaged user folder gives.
 const NOTICE_PROBLEMS: Array[String] = [
@@ -36,31 +43,63 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	match shot_name:
 		"menu_main":
 			# The title screen focuses the game whose level select was seen last.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_notice":
 			# What a player sees after the game kept a damaged settings file aside.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			for problem: String in NOTICE_PROBLEMS:
 				App.pending_problems.append(problem)
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_level_select_pachinko":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 		"menu_level_select_maze":
 			_sample_progress()
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("maze"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.MAZE_NAME), LEVEL_SELECT
 			)
 			if screen != null:
-				await _wait_loaded(tree, screen)
+				await _wait_loaded(tree, screen as LevelSelect)
 		"menu_my_boards":
+			screen = await ScreenOpener.open(
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
+			)
+			if screen != null:
+				await _show_my_boards(tree, screen as LevelSelect)
+		"menu_card_menu":
+			screen = await _level_select(tree, "pachinko")
+			if screen != null:
+				# on the second card, as the board_actions key (X / Square) opens it
+				await _press(tree, &"ui_right")
+				await _press(tree, &"board_actions")
+		"menu_export_dialog":
+			screen = await _level_select(tree, "pachinko")
+			if screen != null:
+				var card: Control = screen.call("first_card")
+				screen.get_node("%Dialogs").call("ask_export", str(card.get("board_path")))
+		"menu_delete_dialog":
 			screen = await ScreenOpener.open(
 				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
 			)
 			if screen != null:
-				await _show_my_boards(tree, screen)
+				await _show_my_boards(tree, screen as LevelSelect)
+				var slots: Array = screen.call("my_slots")
+				if not slots.is_empty():
+					var card: Control = slots[0].get("card")
+					screen.get_node("%Dialogs").call(
+						"ask_delete", str(card.get("board_path")), slots[0].call("shown_name")
+					)
+		"menu_pause":
+			App.request_board("pachinko", "res://levels/pachinko/classic.board")
+			screen = await ScreenOpener.open(
+				tree,
+				App.start_game.bind("pachinko", "res://levels/pachinko/classic.board"),
+				PACHINKO
+			)
+			if screen != null:
+				await _press(tree, &"pause")
 		"menu_settings":
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 			if screen != null:
@@ -73,6 +112,24 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if screen == null:
 		return ERR_CANT_OPEN
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
+
+
+static func _level_select(tree: SceneTree, game: String) -> Node:
+	var screen := await ScreenOpener.open(tree, App.go_to_level_select.bind(game), LEVEL_SELECT)
+	if screen != null:
+		await _wait_loaded(tree, screen)
+	return screen
+
+
+# Presses and lets go of an input action, as a key or a pad button would.
+static func _press(tree: SceneTree, action: StringName) -> void:
+	for pressed: bool in [true, false]:
+		var event := InputEventAction.new()
+		event.action = action
+		event.pressed = pressed
+		Input.parse_input_event(event)
+		await tree.process_frame
+	await tree.process_frame
 
 
 # A player one board in: medals on the first maze, the second open, the rest locked.
@@ -93,9 +150,9 @@ static func _sample_progress() -> void:
 
 
 # Waits until every card of the level select has loaded (their files load off the main thread).
-static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
+static func _wait_loaded(tree: SceneTree, screen: LevelSelect) -> void:
 	for frame in 240:
-		if not screen.call("is_loading"):
+		if not screen.is_loading():
 			break
 		await tree.process_frame
 	for frame in 3:
@@ -104,20 +161,20 @@ static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
 
 # Fills a scratch My boards folder (one imported board, one refused file), imports the
 # board as the Import button would, and scrolls to the section.
-static func _show_my_boards(tree: SceneTree, screen: Node) -> void:
+static func _show_my_boards(tree: SceneTree, screen: LevelSelect) -> void:
 	_empty_folder(SHOT_BOARDS + "/pachinko")
 	DirAccess.make_dir_recursive_absolute(SHOT_BOARDS + "/pachinko")
 	var refused := FileAccess.open(SHOT_BOARDS + "/pachinko/bouncy.board", FileAccess.WRITE)
 	refused.store_buffer(FileAccess.get_file_as_bytes(REFUSED_BOARD))
 	refused.close()
-	screen.call("use_folder", SHOT_BOARDS)
+	screen.use_folder(SHOT_BOARDS)
 	var source := ProjectSettings.globalize_path("res://levels/pachinko/windmills.board")
-	screen.call("import_files", PackedStringArray([source]))
+	screen.import_files(PackedStringArray([source]))
 	for frame in 120:
 		await tree.process_frame
-		if not screen.call("is_loading"):
+		if not screen.is_loading():
 			break
-	var slots: Array = screen.call("my_slots")
+	var slots: Array = screen.my_slots()
 	if not slots.is_empty():
 		(slots[0].get("card") as Control).grab_focus()
 	for frame in 10:

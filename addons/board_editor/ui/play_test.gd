@@ -8,8 +8,8 @@ const REQUEST_PATH := PlaytestRequest.PATH
 ## Godot's editor setting "save all scenes before running".
 const SAVE_BEFORE_RUNNING := "run/auto_save/save_before_running"
 const GAME_SCENES := {
-	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
-	"maze": "res://scenes/maze/maze_game.tscn",
+	BoardLevel.PACHINKO_NAME: "res://scenes/pachinko/pachinko_game.tscn",
+	BoardLevel.MAZE_NAME: "res://scenes/maze/maze_game.tscn",
 }
 
 

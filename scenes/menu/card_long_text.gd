@@ -1,0 +1,122 @@
+extends RefCounted
+## The long text of a level select card (its description, or why it cannot be played). While
+## the card is not focused it keeps to a few lines, ending in "…". On the focused card the
+## thumbnail gives up height (down to THUMB_MIN_HEIGHT) so the text shows whole; a text longer
+## still (a description may have 600 characters) reads through: it moves up a line every
+## READ_SECONDS until its last line has shown, rests, and starts again from the top. The
+## card keeps its size throughout, so nothing around it moves.
+
+const THUMB_MIN_HEIGHT := 56.0
+const READ_SECONDS := 1.5
+const END_REST_SECONDS := 2.5
+
+## The label that holds the text.
+var label: Label = null
+
+var _thumbnail: Control = null
+var _thumb_height := 0.0
+var _resting_lines := 3
+var _focused := false
+var _hidden_lines := 0  # lines that do not fit even with the thumbnail at its least
+var _clock := 0.0
+
+
+## `text_label` shows the text in `resting_lines` lines under `thumbnail` (whose full height
+## is `thumb_height`).
+func _init(text_label: Label, thumbnail: Control, thumb_height: float, resting_lines: int) -> void:
+	label = text_label
+	_thumbnail = thumbnail
+	_thumb_height = thumb_height
+	_resting_lines = resting_lines
+	label.resized.connect(fit)
+
+
+## How many lines show while the card is not focused (a maze card's medal row takes one).
+func set_resting_lines(lines: int) -> void:
+	_resting_lines = lines
+	fit()
+
+
+## The card took (true) or lost the focus.
+func set_focused(focused: bool) -> void:
+	_focused = focused
+	_clock = 0.0
+	label.lines_skipped = 0
+	fit()
+
+
+## Sizes the thumbnail and the text for the card's focus (again after any resize).
+func fit() -> void:
+	if not _focused or label.size.x <= 0.0:
+		_show_lines(_resting_lines)
+		_thumbnail.custom_minimum_size.y = _thumb_height
+		_hidden_lines = 0
+		return
+	var line_height := _line_height()
+	# the text's height with the thumbnail at its full size, and what the whole text needs
+	var room := label.size.y - (_thumb_height - _thumbnail.custom_minimum_size.y)
+	var wanted := wrapped_lines()
+	var most := floori((room + _thumb_height - THUMB_MIN_HEIGHT) / line_height)
+	var shown := mini(wanted, maxi(most, 1))
+	_thumbnail.custom_minimum_size.y = _thumb_height - ceilf(maxf(shown * line_height - room, 0.0))
+	_show_lines(maxi(shown, _resting_lines))
+	_hidden_lines = maxi(wanted - shown, 0)
+
+
+## Moves a text too long for the focused card on by `delta` seconds of reading.
+func advance(delta: float) -> void:
+	if not _focused or _hidden_lines == 0:
+		return
+	_clock += delta
+	var steps := floori(_clock / READ_SECONDS)
+	if steps > _hidden_lines + ceili(END_REST_SECONDS / READ_SECONDS):
+		_clock = 0.0
+		steps = 0
+	label.lines_skipped = mini(steps, _hidden_lines)
+
+
+## True when every line of the text shows at once.
+func shows_whole_text() -> bool:
+	return label.lines_skipped == 0 and _hidden_lines == 0 and _visible_lines() >= wrapped_lines()
+
+
+## True when the text is too long even for the focused card and reads through instead.
+func reads_through() -> bool:
+	return _focused and _hidden_lines > 0
+
+
+## The last line of the text is showing (reading through, or the whole text at once).
+func shows_last_line() -> bool:
+	return label.lines_skipped + _visible_lines() >= wrapped_lines()
+
+
+## The lines the text wraps into at the label's width (measured with its font: the label's
+## own count only catches up when it is drawn).
+func wrapped_lines() -> int:
+	var font := label.get_theme_font(&"font")
+	var font_size := label.get_theme_font_size(&"font_size")
+	var width := label.size.x
+	var height := (
+		font.get_multiline_string_size(label.text, HORIZONTAL_ALIGNMENT_LEFT, width, font_size).y
+	)
+	return ceili(height / maxf(font.get_height(font_size), 1.0))
+
+
+func _visible_lines() -> int:
+	var by_height := floori((label.size.y + 0.5) / _line_height())
+	var limit := label.max_lines_visible
+	return mini(by_height, limit) if limit >= 0 else by_height
+
+
+func _line_height() -> float:
+	return maxf(label.get_line_height() + label.get_theme_constant(&"line_spacing"), 1.0)
+
+
+func _show_lines(count: int) -> void:
+	if label.max_lines_visible == count:
+		return
+	label.max_lines_visible = count
+	# the label cuts its text ("…") only when it reshapes, which a new line limit alone does not
+	# ask for: switching the cut off and on again does
+	label.text_overrun_behavior = TextServer.OVERRUN_NO_TRIMMING
+	label.text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS
