@@ -13,6 +13,7 @@ const LIST_OF_KIND := {
 	Items.Kind.WALL: "walls",
 	Items.Kind.HOLE: "holes",
 	Items.Kind.START: "ball_starts",
+	Items.Kind.WINDMILL: "windmills",
 }
 
 
