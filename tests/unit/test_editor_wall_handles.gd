@@ -86,3 +86,17 @@ func test_erase_on_a_ball_start_over_a_wall_erases_the_start() -> void:
 	_helper.click(Vector2(70, 106))  # inside the start, and deeper inside the wall
 	assert_eq(session.level.ball_starts.size(), 0, "the start is gone")
 	assert_eq(Items.wall_count(session.level.walls), 2, "the wall under it stays")
+
+
+func test_with_both_walls_selected_a_drag_at_the_corner_moves_both() -> void:
+	_helper.start(_corner_board())
+	var session := _helper.session
+	session.set_snap(false)
+	var both: Array[Vector2i] = [Items.make(Items.Kind.WALL, 0), Items.make(Items.Kind.WALL, 1)]
+	session.select(both)
+	_helper.press(Vector2(105, 105), true)
+	_helper.move(Vector2(110, 105))
+	_helper.move(Vector2(115, 105))
+	_helper.press(Vector2(115, 105), false)
+	assert_eq(session.level.walls[0], Vector2(45, 105), "the whole selection moved")
+	assert_eq(session.level.walls[3], Vector2(115, 35))
