@@ -18,6 +18,7 @@ const Layers := preload("res://addons/board_editor/core/layers.gd")
 const ViewFocus := preload("res://addons/board_editor/ui/view_focus.gd")
 const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
 const NewBoardFiles := preload("res://addons/board_editor/core/new_board_files.gd")
+const ToolSettings := preload("res://addons/board_editor/core/tool_settings.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 ## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
 ## this variable naming a script under res://tools/ or res://tests/, the plugin adds it as a
@@ -43,6 +44,8 @@ var _visible := false
 var _viewport_control: Control
 # A dock field took the keyboard focus: the next viewport press only takes it back.
 var _focus_in_dock := false
+# The tool settings of the last edited board, for the next one (ToolSettings).
+var _kept_settings := {}
 
 
 func _enter_tree() -> void:
@@ -96,6 +99,7 @@ func _edit(object: Object) -> void:
 		_dock.show_board(null, [], true)
 		return
 	_session = Session.new(level)
+	ToolSettings.apply(_session, _kept_settings)
 	_session.committer = _commit
 	_session.selection_changed.connect(_on_selection_changed)
 	_session.settings_changed.connect(_on_settings_changed)
@@ -198,6 +202,7 @@ func _commit(action: BoardAction, already_applied: bool) -> void:
 
 func _release() -> void:
 	if _session != null:
+		_kept_settings = ToolSettings.capture(_session)
 		if _input != null:
 			_input.active_tool().cancel()
 		if _session.level.changed.is_connected(_on_level_changed):

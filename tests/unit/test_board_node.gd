@@ -10,8 +10,9 @@ func test_warnings_follow_the_level() -> void:
 	assert_eq(node._get_configuration_warnings().size(), 0)
 	level.goal_radius = 1.0  # setter emits changed
 	var warnings: PackedStringArray = node._get_configuration_warnings()
-	assert_eq(warnings.size(), 1)
+	assert_eq(warnings.size(), 2)
 	assert_string_contains(warnings[0], "goal")
+	assert_string_contains(warnings[1], "was not checked", "and why reachability was skipped")
 
 
 func test_in_place_edits_need_notify_edited() -> void:
@@ -21,7 +22,8 @@ func test_in_place_edits_need_notify_edited() -> void:
 	assert_eq(node.issues().size(), 0)
 	level.walls.append(Vector2(1, 1))  # an in-place edit: no setter runs
 	level.notify_edited()
-	assert_eq(node.issues().size(), 1)
+	var kinds := node.issues().map(func(issue: BoardIssue) -> String: return issue.kind)
+	assert_eq(kinds, ["odd_wall_points", "reachability_skipped"])
 
 
 func test_swapping_levels_disconnects_the_old_one() -> void:

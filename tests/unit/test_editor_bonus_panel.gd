@@ -122,3 +122,12 @@ func test_picking_the_same_role_or_a_pin_changes_nothing() -> void:
 	panel.set_role(BonusPocketSpec.Role.TULIP)
 	assert_eq(session.history.names().size(), 0)
 	assert_eq(level.bonus_pockets[1].role, BonusPocketSpec.Role.ATTACKER)
+
+
+func test_the_problem_list_comes_before_the_scrolling_panels() -> void:
+	var dock: BoardDock = add_child_autofree(BoardDock.new())
+	var problems := dock.problems()
+	var scroll := dock.properties().get_parent().get_parent()
+	assert_true(scroll is ScrollContainer, "the Selection panel scrolls with the tool settings")
+	assert_lt(problems.get_index(), scroll.get_index(), "the problems sit above the panels")
+	assert_eq(problems.get_parent(), dock, "in the dock itself, never scrolled away")

@@ -86,3 +86,39 @@ func test_erase_on_a_ball_start_over_a_wall_erases_the_start() -> void:
 	_helper.click(Vector2(70, 106))  # inside the start, and deeper inside the wall
 	assert_eq(session.level.ball_starts.size(), 0, "the start is gone")
 	assert_eq(Items.wall_count(session.level.walls), 2, "the wall under it stays")
+
+
+func test_with_both_walls_selected_a_drag_at_the_corner_moves_both() -> void:
+	_helper.start(_corner_board())
+	var session := _helper.session
+	session.set_snap(false)
+	var both: Array[Vector2i] = [Items.make(Items.Kind.WALL, 0), Items.make(Items.Kind.WALL, 1)]
+	session.select(both)
+	_helper.press(Vector2(105, 105), true)
+	_helper.move(Vector2(110, 105))
+	_helper.move(Vector2(115, 105))
+	_helper.press(Vector2(115, 105), false)
+	assert_eq(session.level.walls[0], Vector2(45, 105), "the whole selection moved")
+	assert_eq(session.level.walls[3], Vector2(115, 35))
+
+
+func test_ghosts_turn_red_where_a_click_would_add_an_error() -> void:
+	var level := _load_board("res://levels/pachinko/classic.board")
+	_helper.start(level)
+	var session := _helper.session
+	session.set_tool(Session.Tool.POCKET)
+	var pockets: Variant = _helper.input.active_tool()
+	assert_false(pockets.would_add_error(Vector2(350, 200)), "a clear spot stays green")
+	assert_true(pockets.would_add_error(Vector2(5, 350)), "outside the ring is red")
+	var maze := _load_board("res://levels/maze/classic.board")
+	_helper.start(maze)
+	_helper.session.set_tool(Session.Tool.HOLE)
+	var holes: Variant = _helper.input.active_tool()
+	assert_true(holes.would_add_error(maze.ball_starts[0]), "a hole on a ball start is red")
+	assert_eq(maze.holes.size(), 8, "asking never changes the board")
+
+
+func _load_board(path: String) -> BoardLevel:
+	var result := BoardLoader.load_board(path)
+	assert_not_null(result.level, result.error)
+	return result.level

@@ -6,9 +6,11 @@ extends "res://addons/board_editor/tools/board_tool.gd"
 
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const PlacementCheck := preload("res://addons/board_editor/core/placement_check.gd")
 
 ## What this tool places: Items.Kind.PIN, HOLE, START, WINDMILL or GOAL.
 var kind: int
+var _check := PlacementCheck.new()
 
 
 func _init(on_session: Session, places: int) -> void:
@@ -21,12 +23,7 @@ func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 	if kind == Items.Kind.GOAL:
 		session.commit(SetPropertiesAction.new(level(), {"goal_center": spot}, "Move goal"))
 		return true
-	var data := Items.empty_set()
-	if kind == Items.Kind.WINDMILL:
-		data["windmills"] = [new_windmill(spot)]
-	else:
-		var key := {Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "starts"}
-		data[key[kind]] = PackedVector2Array([spot])
+	var data := _data_at(spot)
 	var names := {
 		Items.Kind.PIN: "Add pin",
 		Items.Kind.HOLE: "Add black hole",
@@ -58,10 +55,18 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	if kind == Items.Kind.PIN:
 		Draw.ghost_points(canvas, to_screen, spots, radius, level())
 		return
+	var color := Draw.GHOST_COLOR
+	if kind != Items.Kind.GOAL and would_add_error(spot):
+		color = Draw.BLOCKED_COLOR  # a click here would give the board an error
 	# The goal and a windmill's sweep are big: an outline keeps the board under them visible.
 	var filled := kind != Items.Kind.GOAL and kind != Items.Kind.WINDMILL
 	for point in spots:
-		Draw.circle(canvas, to_screen, point, radius, Draw.GHOST_COLOR, filled)
+		Draw.circle(canvas, to_screen, point, radius, color, filled)
+
+
+## True when placing here (with its mirror twin) would give the board a new error.
+func would_add_error(spot: Vector2) -> bool:
+	return _check.adds_error(level(), session.mirrored(_data_at(spot)))
 
 
 ## The windmill this tool places at `at`: four blades turning clockwise (WindmillSpec's
@@ -70,6 +75,17 @@ static func new_windmill(at: Vector2) -> WindmillSpec:
 	return WindmillSpec.driven(
 		at, WindmillSpec.DEFAULT_BLADES, WindmillSpec.DEFAULT_LENGTH, WindmillSpec.DEFAULT_SPEED
 	)
+
+
+# What a click at `spot` adds (before mirroring).
+func _data_at(spot: Vector2) -> Dictionary:
+	var data := Items.empty_set()
+	if kind == Items.Kind.WINDMILL:
+		data["windmills"] = [new_windmill(spot)]
+	else:
+		var key := {Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "starts"}
+		data[key[kind]] = PackedVector2Array([spot])
+	return data
 
 
 func _spot(at: Vector2) -> Vector2:

@@ -2,7 +2,7 @@
 extends "res://addons/board_editor/tools/board_tool.gd"
 ## Select / move: click picks (shift adds, ctrl toggles), dragging empty space draws a
 ## selection box, dragging a selected item moves the selection (live, one undo step), and
-## dragging an end dot of a selected wall moves that end of that wall only.
+## dragging an end dot of a wall selected on its own moves that end of that wall only.
 
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
@@ -102,10 +102,12 @@ func cancel() -> bool:
 	return busy
 
 
-## The index in the board's `walls` points of the selected wall end under `at`, or -1. Only
-## selected walls show end dots, so at a corner two walls share, only the selected one's end
-## is a handle.
+## The index in the board's `walls` points of the selected wall's end under `at`, or -1.
+## Only a wall selected on its own has end handles (at a corner two walls share, only the
+## selected one's end moves); with more selected, a drag moves the whole selection.
 func selected_wall_end(at: Vector2) -> int:
+	if session.selection.size() != 1:
+		return -1
 	var best := -1
 	var best_distance := tolerance()
 	for item: Vector2i in session.selection:

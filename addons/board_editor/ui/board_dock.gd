@@ -86,11 +86,17 @@ func _init() -> void:
 	maze_analysis = MazeAnalysisPanel.new()
 	add_child(maze_analysis)
 	add_child(HSeparator.new())
-	# The panels scroll on their own, so the problem list below always keeps its room.
+	# The problems come first, right under the buttons: in the default layout the dock is
+	# shorter than its panels, and a list at the bottom showed about three lines.
+	_problems = ProblemsList.new()
+	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))
+	add_child(_problems)
+	add_child(HSeparator.new())
+	# The panels scroll on their own in the room left.
 	var scroll := ScrollContainer.new()
 	scroll.size_flags_vertical = Control.SIZE_EXPAND_FILL
 	scroll.size_flags_stretch_ratio = 1.5
-	scroll.custom_minimum_size = Vector2(0, 260)
+	scroll.custom_minimum_size = Vector2(0, 160)
 	scroll.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
 	add_child(scroll)
 	var panels := VBoxContainer.new()
@@ -103,10 +109,6 @@ func _init() -> void:
 	panels.add_child(_options)
 	_layers = LayersPanel.new()
 	panels.add_child(_layers)
-	add_child(HSeparator.new())
-	_problems = ProblemsList.new()
-	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))
-	add_child(_problems)
 	show_board(null, [])
 	show_message("")
 	_watch_fields(self)
