@@ -80,8 +80,8 @@ static func make_hanami() -> BoardLevel:
 	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 5})
 	var attacker := {"open_seconds": 8.0, "open_catches": 8}
 	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 10, attacker)
-	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 3, {})
-	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 3, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 4, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 4, {})
 	return level
 
 

@@ -39,13 +39,10 @@ func show_start(level: BoardLevel) -> void:
 						]
 					),
 					(
-						"[b]Power aims:[/b] a weak shot drops in near the rail on the right, a strong"
-						+ " one carries across the top to the left."
+						"[b]Power aims:[/b] the weakest shot drops in beside the rail on the right; the"
+						+ " stronger, the farther left; full power rides over the top to the far side."
 					),
-					(
-						"A ball that falls into a [b]pocket[/b] pays balls back into the cup. A shot too"
-						+ " weak to clear the rail rolls back to the cup."
-					),
+					"A ball that falls into a [b]pocket[/b] pays balls back into the cup.",
 					"The game ends when the cup is empty and every ball has come down.",
 				]
 			)

@@ -81,7 +81,7 @@ var _rng := RandomNumberGenerator.new()
 var _step_seconds := 1.0 / 60.0
 var _launch_pos := Vector2.ZERO
 var _launch_dir := Vector2.RIGHT
-var _clear_speed := 0.0
+var _launch_table: LaunchTable
 var _game_start_paid := 0
 var _game_start_shots := 0
 
@@ -105,7 +105,7 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 	_step_seconds = 1.0 / maxf(world.tuning.fixed_hz, 1.0)
 	_launch_pos = LaunchRail.launch_position(board)
 	_launch_dir = LaunchRail.launch_direction(board)
-	_clear_speed = LaunchCalibration.clear_speed(board)
+	_launch_table = LaunchCalibration.table(board)
 	world.ball_captured.connect(_on_ball_pocketed)
 	world.ball_drained.connect(_on_ball_drained)
 	world.ball_entered_zone.connect(_on_ball_entered_zone)
@@ -215,9 +215,12 @@ func rail_blocked() -> bool:
 	return RailTraffic.ball_coming_down(level, world.get_positions(), world.get_velocities())
 
 
-## Launch speed at the bottom of the rail for a power (see launch_power.gd).
+## Launch speed at the bottom of the rail for a power: the one the board's LaunchTable
+## says reaches the power's mouth speed (see launch_power.gd).
 func launch_speed(shot_power: float) -> float:
-	return LaunchPower.launch_speed(shot_power, _clear_speed)
+	if _launch_table == null:
+		return 0.0
+	return _launch_table.launch_speed(shot_power)
 
 
 ## Runs the simulation for `delta` seconds of game time; returns the steps taken.
