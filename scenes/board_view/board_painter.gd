@@ -22,7 +22,7 @@ enum Layer {
 	ALL = 2047,
 }
 
-const BonusPainter := preload("res://scenes/pachinko/bonus/bonus_painter.gd")
+const BonusPainter := preload("res://scenes/board_view/bonus_painter.gd")
 const PACHINKO_BACKGROUND := Color("14121f")
 const RING_COLOR := Color("8a4fbf")
 const RAIL_COLOR := Color("c9c3d6")

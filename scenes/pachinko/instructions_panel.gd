@@ -1,7 +1,9 @@
 extends Control
 ## The instructions panel: up before the first game and again at game over. A click (or
 ## the start button / key) anywhere takes it away and starts a game; the game scene does
-## that, this panel only shows the words.
+## that, this panel only shows the words. The body is BBCode for the bold words: anything in
+## it that came from a file (the board's name, a refusal quoting a field) goes through
+## PlainMarkup.escape, the title and footer are plain labels.
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 
@@ -66,7 +68,8 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 		]
 	)
 	if best > 0:
-		lines.append("Best on %s: [b]%d[/b] balls paid back." % [level.display_name, best])
+		var board_name := PlainMarkup.escape(level.display_name)
+		lines.append("Best on %s: [b]%d[/b] balls paid back." % [board_name, best])
 	lines.append("")
 	lines.append("Another %d balls are waiting." % level.cup_start_balls)
 	_body.text = "\n".join(lines)
@@ -77,6 +80,6 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 ## A board that cannot be played: says what went wrong and how to get back.
 func show_problem(problem: String) -> void:
 	_title.text = "This board could not be loaded"
-	_body.text = problem
+	_body.text = PlainMarkup.escape(problem)
 	_footer.text = "Press Esc for the menu"
 	visible = true

@@ -151,7 +151,7 @@ func _launch(job: Callable, count: int) -> void:
 func _climb_group(g: int) -> void:
 	if _cancelled:
 		return
-	var part := RailExitTable.climb_group(plan.level, _launch_table, _groups[g])
+	var part := RailClimber.climb_group(plan.level, _launch_table, _groups[g])
 	_mutex.lock()
 	_group_results[g] = part
 	_mutex.unlock()

@@ -26,6 +26,15 @@ var _centre := Vector2.ZERO
 var _board_size := Vector2.ZERO
 
 
+## Climbs every power level in `levels` side by side on `level` (a pachinko board) and
+## returns a table holding their results (other levels stay UNKNOWN). Thread-safe: it
+## touches nothing shared. `launch` is LaunchCalibration.table(level).
+static func climb_group(
+	level: BoardLevel, launch: LaunchTable, levels: PackedInt32Array
+) -> RailExitTable:
+	return RailClimber.new(level, launch).climb(levels)
+
+
 func _init(level: BoardLevel, launch: LaunchTable) -> void:
 	_level = level
 	_launch = launch

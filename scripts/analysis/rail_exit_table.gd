@@ -65,7 +65,7 @@ static func groups_for(needed: PackedByteArray) -> Array[PackedInt32Array]:
 	return groups
 
 
-## Copies a climbed group's results (from climb_group) into the table.
+## Copies a climbed group's results (from RailClimber.climb_group) into the table.
 func store(part: RailExitTable, levels: PackedInt32Array) -> void:
 	for q in levels:
 		fate[q] = part.fate[q]
@@ -75,13 +75,3 @@ func store(part: RailExitTable, levels: PackedInt32Array) -> void:
 		steps[q] = part.steps[q]
 		samples[q] = part.samples[q]
 		entry_x[q] = part.entry_x[q]
-
-
-## Climbs every power level in `levels` side by side on `level` (a pachinko board) and
-## returns a table holding their results (other levels stay UNKNOWN). Thread-safe: it
-## touches nothing shared. `launch` is LaunchCalibration.table(level).
-static func climb_group(
-	level: BoardLevel, launch: LaunchTable, levels: PackedInt32Array
-) -> RailExitTable:
-	var climber := RailClimber.new(level, launch)
-	return climber.climb(levels)

@@ -13,18 +13,30 @@ const EXIT_BAD_BOARD := 2
 
 
 ## Runs the autoplay `values` ask for (keys autoplay, board, seconds, seed, hard; seconds
-## and record may be absent); prints one JSON line; returns the exit code.
+## and record may be absent); prints one JSON line; returns the exit code: 0 when the game
+## was played, EXIT_BAD_BOARD when it could not be ("ok": false and the problem).
 static func run(values: Dictionary) -> int:
+	var report := play(values)
+	if not report["ok"]:
+		printerr("autoplay: %s" % report["error"])
+	print(JSON.stringify(report))
+	return 0 if report["ok"] else EXIT_BAD_BOARD
+
+
+## The report `run` prints: {"ok": true, "game", "board", "seed", ...what the game said}, or
+## {"ok": false, "error"} when the board does not load, is the other game's, or the game
+## refused to start.
+static func play(values: Dictionary) -> Dictionary:
 	var game: String = values["autoplay"]
 	var seconds: float = values.get("seconds", DEFAULT_SECONDS[game])
 	var board_path := resolve_board_path(game, str(values["board"]))
 	var loaded := BoardLoader.load_board(board_path)
 	if loaded.level == null:
-		printerr("autoplay: %s" % loaded.error)
-		print(JSON.stringify({"ok": false, "error": loaded.error}))
-		return EXIT_BAD_BOARD
-	var game_path: String = GAMES[game]
-	var script: Script = load(game_path)
+		return {"ok": false, "error": loaded.error}
+	if BoardLevel.kind_name(loaded.level.kind) != game:
+		var kind := BoardLevel.kind_name(loaded.level.kind)
+		return {"ok": false, "error": "%s: a %s board, not a %s board" % [board_path, kind, game]}
+	var script: Script = load(str(GAMES[game]))
 	var result: Dictionary
 	var recorder := ReplayCli.recorder_for(values)
 	if game == "maze":
@@ -33,17 +45,16 @@ static func run(values: Dictionary) -> int:
 		result = script.call(
 			"run", loaded.level, seconds, values["seed"], recorder, values["handle"]
 		)
+	if not result.get("ok", true):
+		return {"ok": false, "error": str(result.get("error", "the game did not start"))}
 	var report := {"ok": true, "game": game, "board": loaded.level.board_id, "seed": values["seed"]}
 	report.merge(result)
 	if recorder != null:
 		var problem := ReplayCli.save_recording(recorder, values)
 		if not problem.is_empty():
-			printerr("autoplay: %s" % problem)
-			print(JSON.stringify({"ok": false, "error": problem}))
-			return EXIT_BAD_BOARD
+			return {"ok": false, "error": problem}
 		report["replay"] = values["record"]
-	print(JSON.stringify(report))
-	return 0
+	return report
 
 
 ## A bare board name means levels/<game>/<name>.board; a res:// path is used as it is.

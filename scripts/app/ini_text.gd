@@ -132,7 +132,7 @@ static func _read_pair(line: String, json: JSON, section: Dictionary) -> String:
 			return "line %d (no =)"
 		key = line.substr(0, equals).strip_edges()
 		rest = line.substr(equals + 1)
-	if json.parse(rest.strip_edges()) != OK:
+	if json.parse(rest.strip_edges()) != OK or not JsonKeys.repeated(rest).is_empty():
 		return "%s (line %%d)" % key.left(40).c_escape().replace("%", "%%")
 	section[key] = json.data  # a repeated key: the last one counts, as the file reads
 	return ""

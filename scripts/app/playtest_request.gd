@@ -59,6 +59,9 @@ static func read(path := PATH, now := Time.get_unix_time_from_system()) -> Dicti
 		return _refused("it is not JSON (line %d: %s)" % [where, json.get_error_message()])
 	if not json.data is Dictionary:
 		return _refused("it is not a JSON object")
+	var repeated := JsonKeys.repeated(text)
+	if not repeated.is_empty():
+		return _refused(JsonKeys.problem(repeated))
 	var request: Dictionary = json.data
 	var problem := check(request, now)
 	if not problem.is_empty():

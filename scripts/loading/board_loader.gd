@@ -36,7 +36,7 @@ static func load_board(path: String, roots: Array[String] = BOARD_ROOTS) -> Boar
 		return _fail(result, "a board file must be a .board file")
 	var level := _read_board_file(result, path)
 	if level != null and path.begins_with("user://"):
-		level.board_id = USER_ID_PREFIX + UserBoards.safe_stem(path.get_file().get_basename())
+		level.board_id = USER_ID_PREFIX + BoardFileName.safe_stem(path.get_file().get_basename())
 	return _finish(result, level)
 
 

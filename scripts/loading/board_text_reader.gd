@@ -54,6 +54,9 @@ static func _gather_lines(text: String) -> Dictionary:
 			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
 		if not json.data is Dictionary:
 			return _error("line %d is not a JSON object { ... }" % (number + 1))
+		var repeated := JsonKeys.repeated(line)
+		if not repeated.is_empty():
+			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var object: Dictionary = json.data
 		var problem := _gather(data, object)
 		if not problem.is_empty():
@@ -188,6 +191,8 @@ static func _check_tuning(value: Variant) -> String:
 		var field: Variant = Schema.RENAMED_TUNING.get(key, key)
 		if not known.has(field):
 			return 'unknown tuning field "%s"' % key
+		if field != key and tuning.has(field):
+			return 'tuning "%s" is the old name of "%s": give only one of them' % [key, field]
 		var spec: Array = known[field]
 		var type: int = spec[0]
 		var type_name := (

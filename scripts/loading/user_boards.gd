@@ -6,22 +6,8 @@ extends RefCounted
 ## byte for byte, wherever the player chooses; delete removes one file from the folder.
 ## Shipped boards (res://levels/) are never written or removed here.
 
-## The longest file name (without ".board") an imported board gets.
-const MAX_STEM := 48
 ## How many "_2", "_3", ... suffixes are tried before an import gives up on a name.
 const MAX_CLASH_SUFFIX := 999
-
-
-## A file name stem made only of a-z, 0-9, "_" and "-" (never empty), used for imported files
-## and for the ids of the player's boards, so no name can reach a save file's syntax.
-static func safe_stem(text: String) -> String:
-	var stem := ""
-	for character in text.to_lower():
-		var code := character.unicode_at(0)
-		var plain := (code >= 97 and code <= 122) or (code >= 48 and code <= 57)
-		stem += character if plain or character == "-" else "_"
-	stem = stem.lstrip("_-").left(MAX_STEM)
-	return stem if not stem.is_empty() else "board"
 
 
 ## Imports the board file at `source` (any path the player picked or dropped). Returns
@@ -47,7 +33,7 @@ static func import_file(source: String, root: String = BoardLoader.USER_DIR) -> 
 	var made := DirAccess.make_dir_recursive_absolute(folder)
 	if made != OK:
 		return {"error": "%s: could not create %s (%s)" % [shown, folder, error_string(made)]}
-	var target := free_path(folder, safe_stem(source.get_file().get_basename()))
+	var target := free_path(folder, BoardFileName.safe_stem(source.get_file().get_basename()))
 	if target.is_empty():
 		return {"error": "%s: too many boards with this name in %s" % [shown, folder]}
 	var written := write_bytes(target, bytes)

@@ -15,8 +15,7 @@ extends "res://scripts/physics/world_shapes.gd"
 ## sensors, not games: the maze tilt (MazeTilt), the pins' minimum horizontal speed and the
 ## sensors are set from outside (BoardWorldFactory, the rules).
 
-# The signals are emitted by ball_events.gd at the end of a step.
-@warning_ignore_start("unused_signal")
+# The signals are emitted by _emit_events() at the end of a step.
 ## A ball bounced off a pin (for sound); impact_speed is the normal speed in px/s.
 signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
 ## A ball bounced off a capsule wall.
@@ -37,7 +36,6 @@ signal ball_reached_goal(ball_id: int, goal_index: int)
 signal ball_left_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved inside a zone's radius (the ball stays).
 signal ball_entered_zone(ball_id: int, zone_index: int)
-@warning_ignore_restore("unused_signal")
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
@@ -349,6 +347,7 @@ func _hear_hits() -> void:
 	heard[BallEvents.Kind.RING_HIT] = 1 if ring_hit.has_connections() else 0
 
 
+# Emits this step's queued events as the signals above, in the order they happened.
 func _emit_events() -> void:
 	var ev: PackedInt32Array = _events
 	if ev.is_empty():
@@ -357,7 +356,31 @@ func _emit_events() -> void:
 	# Fresh buffers first: a handler may step the world again.
 	_events = PackedInt32Array()
 	_event_speed = PackedFloat32Array()
-	BallEvents.emit_all(self, ev, evs)
+	for e: int in evs.size():
+		var kind: int = ev[e * 3]
+		var id: int = ev[e * 3 + 1]
+		var index: int = ev[e * 3 + 2]
+		match kind:
+			BallEvents.Kind.PIN_HIT:
+				pin_hit.emit(id, index, evs[e])
+			BallEvents.Kind.WALL_HIT:
+				wall_hit.emit(id, index, evs[e])
+			BallEvents.Kind.RING_HIT:
+				ring_hit.emit(id, evs[e])
+			BallEvents.Kind.CAPTURED:
+				ball_captured.emit(id, index)
+				if ball_pocketed.has_connections():
+					ball_pocketed.emit(id, index)
+			BallEvents.Kind.DRAINED:
+				ball_drained.emit(id)
+			BallEvents.Kind.HOLE:
+				ball_fell_in_hole.emit(id, index)
+			BallEvents.Kind.GOAL:
+				ball_reached_goal.emit(id, index)
+			BallEvents.Kind.GOAL_LEFT:
+				ball_left_goal.emit(id, index)
+			BallEvents.Kind.ZONE:
+				ball_entered_zone.emit(id, index)
 
 
 ## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.

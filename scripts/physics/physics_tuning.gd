@@ -70,14 +70,3 @@ var gutter_slide_time: float:
 		return drain_slide_time
 	set(value):
 		drain_slide_time = value
-
-
-## Deprecated: the game presets live in TuningPresets (scripts/world); kept one round so
-## branches written against it still run.
-static func pachinko_defaults() -> PhysicsTuning:
-	return TuningPresets.pachinko()
-
-
-## Deprecated: see TuningPresets.maze().
-static func maze_defaults() -> PhysicsTuning:
-	return TuningPresets.maze()

@@ -64,6 +64,9 @@ static func read(text: String) -> Dictionary:
 			continue
 		if json.parse(line) != OK:
 			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
+		var repeated := JsonKeys.repeated(line)
+		if not repeated.is_empty():
+			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var problem := ""
 		if not header_seen:
 			header_seen = true

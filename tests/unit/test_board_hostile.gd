@@ -50,6 +50,11 @@ func test_the_reasons_are_the_real_problems() -> void:
 		"ring_huge.board": "ring_radius",
 		"sleep_negative.board": "sleep_time",
 		"unknown_field.board": "metadata/payload",
+		"repeated_key_escaped.board": 'the key "format_version" is given twice',
+		"repeated_key_in_item.board": 'line 19: the key "x" is given twice',
+		"repeated_key_in_tuning.board": 'the key "restitution" is given twice',
+		"tuning_old_and_new_name.board":
+		'"gutter_slide_time" is the old name of "drain_slide_time"',
 	}
 	for file: String in expected:
 		assert_string_contains(reasons.get(file, "(missing)"), expected[file], file)

@@ -185,7 +185,7 @@ class TestHostileCorpus:
 	const EXPECTED := {
 		"configfile_payload.json": "not JSON",
 		"deep_nesting.json": "too deep",
-		"duplicate_keys.json": "the board must be a file",
+		"duplicate_keys.json": 'the key "board" is given twice',
 		"gd_resource_header.json": "not JSON",
 		"huge_number.json": "format must be 1",
 		"invalid_utf8.json": "not UTF-8 text",

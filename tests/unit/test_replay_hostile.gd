@@ -29,6 +29,7 @@ const EXPECTED := {
 	"nul_byte.replay": "NUL",
 	"object_board.replay": '"board" must be a board id',
 	"power_too_high.replay": "power must be 0 to 10000",
+	"repeated_key.replay": 'line 1: the key "mode" is given twice',
 	"record_object.replay": "a record must be an array",
 	"seconds_negative.replay": '"seconds" must be a finite number',
 	"seed_fraction.replay": '"seed" must be a whole number',

@@ -25,6 +25,7 @@ const EXPECTED := {
 	"not_a_settings_file.cfg": "damaged",
 	"object_as_the_version.cfg": "damaged",
 	"object_in_a_value.cfg": "values",
+	"repeated_key_in_a_value.cfg": "values",
 	"resource_constructor.cfg": "values",
 	"two_statements_on_a_line.cfg": "values",
 	"utf16.cfg": "damaged",

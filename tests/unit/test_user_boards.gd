@@ -166,10 +166,10 @@ func test_export_round_trips_byte_identical() -> void:
 
 
 func test_safe_stem_keeps_names_plain() -> void:
-	assert_eq(UserBoards.safe_stem("My Board=1\nx"), "my_board_1_x")
-	assert_eq(UserBoards.safe_stem("..."), "board")
-	assert_eq(UserBoards.safe_stem("Ünïcode-ok"), "n_code-ok")
-	assert_eq(UserBoards.safe_stem("a".repeat(100)).length(), UserBoards.MAX_STEM)
+	assert_eq(BoardFileName.safe_stem("My Board=1\nx"), "my_board_1_x")
+	assert_eq(BoardFileName.safe_stem("..."), "board")
+	assert_eq(BoardFileName.safe_stem("Ünïcode-ok"), "n_code-ok")
+	assert_eq(BoardFileName.safe_stem("a".repeat(100)).length(), BoardFileName.MAX_STEM)
 
 
 static func _remove_tree(path: String) -> void:

@@ -3,7 +3,7 @@ extends "res://scenes/pachinko/board/board_layer.gd"
 ## a window showing the special pin (a gold diamond), and the payout written on it. A
 ## pocket glows when it catches a ball.
 
-const PinLayer := preload("res://scenes/pachinko/board/pin_layer.gd")
+const PinArt := preload("res://scenes/board_view/pin_art.gd")
 const PETAL := Color("c0283c")
 const PETAL_LIGHT := Color("ee5a5f")
 const GOLD := Color("f2c14e")
@@ -90,7 +90,7 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 	draw_colored_polygon(leaf, GOLD.darkened(0.15))
 	var special := PocketStamp.special_position(spec)
 	draw_circle(special, pr * 2.6, Color(0.05, 0.02, 0.1, 0.85))
-	PinLayer.draw_special(self, special, pr)
+	PinArt.draw_special(self, special, pr)
 	# The payout on a dark tag above the petals.
 	var font := ThemeDB.fallback_font
 	var text := "×%d" % spec.payout

@@ -3,7 +3,7 @@ extends Node2D
 ## them, a lamp that flashes when it catches a ball and glows while an attacker is open,
 ## and an open attacker's seconds and catches left. Reads BonusMachine; never changes it.
 
-const Painter := preload("res://scenes/pachinko/bonus/bonus_painter.gd")
+const Painter := preload("res://scenes/board_view/bonus_painter.gd")
 ## Seconds a catch keeps a lamp lit.
 const FLASH_SECONDS := 0.8
 

@@ -64,7 +64,7 @@ static func base_level(settings: MazeGenSettings) -> BoardLevel:
 	level.description = settings.blurb
 	level.size = Vector2(settings.cols, settings.rows) * CELL
 	level.ball_radius = BALL_RADIUS
-	level.tuning = PhysicsTuning.maze_defaults()
+	level.tuning = TuningPresets.maze()
 	level.grid_cols = settings.cols
 	level.grid_rows = settings.rows
 	level.path_width = PATH_WIDTH

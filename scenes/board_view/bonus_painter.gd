@@ -4,7 +4,7 @@ extends RefCounted
 ## The game's bonus art draws the live state with it; the board painter (menus, editor)
 ## draws every bonus pocket closed.
 
-const PinLayer := preload("res://scenes/pachinko/board/pin_layer.gd")
+const PinArt := preload("res://scenes/board_view/pin_art.gd")
 ## Cup colours per role (start pocket, attacker, tulip).
 const CUP_COLORS: Array[Color] = [Color("1f7a5a"), Color("8c1d2c"), Color("b8417a")]
 const LAMP_COLORS: Array[Color] = [Color("6dffb9"), Color("ffcf4a"), Color("ff9ad5")]
@@ -62,10 +62,10 @@ static func _draw_rim(canvas: CanvasItem, level: BoardLevel, spec: BonusPocketSp
 	var r := maxf(level.pin_radius + 0.8, 2.2)
 	for k in pins.size():
 		if k == pins.size() - 1:
-			PinLayer.draw_special(canvas, pins[k], r)
+			PinArt.draw_special(canvas, pins[k], r)
 		else:
 			canvas.draw_circle(pins[k], r + 0.6, Color(0.05, 0.03, 0.08, 0.8))
-			canvas.draw_circle(pins[k], r, PinLayer.HEAD)
+			canvas.draw_circle(pins[k], r, PinArt.HEAD)
 
 
 # Closed: a gold roof across the mouth (the world's two lid halves). Open: the two halves
