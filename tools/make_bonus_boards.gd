@@ -15,7 +15,6 @@ const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
-const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 
 const CENTER := 350.0
 const ROLE := BonusPocketSpec.Role
@@ -165,7 +164,7 @@ static func _save(level: BoardLevel) -> bool:
 
 # No pins under the reels' window, so no ball bounces off a pin hidden behind it.
 static func _clear_reels(history: ActionHistory, level: BoardLevel) -> void:
-	var half := ReelDisplay.HALF + Vector2(6.0, 6.0)
+	var half := BonusGeometry.REEL_HALF + Vector2(6.0, 6.0 + BonusGeometry.REEL_ROOF)
 	Originals.erase_pins_in(
-		history, level, Rect2(ReelDisplay.spot(level) - half, half * 2.0), CENTER
+		history, level, Rect2(BonusGeometry.reel_spot(level) - half, half * 2.0), CENTER
 	)

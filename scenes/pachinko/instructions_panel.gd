@@ -62,9 +62,13 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	_title.text = "New best!" if new_best else "Game over"
 	var shots: int = summary.get("game_shots", 0)
 	var paid: int = summary.get("game_payouts", 0)
+	var hits: int = summary.get("game_hits", 0)
 	var lines := PackedStringArray(
 		[
-			"[b]%d[/b] shots, [b]%d[/b] balls paid back by the pockets." % [shots, paid],
+			(
+				"[b]%d[/b] shots, [b]%d[/b] pocket hits, [b]%d[/b] balls paid back."
+				% [shots, hits, paid]
+			),
 		]
 	)
 	if best > 0:

@@ -18,24 +18,24 @@ var mouth := PackedFloat64Array()
 ## Adds a measured sample; samples must come slowest launch first. A mouth speed lower than
 ## the one before (a bump in the measurement) is held at the one before, so the table
 ## never turns back.
-func add(bottom_speed: float, mouth_speed: float) -> void:
+func add(bottom_speed: float, at_mouth: float) -> void:
 	if not mouth.is_empty():
-		mouth_speed = maxf(mouth_speed, mouth[mouth.size() - 1])
+		at_mouth = maxf(at_mouth, mouth[mouth.size() - 1])
 	bottom.append(bottom_speed)
-	mouth.append(mouth_speed)
+	mouth.append(at_mouth)
 
 
-## The launch speed at the bottom that gives `mouth_speed` at the mouth. Slower than the
+## The launch speed at the bottom that gives `wanted` px/s at the mouth. Slower than the
 ## slowest sample: the slowest launch (it still clears the rail). Faster than the fastest:
 ## the fastest launch.
-func launch_speed_for(mouth_speed: float) -> float:
+func launch_speed_for(wanted: float) -> float:
 	if bottom.is_empty():
 		return 0.0
-	if mouth_speed <= mouth[0]:
+	if wanted <= mouth[0]:
 		return bottom[0]
-	var target := mouth_speed * mouth_speed
+	var target := wanted * wanted
 	for k in range(1, mouth.size()):
-		if mouth[k] < mouth_speed:
+		if mouth[k] < wanted:
 			continue
 		var m0 := mouth[k - 1] * mouth[k - 1]
 		var m1 := mouth[k] * mouth[k]
