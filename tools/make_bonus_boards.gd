@@ -162,9 +162,10 @@ static func _save(level: BoardLevel) -> bool:
 	return true
 
 
-# No pins under the reels' window, so no ball bounces off a pin hidden behind it.
+# No pins under the reels or within 16 px of their frame: no pin hides behind them and no
+# ball wedges between the frame and a pin.
 static func _clear_reels(history: ActionHistory, level: BoardLevel) -> void:
-	var half := BonusGeometry.REEL_HALF + Vector2(6.0, 6.0 + BonusGeometry.REEL_ROOF)
+	var half := BonusGeometry.REEL_HALF + Vector2(22.0, 22.0 + BonusGeometry.REEL_ROOF)
 	Originals.erase_pins_in(
 		history, level, Rect2(BonusGeometry.reel_spot(level) - half, half * 2.0), CENTER
 	)

@@ -21,7 +21,7 @@ const REEL_HALF := Vector2(54.0, 22.0)
 ## The window's frame: capsules this thick just outside it, its top a low roof rising
 ## REEL_ROOF px to the middle so balls roll off instead of resting on it.
 const REEL_FRAME_RADIUS := 3.0
-const REEL_ROOF := 10.0
+const REEL_ROOF := 24.0
 ## A tulip's wing length as a share of the mouth width.
 const WING_SHARE := 0.75
 ## An open wing leans out this far from upright, radians (about 50 degrees).
