@@ -33,7 +33,7 @@ func _draw() -> void:
 	# Scaled to fit: the widest piece (an attacker, 60-70 px) fills the box.
 	var zoom := minf(1.0, (SIZE.x - 8.0) / (spec.width + 16.0))
 	draw_set_transform(Vector2(SIZE.x * 0.5, 14.0), 0.0, Vector2(zoom, zoom))
-	BonusPainter.draw_pocket(self, _level, spec, _piece == BoardPieces.Piece.TULIP, 0.4)
+	BonusPainter.draw_pocket(self, _level, spec, _piece == BoardPieces.Piece.TULIP, 0.0)
 	draw_set_transform(Vector2.ZERO)
 
 

@@ -27,7 +27,7 @@ func show_pieces(level: BoardLevel) -> void:
 		words.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 		words.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 		words.vertical_alignment = VERTICAL_ALIGNMENT_CENTER
-		words.add_theme_font_size_override("font_size", 15)
+		words.add_theme_font_size_override("font_size", 14)
 		words.custom_minimum_size = Vector2(300, 0)
 		row.add_child(words)
 		add_child(row)
