@@ -4,7 +4,7 @@ SHELL := /bin/bash
 GODOT := tools/godot.sh
 GD_SOURCES = $(shell git ls-files -co --exclude-standard '*.gd' | grep -v '^addons/gut/')
 
-.PHONY: play test setup lint format editor shots bench export export-check check-boards analyze clean seed-reference
+.PHONY: play test setup lint format editor shots bench export export-check release release-check check-boards analyze clean seed-reference
 
 ## make play: the game window with a display, the headless autoplay demo without one
 play: setup
@@ -61,6 +61,20 @@ export:
 
 export-check: export
 	@tools/export_check.sh
+
+## make release: build/release/board-studio-<version>-linux-x86_64.tar.gz, the game as players
+## get it (one folder, its own libraries; see tools/release/build.sh)
+release:
+	@tools/setup.sh export
+	@tools/release/build.sh
+
+## make release-check: the last make release's archive (built first when there is none) in a
+## clean Debian 12 root: both autoplays, the window, no build paths (tools/release/check.sh)
+release-check:
+	@ls build/release/board-studio-*-linux-x86_64.tar.gz >/dev/null 2>&1 || $(MAKE) --no-print-directory release
+	@tools/release/launcher_test.sh
+	@tools/release/elf_paths_test.sh
+	@tools/release/check.sh
 
 clean:
 	rm -rf build .godot

@@ -55,7 +55,7 @@ static func convert_board(path: String, keep: bool) -> String:
 
 static func _legacy_boards() -> Array[String]:
 	var found: Array[String] = []
-	for kind in ["pachinko", "maze"]:
+	for kind in BoardLevel.KIND_NAMES:
 		var dir := "res://levels/%s" % kind
 		for file_name in DirAccess.get_files_at(dir):
 			if file_name.ends_with(".tres"):

@@ -8,6 +8,9 @@
 # like the setup's godot (private loader and libraries) so it runs on this machine. When
 # that folder already holds real template files (Godot's official ones), they are used as
 # they are: nothing is linked or patched.
+#
+#   tools/export.sh                  build/export/, patched to run on this machine
+#   tools/export.sh --unpatched DIR  DIR/, the binary left as the template made it (make release)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -17,6 +20,12 @@ die() { printf '\nexport failed: %s\n\n' "$*" >&2; exit 1; }
 GODOT=$(sed -n 's/^GODOT=//p' "$ENV_FILE")
 PREFIX=$(sed -n 's/^GODOT_PREFIX=//p' "$ENV_FILE")
 OUT=build/export
+allow_patch=1
+if [ "${1:-}" = --unpatched ]; then
+	[ -n "${2:-}" ] || die "--unpatched needs a folder."
+	OUT=$2
+	allow_patch=0
+fi
 BINARY=$OUT/board_studio.x86_64
 
 # "4.6.3.stable.debian4.6.3+ds-3" -> "4.6.3.stable": the folder name Godot looks in
@@ -63,7 +72,7 @@ fi
 rm -f "$log"
 [ -x "$BINARY" ] && [ -f "$OUT/board_studio.pck" ] || die "the export produced no $BINARY + .pck."
 
-if [ "$patch_for_here" = 1 ]; then
+if [ "$patch_for_here" = 1 ] && [ "$allow_patch" = 1 ]; then
 	command -v patchelf >/dev/null || die "patchelf is missing (apt-get install patchelf)."
 	L=$PREFIX/root/usr/lib/x86_64-linux-gnu
 	# Debian's template links sid's libraries: give it the private loader and libraries

@@ -4,7 +4,7 @@ extends SceneTree
 ## BoardLevel, checks each with BoardValidator, and saves it with its level scene:
 ##   tools/godot.sh --headless --path . -s res://tools/make_original_boards.gd
 ## pachinko/tulips: a dense lattice with four tulips and three plain pockets.
-## pachinko/windmills: an open board of pin rows, windmill circles and a few rich pockets.
+## pachinko/windmills: an open board of pin rows, five windmills and a few rich pockets.
 ## maze/catacombs: 14 x 12 twisting corridors with black holes in the dead ends.
 ## maze/courtyards: wide square rings round the goal with chicanes, built in mirror mode.
 
@@ -71,15 +71,16 @@ static func make_tulips() -> BoardLevel:
 	return level
 
 
-## Windmills: staggered rows of pins with wide gaps, pin circles that spin balls sideways,
-## and three rich pockets under umbrella arcs.
+## Windmills: staggered rows of pins with wide gaps, five real windmills (風車) in cleared
+## circles (the top one and the lower pair driven, the middle pair free-spinning, each
+## mirrored twin turning the other way), and three rich pockets under umbrella arcs.
 static func make_windmills() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := pachinko_base(
 		history,
 		"windmills",
 		"Windmills",
-		"An open board: balls ricochet off pin windmills towards three rich pockets."
+		"Five windmills turn in an open field: their blades fling balls toward three rich pockets."
 	)
 	var axis := CENTER
 	for row in 13:
@@ -87,21 +88,39 @@ static func make_windmills() -> BoardLevel:
 		var x := CENTER + (17.0 if row % 2 == 1 else 0.0)
 		history.commit(PatternAction.new(level, row_pattern, Vector2(x, 130.0 + row * 36.0)))
 	erase_pins_outside_field(history, level, 22.0)
-	var windmill := {"kind": "circle", "count": 6, "spacing": 16.0}
-	for spot in [Vector2(350, 200), Vector2(230, 330), Vector2(130, 450), Vector2(260, 540)]:
-		erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), axis)
-		history.commit(PatternAction.new(level, windmill, spot, axis))
-		var hub := Items.empty_set()
-		hub["pins"] = PackedVector2Array([spot])
-		history.commit(AddItems.new(level, hub, "Add pin"))
-	for pocket: Array in [[Vector2(350, 390), 7], [Vector2(220, 560), 7]]:
+	for pocket: Array in [[Vector2(350, 390), 3], [Vector2(220, 560), 3]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
 		var umbrella := {"kind": "arc", "count": 5, "spacing": 14.0, "radius": 28.0}
 		history.commit(PatternAction.new(level, umbrella, mouth + Vector2(-40, -10), axis))
+	var wheels := Items.empty_set()
+	wheels["windmills"] = [
+		WindmillSpec.driven(Vector2(350, 210), 6, 24.0, 150.0),
+		WindmillSpec.spinning_free(Vector2(230, 330), 4, 22.0, 240.0),
+		WindmillSpec.spinning_free(Vector2(470, 330), 4, 22.0, 240.0),
+		WindmillSpec.driven(Vector2(262, 500), 3, 22.0, -110.0),
+		WindmillSpec.driven(Vector2(438, 500), 3, 22.0, 110.0),
+	]
+	var wheel_list: Array = wheels["windmills"]
+	for spec: WindmillSpec in wheel_list:
+		erase_pins_near(history, level, spec.position, spec.sweep_radius() + 13.0)
+	history.commit(AddItems.new(level, wheels, "Add windmills"))
 	shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	return level
+
+
+## Erases the field pins closer than `radius` to `centre` (a windmill's clearing: its sweep,
+## a pin and a ball's width).
+static func erase_pins_near(
+	history: ActionHistory, level: BoardLevel, centre: Vector2, radius: float
+) -> void:
+	var doomed: Array[Vector2i] = []
+	for i in level.pins.size():
+		if level.pin_pocket[i] < 0 and level.pins[i].distance_to(centre) < radius:
+			doomed.append(Items.make(Items.Kind.PIN, i))
+	if not doomed.is_empty():
+		history.commit(DeleteItems.new(level, doomed))
 
 
 ## Opens the rail at `rail_end_deg` and erases the free pins in the flight lane under the

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The whole test run: lint, every GUT test headless (JUnit XML in build/), the headless
 # editor smoke check, the windowed game under Xvfb (tools/play_check.sh; skipped, and said
-# so, where Xvfb cannot be had). Ends with one plain line "N passed, N failed"; exits
-# non-zero when anything failed or no test ran.
+# so, where Xvfb cannot be had), the release launcher's tests and, where this machine can,
+# make release + the release check in a clean Debian 12 root (tools/release/test_hook.sh).
+# Ends with one plain line "N passed, N failed"; exits non-zero when anything failed or no
+# test ran.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -45,12 +47,20 @@ if [ "$play_status" -ne 0 ] && [ "$play_status" -ne 77 ]; then
 	extra_failed=$((extra_failed + 1))
 fi
 
+echo "== release (the launcher's tests; make release + the release check where it can run)"
+tools/release/test_hook.sh
+release_status=$?
+if [ "$release_status" -ne 0 ] && [ "$release_status" -ne 77 ]; then
+	extra_failed=$((extra_failed + 1))
+fi
+
 read -r passed failed < <(python3 tools/junit_counts.py "$XML")
 failed=$((failed + extra_failed))
 if [ "$gut_status" -ne 0 ] && [ "$failed" -eq 0 ]; then
 	failed=1 # GUT failed without a readable report: never report green
 fi
 [ "$play_status" -ne 77 ] || echo "(the play check was SKIPPED: no Xvfb, see above)"
+[ "$release_status" -ne 77 ] || echo "(the release check was SKIPPED, see above)"
 echo "$passed passed, $failed failed"
 if [ "$passed" -eq 0 ] || [ "$failed" -ne 0 ]; then
 	exit 1

@@ -25,7 +25,8 @@ enum Tool {
 	CURVE,
 	START_POCKET,
 	ATTACKER,
-	TULIP
+	TULIP,
+	WINDMILL
 }
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -34,6 +35,7 @@ const Snapping := preload("res://addons/board_editor/core/snapping.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
+const ItemKeys := preload("res://addons/board_editor/core/item_keys.gd")
 
 ## Tools that make sense on each kind of board.
 const PACHINKO_TOOLS: Array[int] = [
@@ -46,7 +48,8 @@ const PACHINKO_TOOLS: Array[int] = [
 	Tool.ERASE,
 	Tool.START_POCKET,
 	Tool.ATTACKER,
-	Tool.TULIP
+	Tool.TULIP,
+	Tool.WINDMILL
 ]
 const MAZE_TOOLS: Array[int] = [
 	Tool.SELECT, Tool.WALL, Tool.HOLE, Tool.GOAL, Tool.START, Tool.HANDLES, Tool.ERASE
@@ -54,7 +57,8 @@ const MAZE_TOOLS: Array[int] = [
 
 ## The board being edited.
 var level: BoardLevel
-## The selected items (see BoardItems).
+## The selected items (see BoardItems), as they are numbered now; the session remembers
+## them by their stable ids (ItemKeys), so after an edit they are the same items.
 var selection: Array[Vector2i] = []
 ## The active tool.
 var tool: int = Tool.SELECT
@@ -87,6 +91,8 @@ var history := ActionHistory.new()
 # The last selected_arc() answer and what it was computed from (the overlay asks each frame).
 var _arc_for: Array = []
 var _arc: Dictionary = {}
+# The selected items' ItemKeys, in selection order.
+var _selected_keys: Array = []
 
 
 func _init(on_level: BoardLevel = null) -> void:
@@ -184,18 +190,20 @@ func available_tools() -> Array[int]:
 ## Replaces the selection.
 func select(items: Array[Vector2i]) -> void:
 	selection = items.duplicate()
+	_selected_keys.clear()
+	for item in selection:
+		var key := ItemKeys.of(level, item)
+		if not key.is_empty():
+			_selected_keys.append(key)
 	selection_changed.emit()
 
 
-## Drops selected items that no longer exist (after an undo or a delete).
+## Brings the selection up to date after an edit, an undo or a redo: each selected item where
+## it is numbered now (found by its id), and those that no longer exist dropped.
 func prune_selection() -> void:
-	var kept: Array[Vector2i] = []
-	for item in selection:
-		if Items.is_valid(level, item) and not kept.has(item):
-			kept.append(item)
+	var kept := ItemKeys.find_all(level, _selected_keys)
 	if kept != selection:
-		selection = kept
-		selection_changed.emit()
+		select(kept)
 
 
 ## The pocket the dock's inspector edits: the only selected pocket, or -1.

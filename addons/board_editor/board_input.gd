@@ -33,6 +33,8 @@ var tools := {}
 var _owned_press := -1
 # The owned press only gave the viewport its focus back: its release does nothing either.
 var _focus_press := false
+# The owned press was far off the board with a tool that has nothing to do there.
+var _idle_press := false
 
 
 func _init(on_session: Session) -> void:
@@ -52,6 +54,7 @@ func _init(on_session: Session) -> void:
 		Session.Tool.START_POCKET: BonusTool.new(session, BonusPocketSpec.Role.START),
 		Session.Tool.ATTACKER: BonusTool.new(session, BonusPocketSpec.Role.ATTACKER),
 		Session.Tool.TULIP: BonusTool.new(session, BonusPocketSpec.Role.TULIP),
+		Session.Tool.WINDMILL: PlaceTool.new(session, Items.Kind.WINDMILL),
 	}
 
 
@@ -61,10 +64,11 @@ func active_tool() -> BoardTool:
 
 
 ## Handles one event; `to_board` maps viewport pixels to board pixels. True when used.
-## While a board is edited the tool owns the input over it: every click, drag and key
-## there is used (or swallowed), so nothing reaches Godot's own 2D tools. Left to Godot:
-## the wheel and the middle button (zoom and pan), presses well outside the board,
-## Ctrl/Cmd/Alt shortcuts the tool does not use (undo, save, new scene) and F1-F12.
+## While a board is edited the tool owns the viewport's clicks and keys: every click, drag
+## and key is used (or swallowed), so nothing reaches Godot's own 2D tools and a click beside
+## the board never deselects the board node. Left to Godot: the wheel and the middle button
+## (zoom and pan), Ctrl/Cmd/Alt shortcuts the tool does not use (undo, save, new scene) and
+## F1-F12.
 ## `focused` is false when the viewport did not have the keyboard focus: that first press
 ## only takes the focus back and performs no action.
 func handle(event: InputEvent, to_board: Transform2D, focused := true) -> bool:
@@ -144,12 +148,14 @@ func _mouse_button(
 	if not button.pressed:
 		return _mouse_release(tool, button, at)
 	if _owned_press < 0:
-		if not is_over_board(at):
-			return false
 		_owned_press = index
 		_focus_press = not focused
-	if _focus_press:
-		return true  # this click only brings the keyboard focus back to the viewport
+		# Far off the board only the Select tool acts (a box, or a click that clears the
+		# selection); the press is still the tool's, so Godot never deselects the board node
+		# and closes the tool.
+		_idle_press = not is_over_board(at) and session.tool != Session.Tool.SELECT
+	if _focus_press or _idle_press:
+		return true  # a focus click, or a tool with nothing to do off the board
 	if index == MOUSE_BUTTON_LEFT:
 		tool.press(at, button)
 	else:
@@ -162,25 +168,30 @@ func _mouse_release(tool: BoardTool, button: InputEventMouseButton, at: Vector2)
 	if button.button_index != _owned_press:
 		return false
 	_owned_press = -1
-	if _focus_press:
+	if _focus_press or _idle_press:
 		_focus_press = false
+		_idle_press = false
 	elif button.button_index == MOUSE_BUTTON_LEFT:
 		tool.release(at, button)
 	return true
 
 
-# Ctrl+C / Ctrl+V / Ctrl+D; anything else with Ctrl (undo, save...) is the editor's.
+# Ctrl+C / Ctrl+V / Ctrl+D are the board's even when there is nothing to copy or paste
+# (Godot would copy, paste or duplicate the board node: "Can't paste root node"); anything
+# else with Ctrl (undo, save...) is the editor's.
 func _command_key(key: InputEventKey) -> bool:
 	if key.shift_pressed or key.alt_pressed:
 		return false
 	match key.keycode:
 		KEY_C:
-			return Commands.copy_selection(session)
+			Commands.copy_selection(session)
 		KEY_V:
-			return Commands.paste_at(session, active_tool().hover)
+			Commands.paste_at(session, active_tool().hover)
 		KEY_D:
-			return Commands.duplicate_selection(session)
-	return false
+			Commands.duplicate_selection(session)
+		_:
+			return false
+	return true
 
 
 # Snap, mirror and the tool keys.

@@ -17,12 +17,15 @@ const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 const ViewFocus := preload("res://addons/board_editor/ui/view_focus.gd")
 const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
+const NewBoardFiles := preload("res://addons/board_editor/core/new_board_files.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 ## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
 ## this variable naming a script under res://tools/ or res://tests/, the plugin adds it as a
 ## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
 const TOOLING_HOOK_ENV := "BOARD_EDITOR_HOOK"
 const TOOLING_HOOK_FOLDERS: Array[String] = ["res://tools/", "res://tests/"]
+## The Project > Tools entry that starts a new board.
+const NEW_BOARD_MENU := "New board..."
 
 var _node: BoardNode
 var _session: Session
@@ -54,12 +57,15 @@ func _enter_tree() -> void:
 	_dock.issue_focused.connect(focus_issue)
 	_dock.new_board_requested.connect(_new_board)
 	_dock.save_as_requested.connect(_save_as_file)
+	_dock.new_board_file_requested.connect(open_new_board_dialog)
 	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
 	_dock.focus_return_requested.connect(_return_focus)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
 	_save_dialog = SaveAsDialog.new()
 	_save_dialog.save_confirmed.connect(_save_as_named)
+	_save_dialog.new_board_confirmed.connect(create_new_board)
 	EditorInterface.get_base_control().add_child(_save_dialog)
+	add_tool_menu_item(NEW_BOARD_MENU, open_new_board_dialog)
 	_dock.analysis.redraw_needed.connect(update_overlays)
 	_dock.analysis.results_changed.connect(_refresh)
 	_dock.maze_analysis.redraw_needed.connect(update_overlays)
@@ -68,6 +74,7 @@ func _enter_tree() -> void:
 
 func _exit_tree() -> void:
 	_release()
+	remove_tool_menu_item(NEW_BOARD_MENU)
 	remove_control_from_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
 	remove_control_from_docks(_dock)
 	_save_dialog.queue_free()
@@ -276,6 +283,31 @@ func _new_board(kind: int) -> void:
 func _rebind(node: BoardNode) -> void:
 	if is_instance_valid(node) and EditorInterface.get_selection().get_selected_nodes().has(node):
 		_edit(node)
+
+
+## Opens the "New board" dialog (Project > Tools > New board..., or the dock's button).
+func open_new_board_dialog() -> void:
+	_save_dialog.open_new()
+
+
+## Writes a new board and its level scene, opens the scene and selects its board node, so
+## the tool is ready at once; the dock says what went wrong otherwise.
+func create_new_board(kind: int, file_id: String, display_name: String) -> void:
+	var made := NewBoardFiles.create(kind, file_id, display_name)
+	if made.has("error"):
+		_dock.show_message(str(made["error"]))
+		return
+	var board_path: String = made["board"]
+	var scene_path: String = made["scene"]
+	var filesystem := EditorInterface.get_resource_filesystem()
+	filesystem.update_file(board_path)
+	filesystem.update_file(scene_path)
+	EditorInterface.open_scene_from_path(scene_path)
+	var root := EditorInterface.get_edited_scene_root()
+	if root is BoardNode:
+		EditorInterface.get_selection().clear()
+		EditorInterface.get_selection().add_node(root)
+	_dock.show_message("New board: %s and %s." % [board_path, scene_path])
 
 
 func _save_as_file() -> void:

@@ -15,16 +15,16 @@ const SAVE_PATH := "user://save.cfg"
 const MENU_SCENE := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT_SCENE := "res://scenes/menu/level_select.tscn"
 const GAME_SCENES := {
-	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
-	"maze": "res://scenes/maze/maze_game.tscn",
+	BoardLevel.PACHINKO_NAME: "res://scenes/pachinko/pachinko_game.tscn",
+	BoardLevel.MAZE_NAME: "res://scenes/maze/maze_game.tscn",
 }
 
 ## The player's settings (volumes, window, frame counter, tilt sensitivity, bindings).
 var settings := GameSettings.new()
 ## Best results per board.
 var save_data := SaveData.new()
-## Which game the level select lists ("pachinko" or "maze").
-var level_select_kind := "pachinko"
+## Which game the level select lists (a name of BoardLevel.KIND_NAMES).
+var level_select_kind := BoardLevel.PACHINKO_NAME
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 
@@ -43,6 +43,12 @@ func _ready() -> void:
 		get_tree().quit(code)
 		return
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
+
+
+# The game is quitting (App leaves the tree last, after the scenes that cancelled their
+# board loadings): wait for those loading threads, so none is destroyed while it runs.
+func _exit_tree() -> void:
+	BoardListLoading.wait_for_cancelled()
 
 
 ## Loads settings and best results and applies the settings. After a problem the file is

@@ -19,7 +19,8 @@ enum Layer {
 	GOAL = 256,
 	STARTS = 512,
 	BONUS = 1024,
-	ALL = 2047,
+	WINDMILLS = 2048,
+	ALL = 4095,
 }
 
 const BonusPainter := preload("res://scenes/board_view/bonus_painter.gd")
@@ -133,6 +134,9 @@ static func _draw_pachinko(
 		BonusPainter.draw_all(canvas, level)
 	if layers & Layer.PINS:
 		_draw_pins(canvas, level, min_pin_radius)
+	if layers & Layer.WINDMILLS:
+		for spec in level.windmills:
+			WindmillPainter.draw_wheel(canvas, spec, 0.0)
 
 
 static func _draw_pocket(canvas: CanvasItem, spec: PocketSpec, pin_radius: float) -> void:

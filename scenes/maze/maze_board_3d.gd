@@ -11,6 +11,16 @@ const Palette := preload("res://scenes/maze/maze_palette.gd")
 const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const FLOOR_SHADER := preload("res://scenes/maze/maze_floor.gdshader")
 const SHADOW_SHADER := preload("res://scenes/maze/maze_floor_shadow.gdshader")
+const SOLID_SHADER := preload("res://scenes/maze/maze_wood_solid.gdshader")
+## The wood-and-steel look: a pale maple floor in boards one cell wide, walnut walls with
+## lighter routed tops, and a darker frame (the tutorial's look keeps its flat paint).
+const MAPLE := Color("e2c9a0")
+const MAPLE_GRAIN := Color("b08456")
+const WALNUT_SIDE := Color("5a3b22")
+const WALNUT_TOP := Color("8a6240")
+const WALNUT_GRAIN := Color("2e1b0e")
+const FRAME_SIDE := Color("4a2e19")
+const FRAME_TOP := Color("7a5434")
 ## Walls stand this many ball radii above the floor (a Labyrinth wall is about a ball high).
 const WALL_HEIGHT_PER_RADIUS := 2.4
 ## The frame is this much taller than the walls, and this wide, in board pixels.
@@ -30,6 +40,9 @@ const SHADOW_LIGHT_LEFT := 0.78
 ## keep the light they had.
 const FLOOR_GAIN := 1.22
 
+## The tutorial's flat colours instead of wood (set before `build`).
+var tutorial_look := false
+
 var _level: BoardLevel
 var _floor := MeshInstance3D.new()
 var _walls := MeshInstance3D.new()
@@ -39,6 +52,8 @@ var _wall_shadows := MeshInstance3D.new()
 var _frame_shadow := MeshInstance3D.new()
 var _floor_material := ShaderMaterial.new()
 var _shadow_material := ShaderMaterial.new()
+var _wall_material := ShaderMaterial.new()
+var _frame_material := ShaderMaterial.new()
 
 
 func _ready() -> void:
@@ -51,8 +66,10 @@ func _ready() -> void:
 	_floor.material_override = _floor_material
 	_wall_shadows.material_override = _shadow_material
 	_frame_shadow.material_override = _shadow_material
-	_walls.material_override = _plain(Palette.WALL, 0.55, 0.0)
-	_frame.material_override = _plain(Palette.WALL.lightened(0.1), 0.6, 0.0)
+	_wall_material.shader = SOLID_SHADER
+	_frame_material.shader = SOLID_SHADER
+	_walls.material_override = _wall_material
+	_frame.material_override = _frame_material
 
 
 ## Builds the board for `level`; holes only when `hard` (the seed shows them in hard mode).
@@ -67,8 +84,7 @@ func build(level: BoardLevel, hard: bool) -> void:
 	_frame.mesh = Meshes.frame(size, FRAME_MARGIN, wall_height + FRAME_EXTRA_HEIGHT, BODY_DEPTH)
 	_wall_shadows.mesh = _walls.mesh
 	_frame_shadow.mesh = Meshes.frame_lip(size, wall_height + FRAME_EXTRA_HEIGHT)
-	_set_paint("floor_color", Palette.BACKGROUND)
-	_set_paint("floor_gain", FLOOR_GAIN)
+	_paint_look()
 	_set_paint("goal_color", Palette.GOAL)
 	_set_paint("rim_color", Palette.HOLE_RIM.darkened(0.4))
 	_set_paint("lost_color", Palette.HOLE_LOST)
@@ -77,6 +93,32 @@ func build(level: BoardLevel, hard: bool) -> void:
 	_set_paint("goal_radius", level.goal_radius)
 	_set_paint("hole_radius", level.hole_radius)
 	set_hard_mode(hard)
+
+
+## The floor, walls and frame in the chosen look (`tutorial_look`).
+func _paint_look() -> void:
+	var wood := not tutorial_look
+	_set_paint("floor_color", MAPLE if wood else Palette.BACKGROUND)
+	_set_paint("floor_gain", 1.0 if wood else FLOOR_GAIN)
+	_set_paint("grain_strength", 0.55 if wood else 0.0)
+	_set_paint("grain_color", MAPLE_GRAIN)
+	_set_paint("plank_px", _level.path_width + _level.wall_width if _level != null else 35.0)
+	var looks := [
+		[_wall_material, WALNUT_SIDE, WALNUT_TOP, Palette.WALL, Palette.WALL],
+		[
+			_frame_material,
+			FRAME_SIDE,
+			FRAME_TOP,
+			Palette.WALL.lightened(0.1),
+			Palette.WALL.lightened(0.1)
+		],
+	]
+	for look: Array in looks:
+		var material: ShaderMaterial = look[0]
+		material.set_shader_parameter("side_color", look[1] if wood else look[3])
+		material.set_shader_parameter("cap_color", look[2] if wood else look[4])
+		material.set_shader_parameter("grain_color", WALNUT_GRAIN)
+		material.set_shader_parameter("grain_strength", 0.5 if wood else 0.0)
 
 
 ## Shows or hides the holes.

@@ -14,10 +14,21 @@ const Recipes := preload("res://scripts/audio/sound_recipes.gd")
 const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const MazeNote := preload("res://scenes/maze/maze_note.gd")
 const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
+const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
+## The side panel: a column on the right of a landscape window (this share of its width,
+## within these bounds, and this far from the edge), a band along the bottom of a portrait one
+## (this share of its height). The board is framed in the rest, so no text lies over it.
+const SIDE_SHARE := 0.2
+const SIDE_MIN_WIDTH := 260.0
+const SIDE_MAX_WIDTH := 350.0
+const SIDE_EDGE := 24.0
+const PORTRAIT_SIDE_SHARE := 0.45
+## The height (px) the side panel's text takes in a portrait band, beside the joystick.
+const PORTRAIT_TEXT_HEIGHT := 380.0
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -35,14 +46,17 @@ var _recorder := ReplayRecorder.new()
 var _ghost: GhostRun
 var _ghost_view := MazeGhost3D.new()
 var _rolling: MazeBallSounds
+var _win_panel := MazeWinPanel.new()
 
 @onready var _stage: MazeStage = $Stage
+@onready var _side: VBoxContainer = $Side
 @onready var _joystick: MazeJoystick = %Joystick
 @onready var _note: MazeNote = %Note
 @onready var _title: Label = %Title
 @onready var _mode: Label = %Mode
 @onready var _timer: Label = %Timer
 @onready var _best: Label = %Best
+@onready var _next_medal: Label = %NextMedal
 @onready var _calibrate: Button = %Calibrate
 @onready var _controls: Label = %Controls
 
@@ -55,9 +69,14 @@ func _ready() -> void:
 	add_child(_rolling)
 	haptics.enabled = App.settings.vibration
 	App.settings.changed.connect(_on_settings_changed)
+	add_child(_win_panel)
+	_win_panel.next_board_chosen.connect(_on_next_board)
+	_win_panel.retry_chosen.connect(_on_retry)
+	_win_panel.menu_chosen.connect(App.go_to_level_select.bind("maze"))
 	_add_optional_scene(PAUSE_MENU)
 	_add_optional_scene(FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
+	_joystick.sensitivity = App.settings.tilt_sensitivity
 	_joystick.pressed.connect(_on_joystick_pressed)
 	_joystick.moved.connect(mixer.joystick_moved)
 	_calibrate.pressed.connect(_on_calibrate)
@@ -77,7 +96,10 @@ func _ready() -> void:
 	rules.game_reset.connect(_on_game_reset)
 	rules.goal_count_changed.connect(_on_goal_count_changed)
 	rules.wall_bumped.connect(_on_wall_bumped)
+	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
+	get_viewport().size_changed.connect(_layout)
+	_layout()
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
 
@@ -108,6 +130,8 @@ func _process(delta: float) -> void:
 	else:
 		_rolling.stop_all()
 	_timer.text = "Time  %s" % _format_time(rules.elapsed)
+	if not rules.is_over():
+		_show_next_medal()
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -158,6 +182,7 @@ func _on_calibrate() -> void:
 
 func _on_game_reset() -> void:
 	_goal_count = 0
+	_win_panel.hide()
 	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
 	_ghost_view.set_board_size(rules.level.size)
 	_ghost_view.clear()
@@ -178,19 +203,101 @@ func _on_game_reset() -> void:
 
 func _on_won(seconds: float) -> void:
 	_joystick.release()
-	var best := App.record_maze_time(rules.level.board_id, rules.hard_mode, seconds)
+	var board_id := rules.level.board_id
+	var before := App.best_maze_time(board_id, rules.hard_mode)
+	var summary := MazeWinSummary.of(rules.level, rules.hard_mode, seconds, before)
+	var best := App.record_maze_time(board_id, rules.hard_mode, seconds)
 	if best:
-		var path := ReplayStore.best_maze_path(rules.level.board_id, rules.hard_mode)
+		var path := ReplayStore.best_maze_path(board_id, rules.hard_mode)
 		ReplayStore.save(_recorder.finish(), path)
 	var hint := "" if rules.hard_mode else "Press %s for hard mode" % _key("maze_hard_mode")
-	var line := "Your time: %s%s" % [_format_time(seconds), "  (a new best!)" if best else ""]
-	_note.show_note("Congrats, you did it!", "%s\n%s" % [line, hint] if hint else line)
+	_note.show_note("Congrats, you did it!", hint)
+	_next_medal.text = summary.medal_line()
 	_show_best()
+	_win_panel.present(summary, rules.hard_mode, not _next_board_path().is_empty())
 	_sounds.play(SoundBank.FANFARE)
+	if summary.medal != Medals.Medal.NONE:
+		# a chime on top, higher for a better medal
+		_sounds.play(SoundBank.GOAL_CHIME, -4.0, 1.0 + 0.25 * float(summary.medal))
+
+
+## Puts the side panel where the window's shape leaves room (a column on the right, or a
+## band along the bottom of a portrait window) and frames the board in the rest. Returns the
+## board's region (screen pixels).
+func _layout() -> Rect2:
+	var view := get_viewport_rect().size
+	var region: Rect2
+	if view.x >= view.y:
+		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
+		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
+		_side.offset_left = -width - SIDE_EDGE
+		_side.offset_right = -SIDE_EDGE
+		_side.offset_top = SIDE_EDGE
+		_side.offset_bottom = -SIDE_EDGE
+		region = Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
+		_joystick.ui_scale = minf(2.0, width / MazeJoystick.drawn_size(1.0))
+	else:
+		var height := view.y * PORTRAIT_SIDE_SHARE
+		_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
+		_side.offset_left = SIDE_EDGE
+		_side.offset_right = -SIDE_EDGE
+		_side.offset_top = -height
+		_side.offset_bottom = -SIDE_EDGE * 0.5
+		region = Rect2(0.0, 0.0, view.x, view.y - height)
+		# the joystick takes what the band's text leaves
+		_joystick.ui_scale = clampf(
+			(height - PORTRAIT_TEXT_HEIGHT) / MazeJoystick.drawn_size(1.0), 0.8, 2.0
+		)
+	_stage.set_board_region(region)
+	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
+	_win_panel.position = region.position
+	_win_panel.size = region.size
+	return region
+
+
+## The win panel (for tests and the screenshots).
+func win_panel() -> MazeWinPanel:
+	return _win_panel
+
+
+func _on_next_board() -> void:
+	var path := _next_board_path()
+	if not path.is_empty():
+		App.start_game("maze", path)
+
+
+func _on_retry() -> void:
+	if rules != null:
+		rules.reset()
+
+
+## The file of the board that opens after this one ("" after the last or for the player's
+## own boards).
+func _next_board_path() -> String:
+	var next_id := MazeProgress.next_of(rules.level.board_id)
+	if next_id.is_empty():
+		return ""
+	var path := MazeProgress.shipped_path(next_id)
+	return path if FileAccess.file_exists(path) else ""
+
+
+## The medal still in reach while playing: "Gold by 0:36.3", then Silver once that passed.
+func _show_next_medal() -> void:
+	var times := Medals.times_for(rules.level, rules.hard_mode)
+	var target := Medals.next_target(times, rules.elapsed)
+	var medal: Medals.Medal = target["medal"]
+	if times.size() != 3:
+		_next_medal.text = ""
+	elif medal == Medals.Medal.NONE:
+		_next_medal.text = "No medal left this run: finish anyway!"
+	else:
+		var seconds: float = target["seconds"]
+		_next_medal.text = "%s by %s" % [Medals.name_of(medal), _format_time(seconds)]
 
 
 func _on_lost(hole: int) -> void:
 	_joystick.release()
+	_next_medal.text = ""
 	_stage.set_lost_hole(hole)
 	_sounds.play(Recipes.BALL_DROP)
 	haptics.drop()
@@ -214,6 +321,8 @@ func _on_wall_bumped(speed: float) -> void:
 
 func _on_settings_changed() -> void:
 	haptics.enabled = App.settings.vibration
+	mixer.sensitivity = App.settings.tilt_sensitivity
+	_joystick.sensitivity = App.settings.tilt_sensitivity
 
 
 func _on_restart_requested() -> void:
@@ -227,7 +336,7 @@ func _show_best() -> void:
 
 
 func _load_level() -> BoardLevel:
-	var path := App.current_board_path("maze")
+	var path := App.current_board_path(BoardLevel.MAZE_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level != null and loaded.level.is_maze():
 		return loaded.level
@@ -275,5 +384,4 @@ static func _key(action: String) -> String:
 
 
 static func _format_time(seconds: float) -> String:
-	var whole := int(seconds)
-	return "%d:%02d.%d" % [floori(seconds / 60.0), whole % 60, int(fmod(seconds, 1.0) * 10.0)]
+	return MazeWinSummary.clock(seconds)

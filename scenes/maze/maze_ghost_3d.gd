@@ -1,15 +1,14 @@
 extends Node3D
 ## The ghost of the best run in the 3D maze: translucent balls standing where the best run's
 ## balls were at the same step. It lives on the tilting board (the stage's `add_on_board`),
-## so it tilts with it; it casts no shadow and takes no light, so it reads as "not a real
-## ball" beside the lit ones, and a darker violet rim (maze_ghost.gdshader) outlines it on
-## the pale floor. Call `show_balls` every frame and `clear` on a reset.
+## so it tilts with it; it casts no shadow and takes no light of its own: a translucent steel
+## ball (maze_ghost.gdshader) with a bright rim, so it reads as "not a real ball" beside the
+## solid ones. Call `show_balls` every frame and `clear` on a reset.
 
 const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const GHOST_SHADER := preload("res://scenes/maze/maze_ghost.gdshader")
-## The ghost's colour: violet, see-through, and its outline, nearly solid.
-const FILL := Color(0.55, 0.42, 0.93, 0.62)
-const RIM := Color(0.3, 0.16, 0.7, 0.95)
+## How much of the ghost's body hides what is behind it (its rim and highlight show more).
+const OPACITY := 0.42
 
 ## Ghost ball positions last shown, in board pixels (read by tests).
 var shown_positions := PackedVector2Array()
@@ -21,11 +20,11 @@ var _nodes: Array[MeshInstance3D] = []
 
 
 func _init() -> void:
-	_mesh.rings = 8
-	_mesh.radial_segments = 16
+	# round enough that its outline is a circle at the size balls are drawn
+	_mesh.rings = 12
+	_mesh.radial_segments = 24
 	_material.shader = GHOST_SHADER
-	_material.set_shader_parameter("fill", FILL)
-	_material.set_shader_parameter("rim", RIM)
+	_material.set_shader_parameter("opacity", OPACITY)
 
 
 ## Sets the board size (pixels) that positions are measured on.

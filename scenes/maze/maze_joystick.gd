@@ -2,6 +2,8 @@ extends Control
 ## The seed's joystick: a dark purple disc with four arrows and a red-orange head. Press the
 ## head to start; after that the head follows the pointer (clamped to ±15 seed pixels per
 ## axis) as in the seed, and `moved` reports the offset, which the game turns into tilt.
+## As in the seed, 15 screen pixels of pointer travel tilt the board all the way (divided by
+## `sensitivity`), however large the joystick is drawn.
 ## The head pulses until it is first used. Sizes are the seed's times `ui_scale`.
 
 ## The head was pressed (the seed's "click the joystick to start").
@@ -19,8 +21,15 @@ const ARROW_HALF := 10.0
 const GLOW_DELAY := 4.0
 const GLOW_PERIOD := 0.6
 
-## Screen pixels per seed pixel.
-@export var ui_scale := 2.0
+## Screen pixels per seed pixel, for drawing.
+@export var ui_scale := 2.0:
+	set(value):
+		ui_scale = maxf(value, 0.5)
+		custom_minimum_size = Vector2.ONE * drawn_size(ui_scale)
+		queue_redraw()
+## Scales the pointer's travel (the settings' tilt sensitivity): at 1 a pointer moved 15
+## screen pixels tilts the board fully, as in the seed; at 2, 7.5 pixels do.
+var sensitivity := 1.0
 
 ## Where the head is drawn, in seed pixels from the centre.
 var head_offset := Vector2.ZERO:
@@ -37,7 +46,7 @@ var _clock := 0.0
 
 
 func _ready() -> void:
-	custom_minimum_size = Vector2.ONE * (ARROW_DISTANCE + ARROW_HALF + 8.0) * 2.0 * ui_scale
+	custom_minimum_size = Vector2.ONE * drawn_size(ui_scale)
 	mouse_filter = Control.MOUSE_FILTER_STOP
 
 
@@ -45,6 +54,11 @@ func _process(delta: float) -> void:
 	_clock += delta
 	if glowing:
 		queue_redraw()
+
+
+## The width and height (px) the joystick and its arrows take at `drawn_scale`.
+static func drawn_size(drawn_scale: float) -> float:
+	return (ARROW_DISTANCE + ARROW_HALF + 8.0) * 2.0 * drawn_scale
 
 
 ## Stops following the pointer and centres the head (a reset or the end of a game).
@@ -63,7 +77,7 @@ func _gui_input(event: InputEvent) -> void:
 	accept_event()
 	glowing = false
 	engaged = true
-	_grab_point = press.global_position - head_offset * ui_scale
+	_grab_point = press.global_position - head_offset / _gain()
 	pressed.emit()
 	queue_redraw()
 
@@ -72,8 +86,13 @@ func _input(event: InputEvent) -> void:
 	var motion := event as InputEventMouseMotion
 	if motion == null or not engaged:
 		return
-	head_offset = (motion.global_position - _grab_point) / ui_scale
+	head_offset = (motion.global_position - _grab_point) * _gain()
 	moved.emit(head_offset)
+
+
+## Seed pixels of head travel per screen pixel of pointer travel.
+func _gain() -> float:
+	return maxf(sensitivity, 0.01)
 
 
 func _draw() -> void:

@@ -4,12 +4,15 @@ extends Node3D
 ## rotateY with `perspective: 600px` did; a sun that stays put while the board tilts, so
 ## walls and balls cast moving shadows; and a table far enough below that no corner of the
 ## board ever reaches it, with the board's shadow on it. One 3D unit is 100 board pixels.
+## The camera frames the board in the screen region the game leaves it (maze_framing.gd).
 
 const Palette := preload("res://scenes/maze/maze_palette.gd")
 const MazeBoard3D := preload("res://scenes/maze/maze_board_3d.gd")
 const MazeBalls3D := preload("res://scenes/maze/maze_balls_3d.gd")
 const MazeTableShadow := preload("res://scenes/maze/maze_table_shadow.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
+const MazeFraming := preload("res://scenes/maze/maze_framing.gd")
+const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const UNITS_PER_PX := 0.01
 ## The seed's CSS perspective distance, in board pixels.
 const PERSPECTIVE_PX := 600.0
@@ -18,10 +21,8 @@ const TABLE_CLEARANCE_PX := 10.0
 ## Where the sun shines (x right, y up the screen, z out of the screen): from the upper
 ## left and in front, so shadows fall down and to the right as on a desk lamp's board.
 const SUN_DIRECTION := Vector3(0.42, -0.5, -1.0)
-## Share of the screen height the board fills, and where its centre sits across the
-## screen (-1 left edge, 1 right edge).
-const HEIGHT_SHARE := 0.84
-const CENTRE_ACROSS := -0.27
+## How fast a zoomed view catches up with the balls (1/s).
+const FOLLOW_RATE := 3.0
 ## Light energies: the ambient fill and the sun that shades.
 const AMBIENT_ENERGY := 0.28
 const SUN_ENERGY := 0.42
@@ -33,8 +34,13 @@ const SUN_ENERGY := 0.42
 const SOFTWARE_GL_RENDER_SCALE := 0.5
 ## Words in the names of software GL drivers (RenderingServer.get_video_adapter_name()).
 const SOFTWARE_GL_NAMES: Array[String] = ["llvmpipe", "softpipe", "swrast", "swiftshader"]
-## Board ids that keep the seed's red balls; every other board rolls steel.
-const SEED_RED_BOARDS: Array[String] = ["maze_classic"]
+## The room the steel balls reflect (a panorama made here, seen only in the balls): its
+## size in pixels.
+const ROOM_SIZE := Vector2i(256, 128)
+
+## The tutorial's flat colours and red balls instead of wood and steel (set before
+## `set_level`).
+var tutorial_look := false
 
 var _pivot := Node3D.new()
 var _board: MazeBoard3D = MazeBoard3D.new()
@@ -44,6 +50,10 @@ var _sun := DirectionalLight3D.new()
 var _table: MazeTableShadow = MazeTableShadow.new()
 var _table_z := -1.0
 var _board_size := Vector2(350.0, 315.0)
+var _ball_radius := 5.0
+var _framing := MazeFraming.new()
+var _region := Rect2()
+var _follow_at := Vector2.ZERO
 
 
 func _ready() -> void:
@@ -77,10 +87,13 @@ func _exit_tree() -> void:
 ## Builds the board of `level` (holes shown when `hard`) and the look of its balls.
 func set_level(level: BoardLevel, hard: bool) -> void:
 	_board_size = level.size
+	_ball_radius = level.ball_radius
+	_follow_at = Vector2.ZERO
+	_board.tutorial_look = tutorial_look
 	_board.build(level, hard)
 	_balls.clear()
 	_balls.hole_depth_px = _board.hole_depth_px()
-	_balls.material = ball_material(level.board_id in SEED_RED_BOARDS)
+	_balls.material = ball_material(tutorial_look)
 	_balls.shadow_material = _board.shadow_material()
 	_frame()
 
@@ -101,9 +114,35 @@ func set_lost_hole(index: int) -> void:
 	_board.set_lost_hole(index)
 
 
-## Moves, rolls and drops the balls to match `rules`' world (call every frame).
+## Moves, rolls and drops the balls to match `rules`' world (call every frame). A zoomed
+## view follows the balls' centre of mass.
 func sync_balls(rules: MazeRules, delta: float) -> void:
 	_balls.sync(rules, delta)
+	if not _framing.zoomed:
+		return
+	var positions := rules.ball_positions()
+	if positions.is_empty():
+		return
+	var sum := Vector2.ZERO
+	for p in positions:
+		sum += p
+	var local := Meshes.to_local(_board_size, sum / float(positions.size()))
+	var target := Vector2(local.x, local.y)
+	_follow_at = _follow_at.lerp(target, 1.0 - exp(-FOLLOW_RATE * maxf(delta, 0.0)))
+	_framing.follow(_follow_at)
+	_camera.frustum_offset = _framing.offset
+
+
+## Frames the board inside `region` (screen pixels): the part of the window the game's
+## panels leave free. An empty rectangle means the whole window.
+func set_board_region(region: Rect2) -> void:
+	_region = region
+	_frame()
+
+
+## How the board is framed now (its scale, zoom and where it is drawn), for tests.
+func framing() -> MazeFraming:
+	return _framing
 
 
 ## Rotates the board: +x tilt lowers the right edge (balls roll right), +y lowers the
@@ -150,7 +189,7 @@ func lowest_board_point() -> float:
 	return _lowest_point(_pivot.transform)
 
 
-## The balls' surface: the seed's glossy red-orange, or polished steel.
+## The balls' surface: the seed's glossy red-orange (the tutorial's look), or polished steel.
 static func ball_material(seed_red: bool) -> StandardMaterial3D:
 	var mat := StandardMaterial3D.new()
 	mat.albedo_texture = _ball_band_texture(Palette.BALL if seed_red else Color(0.78, 0.8, 0.83))
@@ -162,8 +201,10 @@ static func ball_material(seed_red: bool) -> StandardMaterial3D:
 		mat.roughness = 0.28
 		mat.metallic_specular = 0.7
 	else:
-		mat.metallic = 0.9
-		mat.roughness = 0.22
+		# polished: the room (room_panorama) shows in it; less glow of its own
+		mat.metallic = 0.95
+		mat.roughness = 0.14
+		mat.emission_energy_multiplier = 0.3
 	return mat
 
 
@@ -208,17 +249,46 @@ func _environment() -> Environment:
 	env.ambient_light_color = Color.WHITE
 	env.ambient_light_energy = AMBIENT_ENERGY
 	env.ambient_light_sky_contribution = 0.0
-	# A soft studio sky, seen only in the steel balls' reflections.
-	var sky_material := ProceduralSkyMaterial.new()
-	sky_material.sky_top_color = Color(0.95, 0.94, 0.92)
-	sky_material.sky_horizon_color = Palette.BACKGROUND
-	sky_material.ground_bottom_color = Palette.WALL
-	sky_material.ground_horizon_color = Palette.BACKGROUND.darkened(0.2)
+	# The room round the table, seen only in the steel balls' reflections.
+	var sky_material := PanoramaSkyMaterial.new()
+	sky_material.panorama = ImageTexture.create_from_image(room_panorama(ROOM_SIZE))
 	var sky := Sky.new()
 	sky.sky_material = sky_material
+	sky.radiance_size = Sky.RADIANCE_SIZE_64
 	env.sky = sky
 	env.reflected_light_source = Environment.REFLECTION_SOURCE_SKY
 	return env
+
+
+## A room for the balls to reflect, as an equirectangular panorama `size` big: a pale
+## ceiling with two long lamps, warm walls with three bright windows, a dark wooden floor.
+## Made of rectangles and gradients only (no file, nothing copied).
+static func room_panorama(size: Vector2i) -> Image:
+	var image := Image.create(size.x, size.y, false, Image.FORMAT_RGB8)
+	var ceiling := Color(0.86, 0.85, 0.82)
+	var wall := Color(0.72, 0.62, 0.5)
+	var floor_colour := Color(0.25, 0.17, 0.11)
+	var window := Color(0.95, 0.97, 1.0)
+	var lamp := Color(1.0, 0.98, 0.92)
+	for y in size.y:
+		var v := (float(y) + 0.5) / float(size.y)  # 0 straight up, 1 straight down
+		for x in size.x:
+			var u := (float(x) + 0.5) / float(size.x)
+			var c := wall
+			if v < 0.3:
+				c = ceiling.lerp(wall, v / 0.3)
+				# two lamps across the ceiling
+				if absf(v - 0.12) < 0.03 and (absf(u - 0.2) < 0.12 or absf(u - 0.7) < 0.12):
+					c = lamp
+			elif v > 0.56:
+				c = wall.darkened(0.3).lerp(floor_colour, minf((v - 0.56) / 0.1, 1.0))
+			else:
+				# three windows round the walls, with a bar across each
+				var pane := fmod(u * 3.0, 1.0)
+				if absf(pane - 0.5) < 0.16 and v > 0.34 and v < 0.52 and absf(v - 0.43) > 0.008:
+					c = window
+			image.set_pixel(x, y, c)
+	return image
 
 
 # The lowest z of the board's outer box under the pivot transform `pose`.
@@ -230,22 +300,38 @@ func _lowest_point(pose: Transform3D) -> float:
 	return lowest
 
 
-# Places the camera the seed's perspective distance away, picks the field of view so the
-# board fills HEIGHT_SHARE of the screen, slides the board left of the screen centre, and
-# puts the table under the lowest point any tilt can give the board.
+# Places the camera the seed's perspective distance away and fits every corner of the board
+# under any tilt into the board's region (MazeFraming), and puts the table under the lowest
+# point any tilt can give the board.
 func _frame() -> void:
 	var distance := PERSPECTIVE_PX * UNITS_PER_PX
-	var half_height := _board_size.y * UNITS_PER_PX * 0.5 / HEIGHT_SHARE
-	_camera.fov = rad_to_deg(2.0 * atan(half_height / distance))
-	_camera.position = Vector3(0.0, 0.0, distance)
-	var view := get_viewport().get_visible_rect().size if is_inside_tree() else Vector2(16, 9)
-	var aspect := view.x / maxf(view.y, 1.0)
-	_pivot.position = Vector3(CENTRE_ACROSS * half_height * aspect, 0.0, 0.0)
+	var view := get_viewport().get_visible_rect().size if is_inside_tree() else Vector2(1280, 720)
+	var region := _region if _region.has_area() else Rect2(Vector2.ZERO, view)
+	var box := _board.outer_box()
+	var points := PackedVector3Array()
 	var lowest := 0.0
 	var m := deg_to_rad(TiltInput.MAX_TILT_DEG)
 	for corner: Vector2 in [Vector2(m, m), Vector2(m, -m), Vector2(-m, m), Vector2(-m, -m)]:
 		var pose := Transform3D(Basis.from_euler(Vector3(corner.y, corner.x, 0.0)), Vector3.ZERO)
-		lowest = minf(lowest, _lowest_point(pose))
+		for i in 8:
+			var p: Vector3 = pose * box.get_endpoint(i)
+			points.append(p)
+			lowest = minf(lowest, p.z)
+	_framing.distance = distance
+	_framing.near = _camera.near
+	# the window may stretch the view (project stretch settings): balls are measured on screen
+	_framing.screen_scale = (
+		get_viewport().get_final_transform().get_scale().y if is_inside_tree() else 1.0
+	)
+	_framing.fit(points, view, region, _ball_radius * 2.0 * UNITS_PER_PX)
+	if _framing.zoomed:
+		_framing.follow(_follow_at)
+	_pivot.position = Vector3.ZERO
+	_camera.position = Vector3(0.0, 0.0, distance)
+	_camera.projection = Camera3D.PROJECTION_FRUSTUM
+	_camera.keep_aspect = Camera3D.KEEP_HEIGHT
+	_camera.size = _framing.size
+	_camera.frustum_offset = _framing.offset
 	_table_z = lowest - TABLE_CLEARANCE_PX * UNITS_PER_PX
 	_cast_shadows()
 

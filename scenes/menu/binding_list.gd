@@ -3,7 +3,9 @@ extends GridContainer
 ## gamepad bindings. Choosing a binding waits for the next key (or gamepad button / stick),
 ## which replaces that column's binding; Esc cancels a key capture, any key a gamepad one.
 ## Delete, Backspace or a right click on a binding removes it (pause always keeps one:
-## removing its last binding brings the default back).
+## removing its last binding brings the default back). A key or button another action of
+## the same game already uses asks first whether to move it (binding_moves.gd), naming that
+## action; a move that would leave it with nothing is refused.
 
 ## A binding changed (the settings were updated; the owner saves them).
 signal binding_changed
@@ -11,6 +13,7 @@ signal binding_changed
 signal capture_toggled(capturing: bool)
 
 const Codec := preload("res://scripts/app/input_event_codec.gd")
+const BindingMoves := preload("res://scripts/app/binding_moves.gd")
 const AXIS_THRESHOLD := 0.6
 const ACTION_NAMES := {
 	"launch_charge": "Pachinko: launch (hold to charge)",
@@ -21,7 +24,7 @@ const ACTION_NAMES := {
 	"tilt_right": "Maze: tilt right",
 	"tilt_up": "Maze: tilt up",
 	"tilt_down": "Maze: tilt down",
-	"maze_reset": "Maze: put the ball back",
+	"maze_reset": "Maze: start the board again",
 	"maze_hard_mode": "Maze: hard mode (holes)",
 	"maze_easy_mode": "Maze: easy mode",
 	"maze_calibrate": "Maze: calibrate the tilt",
@@ -29,11 +32,15 @@ const ACTION_NAMES := {
 	"game_restart": "Restart",
 	"pause": "Pause",
 	"toggle_frame_counter": "Show / hide frame counter",
+	"board_actions": "Level select: a board's menu (play, export, delete)",
 }
 
 var _capture_action := ""
 var _capture_gamepad := false
 var _capture_button: Button = null
+var _move_dialog: ConfirmationDialog = null
+var _refusal: AcceptDialog = null
+var _pending_move := {}
 
 
 func _ready() -> void:
@@ -163,8 +170,93 @@ func _start_capture(action: String, gamepad: bool, button: Button) -> void:
 
 func _finish_capture(event: InputEvent) -> void:
 	event.device = -1
-	App.settings.rebind(_capture_action, event, _capture_gamepad)
+	var action := _capture_action
+	var gamepad := _capture_gamepad
 	_end_capture()
+	var others := BindingMoves.clashes(App.settings, action, event)
+	if others.is_empty():
+		App.settings.rebind(action, event, gamepad)
+		_refresh(action, gamepad)
+		return
+	_ask_to_move(action, event, gamepad, others)
+
+
+## The dialog asking whether to move a binding another action uses (null until first asked).
+func move_dialog() -> ConfirmationDialog:
+	return _move_dialog
+
+
+## The note saying a binding cannot be moved (null until first needed).
+func refusal() -> AcceptDialog:
+	return _refusal
+
+
+# Asks whether to take `event` off `others` and bind it to `action`, or says why it can't.
+func _ask_to_move(
+	action: String, event: InputEvent, gamepad: bool, others: PackedStringArray
+) -> void:
+	var shown := Codec.describe(event)
+	var names := PackedStringArray()
+	for other in others:
+		names.append("“%s”" % action_title(other))
+	var plan := BindingMoves.plan(App.settings, action, event, gamepad)
+	if not plan["ok"]:
+		if _refusal == null:
+			_refusal = AcceptDialog.new()
+			_refusal.title = "Binding not moved"
+			add_child(_refusal)
+		var stuck: String = plan["stuck"]
+		_refusal.dialog_text = (
+			"%s is the only %s of “%s”, so it stays there.\nGive “%s” another one first."
+			% [shown, "button" if gamepad else "key", action_title(stuck), action_title(stuck)]
+		)
+		_refusal.popup_centered()
+		return
+	if _move_dialog == null:
+		_move_dialog = ConfirmationDialog.new()
+		_move_dialog.title = "Already in use"
+		_move_dialog.ok_button_text = "Move it"
+		_move_dialog.cancel_button_text = "Keep it there"
+		_move_dialog.confirmed.connect(_on_move_confirmed)
+		add_child(_move_dialog)
+	var lines := PackedStringArray(
+		[
+			"%s is already used by %s." % [shown, " and ".join(names)],
+			"Move it to “%s”?" % action_title(action),
+		]
+	)
+	var swaps: Dictionary = plan["swaps"]
+	for other: String in swaps:
+		var swapped: InputEvent = swaps[other]
+		lines.append("“%s” gets %s instead." % [action_title(other), Codec.describe(swapped)])
+	_move_dialog.dialog_text = "\n".join(lines)
+	_pending_move = {"action": action, "event": event, "gamepad": gamepad}
+	_move_dialog.popup_centered()
+	_move_dialog.get_ok_button().grab_focus.call_deferred()
+
+
+func _on_move_confirmed() -> void:
+	if _pending_move.is_empty():
+		return
+	var action: String = _pending_move["action"]
+	var gamepad: bool = _pending_move["gamepad"]
+	var event: InputEvent = _pending_move["event"]
+	BindingMoves.move(App.settings, action, event, gamepad)
+	_pending_move = {}
+	_refresh(action, gamepad)
+
+
+# Shows every binding again after a change and keeps the focus on the changed one.
+func _refresh(action: String, gamepad: bool) -> void:
+	for child in get_children():
+		var button := child as Button
+		if button != null:
+			var parts := String(button.name).rsplit("_", true, 1)
+			if parts.size() == 2:
+				button.text = _describe(parts[0], parts[1] == "pad")
+	var changed := get_node_or_null("%s_%s" % [action, "pad" if gamepad else "key"]) as Button
+	if changed != null:
+		changed.grab_focus.call_deferred()
 	binding_changed.emit()
 
 

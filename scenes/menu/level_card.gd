@@ -2,12 +2,17 @@ extends Button
 ## One board in the level select: its thumbnail, name, description and best result. While
 ## its file loads (off the main thread) the card says so; a board that failed to load shows
 ## greyed out with its error. A greyed or loading card can take focus (so the message is
-## reachable with keyboard and gamepad) but not start.
+## reachable with keyboard and gamepad) but not start. The focused card shows its whole
+## description (or error): its thumbnail gives up the height the extra lines need.
 
 const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const CARD_SIZE := Vector2(300, 400)
 const THUMB_HEIGHT := 206.0
+## The least a focused card's thumbnail keeps, so the board stays recognisable.
+const THUMB_MIN_HEIGHT := 56.0
+## Greyed (a board that cannot be played), but opaque: the backdrop never shows through text.
+const GREYED := Color(0.72, 0.72, 0.76, 1.0)
 
 ## The board file this card stands for.
 var board_path := ""
@@ -25,6 +30,8 @@ var locked := false
 var _box: VBoxContainer = null
 var _thumbnail: BoardThumbnail = null
 var _badges: MedalBadges = null
+var _long_text: Label = null  # the description or the error: shown whole while focused
+var _long_lines := 3  # how many of its lines show while the card is not focused
 
 
 ## Shows the card of `path` as "Loading…" until `setup` fills it in.
@@ -55,18 +62,20 @@ func setup(result: BoardLoadResult, best: String) -> void:
 		if not file_line.is_empty():
 			_add_label(file_line, &"HintLabel")
 		_add_label(best if not best.is_empty() else "Not played yet", &"HintLabel")
-		_add_label(shown.description, &"HintLabel", true)
+		_long_text = _add_label(shown.description, &"HintLabel", true)
 		tooltip_text = shown.description
 	else:
 		_add_label("⚠ " + board_path.get_file(), &"WarningLabel")
 		var reason := result.error.trim_prefix(board_path + ": ")
-		_add_label("Can't be played: " + reason, &"HintLabel", true, 4)
+		_long_text = _add_label("Can't be played: " + reason, &"HintLabel", true, 4)
 		tooltip_text = result.error
-	modulate = Color(1, 1, 1, 1.0 if playable else 0.7)
+	modulate = Color.WHITE if playable else GREYED
+	_fit_long_text()
 
 
 ## Maze progression: medals per mode under the title, or a locked card that cannot start
 ## and says what opens it. Called again after every load, so it replaces an earlier row.
+## The medal times shown come from the card's board.
 func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint: String) -> void:
 	if not playable:
 		return
@@ -76,13 +85,26 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 		_box.add_child(_badges)
 		_box.move_child(_badges, 2)
 		# the medal row takes a line's height: the description gives one up to fit the card
-		var description := _box.get_child(_box.get_child_count() - 1) as Label
-		if description != null:
-			description.max_lines_visible = 2
-	_badges.show_medals(easy, hard, hint if is_locked else "")
+		_long_lines = 2
+		_fit_long_text()
+	_badges.show_medals(
+		easy,
+		hard,
+		hint if is_locked else "",
+		Medals.times_for(level, false),
+		Medals.times_for(level, true)
+	)
 	disabled = locked
 	_thumbnail.modulate = Color(1, 1, 1, 0.3 if locked else 1.0)
 	tooltip_text = hint if locked else level.description
+
+
+## True when the card shows every line of its description (or error).
+func shows_whole_text() -> bool:
+	if _long_text == null:
+		return true
+	var shown := _long_text.max_lines_visible
+	return shown < 0 or shown >= _long_text.get_line_count()
 
 
 ## The medal row, or null when the card has none.
@@ -105,6 +127,12 @@ func _prepare(path: String) -> void:
 	theme_type_variation = &"CardButton"
 	custom_minimum_size = CARD_SIZE
 	focus_mode = Control.FOCUS_ALL
+	if not focus_entered.is_connected(_fit_long_text):
+		focus_entered.connect(_fit_long_text)
+		focus_exited.connect(_fit_long_text)
+		resized.connect(_fit_long_text)
+	_long_text = null
+	_long_lines = 3
 	if _box != null:
 		_box.free()  # at once: the card is refilled in place, nothing of the old box may linger
 	_badges = null
@@ -119,7 +147,26 @@ func _prepare(path: String) -> void:
 	_box.add_child(_thumbnail)
 
 
-func _add_label(words: String, variation: StringName, wraps := false, lines := 3) -> void:
+# Unfocused, the long text keeps to its lines (ending in "…"); focused, the thumbnail gives
+# up height, down to THUMB_MIN_HEIGHT, so the long text shows whole (a 600-character board
+# description may still not fit: it shows as much as fits).
+func _fit_long_text() -> void:
+	if _long_text == null or _thumbnail == null:
+		return
+	if not has_focus():
+		_long_text.max_lines_visible = _long_lines
+		_thumbnail.custom_minimum_size.y = THUMB_HEIGHT
+		return
+	var line_height := _long_text.get_line_height() + _long_text.get_theme_constant("line_spacing")
+	var spare := int((THUMB_HEIGHT - THUMB_MIN_HEIGHT) / maxf(line_height, 1.0))
+	var wanted := _long_text.get_line_count()
+	var shown := mini(wanted, _long_lines + spare)
+	_long_text.max_lines_visible = maxi(shown, _long_lines)
+	var extra := maxi(shown - _long_lines, 0)
+	_thumbnail.custom_minimum_size.y = THUMB_HEIGHT - extra * line_height
+
+
+func _add_label(words: String, variation: StringName, wraps := false, lines := 3) -> Label:
 	var label := Label.new()
 	label.text = words
 	label.theme_type_variation = variation
@@ -132,3 +179,6 @@ func _add_label(words: String, variation: StringName, wraps := false, lines := 3
 	# a long text is cut at the card's edge, never drawn over the next card
 	label.clip_text = true
 	_box.add_child(label)
+	if wraps:
+		_long_lines = lines
+	return label

@@ -5,14 +5,29 @@ extends Control
 ## hostile file never stops the screen; a board that fails to load is greyed with its error.
 ## My boards can be imported (button or a file dropped on the window), exported and deleted.
 ## Shipped maze boards come in the order they open (MazeProgress) with medals and locks.
+## The arrows and the d-pad move card to card (CardGridFocus), Enter / A plays, and a card's
+## own menu (board_actions: X / Square, or a right click) offers Play, Export and Delete.
 
 const LevelSlot := preload("res://scenes/menu/level_slot.gd")
 const MazeCardProgress := preload("res://scenes/menu/maze_card_progress.gd")
 const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
-const TITLES := {"pachinko": "Pachinko", "maze": "Tilt Maze"}
+const CardActionsMenu := preload("res://scenes/menu/card_actions_menu.gd")
+const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
+const LevelCard := preload("res://scenes/menu/level_card.gd")
+## Room between cards, across and down (the grids' separations in the scene).
+const CARD_GAP := 22
+## At most this many cards in a row, however wide the window.
+const MAX_COLUMNS := 4
+const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
+## At most this many files of a folder get a card (README "Safety"); the rest are counted.
+const MAX_LISTED := 200
+## At most this many loaded files fill their card in one frame, so a burst never stalls one.
+const FILLS_PER_FRAME := 24
+## At most this many cards are made in one frame: the screen shows at once and fills up.
+const SLOTS_PER_FRAME := 24
 
-## The game whose boards are listed ("pachinko" or "maze").
-var kind := "pachinko"
+## The game whose boards are listed (a name of BoardLevel.KIND_NAMES).
+var kind := BoardLevel.PACHINKO_NAME
 ## The player's boards folder (tests point it at a scratch folder before adding the screen).
 var user_root := BoardLoader.USER_DIR
 ## Loads one file (path, kind, root) -> BoardLoadResult; empty means BoardLoader.load_listed.
@@ -20,7 +35,19 @@ var user_root := BoardLoader.USER_DIR
 var load_one := Callable()
 
 var _loadings: Dictionary = {}  # the grid a loading fills -> its BoardListLoading
+var _importing: BoardListLoading = null  # imports check and copy off the main thread
+var _import_waiting := PackedStringArray()  # files dropped while an import was running
+var _import_lines := PackedStringArray()  # what happened to each file imported so far
+var _import_refused := false
+var _not_listed := 0  # files in My boards past MAX_LISTED
+var _unslotted: Dictionary = {}  # grid -> the listed paths that have no card yet
+var _early: Dictionary = {}  # grid -> {path: BoardLoadResult} loaded before its card was made
 var _first_focus: Control = null
+var _columns := 3
+# after a delete: the board whose card takes the focus (the next one), and where the list
+# was scrolled to, so the player stays where they were
+var _refocus_path := ""
+var _kept_scroll := -1
 
 @onready var _title: Label = %TitleLabel
 @onready var _summary: Label = %SummaryLabel
@@ -33,6 +60,7 @@ var _first_focus: Control = null
 @onready var _import: Button = %ImportButton
 @onready var _dialogs: Dialogs = %Dialogs
 @onready var _scroll: ScrollContainer = %Scroll
+@onready var _card_menu: CardActionsMenu = %CardMenu
 
 
 func _ready() -> void:
@@ -41,6 +69,8 @@ func _ready() -> void:
 	_dialogs.import_chosen.connect(_import_one)
 	_dialogs.export_chosen.connect(export_board)
 	_dialogs.delete_confirmed.connect(delete_board)
+	_card_menu.chosen.connect(_on_card_menu_chosen)
+	_scroll.resized.connect(_fit_columns)
 	get_window().files_dropped.connect(import_files)
 	kind = App.level_select_kind
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
@@ -52,29 +82,47 @@ func _exit_tree() -> void:
 	for loading: BoardListLoading in _loadings.values():
 		loading.cancel()
 	_loadings.clear()
+	if _importing != null:
+		_importing.cancel()
+		_importing = null
 
 
 func _process(_delta: float) -> void:
+	if _importing != null:
+		_poll_imports()
 	if _loadings.is_empty():
 		return
+	for grid: GridContainer in _unslotted.keys():
+		_add_slots(grid)
 	for grid: GridContainer in _loadings.keys():
 		var loading: BoardListLoading = _loadings[grid]
-		for done in loading.take_finished():
+		for done in loading.take_finished(FILLS_PER_FRAME):
 			var path: String = done["path"]
 			var result: BoardLoadResult = done["result"]
-			_fill(grid, path, result)
-		if not loading.is_busy():
+			var unslotted: Array[String] = _unslotted.get(grid, [] as Array[String])
+			if unslotted.has(path):
+				var early: Dictionary = _early.get_or_add(grid, {})
+				early[path] = result
+			else:
+				_fill(grid, path, result)
+		if not loading.is_busy() and not _unslotted.has(grid):
 			_loadings.erase(grid)
 	if _loadings.is_empty():
 		_loaded()
 
 
 func _unhandled_input(event: InputEvent) -> void:
-	if _dialogs.open_dialog() != null:
+	if _dialogs.open_dialog() != null or _card_menu.visible:
 		return
-	if event.is_action_pressed("ui_cancel"):
-		App.go_to_menu()
+	if event.is_action_pressed("board_actions"):
+		var focused := get_viewport().gui_get_focus_owner()
+		if focused is LevelCard:
+			get_viewport().set_input_as_handled()
+			open_card_menu(focused as LevelCard)
+	elif event.is_action_pressed("ui_cancel"):
+		# handled first: the scene change takes this screen out of the tree (no viewport then)
 		get_viewport().set_input_as_handled()
+		App.go_to_menu()
 	elif _is_navigation(event) and get_viewport().gui_get_focus_owner() == null:
 		# a mouse click on empty space drops focus: the keys and the pad take it back
 		var first := first_card()
@@ -95,9 +143,9 @@ func use_folder(root: String) -> void:
 	reload()
 
 
-## True while some board file is still loading.
+## True while some board file is still loading or being imported.
 func is_loading() -> bool:
-	return not _loadings.is_empty()
+	return not _loadings.is_empty() or _importing != null
 
 
 ## Lists these load results as the shipped boards' cards (one per file, broken ones greyed),
@@ -107,37 +155,60 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 		_cancel(_grid)
 		_loadings.erase(_grid)
 	_clear(_grid)
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		results = MazeProgress.sorted(results)
 	for result in results:
 		_add_slot(_grid, result.path)
 		_fill(_grid, result.path, result)
+	_link_focus()
 	_loaded()
 
 
-## Imports board files (a drop on the window, or the file dialog's pick) into My boards and
-## says what happened to each.
+## Imports board files (a drop on the window, or the file dialog's pick) into My boards off
+## the main thread (each is read and checked first, which a large board makes slow), then
+## says what happened to each. Files dropped while an import runs wait for it to finish.
 func import_files(sources: PackedStringArray) -> void:
-	var lines := PackedStringArray()
-	var refused := false
-	for source in sources:
-		var outcome := UserBoards.import_file(source, user_root)
-		if outcome.has("error"):
-			refused = true
-			lines.append("Not imported: %s" % outcome["error"])
+	_import_waiting.append_array(sources)
+	if _importing == null:
+		_start_imports()
+
+
+# One thread imports the waiting files in order (each picks a free file name in turn).
+func _start_imports() -> void:
+	var jobs: Array[Dictionary] = []
+	for source in _import_waiting:
+		jobs.append({"path": source, "kind": BoardLevel.kind_named(kind), "root": user_root})
+	_import_waiting = PackedStringArray()
+	_importing = BoardListLoading.new(jobs, UserBoards.import_result, 1)
+	_say("Importing %d file%s…" % [jobs.size(), "" if jobs.size() == 1 else "s"], false)
+
+
+func _poll_imports() -> void:
+	for done in _importing.take_finished():
+		var result: BoardLoadResult = done["result"]
+		if not result.ok():
+			_import_refused = true
+			_import_lines.append("Not imported: %s" % result.error)
 			continue
-		var result: BoardLoadResult = outcome["result"]
 		var line := (
 			'Imported "%s" into My boards as %s'
-			% [result.level.display_name, str(outcome["path"]).get_file()]
+			% [result.level.display_name, result.path.get_file()]
 		)
 		var its_kind := BoardLevel.kind_name(result.level.kind)
 		if its_kind != kind:
 			line += (
 				" (a %s board: find it in the %s list)" % [its_kind, TITLES.get(its_kind, its_kind)]
 			)
-		lines.append(line + ".")
-	_say("\n".join(lines), refused)
+		_import_lines.append(line + ".")
+	if _importing.is_busy():
+		return
+	if not _import_waiting.is_empty():
+		_start_imports()
+		return
+	_importing = null
+	_say("\n".join(_import_lines), _import_refused)
+	_import_lines = PackedStringArray()
+	_import_refused = false
 	_load_section(_my_grid, user_root)
 
 
@@ -151,8 +222,22 @@ func export_board(board_path: String, target: String) -> void:
 		_say("Could not export %s: %s." % [board_path.get_file(), error_string(error)], true)
 
 
+## Opens the card's own menu (Play, Export a copy…, and Delete… on the player's boards).
+func open_card_menu(card: LevelCard) -> void:
+	var slot := card.get_parent() as LevelSlot
+	if slot == null:
+		return
+	_card_menu.open_for(card.board_path, card.get_global_rect(), card.playable, slot.is_mine())
+
+
+## The card menu (for tests).
+func card_menu() -> CardActionsMenu:
+	return _card_menu
+
+
 ## Deletes one of the player's boards (after the dialog's confirmation) and says so.
 func delete_board(board_path: String) -> void:
+	_keep_place_after_delete(board_path)
 	var error := UserBoards.delete_file(board_path, user_root)
 	if error == OK:
 		_say("Deleted %s from My boards." % board_path.get_file(), false)
@@ -205,19 +290,44 @@ func _load_section(grid: GridContainer, root: String) -> void:
 	if _loadings.has(grid):
 		_cancel(grid)
 	_clear(grid)
-	var kind_value := _kind_enum(kind)
+	var kind_value := BoardLevel.kind_named(kind)
 	var jobs: Array[Dictionary] = []
 	var paths := BoardLoader.list_files(kind_value, root)
-	if kind == "maze" and grid == _grid:
+	if grid == _my_grid:
+		_not_listed = maxi(0, paths.size() - MAX_LISTED)
+		paths = paths.slice(0, MAX_LISTED)
+	if kind == BoardLevel.MAZE_NAME and grid == _grid:
 		paths = _in_maze_order(paths)
 	for path in paths:
-		_add_slot(grid, path)
 		jobs.append({"path": path, "kind": kind_value, "root": root})
+	_unslotted[grid] = paths
+	_early.erase(grid)
+	_add_slots(grid)
 	_loadings[grid] = BoardListLoading.new(jobs, load_one)
 	_update_summary()
-	if not is_instance_valid(_first_focus):
+	_link_focus()
+	if _refocus_path != "":
+		_take_place_back()
+	elif not is_instance_valid(_first_focus):
 		_first_focus = first_card() if first_card() != null else _import
 		_first_focus.grab_focus()
+
+
+# Makes the next SLOTS_PER_FRAME cards of `grid` (filled at once when their file loaded first).
+func _add_slots(grid: GridContainer) -> void:
+	var paths: Array[String] = _unslotted.get(grid, [] as Array[String])
+	var count := mini(SLOTS_PER_FRAME, paths.size())
+	var early: Dictionary = _early.get(grid, {})
+	for path: String in paths.slice(0, count):
+		_add_slot(grid, path)
+		if early.has(path):
+			var result: BoardLoadResult = early[path]
+			_fill(grid, path, result)
+			early.erase(path)
+	if count == paths.size():
+		_unslotted.erase(grid)
+	else:
+		_unslotted[grid] = paths.slice(count)
 
 
 func _cancel(grid: GridContainer) -> void:
@@ -230,16 +340,96 @@ func _add_slot(grid: GridContainer, path: String) -> void:
 	slot.export_requested.connect(_dialogs.ask_export)
 	slot.delete_requested.connect(_dialogs.ask_delete)
 	slot.card.pressed.connect(func() -> void: App.start_game(kind, slot.card.board_path))
+	slot.card.gui_input.connect(_on_card_gui_input.bind(slot.card))
 	grid.add_child(slot)
+
+
+func _on_card_gui_input(event: InputEvent, card: LevelCard) -> void:
+	var click := event as InputEventMouseButton
+	if click != null and click.pressed and click.button_index == MOUSE_BUTTON_RIGHT:
+		card.grab_focus()
+		open_card_menu(card)
+		card.accept_event()
+
+
+func _on_card_menu_chosen(choice: CardActionsMenu.Choice, board_path: String) -> void:
+	var slot := _slot_of(board_path)
+	if slot == null:
+		return
+	match choice:
+		CardActionsMenu.Choice.PLAY:
+			if slot.card.playable and not slot.card.disabled:
+				App.start_game(kind, board_path)
+		CardActionsMenu.Choice.EXPORT:
+			_dialogs.ask_export(board_path)
+		CardActionsMenu.Choice.DELETE:
+			if slot.is_mine():
+				_dialogs.ask_delete(board_path, slot.shown_name())
+
+
+func _slot_of(board_path: String) -> LevelSlot:
+	for grid: GridContainer in [_grid, _my_grid]:
+		for slot in grid.get_children():
+			if slot is LevelSlot and (slot as LevelSlot).card.board_path == board_path:
+				return slot as LevelSlot
+	return null
+
+
+# As many columns as the list is wide (both sections alike, so their cards line up), then
+# the arrows' neighbours again.
+func _fit_columns() -> void:
+	var card_width := LevelCard.CARD_SIZE.x + CARD_GAP
+	var fits := floori((_scroll.size.x - 16.0 + CARD_GAP) / card_width)
+	var columns := clampi(fits, 1, MAX_COLUMNS)
+	if columns == _columns:
+		return
+	_columns = columns
+	_grid.columns = columns
+	_my_grid.columns = columns
+	_link_focus()
+
+
+func _link_focus() -> void:
+	var sections: Array = []
+	for grid: GridContainer in [_grid, _my_grid]:
+		var section: Array[Control] = []
+		for slot in grid.get_children():
+			if slot is LevelSlot and not slot.is_queued_for_deletion():
+				section.append((slot as LevelSlot).card)
+		sections.append(section)
+	CardGridFocus.link(sections, _columns)
+
+
+# Before a delete: remember the card after the deleted one (or before it, for the last) and
+# the scroll, so the list does not jump back to the top.
+func _keep_place_after_delete(board_path: String) -> void:
+	var mine := my_slots()
+	_refocus_path = ""
+	for i in mine.size():
+		if mine[i].card.board_path == board_path:
+			var neighbour := i + 1 if i + 1 < mine.size() else i - 1
+			if neighbour >= 0:
+				_refocus_path = mine[neighbour].card.board_path
+	if _refocus_path == "":
+		_refocus_path = board_path  # none left: the Import button takes the focus
+	_kept_scroll = _scroll.scroll_vertical
+
+
+func _take_place_back() -> void:
+	var slot := _slot_of(_refocus_path)
+	(slot.card if slot != null else _import as Control).grab_focus()
+	_scroll.set_deferred("scroll_vertical", _kept_scroll)
+	_refocus_path = ""
 
 
 func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
 	for slot in grid.get_children():
 		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
 			(slot as LevelSlot).fill(result, _best_text(result))
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
+		_link_focus()
 	_update_summary()
 
 
@@ -328,6 +518,11 @@ func _update_summary() -> void:
 		text += ", %d could not be loaded (shown greyed, with the reason)" % broken
 	if locked > 0:
 		text += ", %d locked (finish the board before each to open it)" % locked
+	if _not_listed > 0:
+		text += (
+			"; %d more files in My boards are not listed (at most %d are)"
+			% [_not_listed, MAX_LISTED]
+		)
 	_summary.text = text
 
 
@@ -340,7 +535,7 @@ func _best_text(result: BoardLoadResult) -> String:
 	if not result.ok():
 		return ""
 	var board_id := result.level.board_id
-	if kind == "maze":
+	if kind == BoardLevel.MAZE_NAME:
 		var easy := App.best_maze_time(board_id, false)
 		var hard := App.best_maze_time(board_id, true)
 		if easy <= 0.0 and hard <= 0.0:
@@ -371,7 +566,3 @@ static func _is_navigation(event: InputEvent) -> bool:
 		if event.is_action_pressed(action):
 			return true
 	return false
-
-
-static func _kind_enum(kind_name: String) -> int:
-	return BoardLevel.Kind.MAZE if kind_name == "maze" else BoardLevel.Kind.PACHINKO

@@ -1,6 +1,8 @@
 extends VBoxContainer
 ## One place in the level select's grid: a board's card and, under it, what can be done with
-## its file: export (any board) and delete (the player's own boards only).
+## its file: export (any board) and delete (the player's own boards only). Those two buttons
+## are for the mouse: they never take focus, so the arrows and the d-pad go card to card
+## (keys and pads reach them through the card's menu, card_actions_menu.gd).
 
 ## The player asked to export this board's file.
 signal export_requested(board_path: String)
@@ -45,7 +47,17 @@ func fill(result: BoardLoadResult, best: String) -> void:
 	_shown = result.level.display_name if result.ok() else ""
 
 
-## The export button (for tests and focus).
+## True for a board of the player's own (it can be deleted).
+func is_mine() -> bool:
+	return _delete_button != null
+
+
+## What the player knows this board by: its name, or its file's when it did not load.
+func shown_name() -> String:
+	return _shown_name()
+
+
+## The export button (for tests and the mouse).
 func export_button() -> Button:
 	return _export_button
 
@@ -64,5 +76,6 @@ static func _small_button(row: HBoxContainer, words: String, tip: String) -> But
 	button.text = words
 	button.tooltip_text = tip
 	button.theme_type_variation = &"SmallButton"
+	button.focus_mode = Control.FOCUS_NONE
 	row.add_child(button)
 	return button

@@ -19,8 +19,8 @@ var _settings: Control = null
 
 
 func _ready() -> void:
-	_pachinko.pressed.connect(App.go_to_level_select.bind("pachinko"))
-	_maze.pressed.connect(App.go_to_level_select.bind("maze"))
+	_pachinko.pressed.connect(App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME))
+	_maze.pressed.connect(App.go_to_level_select.bind(BoardLevel.MAZE_NAME))
 	_settings_button.pressed.connect(_open_settings)
 	_quit.pressed.connect(get_tree().quit)
 	_version.text = "v%s" % ProjectSettings.get_setting("application/config/version", "")
@@ -43,7 +43,7 @@ func _unhandled_input(event: InputEvent) -> void:
 
 func _focus_first() -> void:
 	# coming back from a level select, the game the player was looking at keeps focus
-	(_maze if App.level_select_kind == "maze" else _pachinko).grab_focus()
+	(_maze if App.level_select_kind == BoardLevel.MAZE_NAME else _pachinko).grab_focus()
 
 
 func _open_settings() -> void:

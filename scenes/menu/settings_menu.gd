@@ -17,6 +17,7 @@ const BindingList := preload("res://scenes/menu/binding_list.gd")
 @onready var _fullscreen: Button = %FullscreenCheck
 @onready var _frame_counter: Button = %FrameCounterCheck
 @onready var _ghost: Button = %GhostCheck
+@onready var _maze_look: Button = %MazeLookCheck
 @onready var _vibration: Button = %VibrationCheck
 @onready var _unlock_all: Button = %UnlockAllCheck
 @onready var _bindings: BindingList = %Bindings
@@ -36,13 +37,22 @@ func _ready() -> void:
 	_fullscreen.toggled.connect(_on_value_changed.bind("fullscreen"))
 	_frame_counter.toggled.connect(_on_value_changed.bind("show_frame_counter"))
 	_ghost.toggled.connect(_on_value_changed.bind("show_ghost"))
+	_maze_look.toggled.connect(_on_value_changed.bind("maze_tutorial_look"))
 	_vibration.toggled.connect(_on_value_changed.bind("vibration"))
 	_unlock_all.toggled.connect(_on_value_changed.bind("unlock_all_boards"))
 	_defaults.pressed.connect(_on_defaults_pressed)
 	_back.pressed.connect(close)
 	App.settings.changed.connect(_load_values)
 	var rows: Array[Control] = [
-		_master, _sfx, _tilt, _fullscreen, _frame_counter, _ghost, _vibration, _unlock_all
+		_master,
+		_sfx,
+		_tilt,
+		_fullscreen,
+		_frame_counter,
+		_ghost,
+		_maze_look,
+		_vibration,
+		_unlock_all
 	]
 	for control: Control in rows:
 		_mark_row_on_focus(control)
@@ -80,6 +90,7 @@ func _load_values() -> void:
 	_fullscreen.set_pressed_no_signal(settings.fullscreen)
 	_frame_counter.set_pressed_no_signal(settings.show_frame_counter)
 	_ghost.set_pressed_no_signal(settings.show_ghost)
+	_maze_look.set_pressed_no_signal(settings.maze_tutorial_look)
 	_vibration.set_pressed_no_signal(settings.vibration)
 	_unlock_all.set_pressed_no_signal(settings.unlock_all_boards)
 	_show_numbers()
@@ -94,6 +105,7 @@ func _show_numbers() -> void:
 	_fullscreen.text = "On" if _fullscreen.button_pressed else "Off"
 	_frame_counter.text = "On" if _frame_counter.button_pressed else "Off"
 	_ghost.text = "On" if _ghost.button_pressed else "Off"
+	_maze_look.text = "Tutorial" if _maze_look.button_pressed else "Wood and steel"
 	_vibration.text = "On" if _vibration.button_pressed else "Off"
 	_unlock_all.text = "On" if _unlock_all.button_pressed else "Off"
 	_master_value.text = "%d%%" % roundi(_master.value * 100.0)

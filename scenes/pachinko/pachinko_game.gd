@@ -42,7 +42,7 @@ var _recorder: ReplayRecorder
 
 func _ready() -> void:
 	pause_menu.restart_requested.connect(restart)
-	var path := App.current_board_path("pachinko")
+	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
 		var problem := loaded.error if loaded.level == null else "%s is not a pachinko board" % path

@@ -1,8 +1,10 @@
 class_name AnalysisCache
 extends RefCounted
 ## Keeps analysis results per board content, so reopening a board shows its figures at
-## once and any edit makes them stale: the key is a hash of the board's file text (the
-## same board always writes the same text) and of the run's settings. Each entry is a JSON
+## once and any edit makes them stale: the key is a hash of the board's file text without
+## its name lines (BoardTextWriter.play_text: a rename or "Save board as" keeps the
+## figures, and an undo back to analysed content finds them again) and of the run's
+## settings. Each entry is a JSON
 ## report and the heat-map PNG beside it, in user://analysis/. Read back as data only
 ## (JSON, PNG), never as code or resources.
 
@@ -20,7 +22,7 @@ static func key_for(plan: AnalysisPlan) -> String:
 		"v%d|%d|%d|%s|%s"
 		% [AnalysisReport.VERSION, plan.shots, plan.rng_seed, plan.power_from, plan.power_to]
 	)
-	return (BoardTextWriter.write(plan.level) + "\n" + settings).sha256_text()
+	return (BoardTextWriter.play_text(plan.level) + "\n" + settings).sha256_text()
 
 
 ## Stores a report and its heat map under `key`. Returns OK or the file error.
@@ -63,6 +65,37 @@ static func cached_report(level: BoardLevel) -> Dictionary:
 	if level == null or not level.is_pachinko():
 		return {}
 	return load_report(key_for(AnalysisPlan.create(level, AnalysisPlan.EDITOR_SHOTS, 1)))
+
+
+## Stores a maze analysis report (MazeAnalysis) for the board whose play_hash is `key`.
+static func save_maze(key: String, report: Dictionary) -> Error:
+	var made := DirAccess.make_dir_recursive_absolute(folder())
+	if made != OK:
+		return made
+	var file := FileAccess.open(_path("maze_" + key, "json"), FileAccess.WRITE)
+	if file == null:
+		return FileAccess.get_open_error()
+	file.store_string(JSON.stringify(report))
+	file.close()
+	return OK
+
+
+## The stored maze analysis for `key`, or {} when there is none or it is damaged.
+static func load_maze(key: String) -> Dictionary:
+	var path := _path("maze_" + key, "json")
+	if not FileAccess.file_exists(path):
+		return {}
+	var parsed: Variant = JSON.parse_string(FileAccess.get_file_as_string(path))
+	var report: Dictionary = parsed if parsed is Dictionary else {}
+	for mode: String in ["easy", "hard"]:
+		var figures: Variant = report.get(mode)
+		if not figures is Dictionary or not _has(figures, "games", TYPE_FLOAT):
+			push_warning("AnalysisCache: ignoring a damaged cache entry %s" % path)
+			return {}
+		if not _has(figures, "holes", TYPE_ARRAY):
+			push_warning("AnalysisCache: ignoring a damaged cache entry %s" % path)
+			return {}
+	return report
 
 
 ## The folder entries are kept in.

@@ -59,7 +59,7 @@ static func build(
 			dead.append(p)
 	var report := {
 		"version": VERSION,
-		"game": "pachinko",
+		"game": BoardLevel.PACHINKO_NAME,
 		"board": level.board_id,
 		"shots": n,
 		"seed": plan.rng_seed,

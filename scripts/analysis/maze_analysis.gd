@@ -102,7 +102,7 @@ func report() -> Dictionary:
 	var wall := (Time.get_ticks_usec() - _started_usec) / 1e6
 	var figures := {
 		"version": AnalysisReport.VERSION,
-		"game": "maze",
+		"game": BoardLevel.MAZE_NAME,
 		"board": _level.board_id,
 		"runs": _runs,
 		"seed": _seed,

@@ -31,7 +31,7 @@ static func run(values: Dictionary) -> int:
 	var base := _out_rel().path_join(name)
 	var abs_base := _out_dir().path_join(name)
 	var report: Dictionary
-	if game == "maze":
+	if game == BoardLevel.MAZE_NAME:
 		var runs: int = values.get("runs", MazeAnalysis.DEFAULT_RUNS)
 		if runs < 1:
 			return _fail(EXIT_BAD_INPUT, "--runs must be at least 1 (got %d)" % runs)

@@ -2,12 +2,10 @@ extends RefCounted
 ## The `--autoplay` command: plays one game headless on a board and prints one JSON line
 ## with what happened. command_line.gd hands it the parsed flags (cli_flags.gd).
 
-const GAMES := {
-	"pachinko": "res://scripts/pachinko/autoplay/pachinko_autoplay.gd",
-	"maze": "res://scripts/maze/autoplay/maze_autoplay.gd",
-}
+const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
-const DEFAULT_SECONDS := {"pachinko": 60.0, "maze": 120.0}
+## Seconds a game plays when --seconds is not given, in BoardLevel.Kind order.
+const DEFAULT_SECONDS: Array[float] = [60.0, 120.0]
 ## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).
 const EXIT_BAD_BOARD := 2
 
@@ -28,23 +26,26 @@ static func run(values: Dictionary) -> int:
 ## refused to start.
 static func play(values: Dictionary) -> Dictionary:
 	var game: String = values["autoplay"]
-	var seconds: float = values.get("seconds", DEFAULT_SECONDS[game])
+	var kind := BoardLevel.kind_named(game)
+	var seconds: float = values.get("seconds", DEFAULT_SECONDS[kind])
 	var board_path := resolve_board_path(game, str(values["board"]))
 	var loaded := BoardLoader.load_board(board_path)
 	if loaded.level == null:
 		return {"ok": false, "error": loaded.error}
-	if BoardLevel.kind_name(loaded.level.kind) != game:
-		var kind := BoardLevel.kind_name(loaded.level.kind)
-		return {"ok": false, "error": "%s: a %s board, not a %s board" % [board_path, kind, game]}
-	var script: Script = load(str(GAMES[game]))
+	if loaded.level.kind != kind:
+		var its_game := BoardLevel.kind_name(loaded.level.kind)
+		return {
+			"ok": false, "error": "%s: a %s board, not a %s board" % [board_path, its_game, game]
+		}
 	var result: Dictionary
 	var recorder := ReplayCli.recorder_for(values)
-	if game == "maze":
-		result = script.call("run", loaded.level, seconds, values["seed"], values["hard"], recorder)
+	var rng_seed: int = values["seed"]
+	if kind == BoardLevel.Kind.MAZE:
+		var hard: bool = values["hard"]
+		result = MazeAutoplay.run(loaded.level, seconds, rng_seed, hard, recorder)
 	else:
-		result = script.call(
-			"run", loaded.level, seconds, values["seed"], recorder, values["handle"]
-		)
+		var handle: int = values["handle"]
+		result = PachinkoAutoplay.run(loaded.level, seconds, rng_seed, recorder, handle)
 	if not result.get("ok", true):
 		return {"ok": false, "error": str(result.get("error", "the game did not start"))}
 	var report := {"ok": true, "game": game, "board": loaded.level.board_id, "seed": values["seed"]}

@@ -38,7 +38,7 @@ const FLAGS: Array[Dictionary] = [
 		"flag": "--autoplay",
 		"command": true,
 		"value": Value.CHOICE,
-		"choices": ["pachinko", "maze"],
+		"choices": BoardLevel.KIND_NAMES,
 		"placeholder": "GAME",
 		"runs": preload("res://scripts/app/autoplay_cli.gd"),
 		"help": "Play a game headless by itself and print one JSON line saying what happened.",
@@ -74,7 +74,7 @@ const FLAGS: Array[Dictionary] = [
 		"flag": "--analyze",
 		"command": true,
 		"value": Value.CHOICE,
-		"choices": ["pachinko", "maze"],
+		"choices": BoardLevel.KIND_NAMES,
 		"placeholder": "GAME",
 		"runs": preload("res://scripts/app/analyze_cli.gd"),
 		"help":

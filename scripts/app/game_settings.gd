@@ -19,12 +19,21 @@ const REQUIRED_ACTIONS: Array[String] = ["pause"]
 ## More bindings than this on one action is not a file a person wrote.
 const MAX_BINDINGS_PER_ACTION := 16
 const IniText := preload("res://scripts/app/ini_text.gd")
-const UserFile := preload("res://scripts/app/user_file.gd")
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 const FILE_HEADER := (
 	"Board Studio settings (format version %d). Delete this file to restore the defaults.\n"
 	+ "Bindings: key:<name>, joy_button:<index>, joy_axis:<index>:<+|->, mouse:<index>."
 )
+## What the player is told about a settings file that could not be used (PlayerFileLoad).
+const LOAD_WORDS := {
+	"damaged": "%s could not be read (%s), so the defaults are used.",
+	"newer":
+	(
+		"%s is from a newer version of Board Studio (format %d): the defaults are used, "
+		+ "and the file is left as it is (changes are not saved)."
+	),
+	"partly": "Some settings in %s could not be used and got their defaults: %s.",
+}
 
 ## Master volume, 0 (silent) to 1 (full).
 var master_volume := 1.0
@@ -36,6 +45,8 @@ var fullscreen := false
 var show_frame_counter := false
 ## Show the ghost of the best maze run on the board and mode.
 var show_ghost := true
+## Draw the tilt maze in the tutorial's flat colours instead of wood and steel.
+var maze_tutorial_look := false
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
 ## Every maze board open from the start, instead of one after another.
@@ -83,6 +94,7 @@ func reset_to_defaults() -> void:
 	fullscreen = false
 	show_frame_counter = false
 	show_ghost = true
+	maze_tutorial_look = false
 	tilt_sensitivity = 1.0
 	unlock_all_boards = false
 	vibration = true
@@ -148,7 +160,7 @@ func set_value(key: String, value: Variant) -> void:
 		"fullscreen":
 			var on: bool = value
 			fullscreen = on
-		"show_frame_counter", "show_ghost", "unlock_all_boards":
+		"show_frame_counter", "show_ghost", "unlock_all_boards", "maze_tutorial_look":
 			var on: bool = value
 			set(key, on)
 		"tilt_sensitivity":
@@ -204,7 +216,8 @@ func save_file(path: String) -> Error:
 			{
 				"fullscreen": fullscreen,
 				"show_frame_counter": show_frame_counter,
-				"show_ghost": show_ghost
+				"show_ghost": show_ghost,
+				"maze_tutorial_look": maze_tutorial_look
 			}
 		],
 		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
@@ -223,48 +236,15 @@ func save_file(path: String) -> Error:
 ## text, or has no usable version, is moved aside and every value gets its default.
 func load_file(path: String) -> String:
 	reset_to_defaults()
-	_untouchable_path = ""
-	var read := IniText.read_versioned_file(path)
-	if read.has("missing"):
-		return ""
-	if read.has("error"):
-		var why: String = read["error"]
-		var damaged := (
-			"%s could not be read (%s), so the defaults are used." % [path.get_file(), why]
-		)
-		return _set_aside(path, damaged)
-	var version: int = read["version"]
-	if version > VERSION:
-		_untouchable_path = path
-		return (
-			(
-				"%s is from a newer version of Board Studio (format %d): the defaults are used, "
-				+ "and the file is left as it is (changes are not saved)."
-			)
-			% [path.get_file(), version]
-		)
-	var sections: Dictionary = read["sections"]
-	var line_problems: PackedStringArray = read["problems"]
+	var loaded := PlayerFileLoad.run(path, VERSION, _take_values, LOAD_WORDS)
+	_untouchable_path = path if loaded.untouchable else ""
+	return loaded.message
+
+
+func _take_values(sections: Dictionary, _version: int) -> PackedStringArray:
 	var problems := _read_values(sections)
-	problems.append_array(line_problems)
 	changed.emit()
-	if problems.is_empty():
-		return ""
-	return _set_aside(
-		path,
-		(
-			"Some settings in %s could not be used and got their defaults: %s."
-			% [path.get_file(), ", ".join(problems)]
-		)
-	)
-
-
-# Moves a file with a problem aside (or, when it cannot be moved, never writes it) and
-# returns `sentence` followed by where the old file is.
-func _set_aside(path: String, sentence: String) -> String:
-	var kept := UserFile.keep_aside(path)
-	_untouchable_path = path if kept.is_empty() else ""
-	return "%s %s" % [sentence, UserFile.kept_note(kept)]
+	return problems
 
 
 # Takes every known value it can use from the sections; returns the keys it could not use.
@@ -278,6 +258,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
 	_read_flag(display, "show_ghost", problems)
+	_read_flag(display, "maze_tutorial_look", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	_read_flag(controls, "vibration", problems)
 	var progress: Dictionary = sections.get("progress", {})

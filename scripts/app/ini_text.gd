@@ -102,15 +102,10 @@ static func read_versioned_file(path: String) -> Dictionary:
 	return {"sections": sections, "version": version["version"], "problems": problems}
 
 
-## Writes text to a file through a temporary file, so a crash never leaves half a file.
+## Writes text to a file through a fresh temporary file (SafeWrite), so a crash never leaves
+## half a file and a planted link is never written through.
 static func write_file(path: String, text: String) -> Error:
-	var temp_path := path + ".tmp"
-	var file := FileAccess.open(temp_path, FileAccess.WRITE)
-	if file == null:
-		return FileAccess.get_open_error()
-	file.store_string(text)
-	file.close()
-	return DirAccess.rename_absolute(temp_path, path)
+	return SafeWrite.write_text(path, text)
 
 
 # Reads one `key=value` line into `section`; "" or the problem, with a %d for the line.

@@ -21,6 +21,18 @@ const ORDER: Array[String] = [
 ]
 
 
+## The shipped board that opens after `board_id` ("" after the last one or a board not in
+## the order).
+static func next_of(board_id: String) -> String:
+	var at := ORDER.find(board_id)
+	return ORDER[at + 1] if at >= 0 and at + 1 < ORDER.size() else ""
+
+
+## The file of a shipped board id ("maze_garden" → res://levels/maze/garden.board).
+static func shipped_path(board_id: String) -> String:
+	return "res://levels/maze/%s.board" % board_id.trim_prefix("maze_")
+
+
 ## Where `board_id` comes in the order (boards not in it come after every one that is).
 static func rank(board_id: String) -> int:
 	var at := ORDER.find(board_id)

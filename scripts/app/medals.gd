@@ -54,3 +54,23 @@ static func medal(level: BoardLevel, hard: bool, best_seconds: float) -> Medal:
 ## "Gold", "Silver", "Bronze" or "No medal".
 static func name_of(which: Medal) -> String:
 	return NAMES[which]
+
+
+## The best medal a run at `elapsed` seconds can still earn against `times` ([gold, silver,
+## bronze]) and its time: {"medal": Medal, "seconds": float}; Medal.NONE and 0 once every
+## time has passed (or the board has none).
+static func next_target(times: PackedFloat64Array, elapsed: float) -> Dictionary:
+	if times.size() == 3:
+		for rank in 3:
+			if elapsed <= times[rank]:
+				return {
+					"medal": [Medal.GOLD, Medal.SILVER, Medal.BRONZE][rank], "seconds": times[rank]
+				}
+	return {"medal": Medal.NONE, "seconds": 0.0}
+
+
+## The time `which` asks for in `times` ([gold, silver, bronze]); -1 for NONE or no times.
+static func time_of(times: PackedFloat64Array, which: Medal) -> float:
+	if times.size() != 3 or which == Medal.NONE:
+		return -1.0
+	return times[Medal.GOLD - which]

@@ -25,7 +25,7 @@ const FIELDS := ["format", "board", "kind", "written_at"]
 const BOARD_PATTERN := "^res://levels/(pachinko|maze)/[A-Za-z0-9_-]+\\.board$"
 
 
-## Writes a request to play `board_path` in the game `kind` ("pachinko" or "maze").
+## Writes a request to play `board_path` in the game `kind` (BoardLevel.KIND_NAMES).
 ## Returns "" or a sentence saying what went wrong (nothing is written then).
 static func write(board_path: String, kind: String, path := PATH) -> String:
 	var now := Time.get_unix_time_from_system()
@@ -33,12 +33,9 @@ static func write(board_path: String, kind: String, path := PATH) -> String:
 	var problem := check(request, now)
 	if not problem.is_empty():
 		return "Play-test: %s." % problem
-	var file := FileAccess.open(path, FileAccess.WRITE)
-	if file == null:
-		var why := error_string(FileAccess.get_open_error())
-		return "Play-test: could not write %s (%s)." % [path, why]
-	file.store_string(JSON.stringify(request, "\t", false) + "\n")
-	file.close()
+	var written := SafeWrite.write_text(path, JSON.stringify(request, "\t", false) + "\n")
+	if written != OK:
+		return "Play-test: could not write %s (%s)." % [path, error_string(written)]
 	return ""
 
 
@@ -56,7 +53,7 @@ static func read(path := PATH, now := Time.get_unix_time_from_system()) -> Dicti
 	var json := JSON.new()
 	if json.parse(text) != OK:
 		var where := json.get_error_line() + 1  # the parser counts lines from 0
-		return _refused("it is not JSON (line %d: %s)" % [where, json.get_error_message()])
+		return _refused("it is not JSON (line %d: %s)" % [where, JsonErrors.parse_error(json)])
 	if not json.data is Dictionary:
 		return _refused("it is not a JSON object")
 	var repeated := JsonKeys.repeated(text)
@@ -81,8 +78,8 @@ static func check(request: Dictionary, now: float) -> String:
 	if not _is_number(format) or _float_of(format) != FORMAT:
 		return "format must be %d, got %s" % [FORMAT, _shown(request["format"])]
 	var kind: Variant = request["kind"]
-	if not kind is String or not ["pachinko", "maze"].has(kind):
-		return 'kind must be "pachinko" or "maze", got %s' % _shown(kind)
+	if BoardLevel.kind_named(kind) < 0:
+		return "kind must be %s, got %s" % [BoardLevel.kind_choices(), _shown(kind)]
 	var board: Variant = request["board"]
 	if not board is String or not _board_path_ok(str(board), str(kind)):
 		var wanted := "res://levels/%s/<name>.board" % kind
@@ -153,9 +150,10 @@ static func _float_of(value: Variant) -> float:
 	return number
 
 
-# A value as the warning shows it: short, and never more than a plain value's text.
+# A value as the warning shows it: a number as it is, anything else only by its kind (a
+# refusal names the problem, never the file's text).
 static func _shown(value: Variant) -> String:
-	return JSON.stringify(value).left(80)
+	return str(value).left(24) if _is_number(value) else JsonErrors.kind_of(value)
 
 
 static func _refused(problem: String) -> Dictionary:

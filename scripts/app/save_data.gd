@@ -7,7 +7,6 @@ extends RefCounted
 ## untouched and never saved over. None of it stops the game.
 
 const IniText := preload("res://scripts/app/ini_text.gd")
-const UserFile := preload("res://scripts/app/user_file.gd")
 ## Version 2 keeps a maze time per mode; version 1 had one time per board, read as easy.
 const VERSION := 2
 const MAZE_SECTIONS := {false: "maze_best_seconds_easy", true: "maze_best_seconds_hard"}
@@ -19,6 +18,16 @@ const MAX_LISTED := 5
 const MAX_BALLS := 1_000_000_000
 
 const HEADER := "Board Studio best results (format version %d), per board id."
+## What the player is told about a best-results file that could not be used (PlayerFileLoad).
+const LOAD_WORDS := {
+	"damaged": "The best results in %s could not be read (%s), so they start empty.",
+	"newer":
+	(
+		"%s is from a newer version of Board Studio (format %d): it is left as it is, "
+		+ "and this run's best results are not saved."
+	),
+	"partly": "Some best results in %s could not be used and are left out: %s.",
+}
 
 ## hard (bool) -> {board id: seconds}
 var _maze_times := {false: {}, true: {}}
@@ -32,42 +41,11 @@ var _untouchable := false
 ## the player naming the problem and where the old file went.
 func load_file(path: String) -> String:
 	_path = path
-	_untouchable = false
 	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
-	var read := IniText.read_versioned_file(path)
-	if read.has("missing"):
-		return ""
-	if read.has("error"):
-		var why: String = read["error"]
-		var damaged := (
-			"The best results in %s could not be read (%s), so they start empty."
-			% [path.get_file(), why]
-		)
-		return _set_aside(path, damaged)
-	var version: int = read["version"]
-	if version > VERSION:
-		_untouchable = true
-		return (
-			(
-				"%s is from a newer version of Board Studio (format %d): it is left as it is, "
-				+ "and this run's best results are not saved."
-			)
-			% [path.get_file(), version]
-		)
-	var sections: Dictionary = read["sections"]
-	var line_problems: PackedStringArray = read["problems"]
-	var problems := _read_records(sections, version)
-	problems.append_array(line_problems)
-	if problems.is_empty():
-		return ""
-	return _set_aside(
-		path,
-		(
-			"Some best results in %s could not be used and are left out: %s."
-			% [path.get_file(), ", ".join(problems)]
-		)
-	)
+	var loaded := PlayerFileLoad.run(path, VERSION, _read_records, LOAD_WORDS)
+	_untouchable = loaded.untouchable
+	return loaded.message
 
 
 ## Fastest time on a maze board in one mode (`hard` or easy) in seconds, or -1 when there is
@@ -138,14 +116,6 @@ func save() -> Error:
 	if error != OK:
 		push_error("Could not save best results to %s: %s" % [_path, error_string(error)])
 	return error
-
-
-# Moves a file with a problem aside (or, when it cannot be moved, never writes it) and
-# returns `sentence` followed by where the old file is.
-func _set_aside(path: String, sentence: String) -> String:
-	var kept := UserFile.keep_aside(path)
-	_untouchable = kept.is_empty()
-	return "%s %s" % [sentence, UserFile.kept_note(kept)]
 
 
 # Takes every usable record from the sections of a file of `version`; returns the records

@@ -111,7 +111,7 @@ static func format_version(sections: Dictionary) -> Dictionary:
 	var version: Variant = meta["version"]
 	var number: float = version if version is float or version is int else NAN
 	if not is_finite(number) or number < 1.0 or number != floorf(number):
-		return {"error": "its version %s is not a whole number from 1" % _shown(version)}
+		return {"error": "its version is not a whole number from 1"}
 	return {"version": int(minf(number, 1e9))}
 
 
@@ -122,11 +122,6 @@ static func size_text(bytes: int) -> String:
 	if bytes >= 1024:
 		return "%s KB" % String.num(bytes / 1024.0, 0)
 	return "%d bytes" % bytes
-
-
-## A value as a message shows it: short, plain text.
-static func _shown(value: Variant) -> String:
-	return JSON.stringify(value).left(40)
 
 
 static func _is_utf16_mark(first: int, second: int) -> bool:

@@ -11,6 +11,13 @@ extends Resource
 ## Setters emit `changed`; after editing a packed array in place call `notify_edited()`.
 
 enum Kind { PACHINKO, MAZE }
+## Each Kind's name, in Kind order: the one spelling of a game wherever it is text (a board
+## file's "kind", the folders levels/<name>/ and user://boards/<name>/, a replay's "game",
+## the command line, the game scenes).
+const KIND_NAMES: Array[String] = ["pachinko", "maze"]
+## KIND_NAMES[Kind.PACHINKO] and KIND_NAMES[Kind.MAZE], for code that names one game.
+const PACHINKO_NAME: String = KIND_NAMES[Kind.PACHINKO]
+const MAZE_NAME: String = KIND_NAMES[Kind.MAZE]
 
 ## The format this code writes. Older files are upgraded by the converter (tools/legacy_boards/).
 const CURRENT_VERSION := 1
@@ -140,6 +147,13 @@ const CURRENT_VERSION := 1
 		_watch_pockets()
 		emit_changed()
 
+## The windmills (WindmillSpec): wheels of blades the world turns (BallWorld.add_windmill).
+@export var windmills: Array[WindmillSpec] = []:
+	set(value):
+		windmills = value
+		_watch_pockets()
+		emit_changed()
+
 @export_group("Maze")
 ## Maze cells across.
 @export var grid_cols: int = 0:
@@ -237,6 +251,10 @@ const CURRENT_VERSION := 1
 	set(value):
 		tulip_ids = value
 		emit_changed()
+@export var windmill_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		windmill_ids = value
+		emit_changed()
 ## Per item list ("pins", "walls"...): the id the next new item of that list gets. It only
 ## ever grows, so an id is never handed out twice in a board's life, even after the item
 ## that had the highest id is deleted (ItemIds.next_id; a list missing here starts after its
@@ -274,7 +292,7 @@ func notify_edited() -> void:
 	emit_changed()
 
 
-## An independent copy: pockets and tuning are copied too, so editing the copy never
+## An independent copy: pockets, windmills and tuning are copied too, so editing the copy never
 ## touches this board (Resource.duplicate shares sub-resources inside arrays).
 func duplicate_level() -> BoardLevel:
 	var copy := duplicate(false) as BoardLevel
@@ -286,6 +304,10 @@ func duplicate_level() -> BoardLevel:
 	for spec in bonus_pockets:
 		bonus.append(spec.duplicate() as BonusPocketSpec if spec != null else null)
 	copy.bonus_pockets = bonus
+	var wheels: Array[WindmillSpec] = []
+	for spec in windmills:
+		wheels.append(spec.duplicate() as WindmillSpec if spec != null else null)
+	copy.windmills = wheels
 	copy.tuning = tuning.duplicate() as PhysicsTuning if tuning != null else null
 	copy.next_ids = next_ids.duplicate()
 	copy.legacy_fields = legacy_fields.duplicate(true)
@@ -302,12 +324,22 @@ func is_maze() -> bool:
 	return kind == Kind.MAZE
 
 
-## The folder name for a kind ("pachinko" / "maze").
+## The name of a kind (KIND_NAMES); an unknown kind is named as pachinko, the first.
 static func kind_name(of_kind: int) -> String:
-	return "maze" if of_kind == Kind.MAZE else "pachinko"
+	return KIND_NAMES[of_kind] if of_kind >= 0 and of_kind < KIND_NAMES.size() else PACHINKO_NAME
 
 
-# A pocket edited on its own (in the inspector, say) changes the board too.
+## The Kind called `name` (KIND_NAMES), or -1 when it is no game's name (or no text).
+static func kind_named(name: Variant) -> int:
+	return KIND_NAMES.find(name) if name is String else -1
+
+
+## The names of the kinds for a message: "pachinko" or "maze" (quoted).
+static func kind_choices() -> String:
+	return " or ".join(KIND_NAMES.map(func(name: String) -> String: return '"%s"' % name))
+
+
+# A pocket or windmill edited on its own (in the inspector, say) changes the board too.
 func _watch_pockets() -> void:
 	for spec in _watched:
 		if spec != null and spec.changed.is_connected(emit_changed):
@@ -316,6 +348,7 @@ func _watch_pockets() -> void:
 	var watch: Array[Resource] = []
 	watch.append_array(pockets)
 	watch.append_array(bonus_pockets)
+	watch.append_array(windmills)
 	for spec in watch:
 		if spec != null and not spec.changed.is_connected(emit_changed):
 			spec.changed.connect(emit_changed)

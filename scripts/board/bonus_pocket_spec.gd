@@ -70,3 +70,14 @@ func as_pocket() -> PocketSpec:
 ## Words for the player and the editor ("Start pocket", "Attacker", "Tulip").
 func role_name() -> String:
 	return ROLE_NAMES[role]
+
+
+## Where a new bonus pocket of `new_role` goes in `pockets`: after the last one of the same
+## or an earlier role, so a board stays in role order (start pockets, attackers, tulips), the
+## order its file stores them in.
+static func role_slot(pockets: Array[BonusPocketSpec], new_role: int) -> int:
+	var slot := 0
+	for i in pockets.size():
+		if pockets[i] != null and pockets[i].role <= new_role:
+			slot = i + 1
+	return slot

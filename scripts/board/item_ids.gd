@@ -1,10 +1,13 @@
 class_name ItemIds
 extends RefCounted
-## Stable item ids: every pin, pocket, wall, black hole and ball start has a number that stays
-## its own when a neighbour is deleted or added, so a problem message ("Pins 143 and 459
+## Stable item ids: every pin, pocket, windmill, wall, black hole and ball start has a number
+## that stays its own when a neighbour is deleted or added, so a problem message ("Pins 143 and 459
 ## overlap") still names the same two pins after an edit. Ids are per list, 1 and up, kept in
 ## BoardLevel's `*_ids` arrays beside the items and written in the board file (`"id": 17`).
 ## A board made in code, or a file without ids, numbers its items 1, 2, 3... in order.
+## A pocket's rim pins are not items of their own: the pocket stamps them (PocketStamp) and
+## the board file does not store them, so their id is 0 and messages name them by their
+## pocket (`pin_label`).
 ## The bonus pockets (BoardLevel.bonus_pockets) are three lists by role, each with its own
 ## ids ("Tulip 2", "Attacker 1"), as the board file stores them (`start_pocket`, `attacker`,
 ## `tulip` lines).
@@ -21,6 +24,7 @@ const LISTS := {
 	"start_pockets": "start_pocket_ids",
 	"attackers": "attacker_ids",
 	"tulips": "tulip_ids",
+	"windmills": "windmill_ids",
 }
 ## The bonus lists, in BonusPocketSpec.Role order; their items are the board's
 ## `bonus_pockets` of that role, in board order.
@@ -33,6 +37,8 @@ const MAX_ID := 9_999_999
 static func count(level: BoardLevel, list: String) -> int:
 	if list == "pockets":
 		return level.pockets.size()
+	if list == "windmills":
+		return level.windmills.size()
 	if BONUS_LISTS.has(list):
 		return _keys(level.bonus_pockets, list).size()
 	var points: PackedVector2Array = level.get(list)
@@ -40,8 +46,11 @@ static func count(level: BoardLevel, list: String) -> int:
 	return points.size() / 2 if list == "walls" else points.size()
 
 
-## The id of item `index` of `list` (its place, 1-based, if the board has no id for it).
+## The id of item `index` of `list` (its place, 1-based, if the board has no id for it);
+## 0 for a pocket's rim pin, which has none.
 static func of(level: BoardLevel, list: String, index: int) -> int:
+	if list == "pins" and is_rim_pin(level, index):
+		return 0
 	var ids := ids_of(level, list)
 	return ids[index] if index < ids.size() and ids[index] > 0 else index + 1
 
@@ -49,6 +58,23 @@ static func of(level: BoardLevel, list: String, index: int) -> int:
 ## The board field that holds the items of `list` ("bonus_pockets" for the bonus lists).
 static func field_of(list: String) -> String:
 	return "bonus_pockets" if BONUS_LISTS.has(list) else list
+
+
+## True when pin `index` belongs to a pocket (stamped from it, never stored on its own).
+static func is_rim_pin(level: BoardLevel, index: int) -> bool:
+	return index >= 0 and index < level.pin_pocket.size() and level.pin_pocket[index] >= 0
+
+
+## How a message names pin `index`: "pin 17", or "a pin of pocket 2's rim" for a pin the
+## pocket stamps (those have no id of their own). Starts lower case; a message capitalises.
+static func pin_label(level: BoardLevel, index: int) -> String:
+	if is_rim_pin(level, index):
+		var pocket := level.pin_pocket[index]
+		var pocket_id := (
+			of(level, "pockets", pocket) if pocket < level.pockets.size() else pocket + 1
+		)
+		return "a pin of pocket %d's rim" % pocket_id
+	return "pin %d" % of(level, "pins", index)
 
 
 ## The id of bonus pocket `index` of `level.bonus_pockets` (unique among its role).
@@ -110,6 +136,10 @@ static func fill(level: BoardLevel) -> void:
 		var fresh := maxi(_largest(ids) + 1, _counter(level, list))
 		var changed := false
 		for i in total:
+			if list == "pins" and is_rim_pin(level, i):
+				changed = changed or ids[i] != 0
+				ids[i] = 0
+				continue
 			if ids[i] <= 0 or seen.has(ids[i]):
 				ids[i] = fresh
 				fresh += 1
@@ -126,11 +156,17 @@ static func fill(level: BoardLevel) -> void:
 ## BoardFieldCopy capture of the lists and their ids) keep their id, new ones get fresh ids
 ## from the board's counter, which moves past them.
 ## Pockets and bonus pockets keep theirs by object, so one re-stamped or moved is still itself.
+## Pins are matched among the field pins only (rim pins have no id, and re-stamping a pocket
+## moves its pins to the end of the list): the same number of field pins keeps their ids in
+## order, so a moved pin stays itself.
 static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 	for list: String in LISTS:
 		var id_field: String = LISTS[list]
 		var field := field_of(list)
 		if not before.has(field) or not before.has(id_field):
+			continue
+		if list == "pins":
+			_reconcile_pins(level, before)
 			continue
 		var old_ids: PackedInt32Array = before[id_field]
 		var old_keys := _keys(before[field], list)
@@ -157,6 +193,46 @@ static func reconcile(level: BoardLevel, before: Dictionary) -> void:
 				fresh += 1
 		level.set(id_field, ids)
 		_advance(level, list, fresh)
+
+
+# `reconcile` for pins: field pins keep their ids (in order when their number is unchanged,
+# else by position), rim pins get 0, new field pins fresh ids.
+static func _reconcile_pins(level: BoardLevel, before: Dictionary) -> void:
+	var old_pins: PackedVector2Array = before["pins"]
+	var old_owner: PackedInt32Array = before.get("pin_pocket", level.pin_pocket)
+	var old_ids: PackedInt32Array = before["pin_ids"]
+	var had := PackedInt32Array()
+	var had_at := PackedVector2Array()
+	for i in old_pins.size():
+		if i < old_owner.size() and old_owner[i] >= 0:
+			continue
+		had.append(old_ids[i] if i < old_ids.size() and old_ids[i] > 0 else i + 1)
+		had_at.append(old_pins[i])
+	var field := PackedInt32Array()
+	for i in level.pins.size():
+		if not is_rim_pin(level, i):
+			field.append(i)
+	var ids := PackedInt32Array()
+	ids.resize(level.pins.size())
+	var fresh := maxi(_largest(had) + 1, _counter(level, "pins"))
+	if field.size() == had.size():
+		for k in field.size():
+			ids[field[k]] = had[k]
+	else:
+		var free := {}
+		for k in had.size():
+			var waiting: Array = free.get_or_add(had_at[k], [])
+			waiting.append(had[k])
+		for i in field:
+			var waiting: Array = free.get(level.pins[i], [])
+			if not waiting.is_empty():
+				var kept: int = waiting.pop_front()
+				ids[i] = kept
+			else:
+				ids[i] = fresh
+				fresh += 1
+	level.pin_ids = ids
+	_advance(level, "pins", fresh)
 
 
 ## The counters a board file has to keep: list -> next id, only for lists whose counter is
@@ -190,10 +266,11 @@ static func _advance(level: BoardLevel, list: String, next: int) -> void:
 
 
 # What identifies an item across an edit: its position (a wall: both ends), a pocket its
-# object. `items` is the board field (or its BoardFieldCopy capture: [object, values...]).
+# object (a windmill too). `items` is the board field (or its BoardFieldCopy capture:
+# [object, values...]).
 static func _keys(items: Variant, list: String) -> Array:
 	var keys: Array = []
-	if list == "pockets" or BONUS_LISTS.has(list):
+	if list == "pockets" or list == "windmills" or BONUS_LISTS.has(list):
 		var role := BONUS_LISTS.find(list)
 		var entries: Array = items
 		for entry: Variant in entries:

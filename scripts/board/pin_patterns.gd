@@ -84,30 +84,15 @@ static func away_from(
 ) -> PackedVector2Array:
 	if others.is_empty() or clearance <= 0.0:
 		return points.duplicate()
-	var cell := clearance
-	var grid := {}
-	for other in others:
-		var key := Vector2i(floori(other.x / cell), floori(other.y / cell))
-		if not grid.has(key):
-			grid[key] = PackedVector2Array()
-		var bucket: PackedVector2Array = grid[key]
-		bucket.append(other)
-		grid[key] = bucket
+	var grid := PointGrid.new(others, clearance)
 	var kept := PackedVector2Array()
 	var limit := clearance * clearance
 	for point in points:
-		var base := Vector2i(floori(point.x / cell), floori(point.y / cell))
 		var clear := true
-		for dy in range(-1, 2):
-			for dx in range(-1, 2):
-				var key := base + Vector2i(dx, dy)
-				if not clear or not grid.has(key):
-					continue
-				var bucket: PackedVector2Array = grid[key]
-				for other in bucket:
-					if point.distance_squared_to(other) < limit:
-						clear = false
-						break
+		for j in grid.near(point):
+			if point.distance_squared_to(others[j]) < limit:
+				clear = false
+				break
 		if clear:
 			kept.append(point)
 	return kept

@@ -9,6 +9,9 @@ extends RefCounted
 
 ## Rim pin spacing as a fraction of the widest gap that still stops a ball.
 const SPACING_SAFETY := 0.6
+## A board pocket's pins sit on the board file's coordinate grid (BoardTextWriter.PRECISION),
+## so a pocket stamped in the editor and the same pocket read from its file are the same pins.
+const PRECISION := 0.01
 
 
 ## Centre distance between neighbouring rim pins: comfortably below the distance at which a
@@ -58,6 +61,15 @@ static func pins_for(spec: PocketSpec, pin_radius: float, ball_radius: float) ->
 	return points
 
 
+## The pins a board pocket stamps: `pins_for` on the file's coordinate grid (PRECISION). The
+## board file stores only the pocket, so these are the pins the game builds from it.
+static func rim_pins(spec: PocketSpec, pin_radius: float, ball_radius: float) -> PackedVector2Array:
+	var points := pins_for(spec, pin_radius, ball_radius)
+	for i in points.size():
+		points[i] = Vector2(snappedf(points[i].x, PRECISION), snappedf(points[i].y, PRECISION))
+	return points
+
+
 ## Replaces the pins of pocket `index` in `level` with a fresh stamp of its spec: removes
 ## every pin that belonged to the pocket and appends the new rim and special pin.
 static func apply(level: BoardLevel, index: int) -> void:
@@ -66,7 +78,7 @@ static func apply(level: BoardLevel, index: int) -> void:
 		return
 	remove(level, index, false)
 	var spec: PocketSpec = level.pockets[index]
-	var stamp := pins_for(spec, level.pin_radius, level.ball_radius)
+	var stamp := rim_pins(spec, level.pin_radius, level.ball_radius)
 	var pins := level.pins
 	var owners := level.pin_pocket
 	var special := level.pin_special

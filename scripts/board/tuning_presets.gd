@@ -61,7 +61,8 @@ static func maze() -> PhysicsTuning:
 
 
 ## The tilt maze exactly as the tutorial's JavaScript moves its balls (measured against it
-## by tests/unit/test_physics_seed_reference.gd): maze() with the speed capped per axis,
+## by tests/unit/test_physics_seed_reference.gd): maze() with the speed capped per axis
+## (x before a frame's friction, y after, as the seed does),
 ## friction against the downhill direction, caps that glance (head-on stops dead), and two
 ## 8 ms steps per 16 ms frame. The classic maze uses it.
 static func maze_seed() -> PhysicsTuning:
@@ -69,5 +70,6 @@ static func maze_seed() -> PhysicsTuning:
 	t.speed_cap = PhysicsTuning.SpeedCap.PER_AXIS
 	t.friction_against = PhysicsTuning.FrictionAgainst.GRAVITY
 	t.wall_cap_contact = PhysicsTuning.CapContact.GLANCE
+	t.x_cap_friction_time = MAZE_FRAME
 	t.fixed_hz = 2.0 / MAZE_FRAME
 	return t

@@ -48,17 +48,9 @@ func _save(resource: Resource, path: String, _flags: int) -> Error:
 	var text := Writer.write(level)
 	if FileAccess.file_exists(path) and FileAccess.get_file_as_string(path) == text:
 		return OK
-	# Write beside the file, then swap: a failed write never leaves half a board behind.
-	var staged := path + ".saving"
-	var file := FileAccess.open(staged, FileAccess.WRITE)
-	if file == null:
-		var open_error := FileAccess.get_open_error()
-		push_error("%s: could not write the board (%s)" % [path, error_string(open_error)])
-		return open_error
-	file.store_string(text)
-	file.close()
-	var moved := DirAccess.rename_absolute(staged, path)
-	if moved != OK:
-		push_error("%s: could not replace the board (%s)" % [path, error_string(moved)])
-		DirAccess.remove_absolute(staged)
-	return moved
+	# Write beside the file, then swap (SafeWrite): a failed write never leaves half a board
+	# behind and a planted link is never written through.
+	var written := SafeWrite.write_text(path, text)
+	if written != OK:
+		push_error("%s: could not write the board (%s)" % [path, error_string(written)])
+	return written

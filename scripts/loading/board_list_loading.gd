@@ -25,22 +25,27 @@ var _stopping := false
 
 ## `jobs` are dictionaries with "path", "kind" (BoardLevel.Kind) and "root" (the folder the
 ## file was listed from); `load_one(path, kind, root) -> BoardLoadResult` loads one of them
-## (BoardLoader.load_listed unless a test passes a slow one).
-func _init(jobs: Array[Dictionary], load_one := Callable()) -> void:
+## (BoardLoader.load_listed unless a test passes a slow one). `workers` threads take the
+## jobs (1 keeps them in order, as imports that pick free file names must be).
+func _init(jobs: Array[Dictionary], load_one := Callable(), workers := WORKERS) -> void:
 	_load = load_one if load_one.is_valid() else BoardLoader.load_listed
 	_queue = jobs.duplicate()
-	for index in mini(WORKERS, _queue.size()):
+	for index in mini(workers, _queue.size()):
 		var thread := Thread.new()
 		_threads.append(thread)
 		thread.start(_work, Thread.PRIORITY_LOW)
 
 
 ## The jobs that finished since the last call, each its job dictionary plus "result"
-## (a BoardLoadResult), in the order they finished.
-func take_finished() -> Array[Dictionary]:
+## (a BoardLoadResult), in the order they finished; at most `most` of them when it is not
+## negative (the rest wait for the next call).
+func take_finished(most := -1) -> Array[Dictionary]:
 	_mutex.lock()
 	var done := _finished
 	_finished = []
+	if most >= 0 and done.size() > most:
+		_finished = done.slice(most)
+		done = done.slice(0, most)
 	_mutex.unlock()
 	join_ended()
 	return done
@@ -78,6 +83,30 @@ static func reap_finished() -> void:
 		if not loading.join_ended():
 			still_busy.append(loading)
 	_cancelled = still_busy
+
+
+## Waits for the threads of every cancelled loading to end and joins them. The game calls
+## it as it quits (App._exit_tree): a thread still reading a file when its Thread object is
+## destroyed crashes the engine, so quitting waits for at most the one file each is on.
+static func wait_for_cancelled() -> void:
+	for loading in _cancelled:
+		loading.wait()
+	_cancelled.clear()
+
+
+## Drops the files not started yet, waits for the threads to finish the ones they are on
+## and drops their results.
+func wait() -> void:
+	_mutex.lock()
+	_queue.clear()
+	_stopping = true
+	_mutex.unlock()
+	for thread in _threads:
+		thread.wait_to_finish()
+	_threads.clear()
+	_mutex.lock()
+	_finished.clear()  # nobody takes the results of a loading that was stopped
+	_mutex.unlock()
 
 
 ## Joins every thread that has ended (each exactly once); true when none is left running.

@@ -57,7 +57,7 @@ const BONUS_CUP := {
 	"y": ["coord"],
 	"width": ["float", 16.0, 160.0],
 	"depth": ["float", 8.0, 200.0],
-	"payout": ["int", 0, 100],
+	"payout": ["int", BoardRanges.BONUS_PAYOUT[0], BoardRanges.BONUS_PAYOUT[1]],
 }
 ## List name → [most items, item field → spec]. Optional item fields are in OPTIONAL_ITEM_FIELDS.
 const LISTS := {
@@ -80,23 +80,47 @@ const LISTS := {
 	"start_pockets": [4, BONUS_CUP],
 	"attackers": [4, BONUS_CUP],
 	"tulips": [32, BONUS_CUP],
+	# Windmills (WindmillSpec): driven at "speed" or free with "friction" (one of the two).
+	"windmills":
+	[
+		64,
+		{
+			"x": ["coord"],
+			"y": ["coord"],
+			"blades": ["int", WindmillSpec.BLADES_RANGE.x, WindmillSpec.BLADES_RANGE.y],
+			"length": ["float", WindmillSpec.LENGTH_RANGE.x, WindmillSpec.LENGTH_RANGE.y],
+		}
+	],
 }
 ## Fields an item may leave out: its stable id (ItemIds; numbered in order when missing),
-## a pin's pocket (-1 = a field pin) and its special flag.
+## a pin's pocket and its special flag. Rim pins are stamped from their pocket now; a pin
+## with "pocket" (written by older versions) is read and dropped, so those files still load.
 const OPTIONAL_ITEM_FIELDS := {
 	"pins": {"id": ["int", 1, ItemIds.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]},
 	"pockets": {"id": ["int", 1, ItemIds.MAX_ID]},
 	"walls": {"id": ["int", 1, ItemIds.MAX_ID]},
 	"ball_starts": {"id": ["int", 1, ItemIds.MAX_ID]},
 	"holes": {"id": ["int", 1, ItemIds.MAX_ID]},
-	"start_pockets": {"id": ["int", 1, ItemIds.MAX_ID], "symbols": ["int", 2, 9]},
+	"start_pockets":
+	{
+		"id": ["int", 1, ItemIds.MAX_ID],
+		"symbols": ["int", BoardRanges.BONUS_SYMBOLS[0], BoardRanges.BONUS_SYMBOLS[1]],
+	},
 	"attackers":
 	{
 		"id": ["int", 1, ItemIds.MAX_ID],
-		"open_seconds": ["float", 1.0, 30.0],
-		"open_catches": ["int", 1, 50],
+		"open_seconds":
+		["float", BoardRanges.BONUS_OPEN_SECONDS[0], BoardRanges.BONUS_OPEN_SECONDS[1]],
+		"open_catches":
+		["int", BoardRanges.BONUS_OPEN_CATCHES[0], BoardRanges.BONUS_OPEN_CATCHES[1]],
 	},
 	"tulips": {"id": ["int", 1, ItemIds.MAX_ID]},
+	"windmills":
+	{
+		"id": ["int", 1, ItemIds.MAX_ID],
+		"speed": ["float", -WindmillSpec.MAX_SPEED, WindmillSpec.MAX_SPEED],
+		"friction": ["float", 0.0, WindmillSpec.MAX_FRICTION],
+	},
 }
 ## The optional header field holding the id counters: `{"next_ids": {"pins": 626}}`, list
 ## name -> the id its next new item gets (BoardLevel.next_ids). Written only for a list whose
@@ -114,71 +138,35 @@ const ITEM_KEYS := {
 	"start_pocket": "start_pockets",
 	"attacker": "attackers",
 	"tulip": "tulips",
+	"windmill": "windmills",
 }
 ## A file may not have more lines than this (every list full, plus the fields).
 const MAX_LINES := 12000
-const PACHINKO_LISTS: Array[String] = ["pins", "pockets", "start_pockets", "attackers", "tulips"]
+const PACHINKO_LISTS: Array[String] = [
+	"pins", "pockets", "start_pockets", "attackers", "tulips", "windmills"
+]
 ## The bonus lists in BonusPocketSpec.Role order (a board keeps its bonus pockets so).
 const BONUS_LISTS: Array[String] = ["start_pockets", "attackers", "tulips"]
 const MAZE_LISTS: Array[String] = ["walls", "ball_starts", "holes"]
-## Tuning fields: name → [min, max]; the fields themselves are PhysicsTuning's properties.
-const TUNING_RANGES := {
-	"gravity": [-100000.0, 100000.0],
-	"restitution": [0.0, 1.0],
-	"wall_restitution": [0.0, 1.0],
-	"ball_restitution": [0.0, 1.0],
-	"tangent_friction": [0.0, 1.0],
-	"rolling_friction": [0.0, 100000.0],
-	"tilt_gravity": [0.0, 1000000.0],
-	"max_speed": [1.0, 100000.0],
-	"min_horizontal_speed": [0.0, 10000.0],
-	"fixed_hz": [30.0, 1000.0],
-	"bounce_threshold": [0.0, 10000.0],
-	"rest_speed": [0.0, 10000.0],
-	"sleep_time": [0.0, 60.0],
-	"drain_slide_time": [0.0, 60.0],
-	"speed_cap": [0, 1],  # PhysicsTuning.SpeedCap
-	"friction_against": [0, 1],  # PhysicsTuning.FrictionAgainst
-	"wall_cap_contact": [0, 1],  # PhysicsTuning.CapContact
-}
 ## Old names of tuning fields a file may still use (read as the new name, never written).
 const RENAMED_TUNING := {"gutter_slide_time": "drain_slide_time"}
-## A tuning field with no range of its own above gets this one.
-const TUNING_DEFAULT_RANGE := [-1000000.0, 1000000.0]
 
 
-## The top-level fields a board of `kind_name` ("pachinko" / "maze") must have.
+## The top-level fields a board of `kind_name` (BoardLevel.KIND_NAMES) must have.
 static func fields_for(kind_name: String) -> Dictionary:
 	var fields := COMMON.duplicate()
-	fields.merge(PACHINKO if kind_name == "pachinko" else MAZE)
+	fields.merge(MAZE if kind_name == BoardLevel.MAZE_NAME else PACHINKO)
 	return fields
 
 
 ## The top-level fields a board of `kind_name` may leave out.
 static func optional_fields_for(kind_name: String) -> Dictionary:
-	return MAZE_OPTIONAL if kind_name == "maze" else {}
+	return MAZE_OPTIONAL if kind_name == BoardLevel.MAZE_NAME else {}
 
 
 ## The item lists a board of `kind_name` has.
 static func lists_for(kind_name: String) -> Array[String]:
-	return PACHINKO_LISTS if kind_name == "pachinko" else MAZE_LISTS
-
-
-## The tuning fields a file may set: PhysicsTuning's stored number and vector properties,
-## name → [Variant.Type, min, max].
-static func tuning_fields() -> Dictionary:
-	var fields := {}
-	for prop in PhysicsTuning.new().get_property_list():
-		var usage: int = prop["usage"]
-		var type: int = prop["type"]
-		if usage & PROPERTY_USAGE_STORAGE == 0:
-			continue
-		if type != TYPE_FLOAT and type != TYPE_INT and type != TYPE_VECTOR2:
-			continue
-		var name: String = prop["name"]
-		var limits: Array = TUNING_RANGES.get(name, TUNING_DEFAULT_RANGE)
-		fields[name] = [type, limits[0], limits[1]]
-	return fields
+	return MAZE_LISTS if kind_name == BoardLevel.MAZE_NAME else PACHINKO_LISTS
 
 
 ## "" when `value` fits `spec` ([type, min, max]), else what is wrong with it.
@@ -191,9 +179,7 @@ static func check_value(value: Variant, spec: Array) -> String:
 			return "" if value is bool else "must be true or false"
 		"kind":
 			return (
-				""
-				if value is String and value in ["pachinko", "maze"]
-				else ('must be "pachinko" or "maze"')
+				"" if BoardLevel.kind_named(value) >= 0 else "must be " + BoardLevel.kind_choices()
 			)
 		"string":
 			if not value is String:

@@ -51,10 +51,12 @@ static func _gather_lines(text: String) -> Dictionary:
 		if line.is_empty():
 			continue
 		if json.parse(line) != OK:
-			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
+			return _error(
+				"line %d is not valid JSON: %s" % [number + 1, JsonErrors.parse_error(json)]
+			)
 		if not json.data is Dictionary:
 			return _error("line %d is not a JSON object { ... }" % (number + 1))
-		var repeated := JsonKeys.repeated(line)
+		var repeated := JsonKeys.repeated(line, json.data)
 		if not repeated.is_empty():
 			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var object: Dictionary = json.data
@@ -91,8 +93,8 @@ static func _check_header(data: Dictionary) -> String:
 			% [version, Schema.FORMAT_VERSION]
 		)
 	var kind: Variant = data.get("kind")
-	if not kind is String or not kind in ["pachinko", "maze"]:
-		return '"kind" must be "pachinko" or "maze"'
+	if BoardLevel.kind_named(kind) < 0:
+		return '"kind" must be ' + BoardLevel.kind_choices()
 	return ""
 
 
@@ -154,8 +156,24 @@ static func _check_list(list: String, value: Variant) -> String:
 	var optional: Dictionary = Schema.OPTIONAL_ITEM_FIELDS.get(list, {})
 	for i in items.size():
 		var problem := _check_item(items[i], required, optional)
+		if problem.is_empty() and list == "windmills":
+			problem = _check_windmill_drive(items[i])
 		if not problem.is_empty():
 			return "%s item %d: %s" % [list, i + 1, problem]
+	return ""
+
+
+# A windmill is driven ("speed") or free ("friction"): exactly one of the two.
+static func _check_windmill_drive(item: Dictionary) -> String:
+	var driven := item.has("speed")
+	var free := item.has("friction")
+	if driven and free:
+		return (
+			'give "speed" (a driven wheel, degrees a second) or "friction" (a free wheel),'
+			+ " not both"
+		)
+	if not driven and not free:
+		return 'needs "speed" (a driven wheel, degrees a second) or "friction" (a free wheel)'
 	return ""
 
 
@@ -185,7 +203,7 @@ static func _check_item(item: Variant, required: Dictionary, optional: Dictionar
 static func _check_tuning(value: Variant) -> String:
 	if not value is Dictionary:
 		return '"tuning" must be an object { ... }'
-	var known := Schema.tuning_fields()
+	var known := BoardRanges.tuning_fields()
 	var tuning: Dictionary = value
 	for key: Variant in tuning.keys():
 		var field: Variant = Schema.RENAMED_TUNING.get(key, key)
@@ -207,7 +225,7 @@ static func _check_tuning(value: Variant) -> String:
 static func _build(data: Dictionary) -> BoardLevel:
 	var level := BoardLevel.new()
 	var kind: String = data["kind"]
-	level.kind = BoardLevel.Kind.MAZE if kind == "maze" else BoardLevel.Kind.PACHINKO
+	level.kind = BoardLevel.kind_named(kind) as BoardLevel.Kind
 	for field: String in Schema.fields_for(kind):
 		if field in ["format", "format_version", "kind"]:
 			continue
@@ -215,11 +233,18 @@ static func _build(data: Dictionary) -> BoardLevel:
 	var tuning: Dictionary = data.get("tuning", {})
 	level.tuning = _build_tuning(level, tuning)
 	if level.is_pachinko():
-		var pins: Array = data.get("pins", [])
+		# Files before rim pins were derived stored each pocket's pins (`"pocket": k`): the
+		# pocket line is the truth, so those are dropped and every pocket stamps its own.
+		var stored: Array = data.get("pins", [])
+		var pins := _field_pins(stored)
+		data["pins"] = pins  # the ids read below are the field pins' only
 		var pockets: Array = data.get("pockets", [])
 		_build_pins(level, pins)
 		_build_pockets(level, pockets)
+		for k in level.pockets.size():
+			PocketStamp.apply(level, k)
 		_build_bonus(level, data)
+		_build_windmills(level, data.get("windmills", []))
 	else:
 		var walls: Array = data.get("walls", [])
 		var ball_starts: Array = data.get("ball_starts", [])
@@ -262,8 +287,18 @@ static func _value_for(current: Variant, value: Variant) -> Variant:
 static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTuning:
 	var tuning := TuningPresets.for_kind(level.is_maze())
 	for key: String in values:
-		tuning.set(key, _value_for(tuning.get(key), values[key]))
+		# An old name is stored under its new one (the check already let it through so).
+		var field: String = Schema.RENAMED_TUNING.get(key, key)
+		tuning.set(field, _value_for(tuning.get(field), values[key]))
 	return tuning
+
+
+static func _field_pins(items: Array) -> Array:
+	var kept: Array = []
+	for item: Dictionary in items:
+		if not item.has("pocket"):
+			kept.append(item)
+	return kept
 
 
 static func _build_pins(level: BoardLevel, items: Array) -> void:
@@ -272,7 +307,7 @@ static func _build_pins(level: BoardLevel, items: Array) -> void:
 	var special := PackedByteArray()
 	for item: Dictionary in items:
 		pins.append(Vector2(_float_of(item["x"]), _float_of(item["y"])))
-		pockets.append(_int_of(item.get("pocket", -1)))
+		pockets.append(-1)
 		special.append(1 if item.get("special", false) else 0)
 	level.pins = pins
 	level.pin_pocket = pockets
@@ -312,6 +347,21 @@ static func _build_bonus(level: BoardLevel, data: Dictionary) -> void:
 			)
 			specs.append(spec)
 	level.bonus_pockets = specs
+
+
+static func _build_windmills(level: BoardLevel, items: Array) -> void:
+	var specs: Array[WindmillSpec] = []
+	for item: Dictionary in items:
+		var at := Vector2(_float_of(item["x"]), _float_of(item["y"]))
+		var blades := _int_of(item["blades"])
+		var length := _float_of(item["length"])
+		if item.has("friction"):
+			specs.append(
+				WindmillSpec.spinning_free(at, blades, length, _float_of(item["friction"]))
+			)
+		else:
+			specs.append(WindmillSpec.driven(at, blades, length, _float_of(item["speed"])))
+	level.windmills = specs
 
 
 static func _points(items: Array, keys: Array[String]) -> PackedVector2Array:

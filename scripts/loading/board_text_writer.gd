@@ -1,8 +1,10 @@
 extends RefCounted
 ## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per line
 ## in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a hole) in
-## the board's own order, coordinates rounded to 0.01 px. Adding a pin adds one line;
-## deleting one removes one line (no commas between lines to shift). The same board always
+## the board's own order, coordinates rounded to 0.01 px. A pocket's rim pins are not
+## written: the pocket's line is the whole pocket, and the reader stamps its pins, so a
+## pocket edit is a one-line diff. Adding a pin adds one line; deleting one removes one line
+## (no commas between lines to shift). The same board always
 ## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
@@ -10,12 +12,35 @@ const Schema := preload("res://scripts/loading/board_schema.gd")
 const PRECISION := 0.01
 const POINT_KEYS: Array[String] = ["x", "y"]
 const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
+## The lines of a board's text that name or describe it (and the id counters and medal
+## times) but never change how it plays: `play_text` leaves them out.
+const NAMING_FIELDS: Array[String] = [
+	"board_id", "display_name", "description", "medal_times", Schema.NEXT_IDS_FIELD
+]
 
 
 ## SHA-256 of write(level): the same board gives the same hash however its file was laid
 ## out, and any edit changes it (replays, analysis results).
 static func content_hash(level: BoardLevel) -> String:
 	return write(level).sha256_text()
+
+
+## The board's text without its naming lines (NAMING_FIELDS): what a play analysis depends
+## on, so renaming a board or saving it under a new name keeps its analysis.
+static func play_text(level: BoardLevel) -> String:
+	var kept := PackedStringArray()
+	for line in write(level).split("\n"):
+		var named := NAMING_FIELDS.any(
+			func(field: String) -> bool: return line.begins_with('{"%s": ' % field)
+		)
+		if not named:
+			kept.append(line)
+	return "\n".join(kept)
+
+
+## SHA-256 of play_text(level): the key of a board's play analysis.
+static func play_hash(level: BoardLevel) -> String:
+	return play_text(level).sha256_text()
 
 
 ## The file text for `level`.
@@ -43,6 +68,7 @@ static func write(level: BoardLevel) -> String:
 		_append_items(lines, "pin", _pin_items(level), _ids(level, "pins"))
 		_append_items(lines, "pocket", _pocket_items(level), _ids(level, "pockets"))
 		_append_bonus(lines, level)
+		_append_items(lines, "windmill", _windmill_items(level), _ids(level, "windmills"))
 	else:
 		var walls := _point_items(level.walls, WALL_KEYS)
 		_append_items(lines, "wall", walls, _ids(level, "walls"))
@@ -77,10 +103,12 @@ static func _value(value: Variant) -> String:
 static func _tuning(tuning: PhysicsTuning) -> String:
 	var parts := PackedStringArray()
 	var source := tuning if tuning != null else PhysicsTuning.new()
-	var names := Schema.tuning_fields().keys()
+	var names := BoardRanges.tuning_fields().keys()
 	names.sort()
 	for name: String in names:
 		var value: Variant = source.get(name)
+		if name in BoardRanges.TUNING_WRITTEN_WHEN_SET and value == 0.0:
+			continue
 		var text := ""
 		if value is Vector2:
 			var v: Vector2 = value
@@ -135,6 +163,8 @@ static func _append_items(
 static func _ids(level: BoardLevel, list: String) -> PackedInt32Array:
 	var ids := PackedInt32Array()
 	for i in ItemIds.count(level, list):
+		if list == "pins" and ItemIds.is_rim_pin(level, i):
+			continue  # stamped from its pocket, not stored
 		ids.append(ItemIds.of(level, list, i))
 	return ids
 
@@ -142,11 +172,10 @@ static func _ids(level: BoardLevel, list: String) -> PackedInt32Array:
 static func _pin_items(level: BoardLevel) -> PackedStringArray:
 	var items := PackedStringArray()
 	for i in level.pins.size():
+		if ItemIds.is_rim_pin(level, i):
+			continue  # a pocket's rim: the reader stamps it from the pocket line
 		var pin := level.pins[i]
 		var text := '{"x": %s, "y": %s' % [number(pin.x), number(pin.y)]
-		var pocket := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
-		if pocket >= 0:
-			text += ', "pocket": %d' % pocket
 		if i < level.pin_special.size() and level.pin_special[i] != 0:
 			text += ', "special": true'
 		items.append(text + "}")
@@ -203,6 +232,25 @@ static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
 				)
 			lines.append('{"%s": %s}' % [spec.role_key(), text + "}"])
 			place += 1
+
+
+# A driven wheel writes its speed, a free one its friction (WindmillSpec). A board without
+# windmills gets no line, so older boards keep their exact text.
+static func _windmill_items(level: BoardLevel) -> PackedStringArray:
+	var items := PackedStringArray()
+	for spec in level.windmills:
+		if spec == null:
+			continue
+		var text := (
+			'{"x": %s, "y": %s, "blades": %d, "length": %s'
+			% [number(spec.position.x), number(spec.position.y), spec.blades, number(spec.length)]
+		)
+		if spec.free_spin:
+			text += ', "friction": %s}' % number(spec.friction)
+		else:
+			text += ', "speed": %s}' % number(spec.speed)
+		items.append(text)
+	return items
 
 
 static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:

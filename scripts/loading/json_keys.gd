@@ -9,10 +9,13 @@ const QUOTED_CHARS := 40
 
 
 ## The first key that appears twice in the same object of `text`, or "" when none does.
-## `text` must already have parsed as JSON (the scan trusts its strings to be closed).
-static func repeated(text: String) -> String:
+## `text` must already have parsed as JSON (the scan trusts its strings to be closed);
+## `parsed`, what it parsed to, lets most lines skip the scan.
+static func repeated(text: String, parsed: Variant = null) -> String:
 	if not text.contains(","):
 		return ""  # two keys in one object need a comma between them
+	if parsed != null and text.count(":") == _key_count(parsed):
+		return ""  # every key is followed by a colon, so no key was dropped by the parser
 	var objects: Array = []  # one entry per open bracket: {key: true} for {, null for [
 	var at := 0
 	var length := text.length()
@@ -21,9 +24,9 @@ static func repeated(text: String) -> String:
 		if character == '"':
 			var end := _string_end(text, at)
 			if _followed_by_colon(text, end + 1) and not objects.is_empty():
-				var top: Variant = objects.back()
-				if top is Dictionary:
-					var keys: Dictionary = top
+				var open: Variant = objects.back()
+				if open is Dictionary:
+					var keys: Dictionary = open
 					var key := _decoded(text.substr(at, end - at + 1))
 					if keys.has(key):
 						return key
@@ -38,6 +41,20 @@ static func repeated(text: String) -> String:
 			objects.pop_back()
 		at += 1
 	return ""
+
+
+# How many keys the parsed `value` holds, at every depth.
+static func _key_count(value: Variant) -> int:
+	var count := 0
+	if value is Dictionary:
+		var object: Dictionary = value
+		count = object.size()
+		for inner: Variant in object.values():
+			count += _key_count(inner)
+	elif value is Array:
+		for inner: Variant in value:
+			count += _key_count(inner)
+	return count
 
 
 ## The problem for a repeated `key`, as the readers word it.

@@ -30,6 +30,12 @@ static func import_file(source: String, root: String = BoardLoader.USER_DIR) -> 
 	if not checked.ok():
 		return {"error": checked.error}
 	var folder := "%s/%s" % [root, BoardLevel.kind_name(checked.level.kind)]
+	var link := SafeWrite.link_on_path(folder)
+	if not link.is_empty():
+		return {
+			"error":
+			"%s: %s is a symbolic link; boards are only written to real folders" % [shown, link]
+		}
 	var made := DirAccess.make_dir_recursive_absolute(folder)
 	if made != OK:
 		return {"error": "%s: could not create %s (%s)" % [shown, folder, error_string(made)]}
@@ -41,6 +47,19 @@ static func import_file(source: String, root: String = BoardLoader.USER_DIR) -> 
 		return {"error": "%s: could not write %s (%s)" % [shown, target, error_string(written)]}
 	var roots: Array[String] = [root + "/"]
 	return {"path": target, "result": BoardLoader.load_board(target, roots)}
+
+
+## `import_file` as one BoardLoadResult, the form BoardListLoading hands back, so imports
+## run off the main thread: the new file's result (its path is the file in My boards), or a
+## result with no level whose error says why `source` was not imported.
+static func import_result(source: String, _kind: int, root: String) -> BoardLoadResult:
+	var outcome := import_file(source, root)
+	if outcome.has("result"):
+		return outcome["result"]
+	var refused := BoardLoadResult.new()
+	refused.path = source
+	refused.error = outcome["error"]
+	return refused
 
 
 ## `<folder>/<stem>.board` if no file has that name, else the first free `<stem>_N.board`;
@@ -100,17 +119,7 @@ static func is_user_board(board_path: String, root: String = BoardLoader.USER_DI
 	return false
 
 
-## Writes `bytes` to `path` through a temporary file, so a failed write never leaves half a
-## board behind (the temporary name starts with "." so the board lists skip it).
+## Writes `bytes` to `path` through a fresh temporary file (SafeWrite): a failed write never
+## leaves half a board behind, and a planted link is never written through.
 static func write_bytes(path: String, bytes: PackedByteArray) -> Error:
-	var temp := path.get_base_dir().path_join(".%s.partial" % path.get_file())
-	var file := FileAccess.open(temp, FileAccess.WRITE)
-	if file == null:
-		return FileAccess.get_open_error()
-	file.store_buffer(bytes)
-	var error := file.get_error()
-	file.close()
-	if error != OK:
-		DirAccess.remove_absolute(temp)
-		return error
-	return DirAccess.rename_absolute(temp, path)
+	return SafeWrite.write_bytes(path, bytes)

@@ -3,4 +3,4 @@ extends RefCounted
 ## the order they happened, which BallWorld then emits as its signals. Internal to
 ## scripts/physics; it knows no world, so the stages that queue events stay below BallWorld.
 
-enum Kind { PIN_HIT, WALL_HIT, RING_HIT, CAPTURED, DRAINED, HOLE, GOAL, GOAL_LEFT, ZONE }
+enum Kind { PIN_HIT, WALL_HIT, RING_HIT, BLADE_HIT, CAPTURED, DRAINED, HOLE, GOAL, GOAL_LEFT, ZONE }

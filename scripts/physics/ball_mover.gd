@@ -2,8 +2,9 @@ extends "res://scripts/physics/ball_mover_state.gd"
 ## The motion stage for one lane of balls: each awake ball moves by its velocity plus its
 ## ball-ball separation, in substeps short enough that no ball can cross a pin, a wall or
 ## the ring; each substep runs the narrow phase per shape kind (ring, pins, walls), and
-## every contact goes through one response, respond(). Then the ball's rest time, sleep
-## and sensors. Internal to scripts/physics: BallWorld has one mover per lane.
+## every contact goes through one response, respond(); near a windmill the blades come
+## last (BallMover's _touch_wheels, in the blade's moving frame). Then the ball's rest time,
+## sleep and sensors. Internal to scripts/physics: BallWorld has one mover per lane.
 ##
 ## A mover reads the last state and writes only the slots of the balls it moves, plus its
 ## own event and path buffers, which the world merges in lane order; so the result is the
@@ -11,9 +12,9 @@ extends "res://scripts/physics/ball_mover_state.gd"
 ## it moves: a GDScript call costs about as much as a contact test, so calls happen per
 ## substep and per contact, and the per-candidate tests are written out inside the loops.
 
-## Shapes as respond() sees them: the ring holds the ball inside; pins and wall caps are
-## round; a wall's flat side does not curve.
-enum Surface { RING, PIN, WALL_CAP, WALL_SIDE }
+## Shapes as respond() sees them: the ring holds the ball inside; pins and wall and blade
+## caps are round; the flat sides (from WALL_SIDE on) do not curve. Blades bounce like walls.
+enum Surface { RING, PIN, WALL_CAP, BLADE_CAP, WALL_SIDE, BLADE_SIDE }
 
 const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
@@ -30,7 +31,9 @@ const HIT_EVENT: Array[int] = [
 	BallEvents.Kind.RING_HIT,
 	BallEvents.Kind.PIN_HIT,
 	BallEvents.Kind.WALL_HIT,
-	BallEvents.Kind.WALL_HIT
+	BallEvents.Kind.BLADE_HIT,
+	BallEvents.Kind.WALL_HIT,
+	BallEvents.Kind.BLADE_HIT
 ]
 ## Distances below this count as zero (px).
 const EPS := ContactMath.EPS
@@ -104,6 +107,8 @@ func _move_ball(i: int) -> void:
 		if travel > _max_travel:
 			steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
 		_push_step = Vector2.ZERO
+	if _has_wheels:
+		steps = _wheel_steps(steps)
 	_h = _dt / steps
 	_p_start = _p
 	# The cell the ball is in (for its broad-phase key), while no contact has moved it since.
@@ -134,6 +139,8 @@ func _move_ball(i: int) -> void:
 		cell_stale = moved
 		if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
 			_touch_walls()
+			cell_stale = true
+		if _near_to > _near_from and not _gone and _touch_wheels((sub + 1) * _h):
 			cell_stale = true
 		if _gone:
 			break
@@ -177,6 +184,10 @@ func _apply_seed_speed_rules() -> void:
 	elif _has_friction:
 		_v -= _v.clamp(-_friction_dt, _friction_dt)
 	_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
+	if _x_cap_friction_time > 0.0 and _dt > 0.0:
+		_v.x = SpeedRules.x_after_cap(
+			_v.x, _gravity.x, _max_speed, _friction_dt.x / _dt * _x_cap_friction_time
+		)
 
 
 ## Stores the ball's contacts of this step and their normals (its supports next step),
@@ -202,14 +213,19 @@ func _set_radius(r: float) -> void:
 
 
 ## Narrow phase, ring: the ball's centre stays within ring radius - r of the centre.
-## Called only when it is past that. On the drain arc a bounce counts toward draining,
-## and so does time spent rolling there.
+## Called only when it is past that. A bounce then leaves the ball the ring's least
+## horizontal speed (as a pin does). On the drain arc a bounce counts toward draining, and
+## so does time spent rolling there.
 func _touch_ring() -> void:
 	var d: Vector2 = _p - _ring_center
 	var dist: float = sqrt(d.length_squared())
 	var nrm: Vector2 = -d / dist
 	_p = _ring_center + d * (_ring_lim / dist)
 	var bounced: bool = respond(ContactId.RING, _ring_center, d, nrm, _ring_lim, Surface.RING, 0)
+	# Only a bounce (the chapter's ring hit): a ball riding the ring up or down the rail
+	# must be free to stop and roll back, which a kept sideways speed would forbid.
+	if bounced and absf(_v.x) < _ring_min_speed_x:
+		_v.x = _ring_min_speed_x if _v.x >= 0.0 else -_ring_min_speed_x
 	if not _has_drain_arc or not _g.in_drain_arc(d):
 		return
 	if bounced:
@@ -314,7 +330,7 @@ func respond(
 	var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
 	var gn_dt: float = _gravity.dot(nrm) * _dt
 	if not held and minf(gn_dt, 0.0) - vn > _threshold:
-		if surface != Surface.WALL_SIDE:
+		if surface < Surface.WALL_SIDE:
 			var back: Vector2 = d - _v * ContactMath.back_off(d, _v, lim, _h, inside)
 			if back.length_squared() > EPS:
 				nrm = back.normalized() * side
@@ -332,7 +348,7 @@ func respond(
 		# which turns into tangential speed: riding the ring or rolling round a cap loses
 		# nothing, while a push from gravity or other balls never turns into speed.
 		var vt: Vector2 = _v - nrm * vn
-		if surface != Surface.WALL_SIDE and lim > EPS:
+		if surface < Surface.WALL_SIDE and lim > EPS:
 			var t2: float = vt.length_squared()
 			if t2 > EPS:
 				var c: float = maxf(minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * (_h / lim))
@@ -357,6 +373,10 @@ func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 	if hit and _hits_heard[BallEvents.Kind.WALL_HIT] != 0:
 		_queue(BallEvents.Kind.WALL_HIT, index, -vn)
 	_v -= nrm * vn
+	# The seed puts the ball back on the cap where its whole move would have ended and then
+	# moves it on by the kept speed: along a cap it goes twice its tangential speed. That is
+	# what lets a ball rolled dead at a cap slide off it within the seed's 16 frames.
+	_p += _v * _h
 	if _cur_a == ContactId.NONE or _cur_a == id:
 		_cur_a = id
 		_n_a = nrm
@@ -370,7 +390,8 @@ func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 func _rest_or_sleep(i: int) -> void:
 	var rested: float = _rest[i] + _dt
 	_rest[i] = rested
-	if _sleep_time <= 0.0 or rested < _sleep_time:
+	# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would pass it.
+	if _sleep_time <= 0.0 or rested < _sleep_time or _near_to > _near_from:
 		return
 	# A ball still being pushed apart is settling; one lying on the drain arc must still drain.
 	var push: Vector2 = _push[i]
@@ -380,3 +401,105 @@ func _rest_or_sleep(i: int) -> void:
 	_asleep[i] = BallStore.SLEEP_HELD if on_ball == Vector2.ZERO else BallStore.SLEEP_ON_BALLS
 	_sleep_ball_normal[i] = on_ball
 	_vel[i] = Vector2.ZERO
+
+
+## The windmills the ball being moved can reach this step (its cell's list, or every wheel
+## when it may travel past the margin they were binned with), and the substeps it then
+## needs: `steps`, or more, so that in a blade's turning frame the ball moves less than the
+## safe travel per substep even at the top speed (a blade may throw it so), with the fastest
+## reachable blade's speed added. Then no blade and no ball pass through each other.
+func _wheel_steps(steps: int) -> int:
+	var push_len: float = _push_step.length() * steps
+	var travel: float = (_v * _dt).length() + push_len
+	if travel > _wheel_margin:
+		_near_list = _all_wheels
+		_near_from = 0
+		_near_to = _all_wheels.size()
+	else:
+		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+		var c: int = at.y * _cols + at.x
+		_near_list = _wheel_items
+		_near_from = _wheel_start[c]
+		_near_to = _wheel_start[c + 1]
+	if _near_to == _near_from:
+		return steps
+	var fastest := 0.0
+	for k: int in range(_near_from, _near_to):
+		var m: int = _near_list[k]
+		fastest = maxf(fastest, absf(_wheel_omega[m]) * (_wheel_reach[m] + _r))
+	var relative: float = (_max_speed + fastest) * _dt + push_len
+	var need: int = mini(ceili(relative / _max_travel), MAX_SUBSTEPS)
+	if need <= steps:
+		return steps
+	_push_step *= float(steps) / float(need)
+	return need
+
+
+## Narrow phase, windmills: the blades of each reachable wheel at `t` s into the step. A
+## wheel's nearest blade is the one closest in angle; after answering it, the next nearest
+## may touch too (in the narrow wedge by the pin), so it is looked for once more. True
+## when a blade moved the ball.
+func _touch_wheels(t: float) -> bool:
+	var touched := false
+	for k: int in range(_near_from, _near_to):
+		var m: int = _near_list[k]
+		var reach: float = _wheel_reach[m] + _r
+		if (_p - _wheel_center[m]).length_squared() >= reach * reach:
+			continue
+		for _pass: int in 2:
+			if _gone or not _touch_blade(m, t):
+				break
+			touched = true
+	return touched
+
+
+## The nearest blade of wheel `m` at `t` s into the step, answered if it touches the ball:
+## the response runs in the blade's frame (the ball's speed less the blade's surface speed
+## at the contact), so a moving blade throws the ball; it keeps the blades' least
+## horizontal speed and is held to the top speed; a free wheel gets the opposite angular
+## impulse (queued, added up after the step).
+func _touch_blade(m: int, t: float) -> bool:
+	var c: Vector2 = _wheel_center[m]
+	var q: Vector2 = _p - c
+	var n: int = _wheel_blades[m]
+	var pitch: float = TAU / n
+	var turn: float = _wheel_angle[m] + _wheel_omega[m] * t
+	var k: int = roundi((atan2(q.y, q.x) - turn) / pitch)
+	var dir: Vector2 = Vector2.from_angle(turn + k * pitch)
+	var blade_len: float = _wheel_length[m]
+	var s: float = clampf(q.dot(dir), 0.0, blade_len)
+	var axis: Vector2 = c + dir * s
+	var d: Vector2 = _p - axis
+	var lim: float = _wheel_blade_r[m] + _r
+	var d2: float = d.length_squared()
+	if d2 >= lim * lim:
+		return false
+	var nrm := Vector2(-dir.y, dir.x)
+	if d2 > EPS * EPS:
+		nrm = d / sqrt(d2)
+	var w: float = _wheel_omega[m]
+	var rim: Vector2 = axis + nrm * _wheel_blade_r[m] - c
+	var surface_v := Vector2(-rim.y, rim.x) * w
+	var before: Vector2 = _v
+	var blade: int = posmod(k, n)
+	var id: int = (
+		((m << ContactId.BLADE_BITS | blade) << ContactId.KIND_BITS) | ContactId.KIND_BLADE
+	)
+	var surface: int = Surface.BLADE_SIDE if s > 0.0 and s < blade_len else Surface.BLADE_CAP
+	_p = axis + nrm * lim
+	_v -= surface_v
+	respond(id, axis, d, nrm, lim, surface, m)
+	_v += surface_v
+	var min_speed_x: float = _wheel_min_speed_x[m]
+	if absf(_v.x) < min_speed_x:
+		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
+	var speed2: float = _v.length_squared()
+	if speed2 > _max_speed * _max_speed:
+		_v *= _max_speed / sqrt(speed2)
+	if _wheel_free[m] != 0:
+		var dv: Vector2 = _v - before
+		var spin: float = (rim.y * dv.x - rim.x * dv.y) * _wheel_inv_inertia[m]
+		if spin != 0.0:
+			wheel_push_index.append(m)
+			wheel_push.append(spin)
+	return true

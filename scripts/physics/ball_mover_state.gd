@@ -11,12 +11,17 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
+const Windmills := preload("res://scripts/physics/windmills.gd")
 
 ## This lane's events of the step, in order (see BallEvents), and its path points.
 var events := PackedInt32Array()
 var event_speed := PackedFloat32Array()
 var trace_ball := PackedInt32Array()
 var trace_pos := PackedVector2Array()
+## This lane's pushes on free windmills, in ball order: wheel index and change of its
+## angular speed (rad/s); the world adds them up after the step (Windmills.advance).
+var wheel_push_index := PackedInt32Array()
+var wheel_push := PackedFloat64Array()
 
 # The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
 # only), static geometry (read only) and constants. Members rather than reads through the
@@ -40,9 +45,9 @@ var _drain_time := PackedFloat32Array()
 var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
 var _cell_keys := PackedInt64Array()
-## 1 for each hit event kind (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT) some signal
+## 1 for each hit event kind (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT, BLADE_HIT) some signal
 ## handler listens to: the others are not queued (on a busy board most events are hits).
-var _hits_heard := PackedByteArray([1, 1, 1])
+var _hits_heard := PackedByteArray([1, 1, 1, 1])
 ## False when the store's broad-phase keys are stale this step: then none are written.
 var _keyed := true
 var _g: StaticGeometry
@@ -65,6 +70,7 @@ var _wall_inv_len2 := PackedFloat32Array()
 var _has_walls := false
 var _has_ring := false
 var _ring_center := Vector2.ZERO
+var _ring_min_speed_x := 0.0
 var _has_drain_arc := false
 var _has_sensors := false
 ## True when the sensors are zones alone (no holes, no goals): the mover then looks for a
@@ -73,6 +79,27 @@ var _zones_only := false
 var _zone_pos := PackedVector2Array()
 var _zone_rad := PackedFloat32Array()
 var _zone_count := 0
+# The windmills (see Windmills): their pose at the step's start, the grid of them.
+var _has_wheels := false
+var _wheel_center := PackedVector2Array()
+var _wheel_blades := PackedInt32Array()
+var _wheel_length := PackedFloat64Array()
+var _wheel_blade_r := PackedFloat64Array()
+var _wheel_reach := PackedFloat64Array()
+var _wheel_angle := PackedFloat64Array()
+var _wheel_omega := PackedFloat64Array()
+var _wheel_free := PackedByteArray()
+var _wheel_inv_inertia := PackedFloat64Array()
+var _wheel_min_speed_x := PackedFloat64Array()
+var _wheel_start := PackedInt32Array()
+var _wheel_items := PackedInt32Array()
+var _wheel_margin := 0.0
+var _all_wheels := PackedInt32Array()
+## The wheels the ball being moved can reach this step: _near_list[_near_from .. _near_to)
+## (its cell's list, or every wheel); empty on a board without windmills.
+var _near_list := PackedInt32Array()
+var _near_from := 0
+var _near_to := 0
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
@@ -85,6 +112,8 @@ var _dt := 0.0
 var _max_speed := 0.0
 ## True when friction or the cap follow the seed's options (see PhysicsTuning).
 var _friction_against_gravity := false
+## Seconds of x friction that come off after the per-axis cap (PhysicsTuning.x_cap_friction_time).
+var _x_cap_friction_time := 0.0
 var _cap_per_axis := false
 var _caps_glance := false
 var _pin_e := 0.0
@@ -128,6 +157,7 @@ var _ring_lim2 := 0.0
 func begin(
 	b: BallStore,
 	g: StaticGeometry,
+	wheels: Windmills,
 	t: PhysicsTuning,
 	gravity: Vector2,
 	friction: Vector2,
@@ -138,6 +168,7 @@ func begin(
 	_hits_heard = hits_heard
 	_take_balls(b)
 	_take_geometry(g)
+	_take_wheels(wheels)
 	_gravity = gravity
 	_friction_dt = friction.max(Vector2.ZERO) * dt
 	_has_friction = _friction_dt != Vector2.ZERO
@@ -145,6 +176,7 @@ func begin(
 	_max_speed = t.max_speed
 	_friction_against_gravity = t.friction_against == PhysicsTuning.FrictionAgainst.GRAVITY
 	_cap_per_axis = t.speed_cap == PhysicsTuning.SpeedCap.PER_AXIS
+	_x_cap_friction_time = t.x_cap_friction_time if _cap_per_axis else 0.0
 	_caps_glance = t.wall_cap_contact == PhysicsTuning.CapContact.GLANCE
 	_pin_e = t.restitution
 	_wall_e = t.wall_restitution
@@ -164,6 +196,8 @@ func begin(
 	event_speed.resize(0)
 	trace_ball.resize(0)
 	trace_pos.resize(0)
+	wheel_push_index.resize(0)
+	wheel_push.resize(0)
 
 
 func _take_balls(b: BallStore) -> void:
@@ -210,6 +244,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_has_walls = not g.wall_a.is_empty()
 	_has_ring = g.has_ring
 	_ring_center = g.ring_center
+	_ring_min_speed_x = g.ring_min_speed_x
 	_has_drain_arc = g.has_drain_arc
 	_has_sensors = not (g.hole_pos.is_empty() and g.goal_pos.is_empty() and g.zone_pos.is_empty())
 	_zones_only = g.hole_pos.is_empty() and g.goal_pos.is_empty()
@@ -220,6 +255,29 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_inv_cell = g.inv_cell
 	_cols = g.cols
 	_last_cell = Vector2i(g.cols - 1, g.rows - 1)
+
+
+func _take_wheels(w: Windmills) -> void:
+	_has_wheels = w.count() > 0
+	if not _has_wheels:
+		return
+	_wheel_center = w.center
+	_wheel_blades = w.blades
+	_wheel_length = w.length
+	_wheel_blade_r = w.blade_radius
+	_wheel_reach = w.reach
+	_wheel_angle = w.angle
+	_wheel_omega = w.omega
+	_wheel_free = w.free
+	_wheel_inv_inertia = w.inv_inertia
+	_wheel_min_speed_x = w.min_speed_x
+	_wheel_start = w.start
+	_wheel_items = w.items
+	_wheel_margin = w.margin
+	if _all_wheels.size() != w.count():
+		_all_wheels.resize(w.count())
+		for m: int in w.count():
+			_all_wheels[m] = m
 
 
 ## Queues an event of `kind` for the ball being moved (see BallEvents).

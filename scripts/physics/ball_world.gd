@@ -22,10 +22,10 @@ signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
 signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 ## A ball bounced off the ring border.
 signal ring_hit(ball_id: int, impact_speed: float)
+## A ball bounced off a windmill's blade (the speed is relative to the moving blade).
+signal windmill_hit(ball_id: int, windmill_index: int, impact_speed: float)
 ## A ball touched a capturing pin (the pin's tag); it has been removed.
 signal ball_captured(ball_id: int, tag: int)
-## Deprecated name of ball_captured, kept one release (emitted only while connected).
-signal ball_pocketed(ball_id: int, pocket_id: int)
 ## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
 signal ball_drained(ball_id: int)
 ## A ball's centre came within a hole's radius; it has been removed.
@@ -47,7 +47,11 @@ const StageClock := preload("res://scripts/physics/stage_clock.gd")
 ## The physics behaviour: bumped whenever the same inputs roll the balls differently (a new
 ## contact order, a changed response), so replays of older runs are refused by name instead
 ## of drifting (Replay.PHYSICS_VERSION). 2: ball pairs solved in stripes of cell rows.
-const PHYSICS_VERSION := 2
+## 3: a glancing cap (PhysicsTuning.CapContact.GLANCE) carries the ball on along its tangent
+## as the seed does, and PER_AXIS caps may hold x under y (x_cap_friction_time). 4: a bounce
+## off the ring leaves the ball the ring's least horizontal speed, as a pin hit does (the
+## chapter).
+const PHYSICS_VERSION := 4
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
 ## hitch slows the game down instead of freezing it.
 const MAX_STEPS_PER_ADVANCE := 8
@@ -93,7 +97,7 @@ var profile_cpu_time := false:
 var _balls := BallStore.new()
 var _lanes := BallLanes.new()
 var _pairs := BallPairs.new()
-var _motion := MotionStage.new(_balls, _geo, _lanes)
+var _motion := MotionStage.new(_balls, _geo, _wheels, _lanes)
 var _clock := StageClock.new()
 ## This step's events (see BallEvents), gathered from the lanes in lane order.
 var _events := PackedInt32Array()
@@ -114,14 +118,18 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
 
 
-## Deprecated name of set_drain_arc(), with tuning.drain_slide_time as the slide time.
-func set_gutter(from_deg: float, to_deg: float, bounces: int) -> void:
-	set_drain_arc(from_deg, to_deg, bounces, tuning.drain_slide_time)
-
-
-## Bins the static shapes into the grid. Adding shapes or bigger balls later rebuilds it.
+## Bins the static shapes and the windmills into the grid. Adding shapes or bigger balls
+## later rebuilds it.
 func build_grid() -> void:
-	_geo.build(maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS), use_zoning)
+	var ball_radius: float = maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS)
+	_geo.kinematic_points = _wheels.bounds_points()
+	_geo.build(ball_radius, use_zoning)
+	if _wheels.count() > 0:
+		_geo.min_feature = minf(_geo.min_feature, _wheels.min_blade_radius)
+		# A ball moving at the top speed stays within this of where it started a step.
+		var travel: float = tuning.max_speed / maxf(tuning.fixed_hz, 1.0) + ball_radius
+		var grow: float = ball_radius + StaticGeometry.BIN_MARGIN
+		_wheels.bin(_geo.origin, _geo.cell, _geo.cols, _geo.rows, grow, travel)
 	_balls.keys_valid = false
 	_balls.wake_all()
 
@@ -280,6 +288,8 @@ func step(dt: float) -> void:
 	_clock.lap(StageClock.Stage.MOTION)
 	_events.append_array(_motion.events)
 	_event_speed.append_array(_motion.event_speed)
+	if _wheels.count() > 0:
+		_wheels.advance(dt, _motion.wheel_push_index, _motion.wheel_push, tuning.max_speed)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
@@ -335,6 +345,9 @@ func stage_times() -> Dictionary:
 
 ## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.
 func state_hash() -> int:
+	if _wheels.count() > 0:
+		var b: BallStore = _balls
+		return hash([step_count, b.ids, b.pos, b.vel, b.rest, _wheels.angle, _wheels.omega])
 	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
 
 
@@ -345,6 +358,7 @@ func _hear_hits() -> void:
 	heard[BallEvents.Kind.PIN_HIT] = 1 if pin_hit.has_connections() else 0
 	heard[BallEvents.Kind.WALL_HIT] = 1 if wall_hit.has_connections() else 0
 	heard[BallEvents.Kind.RING_HIT] = 1 if ring_hit.has_connections() else 0
+	heard[BallEvents.Kind.BLADE_HIT] = 1 if windmill_hit.has_connections() else 0
 
 
 # Emits this step's queued events as the signals above, in the order they happened.
@@ -367,10 +381,10 @@ func _emit_events() -> void:
 				wall_hit.emit(id, index, evs[e])
 			BallEvents.Kind.RING_HIT:
 				ring_hit.emit(id, evs[e])
+			BallEvents.Kind.BLADE_HIT:
+				windmill_hit.emit(id, index, evs[e])
 			BallEvents.Kind.CAPTURED:
 				ball_captured.emit(id, index)
-				if ball_pocketed.has_connections():
-					ball_pocketed.emit(id, index)
 			BallEvents.Kind.DRAINED:
 				ball_drained.emit(id)
 			BallEvents.Kind.HOLE:
@@ -381,6 +395,11 @@ func _emit_events() -> void:
 				ball_left_goal.emit(id, index)
 			BallEvents.Kind.ZONE:
 				ball_entered_zone.emit(id, index)
+
+
+# Blade tips never outrun the fastest ball (see add_windmill).
+func _max_tip_speed() -> float:
+	return tuning.max_speed
 
 
 ## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.

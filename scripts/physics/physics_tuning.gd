@@ -39,6 +39,12 @@ const FLASH_TICK := 0.03
 ## What max_speed caps: the speed (TOTAL) or each axis on its own (PER_AXIS, as the tilt
 ## maze seed does: a diagonal then rolls up to √2 times faster than a straight run).
 @export var speed_cap: SpeedCap = SpeedCap.TOTAL
+## Seconds of rolling friction the x axis still loses after its speed cap while gravity pulls
+## along x (PER_AXIS only). The tilt maze seed caps x before it takes a frame's friction and
+## y after, so its x tops out at 1.5 − 0.02 = 1.48 px a frame and y at 1.5: one seed frame
+## (0.016) on the classic maze. That small asymmetry is what slides a ball off a wall cap it
+## meets dead on along the diagonal; 0 caps both axes alike.
+@export var x_cap_friction_time: float = 0.0
 ## What rolling friction opposes, per axis: the ball's velocity (VELOCITY), or the downhill
 ## direction of gravity (GRAVITY, as the tilt maze seed does: it only lowers the downhill
 ## pull, to zero at most; an axis with no gravity slows as with VELOCITY).
@@ -46,7 +52,8 @@ const FLASH_TICK := 0.03
 ## How a ball answers a wall's round cap: like any round surface (ROLL_ROUND: bounces with
 ## wall_restitution, then rolls round the curve), or GLANCE, as the tilt maze seed's
 ## rollAroundCap: only the speed along the cap's tangent is kept, so a head-on hit stops
-## dead and a glancing one goes on along the tangent, leaving the cap.
+## dead and a glancing one goes on along the tangent, leaving the cap (moved on by its kept
+## speed once more each step, as the seed moves it twice a frame).
 @export var wall_cap_contact: CapContact = CapContact.ROLL_ROUND
 ## Fixed simulation steps per second.
 @export var fixed_hz: float = 120.0
@@ -63,10 +70,3 @@ const FLASH_TICK := 0.03
 ## Seconds of sliding ring contact inside the drain arc that also drain a ball: a ball
 ## that rolls instead of bouncing must leave too.
 @export var drain_slide_time: float = 0.5
-## Deprecated name of drain_slide_time, kept one release (board files written before the
-## rename still carry it; it is not stored, so files are written with the new name).
-var gutter_slide_time: float:
-	get:
-		return drain_slide_time
-	set(value):
-		drain_slide_time = value

@@ -29,6 +29,16 @@ static func capped(v: Vector2, cap: float, per_axis: bool) -> Vector2:
 	return v
 
 
+## The x speed `vx` (already capped at `cap`) as the seed leaves it when it takes a frame's
+## friction after the cap: while gravity pulls along x (`pull_x`), the downhill speed tops out
+## at `cap - loss`; uphill and with no pull the cap stays.
+static func x_after_cap(vx: float, pull_x: float, cap: float, loss: float) -> float:
+	if pull_x == 0.0 or signf(vx) != signf(pull_x):
+		return vx
+	var top := maxf(cap - loss, 0.0)
+	return clampf(vx, -top, top)
+
+
 static func _axis_against_gravity(v: float, pull: float, friction: float) -> float:
 	if pull == 0.0:
 		return v - clampf(v, -friction, friction)

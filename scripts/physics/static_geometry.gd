@@ -42,6 +42,8 @@ var built_ball_radius := 0.0
 ## False when every ball tests every pin (`all_pins`), the benchmark's brute-force baseline.
 var zoned := true
 var all_pins := PackedInt32Array()
+## Points the grid must also cover: the sweep boxes of the moving shapes (BallWorld sets them).
+var kinematic_points := PackedVector2Array()
 
 
 ## Bins every pin and wall for balls up to `ball_radius`.
@@ -139,6 +141,7 @@ func _bounds() -> Rect2:
 	pts.append_array(hole_pos)
 	pts.append_array(goal_pos)
 	pts.append_array(zone_pos)
+	pts.append_array(kinematic_points)
 	if has_ring:
 		pts.append(ring_center - Vector2(ring_radius, ring_radius))
 		pts.append(ring_center + Vector2(ring_radius, ring_radius))

@@ -32,6 +32,9 @@ var wall_off := PackedByteArray()
 var has_ring := false
 var ring_center := Vector2.ZERO
 var ring_radius := 0.0
+## Material: the least horizontal speed (px/s) a ball keeps after touching the ring (as a
+## pin's min_speed_x; the Flash chapter resolves a ring hit as it does a pin's).
+var ring_min_speed_x := 0.0
 
 ## The drain arc: a stretch of the ring (degrees) that removes a ball after drain_bounces
 ## bounces on it or drain_slide_time seconds of rolling on it.
@@ -60,15 +63,20 @@ func in_drain_arc(d: Vector2) -> bool:
 	return fposmod(rad_to_deg(atan2(d.y, d.x)) - drain_from, 360.0) <= span
 
 
-## Sets the ring border (BallWorld.set_ring); refuses a non-finite centre or radius <= 0.
-func set_ring(center: Vector2, radius: float) -> void:
+## Sets the ring border (BallWorld.set_ring); refuses a non-finite centre, radius <= 0 or a
+## negative or non-finite min_speed_x.
+func set_ring(center: Vector2, radius: float, min_speed_x: float) -> void:
 	if not center.is_finite() or not is_finite(radius) or radius <= 0.0:
 		var problem: String = "BallWorld.set_ring: needs a finite centre and radius > 0 (got %s, %s)"
 		push_error(problem % [center, radius])
 		return
+	if not is_finite(min_speed_x) or min_speed_x < 0.0:
+		push_error("BallWorld.set_ring: min_speed_x must be finite and >= 0 (got %s)" % min_speed_x)
+		return
 	has_ring = true
 	ring_center = center
 	ring_radius = radius
+	ring_min_speed_x = min_speed_x
 	dirty = true
 
 

@@ -1,11 +1,14 @@
 extends RefCounted
-## The static half of BallWorld's façade: the calls that add pins, capsule walls, the ring,
-## its drain arc and sensor circles, all checked by StaticGeometry. BallWorld extends this
-## with the balls and the step. Internal to scripts/physics: use BallWorld.
+## The shapes half of BallWorld's façade: the calls that add pins, capsule walls, the ring,
+## its drain arc and sensor circles, all checked by StaticGeometry, and the windmills
+## (Windmills). BallWorld extends this with the balls and the step. Internal to
+## scripts/physics: use BallWorld.
 
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const Windmills := preload("res://scripts/physics/windmills.gd")
 
 var _geo := StaticGeometry.new()
+var _wheels := Windmills.new()
 
 
 ## Adds a pin (a fixed circle). `tag` is the owner's number for it (-1: none); a pin that
@@ -34,9 +37,53 @@ func is_wall_enabled(index: int) -> bool:
 	return index >= 0 and index < _geo.wall_a.size() and _geo.wall_off[index] == 0
 
 
-## Sets the ring border: balls stay inside the circle.
-func set_ring(center: Vector2, radius: float) -> void:
-	_geo.set_ring(center, radius)
+## Adds a windmill (風車): `blades` capsule blades of `length` px (pin to the middle of the
+## tip cap) and radius `blade_radius`, turning about `center`. `speed` is in rad/s, positive
+## clockwise on screen: a driven wheel (`free` false) keeps it; a free wheel starts at it,
+## is spun by the balls that strike it and slowed by `friction` rad/s². Blade tips never
+## move faster than tuning.max_speed (a faster speed is held to it). `min_speed_x` is the
+## blades' material, as a pin's (add_pin): the least horizontal speed a ball keeps after
+## touching one. Returns its index, or -1 with an error on bad input.
+func add_windmill(
+	center: Vector2,
+	blades: int,
+	length: float,
+	blade_radius: float,
+	speed: float,
+	free: bool = false,
+	friction: float = 0.0,
+	min_speed_x: float = 0.0
+) -> int:
+	var index: int = _wheels.add(
+		center, blades, length, blade_radius, speed, free, friction, min_speed_x
+	)
+	if index >= 0:
+		var cap: float = _max_tip_speed() / _wheels.reach[index]
+		_wheels.omega[index] = clampf(speed, -cap, cap)
+		_geo.dirty = true
+	return index
+
+
+## How many windmills were added.
+func windmill_count() -> int:
+	return _wheels.count()
+
+
+## The angle of windmill `index`'s first blade (radians, y down; 0 for a bad index).
+func get_windmill_angle(index: int) -> float:
+	return _wheels.angle[index] if index >= 0 and index < _wheels.count() else 0.0
+
+
+## The angular speed of windmill `index` in rad/s, positive clockwise (0 for a bad index).
+func get_windmill_speed(index: int) -> float:
+	return _wheels.omega[index] if index >= 0 and index < _wheels.count() else 0.0
+
+
+## Sets the ring border: balls stay inside the circle. `min_speed_x` is its material, as a
+## pin's (add_pin): the least horizontal speed a ball keeps after bouncing off it (a ball
+## riding the ring keeps its own, so it can stop and roll back down the launch rail).
+func set_ring(center: Vector2, radius: float, min_speed_x := 0.0) -> void:
+	_geo.set_ring(center, radius, min_speed_x)
 
 
 ## Makes the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) drain:
@@ -69,3 +116,8 @@ func pin_count() -> int:
 ## How many walls were added (switched-off ones included).
 func wall_count() -> int:
 	return _geo.wall_a.size()
+
+
+# The fastest a blade tip may move (BallWorld gives its tuning.max_speed).
+func _max_tip_speed() -> float:
+	return INF

@@ -33,8 +33,8 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 const RULES_VERSIONS := {"maze": 1, "pachinko": 2}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
-const MAZE := "maze"
-const PACHINKO := "pachinko"
+const MAZE := BoardLevel.MAZE_NAME
+const PACHINKO := BoardLevel.PACHINKO_NAME
 ## Pachinko has one mode; the maze has easy and hard.
 const PACHINKO_MODE := "normal"
 ## Record kinds and how many numbers follow the name, per game.
@@ -51,7 +51,7 @@ var format_version := VERSION
 var physics_version := PHYSICS_VERSION
 ## The game's rules version the run was recorded with (RULES_VERSIONS when recorded here).
 var rules_version := 1
-## "maze" or "pachinko".
+## The game's name (BoardLevel.KIND_NAMES).
 var game := MAZE
 ## The board's `board_id`.
 var board_id := ""
@@ -109,9 +109,9 @@ static func frame_tilt(record: Array, frame: int) -> Vector2i:
 	return Vector2i(x, y)
 
 
-## "maze" or "pachinko" for a board.
+## The game's name for a board (BoardLevel.KIND_NAMES).
 static func game_of(level: BoardLevel) -> String:
-	return MAZE if level.is_maze() else PACHINKO
+	return BoardLevel.kind_name(level.kind)
 
 
 ## The rules version this build plays `game_name` with.

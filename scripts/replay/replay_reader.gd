@@ -9,8 +9,10 @@ extends RefCounted
 const MAX_BYTES := 2 * 1024 * 1024
 ## Most lines (records) in one file.
 const MAX_LINES := 100_000
-## Most fixed steps in one replay: an hour at 240 steps a second.
-const MAX_STEPS := 864_000
+## Most fixed steps in one replay: ten minutes at 240 steps a second, longer than any maze
+## attempt or pachinko game takes (the recorder stops there too). Playing the longest back
+## costs seconds of CPU, not the minute an hour-long file took.
+const MAX_STEPS := 144_000
 ## Steps one frame can run: the world runs at most this many per frame.
 const MAX_STEPS_PER_FRAME := BallWorld.MAX_STEPS_PER_ADVANCE
 ## Largest tilt in hundredths of a degree (MazeRules keeps it within ±12°).
@@ -37,7 +39,7 @@ const HEADER_KEYS := [
 const LATER_KEYS := {"physics": 3, "rules": 4}
 ## Physics versions a file may name (BallWorld keeps its history small).
 const MAX_PHYSICS := 1000
-const MODES := {"maze": ["easy", "hard"], "pachinko": ["normal"]}
+const MODES := {Replay.MAZE: ["easy", "hard"], Replay.PACHINKO: [Replay.PACHINKO_MODE]}
 const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 ## Longest packed text of one "tilts" record: MAX_PACKED_FRAMES frames of three numbers of
 ## at most TiltPacking.MAX_DIGITS digits.
@@ -63,8 +65,10 @@ static func read(text: String) -> Dictionary:
 		if line.is_empty():
 			continue
 		if json.parse(line) != OK:
-			return _error("line %d is not valid JSON: %s" % [number + 1, json.get_error_message()])
-		var repeated := JsonKeys.repeated(line)
+			return _error(
+				"line %d is not valid JSON: %s" % [number + 1, JsonErrors.parse_error(json)]
+			)
+		var repeated := JsonKeys.repeated(line, json.data)
 		if not repeated.is_empty():
 			return _error("line %d: %s" % [number + 1, JsonKeys.problem(repeated)])
 		var problem := ""
@@ -121,7 +125,7 @@ static func _read_header(data: Variant, replay: Replay) -> String:
 static func _read_names(header: Dictionary, replay: Replay) -> String:
 	var game: Variant = header["game"]
 	if not MODES.has(game):
-		return '"game" must be "maze" or "pachinko"'
+		return '"game" must be ' + BoardLevel.kind_choices()
 	replay.game = game
 	var board := str(header["board"]) if header["board"] is String else ""
 	if board.is_empty() or board.length() > 64:

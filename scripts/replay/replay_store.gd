@@ -49,13 +49,10 @@ static func save(replay: Replay, path: String) -> Error:
 		if made != OK:
 			push_error("Could not make the folder %s: %s" % [base, error_string(made)])
 			return made
-	var file := FileAccess.open(path, FileAccess.WRITE)
-	if file == null:
-		var error := FileAccess.get_open_error()
+	var error := SafeWrite.write_text(path, Writer.write(replay))
+	if error != OK:
 		push_error("Could not save the replay %s: %s" % [path, error_string(error)])
-		return error
-	file.store_string(Writer.write(replay))
-	return OK
+	return error
 
 
 ## {"replay": Replay} or {"error": message naming the file and the problem}.

@@ -8,11 +8,11 @@ extends RefCounted
 
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
-## Symbols per reel, attacker seconds and catches: the ranges the schema allows.
-const SYMBOLS_RANGE := Vector2i(2, 9)
-const OPEN_SECONDS_RANGE := Vector2(1.0, 30.0)
-const CATCHES_RANGE := Vector2i(1, 50)
-const PAYOUT_MAX := 100
+## Payout, symbols per reel, attacker seconds and catches: the file reader's ranges.
+const PAYOUT := BoardRanges.BONUS_PAYOUT
+const SYMBOLS := BoardRanges.BONUS_SYMBOLS
+const OPEN_SECONDS := BoardRanges.BONUS_OPEN_SECONDS
+const CATCHES := BoardRanges.BONUS_OPEN_CATCHES
 
 
 ## Appends the bonus layer's problems to `issues`.
@@ -59,17 +59,19 @@ static func _check_values(level: BoardLevel, i: int, issues: Array[BoardIssue]) 
 		)
 	elif spec.depth < spec.width * 0.5:
 		problem = "is shallower than half its width; its cup cannot be built"
-	elif spec.payout < 0 or spec.payout > PAYOUT_MAX:
-		problem = "pays %d balls; a payout is 0 to %d" % [spec.payout, PAYOUT_MAX]
-	elif spec.symbols < SYMBOLS_RANGE.x or spec.symbols > SYMBOLS_RANGE.y:
+	elif not _in(spec.payout, PAYOUT[0], PAYOUT[1]):
+		problem = "pays %d balls; a payout is %d to %d" % [spec.payout, PAYOUT[0], PAYOUT[1]]
+	elif not _in(spec.symbols, SYMBOLS[0], SYMBOLS[1]):
+		problem = "has %d symbols per reel; use %d to %d" % [spec.symbols, SYMBOLS[0], SYMBOLS[1]]
+	elif not _in(spec.open_seconds, OPEN_SECONDS[0], OPEN_SECONDS[1]):
 		problem = (
-			"has %d symbols per reel; use %d to %d"
-			% [spec.symbols, SYMBOLS_RANGE.x, SYMBOLS_RANGE.y]
+			"opens for %s s; use %s to %s"
+			% [_num(spec.open_seconds), _num(OPEN_SECONDS[0]), _num(OPEN_SECONDS[1])]
 		)
-	elif not _in(spec.open_seconds, OPEN_SECONDS_RANGE.x, OPEN_SECONDS_RANGE.y):
-		problem = "opens for %s s; use 1 to 30" % _num(spec.open_seconds)
-	elif spec.open_catches < CATCHES_RANGE.x or spec.open_catches > CATCHES_RANGE.y:
-		problem = "closes after %d catches; use 1 to 50" % spec.open_catches
+	elif not _in(spec.open_catches, CATCHES[0], CATCHES[1]):
+		problem = (
+			"closes after %d catches; use %d to %d" % [spec.open_catches, CATCHES[0], CATCHES[1]]
+		)
 	if problem.is_empty():
 		return true
 	var where := spec.position if spec.position.is_finite() else at

@@ -4,20 +4,43 @@ extends RefCounted
 ## grown by the ball radius, so a cell is free exactly where a ball's centre fits).
 
 const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
+const MazeLimits := preload("res://scripts/validation/maze_limits.gd")
+const MazeGaps := preload("res://scripts/validation/maze_gaps.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Below this a wall counts as zero length, in pixels.
 const MIN_WALL_LENGTH := 0.01
 
 
+## Reachability always runs when it can: other errors do not hide a boxed-in goal. When it
+## cannot (no usable grid, goal or starts; a wall end that is not a number), a warning says
+## it was skipped and why.
 static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	if not _check_shape(level, issues):
+		_skipped_reachability(
+			"the maze's grid, walls, goal or starts have the errors above", issues
+		)
 		return
-	_check_walls(level, issues)
-	_check_points(level, issues)
-	if issues.any(func(issue: BoardIssue) -> bool: return issue.is_error()):
-		return  # reachability needs sane walls and starts
-	_check_reachability(level, issues)
+	if not MazeLimits.check(level, issues):
+		_skipped_reachability("the maze is past the size limits above", issues)
+		return
+	var walls_ok := _check_walls(level, issues)
+	var bad_starts := _check_points(level, issues)
+	MazeGaps.check(level, issues)
+	if not walls_ok:
+		_skipped_reachability("a wall has an end that is not a number", issues)
+		return
+	_check_reachability(level, bad_starts, issues)
+
+
+static func _skipped_reachability(why: String, issues: Array[BoardIssue]) -> void:
+	BoardIssue.add_to(
+		issues,
+		WARNING,
+		"Whether every ball can roll to the goal was not checked: %s." % why,
+		Vector2.ZERO,
+		"reachability_skipped"
+	)
 
 
 static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
@@ -96,7 +119,9 @@ static func _check_shape(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
 	return ok
 
 
-static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+# Every wall a number, longer than zero and on the board; false when an end is not a number.
+static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> bool:
+	var finite := true
 	var area := _board_rect(level).grow(0.5)
 	@warning_ignore("integer_division")  # walls are pairs of points; a lone end is ignored
 	var wall_count := level.walls.size() / 2
@@ -104,6 +129,7 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 		var a := level.walls[w * 2]
 		var b := level.walls[w * 2 + 1]
 		if not a.is_finite() or not b.is_finite():
+			finite = false
 			BoardIssue.add_to(
 				issues,
 				ERROR,
@@ -130,15 +156,27 @@ static func _check_walls(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 				a if not area.has_point(a) else b,
 				"wall_outside"
 			)
+	return finite
 
 
-static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+# The goal, starts and holes; returns the starts with an error of their own (reachability
+# leaves them out rather than report them twice).
+static func _check_points(level: BoardLevel, issues: Array[BoardIssue]) -> Dictionary:
 	var area := _board_rect(level)
 	_check_goal_fits(level, area, issues)
+	var bad_starts := {}
 	for i in level.ball_starts.size():
+		var before := _error_count(issues)
 		_check_start(level, area, i, issues)
+		if _error_count(issues) > before:
+			bad_starts[i] = true
 		_check_start_overlaps(level, i, issues)
 	_check_holes(level, area, issues)
+	return bad_starts
+
+
+static func _error_count(issues: Array[BoardIssue]) -> int:
+	return issues.filter(func(issue: BoardIssue) -> bool: return issue.is_error()).size()
 
 
 # Ball start i: a number, on the board, clear of walls and holes, not already in the goal.
@@ -232,9 +270,13 @@ static func _check_holes(level: BoardLevel, area: Rect2, issues: Array[BoardIssu
 			)
 
 
-static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+static func _check_reachability(
+	level: BoardLevel, bad_starts: Dictionary, issues: Array[BoardIssue]
+) -> void:
 	var fill := MazeFlood.new(level, false)
 	for i in level.ball_starts.size():
+		if bad_starts.has(i):
+			continue
 		if not fill.reaches_goal(level.ball_starts[i]):
 			BoardIssue.add_covering(
 				issues,
@@ -253,6 +295,8 @@ static func _check_reachability(level: BoardLevel, issues: Array[BoardIssue]) ->
 		return
 	var hard := MazeFlood.new(level, true, fill.free)
 	for i in level.ball_starts.size():
+		if bad_starts.has(i):
+			continue
 		if fill.reaches_goal(level.ball_starts[i]) and not hard.reaches_goal(level.ball_starts[i]):
 			BoardIssue.add_covering(
 				issues,

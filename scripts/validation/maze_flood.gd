@@ -73,17 +73,21 @@ func _block_edges() -> void:
 				free[cy * cols + cx] = 0
 
 
+# Blocks the cells whose centre is closer than `grow` to the segment a-b. Each row only
+# visits the cells beside the part of the segment within `grow` of that row, so the work
+# follows the wall's length times its width, never the area of its bounding box.
 func _block_capsule(a: Vector2, b: Vector2, grow: float) -> void:
 	var box := Rect2(a, Vector2.ZERO).expand(b).grow(grow)
-	var x0 := maxi(0, floori(box.position.x / cell))
 	var y0 := maxi(0, floori(box.position.y / cell))
-	var x1 := mini(cols - 1, floori(box.end.x / cell))
 	var y1 := mini(rows - 1, floori(box.end.y / cell))
 	var grow2 := grow * grow
 	var ab := b - a
 	var len2 := ab.length_squared()
 	for cy in range(y0, y1 + 1):
 		var py := (cy + 0.5) * cell
+		var span := _row_span(a, ab, py, grow)
+		var x0 := maxi(0, floori(span.x / cell))
+		var x1 := mini(cols - 1, floori(span.y / cell))
 		for cx in range(x0, x1 + 1):
 			var px := (cx + 0.5) * cell
 			var t := 0.0
@@ -93,6 +97,21 @@ func _block_capsule(a: Vector2, b: Vector2, grow: float) -> void:
 			var dy := py - (a.y + ab.y * t)
 			if dx * dx + dy * dy < grow2:
 				free[cy * cols + cx] = 0
+
+
+# The x range (as x..y) holding every point of row `py` within `grow` of the segment
+# a + ab * t: only the part of the segment within `grow` of the row can be that close.
+static func _row_span(a: Vector2, ab: Vector2, py: float, grow: float) -> Vector2:
+	var t0 := 0.0
+	var t1 := 1.0
+	if absf(ab.y) > 1e-9:
+		var first := (py - grow - a.y) / ab.y
+		var second := (py + grow - a.y) / ab.y
+		t0 = clampf(minf(first, second), 0.0, 1.0)
+		t1 = clampf(maxf(first, second), 0.0, 1.0)
+	var x_at_t0 := a.x + ab.x * t0
+	var x_at_t1 := a.x + ab.x * t1
+	return Vector2(minf(x_at_t0, x_at_t1) - grow, maxf(x_at_t0, x_at_t1) + grow)
 
 
 func _label_regions() -> void:

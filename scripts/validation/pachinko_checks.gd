@@ -1,8 +1,9 @@
 extends RefCounted
 ## BoardValidator's pachinko checks: ring, rail, gutter, cup and pockets; the pins
-## themselves are checked by pin_checks.gd.
+## themselves are checked by pin_checks.gd, the windmills by windmill_checks.gd.
 
 const PinChecks := preload("res://scripts/validation/pin_checks.gd")
+const WindmillChecks := preload("res://scripts/validation/windmill_checks.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Extra width the launch channel needs beyond the ball and the guide wall, in pixels.
@@ -17,6 +18,7 @@ static func check(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 	_check_pockets(level, issues)
 	PinChecks.check_pin_pairs(level, issues)
 	BonusChecks.check(level, issues)
+	WindmillChecks.check(level, issues)
 
 
 # Ring, pin radius, array lengths and pocket specs: what every later check relies on.
@@ -252,8 +254,19 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 			"no_pockets"
 		)
 	var clear_ring := level.ring_radius - level.ball_radius
+	var leaving := _rims_leaving_field(level)
 	for k in level.pockets.size():
 		var spec: PocketSpec = level.pockets[k]
+		if leaving.has(k):
+			var at: Vector2 = leaving[k][0]
+			BoardIssue.add_to(
+				issues,
+				ERROR,
+				"Pocket %d's rim is %s." % [ItemIds.of(level, "pockets", k), leaving[k][1]],
+				at,
+				"pocket_outside_field"
+			)
+			continue
 		if specials[k] == 0:
 			BoardIssue.add_to(
 				issues,
@@ -295,12 +308,30 @@ static func _check_pockets(level: BoardLevel, issues: Array[BoardIssue]) -> void
 					issues,
 					WARNING,
 					(
-						"Pin %d blocks the mouth of pocket %d; no ball can enter."
-						% [ItemIds.of(level, "pins", blocker), ItemIds.of(level, "pockets", k)]
+						"%s blocks the mouth of pocket %d; no ball can enter."
+						% [_pin_name(level, blocker), ItemIds.of(level, "pockets", k)]
 					),
 					level.pins[blocker],
 					"pocket_unreachable"
 				)
+
+
+# Pocket index -> [where, what] for each pocket with a rim pin off the field (the first one).
+static func _rims_leaving_field(level: BoardLevel) -> Dictionary:
+	var leaving := {}
+	for i in level.pins.size():
+		var owner := level.pin_pocket[i]
+		if owner < 0 or leaving.has(owner) or not level.pins[i].is_finite():
+			continue
+		var where := PinChecks.where_outside(level, level.pins[i])
+		if not where.is_empty():
+			leaving[owner] = [level.pins[i], where]
+	return leaving
+
+
+static func _pin_name(level: BoardLevel, i: int) -> String:
+	var label := ItemIds.pin_label(level, i)
+	return label.left(1).to_upper() + label.substr(1)
 
 
 # A pin (not of pocket k) inside pocket k's mouth opening or cup, else -1.

@@ -25,21 +25,20 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				"Pin %d has a position that is not a number." % ItemIds.of(level, "pins", i),
+				"%s has a position that is not a number." % _pin(level, i),
 				c,
 				"not_finite"
 			)
 			continue
 		_check_pin_owner(level, i, issues)
 		var d := p.distance_to(c)
+		if ItemIds.is_rim_pin(level, i) and not where_outside(level, p).is_empty():
+			continue  # one error for the whole pocket (PachinkoChecks), not one per rim pin
 		if d > inside:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				(
-					"Pin %d at (%.0f, %.0f) is outside the ring."
-					% [ItemIds.of(level, "pins", i), p.x, p.y]
-				),
+				"%s at (%.0f, %.0f) is outside the ring." % [_pin(level, i), p.x, p.y],
 				p,
 				"pin_outside_ring"
 			)
@@ -49,10 +48,7 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			BoardIssue.add_to(
 				issues,
 				ERROR,
-				(
-					"Pin %d at (%.0f, %.0f) sits in the launch rail."
-					% [ItemIds.of(level, "pins", i), p.x, p.y]
-				),
+				"%s at (%.0f, %.0f) sits in the launch rail." % [_pin(level, i), p.x, p.y],
 				p,
 				"pin_in_rail"
 			)
@@ -63,6 +59,21 @@ static func check_pins(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			_check_pin_gaps(level, i, edge_gap, in_rail_arc, issues)
 
 
+## Where a pin at `p` leaves the field: "outside the ring", "in the launch rail", or "".
+static func where_outside(level: BoardLevel, p: Vector2) -> String:
+	var c := level.ring_center
+	var d := p.distance_to(c)
+	if d > level.ring_radius - level.pin_radius:
+		return "outside the ring"
+	var guide := LaunchRail.guide_radius(level)
+	var guide_clear := guide - LaunchRail.GUIDE_WALL_RADIUS - level.pin_radius
+	var low := minf(level.rail_start_deg, level.rail_end_deg)
+	var high := maxf(level.rail_start_deg, level.rail_end_deg)
+	if d > guide_clear and angle_in(rad_to_deg((p - c).angle()), low, high):
+		return "in the launch rail"
+	return ""
+
+
 # Pin i's pocket must exist, and a special pin must belong to one.
 static func _check_pin_owner(level: BoardLevel, i: int, issues: Array[BoardIssue]) -> void:
 	var owner := level.pin_pocket[i]
@@ -70,10 +81,7 @@ static func _check_pin_owner(level: BoardLevel, i: int, issues: Array[BoardIssue
 		BoardIssue.add_to(
 			issues,
 			ERROR,
-			(
-				"Pin %d belongs to pocket %d, which does not exist."
-				% [ItemIds.of(level, "pins", i), owner]
-			),
+			"%s belongs to pocket %d, which does not exist." % [_pin(level, i), owner + 1],
 			level.pins[i],
 			"bad_pin_pocket"
 		)
@@ -81,7 +89,7 @@ static func _check_pin_owner(level: BoardLevel, i: int, issues: Array[BoardIssue
 		BoardIssue.add_to(
 			issues,
 			ERROR,
-			"Pin %d is a special pin but belongs to no pocket." % ItemIds.of(level, "pins", i),
+			"%s is a special pin but belongs to no pocket." % _pin(level, i),
 			level.pins[i],
 			"special_without_pocket"
 		)
@@ -102,8 +110,8 @@ static func _check_pin_gaps(
 				issues,
 				WARNING,
 				(
-					"Pin %d leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
-					% [ItemIds.of(level, "pins", i), maxf(deflector_gap, 0.0), diameter]
+					"%s leaves a %.1f px gap to the rail's deflector; a ball (%.0f px) would stick there."
+					% [_pin(level, i), maxf(deflector_gap, 0.0), diameter]
 				),
 				p,
 				"narrow_gap_rail"
@@ -117,8 +125,8 @@ static func _check_pin_gaps(
 			issues,
 			WARNING,
 			(
-				"Pin %d leaves a %.1f px gap to %s; a ball (%.0f px) would stick there."
-				% [ItemIds.of(level, "pins", i), maxf(edge_gap, 0.0), what, diameter]
+				"%s leaves a %.1f px gap to %s; a ball (%.0f px) would stick there."
+				% [_pin(level, i), maxf(edge_gap, 0.0), what, diameter]
 			),
 			p,
 			code
@@ -129,16 +137,8 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 	var pins := level.pins
 	var touch := 2.0 * level.pin_radius
 	var reach := touch + 2.0 * level.ball_radius
-	var cell := maxf(reach, 1.0)
-	var grid := {}
-	for i in pins.size():
-		if not pins[i].is_finite():
-			continue
-		var key := Vector2i(floori(pins[i].x / cell), floori(pins[i].y / cell))
-		var bucket: PackedInt32Array = grid.get(key, PackedInt32Array())
-		bucket.append(i)
-		grid[key] = bucket
-	if _crowded(level, grid, cell, issues):
+	var grid := PointGrid.new(pins, maxf(reach, 1.0))
+	if _crowded(level, grid, issues):
 		return
 	var pair_issues_before := issues.size()
 	var touch2 := touch * touch - 1e-6
@@ -156,60 +156,44 @@ static func check_pin_pairs(level: BoardLevel, issues: Array[BoardIssue]) -> voi
 				"narrow_gap"
 			)
 			return
-		var base := Vector2i(floori(p.x / cell), floori(p.y / cell))
-		for dy in range(-1, 2):
-			for dx in range(-1, 2):
-				var bucket: PackedInt32Array = grid.get(base + Vector2i(dx, dy), PackedInt32Array())
-				for j in bucket:
-					if j <= i:
-						continue
-					var d2 := p.distance_squared_to(pins[j])
-					if d2 >= reach2:
-						continue
-					var mid := (p + pins[j]) * 0.5
-					if d2 < touch2:
-						BoardIssue.add_covering(
-							issues,
-							WARNING,
-							(
-								"Pins %d and %d overlap."
-								% [ItemIds.of(level, "pins", i), ItemIds.of(level, "pins", j)]
-							),
-							mid,
-							"pin_overlap",
-							BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
-						)
-					elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
-						# Rim pins of one pocket are meant to be closer than a ball.
-						var gap := sqrt(d2) - touch
-						(
-							BoardIssue
-							. add_covering(
-								issues,
-								WARNING,
-								(
-									"Pins %d and %d leave a %.1f px gap; a ball (%.0f px) would stick in it."
-									% [
-										ItemIds.of(level, "pins", i),
-										ItemIds.of(level, "pins", j),
-										gap,
-										reach - touch
-									]
-								),
-								mid,
-								"narrow_gap",
-								BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
-							)
-						)
+		for j in grid.near(p):
+			if j <= i:
+				continue
+			var d2 := p.distance_squared_to(pins[j])
+			if d2 >= reach2:
+				continue
+			var mid := (p + pins[j]) * 0.5
+			if d2 < touch2:
+				BoardIssue.add_covering(
+					issues,
+					WARNING,
+					"%s overlap." % _pins(level, i, j),
+					mid,
+					"pin_overlap",
+					BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
+				)
+			elif level.pin_pocket[i] < 0 or level.pin_pocket[i] != level.pin_pocket[j]:
+				# Rim pins of one pocket are meant to be closer than a ball.
+				var gap := sqrt(d2) - touch
+				BoardIssue.add_covering(
+					issues,
+					WARNING,
+					(
+						"%s leave a %.1f px gap; a ball (%.0f px) would stick in it."
+						% [_pins(level, i, j), gap, reach - touch]
+					),
+					mid,
+					"narrow_gap",
+					BoardIssue.around(p, level.pin_radius, pins[j], level.pin_radius)
+				)
 
 
 # A spot holding far more pins than fit there without overlapping is a broken board, and
 # checking its pins pair by pair would take minutes: refuse it with one error instead.
-static func _crowded(
-	level: BoardLevel, grid: Dictionary, cell: float, issues: Array[BoardIssue]
-) -> bool:
-	for key: Vector2i in grid:
-		var bucket: PackedInt32Array = grid[key]
+static func _crowded(level: BoardLevel, grid: PointGrid, issues: Array[BoardIssue]) -> bool:
+	var cell := grid.cell
+	for key: Vector2i in grid.buckets:
+		var bucket: PackedInt32Array = grid.buckets[key]
 		if bucket.size() > CROWDED_CELL_PINS:
 			var at := (Vector2(key) + Vector2(0.5, 0.5)) * cell
 			(
@@ -246,3 +230,16 @@ static func arcs_overlap(a0: float, a1: float, b0: float, b1: float) -> bool:
 	return (
 		angle_in(a0, b0, b1) or angle_in(a1, b0, b1) or angle_in(b0, a0, a1) or angle_in(b1, a0, a1)
 	)
+
+
+# "Pin 17", or "A pin of pocket 2's rim" (rim pins have no id of their own).
+static func _pin(level: BoardLevel, i: int) -> String:
+	var label := ItemIds.pin_label(level, i)
+	return label.left(1).to_upper() + label.substr(1)
+
+
+# "Pins 3 and 4", or "Pin 3 and a pin of pocket 2's rim".
+static func _pins(level: BoardLevel, i: int, j: int) -> String:
+	if not ItemIds.is_rim_pin(level, i) and not ItemIds.is_rim_pin(level, j):
+		return "Pins %d and %d" % [ItemIds.of(level, "pins", i), ItemIds.of(level, "pins", j)]
+	return "%s and %s" % [_pin(level, i), ItemIds.pin_label(level, j)]

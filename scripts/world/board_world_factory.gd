@@ -5,7 +5,9 @@ extends RefCounted
 ## Pachinko: ring, gutter, pins (with pocket ids and special flags), the bonus pockets' pins
 ## and then their lids and wings (the first walls, see BonusGeometry), the launch rail's
 ## guide arc, its stopper and the deflector past its end as capsules (in that order), the
-## reels' frame on a board with a start pocket, and the rail's return zone as zone 0.
+## reels' frame on a board with a start pocket, and the rail's return zone as zone 0, then
+## the windmills (world windmill i = level windmill i; a null entry, refused by the
+## validator, is skipped).
 ## Maze: the level's walls (same indices as in the level), then four invisible edge walls
 ## that keep balls on the board, the goal (goal 0) and, in hard mode only, the black holes.
 
@@ -32,7 +34,9 @@ static func tuning_for(level: BoardLevel) -> PhysicsTuning:
 
 
 static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
-	world.set_ring(level.ring_center, level.ring_radius)
+	# The ring shares the pins' material: the chapter resolves a ring hit as a pin hit.
+	var least_speed_x := maxf(world.tuning.min_horizontal_speed, 0.0)
+	world.set_ring(level.ring_center, level.ring_radius, least_speed_x)
 	var slide_time := maxf(world.tuning.drain_slide_time, 0.0)
 	var bounces := maxi(level.gutter_bounces, 1)
 	# The gutter: the drain arc of the ring.
@@ -60,6 +64,28 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 		world.add_wall(frame[k], frame[k + 1], BonusGeometry.REEL_FRAME_RADIUS)
 	# Zone 0: a ball that rolls back down the rail lands here and returns to the cup.
 	world.add_zone(LaunchRail.return_zone_center(level), LaunchRail.return_zone_radius(level))
+	# The windmills: world windmill i is the level's windmill i; their blades share the
+	# pins' material, so no ball balances in the V of two blades.
+	for spec in level.windmills:
+		if spec != null:
+			add_windmill(world, spec, min_speed_x)
+
+
+## Adds `spec` to `world` as a windmill (degrees in the board, radians in the world), its
+## blades keeping a ball's horizontal speed at `min_speed_x` or more.
+static func add_windmill(world: BallWorld, spec: WindmillSpec, min_speed_x: float) -> int:
+	var speed := 0.0 if spec.free_spin else deg_to_rad(spec.speed)
+	var friction := deg_to_rad(spec.friction) if spec.free_spin else 0.0
+	return world.add_windmill(
+		spec.position,
+		spec.blades,
+		spec.length,
+		WindmillSpec.BLADE_RADIUS,
+		speed,
+		spec.free_spin,
+		friction,
+		min_speed_x
+	)
 
 
 static func _build_maze(world: BallWorld, level: BoardLevel, hard_mode: bool) -> void:

@@ -12,13 +12,14 @@ const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
+const BoardEditorPlugin := preload("res://addons/board_editor/plugin.gd")
 
-var _plugin: EditorPlugin
+var _plugin: BoardEditorPlugin
 var _problems := PackedStringArray()
 
 
 func _init(plugin: EditorPlugin) -> void:
-	_plugin = plugin
+	_plugin = plugin as BoardEditorPlugin
 
 
 func _ready() -> void:
@@ -44,7 +45,7 @@ func _run() -> void:
 		# A node without a board: the dock's "New maze board" button.
 		_plugin.call("_new_board", BoardLevel.Kind.MAZE)
 		await _frames(5)
-	var session: Session = _plugin.call("get_session")
+	var session: Session = _plugin.get_session()
 	if session == null:
 		_finish(["the plugin did not take the BoardNode."])
 		return
@@ -86,7 +87,7 @@ func _run() -> void:
 		await _check_play_test(level)
 	if not fresh:
 		await _check_problems_survive_reselect(root as BoardNode)
-		session = _plugin.call("get_session")
+		session = _plugin.get_session()
 		_check_input_stays_in_the_tool(session)
 		await _check_drag_everything(session, history)
 		_check_node_outside_the_tree(root as BoardNode)
@@ -120,7 +121,7 @@ func _check_play_test(level: BoardLevel) -> void:
 
 # A select-tool drag of the thing just added: previewed live, one step in the scene history.
 func _check_drag(session: Session, history: UndoRedo) -> void:
-	var input: RefCounted = _plugin.call("get_board_input")
+	var input := _plugin.get_board_input()
 	var item := session.level.pins.size() - 1 if session.level.is_pachinko() else -1
 	var from := session.level.pins[item] if item >= 0 else session.level.size * 0.25
 	if session.level.is_maze():
@@ -139,7 +140,7 @@ func _check_drag(session: Session, history: UndoRedo) -> void:
 			button.pressed = step[0]
 			event = button
 		(event as InputEventMouse).position = step[1]
-		input.call("handle", event, Transform2D.IDENTITY)
+		input.handle(event, Transform2D.IDENTITY)
 	var moved := _position(session.level)
 	_expect(moved != start, "dragging did not move the item")
 	_expect(history.get_current_action_name().begins_with("Move"), "the drag is not one step")
@@ -152,7 +153,7 @@ func _check_drag(session: Session, history: UndoRedo) -> void:
 # Select the board, select nothing, select it again: the dock, the markers and the node's
 # warnings show the same problems each time (they once came back as "No problems found").
 func _check_problems_survive_reselect(root: BoardNode) -> void:
-	var session: Session = _plugin.call("get_session")
+	var session: Session = _plugin.get_session()
 	if BoardValidator.validate(session.level).is_empty():
 		# A pin (or start) on top of another: a warning to keep.
 		var data := Items.empty_set()
@@ -162,7 +163,7 @@ func _check_problems_survive_reselect(root: BoardNode) -> void:
 		data["starts" if session.level.is_maze() else "pins"] = PackedVector2Array([twin])
 		session.commit(AddItemsAction.new(session.level, data, "Self-check overlap"))
 		await _frames(2)
-	var before: int = (_plugin.call("get_issues") as Array).size()
+	var before: int = _plugin.get_issues().size()
 	_expect(before > 0, "the board shows no problems to keep")
 	var warnings := root._get_configuration_warnings().size()
 	EditorInterface.get_selection().clear()
@@ -171,7 +172,7 @@ func _check_problems_survive_reselect(root: BoardNode) -> void:
 	EditorInterface.get_selection().add_node(root)
 	EditorInterface.edit_node(root)
 	await _frames(5)
-	var after: int = (_plugin.call("get_issues") as Array).size()
+	var after: int = _plugin.get_issues().size()
 	print("board editor self-check: %d problems before, %d after selecting again" % [before, after])
 	_expect(
 		after == before, "selecting the board again lost its problems (%d -> %d)" % [before, after]
@@ -206,7 +207,7 @@ func _check_input_stays_in_the_tool(session: Session) -> void:
 		events.append_array([press, drag, release])
 	var position := (_plugin.get("_node") as Node2D).position
 	for event in events:
-		var used: bool = _plugin.call("_forward_canvas_gui_input", event)
+		var used: bool = _plugin._forward_canvas_gui_input(event)
 		var drag_only := (
 			event is InputEventMouseMotion and (event as InputEventMouseMotion).button_mask == 0
 		)
@@ -245,7 +246,7 @@ func _check_drag_everything(session: Session, history: UndoRedo) -> void:
 			event = motion
 		var offset := Vector2(2, 1) * float(mini(i, steps))
 		(event as InputEventMouse).position = _screen_point(grab + offset)
-		_plugin.call("_forward_canvas_gui_input", event)
+		_plugin._forward_canvas_gui_input(event)
 		await _frames(1)
 	print(
 		(
@@ -267,14 +268,14 @@ func _check_drag_everything(session: Session, history: UndoRedo) -> void:
 func _check_node_outside_the_tree(root: BoardNode) -> void:
 	var loose := BoardNode.new()
 	loose.level = root.level
-	_plugin.call("_edit", loose)
+	_plugin._edit(loose)
 	var overlay := Control.new()
-	_plugin.call("_forward_canvas_draw_over_viewport", overlay)
+	_plugin._forward_canvas_draw_over_viewport(overlay)
 	var key := InputEventKey.new()
 	key.keycode = KEY_P
 	key.pressed = true
-	_plugin.call("_forward_canvas_gui_input", key)
-	_plugin.call("_edit", root)
+	_plugin._forward_canvas_gui_input(key)
+	_plugin._edit(root)
 	overlay.free()
 	loose.free()
 

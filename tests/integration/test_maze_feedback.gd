@@ -4,6 +4,8 @@ extends GutTest
 ## ball that falls into a hole instead of vanishing.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
+const MazeGame := preload("res://scenes/maze/maze_game.gd")
+const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const MazeBallSounds := preload("res://scenes/maze/maze_ball_sounds.gd")
 const MazeHaptics := preload("res://scenes/maze/maze_haptics.gd")
 const Recipes := preload("res://scripts/audio/sound_recipes.gd")
@@ -76,7 +78,7 @@ func test_knocks_buzz_by_impact_and_the_setting_turns_it_off() -> void:
 
 func test_the_vibration_setting_reaches_the_game_and_is_saved() -> void:
 	App.settings.set_value("vibration", false)
-	var game: Control = GAME.instantiate()
+	var game: MazeGame = GAME.instantiate()
 	add_child_autofree(game)
 	var haptics: MazeHaptics = game.get("haptics")
 	assert_false(haptics.enabled, "off in the settings: off in the game")
@@ -91,16 +93,16 @@ func test_the_vibration_setting_reaches_the_game_and_is_saved() -> void:
 
 
 func test_a_ball_in_a_hole_falls_with_a_drop_sound_and_a_buzz() -> void:
-	var game: Control = GAME.instantiate()
+	var game: MazeGame = GAME.instantiate()
 	add_child_autofree(game)
 	var haptics: MazeHaptics = game.get("haptics")
 	haptics.output = _record
 	_buzzes.clear()
 	var rules: MazeRules = game.get("rules")
 	rules.set_hard_mode(true)
-	game.call("_start")
-	game.call("_process", 0.0)
-	var balls: Node3D = (game.call("stage") as Node3D).call("balls")
+	game._start()
+	game._process(0.0)
+	var balls := game.stage().balls()
 	var id := rules.world.get_ids()[0]
 	rules.world.set_ball_position(id, rules.level.holes[1] + Vector2(-12.0, 0.0))
 	rules.world.set_ball_velocity(id, Vector2(60.0, 0.0))
@@ -108,20 +110,20 @@ func test_a_ball_in_a_hole_falls_with_a_drop_sound_and_a_buzz() -> void:
 		rules.step()
 	assert_eq(rules.state, MazeRules.State.LOST)
 	assert_eq(_buzzes.size(), 1, "the drop buzzed")
-	game.call("_process", 0.1)
-	assert_eq(balls.call("falling_count"), 1, "the lost ball is falling, not gone")
-	assert_eq(balls.call("shown_count"), rules.ball_total())
-	var before: float = balls.call("fall_progress")
+	game._process(0.1)
+	assert_eq(balls.falling_count(), 1, "the lost ball is falling, not gone")
+	assert_eq(balls.shown_count(), rules.ball_total())
+	var before: float = balls.fall_progress()
 	for i in 20:
-		game.call("_process", 0.05)
-	assert_gt(balls.call("fall_progress"), before)
-	assert_eq(balls.call("fall_progress"), 1.0, "all the way down")
+		game._process(0.05)
+	assert_gt(balls.fall_progress(), before)
+	assert_eq(balls.fall_progress(), 1.0, "all the way down")
 	var sounds: SoundBank = null
 	for child in game.get_children():
 		if child is SoundBank:
 			sounds = child
 	assert_gt(sounds.played_count(), 1, "the drop and the lost cue played")
 	rules.reset()
-	game.call("_process", 0.0)
-	assert_eq(balls.call("falling_count"), 0, "a reset clears the fallen ball")
-	assert_eq(balls.call("shown_count"), rules.ball_total())
+	game._process(0.0)
+	assert_eq(balls.falling_count(), 0, "a reset clears the fallen ball")
+	assert_eq(balls.shown_count(), rules.ball_total())

@@ -5,10 +5,13 @@ extends GutTest
 ## and a win shows the seed's message and saves the best time.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
+const MazeGame := preload("res://scenes/maze/maze_game.gd")
+const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const TEST_SETTINGS := "user://test_maze_settings.cfg"
 const TEST_SAVE := "user://test_maze_save.cfg"
+const SaveData := preload("res://scripts/app/save_data.gd")
 
-var _game: Control
+var _game: MazeGame
 
 
 func before_all() -> void:
@@ -41,17 +44,17 @@ func _rules() -> MazeRules:
 
 
 func _note() -> String:
-	return str(_game.get_node("%Note").call("text"))
+	return str(_game.get_node("%Note").text())
 
 
 func _press(action: String) -> void:
 	var event := InputEventAction.new()
 	event.action = action
 	event.pressed = true
-	_game.call("_unhandled_input", event)
+	_game._unhandled_input(event)
 
 
-func _stage() -> Node3D:
+func _stage() -> MazeStage:
 	return _game.get_node("Stage")
 
 
@@ -59,13 +62,14 @@ func test_the_board_is_built_in_3d_from_the_level() -> void:
 	var rules := _rules()
 	assert_not_null(rules, "the classic board loaded")
 	var stage := _stage()
-	var camera: Camera3D = stage.call("camera")
-	assert_eq(camera.projection, Camera3D.PROJECTION_PERSPECTIVE)
-	var board: Node3D = stage.call("board")
-	var walls: MeshInstance3D = board.call("part", "walls")
+	var camera: Camera3D = stage.camera()
+	# a perspective view, its frustum shifted to seat the board in its region
+	assert_eq(camera.projection, Camera3D.PROJECTION_FRUSTUM)
+	var board := stage.board()
+	var walls: MeshInstance3D = board.part("walls")
 	assert_not_null(walls.mesh, "the walls are a mesh")
 	var wall_box := walls.mesh.get_aabb()
-	var height: float = board.call("wall_height_px")
+	var height: float = board.wall_height_px()
 	assert_almost_eq(wall_box.end.z, height * 0.01, 0.0001, "walls stand up from the floor")
 	assert_almost_eq(wall_box.position.z, 0.0, 0.0001, "and start on it")
 	assert_gt(height, rules.level.ball_radius * 2.0, "higher than a ball")
@@ -77,24 +81,22 @@ func test_the_board_is_built_in_3d_from_the_level() -> void:
 	assert_almost_eq(
 		wall_box.position.x, (x_min - half_wall - rules.level.size.x * 0.5) * 0.01, 0.002
 	)
-	var frame: MeshInstance3D = board.call("part", "frame")
+	var frame: MeshInstance3D = board.part("frame")
 	assert_gt(frame.mesh.get_aabb().end.z, wall_box.end.z, "the frame stands above the walls")
-	var floor_part: MeshInstance3D = board.call("part", "floor")
+	var floor_part: MeshInstance3D = board.part("floor")
 	assert_true(floor_part.material_override is ShaderMaterial, "the floor paints goal and holes")
-	var holes: MeshInstance3D = board.call("part", "holes")
+	var holes: MeshInstance3D = board.part("holes")
 	assert_null(holes.mesh, "easy mode: no holes")
 
 
 func test_hard_mode_sinks_the_holes_into_the_floor() -> void:
 	_press("maze_hard_mode")
-	var board: Node3D = _stage().call("board")
-	var holes: MeshInstance3D = board.call("part", "holes")
+	var board := _stage().board()
+	var holes: MeshInstance3D = board.part("holes")
 	assert_not_null(holes.mesh, "hard mode: holes")
 	var box := holes.mesh.get_aabb()
 	assert_lt(box.position.z, -0.05, "the holes go down into the board")
-	var floor_mat: ShaderMaterial = (
-		(board.call("part", "floor") as MeshInstance3D).material_override
-	)
+	var floor_mat: ShaderMaterial = (board.part("floor") as MeshInstance3D).material_override
 	assert_eq(floor_mat.get_shader_parameter("hole_count"), _rules().level.holes.size())
 	_press("maze_easy_mode")
 	assert_null(holes.mesh, "back to easy: the holes close")
@@ -103,18 +105,18 @@ func test_hard_mode_sinks_the_holes_into_the_floor() -> void:
 
 func test_balls_are_lit_spheres_that_roll_with_their_motion() -> void:
 	var rules := _rules()
-	_game.call("_process", 0.016)
-	var balls: Node3D = _stage().call("balls")
-	assert_eq(balls.call("shown_count"), rules.ball_total(), "one sphere per ball")
+	_game._process(0.016)
+	var balls := _stage().balls()
+	assert_eq(balls.shown_count(), rules.ball_total(), "one sphere per ball")
 	var id := rules.world.get_ids()[0]
-	var node: MeshInstance3D = balls.call("node_for", id)
+	var node: MeshInstance3D = balls.node_for(id)
 	assert_true(node.mesh is SphereMesh)
 	var mat := node.material_override as StandardMaterial3D
 	assert_ne(mat.shading_mode, BaseMaterial3D.SHADING_MODE_UNSHADED, "lit by the sun")
 	var before := node.basis
-	_game.call("_start")
+	_game._start()
 	rules.world.set_ball_position(id, rules.world.get_ball_position(id) + Vector2(4.0, 0.0))
-	_game.call("_process", 0.0)
+	_game._process(0.0)
 	assert_false(node.basis.is_equal_approx(before), "moving turned the ball")
 	var expected := rules.world.get_ball_position(id)
 	var local := Vector3(expected.x - 175.0, 157.5 - expected.y, rules.level.ball_radius) * 0.01
@@ -123,12 +125,12 @@ func test_balls_are_lit_spheres_that_roll_with_their_motion() -> void:
 
 func test_the_sun_stays_put_and_its_shadows_follow_the_tilt() -> void:
 	var stage := _stage()
-	var sun: DirectionalLight3D = stage.call("sun")
-	var board: Node3D = stage.call("board")
-	var shadows: ShaderMaterial = board.call("shadow_material")
+	var sun: DirectionalLight3D = stage.sun()
+	var board := stage.board()
+	var shadows: ShaderMaterial = board.shadow_material()
 	assert_false(sun.shadow_enabled, "shadows are geometry on the floor, not a shadow map")
 	var before := sun.global_transform
-	stage.call("set_tilt", Vector2(12.0, -12.0))
+	stage.set_tilt(Vector2(12.0, -12.0))
 	assert_true(sun.global_transform.is_equal_approx(before), "the light is not on the board")
 	var travel: Vector3 = shadows.get_shader_parameter("sun_direction")
 	var shines: Vector3 = -sun.global_transform.basis.z
@@ -142,21 +144,21 @@ func test_the_sun_stays_put_and_its_shadows_follow_the_tilt() -> void:
 
 
 func test_walls_frame_and_balls_each_draw_a_shadow() -> void:
-	var board: Node3D = _stage().call("board")
-	var shadows: ShaderMaterial = board.call("shadow_material")
-	var walls: MeshInstance3D = board.call("part", "walls")
-	var wall_shadows: MeshInstance3D = board.call("part", "wall_shadows")
+	var board := _stage().board()
+	var shadows: ShaderMaterial = board.shadow_material()
+	var walls: MeshInstance3D = board.part("walls")
+	var wall_shadows: MeshInstance3D = board.part("wall_shadows")
 	assert_eq(wall_shadows.mesh, walls.mesh, "the walls' own mesh, flattened by the shader")
 	assert_eq(wall_shadows.material_override, shadows)
-	var lip: MeshInstance3D = board.call("part", "frame_shadow")
+	var lip: MeshInstance3D = board.part("frame_shadow")
 	assert_eq(lip.material_override, shadows)
-	var frame_top: float = (board.call("part", "frame") as MeshInstance3D).mesh.get_aabb().end.z
+	var frame_top: float = (board.part("frame") as MeshInstance3D).mesh.get_aabb().end.z
 	var lip_box := lip.mesh.get_aabb()
 	assert_almost_eq(lip_box.end.z, frame_top, 0.0001, "the frame's inside, up to its top")
 	assert_almost_eq(lip_box.position.z, 0.0, 0.0001, "from the floor: nothing below it")
-	_game.call("_process", 0.016)
-	var balls: Node3D = _stage().call("balls")
-	var ball: MeshInstance3D = balls.call("node_for", _rules().world.get_ids()[0])
+	_game._process(0.016)
+	var balls := _stage().balls()
+	var ball: MeshInstance3D = balls.node_for(_rules().world.get_ids()[0])
 	var ball_shadow := ball.get_node("Shadow") as MeshInstance3D
 	assert_not_null(ball_shadow, "a ball carries its shadow")
 	assert_eq(ball_shadow.material_override, shadows)
@@ -166,16 +168,15 @@ func test_walls_frame_and_balls_each_draw_a_shadow() -> void:
 # resolution without it; a graphics card keeps the project's settings, and the window gets
 # them back when the maze closes.
 func test_software_gl_draws_the_3d_small_without_msaa_and_gives_the_window_back() -> void:
-	var stage_script: GDScript = _stage().get_script()
 	var project_msaa: int = ProjectSettings.get_setting("rendering/anti_aliasing/quality/msaa_3d")
 	var view := SubViewport.new()
 	add_child_autofree(view)
-	stage_script.call("use_render_settings", view, "llvmpipe (LLVM 22.1.8, 256 bits)")
-	var scale: float = stage_script.get_script_constant_map()["SOFTWARE_GL_RENDER_SCALE"]
+	MazeStage.use_render_settings(view, "llvmpipe (LLVM 22.1.8, 256 bits)")
+	var scale: float = MazeStage.SOFTWARE_GL_RENDER_SCALE
 	assert_lt(scale, 1.0)
 	assert_eq(view.scaling_3d_scale, scale)
 	assert_eq(view.msaa_3d, Viewport.MSAA_DISABLED)
-	stage_script.call("use_render_settings", view, "NVIDIA GeForce RTX 3060/PCIe/SSE2")
+	MazeStage.use_render_settings(view, "NVIDIA GeForce RTX 3060/PCIe/SSE2")
 	assert_eq(view.scaling_3d_scale, 1.0)
 	assert_eq(view.msaa_3d, project_msaa)
 	var window := _game.get_viewport()
@@ -189,11 +190,11 @@ func test_software_gl_draws_the_3d_small_without_msaa_and_gives_the_window_back(
 # Bug 1: at full diagonal tilt a corner of the board dropped through the table's shadow.
 func test_no_tilt_puts_a_corner_of_the_board_through_the_table() -> void:
 	var stage := _stage()
-	var table: float = stage.call("table_height")
+	var table: float = stage.table_height()
 	for x in [-12.0, -6.0, 0.0, 6.0, 12.0]:
 		for y in [-12.0, -6.0, 0.0, 6.0, 12.0]:
-			stage.call("set_tilt", Vector2(x, y))
-			var lowest: float = stage.call("lowest_board_point")
+			stage.set_tilt(Vector2(x, y))
+			var lowest: float = stage.lowest_board_point()
 			assert_gt(lowest, table, "tilt (%s, %s): the board stays above the table" % [x, y])
 
 
@@ -201,12 +202,12 @@ func test_the_joystick_starts_the_game_and_tilts_the_board() -> void:
 	var joystick: Control = _game.get_node("%Joystick")
 	assert_true(joystick.get("glowing"), "the head glows until first used")
 	joystick.emit_signal("pressed")
-	_game.call("_start")
+	_game._start()
 	assert_true(_rules().is_playing())
 	joystick.emit_signal("moved", Vector2(40.0, -7.5))
-	_game.call("_process", 0.016)
+	_game._process(0.016)
 	assert_eq(_rules().tilt, Vector2(12.0, -6.0), "15 px max travel, 0.8° per px")
-	var shown: Vector2 = _game.get_node("Stage").call("shown_tilt")
+	var shown: Vector2 = _game.get_node("Stage").shown_tilt()
 	assert_almost_eq(shown.x, 12.0, 0.01, "the 3D board turns with the tilt")
 	assert_almost_eq(shown.y, -6.0, 0.01)
 
@@ -219,18 +220,18 @@ func test_the_head_is_clamped_to_fifteen_pixels() -> void:
 
 func test_keys_tilt_smoothly_not_at_once() -> void:
 	Input.action_press("tilt_right")
-	_game.call("_process", 1.0 / 60.0)
+	_game._process(1.0 / 60.0)
 	assert_true(_rules().is_playing(), "a tilt key starts the game too")
-	_game.call("_process", 1.0 / 60.0)
+	_game._process(1.0 / 60.0)
 	var early := _rules().tilt.x
 	assert_between(early, 0.1, 6.0, "eases toward the target")
 	for i in 60:
-		_game.call("_process", 1.0 / 60.0)
+		_game._process(1.0 / 60.0)
 	assert_almost_eq(_rules().tilt.x, 12.0, 0.2, "reaches full tilt within a second")
 
 
 func test_space_h_and_e_reset_and_switch_modes() -> void:
-	_game.call("_start")
+	_game._start()
 	_rules().set_tilt(Vector2(12.0, 12.0))
 	_rules().advance(0.5)
 	_press("maze_hard_mode")
@@ -238,7 +239,7 @@ func test_space_h_and_e_reset_and_switch_modes() -> void:
 	assert_eq(_rules().state, MazeRules.State.READY)
 	assert_string_contains(_note(), "avoid the black holes")
 	assert_eq(str(_game.get_node("%Mode").text), "HARD MODE")
-	_game.call("_start")
+	_game._start()
 	_rules().set_tilt(Vector2(0.0, 12.0))
 	_rules().advance(0.5)
 	_press("maze_reset")
@@ -261,18 +262,18 @@ func test_r_and_the_gamepad_back_button_restart_the_maze() -> void:
 	back.pressed = true
 	restarts.append(back)
 	for event in restarts:
-		_game.call("_start")
+		_game._start()
 		_rules().set_tilt(Vector2(12.0, 12.0))
 		_rules().advance(0.5)
 		assert_ne(_rules().ball_positions(), _rules().level.ball_starts, "the balls rolled")
-		_game.call("_unhandled_input", event)
+		_game._unhandled_input(event)
 		assert_eq(_rules().state, MazeRules.State.READY, "%s restarts" % event.as_text())
 		assert_eq(_rules().ball_positions(), _rules().level.ball_starts)
 
 
 func test_a_win_shows_the_message_and_saves_the_best_time() -> void:
 	var rules := _rules()
-	_game.call("_start")
+	_game._start()
 	rules.set_tilt(Vector2(3.0, 0.0))
 	rules.advance(0.25)
 	var ids := rules.world.get_ids()
@@ -286,10 +287,53 @@ func test_a_win_shows_the_message_and_saves_the_best_time() -> void:
 	assert_almost_eq(best, rules.elapsed, 0.001, "the time is saved as the best")
 
 
+func test_the_next_medal_time_shows_while_playing() -> void:
+	var rules := _rules()
+	_game.call("_start")
+	rules.advance(0.1)
+	_game.call("_process", 0.016)
+	var label: Label = _game.get_node("%NextMedal")
+	var gold: float = rules.level.medal_times_easy[0]
+	assert_eq(label.text, "Gold by %s" % MazeWinSummary.clock(gold))
+	rules.elapsed = gold + 0.5
+	_game.call("_process", 0.0)
+	assert_string_contains(label.text, "Silver by ")
+
+
+func test_a_win_shows_the_panel_with_medal_best_and_next_board() -> void:
+	var rules := _rules()
+	var kept := App.save_data
+	App.save_data = SaveData.new()  # in memory only: never written
+	App.record_maze_time(rules.level.board_id, false, 500.0)
+	_game.call("_start")
+	rules.advance(0.25)
+	var ids := rules.world.get_ids()
+	for i in ids.size():
+		rules.world.set_ball_position(ids[i], rules.level.goal_center + Vector2(i * 10 - 15, 0))
+	rules.step()
+	var panel: Control = _game.call("win_panel")
+	assert_true(panel.visible, "the win panel shows")
+	var texts: PackedStringArray = panel.call("texts")
+	assert_eq(texts[0], "Gold medal!", "a quick finish is gold")
+	assert_string_contains(texts[1], MazeWinSummary.clock(rules.elapsed))
+	assert_eq(texts[2], "Gold!")
+	assert_string_contains(texts[3], "New best: ")
+	var buttons: Array[Button] = panel.call("buttons")
+	assert_true(buttons[0].visible, "classic has a next board")
+	assert_eq(buttons[0].text, "Next board")
+	await wait_process_frames(2)
+	assert_true(buttons[0].has_focus(), "Next board has the keyboard and pad focus")
+	assert_eq(buttons[0].focus_neighbor_right, NodePath(), "a row: focus moves by position")
+	buttons[1].pressed.emit()
+	assert_eq(rules.state, MazeRules.State.READY, "Retry starts the board again")
+	assert_false(panel.visible, "and hides the panel")
+	App.save_data = kept
+
+
 func test_a_loss_names_the_reset_key() -> void:
 	var rules := _rules()
 	_press("maze_hard_mode")
-	_game.call("_start")
+	_game._start()
 	var id := rules.world.get_ids()[0]
 	rules.world.set_ball_position(id, rules.level.holes[1] + Vector2(-12.0, 0.0))
 	rules.world.set_ball_velocity(id, Vector2(60.0, 0.0))

@@ -6,6 +6,7 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 
@@ -33,49 +34,49 @@ func _pointer(pressed: bool, at: Vector2) -> InputEventMouseButton:
 
 # (1) Hold Space, pause, let go while paused, resume: nothing may charge or fire.
 func test_a_key_let_go_during_the_pause_does_not_keep_charging() -> void:
-	var game := (load(GAME) as PackedScene).instantiate() as Control
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
 	add_child_autofree(game)
 	var rules := game.get("rules") as PachinkoRules
 	rules.start_game()
-	game.call("_unhandled_input", _key(true))
-	game.call("_process", 0.2)
+	game._unhandled_input(_key(true))
+	game._process(0.2)
 	assert_almost_eq(rules.power, 16.0, 0.01, "charging before the pause")
 	var pause := game.get_node("PauseMenu")
-	pause.call("open")
+	pause.open()
 	# The release goes to a paused game: Godot does not deliver it to _unhandled_input.
-	pause.call("close")
-	game.call("_process", 2.0)
+	pause.close()
+	game._process(2.0)
 	assert_eq(rules.power, 0.0, "no key is held: the power stays at zero")
 	assert_false(rules.drawing)
 	assert_eq(rules.ledger.shots, 0, "nothing was fired")
-	game.call("_unhandled_input", _key(true))
+	game._unhandled_input(_key(true))
 	assert_true(rules.drawing, "the next press is taken")
-	game.call("_process", 0.25)
-	game.call("_unhandled_input", _key(false))
+	game._process(0.25)
+	game._unhandled_input(_key(false))
 	assert_eq(rules.ledger.shots, 1, "and its release fires at its own power")
 
 
 func test_a_drag_let_go_during_the_pause_does_not_follow_the_mouse_after() -> void:
-	var game := (load(GAME) as PackedScene).instantiate() as Control
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
 	add_child_autofree(game)
 	var rules := game.get("rules") as PachinkoRules
 	rules.start_game()
 	var launcher := game.get_node("Hud/Column/Launcher")
 	launcher.emit_signal("flipper_pressed", Vector2(1000, 600))
 	var pause := game.get_node("PauseMenu")
-	pause.call("open")
-	pause.call("close")
+	pause.open()
+	pause.close()
 	var motion := InputEventMouseMotion.new()
 	motion.position = Vector2(1000, 520)
-	game.call("_input", motion)
+	game._input(motion)
 	assert_eq(rules.power, 0.0, "the mouse moves with no button held: no drawback")
-	game.call("_input", _pointer(false, motion.position))
+	game._input(_pointer(false, motion.position))
 	assert_eq(rules.ledger.shots, 0, "a stray release fires nothing")
 	launcher.emit_signal("flipper_pressed", Vector2(1000, 600))
 	motion.position = Vector2(1000, 550)
-	game.call("_input", motion)
+	game._input(motion)
 	assert_almost_eq(rules.power, 50.0, 0.01, "a new drag works")
-	game.call("_input", _pointer(false, motion.position))
+	game._input(_pointer(false, motion.position))
 	assert_eq(rules.ledger.shots, 1)
 
 

@@ -5,6 +5,7 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const Autoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 
 
@@ -16,8 +17,8 @@ func _playing() -> PachinkoRules:
 	return rules
 
 
-func _game() -> Control:
-	var game := (load(GAME) as PackedScene).instantiate() as Control
+func _game() -> PachinkoGame:
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
 	add_child_autofree(game)
 	(game.get("rules") as PachinkoRules).start_game()
 	return game
@@ -68,19 +69,19 @@ func test_the_handle_key_streams_and_the_turn_keys_tune_it() -> void:
 	stronger.action = &"handle_stronger"
 	stronger.pressed = true
 	var before := rules.handle.power
-	game.call("_unhandled_input", stronger)
+	game._unhandled_input(stronger)
 	assert_eq(rules.handle.power, before + 2.0, "one press turns it a notch")
 	var shift := InputEventKey.new()
 	shift.physical_keycode = KEY_SHIFT
 	shift.pressed = true
 	assert_true(shift.is_action_pressed(&"launch_handle"), "Shift is the handle key")
-	game.call("_unhandled_input", shift)
+	game._unhandled_input(shift)
 	assert_true(rules.handle.held)
 	for i in 120:
 		rules.advance(1.0 / 60.0)
 	assert_gt(rules.ledger.shots, 2, "balls stream while it is held")
 	shift.pressed = false
-	game.call("_unhandled_input", shift)
+	game._unhandled_input(shift)
 	assert_false(rules.handle.held, "letting go of the key stops the stream")
 
 
@@ -90,15 +91,15 @@ func test_the_right_trigger_is_the_handle_and_its_depth_the_strength() -> void:
 	var trigger := InputEventJoypadMotion.new()
 	trigger.axis = JOY_AXIS_TRIGGER_RIGHT
 	trigger.axis_value = 1.0
-	game.call("_unhandled_input", trigger)
+	game._unhandled_input(trigger)
 	assert_true(rules.handle.held, "pulling the trigger holds the handle")
 	assert_eq(rules.handle.power, 100.0, "all the way: full strength")
 	trigger.axis_value = 0.625
-	game.call("_unhandled_input", trigger)
+	game._unhandled_input(trigger)
 	assert_almost_eq(rules.handle.power, 50.0, 0.01, "half way: half strength")
 	assert_false(rules.drawing, "the trigger no longer draws the flipper back")
 	trigger.axis_value = 0.0
-	game.call("_unhandled_input", trigger)
+	game._unhandled_input(trigger)
 	assert_false(rules.handle.held, "released: the stream stops")
 
 
@@ -111,12 +112,12 @@ func test_holding_the_dial_streams_and_a_drag_turns_it() -> void:
 	assert_true(rules.handle.held)
 	var motion := InputEventMouseMotion.new()
 	motion.position = Vector2(1200, 460)
-	game.call("_input", motion)
+	game._input(motion)
 	assert_almost_eq(rules.handle.power, 60.0, 0.01, "40 px up turns it 20 stronger")
 	var up := InputEventMouseButton.new()
 	up.button_index = MOUSE_BUTTON_LEFT
 	up.pressed = false
-	game.call("_input", up)
+	game._input(up)
 	assert_false(rules.handle.held)
 	launcher.emit_signal("handle_turned", -3.0)
 	assert_almost_eq(rules.handle.power, 54.0, 0.01, "the wheel turns it too")
@@ -127,18 +128,18 @@ func test_pausing_lets_go_of_the_handle() -> void:
 	var rules := game.get("rules") as PachinkoRules
 	game.get_node("Hud/Column/Launcher").emit_signal("handle_pressed", Vector2(1200, 500))
 	var pause := game.get_node("PauseMenu")
-	pause.call("open")
-	pause.call("close")
+	pause.open()
+	pause.close()
 	assert_false(rules.handle.held, "the release may never arrive: the pause lets go")
 
 
 func test_the_dial_is_a_target_and_the_lever_still_is() -> void:
 	var game := _game()
 	var launcher := game.get_node("Hud/Column/Launcher")
-	assert_true(launcher.call("is_on_handle", launcher.get("DIAL_CENTER")))
-	assert_false(launcher.call("is_on_handle", Vector2(5, 5)))
+	assert_true(launcher.is_on_handle(launcher.get("DIAL_CENTER")))
+	assert_false(launcher.is_on_handle(Vector2(5, 5)))
 	var grip: Vector2 = launcher.get("PIVOT") + Vector2(-float(launcher.get("LEVER_LENGTH")), 0)
-	assert_false(launcher.call("is_on_handle", grip), "the grip is not the dial")
+	assert_false(launcher.is_on_handle(grip), "the grip is not the dial")
 
 
 func test_the_autoplay_handle_mode_streams_and_repeats_for_a_seed() -> void:

@@ -3,11 +3,12 @@ extends GutTest
 ## balls pour into the cup, and balls are drawn larger than their physics with a dark rim.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
 
 
-func _game() -> Control:
-	var game := (load(GAME) as PackedScene).instantiate() as Control
+func _game() -> PachinkoGame:
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
 	add_child_autofree(game)
 	return game
 
@@ -20,13 +21,13 @@ func test_a_struck_pin_lights_up_and_fades() -> void:
 	assert_eq(lights.get_child_count(), 0, "no node per pin")
 	rules.world.pin_hit.emit(0, 7, 400.0)
 	rules.world.pin_hit.emit(0, 9, 40.0)
-	assert_eq(lights.call("glow_of", 7), 1.0, "a hard hit lights fully")
-	assert_almost_eq(float(lights.call("glow_of", 9)), 0.35, 0.001, "a tap still shows")
-	lights.call("_process", 0.2)
-	assert_lt(float(lights.call("glow_of", 7)), 1.0, "fading")
-	assert_gt(float(lights.call("glow_of", 7)), 0.0)
-	lights.call("_process", 1.0)
-	assert_eq(lights.call("glow_of", 7), 0.0, "out")
+	assert_eq(lights.glow_of(7), 1.0, "a hard hit lights fully")
+	assert_almost_eq(float(lights.glow_of(9)), 0.35, 0.001, "a tap still shows")
+	lights._process(0.2)
+	assert_lt(float(lights.glow_of(7)), 1.0, "fading")
+	assert_gt(float(lights.glow_of(7)), 0.0)
+	lights._process(1.0)
+	assert_eq(lights.glow_of(7), 0.0, "out")
 	assert_false(lights.is_processing(), "asleep when nothing is lit")
 
 
@@ -41,13 +42,13 @@ func test_the_ball_layer_sits_above_the_lights() -> void:
 func test_paid_balls_pour_into_the_cup() -> void:
 	var game := _game()
 	var cup := game.get_node("Hud/Column/Cup")
-	cup.call("pour", 4)
-	assert_eq(cup.call("pouring"), 4, "four balls on their way")
+	cup.pour(4)
+	assert_eq(cup.pouring(), 4, "four balls on their way")
 	for i in 60:
-		cup.call("_process", 1.0 / 60.0)
-	assert_eq(cup.call("pouring"), 0, "all landed within a second")
-	cup.call("pour", 500)
-	assert_eq(cup.call("pouring"), 14, "a big payout pours a capped stream")
+		cup._process(1.0 / 60.0)
+	assert_eq(cup.pouring(), 0, "all landed within a second")
+	cup.pour(500)
+	assert_eq(cup.pouring(), 14, "a big payout pours a capped stream")
 
 
 func test_balls_have_a_dark_rim() -> void:

@@ -3,10 +3,11 @@ extends GutTest
 ## starts it and a drag on the flipper fires a ball drawn by the one ball layer.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 
 
-func _game() -> Control:
-	var game := (load(GAME) as PackedScene).instantiate() as Control
+func _game() -> PachinkoGame:
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
 	add_child_autofree(game)
 	return game
 
@@ -16,7 +17,7 @@ func _click(game: Node, at: Vector2, pressed: bool) -> void:
 	event.button_index = MOUSE_BUTTON_LEFT
 	event.pressed = pressed
 	event.position = at
-	game.call("_unhandled_input", event)
+	game._unhandled_input(event)
 
 
 func test_the_scene_starts_with_the_instructions() -> void:
@@ -38,13 +39,13 @@ func test_a_click_starts_and_a_flipper_drag_fires() -> void:
 	launcher.emit_signal("flipper_pressed", Vector2(1000, 600))
 	var motion := InputEventMouseMotion.new()
 	motion.position = Vector2(1000, 540)
-	game.call("_input", motion)
+	game._input(motion)
 	assert_almost_eq(rules.power, 60.0, 0.01)
 	var release := InputEventMouseButton.new()
 	release.button_index = MOUSE_BUTTON_LEFT
 	release.pressed = false
 	release.position = Vector2(1000, 540)
-	game.call("_input", release)
+	game._input(release)
 	assert_eq(rules.ledger.shots, 1)
 	assert_eq(rules.world.ball_count(), 1)
 	await wait_process_frames(2)
@@ -60,7 +61,7 @@ func test_the_start_charge_and_handle_keys_each_start_the_game() -> void:
 		key.physical_keycode = _first_key(action)
 		key.pressed = true
 		assert_true(key.is_action_pressed(action), "a key is bound to %s" % action)
-		game.call("_unhandled_input", key)
+		game._unhandled_input(key)
 		assert_eq(rules.state, PachinkoRules.State.PLAYING, "%s starts the game" % action)
 		if action == &"launch_handle":
 			assert_true(rules.handle.held, "and the held handle key streams at once")
@@ -85,8 +86,8 @@ func test_the_grip_is_the_flipper_and_the_rest_is_not() -> void:
 	var game := _game()
 	var launcher := game.get_node("Hud/Column/Launcher")
 	var grip: Vector2 = launcher.get("PIVOT") + Vector2(-float(launcher.get("LEVER_LENGTH")), 0)
-	assert_true(launcher.call("is_on_flipper", grip))
-	assert_false(launcher.call("is_on_flipper", Vector2(5, 5)))
+	assert_true(launcher.is_on_flipper(grip))
+	assert_false(launcher.is_on_flipper(Vector2(5, 5)))
 
 
 func test_holding_the_charge_key_fires_on_release() -> void:
@@ -97,14 +98,14 @@ func test_holding_the_charge_key_fires_on_release() -> void:
 	key.physical_keycode = KEY_SPACE
 	key.pressed = true
 	assert_true(key.is_action_pressed(&"launch_charge"), "Space is bound to launch_charge")
-	game.call("_unhandled_input", key)
+	game._unhandled_input(key)
 	assert_true(rules.drawing)
-	game.call("_process", 0.5)
+	game._process(0.5)
 	assert_almost_eq(rules.power, PachinkoRules.CHARGE_PER_SECOND * 0.5, 0.01)
 	var up := InputEventKey.new()
 	up.physical_keycode = KEY_SPACE
 	up.pressed = false
-	game.call("_unhandled_input", up)
+	game._unhandled_input(up)
 	assert_eq(rules.ledger.shots, 1, "letting go fired the ball")
 	assert_eq(rules.power, 0.0)
 
@@ -116,11 +117,11 @@ func test_the_left_stick_pulled_down_draws_back_and_fires_when_let_go() -> void:
 	var stick := InputEventJoypadMotion.new()
 	stick.axis = JOY_AXIS_LEFT_Y
 	stick.axis_value = 1.0
-	game.call("_unhandled_input", stick)
+	game._unhandled_input(stick)
 	assert_true(rules.drawing, "pulling the stick down draws the flipper back")
 	assert_eq(rules.power, 100.0)
 	stick.axis_value = 0.0
-	game.call("_unhandled_input", stick)
+	game._unhandled_input(stick)
 	assert_eq(rules.ledger.shots, 1, "letting the stick go fired")
 
 

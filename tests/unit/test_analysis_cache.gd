@@ -97,3 +97,14 @@ func test_warnings_name_dead_pockets_a_sure_win_and_power_that_does_not_aim() ->
 	assert_string_contains(issues[2].message, "1.25")
 	assert_true(AnalysisWarnings.issues(level, _report([], 0.8, 0.6)).is_empty(), "a fair board")
 	assert_true(AnalysisWarnings.issues(level, {}).is_empty(), "not analysed: no warnings")
+
+
+func test_a_rename_or_a_new_file_name_keeps_the_cache_key_an_edit_does_not() -> void:
+	var level := _classic()
+	var key := AnalysisCache.key_for(AnalysisPlan.create(level, 1000, 1))
+	level.display_name = "Classic, renamed"
+	level.board_id = "pachinko_classic_copy"
+	level.description = "Another blurb."
+	assert_eq(AnalysisCache.key_for(AnalysisPlan.create(level, 1000, 1)), key, "same play")
+	level.pockets[0].payout += 1
+	assert_ne(AnalysisCache.key_for(AnalysisPlan.create(level, 1000, 1)), key, "a payout edit")

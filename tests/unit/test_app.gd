@@ -8,7 +8,7 @@ const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SETTINGS := "user://test_app_settings.cfg"
 const SAVE := "user://test_app_save.cfg"
 
-var _app: Node
+var _app: AppScript
 
 
 func before_each() -> void:
@@ -34,80 +34,80 @@ func _write(path: String, text: String) -> void:
 
 func test_damaged_settings_are_reported_once_and_replaced() -> void:
 	_write(SETTINGS, "this is not a settings file {{{")
-	_app.call("load_player_files", SETTINGS, SAVE)
-	var problems: PackedStringArray = _app.call("take_problems")
+	_app.load_player_files(SETTINGS, SAVE)
+	var problems: PackedStringArray = _app.take_problems()
 	assert_eq(problems.size(), 1)
 	assert_string_contains(problems[0], ProjectSettings.globalize_path(SETTINGS))
-	assert_eq((_app.call("take_problems") as PackedStringArray).size(), 0, "handed out once")
-	var again: Node = AppScript.new()
-	again.call("load_player_files", SETTINGS, SAVE)
-	assert_eq((again.call("take_problems") as PackedStringArray).size(), 0, "file was replaced")
+	assert_eq((_app.take_problems() as PackedStringArray).size(), 0, "handed out once")
+	var again := AppScript.new()
+	again.load_player_files(SETTINGS, SAVE)
+	assert_eq((again.take_problems() as PackedStringArray).size(), 0, "file was replaced")
 	again.free()
 
 
 func test_default_board_is_the_classic_one() -> void:
-	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/classic.board")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.board")
+	assert_eq(_app.current_board_path("maze"), "res://levels/maze/classic.board")
+	assert_eq(_app.current_board_path("pachinko"), "res://levels/pachinko/classic.board")
 
 
 func test_requested_board_is_used() -> void:
-	_app.call("request_board", "maze", "res://levels/maze/other.board")
-	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/other.board")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.board")
+	_app.request_board("maze", "res://levels/maze/other.board")
+	assert_eq(_app.current_board_path("maze"), "res://levels/maze/other.board")
+	assert_eq(_app.current_board_path("pachinko"), "res://levels/pachinko/classic.board")
 
 
 func test_playtest_request_wins_once_and_stays_for_restarts() -> void:
-	_app.call("request_board", "pachinko", "res://levels/pachinko/picked.board")
+	_app.request_board("pachinko", "res://levels/pachinko/picked.board")
 	assert_eq(PlaytestRequest.write("res://levels/pachinko/draft.board", "pachinko"), "")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.board")
+	assert_eq(_app.current_board_path("pachinko"), "res://levels/pachinko/draft.board")
 	assert_false(FileAccess.file_exists(PlaytestRequest.PATH), "request consumed")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/draft.board")
+	assert_eq(_app.current_board_path("pachinko"), "res://levels/pachinko/draft.board")
 
 
 func test_playtest_request_for_the_other_game_is_left_alone() -> void:
 	assert_eq(PlaytestRequest.write("res://levels/maze/draft.board", "maze"), "")
-	assert_eq(_app.call("current_board_path", "pachinko"), "res://levels/pachinko/classic.board")
-	assert_eq(_app.call("current_board_path", "maze"), "res://levels/maze/draft.board")
+	assert_eq(_app.current_board_path("pachinko"), "res://levels/pachinko/classic.board")
+	assert_eq(_app.current_board_path("maze"), "res://levels/maze/draft.board")
 
 
 func test_best_maze_time_keeps_the_fastest_and_persists() -> void:
-	_app.call("load_player_files", SETTINGS, SAVE)
-	assert_eq(_app.call("best_maze_time", "classic", false), -1.0)
-	assert_true(_app.call("record_maze_time", "classic", false, 42.5))
-	assert_false(_app.call("record_maze_time", "classic", false, 50.0))
-	assert_true(_app.call("record_maze_time", "classic", false, 30.25))
-	var again: Node = AppScript.new()
-	again.call("load_player_files", SETTINGS, SAVE)
-	assert_eq(again.call("best_maze_time", "classic", false), 30.25)
-	assert_eq(again.call("best_maze_time", "other", false), -1.0)
+	_app.load_player_files(SETTINGS, SAVE)
+	assert_eq(_app.best_maze_time("classic", false), -1.0)
+	assert_true(_app.record_maze_time("classic", false, 42.5))
+	assert_false(_app.record_maze_time("classic", false, 50.0))
+	assert_true(_app.record_maze_time("classic", false, 30.25))
+	var again := AppScript.new()
+	again.load_player_files(SETTINGS, SAVE)
+	assert_eq(again.best_maze_time("classic", false), 30.25)
+	assert_eq(again.best_maze_time("other", false), -1.0)
 	again.free()
 
 
 func test_best_pachinko_balls_keeps_the_most_and_persists() -> void:
-	_app.call("load_player_files", SETTINGS, SAVE)
-	assert_eq(_app.call("best_pachinko_balls", "classic"), -1)
-	assert_true(_app.call("record_pachinko_balls", "classic", 12))
-	assert_false(_app.call("record_pachinko_balls", "classic", 12))
-	assert_true(_app.call("record_pachinko_balls", "classic", 20))
-	var again: Node = AppScript.new()
-	again.call("load_player_files", SETTINGS, SAVE)
-	assert_eq(again.call("best_pachinko_balls", "classic"), 20)
+	_app.load_player_files(SETTINGS, SAVE)
+	assert_eq(_app.best_pachinko_balls("classic"), -1)
+	assert_true(_app.record_pachinko_balls("classic", 12))
+	assert_false(_app.record_pachinko_balls("classic", 12))
+	assert_true(_app.record_pachinko_balls("classic", 20))
+	var again := AppScript.new()
+	again.load_player_files(SETTINGS, SAVE)
+	assert_eq(again.best_pachinko_balls("classic"), 20)
 	again.free()
 
 
 func test_nonsense_results_are_refused() -> void:
-	_app.call("load_player_files", SETTINGS, SAVE)
-	assert_false(_app.call("record_maze_time", "classic", false, -3.0))
-	assert_false(_app.call("record_maze_time", "classic", false, NAN))
-	assert_false(_app.call("record_pachinko_balls", "", 5))
+	_app.load_player_files(SETTINGS, SAVE)
+	assert_false(_app.record_maze_time("classic", false, -3.0))
+	assert_false(_app.record_maze_time("classic", false, NAN))
+	assert_false(_app.record_pachinko_balls("", 5))
 	assert_push_error_count(3)
-	assert_eq(_app.call("best_maze_time", "classic", false), -1.0)
+	assert_eq(_app.best_maze_time("classic", false), -1.0)
 
 
 func test_damaged_save_file_is_reported_and_records_start_empty() -> void:
 	_write(SAVE, "[maze_best_seconds\nclassic=oops")
-	_app.call("load_player_files", SETTINGS, SAVE)
-	var problems: PackedStringArray = _app.call("take_problems")
+	_app.load_player_files(SETTINGS, SAVE)
+	var problems: PackedStringArray = _app.take_problems()
 	assert_eq(problems.size(), 1)
 	assert_string_contains(problems[0], ProjectSettings.globalize_path(SAVE))
-	assert_eq(_app.call("best_maze_time", "classic", false), -1.0)
+	assert_eq(_app.best_maze_time("classic", false), -1.0)

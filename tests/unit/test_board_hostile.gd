@@ -40,16 +40,17 @@ func test_the_reasons_are_the_real_problems() -> void:
 		"duplicate_key.board": "given twice",
 		"huge_count.board": "at most 5000",
 		"inf.board": "finite",
-		"nan.board": "NaN",
+		"nan.board": "NaN and infinity are not JSON numbers",
 		"newer_version.board": "newer than this game reads",
 		"nul_byte.board": "NUL",
 		"binary.board": "NUL",
-		"object_raw.board": "Object",
+		"object_raw.board": "Godot values such as Object(...) are not JSON",
 		"resource_path.board": "resource_path",
 		"restitution_5.board": "restitution",
 		"ring_huge.board": "ring_radius",
 		"sleep_negative.board": "sleep_time",
 		"unknown_field.board": "metadata/payload",
+		"system_file_text.board": "line 1 is not valid JSON",
 		"repeated_key_escaped.board": 'the key "format_version" is given twice',
 		"repeated_key_in_item.board": 'line 19: the key "x" is given twice',
 		"repeated_key_in_tuning.board": 'the key "restitution" is given twice',
@@ -58,6 +59,25 @@ func test_the_reasons_are_the_real_problems() -> void:
 	}
 	for file: String in expected:
 		assert_string_contains(reasons.get(file, "(missing)"), expected[file], file)
+	var system_file: String = reasons["system_file_text.board"]
+	assert_false(
+		system_file.contains("root"), "the refusal does not quote the file: " + system_file
+	)
+
+
+func test_oversized_mazes_are_refused_by_their_limit() -> void:
+	var expected := {
+		"crowded_walls.board": "42 walls cross one spot near (192, 18); at most 12 may",
+		"flood_boundary_copies.board": "this board's grid takes at most 10448 px",
+		"flood_diagonals.board": "The walls are 160727 px long together",
+	}
+	var lines := CheckCli.check_folder(ROOT, BoardLevel.Kind.MAZE)
+	assert_eq(lines.size(), expected.size(), "one line per maze of the corpus")
+	for line in lines:
+		var file := str(line["path"]).get_file()
+		assert_false(line["ok"], file + " is refused")
+		assert_string_contains(str(line["error"]), expected.get(file, "(not listed)"), file)
+		assert_lt(float(line["load_ms"]), MAX_MS, file + " loads fast")
 
 
 func test_shipped_boards_all_pass_the_check() -> void:

@@ -55,3 +55,32 @@ func test_not_busy_means_joined_even_when_the_results_were_taken_before_the_thre
 	assert_eq(taken, 2)
 	assert_false(loading.is_busy())
 	assert_eq(loading._threads.size(), 0, "is_busy() joined the ended threads")
+
+
+func _slow_load(path: String, kind: int, root: String) -> BoardLoadResult:
+	OS.delay_msec(200)
+	return _quick_load(path, kind, root)
+
+
+func test_quitting_waits_for_every_cancelled_thread() -> void:
+	var loading := BoardListLoading.new(_jobs(6), _slow_load)
+	OS.delay_msec(20)  # both workers are inside a slow file now
+	loading.cancel()
+	assert_false(loading._threads.is_empty(), "cancel alone does not wait for a busy thread")
+	BoardListLoading.wait_for_cancelled()
+	assert_true(loading._threads.is_empty(), "every thread was joined")
+	assert_false(loading.is_busy())
+	assert_eq(BoardListLoading._cancelled.size(), 0, "nothing is left to join at exit")
+
+
+func test_one_worker_keeps_the_jobs_in_order() -> void:
+	var loading := BoardListLoading.new(_jobs(6), _quick_load, 1)
+	var paths: Array[String] = []
+	while loading.is_busy():
+		for done in loading.take_finished():
+			paths.append(str(done["path"]))
+		OS.delay_msec(2)
+	var expected: Array[String] = []
+	for job in _jobs(6):
+		expected.append(str(job["path"]))
+	assert_eq(paths, expected)

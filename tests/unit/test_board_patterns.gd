@@ -106,3 +106,14 @@ func test_apply_and_remove_keep_pin_lists_in_step() -> void:
 	assert_eq(level.pins.size(), 1 + stamp_size)
 	for owner in level.pin_pocket:
 		assert_true(owner == -1 or owner == 0, "later pockets are renumbered")
+
+
+func test_point_grid_finds_every_near_point_and_skips_broken_ones() -> void:
+	var points := PackedVector2Array(
+		[Vector2(0, 0), Vector2(9, 0), Vector2(25, 0), Vector2(NAN, 0), Vector2(-9, -9)]
+	)
+	var grid := PointGrid.new(points, 10.0)
+	var near := Array(grid.near(Vector2(1, 1)))
+	near.sort()
+	assert_eq(near, [0, 1, 4], "the far point and the NaN one are not neighbours")
+	assert_eq(grid.buckets.size(), 3, "cells (0,0), (2,0), (-1,-1)")

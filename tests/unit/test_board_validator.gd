@@ -2,6 +2,8 @@ extends GutTest
 ## BoardValidator finds each problem (and only real ones: pocket rims are meant to be closed).
 
 const DIR := "res://tests/fixtures/boards/"
+const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const Writer := preload("res://scripts/loading/board_text_writer.gd")
 
 
 func test_fixture_boards_are_clean() -> void:
@@ -26,6 +28,20 @@ func test_common_fields() -> void:
 	assert_has(_codes(level), "bad_tuning")
 	level.tuning = null
 	assert_eq(_codes(level), ["no_tuning"], "no tuning is only a warning")
+
+
+func test_tuning_the_file_reader_would_refuse_is_an_error() -> void:
+	# fixed_hz 20 used to pass here (>= 10) while the reader refuses it (>= 30): a board the
+	# editor saved could not be opened again. Both now read BoardRanges.
+	var level := _pachinko()
+	level.tuning.fixed_hz = 20.0
+	assert_eq(_codes(level), ["bad_tuning"])
+	var reread := Reader.read(Writer.write(level))
+	assert_string_contains(str(reread.get("error", "")), "fixed_hz")
+	level.tuning.fixed_hz = BoardRanges.TUNING["fixed_hz"][0]
+	assert_eq(_codes(level), [], "the lowest rate both accept")
+	level.tuning.restitution = 1.5
+	assert_eq(_codes(level), ["bad_tuning"], "every field's range, not only fixed_hz")
 
 
 func test_overlapping_pins_and_narrow_gaps() -> void:

@@ -16,7 +16,7 @@ func test_maze_walls() -> void:
 	var walls := level.walls
 	walls.append(Vector2(1, 1))
 	level.walls = walls
-	assert_eq(_codes(level), ["odd_wall_points"])
+	assert_eq(_codes(level), ["odd_wall_points", "reachability_skipped"], "and says so")
 
 
 func test_maze_starts() -> void:
@@ -54,7 +54,7 @@ func test_gap_narrower_than_a_ball_blocks_the_way() -> void:
 	var level := _maze()
 	# Leave a 9 px gap (wall surfaces 9 px apart) where a 10 px ball cannot pass.
 	_add_wall(level, Vector2(89, 35), Vector2(105, 35))
-	assert_eq(_codes(level), ["start_cannot_reach_goal"])
+	assert_eq(_codes(level), ["maze_narrow_gap", "start_cannot_reach_goal"], "a trap, and closed")
 	level = _maze()
 	_add_wall(level, Vector2(95, 35), Vector2(105, 35))  # a 15 px gap: passable
 	assert_eq(_codes(level), [])

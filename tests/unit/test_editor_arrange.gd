@@ -55,8 +55,23 @@ func test_drawing_a_20_peg_curve_is_one_undo_step() -> void:
 	_mouse(input, Vector2(500, 200), 2)
 	assert_eq(session.level.pins.size(), 20, "twenty pins along the curve")
 	assert_eq(session.selection.size(), 20, "the new pins are selected")
+	assert_eq(session.history.names()[-1], "Add a 20-pin curve")
 	session.history.undo()
 	assert_eq(session.level.pins.size(), 0, "one undo takes the whole curve back")
+
+
+func test_a_mirrored_curve_is_named_by_every_pin_it_adds() -> void:
+	var session := _pachinko(PackedVector2Array())
+	var input := BoardInput.new(session)
+	session.set_tool(Session.Tool.CURVE)
+	session.set_mirror(true)
+	session.curve["count"] = 13
+	_mouse(input, Vector2(100, 200), 0)
+	for k in range(1, 11):
+		_mouse(input, Vector2(100 + 20 * k, 200 + 4 * k), 1)
+	_mouse(input, Vector2(300, 240), 2)
+	assert_eq(session.level.pins.size(), 26, "13 pins and their 13 mirror twins")
+	assert_eq(session.history.names()[-1], "Add a 26-pin curve", "History says what was added")
 
 
 func test_align_a_row_and_distribute_it() -> void:

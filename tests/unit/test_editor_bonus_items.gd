@@ -20,6 +20,7 @@ const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
 
 # bonus_layout.board: start pocket 1 at (350, 400), attacker 1 at (350, 540), tulips 1 and 2 at
@@ -123,6 +124,26 @@ func test_a_mirrored_drag_moves_the_twin_tulip() -> void:
 	assert_eq(level.bonus_pockets[3].position, TULIP_2)
 
 
+func test_typing_x_on_a_mirrored_tulip_moves_its_twin_too() -> void:
+	var level := _open()
+	session.mirror_enabled = true
+	var panel: PropertyPanel = add_child_autofree(PropertyPanel.new())
+	panel.bind(session)
+	session.select([_bonus("tulips", 1)] as Array[Vector2i])
+	panel.refresh()
+	panel.field("x").value = 200.0
+	assert_eq(level.bonus_pockets[2].position, Vector2(200, 330))
+	assert_eq(level.bonus_pockets[3].position, Vector2(500, 330), "the twin mirrors it, as a drag")
+	panel.field("y").value = 340.0
+	assert_eq(level.bonus_pockets[3].position, Vector2(500, 340))
+	session.history.undo()
+	session.history.undo()
+	assert_eq(level.bonus_pockets[3].position, TULIP_2, "one undo step each")
+	session.mirror_enabled = false
+	panel.field("x").value = 210.0
+	assert_eq(level.bonus_pockets[3].position, TULIP_2, "without mirror mode only the one moves")
+
+
 func test_box_select_and_the_erase_tool_take_bonus_pockets() -> void:
 	var level := _open()
 	var box := HitTest.in_rect(level, Rect2(330, 390, 40, 160))
@@ -151,6 +172,10 @@ func test_align_and_duplicate_bonus_pockets() -> void:
 	var copy: Vector2i = session.selection[0]
 	assert_eq(ItemNames.name_of(level, copy), "Tulip 3", "the copy is selected, with a new id")
 	assert_eq(level.bonus_pockets[copy.y].payout, 3, "a copy keeps the payout")
+	var overlaps := BoardValidator.validate(level).filter(
+		func(issue: BoardIssue) -> bool: return issue.message.contains("Tulip 3 overlaps")
+	)
+	assert_eq(overlaps.size(), 0, "the copy sits clear of the original")
 
 
 func test_the_bonus_layer_hides_and_locks_bonus_pockets() -> void:

@@ -7,6 +7,7 @@ extends GutTest
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
 const Tools := preload("res://tests/unit/test_editor_tools.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
 
 var session: Session
 var input: BoardInput
@@ -98,11 +99,30 @@ func test_godot_keeps_navigation_and_its_own_shortcuts() -> void:
 	wheel.pressed = true
 	wheel.position = Vector2(300, 300)
 	assert_false(input.handle(wheel, Transform2D.IDENTITY), "the wheel zooms")
+
+
+func test_a_click_far_off_the_board_keeps_the_board_and_clears_the_selection() -> void:
+	start(pins(2))
+	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
 	var far := InputEventMouseButton.new()
 	far.button_index = MOUSE_BUTTON_LEFT
-	far.pressed = true
 	far.position = Vector2(-500, -500)
-	assert_false(input.handle(far, Transform2D.IDENTITY), "a press far off the board is Godot's")
+	for down: bool in [true, false]:
+		far.pressed = down
+		assert_true(input.handle(far, Transform2D.IDENTITY), "never Godot's: it would deselect")
+	assert_eq(session.selection.size(), 0, "the Select tool's empty click clears the selection")
+	session.set_tool(Session.Tool.PIN)
+	for down: bool in [true, false]:
+		far.pressed = down
+		assert_true(input.handle(far, Transform2D.IDENTITY), "the pin tool's press is kept too")
+	assert_eq(session.level.pins.size(), 2, "but places nothing off the board")
+
+
+func test_copy_paste_and_duplicate_with_nothing_selected_stay_with_the_board() -> void:
+	start(pins(2))
+	for code: Key in [KEY_C, KEY_V, KEY_D]:
+		assert_true(key(code, true), "Ctrl+%s never reaches Godot" % OS.get_keycode_string(code))
+	assert_eq(session.level.pins.size(), 2, "and changes nothing")
 
 
 func test_a_click_that_brings_the_focus_back_does_nothing_else() -> void:

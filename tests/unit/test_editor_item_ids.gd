@@ -9,6 +9,7 @@ const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
 const Tools := preload("res://tests/unit/test_editor_tools.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
 
@@ -159,3 +160,27 @@ func _has_message(level: BoardLevel, text: String) -> bool:
 		if issue.message == text:
 			return true
 	return false
+
+
+func test_the_selection_follows_its_items_by_id_when_others_are_renumbered() -> void:
+	var session := Session.new(_pins(5))
+	var level := session.level
+	var kept := level.pins[3]
+	session.select([Items.make(Items.Kind.PIN, 3)] as Array[Vector2i])
+	# A pin before the selected one goes (an undoable delete, as the Erase tool does it).
+	var gone: Array[Vector2i] = [Items.make(Items.Kind.PIN, 1)]
+	session.commit(DeleteItemsAction.new(level, gone))
+	assert_eq(session.selection, [Items.make(Items.Kind.PIN, 2)] as Array[Vector2i])
+	assert_eq(level.pins[session.selection[0].y], kept, "still the pin that was selected")
+	session.history.undo()
+	session.prune_selection()
+	assert_eq(session.selection, [Items.make(Items.Kind.PIN, 3)] as Array[Vector2i], "undo too")
+
+
+func test_a_selected_item_that_is_deleted_leaves_the_selection() -> void:
+	var session := Session.new(_pins(3))
+	var level := session.level
+	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
+	var gone: Array[Vector2i] = [Items.make(Items.Kind.PIN, 0)]
+	session.commit(DeleteItemsAction.new(level, gone))
+	assert_eq(session.selection, [] as Array[Vector2i], "not the pin that moved into its place")

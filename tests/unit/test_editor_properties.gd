@@ -82,3 +82,24 @@ func _rim_span(level: BoardLevel) -> float:
 	for pin in Items.pocket_pins(level, 0):
 		xs.append(level.pins[pin].x)
 	return xs.max() - xs.min()
+
+
+func test_fields_keep_the_boards_precision_and_whole_numbers_stay_whole() -> void:
+	var session := _pachinko_with_pin_and_pocket()
+	var pins := session.level.pins
+	pins[0] = Vector2(373.33, 201.27)
+	session.level.pins = pins
+	var panel: PropertyPanel = add_child_autofree(PropertyPanel.new())
+	panel.bind(session)
+	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
+	panel.refresh()
+	assert_almost_eq(panel.field("x").value, 373.33, 1e-4, "not rounded to 373.5")
+	assert_almost_eq(panel.field("y").value, 201.27, 1e-4)
+	assert_eq(session.level.pins[0], Vector2(373.33, 201.27), "showing it moves nothing")
+	panel.field("x").value = 380.25
+	assert_eq(session.level.pins[0], Vector2(380.25, 201.27), "a typed 380.25 is kept")
+	assert_eq(panel.field("x").custom_arrow_step, 0.5, "the arrows still step by half a pixel")
+	session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+	panel.refresh()
+	panel.field("payout").value = 7.4
+	assert_eq(session.level.pockets[0].payout, 7, "a payout stays a whole number")

@@ -133,9 +133,9 @@ func test_delete_copy_paste_duplicate_and_nudge() -> void:
 	assert_eq(session.level.pins[2], Vector2(300, 300), "pasted at the mouse")
 	assert_eq(session.selection, [Vector2i(0, 2)], "the paste is selected")
 	assert_true(key(KEY_D, true))
-	assert_eq(session.level.pins[3], Vector2(310, 310), "duplicated one grid step away")
+	assert_eq(session.level.pins[3], Vector2(320, 300), "duplicated beside it, a ball clear")
 	assert_true(key(KEY_RIGHT))
-	assert_eq(session.level.pins[3], Vector2(320, 310), "nudged one grid step")
+	assert_eq(session.level.pins[3], Vector2(330, 300), "nudged one grid step")
 	assert_true(key(KEY_DELETE))
 	assert_eq(session.level.pins.size(), 3)
 	assert_eq(session.selection.size(), 0)
@@ -213,7 +213,7 @@ func test_every_tool_and_the_overlay_draw_without_errors() -> void:
 			await get_tree().process_frame
 			canvas.draw.disconnect(paint)
 	# GUT fails the test on any engine or script error raised while drawing.
-	assert_eq(painted[0], 17, "every tool of both kinds drew its preview over the overlay")
+	assert_eq(painted[0], 18, "every tool of both kinds drew its preview over the overlay")
 
 
 func test_drag_erase_is_one_step() -> void:

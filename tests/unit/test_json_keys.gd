@@ -34,3 +34,15 @@ func test_a_settings_value_with_a_repeated_key_is_refused() -> void:
 	assert_false(audio.has("master_volume"), "the value is not kept")
 	assert_eq(audio.get("sfx_volume"), 0.5)
 	assert_eq(read["problems"], PackedStringArray(["master_volume (line 2)"]))
+
+
+func test_the_parsed_shortcut_gives_the_same_answers() -> void:
+	for text: String in [
+		'{"a": 1, "a": 2}',
+		'{"a": "x:y", "b": 2}',
+		'{"a": "x:y", "a": 2}',
+		'{"p": {"x": 1, "y": 2, "x": 3}}',
+		'[{"a": 1}, {"a": 2}]',
+		'{"a" : 1, "b" : {"c": [1, 2]}}',
+	]:
+		assert_eq(JsonKeys.repeated(text, JSON.parse_string(text)), JsonKeys.repeated(text), text)

@@ -3,6 +3,8 @@ extends GutTest
 ## greyed cards with the reason for the ones that do not.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
+const LevelSelect := preload("res://scenes/menu/level_select.gd")
+const LevelCard := preload("res://scenes/menu/level_card.gd")
 const SaveDataScript := preload("res://scripts/app/save_data.gd")
 const SAVE := "user://test_level_select_save.cfg"
 const EMPTY_USER_ROOT := "user://test_level_select_no_boards"
@@ -21,19 +23,19 @@ func after_each() -> void:
 	DirAccess.remove_absolute(SAVE)
 
 
-func _open(kind: String) -> Control:
+func _open(kind: String) -> LevelSelect:
 	App.level_select_kind = kind
-	var screen := LevelSelectScene.instantiate() as Control
+	var screen := LevelSelectScene.instantiate() as LevelSelect
 	# a scratch My boards folder: the tests never see the player's own boards
 	screen.set("user_root", EMPTY_USER_ROOT)
 	add_child_autofree(screen)
-	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	return screen
 
 
 func _playable(screen: Control) -> Array[Button]:
 	var result: Array[Button] = []
-	for card: Button in screen.call("cards"):
+	for card: Button in screen.cards():
 		if not card.disabled:
 			result.append(card)
 	return result
@@ -44,8 +46,8 @@ func test_every_board_file_gets_a_card() -> void:
 		var expected := BoardLoader.list_boards(
 			BoardLevel.Kind.MAZE if kind == "maze" else BoardLevel.Kind.PACHINKO
 		)
-		var screen: Control = await _open(kind)
-		var cards: Array = screen.call("cards")
+		var screen: LevelSelect = await _open(kind)
+		var cards: Array = screen.cards()
 		assert_eq(cards.size(), expected.size(), kind)
 		var ok_paths := PackedStringArray()
 		for result in expected:
@@ -60,7 +62,7 @@ func test_every_board_file_gets_a_card() -> void:
 
 
 func test_broken_board_is_listed_greyed_with_its_error() -> void:
-	var screen: Control = await _open("maze")
+	var screen: LevelSelect = await _open("maze")
 	var good := BoardLoader.list_boards(BoardLevel.Kind.MAZE)
 	var broken := BoardLoader.load_board("res://levels/maze/does_not_exist.board")
 	var results: Array[BoardLoadResult] = []
@@ -69,32 +71,32 @@ func test_broken_board_is_listed_greyed_with_its_error() -> void:
 		BoardLoader.load_board("res://tests/fixtures/boards/catalog/pachinko/b_broken.board")
 	)
 	results.append(broken)
-	screen.call("show_boards", results)
-	var cards: Array = screen.call("cards")
+	screen.show_boards(results)
+	var cards: Array = screen.cards()
 	assert_eq(cards.size(), good.size() + 2)
 	assert_true((cards[-2] as Button).disabled, "a damaged file is listed, greyed")
-	var last: Button = cards[-1]
+	var last: LevelCard = cards[-1]
 	assert_true(last.disabled, "a broken board cannot start")
 	assert_eq(last.focus_mode, Control.FOCUS_ALL, "its reason is reachable by keyboard")
 	assert_string_contains(last.tooltip_text, "does not exist")
-	assert_string_contains(" ".join(last.call("texts")), "does_not_exist.board")
+	assert_string_contains(" ".join(last.texts()), "does_not_exist.board")
 	assert_string_contains(str((screen.get_node("%SummaryLabel") as Label).text), "2 could not")
 
 
 func test_first_playable_card_takes_focus() -> void:
-	var screen: Control = await _open("pachinko")
-	var first: Button = screen.call("first_card")
+	var screen: LevelSelect = await _open("pachinko")
+	var first: Button = screen.first_card()
 	assert_not_null(first)
 	assert_true(first.has_focus())
 
 
 func _card_texts(screen: Control) -> PackedStringArray:
-	return (screen.call("first_card") as Button).call("texts")
+	return (screen.first_card() as LevelCard).texts()
 
 
 func test_best_results_are_shown_on_the_cards() -> void:
-	var scratch: RefCounted = SaveDataScript.new()
-	scratch.call("load_file", SAVE)
+	var scratch := SaveDataScript.new()
+	scratch.load_file(SAVE)
 	App.save_data = scratch
 	var pachinko_id := BoardLoader.list_boards(BoardLevel.Kind.PACHINKO)[0].level.board_id
 	var mazes := MazeProgress.sorted(BoardLoader.list_boards(BoardLevel.Kind.MAZE))

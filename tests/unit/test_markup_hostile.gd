@@ -5,6 +5,7 @@ extends GutTest
 
 const InstructionsScene := preload("res://scenes/pachinko/instructions_panel.tscn")
 const GameScene := preload("res://scenes/pachinko/pachinko_game.tscn")
+const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const ROOT := "res://tests/fixtures/hostile_markup/"
 const PAYLOAD := ROOT + "payload.tres"
 const RAN := &"hostile_markup_payload_ran"
@@ -43,8 +44,8 @@ func _level(fixture: String) -> BoardLevel:
 	return loaded.level
 
 
-func _panel() -> Control:
-	var panel := InstructionsScene.instantiate() as Control
+func _panel() -> InstructionsPanel:
+	var panel := InstructionsScene.instantiate() as InstructionsPanel
 	add_child_autofree(panel)
 	return panel
 
@@ -73,7 +74,7 @@ func test_the_escape_helper_keeps_every_bracket_literal() -> void:
 func test_the_name_shows_literally_on_the_start_panel() -> void:
 	for fixture: String in NAMED:
 		var panel := _panel()
-		panel.call("show_start", _level(fixture))
+		panel.show_start(_level(fixture))
 		var title := panel.get_node("Card/Margin/Box/Title") as Label
 		assert_string_contains(title.text, NAMED[fixture], fixture + ": the title is a plain label")
 		_assert_literal(_body(panel).get_parsed_text(), fixture + " start", [])
@@ -83,7 +84,7 @@ func test_the_name_shows_literally_on_the_game_over_panel() -> void:
 	for fixture: String in NAMED:
 		var panel := _panel()
 		var summary := {"game_shots": 3, "game_payouts": 4}
-		panel.call("show_game_over", _level(fixture), summary, 12, false)
+		panel.show_game_over(_level(fixture), summary, 12, false)
 		var shown := _body(panel).get_parsed_text()
 		_assert_literal(shown, fixture + " game over", [NAMED[fixture]])
 		assert_string_contains(shown, "Best on %s: 12" % NAMED[fixture])
@@ -93,7 +94,7 @@ func test_a_refusal_quoting_a_field_name_shows_literally() -> void:
 	var loaded := BoardLoader.load_board(ROOT + "markup_field.board", [ROOT])
 	assert_null(loaded.level, "an unknown field is refused")
 	var panel := _panel()
-	panel.call("show_problem", loaded.error)
+	panel.show_problem(loaded.error)
 	_assert_literal(_body(panel).get_parsed_text(), "the problem panel")
 
 

@@ -7,6 +7,22 @@ extends GutTest
 const MazeAnalysisPanel := preload("res://addons/board_editor/analysis/maze_analysis_panel.gd")
 const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
 const GARDEN := "res://levels/maze/garden.board"
+## The panel keeps its figures on disk: the tests keep theirs apart.
+const TEST_FOLDER := "user://test_maze_analysis_editor"
+
+var _saved_folder := ""
+
+
+func before_each() -> void:
+	_saved_folder = AnalysisCache.folder_override
+	AnalysisCache.folder_override = TEST_FOLDER
+
+
+func after_each() -> void:
+	if DirAccess.dir_exists_absolute(TEST_FOLDER):
+		for file in DirAccess.get_files_at(TEST_FOLDER):
+			DirAccess.remove_absolute(TEST_FOLDER.path_join(file))
+	AnalysisCache.folder_override = _saved_folder
 
 
 func _panel() -> MazeAnalysisPanel:
@@ -54,6 +70,18 @@ func test_the_pilots_games_show_and_stay_for_the_same_board() -> void:
 	level.ball_starts[0] = start
 	panel.bind(level)
 	assert_eq(panel.report(), report, "the same content shows its figures again")
+	# A rename and "Save board as" (a new name and board id) keep the figures.
+	level.display_name = "Garden Path, renamed"
+	level.board_id = "maze_garden_copy"
+	panel.bind(level)
+	assert_eq(panel.report(), report, "a renamed board keeps its analysis")
+	# The next editor session (a fresh panel) finds them on disk.
+	var later := _panel()
+	later.bind(_garden())
+	assert_eq(later.report().get("game"), "maze", "kept on disk like pachinko's")
+	var easy: Dictionary = later.report()["easy"]
+	assert_eq(int(easy["games"]), 1)
+	assert_string_contains(later._controls.status.text, "Easy: won ")
 
 
 func test_cancel_stops_the_games_and_keeps_nothing() -> void:

@@ -79,3 +79,34 @@ func _wall_length(level: BoardLevel) -> float:
 	for i in range(0, level.walls.size(), 2):
 		total += level.walls[i].distance_to(level.walls[i + 1])
 	return total
+
+
+func test_no_wall_crosses_the_goal_ring_and_one_that_does_is_named() -> void:
+	for s in range(1, 16):
+		var made := _make({"cols": 4 + s % 11, "rows": 4 + (s * 5) % 9, "holes": 2, "seed": s})
+		assert_false(made.has("error"), "seed %d: %s" % [s, made.get("error", "")])
+		var level: BoardLevel = made["level"]
+		assert_eq(MazeGenerator.wall_in_goal_ring(level), -1, "seed %d: the ring is clear" % s)
+	# The same board with a wall laid through the goal: the check finds it.
+	var level: BoardLevel = _make({"cols": 8, "rows": 8, "seed": 3})["level"]
+	var walls := level.walls
+	walls.append(level.goal_center + Vector2(-40.0, 20.0))
+	walls.append(level.goal_center + Vector2(40.0, 20.0))
+	level.walls = walls
+	assert_eq(MazeGenerator.wall_in_goal_ring(level), walls.size() / 2 - 1, "the new wall")
+
+
+func test_every_shipped_generated_board_keeps_its_goal_ring_clear() -> void:
+	for id: String in [
+		"garden",
+		"cloister",
+		"switchbacks",
+		"crossroads",
+		"long_hall",
+		"tower",
+		"undercroft",
+		"labyrinth",
+		"the_deep"
+	]:
+		var level: BoardLevel = BoardLoader.load_board("res://levels/maze/%s.board" % id).level
+		assert_eq(MazeGenerator.wall_in_goal_ring(level), -1, "%s: no wall in the ring" % id)

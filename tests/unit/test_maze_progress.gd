@@ -16,8 +16,8 @@ var _real_save: RefCounted = null
 
 func before_each() -> void:
 	_real_save = App.save_data
-	var scratch: RefCounted = SaveDataScript.new()
-	scratch.call("load_file", SAVE)
+	var scratch := SaveDataScript.new()
+	scratch.load_file(SAVE)
 	App.save_data = scratch
 	App.settings.unlock_all_boards = false
 
@@ -89,17 +89,32 @@ func test_easy_and_hard_keep_their_own_medal_and_time() -> void:
 	assert_string_contains(text, "Easy %s" % LevelSelect._clock_text(easy_bronze))
 	assert_string_contains(text, " · Hard %s" % LevelSelect._clock_text(hard_gold - 0.1))
 	assert_false(cards[1].locked, "a hard finish opens the next board too")
+	var rows := badges.row_texts()
+	var easy: PackedFloat64Array = first.level.medal_times_easy
+	assert_eq(
+		rows[0],
+		(
+			"Easy: Bronze · gold %s, silver %s, bronze %s"
+			% [
+				MazeWinSummary.clock(easy[0]),
+				MazeWinSummary.clock(easy[1]),
+				MazeWinSummary.clock(easy[2])
+			]
+		),
+		"the card shows the three easy times"
+	)
+	assert_string_starts_with(rows[1], "Hard: Gold · gold %s" % MazeWinSummary.clock(hard_gold))
 
 
 func _maze_cards() -> Array[LevelCard]:
 	App.level_select_kind = "maze"
-	var screen := LevelSelectScene.instantiate() as Control
+	var screen := LevelSelectScene.instantiate() as LevelSelect
 	# a scratch My boards folder: the tests never see the player's own boards
 	screen.set("user_root", EMPTY_USER_ROOT)
 	add_child_autofree(screen)
-	await wait_until(func() -> bool: return not screen.call("is_loading"), 20.0)
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	var out: Array[LevelCard] = []
-	for card: Button in screen.call("cards"):
+	for card: Button in screen.cards():
 		out.append(card as LevelCard)
 	return out
 

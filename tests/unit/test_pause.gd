@@ -3,15 +3,16 @@ extends GutTest
 ## lets it run again, restart unpauses and asks the game to restart.
 
 const PauseScene := preload("res://scenes/common/pause_menu.tscn")
+const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 
-var _menu: CanvasLayer
+var _menu: PauseMenu
 var _world: Node
 
 
 func before_each() -> void:
 	_world = Node.new()  # stands in for a game's simulation node (inherits the pause)
 	add_child_autofree(_world)
-	_menu = PauseScene.instantiate() as CanvasLayer
+	_menu = PauseScene.instantiate() as PauseMenu
 	add_child_autofree(_menu)
 
 
@@ -23,14 +24,14 @@ func _press(action: String) -> void:
 	var event := InputEventAction.new()
 	event.action = action
 	event.pressed = true
-	_menu.call("_unhandled_input", event)
+	_menu._unhandled_input(event)
 
 
 func test_pause_action_stops_the_world_and_not_the_menu() -> void:
 	assert_true(_world.can_process())
 	_press("pause")
 	assert_true(get_tree().paused)
-	assert_true(_menu.call("is_open"))
+	assert_true(_menu.is_open())
 	assert_false(_world.can_process(), "the simulation does not run while paused")
 	assert_true(_menu.can_process(), "the menu still answers")
 
@@ -39,7 +40,7 @@ func test_pause_again_resumes() -> void:
 	_press("pause")
 	_press("pause")
 	assert_false(get_tree().paused)
-	assert_false(_menu.call("is_open"))
+	assert_false(_menu.is_open())
 	assert_true(_world.can_process())
 
 
@@ -73,10 +74,10 @@ func test_settings_open_over_the_pause_menu_and_close_with_cancel() -> void:
 	assert_true(get_tree().paused, "the pause action does not leak past the settings screen")
 
 
-func _pause_menu_in(node: Node) -> CanvasLayer:
+func _pause_menu_in(node: Node) -> PauseMenu:
 	for child in node.get_children():
-		if child is CanvasLayer and child.has_signal("restart_requested"):
-			return child as CanvasLayer
+		if child is PauseMenu:
+			return child as PauseMenu
 	return null
 
 
@@ -91,8 +92,8 @@ func test_the_maze_game_stops_under_its_pause_menu() -> void:
 		assert_not_null(menu, "%s instances the pause menu" % path)
 		if menu == null:
 			continue
-		menu.call("open")
+		menu.open()
 		assert_false(game.can_process(), "%s: the game stops while paused" % path)
 		assert_true(menu.can_process())
-		menu.call("close")
+		menu.close()
 		assert_true(game.can_process(), "%s: and runs again after resume" % path)

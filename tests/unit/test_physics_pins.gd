@@ -98,19 +98,6 @@ func test_special_pin_pockets_once_and_removes_the_ball() -> void:
 	assert_eq(w.ball_count(), 0)
 
 
-func test_the_deprecated_ball_pocketed_signal_still_fires_with_ball_captured() -> void:
-	var w := _world()
-	w.add_pin(Vector2(0, 0), 1.5, 4, true)
-	var captured: Array = []
-	var pocketed: Array = []
-	w.ball_captured.connect(func(b: int, tag: int) -> void: captured.append([b, tag]))
-	w.ball_pocketed.connect(func(b: int, pocket: int) -> void: pocketed.append([b, pocket]))
-	var id := w.spawn_ball(Vector2(0, -30), Vector2(0, 300), 5.0)
-	_run(w, 0.3)
-	assert_eq(captured, [[id, 4]])
-	assert_eq(pocketed, captured, "the old name gets the same event, once")
-
-
 func test_fast_ball_does_not_tunnel_through_a_pin() -> void:
 	var t := TuningPresets.pachinko()
 	t.gravity = Vector2.ZERO

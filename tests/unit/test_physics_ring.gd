@@ -164,3 +164,29 @@ func test_a_drain_arc_with_bad_numbers_is_refused() -> void:
 	for _i: int in 120:
 		w.step(1.0 / 120.0)
 	assert_eq(w.ball_count(), 1, "no arc was set, so nothing drains")
+
+
+## Seed fidelity: the Flash chapter resolves a ring hit as it does a pin hit, minimum
+## horizontal speed included, so a ball dropped straight onto the bottom of the ring does
+## not bounce on the spot forever.
+func test_a_ring_hit_leaves_the_ball_the_rings_least_horizontal_speed() -> void:
+	var t := TuningPresets.pachinko()
+	var least: float = t.min_horizontal_speed
+	var w := BallWorld.new(t)
+	w.set_ring(CENTER, RING_R, least)
+	var id := w.spawn_ball(CENTER + Vector2(0.0, RING_R - 60.0), Vector2.ZERO, BALL_R)
+	var hit := [false]
+	w.ring_hit.connect(func(_b: int, _s: float) -> void: hit[0] = true)
+	while not hit[0] and w.step_count < 240:
+		w.step(1.0 / 120.0)
+	assert_true(hit[0], "the ball reached the ring")
+	assert_almost_eq(absf(w.get_ball_velocity(id).x), least, 1e-3)
+
+
+func test_a_ring_without_the_material_leaves_a_straight_drop_straight() -> void:
+	var w := BallWorld.new(TuningPresets.pachinko())
+	w.set_ring(CENTER, RING_R)
+	var id := w.spawn_ball(CENTER + Vector2(0.0, RING_R - 60.0), Vector2.ZERO, BALL_R)
+	for _i: int in 60:
+		w.step(1.0 / 120.0)
+	assert_eq(w.get_ball_velocity(id).x, 0.0)

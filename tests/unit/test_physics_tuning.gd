@@ -112,6 +112,35 @@ func test_per_axis_speed_cap_lets_a_diagonal_roll_faster() -> void:
 	assert_almost_eq(w.get_ball_velocity(int(run["id"])).length(), t.max_speed, 1e-3)
 
 
+func test_the_seed_tuning_holds_x_a_frames_friction_under_y() -> void:
+	# The seed caps x before its friction and y after: under a full diagonal tilt x tops out
+	# at 1.5 - 2·cos(12°)·0.01 = 1.4804 px a 16 ms frame and y at 1.5.
+	var t := TuningPresets.maze_seed()
+	var run := _open_world(t)
+	var w: BallWorld = run["world"]
+	MazeTilt.apply(w, Vector2(12.0, 12.0))
+	for _s in 60:
+		w.step(1.0 / t.fixed_hz)
+	var v: Vector2 = w.get_ball_velocity(int(run["id"])) * 0.016
+	assert_almost_eq(v.x, 1.5 - 0.02 * cos(deg_to_rad(12.0)), 1e-4, "x: a frame's friction off")
+	assert_almost_eq(v.y, 1.5, 1e-4, "y: the cap")
+	# Uphill (pushed against the pull) x keeps the whole cap, as in the seed.
+	MazeTilt.apply(w, Vector2(-12.0, 12.0))
+	w.set_ball_velocity(int(run["id"]), Vector2(t.max_speed * 2.0, 0.0))
+	w.step(1.0 / t.fixed_hz)
+	assert_almost_eq(w.get_ball_velocity(int(run["id"])).x, t.max_speed, 1e-3, "uphill: cap")
+
+
+func test_x_cap_friction_time_is_written_only_when_set() -> void:
+	var level: BoardLevel = BoardLoader.load_board("res://levels/maze/garden.board").level
+	assert_false(Writer.write(level).contains("x_cap_friction_time"), "0 is left out")
+	level.tuning.x_cap_friction_time = 0.016
+	var text := Writer.write(level)
+	assert_true(text.contains('"x_cap_friction_time": 0.016'), "set: written")
+	var back: BoardLevel = BoardLoader.load_bytes(text.to_utf8_buffer(), "test").level
+	assert_almost_eq(back.tuning.x_cap_friction_time, 0.016, 1e-9, "read back")
+
+
 func test_friction_against_gravity_only_lowers_the_downhill_pull() -> void:
 	var dt := 1.0 / 120.0
 	for mode: int in [
@@ -150,16 +179,8 @@ func test_board_files_may_choose_the_seed_options() -> void:
 	assert_eq(classic.tuning.wall_cap_contact, PhysicsTuning.CapContact.GLANCE)
 	var other: BoardLevel = BoardLoader.load_board("res://levels/maze/catacombs.board").level
 	assert_eq(other.tuning.speed_cap, PhysicsTuning.SpeedCap.TOTAL, "others keep theirs")
-	var fields: Dictionary = load("res://scripts/loading/board_schema.gd").tuning_fields()
+	var fields := BoardRanges.tuning_fields()
 	assert_eq(fields["speed_cap"][2], 1.0, "the schema bounds the option to its values")
-
-
-func test_gutter_slide_time_is_the_deprecated_name_of_drain_slide_time() -> void:
-	var t := PhysicsTuning.new()
-	t.gutter_slide_time = 1.25
-	assert_eq(t.drain_slide_time, 1.25, "the old name writes the new field")
-	t.drain_slide_time = 0.75
-	assert_eq(t.gutter_slide_time, 0.75, "and reads it")
 
 
 func test_a_board_file_with_the_old_gutter_slide_time_key_still_reads() -> void:

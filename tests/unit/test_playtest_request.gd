@@ -193,6 +193,7 @@ class TestHostileCorpus:
 		"nul_bytes.json": "NUL bytes",
 		"path_escape.json": "the board must be a file",
 		"payload_as_a_value.json": "the board must be a file",
+		"system_file_text.json": "not JSON (line 1: Expected 'true', 'false', or 'null')",
 		"two_objects.json": "not JSON",
 		"utf16.json": "UTF-16",
 	}

@@ -328,6 +328,7 @@ class TestPachinkoScreen:
 	extends GutTest
 
 	const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
+	const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 	const FOLDER := "user://test_replay_pachinko"
 
 	func before_each() -> void:
@@ -338,20 +339,20 @@ class TestPachinkoScreen:
 		ReplayStore.folder = ReplayStore.DIR
 
 	func test_the_screen_keeps_the_last_game_as_a_replay_that_plays_back() -> void:
-		var game: Control = GAME.instantiate()
+		var game: PachinkoGame = GAME.instantiate()
 		add_child_autofree(game)
 		var rules: PachinkoRules = game.get("rules")
 		for frame in 20:
-			game.call("_process", 1.0 / 60.0)
+			game._process(1.0 / 60.0)
 		rules.start_game()
 		for shot in 4:
 			rules.begin_charge()
 			rules.charge(0.55 + 0.137 * shot)
 			rules.release()
 			for frame in 40:
-				game.call("_process", 1.0 / 60.0)
+				game._process(1.0 / 60.0)
 		assert_eq(rules.ledger.shots, 4, "four charged shots")
-		game.call("_on_game_ended", rules.stats())
+		game._on_game_ended(rules.stats())
 		var path := ReplayStore.last_pachinko_path(rules.level.board_id)
 		assert_eq(path, FOLDER + "/pachinko_classic_last.replay")
 		var read := ReplayStore.read_file(path)

@@ -7,7 +7,9 @@ const MAZE_CLASSIC := "res://levels/maze/classic.board"
 const Kit := preload("res://tests/unit/replay_kit.gd")
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
+const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
+const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const TEST_FOLDER := "user://test_replay_ghost"
 const TEST_SETTINGS := "user://test_ghost_settings.cfg"
 const TEST_SAVE := "user://test_ghost_save.cfg"
@@ -103,7 +105,7 @@ func test_the_ghost_setting_is_saved_and_read_back() -> void:
 class TestMazeScreen:
 	extends GutTest
 
-	var _game: Control
+	var _game: MazeGame
 
 	func before_all() -> void:
 		App.load_player_files(TEST_SETTINGS, TEST_SAVE)
@@ -130,16 +132,16 @@ class TestMazeScreen:
 	## (by the autoplay's pilot) and the screen's own `_process`. Returns positions by step.
 	func _play_attempt(frames: int) -> Dictionary:
 		var rules := _rules()
-		var mixer: Object = _game.get("mixer")
+		var mixer: TiltMixer = _game.get("mixer")
 		var rng := RandomNumberGenerator.new()
 		rng.seed = 1
 		var pilot := MazePilot.new(rules.level, false, rng, rules.step_seconds())
-		_game.call("_start")
+		_game._start()
 		var seen := {}
 		for frame in frames:
 			var tilt := pilot.decide(rules.world.get_positions(), rules.world.get_velocities())
-			mixer.call("joystick_moved", TiltInput.joystick_from_tilt(tilt))
-			_game.call("_process", 1.0 / 60.0)
+			mixer.joystick_moved(TiltInput.joystick_from_tilt(tilt))
+			_game._process(1.0 / 60.0)
 			seen[rules.world.step_count] = rules.world.get_positions()
 			if rules.is_over():
 				break
@@ -157,9 +159,9 @@ class TestMazeScreen:
 		rules.reset()
 		var ghost: GhostRun = _game.get("_ghost")
 		assert_not_null(ghost, "the second attempt has a ghost")
-		_game.call("_start")
+		_game._start()
 		for frame in 90:
-			_game.call("_process", 1.0 / 60.0)
+			_game._process(1.0 / 60.0)
 		assert_gt(ghost.steps(), 100, "the ghost kept pace with the live game")
 		assert_eq(ghost.positions(), first[ghost.steps()], "where the best run was")
 		var view: Node3D = _game.get("_ghost_view")

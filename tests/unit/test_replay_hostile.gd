@@ -22,6 +22,7 @@ const EXPECTED := {
 	"godot_object.replay": "not valid JSON",
 	"header_array.replay": "first line must be the header",
 	"inf.replay": "item 3 must be a whole number",
+	"longer_than_a_game.replay": '"steps" must be a whole number from 0 to 144000',
 	"missing_field.replay": 'the header has no "board_hash"',
 	"nan.replay": "not valid JSON",
 	"newer_version.replay": "newer than this game reads",
@@ -35,6 +36,7 @@ const EXPECTED := {
 	"seed_fraction.replay": '"seed" must be a whole number',
 	"seed_huge.replay": '"seed" must be a whole number',
 	"short_record.replay": '"tilt" takes 4 numbers, got 2',
+	"system_file_text.replay": "line 1 is not valid JSON: Expected 'true', 'false', or 'null'",
 	"steps_huge.replay": '"steps" must be a whole number',
 	"steps_mismatch.replay": "the records run 4 steps but the header says 400",
 	"string_number.replay": "item 1 must be a whole number",
@@ -50,7 +52,7 @@ const EXPECTED := {
 	"tilts_unfinished_number.replay": "end in the middle of a number",
 	"unknown_field.replay": 'unknown header field "script"',
 	"unknown_record.replay": 'unknown maze record "teleport"',
-	"wrong_game.replay": '"game" must be "maze" or "pachinko"',
+	"wrong_game.replay": '"game" must be "pachinko" or "maze"',
 	"wrong_game_record.replay": 'unknown maze record "fire"',
 }
 
@@ -74,6 +76,7 @@ func test_every_hostile_file_is_refused_fast_with_its_problem_named() -> void:
 		assert_string_contains(error, path, file_name + ": the message names the file")
 		assert_true(EXPECTED.has(file_name), file_name + " has an expected reason in this test")
 		assert_string_contains(error, str(EXPECTED.get(file_name, "?")), file_name)
+		assert_false(error.contains("root"), file_name + ": the refusal does not quote the file")
 		checked += 1
 	assert_eq(checked, EXPECTED.size(), "every file of the corpus was checked")
 

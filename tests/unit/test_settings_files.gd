@@ -6,6 +6,7 @@ extends GutTest
 
 const AppScript := preload("res://scenes/app/app.gd")
 const Codec := preload("res://scripts/app/input_event_codec.gd")
+const SaveDataScript := preload("res://scripts/app/save_data.gd")
 const SETTINGS := "user://test_settings_files_settings.cfg"
 const SAVE := "user://test_settings_files_save.cfg"
 
@@ -34,15 +35,15 @@ func _kept_copies(path: String) -> PackedStringArray:
 func _load_in_app(settings_text: String, save_text: String) -> Array:
 	_write(SETTINGS, settings_text)
 	_write(SAVE, save_text)
-	var app: Node = AppScript.new()
-	app.call("load_player_files", SETTINGS, SAVE)
-	var problems: PackedStringArray = app.call("take_problems")
+	var app := AppScript.new()
+	app.load_player_files(SETTINGS, SAVE)
+	var problems: PackedStringArray = app.take_problems()
 	return [app, problems]
 
 
 func test_app_keeps_damaged_files_and_names_the_kept_copies() -> void:
 	var loaded := _load_in_app("version 1, honest\n", "[meta]\nversion=nan\n")
-	var app: Node = loaded[0]
+	var app: AppScript = loaded[0]
 	var problems: PackedStringArray = loaded[1]
 	assert_eq(problems.size(), 2, "one message per file")
 	for pair: Array in [[SETTINGS, problems[0]], [SAVE, problems[1]]]:
@@ -56,9 +57,9 @@ func test_app_keeps_damaged_files_and_names_the_kept_copies() -> void:
 	assert_eq(FileAccess.get_file_as_string(_kept_copies(SETTINGS)[0]), "version 1, honest\n")
 	assert_string_contains(FileAccess.get_file_as_string(SETTINGS), "[meta]", "defaults written")
 	app.free()
-	var again: Node = AppScript.new()
-	again.call("load_player_files", SETTINGS, SAVE)
-	assert_eq((again.call("take_problems") as PackedStringArray).size(), 0, "reported once")
+	var again := AppScript.new()
+	again.load_player_files(SETTINGS, SAVE)
+	assert_eq((again.take_problems() as PackedStringArray).size(), 0, "reported once")
 	again.free()
 
 
@@ -76,13 +77,13 @@ func test_newer_files_are_never_written_during_the_run() -> void:
 	var settings_text := "[meta]\nversion=3\n[audio]\nmaster_volume=0.1\n"
 	var save_text := "[meta]\nversion=9\n[maze_best_seconds_easy]\nclassic=12.0\n"
 	var loaded := _load_in_app(settings_text, save_text)
-	var app: Node = loaded[0]
+	var app: AppScript = loaded[0]
 	var problems: PackedStringArray = loaded[1]
 	assert_eq(problems.size(), 2)
 	assert_string_contains(problems[0], "newer version")
 	assert_string_contains(problems[1], "newer version")
-	app.call("save_settings")
-	assert_true(app.call("record_maze_time", "classic", false, 5.0), "a best of this run counts")
+	app.save_settings()
+	assert_true(app.record_maze_time("classic", false, 5.0), "a best of this run counts")
 	assert_eq(FileAccess.get_file_as_string(SETTINGS), settings_text, "settings untouched")
 	assert_eq(FileAccess.get_file_as_string(SAVE), save_text, "best results untouched")
 	assert_eq(_kept_copies(SETTINGS).size() + _kept_copies(SAVE).size(), 0, "nothing moved")
@@ -95,9 +96,9 @@ func test_bom_and_crlf_files_read_as_usual() -> void:
 	var settings := GameSettings.new()
 	assert_eq(settings.load_file(SETTINGS), "")
 	assert_eq(settings.master_volume, 0.25)
-	var data: RefCounted = preload("res://scripts/app/save_data.gd").new()
-	assert_eq(data.call("load_file", SAVE), "")
-	assert_eq(data.call("best_maze_time", "a=b", true), 9.5)
+	var data := SaveDataScript.new()
+	assert_eq(data.load_file(SAVE), "")
+	assert_eq(data.best_maze_time("a=b", true), 9.5)
 
 
 func test_wrong_types_are_refused_one_by_one() -> void:

@@ -97,16 +97,16 @@ func _key_press(code: Key) -> InputEventKey:
 
 
 func test_the_controls_screen_rebinds_with_the_next_key_and_esc_cancels() -> void:
-	var list := BindingList.new() as GridContainer
+	var list := BindingList.new()
 	add_child_autofree(list)
 	var button: Button = list.get_node("tilt_up_key")
 	button.pressed.emit()
-	assert_true(list.call("is_capturing"))
-	list.call("_input", _key_press(KEY_ESCAPE))
-	assert_false(list.call("is_capturing"), "Esc cancels")
+	assert_true(list.is_capturing())
+	list._input(_key_press(KEY_ESCAPE))
+	assert_false(list.is_capturing(), "Esc cancels")
 	assert_eq(button.text, "Up / W", "nothing changed")
 	button.pressed.emit()
-	list.call("_input", _key_press(KEY_I))
+	list._input(_key_press(KEY_I))
 	assert_eq(button.text, "I")
 	assert_eq(Codec.encode(App.settings.events_for("tilt_up")[-1]), "key:I")
 	var pad: Button = list.get_node("tilt_up_pad")
@@ -114,12 +114,12 @@ func test_the_controls_screen_rebinds_with_the_next_key_and_esc_cancels() -> voi
 	var trigger := InputEventJoypadMotion.new()
 	trigger.axis = JOY_AXIS_TRIGGER_LEFT
 	trigger.axis_value = 0.9
-	list.call("_input", trigger)
+	list._input(trigger)
 	assert_eq(pad.text, "Left trigger")
 
 
 func test_the_controls_screen_removes_a_binding_but_pause_keeps_one() -> void:
-	var list := BindingList.new() as GridContainer
+	var list := BindingList.new()
 	add_child_autofree(list)
 	var restart: Button = list.get_node("game_restart_key")
 	restart.gui_input.emit(_key_press(KEY_DELETE))

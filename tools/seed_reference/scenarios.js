@@ -56,4 +56,11 @@ module.exports = [
       { frame: 80, deg: [-12, 8] },
     ],
   },
+  {
+    name: "corner_12_12",
+    about: "the joystick at its corner (12°, 12°): the top-left ball rolls straight at the cap at (35, 35) and slides off it",
+    start: [17.5, 17.5],
+    frames: 600,
+    tilts: [{ frame: 0, deg: [12, 12] }],
+  },
 ];

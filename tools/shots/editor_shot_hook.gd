@@ -15,12 +15,14 @@ const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+const BoardEditorPlugin := preload("res://addons/board_editor/plugin.gd")
+const BoardInput := preload("res://addons/board_editor/board_input.gd")
 
-var _plugin: EditorPlugin
+var _plugin: BoardEditorPlugin
 
 
 func _init(plugin: EditorPlugin) -> void:
-	_plugin = plugin
+	_plugin = plugin as BoardEditorPlugin
 
 
 func _ready() -> void:
@@ -72,10 +74,10 @@ func _run() -> void:
 	_frame_board(node as BoardNode)
 	await _frames(5)
 	if parts[1] == "wall":
-		_plugin.call("focus_issue", 0)  # jump-to-problem: centred and zoomed in
+		_plugin.focus_issue(0)  # jump-to-problem: centred and zoomed in
 	else:
 		_plugin.set("_focused_issue", 0)
-		_plugin.call("update_overlays")
+		_plugin.update_overlays()
 	var window := EditorInterface.get_base_control().get_viewport()
 	var error: Error = await ShotCapture.save(window, parts[2])
 	# Take the staged edit back so the board file is left as it was.
@@ -86,8 +88,8 @@ func _run() -> void:
 
 # Puts the editor in a state that shows the tool at work.
 func _stage(tool_name: String) -> void:
-	var session: Session = _plugin.call("get_session")
-	var input: RefCounted = _plugin.call("get_board_input")
+	var session := _plugin.get_session()
+	var input := _plugin.get_board_input()
 	if session == null:
 		push_error("Editor shot: the board editor did not take the node.")
 		return
@@ -96,12 +98,12 @@ func _stage(tool_name: String) -> void:
 		session.set_mirror(true)
 		session.set_tool(Session.Tool.WALL)
 		var cell := level.path_width + level.wall_width
-		var tool: RefCounted = input.call("active_tool")
+		var tool := input.active_tool()
 		var press := InputEventMouseButton.new()
 		press.button_index = MOUSE_BUTTON_LEFT
 		press.pressed = true
-		tool.call("press", Vector2(2, 3) * cell, press)
-		tool.call("motion", Vector2(4.2, 3) * cell, InputEventMouseMotion.new())
+		tool.press(Vector2(2, 3) * cell, press)
+		tool.motion(Vector2(4.2, 3) * cell, InputEventMouseMotion.new())
 		# A mistake for the validator to catch live: walls that shut in the first ball.
 		var start := level.ball_starts[0]
 		var corner := (start / cell).floor() * cell
@@ -126,7 +128,7 @@ func _stage(tool_name: String) -> void:
 		session.pattern["kind"] = "arc"
 		session.pattern["count"] = 7
 		session.pattern["radius"] = 60.0
-		var tool: RefCounted = input.call("active_tool")
+		var tool := input.active_tool()
 		tool.set("hover", level.ring_center + Vector2(-120, -150))
 		# A mistake for the validator to catch live: a pin dropped onto another.
 		var extra := Items.empty_set()
@@ -158,23 +160,23 @@ func _stage_bonus(session: Session) -> void:
 
 
 # A peg curve half drawn over the top of the field, a pocket selected for the panel.
-func _stage_curve(session: Session, input: RefCounted) -> void:
+func _stage_curve(session: Session, input: BoardInput) -> void:
 	var level := session.level
 	if not level.pockets.is_empty():
 		session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
 	session.set_tool(Session.Tool.CURVE)
 	session.curve["count"] = 20
-	var tool: RefCounted = input.call("active_tool")
+	var tool := input.active_tool()
 	tool.set("pixel", 0.5)
 	var press := InputEventMouseButton.new()
 	press.button_index = MOUSE_BUTTON_LEFT
 	press.pressed = true
 	var from := level.ring_center + Vector2(-230, -40)
-	tool.call("press", from, press)
+	tool.press(from, press)
 	for k in range(1, 25):
 		var t := float(k) / 24.0
 		var at := from + Vector2(400.0 * t, -150.0 * sin(t * PI))
-		tool.call("motion", at, InputEventMouseMotion.new())
+		tool.motion(at, InputEventMouseMotion.new())
 
 
 # Zooms the 2D view out until the whole board fits and centres it. The 2D editor offers no

@@ -7,6 +7,9 @@ extends SceneTree
 ##   MAZE_FPS_ROUNDS=3  MAZE_FPS_FRAMES=40
 
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const AppScript := preload("res://scenes/app/app.gd")
+const MazeGame := preload("res://scenes/maze/maze_game.gd")
+const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
 const SCRATCH_SETTINGS := "user://fps_settings.cfg"
@@ -34,16 +37,16 @@ func _initialize() -> void:
 func _run() -> void:
 	for scratch in [SCRATCH_SETTINGS, SCRATCH_SAVE]:
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(scratch))
-	var app := root.get_node("/root/App")
-	app.call("load_player_files", SCRATCH_SETTINGS, SCRATCH_SAVE)
+	var app := root.get_node("/root/App") as AppScript
+	app.load_player_files(SCRATCH_SETTINGS, SCRATCH_SAVE)
 	var game := await ScreenOpener.open(
-		self, app.call.bind("start_game", "maze", BOARD), GAME_SCENE
+		self, app.start_game.bind(BoardLevel.MAZE_NAME, BOARD), GAME_SCENE
 	)
 	if game == null or game.get("rules") == null:
 		printerr("maze_fps: the maze did not open")
 		quit(1)
 		return
-	var stage: Node3D = game.call("stage")
+	var stage := (game as MazeGame).stage()
 	var defaults := _read_settings(stage)
 	var rounds := (
 		int(OS.get_environment("MAZE_FPS_ROUNDS")) if OS.has_environment("MAZE_FPS_ROUNDS") else 3
@@ -90,7 +93,7 @@ func _run() -> void:
 	quit(0)
 
 
-func _read_settings(_stage: Node3D) -> Dictionary:
+func _read_settings(_stage: MazeStage) -> Dictionary:
 	return {
 		"hide": [],
 		"scale": root.scaling_3d_scale,
@@ -98,19 +101,19 @@ func _read_settings(_stage: Node3D) -> Dictionary:
 	}
 
 
-func _apply(stage: Node3D, settings: Dictionary) -> void:
+func _apply(stage: MazeStage, settings: Dictionary) -> void:
 	root.scaling_3d_scale = settings["scale"]
 	root.msaa_3d = settings["msaa"]
-	var board: Node3D = stage.call("board")
+	var board := stage.board()
 	var parts := {
-		"floor": [board.call("part", "floor")],
-		"walls": [board.call("part", "walls")],
-		"frame": [board.call("part", "frame")],
-		"balls": [stage.call("balls")],
+		"floor": [board.part("floor")],
+		"walls": [board.part("walls")],
+		"frame": [board.part("frame")],
+		"balls": [stage.balls()],
 		"table": [stage.get("_table")],
-		"shadows": [board.call("part", "wall_shadows"), board.call("part", "frame_shadow")],
-		"wall_shadows": [board.call("part", "wall_shadows")],
-		"frame_shadow": [board.call("part", "frame_shadow")],
+		"shadows": [board.part("wall_shadows"), board.part("frame_shadow")],
+		"wall_shadows": [board.part("wall_shadows")],
+		"frame_shadow": [board.part("frame_shadow")],
 	}
 	for part: String in parts:
 		for node: Node3D in parts[part]:

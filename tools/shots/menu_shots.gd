@@ -4,6 +4,7 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const SETTINGS := "res://scenes/menu/settings_menu.tscn"
@@ -36,31 +37,31 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	match shot_name:
 		"menu_main":
 			# The title screen focuses the game whose level select was seen last.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_notice":
 			# What a player sees after the game kept a damaged settings file aside.
-			App.level_select_kind = "pachinko"
+			App.level_select_kind = BoardLevel.PACHINKO_NAME
 			for problem: String in NOTICE_PROBLEMS:
 				App.pending_problems.append(problem)
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 		"menu_level_select_pachinko":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 		"menu_level_select_maze":
 			_sample_progress()
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("maze"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.MAZE_NAME), LEVEL_SELECT
 			)
 			if screen != null:
-				await _wait_loaded(tree, screen)
+				await _wait_loaded(tree, screen as LevelSelect)
 		"menu_my_boards":
 			screen = await ScreenOpener.open(
-				tree, App.go_to_level_select.bind("pachinko"), LEVEL_SELECT
+				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 			if screen != null:
-				await _show_my_boards(tree, screen)
+				await _show_my_boards(tree, screen as LevelSelect)
 		"menu_settings":
 			screen = await ScreenOpener.open(tree, App.go_to_menu, MAIN_MENU)
 			if screen != null:
@@ -93,9 +94,9 @@ static func _sample_progress() -> void:
 
 
 # Waits until every card of the level select has loaded (their files load off the main thread).
-static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
+static func _wait_loaded(tree: SceneTree, screen: LevelSelect) -> void:
 	for frame in 240:
-		if not screen.call("is_loading"):
+		if not screen.is_loading():
 			break
 		await tree.process_frame
 	for frame in 3:
@@ -104,20 +105,20 @@ static func _wait_loaded(tree: SceneTree, screen: Node) -> void:
 
 # Fills a scratch My boards folder (one imported board, one refused file), imports the
 # board as the Import button would, and scrolls to the section.
-static func _show_my_boards(tree: SceneTree, screen: Node) -> void:
+static func _show_my_boards(tree: SceneTree, screen: LevelSelect) -> void:
 	_empty_folder(SHOT_BOARDS + "/pachinko")
 	DirAccess.make_dir_recursive_absolute(SHOT_BOARDS + "/pachinko")
 	var refused := FileAccess.open(SHOT_BOARDS + "/pachinko/bouncy.board", FileAccess.WRITE)
 	refused.store_buffer(FileAccess.get_file_as_bytes(REFUSED_BOARD))
 	refused.close()
-	screen.call("use_folder", SHOT_BOARDS)
+	screen.use_folder(SHOT_BOARDS)
 	var source := ProjectSettings.globalize_path("res://levels/pachinko/windmills.board")
-	screen.call("import_files", PackedStringArray([source]))
+	screen.import_files(PackedStringArray([source]))
 	for frame in 120:
 		await tree.process_frame
-		if not screen.call("is_loading"):
+		if not screen.is_loading():
 			break
-	var slots: Array = screen.call("my_slots")
+	var slots: Array = screen.my_slots()
 	if not slots.is_empty():
 		(slots[0].get("card") as Control).grab_focus()
 	for frame in 10:

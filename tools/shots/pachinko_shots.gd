@@ -21,7 +21,9 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if not shot_name in NAMES:
 		printerr("shots: pachinko_shots has no shot '%s'" % shot_name)
 		return ERR_INVALID_PARAMETER
-	var game := await ScreenOpener.open(tree, App.start_game.bind("pachinko", BOARD), GAME_SCENE)
+	var game := await ScreenOpener.open(
+		tree, App.start_game.bind(BoardLevel.PACHINKO_NAME, BOARD), GAME_SCENE
+	)
 	if game == null:
 		return ERR_CANT_OPEN
 	var rules := (game as PachinkoGame).rules

@@ -1,8 +1,8 @@
 @tool
 extends BoardAction
 ## Adds a set of things to a board: field pins, pockets (with their stamped rim pins and
-## special pin), walls, black holes, ball starts and bonus pockets (kept in role order, as
-## the board file stores them). Placing, pasting and duplicating are all this action;
+## special pin), walls, black holes, ball starts, bonus pockets (kept in role order, as
+## the board file stores them) and windmills. Placing, pasting and duplicating are all this action;
 ## `added` lists the new items so the editor can select them.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -14,6 +14,7 @@ var _data: Dictionary
 var _name: String
 var _pockets: Array[PocketSpec] = []
 var _bonus: Array[BonusPocketSpec] = []
+var _windmills: Array[WindmillSpec] = []
 
 
 ## `item_set` has the shape of BoardItems.empty_set(); positions are board pixels.
@@ -27,6 +28,8 @@ func _init(on_level: BoardLevel, item_set: Dictionary, action_name := "Add to bo
 	if on_level != null and on_level.is_pachinko():
 		for spec: BonusPocketSpec in item_set.get("bonus", []):
 			_bonus.append(Items.moved_bonus(spec, Vector2.ZERO))
+		for spec: WindmillSpec in item_set.get("windmills", []):
+			_windmills.append(spec.moved(Vector2.ZERO))
 
 
 func get_name() -> String:
@@ -39,18 +42,7 @@ func size() -> int:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(
-		[
-			"pins",
-			"pin_pocket",
-			"pin_special",
-			"pockets",
-			"walls",
-			"holes",
-			"ball_starts",
-			"bonus_pockets"
-		]
-	)
+	return PackedStringArray(Items.ITEM_FIELDS)
 
 
 func _apply() -> void:
@@ -93,20 +85,16 @@ func _apply() -> void:
 	if not _bonus.is_empty():
 		var bonus := level.bonus_pockets.duplicate()
 		for spec in _bonus:
-			bonus.insert(role_slot(bonus, spec.role), spec)
+			bonus.insert(BonusPocketSpec.role_slot(bonus, spec.role), spec)
 		level.bonus_pockets = bonus
 		for spec in _bonus:
 			added.append(Items.make(Items.Kind.BONUS, level.bonus_pockets.find(spec)))
-
-
-## Where a new bonus pocket of `role` goes: after the last one of the same or an earlier
-## role, so the board stays in role order (start pockets, attackers, tulips).
-static func role_slot(pockets: Array[BonusPocketSpec], role: int) -> int:
-	var slot := 0
-	for i in pockets.size():
-		if pockets[i] != null and pockets[i].role <= role:
-			slot = i + 1
-	return slot
+	if not _windmills.is_empty():
+		var wheels := level.windmills.duplicate()
+		for spec in _windmills:
+			added.append(Items.make(Items.Kind.WINDMILL, wheels.size()))
+			wheels.append(spec)
+		level.windmills = wheels
 
 
 func _append_walls(walls: PackedVector2Array) -> PackedVector2Array:

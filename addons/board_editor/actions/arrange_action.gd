@@ -22,7 +22,16 @@ func get_name() -> String:
 
 func _touched_fields() -> PackedStringArray:
 	return PackedStringArray(
-		["pins", "pockets", "walls", "holes", "ball_starts", "goal_center", "bonus_pockets"]
+		[
+			"pins",
+			"pockets",
+			"walls",
+			"holes",
+			"ball_starts",
+			"goal_center",
+			"bonus_pockets",
+			"windmills"
+		]
 	)
 
 

@@ -1,7 +1,7 @@
 @tool
 extends BoardAction
 ## Removes items: pins, pockets (with their rim pins; the other pins' pocket indices are
-## renumbered), walls, holes, ball starts and bonus pockets. The goal cannot be removed,
+## renumbered), walls, holes, ball starts, bonus pockets and windmills. The goal cannot be removed,
 ## only moved.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
@@ -19,18 +19,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(
-		[
-			"pins",
-			"pin_pocket",
-			"pin_special",
-			"pockets",
-			"walls",
-			"holes",
-			"ball_starts",
-			"bonus_pockets"
-		]
-	)
+	return PackedStringArray(Items.ITEM_FIELDS)
 
 
 func _apply() -> void:
@@ -75,6 +64,13 @@ func _apply() -> void:
 			if not gone_bonus.has(i):
 				bonus.append(level.bonus_pockets[i])
 		level.bonus_pockets = bonus
+	var gone_windmills := Items.indices_of(_items, Items.Kind.WINDMILL)
+	if not gone_windmills.is_empty():
+		var wheels: Array[WindmillSpec] = []
+		for i in level.windmills.size():
+			if not gone_windmills.has(i):
+				wheels.append(level.windmills[i])
+		level.windmills = wheels
 
 
 static func _without(points: PackedVector2Array, gone: PackedInt32Array) -> PackedVector2Array:

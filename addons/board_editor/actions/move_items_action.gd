@@ -47,7 +47,16 @@ func preview(offset: Vector2) -> void:
 
 func _touched_fields() -> PackedStringArray:
 	return PackedStringArray(
-		["pins", "pockets", "walls", "holes", "ball_starts", "goal_center", "bonus_pockets"]
+		[
+			"pins",
+			"pockets",
+			"walls",
+			"holes",
+			"ball_starts",
+			"goal_center",
+			"bonus_pockets",
+			"windmills"
+		]
 	)
 
 
@@ -83,6 +92,8 @@ func _apply() -> void:
 					level.goal_center += offset
 				Items.Kind.BONUS:
 					level.bonus_pockets[item.y].position += offset
+				Items.Kind.WINDMILL:
+					level.windmills[item.y].position += offset
 	level.pins = pins
 	level.walls = walls
 	level.holes = holes

@@ -27,6 +27,19 @@ func get_name() -> String:
 	return _name
 
 
+## Re-applies the action with the point at `to` (a live handle drag).
+func preview(to: Vector2) -> void:
+	if is_applied():
+		undo()
+	_to = to
+	do()
+
+
+## Where the point goes.
+func target() -> Vector2:
+	return _to
+
+
 func _touched_fields() -> PackedStringArray:
 	return PackedStringArray([_field]) if POINT_FIELDS.has(_field) else PackedStringArray()
 

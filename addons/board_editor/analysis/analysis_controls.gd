@@ -47,3 +47,19 @@ func _init(
 	analyze.pressed.connect(on_analyze)
 	cancel.pressed.connect(on_cancel)
 	show.toggled.connect(on_show)
+
+
+## A run has started: Analyze off, Cancel on, an empty progress bar, `text` as the status.
+func show_running(text: String) -> void:
+	analyze.disabled = true
+	cancel.disabled = false
+	progress.visible = true
+	progress.value = 0.0
+	status.text = text
+
+
+## The run is over: Analyze on, Cancel off, the progress bar hidden.
+func show_idle() -> void:
+	analyze.disabled = false
+	cancel.disabled = true
+	progress.visible = false

@@ -78,11 +78,7 @@ func start() -> void:
 		return
 	_run_started = Time.get_ticks_msec()
 	_shown_shots = -1
-	_controls.analyze.disabled = true
-	_controls.cancel.disabled = false
-	_controls.progress.visible = true
-	_controls.progress.value = 0.0
-	_controls.status.text = "Climbing the rail at every power..."
+	_controls.show_running("Climbing the rail at every power...")
 	set_process(true)
 
 
@@ -149,9 +145,7 @@ func _finish() -> void:
 	_show_partial(not cancelled)
 	var seconds := (Time.get_ticks_msec() - _run_started) / 1000.0
 	_run = null
-	_controls.analyze.disabled = false
-	_controls.cancel.disabled = true
-	_controls.progress.visible = false
+	_controls.show_idle()
 	set_process(false)
 	if cancelled:
 		_controls.status.text = (

@@ -4,8 +4,9 @@ extends VBoxContainer
 ## the board (MazeAnalysis: RUNS games in easy and RUNS in hard mode) on worker threads while
 ## the editor stays responsive, with a progress bar and Cancel. The result (solve rate and
 ## median time per mode, the holes that swallowed balls) shows in the dock and over the
-## board; it is kept per board content for the editor session, so undoing back to an
-## analysed board shows its figures again.
+## board; it is kept per board content (BoardTextWriter.play_hash: names left out), in
+## memory and in user://analysis/ like pachinko's, so a rename, "Save board as", an undo back
+## to an analysed board or the next editor session shows its figures again.
 
 ## The overlay should be redrawn (new figures, or none to show).
 signal redraw_needed
@@ -50,10 +51,14 @@ func _ready() -> void:
 func bind(level: BoardLevel) -> void:
 	visible = level != null and level.is_maze()
 	_level = level if visible else null
-	var key := Writer.content_hash(_level) if _level != null else ""
+	var key := Writer.play_hash(_level) if _level != null else ""
 	if key == _key:
 		return
 	_key = key
+	if not key.is_empty() and not _results.has(key):
+		var stored := AnalysisCache.load_maze(key)  # analysed in an earlier session
+		if not stored.is_empty():
+			_results[key] = stored
 	_report = _results.get(key, {})
 	_say_result()
 	redraw_needed.emit()
@@ -68,11 +73,7 @@ func start() -> void:
 	_run_key = _key
 	_run = MazeAnalysis.create(_run_level, runs, SEED)
 	_run.start(OS.get_processor_count())
-	_controls.analyze.disabled = true
-	_controls.cancel.disabled = false
-	_controls.progress.visible = true
-	_controls.progress.value = 0.0
-	_controls.status.text = "The pilot is playing %d games..." % _run.games()
+	_controls.show_running("The pilot is playing %d games..." % _run.games())
 	set_process(true)
 
 
@@ -112,15 +113,16 @@ func _finish() -> void:
 	var finished := _run.report()
 	_run = null
 	_run_level = null
-	_controls.analyze.disabled = false
-	_controls.cancel.disabled = true
-	_controls.progress.visible = false
+	_controls.show_idle()
 	set_process(false)
 	if cancelled:
 		_say_result()
 		_controls.status.text = "Cancelled: no figures kept.\n" + _controls.status.text
 		return
 	_results[_run_key] = finished
+	var saved := AnalysisCache.save_maze(_run_key, finished)
+	if saved != OK:
+		push_warning("Maze analysis: could not keep the figures (%s)." % error_string(saved))
 	if _run_key == _key:
 		_report = finished
 	_say_result()

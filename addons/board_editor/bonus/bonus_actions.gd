@@ -33,19 +33,11 @@ class AddBonus:
 	func _apply() -> void:
 		var pockets := level.bonus_pockets.duplicate()
 		for spec in _specs:
-			pockets.insert(_slot_for(pockets, spec.role), spec)
+			pockets.insert(BonusPocketSpec.role_slot(pockets, spec.role), spec)
 		level.bonus_pockets = pockets
 		added = PackedInt32Array()
 		for spec in _specs:
 			added.append(level.bonus_pockets.find(spec))
-
-	# After the last pocket of the same or an earlier role.
-	static func _slot_for(pockets: Array[BonusPocketSpec], role: int) -> int:
-		var slot := 0
-		for i in pockets.size():
-			if pockets[i] != null and pockets[i].role <= role:
-				slot = i + 1
-		return slot
 
 
 ## Removes the bonus pocket at `index` (nothing for an unknown index).
@@ -143,6 +135,6 @@ class SetBonusRole:
 		var changed := original.duplicate() as BonusPocketSpec
 		changed.role = _role
 		pockets.remove_at(_index)
-		pockets.insert(AddBonus._slot_for(pockets, _role), changed)
+		pockets.insert(BonusPocketSpec.role_slot(pockets, _role), changed)
 		level.bonus_pockets = pockets
 		moved_to = level.bonus_pockets.find(changed)

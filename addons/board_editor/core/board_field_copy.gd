@@ -4,13 +4,20 @@ extends RefCounted
 ## it changed. Arrays are copied: Godot 4 passes packed arrays by reference, so a capture
 ## that kept the board's own array would change along with it.
 ##
-## Pockets and bonus pockets are resources that other code (the dock, the inspector) may hold
-## on to, so a capture keeps the same objects and their values, and a restore puts both back.
+## Pockets, bonus pockets and windmills are resources that other code (the dock, the
+## inspector) may hold on to, so a capture keeps the same objects and their values, and a
+## restore puts both back.
 
 ## The BonusPocketSpec fields a capture keeps (its role never changes after it is made).
 const BONUS_VALUES: Array[String] = [
 	"position", "width", "depth", "payout", "symbols", "open_seconds", "open_catches"
 ]
+## The WindmillSpec fields a capture keeps.
+const WINDMILL_VALUES: Array[String] = [
+	"position", "blades", "length", "free_spin", "speed", "friction"
+]
+## Resource lists captured as [object, values...] entries: field -> the values kept.
+const SPEC_LISTS := {"bonus_pockets": BONUS_VALUES, "windmills": WINDMILL_VALUES}
 
 
 ## The values of `fields` on `level`, ready for `restore()`.
@@ -22,11 +29,12 @@ static func capture(level: BoardLevel, fields: PackedStringArray) -> Dictionary:
 			for spec: PocketSpec in level.pockets:
 				saved.append([spec, spec.position, spec.width, spec.depth, spec.payout])
 			snap[field] = saved
-		elif field == "bonus_pockets":
+		elif SPEC_LISTS.has(field):
+			var values: Array[String] = SPEC_LISTS[field]
 			var kept: Array = []
-			for spec: BonusPocketSpec in level.bonus_pockets:
+			for spec: Resource in level.get(field):
 				var entry: Array = [spec]
-				for value in BONUS_VALUES:
+				for value in values:
 					entry.append(spec.get(value) if spec != null else null)
 				kept.append(entry)
 			snap[field] = kept
@@ -57,6 +65,15 @@ static func restore(level: BoardLevel, snap: Dictionary) -> void:
 						spec.set(BONUS_VALUES[k], entry[k + 1])
 				bonus.append(spec)
 			level.bonus_pockets = bonus
+		elif field == "windmills":
+			var wheels: Array[WindmillSpec] = []
+			for entry: Array in snap[field]:
+				var spec: WindmillSpec = entry[0]
+				if spec != null:
+					for k in WINDMILL_VALUES.size():
+						spec.set(WINDMILL_VALUES[k], entry[k + 1])
+				wheels.append(spec)
+			level.windmills = wheels
 		else:
 			level.set(field, _copy(snap[field]))
 

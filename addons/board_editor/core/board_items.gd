@@ -3,14 +3,26 @@ extends RefCounted
 ## What the editor can select on a board, and how to read one item back.
 ##
 ## An item is a `Vector2i(kind, index)`: pins, pockets, walls (pair index), holes, ball
-## starts, the goal and bonus pockets (index into `bonus_pockets`). Pins that belong to a
+## starts, the goal, bonus pockets (index into `bonus_pockets`) and windmills. Pins that belong to a
 ## pocket are never items of their own: the pocket is (its rim pins are stamped, not placed
 ## one by one); a bonus pocket's pins are not on the board at all (the world stamps them).
 
-enum Kind { PIN, POCKET, WALL, HOLE, START, GOAL, BONUS }
+enum Kind { PIN, POCKET, WALL, HOLE, START, GOAL, BONUS, WINDMILL }
 
 ## Returned by the pickers when nothing is there.
 const NONE := Vector2i(-1, -1)
+## The BoardLevel fields that hold items (what adding or deleting items may change).
+const ITEM_FIELDS: Array[String] = [
+	"pins",
+	"pin_pocket",
+	"pin_special",
+	"pockets",
+	"walls",
+	"holes",
+	"ball_starts",
+	"bonus_pockets",
+	"windmills",
+]
 
 
 ## The item of `kind` at `index`.
@@ -40,6 +52,8 @@ static func position_of(level: BoardLevel, item: Vector2i) -> Vector2:
 			return level.ball_starts[item.y]
 		Kind.BONUS:
 			return level.bonus_pockets[item.y].position
+		Kind.WINDMILL:
+			return level.windmills[item.y].position
 		_:
 			return level.goal_center
 
@@ -63,6 +77,8 @@ static func is_valid(level: BoardLevel, item: Vector2i) -> bool:
 			return level.is_maze()
 		Kind.BONUS:
 			return item.y < level.bonus_pockets.size() and level.bonus_pockets[item.y] != null
+		Kind.WINDMILL:
+			return item.y < level.windmills.size() and level.windmills[item.y] != null
 	return false
 
 
@@ -86,7 +102,7 @@ static func pocket_pins(level: BoardLevel, pocket_index: int) -> PackedInt32Arra
 
 
 ## A copy of the selected items as plain data, positions relative to `origin`, for the
-## clipboard and for duplicating: {pins, walls, holes, starts, pockets, bonus}.
+## clipboard and for duplicating: {pins, walls, holes, starts, pockets, bonus, windmills}.
 static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) -> Dictionary:
 	# Local arrays, stored at the end: a packed array taken out of a Dictionary is a copy.
 	var pins := PackedVector2Array()
@@ -95,6 +111,7 @@ static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) 
 	var starts := PackedVector2Array()
 	var pockets: Array = []
 	var bonus: Array = []
+	var windmills: Array = []
 	for item in items:
 		if not is_valid(level, item):
 			continue
@@ -115,6 +132,8 @@ static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) 
 				)
 			Kind.BONUS:
 				bonus.append(moved_bonus(level.bonus_pockets[item.y], -origin))
+			Kind.WINDMILL:
+				windmills.append(level.windmills[item.y].moved(-origin))
 	return {
 		"pins": pins,
 		"walls": walls,
@@ -122,6 +141,7 @@ static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) 
 		"starts": starts,
 		"pockets": pockets,
 		"bonus": bonus,
+		"windmills": windmills,
 	}
 
 
@@ -141,6 +161,7 @@ static func empty_set() -> Dictionary:
 		"starts": PackedVector2Array(),
 		"pockets": [],
 		"bonus": [],
+		"windmills": [],
 	}
 
 
@@ -160,6 +181,9 @@ static func offset_set(data: Dictionary, offset: Vector2) -> Dictionary:
 	var moved_bonus_pockets: Array = moved["bonus"]
 	for spec: BonusPocketSpec in data.get("bonus", []):
 		moved_bonus_pockets.append(moved_bonus(spec, offset))
+	var moved_windmills: Array = moved["windmills"]
+	for spec: WindmillSpec in data.get("windmills", []):
+		moved_windmills.append(spec.moved(offset))
 	return moved
 
 
@@ -172,4 +196,5 @@ static func set_size(data: Dictionary) -> int:
 		total += points.size()
 	var pockets: Array = data.get("pockets", [])
 	var bonus: Array = data.get("bonus", [])
-	return total + pockets.size() + bonus.size()
+	var windmills: Array = data.get("windmills", [])
+	return total + pockets.size() + bonus.size() + windmills.size()

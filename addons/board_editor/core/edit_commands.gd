@@ -49,12 +49,51 @@ static func duplicate_selection(session: Session) -> bool:
 	if items.is_empty():
 		return false
 	var data := Items.extract(session.level, items, Vector2.ZERO)
+	var offset := duplicate_offset(session, items)
 	var action := AddItemsAction.new(
-		session.level, Items.offset_set(data, Vector2.ONE * step(session)), "Duplicate board items"
+		session.level, Items.offset_set(data, offset), "Duplicate board items"
 	)
 	session.commit(action)
 	session.select(action.added)
 	return true
+
+
+## Where Ctrl+D puts the copy: right of the original, clear of it by a ball's width (so the
+## copy never overlaps it, an instant error), a whole number of grid steps away.
+static func duplicate_offset(session: Session, items: Array[Vector2i]) -> Vector2:
+	var level := session.level
+	var bounds := Rect2()
+	for k in items.size():
+		var box := extent_of(level, items[k])
+		bounds = box if k == 0 else bounds.merge(box)
+	var grid := maxf(step(session), 1.0)
+	var clear := bounds.size.x + level.ball_radius * 2.0
+	return Vector2(ceilf(clear / grid) * grid, 0.0)
+
+
+## The area an item covers on the board (its pins, cup, capsule or circle).
+static func extent_of(level: BoardLevel, item: Vector2i) -> Rect2:
+	var at := Items.position_of(level, item)
+	var radius := 0.0
+	match item.x:
+		Items.Kind.PIN:
+			radius = level.pin_radius
+		Items.Kind.POCKET:
+			var spec: PocketSpec = level.pockets[item.y]
+			var cup := Rect2(at - Vector2(spec.width * 0.5, 0.0), Vector2(spec.width, spec.depth))
+			return cup.grow(level.pin_radius)
+		Items.Kind.BONUS:
+			var bonus := level.bonus_pockets[item.y]
+			return Rect2(at - Vector2(bonus.width * 0.5, 0.0), Vector2(bonus.width, bonus.depth))
+		Items.Kind.WALL:
+			var a := level.walls[item.y * 2]
+			var b := level.walls[item.y * 2 + 1]
+			return Rect2(a, Vector2.ZERO).expand(b).grow(level.wall_width * 0.5)
+		Items.Kind.HOLE:
+			radius = level.hole_radius
+		Items.Kind.START:
+			radius = level.ball_radius
+	return Rect2(at, Vector2.ZERO).grow(radius)
 
 
 ## Moves the selection by `direction` grid steps (one pixel per step without snapping).

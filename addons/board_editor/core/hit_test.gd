@@ -19,8 +19,9 @@ const MAZE_HANDLES: Array[String] = ["goal_radius"]
 
 
 ## The item under `point` (within `tolerance` px of its shape), nearest first; NONE if
-## nothing is there. A pocket's rim pins pick the pocket; a bonus pocket is picked inside
-## its cup (rim pins included).
+## nothing is there. A click inside a pin, hole or ball start picks it even over a wall. A
+## pocket's rim pins pick the pocket; a bonus pocket is picked inside its cup (rim pins
+## included), a windmill inside the circle its blades sweep.
 static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2i:
 	var best := Items.NONE
 	var best_distance := INF
@@ -51,7 +52,9 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 			point, level.walls[w * 2], level.walls[w * 2 + 1]
 		)
 		var gap := closest.distance_to(point) - level.wall_width * 0.5
-		if gap <= tolerance and gap < best_distance:
+		# A start, hole or pin drawn over a wall wins a click inside it: the wall is bigger
+		# and can be picked anywhere else along its length.
+		if gap <= tolerance and gap < best_distance and best_distance > 0.0:
 			best_distance = gap
 			best = Items.make(Items.Kind.WALL, w)
 	for i in level.bonus_pockets.size():
@@ -61,6 +64,15 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 			if gap < best_distance:
 				best_distance = gap
 				best = Items.make(Items.Kind.BONUS, i)
+	for i in level.windmills.size():
+		var spec := level.windmills[i]
+		if spec == null:
+			continue
+		# Inside the sweep; nearer the pin counts as nearer (blades are thin and turn).
+		var gap := spec.position.distance_to(point) - spec.sweep_radius()
+		if gap <= tolerance and gap * 0.5 < best_distance:
+			best_distance = gap * 0.5
+			best = Items.make(Items.Kind.WINDMILL, i)
 	if level.is_maze() and best == Items.NONE:
 		# The goal is big: only its middle picks it, so walls and starts inside stay reachable.
 		if level.goal_center.distance_to(point) <= maxf(tolerance, level.goal_radius * 0.35):
@@ -106,6 +118,10 @@ static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:
 		var spec := level.bonus_pockets[i]
 		if spec != null and box.has_point(spec.position):
 			found.append(Items.make(Items.Kind.BONUS, i))
+	for i in level.windmills.size():
+		var wheel := level.windmills[i]
+		if wheel != null and box.has_point(wheel.position):
+			found.append(Items.make(Items.Kind.WINDMILL, i))
 	if level.is_maze() and box.has_point(level.goal_center):
 		found.append(Items.make(Items.Kind.GOAL, 0))
 	return found

@@ -12,6 +12,7 @@ const KINDS := {
 	Items.Kind.WALL: ["Wall", "walls"],
 	Items.Kind.HOLE: ["Black hole", "holes"],
 	Items.Kind.START: ["Ball start", "ball_starts"],
+	Items.Kind.WINDMILL: ["Windmill", "windmills"],
 }
 
 

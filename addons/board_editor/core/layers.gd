@@ -11,6 +11,7 @@ const LAYERS := {
 	"Pins": [Items.Kind.PIN, BoardPainter.Layer.PINS, BoardLevel.Kind.PACHINKO],
 	"Pockets": [Items.Kind.POCKET, BoardPainter.Layer.POCKETS, BoardLevel.Kind.PACHINKO],
 	"Bonus pieces": [Items.Kind.BONUS, BoardPainter.Layer.BONUS, BoardLevel.Kind.PACHINKO],
+	"Windmills": [Items.Kind.WINDMILL, BoardPainter.Layer.WINDMILLS, BoardLevel.Kind.PACHINKO],
 	"Rail and gutter":
 	[-1, BoardPainter.Layer.RAIL | BoardPainter.Layer.GUTTER, BoardLevel.Kind.PACHINKO],
 	"Walls": [Items.Kind.WALL, BoardPainter.Layer.WALLS, BoardLevel.Kind.MAZE],

@@ -68,6 +68,25 @@ static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 			bonus_spots.append(mirrored)
 			bonus.append(Items.moved_bonus(spec, mirrored - spec.position))
 	result["bonus"] = bonus
+	result["windmills"] = _mirrored_windmills(data.get("windmills", []), axis)
+	return result
+
+
+# The windmills and their mirror images, which turn the other way (a mirrored board plays
+# the same from both sides); one on the axis stays single.
+static func _mirrored_windmills(wheels: Array, axis: float) -> Array:
+	var result: Array = []
+	var spots := PackedVector2Array()
+	for spec: WindmillSpec in wheels:
+		result.append(spec.moved(Vector2.ZERO))
+		spots.append(spec.position)
+	for spec: WindmillSpec in wheels:
+		var mirrored := reflect(spec.position, axis)
+		if not _has_point(spots, mirrored):
+			spots.append(mirrored)
+			var twin := spec.moved(mirrored - spec.position)
+			twin.speed = -spec.speed
+			result.append(twin)
 	return result
 
 
@@ -94,6 +113,8 @@ static func partner(level: BoardLevel, item: Vector2i, axis: float) -> Vector2i:
 			count = level.ball_starts.size()
 		Items.Kind.BONUS:
 			count = level.bonus_pockets.size()
+		Items.Kind.WINDMILL:
+			count = level.windmills.size()
 	for i in count:
 		var other := Vector2i(item.x, i)
 		if item.x == Items.Kind.PIN and level.pin_pocket.size() > i and level.pin_pocket[i] >= 0:

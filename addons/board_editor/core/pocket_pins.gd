@@ -6,7 +6,7 @@ extends RefCounted
 
 ## The stamped pins of `spec` on `level`: rim pins, then the special pin (flag 1).
 static func stamp(level: BoardLevel, spec: PocketSpec) -> Dictionary:
-	var pins := PocketStamp.pins_for(spec, level.pin_radius, level.ball_radius)
+	var pins := PocketStamp.rim_pins(spec, level.pin_radius, level.ball_radius)
 	var special := PackedByteArray()
 	special.resize(pins.size())
 	if not pins.is_empty():

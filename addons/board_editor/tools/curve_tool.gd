@@ -38,9 +38,10 @@ func release(at: Vector2, _event: InputEventMouseButton) -> bool:
 		return true
 	var data := Items.empty_set()
 	data["pins"] = pins
-	var action := AddItemsAction.new(
-		level(), session.mirrored(data), "Add a %d-pin curve" % pins.size()
-	)
+	var placed := session.mirrored(data)
+	var placed_pins: PackedVector2Array = placed["pins"]
+	var count := placed_pins.size()  # both halves when mirrored
+	var action := AddItemsAction.new(level(), placed, "Add a %d-pin curve" % count)
 	session.commit(action)
 	session.select(action.added)
 	return true

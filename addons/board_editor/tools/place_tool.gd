@@ -1,12 +1,13 @@
 @tool
 extends "res://addons/board_editor/tools/board_tool.gd"
-## Click to place one thing: a pin, a black hole, a ball start (all mirrored in mirror
-## mode), or the goal (moves it). Snapped to the grid, or to maze cells on a maze.
+## Click to place one thing: a pin, a black hole, a ball start, a windmill (all mirrored in
+## mirror mode; a mirrored windmill turns the other way), or the goal (moves it). Snapped to
+## the grid, or to maze cells on a maze.
 
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 
-## What this tool places: Items.Kind.PIN, HOLE, START or GOAL.
+## What this tool places: Items.Kind.PIN, HOLE, START, WINDMILL or GOAL.
 var kind: int
 
 
@@ -21,9 +22,16 @@ func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 		session.commit(SetPropertiesAction.new(level(), {"goal_center": spot}, "Move goal"))
 		return true
 	var data := Items.empty_set()
-	var key := {Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "starts"}
-	data[key[kind]] = PackedVector2Array([spot])
-	var names := {Items.Kind.PIN: "Add pin", Items.Kind.HOLE: "Add black hole"}
+	if kind == Items.Kind.WINDMILL:
+		data["windmills"] = [new_windmill(spot)]
+	else:
+		var key := {Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "starts"}
+		data[key[kind]] = PackedVector2Array([spot])
+	var names := {
+		Items.Kind.PIN: "Add pin",
+		Items.Kind.HOLE: "Add black hole",
+		Items.Kind.WINDMILL: "Add windmill",
+	}
 	var action := AddItemsAction.new(
 		level(), session.mirrored(data), str(names.get(kind, "Add ball start"))
 	)
@@ -45,11 +53,21 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var spots := PackedVector2Array([spot])
 	if session.mirror_enabled and kind != Items.Kind.GOAL:
 		spots.append(Vector2(2.0 * session.mirror_axis() - spot.x, spot.y))
+	if kind == Items.Kind.WINDMILL:
+		radius = new_windmill(spot).sweep_radius()
 	if kind == Items.Kind.PIN:
 		Draw.ghost_points(canvas, to_screen, spots, radius, level())
 		return
 	for point in spots:
 		Draw.circle(canvas, to_screen, point, radius, Draw.GHOST_COLOR, kind != Items.Kind.GOAL)
+
+
+## The windmill this tool places at `at`: four blades turning clockwise (WindmillSpec's
+## defaults; the property panel changes them).
+static func new_windmill(at: Vector2) -> WindmillSpec:
+	return WindmillSpec.driven(
+		at, WindmillSpec.DEFAULT_BLADES, WindmillSpec.DEFAULT_LENGTH, WindmillSpec.DEFAULT_SPEED
+	)
 
 
 func _spot(at: Vector2) -> Vector2:

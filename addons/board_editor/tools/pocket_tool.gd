@@ -28,7 +28,7 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 		var spec := PocketSpec.create(
 			mouth, session.pocket_width, session.pocket_depth, session.pocket_payout
 		)
-		var pins := PocketStamp.pins_for(spec, level().pin_radius, level().ball_radius)
+		var pins := PocketStamp.rim_pins(spec, level().pin_radius, level().ball_radius)
 		Draw.ghost_points(canvas, to_screen, pins, level().pin_radius)
 		var half := Vector2(spec.width * 0.5, 0)
 		Draw.line(canvas, to_screen, mouth - half, mouth + half, Draw.GHOST_COLOR)

@@ -1,10 +1,12 @@
 @tool
 extends "res://addons/board_editor/tools/board_tool.gd"
 ## Select / move: click picks (shift adds, ctrl toggles), dragging empty space draws a
-## selection box, dragging a selected item moves the selection (live, one undo step).
+## selection box, dragging a selected item moves the selection (live, one undo step), and
+## dragging an end dot of a selected wall moves that end of that wall only.
 
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
+const SetPointAction := preload("res://addons/board_editor/actions/set_point_action.gd")
 
 ## Screen pixels the mouse must travel before a press becomes a drag.
 const DRAG_START_PIXELS := 4.0
@@ -15,12 +17,18 @@ var _anchor := Items.NONE
 var _box_mode := 0  # 0 replace, 1 add (shift), 2 toggle (ctrl)
 var _boxing := false
 var _move: MoveItemsAction = null
+# The wall end being dragged: its index in the board's `walls` points (-1: none).
+var _end_index := -1
+var _end_drag: SetPointAction = null
 
 
 func press(at: Vector2, event: InputEventMouseButton) -> bool:
 	_pressed = true
 	_press_at = at
 	_box_mode = 1 if event.shift_pressed else (2 if event.ctrl_pressed else 0)
+	_end_index = selected_wall_end(at) if _box_mode == 0 else -1
+	if _end_index >= 0:
+		return true  # a handle: the wall keeps its selection, only this end moves
 	_anchor = pick(at)
 	var selection: Array[Vector2i] = session.selection
 	if _anchor == Items.NONE:
@@ -44,6 +52,9 @@ func motion(at: Vector2, _event: InputEventMouseMotion) -> bool:
 		return false
 	if _boxing:
 		return true
+	if _end_index >= 0:
+		_drag_end(at)
+		return true
 	if _anchor == Items.NONE:
 		return true
 	if _move == null and at.distance_to(_press_at) < DRAG_START_PIXELS * pixel:
@@ -61,6 +72,12 @@ func release(at: Vector2, _event: InputEventMouseButton) -> bool:
 	if _boxing:
 		_boxing = false
 		_finish_box(Rect2(_press_at, at - _press_at))
+	elif _end_index >= 0:
+		_end_index = -1
+		var drag := _end_drag
+		_end_drag = null
+		if drag != null:
+			session.commit(drag, true)
 	elif _move != null:
 		var move := _move
 		_move = null
@@ -75,10 +92,45 @@ func cancel() -> bool:
 	var busy := _pressed
 	_pressed = false
 	_boxing = false
+	_end_index = -1
+	if _end_drag != null:
+		_end_drag.undo()
+		_end_drag = null
 	if _move != null:
 		_move.undo()
 		_move = null
 	return busy
+
+
+## The index in the board's `walls` points of the selected wall end under `at`, or -1. Only
+## selected walls show end dots, so at a corner two walls share, only the selected one's end
+## is a handle.
+func selected_wall_end(at: Vector2) -> int:
+	var best := -1
+	var best_distance := tolerance()
+	for item: Vector2i in session.selection:
+		if item.x != Items.Kind.WALL or not Items.is_valid(level(), item):
+			continue
+		for end in 2:
+			var index := item.y * 2 + end
+			var distance := level().walls[index].distance_to(at)
+			if distance <= best_distance:
+				best = index
+				best_distance = distance
+	return best
+
+
+# Moves the dragged wall end to `at` (on the wall grid when snapping), live.
+func _drag_end(at: Vector2) -> void:
+	if _end_drag == null and at.distance_to(_press_at) < DRAG_START_PIXELS * pixel:
+		return
+	var to := session.snap_wall_point(at) if session.snap_enabled else at
+	var other := level().walls[_end_index + (1 if _end_index % 2 == 0 else -1)]
+	if to.distance_to(other) < 1.0:
+		return  # never fold a wall to nothing
+	if _end_drag == null:
+		_end_drag = SetPointAction.new(level(), "walls", _end_index, to, "Move wall end")
+	_end_drag.preview(to)
 
 
 func draw(canvas: Control, to_screen: Transform2D) -> void:

@@ -16,7 +16,7 @@ const FIELDS := {
 	"radius": ["Radius (px)", 2.0, 2000.0, 0.5],
 	"start_deg": ["Start angle (°)", -720.0, 720.0, 0.5],
 	"end_deg": ["End angle (°)", -720.0, 720.0, 0.5],
-	"count": ["Pins", 2.0, 400.0, 1.0],
+	"count": ["Pins", 2.0, 400.0, 1.0, true],
 }
 
 var _session: Session

@@ -7,6 +7,8 @@ signal play_test_requested
 signal issue_focused(index: int)
 signal new_board_requested(kind: int)
 signal save_as_requested
+## "New board…": a new board file and its level scene, opened for editing.
+signal new_board_file_requested
 ## A text field in the dock took the keyboard focus.
 signal field_focused
 ## A field was submitted (Enter): the keyboard should go back to the viewport.
@@ -59,6 +61,14 @@ func _init() -> void:
 	)
 	_save_as.pressed.connect(func() -> void: save_as_requested.emit())
 	add_child(_save_as)
+	var new_file := Button.new()
+	new_file.text = "New board..."
+	new_file.tooltip_text = (
+		"Start a new pachinko or maze board: writes levels/<kind>/<name>.board\n"
+		+ "and its scene in scenes/boards/, and opens it here (also in Project > Tools)."
+	)
+	new_file.pressed.connect(func() -> void: new_board_file_requested.emit())
+	add_child(new_file)
 	_new_box = HBoxContainer.new()
 	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		var button := Button.new()
@@ -209,7 +219,7 @@ static func count_text(level: BoardLevel) -> String:
 	return (
 		"Pins: %d   Pockets: %d\nStart pockets: %d   Attackers: %d   Tulips: %d"
 		% [
-			level.pins.size(),
+			level.pin_pocket.count(-1),  # a pocket's rim pins are part of the pocket
 			level.pockets.size(),
 			ItemIds.count(level, "start_pockets"),
 			ItemIds.count(level, "attackers"),

@@ -96,6 +96,9 @@ static func _draw_selected(
 			var cup := BonusChecks.cup_rect(level, level.bonus_pockets[item.y]).grow(3.0)
 			var frame := Rect2(to_screen * cup.position, cup.size * to_screen.get_scale())
 			canvas.draw_rect(frame, color, false, 2.0)
+		Items.Kind.WINDMILL:
+			var wheel := level.windmills[item.y]
+			Draw.circle(canvas, to_screen, wheel.position, wheel.sweep_radius() + 3.0, color)
 
 
 static func _draw_issue(

@@ -5,9 +5,11 @@ extends RefCounted
 
 const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const REQUEST_PATH := PlaytestRequest.PATH
+## Godot's editor setting "save all scenes before running".
+const SAVE_BEFORE_RUNNING := "run/auto_save/save_before_running"
 const GAME_SCENES := {
-	"pachinko": "res://scenes/pachinko/pachinko_game.tscn",
-	"maze": "res://scenes/maze/maze_game.tscn",
+	BoardLevel.PACHINKO_NAME: "res://scenes/pachinko/pachinko_game.tscn",
+	BoardLevel.MAZE_NAME: "res://scenes/maze/maze_game.tscn",
 }
 
 
@@ -36,5 +38,20 @@ static func run(level: BoardLevel) -> String:
 	var scene: String = GAME_SCENES[BoardLevel.kind_name(level.kind)]
 	if not ResourceLoader.exists(scene):
 		return "Play-test: the game scene %s is missing." % scene
-	EditorInterface.play_custom_scene(scene)
+	_play_without_saving_scenes(scene)
 	return ""
+
+
+# The game reads the board file (saved above), never the open scenes. Godot saves every open
+# scene before it runs one, and a scene that was never saved opens its "Save Scene As"
+# dialog, modal, behind the game window: the editor looks frozen. So the play-test runs with
+# that setting off for this one run, then puts it back.
+static func _play_without_saving_scenes(scene: String) -> void:
+	var settings := EditorInterface.get_editor_settings()
+	var had := settings.has_setting(SAVE_BEFORE_RUNNING)
+	var before: Variant = settings.get_setting(SAVE_BEFORE_RUNNING) if had else null
+	if had:
+		settings.set_setting(SAVE_BEFORE_RUNNING, false)
+	EditorInterface.play_custom_scene(scene)
+	if had:
+		settings.set_setting(SAVE_BEFORE_RUNNING, before)

@@ -175,7 +175,12 @@ func _on_value_changed(value: float, key: String) -> void:
 	if _session == null or _session.selection.size() != 1:
 		return
 	var item: Vector2i = _session.selection[0]
-	var action := ItemProperties.action_for(_session.level, item, key, value)
+	var action: BoardAction = null
+	if _session.mirror_enabled:
+		var axis := _session.mirror_axis()
+		action = ItemProperties.mirrored_action_for(_session.level, item, key, value, axis)
+	if action == null:
+		action = ItemProperties.action_for(_session.level, item, key, value)
 	if action != null:
 		_session.commit(action)
 	refresh()

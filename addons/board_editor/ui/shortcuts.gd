@@ -34,7 +34,10 @@ const TOOLS := {
 	[
 		KEY_X,
 		"Erase",
-		"Click a pin, pocket, bonus pocket, wall, hole or start to delete it; drag across many."
+		(
+			"Click a pin, pocket, bonus pocket, windmill, wall, hole or start to delete it; drag"
+			+ " across many."
+		)
 	],
 	Session.Tool.START_POCKET:
 	[
@@ -46,6 +49,15 @@ const TOOLS := {
 	[KEY_A, "Attacker", "Click to add an attacker (opens on a jackpot); click one to remove it."],
 	Session.Tool.TULIP:
 	[KEY_F, "Tulip", "Click to add a tulip (opens after a catch); click one to remove it."],
+	Session.Tool.WINDMILL:
+	[
+		KEY_I,
+		"Windmill",
+		(
+			"Click to add a windmill: four blades turning clockwise (set blades, speed or free"
+			+ " spin with the select tool)."
+		)
+	],
 }
 ## Toggles.
 const SNAP_KEY := KEY_N

@@ -13,6 +13,7 @@ const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
 const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
 const WinEffects := preload("res://scenes/pachinko/board/win_effects.gd")
 const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
+const WindmillLayer := preload("res://scenes/pachinko/board/windmill_layer.gd")
 const FASCIA_SIZE := 1000.0
 ## How far the plate reaches beyond the ring, as a share of the ring radius.
 const PLATE_REACH := 1.1
@@ -50,6 +51,7 @@ func bind(rules: PachinkoRules) -> void:
 		layer.setup(level)
 	balls.bind(rules)
 	_pin_lights().bind(rules)
+	_windmill_layer().bind(rules)
 	fascia.position = level.ring_center
 	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
 	_bake_scale = 0.0
@@ -65,6 +67,17 @@ func _pin_lights() -> PinLights:
 		add_child(lights)
 		move_child(lights, balls.get_index())
 	return lights
+
+
+## The turning windmills, made on first use and drawn under the balls (above the pin lights).
+func _windmill_layer() -> WindmillLayer:
+	var layer := get_node_or_null(^"Windmills") as WindmillLayer
+	if layer == null:
+		layer = WindmillLayer.new()
+		layer.name = "Windmills"
+		add_child(layer)
+		move_child(layer, balls.get_index())
+	return layer
 
 
 ## Scales and places the board so its plate fills `area` (screen pixels), centred.

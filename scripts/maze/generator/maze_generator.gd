@@ -15,7 +15,11 @@ const CELL := 35.0
 const PATH_WIDTH := 25.0
 const WALL_WIDTH := 10.0
 const BALL_RADIUS := 5.0
-const GOAL_RADIUS := 32.5
+## The goal ring fits inside the 2 × 2 goal room with its dashed line clear of the room's
+## walls: 35 px to the walls' middle, less half a wall (5) and half the ring's line (2.5).
+const GOAL_RADIUS := 27.5
+## Half the width of the dashed line the goal ring is drawn with (px).
+const RING_LINE_HALF := 2.5
 const HOLE_RADIUS := 9.0
 ## Share of the inner walls knocked out at difficulty 0 and at difficulty 1.
 const OPENNESS_EASY := 0.35
@@ -49,10 +53,31 @@ static func generate(settings: MazeGenSettings) -> Dictionary:
 	var placed := MazeHolePlacer.place(
 		level, carver, CELL, settings.holes, settings.difficulty, rng
 	)
+	var crossing := wall_in_goal_ring(level)
+	if crossing >= 0:
+		var a: Vector2 = level.walls[crossing * 2]
+		var b: Vector2 = level.walls[crossing * 2 + 1]
+		return {
+			"error":
+			"A wall from (%d, %d) to (%d, %d) crosses the goal ring." % [a.x, a.y, b.x, b.y]
+		}
 	for issue in BoardValidator.validate(level):
 		if issue.is_error() or issue.kind == "holes_block_goal":
 			return {"error": "The generated maze failed its check: %s" % issue.message}
 	return {"level": level, "holes_placed": placed}
+
+
+## The index of the first wall of `level` that reaches into its goal ring (drawn with a line
+## RING_LINE_HALF px either side of goal_radius), or -1 when the ring is clear.
+static func wall_in_goal_ring(level: BoardLevel) -> int:
+	var reach := level.goal_radius + RING_LINE_HALF + level.wall_width * 0.5
+	for w in range(level.walls.size() >> 1):
+		var near := Geometry2D.get_closest_point_to_segment(
+			level.goal_center, level.walls[w * 2], level.walls[w * 2 + 1]
+		)
+		if near.distance_to(level.goal_center) < reach:
+			return w
+	return -1
 
 
 ## A maze board of the settings' size with no walls, starts or holes yet.

@@ -14,6 +14,13 @@ const RESPAWN_Y := 400.0
 const MAZE_COLS := 64
 const MAZE_PITCH := 35.0
 const MAZE_WALL_R := 5.0
+## S5's windmills: how many, blade length and radius, the grid they sit on (px), and the
+## fastest blade tip (px/s) of the driven ones.
+const WINDMILLS := 40
+const WHEEL_LENGTH := 28.0
+const WHEEL_BLADE_R := 2.0
+const WHEEL_PITCH := 110.0
+const WHEEL_TIP_SPEED := 1600.0
 
 
 ## A staggered lattice inside the ring: rows `pitch` apart, odd rows shifted half a pitch.
@@ -35,8 +42,10 @@ static func pin_lattice(pitch: float) -> PackedVector2Array:
 
 
 ## A scene dictionary: name, hz, steps, ring (bool), pins, pin_r, walls (pairs), wall_r,
-## balls (positions), vels, ball_r, mode ("flow", "pile", "fast", "maze"). `ball_r` other
-## than BALL_R is for flow scenes only (the pin sweep's balls that fit a 12 px lattice).
+## balls (positions), vels, ball_r, mode ("flow", "pile", "fast", "maze", "windmills": a
+## flow through the lattice with WINDMILLS windmills in it, listed in "windmills" as
+## [centre, blades, length, blade radius, speed rad/s, free, friction rad/s²]). `ball_r`
+## other than BALL_R is for flow scenes only (the pin sweep's balls that fit a 12 px lattice).
 static func make(
 	name: String, mode: String, pitch: float, balls: int, hz: float, ball_r := BALL_R
 ) -> Dictionary:
@@ -54,12 +63,15 @@ static func make(
 		"ball_r": ball_r,
 		"pos": PackedVector2Array(),
 		"vel": PackedVector2Array(),
+		"windmills": [],
 	}
 	if mode == "maze":
 		scene["walls"] = maze_walls(rng)
 		_spawn_maze(scene, balls, rng)
 		return scene
 	scene["pins"] = pin_lattice(pitch)
+	if mode == "windmills":
+		_add_windmills(scene, rng)
 	if mode == "pile":
 		_spawn_pile(scene, balls, rng)
 	else:
@@ -68,7 +80,10 @@ static func make(
 		for _i: int in balls:
 			var p: Vector2 = random_in_field(rng) if mode == "fast" else respawn_point(rng, true)
 			var tries := 0
-			while not _clear_of(near, p, ball_r) and tries < 1000:
+			while (
+				not (_clear_of(near, p, ball_r) and _clear_of_wheels(scene, p, ball_r))
+				and tries < 1000
+			):
 				tries += 1
 				p = random_in_field(rng) if mode == "fast" else respawn_point(rng, true)
 			scene["pos"].append(p)
@@ -200,6 +215,55 @@ static func _spawn_pile(scene: Dictionary, balls: int, _rng: RandomNumberGenerat
 				placed += 1
 			x += step
 		y -= step
+
+
+## S5: WINDMILLS wheels on a grid inside the ring, each in a clearing of the lattice (its
+## sweep, a pin and a ball's width); three in four driven at up to WHEEL_TIP_SPEED at the
+## tips, either way, one in four free-spinning.
+static func _add_windmills(scene: Dictionary, rng: RandomNumberGenerator) -> void:
+	var wheels: Array = []
+	var reach := WHEEL_LENGTH + WHEEL_BLADE_R
+	var y := -330.0
+	var row := 0
+	while y <= 330.0 and wheels.size() < WINDMILLS:
+		var x := -385.0 + (WHEEL_PITCH * 0.5 if row % 2 == 1 else 0.0)
+		row += 1
+		while x <= 385.0 and wheels.size() < WINDMILLS:
+			if Vector2(x, y).length() + reach < RING_R - 4.0 * BALL_R:
+				var k := wheels.size()
+				var free := k % 4 == 3
+				var tip := (
+					rng.randf_range(0.3, 1.0) * WHEEL_TIP_SPEED * (1.0 if k % 2 == 0 else -1.0)
+				)
+				var speed := 0.0 if free else tip / reach
+				wheels.append(
+					[Vector2(x, y), 3 + k % 4, WHEEL_LENGTH, WHEEL_BLADE_R, speed, free, 6.0]
+				)
+			x += WHEEL_PITCH
+		y += WHEEL_PITCH
+	scene["windmills"] = wheels
+	var clear := reach + PIN_R + 2.0 * BALL_R + 1.0
+	var kept := PackedVector2Array()
+	for q: Vector2 in scene["pins"]:
+		var free_of_wheels := true
+		for wheel: Array in wheels:
+			var c: Vector2 = wheel[0]
+			if c.distance_to(q) < clear:
+				free_of_wheels = false
+				break
+		if free_of_wheels:
+			kept.append(q)
+	scene["pins"] = kept
+
+
+## True when a ball of `ball_r` at `p` is clear of every windmill's sweep.
+static func _clear_of_wheels(scene: Dictionary, p: Vector2, ball_r: float) -> bool:
+	for wheel: Array in scene["windmills"]:
+		var c: Vector2 = wheel[0]
+		var reach: float = wheel[2] + wheel[3] + ball_r + 0.5
+		if c.distance_squared_to(p) < reach * reach:
+			return false
+	return true
 
 
 ## Pins binned in 16 px cells, so a candidate spawn point looks at its neighbours only.

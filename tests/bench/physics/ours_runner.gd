@@ -5,6 +5,7 @@ extends RefCounted
 
 const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
 const SweptCheck := preload("res://tests/bench/physics/swept_check.gd")
+const BladeCheck := preload("res://tests/bench/physics/blade_check.gd")
 
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
@@ -55,6 +56,17 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	var walls: PackedVector2Array = scene["walls"]
 	for k: int in walls.size() / 2:
 		w.add_wall(walls[2 * k], walls[2 * k + 1], scene["wall_r"])
+	for wheel: Array in scene.get("windmills", []):
+		w.add_windmill(
+			wheel[0],
+			wheel[1],
+			wheel[2],
+			wheel[3],
+			wheel[4],
+			wheel[5],
+			wheel[6],
+			t.min_horizontal_speed
+		)
 	var pos: PackedVector2Array = scene["pos"]
 	var vel: PackedVector2Array = scene["vel"]
 	for i: int in pos.size():
@@ -69,7 +81,9 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 ## report ball_steps_per_s over wall-clock time past the warm-up (the world may use
 ## several cores) and cpu_ball_steps_per_s over process CPU time; check runs replay the
 ## same steps (the world is deterministic) with the swept check after every step and
-## report tunnels and escapes. Both report the final state_hash.
+## report tunnels and escapes (tunnels through pins and walls plus, on a scene with
+## windmills, through blades, also apart as "blade_tunnels"). Both report the final
+## state_hash.
 static func run(
 	scene: Dictionary, steps: int, check: bool, zoning := true, threads := 0
 ) -> Dictionary:
@@ -78,6 +92,11 @@ static func run(
 		w.threads = threads
 	var side := OursSide.new(w)
 	var checker: SweptCheck = SweptCheck.new(scene) if check else null
+	var blades: BladeCheck = BladeCheck.new(scene) if check else null
+	var angles := PackedFloat64Array()
+	var spins := PackedFloat64Array()
+	angles.resize(w.windmill_count())
+	spins.resize(w.windmill_count())
 	# The check follows the path through the substeps; the timed run records nothing.
 	w.set_path_recording(check)
 	var rng := RandomNumberGenerator.new()
@@ -92,6 +111,10 @@ static func run(
 		if s == WARMUP:
 			cpu0 = CpuClock.usec()
 			wall0 = Time.get_ticks_usec()
+		if blades != null:
+			for m: int in w.windmill_count():
+				angles[m] = w.get_windmill_angle(m)
+				spins[m] = w.get_windmill_speed(m)
 		w.step(dt)
 		if checker != null:
 			var after := w.get_positions()
@@ -100,6 +123,8 @@ static func run(
 			skip.fill(0)
 			var paths: Dictionary = w.take_step_paths()
 			checker.check_paths(before, after, skip, paths["slots"], paths["points"])
+			if w.windmill_count() > 0:
+				blades.check_step(before, after, paths["slots"], paths["points"], angles, spins, dt)
 			harness_rules(mode, s + 1, after, rng, side, scene["hz"])
 			before = after
 		elif rules_due(mode, s + 1):
@@ -110,7 +135,8 @@ static func run(
 	return {
 		"ball_steps_per_s": balls * timed / wall,
 		"cpu_ball_steps_per_s": balls * timed / cpu,
-		"tunnels": checker.tunnels if checker != null else 0,
+		"tunnels": checker.tunnels + blades.tunnels if checker != null else 0,
+		"blade_tunnels": blades.tunnels if blades != null else 0,
 		"escapes": checker.escapes if checker != null else 0,
 		"hash": w.state_hash(),
 		"threads": w.threads,
@@ -135,7 +161,7 @@ static func harness_rules(
 ) -> void:
 	if not rules_due(mode, step_i):
 		return
-	if mode == "flow":
+	if mode == "flow" or mode == "windmills":
 		for i: int in pos.size():
 			if pos[i].y > Scenes.RESPAWN_Y:
 				var p: Vector2 = Scenes.respawn_point(rng)

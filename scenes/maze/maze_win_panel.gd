@@ -1,0 +1,100 @@
+extends CenterContainer
+## The card that shows over the board when a maze is won: the time, the medal earned (or
+## how far it was from the next), the change against the best time, and Next board / Retry /
+## Menu. The buttons take keyboard and gamepad focus (the first shown one gets it).
+
+## The player chose the next board.
+signal next_board_chosen
+## The player chose to play this board again.
+signal retry_chosen
+## The player chose the level select.
+signal menu_chosen
+
+const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
+const INK := Color(0.129, 0.004, 0.141)
+
+var _headline := Label.new()
+var _time := Label.new()
+var _medal := Label.new()
+var _best := Label.new()
+var _next := Button.new()
+var _retry := Button.new()
+var _menu := Button.new()
+
+
+func _init() -> void:
+	name = "WinPanel"
+	set_anchors_preset(Control.PRESET_FULL_RECT)
+	mouse_filter = Control.MOUSE_FILTER_IGNORE
+	var panel := PanelContainer.new()
+	var style := StyleBoxFlat.new()
+	style.bg_color = Color(0.99, 0.97, 0.94, 0.96)
+	style.border_color = Color(INK, 0.35)
+	style.set_border_width_all(2)
+	style.set_corner_radius_all(14)
+	style.set_content_margin_all(26)
+	style.shadow_color = Color(0, 0, 0, 0.25)
+	style.shadow_size = 10
+	panel.add_theme_stylebox_override("panel", style)
+	add_child(panel)
+	var box := VBoxContainer.new()
+	box.add_theme_constant_override("separation", 10)
+	panel.add_child(box)
+	_style_label(_headline, 30, 1.0)
+	_headline.text = "You did it!"
+	_style_label(_time, 24, 1.0)
+	_style_label(_medal, 20, 1.0)
+	_style_label(_best, 17, 0.8)
+	for label: Label in [_headline, _time, _medal, _best]:
+		box.add_child(label)
+	var row := HBoxContainer.new()
+	row.alignment = BoxContainer.ALIGNMENT_CENTER
+	row.add_theme_constant_override("separation", 12)
+	box.add_child(row)
+	_next.text = "Next board"
+	_retry.text = "Retry"
+	_menu.text = "Menu"
+	for button: Button in [_next, _retry, _menu]:
+		button.custom_minimum_size = Vector2(130, 44)
+		button.focus_mode = Control.FOCUS_ALL
+		row.add_child(button)
+	_next.pressed.connect(func() -> void: next_board_chosen.emit())
+	_retry.pressed.connect(func() -> void: retry_chosen.emit())
+	_menu.pressed.connect(func() -> void: menu_chosen.emit())
+	hide()
+
+
+## Shows `summary`; `has_next` shows the Next board button (false after the last board or
+## on a board of the player's own). The first button shown takes the focus.
+func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
+	_time.text = "%s  ·  %s" % [MazeWinSummary.clock(summary.seconds), "hard" if hard else "easy"]
+	var medal_text := summary.medal_line()
+	_medal.text = medal_text
+	_medal.visible = not medal_text.is_empty()
+	var colour: Color = MedalBadges.COLORS.get(summary.medal, INK)
+	_medal.add_theme_color_override("font_color", colour.darkened(0.55))
+	_best.text = summary.best_line()
+	_headline.text = (
+		"%s medal!" % Medals.name_of(summary.medal)
+		if summary.medal != Medals.Medal.NONE
+		else "You did it!"
+	)
+	_next.visible = has_next
+	show()
+	(_next if has_next else _retry).grab_focus.call_deferred()
+
+
+## The texts shown, top to bottom (for tests).
+func texts() -> PackedStringArray:
+	return PackedStringArray([_headline.text, _time.text, _medal.text, _best.text])
+
+
+## The buttons in order: Next board, Retry, Menu.
+func buttons() -> Array[Button]:
+	return [_next, _retry, _menu]
+
+
+func _style_label(label: Label, font_size: int, alpha: float) -> void:
+	label.horizontal_alignment = HORIZONTAL_ALIGNMENT_CENTER
+	label.add_theme_font_size_override("font_size", font_size)
+	label.add_theme_color_override("font_color", Color(INK, alpha))

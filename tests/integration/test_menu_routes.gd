@@ -1,0 +1,168 @@
+extends GutTest
+## The menus driven the way a player without a mouse does: input events only (keys, or a
+## gamepad's buttons), through real scene changes, from the title screen to a level select,
+## to one of the player's own boards in play, and back.
+
+const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
+const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
+const PACHINKO := "res://scenes/pachinko/pachinko_game.tscn"
+## The player's own boards folder: only boards there (or shipped) play. The test's board
+## sorts first and is removed afterwards.
+const ROOT := "user://boards"
+const MY_BOARD := "0_test_menu_route.board"
+## Enough frames for a deferred scene change and a level select's loading.
+const MAX_FRAMES := 600
+
+var _keys := true
+
+
+func before_each() -> void:
+	App.level_select_kind = "pachinko"
+	# the mouse rests in a corner: no tooltip (which would take the first Esc) pops up
+	var away := InputEventMouseMotion.new()
+	away.position = Vector2(2, 2)
+	get_tree().root.push_input(away)
+	DirAccess.make_dir_recursive_absolute(ROOT + "/pachinko")
+	var file := FileAccess.open("%s/pachinko/%s" % [ROOT, MY_BOARD], FileAccess.WRITE)
+	file.store_buffer(FileAccess.get_file_as_bytes("res://levels/pachinko/classic.board"))
+	file.close()
+
+
+func after_each() -> void:
+	get_tree().paused = false
+	var scene := get_tree().current_scene
+	if scene != null:
+		get_tree().current_scene = null
+		scene.queue_free()
+	await get_tree().process_frame
+
+
+func after_all() -> void:
+	DirAccess.remove_absolute("%s/pachinko/%s" % [ROOT, MY_BOARD])
+	# the route picked the board this test removes: later scenes must not ask for it
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+
+
+func test_escape_leaves_the_level_select_without_a_script_error() -> void:
+	var screen := await _open(App.go_to_level_select.bind("pachinko"), LEVEL_SELECT)
+	await _loaded(screen)
+	# handed to the screen as the viewport hands it unhandled input (under GUT a ui_cancel
+	# press is taken before the GUI; a real window delivers it, see the route tests' pause)
+	var cancel := InputEventAction.new()
+	cancel.action = &"ui_cancel"
+	cancel.pressed = true
+	screen.call("_unhandled_input", cancel)
+	var menu := await _became(MAIN_MENU)
+	assert_not_null(menu, "Esc goes back to the title screen")
+	assert_engine_error_count(0, "no error on the way out (was: set_input_as_handled on null)")
+
+
+func test_keys_alone_reach_a_board_of_my_own_and_come_back() -> void:
+	_keys = true
+	await _route_to_my_board_and_back()
+
+
+func test_a_gamepad_alone_reaches_a_board_of_my_own_and_comes_back() -> void:
+	_keys = false
+	await _route_to_my_board_and_back()
+
+
+func _route_to_my_board_and_back() -> void:
+	var menu := await _open(App.go_to_menu, MAIN_MENU)
+	assert_not_null(menu)
+	assert_eq(_focused_text(), "Pachinko", "the title screen focuses its first game")
+	await _press("ui_accept")
+	var screen := await _became(LEVEL_SELECT)
+	assert_not_null(screen, "Enter / A opens the pachinko level select")
+	await _loaded(screen)
+	var wanted := "%s/pachinko/%s" % [ROOT, MY_BOARD]
+	var seen: Array[String] = []
+	for step in 12:
+		var card := get_viewport().gui_get_focus_owner()
+		assert_true(card is Button and card.get("board_path") != null, "focus is on a card")
+		if card == null or str(card.get("board_path")) == wanted:
+			break
+		seen.append(str(card.get("board_path")).get_file())
+		await _press("ui_down")
+	var focused := get_viewport().gui_get_focus_owner()
+	assert_eq(
+		str(focused.get("board_path")) if focused != null else "", wanted, "Down reaches My boards"
+	)
+	assert_lt(seen.size(), 4, "one press per row: %s" % ", ".join(seen))
+	await _press("ui_accept")
+	var game := await _became(PACHINKO)
+	assert_not_null(game, "Enter / A plays the board")
+	assert_eq(App.current_board_path("pachinko"), wanted, "it is my board that plays")
+	await _press("pause")
+	assert_true(get_tree().paused, "the pause menu opened")
+	assert_eq(_focused_text(), "Resume")
+	for step in 3:
+		await _press("ui_down")
+	assert_eq(_focused_text(), "Back to menu")
+	await _press("ui_accept")
+	menu = await _became(MAIN_MENU)
+	assert_not_null(menu, "back on the title screen")
+	assert_false(get_tree().paused)
+	assert_eq(_focused_text(), "Pachinko", "the game the player came from keeps focus")
+	assert_engine_error_count(0)
+
+
+func _focused_text() -> String:
+	var focused := get_viewport().gui_get_focus_owner()
+	return (focused as Button).text if focused is Button else ""
+
+
+# Presses and lets go of `action` as the player's device would: its first key, or its first
+# gamepad button when this test plays with a pad.
+func _press(action: String) -> void:
+	for pressed: bool in [true, false]:
+		var event := _event_for(action)
+		if event == null:
+			fail_test("%s has no %s binding" % [action, "key" if _keys else "gamepad"])
+			return
+		event.set("pressed", pressed)
+		Input.parse_input_event(event)
+		await get_tree().process_frame
+	await get_tree().process_frame
+
+
+func _event_for(action: String) -> InputEvent:
+	for event in InputMap.action_get_events(action):
+		if _keys and event is InputEventKey:
+			var key := InputEventKey.new()
+			key.physical_keycode = (event as InputEventKey).physical_keycode
+			key.keycode = (event as InputEventKey).keycode
+			if key.keycode == KEY_NONE:
+				key.keycode = key.physical_keycode
+			if key.physical_keycode == KEY_NONE:
+				key.physical_keycode = key.keycode
+			key.key_label = key.keycode  # a real keyboard's events carry all three
+			return key
+		if not _keys and event is InputEventJoypadButton:
+			var button := InputEventJoypadButton.new()
+			button.button_index = (event as InputEventJoypadButton).button_index
+			return button
+	return null
+
+
+func _open(change: Callable, scene_path: String) -> Node:
+	change.call()
+	return await _became(scene_path)
+
+
+func _became(scene_path: String) -> Node:
+	for frame in MAX_FRAMES:
+		var scene := get_tree().current_scene
+		if scene != null and scene.scene_file_path == scene_path and scene.is_node_ready():
+			await get_tree().process_frame
+			return scene
+		await get_tree().process_frame
+	return null
+
+
+func _loaded(screen: Node) -> void:
+	for frame in MAX_FRAMES:
+		if not screen.call("is_loading"):
+			break
+		await get_tree().process_frame
+	await get_tree().process_frame

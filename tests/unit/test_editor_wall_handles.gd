@@ -1,0 +1,88 @@
+extends GutTest
+## The end dots of a selected wall are handles: dragging one moves that end of that wall
+## only (never the whole wall, never the other wall sharing the corner), in one undo step.
+
+const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
+const Tools := preload("res://tests/unit/test_editor_tools.gd")
+const Actions := preload("res://tests/unit/test_editor_actions.gd")
+
+var _helper: Tools
+
+
+func before_each() -> void:
+	_helper = Tools.new()
+
+
+func after_each() -> void:
+	_helper.free()
+
+
+# Two walls meeting at (105, 105): an L.
+func _corner_board() -> BoardLevel:
+	var level := Actions.maze()
+	level.walls = PackedVector2Array(
+		[Vector2(35, 105), Vector2(105, 105), Vector2(105, 105), Vector2(105, 35)]
+	)
+	ItemIds.fill(level)
+	return level
+
+
+func test_dragging_a_selected_walls_end_moves_only_that_end() -> void:
+	_helper.start(_corner_board())
+	var session := _helper.session
+	session.set_snap(false)
+	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	_helper.press(Vector2(105, 105), true)
+	_helper.move(Vector2(120, 110))
+	_helper.move(Vector2(140, 115))
+	_helper.press(Vector2(140, 115), false)
+	var walls := session.level.walls
+	assert_eq(walls[0], Vector2(35, 105), "the far end stays")
+	assert_eq(walls[1], Vector2(140, 115), "the dragged end follows the mouse")
+	assert_eq(walls[2], Vector2(105, 105), "the other wall at the corner stays")
+	assert_eq(walls[3], Vector2(105, 35))
+	assert_eq(session.selection, [Items.make(Items.Kind.WALL, 0)], "still selected")
+	assert_eq(session.history.names()[-1], "Move wall end", "one step named for what it did")
+	session.history.undo()
+	assert_eq(session.level.walls[1], Vector2(105, 105), "one undo puts the end back")
+
+
+func test_with_the_second_wall_selected_its_end_moves_instead() -> void:
+	_helper.start(_corner_board())
+	var session := _helper.session
+	session.select([Items.make(Items.Kind.WALL, 1)] as Array[Vector2i])
+	_helper.press(Vector2(106, 104), true)
+	_helper.move(Vector2(130, 104))
+	_helper.move(Vector2(141, 104))
+	_helper.press(Vector2(141, 104), false)
+	var walls := session.level.walls
+	assert_eq(walls[1], Vector2(105, 105), "wall 1's end at the corner stays")
+	assert_eq(walls[2], Vector2(140, 105), "wall 2's end snaps to the maze grid corner")
+	assert_eq(walls[3], Vector2(105, 35))
+
+
+func test_dragging_the_middle_of_a_wall_still_moves_the_whole_wall() -> void:
+	_helper.start(_corner_board())
+	var session := _helper.session
+	session.set_snap(false)
+	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	_helper.press(Vector2(70, 105), true)
+	_helper.move(Vector2(70, 120))
+	_helper.move(Vector2(70, 125))
+	_helper.press(Vector2(70, 125), false)
+	assert_eq(session.level.walls[0], Vector2(35, 125))
+	assert_eq(session.level.walls[1], Vector2(105, 125))
+
+
+func test_erase_on_a_ball_start_over_a_wall_erases_the_start() -> void:
+	var level := _corner_board()
+	# A start sitting over the first wall, 3 px below its line.
+	level.ball_starts = PackedVector2Array([Vector2(70, 108)])
+	ItemIds.fill(level)
+	_helper.start(level)
+	var session := _helper.session
+	session.set_tool(Session.Tool.ERASE)
+	_helper.click(Vector2(70, 106))  # inside the start, and deeper inside the wall
+	assert_eq(session.level.ball_starts.size(), 0, "the start is gone")
+	assert_eq(Items.wall_count(session.level.walls), 2, "the wall under it stays")

@@ -1,0 +1,68 @@
+extends GutTest
+## What a maze win says (MazeWinSummary) and the medal still in reach while playing
+## (Medals.next_target): the medal earned or how far from the next, and the best-time change.
+
+const TIMES := [30.0, 45.0, 70.0]
+
+
+func _level() -> BoardLevel:
+	var level := BoardLevel.new()
+	level.kind = BoardLevel.Kind.MAZE
+	level.medal_times_easy = PackedFloat64Array(TIMES)
+	level.medal_times_hard = PackedFloat64Array([40.0, 60.0, 90.0])
+	return level
+
+
+func test_next_target_is_the_best_medal_still_in_reach() -> void:
+	var times := PackedFloat64Array(TIMES)
+	assert_eq(Medals.next_target(times, 0.0), {"medal": Medals.Medal.GOLD, "seconds": 30.0})
+	assert_eq(Medals.next_target(times, 30.0)["medal"], Medals.Medal.GOLD, "30.0 still gold")
+	assert_eq(Medals.next_target(times, 30.1), {"medal": Medals.Medal.SILVER, "seconds": 45.0})
+	assert_eq(Medals.next_target(times, 50.0), {"medal": Medals.Medal.BRONZE, "seconds": 70.0})
+	assert_eq(Medals.next_target(times, 70.5)["medal"], Medals.Medal.NONE, "all passed")
+	assert_eq(Medals.next_target(PackedFloat64Array(), 1.0)["medal"], Medals.Medal.NONE)
+
+
+func test_a_gold_win_says_gold_and_the_best_it_beat() -> void:
+	var summary := MazeWinSummary.of(_level(), false, 28.0, 31.5)
+	assert_eq(summary.medal, Medals.Medal.GOLD)
+	assert_eq(summary.medal_line(), "Gold!")
+	assert_true(summary.new_best)
+	assert_eq(summary.best_line(), "New best: 3.5 s faster than before")
+
+
+func test_a_silver_win_says_how_far_from_gold() -> void:
+	var summary := MazeWinSummary.of(_level(), false, 31.8, 29.0)
+	assert_eq(summary.medal, Medals.Medal.SILVER)
+	assert_eq(summary.next_medal, Medals.Medal.GOLD)
+	assert_eq(summary.medal_line(), "Silver medal: 1.8 s short of Gold")
+	assert_false(summary.new_best)
+	assert_eq(summary.best_line(), "2.8 s slower than your best (0:29.0)")
+
+
+func test_no_medal_says_how_far_from_bronze_and_hard_uses_its_own_times() -> void:
+	var summary := MazeWinSummary.of(_level(), true, 94.0, -1.0)
+	assert_eq(summary.medal, Medals.Medal.NONE)
+	assert_eq(summary.medal_line(), "No medal: 4.0 s short of Bronze")
+	assert_true(summary.new_best, "a first finish is the best")
+	assert_eq(summary.best_line(), "Your first finish: that's your best time")
+
+
+func test_a_board_without_medal_times_says_nothing_about_medals() -> void:
+	var level := BoardLevel.new()
+	level.kind = BoardLevel.Kind.MAZE
+	assert_eq(MazeWinSummary.of(level, false, 12.0, -1.0).medal_line(), "")
+
+
+func test_clock_shows_minutes_seconds_and_tenths() -> void:
+	assert_eq(MazeWinSummary.clock(84.7), "1:24.7")
+	assert_eq(MazeWinSummary.clock(5.0), "0:05.0")
+	assert_eq(MazeWinSummary.clock(600.05), "10:00.0")
+
+
+func test_the_next_board_follows_the_opening_order() -> void:
+	assert_eq(MazeProgress.next_of("maze_garden"), "maze_classic")
+	assert_eq(MazeProgress.next_of("maze_the_deep"), "", "the last has none")
+	assert_eq(MazeProgress.next_of("my:garden.board"), "", "a board of your own has none")
+	for id in MazeProgress.ORDER:
+		assert_true(FileAccess.file_exists(MazeProgress.shipped_path(id)), id)
