@@ -88,7 +88,7 @@ static func make_windmills() -> BoardLevel:
 		var x := CENTER + (17.0 if row % 2 == 1 else 0.0)
 		history.commit(PatternAction.new(level, row_pattern, Vector2(x, 130.0 + row * 36.0)))
 	erase_pins_outside_field(history, level, 22.0)
-	for pocket: Array in [[Vector2(350, 390), 3], [Vector2(220, 560), 3]]:
+	for pocket: Array in [[Vector2(350, 390), 5], [Vector2(220, 560), 5]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
