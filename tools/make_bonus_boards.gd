@@ -15,7 +15,6 @@ const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
-const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 
 const CENTER := 350.0
 const ROLE := BonusPocketSpec.Role
@@ -80,8 +79,8 @@ static func make_hanami() -> BoardLevel:
 	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 5})
 	var attacker := {"open_seconds": 8.0, "open_catches": 8}
 	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 10, attacker)
-	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 3, {})
-	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 3, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 4, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 4, {})
 	return level
 
 
@@ -163,9 +162,10 @@ static func _save(level: BoardLevel) -> bool:
 	return true
 
 
-# No pins under the reels' window, so no ball bounces off a pin hidden behind it.
+# No pins under the reels or within 16 px of their frame: no pin hides behind them and no
+# ball wedges between the frame and a pin.
 static func _clear_reels(history: ActionHistory, level: BoardLevel) -> void:
-	var half := ReelDisplay.HALF + Vector2(6.0, 6.0)
+	var half := BonusGeometry.REEL_HALF + Vector2(22.0, 22.0 + BonusGeometry.REEL_ROOF)
 	Originals.erase_pins_in(
-		history, level, Rect2(ReelDisplay.spot(level) - half, half * 2.0), CENTER
+		history, level, Rect2(BonusGeometry.reel_spot(level) - half, half * 2.0), CENTER
 	)

@@ -3,7 +3,7 @@ extends SceneTree
 ## tools commit: pin patterns, pocket stamps, walls, erase, mirror mode) on a fresh
 ## BoardLevel, checks each with BoardValidator, and saves it with its level scene:
 ##   tools/godot.sh --headless --path . -s res://tools/make_original_boards.gd
-## pachinko/tulips: a dense lattice with tulip clusters (pockets flanked by petal arcs).
+## pachinko/tulips: a dense lattice with four tulips and three plain pockets.
 ## pachinko/windmills: an open board of pin rows, five windmills and a few rich pockets.
 ## maze/catacombs: 14 x 12 twisting corridors with black holes in the dead ends.
 ## maze/courtyards: wide square rings round the goal with chicanes, built in mirror mode.
@@ -19,6 +19,7 @@ const DeleteItems := preload("res://addons/board_editor/actions/delete_items_act
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const MazeCarver := preload("res://tools/make_original_mazes.gd")
+const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 
 const CENTER := 350.0
 ## A level scene: one BoardNode showing the board file.
@@ -42,41 +43,30 @@ func _initialize() -> void:
 	quit(0 if ok else 1)
 
 
-## Tulip Garden: a dense staggered lattice; each pocket sits in a cleared bed, and the two
-## side pockets have petal pins beside their mouths that turn passing balls in. Petals on
-## every pocket caught 0.6 balls a shot (a return of 5.7), so the rest are bare and most
-## pockets pay two: many small wins.
+## Tulip Garden: a dense staggered lattice with four tulips (the bonus layer's tulip: its
+## wings open after a catch, so it catches more, and shut after the next) in cleared beds
+## on the flanks, and three plain pockets down the middle and on the lower flanks.
 static func make_tulips() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := pachinko_base(
 		history,
 		"tulips",
 		"Tulip Garden",
-		"A dense field of pins and many small pockets; petals steer balls into the side ones."
+		"A dense field of pins with four tulips: a catch opens a tulip's petals for the next ball."
 	)
 	var axis := CENTER
 	history.commit(PatternAction.new(level, _lattice(27, 22.0, 31), Vector2(CENTER, CENTER)))
 	erase_pins_outside_field(history, level, 22.0)
-	# [mouth, payout, petals]; all but the centre ones are mirrored to the right half.
-	var tulips := [[Vector2(350, 280), 2, false], [Vector2(220, 240), 3, false]]
-	tulips += [[Vector2(190, 420), 2, true], [Vector2(280, 470), 2, false]]
-	tulips += [[Vector2(350, 590), 2, false]]
-	for tulip: Array in tulips:
-		var mouth: Vector2 = tulip[0]
+	# Plain pockets [mouth, payout]; the ones off the centre line are mirrored to the right.
+	for pocket: Array in [[Vector2(350, 280), 3], [Vector2(280, 470), 3], [Vector2(350, 590), 3]]:
+		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(40, 34), Vector2(80, 78)), axis)
-		history.commit(PocketAction.new(level, mouth, 22.0, 24.0, tulip[1], axis))
-		if not tulip[2]:
-			continue
-		# Petals: two pins up and out from each side of the mouth, placed with the pin tool
-		# in mirror mode; a ball's width apart from the rim so none sticks between them.
-		var petal_pins := PackedVector2Array()
-		for side in [-1.0, 1.0]:
-			var edge := mouth + Vector2(side * 11.0, 0.0)
-			petal_pins.append(edge + Vector2(side * 8.0, -11.0))
-			petal_pins.append(edge + Vector2(side * 16.0, -22.0))
-		var petals := Items.empty_set()
-		petals["pins"] = petal_pins
-		history.commit(AddItems.new(level, Mirror.mirror_set(petals, axis), "Add pin"))
+		history.commit(PocketAction.new(level, mouth, 22.0, 24.0, pocket[1], axis))
+	# Tulips, each mirrored: high on the flanks and lower out wide.
+	for mouth: Vector2 in [Vector2(220, 240), Vector2(170, 420)]:
+		erase_pins_in(history, level, Rect2(mouth - Vector2(40, 34), Vector2(80, 78)), axis)
+		var spec := BonusPocketSpec.of_role(BonusPocketSpec.Role.TULIP, mouth, 26.0, 26.0, 3)
+		history.commit(BonusActions.AddBonus.new(level, spec, axis))
 	shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	return level
 
@@ -98,7 +88,7 @@ static func make_windmills() -> BoardLevel:
 		var x := CENTER + (17.0 if row % 2 == 1 else 0.0)
 		history.commit(PatternAction.new(level, row_pattern, Vector2(x, 130.0 + row * 36.0)))
 	erase_pins_outside_field(history, level, 22.0)
-	for pocket: Array in [[Vector2(350, 390), 3], [Vector2(220, 560), 3]]:
+	for pocket: Array in [[Vector2(350, 390), 5], [Vector2(220, 560), 5]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
@@ -116,8 +106,7 @@ static func make_windmills() -> BoardLevel:
 	for spec: WindmillSpec in wheel_list:
 		erase_pins_near(history, level, spec.position, spec.sweep_radius() + 13.0)
 	history.commit(AddItems.new(level, wheels, "Add windmills"))
-	# Ten degrees lower than the others: weak shots then drop to the right pocket.
-	shape_launch(history, level, LaunchRail.AIMING_END_DEG + 10.0)
+	shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	return level
 
 

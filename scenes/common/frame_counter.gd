@@ -1,8 +1,12 @@
 extends CanvasLayer
-## Frames per second in the top-right corner. Shown when the setting says so; the
-## `toggle_frame_counter` action flips the setting (and saves it).
+## Frames per second in the top-right corner (or the bottom-left one, for a screen whose
+## top right holds its title). Shown when the setting says so; the `toggle_frame_counter`
+## action flips the setting (and saves it).
 
 const REFRESH_SECONDS := 0.25
+
+## True: the counter sits in the bottom-left corner instead of the top-right one.
+@export var bottom_left := false
 
 var _since_refresh := 0.0
 
@@ -11,6 +15,11 @@ var _since_refresh := 0.0
 
 func _ready() -> void:
 	process_mode = Node.PROCESS_MODE_ALWAYS
+	if bottom_left:
+		_label.set_anchors_and_offsets_preset(
+			Control.PRESET_BOTTOM_LEFT, Control.PRESET_MODE_MINSIZE, 8
+		)
+		_label.horizontal_alignment = HORIZONTAL_ALIGNMENT_LEFT
 	App.settings.changed.connect(_sync_visibility)
 	_sync_visibility()
 

@@ -22,6 +22,7 @@ const REEL_STOP := Recipes.REEL_STOP
 const JACKPOT := Recipes.JACKPOT
 const TULIP_OPEN := Recipes.TULIP_OPEN
 const START_CATCH := Recipes.START_CATCH
+const FEVER_END := Recipes.FEVER_END
 
 const PREFERRED_BUS := &"SFX"
 const FALLBACK_BUS := &"Master"

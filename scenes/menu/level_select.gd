@@ -552,7 +552,7 @@ func _best_text(result: BoardLoadResult) -> String:
 		# each mode's best on one line of the card, under that mode's medal
 		return "Easy %s · Hard %s" % [_clock_text(easy), _clock_text(hard)]
 	var balls := App.best_pachinko_balls(board_id)
-	return "Best: %d balls won" % balls if balls >= 0 else ""
+	return "Best: %d balls paid back" % balls if balls >= 0 else ""
 
 
 # the same m:ss.t the maze's own clock shows

@@ -6,10 +6,20 @@ extends Control
 ## PlainMarkup.escape, the title and footer are plain labels.
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
+const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
+
+## What this board's pieces do, under the words (only at the start).
+var _legend := PieceLegend.new()
 
 @onready var _title: Label = $Card/Margin/Box/Title
 @onready var _body: RichTextLabel = $Card/Margin/Box/Body
 @onready var _footer: Label = $Card/Margin/Box/Footer
+
+
+func _ready() -> void:
+	var box := $Card/Margin/Box
+	box.add_child(_legend)
+	box.move_child(_legend, _body.get_index() + 1)
 
 
 ## The first screen: how to play `level`.
@@ -41,18 +51,16 @@ func show_start(level: BoardLevel) -> void:
 						]
 					),
 					(
-						"[b]Power aims:[/b] a weak shot drops in near the rail on the right, a strong"
-						+ " one carries across the top to the left."
-					),
-					(
-						"A ball that falls into a [b]pocket[/b] pays balls back into the cup. A shot too"
-						+ " weak to clear the rail rolls back to the cup."
+						"[b]Power aims:[/b] the weakest shot drops in beside the rail on the right; the"
+						+ " stronger, the farther left; full power rides over the top to the far side."
 					),
 					"The game ends when the cup is empty and every ball has come down.",
 				]
 			)
 		)
 	)
+	_legend.show_pieces(level)
+	_legend.visible = true
 	_footer.text = (
 		"Click anywhere or press %s to start"
 		% PachinkoInput.key_name(&"game_start", "the start key")
@@ -65,9 +73,13 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	_title.text = "New best!" if new_best else "Game over"
 	var shots: int = summary.get("game_shots", 0)
 	var paid: int = summary.get("game_payouts", 0)
+	var hits: int = summary.get("game_hits", 0)
 	var lines := PackedStringArray(
 		[
-			"[b]%d[/b] shots, [b]%d[/b] balls paid back by the pockets." % [shots, paid],
+			(
+				"[b]%d[/b] shots, [b]%d[/b] pocket hits, [b]%d[/b] balls paid back."
+				% [shots, hits, paid]
+			),
 		]
 	)
 	if best > 0:
@@ -76,6 +88,7 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	lines.append("")
 	lines.append("Another %d balls are waiting." % level.cup_start_balls)
 	_body.text = "\n".join(lines)
+	_legend.visible = false
 	_footer.text = "Click anywhere to play again"
 	visible = true
 
@@ -83,6 +96,7 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 ## A board that cannot be played: says what went wrong and how to get back.
 func show_problem(problem: String) -> void:
 	_title.text = "This board could not be loaded"
+	_legend.visible = false
 	_body.text = PlainMarkup.escape(problem)
 	_footer.text = "Press Esc for the menu"
 	visible = true

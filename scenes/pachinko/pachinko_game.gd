@@ -88,7 +88,7 @@ func _process(delta: float) -> void:
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:
 		_stats_refresh = 0.25
-		stats_panel.show_stats(rules.stats())
+		stats_panel.show_stats(rules.stats(true))
 
 
 func _notification(what: int) -> void:
@@ -170,7 +170,7 @@ func _new_rules() -> void:
 		)
 	)
 	_show_notes()
-	stats_panel.show_stats(rules.stats())
+	stats_panel.show_stats(rules.stats(true))
 	instructions.show_start(_level)
 
 

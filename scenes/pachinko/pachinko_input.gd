@@ -133,7 +133,7 @@ func _handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
 		var depth := absf(axis.axis_value)
 		if depth > STICK_DEADZONE and rules.state == PachinkoRules.State.PLAYING:
 			var share := (depth - STICK_DEADZONE) / (1.0 - STICK_DEADZONE)
-			rules.handle.set_power(lerpf(LaunchPower.CLEAR_POWER, LaunchPower.MAX_POWER, share))
+			rules.handle.set_power(share * LaunchPower.MAX_POWER)
 			if _handle_source == Source.NONE:
 				_handle_source = Source.ANALOG
 				rules.handle.grip()

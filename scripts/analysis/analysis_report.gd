@@ -14,7 +14,7 @@ extends RefCounted
 ## left out for a bonus board analysed without the open run.
 
 ## Report format version (bump when keys change meaning).
-const VERSION := 1
+const VERSION := 2
 ## Rates and figures are rounded to this many decimals.
 const DECIMALS := 0.00001
 
@@ -134,6 +134,17 @@ static func _band(tally: AnalysisTally, b: int) -> Dictionary:
 		"return_ci95": _round(half) if is_finite(half) else -1.0,
 		"returned": tally.band_returned[b],
 		"pocket_rates": rates,
+		"entry_x": _entry(tally, b),
+	}
+
+
+# Where the band's shots first met a pin: median and 10th / 90th percentile of x (-1 when
+# none met one).
+static func _entry(tally: AnalysisTally, b: int) -> Dictionary:
+	return {
+		"p10": tally.entry_percentile(b, 0.1),
+		"median": tally.entry_percentile(b, 0.5),
+		"p90": tally.entry_percentile(b, 0.9),
 	}
 
 

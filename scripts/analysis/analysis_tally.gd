@@ -20,6 +20,10 @@ var band_value := PackedInt64Array()
 var band_value_sq := PackedInt64Array()
 ## Catches per band and pocket: index band * pocket_count + pocket.
 var band_pocket_hits := PackedInt64Array()
+## Where shots first met a pin, per band: shots per whole pixel of x, index
+## band * entry_width + x (shots that met no pin are not counted).
+var band_entry := PackedInt64Array()
+var entry_width := 1
 ## Ball samples per density cell, row-major over grid_size.
 var density := PackedInt64Array()
 var grid_size := Vector2i.ZERO
@@ -33,6 +37,8 @@ func _init(pockets: int = 0, board_size: Vector2 = Vector2.ZERO) -> void:
 	for counts: PackedInt64Array in _band_arrays():
 		counts.resize(band_count)
 	band_pocket_hits.resize(band_count * pocket_count)
+	entry_width = maxi(ceili(board_size.x), 1)
+	band_entry.resize(band_count * entry_width)
 	grid_size = Vector2i(
 		maxi(ceili(board_size.x / AnalysisPlan.DENSITY_CELL), 1),
 		maxi(ceili(board_size.y / AnalysisPlan.DENSITY_CELL), 1)
@@ -61,6 +67,29 @@ func record(band: int, outcome: Outcome, pocket := -1, payout := 0) -> void:
 	band_value_sq[band] += value * value
 
 
+## Records where a shot fired in `band` first met a pin (x in board pixels; NAN: none).
+func record_entry(band: int, x: float) -> void:
+	if is_finite(x):
+		band_entry[band * entry_width + clampi(int(x), 0, entry_width - 1)] += 1
+
+
+## The x (whole pixels) below which `share` (0..1) of `band`'s shots first met a pin, or
+## -1 when none of its shots met one.
+func entry_percentile(band: int, share: float) -> int:
+	var counted := 0
+	for x in entry_width:
+		counted += band_entry[band * entry_width + x]
+	if counted == 0:
+		return -1
+	var need := maxf(share * counted, 1.0)
+	var running := 0
+	for x in entry_width:
+		running += band_entry[band * entry_width + x]
+		if running >= need:
+			return x
+	return entry_width - 1
+
+
 ## Adds another tally's counts (same board) to this one.
 func merge(other: AnalysisTally) -> void:
 	var mine := _band_arrays()
@@ -68,6 +97,7 @@ func merge(other: AnalysisTally) -> void:
 	for a in mine.size():
 		_add_into(mine[a], theirs[a])
 	_add_into(band_pocket_hits, other.band_pocket_hits)
+	_add_into(band_entry, other.band_entry)
 	_add_into(density, other.density)
 	steps += other.steps
 	ball_steps += other.ball_steps

@@ -17,7 +17,7 @@ var phase := Phase.IDLE
 ## Seconds from start to done (wall clock).
 var wall_seconds := 0.0
 
-var _clear_speed := 0.0
+var _launch_table: LaunchTable
 var _table := RailExitTable.new()
 var _groups: Array[PackedInt32Array] = []
 var _group_results: Array[RailExitTable] = []
@@ -56,7 +56,7 @@ func start() -> bool:
 		return false
 	_started_usec = Time.get_ticks_usec()
 	# Measured here, on one thread: LaunchCalibration's cache is not thread-safe.
-	_clear_speed = LaunchCalibration.clear_speed(plan.level)
+	_launch_table = LaunchCalibration.table(plan.level)
 	var needed := PackedByteArray()
 	needed.resize(AnalysisPlan.level_count())
 	for c in plan.chunk_count():
@@ -151,7 +151,7 @@ func _launch(job: Callable, count: int) -> void:
 func _climb_group(g: int) -> void:
 	if _cancelled:
 		return
-	var part := RailClimber.climb_group(plan.level, _clear_speed, _groups[g])
+	var part := RailClimber.climb_group(plan.level, _launch_table, _groups[g])
 	_mutex.lock()
 	_group_results[g] = part
 	_mutex.unlock()
@@ -160,7 +160,7 @@ func _climb_group(g: int) -> void:
 func _run_chunk(c: int) -> void:
 	if _cancelled:
 		return
-	var chunk := PachinkoShotChunk.new(plan, _clear_speed, _table)
+	var chunk := PachinkoShotChunk.new(plan, _launch_table, _table)
 	if not chunk.run(c, func() -> bool: return _cancelled):
 		return
 	_mutex.lock()

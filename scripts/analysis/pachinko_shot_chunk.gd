@@ -11,8 +11,6 @@ extends RefCounted
 ## (the gutter takes it in the end; no contact adds energy except the pins' small minimum
 ## horizontal speed and the game's nudge, both inside HOPELESS_MARGIN).
 
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
-
 ## Density samples are taken every this many steps (each ball's cell, once).
 const SAMPLE_EVERY := 2
 ## Hopeless balls are looked for every this many steps.
@@ -28,7 +26,7 @@ var tally: AnalysisTally
 var _plan: AnalysisPlan
 var _table: RailExitTable
 var _world: BallWorld
-var _clear_speed := 0.0
+var _launch: LaunchTable
 ## A ball whose highest reachable centre lies below this y can reach no special pin.
 var _hopeless_y := -INF
 ## Per ball id (ids count up from 0 in a fresh world): its power band, the step its shot
@@ -45,12 +43,12 @@ var _density := PackedInt64Array()
 var _grid := Vector2i.ZERO
 
 
-## `clear_speed` is LaunchCalibration.clear_speed(plan.level), measured once beforehand on
-## the calling thread (its cache is not shared safely between threads). `table` holds the
+## `launch` is LaunchCalibration.table(plan.level), measured once beforehand on the
+## calling thread (its cache is not shared safely between threads). `table` holds the
 ## rail climbs of every power level the chunk uses (null: every shot is simulated in full).
-func _init(plan: AnalysisPlan, clear_speed: float, table: RailExitTable = null) -> void:
+func _init(plan: AnalysisPlan, launch: LaunchTable, table: RailExitTable = null) -> void:
 	_plan = plan
-	_clear_speed = clear_speed
+	_launch = launch
 	_table = table
 	# The level's pockets and then the bonus pockets (shut unless the plan holds them open).
 	var pockets := BonusGeometry.world_pockets(plan.level)
@@ -140,6 +138,8 @@ func _fire(q: int, step: int) -> void:
 	var fate := _table.fate[q] if _table != null else RailExitTable.Fate.UNKNOWN
 	if fate == RailExitTable.Fate.RETURNED or fate == RailExitTable.Fate.EXIT:
 		_add_samples(_table.samples[q])
+	if _table != null:
+		tally.record_entry(band, _table.entry_x[q])
 	if fate == RailExitTable.Fate.RETURNED:
 		tally.record(band, AnalysisTally.Outcome.RETURNED)
 		return
@@ -148,7 +148,7 @@ func _fire(q: int, step: int) -> void:
 		id = _world.spawn_ball(_table.exit_pos[q], _table.exit_vel[q], _plan.level.ball_radius)
 		step -= _table.exit_steps[q]
 	else:
-		var speed := LaunchPower.launch_speed(AnalysisPlan.power_of(q), _clear_speed)
+		var speed := _launch.launch_speed(AnalysisPlan.power_of(q))
 		var launch := LaunchRail.launch_position(_plan.level)
 		var direction := LaunchRail.launch_direction(_plan.level)
 		id = _world.spawn_ball(launch, direction * speed, _plan.level.ball_radius)

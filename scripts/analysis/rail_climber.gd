@@ -3,12 +3,10 @@ extends RefCounted
 ## Simulates the rail climb of a group of shot powers for RailExitTable: one world of the
 ## board (the very world the shots fly in, so the hand-over is exact), one ball per power
 ## with ball contacts off, followed until it rolls back into the return zone, or is past
-## the rail's end in free flight.
-
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
+## the rail's end in free flight and has met its first pin (where power aimed it).
 
 var _level: BoardLevel
-var _clear_speed := 0.0
+var _launch: LaunchTable
 var _world: BallWorld
 var _table: RailExitTable
 ## Per ball id: its power level, the ring angle it was last at and how far it went round.
@@ -16,6 +14,9 @@ var _level_of := PackedInt32Array()
 var _last_angle := PackedFloat32Array()
 var _travelled := PackedFloat32Array()
 var _last_vel := PackedVector2Array()
+## Per ball id: 1 once its hand-over state is taken, and 1 once it met a pin.
+var _handed := PackedByteArray()
+var _met_pin := PackedByteArray()
 var _step := 0
 ## Per ball id: the density cells it passed (moved into the table at the end). Kept here,
 ## with the board's numbers below, so the per-ball loop reads only this object's members
@@ -27,16 +28,16 @@ var _board_size := Vector2.ZERO
 
 ## Climbs every power level in `levels` side by side on `level` (a pachinko board) and
 ## returns a table holding their results (other levels stay UNKNOWN). Thread-safe: it
-## touches nothing shared. `clear_speed` is LaunchCalibration.clear_speed(level).
+## touches nothing shared. `launch` is LaunchCalibration.table(level).
 static func climb_group(
-	level: BoardLevel, clear_speed: float, levels: PackedInt32Array
+	level: BoardLevel, launch: LaunchTable, levels: PackedInt32Array
 ) -> RailExitTable:
-	return RailClimber.new(level, clear_speed).climb(levels)
+	return RailClimber.new(level, launch).climb(levels)
 
 
-func _init(level: BoardLevel, clear_speed: float) -> void:
+func _init(level: BoardLevel, launch: LaunchTable) -> void:
 	_level = level
-	_clear_speed = clear_speed
+	_launch = launch
 
 
 ## Climbs `levels`; returns a table with their fates.
@@ -50,17 +51,20 @@ func climb(levels: PackedInt32Array) -> RailExitTable:
 	_world.ball_entered_zone.connect(_on_zone)
 	_world.ball_drained.connect(_on_gone)
 	_world.ball_captured.connect(_on_pocketed)
+	_world.pin_hit.connect(_on_pin_hit)
 	var start := LaunchRail.launch_position(_level)
 	var direction := LaunchRail.launch_direction(_level)
 	var start_angle := (start - _level.ring_center).angle()
 	for q in levels:
-		var speed := LaunchPower.launch_speed(AnalysisPlan.power_of(q), _clear_speed)
+		var speed := _launch.launch_speed(AnalysisPlan.power_of(q))
 		var id := _world.spawn_ball(start, direction * speed, _level.ball_radius)
 		_level_of.append(q)
 		_last_angle.append(start_angle)
 		_travelled.append(0.0)
 		_last_vel.append(direction * speed)
 		_cells.append(PackedInt32Array())
+		_handed.append(0)
+		_met_pin.append(0)
 		assert(id == _level_of.size() - 1)
 	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)
 	var max_steps := int(RailExitTable.MAX_SECONDS / dt)
@@ -69,14 +73,16 @@ func climb(levels: PackedInt32Array) -> RailExitTable:
 		_step += 1
 		_follow(dt)
 	for id in _world.get_ids():
-		_table.fate[_level_of[id]] = RailExitTable.Fate.FULL
+		if _handed[id] == 0:
+			_table.fate[_level_of[id]] = RailExitTable.Fate.FULL
 	for id in _level_of.size():
 		_table.samples[_level_of[id]] = _cells[id]
 	return _table
 
 
 # After a step: each ball's progress round the ring; hand over the ones past the rail's
-# end whose velocity changed by gravity alone (touching nothing).
+# end whose velocity changed by gravity alone (touching nothing). A ball handed over is
+# followed on until it meets a pin, then removed.
 func _follow(dt: float) -> void:
 	var sweep := deg_to_rad(absf(_level.rail_end_deg - _level.rail_start_deg))
 	var past := sweep + deg_to_rad(RailExitTable.EXIT_MARGIN_DEG)
@@ -89,6 +95,8 @@ func _follow(dt: float) -> void:
 	for k in ids.size():
 		var id := ids[k]
 		var q := _level_of[id]
+		if _handed[id] != 0:
+			continue
 		var angle := (pos[k] - _centre).angle()
 		_travelled[id] += wrapf(angle - _last_angle[id], -PI, PI) * sense
 		_last_angle[id] = angle
@@ -102,7 +110,9 @@ func _follow(dt: float) -> void:
 			_table.exit_vel[q] = vel[k]
 			_table.exit_steps[q] = _step
 			_table.steps[q] = _step
-			_world.remove_ball(id)
+			_handed[id] = 1
+			if _met_pin[id] != 0:
+				_world.remove_ball(id)
 
 
 # Adds the density cell of `p` to ball `id`'s list (the same cells as
@@ -125,9 +135,21 @@ func _on_zone(ball_id: int, zone_index: int) -> void:
 	_world.remove_ball(ball_id)
 
 
-# Drained or pocketed before the hand-over (not expected): the shot is simulated in full.
+# Drained or pocketed before the hand-over (a weak shot that drops beside the rail never
+# gets far enough past its end): the shot is simulated in full.
 func _on_gone(ball_id: int) -> void:
-	_table.fate[_level_of[ball_id]] = RailExitTable.Fate.FULL
+	if _handed[ball_id] == 0:
+		_table.fate[_level_of[ball_id]] = RailExitTable.Fate.FULL
+
+
+# The first pin a ball meets is where its power aimed it (handed over or not).
+func _on_pin_hit(ball_id: int, pin_index: int, _impact_speed: float) -> void:
+	if _met_pin[ball_id] != 0 or pin_index >= _level.pins.size():
+		return
+	_met_pin[ball_id] = 1
+	_table.entry_x[_level_of[ball_id]] = _level.pins[pin_index].x
+	if _handed[ball_id] != 0:
+		_world.remove_ball(ball_id)
 
 
 func _on_pocketed(ball_id: int, _pocket_id: int) -> void:

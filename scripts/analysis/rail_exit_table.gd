@@ -17,7 +17,7 @@ enum Fate { UNKNOWN, EXIT, RETURNED, FULL }
 const GROUP_LEVELS := 64
 ## The hand-over waits until the ball is this far past the rail's end (degrees round the
 ## ring), over the deflector and into the field.
-const EXIT_MARGIN_DEG := 6.0
+const EXIT_MARGIN_DEG := 1.0
 ## A velocity that changed by gravity alone (within this, px/s) means free flight.
 const FREE_FLIGHT_EPS := 1e-3
 ## Longest climb followed, seconds.
@@ -32,6 +32,9 @@ var exit_steps := PackedInt32Array()
 ## PachinkoShotChunk.SAMPLE_EVERY steps), and steps simulated (RETURNED: the whole flight).
 var samples: Array[PackedInt32Array] = []
 var steps := PackedInt32Array()
+## Per power level: the x of the first pin the ball met (NAN: it met none). With no other
+## ball in the way every shot of one power meets the same first pin.
+var entry_x := PackedFloat32Array()
 
 
 func _init() -> void:
@@ -42,6 +45,8 @@ func _init() -> void:
 	exit_steps.resize(n)
 	steps.resize(n)
 	samples.resize(n)
+	entry_x.resize(n)
+	entry_x.fill(NAN)
 
 
 ## The groups (lists of power levels) to climb for the levels `needed` marks (1 = needed).
@@ -69,3 +74,4 @@ func store(part: RailExitTable, levels: PackedInt32Array) -> void:
 		exit_steps[q] = part.exit_steps[q]
 		steps[q] = part.steps[q]
 		samples[q] = part.samples[q]
+		entry_x[q] = part.entry_x[q]

@@ -28,6 +28,8 @@ const REEL_STOP := &"reel_stop"
 const JACKPOT := &"jackpot"
 const TULIP_OPEN := &"tulip_open"
 const START_CATCH := &"start_catch"
+## The fever round ending (the last attacker's lid shuts): a falling two-note sigh.
+const FEVER_END := &"fever_end"
 
 
 ## Every recipe name, in a stable order.
@@ -50,6 +52,7 @@ static func names() -> Array[StringName]:
 		JACKPOT,
 		TULIP_OPEN,
 		START_CATCH,
+		FEVER_END,
 	]
 
 
@@ -93,6 +96,8 @@ static func build(sound: StringName) -> AudioStreamWAV:
 			return Synth.to_stream(Synth.sweep(0.16, 520.0, 1180.0, 0.6, 14.0), 0.6)
 		START_CATCH:
 			return Synth.to_stream(_arpeggio([1319.0, 1760.0], 0.05), 0.7)
+		FEVER_END:
+			return Synth.to_stream(_arpeggio([1047.0, 784.0, 523.0], 0.12), 0.7)
 	push_error("SoundRecipes: no recipe for sound '%s'" % sound)
 	return null
 

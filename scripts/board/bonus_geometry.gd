@@ -16,6 +16,12 @@ enum Part { LID, WING_CLOSED, WING_OPEN }
 const PART_RADIUS := 2.5
 ## A shut lid's rise from each end to its ridge, per pixel across (a gentle roof).
 const LID_SLOPE := 0.2
+## Half the size of the reels' window high in the field (boards with a start pocket).
+const REEL_HALF := Vector2(54.0, 22.0)
+## The window's frame: capsules this thick just outside it, its top a low roof rising
+## REEL_ROOF px to the middle so balls roll off instead of resting on it.
+const REEL_FRAME_RADIUS := 3.0
+const REEL_ROOF := 24.0
 ## A tulip's wing length as a share of the mouth width.
 const WING_SHARE := 0.75
 ## An open wing leans out this far from upright, radians (about 50 degrees).
@@ -31,6 +37,51 @@ static func pocket_id(level: BoardLevel, index: int) -> int:
 static func bonus_index(level: BoardLevel, world_pocket_id: int) -> int:
 	var index := world_pocket_id - level.pockets.size()
 	return index if index >= 0 and index < level.bonus_pockets.size() else -1
+
+
+## True when `level` has a start pocket (and so the reels).
+static func has_reels(level: BoardLevel) -> bool:
+	for spec in level.bonus_pockets:
+		if spec != null and spec.role == BonusPocketSpec.Role.START:
+			return true
+	return false
+
+
+## The centre of the reels' window on `level`: high in the middle of the field.
+static func reel_spot(level: BoardLevel) -> Vector2:
+	return level.ring_center + Vector2(0.0, -level.ring_radius * 0.6)
+
+
+## The reels' window, board pixels.
+static func reel_window(level: BoardLevel) -> Rect2:
+	return Rect2(reel_spot(level) - REEL_HALF, REEL_HALF * 2.0)
+
+
+## The reels' frame as capsules [a, b, ...] (pairs of ends): the sides, the bottom and a
+## low roof; none on a board without reels. A solid centre piece as on a real machine:
+## balls bounce off it and never pass over the numbers.
+static func reel_frame(level: BoardLevel) -> PackedVector2Array:
+	if not has_reels(level):
+		return PackedVector2Array()
+	var box := reel_window(level).grow(REEL_FRAME_RADIUS)
+	var ridge := Vector2(box.get_center().x, box.position.y - REEL_ROOF)
+	var top_left := box.position
+	var top_right := Vector2(box.end.x, box.position.y)
+	var bottom_left := Vector2(box.position.x, box.end.y)
+	return PackedVector2Array(
+		[
+			top_left,
+			ridge,
+			ridge,
+			top_right,
+			top_right,
+			box.end,
+			box.end,
+			bottom_left,
+			bottom_left,
+			top_left,
+		]
+	)
 
 
 ## The moving parts, in world wall order: [{"item": index, "part": Part, "a", "b"}].

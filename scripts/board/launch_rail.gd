@@ -16,19 +16,19 @@ const GUIDE_STEP_DEG := 3.0
 ## top it carries (that is how power aims), so nothing may stand in that flight; past the
 ## farthest flight, a ball that meets the ring and rides it (a knock from another ball)
 ## slides off the ramp into the field instead of riding round into the gutter.
-const DEFLECTOR_OUTER_DEG := 100.0
-const DEFLECTOR_INNER_DEG := 115.0
+const DEFLECTOR_OUTER_DEG := 125.0
+const DEFLECTOR_INNER_DEG := 140.0
 const DEFLECTOR_DEPTH := 1.5
 ## Where the rail should open for power to aim (degrees): short of the top on the right, so a
 ## ball leaves heading up and left and its speed decides how far it carries.
-const AIMING_END_DEG := -55.0
+const AIMING_END_DEG := -30.0
 ## The flight lane under the top of the ring, kept clear of free pins: within
 ## FLIGHT_LANE_DEPTH px of the ring between FLIGHT_LANE_FROM_DEG and FLIGHT_LANE_TO_DEG. A
 ## ball crosses it in free flight, so a strong shot lands farther from the rail than a weak
 ## one; with pins there every shot hits the same first pins and power stops aiming.
 const FLIGHT_LANE_DEPTH := 80.0
 const FLIGHT_LANE_FROM_DEG := -160.0
-const FLIGHT_LANE_TO_DEG := -20.0
+const FLIGHT_LANE_TO_DEG := -45.0
 
 
 ## Radius of the guide arc's centre line.

@@ -19,12 +19,18 @@ extends RefCounted
 
 const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 ## The format this build writes; it reads this one and every older one (format 1 has no
-## `"tilts"` records; formats 1 and 2 have no `"physics"`, their runs are physics 1).
-const VERSION := 3
+## `"tilts"` records; formats 1 and 2 have no `"physics"`, their runs are physics 1;
+## formats 1 to 3 have no `"rules"`, their runs are rules 1).
+const VERSION := 4
 ## The physics behaviour this build plays runs with (BallWorld.PHYSICS_VERSION). A run
 ## recorded under another one cannot be replayed exactly: the same inputs roll the balls
 ## differently, so the replay and its ghost are refused, by name, instead of drifting.
 const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
+## Per game, the version of its rules this build plays. The same inputs on the same
+## physics play out differently under other rules, so those runs are refused too.
+## Pachinko 2: every power clears the rail and power sets the speed at the rail's mouth
+## (LaunchTable), so a recorded shot's power sends its ball elsewhere than under 1.
+const RULES_VERSIONS := {"maze": 1, "pachinko": 2}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME
@@ -43,6 +49,8 @@ const HUNDREDTHS := 100.0
 var format_version := VERSION
 ## The physics behaviour the run was recorded with (PHYSICS_VERSION when recorded here).
 var physics_version := PHYSICS_VERSION
+## The game's rules version the run was recorded with (RULES_VERSIONS when recorded here).
+var rules_version := 1
 ## The game's name (BoardLevel.KIND_NAMES).
 var game := MAZE
 ## The board's `board_id`.
@@ -106,14 +114,34 @@ static func game_of(level: BoardLevel) -> String:
 	return BoardLevel.kind_name(level.kind)
 
 
-## Why this build cannot replay the run exactly, or "" when it can.
+## The rules version this build plays `game_name` with.
+static func rules_version_of(game_name: String) -> int:
+	return RULES_VERSIONS.get(game_name, 1)
+
+
+## Why this build cannot replay the run exactly (another physics or rules version), or ""
+## when it can.
 func physics_problem() -> String:
 	if physics_version == PHYSICS_VERSION:
-		return ""
+		return rules_problem()
 	return (
 		(
 			"it was recorded with physics version %d and this game runs version %d, which rolls "
 			+ "the balls differently"
 		)
 		% [physics_version, PHYSICS_VERSION]
+	)
+
+
+## Why this build's rules cannot replay the run exactly, or "" when they can.
+func rules_problem() -> String:
+	var current := rules_version_of(game)
+	if rules_version == current:
+		return ""
+	return (
+		(
+			"it was recorded with %s rules version %d and this game plays version %d, where a shot "
+			% [game, rules_version, current]
+		)
+		+ "of the same strength goes elsewhere"
 	)

@@ -33,9 +33,10 @@ const HEADER_KEYS := [
 	"state_hash",
 	"seconds",
 	"physics",
+	"rules",
 ]
 ## Header fields older formats do not have: field -> first format with it.
-const LATER_KEYS := {"physics": 3}
+const LATER_KEYS := {"physics": 3, "rules": 4}
 ## Physics versions a file may name (BallWorld keeps its history small).
 const MAX_PHYSICS := 1000
 const MODES := {Replay.MAZE: ["easy", "hard"], Replay.PACHINKO: [Replay.PACHINKO_MODE]}
@@ -113,6 +114,8 @@ static func _read_header(data: Variant, replay: Replay) -> String:
 			return '"%s" came with format %d; this file says format %d' % [key, since, version]
 	if not header.has("physics"):
 		header["physics"] = 1  # files before format 3 were recorded with physics 1
+	if not header.has("rules"):
+		header["rules"] = 1  # files before format 4 were recorded with rules 1
 	var problem := _read_names(header, replay)
 	if not problem.is_empty():
 		return problem
@@ -149,6 +152,7 @@ static func _read_numbers(header: Dictionary, replay: Replay) -> String:
 		["steps", 0, MAX_STEPS],
 		["state_hash", 0, MAX_WHOLE],
 		["physics", 1, MAX_PHYSICS],
+		["rules", 1, MAX_PHYSICS],
 	]
 	for check: Array in checks:
 		var low: int = check[1]
@@ -162,6 +166,7 @@ static func _read_numbers(header: Dictionary, replay: Replay) -> String:
 	replay.steps = header["steps"]
 	replay.state_hash = header["state_hash"]
 	replay.physics_version = header["physics"]
+	replay.rules_version = header["rules"]
 	var value: Variant = header["seconds"]
 	var seconds: float = value if value is float or value is int else -1.0
 	if not is_finite(seconds) or seconds < 0.0:

@@ -85,6 +85,7 @@ func finish() -> Replay:
 	note_frame()
 	var done := Replay.new()
 	done.game = _replay.game
+	done.rules_version = Replay.rules_version_of(done.game)
 	done.board_id = _replay.board_id
 	done.board_hash = _replay.board_hash
 	done.rng_seed = _replay.rng_seed

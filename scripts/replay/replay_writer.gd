@@ -10,7 +10,8 @@ const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 static func write(replay: Replay) -> String:
 	var header := (
 		'{"replay": %d, "game": %s, "board": %s, "board_hash": %s, "mode": %s, "seed": %d, '
-		+ '"step_hz": %d, "steps": %d, "state_hash": %d, "seconds": %s, "physics": %d}'
+		+ '"step_hz": %d, "steps": %d, "state_hash": %d, "seconds": %s, "physics": %d, '
+		+ '"rules": %d}'
 	)
 	var lines := PackedStringArray()
 	(
@@ -30,6 +31,7 @@ static func write(replay: Replay) -> String:
 					replay.state_hash,
 					String.num(snappedf(replay.seconds, 0.001), 3),
 					replay.physics_version,
+					replay.rules_version,
 				]
 			)
 		)

@@ -4,9 +4,10 @@ extends RefCounted
 ##
 ## Pachinko: ring, gutter, pins (with pocket ids and special flags), the bonus pockets' pins
 ## and then their lids and wings (the first walls, see BonusGeometry), the launch rail's
-## guide arc, its stopper and the deflector past its end as capsules (in that order), and
-## the rail's return zone as zone 0, then the windmills (world windmill i = level windmill i;
-## a null entry, refused by the validator, is skipped).
+## guide arc, its stopper and the deflector past its end as capsules (in that order), the
+## reels' frame on a board with a start pocket, and the rail's return zone as zone 0, then
+## the windmills (world windmill i = level windmill i; a null entry, refused by the
+## validator, is skipped).
 ## Maze: the level's walls (same indices as in the level), then four invisible edge walls
 ## that keep balls on the board, the goal (goal 0) and, in hard mode only, the black holes.
 
@@ -57,6 +58,10 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	world.add_wall(stop[0], stop[1], LaunchRail.GUIDE_WALL_RADIUS)
 	var deflector := LaunchRail.deflector(level)
 	world.add_wall(deflector[0], deflector[1], LaunchRail.GUIDE_WALL_RADIUS)
+	# The reels' frame (boards with a start pocket): a solid piece balls bounce off.
+	var frame := BonusGeometry.reel_frame(level)
+	for k in range(0, frame.size(), 2):
+		world.add_wall(frame[k], frame[k + 1], BonusGeometry.REEL_FRAME_RADIUS)
 	# Zone 0: a ball that rolls back down the rail lands here and returns to the cup.
 	world.add_zone(LaunchRail.return_zone_center(level), LaunchRail.return_zone_radius(level))
 	# The windmills: world windmill i is the level's windmill i; their blades share the

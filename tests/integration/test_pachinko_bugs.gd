@@ -141,7 +141,9 @@ func test_the_gutter_drains_on_the_seventh_bounce_like_the_chapter() -> void:
 # (4) Shots that rolled back cost nothing and must not dilute the return.
 func test_the_payout_ratio_leaves_out_rolled_back_shots() -> void:
 	var rules := _playing()
-	var weak := rules.fire(LaunchPower.CLEAR_POWER * 0.5)
+	# A shot that rolled back: a ball at rest in the rail rolls down to the stopper.
+	var weak := rules.place_ball(LaunchRail.launch_position(rules.level))
+	rules.ledger.shots += 1  # it stands for a shot that rolled back
 	for i in int(6.0 / rules.step_seconds()):
 		rules.step()
 		if not rules.world.has_ball(weak):

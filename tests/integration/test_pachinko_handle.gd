@@ -96,7 +96,7 @@ func test_the_right_trigger_is_the_handle_and_its_depth_the_strength() -> void:
 	assert_eq(rules.handle.power, 100.0, "all the way: full strength")
 	trigger.axis_value = 0.625
 	game._unhandled_input(trigger)
-	assert_almost_eq(rules.handle.power, 56.0, 0.01, "half way: half the range above weak")
+	assert_almost_eq(rules.handle.power, 50.0, 0.01, "half way: half strength")
 	assert_false(rules.drawing, "the trigger no longer draws the flipper back")
 	trigger.axis_value = 0.0
 	game._unhandled_input(trigger)

@@ -112,30 +112,77 @@ func test_firing_with_no_ball_loaded_does_nothing() -> void:
 func test_launch_speed_rises_with_power() -> void:
 	var rules := _playing()
 	var last := 0.0
-	for p in [0.0, 5.0, 11.0, 12.0, 40.0, 70.0, 100.0]:
+	for p in [0.01, 5.0, 11.0, 12.0, 40.0, 70.0, 100.0]:
 		var speed := rules.launch_speed(p)
-		assert_gt(speed, last, "power %d is faster than the one before" % p)
+		assert_gt(speed, last, "power %s is faster than the one before" % p)
 		last = speed
 
 
-func test_weak_shots_roll_back_to_the_cup() -> void:
-	for p in [0.0, 6.0, LaunchPower.CLEAR_POWER - 1.0]:
+func test_a_ball_that_rolls_back_down_the_rail_goes_back_to_the_cup() -> void:
+	var rules := _playing()
+	watch_signals(rules)
+	var cup_before := rules.cup
+	# A ball at rest in the rail (one knocked back by another) rolls down to the stopper.
+	var id := rules.place_ball(LaunchRail.launch_position(rules.level))
+	var back := _run_until(rules, 6.0, func() -> bool: return not rules.world.has_ball(id))
+	assert_true(back, "the ball came back down")
+	assert_signal_emitted(rules, "ball_returned")
+	assert_eq(rules.ledger.drained, 0, "a returned ball is not lost")
+	assert_eq(rules.cup, cup_before + 1, "back in the cup")
+	assert_true(rules.accounting_ok())
+
+
+func test_the_weakest_powers_reach_the_pins() -> void:
+	for p in [0.01, 1.0, 6.0, 11.0]:
 		var rules := _playing()
-		watch_signals(rules)
-		var cup_before := rules.cup
 		var id := rules.fire(p)
-		var back := _run_until(rules, 6.0, func() -> bool: return not rules.world.has_ball(id))
-		assert_true(back, "power %d: the ball came back down" % p)
-		assert_signal_emitted(rules, "ball_returned", "power %d rolls back" % p)
-		assert_eq(rules.ledger.drained, 0, "a returned ball is not lost")
-		assert_eq(rules.cup, cup_before, "back in the cup")
-		assert_true(rules.loaded)
-		assert_true(rules.accounting_ok())
+		var inside := LaunchRail.guide_radius(rules.level) - rules.level.ball_radius - 3.0
+		var entered := _run_until(
+			rules,
+			6.0,
+			func() -> bool:
+				return (
+					rules.world.has_ball(id)
+					and (
+						rules.world.get_ball_position(id).distance_to(rules.level.ring_center)
+						< inside
+					)
+				)
+		)
+		assert_true(entered, "power %s leaves the rail for the field" % p)
+		assert_eq(rules.ledger.returned, 0, "power %s does not roll back" % p)
+
+
+# The ball's speed as it passes the rail's mouth (rail_end_deg), or -1 if it never did.
+func _mouth_speed(rules: PachinkoRules, id: int) -> float:
+	var level := rules.level
+	var sweep := absf(level.rail_end_deg - level.rail_start_deg)
+	var last := rad_to_deg((LaunchRail.launch_position(level) - level.ring_center).angle())
+	var travelled := 0.0
+	for i in int(6.0 / rules.step_seconds()):
+		rules.step()
+		if not rules.world.has_ball(id):
+			return -1.0
+		var angle := rad_to_deg((rules.world.get_ball_position(id) - level.ring_center).angle())
+		travelled -= wrapf(angle - last, -180.0, 180.0)
+		last = angle
+		if travelled >= sweep:
+			return rules.world.get_ball_velocity(id).length()
+	return -1.0
+
+
+func test_the_mouth_speed_spans_two_and_a_half_times_from_weakest_to_strongest() -> void:
+	var weak_rules := _playing()
+	var weak := _mouth_speed(weak_rules, weak_rules.fire(0.01))
+	var strong_rules := _playing()
+	var strong := _mouth_speed(strong_rules, strong_rules.fire(100.0))
+	assert_gt(weak, 0.0, "the weakest shot passes the mouth")
+	assert_gt(strong, weak * 2.5, "strongest %.0f px/s, weakest %.0f px/s" % [strong, weak])
 
 
 func test_clearing_shots_enter_the_field_faster_with_power() -> void:
 	var entry_speeds: Array[float] = []
-	for p in [LaunchPower.CLEAR_POWER, 40.0, 70.0, 100.0]:
+	for p in [0.01, 40.0, 70.0, 100.0]:
 		var rules := _playing()
 		var level := rules.level
 		var id := rules.fire(p)
@@ -233,11 +280,16 @@ func test_a_resting_ball_gets_a_nudge() -> void:
 	assert_gt(rules.world.get_ball_velocity(id).length(), 10.0)
 
 
-func test_the_launcher_waits_while_a_weak_shot_rolls_back() -> void:
+func test_the_launcher_waits_while_a_ball_rolls_back() -> void:
 	var rules := _playing()
-	var weak := rules.fire(0.0)
+	# A ball knocked back up the rail by another, placed in the rail part way up, at rest.
+	var level := rules.level
+	var up_rail := (
+		level.ring_center + Vector2.from_angle(deg_to_rad(20.0)) * LaunchRail.riding_radius(level)
+	)
+	var weak := rules.place_ball(up_rail)
 	var rolling := _run_until(rules, 3.0, func() -> bool: return rules.rail_blocked())
-	assert_true(rolling, "the weak shot turned round on the rail")
+	assert_true(rolling, "the ball rolls back down the rail")
 	assert_eq(rules.fire(80.0), -1, "no shot into a ball coming down")
 	assert_true(rules.loaded, "the loaded ball waits")
 	var back := _run_until(rules, 6.0, func() -> bool: return not rules.world.has_ball(weak))

@@ -9,9 +9,9 @@ func _classic() -> BoardLevel:
 	return BoardLoader.load_board("res://levels/pachinko/classic.board").level
 
 
-func test_a_board_without_pins_returns_only_the_weak_shots() -> void:
-	# No pins, no pockets: every shot too weak for the rail rolls back (worth one ball) and
-	# every other one drains, so the return is the share of powers below the clearing one.
+func test_a_board_without_pins_returns_nothing_every_power_clears_the_rail() -> void:
+	# No pins, no pockets: every power clears the rail (none rolls back) and every ball
+	# drains, so the return is 0.
 	var bare := _classic().duplicate_level()
 	bare.pockets = []
 	bare.pins = PackedVector2Array()
@@ -20,17 +20,11 @@ func test_a_board_without_pins_returns_only_the_weak_shots() -> void:
 	var plan := AnalysisPlan.create(bare, 400, 3)
 	var tally := PachinkoAnalysis.new(plan).run()
 	var report := AnalysisReport.build(plan, tally, 1.0)
-	var weak := 0
-	for c in plan.chunk_count():
-		for q in plan.chunk_levels(c):
-			if AnalysisPlan.power_of(q) < 12.0:
-				weak += 1
 	assert_eq(report["shots"], 400)
-	assert_eq(report["returned"], weak, "exactly the shots below power 12 roll back")
-	assert_eq(report["drained"], 400 - weak)
-	assert_almost_eq(report["return"], weak / 400.0, 1e-4)
-	# The sample from a uniform power is near the true share 11.875 / 100.
-	assert_almost_eq(report["return"], 0.11875, report["return_ci95"] * 1.5)
+	assert_eq(report["returned"], 0, "no power rolls back")
+	assert_eq(report["drained"], 400)
+	assert_eq(report["return"], 0.0)
+	assert_eq(report["bands"][0]["entry_x"]["median"], -1, "no pin to meet")
 
 
 func test_a_fixed_power_gives_one_outcome_with_no_spread() -> void:
@@ -38,7 +32,9 @@ func test_a_fixed_power_gives_one_outcome_with_no_spread() -> void:
 	plan.power_from = 70.0
 	plan.power_to = 70.0
 	var report := AnalysisReport.build(plan, PachinkoAnalysis.new(plan).run(), 1.0)
-	assert_true(report["return"] == 0.0 or report["return"] == 4.0, "every shot the same")
+	var payout := float(plan.level.pockets[0].payout)
+	var got: float = report["return"]
+	assert_true(got == 0.0 or is_equal_approx(got, payout), "every shot the same (%s)" % got)
 	assert_eq(report["return_ci95"], 0.0)
 	var band: Dictionary = report["bands"][3]
 	assert_eq(band["shots"], 60, "power 70 lies in the fourth band")
@@ -63,13 +59,37 @@ func test_the_rail_hand_over_changes_no_outcome() -> void:
 	var plan := AnalysisPlan.create(_classic(), 120, 5)
 	var analysis := PachinkoAnalysis.new(plan)
 	var with_table := analysis.run()
-	var clear: float = PachinkoAnalysis.LaunchCalibration.clear_speed(plan.level)
-	var full := PachinkoShotChunk.new(plan, clear, null)
+	var launch: LaunchTable = PachinkoAnalysis.LaunchCalibration.table(plan.level)
+	var full := PachinkoShotChunk.new(plan, launch, null)
 	assert_true(full.run(0))
 	assert_eq(with_table.band_pocket_hits, full.tally.band_pocket_hits)
 	assert_eq(with_table.band_value, full.tally.band_value)
 	assert_eq(with_table.band_returned, full.tally.band_returned)
 	assert_lt(with_table.ball_steps, full.tally.ball_steps, "the climbs were not simulated")
+
+
+func test_each_band_reports_where_its_shots_first_met_a_pin() -> void:
+	var plan := AnalysisPlan.create(_classic(), 500, 3)
+	var report := AnalysisReport.build(plan, PachinkoAnalysis.new(plan).run(), 1.0)
+	var bands: Array = report["bands"]
+	var weak: Dictionary = bands[0]["entry_x"]
+	var strong: Dictionary = bands[4]["entry_x"]
+	for entry: Dictionary in [weak, strong]:
+		assert_true(entry["p10"] <= entry["median"] and entry["median"] <= entry["p90"], str(entry))
+	# Classic's ring spans x 20..680: weak shots drop in beside the rail on the right, strong
+	# ones reach the left third.
+	assert_gte(int(weak["median"]), 548, "weak fifth: %s" % weak)
+	assert_lte(int(strong["median"]), 240, "strong fifth: %s" % strong)
+
+
+func test_entry_percentiles_come_from_the_counts() -> void:
+	var tally := AnalysisTally.new(1, Vector2(700, 700))
+	for x: float in [100.0, 200.0, 300.0, 400.0, 500.0, NAN]:
+		tally.record_entry(1, x)
+	assert_eq(tally.entry_percentile(1, 0.5), 300, "the middle of five")
+	assert_eq(tally.entry_percentile(1, 0.1), 100)
+	assert_eq(tally.entry_percentile(1, 0.9), 500)
+	assert_eq(tally.entry_percentile(0, 0.5), -1, "a band with no entries says so")
 
 
 func test_cancel_stops_a_background_run() -> void:

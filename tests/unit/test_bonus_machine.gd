@@ -5,6 +5,7 @@ extends GutTest
 ## seed gives the same reel results.
 
 const CLASSIC := "res://levels/pachinko/classic.board"
+const FeverGlow := preload("res://scenes/pachinko/bonus/fever_glow.gd")
 const DT := 1.0 / 120.0
 const START := Vector2(250, 300)
 const ATTACKER := Vector2(350, 420)
@@ -201,3 +202,19 @@ func test_rules_with_a_bonus_layer_are_freed_when_dropped() -> void:
 	rules = null
 	assert_null(machine_ref.get_ref(), "the bonus machine is freed with its rules")
 	assert_null(world_ref.get_ref(), "and so is the world")
+
+
+func test_the_fever_state_shows_while_the_attacker_is_open() -> void:
+	var level := _bonus_board()
+	var world := BoardWorldFactory.build(level)
+	var machine := BonusMachine.new(level, world, 1)
+	var glow := FeverGlow.new()
+	add_child_autofree(glow)
+	glow.bind(level, machine)
+	assert_false(glow.is_lit(), "no fever before a jackpot")
+	assert_eq(glow.caption(), "")
+	machine._on_spin_finished(PackedInt32Array([1, 1, 1]), true)
+	assert_true(glow.is_lit(), "a jackpot opens the attacker: fever")
+	assert_eq(glow.caption(), "FEVER  5s  2 to catch")
+	machine.advance(5.5)
+	assert_false(glow.is_lit(), "the round is over")

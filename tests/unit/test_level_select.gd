@@ -104,5 +104,5 @@ func test_best_results_are_shown_on_the_cards() -> void:
 	assert_has(_card_texts(await _open("pachinko")), "Not played yet")
 	App.record_pachinko_balls(pachinko_id, 23)
 	App.record_maze_time(maze_id, false, 101.34)
-	assert_has(_card_texts(await _open("pachinko")), "Best: 23 balls won")
+	assert_has(_card_texts(await _open("pachinko")), "Best: 23 balls paid back")
 	assert_has(_card_texts(await _open("maze")), "Best time: 1:41.3", "the maze clock's m:ss.t")

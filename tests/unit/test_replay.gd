@@ -51,8 +51,8 @@ class TestFormat:
 		replay.records.append(["tilt", 1, 3, 0, 5])
 		var text := Writer.write(replay)
 		assert_string_contains(text, '["tilts","')
-		assert_string_contains(text, '{"replay": 3,', "files are written in format 3")
-		assert_string_contains(text, '"physics": %d}' % Replay.PHYSICS_VERSION)
+		assert_string_contains(text, '{"replay": 4,', "files are written in format 4")
+		assert_string_contains(text, '"physics": %d, "rules": 1}' % Replay.PHYSICS_VERSION)
 		var read := Reader.read(text)
 		assert_true(read.has("replay"), str(read.get("error")))
 		assert_eq((read["replay"] as Replay).records, replay.records)
@@ -74,8 +74,8 @@ class TestFormat:
 				var tilt := Replay.frame_tilt(record, frame)
 				var steps := Replay.frame_steps(record, frame)
 				lines.append(JSON.stringify(["tilt", 1, steps, tilt.x, tilt.y]))
-		var text := Writer.write(replay).get_slice("\n", 0).replace('"replay": 3', '"replay": 1')
-		text = text.replace(', "physics": %d' % Replay.PHYSICS_VERSION, "")
+		var text := Writer.write(replay).get_slice("\n", 0).replace('"replay": 4', '"replay": 1')
+		text = text.replace(', "physics": %d, "rules": 1' % Replay.PHYSICS_VERSION, "")
 		var read := Reader.read(text + "\n" + "\n".join(lines) + "\n")
 		assert_true(read.has("replay"), str(read.get("error")))
 		var old: Replay = read["replay"]
@@ -251,12 +251,42 @@ class TestCommand:
 			)
 		)
 
+	func test_a_pachinko_run_from_the_rules_before_aimed_launches_exits_2_naming_both() -> void:
+		var level := Kit.load_level(PACHINKO_CLASSIC)
+		var rules := PachinkoRules.new(level, 1)
+		var recorder := ReplayRecorder.new()
+		recorder.attach_pachinko(rules, 1)
+		rules.start_game()
+		rules.fire(50.0)
+		for i in 30:
+			rules.advance(1.0 / 60.0)
+			recorder.note_frame()
+		var replay := recorder.finish()
+		assert_eq(replay.rules_version, 2, "pachinko runs are recorded under rules 2")
+		var text := Writer.write(replay)
+		var old_text := text.replace(', "rules": 2', "").replace('"replay": 4', '"replay": 3')
+		var old: Replay = Reader.read(old_text)["replay"]
+		assert_eq(old.rules_version, 1, "files before format 4 were recorded with rules 1")
+		assert_string_contains(
+			old.physics_problem(),
+			"recorded with pachinko rules version 1 and this game plays version 2"
+		)
+		var file := FileAccess.open(TEMP, FileAccess.WRITE)
+		file.store_string(old_text)
+		file.close()
+		assert_eq(ReplayCli.run({"replay": TEMP}), 2, "refused, not replayed into another game")
+		assert_eq(ReplayStore.read_file(TEMP)["replay"].physics_problem(), old.physics_problem())
+
 	func test_the_physics_field_belongs_to_format_3_and_up() -> void:
 		var header := Writer.write(_recorded()).get_slice("\n", 0)
 		var physics := ', "physics": %d' % Replay.PHYSICS_VERSION
 		var cases := {
 			header.replace(physics, ""): 'the header has no "physics"',
-			header.replace('"replay": 3', '"replay": 2'): '"physics" came with format 3',
+			header.replace('"replay": 4', '"replay": 2').replace(', "rules": 1', ""):
+			'"physics" came with format 3',
+			header.replace('"replay": 4', '"replay": 3'): '"rules" came with format 4',
+			header.replace(', "rules": 1', ""): 'the header has no "rules"',
+			header.replace('"rules": 1', '"rules": 0'): '"rules" must be a whole number from 1',
 			header.replace(physics, ', "physics": 0'):
 			'"physics" must be a whole number from 1 to 1000',
 			header.replace(physics, ', "physics": "2"'):

@@ -6,10 +6,12 @@ extends Node
 const BonusArt := preload("res://scenes/pachinko/bonus/bonus_art.gd")
 const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 const JackpotBanner := preload("res://scenes/pachinko/bonus/jackpot_banner.gd")
+const FeverGlow := preload("res://scenes/pachinko/bonus/fever_glow.gd")
 
 var art := BonusArt.new()
 var reels := ReelDisplay.new()
 var banner := JackpotBanner.new()
+var fever := FeverGlow.new()
 
 var _sounds: SoundBank
 var _rules: PachinkoRules
@@ -24,9 +26,20 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 	board_view.move_child(art, under)
 	board_view.add_child(reels)
 	board_view.move_child(reels, under + 1)
+	board_view.add_child(fever)
+	board_view.move_child(fever, under + 2)
 	board_view.add_child(banner)
-	SoundBank.warm(
-		[SoundBank.REEL_STOP, SoundBank.JACKPOT, SoundBank.TULIP_OPEN, SoundBank.START_CATCH]
+	(
+		SoundBank
+		. warm(
+			[
+				SoundBank.REEL_STOP,
+				SoundBank.JACKPOT,
+				SoundBank.TULIP_OPEN,
+				SoundBank.START_CATCH,
+				SoundBank.FEVER_END,
+			]
+		)
 	)
 
 
@@ -36,6 +49,7 @@ func bind(rules: PachinkoRules) -> void:
 	var machine := rules.bonus
 	art.bind(rules.level, machine)
 	reels.bind(rules.level, machine)
+	fever.bind(rules.level, machine)
 	machine.start_caught.connect(_on_start_caught)
 	machine.reel_stopped.connect(_on_reel_stopped)
 	machine.reels_finished.connect(_on_reels_finished)
@@ -62,8 +76,10 @@ func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
 		_play(SoundBank.JACKPOT)
 
 
-func _on_attacker_changed(index: int, _open: bool) -> void:
+func _on_attacker_changed(index: int, open: bool) -> void:
 	art.flash(index)
+	if not open and not _rules.bonus.any_attacker_open():
+		_play(SoundBank.FEVER_END, -3.0)
 
 
 func _on_tulip_changed(index: int, open: bool) -> void:

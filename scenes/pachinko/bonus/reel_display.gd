@@ -1,10 +1,11 @@
 extends Node2D
 ## The three digital reels on the board: a dark window with one rolling number per reel,
 ## the reels stopping one by one, "REACH" while the last reel decides a possible jackpot,
-## and four lamps for the spins waiting. Drawn under the balls, so play stays visible.
+## and four lamps for the spins waiting. Before the first spin the reels show dashes. The
+## window is a solid piece in the world (BonusGeometry.reel_frame), so balls go round it.
 
 ## Half the panel's size, board pixels.
-const HALF := Vector2(54.0, 22.0)
+const HALF := BonusGeometry.REEL_HALF
 const SYMBOL_COLORS: Array[Color] = [
 	Color("ff5a5a"),
 	Color("5ab4ff"),
@@ -23,14 +24,20 @@ var _clock := 0.0
 
 ## Where the reels sit on `level`: high in the middle of the field.
 static func spot(level: BoardLevel) -> Vector2:
-	return level.ring_center + Vector2(0.0, -level.ring_radius * 0.6)
+	return BonusGeometry.reel_spot(level)
+
+
+## What a reel's face shows for `symbol` (ReelSet.shown_symbol): its number, or a dash
+## before the first spin.
+static func face_text(symbol: int) -> String:
+	return "-" if symbol < 0 else str(symbol + 1)
 
 
 ## Shows `machine`'s reels on `level`.
 func bind(level: BoardLevel, machine: BonusMachine) -> void:
 	_machine = machine
 	position = spot(level)
-	visible = _has_start(level)
+	visible = BonusGeometry.has_reels(level)
 	set_process(visible)
 	queue_redraw()
 
@@ -45,7 +52,19 @@ func _draw() -> void:
 		return
 	var reels := _machine.reels
 	var panel := Rect2(-HALF, HALF * 2.0)
-	draw_rect(panel.grow(3.0), Color(0.85, 0.68, 0.25, 0.9))
+	var frame := panel.grow(BonusGeometry.REEL_FRAME_RADIUS)
+	var gold := Color(0.85, 0.68, 0.25, 0.95)
+	# The roof balls roll off (the same shape as the frame in the world).
+	var roof := PackedVector2Array(
+		[
+			frame.position,
+			Vector2(0.0, frame.position.y - BonusGeometry.REEL_ROOF),
+			Vector2(frame.end.x, frame.position.y),
+		]
+	)
+	draw_colored_polygon(roof, gold)
+	draw_polyline(roof, gold.lightened(0.3), 2.0)
+	draw_rect(frame, gold)
 	draw_rect(panel, Color(0.04, 0.02, 0.08, 0.88))
 	var font := ThemeDB.fallback_font
 	var cell := HALF.x * 2.0 / ReelSet.REELS
@@ -56,8 +75,10 @@ func _draw() -> void:
 		)
 		draw_rect(box, Color(0.12, 0.1, 0.2, 0.9))
 		var symbol := reels.shown_symbol(reel)
-		var color := SYMBOL_COLORS[symbol % SYMBOL_COLORS.size()]
-		var text := str(symbol + 1)
+		var color := (
+			SYMBOL_COLORS[symbol % SYMBOL_COLORS.size()] if symbol >= 0 else Color(0.5, 0.5, 0.6)
+		)
+		var text := face_text(symbol)
 		var size := 30
 		var width := font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, size).x
 		var base := Vector2(box.get_center().x - width * 0.5, box.get_center().y + 11.0)
@@ -110,10 +131,3 @@ func _draw_queue_lamps() -> void:
 		var on := i < _machine.queued_spins()
 		draw_circle(at, 4.0, Color(0, 0, 0, 0.7))
 		draw_circle(at, 3.0, Color("ffd84a") if on else Color(0.3, 0.25, 0.2))
-
-
-func _has_start(level: BoardLevel) -> bool:
-	for spec in level.bonus_pockets:
-		if spec != null and spec.role == BonusPocketSpec.Role.START:
-			return true
-	return false

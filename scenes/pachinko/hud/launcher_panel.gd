@@ -145,18 +145,7 @@ func _draw_bar() -> void:
 	var filled := Rect2(BAR.position + Vector2(0, BAR.size.y - fill), Vector2(BAR.size.x, fill))
 	draw_rect(filled, RED)
 	draw_rect(Rect2(filled.position, Vector2(6, filled.size.y)), RED.lightened(0.35))
-	# Below this mark a shot cannot clear the rail and rolls back to the cup.
-	var weak := BAR.size.y * LaunchPower.CLEAR_POWER / 100.0
-	draw_rect(
-		Rect2(BAR.position + Vector2(0, BAR.size.y - weak), Vector2(BAR.size.x, weak)),
-		Color(0, 0, 0, 0.35)
-	)
-	var mark_y := BAR.end.y - weak
-	draw_line(Vector2(BAR.position.x, mark_y), Vector2(BAR.end.x, mark_y), Color("f0c24a"), 1.5)
 	var font := get_theme_default_font()
-	var tag_width := font.get_string_size("weak", HORIZONTAL_ALIGNMENT_LEFT, -1, 11).x
-	var tag_at := Vector2(BAR.get_center().x - tag_width * 0.5, BAR.end.y - weak * 0.5 + 4.0)
-	draw_string(font, tag_at, "weak", HORIZONTAL_ALIGNMENT_LEFT, -1, 11, Color("f0c24a"))
 	for i in 11:
 		var y := BAR.end.y - BAR.size.y * i / 10.0
 		var tick := 10.0 if i % 5 == 0 else 5.0

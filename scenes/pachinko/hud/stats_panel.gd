@@ -16,35 +16,30 @@ func _ready() -> void:
 	add_child(_text)
 
 
-## Shows `stats` (PachinkoRules.stats()).
+## Shows `stats` (PachinkoRules.stats(true): this game's figures).
 func show_stats(stats: Dictionary) -> void:
 	if _text == null:
 		return
-	var hits: Array = stats.get("pocket_hits", [])
-	var pocket_line := ""
-	for i in hits.size():
-		var count: int = hits[i]
-		pocket_line += "%s[b]%d[/b]" % ["" if i == 0 else "  ", count]
-	if pocket_line.is_empty():
-		pocket_line = "none"
+	_text.text = "\n".join(lines_for(stats))
+
+
+## The panel's lines for `stats`, in the words the card and the game-over box use:
+## "pocket hits" counts every paying piece (pockets, start pockets, attackers, tulips),
+## "paid back" the balls they paid into the cup.
+static func lines_for(stats: Dictionary) -> PackedStringArray:
+	var hits := 0
+	for count: int in stats.get("pocket_hits", []):
+		hits += count
+	var shots: int = stats.get("shots", 0)
+	var paid: int = stats.get("payouts", 0)
 	var ratio: float = stats.get("payout_ratio", 0.0)
-	var lines := PackedStringArray(
+	return PackedStringArray(
 		[
+			"[b]Shots[/b] %d    [b]In play[/b] %d" % [shots, stats.get("in_play", 0)],
 			(
-				"[b]Shots[/b] %d    [b]In play[/b] %d"
-				% [stats.get("shots", 0), stats.get("in_play", 0)]
+				"[b]Pocket hits[/b] %d    [b]Lost in the gutter[/b] %d"
+				% [hits, stats.get("drained", 0)]
 			),
-			(
-				"[b]Won[/b] %d    [b]Drained[/b] %d    [b]Back[/b] %d"
-				% [stats.get("won", 0), stats.get("drained", 0), stats.get("returned", 0)]
-			),
-			"[b]Pocket hits[/b]  %s" % pocket_line,
-			"[b]Paid out[/b] %d balls    [b]Ratio[/b] %.2f" % [stats.get("payouts", 0), ratio],
-			(
-				"[color=#8fe39a]Every ball accounted for[/color]"
-				if stats.get("accounting_ok", false)
-				else "[color=#ff7a7a]Ball count mismatch[/color]"
-			),
+			"[b]Paid back[/b] %d balls, %.2f a shot" % [paid, ratio],
 		]
 	)
-	_text.text = "\n".join(lines)

@@ -26,6 +26,9 @@ var result := PackedInt32Array([0, 0, 0])
 var stopped := REELS
 ## Seconds since the spin started.
 var elapsed := 0.0
+## False until the first spin: the reels then show no number (a face of three equal
+## numbers before any spin would read as a jackpot).
+var spun := false
 
 
 ## True from a spin's start until its result has settled.
@@ -36,6 +39,7 @@ func busy() -> bool:
 ## Starts a spin that will land on `landing` (REELS symbols below `symbol_count`).
 func start(landing: PackedInt32Array, symbol_count: int) -> void:
 	symbols = maxi(symbol_count, 1)
+	spun = true
 	result = landing.duplicate()
 	stopped = 0
 	elapsed = 0.0
@@ -72,8 +76,10 @@ func advance(delta: float) -> void:
 
 
 ## The symbol reel `reel` shows now: its result once stopped, else a rolling symbol (for
-## drawing; the rolling one depends on time only).
+## drawing; the rolling one depends on time only); -1 before the first spin.
 func shown_symbol(reel: int) -> int:
+	if not spun:
+		return -1
 	if reel < stopped:
 		return result[reel]
 	return (int(elapsed * 14.0) + reel * 2 + result[reel]) % symbols

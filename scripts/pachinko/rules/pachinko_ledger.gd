@@ -3,6 +3,10 @@ extends RefCounted
 ## pocket payouts; each one is then in the cup, loaded, in play, drained or won (caught by
 ## a pocket). `balances()` checks that those add up, so no ball is ever lost silently.
 
+const _COUNTERS: Array[String] = [
+	"given", "paid", "shots", "drained", "won", "returned", "nudges", "vanished"
+]
+
 ## Balls put in the cup when games started.
 var given := 0
 ## Balls paid into the cup by pockets.
@@ -19,7 +23,8 @@ var returned := 0
 var nudges := 0
 ## Balls the world removed without telling the rules (should stay 0; counted as drained).
 var vanished := 0
-## Catches per pocket, by pocket index.
+## Catches per pocket, by world pocket id: the board's pockets, then its bonus pockets
+## (start pockets, attackers, tulips: every piece that pays).
 var pocket_hits := PackedInt32Array()
 ## Balls paid per pocket, by pocket index.
 var pocket_payouts := PackedInt32Array()
@@ -37,6 +42,36 @@ func record_win(pocket: int, payout: int) -> void:
 	if pocket >= 0 and pocket < pocket_hits.size():
 		pocket_hits[pocket] += 1
 		pocket_payouts[pocket] += payout
+
+
+## A copy of the counts as they are now.
+func copy() -> RefCounted:
+	var script: GDScript = get_script()
+	var other: RefCounted = script.new(pocket_hits.size())
+	for key: String in _COUNTERS:
+		other.set(key, get(key))
+	other.set("pocket_hits", pocket_hits.duplicate())
+	other.set("pocket_payouts", pocket_payouts.duplicate())
+	return other
+
+
+## The counts since `earlier` (a copy taken before, see copy()): this one's less its.
+func since(earlier: RefCounted) -> RefCounted:
+	var other := copy()
+	for key: String in _COUNTERS:
+		var now: int = get(key)
+		var before: int = earlier.get(key)
+		other.set(key, now - before)
+	var hits := pocket_hits.duplicate()
+	var pays := pocket_payouts.duplicate()
+	var hits_before: PackedInt32Array = earlier.get("pocket_hits")
+	var pays_before: PackedInt32Array = earlier.get("pocket_payouts")
+	for i in mini(hits_before.size(), hits.size()):
+		hits[i] -= hits_before[i]
+		pays[i] -= pays_before[i]
+	other.set("pocket_hits", hits)
+	other.set("pocket_payouts", pays)
+	return other
 
 
 ## True when cup + loaded + in play + drained + won equals every ball ever given or paid.

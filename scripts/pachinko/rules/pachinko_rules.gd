@@ -81,9 +81,9 @@ var _rng := RandomNumberGenerator.new()
 var _step_seconds := 1.0 / 60.0
 var _launch_pos := Vector2.ZERO
 var _launch_dir := Vector2.RIGHT
-var _clear_speed := 0.0
-var _game_start_paid := 0
-var _game_start_shots := 0
+var _launch_table: LaunchTable
+# The session's counts when the current game started (the game's own are the difference).
+var _game_start: Ledger
 
 
 ## Builds the world for `board`. `rng_seed` makes the nudges repeatable.
@@ -98,14 +98,14 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 		bonus = BonusMachine.new(level, world, rng_seed)
 		return
 	level = board
-	ledger = Ledger.new(board.pockets.size())
+	ledger = Ledger.new(board.pockets.size() + board.bonus_pockets.size())
 	world = BoardWorldFactory.build(board)
 	bonus = BonusMachine.new(board, world, rng_seed)
 	# The world's own tuning: the board's, or the defaults when the board has none.
 	_step_seconds = 1.0 / maxf(world.tuning.fixed_hz, 1.0)
 	_launch_pos = LaunchRail.launch_position(board)
 	_launch_dir = LaunchRail.launch_direction(board)
-	_clear_speed = LaunchCalibration.clear_speed(board)
+	_launch_table = LaunchCalibration.table(board)
 	world.ball_captured.connect(_on_ball_pocketed)
 	world.ball_drained.connect(_on_ball_drained)
 	world.ball_entered_zone.connect(_on_ball_entered_zone)
@@ -116,10 +116,9 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 func start_game() -> bool:
 	if state == State.PLAYING or level.ring_radius <= 0.0:
 		return false
+	_game_start = ledger.copy() as Ledger
 	cup += level.cup_start_balls
 	ledger.given += level.cup_start_balls
-	_game_start_paid = ledger.paid
-	_game_start_shots = ledger.shots
 	_set_state(State.PLAYING)
 	game_started.emit(cup)
 	cup_changed.emit(cup)
@@ -215,9 +214,12 @@ func rail_blocked() -> bool:
 	return RailTraffic.ball_coming_down(level, world.get_positions(), world.get_velocities())
 
 
-## Launch speed at the bottom of the rail for a power (see launch_power.gd).
+## Launch speed at the bottom of the rail for a power: the one the board's LaunchTable
+## says reaches the power's mouth speed (see launch_power.gd).
 func launch_speed(shot_power: float) -> float:
-	return LaunchPower.launch_speed(shot_power, _clear_speed)
+	if _launch_table == null:
+		return 0.0
+	return _launch_table.launch_speed(shot_power)
 
 
 ## Runs the simulation for `delta` seconds of game time; returns the steps taken.
@@ -263,18 +265,27 @@ func accounting_ok() -> bool:
 	return balanced and world.ball_count() == _in_play.size()
 
 
-## Everything the stats panel and the autoplay report.
-func stats() -> Dictionary:
-	var out := ledger.to_dict()
+## Everything the autoplay reports, counted over every game since the rules were made;
+## with `this_game` the same figures over the current (or last) game only: what the side
+## panel shows, so "play again" starts it from nothing.
+func stats(this_game: bool = false) -> Dictionary:
+	var game := _game_ledger()
+	var out := game.to_dict() if this_game else ledger.to_dict()
 	out["cup"] = cup
 	out["loaded"] = loaded
 	out["in_play"] = _in_play.size()
 	out["balls_left"] = cup + (1 if loaded else 0)
-	out["game_payouts"] = ledger.paid - _game_start_paid
-	out["game_shots"] = ledger.shots - _game_start_shots
+	out["game_payouts"] = game.paid
+	out["game_shots"] = game.shots
+	out["game_hits"] = game.won
 	out["accounting_ok"] = accounting_ok()
 	out.merge(bonus.counters())
 	return out
+
+
+# The counts of the current (or last) game: the session's less those at its start.
+func _game_ledger() -> Ledger:
+	return (ledger.since(_game_start) if _game_start != null else ledger.copy()) as Ledger
 
 
 func _after_steps(steps: int) -> void:

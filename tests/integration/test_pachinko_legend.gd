@@ -1,0 +1,63 @@
+extends GutTest
+## The instructions explain each board's own pieces: a drawing and one line per kind of
+## piece the board has, and nothing about pieces it does not have.
+
+const PANEL := "res://scenes/pachinko/instructions_panel.tscn"
+const BoardPieces := preload("res://scenes/pachinko/legend/board_pieces.gd")
+
+
+func _lines_for(id: String) -> PackedStringArray:
+	var panel := (load(PANEL) as PackedScene).instantiate() as Control
+	add_child_autofree(panel)
+	var level := BoardLoader.load_board("res://levels/pachinko/%s.board" % id).level
+	panel.call("show_start", level)
+	var legend: VBoxContainer = panel.get("_legend")
+	assert_true(legend.visible)
+	for row in legend.get_children():
+		assert_eq(row.get_child_count(), 2, "a drawing and a line")
+		var icon := row.get_child(0) as Control
+		assert_gt(icon.custom_minimum_size.x, 0.0, "the drawing has room")
+	return legend.call("lines")
+
+
+func _joined(lines: PackedStringArray) -> String:
+	return "\n".join(lines)
+
+
+func test_classic_explains_only_its_pockets() -> void:
+	var lines := _lines_for("classic")
+	assert_eq(lines.size(), 1)
+	assert_string_contains(lines[0], "Pocket: a ball that drops in pays 7 balls")
+
+
+func test_hanami_explains_its_start_pockets_attacker_and_tulips() -> void:
+	var text := _joined(_lines_for("hanami"))
+	assert_string_contains(text, "START pocket")
+	assert_string_contains(text, "ATTACKER")
+	assert_string_contains(text, "Tulip")
+	assert_false(text.contains("Pocket: "), "Hanami has no plain pockets")
+
+
+func test_tulip_garden_explains_its_pockets_and_tulips_only() -> void:
+	var text := _joined(_lines_for("tulips"))
+	assert_string_contains(text, "Pocket: ")
+	assert_string_contains(text, "Tulip: pays 3 balls")
+	assert_false(text.contains("START"))
+	assert_false(text.contains("ATTACKER"))
+
+
+func test_the_game_over_box_leaves_the_pieces_out() -> void:
+	var panel := (load(PANEL) as PackedScene).instantiate() as Control
+	add_child_autofree(panel)
+	var level := BoardLoader.load_board("res://levels/pachinko/fever.board").level
+	panel.call("show_start", level)
+	panel.call("show_game_over", level, {"game_shots": 3, "game_payouts": 4}, 0, false)
+	assert_false((panel.get("_legend") as Control).visible)
+
+
+func test_mixed_payouts_read_as_a_range() -> void:
+	var level := (
+		BoardLoader.load_board("res://levels/pachinko/classic.board").level.duplicate_level()
+	)
+	level.pockets[0].payout = 2
+	assert_string_contains(BoardPieces.line(level, BoardPieces.Piece.POCKET), "2 to 7 balls")
