@@ -27,8 +27,9 @@ func after_all() -> void:
 func _copy(target_name: String, description := "") -> String:
 	var text := FileAccess.get_file_as_string(CLASSIC)
 	if not description.is_empty():
-		var old := "The original machine: five pockets, each paying three balls."
-		text = text.replace(old, description)
+		# whatever Classic's own description says today, this one takes its place
+		var line := RegEx.create_from_string('"description": "[^"]*"')
+		text = line.sub(text, '"description": "%s"' % description)
 	var target := "%s/pachinko/%s" % [ROOT, target_name]
 	var file := FileAccess.open(target, FileAccess.WRITE)
 	file.store_string(text)

@@ -6,6 +6,7 @@ extends RefCounted
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
 const LevelSelect := preload("res://scenes/menu/level_select.gd")
+const MyBoardsDialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const SETTINGS := "res://scenes/menu/settings_menu.tscn"
@@ -77,20 +78,19 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		"menu_export_dialog":
 			screen = await _level_select(tree, BoardLevel.PACHINKO_NAME)
 			if screen != null:
-				var card: Control = screen.call("first_card")
-				screen.get_node("%Dialogs").call("ask_export", str(card.get("board_path")))
+				var dialogs: MyBoardsDialogs = screen.get_node("%Dialogs")
+				dialogs.ask_export(str((screen as LevelSelect).first_card().get("board_path")))
 		"menu_delete_dialog":
 			screen = await ScreenOpener.open(
 				tree, App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME), LEVEL_SELECT
 			)
 			if screen != null:
 				await _show_my_boards(tree, screen as LevelSelect)
-				var slots: Array = screen.call("my_slots")
+				var slots := (screen as LevelSelect).my_slots()
 				if not slots.is_empty():
-					var card: Control = slots[0].get("card")
-					screen.get_node("%Dialogs").call(
-						"ask_delete", str(card.get("board_path")), slots[0].call("shown_name")
-					)
+					var dialogs: MyBoardsDialogs = screen.get_node("%Dialogs")
+					var path := str(slots[0].card.get("board_path"))
+					dialogs.ask_delete(path, slots[0].shown_name())
 		"menu_pause":
 			App.request_board(BoardLevel.PACHINKO_NAME, "res://levels/pachinko/classic.board")
 			screen = await ScreenOpener.open(
