@@ -46,6 +46,31 @@ func test_tulip_garden_explains_its_pockets_and_tulips_only() -> void:
 	assert_false(text.contains("ATTACKER"))
 
 
+func test_windmills_explains_its_windmills_with_a_drawing() -> void:
+	var lines := _lines_for("windmills")
+	var text := _joined(lines)
+	assert_string_contains(text, "Windmill: ")
+	assert_string_contains(text, "a red hub turns by itself, a brass one only when balls hit it")
+	assert_string_contains(text, "Pocket: ")
+	assert_eq(lines[0].left(9), "Windmill:", "balls meet the windmills before the pockets")
+
+
+func test_boards_without_windmills_do_not_mention_them() -> void:
+	for id: String in ["classic", "tulips", "fever", "hanami"]:
+		assert_false(_joined(_lines_for(id)).contains("Windmill"), id)
+
+
+func test_a_board_with_only_free_wheels_says_they_turn_when_hit() -> void:
+	var level := (
+		BoardLoader.load_board("res://levels/pachinko/windmills.board").level.duplicate_level()
+	)
+	for spec in level.windmills:
+		spec.free_spin = true
+	var line := BoardPieces.line(level, BoardPieces.Piece.WINDMILL)
+	assert_string_contains(line, "it only turns when balls hit it")
+	assert_false(line.contains("red hub"))
+
+
 func test_the_game_over_box_leaves_the_pieces_out() -> void:
 	var panel := (load(PANEL) as PackedScene).instantiate() as Control
 	add_child_autofree(panel)

@@ -3,12 +3,15 @@ extends RefCounted
 ## each with one line saying what it does, in the board's own numbers. The instructions
 ## panel shows them, each beside a small drawing (piece_icon.gd).
 
-enum Piece { POCKET, START, ATTACKER, TULIP }
+enum Piece { POCKET, START, ATTACKER, TULIP, WINDMILL }
 
 
 ## The kinds of piece `level` has, in the order a player meets them.
 static func of(level: BoardLevel) -> Array[Piece]:
 	var found: Array[Piece] = []
+	# A ball meets the windmills in the field before it reaches any pocket.
+	if not level.windmills.is_empty():
+		found.append(Piece.WINDMILL)
 	if not level.pockets.is_empty():
 		found.append(Piece.POCKET)
 	for piece: Piece in [Piece.START, Piece.ATTACKER, Piece.TULIP]:
@@ -46,7 +49,29 @@ static func line(level: BoardLevel, piece: Piece) -> String:
 				)
 				+ " shuts them."
 			)
+		Piece.WINDMILL:
+			return _windmill_line(level)
 	return ""
+
+
+# Driven wheels (red hub) turn by themselves; free ones (brass hub) only when struck. The line
+# names the kinds the board has.
+static func _windmill_line(level: BoardLevel) -> String:
+	var driven := false
+	var free := false
+	for spec in level.windmills:
+		if spec == null:
+			continue
+		if spec.free_spin:
+			free = true
+		else:
+			driven = true
+	var start := "Windmill: its spinning blades knock a ball aside and change where it falls"
+	if driven and free:
+		return start + "; a red hub turns by itself, a brass one only when balls hit it."
+	if free:
+		return start + "; it only turns when balls hit it."
+	return start + "."
 
 
 ## The bonus pockets of `level` that are `piece` (a bonus kind).

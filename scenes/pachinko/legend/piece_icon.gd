@@ -1,7 +1,7 @@
 extends Control
 ## A small drawing of one kind of board piece, as it looks on the board: a plain pocket's
-## cup, or a bonus pocket drawn by BonusPainter (a tulip with its petals open, so a player
-## sees what a catch does).
+## cup, a bonus pocket drawn by BonusPainter (a tulip with its petals open, so a player
+## sees what a catch does), or the board's first windmill drawn by WindmillPainter.
 
 const BoardPieces := preload("res://scenes/pachinko/legend/board_pieces.gd")
 const BonusPainter := preload("res://scenes/board_view/bonus_painter.gd")
@@ -25,6 +25,9 @@ func _draw() -> void:
 	if _piece == BoardPieces.Piece.POCKET:
 		_draw_pocket()
 		return
+	if _piece == BoardPieces.Piece.WINDMILL:
+		_draw_windmill()
+		return
 	var specs := BoardPieces.bonus_specs(_level, _piece)
 	if specs.is_empty():
 		return
@@ -34,6 +37,18 @@ func _draw() -> void:
 	var zoom := minf(1.0, (SIZE.x - 8.0) / (spec.width + 16.0))
 	draw_set_transform(Vector2(SIZE.x * 0.5, 14.0), 0.0, Vector2(zoom, zoom))
 	BonusPainter.draw_pocket(self, _level, spec, _piece == BoardPieces.Piece.TULIP, 0.0)
+	draw_set_transform(Vector2.ZERO)
+
+
+# The board's first wheel at rest, scaled to fill the box's height.
+func _draw_windmill() -> void:
+	if _level.windmills.is_empty() or _level.windmills[0] == null:
+		return
+	var spec := _level.windmills[0].duplicate() as WindmillSpec
+	spec.position = Vector2.ZERO
+	var zoom := (SIZE.y * 0.5 - 3.0) / maxf(spec.sweep_radius(), 1.0)
+	draw_set_transform(SIZE * 0.5, 0.0, Vector2(zoom, zoom))
+	WindmillPainter.draw_wheel(self, spec, -PI * 0.5)
 	draw_set_transform(Vector2.ZERO)
 
 
