@@ -11,8 +11,17 @@ func test_ten_minutes_on_fever_bring_spins_and_a_jackpot() -> void:
 	var report: Dictionary = AutoplayScript.run(level, 600.0, 7)
 	assert_gt(report["reel_spins"], 0, "the start pocket caught balls")
 	assert_gt(report["jackpots"], 0, "at least one jackpot")
-	assert_gt(report["attacker_paid"], 0, "the open attacker caught balls")
 	assert_gt(report["tulip_opens"], 0)
+	assert_true(report["accounting_ok"])
+
+
+# Since shots aim across the whole field, single shots at random strengths seldom find the
+# attacker in its 8 s; a player in fever holds the handle at a strength that feeds it.
+func test_ten_minutes_holding_the_handle_on_fever_feed_the_open_attacker() -> void:
+	var level: BoardLevel = load(FEVER)
+	var report: Dictionary = AutoplayScript.run(level, 600.0, 7, null, 60)
+	assert_gt(report["jackpots"], 0, "at least one jackpot")
+	assert_gt(report["attacker_paid"], 0, "the open attacker caught balls")
 	assert_true(report["accounting_ok"])
 
 

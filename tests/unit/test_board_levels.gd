@@ -58,8 +58,9 @@ func test_classic_pachinko_matches_the_chapter() -> void:
 	var level := _load(SHIPPED[0])
 	assert_eq(level.pockets.size(), 5)
 	for spec in level.pockets:
-		# The chapter paid 4; with power aiming that returned over a ball per ball.
-		assert_eq(spec.payout, 3, "every pocket pays 3 balls")
+		# The chapter paid 4. Since shots aim across the whole field (LaunchTable) fewer reach
+		# the pockets, and 7 brings the return back to 0.85 (make analyze).
+		assert_eq(spec.payout, 7, "every pocket pays 7 balls")
 	assert_eq(level.cup_start_balls, 25)
 	assert_eq(level.ball_radius, 5.0)
 	assert_between(level.pins.size(), 200, 900, "a few hundred pins")
@@ -71,7 +72,11 @@ func test_classic_pachinko_matches_the_chapter() -> void:
 	assert_eq(specials, 5, "one special pin per pocket")
 	assert_between(level.gutter_start_deg, 0.0, 90.0, "gutter at the bottom")
 	assert_between(level.gutter_end_deg, 90.0, 180.0, "gutter at the bottom")
-	assert_lt(LaunchRail.entry_point(level).y, level.ring_center.y - level.ring_radius * 0.8)
+	# The rail opens on the upper right (-30 degrees since the aimed launch), so a weak shot
+	# drops in near the rail and a strong one rides the ring over the top.
+	var entry := LaunchRail.entry_point(level)
+	assert_lt(entry.y, level.ring_center.y - level.ring_radius * 0.4, "the rail opens up high")
+	assert_gt(entry.x, level.ring_center.x + level.ring_radius * 0.6, "on the right")
 
 
 func test_classic_maze_is_the_tutorial_layout() -> void:
