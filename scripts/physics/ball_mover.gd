@@ -98,18 +98,7 @@ func _move_ball(i: int) -> void:
 			_v *= _max_speed / sqrt(speed2)
 	if _rad[i] != _r:
 		_set_radius(_rad[i])
-	# Substeps of at most the safe travel (velocity plus push, capped at half the radius).
-	var push: Vector2 = _push[i]
-	var steps := 1
-	if push != Vector2.ZERO:
-		steps = _steps_with_push(push)
-	else:
-		var travel: float = (_v * _dt).length()
-		if travel > _max_travel:
-			steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
-		_push_step = Vector2.ZERO
-	if _has_wheels:
-		steps = _wheel_steps(steps)
+	var steps := _substeps(_push[i])
 	_h = _dt / steps
 	_p_start = _p
 	# The cell the ball is in (for its broad-phase key), while no contact has moved it since.
@@ -160,6 +149,22 @@ func _move_ball(i: int) -> void:
 		_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
+
+
+## Substeps of at most the safe travel (velocity plus push, capped at half the radius),
+## more near a windmill; sets the push share of each substep.
+func _substeps(push: Vector2) -> int:
+	var steps := 1
+	if push != Vector2.ZERO:
+		steps = _steps_with_push(push)
+	else:
+		var travel: float = (_v * _dt).length()
+		if travel > _max_travel:
+			steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
+		_push_step = Vector2.ZERO
+	if _has_wheels:
+		steps = _wheel_steps(steps)
+	return steps
 
 
 ## Substeps for a ball pushed by `push` (ball-ball separation, capped at half the radius
