@@ -14,7 +14,8 @@ const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const CardActionsMenu := preload("res://scenes/menu/card_actions_menu.gd")
 const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
 const LevelCard := preload("res://scenes/menu/level_card.gd")
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const Words := preload("res://scenes/menu/level_select_words.gd")
+const BoardImportQueue := preload("res://scenes/menu/board_import_queue.gd")
 ## Room between cards, across and down (the grids' separations in the scene).
 const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.
@@ -36,10 +37,7 @@ var user_root := BoardLoader.USER_DIR
 var load_one := Callable()
 
 var _loadings: Dictionary = {}  # the grid a loading fills -> its BoardListLoading
-var _importing: BoardListLoading = null  # imports check and copy off the main thread
-var _import_waiting := PackedStringArray()  # files dropped while an import was running
-var _import_lines := PackedStringArray()  # what happened to each file imported so far
-var _import_refused := false
+var _imports := BoardImportQueue.new()  # imports check and copy off the main thread
 var _not_listed := 0  # files in My boards past MAX_LISTED
 var _unslotted: Dictionary = {}  # grid -> the listed paths that have no card yet
 var _early: Dictionary = {}  # grid -> {path: BoardLoadResult} loaded before its card was made
@@ -75,11 +73,12 @@ func _ready() -> void:
 	_scroll.resized.connect(_fit_columns)
 	get_window().files_dropped.connect(import_files)
 	kind = App.level_select_kind
+	_imports.titles = TITLES
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
 	_status.text = ""
 	_hint.text = (
 		"Arrows / D-pad: choose a board · Enter / A: play · %s: its menu · Esc / B: back"
-		% _menu_keys()
+		% Words.menu_keys()
 	)
 	reload()
 
@@ -88,14 +87,13 @@ func _exit_tree() -> void:
 	for loading: BoardListLoading in _loadings.values():
 		loading.cancel()
 	_loadings.clear()
-	if _importing != null:
-		_importing.cancel()
-		_importing = null
+	_imports.cancel()
 
 
 func _process(_delta: float) -> void:
-	if _importing != null:
-		_poll_imports()
+	if _imports.poll():
+		_say(_imports.report(), _imports.any_refused())
+		_load_section(_my_grid, user_root)
 	if _loadings.is_empty():
 		return
 	for grid: GridContainer in _unslotted.keys():
@@ -138,7 +136,7 @@ func _unhandled_input(event: InputEvent) -> void:
 
 ## Lists and loads every board file again (shipped and My boards).
 func reload() -> void:
-	_folder.text = "Folder: %s" % _shown_path("%s/%s" % [user_root, kind])
+	_folder.text = "Folder: %s" % Words.shown_path("%s/%s" % [user_root, kind])
 	_load_section(_grid, BoardLoader.LEVELS_DIR)
 	_load_section(_my_grid, user_root)
 
@@ -151,7 +149,7 @@ func use_folder(root: String) -> void:
 
 ## True while some board file is still loading or being imported.
 func is_loading() -> bool:
-	return not _loadings.is_empty() or _importing != null
+	return not _loadings.is_empty() or _imports.is_busy()
 
 
 ## Lists these load results as the shipped boards' cards (one per file, broken ones greyed),
@@ -174,48 +172,9 @@ func show_boards(results: Array[BoardLoadResult]) -> void:
 ## the main thread (each is read and checked first, which a large board makes slow), then
 ## says what happened to each. Files dropped while an import runs wait for it to finish.
 func import_files(sources: PackedStringArray) -> void:
-	_import_waiting.append_array(sources)
-	if _importing == null:
-		_start_imports()
-
-
-# One thread imports the waiting files in order (each picks a free file name in turn).
-func _start_imports() -> void:
-	var jobs: Array[Dictionary] = []
-	for source in _import_waiting:
-		jobs.append({"path": source, "kind": BoardLevel.kind_named(kind), "root": user_root})
-	_import_waiting = PackedStringArray()
-	_importing = BoardListLoading.new(jobs, UserBoards.import_result, 1)
-	_say("Importing %d file%s…" % [jobs.size(), "" if jobs.size() == 1 else "s"], false)
-
-
-func _poll_imports() -> void:
-	for done in _importing.take_finished():
-		var result: BoardLoadResult = done["result"]
-		if not result.ok():
-			_import_refused = true
-			_import_lines.append("Not imported: %s" % result.error)
-			continue
-		var line := (
-			'Imported "%s" into My boards as %s'
-			% [result.level.display_name, result.path.get_file()]
-		)
-		var its_kind := BoardLevel.kind_name(result.level.kind)
-		if its_kind != kind:
-			line += (
-				" (a %s board: find it in the %s list)" % [its_kind, TITLES.get(its_kind, its_kind)]
-			)
-		_import_lines.append(line + ".")
-	if _importing.is_busy():
-		return
-	if not _import_waiting.is_empty():
-		_start_imports()
-		return
-	_importing = null
-	_say("\n".join(_import_lines), _import_refused)
-	_import_lines = PackedStringArray()
-	_import_refused = false
-	_load_section(_my_grid, user_root)
+	var started := _imports.add(sources, kind, user_root)
+	if not started.is_empty():
+		_say(started, false)
 
 
 ## Writes the file of `board_path` to `target` (the export dialog's pick) and says so.
@@ -433,7 +392,7 @@ func _take_place_back() -> void:
 func _fill(grid: GridContainer, path: String, result: BoardLoadResult) -> void:
 	for slot in grid.get_children():
 		if slot is LevelSlot and (slot as LevelSlot).card.board_path == path:
-			(slot as LevelSlot).fill(result, _best_text(result))
+			(slot as LevelSlot).fill(result, Words.best_text(result, kind))
 	if kind == BoardLevel.MAZE_NAME:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
@@ -514,69 +473,12 @@ func _update_summary() -> void:
 		locked += 1 if card.get("locked") else 0
 	var mine := my_slots().size()
 	_my_empty.visible = mine == 0
-	if total == 0:
-		_summary.text = "No boards found in levels/%s/ or in My boards." % kind
-		return
-	var text := "%d board%s" % [total, "" if total == 1 else "s"]
-	if mine > 0:
-		text += " (%d of your own)" % mine
-	if waiting > 0:
-		text += ", %d loading…" % waiting
-	if broken > 0:
-		text += ", %d could not be loaded (greyed)" % broken
-	if locked > 0:
-		text += ", %d locked (finish the board before each to open it)" % locked
-	if _not_listed > 0:
-		text += "; %d more files not listed" % _not_listed  # short: the line has one row
-	_summary.text = text
+	_summary.text = Words.summary(kind, total, mine, waiting, broken, locked, _not_listed)
 
 
 func _say(message: String, is_problem: bool) -> void:
 	_status.text = message
 	_status.theme_type_variation = &"WarningLabel" if is_problem else &"HintLabel"
-
-
-func _best_text(result: BoardLoadResult) -> String:
-	if not result.ok():
-		return ""
-	var board_id := result.level.board_id
-	if kind == BoardLevel.MAZE_NAME:
-		var easy := App.best_maze_time(board_id, false)
-		var hard := App.best_maze_time(board_id, true)
-		if easy <= 0.0 and hard <= 0.0:
-			return ""
-		if hard <= 0.0:
-			return "Best time: %s" % _clock_text(easy)
-		if easy <= 0.0:
-			return "Best time (hard): %s" % _clock_text(hard)
-		# each mode's best on one line of the card, under that mode's medal
-		return "Easy %s · Hard %s" % [_clock_text(easy), _clock_text(hard)]
-	var balls := App.best_pachinko_balls(board_id)
-	return "Best: %d balls paid back" % balls if balls >= 0 else ""
-
-
-# the same m:ss.t the maze's own clock shows
-static func _clock_text(seconds: float) -> String:
-	var whole := int(seconds)
-	return "%d:%02d.%d" % [floori(seconds / 60.0), whole % 60, int(fmod(seconds, 1.0) * 10.0)]
-
-
-# Players know their files by the real path, not by user://.
-static func _shown_path(path: String) -> String:
-	return path.replace("user://", OS.get_user_data_dir() + "/")
-
-
-# The card menu's first key and first pad button as the player has them bound.
-static func _menu_keys() -> String:
-	var names := PackedStringArray()
-	for wanted: bool in [true, false]:
-		for event in App.settings.events_for("board_actions"):
-			if (event is InputEventKey) == wanted:
-				names.append(Codec.describe(event))
-				break
-	if names.size() == 2 and names[1].begins_with(names[0] + " /"):
-		names.remove_at(0)  # the X key and the pad's "X / Square" read as one
-	return " / ".join(names) if not names.is_empty() else "Right click"
 
 
 static func _is_navigation(event: InputEvent) -> bool:

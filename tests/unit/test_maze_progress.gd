@@ -86,8 +86,8 @@ func test_easy_and_hard_keep_their_own_medal_and_time() -> void:
 	assert_eq(badges.hard_medal, Medals.Medal.GOLD, "a hard finish earns the hard medal")
 	assert_eq(badges.easy_medal, Medals.Medal.BRONZE, "the easy medal from the easy time")
 	var text := " ".join(cards[0].texts())
-	assert_string_contains(text, "Easy %s" % LevelSelect._clock_text(easy_bronze))
-	assert_string_contains(text, " · Hard %s" % LevelSelect._clock_text(hard_gold - 0.1))
+	assert_string_contains(text, "Easy %s" % MazeWinSummary.clock(easy_bronze))
+	assert_string_contains(text, " · Hard %s" % MazeWinSummary.clock(hard_gold - 0.1))
 	assert_false(cards[1].locked, "a hard finish opens the next board too")
 	var rows := badges.row_texts()
 	var easy: PackedFloat64Array = first.level.medal_times_easy
