@@ -42,7 +42,8 @@ func poll() -> bool:
 	if _loading == null:
 		return false
 	for done in _loading.take_finished():
-		_lines.append(_line_for(done["result"]))
+		var result: BoardLoadResult = done["result"]
+		_lines.append(_line_for(result))
 	if _loading.is_busy():
 		return false
 	if not _waiting.is_empty():
