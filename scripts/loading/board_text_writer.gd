@@ -3,8 +3,8 @@ extends RefCounted
 ## in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a hole) in
 ## the board's own order, coordinates rounded to 0.01 px, tuning one constant a line. A
 ## pocket's rim pins are not written: the pocket's line is the whole pocket, and the reader
-## stamps its pins, so a pocket edit is a one-line diff. Adding a pin adds one line; deleting one removes one line
-## (no commas between lines to shift). The same board always
+## stamps its pins, so a pocket edit is a one-line diff. Adding a pin adds one line;
+## deleting one removes one line (no commas between lines to shift). The same board always
 ## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
