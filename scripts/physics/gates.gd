@@ -102,7 +102,9 @@ func set_schedule(gate: int, open_for: float, shut_for: float) -> void:
 func begin_step(wheels: Windmills, dt: float, max_tip_speed: float) -> void:
 	for g: int in openness.size():
 		_run_schedule(g, dt)
-		var most: float = dt / swing_seconds[g]
+		# A hair more than the step's share, so rounding never leaves a sliver of swing
+		# for one more step (a 0.2 s swing takes 24 steps at 120 Hz, not 25).
+		var most: float = dt / swing_seconds[g] * (1.0 + 1e-9)
 		_next[g] = move_toward(openness[g], float(target[g]), most)
 	# A petal's tip may not outrun the top speed: the whole gate then swings slower.
 	for petal: int in petal_rotor.size():

@@ -47,10 +47,12 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 	for i in count:
 		var special := level.pin_special[i] != 0
 		world.add_pin(level.pins[i], level.pin_radius, level.pin_pocket[i], special, min_speed_x)
-	# The bonus pockets: their cups after the level's pins, their lids and wings as the
-	# first walls (BonusGeometry's contract with BonusMachine).
+	# The bonus pockets: their cups after the level's pins, their lids as the first walls
+	# and their tulips' wings as the gates, in order (BonusGeometry's contract with
+	# BonusMachine).
 	BonusGeometry.add_pins(world, level, min_speed_x)
 	BonusGeometry.add_walls(world, level)
+	BonusGeometry.add_gates(world, level, min_speed_x)
 	var guide := LaunchRail.guide_points(level)
 	for i in guide.size() - 1:
 		world.add_wall(guide[i], guide[i + 1], LaunchRail.GUIDE_WALL_RADIUS)
