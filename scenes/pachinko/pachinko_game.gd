@@ -13,6 +13,7 @@ const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
 const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
+const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -51,6 +52,7 @@ func _ready() -> void:
 		instructions.show_problem(problem)
 		return
 	_level = loaded.level
+	MachineDress.apply(self, _level)
 	(
 		SoundBank
 		. warm(

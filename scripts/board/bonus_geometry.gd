@@ -170,7 +170,7 @@ static func add_walls(world: BallWorld, level: BoardLevel) -> void:
 	for entry in wall_plan(level):
 		var a: Vector2 = entry["a"]
 		var b: Vector2 = entry["b"]
-		world.add_wall(a, b, PART_RADIUS)
+		world.shapes.add_wall(a, b, PART_RADIUS)
 
 
 ## Adds each tulip's wings to `world` as a shut gate of two petals (petal_plan's order), of
@@ -181,12 +181,12 @@ static func add_gates(world: BallWorld, level: BoardLevel, min_speed_x: float) -
 	for petal in petal_plan(level):
 		if petal["item"] != item:
 			item = petal["item"]
-			gate = world.add_gate(TULIP_SWING_SECONDS)
+			gate = world.shapes.add_gate(TULIP_SWING_SECONDS)
 		var hinge: Vector2 = petal["hinge"]
 		var length: float = petal["length"]
 		var shut: float = petal["shut"]
 		var open: float = petal["open"]
-		world.add_petal(gate, hinge, length, PART_RADIUS, shut, open, min_speed_x)
+		world.shapes.add_petal(gate, hinge, length, PART_RADIUS, shut, open, min_speed_x)
 
 
 ## Adds every bonus pocket's rim and catching pin to `world` (after the level's pins).
@@ -198,7 +198,9 @@ static func add_pins(world: BallWorld, level: BoardLevel, min_speed_x: float) ->
 		var stamp := rim_pins(level, spec)
 		for k in stamp.size():
 			var special := k == stamp.size() - 1
-			world.add_pin(stamp[k], level.pin_radius, pocket_id(level, i), special, min_speed_x)
+			world.shapes.add_pin(
+				stamp[k], level.pin_radius, pocket_id(level, i), special, min_speed_x
+			)
 
 
 ## The rim pins of one bonus pocket, the catching pin last (PocketStamp's shape).

@@ -1,24 +1,38 @@
 # gdlint: disable=max-public-methods
-# Half of the one façade BallWorld is (docs/architecture.md); its calls are small on purpose.
+# The door to the shapes is one contract (docs/architecture.md); its calls are small on purpose.
 extends RefCounted
-## The shapes half of BallWorld's façade: the calls that add pins, capsule walls, the ring,
-## its drain arc and sensor circles, all checked by StaticGeometry, the windmills
-## (Windmills) and the gates (Gates, whose petals are rotors of the same store).
-## BallWorld extends this with the balls and the step. Internal to scripts/physics: use
-## BallWorld.
+## A BallWorld's shapes, as its callers build them: `world.shapes.add_pin(...)` and the
+## other calls that add pins, capsule walls, the ring, its drain arc and sensor circles (all
+## checked by StaticGeometry), the windmills (Windmills) and the gates (Gates, whose
+## petals are rotors of the same store). The world owns the geometry, the wheels and the
+## gates; this is the door to them, so BallWorld's own calls are about balls and the step.
+## Made by BallWorld only.
 
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
 const Gates := preload("res://scripts/physics/gates.gd")
 
-var _geo := StaticGeometry.new()
-var _wheels := Windmills.new()
-var _gates := Gates.new()
+## The world's constants (BallWorld keeps this its own): blade tips never outrun their
+## max_speed (see add_windmill).
+var tuning: PhysicsTuning
+
+var _geo: StaticGeometry
+var _wheels: Windmills
+var _gates: Gates
 ## Windmill index → its rotor in _wheels; per rotor, its windmill or gate index and 1 when
 ## it is a gate's petal (the hit events name windmills and gates, not rotors).
 var _windmill_rotor := PackedInt32Array()
 var _rotor_owner := PackedInt32Array()
 var _rotor_is_petal := PackedByteArray()
+
+
+func _init(
+	geo: StaticGeometry, wheels: Windmills, gates: Gates, world_tuning: PhysicsTuning
+) -> void:
+	_geo = geo
+	_wheels = wheels
+	_gates = gates
+	tuning = world_tuning
 
 
 ## Adds a pin (a fixed circle). `tag` is the owner's number for it (-1: none); a pin that
@@ -69,7 +83,7 @@ func add_windmill(
 	)
 	if index < 0:
 		return -1
-	var cap: float = _max_tip_speed() / _wheels.reach[index]
+	var cap: float = tuning.max_speed / _wheels.reach[index]
 	_wheels.omega[index] = clampf(speed, -cap, cap)
 	_geo.dirty = true
 	_windmill_rotor.append(index)
@@ -221,6 +235,11 @@ func wall_count() -> int:
 	return _geo.wall_a.size()
 
 
-# The fastest a blade tip may move (BallWorld gives its tuning.max_speed).
-func _max_tip_speed() -> float:
-	return INF
+## The windmill or gate that rotor `rotor` belongs to (BallWorld names it in hit events).
+func rotor_owner(rotor: int) -> int:
+	return _rotor_owner[rotor]
+
+
+## True when rotor `rotor` is a gate's petal rather than a windmill's.
+func rotor_is_petal(rotor: int) -> bool:
+	return _rotor_is_petal[rotor] != 0

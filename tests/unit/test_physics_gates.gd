@@ -23,8 +23,8 @@ func _empty_world() -> BallWorld:
 ## A world with one gate of one petal hinged at the origin, `swing` s to swing fully.
 func _one_petal(swing: float) -> BallWorld:
 	var w := _empty_world()
-	var gate: int = w.add_gate(swing)
-	w.add_petal(gate, Vector2.ZERO, LENGTH, PETAL_R, SHUT_ANGLE, OPEN_ANGLE)
+	var gate: int = w.shapes.add_gate(swing)
+	w.shapes.add_petal(gate, Vector2.ZERO, LENGTH, PETAL_R, SHUT_ANGLE, OPEN_ANGLE)
 	return w
 
 
@@ -36,19 +36,19 @@ func _one_petal(swing: float) -> BallWorld:
 func _fire_at_closing_petal(tip_speed: float, ball_speed: float, radius: float) -> Dictionary:
 	var swing: float = absf(SHUT_ANGLE - OPEN_ANGLE) * (LENGTH + PETAL_R) / tip_speed
 	var w := _one_petal(swing)
-	w.set_gate_open(0, true, true)
-	w.set_gate_open(0, false)
+	w.shapes.set_gate_open(0, true, true)
+	w.shapes.set_gate_open(0, false)
 	w.build_grid()
 	var at := Vector2.from_angle(-PI / 4.0) * radius
 	w.spawn_ball(at, Vector2(-1.0, -0.3).normalized() * ball_speed, BALL_R)
 	w.set_path_recording(true)
 	var worst := {"crossed": false, "depth": 0.0}
 	var prev := w.get_ball_position(0)
-	var prev_turn: float = w.get_petal_angle(0)
+	var prev_turn: float = w.shapes.get_petal_angle(0)
 	for _step: int in 40:
-		var turn0: float = w.get_petal_angle(0)
+		var turn0: float = w.shapes.get_petal_angle(0)
 		w.step(DT)
-		var turn1: float = w.get_petal_angle(0)
+		var turn1: float = w.shapes.get_petal_angle(0)
 		var points: PackedVector2Array = w.take_step_paths()["points"]
 		points.append(w.get_ball_position(0))
 		var n: int = points.size()
@@ -95,40 +95,40 @@ func test_a_ball_fired_at_a_closing_petal_never_passes_through_or_ends_inside_it
 
 func test_a_gate_swings_over_its_swing_time_and_stops_at_each_pose() -> void:
 	var w := _one_petal(0.25)
-	assert_almost_eq(w.get_petal_angle(0), SHUT_ANGLE, 1e-12, "a new gate is shut")
-	w.set_gate_open(0, true)
+	assert_almost_eq(w.shapes.get_petal_angle(0), SHUT_ANGLE, 1e-12, "a new gate is shut")
+	w.shapes.set_gate_open(0, true)
 	for _i: int in 15:
 		w.step(DT)
-	assert_almost_eq(w.get_gate_openness(0), 0.5, 1e-9, "half open after half its swing")
-	assert_almost_eq(w.get_petal_angle(0), lerpf(SHUT_ANGLE, OPEN_ANGLE, 0.5), 1e-9)
+	assert_almost_eq(w.shapes.get_gate_openness(0), 0.5, 1e-9, "half open after half its swing")
+	assert_almost_eq(w.shapes.get_petal_angle(0), lerpf(SHUT_ANGLE, OPEN_ANGLE, 0.5), 1e-9)
 	for _i: int in 30:
 		w.step(DT)
-	assert_eq(w.get_gate_openness(0), 1.0, "open, and no further")
-	assert_almost_eq(w.get_petal_angle(0), OPEN_ANGLE, 1e-12)
-	w.set_gate_open(0, false, true)
-	assert_eq(w.get_gate_openness(0), 0.0, "at_once shuts it now")
-	assert_almost_eq(w.get_petal_angle(0), SHUT_ANGLE, 1e-12)
+	assert_eq(w.shapes.get_gate_openness(0), 1.0, "open, and no further")
+	assert_almost_eq(w.shapes.get_petal_angle(0), OPEN_ANGLE, 1e-12)
+	w.shapes.set_gate_open(0, false, true)
+	assert_eq(w.shapes.get_gate_openness(0), 0.0, "at_once shuts it now")
+	assert_almost_eq(w.shapes.get_petal_angle(0), SHUT_ANGLE, 1e-12)
 
 
 func test_a_petal_tip_never_outruns_the_top_speed() -> void:
 	var w := _one_petal(0.001)
-	w.set_gate_open(0, true)
+	w.shapes.set_gate_open(0, true)
 	w.step(DT)
-	var turned: float = absf(w.get_petal_angle(0) - SHUT_ANGLE)
+	var turned: float = absf(w.shapes.get_petal_angle(0) - SHUT_ANGLE)
 	var tip_travel: float = turned * (LENGTH + PETAL_R)
 	assert_almost_eq(tip_travel, w.tuning.max_speed * DT, 1e-6, "held to the top speed")
 
 
 func test_a_scheduled_gate_opens_and_shuts_by_itself() -> void:
 	var w := _one_petal(0.1)
-	w.set_gate_schedule(0, 0.5, 0.5)
+	w.shapes.set_gate_schedule(0, 0.5, 0.5)
 	var seen_open := 0
 	var seen_shut := 0
 	for i: int in 240:
 		w.step(DT)
-		if w.get_gate_openness(0) == 1.0:
+		if w.shapes.get_gate_openness(0) == 1.0:
 			seen_open += 1
-		elif w.get_gate_openness(0) == 0.0 and i > 0:
+		elif w.shapes.get_gate_openness(0) == 0.0 and i > 0:
 			seen_shut += 1
 	# Two seconds from shut: 0.5 s shut, then twice 0.5 s heading open (0.1 s of swing, so
 	# 48 steps open) and once 0.5 s heading shut (48 steps shut) in between.
@@ -138,12 +138,12 @@ func test_a_scheduled_gate_opens_and_shuts_by_itself() -> void:
 
 func test_a_closing_petal_throws_a_ball_and_reports_the_gate() -> void:
 	var w := _one_petal(0.1)
-	w.set_gate_open(0, true, true)
+	w.shapes.set_gate_open(0, true, true)
 	w.build_grid()
 	var id: int = w.spawn_ball(Vector2.from_angle(-PI / 4.0) * 20.0, Vector2.ZERO, BALL_R)
 	var hits: Array = []
 	w.gate_hit.connect(func(b: int, g: int, s: float) -> void: hits.append([b, g, s]))
-	w.set_gate_open(0, false)
+	w.shapes.set_gate_open(0, false)
 	for _i: int in 12:
 		w.step(DT)
 	var v: Vector2 = w.get_ball_velocity(id)
@@ -156,40 +156,42 @@ func test_a_closing_petal_throws_a_ball_and_reports_the_gate() -> void:
 
 func test_bad_gates_are_refused_with_an_error() -> void:
 	var w := _empty_world()
-	assert_eq(w.add_gate(0.0), -1)
-	assert_eq(w.add_gate(NAN), -1)
-	assert_eq(w.add_petal(0, Vector2.ZERO, LENGTH, PETAL_R, 0.0, 1.0), -1, "no gate 0 yet")
-	var gate: int = w.add_gate(0.2)
-	assert_eq(w.add_petal(gate, Vector2.ZERO, -1.0, PETAL_R, 0.0, 1.0), -1, "length > 0")
-	assert_eq(w.add_petal(gate, Vector2.ZERO, LENGTH, PETAL_R, INF, 1.0), -1)
-	w.set_gate_schedule(gate, -1.0, 0.5)
-	assert_eq(w.gate_count(), 1)
-	assert_eq(w.windmill_count(), 0, "a petal is not a windmill")
+	assert_eq(w.shapes.add_gate(0.0), -1)
+	assert_eq(w.shapes.add_gate(NAN), -1)
+	assert_eq(w.shapes.add_petal(0, Vector2.ZERO, LENGTH, PETAL_R, 0.0, 1.0), -1, "no gate 0 yet")
+	var gate: int = w.shapes.add_gate(0.2)
+	assert_eq(w.shapes.add_petal(gate, Vector2.ZERO, -1.0, PETAL_R, 0.0, 1.0), -1, "length > 0")
+	assert_eq(w.shapes.add_petal(gate, Vector2.ZERO, LENGTH, PETAL_R, INF, 1.0), -1)
+	w.shapes.set_gate_schedule(gate, -1.0, 0.5)
+	assert_eq(w.shapes.gate_count(), 1)
+	assert_eq(w.shapes.windmill_count(), 0, "a petal is not a windmill")
 	assert_push_error_count(6)
 
 
 func test_windmills_and_petals_keep_their_own_numbers() -> void:
 	var w := _empty_world()
-	var gate: int = w.add_gate(0.2)
-	w.add_petal(gate, Vector2(100.0, 0.0), LENGTH, PETAL_R, 0.0, -1.0)
-	var mill: int = w.add_windmill(Vector2.ZERO, 4, 20.0, 2.0, 3.0)
+	var gate: int = w.shapes.add_gate(0.2)
+	w.shapes.add_petal(gate, Vector2(100.0, 0.0), LENGTH, PETAL_R, 0.0, -1.0)
+	var mill: int = w.shapes.add_windmill(Vector2.ZERO, 4, 20.0, 2.0, 3.0)
 	assert_eq(mill, 0, "the first windmill is windmill 0, petals aside")
-	assert_eq(w.windmill_count(), 1)
+	assert_eq(w.shapes.windmill_count(), 1)
 	w.step(DT)
-	assert_almost_eq(w.get_windmill_angle(0), 3.0 * DT, 1e-9)
-	assert_eq(w.get_petal_angle(0), 0.0, "the shut petal did not turn with the wheel")
+	assert_almost_eq(w.shapes.get_windmill_angle(0), 3.0 * DT, 1e-9)
+	assert_eq(w.shapes.get_petal_angle(0), 0.0, "the shut petal did not turn with the wheel")
 
 
 func _gate_run(thread_count: int) -> int:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = thread_count
 	for g: int in 6:
-		var gate: int = w.add_gate(0.15 + 0.05 * g)
+		var gate: int = w.shapes.add_gate(0.15 + 0.05 * g)
 		var root := Vector2(60.0 + 50.0 * g, 200.0)
-		w.add_petal(gate, root, 20.0, 2.5, -PI / 2.0, -PI / 2.0 - 0.9, 20.0)
-		w.add_petal(gate, root + Vector2(26.0, 0.0), 20.0, 2.5, -PI / 2.0, -PI / 2.0 + 0.9, 20.0)
-		w.set_gate_schedule(gate, 0.3 + 0.1 * g, 0.4)
-	w.add_wall(Vector2(0.0, 260.0), Vector2(400.0, 260.0), 3.0)
+		w.shapes.add_petal(gate, root, 20.0, 2.5, -PI / 2.0, -PI / 2.0 - 0.9, 20.0)
+		w.shapes.add_petal(
+			gate, root + Vector2(26.0, 0.0), 20.0, 2.5, -PI / 2.0, -PI / 2.0 + 0.9, 20.0
+		)
+		w.shapes.set_gate_schedule(gate, 0.3 + 0.1 * g, 0.4)
+	w.shapes.add_wall(Vector2(0.0, 260.0), Vector2(400.0, 260.0), 3.0)
 	for k: int in 300:
 		w.spawn_ball(Vector2(40.0 + (k * 37) % 320, 20.0 + (k % 12) * 12.0), Vector2.ZERO, 5.0)
 	for _i: int in 240:

@@ -37,12 +37,12 @@ func _catches(level: BoardLevel, world: BallWorld, index: int, count: int) -> in
 func test_each_tulip_is_a_gate_of_two_petals_at_its_mouth() -> void:
 	var level := _tulips()
 	var world := BoardWorldFactory.build(level)
-	assert_eq(world.gate_count(), 4, "Tulip Garden's four tulips")
+	assert_eq(world.shapes.gate_count(), 4, "Tulip Garden's four tulips")
 	var plan := BonusGeometry.petal_plan(level)
 	assert_eq(plan.size(), 8)
 	for p in plan.size():
 		var petal: Dictionary = plan[p]
-		assert_almost_eq(world.get_petal_angle(p), petal["shut"], 1e-12, "petal %d shut" % p)
+		assert_almost_eq(world.shapes.get_petal_angle(p), petal["shut"], 1e-12, "petal %d shut" % p)
 
 
 func test_an_open_tulip_catches_more_than_a_shut_one() -> void:
@@ -50,7 +50,7 @@ func test_an_open_tulip_catches_more_than_a_shut_one() -> void:
 	var shut_world := BoardWorldFactory.build(level)
 	var shut := _catches(level, shut_world, 0, 25)
 	var open_world := BoardWorldFactory.build(level)
-	open_world.set_gate_open(BonusGeometry.tulip_gate(level, 0), true, true)
+	open_world.shapes.set_gate_open(BonusGeometry.tulip_gate(level, 0), true, true)
 	var open := _catches(level, open_world, 0, 25)
 	gut.p("tulip 1 caught %d of 25 shut, %d open" % [shut, open])
 	assert_gt(open, shut, "the spread wings turn more balls in")
@@ -69,7 +69,7 @@ func test_the_wings_are_drawn_where_the_world_has_them() -> void:
 		var hinge: Vector2 = petal["hinge"]
 		var length: float = petal["length"]
 		var drawn := BonusGeometry.petal_tip(petal, amount)
-		var world_tip := hinge + Vector2.from_angle(rules.world.get_petal_angle(p)) * length
+		var world_tip := hinge + Vector2.from_angle(rules.world.shapes.get_petal_angle(p)) * length
 		assert_almost_eq(drawn.distance_to(world_tip), 0.0, 1e-6, "petal %d drawn in place" % p)
 
 

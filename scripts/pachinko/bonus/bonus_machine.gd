@@ -66,12 +66,12 @@ func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
 	_gates.fill(-1)
 	if level != null and world != null:
 		_walls = BonusGeometry.wall_plan(level)
-		if _walls.size() > world.wall_count():
+		if _walls.size() > world.shapes.wall_count():
 			push_error("BonusMachine: the world lacks the bonus walls; lids will not move")
 			_walls.clear()
 		for i in count:
 			var gate := BonusGeometry.tulip_gate(level, i)
-			if gate >= world.gate_count():
+			if gate >= world.shapes.gate_count():
 				push_error("BonusMachine: the world lacks the tulips' gates; wings will not move")
 				gate = -1
 			_gates[i] = gate
@@ -134,7 +134,7 @@ func is_open(index: int) -> bool:
 ## swing between the two, a lid is one or the other.
 func openness(index: int) -> float:
 	if index >= 0 and index < _gates.size() and _gates[index] >= 0:
-		return _world.get_gate_openness(_gates[index])
+		return _world.shapes.get_gate_openness(_gates[index])
 	return 1.0 if is_open(index) else 0.0
 
 
@@ -210,9 +210,9 @@ func _set_open(index: int, open: bool) -> void:
 		var entry: Dictionary = _walls[wall]
 		if entry["item"] == index:
 			var part: BonusGeometry.Part = entry["part"]
-			_world.set_wall_enabled(wall, BonusGeometry.part_solid(part, open))
+			_world.shapes.set_wall_enabled(wall, BonusGeometry.part_solid(part, open))
 	if _gates[index] >= 0:
-		_world.set_gate_open(_gates[index], open)
+		_world.shapes.set_gate_open(_gates[index], open)
 	if _is_attacker(index):
 		attacker_changed.emit(index, open)
 	else:
