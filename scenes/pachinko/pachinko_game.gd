@@ -14,6 +14,7 @@ const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd"
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
+const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -53,6 +54,7 @@ func _ready() -> void:
 		instructions.show_problem(problem)
 		return
 	_level = loaded.level
+	MachineDress.apply(self, _level)
 	(
 		SoundBank
 		. warm(

@@ -125,9 +125,9 @@ static func add_walls(world: BallWorld, level: BoardLevel) -> void:
 	for entry in wall_plan(level):
 		var a: Vector2 = entry["a"]
 		var b: Vector2 = entry["b"]
-		var index := world.add_wall(a, b, PART_RADIUS)
+		var index := world.shapes.add_wall(a, b, PART_RADIUS)
 		var part: Part = entry["part"]
-		world.set_wall_enabled(index, part_solid(part, false))
+		world.shapes.set_wall_enabled(index, part_solid(part, false))
 
 
 ## Adds every bonus pocket's rim and catching pin to `world` (after the level's pins).
@@ -139,7 +139,9 @@ static func add_pins(world: BallWorld, level: BoardLevel, min_speed_x: float) ->
 		var stamp := rim_pins(level, spec)
 		for k in stamp.size():
 			var special := k == stamp.size() - 1
-			world.add_pin(stamp[k], level.pin_radius, pocket_id(level, i), special, min_speed_x)
+			world.shapes.add_pin(
+				stamp[k], level.pin_radius, pocket_id(level, i), special, min_speed_x
+			)
 
 
 ## The rim pins of one bonus pocket, the catching pin last (PocketStamp's shape).

@@ -234,6 +234,7 @@ static func _build(data: Dictionary) -> BoardLevel:
 	var tuning: Dictionary = data.get("tuning", {})
 	level.tuning = _build_tuning(level, tuning)
 	if level.is_pachinko():
+		level.fascia = str(data.get("fascia", FasciaNames.CLASSIC))
 		# Files before rim pins were derived stored each pocket's pins (`"pocket": k`): the
 		# pocket line is the truth, so those are dropped and every pocket stamps its own.
 		var stored: Array = data.get("pins", [])

@@ -12,10 +12,10 @@ const Schema := preload("res://scripts/loading/board_schema.gd")
 const PRECISION := 0.01
 const POINT_KEYS: Array[String] = ["x", "y"]
 const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
-## The lines of a board's text that name or describe it (and the id counters and medal
-## times) but never change how it plays: `play_text` leaves them out.
+## The lines of a board's text that name, describe or dress it (and the id counters and
+## medal times) but never change how it plays: `play_text` leaves them out.
 const NAMING_FIELDS: Array[String] = [
-	"board_id", "display_name", "description", "medal_times", Schema.NEXT_IDS_FIELD
+	"board_id", "display_name", "description", "fascia", "medal_times", Schema.NEXT_IDS_FIELD
 ]
 
 
@@ -60,6 +60,8 @@ static func write(level: BoardLevel) -> String:
 		lines.append('{"%s": %s}' % [field, _value(level.get(field))])
 	if level.is_maze():
 		_append_medals(lines, level)
+	else:
+		lines.append('{"fascia": %s}' % JSON.stringify(level.fascia))
 	lines.append('{"tuning": %s}' % _tuning(level.tuning))
 	var counters := ItemIds.counters_to_save(level)
 	if not counters.is_empty():

@@ -1,11 +1,12 @@
 # gdlint: disable=max-public-methods
 # The contract in docs/architecture.md is one façade; its getters are small on purpose.
 class_name BallWorld
-extends "res://scripts/physics/world_shapes.gd"
+extends RefCounted
 ## Fixed-step ball physics in GDScript, with no Node and no built-in physics: circles
 ## (balls) against pins, capsule walls, a ring border and each other, plus sensors.
 ##
-## Add the static shapes, call build_grid() (adding later rebuilds lazily), spawn balls,
+## Add the shapes through `shapes` (WorldShapes: pins, walls, ring, sensors, windmills),
+## call build_grid() (adding later rebuilds lazily), spawn balls,
 ## then call advance(delta) every frame (or step(dt) directly). Events come out as signals
 ## at the end of each step, in the order they happened within it; balls removed by an event
 ## (captured by a pin, drained, fell in a hole) are already gone when the signal arrives.
@@ -37,6 +38,9 @@ signal ball_left_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved inside a zone's radius (the ball stays).
 signal ball_entered_zone(ball_id: int, zone_index: int)
 
+const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const Windmills := preload("res://scripts/physics/windmills.gd")
+const WorldShapes := preload("res://scripts/physics/world_shapes.gd")
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
@@ -61,7 +65,11 @@ const MAX_SENSORS := StaticGeometry.MAX_SENSORS
 const MIN_GRID_BALL_RADIUS := 5.0
 
 ## The constants in use (restitution, caps, fixed_hz, ...).
-var tuning: PhysicsTuning
+var tuning: PhysicsTuning:
+	set(value):
+		tuning = value
+		if shapes != null:
+			shapes.tuning = value
 ## Gravity in px/s²; may change every frame (the maze rules tilt it).
 var gravity: Vector2
 ## Rolling friction per axis in px/s² (only slows, never reverses); may change every frame.
@@ -94,6 +102,12 @@ var profile_cpu_time := false:
 		profile_cpu_time = value
 		_clock.cpu_time = value
 
+## The door to the world's shapes: `world.shapes.add_pin(...)`, add_wall, set_ring, ...
+## (see WorldShapes). The world owns what they add (its StaticGeometry and Windmills).
+var shapes: WorldShapes
+
+var _geo := StaticGeometry.new()
+var _wheels := Windmills.new()
 var _balls := BallStore.new()
 var _lanes := BallLanes.new()
 var _pairs := BallPairs.new()
@@ -116,6 +130,7 @@ var _stepping := false
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
 	tuning = p_tuning if p_tuning != null else PhysicsTuning.new()
+	shapes = WorldShapes.new(_geo, _wheels, tuning)
 	_lanes.threads = threads
 	gravity = tuning.gravity
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
@@ -404,11 +419,6 @@ func _emit_events() -> void:
 				ball_left_goal.emit(id, index)
 			BallEvents.Kind.ZONE:
 				ball_entered_zone.emit(id, index)
-
-
-# Blade tips never outrun the fastest ball (see add_windmill).
-func _max_tip_speed() -> float:
-	return tuning.max_speed
 
 
 ## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.

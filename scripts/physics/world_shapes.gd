@@ -1,14 +1,25 @@
 extends RefCounted
-## The shapes half of BallWorld's façade: the calls that add pins, capsule walls, the ring,
-## its drain arc and sensor circles, all checked by StaticGeometry, and the windmills
-## (Windmills). BallWorld extends this with the balls and the step. Internal to
-## scripts/physics: use BallWorld.
+## A BallWorld's shapes, as its callers build them: `world.shapes.add_pin(...)` and the
+## other calls that add pins, capsule walls, the ring, its drain arc and sensor circles (all
+## checked by StaticGeometry) and the windmills (Windmills). The world owns the geometry
+## and the wheels; this is the door to them, so BallWorld's own calls are about balls and
+## the step. Made by BallWorld only.
 
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
 
-var _geo := StaticGeometry.new()
-var _wheels := Windmills.new()
+## The world's constants (BallWorld keeps this its own): blade tips never outrun their
+## max_speed (see add_windmill).
+var tuning: PhysicsTuning
+
+var _geo: StaticGeometry
+var _wheels: Windmills
+
+
+func _init(geo: StaticGeometry, wheels: Windmills, world_tuning: PhysicsTuning) -> void:
+	_geo = geo
+	_wheels = wheels
+	tuning = world_tuning
 
 
 ## Adds a pin (a fixed circle). `tag` is the owner's number for it (-1: none); a pin that
@@ -58,7 +69,7 @@ func add_windmill(
 		center, blades, length, blade_radius, speed, free, friction, min_speed_x
 	)
 	if index >= 0:
-		var cap: float = _max_tip_speed() / _wheels.reach[index]
+		var cap: float = tuning.max_speed / _wheels.reach[index]
 		_wheels.omega[index] = clampf(speed, -cap, cap)
 		_geo.dirty = true
 	return index
@@ -116,8 +127,3 @@ func pin_count() -> int:
 ## How many walls were added (switched-off ones included).
 func wall_count() -> int:
 	return _geo.wall_a.size()
-
-
-# The fastest a blade tip may move (BallWorld gives its tuning.max_speed).
-func _max_tip_speed() -> float:
-	return INF

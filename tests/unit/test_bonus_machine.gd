@@ -49,13 +49,15 @@ func test_the_factory_adds_bonus_cups_after_the_pins_and_parts_first() -> void:
 	var world := BoardWorldFactory.build(level)
 	var plan := BonusGeometry.wall_plan(level)
 	assert_eq(plan.size(), 2 + 4, "a lid of two halves and four wings")
-	assert_true(world.is_wall_enabled(0) and world.is_wall_enabled(1), "the lid starts closed")
-	assert_true(world.is_wall_enabled(2), "a closed wing is solid")
-	assert_false(world.is_wall_enabled(3), "an open wing is not")
+	assert_true(
+		world.shapes.is_wall_enabled(0) and world.shapes.is_wall_enabled(1), "the lid starts closed"
+	)
+	assert_true(world.shapes.is_wall_enabled(2), "a closed wing is solid")
+	assert_false(world.shapes.is_wall_enabled(3), "an open wing is not")
 	var pins := 0
 	for spec in level.bonus_pockets:
 		pins += BonusGeometry.rim_pins(level, spec).size()
-	assert_eq(world.pin_count(), pins)
+	assert_eq(world.shapes.pin_count(), pins)
 
 
 func test_a_start_pocket_catches_a_falling_ball() -> void:
@@ -71,7 +73,7 @@ func test_a_closed_attacker_deflects_and_an_open_one_catches() -> void:
 	var machine := BonusMachine.new(level, world, 1)
 	machine._on_spin_finished(PackedInt32Array([1, 1, 1]), true)
 	assert_true(machine.is_open(1))
-	assert_false(world.is_wall_enabled(0), "the lid is up")
+	assert_false(world.shapes.is_wall_enabled(0), "the lid is up")
 	assert_eq(_drop(world, ATTACKER), BonusGeometry.pocket_id(level, 1))
 
 
@@ -84,7 +86,7 @@ func test_an_attacker_closes_after_its_catches_or_its_time() -> void:
 	assert_true(machine.is_open(1), "one catch of two")
 	assert_eq(machine.catch(1), 15)
 	assert_false(machine.is_open(1), "closed after its second catch")
-	assert_true(world.is_wall_enabled(0), "the lid is back")
+	assert_true(world.shapes.is_wall_enabled(0), "the lid is back")
 	assert_eq(machine.attacker_paid, 30)
 	machine._on_spin_finished(PackedInt32Array([0, 0, 0]), true)
 	machine.advance(4.9)
@@ -101,11 +103,11 @@ func test_a_tulip_opens_after_a_catch_and_closes_after_the_next() -> void:
 	assert_eq(machine.catch(2), 5)
 	assert_true(machine.is_open(2))
 	# Walls 0 and 1 are the lid's halves; the tulip's wings follow.
-	assert_false(world.is_wall_enabled(2), "upright wings gone")
-	assert_true(world.is_wall_enabled(3), "spread wings solid")
+	assert_false(world.shapes.is_wall_enabled(2), "upright wings gone")
+	assert_true(world.shapes.is_wall_enabled(3), "spread wings solid")
 	machine.catch(2)
 	assert_false(machine.is_open(2))
-	assert_true(world.is_wall_enabled(2))
+	assert_true(world.shapes.is_wall_enabled(2))
 	assert_eq(machine.tulip_opens, 1)
 
 

@@ -1,6 +1,7 @@
 extends Node2D
 ## The board in layers, bottom to top as in the chapter: back plate, fascia art, ring
-## border, launch path, gutter, pins, balls, pocket art, effects. `bind()` hands each layer
+## border and name plate, launch path, gutter, pins, balls, pocket art, effects. The board's
+## machine (`fascia`, FasciaBook) picks the art and every layer's colours. `bind()` hands each layer
 ## the board; `fit()` scales the whole board into a rectangle of the screen.
 ##
 ## The layers that never change (plate, fascia, ring, rail, gutter slot, pins) are drawn
@@ -14,6 +15,7 @@ const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
 const WinEffects := preload("res://scenes/pachinko/board/win_effects.gd")
 const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
 const WindmillLayer := preload("res://scenes/pachinko/board/windmill_layer.gd")
+const NamePlateLayer := preload("res://scenes/pachinko/board/name_plate_layer.gd")
 const FASCIA_SIZE := 1000.0
 ## How far the plate reaches beyond the ring, as a share of the ring radius.
 const PLATE_REACH := 1.1
@@ -59,10 +61,25 @@ func bind(rules: PachinkoRules) -> void:
 	balls.bind(rules)
 	_pin_lights().bind(rules)
 	_windmill_layer().bind(rules)
-	fascia.position = level.ring_center
-	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
+	_dress(level)
 	_bake_scale = 0.0
 	_rebake()
+
+
+# The machine the board wears (FasciaBook): its art behind the pins and its name plate.
+func _dress(level: BoardLevel) -> void:
+	var palette := FasciaBook.palette_of(level.fascia)
+	fascia.texture = FasciaBook.art_of(palette)
+	fascia.modulate = palette.art_tint
+	fascia.position = level.ring_center
+	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
+	var plate := static_root.get_node_or_null(^"NamePlate") as NamePlateLayer
+	if plate == null:
+		plate = NamePlateLayer.new()
+		plate.name = "NamePlate"
+		static_root.add_child(plate)
+		static_root.move_child(plate, ring_border.get_index() + 1)
+	plate.setup(level)
 
 
 ## The pin flashes (made by the first `bind`), for effects that light pins.

@@ -60,7 +60,7 @@ func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
 	_catches_left.resize(count)
 	if level != null and world != null:
 		_walls = BonusGeometry.wall_plan(level)
-		if _walls.size() > world.wall_count():
+		if _walls.size() > world.shapes.wall_count():
 			push_error("BonusMachine: the world lacks the bonus walls; lids will not move")
 			_walls.clear()
 	# Methods, not a lambda: a lambda would hold this machine, which holds the reels that
@@ -190,7 +190,7 @@ func _set_open(index: int, open: bool) -> void:
 		var entry: Dictionary = _walls[wall]
 		if entry["item"] == index:
 			var part: BonusGeometry.Part = entry["part"]
-			_world.set_wall_enabled(wall, BonusGeometry.part_solid(part, open))
+			_world.shapes.set_wall_enabled(wall, BonusGeometry.part_solid(part, open))
 	if _is_attacker(index):
 		attacker_changed.emit(index, open)
 	else:
