@@ -30,9 +30,11 @@ func _run() -> void:
 	get_tree().create_timer(120.0).timeout.connect(get_tree().quit.bind(1))
 	var scene := OS.get_environment(ENV)
 	await _frames(30)
+	# On a loaded machine the editor's first file scan can still be running here, and a scene
+	# opened then does not become the edited one: wait for the scan, then for the scene.
+	await _scan_finished()
 	EditorInterface.open_scene_from_path(scene)
-	await _frames(10)
-	var root := EditorInterface.get_edited_scene_root()
+	var root := await _edited_root(scene)
 	if not root is BoardNode:
 		_finish(["%s does not open with a BoardNode at its root." % scene])
 		return
@@ -308,6 +310,23 @@ func _finish(problems: PackedStringArray) -> void:
 	for problem in problems:
 		print("board editor self-check: FAILED: %s" % problem)
 	get_tree().quit(0 if problems.is_empty() else 1)
+
+
+func _scan_finished() -> void:
+	var files := EditorInterface.get_resource_filesystem()
+	while files.is_scanning():
+		await get_tree().process_frame
+
+
+## The edited scene's root once `scene` is the edited scene (or whatever is edited after 600
+## frames, so a scene that never opens still fails with a message).
+func _edited_root(scene: String) -> Node:
+	for i in 600:
+		await get_tree().process_frame
+		var root := EditorInterface.get_edited_scene_root()
+		if root != null and root.scene_file_path == scene and i >= 10:
+			return root
+	return EditorInterface.get_edited_scene_root()
 
 
 func _frames(count: int) -> void:
