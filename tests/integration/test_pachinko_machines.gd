@@ -40,3 +40,21 @@ func test_each_board_dresses_the_screen_as_its_machine() -> void:
 		remove_child(game)
 		game.free()
 	assert_eq(arts.size(), 5, "five boards, five pictures")
+
+
+func test_a_portrait_window_puts_the_panel_under_a_board_as_wide_as_the_window() -> void:
+	var window := get_tree().root
+	var before := window.size
+	window.size = Vector2i(720, 1280)
+	var game := _game_on("res://levels/pachinko/hanami.board")
+	game.call("_layout")
+	var view := game.get_viewport_rect().size
+	var hud := (game.get_node("Hud") as Control).get_rect()
+	var board_width := (game.get_node("BoardView") as Node2D).scale.x * 700.0
+	window.size = before  # the game lays itself out again for the old size
+	assert_gt(view.y, view.x * 1.5, "the window is portrait")
+	assert_almost_eq(hud.position.y, view.x, 0.5, "the panel starts under the board")
+	assert_almost_eq(hud.get_center().x, view.x * 0.5, 0.5, "centred")
+	assert_gt(board_width, view.x * 0.85, "the board takes the window's width")
+	remove_child(game)
+	game.free()
