@@ -4,7 +4,8 @@ extends RefCounted
 ## level-select thumbnails and the games' static board layer all use it.
 ##
 ## Everything is drawn in board pixels through `xform` (board → canvas item). Special pins
-## are diamonds as well as gold, so they read without colour.
+## are diamonds as well as gold, so they read without colour. A pachinko board's background
+## and ring are its machine's (FasciaBook): the plate colour, the art faded behind the pins.
 
 ## Layers to draw (combine with |).
 enum Layer {
@@ -25,7 +26,6 @@ enum Layer {
 
 const BonusPainter := preload("res://scenes/board_view/bonus_painter.gd")
 const PACHINKO_BACKGROUND := Color("14121f")
-const RING_COLOR := Color("8a4fbf")
 const RAIL_COLOR := Color("c9c3d6")
 const GUTTER_COLOR := Color("000000")
 const PIN_COLOR := Color("d8dbe2")
@@ -42,6 +42,8 @@ const DASH := 8.0
 const MIN_PIN_PIXELS := 0.9
 ## How far the drawn ring (and gutter) reach outside `ring_radius`, in pixels.
 const RING_OVERHANG := 8.0
+## How strongly the machine's art shows behind the pins (1 = as in the game).
+const ART_STRENGTH := 0.6
 
 
 ## Draws `level` on `canvas` through `xform`. `layers` picks what to draw.
@@ -55,8 +57,10 @@ static func draw_board(
 		return
 	canvas.draw_set_transform_matrix(xform)
 	if layers & Layer.BACKGROUND:
-		var color := MAZE_BACKGROUND if level.is_maze() else PACHINKO_BACKGROUND
-		canvas.draw_rect(board_bounds(level), color)
+		if level.is_maze():
+			canvas.draw_rect(board_bounds(level), MAZE_BACKGROUND)
+		else:
+			_draw_machine(canvas, level)
 	if level.is_pachinko():
 		var pixels_per_unit := maxf(xform.get_scale().x, 1e-3)
 		_draw_pachinko(canvas, level, layers, MIN_PIN_PIXELS / pixels_per_unit)
@@ -106,7 +110,8 @@ static func _draw_pachinko(
 	if not c.is_finite() or not is_finite(r) or r <= 0.0:
 		return
 	if layers & Layer.RING:
-		canvas.draw_arc(c, r + 3.0, 0.0, TAU, 128, RING_COLOR, 6.0)
+		var ring := FasciaBook.palette_of(level.fascia).ring.lightened(0.15)
+		canvas.draw_arc(c, r + 3.0, 0.0, TAU, 128, ring, 6.0)
 	if layers & Layer.GUTTER:
 		# The gutter is a black gap cut into the ring, with its ends marked.
 		var from := deg_to_rad(level.gutter_start_deg)
@@ -137,6 +142,20 @@ static func _draw_pachinko(
 	if layers & Layer.WINDMILLS:
 		for spec in level.windmills:
 			WindmillPainter.draw_wheel(canvas, spec, 0.0)
+
+
+# The machine's plate under the whole board and its art, faded, inside the ring.
+static func _draw_machine(canvas: CanvasItem, level: BoardLevel) -> void:
+	var palette := FasciaBook.palette_of(level.fascia)
+	canvas.draw_rect(board_bounds(level), palette.plate.lerp(PACHINKO_BACKGROUND, 0.3))
+	var r := level.ring_radius
+	if not level.ring_center.is_finite() or not is_finite(r) or r <= 0.0:
+		return
+	var art := FasciaBook.art_of(palette)
+	if art != null:
+		var disc := Rect2(level.ring_center - Vector2(r, r), Vector2(r, r) * 2.0)
+		var tint := palette.art_tint
+		canvas.draw_texture_rect(art, disc, false, Color(tint, ART_STRENGTH))
 
 
 static func _draw_pocket(canvas: CanvasItem, spec: PocketSpec, pin_radius: float) -> void:

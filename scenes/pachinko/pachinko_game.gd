@@ -16,6 +16,9 @@ const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const HUD_WIDTH := 360.0
+## A window this much taller than wide puts the panel under the board, this wide.
+const PORTRAIT_HUD_HEIGHT := 720.0
+const PORTRAIT_HUD_WIDTH := 420.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0
@@ -209,12 +212,20 @@ func _layout() -> void:
 	if _level == null:
 		return
 	var view := get_viewport_rect().size
-	var hud_left := view.x - HUD_WIDTH
-	hud.position = Vector2(hud_left, 0.0)
-	hud.size = Vector2(HUD_WIDTH, view.y)
-	var area := Rect2(
-		Vector2(MARGIN, MARGIN), Vector2(hud_left - MARGIN * 2.0, view.y - MARGIN * 2.0)
-	)
+	var area: Rect2
+	if view.y - view.x >= PORTRAIT_HUD_HEIGHT:
+		# A portrait window: the board fills the width on top, the panel takes the band below
+		# (a column beside the board left it a third of the screen).
+		hud.position = Vector2((view.x - PORTRAIT_HUD_WIDTH) * 0.5, view.x)
+		hud.size = Vector2(PORTRAIT_HUD_WIDTH, view.y - view.x)
+		area = Rect2(Vector2(MARGIN, MARGIN), Vector2(view.x, view.x) - Vector2.ONE * MARGIN * 2.0)
+	else:
+		var hud_left := view.x - HUD_WIDTH
+		hud.position = Vector2(hud_left, 0.0)
+		hud.size = Vector2(HUD_WIDTH, view.y)
+		area = Rect2(
+			Vector2(MARGIN, MARGIN), Vector2(hud_left - MARGIN * 2.0, view.y - MARGIN * 2.0)
+		)
 	board_view.fit(_level, area)
 	instructions.position = area.position
 	instructions.size = area.size

@@ -20,6 +20,7 @@ const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const ProblemsList := preload("res://addons/board_editor/ui/problems_list.gd")
 const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
+const FasciaPicker := preload("res://addons/board_editor/ui/fascia_picker.gd")
 const AnalysisPanel := preload("res://addons/board_editor/analysis/analysis_panel.gd")
 const MazeAnalysisPanel := preload("res://addons/board_editor/analysis/maze_analysis_panel.gd")
 
@@ -30,6 +31,7 @@ var maze_analysis: MazeAnalysisPanel
 
 var _title: Label
 var _counts: Label
+var _machine: FasciaPicker
 var _options: ToolOptions
 var _properties: PropertyPanel
 var _layers: LayersPanel
@@ -48,6 +50,8 @@ func _init() -> void:
 	add_child(_title)
 	_counts = Label.new()
 	add_child(_counts)
+	_machine = FasciaPicker.new()
+	add_child(_machine)
 	_play = Button.new()
 	_play.text = "Play-test this board"
 	_play.tooltip_text = "Save the board and run it in its game."
@@ -151,6 +155,7 @@ func show_board(
 	_properties.visible = editing
 	_layers.visible = editing
 	_layers.bind(session if editing else null)
+	_machine.bind(session if editing else null)
 	_new_box.visible = node_without_board
 	_save_as.visible = editing
 	if not editing:
@@ -187,12 +192,18 @@ func show_board(
 func refresh_options() -> void:
 	_options.refresh()
 	_properties.refresh()
+	_machine.refresh()
 	_layers.refresh()
 
 
 ## The selection panel (the self-check types into its fields).
 func properties() -> PropertyPanel:
 	return _properties
+
+
+## The "Machine" row (the board's fascia).
+func machine() -> FasciaPicker:
+	return _machine
 
 
 ## The layers panel.

@@ -5,6 +5,7 @@ extends RefCounted
 
 const ART_FOLDER := "res://assets/pachinko/"
 static var _made: Dictionary[String, FasciaPalette] = {}
+static var _art: Dictionary[String, Texture2D] = {}
 
 
 ## The look of machine `fascia_name`; an unknown name (the validator refuses one) gets Classic.
@@ -15,9 +16,13 @@ static func palette_of(fascia_name: String) -> FasciaPalette:
 	return _made[key]
 
 
-## The art texture of `palette` (loaded once, then Godot's resource cache keeps it).
+## The art texture of `palette`, loaded once and kept: a picture drawn from `_draw()` only
+## holds the texture's RID, so a texture nobody references would be freed under it (a menu's
+## thumbnail showed a grey square).
 static func art_of(palette: FasciaPalette) -> Texture2D:
-	return load(palette.art_path) as Texture2D
+	if not _art.has(palette.art_path):
+		_art[palette.art_path] = load(palette.art_path) as Texture2D
+	return _art[palette.art_path]
 
 
 static func _fields(fascia_name: String) -> Dictionary:
