@@ -69,6 +69,8 @@ func test_cancel_keeps_the_editor_usable() -> void:
 	_finish(panel)
 	assert_false(panel.is_running())
 	assert_string_contains(panel._controls.status.text, "Cancelled")
+	panel.bind(panel._level)  # the plugin binds again after every change of the results
+	assert_string_contains(panel._controls.status.text, "Cancelled", "the status stays")
 	assert_true(
 		AnalysisCache.load_report(AnalysisCache.key_for(panel._plan_for(panel._level))).is_empty(),
 		"a cancelled run is not cached"

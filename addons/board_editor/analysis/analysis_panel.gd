@@ -77,6 +77,8 @@ func bind(level: BoardLevel) -> void:
 	var image := AnalysisCache.load_heatmap(key) if not stored.is_empty() else null
 	var heat := ImageTexture.create_from_image(image) if image != null else null
 	_show_report(ReportPayouts.repriced(stored, _level), heat)
+	if _run == null:
+		_say_result()  # new content with no figures, like the old: "Not analysed..."
 
 
 ## Starts an analysis of the bound board (a snapshot of it: edits during the run do not
@@ -217,10 +219,10 @@ func _show_report(figures: Dictionary, heat: ImageTexture, keep_before := false)
 	_heat = heat
 	_rows = BalanceRows.rows(_report, _level)
 	_table.show_rows(_rows, _before_rows)
+	if same:
+		return  # keeps a status such as "Cancelled: ..." in place
 	if _run == null:
 		_say_result()
-	if same:
-		return
 	redraw_needed.emit()
 	if not keep_before:
 		results_changed.emit()  # a run's end says it once for all its partial figures

@@ -12,14 +12,16 @@ signal item_picked(item: Vector2i)
 const Rows := preload("res://addons/board_editor/analysis/balance_rows.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 ## Column titles, what each sorts by (BalanceRows.SORT_KEYS, same order) and tooltips.
-const TITLES: Array[String] = ["Item", "Pays", "Rate", "Share", "Before"]
+const TITLES: Array[String] = ["Item", "Pays", "Rate %", "Share %", "Before"]
 const TIPS: Array[String] = [
 	"Click a line to select the item on the board.",
 	"Balls the item pays for a ball it catches.",
-	"Share of the shots it catches, ± the 95% interval.",
-	"Its share of all the balls the board gives back.",
+	"Per cent of the shots it catches, ± the 95% interval.",
+	"Its per cent of all the balls the board gives back.",
 	"Its share in the result shown before this one (its payout then, if another).",
 ]
+## Narrowest each column gets, px (the dock is narrow: the item's name takes what is left).
+const MIN_WIDTHS: Array[int] = [84, 40, 76, 52, 60]
 ## Height of one line and of the title row, px (the table grows with its lines).
 const LINE_PX := 24
 const MOST_LINES := 12
@@ -41,7 +43,7 @@ func _init() -> void:
 		set_column_title_tooltip_text(c, TIPS[c])
 		set_column_expand(c, c == 0)
 		set_column_clip_content(c, c == 0)
-		set_column_custom_minimum_width(c, 56 if c > 0 else 72)
+		set_column_custom_minimum_width(c, MIN_WIDTHS[c])
 	column_title_clicked.connect(_on_title_clicked)
 	item_selected.connect(_on_item_selected)
 	show_rows([] as Array[Rows.Row], [] as Array[Rows.Row])
@@ -93,8 +95,8 @@ func _fill() -> void:
 		var line := create_item(root)
 		line.set_text(0, row.name)
 		line.set_text(1, str(row.payout))
-		line.set_text(2, "%.2f%% ± %.2f" % [row.rate * 100.0, row.ci95 * 100.0])
-		line.set_text(3, "%.1f%%" % (row.share * 100.0))
+		line.set_text(2, "%.1f ±%.1f" % [row.rate * 100.0, row.ci95 * 100.0])
+		line.set_text(3, "%.1f" % (row.share * 100.0))
 		line.set_text(4, _before_text(row))
 		line.set_tooltip_text(4, _before_tip(row))
 		line.set_metadata(0, row.item)
@@ -108,7 +110,7 @@ func _before_text(row: Rows.Row) -> String:
 	if not _before.has(row.name):
 		return "" if _before.is_empty() else "new"
 	var old := _before[row.name]
-	var text := "%.1f%%" % (old.share * 100.0)
+	var text := "%.1f" % (old.share * 100.0)
 	if old.payout != row.payout:
 		text += " (%d)" % old.payout
 	return text

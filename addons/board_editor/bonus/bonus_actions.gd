@@ -67,39 +67,21 @@ class RemoveBonus:
 ## Sets one number of the bonus pocket at `index` (the Selection panel: width, depth,
 ## payout, symbols, open_seconds or open_catches); whole-number fields are rounded.
 class EditBonus:
-	extends BoardAction
+	extends "res://addons/board_editor/actions/edit_spec_field_action.gd"
 
 	## The BonusPocketSpec fields this action may set.
 	const FIELDS: Array[String] = [
 		"width", "depth", "payout", "symbols", "open_seconds", "open_catches"
 	]
-	const WHOLE: Array[String] = ["payout", "symbols", "open_catches"]
 
-	var _index: int
 	var _field: String
-	var _value: float
 
 	func _init(on_level: BoardLevel, index: int, field: String, value: float) -> void:
-		super(on_level)
-		_index = index
+		super(on_level, "bonus_pockets", index, field if FIELDS.has(field) else "", value)
 		_field = field
-		_value = value
 
 	func get_name() -> String:
 		return "Set bonus pocket %s" % _field.replace("_", " ")
-
-	func _touched_fields() -> PackedStringArray:
-		return PackedStringArray(["bonus_pockets"])
-
-	func _apply() -> void:
-		if _index < 0 or _index >= level.bonus_pockets.size() or not FIELDS.has(_field):
-			push_error("Edit bonus pocket: no bonus pocket %d or field '%s'." % [_index, _field])
-			return
-		var spec := level.bonus_pockets[_index]
-		if WHOLE.has(_field):
-			spec.set(_field, roundi(_value))
-		else:
-			spec.set(_field, _value)
 
 
 ## Turns the bonus pocket at `index` into another role (a tulip into a start pocket...). The

@@ -5,7 +5,9 @@ extends RefCounted
 ## ends; the goal's radius; a bonus pocket's mouth, size and payout, and per role its reel
 ## symbols (start pocket) or how long and for how many catches it opens (attacker); a
 ## windmill's pin, blades, length, and its speed (driven) or friction (free). Each field
-## edit becomes one action (one undo step).
+## edit becomes one action (one undo step). With several items selected, the fields they
+## all have, each with their common value or MIXED; a value typed there lands on all of them
+## in one undo step (action_for_all).
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
@@ -15,6 +17,9 @@ const SetPropertiesAction := preload("res://addons/board_editor/actions/set_prop
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const EditWindmillAction := preload("res://addons/board_editor/actions/edit_windmill_action.gd")
+const ItemGroupAction := preload("res://addons/board_editor/actions/item_group_action.gd")
+## The value shared_values gives a field the items disagree on.
+const MIXED := NAN
 
 ## Field key -> [label, lowest, highest, arrow step, whole numbers only]; values keep the
 ## board file's 0.01 px precision (NumberRow).
@@ -163,6 +168,68 @@ static func mirrored_action_for(
 	var mirrored: Array[Vector2i] = split["mirrored"]
 	var on_axis: Array[Vector2i] = split["on_axis"]
 	return MoveItemsAction.new(level, direct, target - at, mirrored, on_axis)
+
+
+## The fields every one of `items` has, in display order, each with the value they share or
+## MIXED where they differ ({} for no items).
+static func shared_values(level: BoardLevel, items: Array[Vector2i]) -> Dictionary:
+	if items.is_empty():
+		return {}
+	var shared := values_of(level, items[0])
+	for i in range(1, items.size()):
+		var values := values_of(level, items[i])
+		for key: String in shared.keys():
+			if not values.has(key):
+				shared.erase(key)
+				continue
+			var mine: float = shared[key]
+			var theirs: float = values[key]
+			if not is_nan(mine) and not is_equal_approx(mine, theirs):
+				shared[key] = MIXED
+	return shared
+
+
+## The one action (one undo step) that sets field `key` to `value` on every item of
+## `items` that has it, or null when none would change. With mirror mode on (`axis` a
+## number), each item's mirror twin follows: for x and y as a drag moves both halves (a
+## selected twin is left to its partner), for other fields by taking the same value.
+static func action_for_all(
+	level: BoardLevel, items: Array[Vector2i], key: String, value: float, axis := NAN
+) -> BoardAction:
+	var targets := _targets(level, items, key, axis)
+	var changes := targets.filter(
+		func(item: Vector2i) -> bool: return action_for(level, item, key, value) != null
+	)
+	if changes.is_empty():
+		return null
+	var build := func(board: BoardLevel, item: Vector2i) -> BoardAction:
+		var mirrored: BoardAction = null
+		if not is_nan(axis):
+			mirrored = mirrored_action_for(board, item, key, value, axis)
+		return mirrored if mirrored != null else action_for(board, item, key, value)
+	var label: String = FIELDS[key][0]
+	var field_name := label.get_slice(" (", 0).to_lower()
+	var action_name := "Set %s of %d items" % [field_name, targets.size()]
+	return ItemGroupAction.new(level, targets, build, action_name)
+
+
+# The items a field edit reaches: `items`, less a twin whose partner moves it (x, y), plus
+# the twins that take the same value (other fields), each once.
+static func _targets(
+	level: BoardLevel, items: Array[Vector2i], key: String, axis: float
+) -> Array[Vector2i]:
+	var targets: Array[Vector2i] = []
+	for item in items:
+		if not values_of(level, item).has(key) or targets.has(item):
+			continue
+		var twin := Items.NONE if is_nan(axis) else Mirror.partner(level, item, axis)
+		var moves_twin := key in ["x", "y"] and twin != Items.NONE
+		if moves_twin and targets.has(twin):
+			continue  # its partner's edit moves it
+		targets.append(item)
+		if not key in ["x", "y"] and twin != Items.NONE and not targets.has(twin):
+			targets.append(twin)
+	return targets
 
 
 ## A short name for the item's kind ("pin", "ball start").

@@ -1,8 +1,10 @@
 @tool
 extends VBoxContainer
-## The dock's "Selection" panel: exact numbers for the one selected item (ItemProperties),
-## each change one undo step; with several items selected, their count, align and space
-## buttons, and for pins on an arc the arc's shape (ArcFields).
+## The dock's "Selection" panel: exact numbers for the selected items (ItemProperties),
+## each change one undo step. With several items selected, the fields they all have: a
+## field where they differ is empty and says "mixed", and a value typed there lands on
+## every one of them (their mirror twins too in mirror mode) in one undo step. Also their
+## count, align and space buttons, and for pins on an arc the arc's shape (ArcFields).
 
 const NumberRow := preload("res://addons/board_editor/ui/number_row.gd")
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
@@ -28,6 +30,7 @@ var _session: Session
 var _title: Label
 var _rows: Dictionary[String, HBoxContainer] = {}
 var _fields: Dictionary[String, SpinBox] = {}
+var _mixed: Dictionary[String, bool] = {}
 var _arrange: HFlowContainer
 var _arc_fields: ArcFields
 var _role_row: HBoxContainer
@@ -48,6 +51,9 @@ func _init() -> void:
 		var row := NumberRow.make(spec)
 		var spin := NumberRow.spin_of(row)
 		spin.value_changed.connect(_on_value_changed.bind(key))
+		# After the SpinBox's own handler: Enter in a mixed field sets every item even when
+		# the typed number is the one the box held (no value_changed then).
+		spin.get_line_edit().text_submitted.connect(_on_text_submitted.bind(key))
 		add_child(row)
 		_rows[key] = row
 		_fields[key] = spin
@@ -143,6 +149,30 @@ func title() -> String:
 	return _title.text
 
 
+## True when field `key` shows "mixed" (the selected items differ in it).
+func is_mixed(key: String) -> bool:
+	return _mixed.get(key, false)
+
+
+## Sets field `key` to `value` on the selection, as typing it into the field does.
+func set_field(key: String, value: float) -> void:
+	if _session == null or _session.selection.is_empty():
+		return
+	var items := _session.selection
+	var axis := _session.mirror_axis() if _session.mirror_enabled else NAN
+	var action: BoardAction = null
+	if items.size() == 1 and (is_nan(axis) or key in ["x", "y"]):
+		if not is_nan(axis):
+			action = ItemProperties.mirrored_action_for(_session.level, items[0], key, value, axis)
+		if action == null:
+			action = ItemProperties.action_for(_session.level, items[0], key, value)
+	else:
+		action = ItemProperties.action_for_all(_session.level, items, key, value, axis)
+	if action != null:
+		_session.commit(action)
+	refresh()
+
+
 ## Updates the title and the fields from the selection.
 func refresh() -> void:
 	var values := {}
@@ -155,7 +185,11 @@ func refresh() -> void:
 	elif _session.selection.is_empty():
 		_title.text = "Nothing selected: click an item with the Select tool (Q)."
 	else:
-		_title.text = "%d items selected: align or space them." % _session.selection.size()
+		values = ItemProperties.shared_values(_session.level, _session.selection)
+		_title.text = (
+			"%d items selected: a value typed below sets it on all of them."
+			% _session.selection.size()
+		)
 	var arc := _session.selected_arc() if _session != null else {}
 	if not arc.is_empty():
 		_title.text = (
@@ -166,24 +200,32 @@ func refresh() -> void:
 	_arrange.visible = _session != null and _session.selection.size() >= 2
 	for key: String in _rows:
 		_rows[key].visible = values.has(key)
+		var value: float = values.get(key, 0.0)
+		_mixed[key] = values.has(key) and is_nan(value)
 		if values.has(key):
-			var value: float = values[key]
-			_fields[key].set_value_no_signal(value)
+			_show_value(_fields[key], value)
+
+
+# A field's value, or an empty box saying "mixed" (NAN: the items differ).
+func _show_value(spin: SpinBox, value: float) -> void:
+	var text := spin.get_line_edit()
+	text.placeholder_text = "mixed"
+	if is_nan(value):
+		text.text = ""
+		return
+	spin.set_value_no_signal(value)
+	text.text = String.num(spin.value, 0 if spin.step >= 1.0 else 2)
 
 
 func _on_value_changed(value: float, key: String) -> void:
-	if _session == null or _session.selection.size() != 1:
-		return
-	var item: Vector2i = _session.selection[0]
-	var action: BoardAction = null
-	if _session.mirror_enabled:
-		var axis := _session.mirror_axis()
-		action = ItemProperties.mirrored_action_for(_session.level, item, key, value, axis)
-	if action == null:
-		action = ItemProperties.action_for(_session.level, item, key, value)
-	if action != null:
-		_session.commit(action)
-	refresh()
+	set_field(key, value)
+
+
+func _on_text_submitted(text: String, key: String) -> void:
+	if is_mixed(key) and text.strip_edges().is_valid_float():
+		var spin := _fields[key]
+		var typed := snappedf(text.to_float(), spin.step)
+		set_field(key, clampf(typed, spin.min_value, spin.max_value))
 
 
 func _show_role() -> void:
