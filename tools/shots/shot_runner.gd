@@ -12,6 +12,7 @@ const SHOT_FILES: Array[String] = [
 	"res://tools/shots/menu_shots.gd",
 	"res://tools/shots/pachinko_shots.gd",
 	"res://tools/shots/bonus_shots.gd",
+	"res://tools/shots/juice_shots.gd",
 	"res://tools/shots/machine_shots.gd",
 	"res://tools/shots/maze_shots.gd",
 ]

@@ -24,8 +24,15 @@ const PLATE_MARGIN := 12.0
 ## The bake never exceeds this many pixels a side.
 const MAX_BAKE := 4096
 
+## Screen pixels the board is pushed off its fitted place (a camera nudge; zero at rest).
+var nudge := Vector2.ZERO:
+	set(value):
+		nudge = value
+		position = _fitted_position + nudge
+
 var _level: BoardLevel
 var _bake_scale := 0.0
+var _fitted_position := Vector2.ZERO
 
 @onready var bake: SubViewport = $Bake
 @onready var static_root: Node2D = $Bake/Static
@@ -75,6 +82,11 @@ func _dress(level: BoardLevel) -> void:
 	plate.setup(level)
 
 
+## The pin flashes (made by the first `bind`), for effects that light pins.
+func pin_lights() -> PinLights:
+	return _pin_lights()
+
+
 ## The pin flashes, made on first use and drawn under the balls.
 func _pin_lights() -> PinLights:
 	var lights := get_node_or_null(^"PinLights") as PinLights
@@ -102,7 +114,8 @@ func fit(level: BoardLevel, area: Rect2) -> void:
 	var half := level.ring_radius * PLATE_REACH + PLATE_MARGIN
 	var board_scale := minf(area.size.x, area.size.y) / (half * 2.0)
 	scale = Vector2.ONE * board_scale
-	position = area.get_center() - level.ring_center * board_scale
+	_fitted_position = area.get_center() - level.ring_center * board_scale
+	position = _fitted_position + nudge
 	_rebake()
 
 
