@@ -4,7 +4,10 @@ extends RefCounted
 ## analysis runs of the same shots: one with every bonus pocket shut (the plain analysis)
 ## and one with them all held open. The rules open them only now and then, so the shut run
 ## alone misses the jackpots and the open tulips; this adds them back with a small model of
-## a player holding the handle (a ball every LaunchHandle.INTERVAL seconds):
+## the player the return is measured for: single shots at uniform random power, one every
+## SHOT_INTERVAL seconds on average (the autoplay's pace; a held handle fires one every
+## LaunchHandle.INTERVAL, at one strength). The pace matters to the jackpots only: an open
+## attacker's round lasts seconds, so it sees as many balls as are fired in them.
 ##
 ## - Tulips open after a catch and close after the next, so catches alternate shut and open:
 ##   a tulip catching at rate s shut and o open catches at 2·s·o / (s + o) per shot.
@@ -18,18 +21,29 @@ extends RefCounted
 ## autoplay (`--autoplay=pachinko --handle=P`) plays the real rules to check them.
 
 const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
+const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
+
+## Seconds between single shots, on average: the autoplay's pause is drawn evenly from
+## MIN_GAP to MAX_GAP after each shot. (It once was the handle's 0.6 s, and Fever's
+## autoplay then paid 0.1 to 0.15 less than the estimate: its rounds saw fewer balls.)
+const SHOT_INTERVAL := (PachinkoAutoplay.MIN_GAP + PachinkoAutoplay.MAX_GAP) * 0.5
 
 
 ## The bonus figures for `band` (or every band with -1): balls per shot the tulips and the
-## jackpots add, jackpots per 1000 shots, and the model's inputs, as report data.
+## jackpots add, jackpots per 1000 shots, and the model's inputs, as report data, for a
+## player firing a ball every `shot_interval` seconds.
 static func estimate(
-	level: BoardLevel, shut: AnalysisTally, open: AnalysisTally, band := -1
+	level: BoardLevel,
+	shut: AnalysisTally,
+	open: AnalysisTally,
+	band := -1,
+	shot_interval := SHOT_INTERVAL
 ) -> Dictionary:
 	var shots := _shots(shut, band)
 	var open_shots := _shots(open, band)
 	if shots == 0 or open_shots == 0:
 		return {"tulip_return": 0.0, "jackpot_return": 0.0, "jackpots_per_1000": 0.0}
-	var fire_rate := 1.0 / LaunchHandle.INTERVAL
+	var fire_rate := 1.0 / maxf(shot_interval, 0.01)
 	var tulip_extra := 0.0
 	var start_rate := 0.0
 	var jackpot_weight := 0.0

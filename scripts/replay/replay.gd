@@ -30,7 +30,9 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## physics play out differently under other rules, so those runs are refused too.
 ## Pachinko 2: every power clears the rail and power sets the speed at the rail's mouth
 ## (LaunchTable), so a recorded shot's power sends its ball elsewhere than under 1.
-const RULES_VERSIONS := {"maze": 1, "pachinko": 2}
+## Pachinko 3: a tulip's wings are moving petals (a world gate) instead of walls switched
+## in one step, so a run on a board with tulips rolls differently than under 2.
+const RULES_VERSIONS := {"maze": 1, "pachinko": 3}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME

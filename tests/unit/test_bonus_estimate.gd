@@ -3,6 +3,8 @@ extends GutTest
 ## rates give figures worked out on paper.
 
 const ROLE := BonusPocketSpec.Role
+## A player holding the handle: the pace the figures below were worked out for.
+const HANDLE := BonusEstimate.LaunchHandle.INTERVAL
 
 
 # A start pocket (2 symbols), an attacker (pays 10, 6 s or 10 catches) and a tulip (pays 4).
@@ -35,7 +37,7 @@ func _tally(hits: Array[int]) -> AnalysisTally:
 func test_tulips_and_jackpots_add_what_the_model_says() -> void:
 	var shut := _tally([100, 0, 100])
 	var open := _tally([100, 500, 300])
-	var figures := BonusEstimate.estimate(_level(), shut, open)
+	var figures := BonusEstimate.estimate(_level(), shut, open, -1, HANDLE)
 	# Tulip: alternating 2 * 0.1 * 0.3 / 0.4 = 0.15 a shot, 0.05 more than shut, 4 balls each.
 	assert_almost_eq(figures["tulip_return"], 0.2, 1e-6)
 	# A ball every 0.6 s; spins at 0.1 a shot are under what the reels can turn (one per
@@ -44,7 +46,7 @@ func test_tulips_and_jackpots_add_what_the_model_says() -> void:
 	# A round: 10 balls in 6 s, half caught: 5 catches of 10 balls.
 	assert_almost_eq(figures["round_value"], 50.0, 1e-6)
 	assert_almost_eq(BonusEstimate.added_return(figures), 0.2 + 1.25, 1e-6)
-	var band := BonusEstimate.estimate(_level(), shut, open, 2)
+	var band := BonusEstimate.estimate(_level(), shut, open, 2, HANDLE)
 	assert_almost_eq(band["jackpot_return"], 1.25, 1e-6, "band 2 holds every shot")
 	var empty := BonusEstimate.estimate(_level(), shut, open, 0)
 	assert_eq(BonusEstimate.added_return(empty), 0.0, "a band without shots adds nothing")
@@ -54,9 +56,21 @@ func test_the_reels_cap_the_spins() -> void:
 	# Every other shot reaches a start pocket: far more than the reels can turn.
 	var shut := _tally([500, 0, 0])
 	var open := _tally([500, 500, 0])
-	var figures := BonusEstimate.estimate(_level(), shut, open)
+	var figures := BonusEstimate.estimate(_level(), shut, open, -1, HANDLE)
 	# One spin per 3.0 s + 0.25 * 6 s = 4.5 s; 0.6 s a shot: 0.6 / 4.5 / 4 jackpots a shot.
 	assert_almost_eq(figures["jackpots_per_1000"], 1000.0 * 0.6 / 4.5 / 4.0, 1e-6)
+
+
+func test_by_default_the_pace_is_the_autoplays_single_shots() -> void:
+	assert_almost_eq(BonusEstimate.SHOT_INTERVAL, 0.9, 1e-9, "a pause of 0.6 to 1.2 s")
+	var shut := _tally([100, 0, 100])
+	var open := _tally([100, 500, 300])
+	var figures := BonusEstimate.estimate(_level(), shut, open)
+	# A round: 6 s / 0.9 s = 6.67 balls, half caught: 3.33 catches of 10 balls.
+	assert_almost_eq(figures["round_value"], 100.0 / 3.0, 1e-6)
+	# Spins at 0.1 a shot, a quarter jackpots: still 25 a 1000 (the reels keep up).
+	assert_almost_eq(figures["jackpots_per_1000"], 25.0, 1e-6)
+	assert_almost_eq(figures["tulip_return"], 0.2, 1e-6, "tulips count per shot, not per second")
 
 
 func test_a_bonus_board_report_has_an_expected_return_only_with_the_open_run() -> void:
