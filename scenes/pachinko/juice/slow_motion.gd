@@ -36,6 +36,9 @@ var _scale := 1.0
 var _age := 0.0
 var _cooldown := 0.0
 var _ball := -1
+## The ball followed last: one ball is slowed for once (a ball rattling round a mouth's rim
+## would slow the game again and again).
+var _last_ball := -1
 var _linger := 0.0
 var _approach: PocketApproach
 var _sounds: SoundBank
@@ -51,6 +54,7 @@ func bind(rules: PachinkoRules) -> void:
 	_approach = PocketApproach.new(rules.level, rules.world.tuning.gravity)
 	_finish()
 	_cooldown = 0.0
+	_last_ball = -1
 
 
 ## True while the clock runs slower than full speed.
@@ -99,10 +103,11 @@ func update(rules: PachinkoRules, real_delta: float) -> float:
 func _look_for_ball(rules: PachinkoRules) -> void:
 	if _cooldown > 0.0 or not in_last_balls(rules):
 		return
-	var ball := _approach.find_ball(rules.world, rules.bonus)
+	var ball := _approach.find_ball(rules.world, rules.bonus, _last_ball)
 	if ball < 0:
 		return
 	_ball = ball
+	_last_ball = ball
 	_phase = Phase.EASE_IN
 	_age = 0.0
 	_linger = AFTER_CATCH
