@@ -4,8 +4,6 @@ extends RefCounted
 ## Classic keeps the chapter's machine: the moon face and the water dragon on purple enamel.
 
 const ART_FOLDER := "res://assets/pachinko/"
-const Style := FasciaPalette.PlateStyle
-
 static var _made: Dictionary[String, FasciaPalette] = {}
 
 
@@ -61,7 +59,7 @@ static func _classic() -> Dictionary:
 		"title": Color(1, 0.86, 0.5),
 		"title_outline": Color(0.23, 0.05, 0.1),
 		"notes": Color(0.66, 0.62, 0.8),
-		"plate_style": Style.CARTOUCHE,
+		"plate_style": FasciaPalette.PlateStyle.CARTOUCHE,
 		"plate_face": Color("3b1a5c"),
 		"plate_text": Color("ffe3a0"),
 	}
@@ -94,7 +92,7 @@ static func _country() -> Dictionary:
 		"title": Color("ffe6a6"),
 		"title_outline": Color("3a2410"),
 		"notes": Color("c9bb94"),
-		"plate_style": Style.SIGNBOARD,
+		"plate_style": FasciaPalette.PlateStyle.SIGNBOARD,
 		"plate_face": Color("7a5230"),
 		"plate_text": Color("fff3d6"),
 	}
@@ -127,7 +125,7 @@ static func _garden() -> Dictionary:
 		"title": Color("ffd0e1"),
 		"title_outline": Color("4a0f2c"),
 		"notes": Color("a9d3b4"),
-		"plate_style": Style.LEAF,
+		"plate_style": FasciaPalette.PlateStyle.LEAF,
 		"plate_face": Color("2c7a45"),
 		"plate_text": Color("fff2f6"),
 	}
@@ -160,7 +158,7 @@ static func _neon() -> Dictionary:
 		"title": Color("8ff3ff"),
 		"title_outline": Color("4a0a5a"),
 		"notes": Color("b19bd8"),
-		"plate_style": Style.NEON_TUBE,
+		"plate_style": FasciaPalette.PlateStyle.NEON_TUBE,
 		"plate_face": Color("12051f"),
 		"plate_text": Color("ff7ddc"),
 	}
@@ -193,7 +191,7 @@ static func _sakura() -> Dictionary:
 		"title": Color("ffd3e2"),
 		"title_outline": Color("3a0f24"),
 		"notes": Color("c4a9c4"),
-		"plate_style": Style.LACQUER,
+		"plate_style": FasciaPalette.PlateStyle.LACQUER,
 		"plate_face": Color("1a1016"),
 		"plate_text": Color("ffd3e2"),
 	}

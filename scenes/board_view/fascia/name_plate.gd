@@ -4,7 +4,6 @@ extends RefCounted
 ## wooden sign, a leafy pill, a neon tube box or black lacquer with blossoms. Drawn from a
 ## CanvasItem's `_draw()` in board pixels, once (the game bakes it with the static layers).
 
-const Style := FasciaPalette.PlateStyle
 ## Letter size and the plate's height, in board pixels.
 const FONT_SIZE := 17
 const HEIGHT := 30.0
@@ -29,22 +28,22 @@ static func draw(canvas: CanvasItem, level: BoardLevel, palette: FasciaPalette) 
 	var plate := rect_of(level, text_size.x)
 	canvas.draw_rect(plate.grow(3.0), Color(0, 0, 0, 0.35))
 	match palette.plate_style:
-		Style.SIGNBOARD:
+		FasciaPalette.PlateStyle.SIGNBOARD:
 			_signboard(canvas, plate, palette)
-		Style.LEAF:
+		FasciaPalette.PlateStyle.LEAF:
 			_leaf(canvas, plate, palette)
-		Style.NEON_TUBE:
+		FasciaPalette.PlateStyle.NEON_TUBE:
 			_neon(canvas, plate, palette)
-		Style.LACQUER:
+		FasciaPalette.PlateStyle.LACQUER:
 			_lacquer(canvas, plate, palette)
 		_:
 			_cartouche(canvas, plate, palette)
 	var width := plate.size.x - PADDING * 1.4
 	var base := Vector2(plate.position.x + PADDING * 0.7, plate.get_center().y + FONT_SIZE * 0.36)
-	var outline := 6 if palette.plate_style == Style.NEON_TUBE else 3
+	var outline := 6 if palette.plate_style == FasciaPalette.PlateStyle.NEON_TUBE else 3
 	var outline_color := (
 		Color(palette.plate_text, 0.35)
-		if palette.plate_style == Style.NEON_TUBE
+		if palette.plate_style == FasciaPalette.PlateStyle.NEON_TUBE
 		else Color(0, 0, 0, 0.6)
 	)
 	canvas.draw_string_outline(
