@@ -74,7 +74,8 @@ func _measure(level: BoardLevel, games: int, handle: float) -> Dictionary:
 		"triggers_per_game": snappedf(float(triggers) / maxf(games, 1), 0.01),
 		"games_with_slow_motion": games_with_slow,
 		"slow_seconds_median": snappedf(holds[holds.size() / 2], 0.01) if holds.size() > 0 else 0.0,
-		"slow_seconds_longest": snappedf(holds[holds.size() - 1], 0.01) if holds.size() > 0 else 0.0,
+		"slow_seconds_longest":
+		snappedf(holds[holds.size() - 1], 0.01) if holds.size() > 0 else 0.0,
 		"game_seconds_mean": snappedf(real_seconds / maxf(games, 1), 0.1),
 		"share_of_time_slow": snappedf(slow_seconds / maxf(real_seconds, 0.001), 0.001),
 	}

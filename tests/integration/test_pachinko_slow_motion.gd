@@ -82,6 +82,18 @@ func test_a_shut_attacker_is_no_mouth() -> void:
 	assert_true(approach.entering(at + Vector2(0, -20), Vector2(0, 80), null), "lid up")
 
 
+func test_no_slow_motion_while_a_stream_fills_the_field() -> void:
+	var rules := _rules()
+	var slow := _slow(rules)
+	_leave(rules, 1)
+	for i in SlowMotion.MAX_IN_PLAY:
+		rules.place_ball(Vector2(200.0 + 30.0 * i, 120.0))
+	_drop_into_pocket(rules)
+	assert_false(SlowMotion.in_last_balls(rules), "too many balls in the field")
+	slow.update(rules, FRAME)
+	assert_eq(slow.triggers, 0)
+
+
 func test_no_slow_motion_while_the_player_has_plenty_of_balls() -> void:
 	var rules := _rules()
 	var slow := _slow(rules)
@@ -178,10 +190,10 @@ func test_a_game_played_through_slow_motion_keeps_its_state_hash() -> void:
 	assert_eq(bare.stats(), rules.stats(), "the same counts")
 
 
-# Three balls to shoot and one dropped into a pocket: the last balls from the start.
+# Two balls to shoot and one dropped into a pocket: the last balls from the start.
 func _scripted_start(rules: PachinkoRules) -> void:
 	rules.start_game()
-	_leave(rules, 3)
+	_leave(rules, 2)
 	_drop_into_pocket(rules)
 
 
