@@ -309,8 +309,7 @@ func _on_ball_returned(_id: int) -> void:
 
 
 func _on_pin_hit(_ball: int, _pin: int, speed: float) -> void:
-	var fever := rules.bonus.any_attacker_open()
-	var tick := SoundBank.PIN_FEVER if fever else SoundBank.PIN_TICK
+	var tick := JuiceView.pin_sound(rules.bonus)
 	sounds.play_impact(tick, speed, TICK_MIN_SPEED, TICK_MAX_SPEED)
 
 

@@ -61,6 +61,11 @@ func bind(rules: PachinkoRules) -> void:
 	rules.bonus.reels_finished.connect(_on_reels_finished)
 
 
+## The pin tick for a strike now: brighter while `machine` has an attacker open (fever).
+static func pin_sound(machine: BonusMachine) -> StringName:
+	return SoundBank.PIN_FEVER if machine.any_attacker_open() else SoundBank.PIN_TICK
+
+
 ## The factor for this frame's game time (below 1 in slow motion), `real_delta` seconds
 ## after the last frame.
 func time_scale(rules: PachinkoRules, real_delta: float) -> float:

@@ -40,14 +40,14 @@ func mouth_count() -> int:
 
 
 ## The id of a ball in `world` about to drop into an enterable pocket (`machine` says
-## which attackers are open; null: every one is), or -1. The first such ball in the
-## world's order wins, so the answer is the same every run.
-func find_ball(world: BallWorld, machine: BonusMachine) -> int:
+## which attackers are open; null: every one is), or -1; ball `skip` never counts. The
+## first such ball in the world's order wins, so the answer is the same every run.
+func find_ball(world: BallWorld, machine: BonusMachine, skip: int = -1) -> int:
 	var ids := world.get_ids()
 	var positions := world.get_positions()
 	var velocities := world.get_velocities()
 	for i in ids.size():
-		if entering(positions[i], velocities[i], machine):
+		if ids[i] != skip and entering(positions[i], velocities[i], machine):
 			return ids[i]
 	return -1
 
