@@ -64,3 +64,9 @@ func test_a_short_wall_and_an_empty_board_build_a_field() -> void:
 		Vector2(10, 10), PackedVector2Array([Vector2(5, 5), Vector2(5, 5)])
 	)
 	assert_almost_eq(_field_px(dot, Vector2(5, 5)), 0.0, 0.1, "a wall of no length is a point")
+	var slanted := SoftShadows.wall_field(
+		Vector2(40, 40), PackedVector2Array([Vector2(0, 0), Vector2(40, 40)])
+	)
+	var step := SoftShadows.FIELD_RANGE_PX / 255.0
+	assert_almost_eq(_field_px(slanted, Vector2(21, 21)), 0.0, step, "on a slanted wall")
+	assert_almost_eq(_field_px(slanted, Vector2(25, 21)), sqrt(8.0), step, "beside it")
