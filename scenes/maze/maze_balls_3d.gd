@@ -2,8 +2,8 @@ extends Node3D
 ## The maze's balls in 3D: one lit sphere per ball of the rules' world, resting on the floor
 ## and rolling (each frame's move turns it about up × move by |move| / radius, so a painted
 ## band on it shows the roll). A ball that fell into a hole slides to the hole's centre and
-## sinks, shrinking into the dark. Each ball carries its shadow: a coarser sphere drawn
-## flat on the floor by `shadow_material`. Reads the world each frame; never moves a ball.
+## sinks, shrinking into the dark. Their shadows are the floor's (`shadow_casters` says
+## where the balls are). Reads the world each frame; never moves a ball.
 
 const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 ## How long a ball takes to drop out of sight into a hole, in seconds.
@@ -14,20 +14,14 @@ const FALL_MAX_STEP := 1.0 / 30.0
 ## Steps per half sphere of the ball mesh (smooth enough for a highlight at 1080p).
 const SPHERE_RINGS := 16
 const SPHERE_SEGMENTS := 32
-## The shadow's sphere: only its outline shows, flattened on the floor.
-const SHADOW_RINGS := 6
-const SHADOW_SEGMENTS := 16
 
 ## The ball's surface; set before the first `sync`.
 var material: Material
-## Draws a ball's shadow on the floor (the board's shadow_material); none when null.
-var shadow_material: Material
 ## How deep the holes are, in board pixels (how far a falling ball sinks).
 var hole_depth_px := 12.0
 
 var _board_size := Vector2(350.0, 315.0)
 var _mesh := SphereMesh.new()
-var _shadow_mesh := SphereMesh.new()
 ## ball id -> MeshInstance3D, and the board position each was last drawn at.
 var _nodes: Dictionary[int, MeshInstance3D] = {}
 var _last: Dictionary[int, Vector2] = {}
@@ -38,8 +32,6 @@ var _falls: Dictionary[MeshInstance3D, Array] = {}
 func _init() -> void:
 	_mesh.rings = SPHERE_RINGS
 	_mesh.radial_segments = SPHERE_SEGMENTS
-	_shadow_mesh.rings = SHADOW_RINGS
-	_shadow_mesh.radial_segments = SHADOW_SEGMENTS
 
 
 ## Removes every ball (a reset rebuilds the world with new ids).
@@ -62,8 +54,6 @@ func sync(rules: MazeRules, delta: float) -> void:
 	var radius := rules.level.ball_radius
 	_mesh.radius = radius * Meshes.UNITS_PER_PX
 	_mesh.height = radius * 2.0 * Meshes.UNITS_PER_PX
-	_shadow_mesh.radius = _mesh.radius
-	_shadow_mesh.height = _mesh.height
 	var ids := rules.world.get_ids()
 	var positions := rules.world.get_positions()
 	var seen := {}
@@ -93,6 +83,20 @@ func shown_count() -> int:
 ## The drawn ball of world ball `id`, or null (for tests).
 func node_for(id: int) -> MeshInstance3D:
 	return _nodes.get(id)
+
+
+## Every ball in sight as a shadow caster for the floor: board x, y, the height of its
+## centre above the floor and its radius, in px (a sinking ball's height goes below zero).
+func shadow_casters() -> PackedVector4Array:
+	var casters := PackedVector4Array()
+	for node: MeshInstance3D in _nodes.values() + _falls.keys():
+		if node.visible:
+			var at := node.position / Meshes.UNITS_PER_PX
+			var board := Vector2(at.x + _board_size.x * 0.5, _board_size.y * 0.5 - at.y)
+			casters.append(
+				Vector4(board.x, board.y, at.z, _mesh.radius / Meshes.UNITS_PER_PX * node.scale.x)
+			)
+	return casters
 
 
 ## How many balls are falling into a hole now (or lie at the bottom of one).
@@ -135,13 +139,6 @@ func _new_ball() -> MeshInstance3D:
 	# a random start orientation, so the balls' bands do not all line up
 	node.basis = Basis.from_euler(Vector3(randf(), randf(), randf()) * TAU)
 	node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-	if shadow_material != null:
-		var shadow := MeshInstance3D.new()
-		shadow.name = "Shadow"
-		shadow.mesh = _shadow_mesh
-		shadow.material_override = shadow_material
-		shadow.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
-		node.add_child(shadow)
 	add_child(node)
 	return node
 

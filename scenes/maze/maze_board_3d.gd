@@ -1,17 +1,16 @@
 extends Node3D
 ## The maze board in 3D, built from its level data: the floor (a quad whose shader paints
 ## the goal ring and cuts the holes), every wall raised as one mesh, the frame round the
-## board, and in hard mode the holes as dark tubes under the floor. The walls and the frame
-## are drawn a second time flattened onto the floor along the sun as their shadows
-## (maze_floor_shadow.gdshader; the balls use the same `shadow_material`). Lives under the
-## stage's tilting pivot; the balls are a sibling (maze_balls_3d.gd). Heights are in board
-## pixels.
+## board, and in hard mode the holes as dark tubes under the floor. The floor shader lays
+## the walls', the frame's and the balls' soft shadows on it (maze_floor_shade.gdshaderinc,
+## fed by maze_soft_shadows.gd). Lives under the stage's tilting pivot; the balls are a
+## sibling (maze_balls_3d.gd). Heights are in board pixels.
 
 const Palette := preload("res://scenes/maze/maze_palette.gd")
 const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const FLOOR_SHADER := preload("res://scenes/maze/maze_floor.gdshader")
-const SHADOW_SHADER := preload("res://scenes/maze/maze_floor_shadow.gdshader")
 const SOLID_SHADER := preload("res://scenes/maze/maze_wood_solid.gdshader")
+const SoftShadows := preload("res://scenes/maze/maze_soft_shadows.gd")
 ## The wood-and-steel look: a pale maple floor in boards one cell wide, walnut walls with
 ## lighter routed tops, and a darker frame (the tutorial's look keeps its flat paint).
 const MAPLE := Color("e2c9a0")
@@ -32,8 +31,8 @@ const BODY_DEPTH := 16.0
 const HOLE_DEPTH_PER_RADIUS := 1.3
 ## The floor shader's limit on holes; more are drawn without their cut-out.
 const MAX_HOLES := 64
-## Share of the light a shadow leaves on the floor (of its colour's linear value).
-const SHADOW_LIGHT_LEFT := 0.78
+## Share of the light a full shadow takes from the floor.
+const SHADOW_DARKNESS := 0.3
 ## The floor's albedo is raised by this: the seed's pale floor stays as bright as it was
 ## when a shadowed light's extra pass lit it (that pass was added after the conversion for
 ## the screen and brightened it far more than its energy said), while the walls and balls
@@ -48,24 +47,18 @@ var _floor := MeshInstance3D.new()
 var _walls := MeshInstance3D.new()
 var _frame := MeshInstance3D.new()
 var _holes := MeshInstance3D.new()
-var _wall_shadows := MeshInstance3D.new()
-var _frame_shadow := MeshInstance3D.new()
 var _floor_material := ShaderMaterial.new()
-var _shadow_material := ShaderMaterial.new()
 var _wall_material := ShaderMaterial.new()
 var _frame_material := ShaderMaterial.new()
 
 
 func _ready() -> void:
 	_floor_material.shader = FLOOR_SHADER
-	_shadow_material.shader = SHADOW_SHADER
-	_shadow_material.set_shader_parameter("light_left", SHADOW_LIGHT_LEFT)
-	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes, _wall_shadows, _frame_shadow]:
+	_floor_material.set_shader_parameter("shadow_darkness", SHADOW_DARKNESS)
+	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes]:
 		piece.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		add_child(piece)
 	_floor.material_override = _floor_material
-	_wall_shadows.material_override = _shadow_material
-	_frame_shadow.material_override = _shadow_material
 	_wall_material.shader = SOLID_SHADER
 	_frame_material.shader = SOLID_SHADER
 	_walls.material_override = _wall_material
@@ -82,8 +75,14 @@ func build(level: BoardLevel, hard: bool) -> void:
 	var wall_height := wall_height_px()
 	_walls.mesh = Meshes.walls(size, level.walls, level.wall_width, wall_height)
 	_frame.mesh = Meshes.frame(size, FRAME_MARGIN, wall_height + FRAME_EXTRA_HEIGHT, BODY_DEPTH)
-	_wall_shadows.mesh = _walls.mesh
-	_frame_shadow.mesh = Meshes.frame_lip(size, wall_height + FRAME_EXTRA_HEIGHT)
+	_set_paint(
+		"wall_field", ImageTexture.create_from_image(SoftShadows.wall_field(size, level.walls))
+	)
+	_set_paint("wall_field_range", SoftShadows.FIELD_RANGE_PX)
+	_set_paint("wall_half_width", level.wall_width * 0.5)
+	_set_paint("wall_height", wall_height)
+	_set_paint("frame_height", wall_height + FRAME_EXTRA_HEIGHT)
+	set_ball_shadows(PackedVector4Array())
 	_paint_look()
 	_set_paint("goal_color", Palette.GOAL)
 	_set_paint("rim_color", Palette.HOLE_RIM.darkened(0.4))
@@ -148,18 +147,26 @@ func set_lost_hole(index: int) -> void:
 	_set_paint("lost_hole", index)
 
 
-## The material that draws a mesh as its shadow on this floor (walls, frame, balls).
-func shadow_material() -> ShaderMaterial:
-	return _shadow_material
+## The floor's material (it paints the floor and lays the shadows on it).
+func floor_material() -> ShaderMaterial:
+	return _floor_material
 
 
 ## Points the shadows along `sun_direction` (world space, the way the light travels) for
 ## the board where it is now; call after every move of the board.
 func cast_shadows(sun_direction: Vector3) -> void:
-	var to_world := global_transform
-	_shadow_material.set_shader_parameter("sun_direction", sun_direction.normalized())
-	_shadow_material.set_shader_parameter("world_from_board", Projection(to_world))
-	_shadow_material.set_shader_parameter("board_from_world", Projection(to_world.affine_inverse()))
+	var in_board := global_transform.basis.inverse() * sun_direction.normalized()
+	_set_paint("sun_step", SoftShadows.sun_step(in_board))
+
+
+## The balls that cast shadows now: board x, y, the centre's height above the floor and the
+## radius, in px (MazeBalls3D.shadow_casters); at most SoftShadows.MAX_BALLS.
+func set_ball_shadows(casters: PackedVector4Array) -> void:
+	var count := mini(casters.size(), SoftShadows.MAX_BALLS)
+	var padded := casters.slice(0, count)
+	padded.resize(SoftShadows.MAX_BALLS)
+	_set_paint("balls", padded)
+	_set_paint("ball_count", count)
 
 
 ## How tall the walls stand, in board pixels.
@@ -183,24 +190,20 @@ func outer_box() -> AABB:
 	return AABB(lo, hi - lo)
 
 
-## The mesh parts by name, for tests: "floor", "walls", "frame", "holes", "wall_shadows",
-## "frame_shadow".
+## The mesh parts by name, for tests: "floor", "walls", "frame", "holes".
 func part(part_name: String) -> MeshInstance3D:
 	var parts := {
 		"floor": _floor,
 		"walls": _walls,
 		"frame": _frame,
 		"holes": _holes,
-		"wall_shadows": _wall_shadows,
-		"frame_shadow": _frame_shadow,
 	}
 	return parts.get(part_name)
 
 
-# A floor-paint uniform: the floor and its shadows paint the same floor.
+# A uniform of the floor's shader.
 func _set_paint(uniform: String, value: Variant) -> void:
 	_floor_material.set_shader_parameter(uniform, value)
-	_shadow_material.set_shader_parameter(uniform, value)
 
 
 static func _plain(colour: Color, roughness: float, specular: float) -> StandardMaterial3D:

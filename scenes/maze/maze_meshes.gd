@@ -111,24 +111,6 @@ static func frame(board_size: Vector2, margin: float, height: float, depth: floa
 	return st.commit()
 
 
-## The inside faces of the frame alone, from the floor up to `height`: all of the frame
-## whose shadow can fall on the floor.
-static func frame_lip(board_size: Vector2, height: float) -> ArrayMesh:
-	var st := SurfaceTool.new()
-	st.begin(Mesh.PRIMITIVE_TRIANGLES)
-	var inner := _rect(board_size, 0.0)
-	for i in 4:
-		var j := (i + 1) % 4
-		var corners := [
-			to_local(board_size, inner[i], height),
-			to_local(board_size, inner[j], height),
-			to_local(board_size, inner[j], 0.0),
-			to_local(board_size, inner[i], 0.0),
-		]
-		_quad(st, corners, -_edge_normal(inner[i], inner[j]))
-	return st.commit()
-
-
 ## Every hole as a tube `depth` deep with a floor of its own: the inside wall of each tube
 ## in surface 0, its vertex colours fading from `rim` at the top to black at the bottom (the
 ## depth reads even in shade), the bottoms in surface 1. Null for none.

@@ -62,7 +62,7 @@ func _ready() -> void:
 	world_env.environment = _environment()
 	add_child(world_env)
 	use_render_settings(get_viewport(), RenderingServer.get_video_adapter_name())
-	# One light, no shadow map: the shadows are geometry on the floor, cast along the same
+	# One light, no shadow map: the floor's shader lays soft shadows cast along the same
 	# direction (maze_board_3d.gd). A shadow map cost a third of each frame on software GL
 	# (its own pass over the floor, and jagged edges on thin walls at any affordable size).
 	_sun.transform = Transform3D(Basis.looking_at(SUN_DIRECTION.normalized(), Vector3.UP))
@@ -95,7 +95,6 @@ func set_level(level: BoardLevel, hard: bool) -> void:
 	_balls.clear()
 	_balls.hole_depth_px = _board.hole_depth_px()
 	_balls.material = ball_material(tutorial_look)
-	_balls.shadow_material = _board.shadow_material()
 	_frame()
 
 
@@ -119,6 +118,7 @@ func set_lost_hole(index: int) -> void:
 ## view follows the balls and keeps every one of them on screen.
 func sync_balls(rules: MazeRules, delta: float) -> void:
 	_balls.sync(rules, delta)
+	_board.set_ball_shadows(_balls.shadow_casters())
 	if _framing.zoomed:
 		_follow_balls(rules.ball_positions(), delta)
 

@@ -127,41 +127,48 @@ func test_the_sun_stays_put_and_its_shadows_follow_the_tilt() -> void:
 	var stage := _stage()
 	var sun: DirectionalLight3D = stage.sun()
 	var board := stage.board()
-	var shadows: ShaderMaterial = board.shadow_material()
-	assert_false(sun.shadow_enabled, "shadows are geometry on the floor, not a shadow map")
+	var floor_material := board.floor_material()
+	assert_false(sun.shadow_enabled, "the floor lays its own soft shadows, not a shadow map")
 	var before := sun.global_transform
-	stage.set_tilt(Vector2(12.0, -12.0))
-	assert_true(sun.global_transform.is_equal_approx(before), "the light is not on the board")
-	var travel: Vector3 = shadows.get_shader_parameter("sun_direction")
-	var shines: Vector3 = -sun.global_transform.basis.z
-	assert_almost_eq(travel.distance_to(shines.normalized()), 0.0, 0.0001, "cast along the light")
-	var to_board: Projection = shadows.get_shader_parameter("board_from_world")
-	var expected := Projection(board.global_transform.affine_inverse())
-	for column in 4:
-		assert_true(
-			to_board[column].is_equal_approx(expected[column]), "cast for the board as it tilts now"
-		)
+	var steps: Array[Vector2] = []
+	for tilt: Vector2 in [Vector2.ZERO, Vector2(12.0, 0.0), Vector2(0.0, 12.0)]:
+		stage.set_tilt(tilt)
+		assert_true(sun.global_transform.is_equal_approx(before), "the light is not on the board")
+		var step: Vector2 = floor_material.get_shader_parameter("sun_step")
+		var shines: Vector3 = -sun.global_transform.basis.z
+		var in_board := board.global_transform.basis.inverse() * shines
+		var expected := Vector2(in_board.x, -in_board.y) / -in_board.z
+		assert_almost_eq(step.distance_to(expected), 0.0, 0.0001, "cast along the light %s" % tilt)
+		steps.append(step)
+	assert_gt(steps[0].x, 0.0, "the sun is up on the left: shadows fall to the right")
+	assert_gt(steps[0].y, 0.0, "and down the screen")
+	# lowering the right (or bottom) edge turns the floor away from a sun on the upper left:
+	# its light comes in lower, and the shadows lengthen that way
+	assert_gt(steps[1].x, steps[0].x, "the right edge lowered: longer shadows to the right")
+	assert_gt(steps[2].y, steps[0].y, "the bottom edge lowered: longer shadows down")
 
 
-func test_walls_frame_and_balls_each_draw_a_shadow() -> void:
+func test_walls_frame_and_balls_each_cast_a_soft_shadow_on_the_floor() -> void:
 	var board := _stage().board()
-	var shadows: ShaderMaterial = board.shadow_material()
-	var walls: MeshInstance3D = board.part("walls")
-	var wall_shadows: MeshInstance3D = board.part("wall_shadows")
-	assert_eq(wall_shadows.mesh, walls.mesh, "the walls' own mesh, flattened by the shader")
-	assert_eq(wall_shadows.material_override, shadows)
-	var lip: MeshInstance3D = board.part("frame_shadow")
-	assert_eq(lip.material_override, shadows)
-	var frame_top: float = (board.part("frame") as MeshInstance3D).mesh.get_aabb().end.z
-	var lip_box := lip.mesh.get_aabb()
-	assert_almost_eq(lip_box.end.z, frame_top, 0.0001, "the frame's inside, up to its top")
-	assert_almost_eq(lip_box.position.z, 0.0, 0.0001, "from the floor: nothing below it")
+	var floor_material := board.floor_material()
+	var level := _rules().level
+	var field: ImageTexture = floor_material.get_shader_parameter("wall_field")
+	assert_not_null(field, "the floor knows where the walls are")
+	assert_almost_eq(
+		float(floor_material.get_shader_parameter("wall_height")), board.wall_height_px(), 0.001
+	)
+	var frame_height: float = floor_material.get_shader_parameter("frame_height")
+	assert_gt(frame_height, board.wall_height_px(), "the frame stands above the walls")
+	assert_eq(
+		board.get_children().filter(func(n: Node) -> bool: return n.name.contains("hadow")), []
+	)
 	_game._process(0.016)
-	var balls := _stage().balls()
-	var ball: MeshInstance3D = balls.node_for(_rules().world.get_ids()[0])
-	var ball_shadow := ball.get_node("Shadow") as MeshInstance3D
-	assert_not_null(ball_shadow, "a ball carries its shadow")
-	assert_eq(ball_shadow.material_override, shadows)
+	var balls: PackedVector4Array = floor_material.get_shader_parameter("balls")
+	assert_eq(int(floor_material.get_shader_parameter("ball_count")), level.ball_starts.size())
+	var first := _rules().world.get_ball_position(_rules().world.get_ids()[0])
+	assert_almost_eq(Vector2(balls[0].x, balls[0].y).distance_to(first), 0.0, 0.01, "where it is")
+	assert_almost_eq(balls[0].z, level.ball_radius, 0.01, "its centre a radius above the floor")
+	assert_almost_eq(balls[0].w, level.ball_radius, 0.01)
 
 
 # Software GL spent two thirds of each frame on MSAA: there the 3D board is drawn at a lower

@@ -112,13 +112,12 @@ func _apply(stage: MazeStage, settings: Dictionary) -> void:
 		"frame": [board.part("frame")],
 		"balls": [stage.balls()],
 		"table": [stage.get("_table")],
-		"shadows": [board.part("wall_shadows"), board.part("frame_shadow")],
-		"wall_shadows": [board.part("wall_shadows")],
-		"frame_shadow": [board.part("frame_shadow")],
 	}
 	for part: String in parts:
 		for node: Node3D in parts[part]:
 			node.visible = not settings["hide"].has(part)
+	# the shadows are the floor shader's
+	board.floor_material().set_shader_parameter("shadows_on", not settings["hide"].has("shadows"))
 
 
 # Saves the window as build/maze_fps/<variant>.png, to see what a variant looks like.
