@@ -96,8 +96,8 @@ func _move_ball(i: int) -> void:
 		var speed2: float = _v.length_squared()
 		if speed2 > _max_speed * _max_speed:
 			_v *= _max_speed / sqrt(speed2)
-	if _rad[i] != _r:
-		_set_radius(_rad[i])
+	if _radius[i] != _r:
+		_set_radius(_radius[i])
 	var steps := _substeps(_push[i])
 	_h = _dt / steps
 	_p_start = _p
@@ -202,8 +202,8 @@ func _apply_seed_speed_rules() -> void:
 func _write_contacts(i: int) -> void:
 	_contact_a[i] = _cur_a
 	_contact_b[i] = _cur_b
-	_support_a[i] = _n_a
-	_support_b[i] = _n_b
+	_support_static[i] = _n_a
+	_support_static2[i] = _n_b
 	_cur_a = ContactId.NONE
 	_cur_b = ContactId.NONE
 	_n_a = Vector2.ZERO

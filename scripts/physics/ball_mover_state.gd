@@ -8,6 +8,7 @@ extends RefCounted
 ## read, a named read a hash lookup, and the motion stage reads them per substep.
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
+const BallFields := preload("res://scripts/physics/ball_fields.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
@@ -26,9 +27,10 @@ var wheel_push := PackedFloat64Array()
 # The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
 # only), static geometry (read only) and constants. Members rather than reads through the
 # store and geometry objects: a member is one indexed read, a named read a hash lookup.
+# The ball arrays are the BallFields.TABLE rows this class declares as `_name`.
 var _pos := PackedVector2Array()
 var _vel := PackedVector2Array()
-var _rad := PackedFloat32Array()
+var _radius := PackedFloat32Array()
 var _push := PackedVector2Array()
 var _ids := PackedInt32Array()
 var _alive := PackedByteArray()
@@ -36,8 +38,8 @@ var _asleep := PackedByteArray()
 var _rest := PackedFloat32Array()
 var _contact_a := PackedInt32Array()
 var _contact_b := PackedInt32Array()
-var _support_a := PackedVector2Array()
-var _support_b := PackedVector2Array()
+var _support_static := PackedVector2Array()
+var _support_static2 := PackedVector2Array()
 var _support_ball := PackedVector2Array()
 var _sleep_ball_normal := PackedVector2Array()
 var _drain_hits := PackedInt32Array()
@@ -218,25 +220,7 @@ func begin(
 
 
 func _take_balls(b: BallStore) -> void:
-	_pos = b.pos
-	_vel = b.vel
-	_rad = b.radius
-	_push = b.push
-	_ids = b.ids
-	_alive = b.alive
-	_asleep = b.asleep
-	_rest = b.rest
-	_contact_a = b.contact_a
-	_contact_b = b.contact_b
-	_support_a = b.support_static
-	_support_b = b.support_static2
-	_support_ball = b.support_ball
-	_sleep_ball_normal = b.sleep_ball_normal
-	_drain_hits = b.drain_hits
-	_drain_time = b.drain_time
-	_goal_mask = b.goal_mask
-	_zone_mask = b.zone_mask
-	_cell_keys = b.cell_keys
+	BallFields.take(b, self)
 	_keyed = b.keys_valid
 
 

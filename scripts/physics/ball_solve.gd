@@ -9,6 +9,7 @@ extends RefCounted
 ## side by side: the solve writes only the two balls of each pair, and reads only them.
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
+const BallFields := preload("res://scripts/physics/ball_fields.gd")
 const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
 ## A support counts when its normal is within about 60° of the line between two balls.
@@ -22,17 +23,18 @@ const CONTACT_SLOP := 0.05
 ## Distances below this count as zero (px).
 const EPS := 1e-6
 
-# The step's view of the balls and its constants (set by begin()).
+# The step's view of the balls (the BallFields.TABLE rows declared as `_name`) and its
+# constants (set by begin()).
 var _pos := PackedVector2Array()
-var _rad := PackedFloat32Array()
+var _radius := PackedFloat32Array()
 var _vel := PackedVector2Array()
 var _push := PackedVector2Array()
 var _touching := PackedByteArray()
 var _asleep := PackedByteArray()
 var _rest := PackedFloat32Array()
-var _sup_a := PackedVector2Array()
-var _sup_b := PackedVector2Array()
-var _sup_prev := PackedVector2Array()
+var _support_static := PackedVector2Array()
+var _support_static2 := PackedVector2Array()
+var _support_ball := PackedVector2Array()
 var _sup_next := PackedVector2Array()
 var _restitution := 0.0
 var _threshold := 0.0
@@ -58,16 +60,7 @@ func begin(
 	b.touching.fill(0)
 	_sup_next = PackedVector2Array()
 	_sup_next.resize(n)
-	_pos = b.pos
-	_rad = b.radius
-	_vel = b.vel
-	_push = b.push
-	_touching = b.touching
-	_asleep = b.asleep
-	_rest = b.rest
-	_sup_a = b.support_static
-	_sup_b = b.support_static2
-	_sup_prev = b.support_ball
+	BallFields.take(b, self)
 	_restitution = restitution
 	_threshold = threshold
 	_wake_speed = wake_speed
@@ -112,17 +105,19 @@ func solve_pairs(pairs: PackedInt32Array) -> void:
 		# ball that faces the other ball) does not give way: the other takes the whole response.
 		var fixed_i: bool = (
 			sleep_i
-			or _sup_a[i].dot(nrm) > SUPPORT_COS
-			or _sup_b[i].dot(nrm) > SUPPORT_COS
-			or _sup_prev[i].dot(nrm) > SUPPORT_COS
+			or _support_static[i].dot(nrm) > SUPPORT_COS
+			or _support_static2[i].dot(nrm) > SUPPORT_COS
+			or _support_ball[i].dot(nrm) > SUPPORT_COS
 		)
 		var fixed_j: bool = (
 			sleep_j
-			or _sup_a[j].dot(nrm) < -SUPPORT_COS
-			or _sup_b[j].dot(nrm) < -SUPPORT_COS
-			or _sup_prev[j].dot(nrm) < -SUPPORT_COS
+			or _support_static[j].dot(nrm) < -SUPPORT_COS
+			or _support_static2[j].dot(nrm) < -SUPPORT_COS
+			or _support_ball[j].dot(nrm) < -SUPPORT_COS
 		)
-		var s: Vector2 = nrm * (maxf(_rad[i] + _rad[j] - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
+		var s: Vector2 = (
+			nrm * (maxf(_radius[i] + _radius[j] - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
+		)
 		if fixed_j and not fixed_i:
 			# The support cancels j's own motion into it: only i's speed counts.
 			_bounce_off_held(i, vi, -nrm)

@@ -1,11 +1,12 @@
 # gdlint: disable=max-public-methods
 # The contract in docs/architecture.md is one façade; its getters are small on purpose.
 class_name BallWorld
-extends "res://scripts/physics/world_shapes.gd"
+extends RefCounted
 ## Fixed-step ball physics in GDScript, with no Node and no built-in physics: circles
 ## (balls) against pins, capsule walls, a ring border and each other, plus sensors.
 ##
-## Add the static shapes, call build_grid() (adding later rebuilds lazily), spawn balls,
+## Add the shapes through `shapes` (WorldShapes: pins, walls, ring, sensors, windmills),
+## call build_grid() (adding later rebuilds lazily), spawn balls,
 ## then call advance(delta) every frame (or step(dt) directly). Events come out as signals
 ## at the end of each step, in the order they happened within it; balls removed by an event
 ## (captured by a pin, drained, fell in a hole) are already gone when the signal arrives.
@@ -24,6 +25,8 @@ signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 signal ring_hit(ball_id: int, impact_speed: float)
 ## A ball bounced off a windmill's blade (the speed is relative to the moving blade).
 signal windmill_hit(ball_id: int, windmill_index: int, impact_speed: float)
+## A ball bounced off a petal of gate `gate_index` (the speed is relative to the petal).
+signal gate_hit(ball_id: int, gate_index: int, impact_speed: float)
 ## A ball touched a capturing pin (the pin's tag); it has been removed.
 signal ball_captured(ball_id: int, tag: int)
 ## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
@@ -37,6 +40,10 @@ signal ball_left_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved inside a zone's radius (the ball stays).
 signal ball_entered_zone(ball_id: int, zone_index: int)
 
+const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const Windmills := preload("res://scripts/physics/windmills.gd")
+const WorldShapes := preload("res://scripts/physics/world_shapes.gd")
+const Gates := preload("res://scripts/physics/gates.gd")
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
@@ -61,7 +68,11 @@ const MAX_SENSORS := StaticGeometry.MAX_SENSORS
 const MIN_GRID_BALL_RADIUS := 5.0
 
 ## The constants in use (restitution, caps, fixed_hz, ...).
-var tuning: PhysicsTuning
+var tuning: PhysicsTuning:
+	set(value):
+		tuning = value
+		if shapes != null:
+			shapes.tuning = value
 ## Gravity in px/s²; may change every frame (the maze rules tilt it).
 var gravity: Vector2
 ## Rolling friction per axis in px/s² (only slows, never reverses); may change every frame.
@@ -94,6 +105,13 @@ var profile_cpu_time := false:
 		profile_cpu_time = value
 		_clock.cpu_time = value
 
+## The door to the world's shapes: `world.shapes.add_pin(...)`, add_wall, set_ring, ...
+## (see WorldShapes). The world owns what they add (its StaticGeometry and Windmills).
+var shapes: WorldShapes
+
+var _geo := StaticGeometry.new()
+var _wheels := Windmills.new()
+var _gates := Gates.new()
 var _balls := BallStore.new()
 var _lanes := BallLanes.new()
 var _pairs := BallPairs.new()
@@ -116,6 +134,7 @@ var _stepping := false
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
 	tuning = p_tuning if p_tuning != null else PhysicsTuning.new()
+	shapes = WorldShapes.new(_geo, _wheels, _gates, tuning)
 	_lanes.threads = threads
 	gravity = tuning.gravity
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
@@ -292,12 +311,15 @@ func step(dt: float) -> void:
 		_woken_at_step = step_count
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
 	_hear_hits()
+	if _gates.count() > 0:
+		_gates.begin_step(_wheels, dt, tuning.max_speed)
 	_motion.run(tuning, gravity, rolling_friction, dt, turned, may_sleep)
 	_clock.lap(StageClock.Stage.MOTION)
 	_events.append_array(_motion.events)
 	_event_speed.append_array(_motion.event_speed)
 	if _wheels.count() > 0:
 		_wheels.advance(dt, _motion.wheel_push_index, _motion.wheel_push, tuning.max_speed)
+		_gates.end_step(_wheels)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
@@ -354,8 +376,11 @@ func stage_times() -> Dictionary:
 
 ## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.
 func state_hash() -> int:
+	var b: BallStore = _balls
+	if _gates.count() > 0:
+		var gates: Array = [_gates.openness, _gates.target, _gates.phase_time]
+		return hash([step_count, b.ids, b.pos, b.vel, b.rest, _wheels.angle, _wheels.omega, gates])
 	if _wheels.count() > 0:
-		var b: BallStore = _balls
 		return hash([step_count, b.ids, b.pos, b.vel, b.rest, _wheels.angle, _wheels.omega])
 	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
 
@@ -367,7 +392,8 @@ func _hear_hits() -> void:
 	heard[BallEvents.Kind.PIN_HIT] = 1 if pin_hit.has_connections() else 0
 	heard[BallEvents.Kind.WALL_HIT] = 1 if wall_hit.has_connections() else 0
 	heard[BallEvents.Kind.RING_HIT] = 1 if ring_hit.has_connections() else 0
-	heard[BallEvents.Kind.BLADE_HIT] = 1 if windmill_hit.has_connections() else 0
+	var blades: bool = windmill_hit.has_connections() or gate_hit.has_connections()
+	heard[BallEvents.Kind.BLADE_HIT] = 1 if blades else 0
 
 
 # Emits this step's queued events as the signals above, in the order they happened.
@@ -391,7 +417,11 @@ func _emit_events() -> void:
 			BallEvents.Kind.RING_HIT:
 				ring_hit.emit(id, evs[e])
 			BallEvents.Kind.BLADE_HIT:
-				windmill_hit.emit(id, index, evs[e])
+				# A rotor is a windmill or a gate's petal: each signal names its own.
+				if shapes.rotor_is_petal(index):
+					gate_hit.emit(id, shapes.rotor_owner(index), evs[e])
+				else:
+					windmill_hit.emit(id, shapes.rotor_owner(index), evs[e])
 			BallEvents.Kind.CAPTURED:
 				ball_captured.emit(id, index)
 			BallEvents.Kind.DRAINED:
@@ -404,11 +434,6 @@ func _emit_events() -> void:
 				ball_left_goal.emit(id, index)
 			BallEvents.Kind.ZONE:
 				ball_entered_zone.emit(id, index)
-
-
-# Blade tips never outrun the fastest ball (see add_windmill).
-func _max_tip_speed() -> float:
-	return tuning.max_speed
 
 
 ## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.

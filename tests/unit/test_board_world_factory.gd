@@ -10,9 +10,9 @@ const DT := 1.0 / 120.0
 func test_pachinko_world_has_the_boards_shapes() -> void:
 	var level: BoardLevel = load(CLASSIC)
 	var world := BoardWorldFactory.build(level)
-	assert_eq(world.pin_count(), level.pins.size())
+	assert_eq(world.shapes.pin_count(), level.pins.size())
 	# Guide capsules, then the stopper and the deflector.
-	assert_eq(world.wall_count(), LaunchRail.guide_points(level).size() - 1 + 2)
+	assert_eq(world.shapes.wall_count(), LaunchRail.guide_points(level).size() - 1 + 2)
 	assert_eq(world.tuning, level.tuning)
 
 
@@ -73,7 +73,7 @@ func test_launch_helpers_point_up_the_rail() -> void:
 func test_maze_world_walls_goal_and_holes_in_hard_mode_only() -> void:
 	var level: BoardLevel = load(MAZE)
 	var easy := BoardWorldFactory.build(level)
-	assert_eq(easy.wall_count(), level.walls.size() / 2 + 4, "the level's walls and 4 edges")
+	assert_eq(easy.shapes.wall_count(), level.walls.size() / 2 + 4, "the level's walls and 4 edges")
 	var falls: Array[int] = []
 	easy.ball_fell_in_hole.connect(func(_id: int, hole: int) -> void: falls.append(hole))
 	easy.spawn_ball(level.holes[0], Vector2.ZERO, 5.0)

@@ -78,7 +78,7 @@ func test_two_balls_on_one_point_separate_without_nan() -> void:
 func test_pile_in_the_ring_loses_energy_and_stays_inside() -> void:
 	var t := TuningPresets.pachinko()
 	var w := BallWorld.new(t)
-	w.set_ring(Vector2(0, 0), 100.0)
+	w.shapes.set_ring(Vector2(0, 0), 100.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 9
 	for _i: int in 80:

@@ -12,7 +12,7 @@ func _head_on_world() -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = 1
 	w.gravity = Vector2.ZERO
-	w.set_ring(Vector2.ZERO, 220.0)
+	w.shapes.set_ring(Vector2.ZERO, 220.0)
 	w.build_grid()
 	w.spawn_ball(Vector2(-100, 0), Vector2(100, 0), 4.0)
 	w.spawn_ball(Vector2(100, 0), Vector2(-100, 0), 4.0)

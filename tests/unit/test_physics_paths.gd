@@ -7,7 +7,7 @@ func _world() -> BallWorld:
 	t.gravity = Vector2.ZERO
 	t.max_speed = 10000.0
 	var w := BallWorld.new(t)
-	w.add_pin(Vector2(1000, 1000), 1.5)
+	w.shapes.add_pin(Vector2(1000, 1000), 1.5)
 	return w
 
 

@@ -19,7 +19,7 @@ func _run(w: BallWorld, seconds: float) -> void:
 
 func test_head_on_bounce_keeps_restitution_of_the_speed() -> void:
 	var w := _world()
-	w.add_pin(Vector2(0, 0), 1.5)
+	w.shapes.add_pin(Vector2(0, 0), 1.5)
 	var id := w.spawn_ball(Vector2(0, -30), Vector2(0, 300), 5.0)
 	_run(w, 0.2)
 	var v := w.get_ball_velocity(id)
@@ -29,7 +29,7 @@ func test_head_on_bounce_keeps_restitution_of_the_speed() -> void:
 
 func test_oblique_bounce_reflects_normal_and_scales_tangent() -> void:
 	var w := _world()
-	w.add_pin(Vector2(0, 0), 1.5)
+	w.shapes.add_pin(Vector2(0, 0), 1.5)
 	var lim := 6.5
 	var off := lim * sin(PI / 4.0)
 	var id := w.spawn_ball(Vector2(-off, -40), Vector2(0, 400), 5.0)
@@ -47,8 +47,8 @@ func test_oblique_bounce_reflects_normal_and_scales_tangent() -> void:
 
 func test_pin_hit_reports_index_and_normal_speed_once() -> void:
 	var w := _world()
-	w.add_pin(Vector2(100, 0), 1.5)
-	var pin := w.add_pin(Vector2(0, 0), 1.5)
+	w.shapes.add_pin(Vector2(100, 0), 1.5)
+	var pin := w.shapes.add_pin(Vector2(0, 0), 1.5)
 	var hits: Array = []
 	w.pin_hit.connect(func(b: int, p: int, s: float) -> void: hits.append([b, p, s]))
 	var id := w.spawn_ball(Vector2(0, -30), Vector2(0, 300), 5.0)
@@ -62,7 +62,7 @@ func test_pin_hit_reports_index_and_normal_speed_once() -> void:
 func test_min_horizontal_speed_pushes_a_ball_off_a_pin_top() -> void:
 	var w := _world()
 	w.gravity = Vector2(0, 778)
-	w.add_pin(Vector2(0, 0), 1.5, -1, false, 0.5 / PhysicsTuning.FLASH_TICK)
+	w.shapes.add_pin(Vector2(0, 0), 1.5, -1, false, 0.5 / PhysicsTuning.FLASH_TICK)
 	var id := w.spawn_ball(Vector2(0, -6.6), Vector2.ZERO, 5.0)
 	_run(w, 0.3)
 	var p := w.get_ball_position(id)
@@ -74,7 +74,7 @@ func test_min_horizontal_speed_is_the_pins_own_material() -> void:
 	var w := _world()
 	w.gravity = Vector2(0, 778)
 	w.tuning.min_horizontal_speed = 0.5 / PhysicsTuning.FLASH_TICK  # not read by the world
-	w.add_pin(Vector2(0, 0), 1.5)
+	w.shapes.add_pin(Vector2(0, 0), 1.5)
 	var id := w.spawn_ball(Vector2(0, -6.6), Vector2.ZERO, 5.0)
 	_run(w, 0.3)
 	assert_almost_eq(w.get_ball_position(id).x, 0.0, 1e-3, "a plain pin lets a ball rest on top")
@@ -82,13 +82,13 @@ func test_min_horizontal_speed_is_the_pins_own_material() -> void:
 
 func test_a_negative_min_speed_is_refused() -> void:
 	var w := _world()
-	assert_eq(w.add_pin(Vector2.ZERO, 1.5, -1, false, -1.0), -1)
+	assert_eq(w.shapes.add_pin(Vector2.ZERO, 1.5, -1, false, -1.0), -1)
 	assert_push_error("min_speed_x")
 
 
 func test_special_pin_pockets_once_and_removes_the_ball() -> void:
 	var w := _world()
-	w.add_pin(Vector2(0, 0), 1.5, 3, true)
+	w.shapes.add_pin(Vector2(0, 0), 1.5, 3, true)
 	var got: Array = []
 	w.ball_captured.connect(func(b: int, pocket: int) -> void: got.append([b, pocket]))
 	var id := w.spawn_ball(Vector2(0, -30), Vector2(0, 300), 5.0)
@@ -104,7 +104,7 @@ func test_fast_ball_does_not_tunnel_through_a_pin() -> void:
 	t.max_speed = 5000.0
 	t.min_horizontal_speed = 0.0
 	var w := BallWorld.new(t)
-	w.add_pin(Vector2(0, 0), 1.5)
+	w.shapes.add_pin(Vector2(0, 0), 1.5)
 	var id := w.spawn_ball(Vector2(0, -100), Vector2(0, 4000), 5.0)
 	for _i: int in 10:
 		w.step(1.0 / 60.0)

@@ -4,9 +4,9 @@ extends GutTest
 
 func _world() -> BallWorld:
 	var w := BallWorld.new()
-	w.set_ring(Vector2.ZERO, 200.0)
+	w.shapes.set_ring(Vector2.ZERO, 200.0)
 	for x: int in range(-150, 151, 30):
-		w.add_pin(Vector2(x, 0.0), 2.0)
+		w.shapes.add_pin(Vector2(x, 0.0), 2.0)
 	for k: int in 100:
 		w.spawn_ball(Vector2(-120.0 + 2.4 * k, -100.0 + (k % 7) * 11.0), Vector2.ZERO, 5.0)
 	w.build_grid()

@@ -9,7 +9,7 @@ const BALL_R := 5.0
 
 func _world(t: PhysicsTuning) -> BallWorld:
 	var w := BallWorld.new(t)
-	w.set_ring(CENTER, RING_R)
+	w.shapes.set_ring(CENTER, RING_R)
 	return w
 
 
@@ -66,7 +66,7 @@ func test_weak_shot_rolls_back_down() -> void:
 func test_gutter_drains_after_its_bounces_exactly_once() -> void:
 	var t := TuningPresets.pachinko()
 	var w := _world(t)
-	w.set_drain_arc(45.0, 135.0, 3, w.tuning.drain_slide_time)
+	w.shapes.set_drain_arc(45.0, 135.0, 3, w.tuning.drain_slide_time)
 	var drained: Array = []
 	var rings := [0]
 	w.ball_drained.connect(func(b: int) -> void: drained.append(b))
@@ -82,7 +82,7 @@ func test_gutter_drains_after_its_bounces_exactly_once() -> void:
 func test_ball_resting_in_the_gutter_still_drains() -> void:
 	var t := TuningPresets.pachinko()
 	var w := _world(t)
-	w.set_drain_arc(45.0, 135.0, 50, w.tuning.drain_slide_time)
+	w.shapes.set_drain_arc(45.0, 135.0, 50, w.tuning.drain_slide_time)
 	var drained := [0]
 	w.ball_drained.connect(func(_b: int) -> void: drained[0] += 1)
 	w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)
@@ -100,7 +100,7 @@ func test_no_ball_leaves_the_ring_in_a_long_random_run() -> void:
 	for i: int in 150:
 		var a := rng.randf() * TAU
 		var p := CENTER + Vector2.from_angle(a) * rng.randf_range(0.0, 480.0)
-		w.add_pin(p, 1.5)
+		w.shapes.add_pin(p, 1.5)
 	for _i: int in 200:
 		var a := rng.randf() * TAU
 		var p := CENTER + Vector2.from_angle(a) * rng.randf_range(0.0, 480.0)
@@ -124,7 +124,7 @@ func test_energy_never_grows_in_a_busy_board() -> void:
 		for x: int in range(150, 850, 24):
 			var p := Vector2(x + (12 if (y / 24) % 2 == 1 else 0), y)
 			if p.distance_to(CENTER) < 440.0:
-				w.add_pin(p, 1.5)
+				w.shapes.add_pin(p, 1.5)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 3
 	for _i: int in 150:
@@ -143,7 +143,7 @@ func test_energy_never_grows_in_a_busy_board() -> void:
 func test_a_drain_arc_drains_a_resting_ball_after_its_own_slide_time() -> void:
 	for slide_time: float in [0.25, 1.0]:
 		var w := _world(TuningPresets.pachinko())
-		w.set_drain_arc(45.0, 135.0, 50, slide_time)
+		w.shapes.set_drain_arc(45.0, 135.0, 50, slide_time)
 		var drained_at := [-1]
 		w.ball_drained.connect(func(_b: int) -> void: drained_at[0] = w.step_count)
 		w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)
@@ -156,9 +156,9 @@ func test_a_drain_arc_drains_a_resting_ball_after_its_own_slide_time() -> void:
 
 func test_a_drain_arc_with_bad_numbers_is_refused() -> void:
 	var w := _world(TuningPresets.pachinko())
-	w.set_drain_arc(45.0, NAN, 3, 0.5)
-	w.set_drain_arc(45.0, 135.0, 0, 0.5)
-	w.set_drain_arc(45.0, 135.0, 3, -1.0)
+	w.shapes.set_drain_arc(45.0, NAN, 3, 0.5)
+	w.shapes.set_drain_arc(45.0, 135.0, 0, 0.5)
+	w.shapes.set_drain_arc(45.0, 135.0, 3, -1.0)
 	assert_push_error_count(3, "each bad call names its problem")
 	w.spawn_ball(CENTER + Vector2(0, RING_R - BALL_R - 0.5), Vector2.ZERO, BALL_R)
 	for _i: int in 120:
@@ -173,7 +173,7 @@ func test_a_ring_hit_leaves_the_ball_the_rings_least_horizontal_speed() -> void:
 	var t := TuningPresets.pachinko()
 	var least: float = t.min_horizontal_speed
 	var w := BallWorld.new(t)
-	w.set_ring(CENTER, RING_R, least)
+	w.shapes.set_ring(CENTER, RING_R, least)
 	var id := w.spawn_ball(CENTER + Vector2(0.0, RING_R - 60.0), Vector2.ZERO, BALL_R)
 	var hit := [false]
 	w.ring_hit.connect(func(_b: int, _s: float) -> void: hit[0] = true)
@@ -185,7 +185,7 @@ func test_a_ring_hit_leaves_the_ball_the_rings_least_horizontal_speed() -> void:
 
 func test_a_ring_without_the_material_leaves_a_straight_drop_straight() -> void:
 	var w := BallWorld.new(TuningPresets.pachinko())
-	w.set_ring(CENTER, RING_R)
+	w.shapes.set_ring(CENTER, RING_R)
 	var id := w.spawn_ball(CENTER + Vector2(0.0, RING_R - 60.0), Vector2.ZERO, BALL_R)
 	for _i: int in 60:
 		w.step(1.0 / 120.0)

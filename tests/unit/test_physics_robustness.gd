@@ -5,13 +5,13 @@ extends GutTest
 
 func _busy_world(seed_value: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
-	w.set_ring(Vector2(0, 0), 200.0)
-	w.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
-	w.add_wall(Vector2(-150, 50), Vector2(-20, 90), 3.0)
+	w.shapes.set_ring(Vector2(0, 0), 200.0)
+	w.shapes.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
+	w.shapes.add_wall(Vector2(-150, 50), Vector2(-20, 90), 3.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = seed_value
 	for _i: int in 80:
-		w.add_pin(Vector2(rng.randf_range(-150, 150), rng.randf_range(-120, 120)), 1.5)
+		w.shapes.add_pin(Vector2(rng.randf_range(-150, 150), rng.randf_range(-120, 120)), 1.5)
 	w.build_grid()
 	for _i: int in 120:
 		var p := Vector2(rng.randf_range(-100, 100), rng.randf_range(-180, -120))
@@ -51,7 +51,7 @@ func test_advance_runs_whole_fixed_steps() -> void:
 
 func test_ball_exactly_on_a_pin_centre_is_pushed_out() -> void:
 	var w := BallWorld.new(TuningPresets.pachinko())
-	w.add_pin(Vector2(10, 10), 1.5)
+	w.shapes.add_pin(Vector2(10, 10), 1.5)
 	var id := w.spawn_ball(Vector2(10, 10), Vector2.ZERO, 5.0)
 	for _i: int in 30:
 		w.step(1.0 / 120.0)
@@ -62,7 +62,7 @@ func test_ball_exactly_on_a_pin_centre_is_pushed_out() -> void:
 
 func test_ball_exactly_on_a_wall_segment_is_pushed_out() -> void:
 	var w := BallWorld.new(TuningPresets.maze())
-	w.add_wall(Vector2(0, 0), Vector2(100, 0), 5.0)
+	w.shapes.add_wall(Vector2(0, 0), Vector2(100, 0), 5.0)
 	var id := w.spawn_ball(Vector2(50, 0), Vector2.ZERO, 5.0)
 	w.step(1.0 / 120.0)
 	var p := w.get_ball_position(id)
@@ -72,8 +72,8 @@ func test_ball_exactly_on_a_wall_segment_is_pushed_out() -> void:
 
 func test_zero_length_wall_and_zero_radius_pin_are_fine() -> void:
 	var w := BallWorld.new(TuningPresets.maze())
-	assert_eq(w.add_wall(Vector2(5, 5), Vector2(5, 5), 0.0), 0)
-	assert_eq(w.add_pin(Vector2(50, 5), 0.0), 0)
+	assert_eq(w.shapes.add_wall(Vector2(5, 5), Vector2(5, 5), 0.0), 0)
+	assert_eq(w.shapes.add_pin(Vector2(50, 5), 0.0), 0)
 	var a := w.spawn_ball(Vector2(5, 5), Vector2(10, 0), 5.0)
 	var b := w.spawn_ball(Vector2(50, 5), Vector2(0, 10), 5.0)
 	for _i: int in 60:
@@ -91,11 +91,11 @@ func test_bad_radius_is_refused_with_a_clear_error() -> void:
 	assert_push_error("finite")
 	assert_eq(w.spawn_ball(Vector2.ZERO, Vector2(INF, 0), 5.0), -1)
 	assert_push_error("finite")
-	assert_eq(w.add_pin(Vector2.ZERO, -1.0), -1)
+	assert_eq(w.shapes.add_pin(Vector2.ZERO, -1.0), -1)
 	assert_push_error("radius >= 0")
-	assert_eq(w.add_wall(Vector2.ZERO, Vector2.ONE, -1.0), -1)
+	assert_eq(w.shapes.add_wall(Vector2.ZERO, Vector2.ONE, -1.0), -1)
 	assert_push_error("radius >= 0")
-	assert_eq(w.add_hole(Vector2.ZERO, 0.0), -1)
+	assert_eq(w.shapes.add_hole(Vector2.ZERO, 0.0), -1)
 	assert_push_error("add_hole")
 	assert_eq(w.ball_count(), 0)
 
@@ -129,7 +129,7 @@ func test_removed_ids_stay_gone_and_are_not_reused() -> void:
 ## a half-done one: it is refused with an error, and the outer step finishes as usual.
 func test_a_step_from_inside_a_steps_signal_is_refused() -> void:
 	var w := BallWorld.new(TuningPresets.pachinko())
-	w.set_ring(Vector2.ZERO, 100.0)
+	w.shapes.set_ring(Vector2.ZERO, 100.0)
 	w.spawn_ball(Vector2(0, 80), Vector2(0, 400), 5.0)
 	var inner := [0]
 	var step_inside := func(_ball: int, _speed: float) -> void:

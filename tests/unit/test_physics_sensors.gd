@@ -14,7 +14,7 @@ func _world() -> BallWorld:
 
 func test_hole_swallows_a_ball_once() -> void:
 	var w := _world()
-	var hole := w.add_hole(Vector2(100, 0), 9.0)
+	var hole := w.shapes.add_hole(Vector2(100, 0), 9.0)
 	var got: Array = []
 	w.ball_fell_in_hole.connect(func(b: int, h: int) -> void: got.append([b, h]))
 	var id := w.spawn_ball(Vector2(0, 0), Vector2(90, 0), 5.0)
@@ -26,7 +26,7 @@ func test_hole_swallows_a_ball_once() -> void:
 
 func test_ball_passing_beside_a_hole_does_not_fall() -> void:
 	var w := _world()
-	w.add_hole(Vector2(100, 0), 9.0)
+	w.shapes.add_hole(Vector2(100, 0), 9.0)
 	var got := [0]
 	w.ball_fell_in_hole.connect(func(_b: int, _h: int) -> void: got[0] += 1)
 	w.spawn_ball(Vector2(0, 9.5), Vector2(90, 0), 5.0)
@@ -37,7 +37,7 @@ func test_ball_passing_beside_a_hole_does_not_fall() -> void:
 
 func test_fast_ball_cannot_skip_a_hole() -> void:
 	var w := _world()
-	w.add_hole(Vector2(100, 0), 9.0)
+	w.shapes.add_hole(Vector2(100, 0), 9.0)
 	var got := [0]
 	w.ball_fell_in_hole.connect(func(_b: int, _h: int) -> void: got[0] += 1)
 	w.spawn_ball(Vector2(0, 0), Vector2(4000, 0), 5.0)
@@ -48,7 +48,7 @@ func test_fast_ball_cannot_skip_a_hole() -> void:
 
 func test_goal_reports_entering_and_leaving_once_each() -> void:
 	var w := _world()
-	var goal := w.add_goal(Vector2(100, 0), 30.0)
+	var goal := w.shapes.add_goal(Vector2(100, 0), 30.0)
 	var log: Array = []
 	w.ball_reached_goal.connect(func(b: int, g: int) -> void: log.append(["in", b, g]))
 	w.ball_left_goal.connect(func(b: int, g: int) -> void: log.append(["out", b, g]))
@@ -61,7 +61,7 @@ func test_goal_reports_entering_and_leaving_once_each() -> void:
 
 func test_zone_entry_fires_once_per_entry() -> void:
 	var w := _world()
-	var zone := w.add_zone(Vector2(0, 0), 20.0)
+	var zone := w.shapes.add_zone(Vector2(0, 0), 20.0)
 	var got: Array = []
 	w.ball_entered_zone.connect(func(b: int, z: int) -> void: got.append([b, z]))
 	var id := w.spawn_ball(Vector2(-50, 0), Vector2(90, 0), 5.0)
@@ -76,8 +76,8 @@ func test_zone_entry_fires_once_per_entry() -> void:
 
 func test_events_come_in_step_order() -> void:
 	var w := _world()
-	w.add_wall(Vector2(50, -50), Vector2(50, 50), 5.0)
-	w.add_hole(Vector2(-100, 0), 9.0)
+	w.shapes.add_wall(Vector2(50, -50), Vector2(50, 50), 5.0)
+	w.shapes.add_hole(Vector2(-100, 0), 9.0)
 	var log: Array[String] = []
 	w.wall_hit.connect(func(_b: int, _i: int, _s: float) -> void: log.append("wall"))
 	w.ball_fell_in_hole.connect(func(_b: int, _h: int) -> void: log.append("hole"))
@@ -89,7 +89,7 @@ func test_events_come_in_step_order() -> void:
 
 func test_signal_handler_may_spawn_and_remove_balls() -> void:
 	var w := _world()
-	w.add_hole(Vector2(100, 0), 9.0)
+	w.shapes.add_hole(Vector2(100, 0), 9.0)
 	var spawned: Array[int] = []
 	w.ball_fell_in_hole.connect(
 		func(_b: int, _h: int) -> void:

@@ -11,7 +11,7 @@ func _ring_world() -> BallWorld:
 	var t := TuningPresets.pachinko()
 	t.min_horizontal_speed = 0.0
 	var w := BallWorld.new(t)
-	w.set_ring(CENTER, RING_R)
+	w.shapes.set_ring(CENTER, RING_R)
 	return w
 
 
@@ -117,7 +117,7 @@ func test_a_sleeper_whose_ball_support_is_knocked_away_falls() -> void:
 	t.ball_restitution = 1.0
 	var w := BallWorld.new(t)
 	# A flat floor; its top is at y = 95.
-	w.add_wall(Vector2(0, 100), Vector2(1000, 100), 5.0)
+	w.shapes.add_wall(Vector2(0, 100), Vector2(1000, 100), 5.0)
 	var low := w.spawn_ball(Vector2(500, 90), Vector2.ZERO, BALL_R)
 	var high := w.spawn_ball(Vector2(500, 80), Vector2.ZERO, BALL_R)
 	_steps(w, 120)

@@ -11,8 +11,8 @@ const HZ := 120.0
 ## (100, 100), with a ball of radius 5 resting in the inside corner.
 func _corner_world() -> BallWorld:
 	var w := BallWorld.new(TuningPresets.maze())
-	w.add_wall(Vector2(0, 100), Vector2(100, 100), 5.0)
-	w.add_wall(Vector2(100, 0), Vector2(100, 100), 5.0)
+	w.shapes.add_wall(Vector2(0, 100), Vector2(100, 100), 5.0)
+	w.shapes.add_wall(Vector2(100, 0), Vector2(100, 100), 5.0)
 	return w
 
 

@@ -10,14 +10,14 @@ const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 func _pachinko_world(threads: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = threads
-	w.set_ring(Vector2.ZERO, 220.0)
-	w.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
-	w.add_wall(Vector2(-150, 60), Vector2(-20, 100), 3.0)
+	w.shapes.set_ring(Vector2.ZERO, 220.0)
+	w.shapes.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
+	w.shapes.add_wall(Vector2(-150, 60), Vector2(-20, 100), 3.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 7
 	for _i: int in 120:
-		w.add_pin(Vector2(rng.randf_range(-150, 150), rng.randf_range(-100, 100)), 1.5)
-	w.add_pin(Vector2(0, 140), 1.5, 3, true)
+		w.shapes.add_pin(Vector2(rng.randf_range(-150, 150), rng.randf_range(-100, 100)), 1.5)
+	w.shapes.add_pin(Vector2(0, 140), 1.5, 3, true)
 	w.build_grid()
 	for _i: int in 400:
 		var p := Vector2(rng.randf_range(-120, 120), rng.randf_range(-200, -110))
@@ -31,9 +31,9 @@ func _maze_world(threads: int) -> BallWorld:
 	var w := BallWorld.new(t)
 	w.threads = threads
 	for k: int in 10:
-		w.add_wall(Vector2(k * 40, 0), Vector2(k * 40 + 20, 300), 4.0)
-	w.add_wall(Vector2(-10, 320), Vector2(420, 320), 4.0)
-	w.add_goal(Vector2(200, 300), 30.0)
+		w.shapes.add_wall(Vector2(k * 40, 0), Vector2(k * 40 + 20, 300), 4.0)
+	w.shapes.add_wall(Vector2(-10, 320), Vector2(420, 320), 4.0)
+	w.shapes.add_goal(Vector2(200, 300), 30.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 11
 	for _i: int in 300:
@@ -92,7 +92,7 @@ func test_path_recording_is_the_same_for_any_thread_count() -> void:
 func _pile_world(threads: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = threads
-	w.set_ring(Vector2.ZERO, 160.0)
+	w.shapes.set_ring(Vector2.ZERO, 160.0)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 5
 	for _i: int in 900:

@@ -13,7 +13,7 @@ func _maze_world() -> BallWorld:
 
 func test_wall_bounce_keeps_a_third_of_the_normal_speed() -> void:
 	var w := _maze_world()
-	w.add_wall(Vector2(-100, 0), Vector2(100, 0), 5.0)
+	w.shapes.add_wall(Vector2(-100, 0), Vector2(100, 0), 5.0)
 	var id := w.spawn_ball(Vector2(0, -40), Vector2(30, 80), 5.0)
 	var hits: Array = []
 	w.wall_hit.connect(func(b: int, i: int, s: float) -> void: hits.append([b, i, s]))
@@ -29,7 +29,7 @@ func test_wall_bounce_keeps_a_third_of_the_normal_speed() -> void:
 func test_ball_slides_along_a_wall_without_losing_speed() -> void:
 	var w := _maze_world()
 	w.gravity = Vector2(0, 1600)
-	w.add_wall(Vector2(-500, 0), Vector2(500, 0), 5.0)
+	w.shapes.add_wall(Vector2(-500, 0), Vector2(500, 0), 5.0)
 	var id := w.spawn_ball(Vector2(-400, -10), Vector2(80, 0), 5.0)
 	for _i: int in 240:
 		w.step(1.0 / HZ)
@@ -46,7 +46,7 @@ func test_ball_rolls_round_a_cap_keeping_contact_and_energy() -> void:
 	w.gravity = Vector2(0, g)
 	w.tuning.max_speed = 10000.0
 	var cap := Vector2(0, 0)
-	w.add_wall(Vector2(-200, 0), cap, 5.0)
+	w.shapes.add_wall(Vector2(-200, 0), cap, 5.0)
 	var v0 := 90.0
 	var id := w.spawn_ball(Vector2(-100, -10), Vector2(v0, 0), 5.0)
 	var max_gap := 0.0
@@ -79,7 +79,7 @@ func test_collinear_joint_has_no_ghost_bump() -> void:
 	var w := _maze_world()
 	w.gravity = Vector2(0, 1600)
 	for k: int in 10:
-		w.add_wall(Vector2(-500 + k * 35, 0), Vector2(-465 + k * 35, 0), 5.0)
+		w.shapes.add_wall(Vector2(-500 + k * 35, 0), Vector2(-465 + k * 35, 0), 5.0)
 	var id := w.spawn_ball(Vector2(-480, -10), Vector2(90, 0), 5.0)
 	var hits := [0]
 	w.wall_hit.connect(func(_b: int, _i: int, _s: float) -> void: hits[0] += 1)
@@ -92,7 +92,7 @@ func test_collinear_joint_has_no_ghost_bump() -> void:
 
 func test_zero_length_wall_is_a_round_post() -> void:
 	var w := _maze_world()
-	var wall := w.add_wall(Vector2(0, 0), Vector2(0, 0), 5.0)
+	var wall := w.shapes.add_wall(Vector2(0, 0), Vector2(0, 0), 5.0)
 	assert_eq(wall, 0)
 	var id := w.spawn_ball(Vector2(0, -40), Vector2(0, 90), 5.0)
 	for _i: int in 60:
@@ -117,7 +117,7 @@ func test_balls_never_cross_walls_in_a_long_random_run() -> void:
 		[Vector2(0, 200), Vector2(400, 200)],
 	]
 	for wl: Array in walls:
-		w.add_wall(wl[0], wl[1], 1.0)
+		w.shapes.add_wall(wl[0], wl[1], 1.0)
 	var top: Array[int] = []
 	for _i: int in 60:
 		var p := Vector2(rng.randf_range(20, 380), rng.randf_range(20, 180))

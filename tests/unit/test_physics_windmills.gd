@@ -25,17 +25,17 @@ func _empty_world() -> BallWorld:
 func _fire_at_bar(tip_speed: float, ball_speed: float, radius: float) -> Dictionary:
 	var w := _empty_world()
 	var omega: float = tip_speed / (LENGTH + BLADE_R)
-	w.add_windmill(Vector2.ZERO, 2, LENGTH, BLADE_R, omega)
+	w.shapes.add_windmill(Vector2.ZERO, 2, LENGTH, BLADE_R, omega)
 	w.build_grid()
 	var aim := Vector2(1.0, 1.0).normalized()
 	w.spawn_ball(Vector2(0.0, -radius), aim * ball_speed, BALL_R)
 	w.set_path_recording(true)
 	var worst := {"crossed": false, "depth": 0.0}
 	var prev := w.get_ball_position(0)
-	var prev_turn: float = w.get_windmill_angle(0)
+	var prev_turn: float = w.shapes.get_windmill_angle(0)
 	for _step: int in 30:
-		var turn0: float = w.get_windmill_angle(0)
-		var w0: float = w.get_windmill_speed(0)
+		var turn0: float = w.shapes.get_windmill_angle(0)
+		var w0: float = w.shapes.get_windmill_speed(0)
 		w.step(DT)
 		var points: PackedVector2Array = w.take_step_paths()["points"]
 		points.append(w.get_ball_position(0))
@@ -84,7 +84,7 @@ func test_a_ball_fired_at_a_blade_never_passes_through_or_ends_inside_it() -> vo
 func test_a_moving_blade_throws_a_ball_it_strikes() -> void:
 	var w := _empty_world()
 	# Turning clockwise on screen: the blade along +x sweeps down (+y) at its tip.
-	w.add_windmill(Vector2.ZERO, 2, LENGTH, BLADE_R, 20.0)
+	w.shapes.add_windmill(Vector2.ZERO, 2, LENGTH, BLADE_R, 20.0)
 	w.build_grid()
 	var id := w.spawn_ball(Vector2(24.0, 14.0), Vector2.ZERO, BALL_R)
 	for _i: int in 6:
@@ -95,26 +95,26 @@ func test_a_moving_blade_throws_a_ball_it_strikes() -> void:
 
 func test_a_driven_wheel_keeps_its_speed_when_struck() -> void:
 	var w := _empty_world()
-	w.add_windmill(Vector2.ZERO, 4, LENGTH, BLADE_R, 3.0)
+	w.shapes.add_windmill(Vector2.ZERO, 4, LENGTH, BLADE_R, 3.0)
 	w.build_grid()
 	w.spawn_ball(Vector2(20.0, -60.0), Vector2(0.0, 900.0), BALL_R)
 	for _i: int in 60:
 		w.step(DT)
-	assert_eq(w.get_windmill_speed(0), 3.0)
-	assert_almost_eq(w.get_windmill_angle(0), fposmod(3.0 * 60.0 * DT, TAU), 1e-9)
+	assert_eq(w.shapes.get_windmill_speed(0), 3.0)
+	assert_almost_eq(w.shapes.get_windmill_angle(0), fposmod(3.0 * 60.0 * DT, TAU), 1e-9)
 
 
 func test_a_struck_free_wheel_speeds_up_then_slows_by_its_friction() -> void:
 	var w := _empty_world()
 	var friction := 6.0
-	w.add_windmill(Vector2.ZERO, 4, LENGTH, BLADE_R, 0.0, true, friction)
+	w.shapes.add_windmill(Vector2.ZERO, 4, LENGTH, BLADE_R, 0.0, true, friction)
 	w.build_grid()
 	# The ball comes down right of the pin onto the blade along +x: clockwise on screen.
 	var id := w.spawn_ball(Vector2(24.0, -60.0), Vector2(0.0, 1200.0), BALL_R)
 	var speeds := PackedFloat64Array()
 	for _i: int in 600:
 		w.step(DT)
-		speeds.append(w.get_windmill_speed(0))
+		speeds.append(w.shapes.get_windmill_speed(0))
 		if w.has_ball(id) and w.get_ball_position(id).length() > 120.0:
 			w.remove_ball(id)
 	var peak: float = speeds[0]
@@ -140,19 +140,19 @@ func test_a_struck_free_wheel_speeds_up_then_slows_by_its_friction() -> void:
 
 func test_a_free_wheel_is_held_to_the_top_tip_speed() -> void:
 	var w := _empty_world()
-	w.add_windmill(Vector2.ZERO, 3, LENGTH, BLADE_R, 1e6, true, 0.0)
+	w.shapes.add_windmill(Vector2.ZERO, 3, LENGTH, BLADE_R, 1e6, true, 0.0)
 	w.build_grid()
 	var cap: float = w.tuning.max_speed / (LENGTH + BLADE_R)
-	assert_almost_eq(w.get_windmill_speed(0), cap, 1e-9)
+	assert_almost_eq(w.shapes.get_windmill_speed(0), cap, 1e-9)
 
 
 func test_bad_windmills_are_refused_with_an_error() -> void:
 	var w := _empty_world()
-	assert_eq(w.add_windmill(Vector2.ZERO, 0, LENGTH, BLADE_R, 1.0), -1)
-	assert_eq(w.add_windmill(Vector2(NAN, 0.0), 3, LENGTH, BLADE_R, 1.0), -1)
-	assert_eq(w.add_windmill(Vector2.ZERO, 3, -1.0, BLADE_R, 1.0), -1)
-	assert_eq(w.add_windmill(Vector2.ZERO, 3, LENGTH, BLADE_R, 1.0, true, -2.0), -1)
-	assert_eq(w.windmill_count(), 0)
+	assert_eq(w.shapes.add_windmill(Vector2.ZERO, 0, LENGTH, BLADE_R, 1.0), -1)
+	assert_eq(w.shapes.add_windmill(Vector2(NAN, 0.0), 3, LENGTH, BLADE_R, 1.0), -1)
+	assert_eq(w.shapes.add_windmill(Vector2.ZERO, 3, -1.0, BLADE_R, 1.0), -1)
+	assert_eq(w.shapes.add_windmill(Vector2.ZERO, 3, LENGTH, BLADE_R, 1.0, true, -2.0), -1)
+	assert_eq(w.shapes.windmill_count(), 0)
 	assert_push_error_count(4)
 
 
@@ -160,16 +160,16 @@ func test_bad_windmills_are_refused_with_an_error() -> void:
 func _windmill_world(threads: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())
 	w.threads = threads
-	w.set_ring(Vector2.ZERO, 220.0)
-	w.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
+	w.shapes.set_ring(Vector2.ZERO, 220.0)
+	w.shapes.set_drain_arc(60.0, 120.0, 3, w.tuning.drain_slide_time)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = 5
 	for _i: int in 80:
-		w.add_pin(Vector2(rng.randf_range(-150, 150), rng.randf_range(-40, 120)), 1.5)
-	w.add_windmill(Vector2(-80, -60), 4, 24.0, 2.0, 4.0)
-	w.add_windmill(Vector2(0, -40), 3, 28.0, 2.0, 0.0, true, 3.0)
-	w.add_windmill(Vector2(90, -60), 6, 22.0, 2.0, -6.0)
-	w.add_windmill(Vector2(40, 40), 4, 20.0, 2.0, 0.0, true, 1.0)
+		w.shapes.add_pin(Vector2(rng.randf_range(-150, 150), rng.randf_range(-40, 120)), 1.5)
+	w.shapes.add_windmill(Vector2(-80, -60), 4, 24.0, 2.0, 4.0)
+	w.shapes.add_windmill(Vector2(0, -40), 3, 28.0, 2.0, 0.0, true, 3.0)
+	w.shapes.add_windmill(Vector2(90, -60), 6, 22.0, 2.0, -6.0)
+	w.shapes.add_windmill(Vector2(40, 40), 4, 20.0, 2.0, 0.0, true, 1.0)
 	w.build_grid()
 	for _i: int in 300:
 		var p := Vector2(rng.randf_range(-120, 120), rng.randf_range(-200, -110))
@@ -190,7 +190,7 @@ func test_windmill_world_is_bit_identical_for_1_2_and_4_threads() -> void:
 		hits.append(log)
 		if threads == 1:
 			assert_gt(log.size(), 20, "balls struck the blades")
-			assert_ne(w.get_windmill_speed(1), 0.0, "the balls spun the free wheel")
+			assert_ne(w.shapes.get_windmill_speed(1), 0.0, "the balls spun the free wheel")
 	assert_eq(hashes[1], hashes[0])
 	assert_eq(hashes[2], hashes[0])
 	assert_eq(hits[1], hits[0])
@@ -201,7 +201,7 @@ func test_a_ball_never_rests_on_a_blade_with_the_boards_least_sideways_speed() -
 	var w := BallWorld.new(TuningPresets.pachinko())
 	var least: float = w.tuning.min_horizontal_speed
 	# A wheel held still with blade 0 flat along +x: a ball dropped on it would lie there.
-	w.add_windmill(Vector2.ZERO, 4, LENGTH, BLADE_R, 0.0, false, 0.0, least)
+	w.shapes.add_windmill(Vector2.ZERO, 4, LENGTH, BLADE_R, 0.0, false, 0.0, least)
 	w.build_grid()
 	var id := w.spawn_ball(Vector2(14.0, -60.0), Vector2.ZERO, BALL_R)
 	for _i: int in 360:

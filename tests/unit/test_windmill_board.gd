@@ -147,8 +147,8 @@ func test_the_factory_builds_each_windmill_in_order() -> void:
 		WindmillSpec.spinning_free(Vector2(420, 300), 3, 26.0, 180.0),
 	]
 	var world := BoardWorldFactory.build(level)
-	assert_eq(world.windmill_count(), 2)
-	assert_almost_eq(world.get_windmill_speed(0), deg_to_rad(90.0), 1e-9)
-	assert_eq(world.get_windmill_speed(1), 0.0, "a free wheel starts at rest")
+	assert_eq(world.shapes.windmill_count(), 2)
+	assert_almost_eq(world.shapes.get_windmill_speed(0), deg_to_rad(90.0), 1e-9)
+	assert_eq(world.shapes.get_windmill_speed(1), 0.0, "a free wheel starts at rest")
 	world.step(1.0 / 120.0)
-	assert_almost_eq(world.get_windmill_angle(0), deg_to_rad(90.0) / 120.0, 1e-9)
+	assert_almost_eq(world.shapes.get_windmill_angle(0), deg_to_rad(90.0) / 120.0, 1e-9)

@@ -23,5 +23,5 @@ func _draw() -> void:
 	var specs := _rules.level.windmills
 	var world := _rules.world
 	# World windmill i is the level's windmill i (BoardWorldFactory).
-	for i in mini(specs.size(), world.windmill_count()):
-		WindmillPainter.draw_wheel(self, specs[i], world.get_windmill_angle(i))
+	for i in mini(specs.size(), world.shapes.windmill_count()):
+		WindmillPainter.draw_wheel(self, specs[i], world.shapes.get_windmill_angle(i))

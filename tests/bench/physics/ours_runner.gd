@@ -50,14 +50,14 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	var w := BallWorld.new(t)
 	w.use_zoning = zoning
 	if scene["ring"]:
-		w.set_ring(Vector2.ZERO, Scenes.RING_R)
+		w.shapes.set_ring(Vector2.ZERO, Scenes.RING_R)
 	for p: Vector2 in scene["pins"]:
-		w.add_pin(p, scene["pin_r"], -1, false, t.min_horizontal_speed)
+		w.shapes.add_pin(p, scene["pin_r"], -1, false, t.min_horizontal_speed)
 	var walls: PackedVector2Array = scene["walls"]
 	for k: int in walls.size() / 2:
-		w.add_wall(walls[2 * k], walls[2 * k + 1], scene["wall_r"])
+		w.shapes.add_wall(walls[2 * k], walls[2 * k + 1], scene["wall_r"])
 	for wheel: Array in scene.get("windmills", []):
-		w.add_windmill(
+		w.shapes.add_windmill(
 			wheel[0],
 			wheel[1],
 			wheel[2],
@@ -95,8 +95,8 @@ static func run(
 	var blades: BladeCheck = BladeCheck.new(scene) if check else null
 	var angles := PackedFloat64Array()
 	var spins := PackedFloat64Array()
-	angles.resize(w.windmill_count())
-	spins.resize(w.windmill_count())
+	angles.resize(w.shapes.windmill_count())
+	spins.resize(w.shapes.windmill_count())
 	# The check follows the path through the substeps; the timed run records nothing.
 	w.set_path_recording(check)
 	var rng := RandomNumberGenerator.new()
@@ -112,9 +112,9 @@ static func run(
 			cpu0 = CpuClock.usec()
 			wall0 = Time.get_ticks_usec()
 		if blades != null:
-			for m: int in w.windmill_count():
-				angles[m] = w.get_windmill_angle(m)
-				spins[m] = w.get_windmill_speed(m)
+			for m: int in w.shapes.windmill_count():
+				angles[m] = w.shapes.get_windmill_angle(m)
+				spins[m] = w.shapes.get_windmill_speed(m)
 		w.step(dt)
 		if checker != null:
 			var after := w.get_positions()
@@ -123,7 +123,7 @@ static func run(
 			skip.fill(0)
 			var paths: Dictionary = w.take_step_paths()
 			checker.check_paths(before, after, skip, paths["slots"], paths["points"])
-			if w.windmill_count() > 0:
+			if w.shapes.windmill_count() > 0:
 				blades.check_step(before, after, paths["slots"], paths["points"], angles, spins, dt)
 			harness_rules(mode, s + 1, after, rng, side, scene["hz"])
 			before = after
