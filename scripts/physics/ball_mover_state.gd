@@ -24,6 +24,11 @@ var trace_pos := PackedVector2Array()
 var wheel_push_index := PackedInt32Array()
 var wheel_push := PackedFloat64Array()
 
+# Many private fields below are read and written only by BallMover, which extends this
+# file; Godot counts a private field's use in its own file only, and its warnings filled the
+# Debugger on every play-test. The fields end where the functions begin.
+@warning_ignore_start("unused_private_class_variable")
+
 # The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
 # only), static geometry (read only) and constants. Members rather than reads through the
 # store and geometry objects: a member is one indexed read, a named read a hash lookup.
@@ -97,16 +102,10 @@ var _wheel_start := PackedInt32Array()
 var _wheel_items := PackedInt32Array()
 var _wheel_margin := 0.0
 var _all_wheels := PackedInt32Array()
-# Fields marked unused_private_class_variable are read and written only by BallMover, which
-# extends this file; Godot counts a private field's use in its own file only, and its
-# warnings filled the Debugger on every play-test.
 ## The wheels the ball being moved can reach this step: _near_list[_near_from .. _near_to)
 ## (its cell's list, or every wheel); empty on a board without windmills.
-@warning_ignore("unused_private_class_variable")
 var _near_list := PackedInt32Array()
-@warning_ignore("unused_private_class_variable")
 var _near_from := 0
-@warning_ignore("unused_private_class_variable")
 var _near_to := 0
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
@@ -137,37 +136,28 @@ var _drain_slide_time := 0.0
 var _tracing := false
 # The ball being moved: slot, position, velocity, radius, substep time, push per substep.
 var _i := 0
-@warning_ignore("unused_private_class_variable")
 var _p := Vector2.ZERO
-@warning_ignore("unused_private_class_variable")
 var _v := Vector2.ZERO
 var _r := -1.0
-@warning_ignore("unused_private_class_variable")
 var _h := 0.0
-@warning_ignore("unused_private_class_variable")
 var _push_step := Vector2.ZERO
 # Contacts of last step (a persisting one slides) and of this one, with their normals.
-@warning_ignore("unused_private_class_variable")
 var _held_a := ContactId.NONE
-@warning_ignore("unused_private_class_variable")
 var _held_b := ContactId.NONE
 var _cur_a := ContactId.NONE
 var _cur_b := ContactId.NONE
 var _n_a := Vector2.ZERO
 var _n_b := Vector2.ZERO
 ## Set when the ball left the world this substep (captured by a pin or drained).
-@warning_ignore("unused_private_class_variable")
 var _gone := false
 ## Where the ball being moved started this step (for the sensors' path test).
-@warning_ignore("unused_private_class_variable")
 var _p_start := Vector2.ZERO
 # Per-radius limits, cached while consecutive balls share a radius.
-@warning_ignore("unused_private_class_variable")
 var _max_travel := 0.0
-@warning_ignore("unused_private_class_variable")
 var _ring_lim := 0.0
-@warning_ignore("unused_private_class_variable")
 var _ring_lim2 := 0.0
+
+@warning_ignore_restore("unused_private_class_variable")
 
 
 ## Takes this step's state and constants and clears the lane's buffers. Called on the
