@@ -2,9 +2,8 @@
 # GDScript warnings check: loads every script under scenes/, scripts/ and
 # addons/board_editor with the debugger on (-d, as the editor's play-test does) through
 # tools/load_all_scripts.gd and lists each warning with its file:line.
-# Fails (exit 1) on any warning outside scripts/physics and scripts/world; warnings in those
-# two folders are printed as notes only (another branch fixes them). project.godot is never
-# touched: the loader turns warnings on for addons/board_editor at run time.
+# Fails (exit 1) on any warning: each one is a Debugger entry on every play-test. project.godot
+# is never touched: the loader turns warnings on for addons/board_editor at run time.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -30,14 +29,12 @@ awk '
 			where = substr($0, RSTART + 1, RLENGTH - 2)
 		}
 		sub(/^res:\/\//, "", where)
-		kind = (where ~ /^scripts\/(physics|world)\//) ? "note (fixed elsewhere)" : "warning"
-		print kind ": " where ": " msg
+		print "warning: " where ": " msg
 		msg = ""
 	}
 ' "$ERR" | sort -t: -k1,2 -k3,3n >"$LIST"
 failing=$(grep -c '^warning: ' "$LIST")
-notes=$(grep -c '^note ' "$LIST")
 cat "$LIST"
 loaded=$(sed -n 's/^LOADED //p' build/warnings-check.out)
-echo "warnings check: $loaded scripts loaded, $failing warning(s), $notes note(s) in physics/world"
+echo "warnings check: $loaded scripts loaded, $failing warning(s)"
 [ "$failing" -eq 0 ]

@@ -16,6 +16,7 @@ const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 const ViewFocus := preload("res://addons/board_editor/ui/view_focus.gd")
+const FrameSelection := preload("res://addons/board_editor/ui/frame_selection.gd")
 const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
 const NewBoardFiles := preload("res://addons/board_editor/core/new_board_files.gd")
 const ToolSettings := preload("res://addons/board_editor/core/tool_settings.gd")
@@ -65,6 +66,7 @@ func _enter_tree() -> void:
 	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
 	_dock.focus_return_requested.connect(_return_focus)
 	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
+	FrameSelection.follow_view_menu(_on_view_framed)
 	_save_dialog = SaveAsDialog.new()
 	_save_dialog.save_confirmed.connect(_save_as_named)
 	_save_dialog.new_board_confirmed.connect(create_new_board)
@@ -132,6 +134,9 @@ func _forward_canvas_gui_input(event: InputEvent) -> bool:
 	if not _node.is_inside_tree():
 		return false  # the scene's tab is closing or switching (Ctrl+N): nothing to edit
 	var focused := not _focus_in_dock
+	if focused and FrameSelection.is_frame_key(event):
+		frame_selection()
+		return true
 	var used := _input.handle(event, _to_screen().affine_inverse(), focused)
 	if not focused and event is InputEventMouseButton:
 		_return_focus()
@@ -185,6 +190,23 @@ func focus_issue(index: int) -> void:
 			if is_instance_valid(_viewport_control):
 				ViewFocus.show_area(area, _viewport_control)
 	update_overlays()
+
+
+## Frames the selected items in the 2D view (the whole board when none is selected), as
+## Godot's Frame Selection does for nodes.
+func frame_selection() -> void:
+	if _session == null or not is_instance_valid(_node) or not _node.is_inside_tree():
+		return
+	if is_instance_valid(_viewport_control):
+		var area := FrameSelection.area(_session.level, _session.selection)
+		ViewFocus.show_area(_node.get_global_transform() * area, _viewport_control)
+	update_overlays()
+
+
+# Godot framed its node selection from the View menu: frame the board's selection instead.
+func _on_view_framed() -> void:
+	if _visible:
+		frame_selection()
 
 
 ## Selects `item` on the board and brings it into view (a line of the balance table).

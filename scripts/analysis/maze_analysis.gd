@@ -9,10 +9,17 @@ extends RefCounted
 ## its place in the board's list ("index").
 
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
+const MazeProgressWatch := preload("res://scripts/maze/autoplay/maze_progress_watch.gd")
+const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
+const MazeGaps := preload("res://scripts/validation/maze_gaps.gd")
+const MazeLosses := preload("res://scripts/analysis/maze_losses.gd")
 
 const DEFAULT_RUNS := 20
-## Longest one game is played, seconds.
+## Longest one game is played, seconds (a game without progress is given up sooner:
+## MazeProgressWatch).
 const RUN_SECONDS := 120.0
+## The report's maze figures version: 2 added why each game was lost ("losses", "games").
+const MAZE_VERSION := 2
 
 var _level: BoardLevel
 var _seed := 1
@@ -24,6 +31,10 @@ var _games_done := 0
 var _cancelled := false
 var _task := -1
 var _started_usec := 0
+# Free space for a ball (walls only), shared read-only by the games' watches.
+var _flood: MazeFlood
+# The board's gaps narrower than a ball (MazeGaps issues), to name what trapped a ball.
+var _gaps: Array[BoardIssue] = []
 
 
 ## Plays the runs and returns the report (a plain Dictionary, JSON-ready), blocking.
@@ -44,6 +55,8 @@ static func create(level: BoardLevel, runs: int, rng_seed: int) -> MazeAnalysis:
 	analysis._seed = rng_seed
 	analysis._runs = maxi(runs, 1)
 	analysis._results.resize(analysis._runs * 2)
+	analysis._flood = MazeFlood.new(level, false)
+	MazeGaps.check(level, analysis._gaps)
 	return analysis
 
 
@@ -108,23 +121,28 @@ func report() -> Dictionary:
 		"seed": _seed,
 		"threads": _threads,
 		"wall_s": snappedf(wall, 0.001),
+		"maze_version": MAZE_VERSION,
 		"easy": _mode_figures(false),
 		"hard": _mode_figures(true),
+		"games": _game_list(),
+		"losses": MazeLosses.group(_level, _game_list(), _flood, _gaps),
 	}
 	var hard: Dictionary = figures["hard"]
 	figures["difficulty"] = hard["seconds_per_win"]
 	return figures
 
 
-# Game i: runs 0..runs-1 are easy, runs..2·runs-1 hard; seed + (i mod runs).
+# Game i: runs 0..runs-1 are easy, runs..2·runs-1 hard; seed + (i mod runs). A game ends
+# won, lost to a hole, given up (a ball trapped, or stuck without progress) or timed out.
 func _play(i: int) -> void:
 	var hard := i >= _runs
 	var rules := MazeRules.new(_level, hard)
-	var out := {"hard": hard, "won": false, "seconds": 0.0, "hole": -1}
+	var out := {"hard": hard, "won": false, "seconds": 0.0, "hole": -1, "reason": "no_board"}
 	if rules.is_ready():
 		var rng := RandomNumberGenerator.new()
 		rng.seed = _seed + i % _runs
 		var pilot := MazePilot.new(_level, hard, rng, rules.step_seconds())
+		var watch := MazeProgressWatch.new(pilot.nav, _flood, _level.ball_starts.size())
 		rules.start()
 		var limit := ceili(RUN_SECONDS / rules.step_seconds())
 		var frames := 0
@@ -132,16 +150,66 @@ func _play(i: int) -> void:
 			if _cancelled:
 				return  # an unfinished game counts nowhere
 			var world := rules.world
-			rules.set_tilt(pilot.decide(world.get_positions(), world.get_velocities()))
+			var positions := world.get_positions()
+			var verdict := watch.look(positions, rules.balls_in_goal, rules.step_seconds())
+			if verdict != MazeProgressWatch.Verdict.PLAYING:
+				break  # hopeless: a ball is trapped, or nothing moved nearer for long
+			rules.set_tilt(pilot.decide(positions, world.get_velocities()))
 			rules.step()
 			frames += 1
-		out["won"] = rules.state == MazeRules.State.WON
-		out["seconds"] = rules.elapsed
-		out["hole"] = rules.lost_hole
+		out = _outcome(rules, watch, hard)
 	_mutex.lock()
 	_results[i] = out
 	_games_done += 1
 	_mutex.unlock()
+
+
+# How a game ended: won, "hole", "trapped", "stuck" or "timeout", the ball that held it up
+# ("ball": its start's index, -1 for none) and where ("at"), and where every ball ended.
+func _outcome(rules: MazeRules, watch: MazeProgressWatch, hard: bool) -> Dictionary:
+	var positions := rules.world.get_positions()
+	var out := {
+		"hard": hard,
+		"won": rules.state == MazeRules.State.WON,
+		"seconds": snappedf(rules.elapsed, 0.01),
+		"hole": rules.lost_hole,
+		"reason": "won",
+		"ball": -1,
+		"at": [],
+		"idle_s": snappedf(watch.idle_seconds, 0.01),
+		"ends": _points(positions),
+	}
+	if out["won"]:
+		return out
+	if rules.lost_hole >= 0:
+		out["reason"] = "hole"
+		out["at"] = _hole_at(rules.lost_hole)
+		return out
+	var ball := watch.culprit
+	out["reason"] = watch.verdict_name()
+	if watch.verdict == MazeProgressWatch.Verdict.PLAYING:
+		out["reason"] = "timeout"
+		ball = watch.furthest()
+	out["ball"] = ball
+	if ball >= 0 and ball < positions.size():
+		out["at"] = [snappedf(positions[ball].x, 0.1), snappedf(positions[ball].y, 0.1)]
+	return out
+
+
+# Every finished game's outcome, by game index (easy games first).
+func _game_list() -> Array[Dictionary]:
+	var list: Array[Dictionary] = []
+	for r: Dictionary in _results:
+		if not r.is_empty():
+			list.append(r)
+	return list
+
+
+static func _points(positions: PackedVector2Array) -> Array:
+	var list := []
+	for p in positions:
+		list.append([snappedf(p.x, 0.1), snappedf(p.y, 0.1)])
+	return list
 
 
 func _mode_figures(hard: bool) -> Dictionary:

@@ -283,11 +283,11 @@ func _touch_walls() -> void:
 			var s: float = clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
 			var q: Vector2 = a + ab * s
 			var lim: float = _wall_item_rad[k] + _r
-			var d2: float = _p.distance_squared_to(q)
-			if d2 >= lim * lim:
+			var wall_d2: float = _p.distance_squared_to(q)
+			if wall_d2 >= lim * lim:
 				continue
 			found += 1
-			var depth: float = lim - sqrt(d2)
+			var depth: float = lim - sqrt(wall_d2)
 			if depth > best_depth or best < 0:
 				best = _wall_items[k]
 				best_depth = depth

@@ -24,6 +24,11 @@ var trace_pos := PackedVector2Array()
 var wheel_push_index := PackedInt32Array()
 var wheel_push := PackedFloat64Array()
 
+# Many private fields below are read and written only by BallMover, which extends this
+# file; Godot counts a private field's use in its own file only, and its warnings filled the
+# Debugger on every play-test. The fields end where the functions begin.
+@warning_ignore_start("unused_private_class_variable")
+
 # The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
 # only), static geometry (read only) and constants. Members rather than reads through the
 # store and geometry objects: a member is one indexed read, a named read a hash lookup.
@@ -151,6 +156,8 @@ var _p_start := Vector2.ZERO
 var _max_travel := 0.0
 var _ring_lim := 0.0
 var _ring_lim2 := 0.0
+
+@warning_ignore_restore("unused_private_class_variable")
 
 
 ## Takes this step's state and constants and clears the lane's buffers. Called on the

@@ -52,6 +52,18 @@ func reaches_goal(start: Vector2) -> bool:
 	return index >= 0 and goal_regions.has(region[index])
 
 
+## The connected region a ball's centre at `p` is in (a region some ball start reaches), or
+## -1 off the board, inside a wall or in a part no start reaches.
+func region_at(p: Vector2) -> int:
+	var index := _index_of(p)
+	return region[index] if index >= 0 else -1
+
+
+## True when region `label` (region_at) joins the goal.
+func region_reaches_goal(label: int) -> bool:
+	return goal_regions.has(label)
+
+
 func _index_of(p: Vector2) -> int:
 	var cx := floori(p.x / cell)
 	var cy := floori(p.y / cell)

@@ -2,11 +2,13 @@
 extends VBoxContainer
 ## The dock's play-analysis section for maze boards: Analyze lets the autoplay pilot play
 ## the board (MazeAnalysis: RUNS games in easy and RUNS in hard mode) on worker threads while
-## the editor stays responsive, with a progress bar and Cancel. The result (solve rate and
-## median time per mode, the holes that swallowed balls) shows in the dock and over the
-## board; it is kept per board content (BoardTextWriter.play_hash: names left out), in
-## memory and in user://analysis/ like pachinko's, so a rename, "Save board as", an undo back
-## to an analysed board or the next editor session shows its figures again.
+## the editor stays responsive, with a progress bar and Cancel. A hopeless game is given up
+## within seconds (a ball trapped, or no progress for 20 s). The result (solve rate and
+## median time per mode; where and why games were lost, in words by maze_loss_words.gd and
+## drawn by maze_loss_draw.gd) shows in the dock and over the board; it is kept per board
+## content (BoardTextWriter.play_hash: names left out), in memory and in user://analysis/
+## like pachinko's, so a rename, "Save board as", an undo back to an analysed board or the
+## next editor session shows its figures again.
 
 ## The overlay should be redrawn (new figures, or none to show).
 signal redraw_needed
@@ -14,6 +16,7 @@ signal redraw_needed
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
 const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
+const LossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
 ## First seed of the games: the same board always gives the same figures.
 const SEED := 1
 
@@ -36,7 +39,7 @@ func _init() -> void:
 	name = "MazeAnalysis"
 	var tip := (
 		"Let the autoplay pilot play %d games in easy and %d in hard mode: solve rates, times, "
-		+ "and the holes that catch balls."
+		+ "and where and why games were lost (a ball trapped or stuck, a hole, time ran out)."
 	)
 	_controls = Controls.new(self, tip, start, cancel, _on_show_toggled)
 	set_process(false)
@@ -57,7 +60,8 @@ func bind(level: BoardLevel) -> void:
 	_key = key
 	if not key.is_empty() and not _results.has(key):
 		var stored := AnalysisCache.load_maze(key)  # analysed in an earlier session
-		if not stored.is_empty():
+		# A report from before the loss reasons says too little: analyse again.
+		if stored.get("maze_version", 1.0) == float(MazeAnalysis.MAZE_VERSION):
 			_results[key] = stored
 	_report = _results.get(key, {})
 	_say_result()
@@ -147,10 +151,7 @@ func _say_result() -> void:
 	for mode: String in ["easy", "hard"]:
 		var figures: Dictionary = _report[mode]
 		lines.append(OverlayDraw.mode_line(mode, figures))
-	var hard: Dictionary = _report["hard"]
-	var holes: Array = hard.get("holes", [])
-	if not holes.is_empty():
-		lines.append(OverlayDraw.holes_line(holes))
+	lines.append_array(LossWords.lines(_report))
 	_controls.status.text = "\n".join(lines)
 
 

@@ -2,11 +2,13 @@
 extends "res://addons/board_editor/tools/board_tool.gd"
 ## Select / move: click picks (shift adds, ctrl toggles), dragging empty space draws a
 ## selection box, dragging a selected item moves the selection (live, one undo step), and
-## dragging an end dot of a wall selected on its own moves that end of that wall only.
+## dragging an end dot of a wall selected on its own moves that end of that wall only, and
+## a selected pin arc's handles (its ends and bulge) reshape it through three points.
 
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const SetPointAction := preload("res://addons/board_editor/actions/set_point_action.gd")
+const ArcHandleDrag := preload("res://addons/board_editor/tools/arc_handle_drag.gd")
 
 ## Screen pixels the mouse must travel before a press becomes a drag.
 const DRAG_START_PIXELS := 4.0
@@ -20,6 +22,7 @@ var _move: MoveItemsAction = null
 # The wall end being dragged: its index in the board's `walls` points (-1: none).
 var _end_index := -1
 var _end_drag: SetPointAction = null
+var _arc_drag := ArcHandleDrag.new()
 
 
 func press(at: Vector2, event: InputEventMouseButton) -> bool:
@@ -29,6 +32,12 @@ func press(at: Vector2, event: InputEventMouseButton) -> bool:
 	_end_index = selected_wall_end(at) if _box_mode == 0 else -1
 	if _end_index >= 0:
 		return true  # a handle: the wall keeps its selection, only this end moves
+	var arc_handle := -1
+	if _box_mode == 0:
+		arc_handle = ArcHandleDrag.handle_at(session, at, tolerance(), pixel)
+	if arc_handle >= 0:
+		_arc_drag.begin(session, arc_handle, pixel)
+		return true  # the arc keeps its selection and changes shape
 	_anchor = pick(at)
 	var selection: Array[Vector2i] = session.selection
 	if _anchor == Items.NONE:
@@ -55,7 +64,9 @@ func motion(at: Vector2, _event: InputEventMouseMotion) -> bool:
 	if _end_index >= 0:
 		_drag_end(at)
 		return true
-	if _anchor == Items.NONE:
+	if _arc_drag.handle >= 0 and at.distance_to(_press_at) >= DRAG_START_PIXELS * pixel:
+		_arc_drag.drag(at)
+	if _anchor == Items.NONE or _arc_drag.handle >= 0:
 		return true
 	if _move == null and at.distance_to(_press_at) < DRAG_START_PIXELS * pixel:
 		return true
@@ -72,6 +83,8 @@ func release(at: Vector2, _event: InputEventMouseButton) -> bool:
 	if _boxing:
 		_boxing = false
 		_finish_box(Rect2(_press_at, at - _press_at))
+	elif _arc_drag.handle >= 0:
+		_arc_drag.finish()
 	elif _end_index >= 0:
 		_end_index = -1
 		var drag := _end_drag
@@ -93,6 +106,7 @@ func cancel() -> bool:
 	_pressed = false
 	_boxing = false
 	_end_index = -1
+	_arc_drag.cancel()
 	if _end_drag != null:
 		_end_drag.undo()
 		_end_drag = null
@@ -136,6 +150,7 @@ func _drag_end(at: Vector2) -> void:
 
 
 func draw(canvas: Control, to_screen: Transform2D) -> void:
+	_arc_drag.draw(canvas, to_screen, session, pixel)
 	if not _pressed:
 		# What a click would pick.
 		var under := pick(hover)
