@@ -320,27 +320,23 @@ func step(dt: float) -> void:
 	_clock.lap(StageClock.Stage.EVENTS, true)
 
 
-## Broad phase and ball-ball solve (see BallPairs). Off the clock, the broad phase's lanes
-## answer the even stripes as they go, and a second hand-off the odd ones; while profiling,
-## the broad phase runs alone so that each stage is timed apart (the same result).
+## Broad phase and ball-ball solve (see BallPairs): the broad phase's lanes answer the even
+## stripes as they list them, then a second hand-off answers the odd ones. The same
+## schedule whether or not the stages are timed: the clock laps at the same two points.
 func _ball_contacts_stages(dt: float) -> void:
 	var t: PhysicsTuning = tuning
 	_pairs.begin(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
-	if not ball_contacts:
+	if ball_contacts:
+		_pairs.find(_balls, _geo, _lanes, true)
+	else:
 		# No broad phase: the motion stage skips the keys, and they are binned again when
 		# ball contacts come back on.
 		_balls.keys_valid = false
-		_clock.lap(StageClock.Stage.BROAD_PHASE)
-	elif profile_stages:
-		_pairs.find(_balls, _geo, _lanes, false)
-		_clock.lap(StageClock.Stage.BROAD_PHASE)
-		_pairs.solve_stripes(_lanes, 0)
-		_pairs.solve_stripes(_lanes, 1)
-	else:
-		_pairs.find(_balls, _geo, _lanes, true)
+	_clock.lap(StageClock.Stage.FIND_AND_SOLVE_EVEN)
+	if ball_contacts:
 		_pairs.solve_stripes(_lanes, 1)
 	_pairs.finish(_balls)
-	_clock.lap(StageClock.Stage.BALL_SOLVE)
+	_clock.lap(StageClock.Stage.SOLVE_ODD)
 
 
 ## Feeds the accumulator and runs every whole step of 1 / tuning.fixed_hz it holds (at most
@@ -362,7 +358,8 @@ func advance(delta: float) -> int:
 
 
 ## Average wall time per step of each stage in µs since profile_stages was turned on, by
-## stage name (integrate, broad_phase, ball_solve, motion, events) plus "total".
+## stage name (StageClock.NAMES: integrate, find_and_solve_even, solve_odd, motion,
+## events) plus "total".
 func stage_times() -> Dictionary:
 	return _clock.per_step()
 
