@@ -38,6 +38,7 @@ static func make_fever() -> BoardLevel:
 		"Fever",
 		"Hit the start pocket to spin the reels: three of a kind opens the attacker below."
 	)
+	level.fascia = "neon"
 	_rows(history, level, 13, 34.0, 36.0, 130.0)
 	Originals.erase_pins_outside_field(history, level, 22.0)
 	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
@@ -72,6 +73,7 @@ static func make_hanami() -> BoardLevel:
 		"Hanami",
 		"Four tulips and two start pockets: a jackpot lifts the attacker's lid in the middle."
 	)
+	level.fascia = "sakura"
 	_rows(history, level, 17, 28.0, 30.0, 120.0)
 	Originals.erase_pins_outside_field(history, level, 22.0)
 	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)

@@ -99,6 +99,7 @@ static func make_pachinko() -> BoardLevel:
 	level.gutter_bounces = 7
 	level.pin_radius = 1.5
 	level.cup_start_balls = 25
+	level.fascia = FasciaNames.CLASSIC
 	var pockets: Array[PocketSpec] = []
 	for mouth: Array in POCKETS:
 		var at := Vector2(_number(mouth, 0), _number(mouth, 1))

@@ -54,6 +54,7 @@ static func make_tulips() -> BoardLevel:
 		"Tulip Garden",
 		"A dense field of pins with four tulips: a catch opens a tulip's petals for the next ball."
 	)
+	level.fascia = "garden"
 	var axis := CENTER
 	history.commit(PatternAction.new(level, _lattice(27, 22.0, 31), Vector2(CENTER, CENTER)))
 	erase_pins_outside_field(history, level, 22.0)
@@ -82,6 +83,7 @@ static func make_windmills() -> BoardLevel:
 		"Windmills",
 		"Five windmills turn in an open field: their blades fling balls toward three rich pockets."
 	)
+	level.fascia = "country"
 	var axis := CENTER
 	for row in 13:
 		var row_pattern := {"kind": "row", "count": 17 - row % 2, "spacing": 34.0}

@@ -63,7 +63,12 @@ static func make_catacombs() -> BoardLevel:
 	var holes := Items.empty_set()
 	holes["holes"] = _centres(_dead_ends(horizontal, vertical, cols, rows).slice(0, 10))
 	history.commit(AddItems.new(level, holes, "Add black hole"))
-	return level
+	# The goal room is two cells wide, like a generated maze's: the generator's ring fits
+	# inside it with its dashed line clear of the room's walls.
+	history.commit(
+		SetProperties.new(level, {"goal_radius": MazeGenerator.GOAL_RADIUS}, "Goal ring")
+	)
+	return refuse_wall_in_goal_ring(level)
 
 
 ## Courtyards: three square rings round the goal, two cells apart, entered through gaps
@@ -110,6 +115,21 @@ static func make_courtyards() -> BoardLevel:
 	holes["holes"] = _centres([Vector2i(1, 2), Vector2i(0, 9), Vector2i(3, 4), Vector2i(5, 3)])
 	history.commit(AddItems.new(level, Mirror.mirror_set(holes, axis), "Add black hole"))
 	return level
+
+
+## `level`, or null (with an error naming the wall) when a wall crosses its goal ring: a
+## ball on such a wall could never roll all the way in, so no built maze may have one.
+static func refuse_wall_in_goal_ring(level: BoardLevel) -> BoardLevel:
+	var crossing := MazeGenerator.wall_in_goal_ring(level)
+	if crossing < 0:
+		return level
+	push_error(
+		(
+			"%s: the wall from %s to %s crosses the goal ring."
+			% [level.board_id, level.walls[crossing * 2], level.walls[crossing * 2 + 1]]
+		)
+	)
+	return null
 
 
 ## A fresh maze board: the tutorial's corridor and wall sizes, goal in the middle.

@@ -20,6 +20,7 @@ const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
 const NewBoardFiles := preload("res://addons/board_editor/core/new_board_files.gd")
 const ToolSettings := preload("res://addons/board_editor/core/tool_settings.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const Items := preload("res://addons/board_editor/core/board_items.gd")
 ## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
 ## this variable naming a script under res://tools/ or res://tests/, the plugin adds it as a
 ## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
@@ -71,6 +72,7 @@ func _enter_tree() -> void:
 	add_tool_menu_item(NEW_BOARD_MENU, open_new_board_dialog)
 	_dock.analysis.redraw_needed.connect(update_overlays)
 	_dock.analysis.results_changed.connect(_refresh)
+	_dock.analysis.item_picked.connect(select_item)
 	_dock.maze_analysis.redraw_needed.connect(update_overlays)
 	_attach_tooling_hook()
 
@@ -182,6 +184,18 @@ func focus_issue(index: int) -> void:
 			var area := _node.get_global_transform() * _issues[index].extent()
 			if is_instance_valid(_viewport_control):
 				ViewFocus.show_area(area, _viewport_control)
+	update_overlays()
+
+
+## Selects `item` on the board and brings it into view (a line of the balance table).
+func select_item(item: Vector2i) -> void:
+	if _session == null or not Items.is_valid(_session.level, item):
+		return
+	_session.select([item] as Array[Vector2i])
+	if is_instance_valid(_node) and _node.is_inside_tree() and is_instance_valid(_viewport_control):
+		var at := Items.position_of(_session.level, item)
+		var around := Rect2(at - Vector2(60, 60), Vector2(120, 120))
+		ViewFocus.show_area(_node.get_global_transform() * around, _viewport_control)
 	update_overlays()
 
 

@@ -21,9 +21,15 @@ static func draw_all(canvas: CanvasItem, level: BoardLevel) -> void:
 			draw_pocket(canvas, level, spec, false, 0.0)
 
 
-## One bonus pocket; `open` is its lid or wings' state, `light` its lamp (0..1).
+## One bonus pocket; `open` is its lid or wings' state, `light` its lamp (0..1);
+## `openness` (0 shut .. 1 open), when given, is where a tulip's swinging wings are now.
 static func draw_pocket(
-	canvas: CanvasItem, level: BoardLevel, spec: BonusPocketSpec, open: bool, light: float
+	canvas: CanvasItem,
+	level: BoardLevel,
+	spec: BonusPocketSpec,
+	open: bool,
+	light: float,
+	openness: float = -1.0
 ) -> void:
 	var half := spec.width * 0.5
 	var cup_color := CUP_COLORS[spec.role]
@@ -42,7 +48,8 @@ static func draw_pocket(
 		BonusPocketSpec.Role.ATTACKER:
 			_draw_lid(canvas, spec, open)
 		BonusPocketSpec.Role.TULIP:
-			_draw_wings(canvas, level, spec, open)
+			var amount := openness if openness >= 0.0 else (1.0 if open else 0.0)
+			_draw_wings(canvas, level, spec, amount)
 	var label := LABELS[spec.role]
 	if not label.is_empty():
 		var font := ThemeDB.fallback_font
@@ -88,17 +95,17 @@ static func _draw_lid(canvas: CanvasItem, spec: BonusPocketSpec, open: bool) -> 
 		canvas.draw_line(hinge, tip, LID.lightened(0.3), width, true)
 
 
-# The wings as petals, where the world has them (upright closed, spread open).
+# The wings as petals, where the world has them `openness` open (upright shut, spread
+# open, between while they swing).
 static func _draw_wings(
-	canvas: CanvasItem, level: BoardLevel, spec: BonusPocketSpec, open: bool
+	canvas: CanvasItem, level: BoardLevel, spec: BonusPocketSpec, openness: float
 ) -> void:
 	var index := level.bonus_pockets.find(spec)
-	var wanted := BonusGeometry.Part.WING_OPEN if open else BonusGeometry.Part.WING_CLOSED
-	for entry in BonusGeometry.wall_plan(level):
-		if entry["item"] != index or entry["part"] != wanted:
+	for wing in BonusGeometry.petal_plan(level):
+		if wing["item"] != index:
 			continue
-		var a: Vector2 = entry["a"]
-		var b: Vector2 = entry["b"]
+		var a: Vector2 = wing["hinge"]
+		var b := BonusGeometry.petal_tip(wing, openness)
 		var across := (b - a).orthogonal().normalized() * 3.5
 		var mid := a.lerp(b, 0.55)
 		var petal := PackedVector2Array([a, mid + across, b, mid - across])

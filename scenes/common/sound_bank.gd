@@ -23,6 +23,11 @@ const JACKPOT := Recipes.JACKPOT
 const TULIP_OPEN := Recipes.TULIP_OPEN
 const START_CATCH := Recipes.START_CATCH
 const FEVER_END := Recipes.FEVER_END
+const SLOW_MO := Recipes.JuiceRecipes.SLOW_MO
+const JACKPOT_THUMP := Recipes.JuiceRecipes.JACKPOT_THUMP
+const LIGHT_SWEEP := Recipes.JuiceRecipes.LIGHT_SWEEP
+const FEVER_TICK := Recipes.JuiceRecipes.FEVER_TICK
+const PIN_FEVER := Recipes.JuiceRecipes.PIN_FEVER
 
 const PREFERRED_BUS := &"SFX"
 const FALLBACK_BUS := &"Master"

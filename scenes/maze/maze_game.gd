@@ -15,6 +15,7 @@ const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const MazeNote := preload("res://scenes/maze/maze_note.gd")
 const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
 const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
+const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
@@ -80,6 +81,7 @@ func _ready() -> void:
 	_joystick.pressed.connect(_on_joystick_pressed)
 	_joystick.moved.connect(mixer.joystick_moved)
 	_calibrate.pressed.connect(_on_calibrate)
+	MazeFocusRing.apply(_calibrate)
 	_calibrate.visible = false
 	_controls.text = _controls_text()
 	var level := _load_level()

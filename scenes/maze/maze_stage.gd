@@ -53,7 +53,8 @@ var _board_size := Vector2(350.0, 315.0)
 var _ball_radius := 5.0
 var _framing := MazeFraming.new()
 var _region := Rect2()
-var _follow_at := Vector2.ZERO
+## The box round the balls the zoomed view is easing toward (MazeFraming.balls_box).
+var _follow_box := Rect2()
 
 
 func _ready() -> void:
@@ -88,7 +89,7 @@ func _exit_tree() -> void:
 func set_level(level: BoardLevel, hard: bool) -> void:
 	_board_size = level.size
 	_ball_radius = level.ball_radius
-	_follow_at = Vector2.ZERO
+	_follow_box = Rect2()
 	_board.tutorial_look = tutorial_look
 	_board.build(level, hard)
 	_balls.clear()
@@ -115,21 +116,30 @@ func set_lost_hole(index: int) -> void:
 
 
 ## Moves, rolls and drops the balls to match `rules`' world (call every frame). A zoomed
-## view follows the balls' centre of mass.
+## view follows the balls and keeps every one of them on screen.
 func sync_balls(rules: MazeRules, delta: float) -> void:
 	_balls.sync(rules, delta)
-	if not _framing.zoomed:
-		return
-	var positions := rules.ball_positions()
+	if _framing.zoomed:
+		_follow_balls(rules.ball_positions(), delta)
+
+
+# Eases the zoomed view toward the box round the balls, but never so slowly that a ball
+# leaves it: the view always holds the eased box and the balls' box now.
+func _follow_balls(positions: PackedVector2Array, delta: float) -> void:
 	if positions.is_empty():
 		return
-	var sum := Vector2.ZERO
+	var points := PackedVector3Array()
 	for p in positions:
-		sum += p
-	var local := Meshes.to_local(_board_size, sum / float(positions.size()))
-	var target := Vector2(local.x, local.y)
-	_follow_at = _follow_at.lerp(target, 1.0 - exp(-FOLLOW_RATE * maxf(delta, 0.0)))
-	_framing.follow(_follow_at)
+		points.append(_pivot.transform * Meshes.to_local(_board_size, p, _ball_radius))
+	var box := _framing.balls_box(points, _ball_radius * UNITS_PER_PX)
+	if not _follow_box.has_area():
+		_follow_box = box
+	var catch_up := 1.0 - exp(-FOLLOW_RATE * maxf(delta, 0.0))
+	_follow_box = Rect2(
+		_follow_box.position.lerp(box.position, catch_up), _follow_box.size.lerp(box.size, catch_up)
+	)
+	_framing.frame_box(_follow_box.merge(box))
+	_camera.size = _framing.size
 	_camera.frustum_offset = _framing.offset
 
 
@@ -324,8 +334,8 @@ func _frame() -> void:
 		get_viewport().get_final_transform().get_scale().y if is_inside_tree() else 1.0
 	)
 	_framing.fit(points, view, region, _ball_radius * 2.0 * UNITS_PER_PX)
-	if _framing.zoomed:
-		_framing.follow(_follow_at)
+	if _framing.zoomed and _follow_box.has_area():
+		_framing.frame_box(_follow_box)
 	_pivot.position = Vector3.ZERO
 	_camera.position = Vector3(0.0, 0.0, distance)
 	_camera.projection = Camera3D.PROJECTION_FRUSTUM

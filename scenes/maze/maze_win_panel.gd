@@ -11,7 +11,10 @@ signal retry_chosen
 signal menu_chosen
 
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
+const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
 const INK := Color(0.129, 0.004, 0.141)
+## The card's colour.
+const CARD := Color(0.99, 0.97, 0.94, 0.96)
 
 var _headline := Label.new()
 var _time := Label.new()
@@ -28,7 +31,7 @@ func _init() -> void:
 	mouse_filter = Control.MOUSE_FILTER_IGNORE
 	var panel := PanelContainer.new()
 	var style := StyleBoxFlat.new()
-	style.bg_color = Color(0.99, 0.97, 0.94, 0.96)
+	style.bg_color = CARD
 	style.border_color = Color(INK, 0.35)
 	style.set_border_width_all(2)
 	style.set_corner_radius_all(14)
@@ -57,6 +60,7 @@ func _init() -> void:
 	for button: Button in [_next, _retry, _menu]:
 		button.custom_minimum_size = Vector2(130, 44)
 		button.focus_mode = Control.FOCUS_ALL
+		MazeFocusRing.apply(button)
 		row.add_child(button)
 	_next.pressed.connect(func() -> void: next_board_chosen.emit())
 	_retry.pressed.connect(func() -> void: retry_chosen.emit())

@@ -19,6 +19,7 @@ const BindingList := preload("res://scenes/menu/binding_list.gd")
 @onready var _ghost: Button = %GhostCheck
 @onready var _maze_look: Button = %MazeLookCheck
 @onready var _vibration: Button = %VibrationCheck
+@onready var _screen_shake: Button = %ScreenShakeCheck
 @onready var _unlock_all: Button = %UnlockAllCheck
 @onready var _bindings: BindingList = %Bindings
 @onready var _defaults: Button = %DefaultsButton
@@ -39,6 +40,7 @@ func _ready() -> void:
 	_ghost.toggled.connect(_on_value_changed.bind("show_ghost"))
 	_maze_look.toggled.connect(_on_value_changed.bind("maze_tutorial_look"))
 	_vibration.toggled.connect(_on_value_changed.bind("vibration"))
+	_screen_shake.toggled.connect(_on_value_changed.bind("screen_shake"))
 	_unlock_all.toggled.connect(_on_value_changed.bind("unlock_all_boards"))
 	_defaults.pressed.connect(_on_defaults_pressed)
 	_back.pressed.connect(close)
@@ -52,6 +54,7 @@ func _ready() -> void:
 		_ghost,
 		_maze_look,
 		_vibration,
+		_screen_shake,
 		_unlock_all
 	]
 	for control: Control in rows:
@@ -92,6 +95,7 @@ func _load_values() -> void:
 	_ghost.set_pressed_no_signal(settings.show_ghost)
 	_maze_look.set_pressed_no_signal(settings.maze_tutorial_look)
 	_vibration.set_pressed_no_signal(settings.vibration)
+	_screen_shake.set_pressed_no_signal(settings.screen_shake)
 	_unlock_all.set_pressed_no_signal(settings.unlock_all_boards)
 	_show_numbers()
 
@@ -107,6 +111,7 @@ func _show_numbers() -> void:
 	_ghost.text = "On" if _ghost.button_pressed else "Off"
 	_maze_look.text = "Tutorial" if _maze_look.button_pressed else "Wood and steel"
 	_vibration.text = "On" if _vibration.button_pressed else "Off"
+	_screen_shake.text = "On" if _screen_shake.button_pressed else "Off"
 	_unlock_all.text = "On" if _unlock_all.button_pressed else "Off"
 	_master_value.text = "%d%%" % roundi(_master.value * 100.0)
 	_sfx_value.text = "%d%%" % roundi(_sfx.value * 100.0)

@@ -13,6 +13,8 @@ const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
 const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
+const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
+const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const HUD_WIDTH := 360.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
@@ -26,6 +28,7 @@ var _controls := PachinkoInput.new()
 var _stats_refresh := 0.0
 # Made once a board has loaded: a game with no board never owns one outside the tree.
 var _bonus_view: BonusView
+var _juice: JuiceView
 var _recorder: ReplayRecorder
 
 @onready var board_view: BoardView = $BoardView
@@ -51,6 +54,7 @@ func _ready() -> void:
 		instructions.show_problem(problem)
 		return
 	_level = loaded.level
+	MachineDress.apply(self, _level)
 	(
 		SoundBank
 		. warm(
@@ -68,6 +72,10 @@ func _ready() -> void:
 	_bonus_view = BonusView.new()
 	add_child(_bonus_view)
 	_bonus_view.attach(board_view, sounds)
+	_juice = JuiceView.new()
+	_juice.name = "Juice"
+	add_child(_juice)
+	_juice.attach(board_view, sounds)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
 	launcher.handle_pressed.connect(_on_handle_pressed)
 	launcher.handle_turned.connect(
@@ -82,7 +90,8 @@ func _process(delta: float) -> void:
 	if rules == null:
 		return
 	_controls.poll(rules, delta)
-	rules.advance(delta)
+	# Slow motion slows the game's clock only: the same fixed steps, fewer per frame.
+	rules.advance(delta * _juice.time_scale(rules, delta))
 	_recorder.note_frame()
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
@@ -146,6 +155,7 @@ func _new_rules() -> void:
 	rules.world.ring_hit.connect(_on_ring_hit)
 	board_view.bind(rules)
 	_bonus_view.bind(rules)
+	_juice.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
 	cup.set_count(0)
@@ -288,7 +298,9 @@ func _on_ball_returned(_id: int) -> void:
 
 
 func _on_pin_hit(_ball: int, _pin: int, speed: float) -> void:
-	sounds.play_impact(SoundBank.PIN_TICK, speed, TICK_MIN_SPEED, TICK_MAX_SPEED)
+	var fever := rules.bonus.any_attacker_open()
+	var tick := SoundBank.PIN_FEVER if fever else SoundBank.PIN_TICK
+	sounds.play_impact(tick, speed, TICK_MIN_SPEED, TICK_MAX_SPEED)
 
 
 func _on_ring_hit(_ball: int, speed: float) -> void:

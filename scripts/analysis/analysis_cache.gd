@@ -2,13 +2,13 @@ class_name AnalysisCache
 extends RefCounted
 ## Keeps analysis results per board content, so reopening a board shows its figures at
 ## once and any edit makes them stale: the key is a hash of the board's file text without
-## its name lines (BoardTextWriter.play_text: a rename or "Save board as" keeps the
-## figures, and an undo back to analysed content finds them again) and of the run's
+## its name lines and its payouts (ReportPayouts.geometry_text: a rename or "Save board
+## as" keeps the figures, an undo back to analysed content finds them again, and a
+## payout-only edit finds the counts, which ReportPayouts prices anew) and of the run's
 ## settings. Each entry is a JSON
 ## report and the heat-map PNG beside it, in user://analysis/. Read back as data only
 ## (JSON, PNG), never as code or resources.
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 ## The cache folder.
 const DEFAULT_FOLDER := "user://analysis"
 ## Another folder for tests ("" uses DEFAULT_FOLDER). Left at its type's default on purpose:
@@ -22,7 +22,7 @@ static func key_for(plan: AnalysisPlan) -> String:
 		"v%d|%d|%d|%s|%s"
 		% [AnalysisReport.VERSION, plan.shots, plan.rng_seed, plan.power_from, plan.power_to]
 	)
-	return (BoardTextWriter.play_text(plan.level) + "\n" + settings).sha256_text()
+	return (ReportPayouts.geometry_text(plan.level) + "\n" + settings).sha256_text()
 
 
 ## Stores a report and its heat map under `key`. Returns OK or the file error.
@@ -60,11 +60,13 @@ static func load_heatmap(key: String) -> Image:
 	return image if image.load_png_from_buffer(FileAccess.get_file_as_bytes(path)) == OK else null
 
 
-## The cached report for the editor's default analysis of `level` ({} when none yet).
+## The cached report for the editor's default analysis of `level`, priced with its
+## payouts ({} when none yet).
 static func cached_report(level: BoardLevel) -> Dictionary:
 	if level == null or not level.is_pachinko():
 		return {}
-	return load_report(key_for(AnalysisPlan.create(level, AnalysisPlan.EDITOR_SHOTS, 1)))
+	var plan := AnalysisPlan.create(level, AnalysisPlan.EDITOR_SHOTS, 1)
+	return ReportPayouts.repriced(load_report(key_for(plan)), level)
 
 
 ## Stores a maze analysis report (MazeAnalysis) for the board whose play_hash is `key`.

@@ -130,6 +130,8 @@ func _open_bonus_parts() -> void:
 	for wall in parts.size():
 		var part: BonusGeometry.Part = parts[wall]["part"]
 		_world.shapes.set_wall_enabled(wall, BonusGeometry.part_solid(part, true))
+	for gate in _world.shapes.gate_count():
+		_world.shapes.set_gate_open(gate, true, true)
 
 
 # One shot of power level `q` at step `step`: from the rail table when it knows the climb.

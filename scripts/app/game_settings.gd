@@ -53,6 +53,8 @@ var tilt_sensitivity := 1.0
 var unlock_all_boards := false
 ## Gamepad rumble and phone vibration when a maze ball knocks a wall or drops into a hole.
 var vibration := true
+## The pachinko board jolts on a jackpot (off for players whom screen motion troubles).
+var screen_shake := true
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
 var bindings := {}
 
@@ -98,6 +100,7 @@ func reset_to_defaults() -> void:
 	tilt_sensitivity = 1.0
 	unlock_all_boards = false
 	vibration = true
+	screen_shake = true
 	bindings = default_bindings()
 	changed.emit()
 
@@ -163,6 +166,9 @@ func set_value(key: String, value: Variant) -> void:
 		"show_frame_counter", "show_ghost", "unlock_all_boards", "maze_tutorial_look":
 			var on: bool = value
 			set(key, on)
+		"screen_shake":
+			var on: bool = value
+			screen_shake = on
 		"tilt_sensitivity":
 			var sensitivity: float = value
 			tilt_sensitivity = clampf(sensitivity, MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY)
@@ -217,7 +223,8 @@ func save_file(path: String) -> Error:
 				"fullscreen": fullscreen,
 				"show_frame_counter": show_frame_counter,
 				"show_ghost": show_ghost,
-				"maze_tutorial_look": maze_tutorial_look
+				"maze_tutorial_look": maze_tutorial_look,
+				"screen_shake": screen_shake,
 			}
 		],
 		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
@@ -259,6 +266,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "show_frame_counter", problems)
 	_read_flag(display, "show_ghost", problems)
 	_read_flag(display, "maze_tutorial_look", problems)
+	_read_flag(display, "screen_shake", problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	_read_flag(controls, "vibration", problems)
 	var progress: Dictionary = sections.get("progress", {})

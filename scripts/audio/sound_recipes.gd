@@ -4,6 +4,7 @@ extends RefCounted
 ## and holes for the maze).
 
 const Synth := preload("res://scripts/audio/sound_synth.gd")
+const JuiceRecipes := preload("res://scripts/audio/juice_recipes.gd")
 
 ## Sound names, so callers never spell a string twice.
 const PIN_TICK := &"pin_tick"
@@ -32,9 +33,9 @@ const START_CATCH := &"start_catch"
 const FEVER_END := &"fever_end"
 
 
-## Every recipe name, in a stable order.
+## Every recipe name, in a stable order (the juice recipes last).
 static func names() -> Array[StringName]:
-	return [
+	var all: Array[StringName] = [
 		PIN_TICK,
 		LAUNCH,
 		POCKET_WIN,
@@ -54,6 +55,8 @@ static func names() -> Array[StringName]:
 		START_CATCH,
 		FEVER_END,
 	]
+	all.append_array(JuiceRecipes.names())
+	return all
 
 
 ## Builds the named clip; null (with an error naming it) for an unknown name.
@@ -98,6 +101,8 @@ static func build(sound: StringName) -> AudioStreamWAV:
 			return Synth.to_stream(_arpeggio([1319.0, 1760.0], 0.05), 0.7)
 		FEVER_END:
 			return Synth.to_stream(_arpeggio([1047.0, 784.0, 523.0], 0.12), 0.7)
+	if JuiceRecipes.has(sound):
+		return JuiceRecipes.build(sound)
 	push_error("SoundRecipes: no recipe for sound '%s'" % sound)
 	return null
 

@@ -137,6 +137,12 @@ const CURRENT_VERSION := 1
 	set(value):
 		cup_start_balls = value
 		emit_changed()
+## The machine the board is dressed as (FasciaNames: art, palette, name plate). Looks only:
+## it never changes how the board plays.
+@export var fascia: String = FasciaNames.CLASSIC:
+	set(value):
+		fascia = value
+		emit_changed()
 
 ## The bonus layer: start pockets, attackers and tulips (BonusPocketSpec), start pockets
 ## first, then attackers, then tulips. Their pins are not in `pins`: the world factory

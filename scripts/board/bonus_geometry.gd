@@ -5,12 +5,13 @@ extends RefCounted
 ##
 ## Every bonus pocket is a PocketStamp cup whose pins are added after the level's own pins,
 ## tagged with pocket id `level.pockets.size() + index` (its special pin catches). Its moving
-## parts are capsule walls, added to the world before any other wall so wall `k` of
-## `wall_plan()` is world wall `k`: an attacker's lid across the mouth, two halves with a
-## low ridge (on while closed), a tulip's two upright wings (on while closed) and two spread
-## wings (on while open).
+## parts: an attacker's lid across the mouth is two capsule walls with a low ridge, added to
+## the world before any other wall (on while closed), so wall `k` of `wall_plan()` is world
+## wall `k`; a tulip's two wings are the petals of a world gate (BallWorld.add_gate), gate
+## `k` being the k-th tulip, hinged at the mouth's corners: upright while shut, leaning
+## out while open, swinging between the two in TULIP_SWING_SECONDS.
 
-enum Part { LID, WING_CLOSED, WING_OPEN }
+enum Part { LID }
 
 ## Capsule radius of a lid or a wing, px.
 const PART_RADIUS := 2.5
@@ -26,6 +27,8 @@ const REEL_ROOF := 24.0
 const WING_SHARE := 0.75
 ## An open wing leans out this far from upright, radians (about 50 degrees).
 const WING_OPEN_ANGLE := 0.87
+## Seconds a tulip's wings take to swing fully open or shut.
+const TULIP_SWING_SECONDS := 0.2
 
 
 ## The pocket id the world reports for bonus pocket `index` of `level`.
@@ -84,29 +87,71 @@ static func reel_frame(level: BoardLevel) -> PackedVector2Array:
 	)
 
 
-## The moving parts, in world wall order: [{"item": index, "part": Part, "a", "b"}].
+## The attackers' lids, in world wall order: [{"item": index, "part": Part, "a", "b"}].
 static func wall_plan(level: BoardLevel) -> Array[Dictionary]:
 	var plan: Array[Dictionary] = []
 	for i in level.bonus_pockets.size():
 		var spec := level.bonus_pockets[i]
-		if spec == null:
+		if spec == null or spec.role != BonusPocketSpec.Role.ATTACKER:
 			continue
+		# Two halves meeting in a low ridge, so balls roll off a shut lid instead of
+		# resting on it until the watcher nudges them.
 		var half := spec.width * 0.5
-		var mouth := spec.position
-		if spec.role == BonusPocketSpec.Role.ATTACKER:
-			# Two halves meeting in a low ridge, so balls roll off a shut lid instead
-			# of resting on it until the watcher nudges them.
-			var ridge := lid_ridge(spec)
-			plan.append(_part(i, Part.LID, mouth + Vector2(-half, 0.0), ridge))
-			plan.append(_part(i, Part.LID, ridge, mouth + Vector2(half, 0.0)))
-		elif spec.role == BonusPocketSpec.Role.TULIP:
-			for side: float in [-1.0, 1.0]:
-				var root := mouth + Vector2(side * half, 0.0)
-				var wing := spec.width * WING_SHARE
-				plan.append(_part(i, Part.WING_CLOSED, root, root + Vector2(0.0, -wing)))
-				var lean := Vector2(side * sin(WING_OPEN_ANGLE), -cos(WING_OPEN_ANGLE)) * wing
-				plan.append(_part(i, Part.WING_OPEN, root, root + lean))
+		var ridge := lid_ridge(spec)
+		plan.append(_part(i, Part.LID, spec.position + Vector2(-half, 0.0), ridge))
+		plan.append(_part(i, Part.LID, ridge, spec.position + Vector2(half, 0.0)))
 	return plan
+
+
+## The tulips' wings, in world gate order (gate k is the k-th tulip; two petals each, left
+## then right): [{"item": index, "hinge": Vector2, "length": float, "shut": angle,
+## "open": angle}], angles in radians, y down.
+static func petal_plan(level: BoardLevel) -> Array[Dictionary]:
+	var plan: Array[Dictionary] = []
+	for i in level.bonus_pockets.size():
+		var spec := level.bonus_pockets[i]
+		if spec == null or spec.role != BonusPocketSpec.Role.TULIP:
+			continue
+		for side: float in [-1.0, 1.0]:
+			var upright := -PI * 0.5
+			(
+				plan
+				. append(
+					{
+						"item": i,
+						"hinge": spec.position + Vector2(side * spec.width * 0.5, 0.0),
+						"length": spec.width * WING_SHARE,
+						"shut": upright,
+						"open": upright + side * WING_OPEN_ANGLE,
+					}
+				)
+			)
+	return plan
+
+
+## The tip of a petal of petal_plan() when its tulip is `openness` open (0 shut, 1 open).
+static func petal_tip(petal: Dictionary, openness: float) -> Vector2:
+	var shut: float = petal["shut"]
+	var open: float = petal["open"]
+	var length: float = petal["length"]
+	var hinge: Vector2 = petal["hinge"]
+	return hinge + Vector2.from_angle(lerpf(shut, open, openness)) * length
+
+
+## The world gate of bonus pocket `index` of `level` (its place among the tulips), or -1
+## for a pocket that is not a tulip.
+static func tulip_gate(level: BoardLevel, index: int) -> int:
+	if index < 0 or index >= level.bonus_pockets.size():
+		return -1
+	var spec := level.bonus_pockets[index]
+	if spec == null or spec.role != BonusPocketSpec.Role.TULIP:
+		return -1
+	var gate := 0
+	for k in index:
+		var other := level.bonus_pockets[k]
+		if other != null and other.role == BonusPocketSpec.Role.TULIP:
+			gate += 1
+	return gate
 
 
 ## The top of a shut attacker lid: its two halves rise to this point above the mouth's
@@ -115,19 +160,33 @@ static func lid_ridge(spec: BonusPocketSpec) -> Vector2:
 	return spec.position + Vector2(0.0, -spec.width * LID_SLOPE * 0.5)
 
 
-## True when a part is solid while its pocket is `open`.
-static func part_solid(part: Part, open: bool) -> bool:
-	return open if part == Part.WING_OPEN else not open
+## True when a part is solid while its pocket is `open` (a lid is solid while shut).
+static func part_solid(_lid: Part, open: bool) -> bool:
+	return not open
 
 
-## Adds the moving parts to `world`, closed; call before any other wall.
+## Adds the attackers' lids to `world`, closed; call before any other wall.
 static func add_walls(world: BallWorld, level: BoardLevel) -> void:
 	for entry in wall_plan(level):
 		var a: Vector2 = entry["a"]
 		var b: Vector2 = entry["b"]
-		var index := world.shapes.add_wall(a, b, PART_RADIUS)
-		var part: Part = entry["part"]
-		world.shapes.set_wall_enabled(index, part_solid(part, false))
+		world.shapes.add_wall(a, b, PART_RADIUS)
+
+
+## Adds each tulip's wings to `world` as a shut gate of two petals (petal_plan's order), of
+## the pins' material `min_speed_x`.
+static func add_gates(world: BallWorld, level: BoardLevel, min_speed_x: float) -> void:
+	var gate := -1
+	var item := -1
+	for petal in petal_plan(level):
+		if petal["item"] != item:
+			item = petal["item"]
+			gate = world.shapes.add_gate(TULIP_SWING_SECONDS)
+		var hinge: Vector2 = petal["hinge"]
+		var length: float = petal["length"]
+		var shut: float = petal["shut"]
+		var open: float = petal["open"]
+		world.shapes.add_petal(gate, hinge, length, PART_RADIUS, shut, open, min_speed_x)
 
 
 ## Adds every bonus pocket's rim and catching pin to `world` (after the level's pins).

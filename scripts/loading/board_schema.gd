@@ -46,6 +46,9 @@ const MAZE := {
 	"goal_radius": ["float", 1.0, 2048.0],
 	"hole_radius": ["float", 0.0, 500.0],
 }
+## Fields a pachinko file may leave out: the machine it is dressed as (FasciaNames; classic
+## when missing, so files from before machines had names still load).
+const PACHINKO_OPTIONAL := {"fascia": ["fascia", 0, 0]}
 ## Fields a maze file may leave out: medal times per mode,
 ## `{"medal_times": {"easy": [gold, silver, bronze], "hard": [...]}}` in seconds.
 const MAZE_OPTIONAL := {"medal_times": ["medals", 0.1, 36000.0]}
@@ -161,7 +164,7 @@ static func fields_for(kind_name: String) -> Dictionary:
 
 ## The top-level fields a board of `kind_name` may leave out.
 static func optional_fields_for(kind_name: String) -> Dictionary:
-	return MAZE_OPTIONAL if kind_name == BoardLevel.MAZE_NAME else {}
+	return MAZE_OPTIONAL if kind_name == BoardLevel.MAZE_NAME else PACHINKO_OPTIONAL
 
 
 ## The item lists a board of `kind_name` has.
@@ -177,6 +180,13 @@ static func check_value(value: Variant, spec: Array) -> String:
 			return check_value(value, ["float", -MAX_COORD, MAX_COORD])
 		"bool":
 			return "" if value is bool else "must be true or false"
+		"fascia":
+			if FasciaNames.is_known(value):
+				return ""
+			return (
+				"names no machine this game has (%s): pick %s"
+				% [JSON.stringify(value), FasciaNames.choices()]
+			)
 		"kind":
 			return (
 				"" if BoardLevel.kind_named(value) >= 0 else "must be " + BoardLevel.kind_choices()

@@ -77,9 +77,26 @@ static func _gather(data: Dictionary, line: Dictionary) -> String:
 			return 'an item ("%s") must be alone on its line' % key
 		if Schema.LISTS.has(key):
 			return '"%s" items go one per line, not as a list' % key
+		if key == "tuning" and data.has(key) and line.size() == 1:
+			return _gather_tuning(data, line[key])
 		if data.has(key):
 			return 'the field "%s" is given twice' % key
 		data[key] = line[key]
+	return ""
+
+
+# A tuning line after the first adds its constants to the ones read so far (files write one
+# line per constant; older files hold them all on one line). A constant given twice is an error.
+static func _gather_tuning(data: Dictionary, more: Variant) -> String:
+	var tuning: Variant = data["tuning"]
+	if not tuning is Dictionary or not more is Dictionary:
+		return '"tuning" must be an object { ... }'
+	var into: Dictionary = tuning
+	var adding: Dictionary = more
+	for key: Variant in adding:
+		if into.has(key):
+			return 'tuning "%s" is given twice' % key
+		into[key] = adding[key]
 	return ""
 
 
@@ -234,6 +251,7 @@ static func _build(data: Dictionary) -> BoardLevel:
 	var tuning: Dictionary = data.get("tuning", {})
 	level.tuning = _build_tuning(level, tuning)
 	if level.is_pachinko():
+		level.fascia = str(data.get("fascia", FasciaNames.CLASSIC))
 		# Files before rim pins were derived stored each pocket's pins (`"pocket": k`): the
 		# pocket line is the truth, so those are dropped and every pocket stamps its own.
 		var stored: Array = data.get("pins", [])

@@ -1,10 +1,10 @@
 extends RefCounted
 ## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per line
 ## in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a hole) in
-## the board's own order, coordinates rounded to 0.01 px. A pocket's rim pins are not
-## written: the pocket's line is the whole pocket, and the reader stamps its pins, so a
-## pocket edit is a one-line diff. Adding a pin adds one line; deleting one removes one line
-## (no commas between lines to shift). The same board always
+## the board's own order, coordinates rounded to 0.01 px, tuning one constant a line. A
+## pocket's rim pins are not written: the pocket's line is the whole pocket, and the reader
+## stamps its pins, so a pocket edit is a one-line diff. Adding a pin adds one line;
+## deleting one removes one line (no commas between lines to shift). The same board always
 ## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
@@ -12,10 +12,10 @@ const Schema := preload("res://scripts/loading/board_schema.gd")
 const PRECISION := 0.01
 const POINT_KEYS: Array[String] = ["x", "y"]
 const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
-## The lines of a board's text that name or describe it (and the id counters and medal
-## times) but never change how it plays: `play_text` leaves them out.
+## The lines of a board's text that name, describe or dress it (and the id counters and
+## medal times) but never change how it plays: `play_text` leaves them out.
 const NAMING_FIELDS: Array[String] = [
-	"board_id", "display_name", "description", "medal_times", Schema.NEXT_IDS_FIELD
+	"board_id", "display_name", "description", "fascia", "medal_times", Schema.NEXT_IDS_FIELD
 ]
 
 
@@ -60,7 +60,9 @@ static func write(level: BoardLevel) -> String:
 		lines.append('{"%s": %s}' % [field, _value(level.get(field))])
 	if level.is_maze():
 		_append_medals(lines, level)
-	lines.append('{"tuning": %s}' % _tuning(level.tuning))
+	else:
+		lines.append('{"fascia": %s}' % JSON.stringify(level.fascia))
+	lines.append_array(_tuning_lines(level.tuning))
 	var counters := ItemIds.counters_to_save(level)
 	if not counters.is_empty():
 		lines.append('{"%s": %s}' % [Schema.NEXT_IDS_FIELD, _counters(counters)])
@@ -98,10 +100,12 @@ static func _value(value: Variant) -> String:
 	return JSON.stringify(value)
 
 
-# Tuning constants keep full precision: they come from formulas (0.7 / 0.03²), and rounding
-# them would change how every board plays.
-static func _tuning(tuning: PhysicsTuning) -> String:
-	var parts := PackedStringArray()
+# One line per tuning constant, in name order (`{"tuning": {"gravity": [0, 777.7778]}}`), so
+# changing one is a one-line diff. Values keep their full precision in the fewest digits that
+# read back to the same number: they come from formulas (0.7 / 0.03²), and rounding them
+# would change how every board plays.
+static func _tuning_lines(tuning: PhysicsTuning) -> PackedStringArray:
+	var lines := PackedStringArray()
 	var source := tuning if tuning != null else PhysicsTuning.new()
 	var names := BoardRanges.tuning_fields().keys()
 	names.sort()
@@ -112,14 +116,14 @@ static func _tuning(tuning: PhysicsTuning) -> String:
 		var text := ""
 		if value is Vector2:
 			var v: Vector2 = value
-			text = "[%s, %s]" % [_exact(v.x), _exact(v.y)]
+			text = "[%s, %s]" % [_shortest_single(v.x), _shortest_single(v.y)]
 		elif value is float:
 			var real: float = value
-			text = _exact(real)
+			text = _shortest(real)
 		else:
 			text = JSON.stringify(value)
-		parts.append('"%s": %s' % [name, text])
-	return "{" + ", ".join(parts) + "}"
+		lines.append('{"tuning": {"%s": %s}}' % [name, text])
+	return lines
 
 
 # `{"pins": 626, "walls": 40}` in ItemIds.LISTS order, so the same board gives the same text.
@@ -131,10 +135,23 @@ static func _counters(counters: Dictionary[String, int]) -> String:
 	return "{" + ", ".join(parts) + "}"
 
 
-static func _exact(value: float) -> String:
+# The fewest digits that read back to exactly `value` (a 64-bit float).
+static func _shortest(value: float) -> String:
 	if value == floorf(value) and absf(value) < 1e15:
 		return str(int(value))
-	return JSON.stringify(value, "", false, true)
+	return String.num_scientific(value)
+
+
+# The fewest decimals that read back to `value` once stored in 32 bits, as a Vector2's
+# components are (777.7778, not 777.7777709960938).
+static func _shortest_single(value: float) -> String:
+	if value == floorf(value) and absf(value) < 1e15:
+		return str(int(value))
+	for decimals in range(1, 13):
+		var text := String.num(value, decimals)
+		if Vector2(text.to_float(), 0.0).x == value:
+			return text
+	return _shortest(value)
 
 
 # The optional medal times line, only for a board that has some.

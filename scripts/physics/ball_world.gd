@@ -25,6 +25,8 @@ signal wall_hit(ball_id: int, wall_index: int, impact_speed: float)
 signal ring_hit(ball_id: int, impact_speed: float)
 ## A ball bounced off a windmill's blade (the speed is relative to the moving blade).
 signal windmill_hit(ball_id: int, windmill_index: int, impact_speed: float)
+## A ball bounced off a petal of gate `gate_index` (the speed is relative to the petal).
+signal gate_hit(ball_id: int, gate_index: int, impact_speed: float)
 ## A ball touched a capturing pin (the pin's tag); it has been removed.
 signal ball_captured(ball_id: int, tag: int)
 ## A ball used up its bounces on the drain arc (or rolled there); it has been removed.
@@ -41,6 +43,7 @@ signal ball_entered_zone(ball_id: int, zone_index: int)
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
 const WorldShapes := preload("res://scripts/physics/world_shapes.gd")
+const Gates := preload("res://scripts/physics/gates.gd")
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
@@ -108,6 +111,7 @@ var shapes: WorldShapes
 
 var _geo := StaticGeometry.new()
 var _wheels := Windmills.new()
+var _gates := Gates.new()
 var _balls := BallStore.new()
 var _lanes := BallLanes.new()
 var _pairs := BallPairs.new()
@@ -130,7 +134,7 @@ var _stepping := false
 
 func _init(p_tuning: PhysicsTuning = null) -> void:
 	tuning = p_tuning if p_tuning != null else PhysicsTuning.new()
-	shapes = WorldShapes.new(_geo, _wheels, tuning)
+	shapes = WorldShapes.new(_geo, _wheels, _gates, tuning)
 	_lanes.threads = threads
 	gravity = tuning.gravity
 	rolling_friction = Vector2(tuning.rolling_friction, tuning.rolling_friction)
@@ -307,12 +311,15 @@ func step(dt: float) -> void:
 		_woken_at_step = step_count
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
 	_hear_hits()
+	if _gates.count() > 0:
+		_gates.begin_step(_wheels, dt, tuning.max_speed)
 	_motion.run(tuning, gravity, rolling_friction, dt, turned, may_sleep)
 	_clock.lap(StageClock.Stage.MOTION)
 	_events.append_array(_motion.events)
 	_event_speed.append_array(_motion.event_speed)
 	if _wheels.count() > 0:
 		_wheels.advance(dt, _motion.wheel_push_index, _motion.wheel_push, tuning.max_speed)
+		_gates.end_step(_wheels)
 	_balls.compact()
 	step_count += 1
 	_emit_events()
@@ -366,8 +373,11 @@ func stage_times() -> Dictionary:
 
 ## A hash of the whole dynamic state: equal hashes after N steps mean identical runs.
 func state_hash() -> int:
+	var b: BallStore = _balls
+	if _gates.count() > 0:
+		var gates: Array = [_gates.openness, _gates.target, _gates.phase_time]
+		return hash([step_count, b.ids, b.pos, b.vel, b.rest, _wheels.angle, _wheels.omega, gates])
 	if _wheels.count() > 0:
-		var b: BallStore = _balls
 		return hash([step_count, b.ids, b.pos, b.vel, b.rest, _wheels.angle, _wheels.omega])
 	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
 
@@ -379,7 +389,8 @@ func _hear_hits() -> void:
 	heard[BallEvents.Kind.PIN_HIT] = 1 if pin_hit.has_connections() else 0
 	heard[BallEvents.Kind.WALL_HIT] = 1 if wall_hit.has_connections() else 0
 	heard[BallEvents.Kind.RING_HIT] = 1 if ring_hit.has_connections() else 0
-	heard[BallEvents.Kind.BLADE_HIT] = 1 if windmill_hit.has_connections() else 0
+	var blades: bool = windmill_hit.has_connections() or gate_hit.has_connections()
+	heard[BallEvents.Kind.BLADE_HIT] = 1 if blades else 0
 
 
 # Emits this step's queued events as the signals above, in the order they happened.
@@ -403,7 +414,11 @@ func _emit_events() -> void:
 			BallEvents.Kind.RING_HIT:
 				ring_hit.emit(id, evs[e])
 			BallEvents.Kind.BLADE_HIT:
-				windmill_hit.emit(id, index, evs[e])
+				# A rotor is a windmill or a gate's petal: each signal names its own.
+				if shapes.rotor_is_petal(index):
+					gate_hit.emit(id, shapes.rotor_owner(index), evs[e])
+				else:
+					windmill_hit.emit(id, shapes.rotor_owner(index), evs[e])
 			BallEvents.Kind.CAPTURED:
 				ball_captured.emit(id, index)
 			BallEvents.Kind.DRAINED:

@@ -25,6 +25,7 @@ static func validate(level: BoardLevel) -> Array[BoardIssue]:
 		if issue.kind in BLOCKING:
 			return issues  # every later check needs a sane kind, size and ball
 	if level.kind == BoardLevel.Kind.PACHINKO:
+		_check_fascia(level, issues)
 		PachinkoChecks.check(level, issues)
 	else:
 		MazeChecks.check(level, issues)
@@ -84,6 +85,22 @@ static func _check_common(level: BoardLevel, issues: Array[BoardIssue]) -> void:
 			"bad_ball_radius"
 		)
 	_check_tuning(level.tuning, issues)
+
+
+# The machine the board is dressed as must be one the game can draw (the file reader's own
+# list, so a board that passes here loads again).
+static func _check_fascia(level: BoardLevel, issues: Array[BoardIssue]) -> void:
+	if FasciaNames.is_known(level.fascia):
+		return
+	_error(
+		issues,
+		(
+			'The board is dressed as "%s", a machine this game does not have: pick %s.'
+			% [level.fascia, FasciaNames.choices()]
+		),
+		Vector2.ZERO,
+		"unknown_fascia"
+	)
 
 
 static func _check_tuning(tuning: PhysicsTuning, issues: Array[BoardIssue]) -> void:

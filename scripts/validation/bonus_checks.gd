@@ -86,6 +86,10 @@ static func _check_inside_ring(level: BoardLevel, i: int, issues: Array[BoardIss
 		if entry["item"] == i:
 			var tip: Vector2 = entry["b"]
 			points.append(tip)
+	for petal in BonusGeometry.petal_plan(level):
+		if petal["item"] == i:
+			points.append(BonusGeometry.petal_tip(petal, 0.0))
+			points.append(BonusGeometry.petal_tip(petal, 1.0))
 	var reach := level.ring_radius - level.pin_radius - level.ball_radius * 2.0
 	for p in points:
 		if p.distance_to(level.ring_center) > reach:

@@ -49,10 +49,12 @@ static func _build_pachinko(world: BallWorld, level: BoardLevel) -> void:
 		world.shapes.add_pin(
 			level.pins[i], level.pin_radius, level.pin_pocket[i], special, min_speed_x
 		)
-	# The bonus pockets: their cups after the level's pins, their lids and wings as the
-	# first walls (BonusGeometry's contract with BonusMachine).
+	# The bonus pockets: their cups after the level's pins, their lids as the first walls
+	# and their tulips' wings as the gates, in order (BonusGeometry's contract with
+	# BonusMachine).
 	BonusGeometry.add_pins(world, level, min_speed_x)
 	BonusGeometry.add_walls(world, level)
+	BonusGeometry.add_gates(world, level, min_speed_x)
 	var guide := LaunchRail.guide_points(level)
 	for i in guide.size() - 1:
 		world.shapes.add_wall(guide[i], guide[i + 1], LaunchRail.GUIDE_WALL_RADIUS)

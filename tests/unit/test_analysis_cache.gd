@@ -26,10 +26,12 @@ func _classic() -> BoardLevel:
 	return BoardLoader.load_board("res://levels/pachinko/classic.board").level
 
 
+# A report on Classic's pockets (each paying what the board's pocket pays).
 func _report(dead: Array, ret: float, aim: float) -> Dictionary:
 	var pockets := []
-	for p in 5:
-		pockets.append({"id": p, "rate": 0.0, "hits": 0})
+	var level := _classic()
+	for p in level.pockets.size():
+		pockets.append({"id": p, "rate": 0.0, "hits": 0, "payout": level.pockets[p].payout})
 	return {
 		"version": AnalysisReport.VERSION,
 		"shots": 10000,
@@ -64,6 +66,10 @@ func test_an_edit_invalidates_the_cached_result() -> void:
 	assert_eq(AnalysisCache.load_heatmap(key).get_pixel(1, 1), Color.RED)
 	var pocket := level.pockets[0]
 	pocket.payout += 1
+	var priced := AnalysisCache.cached_report(level)
+	assert_eq(priced.get("dead_pockets"), [2.0], "a payout edit keeps the counts...")
+	assert_eq(priced["pockets"][0]["payout"], pocket.payout, "...priced with the new payout")
+	pocket.width += 2.0
 	assert_true(AnalysisCache.cached_report(level).is_empty(), "after an edit: nothing cached")
 
 
@@ -107,4 +113,6 @@ func test_a_rename_or_a_new_file_name_keeps_the_cache_key_an_edit_does_not() -> 
 	level.description = "Another blurb."
 	assert_eq(AnalysisCache.key_for(AnalysisPlan.create(level, 1000, 1)), key, "same play")
 	level.pockets[0].payout += 1
-	assert_ne(AnalysisCache.key_for(AnalysisPlan.create(level, 1000, 1)), key, "a payout edit")
+	assert_eq(AnalysisCache.key_for(AnalysisPlan.create(level, 1000, 1)), key, "a payout edit")
+	level.pockets[0].depth += 1
+	assert_ne(AnalysisCache.key_for(AnalysisPlan.create(level, 1000, 1)), key, "a pocket edit")

@@ -95,6 +95,58 @@ class TestRoundTrip:
 		assert_eq(Writer.number(12.5), "12.5")
 		assert_eq(Writer.number(0.1 + 0.2), "0.3")
 
+	func test_tuning_is_one_short_line_per_constant() -> void:
+		var level := _shipped("res://levels/pachinko/classic")
+		var lines := Writer.write(level).split("\n")
+		var tuning := Array(lines).filter(
+			func(l: String) -> bool: return l.begins_with('{"tuning"')
+		)
+		assert_eq(tuning.size(), BoardRanges.tuning_fields().size() - 1, "one line a constant")
+		assert_has(tuning, '{"tuning": {"gravity": [0, 777.7778]}}', "a Vector2 in its own digits")
+		assert_has(tuning, '{"tuning": {"min_horizontal_speed": 16.666666666666668}}')
+		for line: String in lines:
+			assert_lt(line.length(), 100, "no long lines: " + line.left(60))
+
+	func test_changing_one_tuning_constant_is_a_one_line_diff() -> void:
+		var level := _shipped("res://levels/pachinko/classic")
+		var before := Writer.write(level).split("\n")
+		level.tuning.restitution = 0.55
+		var after := Writer.write(level).split("\n")
+		assert_eq(after.size(), before.size())
+		var changed := PackedStringArray()
+		for i in after.size():
+			if after[i] != before[i]:
+				changed.append(after[i])
+		assert_eq(Array(changed), ['{"tuning": {"restitution": 0.55}}'])
+
+	func test_the_old_one_line_tuning_still_reads_the_same() -> void:
+		var level := _shipped("res://levels/pachinko/classic")
+		var text := Writer.write(level)
+		var old_line := (
+			'{"tuning": {"ball_restitution": 0.6, "bounce_threshold": 30, "drain_slide_time": 0.5,'
+			+ ' "fixed_hz": 120, "friction_against": 0, "gravity": [0, 777.7777709960938],'
+			+ ' "max_speed": 1600, "min_horizontal_speed": 16.666666666666668, "rest_speed": 8,'
+			+ ' "restitution": 0.6, "rolling_friction": 0, "sleep_time": 0.1, "speed_cap": 0,'
+			+ ' "tangent_friction": 0.6, "tilt_gravity": 0, "wall_cap_contact": 0,'
+			+ ' "wall_restitution": 0.6}}'
+		)
+		var kept := PackedStringArray()
+		for line in text.split("\n"):
+			if line.begins_with('{"tuning": {"ball_restitution"'):
+				kept.append(old_line)
+			elif not line.begins_with('{"tuning"'):
+				kept.append(line)
+		var read := Reader.read("\n".join(kept))
+		assert_false(read.has("error"), str(read.get("error", "")))
+		if read.has("error"):
+			return
+		var old: BoardLevel = read["level"]
+		assert_eq(Writer.write(old), text, "the old form reads to the very same board")
+
+	func test_a_tuning_constant_given_twice_is_refused() -> void:
+		var text := _tiny_pachinko_text() + '{"tuning": {"restitution": 0.5}}\n'
+		assert_string_contains(_error_of(text), 'tuning "restitution" is given twice')
+
 
 class TestHostile:
 	extends "res://tests/unit/test_board_format.gd"

@@ -48,12 +48,15 @@ func test_the_factory_adds_bonus_cups_after_the_pins_and_parts_first() -> void:
 	var level := _bonus_board()
 	var world := BoardWorldFactory.build(level)
 	var plan := BonusGeometry.wall_plan(level)
-	assert_eq(plan.size(), 2 + 4, "a lid of two halves and four wings")
+	assert_eq(plan.size(), 2, "a lid of two halves")
 	assert_true(
 		world.shapes.is_wall_enabled(0) and world.shapes.is_wall_enabled(1), "the lid starts closed"
 	)
-	assert_true(world.shapes.is_wall_enabled(2), "a closed wing is solid")
-	assert_false(world.shapes.is_wall_enabled(3), "an open wing is not")
+	assert_eq(world.shapes.gate_count(), 1, "the tulip's wings are one gate")
+	assert_eq(world.shapes.get_gate_openness(0), 0.0, "shut")
+	assert_almost_eq(
+		world.shapes.get_petal_angle(0), -PI / 2.0, 1e-12, "a shut wing stands upright"
+	)
 	var pins := 0
 	for spec in level.bonus_pockets:
 		pins += BonusGeometry.rim_pins(level, spec).size()
@@ -102,12 +105,19 @@ func test_a_tulip_opens_after_a_catch_and_closes_after_the_next() -> void:
 	var machine := BonusMachine.new(level, world, 1)
 	assert_eq(machine.catch(2), 5)
 	assert_true(machine.is_open(2))
-	# Walls 0 and 1 are the lid's halves; the tulip's wings follow.
-	assert_false(world.shapes.is_wall_enabled(2), "upright wings gone")
-	assert_true(world.shapes.is_wall_enabled(3), "spread wings solid")
+	assert_true(world.shapes.is_gate_opening(0), "the wings swing open")
+	for _i in 12:
+		world.step(DT)
+	assert_between(machine.openness(2), 0.4, 0.6, "half way after half the swing")
+	for _i in 12:
+		world.step(DT)
+	assert_eq(machine.openness(2), 1.0, "spread after the whole swing")
 	machine.catch(2)
 	assert_false(machine.is_open(2))
-	assert_true(world.shapes.is_wall_enabled(2))
+	assert_false(world.shapes.is_gate_opening(0), "the wings swing shut")
+	for _i in 24:
+		world.step(DT)
+	assert_eq(machine.openness(2), 0.0)
 	assert_eq(machine.tulip_opens, 1)
 
 
@@ -118,6 +128,8 @@ func test_an_open_tulip_catches_a_ball_a_closed_one_misses() -> void:
 	var beside := TULIP + Vector2(22.0, 0.0)
 	assert_eq(_drop(world, beside), -1, "closed: a ball beside the mouth falls past")
 	machine.catch(2)
+	for _i in 30:
+		world.step(DT)
 	assert_eq(_drop(world, beside), BonusGeometry.pocket_id(level, 2), "open: the wing turns it in")
 
 

@@ -8,7 +8,6 @@ extends SceneTree
 
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
 const AppScript := preload("res://scenes/app/app.gd")
-const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
@@ -46,7 +45,9 @@ func _run() -> void:
 		printerr("maze_fps: the maze did not open")
 		quit(1)
 		return
-	var stage := (game as MazeGame).stage()
+	# the game script is not preloaded: it names the App autoload, which a -s script's
+	# preloads are compiled before
+	var stage: MazeStage = game.call("stage")
 	var defaults := _read_settings(stage)
 	var rounds := (
 		int(OS.get_environment("MAZE_FPS_ROUNDS")) if OS.has_environment("MAZE_FPS_ROUNDS") else 3

@@ -6,14 +6,23 @@ extends VBoxContainer
 ## A finished run is cached per board content (AnalysisCache), so reopening a board, or
 ## undoing back to an analysed state, shows its figures at once. The overlay itself is
 ## drawn by analysis_overlay_draw.gd when the plugin calls draw_over().
+##
+## Under the figures, the balance table (BalanceTable): every paying item's rate, payout
+## and share of the return, beside the shares of the result shown before. The cache keeps
+## counts by the board without its payouts, so a payout edit shows the new return at once
+## (ReportPayouts), with no new shots.
 
 ## The overlay should be redrawn (new figures, or none to show).
 signal redraw_needed
 ## A run finished or the shown result changed: the board's problem list may change.
 signal results_changed
+## A line of the balance table was clicked: select `item` on the board.
+signal item_picked(item: Vector2i)
 
 const OverlayDraw := preload("res://addons/board_editor/analysis/analysis_overlay_draw.gd")
 const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
+const BalanceRows := preload("res://addons/board_editor/analysis/balance_rows.gd")
+const BalanceTable := preload("res://addons/board_editor/analysis/balance_table.gd")
 ## Partial figures are refreshed at most this often while a run goes on, ms.
 const UPDATE_MS := 400
 
@@ -32,6 +41,11 @@ var _last_update := 0
 var _shown_shots := -1
 
 var _controls: Controls
+var _table: BalanceTable
+# The balance rows of the figures shown, and of the last other figures shown before them.
+var _rows: Array[BalanceRows.Row] = []
+var _before_rows: Array[BalanceRows.Row] = []
+var _before_return := NAN
 
 
 func _init() -> void:
@@ -40,26 +54,29 @@ func _init() -> void:
 		"Fire %d shots at random power on worker threads: heat map, pocket rates, aim map" % shots
 	)
 	_controls = Controls.new(self, tip, start, cancel, _on_show_toggled)
+	_table = BalanceTable.new()
+	_table.item_picked.connect(func(item: Vector2i) -> void: item_picked.emit(item))
+	add_child(_table)
 	set_process(false)
 
 
 ## Shows the analysis of `level` (null or a maze: the section hides). Called after every
-## edit: a changed board shows its cached figures, or none.
+## edit: a changed board shows its cached figures, or none; a payout edit reprices them.
 func bind(level: BoardLevel) -> void:
 	visible = level != null and level.is_pachinko()
 	_level = level if visible else null
 	var key := AnalysisCache.key_for(_plan_for(_level)) if _level != null else ""
 	if key == _key:
+		if not _report.is_empty():
+			_show_report(ReportPayouts.repriced(_report, _level), _heat)
 		return
 	_key = key
 	if _run != null and _run_key == key:
 		return  # the running analysis is of this very content: keep its partial figures
-	_report = AnalysisCache.load_report(key) if not key.is_empty() else {}
-	var image := AnalysisCache.load_heatmap(key) if not _report.is_empty() else null
-	_heat = ImageTexture.create_from_image(image) if image != null else null
-	_say_result()
-	redraw_needed.emit()
-	results_changed.emit()
+	var stored := AnalysisCache.load_report(key) if not key.is_empty() else {}
+	var image := AnalysisCache.load_heatmap(key) if not stored.is_empty() else null
+	var heat := ImageTexture.create_from_image(image) if image != null else null
+	_show_report(ReportPayouts.repriced(stored, _level), heat)
 
 
 ## Starts an analysis of the bound board (a snapshot of it: edits during the run do not
@@ -78,6 +95,9 @@ func start() -> void:
 		return
 	_run_started = Time.get_ticks_msec()
 	_shown_shots = -1
+	if not _report.is_empty():  # what the run's figures will be compared with
+		_before_rows = _rows
+		_before_return = AnalysisReport.number(_report.get("return"))
 	_controls.show_running("Climbing the rail at every power...")
 	set_process(true)
 
@@ -96,6 +116,16 @@ func is_running() -> bool:
 ## The figures shown (an AnalysisReport dictionary; empty when none).
 func report() -> Dictionary:
 	return _report
+
+
+## The balance table under the figures.
+func balance_table() -> BalanceTable:
+	return _table
+
+
+## The return of the figures shown before the current ones (NAN: none yet).
+func return_before() -> float:
+	return _before_return
 
 
 ## Draws the figures over the board (the plugin calls it from its viewport overlay).
@@ -128,9 +158,9 @@ func _show_partial(final: bool) -> void:
 	var fresh := AnalysisReport.build(_run.plan, tally, seconds)
 	var image := HeatmapImage.render_overlay(tally)
 	if _run_key == _key:
-		_report = fresh
-		_heat = ImageTexture.create_from_image(image)
-		redraw_needed.emit()
+		# Payouts edited during the run price the counts so far at once.
+		var heat := ImageTexture.create_from_image(image)
+		_show_report(ReportPayouts.repriced(fresh, _level), heat, true)
 	_controls.status.text = (
 		"%d of %d shots (%.0f shots/s)..." % [_shown_shots, _run.plan.shots, fresh["shots_per_s"]]
 	)
@@ -163,14 +193,37 @@ func _say_result() -> void:
 		_controls.status.text = "Not analysed since the last edit." if _level != null else ""
 		return
 	var dead: Array = _report.get("dead_pockets", [])
+	var before := "" if is_nan(_before_return) else " (before: %.2f)" % _before_return
 	_controls.status.text = (
-		"Return %.2f ± %.2f balls per ball; %s."
+		"Return %.2f ± %.2f balls per ball%s; %s."
 		% [
 			AnalysisReport.number(_report.get("return", 0.0)),
 			AnalysisReport.number(_report.get("return_ci95", 0.0)),
+			before,
 			"no dead pockets" if dead.is_empty() else "%d dead pocket(s)" % dead.size(),
 		]
 	)
+
+
+# Shows `report` and `heat`. When they replace other figures, those become the "before"
+# of the balance table; figures giving way to none stay the "before" of the next ones.
+# `keep_before`: a run's partial figures replace each other, not the figures before the run.
+func _show_report(figures: Dictionary, heat: ImageTexture, keep_before := false) -> void:
+	var same := figures == _report
+	if not same and not _report.is_empty() and not keep_before:
+		_before_rows = _rows
+		_before_return = AnalysisReport.number(_report.get("return"))
+	_report = figures
+	_heat = heat
+	_rows = BalanceRows.rows(_report, _level)
+	_table.show_rows(_rows, _before_rows)
+	if _run == null:
+		_say_result()
+	if same:
+		return
+	redraw_needed.emit()
+	if not keep_before:
+		results_changed.emit()  # a run's end says it once for all its partial figures
 
 
 func _plan_for(level: BoardLevel) -> AnalysisPlan:

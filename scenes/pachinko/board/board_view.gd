@@ -1,6 +1,7 @@
 extends Node2D
 ## The board in layers, bottom to top as in the chapter: back plate, fascia art, ring
-## border, launch path, gutter, pins, balls, pocket art, effects. `bind()` hands each layer
+## border and name plate, launch path, gutter, pins, balls, pocket art, effects. The board's
+## machine (`fascia`, FasciaBook) picks the art and every layer's colours. `bind()` hands each layer
 ## the board; `fit()` scales the whole board into a rectangle of the screen.
 ##
 ## The layers that never change (plate, fascia, ring, rail, gutter slot, pins) are drawn
@@ -14,6 +15,7 @@ const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
 const WinEffects := preload("res://scenes/pachinko/board/win_effects.gd")
 const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
 const WindmillLayer := preload("res://scenes/pachinko/board/windmill_layer.gd")
+const NamePlateLayer := preload("res://scenes/pachinko/board/name_plate_layer.gd")
 const FASCIA_SIZE := 1000.0
 ## How far the plate reaches beyond the ring, as a share of the ring radius.
 const PLATE_REACH := 1.1
@@ -22,8 +24,15 @@ const PLATE_MARGIN := 12.0
 ## The bake never exceeds this many pixels a side.
 const MAX_BAKE := 4096
 
+## Screen pixels the board is pushed off its fitted place (a camera nudge; zero at rest).
+var nudge := Vector2.ZERO:
+	set(value):
+		nudge = value
+		position = _fitted_position + nudge
+
 var _level: BoardLevel
 var _bake_scale := 0.0
+var _fitted_position := Vector2.ZERO
 
 @onready var bake: SubViewport = $Bake
 @onready var static_root: Node2D = $Bake/Static
@@ -52,10 +61,30 @@ func bind(rules: PachinkoRules) -> void:
 	balls.bind(rules)
 	_pin_lights().bind(rules)
 	_windmill_layer().bind(rules)
-	fascia.position = level.ring_center
-	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
+	_dress(level)
 	_bake_scale = 0.0
 	_rebake()
+
+
+# The machine the board wears (FasciaBook): its art behind the pins and its name plate.
+func _dress(level: BoardLevel) -> void:
+	var palette := FasciaBook.palette_of(level.fascia)
+	fascia.texture = FasciaBook.art_of(palette)
+	fascia.modulate = palette.art_tint
+	fascia.position = level.ring_center
+	fascia.scale = Vector2.ONE * (level.ring_radius * 2.0 / FASCIA_SIZE)
+	var plate := static_root.get_node_or_null(^"NamePlate") as NamePlateLayer
+	if plate == null:
+		plate = NamePlateLayer.new()
+		plate.name = "NamePlate"
+		static_root.add_child(plate)
+		static_root.move_child(plate, ring_border.get_index() + 1)
+	plate.setup(level)
+
+
+## The pin flashes (made by the first `bind`), for effects that light pins.
+func pin_lights() -> PinLights:
+	return _pin_lights()
 
 
 ## The pin flashes, made on first use and drawn under the balls.
@@ -85,7 +114,8 @@ func fit(level: BoardLevel, area: Rect2) -> void:
 	var half := level.ring_radius * PLATE_REACH + PLATE_MARGIN
 	var board_scale := minf(area.size.x, area.size.y) / (half * 2.0)
 	scale = Vector2.ONE * board_scale
-	position = area.get_center() - level.ring_center * board_scale
+	_fitted_position = area.get_center() - level.ring_center * board_scale
+	position = _fitted_position + nudge
 	_rebake()
 
 

@@ -1,6 +1,7 @@
 extends "res://scenes/pachinko/board/board_layer.gd"
-## Every pin of the board in one static draw: brass nail heads with a shadow and a glint,
-## special (catching) pins as PinArt's gold diamonds. Redrawn only when the board changes.
+## Every pin of the board in one static draw: nail heads in the machine's pin colours with a
+## shadow and a glint, special (catching) pins as PinArt's gold diamonds. Redrawn only when
+## the board changes.
 
 const PinArt := preload("res://scenes/board_view/pin_art.gd")
 
@@ -19,6 +20,6 @@ func _draw() -> void:
 			continue
 		draw_circle(p + shadow, r, Color(0, 0, 0, 0.55))
 		draw_circle(p, r + 0.6, Color(0.05, 0.03, 0.08, 0.8))
-		draw_circle(p, r, PinArt.HEAD_DARK)
-		draw_circle(p - Vector2(r, r) * 0.15, r * 0.75, PinArt.HEAD)
-		draw_circle(p - Vector2(r, r) * 0.35, r * 0.3, PinArt.GLINT)
+		draw_circle(p, r, _palette.pin_dark)
+		draw_circle(p - Vector2(r, r) * 0.15, r * 0.75, _palette.pin_head)
+		draw_circle(p - Vector2(r, r) * 0.35, r * 0.3, _palette.pin_glint)

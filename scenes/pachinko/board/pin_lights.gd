@@ -1,23 +1,33 @@
 extends Node2D
-## Pins light up where balls strike them: a warm glow that fades over FADE_SECONDS, brighter
-## for a harder hit. One canvas item draws every lit pin in one pass (no node per pin), with
-## additive blending, and it sleeps while nothing is lit.
+## Pins light up where something strikes them, in the colour of what struck them: a warm
+## glow for a ball, a hot pink one for a ball in a fever round, and whatever colour a bonus
+## effect asks for (`light`: a pocket's catch, the jackpot's sweep). A glow fades over
+## FADE_SECONDS, brighter for a harder hit. One canvas item draws every lit pin in one pass
+## (no node per pin), with additive blending, and it sleeps while nothing is lit.
 
 ## Seconds a full-strength flash takes to fade out.
 const FADE_SECONDS := 0.45
 ## Impact speed (px/s) that lights a pin fully; softer taps glow less (never under MIN_GLOW).
 const FULL_SPEED := 320.0
 const MIN_GLOW := 0.35
+## A ball's strike.
 const GLOW := Color(1.0, 0.82, 0.42)
+## A ball's strike while an attacker is open (fever).
+const FEVER_GLOW := Color(1.0, 0.36, 0.62)
 const CORE := Color(1.0, 0.97, 0.85)
 
 ## Pins lit at the last draw (tests and the bench read it).
 var last_lit := 0
 
+## The board's pins, then every bonus pocket's rim pins: the world's pin order.
 var _pins := PackedVector2Array()
+## The world pocket id of each pin (-1: a field pin).
+var _pocket_of := PackedInt32Array()
 var _glow := PackedFloat32Array()
+var _tint := PackedColorArray()
 var _lit := PackedInt32Array()
 var _radius := 2.2
+var _machine: BonusMachine
 
 
 func _ready() -> void:
@@ -29,10 +39,21 @@ func _ready() -> void:
 
 ## Lights the pins of `rules`' world as balls hit them.
 func bind(rules: PachinkoRules) -> void:
-	_pins = rules.level.pins
-	_radius = maxf(rules.level.pin_radius + 0.8, 2.2)
+	var level := rules.level
+	_machine = rules.bonus
+	_pins = level.pins.duplicate()
+	_pocket_of = level.pin_pocket.duplicate()
+	_pocket_of.resize(_pins.size())
+	for i in level.bonus_pockets.size():
+		var rim := BonusGeometry.rim_pins(level, level.bonus_pockets[i])
+		_pins.append_array(rim)
+		for k in rim.size():
+			_pocket_of.append(BonusGeometry.pocket_id(level, i))
+	_radius = maxf(level.pin_radius + 0.8, 2.2)
 	_glow = PackedFloat32Array()
 	_glow.resize(_pins.size())
+	_tint = PackedColorArray()
+	_tint.resize(_pins.size())
 	_lit = PackedInt32Array()
 	rules.world.pin_hit.connect(_on_pin_hit)
 	queue_redraw()
@@ -43,13 +64,43 @@ func glow_of(index: int) -> float:
 	return _glow[index] if index >= 0 and index < _glow.size() else 0.0
 
 
-func _on_pin_hit(_ball: int, pin: int, speed: float) -> void:
-	if pin < 0 or pin >= _glow.size():
+## The colour pin `index` glows in (meaningful while it glows).
+func tint_of(index: int) -> Color:
+	return _tint[index] if index >= 0 and index < _tint.size() else Color.BLACK
+
+
+## Pins this layer can light (the world's pins).
+func pin_count() -> int:
+	return _pins.size()
+
+
+## Where pin `index` is, in board pixels.
+func pin_position(index: int) -> Vector2:
+	return _pins[index]
+
+
+## Lights pin `index` in `tint` at `strength` (0..1); a brighter glow already there stays.
+func light(index: int, tint: Color, strength: float) -> void:
+	if index < 0 or index >= _glow.size() or strength <= 0.0:
 		return
-	if _glow[pin] <= 0.0:
-		_lit.append(pin)
-	_glow[pin] = maxf(_glow[pin], clampf(speed / FULL_SPEED, MIN_GLOW, 1.0))
+	if _glow[index] <= 0.0:
+		_lit.append(index)
+	if strength >= _glow[index]:
+		_tint[index] = tint
+	_glow[index] = maxf(_glow[index], minf(strength, 1.0))
 	set_process(true)
+
+
+## Lights every rim pin of world pocket `pocket_id` in `tint` (the pocket caught a ball).
+func light_pocket(pocket_id: int, tint: Color) -> void:
+	for pin in _pocket_of.size():
+		if _pocket_of[pin] == pocket_id:
+			light(pin, tint, 1.0)
+
+
+func _on_pin_hit(_ball: int, pin: int, speed: float) -> void:
+	var fever := _machine != null and _machine.any_attacker_open()
+	light(pin, FEVER_GLOW if fever else GLOW, clampf(speed / FULL_SPEED, MIN_GLOW, 1.0))
 
 
 func _process(delta: float) -> void:
@@ -68,7 +119,8 @@ func _draw() -> void:
 	for pin in _lit:
 		var a := _glow[pin]
 		var p := _pins[pin]
-		draw_circle(p, _radius * 4.5, Color(GLOW, 0.25 * a))
-		draw_circle(p, _radius * 2.6, Color(GLOW, 0.55 * a))
-		draw_circle(p, _radius * 1.3, Color(CORE, a))
+		var tint := _tint[pin]
+		draw_circle(p, _radius * 4.5, Color(tint, 0.25 * a))
+		draw_circle(p, _radius * 2.6, Color(tint, 0.55 * a))
+		draw_circle(p, _radius * 1.3, Color(CORE.lerp(tint, 0.3), a))
 	last_lit = _lit.size()

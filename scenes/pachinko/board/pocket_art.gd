@@ -1,9 +1,11 @@
 extends "res://scenes/pachinko/board/board_layer.gd"
-## Pocket art over each pocket's pins: a red and gold tulip whose cup covers the rim pins,
+## Pocket art over each pocket's pins: a tulip in the machine's petal and trim colours
+## (FasciaPalette; red and gold on Classic) whose cup covers the rim pins,
 ## a window showing the special pin (a gold diamond), and the payout written on it. A
 ## pocket glows when it catches a ball.
 
 const PinArt := preload("res://scenes/board_view/pin_art.gd")
+## Classic's pocket colours (the legend's pocket icon draws with them).
 const PETAL := Color("c0283c")
 const PETAL_LIGHT := Color("ee5a5f")
 const GOLD := Color("f2c14e")
@@ -49,6 +51,8 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 	var band := pr * 2.0 + 4.0
 	var top := spec.position
 	var bottom_center := top + Vector2(0.0, maxf(spec.depth - half, 0.0))
+	var petal_color := _palette.petal
+	var gold := _palette.pocket_trim
 	if glow > 0.0:
 		draw_circle(
 			bottom_center, half + band * (1.5 + glow * 2.0), Color(1, 0.85, 0.3, 0.35 * glow)
@@ -61,9 +65,9 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 		var a := PI - PI * float(s) / float(steps)
 		rim.append(bottom_center + Vector2(cos(a), sin(a)) * half)
 	rim.append(top + Vector2(half, -band * 0.3))
-	draw_polyline(rim, PETAL.darkened(0.4), band + 3.0, true)
-	draw_polyline(rim, PETAL, band, true)
-	draw_polyline(rim, PETAL_LIGHT, band * 0.3, true)
+	draw_polyline(rim, petal_color.darkened(0.4), band + 3.0, true)
+	draw_polyline(rim, petal_color, band, true)
+	draw_polyline(rim, _palette.petal_light, band * 0.3, true)
 	# Petals flaring out from the mouth.
 	for side: float in [-1.0, 1.0]:
 		var root := top + Vector2(side * half, -band * 0.3)
@@ -75,9 +79,9 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 				root + Vector2(-side * band * 0.2, -band * 0.6),
 			]
 		)
-		draw_colored_polygon(petal, PETAL)
+		draw_colored_polygon(petal, petal_color)
 		petal.append(petal[0])
-		draw_polyline(petal, GOLD, 1.5, true)
+		draw_polyline(petal, gold, 1.5, true)
 	# Gold leaf under the cup, and the window onto the special pin.
 	var leaf_at := top + Vector2(0.0, spec.depth + pr + band * 0.6)
 	var leaf := PackedVector2Array(
@@ -87,7 +91,7 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 			leaf_at + Vector2(half * 0.9, -band * 0.4),
 		]
 	)
-	draw_colored_polygon(leaf, GOLD.darkened(0.15))
+	draw_colored_polygon(leaf, gold.darkened(0.15))
 	var special := PocketStamp.special_position(spec)
 	draw_circle(special, pr * 2.6, Color(0.05, 0.02, 0.1, 0.85))
 	PinArt.draw_special(self, special, pr)
@@ -99,4 +103,4 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 	var base := top + Vector2(-text_size.x * 0.5, -half * 1.05 - 4.0)
 	var tag := Rect2(base + Vector2(-3.0, -text_size.y * 0.78), text_size + Vector2(6.0, 1.0))
 	draw_rect(tag, Color(0.08, 0.02, 0.06, 0.8))
-	draw_string(font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size, GOLD.lightened(0.3))
+	draw_string(font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size, gold.lightened(0.3))

@@ -46,7 +46,7 @@ func _draw() -> void:
 		var light := _light[i]
 		if open and spec.role == BonusPocketSpec.Role.ATTACKER:
 			light = maxf(light, 0.6 + 0.4 * sin(_clock * 12.0))
-		Painter.draw_pocket(self, _level, spec, open, light)
+		Painter.draw_pocket(self, _level, spec, open, light, _machine.openness(i))
 		if open and spec.role == BonusPocketSpec.Role.ATTACKER:
 			_draw_countdown(spec, i)
 

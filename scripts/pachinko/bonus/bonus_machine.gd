@@ -3,7 +3,8 @@ extends RefCounted
 ## The bonus layer of a pachinko machine, without pictures: start pockets spin the reels,
 ## a jackpot (three equal symbols) opens the attackers' lids for a while, and tulips open
 ## after a catch and close after the next. It owns no balls: PachinkoRules tells it about
-## catches (`catch`) and time (`advance`), and it switches the lids and wings in the world.
+## catches (`catch`) and time (`advance`), and it switches the lids and swings the tulips'
+## wings (the world's gates) in the world.
 ## Reel results come from a generator seeded from the game's seed, so the same seed and
 ## the same shots give the same spins, jackpots and payouts.
 
@@ -46,10 +47,13 @@ var _time_left := PackedFloat64Array()
 var _catches_left := PackedInt32Array()
 ## World wall index → [bonus pocket index, BonusGeometry.Part].
 var _walls: Array[Dictionary] = []
+## Per bonus pocket: its world gate (a tulip's wings), or -1.
+var _gates := PackedInt32Array()
 
 
 ## The bonus layer of `level` over `world` (built by BoardWorldFactory, which put the lids
-## and wings first among its walls). `rng_seed` fixes the reel results.
+## first among its walls and made the tulips' wings its gates). `rng_seed` fixes the reel
+## results.
 func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
 	_level = level
 	_world = world
@@ -58,11 +62,19 @@ func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
 	_open.resize(count)
 	_time_left.resize(count)
 	_catches_left.resize(count)
+	_gates.resize(count)
+	_gates.fill(-1)
 	if level != null and world != null:
 		_walls = BonusGeometry.wall_plan(level)
 		if _walls.size() > world.shapes.wall_count():
 			push_error("BonusMachine: the world lacks the bonus walls; lids will not move")
 			_walls.clear()
+		for i in count:
+			var gate := BonusGeometry.tulip_gate(level, i)
+			if gate >= world.shapes.gate_count():
+				push_error("BonusMachine: the world lacks the tulips' gates; wings will not move")
+				gate = -1
+			_gates[i] = gate
 	# Methods, not a lambda: a lambda would hold this machine, which holds the reels that
 	# hold the lambda, and the cycle would keep the machine and its world alive forever.
 	reels.reel_stopped.connect(_on_reel_stopped)
@@ -116,6 +128,14 @@ func advance(delta: float) -> void:
 ## True while bonus pocket `index` is open.
 func is_open(index: int) -> bool:
 	return index >= 0 and index < _open.size() and _open[index] != 0
+
+
+## How open bonus pocket `index` is as the world has it (0 shut .. 1 open): a tulip's wings
+## swing between the two, a lid is one or the other.
+func openness(index: int) -> float:
+	if index >= 0 and index < _gates.size() and _gates[index] >= 0:
+		return _world.shapes.get_gate_openness(_gates[index])
+	return 1.0 if is_open(index) else 0.0
 
 
 ## True while any attacker's lid is up (a jackpot round).
@@ -191,6 +211,8 @@ func _set_open(index: int, open: bool) -> void:
 		if entry["item"] == index:
 			var part: BonusGeometry.Part = entry["part"]
 			_world.shapes.set_wall_enabled(wall, BonusGeometry.part_solid(part, open))
+	if _gates[index] >= 0:
+		_world.shapes.set_gate_open(_gates[index], open)
 	if _is_attacker(index):
 		attacker_changed.emit(index, open)
 	else:

@@ -1,0 +1,10 @@
+extends "res://scenes/pachinko/board/board_layer.gd"
+## The machine's name plate over the top of the ring band (NamePlate), baked with the other
+## static layers.
+
+const NamePlate := preload("res://scenes/board_view/fascia/name_plate.gd")
+
+
+func _draw() -> void:
+	if _level != null:
+		NamePlate.draw(self, _level, _palette)
