@@ -20,11 +20,9 @@ const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
+const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
-## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
-## that enters a shape is then never past the shape's middle, so it leaves on its own side.
-const TRAVEL_SHARE := 0.5
 ## Safety bound on substeps for one ball in one step.
 const MAX_SUBSTEPS := 1024
 ## The hit event each surface queues on a bounce (indexed by Surface).
@@ -41,10 +39,9 @@ const EPS := ContactMath.EPS
 
 
 ## Moves the awake balls in slots from..to: each moves (_move_ball), then, still there,
-## gets its rest time or sleep and its sensor pass. Written out here rather than in a
-## call: this runs for every ball every step. With zones alone (no holes, no goals)
-## BallSensors has work only when the ball crossed a zone's edge, so that is looked for
-## first.
+## gets its rest time or sleep (BallSleep.rest_or_sleep) and its sensor pass. With zones alone (no
+## holes, no goals) BallSensors has work only when the ball crossed a zone's edge, so that
+## is looked for first.
 func move_range(from: int, to: int) -> void:
 	for i: int in range(from, to):
 		if _asleep[i] != 0:
@@ -55,17 +52,17 @@ func move_range(from: int, to: int) -> void:
 		if _v.length_squared() >= _rest_speed2:
 			_rest[i] = 0.0
 		else:
-			_rest_or_sleep(i)
+			# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would
+			# pass it.
+			BallSleep.rest_or_sleep(
+				_store, i, _dt, 0.0 if _near_wheel else _sleep_time, _settled_push
+			)
 		if not _has_sensors:
 			continue
-		var crossed: bool = not _zones_only
-		if _zones_only:
-			var mask: int = _zone_mask[i]
-			for k: int in _zone_count:
-				var zr: float = _zone_rad[k]
-				if (_p.distance_squared_to(_zone_pos[k]) <= zr * zr) != ((mask & (1 << k)) != 0):
-					crossed = true
-					break
+		var crossed: bool = (
+			not _zones_only
+			or BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad)
+		)
 		if (
 			crossed
 			and BallSensors.sense(
@@ -88,7 +85,16 @@ func _move_ball(i: int) -> void:
 	_held_a = _contact_a[i]
 	_held_b = _contact_b[i]
 	if _friction_against_gravity or _cap_per_axis:
-		_apply_seed_speed_rules()
+		_v = SpeedRules.seed_rules(
+			_v,
+			_gravity,
+			_friction_dt,
+			_dt,
+			_max_speed,
+			_cap_per_axis,
+			_friction_against_gravity,
+			_x_cap_friction_time
+		)
 	else:
 		if _has_friction:
 			# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
@@ -127,10 +133,10 @@ func _move_ball(i: int) -> void:
 				moved = true
 		# A ball no pin moved is still in cell c: an empty wall cell needs no call.
 		cell_stale = moved
-		if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
+		if _walls.has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
 			_touch_walls()
 			cell_stale = true
-		if _near_to > _near_from and not _gone and _touch_wheels((sub + 1) * _h):
+		if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
 			cell_stale = true
 		if _gone:
 			break
@@ -151,71 +157,24 @@ func _move_ball(i: int) -> void:
 		_alive[i] = 0
 
 
-## Substeps of at most the safe travel (velocity plus push, capped at half the radius),
-## more near a windmill; sets the push share of each substep.
+## Substeps of at most the safe travel: the velocity's plus the push's (ball-ball
+## separation, capped at half the radius here), more near a windmill; sets the push share
+## of each substep.
 func _substeps(push: Vector2) -> int:
-	var steps := 1
+	var travel: float = (_v * _dt).length()
 	if push != Vector2.ZERO:
-		steps = _steps_with_push(push)
-	else:
-		var travel: float = (_v * _dt).length()
-		if travel > _max_travel:
-			steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
-		_push_step = Vector2.ZERO
-	if _has_wheels:
-		steps = _wheel_steps(steps)
-	return steps
-
-
-## Substeps for a ball pushed by `push` (ball-ball separation, capped at half the radius
-## here), at most the safe travel each; sets the push share of each substep.
-func _steps_with_push(push: Vector2) -> int:
-	var push_len: float = push.length()
-	if push_len > 0.5 * _r:
-		push *= 0.5 * _r / push_len
-		push_len = 0.5 * _r
+		var push_len: float = push.length()
+		if push_len > 0.5 * _r:
+			push *= 0.5 * _r / push_len
+			push_len = 0.5 * _r
+		travel = (_v * _dt + push).length() + push_len
 	var steps := 1
-	var travel: float = (_v * _dt + push).length() + push_len
 	if travel > _max_travel:
 		steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
 	_push_step = push / steps
+	if _blades.has_wheels:
+		steps = _wheel_steps(steps)
 	return steps
-
-
-## Friction and the speed cap under the seed's options (PhysicsTuning.friction_against,
-## speed_cap).
-func _apply_seed_speed_rules() -> void:
-	if _friction_against_gravity:
-		_v = SpeedRules.friction_against_gravity(_v, _gravity * _dt, _friction_dt)
-	elif _has_friction:
-		_v -= _v.clamp(-_friction_dt, _friction_dt)
-	_v = SpeedRules.capped(_v, _max_speed, _cap_per_axis)
-	if _x_cap_friction_time > 0.0 and _dt > 0.0:
-		_v.x = SpeedRules.x_after_cap(
-			_v.x, _gravity.x, _max_speed, _friction_dt.x / _dt * _x_cap_friction_time
-		)
-
-
-## Stores the ball's contacts of this step and their normals (its supports next step),
-## then clears them for the next ball. (They are only ever set together, so a ball that
-## touched nothing leaves them clear without a call.)
-func _write_contacts(i: int) -> void:
-	_contact_a[i] = _cur_a
-	_contact_b[i] = _cur_b
-	_support_static[i] = _n_a
-	_support_static2[i] = _n_b
-	_cur_a = ContactId.NONE
-	_cur_b = ContactId.NONE
-	_n_a = Vector2.ZERO
-	_n_b = Vector2.ZERO
-
-
-## The limits that depend on the ball radius (kept while consecutive balls share one).
-func _set_radius(r: float) -> void:
-	_r = r
-	_max_travel = _g.max_travel(r, TRAVEL_SHARE)
-	_ring_lim = maxf(_g.ring_radius - r, 0.0)
-	_ring_lim2 = _ring_lim * _ring_lim
 
 
 ## Narrow phase, ring: the ball's centre stays within ring radius - r of the centre.
@@ -268,49 +227,22 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 ## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
 func _touch_walls() -> void:
 	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	var k0: int = _wall_start[cell.y * _cols + cell.x]
-	var k1: int = _wall_start[cell.y * _cols + cell.x + 1]
+	var w: WallReach = _walls
+	var k0: int = w.start[cell.y * _cols + cell.x]
+	var k1: int = w.start[cell.y * _cols + cell.x + 1]
 	for _pass: int in 3:
-		var found := 0
-		var best := -1
-		var best_depth := 0.0
-		var best_s := 0.0
-		var best_q := Vector2.ZERO
-		var best_lim := 0.0
-		for k: int in range(k0, k1):
-			var a: Vector2 = _wall_item_a[k]
-			var ab: Vector2 = _wall_item_ab[k]
-			var s: float = clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
-			var q: Vector2 = a + ab * s
-			var lim: float = _wall_item_rad[k] + _r
-			var wall_d2: float = _p.distance_squared_to(q)
-			if wall_d2 >= lim * lim:
-				continue
-			found += 1
-			var depth: float = lim - sqrt(wall_d2)
-			if depth > best_depth or best < 0:
-				best = _wall_items[k]
-				best_depth = depth
-				best_s = s
-				best_q = q
-				best_lim = lim
-		if best < 0:
+		if not w.deepest(_p, _r, k0, k1):
 			return
-		# The deepest: wall `best` at its closest point best_q (best_s along it).
-		var d: Vector2 = _p - best_q
-		var d2: float = d.length_squared()
-		var nrm := Vector2(0.0, -1.0)
-		if d2 > EPS * EPS:
-			nrm = d / sqrt(d2)
-		elif _wall_inv_len2[best] > 0.0:
-			var wall_ab: Vector2 = _wall_ab[best]
-			nrm = Vector2(wall_ab.y, -wall_ab.x).normalized()
-		var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
+		var best: int = w.best
+		var q: Vector2 = w.best_q
+		var lim: float = w.best_lim
+		var d: Vector2 = _p - q
+		var on_cap: bool = w.best_s <= 0.0 or w.best_s >= 1.0
 		var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
-		_p = best_q + nrm * best_lim
+		_p = q + w.nrm * lim
 		var id: int = (best << ContactId.KIND_BITS) | ContactId.KIND_WALL
-		respond(id, best_q, d, nrm, best_lim, surface, best)
-		if found == 1:
+		respond(id, q, d, w.nrm, lim, surface, best)
+		if w.found == 1:
 			return
 
 
@@ -393,48 +325,20 @@ func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 	return hit
 
 
-## Rest time and sleep of a ball that just moved slower than the rest speed.
-func _rest_or_sleep(i: int) -> void:
-	var rested: float = _rest[i] + _dt
-	_rest[i] = rested
-	# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would pass it.
-	if _sleep_time <= 0.0 or rested < _sleep_time or _near_to > _near_from:
-		return
-	# A ball still being pushed apart is settling; one lying on the drain arc must still drain.
-	var push: Vector2 = _push[i]
-	if push.length() >= _settled_push or _drain_time[i] != 0.0 or _drain_hits[i] != 0:
-		return
-	var on_ball: Vector2 = _support_ball[i]
-	_asleep[i] = BallStore.SLEEP_HELD if on_ball == Vector2.ZERO else BallStore.SLEEP_ON_BALLS
-	_sleep_ball_normal[i] = on_ball
-	_vel[i] = Vector2.ZERO
-
-
-## The windmills the ball being moved can reach this step (its cell's list, or every wheel
-## when it may travel past the margin they were binned with), and the substeps it then
-## needs: `steps`, or more, so that in a blade's turning frame the ball moves less than the
-## safe travel per substep even at the top speed (a blade may throw it so), with the fastest
-## reachable blade's speed added. Then no blade and no ball pass through each other.
+## The windmills the ball being moved can reach this step (see BladeReach.find_near), and
+## the substeps it then needs: `steps`, or more, so that in a blade's turning frame the
+## ball moves less than the safe travel per substep even at the top speed (a blade may
+## throw it so), with the fastest reachable blade's speed added. Then no blade and no ball
+## pass through each other.
 func _wheel_steps(steps: int) -> int:
 	var push_len: float = _push_step.length() * steps
 	var travel: float = (_v * _dt).length() + push_len
-	if travel > _wheel_margin:
-		_near_list = _all_wheels
-		_near_from = 0
-		_near_to = _all_wheels.size()
-	else:
-		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		var c: int = at.y * _cols + at.x
-		_near_list = _wheel_items
-		_near_from = _wheel_start[c]
-		_near_to = _wheel_start[c + 1]
-	if _near_to == _near_from:
+	var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+	_blades.find_near(at.y * _cols + at.x, travel)
+	_near_wheel = _blades.near_to > _blades.near_from
+	if not _near_wheel:
 		return steps
-	var fastest := 0.0
-	for k: int in range(_near_from, _near_to):
-		var m: int = _near_list[k]
-		fastest = maxf(fastest, absf(_wheel_omega[m]) * (_wheel_reach[m] + _r))
-	var relative: float = (_max_speed + fastest) * _dt + push_len
+	var relative: float = (_max_speed + _blades.fastest_near(_r)) * _dt + push_len
 	var need: int = mini(ceili(relative / _max_travel), MAX_SUBSTEPS)
 	if need <= steps:
 		return steps
@@ -448,10 +352,11 @@ func _wheel_steps(steps: int) -> int:
 ## when a blade moved the ball.
 func _touch_wheels(t: float) -> bool:
 	var touched := false
-	for k: int in range(_near_from, _near_to):
-		var m: int = _near_list[k]
-		var reach: float = _wheel_reach[m] + _r
-		if (_p - _wheel_center[m]).length_squared() >= reach * reach:
+	var b: BladeReach = _blades
+	for k: int in range(b.near_from, b.near_to):
+		var m: int = b.near_list[k]
+		var reach: float = b.reach[m] + _r
+		if (_p - b.center[m]).length_squared() >= reach * reach:
 			continue
 		for _pass: int in 2:
 			if _gone or not _touch_blade(m, t):
@@ -466,46 +371,26 @@ func _touch_wheels(t: float) -> bool:
 ## horizontal speed and is held to the top speed; a free wheel gets the opposite angular
 ## impulse (queued, added up after the step).
 func _touch_blade(m: int, t: float) -> bool:
-	var c: Vector2 = _wheel_center[m]
-	var q: Vector2 = _p - c
-	var n: int = _wheel_blades[m]
-	var pitch: float = TAU / n
-	var turn: float = _wheel_angle[m] + _wheel_omega[m] * t
-	var k: int = roundi((atan2(q.y, q.x) - turn) / pitch)
-	var dir: Vector2 = Vector2.from_angle(turn + k * pitch)
-	var blade_len: float = _wheel_length[m]
-	var s: float = clampf(q.dot(dir), 0.0, blade_len)
-	var axis: Vector2 = c + dir * s
-	var d: Vector2 = _p - axis
-	var lim: float = _wheel_blade_r[m] + _r
-	var d2: float = d.length_squared()
-	if d2 >= lim * lim:
+	var b: BladeReach = _blades
+	if not b.contact(m, t, _p, _r):
 		return false
-	var nrm := Vector2(-dir.y, dir.x)
-	if d2 > EPS * EPS:
-		nrm = d / sqrt(d2)
-	var w: float = _wheel_omega[m]
-	var rim: Vector2 = axis + nrm * _wheel_blade_r[m] - c
-	var surface_v := Vector2(-rim.y, rim.x) * w
 	var before: Vector2 = _v
-	var blade: int = posmod(k, n)
-	var id: int = (
-		((m << ContactId.BLADE_BITS | blade) << ContactId.KIND_BITS) | ContactId.KIND_BLADE
-	)
-	var surface: int = Surface.BLADE_SIDE if s > 0.0 and s < blade_len else Surface.BLADE_CAP
-	_p = axis + nrm * lim
+	var surface_v: Vector2 = b.surface_v
+	var surface: int = Surface.BLADE_SIDE if b.on_side else Surface.BLADE_CAP
+	_p = b.axis + b.nrm * b.lim
 	_v -= surface_v
-	respond(id, axis, d, nrm, lim, surface, m)
+	respond(b.id, b.axis, b.d, b.nrm, b.lim, surface, m)
 	_v += surface_v
-	var min_speed_x: float = _wheel_min_speed_x[m]
+	var min_speed_x: float = b.min_speed_x[m]
 	if absf(_v.x) < min_speed_x:
 		_v.x = min_speed_x if _v.x >= 0.0 else -min_speed_x
 	var speed2: float = _v.length_squared()
 	if speed2 > _max_speed * _max_speed:
 		_v *= _max_speed / sqrt(speed2)
-	if _wheel_free[m] != 0:
+	if b.free[m] != 0:
 		var dv: Vector2 = _v - before
-		var spin: float = (rim.y * dv.x - rim.x * dv.y) * _wheel_inv_inertia[m]
+		var rim: Vector2 = b.rim
+		var spin: float = (rim.y * dv.x - rim.x * dv.y) * b.inv_inertia[m]
 		if spin != 0.0:
 			wheel_push_index.append(m)
 			wheel_push.append(spin)

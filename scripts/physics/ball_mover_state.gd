@@ -13,6 +13,12 @@ const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
+const BladeReach := preload("res://scripts/physics/blade_reach.gd")
+const WallReach := preload("res://scripts/physics/wall_reach.gd")
+
+## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
+## that enters a shape is then never past the shape's middle, so it leaves on its own side.
+const TRAVEL_SHARE := 0.5
 
 ## This lane's events of the step, in order (see BallEvents), and its path points.
 var events := PackedInt32Array()
@@ -52,6 +58,8 @@ var _drain_time := PackedFloat32Array()
 var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
 var _cell_keys := PackedInt64Array()
+## The store itself, for the rarer per-ball work that reads it by name (BallSleep.rest_or_sleep).
+var _store: BallStore
 ## 1 for each hit event kind (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT, BLADE_HIT) some signal
 ## handler listens to: the others are not queued (on a busy board most events are hits).
 var _hits_heard := PackedByteArray([1, 1, 1, 1])
@@ -67,14 +75,9 @@ var _pin_captures := PackedByteArray()
 var _pin_tag := PackedInt32Array()
 var _pin_min_speed_x := PackedFloat64Array()
 var _wall_start := PackedInt32Array()
-var _wall_items := PackedInt32Array()
-var _wall_item_a := PackedVector2Array()
-var _wall_item_ab := PackedVector2Array()
-var _wall_item_inv := PackedFloat32Array()
-var _wall_item_rad := PackedFloat32Array()
-var _wall_ab := PackedVector2Array()
-var _wall_inv_len2 := PackedFloat32Array()
-var _has_walls := false
+## The walls as this lane sees them (see WallReach); their cell starts also as a member
+## (the substep loop reads them for every ball).
+var _walls := WallReach.new()
 var _has_ring := false
 var _ring_center := Vector2.ZERO
 var _ring_min_speed_x := 0.0
@@ -85,28 +88,10 @@ var _has_sensors := false
 var _zones_only := false
 var _zone_pos := PackedVector2Array()
 var _zone_rad := PackedFloat32Array()
-var _zone_count := 0
-# The windmills (see Windmills): their pose at the step's start, the grid of them.
-var _has_wheels := false
-var _wheel_center := PackedVector2Array()
-var _wheel_blades := PackedInt32Array()
-var _wheel_length := PackedFloat64Array()
-var _wheel_blade_r := PackedFloat64Array()
-var _wheel_reach := PackedFloat64Array()
-var _wheel_angle := PackedFloat64Array()
-var _wheel_omega := PackedFloat64Array()
-var _wheel_free := PackedByteArray()
-var _wheel_inv_inertia := PackedFloat64Array()
-var _wheel_min_speed_x := PackedFloat64Array()
-var _wheel_start := PackedInt32Array()
-var _wheel_items := PackedInt32Array()
-var _wheel_margin := 0.0
-var _all_wheels := PackedInt32Array()
-## The wheels the ball being moved can reach this step: _near_list[_near_from .. _near_to)
-## (its cell's list, or every wheel); empty on a board without windmills.
-var _near_list := PackedInt32Array()
-var _near_from := 0
-var _near_to := 0
+## The windmills as this lane sees them (see BladeReach), and whether the ball being moved
+## can reach one this step (then it substeps for the blades and never falls asleep).
+var _blades := BladeReach.new()
+var _near_wheel := false
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
@@ -177,7 +162,8 @@ func begin(
 	_hits_heard = hits_heard
 	_take_balls(b)
 	_take_geometry(g)
-	_take_wheels(wheels)
+	_blades.take(wheels)
+	_near_wheel = false
 	_gravity = gravity
 	_friction_dt = friction.max(Vector2.ZERO) * dt
 	_has_friction = _friction_dt != Vector2.ZERO
@@ -210,6 +196,7 @@ func begin(
 
 
 func _take_balls(b: BallStore) -> void:
+	_store = b
 	BallFields.take(b, self)
 	_keyed = b.keys_valid
 
@@ -225,14 +212,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_pin_tag = g.pin_tag
 	_pin_min_speed_x = g.pin_min_speed_x
 	_wall_start = g.wall_start
-	_wall_items = g.wall_items
-	_wall_item_a = g.wall_item_a
-	_wall_item_ab = g.wall_item_ab
-	_wall_item_inv = g.wall_item_inv
-	_wall_item_rad = g.wall_item_radius
-	_wall_ab = g.wall_ab
-	_wall_inv_len2 = g.wall_inv_len2
-	_has_walls = not g.wall_a.is_empty()
+	_walls.take(g)
 	_has_ring = g.has_ring
 	_ring_center = g.ring_center
 	_ring_min_speed_x = g.ring_min_speed_x
@@ -241,34 +221,32 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_zones_only = g.hole_pos.is_empty() and g.goal_pos.is_empty()
 	_zone_pos = g.zone_pos
 	_zone_rad = g.zone_radius
-	_zone_count = g.zone_pos.size()
 	_origin = g.origin
 	_inv_cell = g.inv_cell
 	_cols = g.cols
 	_last_cell = Vector2i(g.cols - 1, g.rows - 1)
 
 
-func _take_wheels(w: Windmills) -> void:
-	_has_wheels = w.count() > 0
-	if not _has_wheels:
-		return
-	_wheel_center = w.center
-	_wheel_blades = w.blades
-	_wheel_length = w.length
-	_wheel_blade_r = w.blade_radius
-	_wheel_reach = w.reach
-	_wheel_angle = w.angle
-	_wheel_omega = w.omega
-	_wheel_free = w.free
-	_wheel_inv_inertia = w.inv_inertia
-	_wheel_min_speed_x = w.min_speed_x
-	_wheel_start = w.start
-	_wheel_items = w.items
-	_wheel_margin = w.margin
-	if _all_wheels.size() != w.count():
-		_all_wheels.resize(w.count())
-		for m: int in w.count():
-			_all_wheels[m] = m
+## Stores the ball's contacts of this step and their normals (its supports next step),
+## then clears them for the next ball. (They are only ever set together, so a ball that
+## touched nothing leaves them clear without a call.)
+func _write_contacts(i: int) -> void:
+	_contact_a[i] = _cur_a
+	_contact_b[i] = _cur_b
+	_support_static[i] = _n_a
+	_support_static2[i] = _n_b
+	_cur_a = ContactId.NONE
+	_cur_b = ContactId.NONE
+	_n_a = Vector2.ZERO
+	_n_b = Vector2.ZERO
+
+
+## The limits that depend on the ball radius (kept while consecutive balls share one).
+func _set_radius(r: float) -> void:
+	_r = r
+	_max_travel = _g.max_travel(r, TRAVEL_SHARE)
+	_ring_lim = maxf(_g.ring_radius - r, 0.0)
+	_ring_lim2 = _ring_lim * _ring_lim
 
 
 ## Queues an event of `kind` for the ball being moved (see BallEvents).

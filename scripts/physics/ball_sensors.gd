@@ -7,6 +7,18 @@ const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
 
+## True when a ball now at `p` with zone bits `mask` (set for the zones it was in) has
+## crossed a zone's edge: only then has sense() work on a board with zones alone.
+static func crossed_zone_edge(
+	p: Vector2, mask: int, zone_pos: PackedVector2Array, zone_rad: PackedFloat32Array
+) -> bool:
+	for k: int in zone_pos.size():
+		var zr: float = zone_rad[k]
+		if (p.distance_squared_to(zone_pos[k]) <= zr * zr) != ((mask & (1 << k)) != 0):
+			return true
+	return false
+
+
 ## Queues the ball's sensor events in `ev` / `evs` and updates its goal and zone masks.
 ## Returns true when it fell in a hole (its centre came within the hole radius anywhere
 ## along the step's path): the caller removes it, and goals and zones are not looked at.

@@ -20,6 +20,27 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const HELD_SLACK := 1e-3
 
 
+## Rest time and sleep of ball `i`, which just moved slower than the rest speed in a step
+## of `dt` s: it rests `dt` longer, and once it has rested `sleep_time` s (0: it may not
+## sleep now) it falls asleep, unless it is still being pushed apart (by `settled_push` px
+## or more: still settling) or lies on the drain arc (it must still drain). Called by the
+## motion lanes, each for its own balls.
+static func rest_or_sleep(
+	b: BallStore, i: int, dt: float, sleep_time: float, settled_push: float
+) -> void:
+	var rested: float = b.rest[i] + dt
+	b.rest[i] = rested
+	if sleep_time <= 0.0 or rested < sleep_time:
+		return
+	var push: Vector2 = b.push[i]
+	if push.length() >= settled_push or b.drain_time[i] != 0.0 or b.drain_hits[i] != 0:
+		return
+	var on_ball: Vector2 = b.support_ball[i]
+	b.asleep[i] = BallStore.SLEEP_HELD if on_ball == Vector2.ZERO else BallStore.SLEEP_ON_BALLS
+	b.sleep_ball_normal[i] = on_ball
+	b.vel[i] = Vector2.ZERO
+
+
 ## Settles the sleepers in slots from..to for one step of `dt` s under `gravity` with
 ## per-axis rolling `friction` (px/s²; below zero counts as zero, as in the motion stage).
 ## `turned` says gravity or friction changed since the last step. A sleeper that stays gets

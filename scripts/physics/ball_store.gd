@@ -127,6 +127,15 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	return id
 
 
+## The path points recorded since the last call, {"slots", "points"} (see tracing); clears
+## them.
+func take_paths() -> Dictionary:
+	var out := {"slots": trace_ball, "points": trace_pos}
+	trace_ball = PackedInt32Array()
+	trace_pos = PackedVector2Array()
+	return out
+
+
 ## Index of a live ball by id, or -1.
 func find(id: int) -> int:
 	if id < 0 or id >= index_of.size():

@@ -16,7 +16,8 @@ extends RefCounted
 ## sensors, not games: the maze tilt (MazeTilt), the pins' minimum horizontal speed and the
 ## sensors are set from outside (BoardWorldFactory, the rules).
 
-# The signals are emitted by _emit_events() at the end of a step.
+# Emitted at the end of a step by WorldSignals (so unused here, as the warnings would say).
+@warning_ignore_start("unused_signal")
 ## A ball bounced off a pin (for sound); impact_speed is the normal speed in px/s.
 signal pin_hit(ball_id: int, pin_index: int, impact_speed: float)
 ## A ball bounced off a capsule wall.
@@ -39,6 +40,7 @@ signal ball_reached_goal(ball_id: int, goal_index: int)
 signal ball_left_goal(ball_id: int, goal_index: int)
 ## A ball's centre moved inside a zone's radius (the ball stays).
 signal ball_entered_zone(ball_id: int, zone_index: int)
+@warning_ignore_restore("unused_signal")
 
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
@@ -48,7 +50,7 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const MotionStage := preload("res://scripts/physics/motion_stage.gd")
-const BallEvents := preload("res://scripts/physics/ball_events.gd")
+const WorldSignals := preload("res://scripts/physics/world_signals.gd")
 const StageClock := preload("res://scripts/physics/stage_clock.gd")
 
 ## The physics behaviour: bumped whenever the same inputs roll the balls differently (a new
@@ -87,8 +89,8 @@ var use_zoning := true:
 ## False lets balls pass through each other (no ball-ball contacts): each ball then moves
 ## as if alone, so one world can run many independent shots at once (the play analysis).
 var ball_contacts := true
-## Worker threads the per-ball stages may use (default: every core; 1 = this thread only).
-## Any value gives the same, bit-identical results; only the speed changes.
+## Worker threads the per-ball stages may use (default: every core; 1 = this thread only);
+## any value gives bit-identical results.
 var threads: int = OS.get_processor_count():
 	set(value):
 		threads = maxi(value, 1)
@@ -105,8 +107,7 @@ var profile_cpu_time := false:
 		profile_cpu_time = value
 		_clock.cpu_time = value
 
-## The door to the world's shapes: `world.shapes.add_pin(...)`, add_wall, set_ring, ...
-## (see WorldShapes). The world owns what they add (its StaticGeometry and Windmills).
+## The door to the world's shapes (`world.shapes.add_pin(...)`): see WorldShapes.
 var shapes: WorldShapes
 
 var _geo := StaticGeometry.new()
@@ -124,8 +125,7 @@ var _accumulator := 0.0
 ## Gravity and friction of the last step: a change has each sleeper check its footing.
 var _last_gravity := Vector2.ZERO
 var _last_friction := Vector2.ZERO
-## step_count when every ball was last woken: none sleeps again for tuning.sleep_time, so a
-## ball whose rest time is already long still gets to move after a wake-up.
+## step_count when every ball was last woken: none sleeps for tuning.sleep_time after it.
 var _woken_at_step := 0
 ## True from the start of step() until its signals are out: a handler that steps the world
 ## from inside them is refused (the step would run inside another, half done).
@@ -143,15 +143,7 @@ func _init(p_tuning: PhysicsTuning = null) -> void:
 ## Bins the static shapes and the windmills into the grid. Adding shapes or bigger balls
 ## later rebuilds it.
 func build_grid() -> void:
-	var ball_radius: float = maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS)
-	_geo.kinematic_points = _wheels.bounds_points()
-	_geo.build(ball_radius, use_zoning)
-	if _wheels.count() > 0:
-		_geo.min_feature = minf(_geo.min_feature, _wheels.min_blade_radius)
-		# A ball moving at the top speed stays within this of where it started a step.
-		var travel: float = tuning.max_speed / maxf(tuning.fixed_hz, 1.0) + ball_radius
-		var grow: float = ball_radius + StaticGeometry.BIN_MARGIN
-		_wheels.bin(_geo.origin, _geo.cell, _geo.cols, _geo.rows, grow, travel)
+	shapes.bin(maxf(_balls.max_radius, MIN_GRID_BALL_RADIUS), use_zoning)
 	_balls.keys_valid = false
 	_balls.wake_all()
 
@@ -267,8 +259,7 @@ func get_ids() -> PackedInt32Array:
 ## and time, and only checks need it.
 func set_path_recording(on: bool) -> void:
 	_balls.tracing = on
-	_balls.trace_ball = PackedInt32Array()
-	_balls.trace_pos = PackedVector2Array()
+	_balls.take_paths()
 
 
 ## The points each ball passed through between its substeps since the last call, for an
@@ -276,10 +267,7 @@ func set_path_recording(on: bool) -> void:
 ## frames: {"slots": PackedInt32Array, "points": PackedVector2Array}, ordered by slot (the
 ## index in get_positions() before the step's removals) and then by time. Clears them.
 func take_step_paths() -> Dictionary:
-	var out := {"slots": _balls.trace_ball, "points": _balls.trace_pos}
-	_balls.trace_ball = PackedInt32Array()
-	_balls.trace_pos = PackedVector2Array()
-	return out
+	return _balls.take_paths()
 
 
 ## Runs one step of `dt` seconds, then emits its events in order. The stages: integrate
@@ -302,7 +290,10 @@ func step(dt: float) -> void:
 	_last_gravity = gravity
 	_last_friction = rolling_friction
 	_clock.start()
-	_integrate(dt)
+	# Integrate: this step's gravity, as one native translate of every velocity. Sleepers
+	# get it too (the sleep stage zeroes them again); rolling friction and the speed cap
+	# come in the motion stage, as each ball is read.
+	_balls.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gravity * dt) * _balls.vel
 	_clock.lap(StageClock.Stage.INTEGRATE)
 	_ball_contacts_stages(dt)
 	var t: PhysicsTuning = tuning
@@ -310,7 +301,7 @@ func step(dt: float) -> void:
 		_balls.woken = false
 		_woken_at_step = step_count
 	var may_sleep: bool = (step_count - _woken_at_step) * dt >= t.sleep_time
-	_hear_hits()
+	WorldSignals.hear_hits(self, _motion.hits_heard)
 	if _gates.count() > 0:
 		_gates.begin_step(_wheels, dt, tuning.max_speed)
 	_motion.run(tuning, gravity, rolling_friction, dt, turned, may_sleep)
@@ -327,27 +318,23 @@ func step(dt: float) -> void:
 	_clock.lap(StageClock.Stage.EVENTS, true)
 
 
-## Broad phase and ball-ball solve (see BallPairs). Off the clock, the broad phase's lanes
-## answer the even stripes as they go, and a second hand-off the odd ones; while profiling,
-## the broad phase runs alone so that each stage is timed apart (the same result).
+## Broad phase and ball-ball solve (see BallPairs): the broad phase's lanes answer the even
+## stripes as they list them, then a second hand-off answers the odd ones. The same
+## schedule whether or not the stages are timed: the clock laps at the same two points.
 func _ball_contacts_stages(dt: float) -> void:
 	var t: PhysicsTuning = tuning
 	_pairs.begin(_balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, gravity * dt)
-	if not ball_contacts:
+	if ball_contacts:
+		_pairs.find(_balls, _geo, _lanes, true)
+	else:
 		# No broad phase: the motion stage skips the keys, and they are binned again when
 		# ball contacts come back on.
 		_balls.keys_valid = false
-		_clock.lap(StageClock.Stage.BROAD_PHASE)
-	elif profile_stages:
-		_pairs.find(_balls, _geo, _lanes, false)
-		_clock.lap(StageClock.Stage.BROAD_PHASE)
-		_pairs.solve_stripes(_lanes, 0)
-		_pairs.solve_stripes(_lanes, 1)
-	else:
-		_pairs.find(_balls, _geo, _lanes, true)
+	_clock.lap(StageClock.Stage.FIND_AND_SOLVE_EVEN)
+	if ball_contacts:
 		_pairs.solve_stripes(_lanes, 1)
 	_pairs.finish(_balls)
-	_clock.lap(StageClock.Stage.BALL_SOLVE)
+	_clock.lap(StageClock.Stage.SOLVE_ODD)
 
 
 ## Feeds the accumulator and runs every whole step of 1 / tuning.fixed_hz it holds (at most
@@ -369,7 +356,8 @@ func advance(delta: float) -> int:
 
 
 ## Average wall time per step of each stage in µs since profile_stages was turned on, by
-## stage name (integrate, broad_phase, ball_solve, motion, events) plus "total".
+## stage name (StageClock.NAMES: integrate, find_and_solve_even, solve_odd, motion,
+## events) plus "total".
 func stage_times() -> Dictionary:
 	return _clock.per_step()
 
@@ -385,17 +373,6 @@ func state_hash() -> int:
 	return hash([step_count, _balls.ids, _balls.pos, _balls.vel, _balls.rest])
 
 
-## Tells the motion stage which hit events have listeners: hits are most of a busy board's
-## events, and one nobody hears need not be queued, gathered or emitted.
-func _hear_hits() -> void:
-	var heard: PackedByteArray = _motion.hits_heard
-	heard[BallEvents.Kind.PIN_HIT] = 1 if pin_hit.has_connections() else 0
-	heard[BallEvents.Kind.WALL_HIT] = 1 if wall_hit.has_connections() else 0
-	heard[BallEvents.Kind.RING_HIT] = 1 if ring_hit.has_connections() else 0
-	var blades: bool = windmill_hit.has_connections() or gate_hit.has_connections()
-	heard[BallEvents.Kind.BLADE_HIT] = 1 if blades else 0
-
-
 # Emits this step's queued events as the signals above, in the order they happened.
 func _emit_events() -> void:
 	var ev: PackedInt32Array = _events
@@ -405,35 +382,7 @@ func _emit_events() -> void:
 	# Fresh buffers first: a handler may add or remove balls (it may not step: see step()).
 	_events = PackedInt32Array()
 	_event_speed = PackedFloat32Array()
-	for e: int in evs.size():
-		var kind: int = ev[e * 3]
-		var id: int = ev[e * 3 + 1]
-		var index: int = ev[e * 3 + 2]
-		match kind:
-			BallEvents.Kind.PIN_HIT:
-				pin_hit.emit(id, index, evs[e])
-			BallEvents.Kind.WALL_HIT:
-				wall_hit.emit(id, index, evs[e])
-			BallEvents.Kind.RING_HIT:
-				ring_hit.emit(id, evs[e])
-			BallEvents.Kind.BLADE_HIT:
-				# A rotor is a windmill or a gate's petal: each signal names its own.
-				if shapes.rotor_is_petal(index):
-					gate_hit.emit(id, shapes.rotor_owner(index), evs[e])
-				else:
-					windmill_hit.emit(id, shapes.rotor_owner(index), evs[e])
-			BallEvents.Kind.CAPTURED:
-				ball_captured.emit(id, index)
-			BallEvents.Kind.DRAINED:
-				ball_drained.emit(id)
-			BallEvents.Kind.HOLE:
-				ball_fell_in_hole.emit(id, index)
-			BallEvents.Kind.GOAL:
-				ball_reached_goal.emit(id, index)
-			BallEvents.Kind.GOAL_LEFT:
-				ball_left_goal.emit(id, index)
-			BallEvents.Kind.ZONE:
-				ball_entered_zone.emit(id, index)
+	WorldSignals.emit(self, ev, evs)
 
 
 ## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.
@@ -449,10 +398,3 @@ func _inputs_ok(dt: float) -> bool:
 		push_error(problem % rolling_friction)
 		rolling_friction = Vector2.ZERO
 	return true
-
-
-## Integrate: this step's gravity, as one native translate of every velocity. Sleepers get
-## it too (the sleep stage zeroes them again); rolling friction and the speed cap come in
-## the motion stage, as each ball is read.
-func _integrate(dt: float) -> void:
-	_balls.vel = Transform2D(Vector2.RIGHT, Vector2.DOWN, gravity * dt) * _balls.vel

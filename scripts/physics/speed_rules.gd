@@ -19,6 +19,30 @@ static func friction_against_gravity(
 	)
 
 
+## Velocity `v` (this step's gravity already added) after one step of friction and the
+## speed cap under the seed's options: friction against `gravity`'s pull or against the
+## velocity (`friction_dt` per axis, px/s this step), the cap `cap` on the total speed or
+## per axis, and `x_cap_friction_time` s of x friction after the cap (see x_after_cap).
+static func seed_rules(
+	v: Vector2,
+	gravity: Vector2,
+	friction_dt: Vector2,
+	dt: float,
+	cap: float,
+	per_axis: bool,
+	against_gravity: bool,
+	x_cap_friction_time: float
+) -> Vector2:
+	if against_gravity:
+		v = friction_against_gravity(v, gravity * dt, friction_dt)
+	elif friction_dt != Vector2.ZERO:
+		v -= v.clamp(-friction_dt, friction_dt)
+	v = capped(v, cap, per_axis)
+	if x_cap_friction_time > 0.0 and dt > 0.0:
+		v.x = x_after_cap(v.x, gravity.x, cap, friction_dt.x / dt * x_cap_friction_time)
+	return v
+
+
 ## `v` with its total speed capped at `cap`, or each axis capped when `per_axis`.
 static func capped(v: Vector2, cap: float, per_axis: bool) -> Vector2:
 	if per_axis:

@@ -3,11 +3,14 @@ extends RefCounted
 ## step's time goes. Off in play: the world only laps it while BallWorld.profile_stages is
 ## on. Internal to scripts/physics.
 
-## The stages, in the order a step runs them (the sleepers are settled in the motion stage).
-enum Stage { INTEGRATE, BROAD_PHASE, BALL_SOLVE, MOTION, EVENTS }
+## The stages, in the order a step runs them, timed where the schedule the game runs
+## has its boundaries: the broad phase's lanes answer the even stripes of ball pairs as
+## they list them (FIND_AND_SOLVE_EVEN), then the odd stripes are answered (SOLVE_ODD); the
+## sleepers are settled in the motion stage.
+enum Stage { INTEGRATE, FIND_AND_SOLVE_EVEN, SOLVE_ODD, MOTION, EVENTS }
 
 ## Names of the stages, as stage_times() reports them.
-const NAMES: Array[String] = ["integrate", "broad_phase", "ball_solve", "motion", "events"]
+const NAMES: Array[String] = ["integrate", "find_and_solve_even", "solve_odd", "motion", "events"]
 
 ## Microseconds spent per stage since the last reset, and steps timed.
 var usec := PackedInt64Array()
@@ -18,6 +21,9 @@ var steps := 0
 var cpu_time := false
 ## Off: start() and lap() return at once (the world calls them every step).
 var enabled := false
+## True appends each lapped stage to `laps`, timed or not (tests compare schedules).
+var recording := false
+var laps := PackedInt32Array()
 var _mark := 0
 
 
@@ -39,6 +45,8 @@ func start() -> void:
 
 ## Charges the time since the last mark to `stage`; `step_done` counts a whole step.
 func lap(stage: int, step_done := false) -> void:
+	if recording:
+		laps.append(stage)
 	if not enabled:
 		return
 	if step_done:

@@ -35,6 +35,19 @@ func _init(
 	tuning = world_tuning
 
 
+## Bins the static shapes and the windmills into the grid for balls up to `ball_radius`
+## (every pin in one list without `zoning`; see StaticGeometry.build).
+func bin(ball_radius: float, zoning: bool) -> void:
+	_geo.kinematic_points = _wheels.bounds_points()
+	_geo.build(ball_radius, zoning)
+	if _wheels.count() > 0:
+		_geo.min_feature = minf(_geo.min_feature, _wheels.min_blade_radius)
+		# A ball moving at the top speed stays within this of where it started a step.
+		var travel: float = tuning.max_speed / maxf(tuning.fixed_hz, 1.0) + ball_radius
+		var grow: float = ball_radius + StaticGeometry.BIN_MARGIN
+		_wheels.bin(_geo.origin, _geo.cell, _geo.cols, _geo.rows, grow, travel)
+
+
 ## Adds a pin (a fixed circle). `tag` is the owner's number for it (-1: none); a pin that
 ## `captures` removes a ball that touches it and reports ball_captured(ball, tag).
 ## `min_speed_x` is the pin's material: after touching it, a ball keeps at least this

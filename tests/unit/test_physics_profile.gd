@@ -1,5 +1,8 @@
 extends GutTest
-## BallWorld.profile_stages: per-stage times for the bench, and no effect on the results.
+## BallWorld.profile_stages: per-stage times for the bench, and no effect on the results
+## or on the schedule of stages a step runs.
+
+const StageClock := preload("res://scripts/physics/stage_clock.gd")
 
 
 func _world() -> BallWorld:
@@ -20,7 +23,7 @@ func test_stage_times_cover_every_stage_while_profiling() -> void:
 	for _s: int in 30:
 		w.step(1.0 / 120.0)
 	var t: Dictionary = w.stage_times()
-	for key: String in ["integrate", "broad_phase", "ball_solve", "motion", "events"]:
+	for key: String in ["integrate", "find_and_solve_even", "solve_odd", "motion", "events"]:
 		assert_true(t.has(key), "stage %s reported" % key)
 	assert_gt(float(t["motion"]), 0.0, "moving 100 balls takes time")
 	var sum := 0.0
@@ -37,11 +40,25 @@ func test_stage_times_are_zero_when_not_profiling() -> void:
 	assert_eq(float(w.stage_times()["total"]), 0.0)
 
 
-func test_profiling_does_not_change_the_state() -> void:
+func test_profiling_does_not_change_the_state_or_the_schedule() -> void:
 	var plain := _world()
 	var timed := _world()
 	timed.profile_stages = true
+	plain.threads = 2
+	timed.threads = 2
+	plain._clock.recording = true
+	timed._clock.recording = true
 	for _s: int in 60:
 		plain.step(1.0 / 120.0)
 		timed.step(1.0 / 120.0)
 	assert_eq(timed.state_hash(), plain.state_hash())
+	assert_eq(timed._clock.laps.size(), 60 * StageClock.NAMES.size(), "every stage, every step")
+	assert_eq(timed._clock.laps, plain._clock.laps, "the profiler times the schedule play runs")
+
+
+func test_without_ball_contacts_the_schedule_keeps_its_stages() -> void:
+	var w := _world()
+	w.ball_contacts = false
+	w._clock.recording = true
+	w.step(1.0 / 120.0)
+	assert_eq(w._clock.laps, PackedInt32Array([0, 1, 2, 3, 4]))
