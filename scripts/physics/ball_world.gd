@@ -382,7 +382,7 @@ func _emit_events() -> void:
 	# Fresh buffers first: a handler may add or remove balls (it may not step: see step()).
 	_events = PackedInt32Array()
 	_event_speed = PackedFloat32Array()
-	WorldSignals.emit(self, ev, evs)
+	WorldSignals.emit(self, shapes, ev, evs)
 
 
 ## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.
