@@ -2,10 +2,19 @@
 extends VBoxContainer
 ## The dock's tool settings: the pin pattern (kind, count, spacing, rows, arc radius) and
 ## the size and payout of the next pocket placed. (A placed pocket is edited in the
-## Selection panel, PropertyPanel.)
+## Selection panel, PropertyPanel.) Only the fields the chosen pattern uses are shown.
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
+
+## The pattern fields each kind reads. An arc is placed through three points (its ends and
+## a bulge), so it takes the pin count only; its old radius field did nothing any more.
+const PATTERN_FIELDS: Dictionary[String, Array] = {
+	"row": ["count", "spacing"],
+	"lattice": ["count", "spacing", "rows"],
+	"arc": ["count"],
+	"circle": ["count", "spacing"],
+}
 
 var _session: Session
 var _kind: OptionButton
@@ -24,8 +33,7 @@ func _init() -> void:
 	_pattern_box.add_child(_kind)
 	_add_field(_pattern_box, "count", "Pins", 1, 60, 1)
 	_add_field(_pattern_box, "spacing", "Spacing (px)", 2, 200, 0.5)
-	_add_field(_pattern_box, "rows", "Rows (lattice)", 1, 40, 1)
-	_add_field(_pattern_box, "radius", "Radius (arc, px)", 5, 600, 1)
+	_add_field(_pattern_box, "rows", "Rows", 1, 40, 1)
 	_curve_box = _section("Peg curve (C)")
 	_add_field(_curve_box, "curve_count", "Pins (0: by spacing)", 0, 200, 1)
 	_add_field(_curve_box, "curve_spacing", "Spacing (px)", 4, 200, 0.5)
@@ -41,6 +49,11 @@ func bind(session: Session) -> void:
 	refresh()
 
 
+## Whether the pattern field `key` ("count", "spacing", "rows") is on show.
+func shows_pattern_field(key: String) -> bool:
+	return _fields.has(key) and (_fields[key].get_parent() as Control).visible
+
+
 ## Updates the fields from the session and the selected pocket.
 func refresh() -> void:
 	if _session == null:
@@ -54,9 +67,11 @@ func refresh() -> void:
 	_fields["curve_spacing"].set_value_no_signal(curve_spacing)
 	_pocket_box.visible = pachinko
 	_kind.select(maxi(PatternAction.KINDS.find(str(_session.pattern["kind"])), 0))
-	for key: String in ["count", "spacing", "rows", "radius"]:
+	var used: Array = PATTERN_FIELDS.get(str(_session.pattern["kind"]), [])
+	for key: String in ["count", "spacing", "rows"]:
 		var setting: float = _session.pattern[key]
 		_fields[key].set_value_no_signal(setting)
+		(_fields[key].get_parent() as Control).visible = used.has(key)
 	_fields["width"].set_value_no_signal(_session.pocket_width)
 	_fields["depth"].set_value_no_signal(_session.pocket_depth)
 	_fields["payout"].set_value_no_signal(_session.pocket_payout)
@@ -93,6 +108,7 @@ func _add_field(
 func _on_pattern_changed(index: int) -> void:
 	_session.pattern["kind"] = PatternAction.KINDS[index]
 	_session.settings_changed.emit()
+	refresh()
 
 
 func _on_field_changed(value: float, key: String) -> void:
