@@ -1,6 +1,6 @@
 @tool
 extends VBoxContainer
-## The dock's tool settings: the pin pattern (kind, count, spacing, rows, arc radius) and
+## The dock's tool settings: the pin pattern (kind, count, spacing, rows) and
 ## the size and payout of the next pocket placed. (A placed pocket is edited in the
 ## Selection panel, PropertyPanel.) Only the fields the chosen pattern uses are shown.
 
