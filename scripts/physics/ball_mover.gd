@@ -84,24 +84,7 @@ func _move_ball(i: int) -> void:
 	_gone = false
 	_held_a = _contact_a[i]
 	_held_b = _contact_b[i]
-	if _friction_against_gravity or _cap_per_axis:
-		_v = SpeedRules.seed_rules(
-			_v,
-			_gravity,
-			_friction_dt,
-			_dt,
-			_max_speed,
-			_cap_per_axis,
-			_friction_against_gravity,
-			_x_cap_friction_time
-		)
-	else:
-		if _has_friction:
-			# v - clamp(v, -f, f) slows each axis by up to f and never past zero.
-			_v -= _v.clamp(-_friction_dt, _friction_dt)
-		var speed2: float = _v.length_squared()
-		if speed2 > _max_speed * _max_speed:
-			_v *= _max_speed / sqrt(speed2)
+	_limit_speed()
 	if _radius[i] != _r:
 		_set_radius(_radius[i])
 	var steps := _substeps(_push[i])
@@ -155,6 +138,24 @@ func _move_ball(i: int) -> void:
 		_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
+
+
+## The step's friction and speed cap on _v: the seed's rules where the board asks for
+## them (friction against gravity, per-axis caps), else the plain ones.
+func _limit_speed() -> void:
+	if _friction_against_gravity or _cap_per_axis:
+		_v = SpeedRules.seed_rules(
+			_v,
+			_gravity,
+			_friction_dt,
+			_dt,
+			_max_speed,
+			_cap_per_axis,
+			_friction_against_gravity,
+			_x_cap_friction_time
+		)
+	else:
+		_v = SpeedRules.plain(_v, _friction_dt, _max_speed)
 
 
 ## Substeps of at most the safe travel: the velocity's plus the push's (ball-ball

@@ -97,9 +97,8 @@ var _inv_cell := 1.0
 var _cols := 1
 var _last_cell := Vector2i.ZERO
 var _gravity := Vector2.ZERO
-## Per-axis rolling friction for one step (px/s), and whether there is any.
+## Per-axis rolling friction for one step (px/s).
 var _friction_dt := Vector2.ZERO
-var _has_friction := false
 var _dt := 0.0
 var _max_speed := 0.0
 ## True when friction or the cap follow the seed's options (see PhysicsTuning).
@@ -166,7 +165,6 @@ func begin(
 	_near_wheel = false
 	_gravity = gravity
 	_friction_dt = friction.max(Vector2.ZERO) * dt
-	_has_friction = _friction_dt != Vector2.ZERO
 	_dt = dt
 	_max_speed = t.max_speed
 	_friction_against_gravity = t.friction_against == PhysicsTuning.FrictionAgainst.GRAVITY

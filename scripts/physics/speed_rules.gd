@@ -43,6 +43,16 @@ static func seed_rules(
 	return v
 
 
+## The plain rules: friction `friction` (per axis, this step's) slows each axis by up to it
+## and never past zero, then the speed is capped at `max_speed`.
+static func plain(v: Vector2, friction: Vector2, max_speed: float) -> Vector2:
+	var out: Vector2 = v - v.clamp(-friction, friction)
+	var speed2: float = out.length_squared()
+	if speed2 > max_speed * max_speed:
+		out *= max_speed / sqrt(speed2)
+	return out
+
+
 ## `v` with its total speed capped at `cap`, or each axis capped when `per_axis`.
 static func capped(v: Vector2, cap: float, per_axis: bool) -> Vector2:
 	if per_axis:
