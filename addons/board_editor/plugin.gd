@@ -209,16 +209,12 @@ func _on_view_framed() -> void:
 		frame_selection()
 
 
-## Selects `item` on the board and brings it into view (a line of the balance table).
+## Selects `item` on the board and frames it (a line of the balance table).
 func select_item(item: Vector2i) -> void:
 	if _session == null or not Items.is_valid(_session.level, item):
 		return
 	_session.select([item] as Array[Vector2i])
-	if is_instance_valid(_node) and _node.is_inside_tree() and is_instance_valid(_viewport_control):
-		var at := Items.position_of(_session.level, item)
-		var around := Rect2(at - Vector2(60, 60), Vector2(120, 120))
-		ViewFocus.show_area(_node.get_global_transform() * around, _viewport_control)
-	update_overlays()
+	frame_selection()
 
 
 ## True for the node this plugin edits.
