@@ -47,7 +47,7 @@ static func make_fever() -> BoardLevel:
 	var spot := Vector2(350, 215)
 	Originals.erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), CENTER)
 	history.commit(PatternAction.new(level, windmill, spot, CENTER))
-	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 2, {"symbols": 5})
+	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 3, {"symbols": 5})
 	_funnel(history, level, Vector2(350, 400), 13.0)
 	var attacker := {"open_seconds": 8.0, "open_catches": 10}
 	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 515), 64.0, 15, attacker)
@@ -59,7 +59,7 @@ static func make_fever() -> BoardLevel:
 	_bonus(history, level, ROLE.TULIP, Vector2(150, 330), 26.0, 3, {})
 	for mouth: Vector2 in [Vector2(240, 480)]:
 		Originals.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
-		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 3, CENTER))
+		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 4, CENTER))
 	return level
 
 
@@ -78,7 +78,7 @@ static func make_hanami() -> BoardLevel:
 	Originals.erase_pins_outside_field(history, level, 22.0)
 	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
-	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 2, {"symbols": 5})
+	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 3, {"symbols": 5})
 	var attacker := {"open_seconds": 8.0, "open_catches": 8}
 	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 10, attacker)
 	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 4, {})
