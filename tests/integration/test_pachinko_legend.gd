@@ -27,7 +27,7 @@ func _joined(lines: PackedStringArray) -> String:
 func test_classic_explains_only_its_pockets() -> void:
 	var lines := _lines_for("classic")
 	assert_eq(lines.size(), 1)
-	assert_string_contains(lines[0], "Pocket: a ball that drops in pays 7 balls")
+	assert_string_contains(lines[0], "Pocket: a ball that drops in pays 6 balls")
 
 
 func test_hanami_explains_its_start_pockets_attacker_and_tulips() -> void:
