@@ -18,6 +18,7 @@ const CardActionsMenu := preload("res://scenes/menu/card_actions_menu.gd")
 const LevelCard := preload("res://scenes/menu/level_card.gd")
 const Words := preload("res://scenes/menu/level_select_words.gd")
 const BoardImportQueue := preload("res://scenes/menu/board_import_queue.gd")
+const PathLabel := preload("res://scenes/menu/path_label.gd")
 const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
 ## At most this many files of a folder get a card (README "Safety"); the rest are counted.
 const MAX_LISTED := 200
@@ -44,7 +45,7 @@ var _focus: LevelSelectFocus = null
 @onready var _summary: Label = %SummaryLabel
 @onready var _status: Label = %StatusLabel
 @onready var _my_empty: Label = %MyBoardsEmpty
-@onready var _folder: Label = %FolderLabel
+@onready var _folder: PathLabel = %FolderLabel
 @onready var _back: Button = %BackButton
 @onready var _import: Button = %ImportButton
 @onready var _dialogs: Dialogs = %Dialogs
@@ -115,7 +116,7 @@ func _unhandled_input(event: InputEvent) -> void:
 
 ## Lists and loads every board file again (shipped and My boards).
 func reload() -> void:
-	_folder.text = "Folder: %s" % Words.shown_path("%s/%s" % [user_root, kind])
+	_folder.show_path("Folder: ", Words.shown_path("%s/%s" % [user_root, kind]))
 	_load_section(_shipped, BoardLoader.LEVELS_DIR)
 	_load_section(_mine, user_root)
 
