@@ -240,15 +240,7 @@ func _connect_slot(slot: LevelSlot) -> void:
 	slot.export_requested.connect(_dialogs.ask_export)
 	slot.delete_requested.connect(_dialogs.ask_delete)
 	slot.card.pressed.connect(func() -> void: App.start_game(kind, slot.card.board_path))
-	slot.card.gui_input.connect(_on_card_gui_input.bind(slot.card))
-
-
-func _on_card_gui_input(event: InputEvent, card: LevelCard) -> void:
-	var click := event as InputEventMouseButton
-	if click != null and click.pressed and click.button_index == MOUSE_BUTTON_RIGHT:
-		card.grab_focus()
-		open_card_menu(card)
-		card.accept_event()
+	slot.menu_requested.connect(open_card_menu)
 
 
 func _on_card_menu_chosen(choice: CardActionsMenu.Choice, board_path: String) -> void:
