@@ -1,8 +1,9 @@
 extends RefCounted
-## Keeps the maze side panel's text readable on the screen. The project draws a 1280 × 720
-## design stretched to the window (canvas_items), so a portrait phone or a small window
-## draws it smaller: then every label and button of the panel grows by one factor, so the
-## smallest text is still MIN_SCREEN_PX tall on the screen and the sizes keep their order.
+## Keeps a maze panel's text readable on the screen (the side panel's portrait band, the win
+## card). The project draws a 1280 × 720 design stretched to the window (canvas_items), so a
+## portrait phone or a small window draws it smaller: then every label and button of the
+## panel grows by one factor, so the smallest text is still MIN_SCREEN_PX tall on the screen
+## and the sizes keep their order.
 
 ## The smallest font size a player sees, in screen pixels.
 const MIN_SCREEN_PX := 14.0
@@ -11,6 +12,7 @@ const MIN_SCREEN_PX := 14.0
 var factor := 1.0
 
 var _designed: Dictionary = {}  # Label or Button -> its font size in the design
+var _button_sizes: Dictionary = {}  # Button -> its minimum size in the design
 
 
 ## Reads the font sizes of every label and button under `panel` as designed.
@@ -23,9 +25,12 @@ func _init(panel: Control) -> void:
 				# a copy: the scene's settings may be shared with other labels
 				label.label_settings = label.label_settings.duplicate() as LabelSettings
 			_designed[control] = font_size_of(control)
+			if control is Button:
+				_button_sizes[control] = control.custom_minimum_size
 
 
-## Grows the text for a view drawn `screen_scale` screen pixels per view unit.
+## Grows the text (and the buttons' minimum sizes with it) for a view drawn `screen_scale`
+## screen pixels per view unit.
 func apply(screen_scale: float) -> void:
 	var smallest := 1000
 	for size: int in _designed.values():
@@ -39,6 +44,9 @@ func apply(screen_scale: float) -> void:
 			label.label_settings.font_size = size
 		else:
 			control.add_theme_font_size_override("font_size", size)
+	for button: Button in _button_sizes.keys():
+		var designed_size: Vector2 = _button_sizes[button]
+		button.custom_minimum_size = (designed_size * factor).ceil()
 
 
 ## The controls whose text is kept readable (for tests).

@@ -55,3 +55,28 @@ func test_the_grown_text_keeps_off_the_board_and_on_screen() -> void:
 		assert_lte(needed.y, rect.size.y + 0.5, "%s: the panel's content fits its band" % size)
 		assert_lte(needed.x, rect.size.x + 0.5, "%s: and its column" % size)
 		game.free()
+
+
+func test_the_win_card_reads_at_14_px_and_stays_over_the_board() -> void:
+	for size: Vector2i in [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]:
+		var game := await _game_in_window(size)
+		var region: Rect2 = game.call("_layout")
+		var panel: Control = game.call("win_panel")
+		var summary := MazeWinSummary.new()
+		summary.seconds = 49.1
+		panel.call("present", summary, false, true)
+		await wait_process_frames(3)
+		var scale := game.get_viewport().get_final_transform().get_scale().y
+		var checked := 0
+		for node in panel.find_children("*", "Control", true, false):
+			if node is Label or node is Button:
+				checked += 1
+				var px := MazeSideText.font_size_of(node as Control) * scale
+				assert_gte(px, 14.0, "%s: the win card's %s is %.1f px" % [size, node.name, px])
+		assert_eq(checked, 7, "four lines and three buttons")
+		var card: Control = panel.get_child(0)
+		assert_true(
+			region.grow(0.5).encloses(card.get_global_rect()),
+			"%s: the card %s stays over the board %s" % [size, card.get_global_rect(), region]
+		)
+		game.free()
