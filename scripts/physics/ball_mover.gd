@@ -19,7 +19,6 @@ enum Surface { RING, PIN, WALL_CAP, BLADE_CAP, WALL_SIDE, BLADE_SIDE }
 const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
-const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
 const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
@@ -84,7 +83,7 @@ func _move_ball(i: int) -> void:
 	_gone = false
 	_held_a = _contact_a[i]
 	_held_b = _contact_b[i]
-	_limit_speed()
+	_v = _speed.limit(_v)
 	if _radius[i] != _r:
 		_set_radius(_radius[i])
 	var steps := _substeps(_push[i])
@@ -116,7 +115,7 @@ func _move_ball(i: int) -> void:
 				moved = true
 		# A ball no pin moved is still in cell c: an empty wall cell needs no call.
 		cell_stale = moved
-		if _walls.has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
+		if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
 			_touch_walls()
 			cell_stale = true
 		if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
@@ -138,24 +137,6 @@ func _move_ball(i: int) -> void:
 		_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
 	if _gone:
 		_alive[i] = 0
-
-
-## The step's friction and speed cap on _v: the seed's rules where the board asks for
-## them (friction against gravity, per-axis caps), else the plain ones.
-func _limit_speed() -> void:
-	if _friction_against_gravity or _cap_per_axis:
-		_v = SpeedRules.seed_rules(
-			_v,
-			_gravity,
-			_friction_dt,
-			_dt,
-			_max_speed,
-			_cap_per_axis,
-			_friction_against_gravity,
-			_x_cap_friction_time
-		)
-	else:
-		_v = SpeedRules.plain(_v, _friction_dt, _max_speed)
 
 
 ## Substeps of at most the safe travel: the velocity's plus the push's (ball-ball
@@ -225,25 +206,52 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 
 ## Narrow phase, capsule walls of the cell the ball is in now (the pins may have moved
 ## it): the deepest contact first, then again (up to three times). At a joint the flat side
-## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
+## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump. The
+## search is written out here, not called: most wall-cell balls of a maze touch a wall.
 func _touch_walls() -> void:
 	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	var w: WallReach = _walls
-	var k0: int = w.start[cell.y * _cols + cell.x]
-	var k1: int = w.start[cell.y * _cols + cell.x + 1]
+	var k0: int = _wall_start[cell.y * _cols + cell.x]
+	var k1: int = _wall_start[cell.y * _cols + cell.x + 1]
 	for _pass: int in 3:
-		if not w.deepest(_p, _r, k0, k1):
+		var best := -1
+		var found := 0
+		var best_depth := 0.0
+		var best_q := Vector2.ZERO
+		var best_s := 0.0
+		var best_lim := 0.0
+		for k: int in range(k0, k1):
+			var a: Vector2 = _wall_item_a[k]
+			var ab: Vector2 = _wall_item_ab[k]
+			var s: float = clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
+			var q: Vector2 = a + ab * s
+			var lim: float = _wall_item_rad[k] + _r
+			var d2: float = _p.distance_squared_to(q)
+			if d2 >= lim * lim:
+				continue
+			found += 1
+			var depth: float = lim - sqrt(d2)
+			if depth > best_depth or best < 0:
+				best = k
+				best_depth = depth
+				best_s = s
+				best_q = q
+				best_lim = lim
+		if best < 0:
 			return
-		var best: int = w.best
-		var q: Vector2 = w.best_q
-		var lim: float = w.best_lim
-		var d: Vector2 = _p - q
-		var on_cap: bool = w.best_s <= 0.0 or w.best_s >= 1.0
+		var wall: int = _wall_items[best]
+		var d: Vector2 = _p - best_q
+		var dist2: float = d.length_squared()
+		var nrm := Vector2(0.0, -1.0)
+		if dist2 > EPS * EPS:
+			nrm = d / sqrt(dist2)
+		elif _wall_inv_len2[wall] > 0.0:
+			nrm = Vector2(_wall_ab[wall].y, -_wall_ab[wall].x).normalized()
+		var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
 		var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
-		_p = q + w.nrm * lim
-		var id: int = (best << ContactId.KIND_BITS) | ContactId.KIND_WALL
-		respond(id, q, d, w.nrm, lim, surface, best)
-		if w.found == 1:
+		_p = best_q + nrm * best_lim
+		var id: int = (wall << ContactId.KIND_BITS) | ContactId.KIND_WALL
+		respond(id, best_q, d, nrm, best_lim, surface, wall)
+		if found == 1:
 			return
 
 
@@ -327,24 +335,17 @@ func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 
 
 ## The windmills the ball being moved can reach this step (see BladeReach.find_near), and
-## the substeps it then needs: `steps`, or more, so that in a blade's turning frame the
-## ball moves less than the safe travel per substep even at the top speed (a blade may
-## throw it so), with the fastest reachable blade's speed added. Then no blade and no ball
-## pass through each other.
+## the substeps it then needs: `steps`, or more near a wheel (BladeReach.substeps_near).
 func _wheel_steps(steps: int) -> int:
 	var push_len: float = _push_step.length() * steps
-	var travel: float = (_v * _dt).length() + push_len
 	var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	_blades.find_near(at.y * _cols + at.x, travel)
-	_near_wheel = _blades.near_to > _blades.near_from
-	if not _near_wheel:
-		return steps
-	var relative: float = (_max_speed + _blades.fastest_near(_r)) * _dt + push_len
-	var need: int = mini(ceili(relative / _max_travel), MAX_SUBSTEPS)
+	_blades.find_near(at.y * _cols + at.x, (_v * _dt).length() + push_len)
+	var need: int = _blades.substeps_near(_r, _max_speed, _dt, push_len, _max_travel)
+	_near_wheel = need > 0
 	if need <= steps:
 		return steps
-	_push_step *= float(steps) / float(need)
-	return need
+	_push_step *= float(steps) / float(mini(need, MAX_SUBSTEPS))
+	return mini(need, MAX_SUBSTEPS)
 
 
 ## Narrow phase, windmills: the blades of each reachable wheel at `t` s into the step. A
