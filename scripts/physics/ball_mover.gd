@@ -58,15 +58,13 @@ func move_range(from: int, to: int) -> void:
 			)
 		if not _has_sensors:
 			continue
-		var crossed: bool = (
-			not _zones_only
-			or BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad)
-		)
 		if (
-			crossed
-			and BallSensors.sense(
-				_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed
-			)
+			_zones_only
+			and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad)
+		):
+			continue
+		if BallSensors.sense(
+			_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed
 		):
 			_alive[i] = 0
 
@@ -83,10 +81,20 @@ func _move_ball(i: int) -> void:
 	_gone = false
 	_held_a = _contact_a[i]
 	_held_b = _contact_b[i]
-	_v = _speed.limit(_v)
+	# Rolling friction and the speed cap: SpeedRules.limit(), written out.
+	_v -= _fr_shift
+	_v -= _v.clamp(-_fr_zero, _fr_zero)
+	if _cap_per_axis:
+		_v = _v.clamp(_cap_low, _cap_high)
+	elif _v.length_squared() > _cap2:
+		_v *= _max_speed / sqrt(_v.length_squared())
 	if _radius[i] != _r:
 		_set_radius(_radius[i])
-	var steps := _substeps(_push[i])
+	# Most balls need one substep and have no push: that needs no call.
+	var steps := 1
+	_push_step = _push[i]
+	if _push_step != Vector2.ZERO or _has_wheels or (_v * _dt).length() > _max_travel:
+		steps = _substeps(_push_step)
 	_h = _dt / steps
 	_p_start = _p
 	# The cell the ball is in (for its broad-phase key), while no contact has moved it since.
@@ -154,7 +162,7 @@ func _substeps(push: Vector2) -> int:
 	if travel > _max_travel:
 		steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
 	_push_step = push / steps
-	if _blades.has_wheels:
+	if _has_wheels:
 		steps = _wheel_steps(steps)
 	return steps
 
@@ -173,12 +181,7 @@ func _touch_ring() -> void:
 	# must be free to stop and roll back, which a kept sideways speed would forbid.
 	if bounced and absf(_v.x) < _ring_min_speed_x:
 		_v.x = _ring_min_speed_x if _v.x >= 0.0 else -_ring_min_speed_x
-	if not _has_drain_arc or not _g.in_drain_arc(d):
-		return
-	if bounced:
-		_drain_hits[_i] += 1
-	_drain_time[_i] += _h
-	if _drain_hits[_i] >= _g.drain_bounces or _drain_time[_i] >= _drain_slide_time:
+	if _has_drain_arc and _g.drained(d, bounced, _i, _h, _drain_hits, _drain_time):
 		_queue(BallEvents.Kind.DRAINED, 0, 0.0)
 		_gone = true
 
@@ -216,28 +219,26 @@ func _touch_walls() -> void:
 		var best := -1
 		var found := 0
 		var best_depth := 0.0
-		var best_q := Vector2.ZERO
-		var best_s := 0.0
-		var best_lim := 0.0
 		for k: int in range(k0, k1):
 			var a: Vector2 = _wall_item_a[k]
 			var ab: Vector2 = _wall_item_ab[k]
-			var s: float = clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
-			var q: Vector2 = a + ab * s
+			var q: Vector2 = a + ab * clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
 			var lim: float = _wall_item_rad[k] + _r
 			var d2: float = _p.distance_squared_to(q)
-			if d2 >= lim * lim:
-				continue
-			found += 1
-			var depth: float = lim - sqrt(d2)
-			if depth > best_depth or best < 0:
-				best = k
-				best_depth = depth
-				best_s = s
-				best_q = q
-				best_lim = lim
+			if d2 < lim * lim:
+				found += 1
+				var depth: float = lim - sqrt(d2)
+				if best < 0 or depth > best_depth:
+					best = k
+					best_depth = depth
 		if best < 0:
 			return
+		# The deepest contact again, where on the wall it is and how far from the ball.
+		var best_a: Vector2 = _wall_item_a[best]
+		var best_ab: Vector2 = _wall_item_ab[best]
+		var best_s: float = clampf((_p - best_a).dot(best_ab) * _wall_item_inv[best], 0.0, 1.0)
+		var best_q: Vector2 = best_a + best_ab * best_s
+		var best_lim: float = _wall_item_rad[best] + _r
 		var wall: int = _wall_items[best]
 		var d: Vector2 = _p - best_q
 		var dist2: float = d.length_squared()

@@ -101,6 +101,8 @@ var _zone_rad := PackedFloat32Array()
 ## can reach one this step (then it substeps for the blades and never falls asleep).
 var _blades := BladeReach.new()
 var _near_wheel := false
+## True on a board with windmills (the substep count then looks for them).
+var _has_wheels := false
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
@@ -110,6 +112,13 @@ var _dt := 0.0
 var _max_speed := 0.0
 ## This step's rolling friction and speed cap (applied once per moving ball).
 var _speed := SpeedRules.new()
+# Its numbers, as members (see SpeedRules: BallMover applies them per ball without a call).
+var _fr_shift := Vector2.ZERO
+var _fr_zero := Vector2.ZERO
+var _cap_per_axis := false
+var _cap_low := Vector2.ZERO
+var _cap_high := Vector2.ZERO
+var _cap2 := 0.0
 var _caps_glance := false
 var _pin_e := 0.0
 var _wall_e := 0.0
@@ -120,7 +129,6 @@ var _rest_speed2 := 0.0
 var _sleep_time := 0.0
 ## A ball pushed apart by more than a resting ball moves in a step is still settling.
 var _settled_push := 0.0
-var _drain_slide_time := 0.0
 var _tracing := false
 # The ball being moved: slot, position, velocity, radius, substep time, push per substep.
 var _i := 0
@@ -166,11 +174,18 @@ func begin(
 	_take_balls(b)
 	_take_geometry(g)
 	_blades.take(wheels)
+	_has_wheels = _blades.has_wheels
 	_near_wheel = false
 	_gravity = gravity
 	_dt = dt
 	_max_speed = t.max_speed
 	_speed.prepare(t, gravity, friction.max(Vector2.ZERO) * dt, dt)
+	_fr_shift = _speed.shift
+	_fr_zero = _speed.toward_zero
+	_cap_per_axis = _speed.per_axis
+	_cap_low = _speed.low
+	_cap_high = _speed.high
+	_cap2 = _speed.cap * _speed.cap
 	_caps_glance = t.wall_cap_contact == PhysicsTuning.CapContact.GLANCE
 	_pin_e = t.restitution
 	_wall_e = t.wall_restitution
@@ -179,7 +194,6 @@ func begin(
 	_rest_speed2 = t.rest_speed * t.rest_speed
 	_sleep_time = t.sleep_time if may_sleep else 0.0
 	_settled_push = t.rest_speed * dt
-	_drain_slide_time = g.drain_slide_time
 	_tracing = b.tracing
 	_r = -1.0
 	_cur_a = ContactId.NONE
