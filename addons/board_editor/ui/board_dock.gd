@@ -97,7 +97,8 @@ func _init() -> void:
 	# it ran off the bottom of the window with the Selection fields out of reach.
 	var scroll := ScrollContainer.new()
 	scroll.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	scroll.size_flags_stretch_ratio = 1.5
+	# Most of the room goes to the panels; the problem list keeps its 150 px and a share.
+	scroll.size_flags_stretch_ratio = 4.0
 	scroll.custom_minimum_size = Vector2(0, 160)
 	scroll.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
 	add_child(scroll)
