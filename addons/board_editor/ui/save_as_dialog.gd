@@ -135,6 +135,9 @@ func _update() -> void:
 
 
 func _on_confirmed() -> void:
+	# A LineEdit reports typed text at the end of the frame: letters typed in Enter's frame
+	# are in the name but have not reached the file name yet.
+	_on_name_changed(_name_field.text)
 	if not _problem().is_empty():
 		return
 	if _new_mode:
