@@ -56,3 +56,28 @@ func test_a_file_name_typed_by_hand_is_kept() -> void:
 	dialog.hide()
 	assert_eq(_confirmed.size(), 1)
 	assert_eq(_confirmed[0][1], "zq_my_own_file")
+
+
+func test_enter_in_the_frame_of_the_typing_creates_the_board_at_once() -> void:
+	var dialog := _dialog()
+	dialog.open_new()
+	var field: LineEdit = dialog._name_field
+	field.text = "Zq All At Once"  # every letter and Enter in one frame: nothing reported
+	field.text_submitted.emit(field.text)
+	dialog.hide()
+	assert_eq(_confirmed.size(), 1, "Enter is not lost on a greyed-out Create")
+	assert_eq(_confirmed[0][1], "zq_all_at_once")
+
+
+func test_a_file_name_typed_in_the_frame_of_enter_is_kept() -> void:
+	var dialog := _dialog()
+	dialog.open_new()
+	var name_field: LineEdit = dialog._name_field
+	name_field.text = "Zq Named"
+	name_field.text_changed.emit(name_field.text)
+	var id_field: LineEdit = dialog._id_field
+	id_field.text = "zq_by_hand"
+	id_field.text_submitted.emit(id_field.text)
+	dialog.hide()
+	assert_eq(_confirmed.size(), 1)
+	assert_eq(_confirmed[0][1], "zq_by_hand")
