@@ -24,6 +24,9 @@ const LANES_PER_THREAD := 4
 var threads := 1
 
 var _crew := LaneCrew.new()
+## False in a build without threads (a single-threaded web export): there a started Thread
+## never runs, so every stage stays on the calling thread.
+var _can_thread: bool = OS.has_feature("threads")
 ## True while run() runs: the job gets no worker number.
 var _without_worker := false
 
@@ -37,7 +40,7 @@ func _notification(what: int) -> void:
 ## WorkerThreadPool task (worlds stepped side by side on every core already fill the pool;
 ## waiting there for more pool tasks could block every pool thread at once).
 func lanes_for(count: int) -> int:
-	if threads <= 1 or _in_pool_task():
+	if threads <= 1 or not _can_thread or _in_pool_task():
 		return 1
 	@warning_ignore("integer_division")  # whole lanes of at least MIN_BALLS_PER_LANE balls
 	var most_lanes := count / MIN_BALLS_PER_LANE
@@ -83,7 +86,7 @@ static func even_bounds(count: int, lanes: int) -> PackedInt32Array:
 
 func _run(job: Callable, bounds: PackedInt32Array) -> int:
 	var lanes: int = bounds.size() - 1
-	if lanes == 1 or threads <= 1 or _in_pool_task():
+	if lanes == 1 or threads <= 1 or not _can_thread or _in_pool_task():
 		for lane: int in lanes:
 			if _without_worker:
 				job.call(lane, bounds[lane], bounds[lane + 1])
