@@ -37,113 +37,107 @@ const HIT_EVENT: Array[int] = [
 const EPS := ContactMath.EPS
 
 
-## Moves the awake balls in slots from..to: each moves (_move_ball), then, still there,
-## gets its rest time or sleep (BallSleep.rest_or_sleep) and its sensor pass. With zones alone (no
-## holes, no goals) BallSensors has work only when the ball crossed a zone's edge, so that
-## is looked for first.
+## Moves the awake balls in slots from..to, one at a time in members: friction and the speed
+## cap, then substeps (each: move, then the narrow phase per shape kind), then its contacts,
+## position and broad-phase key; then, still there, its rest time or sleep and its sensor
+## pass (_after_move). Written out as one loop with the pin tests inline: a GDScript call
+## costs about as much as a contact test, so calls happen per contact and for rarer rules.
 func move_range(from: int, to: int) -> void:
 	for i: int in range(from, to):
 		if _asleep[i] != 0:
 			continue
-		_move_ball(i)
-		if _gone:
-			continue
-		if _v.length_squared() >= _rest_speed2:
-			_rest[i] = 0.0
-		else:
-			# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would
-			# pass it.
-			BallSleep.rest_or_sleep(
-				_store, i, _dt, 0.0 if _near_wheel else _sleep_time, _settled_push
-			)
-		if not _has_sensors:
-			continue
-		if (
-			_zones_only
-			and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad)
-		):
-			continue
-		if BallSensors.sense(
-			_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed
-		):
-			_alive[i] = 0
-
-
-## One ball through the step: friction and the speed cap, then substeps (each: move, then
-## the narrow phase per shape kind), then its contacts and position (move_range does the
-## rest). Leaves _gone true when the ball left the board.
-## One call per ball: the pin candidates are tested and the ball written back inline (a
-## call costs as much as a test); contacts, walls and the rarer rules call out.
-func _move_ball(i: int) -> void:
-	_i = i
-	_p = _pos[i]
-	_v = _vel[i]
-	_gone = false
-	_held_a = _contact_a[i]
-	_held_b = _contact_b[i]
-	# Rolling friction and the speed cap: SpeedRules.limit(), written out.
-	_v -= _fr_shift
-	_v -= _v.clamp(-_fr_zero, _fr_zero)
-	if _cap_per_axis:
-		_v = _v.clamp(_cap_low, _cap_high)
-	elif _v.length_squared() > _cap2:
-		_v *= _max_speed / sqrt(_v.length_squared())
-	if _radius[i] != _r:
-		_set_radius(_radius[i])
-	# Most balls need one substep and have no push: that needs no call.
-	var steps := 1
-	_push_step = _push[i]
-	if _push_step != Vector2.ZERO or _has_wheels or (_v * _dt).length() > _max_travel:
-		steps = _substeps(_push_step)
-	_h = _dt / steps
-	_p_start = _p
-	# The cell the ball is in (for its broad-phase key), while no contact has moved it since.
-	var c := 0
-	var cell_stale := true
-	for sub: int in steps:
-		if _tracing and sub > 0:
-			trace_ball.append(i)
-			trace_pos.append(_p)
-		_p += _v * _h + _push_step
-		if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
-			_touch_ring()
-		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		c = at.y * _cols + at.x
-		var k0 := 0
-		var k1: int = _pin_items.size()
-		if _zoned:
-			k0 = _pin_start[c]
-			k1 = _pin_start[c + 1]
-		var moved := false
-		for k: int in range(k0, k1):
-			var d: Vector2 = _p - _pin_item_pos[k]
-			var lim: float = _pin_item_rad[k] + _r
-			if d.length_squared() < lim * lim and not _gone:
-				_touch_pin(k, d, lim)
-				moved = true
-		# A ball no pin moved is still in cell c: an empty wall cell needs no call.
-		cell_stale = moved
-		if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
-			_touch_walls()
-			cell_stale = true
-		if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
-			cell_stale = true
-		if _gone:
-			break
-	# Write back. A ball touching nothing now or last step keeps its contact slots as they
-	# are: that saves writes for most of a flowing board.
-	if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
-		_write_contacts(i)
-	_pos[i] = _p
-	_vel[i] = _v
-	# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
-	# stale anyway (no broad phase ran: it bins every ball again before it reads them).
-	if _keyed:
-		if cell_stale:
+		_i = i
+		_p = _pos[i]
+		_v = _vel[i]
+		_gone = false
+		_held_a = _contact_a[i]
+		_held_b = _contact_b[i]
+		# Rolling friction and the speed cap: SpeedRules.limit(), written out.
+		_v -= _fr_shift
+		_v -= _v.clamp(-_fr_zero, _fr_zero)
+		if _cap_per_axis:
+			_v = _v.clamp(_cap_low, _cap_high)
+		elif _v.length_squared() > _cap2:
+			_v *= _max_speed / sqrt(_v.length_squared())
+		if _radius[i] != _r:
+			_set_radius(_radius[i])
+		# Most balls need one substep and have no push: that needs no call.
+		var steps := 1
+		_push_step = _push[i]
+		if _push_step != Vector2.ZERO or _has_wheels or (_v * _dt).length() > _max_travel:
+			steps = _substeps(_push_step)
+		_h = _dt / steps
+		_p_start = _p
+		# The cell the ball is in (for its broad-phase key), while no contact has moved it.
+		var c := 0
+		var cell_stale := true
+		for sub: int in steps:
+			if _tracing and sub > 0:
+				_trace(i)
+			_p += _v * _h + _push_step
+			if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
+				_touch_ring()
 			var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 			c = at.y * _cols + at.x
-		_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
-	if _gone:
+			var k0 := 0
+			var k1: int = _pin_items.size()
+			if _zoned:
+				k0 = _pin_start[c]
+				k1 = _pin_start[c + 1]
+			var moved := false
+			for k: int in range(k0, k1):
+				var d: Vector2 = _p - _pin_item_pos[k]
+				var lim: float = _pin_item_rad[k] + _r
+				if d.length_squared() < lim * lim and not _gone:
+					_touch_pin(k, d, lim)
+					moved = true
+			# A ball no pin moved is still in cell c: an empty wall cell needs no call.
+			cell_stale = moved
+			if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
+				_touch_walls()
+				cell_stale = true
+			if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
+				cell_stale = true
+			if _gone:
+				break
+		# Write back. A ball touching nothing now or last step keeps its contact slots as
+		# they are: that saves writes for most of a flowing board.
+		if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
+			_write_contacts(i)
+		_pos[i] = _p
+		_vel[i] = _v
+		# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
+		# stale anyway (no broad phase ran: it bins every ball again before it reads them).
+		if _keyed:
+			if cell_stale:
+				var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
+					Vector2i.ZERO, _last_cell
+				)
+				c = cell.y * _cols + cell.x
+			_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
+		if _gone:
+			_alive[i] = 0
+		elif _has_sensors or _v.length_squared() < _rest_speed2:
+			_after_move(i)
+		else:
+			_rest[i] = 0.0
+
+
+## Ball `i` after its move: its rest time or sleep (BallSleep.rest_or_sleep), then its sensor
+## pass. With zones alone (no holes, no goals) BallSensors has work only when the ball
+## crossed a zone's edge, so that is looked for first.
+func _after_move(i: int) -> void:
+	if _v.length_squared() >= _rest_speed2:
+		_rest[i] = 0.0
+	else:
+		# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would
+		# pass it.
+		BallSleep.rest_or_sleep(_store, i, _dt, 0.0 if _near_wheel else _sleep_time, _settled_push)
+	if not _has_sensors:
+		return
+	if _zones_only and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad):
+		return
+	if BallSensors.sense(_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed):
 		_alive[i] = 0
 
 

@@ -269,6 +269,13 @@ func _set_radius(r: float) -> void:
 	_ring_lim2 = _ring_lim * _ring_lim
 
 
+## Records where ball `i` is between two substeps (the swept check's path; see
+## BallStore.tracing).
+func _trace(i: int) -> void:
+	trace_ball.append(i)
+	trace_pos.append(_p)
+
+
 ## Queues an event of `kind` for the ball being moved (see BallEvents).
 func _queue(kind: int, index: int, speed: float) -> void:
 	events.append(kind)
