@@ -11,9 +11,12 @@ const CHUNK_SHOTS := 250
 const BAND_COUNT := 5
 ## Longest a ball is followed, seconds of game time, before it counts as stuck.
 const MAX_BALL_SECONDS := 20.0
-## Powers are drawn on this grid (a quarter of a point: finer than one pixel of drag), so
-## every shot of one power climbs the rail the same way and the climb is simulated once.
-const POWER_STEP := 0.25
+## Powers are drawn on the rules' own grid (hundredths of a point: what a player can fire).
+## Every shot of one power climbs the rail the same way (the climb is simulated once per
+## power) and, with no ball in its way and nothing moving, meets the pins the same way too:
+## shots that share a power are one sample, not many. So the grid must be as fine as the
+## game's, or the analysis measures a few hundred paths and calls them thousands.
+const POWER_STEP := PachinkoRules.POWER_STEP
 ## Shots the editor's Analyze button fires (and the cache's default entry).
 const EDITOR_SHOTS := 10000
 ## Side of a density grid cell in board pixels.

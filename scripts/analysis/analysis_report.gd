@@ -13,8 +13,9 @@ extends RefCounted
 ## its tally as `open_tally`). It equals return on a board without a bonus layer, and is
 ## left out for a bonus board analysed without the open run.
 
-## Report format version (bump when keys change meaning).
-const VERSION := 2
+## Report format version (bump when keys change meaning; 3: powers in hundredths, as
+## the rules fire them, so reports of the old quarter-point grid are stale).
+const VERSION := 3
 ## Rates and figures are rounded to this many decimals.
 const DECIMALS := 0.00001
 

@@ -4,6 +4,9 @@ extends RefCounted
 ## gutter and game over, over a BallWorld built from the board. Input arrives as calls
 ## (`start_game`, `press_flipper`, `drag_to`, `begin_charge`, `charge`, `release`); what
 ## happens leaves as past-tense signals. It never draws and never reads the input map.
+## It leans on its parts: the flipper's drawback (flipper_drawback.gd), the handle
+## (launch_handle.gd), the upkeep of balls in play (ball_upkeep.gd), the ledger and the
+## bonus layer.
 ##
 ## Flow (the chapter's): the instructions are up and the cup is empty; `start_game` fills
 ## the cup and loads a ball; a release with some power fires the loaded ball and the next
@@ -36,18 +39,15 @@ signal game_ended(summary: Dictionary)
 ## INSTRUCTIONS: before the first game; PLAYING; GAME_OVER: the instructions are back.
 enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibration.gd")
 const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
 const Ledger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
-const StuckWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.gd")
-const PocketJam := preload("res://scripts/pachinko/rules/pocket_jam.gd")
 const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
+const FlipperDrawback := preload("res://scripts/pachinko/rules/flipper_drawback.gd")
+const BallUpkeep := preload("res://scripts/pachinko/rules/ball_upkeep.gd")
 
 ## Power added per second while a key or button is held (full power in 1.25 s).
-const CHARGE_PER_SECOND := 80.0
-## Speed of the nudge given to a resting ball, px/s.
-const NUDGE_SPEED := 70.0
+const CHARGE_PER_SECOND := FlipperDrawback.CHARGE_PER_SECOND
 ## A shot's power is kept in whole hundredths (too fine to feel), so a replay stores it as a
 ## whole number and plays it back bit for bit.
 const POWER_STEP := 0.01
@@ -61,10 +61,14 @@ var state := State.INSTRUCTIONS
 var cup := 0
 ## True while a ball sits in the launcher.
 var loaded := false
-## Current drawback, 0..100.
-var power := 0.0
-## True between a press on the flipper (or a charge key) and its release.
-var drawing := false
+## Current drawback, 0..100 (the flipper's; read only).
+var power: float:
+	get:
+		return _drawback.power
+## True between a press on the flipper (or a charge key) and its release (read only).
+var drawing: bool:
+	get:
+		return _drawback.drawing
 ## Where every ball went (counters for the stats panel and the autoplay).
 var ledger: Ledger
 ## The bonus layer: reels, attackers, tulips (idle on a board without bonus pockets).
@@ -74,9 +78,8 @@ var bonus: BonusMachine
 var handle := LaunchHandle.new()
 
 var _in_play: Dictionary = {}
-var _origin := Vector2.ZERO
-var _watcher := StuckWatcher.new()
-var _jam := PocketJam.new()
+var _drawback := FlipperDrawback.new()
+var _upkeep := BallUpkeep.new()
 var _rng := RandomNumberGenerator.new()
 var _step_seconds := 1.0 / 60.0
 var _launch_pos := Vector2.ZERO
@@ -89,6 +92,7 @@ var _game_start: Ledger
 ## Builds the world for `board`. `rng_seed` makes the nudges repeatable.
 func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 	_rng.seed = rng_seed
+	_drawback.changed.connect(_on_drawback_changed)
 	if board == null or not board.is_pachinko() or board.ring_radius <= 0.0:
 		# Stay a harmless, empty game: every call is safe and start_game() refuses.
 		push_error("PachinkoRules: a pachinko board with a ring is needed")
@@ -131,16 +135,13 @@ func start_game() -> bool:
 func press_flipper(at: Vector2) -> bool:
 	if state != State.PLAYING:
 		return false
-	drawing = true
-	_origin = at
-	_set_power(0.0)
+	_drawback.press(at)
 	return true
 
 
 ## The pointer moved while drawing back: power is how far it went up from the press.
 func drag_to(at: Vector2) -> void:
-	if drawing:
-		_set_power(LaunchPower.power_from_drag(_origin, at))
+	_drawback.drag_to(at)
 
 
 ## A charge key or button went down: drawback begins at zero.
@@ -150,31 +151,26 @@ func begin_charge() -> bool:
 
 ## Adds charge for a held key over `delta` seconds.
 func charge(delta: float) -> void:
-	if drawing:
-		_set_power(minf(power + CHARGE_PER_SECOND * delta, LaunchPower.MAX_POWER))
+	_drawback.charge(delta)
 
 
 ## Sets the drawback directly (an analog trigger), 0..100.
 func set_power(value: float) -> void:
-	if drawing:
-		_set_power(clampf(value, 0.0, LaunchPower.MAX_POWER))
+	_drawback.set_power(value)
 
 
 ## Lets go of the flipper without firing (the game was paused mid-drawback, and the
 ## release may never arrive): power drops to zero and the next press starts afresh.
 func cancel_draw() -> void:
-	drawing = false
-	_set_power(0.0)
+	_drawback.cancel()
 
 
 ## Lets the flipper go. With some power and a loaded ball it fires; returns the new ball's
 ## id, or -1 when nothing was fired.
 func release() -> int:
-	if not drawing:
+	if not _drawback.drawing:
 		return -1
-	drawing = false
-	var shot_power := power
-	_set_power(0.0)
+	var shot_power := _drawback.release()
 	if shot_power <= 0.0:
 		return -1
 	return fire(shot_power)
@@ -297,35 +293,27 @@ func _after_steps(steps: int) -> void:
 		return
 	_reconcile()
 	var seconds := steps * _step_seconds
-	var jammed := _jam.update(level, world, _in_play.keys(), seconds)
+	var jammed := _upkeep.jammed(level, world, _in_play.keys(), seconds)
 	for id: int in jammed:
 		var pocket: int = jammed[id]
 		world.remove_ball(id)
 		_on_ball_pocketed(id, pocket)
-	for id in _watcher.update(world, _in_play.keys(), seconds):
-		_nudge(id)
+	for id in _upkeep.nudge_resting(world, _in_play.keys(), seconds, _rng):
+		ledger.nudges += 1
+		ball_nudged.emit(id)
 
 
 # A ball the world dropped without a signal would break the accounting: count it as
 # drained, keep a counter so tests catch it, and move on.
 func _reconcile() -> void:
-	if world.ball_count() == _in_play.size():
-		return
-	for id: int in _in_play.keys():
-		if not world.has_ball(id):
-			push_warning("PachinkoRules: ball %d left the world without an event" % id)
-			ledger.vanished += 1
-			ledger.drained += 1
-			_leave_play(id)
-	_check_game_over()
-
-
-func _nudge(id: int) -> void:
-	var side := -1.0 if _rng.randf() < 0.5 else 1.0
-	var push := Vector2(side * _rng.randf_range(0.5, 1.0), -0.6).normalized() * NUDGE_SPEED
-	world.set_ball_velocity(id, world.get_ball_velocity(id) + push)
-	ledger.nudges += 1
-	ball_nudged.emit(id)
+	var gone := BallUpkeep.vanished(world, _in_play.keys())
+	for id in gone:
+		push_warning("PachinkoRules: ball %d left the world without an event" % id)
+		ledger.vanished += 1
+		ledger.drained += 1
+		_leave_play(id)
+	if not gone.is_empty():
+		_check_game_over()
 
 
 func _load_next() -> void:
@@ -339,14 +327,12 @@ func _load_next() -> void:
 
 func _leave_play(id: int) -> void:
 	_in_play.erase(id)
-	_watcher.forget(id)
-	_jam.forget(id)
+	_upkeep.forget(id)
 
 
 func _check_game_over() -> void:
 	if state == State.PLAYING and cup == 0 and not loaded and _in_play.is_empty():
-		drawing = false
-		_set_power(0.0)
+		_drawback.cancel()
 		handle.let_go()
 		_set_state(State.GAME_OVER)
 		game_ended.emit(stats())
@@ -358,10 +344,8 @@ func _set_state(new_state: State) -> void:
 		state_changed.emit(state)
 
 
-func _set_power(value: float) -> void:
-	if value != power:
-		power = value
-		power_changed.emit(power)
+func _on_drawback_changed(drawn: float) -> void:
+	power_changed.emit(drawn)
 
 
 func _on_ball_pocketed(ball_id: int, pocket_id: int) -> void:
