@@ -176,32 +176,28 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> void:
 	var below_off: int = (_cols - 1) << SORT_SHIFT
 	var past_below_off: int = (_cols + 2) << SORT_SHIFT
 	var below: int = keys.bsearch((keys[from] & cell_bits) + below_off)
-	# The two runs are written out (not a loop over runs with computed bounds): most balls
-	# of a flowing board are alone, and for them the scan is two key reads.
+	# Each ball's two runs (its own cell and the next, then the three cells below) in one
+	# scan that ends at the first key past each: a lone ball, as most of a flowing board
+	# are, costs two key reads.
 	for k: int in range(from, to):
 		var key: int = keys[k]
 		var cell_key: int = key & cell_bits
 		var i: int = key & mask
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
-		var end: int = cell_key + next_off
 		var m: int = k + 1
-		while keys[m] < end:
-			var j: int = keys[m] & mask
-			var rr: float = ri + rad[j]
-			if pi.distance_squared_to(pos[j]) < rr * rr:
-				out.append(i)
-				out.append(j)
-			m += 1
-		var first_below: int = cell_key + below_off
-		while keys[below] < first_below:
-			below += 1
-		end = cell_key + past_below_off
-		m = below
-		while keys[m] < end:
-			var j: int = keys[m] & mask
-			var rr: float = ri + rad[j]
-			if pi.distance_squared_to(pos[j]) < rr * rr:
-				out.append(i)
-				out.append(j)
-			m += 1
+		var end: int = cell_key + next_off
+		for run: int in 2:
+			while keys[m] < end:
+				var j: int = keys[m] & mask
+				var rr: float = ri + rad[j]
+				if pi.distance_squared_to(pos[j]) < rr * rr:
+					out.append(i)
+					out.append(j)
+				m += 1
+			if run == 0:
+				var first_below: int = cell_key + below_off
+				while keys[below] < first_below:
+					below += 1
+				m = below
+				end = cell_key + past_below_off
