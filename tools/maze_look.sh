@@ -4,6 +4,7 @@
 # whole screen to build/look/<board>_<size>_<n>.png. A scratch user folder keeps the
 # player's own settings and best times out of it.
 #   tools/maze_look.sh garden 1280x720 [tutorial]   (tutorial: the tutorial's look setting)
+#   XVFB_NUM=64 tools/maze_look.sh ...   (the first X display number tried; 99 by default)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -22,7 +23,7 @@ if [ "$LOOK" = tutorial ]; then
 	printf '[meta]\nversion=1\n[display]\nmaze_tutorial_look=true\n' >"$USERDIR/settings.cfg"
 fi
 export XDG_DATA_HOME="$SCRATCH"
-xvfb-run -a -s "-screen 0 ${SIZE}x24" bash -c '
+xvfb-run -a -n "${XVFB_NUM:-99}" -s "-screen 0 ${SIZE}x24" bash -c '
 	timeout -s INT -k 5 32 tools/godot.sh --rendering-driver opengl3 --resolution '"$SIZE"' --position 0,0 --path . \
 		res://scenes/maze/maze_game.tscn >"'"$OUT"'/'"$BOARD"'_'"$SIZE"'.log" 2>&1 &
 	game=$!

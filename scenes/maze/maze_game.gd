@@ -16,6 +16,7 @@ const MazeNote := preload("res://scenes/maze/maze_note.gd")
 const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
 const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
 const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
+const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
@@ -48,6 +49,7 @@ var _ghost: GhostRun
 var _ghost_view := MazeGhost3D.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
+var _side_text: MazeSideText
 
 @onready var _stage: MazeStage = $Stage
 @onready var _side: VBoxContainer = $Side
@@ -228,8 +230,13 @@ func _on_won(seconds: float) -> void:
 ## board's region (screen pixels).
 func _layout() -> Rect2:
 	var view := get_viewport_rect().size
+	if _side_text == null:
+		_side_text = MazeSideText.new(_side)
 	var region: Rect2
 	if view.x >= view.y:
+		# the design's sizes: the column is as wide as they need, and wider text would push
+		# into the board (or the board shrink)
+		_side_text.apply(1.0)
 		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
 		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
 		_side.offset_left = -width - SIDE_EDGE
@@ -239,6 +246,7 @@ func _layout() -> Rect2:
 		region = Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
 		_joystick.ui_scale = minf(2.0, width / MazeJoystick.drawn_size(1.0))
 	else:
+		_side_text.apply(get_viewport().get_final_transform().get_scale().y)
 		var height := view.y * PORTRAIT_SIDE_SHARE
 		_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
 		_side.offset_left = SIDE_EDGE
@@ -248,7 +256,9 @@ func _layout() -> Rect2:
 		region = Rect2(0.0, 0.0, view.x, view.y - height)
 		# the joystick takes what the band's text leaves
 		_joystick.ui_scale = clampf(
-			(height - PORTRAIT_TEXT_HEIGHT) / MazeJoystick.drawn_size(1.0), 0.8, 2.0
+			(height - PORTRAIT_TEXT_HEIGHT * _side_text.factor) / MazeJoystick.drawn_size(1.0),
+			0.8,
+			2.0
 		)
 	_stage.set_board_region(region)
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)

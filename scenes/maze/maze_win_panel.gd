@@ -12,6 +12,7 @@ signal menu_chosen
 
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
+const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
 const INK := Color(0.129, 0.004, 0.141)
 ## The card's colour.
 const CARD := Color(0.99, 0.97, 0.94, 0.96)
@@ -23,6 +24,7 @@ var _best := Label.new()
 var _next := Button.new()
 var _retry := Button.new()
 var _menu := Button.new()
+var _text: MazeSideText  # keeps the card's text readable where the window draws it small
 
 
 func _init() -> void:
@@ -65,6 +67,8 @@ func _init() -> void:
 	_next.pressed.connect(func() -> void: next_board_chosen.emit())
 	_retry.pressed.connect(func() -> void: retry_chosen.emit())
 	_menu.pressed.connect(func() -> void: menu_chosen.emit())
+	_text = MazeSideText.new(panel)
+	resized.connect(_fit_text)
 	hide()
 
 
@@ -102,3 +106,15 @@ func _style_label(label: Label, font_size: int, alpha: float) -> void:
 	label.horizontal_alignment = HORIZONTAL_ALIGNMENT_CENTER
 	label.add_theme_font_size_override("font_size", font_size)
 	label.add_theme_color_override("font_color", Color(INK, alpha))
+
+
+## How much the card's text is grown for the screen (1: its design sizes).
+func text_factor() -> float:
+	return _text.factor
+
+
+# Grows the card's text so its smallest is MazeSideText.MIN_SCREEN_PX on the screen (the
+# card sits over the board, which leaves it room at any window size).
+func _fit_text() -> void:
+	if is_inside_tree():
+		_text.apply(get_viewport().get_final_transform().get_scale().y)

@@ -1,6 +1,7 @@
 extends RefCounted
 ## What the level select says, as a player reads it: the summary line over the cards, a
-## card's best result, the folder's real path and the keys that open a card's menu.
+## card's best result, the folder's real path, the keys line and the keys that open a
+## card's menu.
 
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 
@@ -24,6 +25,27 @@ static func summary(
 	if not_listed > 0:
 		text += "; %d more files not listed" % not_listed  # short: the line has one row
 	return text
+
+
+## The summary line for these cards (loading, broken and locked ones counted), of which
+## `mine` are the player's own.
+static func summary_of(kind: String, cards: Array[Button], mine: int, not_listed: int) -> String:
+	var broken := 0
+	var waiting := 0
+	var locked := 0
+	for card in cards:
+		waiting += 1 if card.get("loading") else 0
+		broken += 1 if not card.get("playable") and not card.get("loading") else 0
+		locked += 1 if card.get("locked") else 0
+	return summary(kind, cards.size(), mine, waiting, broken, locked, not_listed)
+
+
+## The keys line under the cards.
+static func keys_hint() -> String:
+	return (
+		"Arrows / D-pad: choose a board · Enter / A: play · %s: its menu · Esc / B: back"
+		% menu_keys()
+	)
 
 
 ## A card's best result on the board `result` loaded: maze times per mode, or pachinko balls;

@@ -2,12 +2,15 @@ extends VBoxContainer
 ## One place in the level select's grid: a board's card and, under it, what can be done with
 ## its file: export (any board) and delete (the player's own boards only). Those two buttons
 ## are for the mouse: they never take focus, so the arrows and the d-pad go card to card
-## (keys and pads reach them through the card's menu, card_actions_menu.gd).
+## (keys and pads reach them through the card's menu, card_actions_menu.gd, which a right
+## click on the card opens too).
 
 ## The player asked to export this board's file.
 signal export_requested(board_path: String)
 ## The player asked to delete this board (only offered for the player's own boards).
 signal delete_requested(board_path: String, shown_name: String)
+## The player right-clicked the card: its menu should open (the card has the focus).
+signal menu_requested(card: LevelCard)
 
 const LevelCard := preload("res://scenes/menu/level_card.gd")
 
@@ -27,6 +30,7 @@ func _init(path: String, mine: bool) -> void:
 	card = LevelCard.new()
 	card.mine = mine
 	card.show_loading(path)
+	card.gui_input.connect(_on_card_gui_input)
 	add_child(card)
 	var actions := HBoxContainer.new()
 	actions.alignment = BoxContainer.ALIGNMENT_CENTER
@@ -65,6 +69,14 @@ func export_button() -> Button:
 ## The delete button, or null on a shipped board.
 func delete_button() -> Button:
 	return _delete_button
+
+
+func _on_card_gui_input(event: InputEvent) -> void:
+	var click := event as InputEventMouseButton
+	if click != null and click.pressed and click.button_index == MOUSE_BUTTON_RIGHT:
+		card.grab_focus()
+		card.accept_event()
+		menu_requested.emit(card)
 
 
 func _shown_name() -> String:

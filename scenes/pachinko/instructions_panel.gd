@@ -7,6 +7,14 @@ extends Control
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
+## The card's smallest text (the legend's lines) is never drawn smaller than this many
+## screen pixels while the panel has room: a window that draws the game smaller than its
+## 1280 × 720 design (a portrait phone draws it at 0.56) gets the card scaled up.
+const MIN_SCREEN_PX := 14.0
+## The card's smallest font size (the legend's) in the design.
+const SMALLEST_FONT := 14.0
+## The share of the panel the scaled card may cover at most, each way.
+const MAX_COVER := 0.94
 
 ## What this board's pieces do, under the words (only at the start).
 var _legend := PieceLegend.new()
@@ -14,12 +22,20 @@ var _legend := PieceLegend.new()
 @onready var _title: Label = $Card/Margin/Box/Title
 @onready var _body: RichTextLabel = $Card/Margin/Box/Body
 @onready var _footer: Label = $Card/Margin/Box/Footer
+@onready var _card: Control = $Card
 
 
 func _ready() -> void:
 	var box := $Card/Margin/Box
 	box.add_child(_legend)
 	box.move_child(_legend, _body.get_index() + 1)
+	resized.connect(_fit_card)
+	_card.resized.connect(_fit_card)
+
+
+## How much the card is scaled up for the screen (1: drawn at its design size).
+func card_scale() -> float:
+	return _card.scale.x
 
 
 ## The first screen: how to play `level`.
@@ -100,3 +116,15 @@ func show_problem(problem: String) -> void:
 	_body.text = PlainMarkup.escape(problem)
 	_footer.text = "Press Esc for the menu"
 	visible = true
+
+
+# Scales the card about its centre so its smallest text reads at MIN_SCREEN_PX on the
+# screen, as far as the panel has room for it.
+func _fit_card() -> void:
+	if not is_inside_tree() or _card.size.x <= 0.0 or _card.size.y <= 0.0:
+		return
+	var screen_scale := get_viewport().get_final_transform().get_scale().y
+	var wanted := MIN_SCREEN_PX / (SMALLEST_FONT * maxf(screen_scale, 0.01))
+	var room := minf(size.x * MAX_COVER / _card.size.x, size.y * MAX_COVER / _card.size.y)
+	_card.pivot_offset = _card.size * 0.5
+	_card.scale = Vector2.ONE * clampf(wanted, 1.0, maxf(room, 1.0))

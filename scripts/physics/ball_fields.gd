@@ -50,7 +50,8 @@ const TABLE: Array[Array] = [
 ]
 
 ## TABLE's names as the `_name` members a stage copies them into (see take()); filled as
-## the class loads, before any lane can read it.
+## the class loads, before any lane can read it. In the Godot editor a script that is not
+## @tool never runs its static initializers, so there it stays empty (see take()).
 static var _members: Array[StringName] = _member_names()
 
 
@@ -58,11 +59,16 @@ static var _members: Array[StringName] = _member_names()
 ## `to` declares one (a stage that keeps the fields it reads in members of its own, as an
 ## indexed member read is cheaper than a named one). The arrays are shared, not copied:
 ## a lane writes the store's own buffers (see BallStore.own_buffers()).
+## In the editor (the play analysis) the names are made on each call instead: lanes on
+## several threads call this, so it never fills the shared list itself.
 static func take(from: Object, to: Object) -> void:
+	var members: Array[StringName] = (
+		_members if _members.size() == TABLE.size() else _member_names()
+	)
 	for k: int in TABLE.size():
-		if _members[k] in to:
+		if members[k] in to:
 			var name: StringName = TABLE[k][NAME]
-			to.set(_members[k], from.get(name))
+			to.set(members[k], from.get(name))
 
 
 ## An empty array of a row's type.

@@ -1,17 +1,19 @@
 extends RefCounted
 ## Splits a per-ball stage over worker threads: balls 0..n are cut into contiguous ranges
-## ("lanes"), a few per thread. The calling thread and high-priority WorkerThreadPool tasks
-## (the pool gives low-priority work only a share of its threads: one thread on two cores)
-## each take the next lane not yet taken until none is left: a pool thread that wakes late,
-## or that another program holds off its core, then leaves its share to the others instead
-## of the whole stage waiting for it. Several small lanes per thread even out the load, as
-## sleeping balls and crowded cells are not spread evenly. Internal to scripts/physics.
+## ("lanes"), a few per thread. The calling thread and the workers of a LaneCrew (threads
+## of this object's own) each take the next lane not yet taken until none is left: a
+## worker that wakes late, or that another program holds off its core, then leaves its
+## share to the others, and the stage does not wait for it. Several small lanes per thread
+## even out the load, as sleeping balls and crowded cells are not spread evenly. Internal to
+## scripts/physics.
 ##
 ## A stage run this way must read only the last state and write only its own balls (and
 ## its lane's own output buffers, merged afterwards in lane order): then the result does
 ## not depend on how many lanes there were or which thread ran which, and 1, 2 or 4 threads
 ## give bit-identical worlds. Packed arrays are shared by reference here; a stage must never
 ## resize or reassign an array that another lane writes.
+
+const LaneCrew := preload("res://scripts/physics/lane_crew.gd")
 
 ## A lane gets at least this many balls: below it, handing it out costs more than it saves.
 const MIN_BALLS_PER_LANE := 48
@@ -21,23 +23,24 @@ const LANES_PER_THREAD := 4
 ## Threads a stage may use (1 runs everything on the calling thread).
 var threads := 1
 
-var _job := Callable()
-## Lane k covers items _bounds[k] .. _bounds[k + 1].
-var _bounds := PackedInt32Array()
-var _lanes := 1
-var _workers := 1
-## The next lane nobody has taken yet, under _taking.
-var _next_lane := 0
-var _taking := Mutex.new()
+var _crew := LaneCrew.new()
+## False in a build without threads (a single-threaded web export): there a started Thread
+## never runs, so every stage stays on the calling thread.
+var _can_thread: bool = OS.has_feature("threads")
 ## True while run() runs: the job gets no worker number.
 var _without_worker := false
+
+
+func _notification(what: int) -> void:
+	if what == NOTIFICATION_PREDELETE:
+		_crew.stop()
 
 
 ## How many lanes a stage over `count` balls uses: 1 when threads is 1, and 1 inside a
 ## WorkerThreadPool task (worlds stepped side by side on every core already fill the pool;
 ## waiting there for more pool tasks could block every pool thread at once).
 func lanes_for(count: int) -> int:
-	if threads <= 1 or _in_pool_task():
+	if threads <= 1 or not _can_thread or _in_pool_task():
 		return 1
 	@warning_ignore("integer_division")  # whole lanes of at least MIN_BALLS_PER_LANE balls
 	var most_lanes := count / MIN_BALLS_PER_LANE
@@ -83,46 +86,16 @@ static func even_bounds(count: int, lanes: int) -> PackedInt32Array:
 
 func _run(job: Callable, bounds: PackedInt32Array) -> int:
 	var lanes: int = bounds.size() - 1
-	if lanes == 1 or threads <= 1 or _in_pool_task():
+	if lanes == 1 or threads <= 1 or not _can_thread or _in_pool_task():
 		for lane: int in lanes:
-			_call(job, 0, lane, bounds[lane], bounds[lane + 1])
+			if _without_worker:
+				job.call(lane, bounds[lane], bounds[lane + 1])
+			else:
+				job.call(0, lane, bounds[lane], bounds[lane + 1])
 		return lanes
-	_job = job
-	_bounds = bounds
-	_lanes = lanes
-	_workers = mini(threads, lanes)
-	_next_lane = 0
-	var task: int = WorkerThreadPool.add_group_task(
-		_run_pool_worker, _workers - 1, _workers - 1, true, "BallWorld lanes"
-	)
-	_run_lanes_of(0)
-	WorkerThreadPool.wait_for_group_task_completion(task)
-	_job = Callable()
+	_crew.run(job, bounds, mini(threads, lanes) - 1, not _without_worker)
 	return lanes
 
 
 static func _in_pool_task() -> bool:
 	return WorkerThreadPool.get_caller_task_id() >= 0 or WorkerThreadPool.get_caller_group_id() >= 0
-
-
-func _run_pool_worker(task: int) -> void:
-	_run_lanes_of(task + 1)
-
-
-## Runs lanes on `worker` (0 is the calling thread) until none is left.
-func _run_lanes_of(worker: int) -> void:
-	while true:
-		_taking.lock()
-		var lane: int = _next_lane
-		_next_lane += 1
-		_taking.unlock()
-		if lane >= _lanes:
-			return
-		_call(_job, worker, lane, _bounds[lane], _bounds[lane + 1])
-
-
-func _call(job: Callable, worker: int, lane: int, from: int, to: int) -> void:
-	if _without_worker:
-		job.call(lane, from, to)
-	else:
-		job.call(worker, lane, from, to)

@@ -19,7 +19,6 @@ enum Surface { RING, PIN, WALL_CAP, BLADE_CAP, WALL_SIDE, BLADE_SIDE }
 const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
 const ContactMath := preload("res://scripts/physics/contact_math.gd")
 const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
-const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
 const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
@@ -38,124 +37,108 @@ const HIT_EVENT: Array[int] = [
 const EPS := ContactMath.EPS
 
 
-## Moves the awake balls in slots from..to: each moves (_move_ball), then, still there,
-## gets its rest time or sleep (BallSleep.rest_or_sleep) and its sensor pass. With zones alone (no
-## holes, no goals) BallSensors has work only when the ball crossed a zone's edge, so that
-## is looked for first.
+## Moves the awake balls in slots from..to, one at a time in members: friction and the speed
+## cap, then substeps (each: move, then the narrow phase per shape kind), then its contacts,
+## position and broad-phase key; then, still there, its rest time or sleep and its sensor
+## pass (_after_move). Written out as one loop with the pin tests inline: a GDScript call
+## costs about as much as a contact test, so calls happen per contact and for rarer rules.
 func move_range(from: int, to: int) -> void:
 	for i: int in range(from, to):
 		if _asleep[i] != 0:
 			continue
-		_move_ball(i)
-		if _gone:
-			continue
-		if _v.length_squared() >= _rest_speed2:
-			_rest[i] = 0.0
-		else:
-			# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would
-			# pass it.
-			BallSleep.rest_or_sleep(
-				_store, i, _dt, 0.0 if _near_wheel else _sleep_time, _settled_push
-			)
-		if not _has_sensors:
-			continue
-		var crossed: bool = (
-			not _zones_only
-			or BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad)
-		)
-		if (
-			crossed
-			and BallSensors.sense(
-				_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed
-			)
-		):
-			_alive[i] = 0
-
-
-## One ball through the step: friction and the speed cap, then substeps (each: move, then
-## the narrow phase per shape kind), then its contacts and position (move_range does the
-## rest). Leaves _gone true when the ball left the board.
-## One call per ball: the pin candidates are tested and the ball written back inline (a
-## call costs as much as a test); contacts, walls and the rarer rules call out.
-func _move_ball(i: int) -> void:
-	_i = i
-	_p = _pos[i]
-	_v = _vel[i]
-	_gone = false
-	_held_a = _contact_a[i]
-	_held_b = _contact_b[i]
-	_limit_speed()
-	if _radius[i] != _r:
-		_set_radius(_radius[i])
-	var steps := _substeps(_push[i])
-	_h = _dt / steps
-	_p_start = _p
-	# The cell the ball is in (for its broad-phase key), while no contact has moved it since.
-	var c := 0
-	var cell_stale := true
-	for sub: int in steps:
-		if _tracing and sub > 0:
-			trace_ball.append(i)
-			trace_pos.append(_p)
-		_p += _v * _h + _push_step
-		if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
-			_touch_ring()
-		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		c = at.y * _cols + at.x
-		var k0 := 0
-		var k1: int = _pin_items.size()
-		if _zoned:
-			k0 = _pin_start[c]
-			k1 = _pin_start[c + 1]
-		var moved := false
-		for k: int in range(k0, k1):
-			var d: Vector2 = _p - _pin_item_pos[k]
-			var lim: float = _pin_item_rad[k] + _r
-			if d.length_squared() < lim * lim and not _gone:
-				_touch_pin(k, d, lim)
-				moved = true
-		# A ball no pin moved is still in cell c: an empty wall cell needs no call.
-		cell_stale = moved
-		if _walls.has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
-			_touch_walls()
-			cell_stale = true
-		if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
-			cell_stale = true
-		if _gone:
-			break
-	# Write back. A ball touching nothing now or last step keeps its contact slots as they
-	# are: that saves writes for most of a flowing board.
-	if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
-		_write_contacts(i)
-	_pos[i] = _p
-	_vel[i] = _v
-	# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
-	# stale anyway (no broad phase ran: it bins every ball again before it reads them).
-	if _keyed:
-		if cell_stale:
+		_i = i
+		_p = _pos[i]
+		_v = _vel[i]
+		_gone = false
+		_held_a = _contact_a[i]
+		_held_b = _contact_b[i]
+		# Rolling friction and the speed cap: SpeedRules.limit(), written out.
+		_v -= _fr_shift
+		_v -= _v.clamp(-_fr_zero, _fr_zero)
+		if _cap_per_axis:
+			_v = _v.clamp(_cap_low, _cap_high)
+		elif _v.length_squared() > _cap2:
+			_v *= _max_speed / sqrt(_v.length_squared())
+		if _radius[i] != _r:
+			_set_radius(_radius[i])
+		# Most balls need one substep and have no push: that needs no call.
+		var steps := 1
+		_push_step = _push[i]
+		if _push_step != Vector2.ZERO or _has_wheels or (_v * _dt).length() > _max_travel:
+			steps = _substeps(_push_step)
+		_h = _dt / steps
+		_p_start = _p
+		# The cell the ball is in (for its broad-phase key), while no contact has moved it.
+		var c := 0
+		var cell_stale := true
+		for sub: int in steps:
+			if _tracing and sub > 0:
+				_trace(i)
+			_p += _v * _h + _push_step
+			if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
+				_touch_ring()
 			var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 			c = at.y * _cols + at.x
-		_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
-	if _gone:
-		_alive[i] = 0
+			var k0 := 0
+			var k1: int = _pin_items.size()
+			if _zoned:
+				k0 = _pin_start[c]
+				k1 = _pin_start[c + 1]
+			var moved := false
+			for k: int in range(k0, k1):
+				var d: Vector2 = _p - _pin_item_pos[k]
+				var lim: float = _pin_item_rad[k] + _r
+				if d.length_squared() < lim * lim and not _gone:
+					_touch_pin(k, d, lim)
+					moved = true
+			# A ball no pin moved is still in cell c: an empty wall cell needs no call.
+			cell_stale = moved
+			if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
+				_touch_walls()
+				cell_stale = true
+			if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
+				cell_stale = true
+			if _gone:
+				break
+		# Write back. A ball touching nothing now or last step keeps its contact slots as
+		# they are: that saves writes for most of a flowing board.
+		if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
+			_write_contacts(i)
+		_pos[i] = _p
+		_vel[i] = _v
+		# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
+		# stale anyway (no broad phase ran: it bins every ball again before it reads them).
+		if _keyed:
+			if cell_stale:
+				var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
+					Vector2i.ZERO, _last_cell
+				)
+				c = cell.y * _cols + cell.x
+			_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
+		if _gone:
+			_alive[i] = 0
+		elif _has_sensors or _v.length_squared() < _rest_speed2:
+			_after_move(i)
+		else:
+			_rest[i] = 0.0
 
 
-## The step's friction and speed cap on _v: the seed's rules where the board asks for
-## them (friction against gravity, per-axis caps), else the plain ones.
-func _limit_speed() -> void:
-	if _friction_against_gravity or _cap_per_axis:
-		_v = SpeedRules.seed_rules(
-			_v,
-			_gravity,
-			_friction_dt,
-			_dt,
-			_max_speed,
-			_cap_per_axis,
-			_friction_against_gravity,
-			_x_cap_friction_time
-		)
+## Ball `i` after its move: its rest time or sleep (BallSleep.rest_or_sleep), then its sensor
+## pass. With zones alone (no holes, no goals) BallSensors has work only when the ball
+## crossed a zone's edge, so that is looked for first.
+func _after_move(i: int) -> void:
+	if _v.length_squared() >= _rest_speed2:
+		_rest[i] = 0.0
 	else:
-		_v = SpeedRules.plain(_v, _friction_dt, _max_speed)
+		# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would
+		# pass it.
+		BallSleep.rest_or_sleep(_store, i, _dt, 0.0 if _near_wheel else _sleep_time, _settled_push)
+	if not _has_sensors:
+		return
+	if _zones_only and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad):
+		return
+	if BallSensors.sense(_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed):
+		_alive[i] = 0
 
 
 ## Substeps of at most the safe travel: the velocity's plus the push's (ball-ball
@@ -173,7 +156,7 @@ func _substeps(push: Vector2) -> int:
 	if travel > _max_travel:
 		steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
 	_push_step = push / steps
-	if _blades.has_wheels:
+	if _has_wheels:
 		steps = _wheel_steps(steps)
 	return steps
 
@@ -192,12 +175,7 @@ func _touch_ring() -> void:
 	# must be free to stop and roll back, which a kept sideways speed would forbid.
 	if bounced and absf(_v.x) < _ring_min_speed_x:
 		_v.x = _ring_min_speed_x if _v.x >= 0.0 else -_ring_min_speed_x
-	if not _has_drain_arc or not _g.in_drain_arc(d):
-		return
-	if bounced:
-		_drain_hits[_i] += 1
-	_drain_time[_i] += _h
-	if _drain_hits[_i] >= _g.drain_bounces or _drain_time[_i] >= _drain_slide_time:
+	if _has_drain_arc and _g.drained(d, bounced, _i, _h, _drain_hits, _drain_time):
 		_queue(BallEvents.Kind.DRAINED, 0, 0.0)
 		_gone = true
 
@@ -225,25 +203,50 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 
 ## Narrow phase, capsule walls of the cell the ball is in now (the pins may have moved
 ## it): the deepest contact first, then again (up to three times). At a joint the flat side
-## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump.
+## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump. The
+## search is written out here, not called: most wall-cell balls of a maze touch a wall.
 func _touch_walls() -> void:
 	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	var w: WallReach = _walls
-	var k0: int = w.start[cell.y * _cols + cell.x]
-	var k1: int = w.start[cell.y * _cols + cell.x + 1]
+	var k0: int = _wall_start[cell.y * _cols + cell.x]
+	var k1: int = _wall_start[cell.y * _cols + cell.x + 1]
 	for _pass: int in 3:
-		if not w.deepest(_p, _r, k0, k1):
+		var best := -1
+		var found := 0
+		var best_depth := 0.0
+		for k: int in range(k0, k1):
+			var a: Vector2 = _wall_item_a[k]
+			var ab: Vector2 = _wall_item_ab[k]
+			var q: Vector2 = a + ab * clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
+			var lim: float = _wall_item_rad[k] + _r
+			var d2: float = _p.distance_squared_to(q)
+			if d2 < lim * lim:
+				found += 1
+				var depth: float = lim - sqrt(d2)
+				if best < 0 or depth > best_depth:
+					best = k
+					best_depth = depth
+		if best < 0:
 			return
-		var best: int = w.best
-		var q: Vector2 = w.best_q
-		var lim: float = w.best_lim
-		var d: Vector2 = _p - q
-		var on_cap: bool = w.best_s <= 0.0 or w.best_s >= 1.0
+		# The deepest contact again, where on the wall it is and how far from the ball.
+		var best_a: Vector2 = _wall_item_a[best]
+		var best_ab: Vector2 = _wall_item_ab[best]
+		var best_s: float = clampf((_p - best_a).dot(best_ab) * _wall_item_inv[best], 0.0, 1.0)
+		var best_q: Vector2 = best_a + best_ab * best_s
+		var best_lim: float = _wall_item_rad[best] + _r
+		var wall: int = _wall_items[best]
+		var d: Vector2 = _p - best_q
+		var dist2: float = d.length_squared()
+		var nrm := Vector2(0.0, -1.0)
+		if dist2 > EPS * EPS:
+			nrm = d / sqrt(dist2)
+		elif _wall_inv_len2[wall] > 0.0:
+			nrm = Vector2(_wall_ab[wall].y, -_wall_ab[wall].x).normalized()
+		var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
 		var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
-		_p = q + w.nrm * lim
-		var id: int = (best << ContactId.KIND_BITS) | ContactId.KIND_WALL
-		respond(id, q, d, w.nrm, lim, surface, best)
-		if w.found == 1:
+		_p = best_q + nrm * best_lim
+		var id: int = (wall << ContactId.KIND_BITS) | ContactId.KIND_WALL
+		respond(id, best_q, d, nrm, best_lim, surface, wall)
+		if found == 1:
 			return
 
 
@@ -327,24 +330,17 @@ func _glance(id: int, nrm: Vector2, vn: float, index: int) -> bool:
 
 
 ## The windmills the ball being moved can reach this step (see BladeReach.find_near), and
-## the substeps it then needs: `steps`, or more, so that in a blade's turning frame the
-## ball moves less than the safe travel per substep even at the top speed (a blade may
-## throw it so), with the fastest reachable blade's speed added. Then no blade and no ball
-## pass through each other.
+## the substeps it then needs: `steps`, or more near a wheel (BladeReach.substeps_near).
 func _wheel_steps(steps: int) -> int:
 	var push_len: float = _push_step.length() * steps
-	var travel: float = (_v * _dt).length() + push_len
 	var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	_blades.find_near(at.y * _cols + at.x, travel)
-	_near_wheel = _blades.near_to > _blades.near_from
-	if not _near_wheel:
-		return steps
-	var relative: float = (_max_speed + _blades.fastest_near(_r)) * _dt + push_len
-	var need: int = mini(ceili(relative / _max_travel), MAX_SUBSTEPS)
+	_blades.find_near(at.y * _cols + at.x, (_v * _dt).length() + push_len)
+	var need: int = _blades.substeps_near(_r, _max_speed, _dt, push_len, _max_travel)
+	_near_wheel = need > 0
 	if need <= steps:
 		return steps
-	_push_step *= float(steps) / float(need)
-	return need
+	_push_step *= float(steps) / float(mini(need, MAX_SUBSTEPS))
+	return mini(need, MAX_SUBSTEPS)
 
 
 ## Narrow phase, windmills: the blades of each reachable wheel at `t` s into the step. A

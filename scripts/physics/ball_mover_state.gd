@@ -14,7 +14,7 @@ const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
 const BladeReach := preload("res://scripts/physics/blade_reach.gd")
-const WallReach := preload("res://scripts/physics/wall_reach.gd")
+const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
 
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.
@@ -75,9 +75,18 @@ var _pin_captures := PackedByteArray()
 var _pin_tag := PackedInt32Array()
 var _pin_min_speed_x := PackedFloat64Array()
 var _wall_start := PackedInt32Array()
-## The walls as this lane sees them (see WallReach); their cell starts also as a member
-## (the substep loop reads them for every ball).
-var _walls := WallReach.new()
+# The capsule walls of each grid cell: entries _wall_start[c] .. _wall_start[c + 1] of the
+# _wall_item_* lists (the wall's index, its end a, a to b, 1 / |ab|², radius); the walls'
+# own a to b and 1 / |ab|² by wall index. Copied as members: the narrow phase reads them
+# per substep, and a member is one indexed read where another object's field is a lookup.
+var _has_walls := false
+var _wall_items := PackedInt32Array()
+var _wall_item_a := PackedVector2Array()
+var _wall_item_ab := PackedVector2Array()
+var _wall_item_inv := PackedFloat32Array()
+var _wall_item_rad := PackedFloat32Array()
+var _wall_ab := PackedVector2Array()
+var _wall_inv_len2 := PackedFloat32Array()
 var _has_ring := false
 var _ring_center := Vector2.ZERO
 var _ring_min_speed_x := 0.0
@@ -92,20 +101,24 @@ var _zone_rad := PackedFloat32Array()
 ## can reach one this step (then it substeps for the blades and never falls asleep).
 var _blades := BladeReach.new()
 var _near_wheel := false
+## True on a board with windmills (the substep count then looks for them).
+var _has_wheels := false
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
 var _last_cell := Vector2i.ZERO
 var _gravity := Vector2.ZERO
-## Per-axis rolling friction for one step (px/s).
-var _friction_dt := Vector2.ZERO
 var _dt := 0.0
 var _max_speed := 0.0
-## True when friction or the cap follow the seed's options (see PhysicsTuning).
-var _friction_against_gravity := false
-## Seconds of x friction that come off after the per-axis cap (PhysicsTuning.x_cap_friction_time).
-var _x_cap_friction_time := 0.0
+## This step's rolling friction and speed cap (applied once per moving ball).
+var _speed := SpeedRules.new()
+# Its numbers, as members (see SpeedRules: BallMover applies them per ball without a call).
+var _fr_shift := Vector2.ZERO
+var _fr_zero := Vector2.ZERO
 var _cap_per_axis := false
+var _cap_low := Vector2.ZERO
+var _cap_high := Vector2.ZERO
+var _cap2 := 0.0
 var _caps_glance := false
 var _pin_e := 0.0
 var _wall_e := 0.0
@@ -116,7 +129,6 @@ var _rest_speed2 := 0.0
 var _sleep_time := 0.0
 ## A ball pushed apart by more than a resting ball moves in a step is still settling.
 var _settled_push := 0.0
-var _drain_slide_time := 0.0
 var _tracing := false
 # The ball being moved: slot, position, velocity, radius, substep time, push per substep.
 var _i := 0
@@ -162,14 +174,18 @@ func begin(
 	_take_balls(b)
 	_take_geometry(g)
 	_blades.take(wheels)
+	_has_wheels = _blades.has_wheels
 	_near_wheel = false
 	_gravity = gravity
-	_friction_dt = friction.max(Vector2.ZERO) * dt
 	_dt = dt
 	_max_speed = t.max_speed
-	_friction_against_gravity = t.friction_against == PhysicsTuning.FrictionAgainst.GRAVITY
-	_cap_per_axis = t.speed_cap == PhysicsTuning.SpeedCap.PER_AXIS
-	_x_cap_friction_time = t.x_cap_friction_time if _cap_per_axis else 0.0
+	_speed.prepare(t, gravity, friction.max(Vector2.ZERO) * dt, dt)
+	_fr_shift = _speed.shift
+	_fr_zero = _speed.toward_zero
+	_cap_per_axis = _speed.per_axis
+	_cap_low = _speed.low
+	_cap_high = _speed.high
+	_cap2 = _speed.cap * _speed.cap
 	_caps_glance = t.wall_cap_contact == PhysicsTuning.CapContact.GLANCE
 	_pin_e = t.restitution
 	_wall_e = t.wall_restitution
@@ -178,7 +194,6 @@ func begin(
 	_rest_speed2 = t.rest_speed * t.rest_speed
 	_sleep_time = t.sleep_time if may_sleep else 0.0
 	_settled_push = t.rest_speed * dt
-	_drain_slide_time = g.drain_slide_time
 	_tracing = b.tracing
 	_r = -1.0
 	_cur_a = ContactId.NONE
@@ -209,8 +224,15 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_pin_captures = g.pin_captures
 	_pin_tag = g.pin_tag
 	_pin_min_speed_x = g.pin_min_speed_x
+	_has_walls = not g.wall_a.is_empty()
 	_wall_start = g.wall_start
-	_walls.take(g)
+	_wall_items = g.wall_items
+	_wall_item_a = g.wall_item_a
+	_wall_item_ab = g.wall_item_ab
+	_wall_item_inv = g.wall_item_inv
+	_wall_item_rad = g.wall_item_radius
+	_wall_ab = g.wall_ab
+	_wall_inv_len2 = g.wall_inv_len2
 	_has_ring = g.has_ring
 	_ring_center = g.ring_center
 	_ring_min_speed_x = g.ring_min_speed_x
@@ -245,6 +267,13 @@ func _set_radius(r: float) -> void:
 	_max_travel = _g.max_travel(r, TRAVEL_SHARE)
 	_ring_lim = maxf(_g.ring_radius - r, 0.0)
 	_ring_lim2 = _ring_lim * _ring_lim
+
+
+## Records where ball `i` is between two substeps (the swept check's path; see
+## BallStore.tracing).
+func _trace(i: int) -> void:
+	trace_ball.append(i)
+	trace_pos.append(_p)
 
 
 ## Queues an event of `kind` for the ball being moved (see BallEvents).

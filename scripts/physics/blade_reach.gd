@@ -82,13 +82,21 @@ func find_near(cell: int, travel: float) -> void:
 		near_to = _start[cell + 1]
 
 
-## The fastest surface speed (px/s) a near wheel's blade has within `r` of its tip.
-func fastest_near(r: float) -> float:
+## The substeps a ball of radius `r` needs near the wheels find_near() listed (0 when
+## none): in a blade's turning frame it must move less than `max_travel` per substep even
+## at the top speed `max_speed` (a blade may throw it so), with the fastest reachable
+## blade's speed added, and its ball-ball push (`push_len` px) on top; then no blade and no
+## ball pass through each other.
+func substeps_near(
+	r: float, max_speed: float, dt: float, push_len: float, max_travel: float
+) -> int:
+	if near_to <= near_from:
+		return 0
 	var fastest := 0.0
 	for k: int in range(near_from, near_to):
 		var m: int = near_list[k]
 		fastest = maxf(fastest, absf(omega[m]) * (reach[m] + r))
-	return fastest
+	return ceili(((max_speed + fastest) * dt + push_len) / max_travel)
 
 
 ## True when wheel `m`'s nearest blade at `t` s into the step touches a ball of radius `r`

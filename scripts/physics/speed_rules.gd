@@ -1,79 +1,68 @@
 extends RefCounted
-## Rolling friction and the speed cap for the tuning options that are not the motion
-## stage's inline defaults (friction against velocity, a cap on the total speed): friction
-## against gravity's downhill direction and a cap per axis, as the tilt maze seed does.
+## Rolling friction and the speed cap of one step, for every moving ball. prepare() turns
+## the tuning, this step's gravity and friction into a few numbers once per step; limit()
+## applies them to one velocity in a few lines with no call, and the motion stage writes
+## those lines out per ball (a GDScript call costs more than the arithmetic here).
+##
+## The rules (see PhysicsTuning):
+## - friction against the velocity: each axis slows by up to this step's friction, never
+##   past zero;
+## - friction against gravity (the tilt maze seed): on an axis gravity pulls along, the
+##   friction comes off the pull, down to zero at most (a gentle tilt holds the ball instead
+##   of rolling it uphill); an axis with no pull slows toward zero as above;
+## - the cap on the total speed, or on each axis (the seed's); under the per-axis cap, x then
+##   loses `x_cap_friction_time` s of friction more while gravity pulls the ball along x.
+## Both friction kinds become one constant shift plus one slowing toward zero per axis,
+## and both caps one clamp or one length test: that is what makes limit() one pass.
 ## Internal to scripts/physics.
 
-
-## Velocity `v` (this step's gravity already added) after friction that opposes the
-## downhill direction: per axis, `friction_dt` (px/s this step) comes off the pull
-## `gravity_dt`, down to zero at most, so a gentle tilt holds the ball instead of rolling it
-## uphill (the seed's joystick never reaches such a tilt). An axis with no pull slows toward
-## zero and never past it.
-static func friction_against_gravity(
-	v: Vector2, gravity_dt: Vector2, friction_dt: Vector2
-) -> Vector2:
-	return Vector2(
-		_axis_against_gravity(v.x, gravity_dt.x, friction_dt.x),
-		_axis_against_gravity(v.y, gravity_dt.y, friction_dt.y)
-	)
-
-
-## Velocity `v` (this step's gravity already added) after one step of friction and the
-## speed cap under the seed's options: friction against `gravity`'s pull or against the
-## velocity (`friction_dt` per axis, px/s this step), the cap `cap` on the total speed or
-## per axis, and `x_cap_friction_time` s of x friction after the cap (see x_after_cap).
-static func seed_rules(
-	v: Vector2,
-	gravity: Vector2,
-	friction_dt: Vector2,
-	dt: float,
-	cap: float,
-	per_axis: bool,
-	against_gravity: bool,
-	x_cap_friction_time: float
-) -> Vector2:
-	if against_gravity:
-		v = friction_against_gravity(v, gravity * dt, friction_dt)
-	elif friction_dt != Vector2.ZERO:
-		v -= v.clamp(-friction_dt, friction_dt)
-	v = capped(v, cap, per_axis)
-	if x_cap_friction_time > 0.0 and dt > 0.0:
-		v.x = x_after_cap(v.x, gravity.x, cap, friction_dt.x / dt * x_cap_friction_time)
-	return v
+## Subtracted from every velocity: the friction of the axes gravity pulls along.
+var shift := Vector2.ZERO
+## Per axis, the most the velocity slows toward zero (0 on an axis with a shift).
+var toward_zero := Vector2.ZERO
+## True when the cap is per axis: the velocity is clamped to low .. high. Else its length
+## is capped at `cap`.
+var per_axis := false
+var cap := 0.0
+## The per-axis cap as a box. The seed's x friction after its cap (x tops out below the cap
+## downhill only) makes it lopsided: with gravity pulling to +x, high.x is the lower top.
+var low := Vector2.ZERO
+var high := Vector2.ZERO
 
 
-## The plain rules: friction `friction` (per axis, this step's) slows each axis by up to it
-## and never past zero, then the speed is capped at `max_speed`.
-static func plain(v: Vector2, friction: Vector2, max_speed: float) -> Vector2:
-	var out: Vector2 = v - v.clamp(-friction, friction)
-	var speed2: float = out.length_squared()
-	if speed2 > max_speed * max_speed:
-		out *= max_speed / sqrt(speed2)
-	return out
+## Takes this step's rules: `t`'s options, `gravity` (px/s²) and `friction_dt` (per axis,
+## px/s this step, not negative) over `dt` s.
+func prepare(t: PhysicsTuning, gravity: Vector2, friction_dt: Vector2, dt: float) -> void:
+	cap = t.max_speed
+	per_axis = t.speed_cap == PhysicsTuning.SpeedCap.PER_AXIS
+	shift = Vector2.ZERO
+	toward_zero = friction_dt
+	if t.friction_against == PhysicsTuning.FrictionAgainst.GRAVITY:
+		var pull: Vector2 = gravity * dt
+		if pull.x != 0.0:
+			shift.x = signf(pull.x) * minf(friction_dt.x, absf(pull.x))
+			toward_zero.x = 0.0
+		if pull.y != 0.0:
+			shift.y = signf(pull.y) * minf(friction_dt.y, absf(pull.y))
+			toward_zero.y = 0.0
+	low = Vector2(-cap, -cap)
+	high = Vector2(cap, cap)
+	var x_time: float = t.x_cap_friction_time if per_axis else 0.0
+	if x_time > 0.0 and dt > 0.0 and gravity.x != 0.0:
+		var x_top: float = maxf(cap - friction_dt.x / dt * x_time, 0.0)
+		if gravity.x > 0.0:
+			high.x = x_top
+		else:
+			low.x = -x_top
 
 
-## `v` with its total speed capped at `cap`, or each axis capped when `per_axis`.
-static func capped(v: Vector2, cap: float, per_axis: bool) -> Vector2:
+## Velocity `v` (this step's gravity already added) after the step's friction and cap.
+## (BallMover writes these lines out in its own loop: a call per ball costs more than them.)
+func limit(v: Vector2) -> Vector2:
+	v -= shift
+	v -= v.clamp(-toward_zero, toward_zero)
 	if per_axis:
-		return v.clamp(Vector2(-cap, -cap), Vector2(cap, cap))
-	var speed2: float = v.length_squared()
-	if speed2 > cap * cap:
-		return v * (cap / sqrt(speed2))
+		v = v.clamp(low, high)
+	elif v.length_squared() > cap * cap:
+		v *= cap / sqrt(v.length_squared())
 	return v
-
-
-## The x speed `vx` (already capped at `cap`) as the seed leaves it when it takes a frame's
-## friction after the cap: while gravity pulls along x (`pull_x`), the downhill speed tops out
-## at `cap - loss`; uphill and with no pull the cap stays.
-static func x_after_cap(vx: float, pull_x: float, cap: float, loss: float) -> float:
-	if pull_x == 0.0 or signf(vx) != signf(pull_x):
-		return vx
-	var top := maxf(cap - loss, 0.0)
-	return clampf(vx, -top, top)
-
-
-static func _axis_against_gravity(v: float, pull: float, friction: float) -> float:
-	if pull == 0.0:
-		return v - clampf(v, -friction, friction)
-	return v - signf(pull) * minf(friction, absf(pull))

@@ -63,6 +63,21 @@ func in_drain_arc(d: Vector2) -> bool:
 	return fposmod(rad_to_deg(atan2(d.y, d.x)) - drain_from, 360.0) <= span
 
 
+## True when ball slot `i`, touching the ring in direction `d` from its centre for `h` s
+## (a substep), has drained: in the drain arc a bounce (`bounced`) counts toward
+## drain_bounces and the time toward drain_slide_time, in `hits` and `time` (the store's
+## drain_hits and drain_time).
+func drained(
+	d: Vector2, bounced: bool, i: int, h: float, hits: PackedInt32Array, time: PackedFloat32Array
+) -> bool:
+	if not has_drain_arc or not in_drain_arc(d):
+		return false
+	if bounced:
+		hits[i] += 1
+	time[i] += h
+	return hits[i] >= drain_bounces or time[i] >= drain_slide_time
+
+
 ## Sets the ring border (BallWorld.set_ring); refuses a non-finite centre, radius <= 0 or a
 ## negative or non-finite min_speed_x.
 func set_ring(center: Vector2, radius: float, min_speed_x: float) -> void:

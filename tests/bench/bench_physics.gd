@@ -25,6 +25,7 @@ const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
 const FloorKernel := preload("res://tests/bench/physics/floor_kernel.gd")
 const BenchTable := preload("res://tests/bench/physics/bench_table.gd")
+const PhaseClock := preload("res://tests/bench/physics/phase_clock.gd")
 
 const OUT_PATH := "res://build/bench/physics.json"
 ## Engine physics ticks run this many times faster than the scene's rate, and time_scale
@@ -69,8 +70,8 @@ var _thread_scaling := {}
 ## Ours.stage_breakdown()).
 var _stages := {}
 var _stages_all := {}
-## Phase name → {"cpu_s", "wall_s", ...}, in the order the phases ran.
-var _phases := {}
+## Each phase's CPU and wall seconds, in the order the phases ran.
+var _clock := PhaseClock.new()
 ## Scenario name → its FloorKernel (S3 has none: its balls need 17 substeps a step to stay
 ## tunnel-free, which a floor without substeps would leave out).
 var _floors := {}
@@ -84,24 +85,22 @@ var _prev := PackedVector2Array()
 var _step_i := 0
 var _cpu0 := 0
 var _wall0 := 0
-var _phase_cpu0 := 0
-var _phase_wall0 := 0
 var _started_usec := 0
 
 
 func _initialize() -> void:
 	_started_usec = Time.get_ticks_usec()
-	var cpus := _proc_status("Cpus_allowed_list")
+	var cpus := PhaseClock.proc_status("Cpus_allowed_list")
 	print(
 		(
 			"bench_physics: CPUs allowed %s, processors %d, threads %s, Godot job budget %.0f s CPU"
-			% [cpus, OS.get_processor_count(), _proc_status("Threads"), JOB_BUDGET_S]
+			% [cpus, OS.get_processor_count(), PhaseClock.proc_status("Threads"), JOB_BUDGET_S]
 		)
 	)
 	for spec: Array in _specs:
 		if not _wanted(spec[0]):
 			continue
-		_phase_begin()
+		_clock.begin()
 		var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
 		var c: Dictionary = Ours.run(scene, spec[5], true)
 		_results[spec[0]] = {
@@ -119,16 +118,16 @@ func _initialize() -> void:
 			"timing_steps": spec[6],
 		}
 		print("  ours %s: tunnels %d, escapes %d" % [spec[0], c["tunnels"], c["escapes"]])
-		_phase_end("ours %s check" % spec[0])
+		_clock.end("ours %s check" % spec[0])
 		if spec[0] in OURS_ONLY:
 			for _round: int in TIMING_ROUNDS:
 				_time_ours_round(spec, scene, _results[spec[0]])
 			continue
 		if spec[1] != "fast":
-			_phase_begin()
+			_clock.begin()
 			_floors[spec[0]] = FloorKernel.new(scene)
 			_floors[spec[0]].prepare(spec[6])
-			_phase_end("floor %s states" % spec[0])
+			_clock.end("floor %s states" % spec[0])
 		for _round: int in TIMING_ROUNDS:
 			_jobs.append([spec, scene, false])
 		_jobs.append([spec, scene, true])
@@ -143,7 +142,7 @@ func _initialize() -> void:
 ## Thread keys: the cores our world uses, S1's scaling from one thread to all of them,
 ## and whether 1, 2 and 4 threads give the same state after S1, S2, S4 and S5.
 func _thread_extras() -> void:
-	_phase_begin()
+	_clock.begin()
 	_threads = BallWorld.new().threads
 	var identical := true
 	for spec: Array in _specs:
@@ -154,8 +153,8 @@ func _thread_extras() -> void:
 			identical = identical and same["identical"]
 	_threads_identical = identical
 	print("  threads %d, identical states for 1/2/4 threads: %s" % [_threads, identical])
-	_phase_end("ours thread identity")
-	_phase_begin()
+	_clock.end("ours thread identity")
+	_clock.begin()
 	for spec: Array in _specs:
 		if spec[0] in ["S1", "S2", "S4", "S5"] and _wanted(spec[0]):
 			var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
@@ -163,25 +162,25 @@ func _thread_extras() -> void:
 			_stages_all[spec[0]] = Ours.stage_breakdown(
 				scene, THREAD_SCALING_STEPS / 2, OS.get_processor_count()
 			)
-	_phase_end("ours stage breakdown")
+	_clock.end("ours stage breakdown")
 	if not _wanted("S1"):
 		return
-	_phase_begin()
+	_clock.begin()
 	var s1: Dictionary = Scenes.make("S1", "flow", 24.0, 1000, 240.0)
 	_thread_scaling = Ours.thread_scaling(s1, THREAD_SCALING_STEPS, TIMING_ROUNDS)
 	print("  thread scaling (S1): %.2fx" % _thread_scaling["scaling"])
-	_phase_end("ours thread scaling")
+	_clock.end("ours thread scaling")
 
 
 ## The zoning-versus-brute-force ratio and the scale sweeps (our side only, all on S1).
 func _ours_extras() -> void:
-	_phase_begin()
+	_clock.begin()
 	_zoned_vs_brute = Ours.zoned_vs_brute(Scenes.make("S1", "flow", 24.0, 1000, 240.0), 12)
 	print("  zoned vs brute force (S1): %.1fx" % _zoned_vs_brute)
-	_phase_end("ours zoned vs brute")
-	_phase_begin()
+	_clock.end("ours zoned vs brute")
+	_clock.begin()
 	_scale = Ours.scale_sweep()
-	_phase_end("ours scale sweep")
+	_clock.end("ours scale sweep")
 
 
 ## Jobs start between frames: the engine reads the tick rate and time scale once per frame,
@@ -203,7 +202,7 @@ func _on_process_frame() -> void:
 			return
 		_time_ours_round(spec, scene, row)
 	_job = {"spec": spec, "scene": scene}
-	_phase_begin()
+	_clock.begin()
 	_rng.seed = Ours.RULES_SEED
 	var hz: float = spec[4]
 	Engine.time_scale = SPEEDUP
@@ -262,10 +261,10 @@ func _job_over(done: int) -> bool:
 	# Reading /proc every step would cost time inside the timed span; one core cannot give
 	# a process more CPU time than wall time, so the clock only needs reading once wall time
 	# is past the budget.
-	if Time.get_ticks_usec() - _phase_wall0 < JOB_BUDGET_S * 1e6:
+	if Time.get_ticks_usec() - _clock.wall0 < JOB_BUDGET_S * 1e6:
 		return false
 	var now := CpuClock.usec()
-	if now - _phase_cpu0 < JOB_BUDGET_S * 1e6:
+	if now - _clock.cpu0 < JOB_BUDGET_S * 1e6:
 		return false
 	if _check != null:
 		return done > 0
@@ -308,7 +307,7 @@ func _end_job(done: int) -> void:
 	var phase: String = "check"
 	if not checking:
 		phase = "timing %d" % (row["godot_rounds"] as Array).size()
-	_phase_end("godot %s %s" % [name, phase], done, target)
+	_clock.end("godot %s %s" % [name, phase], done, target)
 	if not _side.free_all():
 		row["godot_scene_leaked"] = true
 		print("  godot %s: balls went NaN; scene switched off, not freed (freeing hangs)" % name)
@@ -317,45 +316,29 @@ func _end_job(done: int) -> void:
 	if checking and done < target:
 		# The Godot counts cover only the first `done` steps: count ours over the same steps,
 		# so the two can be compared.
-		_phase_begin()
+		_clock.begin()
 		var c: Dictionary = Ours.run(_job["scene"], done, true)
 		row["ours_tunnels_same_steps"] = c["tunnels"]
 		row["ours_escapes_same_steps"] = c["escapes"]
-		_phase_end("ours %s check, %d steps" % [name, done])
+		_clock.end("ours %s check, %d steps" % [name, done])
 	_want_job = true
 
 
 ## Our timing run of one round, just before Godot's run of the same round.
 func _time_ours_round(spec: Array, scene: Dictionary, row: Dictionary) -> void:
 	if _floors.has(spec[0]):
-		_phase_begin()
+		_clock.begin()
 		var f: Dictionary = _floors[spec[0]].time_round()
 		TimingRounds.add_floor(row, f["floor_steps_per_s"])
 		row["floor_pairs_share"] = f["pairs_share"]
 		print("  floor %s: %.0f ball-steps/s (CPU)" % [spec[0], f["floor_steps_per_s"]])
-		_phase_end("floor %s timing %d" % [spec[0], (row["floor_rounds"] as Array).size()])
-	_phase_begin()
+		_clock.end("floor %s timing %d" % [spec[0], (row["floor_rounds"] as Array).size()])
+	_clock.begin()
 	var r: Dictionary = Ours.run(scene, spec[6], false)
 	TimingRounds.add_ours(row, r["ball_steps_per_s"], r["cpu_ball_steps_per_s"])
 	var round_i: int = (row["ours_rounds"] as Array).size()
 	print("  ours %s: %.0f ball-steps/s, round %d" % [spec[0], r["ball_steps_per_s"], round_i])
-	_phase_end("ours %s timing %d" % [spec[0], round_i])
-
-
-func _phase_begin() -> void:
-	_phase_cpu0 = CpuClock.usec()
-	_phase_wall0 = Time.get_ticks_usec()
-
-
-func _phase_end(name: String, steps := -1, of := -1) -> void:
-	var phase := {
-		"cpu_s": (CpuClock.usec() - _phase_cpu0) / 1e6,
-		"wall_s": (Time.get_ticks_usec() - _phase_wall0) / 1e6,
-	}
-	if steps >= 0:
-		phase["steps"] = steps
-		phase["of"] = of
-	_phases[name] = phase
+	_clock.end("ours %s timing %d" % [spec[0], round_i])
 
 
 func _finish() -> void:
@@ -374,9 +357,9 @@ func _finish() -> void:
 		"pin_cost_4x_crush": Ours.pin_cost(_scale.get("pins_crush", {})),
 		"stages_1_thread_us": _stages,
 		"stages_all_threads_us": _stages_all,
-		"cpus_allowed": _proc_status("Cpus_allowed_list"),
+		"cpus_allowed": PhaseClock.proc_status("Cpus_allowed_list"),
 		"godot_job_budget_s": JOB_BUDGET_S,
-		"phase_seconds": _phases,
+		"phase_seconds": _clock.phases,
 		"seconds": (Time.get_ticks_usec() - _started_usec) / 1e6,
 	}
 	BenchTable.print_table(out, WARMUP, JOB_BUDGET_S)
@@ -399,15 +382,3 @@ func _wanted(name: String) -> bool:
 		if arg.begins_with("--only="):
 			return name in arg.trim_prefix("--only=").split(",")
 	return true
-
-
-## A field of /proc/self/status ("Cpus_allowed_list", "Threads"), or "unknown".
-func _proc_status(key: String) -> String:
-	var f := FileAccess.open("/proc/self/status", FileAccess.READ)
-	if f == null:
-		return "unknown"
-	while not f.eof_reached():
-		var line := f.get_line()
-		if line.begins_with(key + ":"):
-			return line.get_slice(":", 1).strip_edges()
-	return "unknown"

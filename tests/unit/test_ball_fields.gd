@@ -120,3 +120,27 @@ func test_the_stages_take_every_table_field_they_declare() -> void:
 				taken += 1
 				assert_eq(stage.get(member), b.column(row[BallFields.NAME]), String(member))
 	assert_gt(taken, 20, "the mover and the solve read most fields through the table")
+
+
+## In the Godot editor a script that is not @tool never runs its static initializers, so
+## BallFields' member list stays empty there; the editor's play analysis (the rail climb,
+## the shot chunks, the maze pilot) steps BallWorlds all the same. Before the fix every
+## step failed there with "Out of bounds get index '0'" and no ball moved.
+func test_balls_move_when_static_initializers_did_not_run_as_in_the_editor() -> void:
+	var members_as_loaded: Array[StringName] = BallFields._members
+	var plain := _one_falling_ball()
+	for i in 10:
+		plain.step(1.0 / 60.0)
+	BallFields._members = [] as Array[StringName]
+	var as_in_editor := _one_falling_ball()
+	for i in 10:
+		as_in_editor.step(1.0 / 60.0)
+	BallFields._members = members_as_loaded
+	assert_gt(as_in_editor.get_ball_position(0).y, 100.0, "the ball fell")
+	assert_eq(as_in_editor.state_hash(), plain.state_hash(), "the same step as in a game")
+
+
+func _one_falling_ball() -> BallWorld:
+	var world := BallWorld.new()
+	world.spawn_ball(Vector2(100, 100), Vector2.ZERO, 5.0)
+	return world

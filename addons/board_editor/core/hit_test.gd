@@ -4,6 +4,7 @@ extends RefCounted
 ## which ring / rail / goal handle is under a point. All in board pixels.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
+const PinChecks := preload("res://scripts/validation/pin_checks.gd")
 
 ## Handle names are the BoardLevel fields they edit.
 const PACHINKO_HANDLES: Array[String] = [
@@ -78,6 +79,12 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 		if level.goal_center.distance_to(point) <= maxf(tolerance, level.goal_radius * 0.35):
 			best = Items.make(Items.Kind.GOAL, 0)
 	return best
+
+
+## True when a pin ghost at `point` shows red: a click there would crowd a pin, or put it
+## outside the ring or in the launch rail (the validator's errors, PinChecks.where_outside).
+static func pin_blocked(level: BoardLevel, point: Vector2) -> bool:
+	return crowds_pin(level, point) or not PinChecks.where_outside(level, point).is_empty()
 
 
 ## True when a new pin at `point` would overlap a pin of `level` or leave it a gap narrower

@@ -85,10 +85,6 @@ func _init() -> void:
 	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
 	add_child(_status)
-	analysis = AnalysisPanel.new()
-	add_child(analysis)
-	maze_analysis = MazeAnalysisPanel.new()
-	add_child(maze_analysis)
 	add_child(HSeparator.new())
 	# The problems come first, right under the buttons: in the default layout the dock is
 	# shorter than its panels, and a list at the bottom showed about three lines.
@@ -96,16 +92,23 @@ func _init() -> void:
 	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))
 	add_child(_problems)
 	add_child(HSeparator.new())
-	# The panels scroll on their own in the room left.
+	# The analysis (with its balance table) and the panels scroll together in the room
+	# left: a dock cannot be shorter than its content, and when they sat in the dock itself
+	# it ran off the bottom of the window with the Selection fields out of reach.
 	var scroll := ScrollContainer.new()
 	scroll.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	scroll.size_flags_stretch_ratio = 1.5
+	# Most of the room goes to the panels; the problem list keeps its 150 px and a share.
+	scroll.size_flags_stretch_ratio = 4.0
 	scroll.custom_minimum_size = Vector2(0, 160)
 	scroll.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
 	add_child(scroll)
 	var panels := VBoxContainer.new()
 	panels.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 	scroll.add_child(panels)
+	analysis = AnalysisPanel.new()
+	panels.add_child(analysis)
+	maze_analysis = MazeAnalysisPanel.new()
+	panels.add_child(maze_analysis)
 	_properties = PropertyPanel.new()
 	panels.add_child(_properties)
 	panels.add_child(HSeparator.new())

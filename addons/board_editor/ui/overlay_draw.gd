@@ -36,7 +36,8 @@ static func circle(
 
 
 ## Ghost pins: where a tool would put pins; red where a pin would overlap one already on
-## `level` or leave it a gap a ball sticks in (HitTest.crowds_pin).
+## `level`, leave it a gap a ball sticks in, or stand outside the ring or in the launch rail
+## (HitTest.pin_blocked).
 static func ghost_points(
 	canvas: Control,
 	to_screen: Transform2D,
@@ -45,7 +46,7 @@ static func ghost_points(
 	level: BoardLevel = null
 ) -> void:
 	for point in points:
-		var blocked := level != null and HitTest.crowds_pin(level, point)
+		var blocked := level != null and HitTest.pin_blocked(level, point)
 		circle(canvas, to_screen, point, radius, BLOCKED_COLOR if blocked else GHOST_COLOR, true)
 		if blocked:
 			circle(canvas, to_screen, point, radius + 3.0, BLOCKED_COLOR, false, 1.5)

@@ -56,6 +56,10 @@ func _init() -> void:
 			_update()
 	)
 	confirmed.connect(_on_confirmed)
+	# Before the dialog's own Enter handler (connected next): letters typed in Enter's frame
+	# are not reported yet, and Save / Create would still be greyed out for an empty name.
+	_name_field.text_submitted.connect(func(_text: String) -> void: _take_typed(false))
+	_id_field.text_submitted.connect(func(_text: String) -> void: _take_typed(true))
 	register_text_enter(_id_field)
 	register_text_enter(_name_field)
 
@@ -134,7 +138,17 @@ func _update() -> void:
 	_path_label.add_theme_color_override("font_color", color)
 
 
+# A LineEdit reports typed text at the end of the frame: takes what the fields hold now.
+# `from_id_field`: Enter was pressed in the file name, which counts as edited by hand when
+# it is not what the name gives.
+func _take_typed(from_id_field: bool) -> void:
+	if from_id_field and _id_field.text != BoardFiles.file_id_for(_name_field.text):
+		_id_edited = true
+	_on_name_changed(_name_field.text)
+
+
 func _on_confirmed() -> void:
+	_on_name_changed(_name_field.text)  # letters typed in the frame of a click on Save
 	if not _problem().is_empty():
 		return
 	if _new_mode:

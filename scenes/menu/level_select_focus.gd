@@ -1,0 +1,144 @@
+extends RefCounted
+## Where the keys' and the pad's focus goes on the level select, and the grids' columns it
+## follows: as many columns as the list is wide (both sections alike, so their cards line
+## up), the arrows' neighbours (CardGridFocus), the first playable card once the boards
+## have loaded, and after a delete the next card at the same scroll, so the player stays
+## where they were.
+
+const CardSection := preload("res://scenes/menu/card_section.gd")
+const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
+const LevelCard := preload("res://scenes/menu/level_card.gd")
+const LevelSlot := preload("res://scenes/menu/level_slot.gd")
+## Room between cards, across and down (the grids' separations in the scene).
+const CARD_GAP := 22
+## At most this many cards in a row, however wide the window.
+const MAX_COLUMNS := 4
+
+## Cards in a row, in both sections.
+var columns := 3
+
+var _sections: Array[CardSection] = []
+var _scroll: ScrollContainer = null
+var _import: Button = null  # takes the focus when there is no card at all
+var _back: Button = null  # takes the focus back when no card is playable
+var _first_focus: Control = null
+# after a delete: the board whose card takes the focus (the next one), and where the list
+# was scrolled to
+var _refocus_path := ""
+var _kept_scroll := -1
+
+
+## Focus over the cards of `sections` (shipped first, then My boards) in `scroll`.
+func _init(
+	sections: Array[CardSection], scroll: ScrollContainer, import_button: Button, back: Button
+) -> void:
+	_sections = sections
+	_scroll = scroll
+	_import = import_button
+	_back = back
+
+
+## The cards shown (every section, in order).
+func cards() -> Array[Button]:
+	var result: Array[Button] = []
+	for section in _sections:
+		result.append_array(section.cards())
+	return result
+
+
+## The first playable card, else the first card, else null.
+func first_card() -> Button:
+	var all := cards()
+	for card in all:
+		if not card.disabled:
+			return card
+	return all[0] if not all.is_empty() else null
+
+
+## Sets the columns to what the list's width holds, then the arrows' neighbours again.
+func fit_columns() -> void:
+	var card_width := LevelCard.CARD_SIZE.x + CARD_GAP
+	var fits := floori((_scroll.size.x - 16.0 + CARD_GAP) / card_width)
+	var wanted := clampi(fits, 1, MAX_COLUMNS)
+	if wanted == columns:
+		return
+	columns = wanted
+	for section in _sections:
+		section.grid.columns = wanted
+	link()
+
+
+## Links every card to its neighbours for the arrows and the d-pad.
+func link() -> void:
+	var lists: Array = []
+	for section in _sections:
+		var list: Array[Control] = []
+		for card in section.cards():
+			list.append(card)
+		lists.append(list)
+	CardGridFocus.link(lists, columns)
+
+
+## A section was listed again: a deleted board's neighbour takes the focus back, or, on
+## the first listing, the first card (the Import button when there is none).
+func after_listing() -> void:
+	if _refocus_path != "":
+		_take_place_back()
+	elif not is_instance_valid(_first_focus):
+		var first := first_card()
+		_first_focus = first if first != null else _import
+		_first_focus.grab_focus()
+
+
+## Everything has loaded: the first playable card takes the focus the loading card held.
+func after_loading() -> void:
+	var viewport := _scroll.get_viewport()
+	var focused := viewport.gui_get_focus_owner()
+	var stuck := focused == _first_focus and focused is Button and (focused as Button).disabled
+	if focused == null or stuck:
+		take_back()
+	if viewport.gui_get_focus_owner() == _shipped_first_card():
+		# the first row from its top, not scrolled to wherever the loading card sat
+		_scroll.set_deferred("scroll_vertical", 0)
+	_first_focus = viewport.gui_get_focus_owner()
+
+
+## Gives the focus to the first playable card (the Back button when there is no card).
+func take_back() -> void:
+	var first := first_card()
+	(first if first != null else _back).grab_focus()
+
+
+## Before a delete: remembers the card after the deleted one (or before it, for the last)
+## and the scroll, for after_listing.
+func keep_place_after_delete(board_path: String) -> void:
+	var mine: Array[Button] = []
+	for section in _sections:
+		if section.mine:
+			mine.append_array(section.cards())
+	_refocus_path = ""
+	for i in mine.size():
+		if (mine[i] as LevelCard).board_path == board_path:
+			var neighbour := i + 1 if i + 1 < mine.size() else i - 1
+			if neighbour >= 0:
+				_refocus_path = (mine[neighbour] as LevelCard).board_path
+	if _refocus_path == "":
+		_refocus_path = board_path  # none left: the Import button takes the focus
+	_kept_scroll = _scroll.scroll_vertical
+
+
+func _take_place_back() -> void:
+	var slot: LevelSlot = null
+	for section in _sections:
+		if slot == null:
+			slot = section.slot_of(_refocus_path)
+	(slot.card if slot != null else _import as Control).grab_focus()
+	_scroll.set_deferred("scroll_vertical", _kept_scroll)
+	_refocus_path = ""
+
+
+func _shipped_first_card() -> Button:
+	for child in _sections[0].grid.get_children():
+		if child is LevelSlot:
+			return (child as LevelSlot).card
+	return null

@@ -1,0 +1,116 @@
+extends RefCounted
+## The worker threads of one BallLanes: each waits for a hand-off, then takes lanes until
+## none is left. The thread that hands off takes lanes too, and once every lane is taken it
+## waits only for the lanes others are still running, never for a worker that has not woken
+## yet: on a busy machine a worker may wake a few milliseconds late, and a stage that waited
+## for it (as a WorkerThreadPool group task must) would take longer on two threads than on
+## one. A late worker finds nothing left and goes back to waiting.
+##
+## Internal to scripts/physics. The crew holds no reference to its BallLanes, so the lanes
+## object can be freed while the threads wait; it then calls stop(), which joins them.
+
+## Workers started so far (the handing-off thread is not one of them).
+var started := 0
+
+var _threads: Array[Thread] = []
+var _wake := Semaphore.new()
+var _all_done := Semaphore.new()
+var _taking := Mutex.new()
+var _stopping := false
+## The hand-off being worked, under _taking: its job, lane bounds, the workers it may use,
+## the next lane nobody has taken, lanes finished, whether the handing-off thread waits
+## for the rest, and whether the job takes a worker number.
+var _job := Callable()
+var _bounds := PackedInt32Array()
+var _helpers := 0
+var _next_lane := 0
+var _lanes_done := 0
+var _caller_waiting := false
+var _with_worker := true
+
+
+## Runs `job` over the lanes cut by `bounds` (lane k covers bounds[k] .. bounds[k + 1]) on
+## the calling thread and up to `helpers` workers, started on first need. `job` is called
+## as job(worker, lane, from, to), or job(lane, from, to) when `with_worker` is false; the
+## calling thread is worker 0, and workers above `helpers` sit this one out. Returns once
+## every lane is done.
+func run(job: Callable, bounds: PackedInt32Array, helpers: int, with_worker: bool) -> void:
+	while started < helpers:
+		var thread := Thread.new()
+		_threads.append(thread)
+		started += 1
+		thread.start(_work.bind(started))
+	var lanes: int = bounds.size() - 1
+	_taking.lock()
+	_job = job
+	_bounds = bounds
+	_helpers = helpers
+	_with_worker = with_worker
+	_next_lane = 0
+	_lanes_done = 0
+	_caller_waiting = false
+	_taking.unlock()
+	for _k: int in mini(helpers, lanes - 1):
+		_wake.post()
+	_take_lanes(0)
+	_taking.lock()
+	var wait: bool = _lanes_done < lanes
+	_caller_waiting = wait
+	_taking.unlock()
+	if wait:
+		_all_done.wait()
+	_taking.lock()
+	_job = Callable()
+	_taking.unlock()
+
+
+## Stops and joins every worker. Call once, when the crew is no longer used.
+func stop() -> void:
+	_taking.lock()
+	_stopping = true
+	_taking.unlock()
+	for _thread: Thread in _threads:
+		_wake.post()
+	for thread: Thread in _threads:
+		thread.wait_to_finish()
+	_threads.clear()
+	started = 0
+
+
+func _work(worker: int) -> void:
+	while true:
+		_wake.wait()
+		_taking.lock()
+		var stopping: bool = _stopping
+		_taking.unlock()
+		if stopping:
+			return
+		_take_lanes(worker)
+
+
+## Takes and runs lanes of the current hand-off on `worker` until none is left. The one
+## who finishes the last lane wakes the handing-off thread if it is waiting.
+func _take_lanes(worker: int) -> void:
+	while true:
+		_taking.lock()
+		var lane: int = _next_lane
+		var lanes: int = _bounds.size() - 1
+		if _job.is_null() or lane >= lanes or worker > _helpers:
+			_taking.unlock()
+			return
+		_next_lane += 1
+		var job: Callable = _job
+		var from: int = _bounds[lane]
+		var to: int = _bounds[lane + 1]
+		var with_worker: bool = _with_worker
+		_taking.unlock()
+		if with_worker:
+			job.call(worker, lane, from, to)
+		else:
+			job.call(lane, from, to)
+		_taking.lock()
+		_lanes_done += 1
+		var wake_caller: bool = _lanes_done == lanes and _caller_waiting
+		_taking.unlock()
+		if wake_caller:
+			_all_done.post()

@@ -1,0 +1,75 @@
+extends GutTest
+## LaneCrew: BallLanes' own worker threads. Every lane of every hand-off runs exactly once
+## and is finished when run() returns, whoever took it; only the workers a hand-off may use
+## take lanes (a stage keeps one working state per worker number); freeing the lanes joins
+## the threads.
+
+const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
+const LaneCrew := preload("res://scripts/physics/lane_crew.gd")
+
+
+func test_every_lane_of_many_hand_offs_runs_once_and_is_done_on_return() -> void:
+	var crew := LaneCrew.new()
+	var rng := RandomNumberGenerator.new()
+	rng.seed = 5
+	var problems: Array[String] = []
+	for hand_off: int in 300:
+		var helpers: int = rng.randi_range(1, 3)
+		var lanes: int = rng.randi_range(1, 12)
+		var items: int = lanes * 20
+		var bounds := BallLanes.even_bounds(items, lanes)
+		var seen := PackedInt32Array()
+		seen.resize(items)
+		seen.fill(0)
+		var workers := PackedInt32Array()
+		workers.resize(lanes)
+		workers.fill(-1)
+		crew.run(
+			func(worker: int, lane: int, from: int, to: int) -> void:
+				workers[lane] = worker
+				for i: int in range(from, to):
+					seen[i] += 1,
+			bounds,
+			helpers,
+			true
+		)
+		if seen.count(1) != items:
+			problems.append(
+				"hand-off %d: %d of %d items ran once" % [hand_off, seen.count(1), items]
+			)
+		for lane: int in lanes:
+			if workers[lane] < 0 or workers[lane] > helpers:
+				problems.append(
+					"hand-off %d: lane %d on worker %d" % [hand_off, lane, workers[lane]]
+				)
+	crew.stop()
+	assert_eq(
+		problems, [] as Array[String], "every lane once, done on return, on a worker it may use"
+	)
+
+
+func test_a_job_without_worker_numbers_gets_lane_and_range() -> void:
+	var crew := LaneCrew.new()
+	var seen := PackedInt32Array()
+	seen.resize(100)
+	seen.fill(0)
+	crew.run(
+		func(_lane: int, from: int, to: int) -> void:
+			for i: int in range(from, to):
+				seen[i] += 1,
+		BallLanes.even_bounds(100, 5),
+		1,
+		false
+	)
+	crew.stop()
+	assert_eq(seen.count(1), 100)
+
+
+func test_freeing_the_lanes_joins_their_workers() -> void:
+	var lanes := BallLanes.new()
+	lanes.threads = 2
+	lanes.run(func(_lane: int, _from: int, _to: int) -> void: pass, 1000)
+	var crew: LaneCrew = lanes.get("_crew")
+	assert_eq(crew.started, 1, "two threads: one worker besides the calling thread")
+	lanes = null
+	assert_eq(crew.started, 0, "the worker was stopped and joined with its lanes object")
