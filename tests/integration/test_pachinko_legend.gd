@@ -85,4 +85,4 @@ func test_mixed_payouts_read_as_a_range() -> void:
 		BoardLoader.load_board("res://levels/pachinko/classic.board").level.duplicate_level()
 	)
 	level.pockets[0].payout = 2
-	assert_string_contains(BoardPieces.line(level, BoardPieces.Piece.POCKET), "2 to 7 balls")
+	assert_string_contains(BoardPieces.line(level, BoardPieces.Piece.POCKET), "2 to 6 balls")
