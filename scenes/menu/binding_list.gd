@@ -38,15 +38,16 @@ const ACTION_NAMES := {
 	"board_actions": "Level select: a board's menu (play, export, delete)",
 }
 
+## How wide each binding button is at least (a portrait window asks for narrower ones).
+var button_width := BUTTON_WIDTH:
+	set = set_button_width
+
 var _capture_action := ""
 var _capture_gamepad := false
 var _capture_button: Button = null
 var _move_dialog: ConfirmationDialog = null
 var _refusal: AcceptDialog = null
 var _pending_move := {}
-## How wide each binding button is at least (a portrait window asks for narrower ones).
-var button_width := BUTTON_WIDTH:
-	set = set_button_width
 
 
 func _ready() -> void:
