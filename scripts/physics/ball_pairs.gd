@@ -176,28 +176,28 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> void:
 	var below_off: int = (_cols - 1) << SORT_SHIFT
 	var past_below_off: int = (_cols + 2) << SORT_SHIFT
 	var below: int = keys.bsearch((keys[from] & cell_bits) + below_off)
+	# Each ball's two runs (its own cell and the next, then the three cells below) in one
+	# scan that ends at the first key past each: a lone ball, as most of a flowing board
+	# are, costs two key reads.
 	for k: int in range(from, to):
-		var cell_key: int = keys[k] & cell_bits
-		var end_same: int = k + 1
-		var next_cell: int = cell_key + next_off
-		while keys[end_same] < next_cell:
-			end_same += 1
-		var first_below: int = cell_key + below_off
-		while keys[below] < first_below:
-			below += 1
-		var end_below: int = below
-		var past_below: int = cell_key + past_below_off
-		while keys[end_below] < past_below:
-			end_below += 1
-		if end_same == k + 1 and end_below == below:
-			continue  # a lone ball (most of a flowing board): nothing to read
-		var i: int = keys[k] & mask
+		var key: int = keys[k]
+		var cell_key: int = key & cell_bits
+		var i: int = key & mask
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
+		var m: int = k + 1
+		var end: int = cell_key + next_off
 		for run: int in 2:
-			for m: int in range(k + 1 if run == 0 else below, end_same if run == 0 else end_below):
+			while keys[m] < end:
 				var j: int = keys[m] & mask
 				var rr: float = ri + rad[j]
 				if pi.distance_squared_to(pos[j]) < rr * rr:
 					out.append(i)
 					out.append(j)
+				m += 1
+			if run == 0:
+				var first_below: int = cell_key + below_off
+				while keys[below] < first_below:
+					below += 1
+				m = below
+				end = cell_key + past_below_off
