@@ -1,13 +1,14 @@
 extends GutTest
-## The title screen and the settings screen read on a phone: the project draws its
-## 1280 × 720 design at 0.56 on a 720 × 1280 screen, which made the title screen's hint and
-## the settings' hint and column headers 11 px, their labels 13.5 px. Now both screens are
-## drawn bigger in a portrait window (PortraitZoom) and the settings' rows get narrower to
-## fit: every visible label and button is at least 14 px on the screen, and the screens stay
-## whole in the window at 720 × 1280, 900 × 700 and 1280 × 720.
+## The title screen, the settings screen and the pause menu read on a phone: the project
+## draws its 1280 × 720 design at 0.56 on a 720 × 1280 screen, which made the hints and the
+## settings' column headers 11 px, the settings' labels 13.5 px. Now the screens are drawn
+## bigger in a portrait window (PortraitZoom) and the settings' rows get narrower to fit:
+## every visible label and button is at least 14 px on the screen, and the screens stay whole
+## in the window at 720 × 1280, 900 × 700 and 1280 × 720.
 
 const MainMenuScene := preload("res://scenes/menu/main_menu.tscn")
 const SettingsScene := preload("res://scenes/menu/settings_menu.tscn")
+const PauseScene := preload("res://scenes/common/pause_menu.tscn")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]
 const MIN_SCREEN_PX := 14.0
@@ -83,3 +84,26 @@ func test_the_settings_read_at_14_px_and_stay_whole() -> void:
 			scroll.get_h_scroll_bar().visible, "%s: the settings need no sideways scroll" % size
 		)
 		settings.free()
+
+
+func test_the_pause_menu_reads_at_14_px_on_a_phone() -> void:
+	for size in SIZES:
+		var window := Window.new()
+		window.size = size
+		window.content_scale_size = Vector2i(1280, 720)
+		window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
+		window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+		add_child_autofree(window)
+		var pause := PauseScene.instantiate() as CanvasLayer
+		window.add_child(pause)
+		var dim := pause.get_node("Dim") as Control
+		dim.visible = true  # as when it opens, without pausing the test's tree
+		await wait_process_frames(4)
+		var checked := _assert_readable(dim, "pause menu %s" % size)
+		assert_eq(checked, 6, "the title, four buttons and the hint were looked at")
+		var panel := pause.get_node("Dim/Center/Panel") as Control
+		assert_true(
+			dim.get_viewport_rect().encloses(panel.get_global_rect()),
+			"%s: the menu is in the window" % size
+		)
+		pause.free()
