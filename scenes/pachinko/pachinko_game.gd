@@ -229,6 +229,7 @@ func _layout() -> void:
 	else:
 		hud_column.vertical = true
 		hud.scale = Vector2.ONE
+		_edge_hud_toward_board(SIDE_LEFT)
 		var hud_left := view.x - HUD_WIDTH
 		hud.position = Vector2(hud_left, 0.0)
 		hud.size = Vector2(HUD_WIDTH, view.y)
@@ -250,6 +251,7 @@ func _refit_portrait_hud() -> void:
 # drawn bigger so its smallest words read at MIN_SCREEN_TEXT_PX, as far as the band allows.
 func _fit_portrait_hud(band: Rect2) -> void:
 	hud_column.vertical = false
+	_edge_hud_toward_board(SIDE_TOP)
 	var screen_scale := maxf(get_viewport().get_final_transform().get_scale().y, 0.01)
 	var wanted := MIN_SCREEN_TEXT_PX / (LauncherPanel.SMALL_FONT_SIZE * screen_scale)
 	# rounded up, so the rounding of the scales on the way to the screen keeps it at 14
@@ -266,6 +268,16 @@ func _fit_portrait_hud(band: Rect2) -> void:
 	hud.scale = Vector2.ONE * zoom
 	hud.size = hud_size
 	hud.position = band.position + Vector2((band.size.x - hud_size.x * zoom) * 0.5, 0.0)
+
+
+# The panel's gold edge runs along the board: its left side beside it, its top under it.
+func _edge_hud_toward_board(side: Side) -> void:
+	var style := hud.get_theme_stylebox(&"panel") as StyleBoxFlat
+	if style == null:
+		return
+	var width := maxi(style.border_width_left, style.border_width_top)
+	style.border_width_left = width if side == SIDE_LEFT else 0
+	style.border_width_top = width if side == SIDE_TOP else 0
 
 
 func _is_start_event(event: InputEvent) -> bool:

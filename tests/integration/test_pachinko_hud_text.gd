@@ -58,6 +58,10 @@ func test_a_phone_reads_every_word_of_the_panel_at_14_px() -> void:
 	assert_eq(sizes.size(), 5)
 	for text: String in sizes:
 		assert_gte(sizes[text], 14.0, "720x1280: the %s is %.1f px" % [text, sizes[text]])
+	# QA: its gold edge stayed on the left, a stray line down the screen's edge under the board
+	var style := game.hud.get_theme_stylebox(&"panel") as StyleBoxFlat
+	assert_gt(style.border_width_top, 0, "the panel's edge runs along the board above it")
+	assert_eq(style.border_width_left, 0, "not down the screen's left edge")
 	game.free()  # before its window, whose last size change it would answer
 
 
@@ -66,6 +70,9 @@ func test_landscape_keeps_the_designed_column_beside_the_board() -> void:
 		var game := await _game_in_window(size)
 		assert_eq(game.hud.scale, Vector2.ONE, "%s: the panel as designed" % size)
 		assert_true(game.hud_column.vertical, "%s: one column" % size)
+		var style := game.hud.get_theme_stylebox(&"panel") as StyleBoxFlat
+		assert_gt(style.border_width_left, 0, "%s: its edge along the board" % size)
+		assert_eq(style.border_width_top, 0)
 		var view := game.get_viewport_rect().size
 		assert_almost_eq(game.hud.size.x, PachinkoGame.HUD_WIDTH, 0.5)
 		assert_almost_eq(game.hud.get_global_rect().end.x, view.x, 0.5, "on the right edge")
