@@ -201,7 +201,7 @@ func _on_game_reset() -> void:
 		if rules.hard_mode
 		else "Move every ball to the center. Ready for hard mode? Press %s" % _key("maze_hard_mode")
 	)
-	_note.show_note("Click the joystick to start!", hint)
+	_note.show_note("Tilt the board to start!", hint)
 	_show_best()
 
 

@@ -15,6 +15,9 @@ signal capture_toggled(capturing: bool)
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 const BindingMoves := preload("res://scripts/app/binding_moves.gd")
 const AXIS_THRESHOLD := 0.6
+const TITLE_MIN_WIDTH := 220.0
+## A binding button's least width as designed (a landscape window).
+const BUTTON_WIDTH := 300.0
 const ACTION_NAMES := {
 	"launch_charge": "Pachinko: launch (hold to charge)",
 	"launch_handle": "Pachinko: hold the handle (stream)",
@@ -34,6 +37,10 @@ const ACTION_NAMES := {
 	"toggle_frame_counter": "Show / hide frame counter",
 	"board_actions": "Level select: a board's menu (play, export, delete)",
 }
+
+## How wide each binding button is at least (a portrait window asks for narrower ones).
+var button_width := BUTTON_WIDTH:
+	set = set_button_width
 
 var _capture_action := ""
 var _capture_gamepad := false
@@ -81,6 +88,14 @@ func is_capturing() -> bool:
 
 
 ## Readable name of an action for the list.
+## Sets how wide each binding button is at least, for the rows there are and those to come.
+func set_button_width(width: float) -> void:
+	button_width = width
+	for child in get_children():
+		if child is Button:
+			(child as Button).custom_minimum_size.x = width
+
+
 static func action_title(action: String) -> String:
 	return ACTION_NAMES.get(action, action.capitalize())
 
@@ -97,6 +112,9 @@ func rebuild() -> void:
 		var title := Label.new()
 		title.text = action_title(action)
 		title.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+		# a long action name wraps rather than pushing the buttons out of a narrow window
+		title.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+		title.custom_minimum_size.x = TITLE_MIN_WIDTH
 		add_child(title)
 		add_child(_binding_button(action, false))
 		add_child(_binding_button(action, true))
@@ -120,7 +138,7 @@ func _add_header(text: String) -> void:
 func _binding_button(action: String, gamepad: bool) -> Button:
 	var button := Button.new()
 	button.name = "%s_%s" % [action, "pad" if gamepad else "key"]
-	button.custom_minimum_size = Vector2(300, 0)
+	button.custom_minimum_size = Vector2(button_width, 0)
 	button.theme_type_variation = &"SmallButton"
 	button.clip_text = true
 	button.text = _describe(action, gamepad)

@@ -7,6 +7,15 @@ extends Control
 signal closed
 
 const BindingList := preload("res://scenes/menu/binding_list.gd")
+## The designed widths (a landscape window), and the narrower ones a portrait window gets:
+## there the screen is drawn bigger (its PortraitZoom) in fewer view units across.
+const LABEL_WIDTH := 400.0
+const SLIDER_WIDTH := 420.0
+const SIDE_MARGIN := 56
+const PORTRAIT_LABEL_WIDTH := 250.0
+const PORTRAIT_SLIDER_WIDTH := 300.0
+const PORTRAIT_SIDE_MARGIN := 12
+const PORTRAIT_BUTTON_WIDTH := 190.0
 
 @onready var _master: HSlider = %MasterSlider
 @onready var _sfx: HSlider = %SfxSlider
@@ -25,6 +34,8 @@ const BindingList := preload("res://scenes/menu/binding_list.gd")
 @onready var _defaults: Button = %DefaultsButton
 @onready var _back: Button = %BackButton
 @onready var _backdrop: Control = $Backdrop
+@onready var _margin: MarginContainer = $Margin
+@onready var _first_label: Label = %MasterLabel
 
 
 func _ready() -> void:
@@ -61,6 +72,8 @@ func _ready() -> void:
 		_mark_row_on_focus(control)
 	# on its own (not over a menu or a game) the screen brings its own background
 	_backdrop.visible = get_parent() == get_tree().root
+	get_viewport().size_changed.connect(_fit_to_window)
+	_fit_to_window()
 	_master.grab_focus.call_deferred()
 
 
@@ -83,6 +96,19 @@ func close() -> void:
 	App.save_settings()
 	closed.emit()
 	queue_free()
+
+
+# A portrait window draws the screen bigger in less room: the rows get narrower to fit it.
+func _fit_to_window() -> void:
+	var view := get_viewport_rect().size
+	var portrait := view.y > view.x
+	_first_label.custom_minimum_size.x = PORTRAIT_LABEL_WIDTH if portrait else LABEL_WIDTH
+	for slider: HSlider in [_master, _sfx, _tilt]:
+		slider.custom_minimum_size.x = PORTRAIT_SLIDER_WIDTH if portrait else SLIDER_WIDTH
+	var side := PORTRAIT_SIDE_MARGIN if portrait else SIDE_MARGIN
+	_margin.add_theme_constant_override("margin_left", side)
+	_margin.add_theme_constant_override("margin_right", side)
+	_bindings.set_button_width(PORTRAIT_BUTTON_WIDTH if portrait else BindingList.BUTTON_WIDTH)
 
 
 func _load_values() -> void:

@@ -16,16 +16,16 @@ static func apply(game: Control, level: BoardLevel) -> void:
 	var hud := game.get_node_or_null(^"Hud") as Control
 	if hud != null:
 		_restyle(hud, &"panel", palette.panel, palette.panel_border)
-	var stats := game.get_node_or_null(^"Hud/Column/Stats") as Control
+	var stats := game.get_node_or_null(^"Hud/Column/Info/Stats") as Control
 	if stats != null:
 		_restyle(stats, &"panel", palette.box, palette.box_border)
-	var title := game.get_node_or_null(^"Hud/Column/Title") as Label
+	var title := game.get_node_or_null(^"Hud/Column/Info/Title") as Label
 	if title != null and title.label_settings != null:
 		var settings := title.label_settings.duplicate() as LabelSettings
 		settings.font_color = palette.title
 		settings.outline_color = palette.title_outline
 		title.label_settings = settings
-	var notes := game.get_node_or_null(^"Hud/Column/Notes") as Label
+	var notes := game.get_node_or_null(^"Hud/Column/Info/Notes") as Label
 	if notes != null:
 		notes.add_theme_color_override(&"font_color", palette.notes)
 

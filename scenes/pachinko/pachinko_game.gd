@@ -16,9 +16,13 @@ const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const HUD_WIDTH := 360.0
-## A window this much taller than wide puts the panel under the board, this wide.
+## A window this much taller than wide puts the panel under the board, at most this wide
+## (view units before its zoom).
 const PORTRAIT_HUD_HEIGHT := 720.0
-const PORTRAIT_HUD_WIDTH := 420.0
+const PORTRAIT_HUD_WIDTH := 760.0
+## In that band the panel is drawn bigger until its smallest words are this tall on the
+## screen (the project draws its 1280 × 720 design at 0.56 on a 720 × 1280 phone).
+const MIN_SCREEN_TEXT_PX := 14.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0
@@ -36,11 +40,12 @@ var _recorder: ReplayRecorder
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
-@onready var cup: CupDisplay = $Hud/Column/Cup
+@onready var hud_column: BoxContainer = $Hud/Column
+@onready var cup: CupDisplay = $Hud/Column/Info/Cup
 @onready var launcher: LauncherPanel = $Hud/Column/Launcher
-@onready var stats_panel: StatsPanel = $Hud/Column/Stats
-@onready var title: Label = $Hud/Column/Title
-@onready var notes: Label = $Hud/Column/Notes
+@onready var stats_panel: StatsPanel = $Hud/Column/Info/Stats
+@onready var title: Label = $Hud/Column/Info/Title
+@onready var notes: Label = $Hud/Column/Info/Notes
 @onready var instructions: InstructionsPanel = $Instructions
 @onready var sounds: SoundBank = $Sounds
 @onready var pause_menu: PauseMenu = $PauseMenu
@@ -85,6 +90,9 @@ func _ready() -> void:
 		func(notches: float) -> void: _controls.turn_handle(rules, notches)
 	)
 	get_viewport().size_changed.connect(_layout)
+	# the numbers wrap to the width they are given, so the panel's needs settle only once it
+	# has been laid out in its band: fit it again when they change
+	hud_column.minimum_size_changed.connect(_refit_portrait_hud, CONNECT_DEFERRED)
 	_new_rules()
 	_layout()
 
@@ -216,10 +224,12 @@ func _layout() -> void:
 	if view.y - view.x >= PORTRAIT_HUD_HEIGHT:
 		# A portrait window: the board fills the width on top, the panel takes the band below
 		# (a column beside the board left it a third of the screen).
-		hud.position = Vector2((view.x - PORTRAIT_HUD_WIDTH) * 0.5, view.x)
-		hud.size = Vector2(PORTRAIT_HUD_WIDTH, view.y - view.x)
+		_fit_portrait_hud(Rect2(0.0, view.x, view.x, view.y - view.x))
 		area = Rect2(Vector2(MARGIN, MARGIN), Vector2(view.x, view.x) - Vector2.ONE * MARGIN * 2.0)
 	else:
+		hud_column.vertical = true
+		hud.scale = Vector2.ONE
+		_edge_hud_toward_board(SIDE_LEFT)
 		var hud_left := view.x - HUD_WIDTH
 		hud.position = Vector2(hud_left, 0.0)
 		hud.size = Vector2(HUD_WIDTH, view.y)
@@ -229,6 +239,45 @@ func _layout() -> void:
 	board_view.fit(_level, area)
 	instructions.position = area.position
 	instructions.size = area.size
+
+
+func _refit_portrait_hud() -> void:
+	var view := get_viewport_rect().size
+	if _level != null and view.y - view.x >= PORTRAIT_HUD_HEIGHT:
+		_fit_portrait_hud(Rect2(0.0, view.x, view.x, view.y - view.x))
+
+
+# Lays the panel out in `band` under the board: the launcher beside the numbers, the whole
+# drawn bigger so its smallest words read at MIN_SCREEN_TEXT_PX, as far as the band allows.
+func _fit_portrait_hud(band: Rect2) -> void:
+	hud_column.vertical = false
+	_edge_hud_toward_board(SIDE_TOP)
+	var screen_scale := maxf(get_viewport().get_final_transform().get_scale().y, 0.01)
+	var wanted := MIN_SCREEN_TEXT_PX / (LauncherPanel.SMALL_FONT_SIZE * screen_scale)
+	# rounded up, so the rounding of the scales on the way to the screen keeps it at 14
+	var zoom := maxf(1.0, ceilf(wanted * 100.0) / 100.0)
+	var needed := (
+		hud_column.get_combined_minimum_size()
+		+ Vector2(
+			hud_column.offset_left - hud_column.offset_right,
+			hud_column.offset_top - hud_column.offset_bottom
+		)
+	)
+	zoom = minf(zoom, minf(band.size.x / needed.x, band.size.y / needed.y))
+	var hud_size := Vector2(minf(band.size.x / zoom, PORTRAIT_HUD_WIDTH), band.size.y / zoom)
+	hud.scale = Vector2.ONE * zoom
+	hud.size = hud_size
+	hud.position = band.position + Vector2((band.size.x - hud_size.x * zoom) * 0.5, 0.0)
+
+
+# The panel's gold edge runs along the board: its left side beside it, its top under it.
+func _edge_hud_toward_board(side: Side) -> void:
+	var style := hud.get_theme_stylebox(&"panel") as StyleBoxFlat
+	if style == null:
+		return
+	var width := maxi(style.border_width_left, style.border_width_top)
+	style.border_width_left = width if side == SIDE_LEFT else 0
+	style.border_width_top = width if side == SIDE_TOP else 0
 
 
 func _is_start_event(event: InputEvent) -> bool:

@@ -225,7 +225,10 @@ func test_the_head_is_clamped_to_fifteen_pixels() -> void:
 	assert_eq(joystick.get("head_offset"), Vector2(-15.0, 15.0))
 
 
-func test_keys_tilt_smoothly_not_at_once() -> void:
+# QA: the note said "Click the joystick to start!" to a player on the arrows or a pad, whose
+# first tilt starts the board: it now says what every way of playing does.
+func test_the_note_says_a_tilt_starts_and_keys_tilt_smoothly_not_at_once() -> void:
+	assert_eq(_note().split("\n")[0], "Tilt the board to start!")
 	Input.action_press("tilt_right")
 	_game._process(1.0 / 60.0)
 	assert_true(_rules().is_playing(), "a tilt key starts the game too")

@@ -33,7 +33,7 @@ func test_each_board_dresses_the_screen_as_its_machine() -> void:
 		var hud := game.get_node("Hud") as Control
 		var style := hud.get_theme_stylebox(&"panel") as StyleBoxFlat
 		assert_eq(style.border_color, palette.panel_border, board + ": the side panel")
-		var title := game.get_node("Hud/Column/Title") as Label
+		var title := game.get_node("Hud/Column/Info/Title") as Label
 		assert_eq(title.label_settings.font_color, palette.title)
 		arts[view.fascia.texture.resource_path] = board
 		# one game at a time: five screens open at once each start their own worker threads
@@ -49,7 +49,7 @@ func test_a_portrait_window_puts_the_panel_under_a_board_as_wide_as_the_window()
 	var game := _game_on("res://levels/pachinko/hanami.board")
 	game.call("_layout")
 	var view := game.get_viewport_rect().size
-	var hud := (game.get_node("Hud") as Control).get_rect()
+	var hud := (game.get_node("Hud") as Control).get_global_rect()  # as drawn (scaled)
 	var board_width := (game.get_node("BoardView") as Node2D).scale.x * 700.0
 	window.size = before  # the game lays itself out again for the old size
 	assert_gt(view.y, view.x * 1.5, "the window is portrait")

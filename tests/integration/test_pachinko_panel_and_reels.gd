@@ -20,7 +20,7 @@ func _game() -> Control:
 
 
 func _panel_text(game: Node) -> String:
-	var panel := game.get_node("Hud/Column/Stats")
+	var panel := game.get_node("Hud/Column/Info/Stats")
 	return (panel.get_child(0) as RichTextLabel).get_parsed_text()
 
 
@@ -126,7 +126,7 @@ func test_balls_go_round_the_reels_not_over_them() -> void:
 func test_the_frame_counter_leaves_the_title_clear() -> void:
 	var game := _game()
 	await wait_process_frames(2)
-	var title := game.get_node("Hud/Column/Title") as Control
+	var title := game.get_node("Hud/Column/Info/Title") as Control
 	var counter := game.get_node("FrameCounter/FpsLabel") as Control
 	var title_rect := title.get_global_rect()
 	var counter_rect := counter.get_global_rect()

@@ -112,7 +112,7 @@ func test_the_game_scene_shows_a_named_board_literally() -> void:
 	add_child_autofree(game)
 	assert_not_null(game.get("rules"), "the board plays")
 	_assert_literal(_body(game.get_node("Instructions")).get_parsed_text(), "the game's panel", [])
-	var title := game.get_node("Hud/Column/Title") as Label
+	var title := game.get_node("Hud/Column/Info/Title") as Label
 	assert_eq(title.text, NAMED["name_font.board"], "the HUD title is a plain label")
 
 

@@ -97,3 +97,16 @@ func test_the_maze_game_stops_under_its_pause_menu() -> void:
 		assert_true(menu.can_process())
 		menu.close()
 		assert_true(game.can_process(), "%s: and runs again after resume" % path)
+
+
+# QA: settings opened from the pause menu scrolled past their first row (Master volume),
+# which had the focus, so the player saw neither the row nor where the keys were.
+func test_settings_from_the_pause_menu_show_their_focused_first_row() -> void:
+	_press("pause")
+	_menu.get_node("%SettingsButton").emit_signal("pressed")
+	await wait_process_frames(6)
+	var settings: Control = _menu.get("_settings")
+	var scroll: ScrollContainer = settings.get_node("Margin/Panel/Box/Scroll")
+	var master: Control = settings.get_node("%MasterSlider")
+	assert_eq(settings.get_viewport().gui_get_focus_owner(), master, "Master volume has focus")
+	assert_eq(scroll.scroll_vertical, 0, "and the list is at its top, where that row is")

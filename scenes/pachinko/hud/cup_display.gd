@@ -7,6 +7,8 @@ const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
 const MAX_HEAP := 40
 const TRAY := Color("b9bfcc")
 const TRAY_DARK := Color("4b5064")
+## The font size of "balls in the cup" under the count.
+const LABEL_FONT_SIZE := 15
 
 ## Most falling balls shown for one payout (a big one still pours for a moment).
 const MAX_POUR := 14
@@ -126,13 +128,13 @@ func _draw() -> void:
 	draw_string_outline(font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size, 6, TRAY_DARK)
 	draw_string(font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size, Color("1b1530"))
 	var label := "balls in the cup"
-	var lw := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, 15).x
+	var lw := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, LABEL_FONT_SIZE).x
 	draw_string(
 		font,
 		Vector2(w * 0.5 - lw * 0.5, rim.end.y - 6.0),
 		label,
 		HORIZONTAL_ALIGNMENT_LEFT,
 		-1,
-		15,
+		LABEL_FONT_SIZE,
 		Color("2b2640")
 	)

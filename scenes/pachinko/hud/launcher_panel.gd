@@ -22,6 +22,10 @@ const DIAL_RADIUS := 27.0
 const DIAL_START_DEG := 135.0
 const DIAL_SWEEP_DEG := 270.0
 const STREAM := Color("6cf07a")
+## Font sizes of the launcher's words: the status line, and the rest (the hint beside the
+## bar, POWER under it, HANDLE under the dial), which is the smallest text of the panel.
+const STATUS_FONT_SIZE := 16
+const SMALL_FONT_SIZE := 14
 const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 var _power := 0.0
@@ -123,7 +127,13 @@ func _draw() -> void:
 		status = "Ball ready: fire!"
 	draw_circle(lamp_at, 7.0, lamp)
 	draw_string(
-		font, lamp_at + Vector2(16, 6), status, HORIZONTAL_ALIGNMENT_LEFT, -1, 16, Color("e9e3ff")
+		font,
+		lamp_at + Vector2(16, 6),
+		status,
+		HORIZONTAL_ALIGNMENT_LEFT,
+		-1,
+		STATUS_FONT_SIZE,
+		Color("e9e3ff")
 	)
 	var lines := _hint.split("\n")
 	for i in lines.size():
@@ -133,7 +143,7 @@ func _draw() -> void:
 			lines[i],
 			HORIZONTAL_ALIGNMENT_LEFT,
 			-1,
-			13,
+			SMALL_FONT_SIZE,
 			Color("b8aee0")
 		)
 
@@ -158,7 +168,7 @@ func _draw_bar() -> void:
 		"POWER %d" % roundi(_power),
 		HORIZONTAL_ALIGNMENT_LEFT,
 		-1,
-		14,
+		SMALL_FONT_SIZE,
 		Color("e9e3ff")
 	)
 
@@ -202,6 +212,6 @@ func _draw_dial() -> void:
 	draw_line(DIAL_CENTER, DIAL_CENTER + pointer * (DIAL_RADIUS - 9.0), Color("eef1f7"), 4.0, true)
 	draw_circle(DIAL_CENTER, 7.0, RED.darkened(0.1) if not _handle_held else STREAM.darkened(0.2))
 	var label := "HANDLE %d" % roundi(_handle_power)
-	var width := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, 12).x
+	var width := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, SMALL_FONT_SIZE).x
 	var at := DIAL_CENTER + Vector2(-width * 0.5, DIAL_RADIUS + 18.0)
-	draw_string(font, at, label, HORIZONTAL_ALIGNMENT_LEFT, -1, 12, lit.lightened(0.3))
+	draw_string(font, at, label, HORIZONTAL_ALIGNMENT_LEFT, -1, SMALL_FONT_SIZE, lit.lightened(0.3))

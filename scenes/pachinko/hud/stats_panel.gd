@@ -1,6 +1,9 @@
 extends PanelContainer
 ## Session numbers: shots, where the balls went, hits per pocket and the payout ratio.
 
+## The font size of the numbers.
+const FONT_SIZE := 15
+
 var _text: RichTextLabel
 
 
@@ -11,8 +14,8 @@ func _ready() -> void:
 	_text.scroll_active = false
 	_text.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	_text.custom_minimum_size = Vector2(10, 0)
-	_text.add_theme_font_size_override("normal_font_size", 15)
-	_text.add_theme_font_size_override("bold_font_size", 15)
+	_text.add_theme_font_size_override("normal_font_size", FONT_SIZE)
+	_text.add_theme_font_size_override("bold_font_size", FONT_SIZE)
 	add_child(_text)
 
 

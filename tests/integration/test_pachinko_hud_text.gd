@@ -1,0 +1,93 @@
+extends GutTest
+## The pachinko side panel reads on a phone: the project draws its 1280 × 720 design at 0.56
+## on a 720 × 1280 screen, which made the launcher's hint and HANDLE 7 px and the notes 8 px
+## in a 420-wide band under the board. Now the panel in that band puts the launcher beside
+## the numbers and is drawn bigger: every word of it is at least 14 px on the screen at
+## 720 × 1280. At 1280 × 720 and 900 × 700 it is the column beside the board as before; in
+## every window the panel stays on screen, off the board, and its content fits it.
+
+const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
+const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
+const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
+const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]
+
+
+func before_each() -> void:
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+
+
+## The game in a window of `size` stretched as the project stretches its own window.
+func _game_in_window(size: Vector2i) -> PachinkoGame:
+	var window := Window.new()
+	window.size = size
+	window.content_scale_size = Vector2i(1280, 720)
+	window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
+	window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+	add_child_autofree(window)
+	var game := GAME.instantiate() as PachinkoGame
+	window.add_child(game)
+	await wait_process_frames(4)
+	return game
+
+
+## How many screen pixels a font size of 1 is, drawn by `control`.
+static func _px_per_font_unit(control: Control) -> float:
+	var drawn := control.get_global_transform_with_canvas().get_scale().y
+	return drawn * control.get_viewport().get_final_transform().get_scale().y
+
+
+## Every text of the panel with the font size it is drawn at: its labels, the numbers, the
+## cup's words and the launcher's.
+static func _panel_texts(game: PachinkoGame) -> Dictionary:
+	var sizes := {}
+	for label: Label in [game.title, game.notes]:
+		sizes[label.name] = MazeSideText.font_size_of(label) * _px_per_font_unit(label)
+	var numbers := game.stats_panel.find_children("*", "RichTextLabel", true, false)
+	var rich := numbers[0] as RichTextLabel
+	sizes["Stats"] = rich.get_theme_font_size(&"normal_font_size") * _px_per_font_unit(rich)
+	sizes["Cup"] = CupDisplay.LABEL_FONT_SIZE * _px_per_font_unit(game.cup)
+	sizes["Launcher"] = LauncherPanel.SMALL_FONT_SIZE * _px_per_font_unit(game.launcher)
+	return sizes
+
+
+func test_a_phone_reads_every_word_of_the_panel_at_14_px() -> void:
+	var game := await _game_in_window(Vector2i(720, 1280))
+	var sizes := _panel_texts(game)
+	assert_eq(sizes.size(), 5)
+	for text: String in sizes:
+		assert_gte(sizes[text], 14.0, "720x1280: the %s is %.1f px" % [text, sizes[text]])
+	# QA: its gold edge stayed on the left, a stray line down the screen's edge under the board
+	var style := game.hud.get_theme_stylebox(&"panel") as StyleBoxFlat
+	assert_gt(style.border_width_top, 0, "the panel's edge runs along the board above it")
+	assert_eq(style.border_width_left, 0, "not down the screen's left edge")
+	game.free()  # before its window, whose last size change it would answer
+
+
+func test_landscape_keeps_the_designed_column_beside_the_board() -> void:
+	for size: Vector2i in [Vector2i(1280, 720), Vector2i(900, 700)]:
+		var game := await _game_in_window(size)
+		assert_eq(game.hud.scale, Vector2.ONE, "%s: the panel as designed" % size)
+		assert_true(game.hud_column.vertical, "%s: one column" % size)
+		var style := game.hud.get_theme_stylebox(&"panel") as StyleBoxFlat
+		assert_gt(style.border_width_left, 0, "%s: its edge along the board" % size)
+		assert_eq(style.border_width_top, 0)
+		var view := game.get_viewport_rect().size
+		assert_almost_eq(game.hud.size.x, PachinkoGame.HUD_WIDTH, 0.5)
+		assert_almost_eq(game.hud.get_global_rect().end.x, view.x, 0.5, "on the right edge")
+		game.free()
+
+
+func test_the_panel_stays_on_screen_off_the_board_and_holds_its_content() -> void:
+	for size in SIZES:
+		var game := await _game_in_window(size)
+		var view := game.get_viewport_rect()
+		var panel := game.hud.get_global_rect()
+		var board := game.instructions.get_global_rect()  # laid over the board's area
+		assert_true(view.grow(0.5).encloses(panel), "%s: the panel %s is on screen" % [size, panel])
+		assert_false(panel.intersects(board), "%s: the panel %s is off the board" % [size, panel])
+		var needed := game.hud_column.get_combined_minimum_size()
+		assert_lte(needed.x, game.hud_column.size.x + 0.5, "%s: its content fits across" % size)
+		assert_lte(needed.y, game.hud_column.size.y + 0.5, "%s: and down" % size)
+		game.free()
