@@ -6,16 +6,13 @@ extends GutTest
 
 const PANEL := preload("res://scenes/pachinko/instructions_panel.tscn")
 const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
+const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 
 
 ## The panel over the board's area (the game's portrait or landscape one) in a window of
 ## `size` pixels stretched as the project stretches its window.
 func _panel_in_window(size: Vector2i) -> InstructionsPanel:
-	var window := Window.new()
-	window.size = size
-	window.content_scale_size = Vector2i(1280, 720)
-	window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
-	window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+	var window := StretchedWindow.make(size)
 	add_child_autofree(window)
 	var panel: InstructionsPanel = PANEL.instantiate()
 	window.add_child(panel)

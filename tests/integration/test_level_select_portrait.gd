@@ -9,6 +9,7 @@ extends GutTest
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
 const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const PortraitZoom := preload("res://scenes/common/portrait_zoom.gd")
+const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const EMPTY_USER_ROOT := "user://test_level_select_portrait_no_boards"
 
 
@@ -23,11 +24,7 @@ func after_each() -> void:
 
 ## The maze level select in a window of `size` pixels, stretched as the project stretches.
 func _open_in_window(size: Vector2i) -> LevelSelect:
-	var window := Window.new()
-	window.size = size
-	window.content_scale_size = Vector2i(1280, 720)
-	window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
-	window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+	var window := StretchedWindow.make(size)
 	add_child_autofree(window)
 	App.level_select_kind = BoardLevel.MAZE_NAME
 	var screen := LevelSelectScene.instantiate() as LevelSelect

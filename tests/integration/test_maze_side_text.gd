@@ -6,16 +6,13 @@ extends GutTest
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(1280, 720), Vector2i(900, 700)]
 
 
 ## The game in a window of `size` stretched as the project stretches its own window.
 func _game_in_window(size: Vector2i) -> Control:
-	var window := Window.new()
-	window.size = size
-	window.content_scale_size = Vector2i(1280, 720)
-	window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
-	window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+	var window := StretchedWindow.make(size)
 	add_child_autofree(window)
 	var game: Control = GAME.instantiate()
 	window.add_child(game)

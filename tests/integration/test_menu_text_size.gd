@@ -10,17 +10,14 @@ const MainMenuScene := preload("res://scenes/menu/main_menu.tscn")
 const SettingsScene := preload("res://scenes/menu/settings_menu.tscn")
 const PauseScene := preload("res://scenes/common/pause_menu.tscn")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]
 const MIN_SCREEN_PX := 14.0
 
 
 ## `scene` in a window of `size` pixels, stretched as the project stretches its own window.
 func _open_in_window(scene: PackedScene, size: Vector2i) -> Control:
-	var window := Window.new()
-	window.size = size
-	window.content_scale_size = Vector2i(1280, 720)
-	window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
-	window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+	var window := StretchedWindow.make(size)
 	add_child_autofree(window)
 	var screen := scene.instantiate() as Control
 	window.add_child(screen)
@@ -30,9 +27,7 @@ func _open_in_window(scene: PackedScene, size: Vector2i) -> Control:
 
 ## How tall `control`'s text is on the screen, in pixels.
 static func screen_px(control: Control) -> float:
-	var drawn := control.get_global_transform_with_canvas().get_scale().y
-	var stretch := control.get_viewport().get_final_transform().get_scale().y
-	return MazeSideText.font_size_of(control) * drawn * stretch
+	return MazeSideText.font_size_of(control) * StretchedWindow.px_per_font_unit(control)
 
 
 ## Asserts every visible label and button under `root` reads at MIN_SCREEN_PX; returns how
@@ -88,11 +83,7 @@ func test_the_settings_read_at_14_px_and_stay_whole() -> void:
 
 func test_the_pause_menu_reads_at_14_px_on_a_phone() -> void:
 	for size in SIZES:
-		var window := Window.new()
-		window.size = size
-		window.content_scale_size = Vector2i(1280, 720)
-		window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
-		window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+		var window := StretchedWindow.make(size)
 		add_child_autofree(window)
 		var pause := PauseScene.instantiate() as CanvasLayer
 		window.add_child(pause)

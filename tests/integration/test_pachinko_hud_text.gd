@@ -11,6 +11,7 @@ const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
 const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]
 
 
@@ -20,11 +21,7 @@ func before_each() -> void:
 
 ## The game in a window of `size` stretched as the project stretches its own window.
 func _game_in_window(size: Vector2i) -> PachinkoGame:
-	var window := Window.new()
-	window.size = size
-	window.content_scale_size = Vector2i(1280, 720)
-	window.content_scale_mode = Window.CONTENT_SCALE_MODE_CANVAS_ITEMS
-	window.content_scale_aspect = Window.CONTENT_SCALE_ASPECT_EXPAND
+	var window := StretchedWindow.make(size)
 	add_child_autofree(window)
 	var game := GAME.instantiate() as PachinkoGame
 	window.add_child(game)
@@ -32,23 +29,23 @@ func _game_in_window(size: Vector2i) -> PachinkoGame:
 	return game
 
 
-## How many screen pixels a font size of 1 is, drawn by `control`.
-static func _px_per_font_unit(control: Control) -> float:
-	var drawn := control.get_global_transform_with_canvas().get_scale().y
-	return drawn * control.get_viewport().get_final_transform().get_scale().y
-
-
 ## Every text of the panel with the font size it is drawn at: its labels, the numbers, the
 ## cup's words and the launcher's.
 static func _panel_texts(game: PachinkoGame) -> Dictionary:
 	var sizes := {}
 	for label: Label in [game.title, game.notes]:
-		sizes[label.name] = MazeSideText.font_size_of(label) * _px_per_font_unit(label)
+		sizes[label.name] = (
+			MazeSideText.font_size_of(label) * StretchedWindow.px_per_font_unit(label)
+		)
 	var numbers := game.stats_panel.find_children("*", "RichTextLabel", true, false)
 	var rich := numbers[0] as RichTextLabel
-	sizes["Stats"] = rich.get_theme_font_size(&"normal_font_size") * _px_per_font_unit(rich)
-	sizes["Cup"] = CupDisplay.LABEL_FONT_SIZE * _px_per_font_unit(game.cup)
-	sizes["Launcher"] = LauncherPanel.SMALL_FONT_SIZE * _px_per_font_unit(game.launcher)
+	sizes["Stats"] = (
+		rich.get_theme_font_size(&"normal_font_size") * StretchedWindow.px_per_font_unit(rich)
+	)
+	sizes["Cup"] = CupDisplay.LABEL_FONT_SIZE * StretchedWindow.px_per_font_unit(game.cup)
+	sizes["Launcher"] = (
+		LauncherPanel.SMALL_FONT_SIZE * StretchedWindow.px_per_font_unit(game.launcher)
+	)
 	return sizes
 
 
