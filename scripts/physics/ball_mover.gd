@@ -70,6 +70,7 @@ func move_range(from: int, to: int) -> void:
 		_p_start = _p
 		# The cell the ball is in (for its broad-phase key), while no contact has moved it.
 		var c := 0
+		var at := Vector2i.ZERO
 		var cell_stale := true
 		for sub: int in steps:
 			if _tracing and sub > 0:
@@ -77,13 +78,10 @@ func move_range(from: int, to: int) -> void:
 			_p += _v * _h + _push_step
 			if _has_ring and (_p - _ring_center).length_squared() > _ring_lim2:
 				_touch_ring()
-			var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+			at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 			c = at.y * _cols + at.x
-			var k0 := 0
-			var k1: int = _pin_items.size()
-			if _zoned:
-				k0 = _pin_start[c]
-				k1 = _pin_start[c + 1]
+			var k0: int = _pin_start[c] if _zoned else 0
+			var k1: int = _pin_start[c + 1] if _zoned else _pin_items.size()
 			var moved := false
 			for k: int in range(k0, k1):
 				var d: Vector2 = _p - _pin_item_pos[k]
@@ -110,10 +108,8 @@ func move_range(from: int, to: int) -> void:
 		# stale anyway (no broad phase ran: it bins every ball again before it reads them).
 		if _keyed:
 			if cell_stale:
-				var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(
-					Vector2i.ZERO, _last_cell
-				)
-				c = cell.y * _cols + cell.x
+				at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+				c = at.y * _cols + at.x
 			_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
 		if _gone:
 			_alive[i] = 0
