@@ -2,11 +2,10 @@ extends RefCounted
 ## Keeps a maze panel's text readable on the screen (the side panel's portrait band, the win
 ## card). The project draws a 1280 × 720 design stretched to the window (canvas_items), so a
 ## portrait phone or a small window draws it smaller: then every label and button of the
-## panel grows by one factor, so the smallest text is still MIN_SCREEN_PX tall on the screen
-## and the sizes keep their order.
+## panel grows by one factor, so the smallest text still reads (ReadableText) and the sizes
+## keep their order.
 
-## The smallest font size a player sees, in screen pixels.
-const MIN_SCREEN_PX := 14.0
+const ReadableText := preload("res://scenes/common/readable_text.gd")
 
 ## How much the text is grown now (1 when the design's sizes are readable as they are).
 var factor := 1.0
@@ -35,7 +34,7 @@ func apply(screen_scale: float) -> void:
 	var smallest := 1000
 	for size: int in _designed.values():
 		smallest = mini(smallest, size)
-	factor = maxf(1.0, MIN_SCREEN_PX / (float(smallest) * maxf(screen_scale, 0.01)))
+	factor = ReadableText.growth_at(smallest, screen_scale)
 	for control: Control in _designed.keys():
 		var designed: int = _designed[control]
 		var size := ceili(designed * factor - 0.001)

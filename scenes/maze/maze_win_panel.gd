@@ -13,6 +13,7 @@ signal menu_chosen
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const ReadableText := preload("res://scenes/common/readable_text.gd")
 const INK := Color(0.129, 0.004, 0.141)
 ## The card's colour.
 const CARD := Color(0.99, 0.97, 0.94, 0.96)
@@ -113,7 +114,7 @@ func text_factor() -> float:
 	return _text.factor
 
 
-# Grows the card's text so its smallest is MazeSideText.MIN_SCREEN_PX on the screen (the
+# Grows the card's text so its smallest is ReadableText.MIN_SCREEN_PX on the screen (the
 # card sits over the board, which leaves it room at any window size).
 func _fit_text() -> void:
 	if is_inside_tree():

@@ -7,11 +7,9 @@ extends Control
 
 const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
-## The card's smallest text (the legend's lines) is never drawn smaller than this many
-## screen pixels while the panel has room: a window that draws the game smaller than its
-## 1280 × 720 design (a portrait phone draws it at 0.56) gets the card scaled up.
-const MIN_SCREEN_PX := 14.0
-## The card's smallest font size (the legend's) in the design.
+const ReadableText := preload("res://scenes/common/readable_text.gd")
+## The card's smallest font size (the legend's) in the design: the card is scaled up until
+## it reads (ReadableText), while the panel has room.
 const SMALLEST_FONT := 14.0
 ## The share of the panel the scaled card may cover at most, each way.
 const MAX_COVER := 0.94
@@ -118,13 +116,12 @@ func show_problem(problem: String) -> void:
 	visible = true
 
 
-# Scales the card about its centre so its smallest text reads at MIN_SCREEN_PX on the
+# Scales the card about its centre so its smallest text reads (ReadableText) on the
 # screen, as far as the panel has room for it.
 func _fit_card() -> void:
 	if not is_inside_tree() or _card.size.x <= 0.0 or _card.size.y <= 0.0:
 		return
-	var screen_scale := get_viewport().get_final_transform().get_scale().y
-	var wanted := MIN_SCREEN_PX / (SMALLEST_FONT * maxf(screen_scale, 0.01))
+	var wanted := ReadableText.growth_at(SMALLEST_FONT, ReadableText.screen_scale_of(self))
 	var room := minf(size.x * MAX_COVER / _card.size.x, size.y * MAX_COVER / _card.size.y)
 	_card.pivot_offset = _card.size * 0.5
 	_card.scale = Vector2.ONE * clampf(wanted, 1.0, maxf(room, 1.0))

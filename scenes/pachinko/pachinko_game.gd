@@ -15,14 +15,12 @@ const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
+const ReadableText := preload("res://scenes/common/readable_text.gd")
 const HUD_WIDTH := 360.0
 ## A window this much taller than wide puts the panel under the board, at most this wide
 ## (view units before its zoom).
 const PORTRAIT_HUD_HEIGHT := 720.0
 const PORTRAIT_HUD_WIDTH := 760.0
-## In that band the panel is drawn bigger until its smallest words are this tall on the
-## screen (the project draws its 1280 × 720 design at 0.56 on a 720 × 1280 phone).
-const MIN_SCREEN_TEXT_PX := 14.0
 const MARGIN := 10.0
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0
@@ -248,12 +246,12 @@ func _refit_portrait_hud() -> void:
 
 
 # Lays the panel out in `band` under the board: the launcher beside the numbers, the whole
-# drawn bigger so its smallest words read at MIN_SCREEN_TEXT_PX, as far as the band allows.
+# drawn bigger so its smallest words read (ReadableText), as far as the band allows.
 func _fit_portrait_hud(band: Rect2) -> void:
 	hud_column.vertical = false
 	_edge_hud_toward_board(SIDE_TOP)
-	var screen_scale := maxf(get_viewport().get_final_transform().get_scale().y, 0.01)
-	var wanted := MIN_SCREEN_TEXT_PX / (LauncherPanel.SMALL_FONT_SIZE * screen_scale)
+	var screen_scale := ReadableText.screen_scale_of(self)
+	var wanted := ReadableText.growth_at(LauncherPanel.SMALL_FONT_SIZE, screen_scale)
 	# rounded up, so the rounding of the scales on the way to the screen keeps it at 14
 	var zoom := maxf(1.0, ceilf(wanted * 100.0) / 100.0)
 	var needed := (
