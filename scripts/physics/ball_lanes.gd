@@ -27,8 +27,6 @@ var _crew := LaneCrew.new()
 ## False in a build without threads (a single-threaded web export): there a started Thread
 ## never runs, so every stage stays on the calling thread.
 var _can_thread: bool = OS.has_feature("threads")
-## True while run() runs: the job gets no worker number.
-var _without_worker := false
 
 
 func _notification(what: int) -> void:
@@ -55,22 +53,19 @@ func workers_for(count: int) -> int:
 ## Calls `job(lane, from, to)` once per lane, covering 0..count without overlap, and
 ## returns once every lane is done. Returns the number of lanes used.
 func run(job: Callable, count: int) -> int:
-	_without_worker = true
-	return _run(job, even_bounds(count, lanes_for(count)))
+	return _run(job, even_bounds(count, lanes_for(count)), false)
 
 
 ## As run(), but calls `job(worker, lane, from, to)`: `worker` (0 is the calling thread,
 ## below workers_for(count)) lets a stage keep one set of working state per thread.
 func run_by_worker(job: Callable, count: int) -> int:
-	_without_worker = false
-	return _run(job, even_bounds(count, lanes_for(count)))
+	return _run(job, even_bounds(count, lanes_for(count)), true)
 
 
 ## As run_by_worker(), over lanes the caller cut: lane k covers items bounds[k] ..
 ## bounds[k + 1] (items may be anything, e.g. rows of cells; bounds must not decrease).
 func run_spans(job: Callable, bounds: PackedInt32Array) -> int:
-	_without_worker = false
-	return _run(job, bounds)
+	return _run(job, bounds, true)
 
 
 ## Bounds of `lanes` lanes over `count` items, as even as whole items allow: lane k covers
@@ -84,16 +79,17 @@ static func even_bounds(count: int, lanes: int) -> PackedInt32Array:
 	return bounds
 
 
-func _run(job: Callable, bounds: PackedInt32Array) -> int:
+# Runs `job` over the lanes `bounds` cut; `with_worker` says it takes a worker number.
+func _run(job: Callable, bounds: PackedInt32Array, with_worker: bool) -> int:
 	var lanes: int = bounds.size() - 1
 	if lanes == 1 or threads <= 1 or not _can_thread or _in_pool_task():
 		for lane: int in lanes:
-			if _without_worker:
-				job.call(lane, bounds[lane], bounds[lane + 1])
-			else:
+			if with_worker:
 				job.call(0, lane, bounds[lane], bounds[lane + 1])
+			else:
+				job.call(lane, bounds[lane], bounds[lane + 1])
 		return lanes
-	_crew.run(job, bounds, mini(threads, lanes) - 1, not _without_worker)
+	_crew.run(job, bounds, mini(threads, lanes) - 1, with_worker)
 	return lanes
 
 
