@@ -12,17 +12,13 @@ BOARD=${1:?board name, e.g. garden}
 SIZE=${2:-1280x720}
 OUT=build/look
 mkdir -p "$OUT"
-SCRATCH=$(mktemp -d)
-trap 'rm -rf "$SCRATCH"' EXIT
-USERDIR="$SCRATCH/godot/app_userdata/Board Studio"
-mkdir -p "$USERDIR"
-printf '{"format": 1, "board": "res://levels/maze/%s.board", "kind": "maze", "written_at": %s}\n' \
-	"$BOARD" "$(date +%s)" >"$USERDIR/playtest_request.json"
+# shellcheck source=tools/look_board.sh
+. tools/look_board.sh
+look_board_setup maze "$BOARD"
 LOOK=${3:-}
 if [ "$LOOK" = tutorial ]; then
 	printf '[meta]\nversion=1\n[display]\nmaze_tutorial_look=true\n' >"$USERDIR/settings.cfg"
 fi
-export XDG_DATA_HOME="$SCRATCH"
 xvfb-run -a -n "${XVFB_NUM:-99}" -s "-screen 0 ${SIZE}x24" bash -c '
 	timeout -s INT -k 5 32 tools/godot.sh --rendering-driver opengl3 --resolution '"$SIZE"' --position 0,0 --path . \
 		res://scenes/maze/maze_game.tscn >"'"$OUT"'/'"$BOARD"'_'"$SIZE"'.log" 2>&1 &

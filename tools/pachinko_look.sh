@@ -3,7 +3,7 @@
 # (a click starts the game, Shift held streams balls from the handle, Space charges one
 # shot), and saves screenshots of the whole screen to build/look/<board>_<size>_<n>.png.
 # A scratch user folder keeps the player's own settings and best results out of it.
-#   tools/pachinko_look.sh hanami 720x1280     XVFB_DISPLAY=63: that display number
+#   tools/pachinko_look.sh hanami 720x1280     XVFB_NUM=63: the first X display number tried
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"
@@ -11,20 +11,12 @@ BOARD=${1:?board name, e.g. hanami}
 SIZE=${2:-1280x720}
 OUT=build/look
 mkdir -p "$OUT"
-SCRATCH=$(mktemp -d)
-trap 'rm -rf "$SCRATCH"' EXIT
-USERDIR="$SCRATCH/godot/app_userdata/Board Studio"
-mkdir -p "$USERDIR"
-printf '{"format": 1, "board": "res://levels/pachinko/%s.board", "kind": "pachinko", "written_at": %s}\n' \
-	"$BOARD" "$(date +%s)" >"$USERDIR/playtest_request.json"
-export XDG_DATA_HOME="$SCRATCH"
-SERVER=(-a)
-if [ -n "${XVFB_DISPLAY:-}" ]; then
-	SERVER=(-n "$XVFB_DISPLAY")
-fi
+# shellcheck source=tools/look_board.sh
+. tools/look_board.sh
+look_board_setup pachinko "$BOARD"
 WIDTH=${SIZE%x*}
 HEIGHT=${SIZE#*x}
-xvfb-run "${SERVER[@]}" -s "-screen 0 ${SIZE}x24" bash -c '
+xvfb-run -a -n "${XVFB_NUM:-99}" -s "-screen 0 ${SIZE}x24" bash -c '
 	timeout -s INT -k 5 40 tools/godot.sh --rendering-driver opengl3 --resolution '"$SIZE"' --position 0,0 --path . \
 		res://scenes/pachinko/pachinko_game.tscn >"'"$OUT"'/'"$BOARD"'_'"$SIZE"'.log" 2>&1 &
 	game=$!
