@@ -25,6 +25,9 @@ const MOST_HUD_SHARE := 0.45
 const PORTRAIT_HUD_HEIGHT := 720.0
 const PORTRAIT_HUD_WIDTH := 760.0
 const MARGIN := 10.0
+## The board's area's short side in the designed 1280 × 720 layout: a full-power drag is 100
+## view units there and as much longer as the board is bigger elsewhere (PachinkoInput).
+const DESIGN_BOARD_SIDE := 720.0 - 2.0 * MARGIN
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0
 const TICK_MAX_SPEED := 700.0
@@ -143,6 +146,11 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 
 
+## How far (view units) the flipper's grip is dragged up for full power in this layout.
+func full_power_drag() -> float:
+	return LaunchPower.MAX_POWER * _controls.drag_scale
+
+
 ## Starts over on the same board: a fresh world, the instructions up.
 func restart() -> void:
 	_new_rules()
@@ -241,6 +249,7 @@ func _layout() -> void:
 			Vector2(MARGIN, MARGIN), Vector2(hud_left - MARGIN * 2.0, view.y - MARGIN * 2.0)
 		)
 	board_view.fit(_level, area)
+	_controls.drag_scale = minf(area.size.x, area.size.y) / DESIGN_BOARD_SIDE
 	instructions.position = area.position
 	instructions.size = area.size
 
