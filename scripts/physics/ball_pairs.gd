@@ -176,28 +176,36 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> void:
 	var below_off: int = (_cols - 1) << SORT_SHIFT
 	var past_below_off: int = (_cols + 2) << SORT_SHIFT
 	var below: int = keys.bsearch((keys[from] & cell_bits) + below_off)
-	# Each ball's two runs (its own cell and the next, then the three cells below) in one
-	# scan that ends at the first key past each: a lone ball, as most of a flowing board
-	# are, costs two key reads.
+	# Each ball has two runs of candidates: its own cell and the next (the keys after its
+	# own), then the three cells below (from `below`, a pointer that only moves forward).
+	# Each run ends at the first key past it. A lone ball, as most of a flowing board are,
+	# is known by two key reads and costs nothing more.
 	for k: int in range(from, to):
 		var key: int = keys[k]
 		var cell_key: int = key & cell_bits
+		var end: int = cell_key + next_off
+		var first_below: int = cell_key + below_off
+		while keys[below] < first_below:
+			below += 1
+		var past_below: int = cell_key + past_below_off
+		var m: int = k + 1
+		if keys[m] >= end and keys[below] >= past_below:
+			continue
 		var i: int = key & mask
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
-		var m: int = k + 1
-		var end: int = cell_key + next_off
-		for run: int in 2:
-			while keys[m] < end:
-				var j: int = keys[m] & mask
-				var rr: float = ri + rad[j]
-				if pi.distance_squared_to(pos[j]) < rr * rr:
-					out.append(i)
-					out.append(j)
-				m += 1
-			if run == 0:
-				var first_below: int = cell_key + below_off
-				while keys[below] < first_below:
-					below += 1
-				m = below
-				end = cell_key + past_below_off
+		while keys[m] < end:
+			var j: int = keys[m] & mask
+			var rr: float = ri + rad[j]
+			if pi.distance_squared_to(pos[j]) < rr * rr:
+				out.append(i)
+				out.append(j)
+			m += 1
+		m = below
+		while keys[m] < past_below:
+			var j: int = keys[m] & mask
+			var rr: float = ri + rad[j]
+			if pi.distance_squared_to(pos[j]) < rr * rr:
+				out.append(i)
+				out.append(j)
+			m += 1
