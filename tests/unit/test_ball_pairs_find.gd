@@ -42,8 +42,9 @@ func _listed_pairs(w: BallWorld) -> PackedStringArray:
 	pairs.begin(w._balls, t.ball_restitution, t.bounce_threshold, t.rest_speed, Vector2.ZERO)
 	pairs.find(w._balls, w._geo, w._lanes, false)
 	var out := PackedStringArray()
-	for list: PackedInt32Array in pairs.stripe_pairs:
-		for m: int in range(0, list.size(), 2):
+	for s: int in pairs.stripe_pairs.size():
+		var list: PackedInt32Array = pairs.stripe_pairs[s]
+		for m: int in range(0, pairs.stripe_used[s], 2):
 			out.append("%d,%d" % [mini(list[m], list[m + 1]), maxi(list[m], list[m + 1])])
 	out.sort()
 	return out
