@@ -111,8 +111,8 @@ func _fit_height() -> void:
 	custom_minimum_size = Vector2(0, _height_at(_font_size))
 
 
-static func _height_at(font_size: int) -> float:
-	return ceilf(font_size * ROW_PER_FONT_UNIT * 2.0 + 2.0)
+static func _height_at(text_size: int) -> float:
+	return ceilf(text_size * ROW_PER_FONT_UNIT * 2.0 + 2.0)
 
 
 func _row_height() -> float:
