@@ -45,6 +45,7 @@ var _solve := BallSolve.new()
 var _keys := PackedInt64Array()
 var _pos := PackedVector2Array()
 var _rad := PackedFloat32Array()
+var _slot := PackedInt32Array()
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
@@ -75,6 +76,7 @@ func begin(
 func find(b: BallStore, g: StaticGeometry, lanes: BallLanes, solve_even: bool) -> void:
 	var n: int = b.ids.size()
 	if n < 2:
+		b.keys_valid = false  # no sort, no key slots: a lone ball is binned again
 		_lane_bounds = PackedInt32Array([0, 0])
 		_lane_pair_counts = PackedInt32Array([0, 0])
 		return
@@ -93,6 +95,9 @@ func find(b: BallStore, g: StaticGeometry, lanes: BallLanes, solve_even: bool) -
 	_keys = b.cell_keys.duplicate()
 	_keys.append(SORT_SENTINEL)
 	_keys.sort()
+	# Next step's keys start in this order; the lanes note where each ball's key is.
+	b.cell_keys = _keys.slice(0, n)
+	_slot = b.key_slot
 	_cut_stripes(g.rows, n, lanes.lanes_for(n))
 	_solve_even = solve_even
 	_lane_pair_counts.resize(2 * (_lane_bounds.size() - 1))
@@ -172,10 +177,12 @@ func _bin_range(_lane: int, from: int, to: int) -> void:
 
 
 ## Lists in `out` every touching pair whose first ball holds sorted key from..to - 1, from
-## its start on, growing it when full; returns the entries used (two per pair).
+## its start on, growing it when full; returns the entries used (two per pair). Notes each
+## of these balls' place in the sorted keys in key_slot.
 func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
 	var used := 0
 	var room: int = out.size()
+	var slot: PackedInt32Array = _slot
 	var keys: PackedInt64Array = _keys
 	var pos: PackedVector2Array = _pos
 	var rad: PackedFloat32Array = _rad
@@ -192,6 +199,7 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
 	# is known by two key reads and costs nothing more.
 	for k: int in range(from, to):
 		var key: int = keys[k]
+		slot[key & mask] = k
 		var cell_key: int = key & cell_bits
 		var end: int = cell_key + next_off
 		var first_below: int = cell_key + below_off
