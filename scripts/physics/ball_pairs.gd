@@ -206,33 +206,23 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
 		while keys[below] < first_below:
 			below += 1
 		var past_below: int = cell_key + past_below_off
-		var m: int = k + 1
-		if keys[m] >= end and keys[below] >= past_below:
+		if keys[k + 1] >= end and keys[below] >= past_below:
 			continue
 		var i: int = key & mask
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
-		while keys[m] < end:
-			var j: int = keys[m] & mask
-			var rr: float = ri + rad[j]
-			if pi.distance_squared_to(pos[j]) < rr * rr:
-				if used == room:
-					room = maxi(2 * room, PAIRS_ROOM)
-					out.resize(room)
-				out[used] = i
-				out[used + 1] = j
-				used += 2
-			m += 1
-		m = below
-		while keys[m] < past_below:
-			var j: int = keys[m] & mask
-			var rr: float = ri + rad[j]
-			if pi.distance_squared_to(pos[j]) < rr * rr:
-				if used == room:
-					room = maxi(2 * room, PAIRS_ROOM)
-					out.resize(room)
-				out[used] = i
-				out[used + 1] = j
-				used += 2
-			m += 1
+		for run: int in 2:
+			var m: int = k + 1 if run == 0 else below
+			var past: int = end if run == 0 else past_below
+			while keys[m] < past:
+				var j: int = keys[m] & mask
+				var rr: float = ri + rad[j]
+				if pi.distance_squared_to(pos[j]) < rr * rr:
+					if used == room:
+						room = maxi(2 * room, PAIRS_ROOM)
+						out.resize(room)
+					out[used] = i
+					out[used + 1] = j
+					used += 2
+				m += 1
 	return used
