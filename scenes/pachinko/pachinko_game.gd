@@ -45,11 +45,12 @@ var _recorder: ReplayRecorder
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
 @onready var hud_column: BoxContainer = $Hud/Column
-@onready var cup: CupDisplay = $Hud/Column/Info/Cup
+@onready var hud_info: BoxContainer = $Hud/Column/Info
+@onready var cup: CupDisplay = $Hud/Column/Info/Readout/Cup
 @onready var launcher: LauncherPanel = $Hud/Column/Launcher
-@onready var stats_panel: StatsPanel = $Hud/Column/Info/Stats
-@onready var title: Label = $Hud/Column/Info/Title
-@onready var notes: Label = $Hud/Column/Info/Notes
+@onready var stats_panel: StatsPanel = $Hud/Column/Info/Numbers/Stats
+@onready var title: Label = $Hud/Column/Info/Readout/Title
+@onready var notes: Label = $Hud/Column/Info/Numbers/Notes
 @onready var instructions: InstructionsPanel = $Instructions
 @onready var sounds: SoundBank = $Sounds
 @onready var pause_menu: PauseMenu = $PauseMenu
@@ -238,7 +239,9 @@ func _layout() -> void:
 	else:
 		# a small window draws the column bigger, so its smallest words still read, and
 		# wider by as much: the board takes what is left
-		hud_column.vertical = true
+		hud_info.vertical = true
+		launcher.size_flags_horizontal = Control.SIZE_FILL
+		launcher.draw_bigger(1.0)
 		var zoom := minf(_readable_zoom(), view.x * MOST_HUD_SHARE / HUD_WIDTH)
 		hud.scale = Vector2.ONE * maxf(zoom, 1.0)
 		_edge_hud_toward_board(SIDE_LEFT)
@@ -260,24 +263,30 @@ func _refit_portrait_hud() -> void:
 		_fit_portrait_hud(Rect2(0.0, view.x, view.x, view.y - view.x))
 
 
-# Lays the panel out in `band` under the board: the launcher beside the numbers, the whole
-# drawn bigger so its smallest words read (ReadableText), as far as the band allows.
+# Lays the panel out in `band` under the board: the cup beside the numbers, the launcher
+# under them, the whole drawn bigger so its smallest words read (ReadableText), as far as
+# the band allows. The launcher then takes the height left under the numbers, drawn bigger
+# (a player's thumb is there on a phone): with it at its design size the band's last
+# 190 px stayed empty at 720 × 1280.
 func _fit_portrait_hud(band: Rect2) -> void:
-	hud_column.vertical = false
+	hud_info.vertical = false
+	launcher.size_flags_horizontal = Control.SIZE_SHRINK_CENTER
+	launcher.draw_bigger(1.0)
 	_edge_hud_toward_board(SIDE_TOP)
-	var zoom := _readable_zoom()
-	var needed := (
-		hud_column.get_combined_minimum_size()
-		+ Vector2(
-			hud_column.offset_left - hud_column.offset_right,
-			hud_column.offset_top - hud_column.offset_bottom
-		)
+	var margins := Vector2(
+		hud_column.offset_left - hud_column.offset_right,
+		hud_column.offset_top - hud_column.offset_bottom
 	)
-	zoom = minf(zoom, minf(band.size.x / needed.x, band.size.y / needed.y))
+	var needed := hud_column.get_combined_minimum_size() + margins
+	var zoom := minf(_readable_zoom(), minf(band.size.x / needed.x, band.size.y / needed.y))
 	var hud_size := Vector2(minf(band.size.x / zoom, PORTRAIT_HUD_WIDTH), band.size.y / zoom)
 	hud.scale = Vector2.ONE * zoom
 	hud.size = hud_size
 	hud.position = band.position + Vector2((band.size.x - hud_size.x * zoom) * 0.5, 0.0)
+	var room := hud_size - margins
+	var spare_height := room.y - (needed.y - margins.y)
+	var design := LauncherPanel.DESIGN_SIZE
+	launcher.draw_bigger(minf(1.0 + spare_height / design.y, room.x / design.x))
 
 
 # How much bigger the panel must be drawn for its smallest words (the launcher's) to read

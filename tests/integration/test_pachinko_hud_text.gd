@@ -1,9 +1,11 @@
 extends GutTest
 ## The pachinko side panel reads on a phone: the project draws its 1280 × 720 design at 0.56
 ## on a 720 × 1280 screen, which made the launcher's hint and HANDLE 7 px and the notes 8 px
-## in a 420-wide band under the board. Now the panel in that band puts the launcher beside
-## the numbers and is drawn bigger: every word of it is at least 14 px on the screen at
-## 720 × 1280. At 1280 × 720 and 900 × 700 it is the column beside the board; a 900 × 700
+## in a 420-wide band under the board. Now the panel in that band puts the cup beside the
+## numbers and the launcher under them, and is drawn bigger: every word of it is at least
+## 14 px on the screen at 720 × 1280, and the launcher, drawn bigger still, fills the band's
+## height (it stood beside the numbers and left the band's last 197 px empty). At
+## 1280 × 720 and 900 × 700 it is the column beside the board; a 900 × 700
 ## window drew it at 0.7 (the launcher's words 9.8 px), so there the column is drawn bigger
 ## and wider by as much, and every word reads at 14 px in all three windows. In every
 ## window the panel stays on screen, off the board, and its content fits it.
@@ -98,4 +100,48 @@ func test_the_panel_stays_on_screen_off_the_board_and_holds_its_content() -> voi
 		var needed := game.hud_column.get_combined_minimum_size()
 		assert_lte(needed.x, game.hud_column.size.x + 0.5, "%s: its content fits across" % size)
 		assert_lte(needed.y, game.hud_column.size.y + 0.5, "%s: and down" % size)
+		game.free()
+
+
+## Where the panel's drawn content ends, in view units: its words' rects and the launcher's
+## drawing (its minimum size: the room it is drawn in).
+static func _lowest_drawn(game: PachinkoGame) -> float:
+	var lowest := 0.0
+	for control: Control in [game.title, game.cup, game.stats_panel, game.notes]:
+		lowest = maxf(lowest, control.get_global_rect().end.y)
+	var launcher := game.launcher
+	var drawn := (
+		launcher.get_combined_minimum_size().y * launcher.get_global_transform().get_scale().y
+	)
+	return maxf(lowest, launcher.get_global_position().y + drawn)
+
+
+func test_a_phone_leaves_no_empty_band_under_the_panel() -> void:
+	# QA: the numbers and the launcher sat side by side in the band's top, and its last
+	# 197 px stayed empty at 720 × 1280
+	var game := await _game_in_window(Vector2i(720, 1280))
+	var view := game.get_viewport_rect().size
+	var stretch := game.get_viewport().get_final_transform().get_scale().y
+	var empty_px := (view.y - _lowest_drawn(game)) * stretch
+	assert_lte(empty_px, 24.0, "%.0f px under the panel's content" % empty_px)
+	var launcher := game.launcher
+	assert_gt(launcher.art_scale(), 1.1, "the launcher takes the height: drawn bigger")
+	var drawn := Rect2(
+		launcher.get_global_position(), launcher.size * launcher.scale * game.hud.scale
+	)
+	for control: Control in [game.title, game.cup, game.stats_panel, game.notes]:
+		assert_false(drawn.intersects(control.get_global_rect()), "not over the %s" % control.name)
+	assert_true(Rect2(Vector2.ZERO, view).grow(0.5).encloses(drawn), "on screen: %s" % drawn)
+	# a press lands where it is drawn
+	var dial: Vector2 = LauncherPanel.DIAL_CENTER * launcher.art_scale()
+	assert_true(launcher.is_on_handle(dial), "the dial drawn bigger is pressed where it shows")
+	assert_false(launcher.is_on_handle(LauncherPanel.DIAL_CENTER + Vector2(0, 60)))
+	game.free()
+
+
+func test_landscape_draws_the_launcher_at_its_design_size() -> void:
+	for size: Vector2i in [Vector2i(1280, 720), Vector2i(900, 700)]:
+		var game := await _game_in_window(size)
+		assert_eq(game.launcher.art_scale(), 1.0, "%s" % size)
+		assert_eq(game.launcher.get_combined_minimum_size(), LauncherPanel.DESIGN_SIZE)
 		game.free()

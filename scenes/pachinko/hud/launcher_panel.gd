@@ -3,7 +3,8 @@ extends Control
 ## which turns 0–20° with the power, and the handle's dial. A press on the lever starts a
 ## drawback (the game tracks the drag from there); a press on the dial holds the handle
 ## (a stream of balls) and the wheel over it turns it; the loaded-ball light shows whether
-## a shot is ready.
+## a shot is ready. Given more room than its design size both ways (a phone's band under
+## the board), it draws all of it bigger, to fill the room and be a bigger target.
 
 ## The pointer went down on the flipper at `at` (viewport coordinates).
 signal flipper_pressed(at: Vector2)
@@ -12,6 +13,8 @@ signal handle_pressed(at: Vector2)
 ## The wheel turned over the dial: `notches` up (positive) or down.
 signal handle_turned(notches: float)
 
+## The room the launcher is drawn in at its design size; its minimum size.
+const DESIGN_SIZE := Vector2(300, 250)
 const BAR := Rect2(12, 44, 34, 180)
 const PIVOT := Vector2(272, 196)
 const LEVER_LENGTH := 150.0
@@ -70,20 +73,32 @@ func set_handle(held: bool, power: float) -> void:
 	queue_redraw()
 
 
+## Asks for `times` (at least 1) its design size: the room it is then drawn in, as much
+## bigger.
+func draw_bigger(times: float) -> void:
+	custom_minimum_size = DESIGN_SIZE * maxf(times, 1.0)
+
+
+## How many times its design size the launcher is drawn: as far as its size allows both
+## ways, never smaller than designed.
+func art_scale() -> float:
+	return maxf(1.0, minf(size.x / DESIGN_SIZE.x, size.y / DESIGN_SIZE.y))
+
+
 ## True when `local` (this control's coordinates) is on the handle's dial.
 func is_on_handle(local: Vector2) -> bool:
-	return local.distance_to(DIAL_CENTER) <= DIAL_RADIUS + 6.0
+	return local.distance_to(DIAL_CENTER * art_scale()) <= (DIAL_RADIUS + 6.0) * art_scale()
 
 
 ## True when `local` (this control's coordinates) is on the flipper lever.
 func is_on_flipper(local: Vector2) -> bool:
 	var lever := Transform2D(deg_to_rad(_degrees), PIVOT)
-	var p := lever.affine_inverse() * local
+	var p := lever.affine_inverse() * (local / art_scale())
 	return p.x > -LEVER_LENGTH - 24.0 and p.x < 20.0 and absf(p.y) < 30.0
 
 
 func _ready() -> void:
-	custom_minimum_size = Vector2(300, 250)
+	custom_minimum_size = DESIGN_SIZE
 	mouse_default_cursor_shape = Control.CURSOR_POINTING_HAND
 
 
@@ -108,6 +123,7 @@ func _gui_input(event: InputEvent) -> void:
 
 
 func _draw() -> void:
+	draw_set_transform(Vector2.ZERO, 0.0, Vector2.ONE * art_scale())
 	_draw_bar()
 	_draw_lever()
 	_draw_dial()
@@ -174,7 +190,7 @@ func _draw_bar() -> void:
 
 
 func _draw_lever() -> void:
-	draw_set_transform(PIVOT, deg_to_rad(_degrees))
+	draw_set_transform(PIVOT * art_scale(), deg_to_rad(_degrees), Vector2.ONE * art_scale())
 	var arm := Rect2(-LEVER_LENGTH, -9, LEVER_LENGTH, 18)
 	draw_rect(arm.grow(2.0), Color("262233"))
 	draw_rect(arm, Color("c4c9d6"))
@@ -183,7 +199,7 @@ func _draw_lever() -> void:
 	draw_circle(Vector2(-LEVER_LENGTH, 0), 22.0, Color("262233"))
 	draw_circle(Vector2(-LEVER_LENGTH, 0), 19.0, RED.darkened(0.1))
 	draw_circle(Vector2(-LEVER_LENGTH - 5, -6), 7.0, RED.lightened(0.4))
-	draw_set_transform(Vector2.ZERO)
+	draw_set_transform(Vector2.ZERO, 0.0, Vector2.ONE * art_scale())
 	draw_circle(PIVOT, 16.0, Color("262233"))
 	draw_circle(PIVOT, 12.0, Color("9aa0b2"))
 	draw_circle(PIVOT, 4.0, Color("262233"))
