@@ -38,10 +38,20 @@ const EPS := ContactMath.EPS
 
 
 ## Moves the awake balls in slots from..to, one at a time in members: friction and the speed
-## cap, then substeps (each: move, then the narrow phase per shape kind), then its contacts,
-## position and broad-phase key; then, still there, its rest time or sleep and its sensor
-## pass (_after_move). Written out as one loop with the pin tests inline: a GDScript call
-## costs about as much as a contact test, so calls happen per contact and for rarer rules.
+## cap (SpeedRules.limit(), written out), then substeps (each: move, then the narrow phase
+## per shape kind), then its contacts, position and broad-phase key; then, still there, its
+## rest time or sleep and its sensor pass (_after_move). Written out as one loop with the
+## pin tests and the write-back inline: a GDScript call costs about as much as a contact
+## test, and calls on two threads run no faster than on one (see LaneCrew), so calls happen
+## per contact and for rarer rules. What needs no call:
+## - most balls need one substep and have no push;
+## - a ball no pin moved is still in the cell it was keyed to, and an empty wall cell is
+##   passed over;
+## - a ball touching nothing now or last step keeps its contact slots as they are (that
+##   saves writes for most of a flowing board);
+## - the broad phase's key for next step (see BallStore.cell_keys) is written unless the
+##   keys are stale anyway (no broad phase ran: it bins every ball again before it reads
+##   them).
 func move_range(from: int, to: int) -> void:
 	for i: int in range(from, to):
 		if _asleep[i] != 0:
@@ -52,7 +62,6 @@ func move_range(from: int, to: int) -> void:
 		_gone = false
 		_held_a = _contact_a[i]
 		_held_b = _contact_b[i]
-		# Rolling friction and the speed cap: SpeedRules.limit(), written out.
 		_v -= _fr_shift
 		_v -= _v.clamp(-_fr_zero, _fr_zero)
 		if _cap_per_axis:
@@ -61,15 +70,13 @@ func move_range(from: int, to: int) -> void:
 			_v *= _max_speed / sqrt(_v.length_squared())
 		if _radius[i] != _r:
 			_set_radius(_radius[i])
-		# Most balls need one substep and have no push: that needs no call.
 		var steps := 1
 		_push_step = _push[i]
 		if _push_step != Vector2.ZERO or _has_wheels or (_v * _dt).length() > _max_travel:
 			steps = _substeps(_push_step)
 		_h = _dt / steps
 		_p_start = _p
-		# The cell the ball is in (for its broad-phase key), while no contact has moved it.
-		var c := 0
+		var c := 0  # the ball's cell (its key), while no contact has moved it
 		var at := Vector2i.ZERO
 		var cell_stale := true
 		for sub: int in steps:
@@ -89,7 +96,6 @@ func move_range(from: int, to: int) -> void:
 				if d.length_squared() < lim * lim and not _gone:
 					_touch_pin(k, d, lim)
 					moved = true
-			# A ball no pin moved is still in cell c: an empty wall cell needs no call.
 			cell_stale = moved
 			if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
 				_touch_walls()
@@ -98,14 +104,17 @@ func move_range(from: int, to: int) -> void:
 				cell_stale = true
 			if _gone:
 				break
-		# Write back. A ball touching nothing now or last step keeps its contact slots as
-		# they are: that saves writes for most of a flowing board.
 		if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
-			_write_contacts(i)
+			_contact_a[i] = _cur_a
+			_contact_b[i] = _cur_b
+			_support_static[i] = _n_a
+			_support_static2[i] = _n_b
+			_cur_a = ContactId.NONE
+			_cur_b = ContactId.NONE
+			_n_a = Vector2.ZERO
+			_n_b = Vector2.ZERO
 		_pos[i] = _p
 		_vel[i] = _v
-		# The broad phase's key for next step (see BallStore.cell_keys), unless the keys are
-		# stale anyway (no broad phase ran: it bins every ball again before it reads them).
 		if _keyed:
 			if cell_stale:
 				at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)

@@ -247,20 +247,6 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_last_cell = Vector2i(g.cols - 1, g.rows - 1)
 
 
-## Stores the ball's contacts of this step and their normals (its supports next step),
-## then clears them for the next ball. (They are only ever set together, so a ball that
-## touched nothing leaves them clear without a call.)
-func _write_contacts(i: int) -> void:
-	_contact_a[i] = _cur_a
-	_contact_b[i] = _cur_b
-	_support_static[i] = _n_a
-	_support_static2[i] = _n_b
-	_cur_a = ContactId.NONE
-	_cur_b = ContactId.NONE
-	_n_a = Vector2.ZERO
-	_n_b = Vector2.ZERO
-
-
 ## The limits that depend on the ball radius (kept while consecutive balls share one).
 func _set_radius(r: float) -> void:
 	_r = r

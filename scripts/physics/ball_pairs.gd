@@ -31,9 +31,15 @@ const STRIPE_ROWS := 2
 ## Fewer pairs than this (of one parity) are answered on the world's thread: handing them
 ## to the threads would cost more than it saves (the same result either way).
 const PAIRS_WORTH_THREADS := 64
+## Entries a stripe's pair list starts with when it first needs room (it doubles after).
+const PAIRS_ROOM := 32
 
-## Each stripe's touching pairs, as (i, j) slot pairs in key order.
+## Each stripe's touching pairs, as (i, j) slot pairs in key order: the first
+## stripe_used[s] entries of stripe_pairs[s] (the arrays keep their size from step to step:
+## freeing and growing them again every step cost allocations, and on threads an allocation
+## freed by another thread waits for that thread's heap).
 var stripe_pairs: Array[PackedInt32Array] = []
+var stripe_used := PackedInt32Array()
 
 var _solve := BallSolve.new()
 var _keys := PackedInt64Array()
@@ -60,8 +66,7 @@ func begin(
 	b: BallStore, restitution: float, threshold: float, wake_speed: float, gravity_dt: Vector2
 ) -> void:
 	_solve.begin(b, restitution, threshold, wake_speed, gravity_dt)
-	for pairs: PackedInt32Array in stripe_pairs:
-		pairs.resize(0)
+	stripe_used.fill(0)
 
 
 ## Broad phase: lists every touching pair of balls in stripe_pairs. With `solve_even`, each
@@ -121,6 +126,7 @@ func _cut_stripes(rows: int, n: int, lanes: int) -> void:
 	var stripes: int = ceili(float(rows) / STRIPE_ROWS)
 	while stripe_pairs.size() < stripes:
 		stripe_pairs.append(PackedInt32Array())
+		stripe_used.append(0)
 	_stripe_first.resize(stripes + 1)
 	for s: int in stripes:
 		_stripe_first[s] = _keys.bsearch((s * STRIPE_ROWS * _cols) << SORT_SHIFT)
@@ -141,19 +147,20 @@ func _find_stripes(_worker: int, lane: int, from: int, to: int) -> void:
 		if past - first < 1:
 			continue
 		var pairs: PackedInt32Array = stripe_pairs[s]
-		_find_in_range(pairs, first, past)
-		if pairs.is_empty():
+		var used: int = _find_in_range(pairs, first, past)
+		if used == 0:
 			continue
-		@warning_ignore("integer_division")
-		_lane_pair_counts[2 * lane + s % 2] += pairs.size() / 2
-		if _solve_even and s % 2 == 0:
-			_solve.solve_pairs(pairs)
+		stripe_used[s] = used
+		var odd: int = s & 1
+		_lane_pair_counts[2 * lane + odd] += used >> 1
+		if _solve_even and odd == 0:
+			_solve.solve_pairs(pairs, used)
 
 
 func _solve_stripes(_worker: int, _lane: int, from: int, to: int) -> void:
 	for s: int in range(from, to):
-		if s % 2 == _parity and not stripe_pairs[s].is_empty():
-			_solve.solve_pairs(stripe_pairs[s])
+		if (s & 1) == _parity and stripe_used[s] > 0:
+			_solve.solve_pairs(stripe_pairs[s], stripe_used[s])
 
 
 func _bin_range(_lane: int, from: int, to: int) -> void:
@@ -164,8 +171,11 @@ func _bin_range(_lane: int, from: int, to: int) -> void:
 		keys[i] = ((ci.y * _cols + ci.x) << SORT_SHIFT) | i
 
 
-## Lists in `out` every touching pair whose first ball holds sorted key from..to - 1.
-func _find_in_range(out: PackedInt32Array, from: int, to: int) -> void:
+## Lists in `out` every touching pair whose first ball holds sorted key from..to - 1, from
+## its start on, growing it when full; returns the entries used (two per pair).
+func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
+	var used := 0
+	var room: int = out.size()
 	var keys: PackedInt64Array = _keys
 	var pos: PackedVector2Array = _pos
 	var rad: PackedFloat32Array = _rad
@@ -176,28 +186,45 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> void:
 	var below_off: int = (_cols - 1) << SORT_SHIFT
 	var past_below_off: int = (_cols + 2) << SORT_SHIFT
 	var below: int = keys.bsearch((keys[from] & cell_bits) + below_off)
-	# Each ball's two runs (its own cell and the next, then the three cells below) in one
-	# scan that ends at the first key past each: a lone ball, as most of a flowing board
-	# are, costs two key reads.
+	# Each ball has two runs of candidates: its own cell and the next (the keys after its
+	# own), then the three cells below (from `below`, a pointer that only moves forward).
+	# Each run ends at the first key past it. A lone ball, as most of a flowing board are,
+	# is known by two key reads and costs nothing more.
 	for k: int in range(from, to):
 		var key: int = keys[k]
 		var cell_key: int = key & cell_bits
+		var end: int = cell_key + next_off
+		var first_below: int = cell_key + below_off
+		while keys[below] < first_below:
+			below += 1
+		var past_below: int = cell_key + past_below_off
+		var m: int = k + 1
+		if keys[m] >= end and keys[below] >= past_below:
+			continue
 		var i: int = key & mask
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
-		var m: int = k + 1
-		var end: int = cell_key + next_off
-		for run: int in 2:
-			while keys[m] < end:
-				var j: int = keys[m] & mask
-				var rr: float = ri + rad[j]
-				if pi.distance_squared_to(pos[j]) < rr * rr:
-					out.append(i)
-					out.append(j)
-				m += 1
-			if run == 0:
-				var first_below: int = cell_key + below_off
-				while keys[below] < first_below:
-					below += 1
-				m = below
-				end = cell_key + past_below_off
+		while keys[m] < end:
+			var j: int = keys[m] & mask
+			var rr: float = ri + rad[j]
+			if pi.distance_squared_to(pos[j]) < rr * rr:
+				if used == room:
+					room = maxi(2 * room, PAIRS_ROOM)
+					out.resize(room)
+				out[used] = i
+				out[used + 1] = j
+				used += 2
+			m += 1
+		m = below
+		while keys[m] < past_below:
+			var j: int = keys[m] & mask
+			var rr: float = ri + rad[j]
+			if pi.distance_squared_to(pos[j]) < rr * rr:
+				if used == room:
+					room = maxi(2 * room, PAIRS_ROOM)
+					out.resize(room)
+				out[used] = i
+				out[used + 1] = j
+				used += 2
+			m += 1
+	return used

@@ -72,11 +72,11 @@ func finish(b: BallStore) -> void:
 	b.support_ball = _sup_next
 
 
-## Answers the touching pairs (i, j) of one stripe's list in order. Each pair is written out
-## in the loop (a call per pair costs about as much as the work), and skipped when both
-## balls sleep.
-func solve_pairs(pairs: PackedInt32Array) -> void:
-	for m: int in range(0, pairs.size(), 2):
+## Answers the touching pairs (i, j) of one stripe's list (its first `used` entries) in
+## order. Each pair is written out in the loop (a call per pair costs about as much as the
+## work, and calls do not run side by side on threads), and skipped when both balls sleep.
+func solve_pairs(pairs: PackedInt32Array, used: int) -> void:
+	for m: int in range(0, used, 2):
 		var i: int = pairs[m]
 		var j: int = pairs[m + 1]
 		_touching[i] = 1

@@ -48,6 +48,35 @@ func test_every_lane_of_many_hand_offs_runs_once_and_is_done_on_return() -> void
 	)
 
 
+func test_hand_offs_to_watching_and_to_sleeping_workers_each_run_every_lane_once() -> void:
+	# Back to back, a worker is still watching for the next hand-off; after a pause longer
+	# than its watch it has gone to sleep and needs a post. Both must run every lane once.
+	var crew := LaneCrew.new()
+	var problems: Array[String] = []
+	for hand_off: int in 80:
+		if hand_off % 4 == 3:
+			OS.delay_msec(3)
+		var seen := PackedInt32Array()
+		seen.resize(60)
+		seen.fill(0)
+		crew.run(
+			func(_worker: int, _lane: int, from: int, to: int) -> void:
+				OS.delay_usec(50)
+				for i: int in range(from, to):
+					seen[i] += 1,
+			BallLanes.even_bounds(60, 6),
+			2,
+			true
+		)
+		if seen.count(1) != 60:
+			problems.append("hand-off %d: %d of 60 items ran once" % [hand_off, seen.count(1)])
+	var started: int = crew.started
+	crew.stop()
+	assert_eq(problems, [] as Array[String], "every lane once, whether workers watched or slept")
+	assert_eq(started, 2, "two helpers started")
+	assert_eq(crew.started, 0, "stop() joined workers that were watching or asleep")
+
+
 func test_a_job_without_worker_numbers_gets_lane_and_range() -> void:
 	var crew := LaneCrew.new()
 	var seen := PackedInt32Array()
