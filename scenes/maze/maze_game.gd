@@ -28,6 +28,8 @@ const SIDE_SHARE := 0.2
 const SIDE_MIN_WIDTH := 260.0
 const SIDE_MAX_WIDTH := 350.0
 const SIDE_EDGE := 24.0
+## A column whose text grew (a small window) is at most this share of the window's width.
+const SIDE_MOST_SHARE := 0.36
 const PORTRAIT_SIDE_SHARE := 0.45
 ## The height (px) the side panel's text takes in a portrait band, beside the joystick.
 const PORTRAIT_TEXT_HEIGHT := 380.0
@@ -233,11 +235,13 @@ func _layout() -> Rect2:
 	if _side_text == null:
 		_side_text = MazeSideText.new(_side)
 	var region: Rect2
+	var stretch := get_viewport().get_final_transform().get_scale().y
+	_side_text.apply(stretch)
 	if view.x >= view.y:
-		# the design's sizes: the column is as wide as they need, and wider text would push
-		# into the board (or the board shrink)
-		_side_text.apply(1.0)
+		# the design's sizes, or bigger in a small window (900 × 700 drew them at 0.7): the
+		# column widens with its text and the board takes the rest
 		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
+		width = minf(width * _side_text.factor, view.x * SIDE_MOST_SHARE)
 		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
 		_side.offset_left = -width - SIDE_EDGE
 		_side.offset_right = -SIDE_EDGE
@@ -246,7 +250,6 @@ func _layout() -> Rect2:
 		region = Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
 		_joystick.ui_scale = minf(2.0, width / MazeJoystick.drawn_size(1.0))
 	else:
-		_side_text.apply(get_viewport().get_final_transform().get_scale().y)
 		var height := view.y * PORTRAIT_SIDE_SHARE
 		_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
 		_side.offset_left = SIDE_EDGE

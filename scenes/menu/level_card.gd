@@ -82,6 +82,10 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 		_badges = MedalBadges.new()
 		_box.add_child(_badges)
 		_box.move_child(_badges, 2)
+		# a window that draws the card small grows the medal text: the card grows as much,
+		# so the description keeps its lines
+		_badges.minimum_size_changed.connect(_fit_to_badges)
+		_fit_to_badges()
 		# the medal row takes a line's height: the description gives one up to fit the card
 		if _long_text != null:
 			_long_text.set_resting_lines(2)
@@ -140,6 +144,11 @@ func _prepare(path: String) -> void:
 	_thumbnail.custom_minimum_size = Vector2(0, THUMB_HEIGHT)
 	_thumbnail.mouse_filter = Control.MOUSE_FILTER_IGNORE
 	_box.add_child(_thumbnail)
+
+
+func _fit_to_badges() -> void:
+	var grown := _badges.custom_minimum_size.y - MedalBadges.designed_height()
+	custom_minimum_size.y = CARD_SIZE.y + maxf(0.0, grown)
 
 
 func _process(delta: float) -> void:

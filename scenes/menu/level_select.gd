@@ -19,6 +19,7 @@ const LevelCard := preload("res://scenes/menu/level_card.gd")
 const Words := preload("res://scenes/menu/level_select_words.gd")
 const BoardImportQueue := preload("res://scenes/menu/board_import_queue.gd")
 const PathLabel := preload("res://scenes/menu/path_label.gd")
+const PortraitZoom := preload("res://scenes/common/portrait_zoom.gd")
 const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
 ## At most this many files of a folder get a card (README "Safety"); the rest are counted.
 const MAX_LISTED := 200
@@ -65,11 +66,12 @@ func _ready() -> void:
 	_dialogs.export_chosen.connect(export_board)
 	_dialogs.delete_confirmed.connect(delete_board)
 	_card_menu.chosen.connect(_on_card_menu_chosen)
-	_scroll.resized.connect(_focus.fit_columns)
+	_scroll.resized.connect(_fit_columns)
+	get_viewport().size_changed.connect(_fit_columns)
 	get_window().files_dropped.connect(import_files)
 	_imports.titles = TITLES
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
-	_status.text = ""
+	_say("", false)
 	_hint.text = Words.keys_hint()
 	reload()
 
@@ -210,6 +212,17 @@ func _section(grid: GridContainer, mine: bool) -> CardSection:
 	return section
 
 
+# The list is as wide as the window's content (drawn bigger on a portrait phone) less the
+# screen's margins.
+func _fit_columns() -> void:
+	var margin := $Margin as MarginContainer
+	var zoom := ($Margin/PortraitZoom as PortraitZoom).zoomed_by()
+	var sides := (
+		margin.get_theme_constant(&"margin_left") + margin.get_theme_constant(&"margin_right")
+	)
+	_focus.fit_columns(get_viewport_rect().size.x / zoom - sides)
+
+
 func _sections_loading() -> bool:
 	return _shipped.is_loading() or _mine.is_loading()
 
@@ -290,8 +303,11 @@ func _update_summary() -> void:
 	_summary.text = Words.summary_of(kind, cards(), mine, _not_listed)
 
 
+# The footer's status line shows only while it has something to say: an empty one left a
+# blank band over the keys' hint.
 func _say(message: String, is_problem: bool) -> void:
 	_status.text = message
+	_status.visible = not message.is_empty()
 	_status.theme_type_variation = &"WarningLabel" if is_problem else &"HintLabel"
 
 

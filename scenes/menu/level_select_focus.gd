@@ -1,9 +1,9 @@
 extends RefCounted
 ## Where the keys' and the pad's focus goes on the level select, and the grids' columns it
-## follows: as many columns as the list is wide (both sections alike, so their cards line
-## up), the arrows' neighbours (CardGridFocus), the first playable card once the boards
-## have loaded, and after a delete the next card at the same scroll, so the player stays
-## where they were.
+## follows: as many columns as the list is wide, the cards sharing the row's width (both
+## sections alike, so their cards line up), the arrows' neighbours (CardGridFocus), the
+## first playable card once the boards have loaded, and after a delete the next card at
+## the same scroll, so the player stays where they were.
 
 const CardSection := preload("res://scenes/menu/card_section.gd")
 const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
@@ -14,8 +14,14 @@ const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.
 const MAX_COLUMNS := 4
 
+## Room (px) kept for the list's scroll bar beside the cards.
+const BAR_ROOM := 16.0
+
 ## Cards in a row, in both sections.
 var columns := 3
+## How wide every card is drawn: the row's width shared by its cards (LevelCard.CARD_SIZE.x
+## at least).
+var card_width := LevelCard.CARD_SIZE.x
 
 var _sections: Array[CardSection] = []
 var _scroll: ScrollContainer = null
@@ -55,21 +61,27 @@ func first_card() -> Button:
 	return all[0] if not all.is_empty() else null
 
 
-## Sets the columns to what the list's width holds, then the arrows' neighbours again.
-func fit_columns() -> void:
-	var card_width := LevelCard.CARD_SIZE.x + CARD_GAP
-	var fits := floori((_scroll.size.x - 16.0 + CARD_GAP) / card_width)
+## Sets the columns to what a list `list_width` wide holds and the cards' width to fill the
+## row, then the arrows' neighbours again. The width is the one the window gives the list,
+## not its size now: cards as wide as an old, wider row would hold the list that wide.
+func fit_columns(list_width: float) -> void:
+	var room := list_width - maxf(BAR_ROOM, _bar_width())
+	var fits := floori((room + CARD_GAP) / (LevelCard.CARD_SIZE.x + CARD_GAP))
 	var wanted := clampi(fits, 1, MAX_COLUMNS)
-	if wanted == columns:
+	var width := maxf(LevelCard.CARD_SIZE.x, floorf((room - CARD_GAP * (wanted - 1)) / wanted))
+	if wanted == columns and width == card_width:
 		return
 	columns = wanted
+	card_width = width
 	for section in _sections:
 		section.grid.columns = wanted
 	link()
 
 
-## Links every card to its neighbours for the arrows and the d-pad.
+## Links every card to its neighbours for the arrows and the d-pad (and gives new cards
+## the row's width).
 func link() -> void:
+	_size_slots()
 	var lists: Array = []
 	for section in _sections:
 		var list: Array[Control] = []
@@ -135,6 +147,16 @@ func _take_place_back() -> void:
 	(slot.card if slot != null else _import as Control).grab_focus()
 	_scroll.set_deferred("scroll_vertical", _kept_scroll)
 	_refocus_path = ""
+
+
+func _size_slots() -> void:
+	for section in _sections:
+		for slot in section.slots():
+			slot.custom_minimum_size.x = card_width
+
+
+func _bar_width() -> float:
+	return _scroll.get_v_scroll_bar().get_combined_minimum_size().x
 
 
 func _shipped_first_card() -> Button:

@@ -1,8 +1,12 @@
 extends Control
 ## A level card's medal rows: per mode (easy, hard) a disc in gold, silver or bronze, or an
 ## empty ring with no medal yet, then the board's three target times, each beside its
-## medal's colour; on a locked board, a padlock and what opens it instead.
+## medal's colour; on a locked board, a padlock and what opens it instead (wrapped to the
+## two rows' height). The text is drawn at FONT_SIZE or bigger: a window that draws the
+## card small (a portrait phone, a small window) gets it grown until it reads at 14 screen
+## px (ReadableText), and the rows are laid out by the measured text, so they fit the card.
 
+const ReadableText := preload("res://scenes/common/readable_text.gd")
 const COLORS := {
 	Medals.Medal.GOLD: Color("#f2c14e"),
 	Medals.Medal.SILVER: Color("#c9d1d9"),
@@ -11,11 +15,13 @@ const COLORS := {
 const FAINT := Color(1, 1, 1, 0.45)
 const TIME_INK := Color(1, 1, 1, 0.8)
 const RADIUS := 8.0
+## The text's size as designed (a 1280 × 720 window).
 const FONT_SIZE := 15
-const ROW_HEIGHT := 22.0
-## Where the three target times start and how far apart they are (px).
-const TIMES_X := 66.0
-const TIME_STEP := 68.0
+## A row's height per unit of font size, and the room (px) between a row's parts.
+const ROW_PER_FONT_UNIT := 22.0 / 15.0
+const GAP := 6.0
+const TIME_GAP := 10.0
+const DOT_RADIUS := 4.0
 
 ## Medal in easy and in hard mode (Medals.Medal).
 var easy_medal := Medals.Medal.NONE
@@ -26,10 +32,91 @@ var hard_times := PackedFloat64Array()
 ## A locked board shows a padlock and this text (what opens it) instead of medals.
 var lock_text := ""
 
+var _font_size := FONT_SIZE
+
 
 func _init() -> void:
-	custom_minimum_size = Vector2(0, ROW_HEIGHT * 2.0 + 2.0)
 	mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_fit_height()
+	set_notify_transform(true)
+
+
+func _notification(what: int) -> void:
+	if what == NOTIFICATION_ENTER_TREE:
+		if not get_viewport().size_changed.is_connected(_refit):
+			get_viewport().size_changed.connect(_refit)
+		_refit()
+	elif what == NOTIFICATION_TRANSFORM_CHANGED:
+		_refit()
+
+
+## The font size the rows are drawn at now (FONT_SIZE, or bigger to read at 14 screen px).
+func font_size() -> int:
+	return _font_size
+
+
+## Screen pixels one unit of this control's font size takes now (its scale on the way to
+## the screen times the window's stretch).
+func screen_px_per_font_unit() -> float:
+	if not is_inside_tree():
+		return 1.0
+	return (
+		get_global_transform_with_canvas().get_scale().y
+		* get_viewport().get_final_transform().get_scale().y
+	)
+
+
+## How wide the medal rows need to be drawn whole at the current font size (px).
+func rows_width() -> float:
+	var widest := 0.0
+	for row: Array in _rows():
+		var times: PackedFloat64Array = row[2]
+		var width := _times_x()
+		if times.size() == 3:
+			for k in 3:
+				width += DOT_RADIUS * 2.0 + 4.0 + _text_width(_clock(times[k])) + TIME_GAP
+			width -= TIME_GAP
+		widest = maxf(widest, width)
+	return widest
+
+
+## The lines the lock text is drawn in (1 or 2 when it fits the rows' height).
+func lock_lines() -> int:
+	if lock_text.is_empty():
+		return 0
+	var font := get_theme_default_font()
+	var paragraph := TextParagraph.new()
+	paragraph.add_string(lock_text, font, _font_size)
+	paragraph.width = maxf(1.0, size.x - _lock_text_x())
+	paragraph.break_flags = TextServer.BREAK_MANDATORY | TextServer.BREAK_WORD_BOUND
+	return paragraph.get_line_count()
+
+
+# The font grows with the card's scale on the screen; the rows' height follows it.
+func _refit() -> void:
+	var grown := ceili(FONT_SIZE * ReadableText.growth_at(FONT_SIZE, screen_px_per_font_unit()))
+	if grown == _font_size:
+		return
+	_font_size = grown
+	_fit_height()
+	queue_redraw()
+
+
+## The rows' height as designed (at FONT_SIZE).
+static func designed_height() -> float:
+	return _height_at(FONT_SIZE)
+
+
+func _fit_height() -> void:
+	custom_minimum_size = Vector2(0, _height_at(_font_size))
+
+
+static func _height_at(text_size: int) -> float:
+	return ceilf(text_size * ROW_PER_FONT_UNIT * 2.0 + 2.0)
+
+
+func _row_height() -> float:
+	return _font_size * ROW_PER_FONT_UNIT
 
 
 ## Shows these medals and each mode's target times, or the padlock and `locked_because`
@@ -75,9 +162,11 @@ func _draw() -> void:
 	var mid := size.y * 0.5
 	if not lock_text.is_empty():
 		_draw_padlock(Vector2(RADIUS, mid))
-		_draw_text(Vector2(RADIUS * 2.0 + 8.0, mid + 6.0), lock_text, FAINT)
+		_draw_lock_text()
 		return
-	var y := ROW_HEIGHT * 0.5
+	var row_height := _row_height()
+	var y := row_height * 0.5
+	var baseline := _font_size * 0.34
 	for row: Array in _rows():
 		var medal: int = row[1]
 		var centre := Vector2(RADIUS, y)
@@ -88,19 +177,55 @@ func _draw() -> void:
 		else:
 			draw_circle(centre, RADIUS - 1.0, FAINT, false, 1.5)
 		var mode: String = row[0]
-		_draw_text(Vector2(RADIUS * 2.0 + 6.0, y + 5.0), mode, FAINT)
+		_draw_text(Vector2(RADIUS * 2.0 + GAP, y + baseline), mode, FAINT)
 		var times: PackedFloat64Array = row[2]
 		if times.size() == 3:
+			var x := _times_x()
 			for k in 3:
-				var x := TIMES_X + TIME_STEP * k
 				var rank: int = Medals.Medal.GOLD - k
 				var held := medal >= rank
 				var dot: Color = COLORS[rank]
-				draw_circle(Vector2(x + 4.0, y), 4.0, dot if held else Color(dot, 0.55))
-				_draw_text(
-					Vector2(x + 12.0, y + 5.0), _clock(times[k]), TIME_INK if not held else dot
+				draw_circle(
+					Vector2(x + DOT_RADIUS, y), DOT_RADIUS, dot if held else Color(dot, 0.55)
 				)
-		y += ROW_HEIGHT
+				x += DOT_RADIUS * 2.0 + 4.0
+				var clock := _clock(times[k])
+				_draw_text(Vector2(x, y + baseline), clock, TIME_INK if not held else dot)
+				x += _text_width(clock) + TIME_GAP
+		y += row_height
+
+
+# Where the times start: after the disc and the wider of the two modes' words.
+func _times_x() -> float:
+	var words := maxf(_text_width("Easy"), _text_width("Hard"))
+	return RADIUS * 2.0 + GAP + words + TIME_GAP
+
+
+func _text_width(text: String) -> float:
+	var font := get_theme_default_font()
+	return font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, _font_size).x
+
+
+func _lock_text_x() -> float:
+	return RADIUS * 2.0 + 8.0
+
+
+# What opens the board, wrapped to the card's width, centred on the rows' height.
+func _draw_lock_text() -> void:
+	var font := get_theme_default_font()
+	var lines := lock_lines()
+	var line_height := font.get_height(_font_size)
+	var top := (size.y - line_height * lines) * 0.5 + font.get_ascent(_font_size)
+	draw_multiline_string(
+		font,
+		Vector2(_lock_text_x(), top),
+		lock_text,
+		HORIZONTAL_ALIGNMENT_LEFT,
+		size.x - _lock_text_x(),
+		_font_size,
+		2,
+		FAINT
+	)
 
 
 static func _clock(seconds: float) -> String:
@@ -109,7 +234,7 @@ static func _clock(seconds: float) -> String:
 
 func _draw_text(at: Vector2, text: String, colour: Color) -> void:
 	var font := get_theme_default_font()
-	draw_string(font, at, text, HORIZONTAL_ALIGNMENT_LEFT, -1, FONT_SIZE, colour)
+	draw_string(font, at, text, HORIZONTAL_ALIGNMENT_LEFT, -1, _font_size, colour)
 
 
 func _draw_padlock(centre: Vector2) -> void:

@@ -17,11 +17,17 @@ const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const ReadableText := preload("res://scenes/common/readable_text.gd")
 const HUD_WIDTH := 360.0
+## Beside the board, the panel drawn bigger to read (a small window) takes at most this
+## share of the window's width: the board keeps the rest.
+const MOST_HUD_SHARE := 0.45
 ## A window this much taller than wide puts the panel under the board, at most this wide
 ## (view units before its zoom).
 const PORTRAIT_HUD_HEIGHT := 720.0
 const PORTRAIT_HUD_WIDTH := 760.0
 const MARGIN := 10.0
+## The board's area's short side in the designed 1280 × 720 layout: a full-power drag is 100
+## view units there and as much longer as the board is bigger elsewhere (PachinkoInput).
+const DESIGN_BOARD_SIDE := 720.0 - 2.0 * MARGIN
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0
 const TICK_MAX_SPEED := 700.0
@@ -140,6 +146,11 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 
 
+## How far (view units) the flipper's grip is dragged up for full power in this layout.
+func full_power_drag() -> float:
+	return LaunchPower.MAX_POWER * _controls.drag_scale
+
+
 ## Starts over on the same board: a fresh world, the instructions up.
 func restart() -> void:
 	_new_rules()
@@ -225,16 +236,20 @@ func _layout() -> void:
 		_fit_portrait_hud(Rect2(0.0, view.x, view.x, view.y - view.x))
 		area = Rect2(Vector2(MARGIN, MARGIN), Vector2(view.x, view.x) - Vector2.ONE * MARGIN * 2.0)
 	else:
+		# a small window draws the column bigger, so its smallest words still read, and
+		# wider by as much: the board takes what is left
 		hud_column.vertical = true
-		hud.scale = Vector2.ONE
+		var zoom := minf(_readable_zoom(), view.x * MOST_HUD_SHARE / HUD_WIDTH)
+		hud.scale = Vector2.ONE * maxf(zoom, 1.0)
 		_edge_hud_toward_board(SIDE_LEFT)
-		var hud_left := view.x - HUD_WIDTH
+		var hud_left := view.x - HUD_WIDTH * hud.scale.x
 		hud.position = Vector2(hud_left, 0.0)
-		hud.size = Vector2(HUD_WIDTH, view.y)
+		hud.size = Vector2(HUD_WIDTH, view.y / hud.scale.y)
 		area = Rect2(
 			Vector2(MARGIN, MARGIN), Vector2(hud_left - MARGIN * 2.0, view.y - MARGIN * 2.0)
 		)
 	board_view.fit(_level, area)
+	_controls.drag_scale = minf(area.size.x, area.size.y) / DESIGN_BOARD_SIDE
 	instructions.position = area.position
 	instructions.size = area.size
 
@@ -250,10 +265,7 @@ func _refit_portrait_hud() -> void:
 func _fit_portrait_hud(band: Rect2) -> void:
 	hud_column.vertical = false
 	_edge_hud_toward_board(SIDE_TOP)
-	var screen_scale := ReadableText.screen_scale_of(self)
-	var wanted := ReadableText.growth_at(LauncherPanel.SMALL_FONT_SIZE, screen_scale)
-	# rounded up, so the rounding of the scales on the way to the screen keeps it at 14
-	var zoom := maxf(1.0, ceilf(wanted * 100.0) / 100.0)
+	var zoom := _readable_zoom()
 	var needed := (
 		hud_column.get_combined_minimum_size()
 		+ Vector2(
@@ -266,6 +278,15 @@ func _fit_portrait_hud(band: Rect2) -> void:
 	hud.scale = Vector2.ONE * zoom
 	hud.size = hud_size
 	hud.position = band.position + Vector2((band.size.x - hud_size.x * zoom) * 0.5, 0.0)
+
+
+# How much bigger the panel must be drawn for its smallest words (the launcher's) to read
+# (ReadableText); 1 when they do as designed.
+func _readable_zoom() -> float:
+	var screen_scale := ReadableText.screen_scale_of(self)
+	var wanted := ReadableText.growth_at(LauncherPanel.SMALL_FONT_SIZE, screen_scale)
+	# rounded up, so the rounding of the scales on the way to the screen keeps it at 14
+	return maxf(1.0, ceilf(wanted * 100.0) / 100.0)
 
 
 # The panel's gold edge runs along the board: its left side beside it, its top under it.

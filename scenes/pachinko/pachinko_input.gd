@@ -1,7 +1,8 @@
 extends RefCounted
 ## Turns the player's input into flipper and handle calls on the rules.
 ## The flipper (one shot): a press on the red grip and a drag up (mouse or touch, which
-## Godot delivers as mouse events), the `launch_charge` action held and released (keyboard,
+## Godot delivers as mouse events; the drag for full power is as long as the board is big
+## on the screen, see drag_scale), the `launch_charge` action held and released (keyboard,
 ## gamepad button, or an analog axis whose depth sets the power), or the left stick pulled
 ## down (`tilt_down` from a joypad axis).
 ## The handle (a stream): held with the pointer on the dial (dragging up or down while
@@ -20,7 +21,13 @@ const HANDLE_DRAG_PER_PIXEL := 0.5
 
 const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
+## How many view units of drag make one point of power, relative to the rules' one pixel
+## a point: the board's size on screen against the designed layout's (PachinkoGame sets
+## it), so a full-power drag is the same share of the board in every window.
+var drag_scale := 1.0
+
 var _source := Source.NONE
+var _drag_origin := Vector2.ZERO
 var _peak := 0.0
 var _handle_source := Source.NONE
 var _handle_origin := Vector2.ZERO
@@ -46,6 +53,7 @@ func turn_handle(rules: PachinkoRules, notches: float) -> void:
 func begin_drag(rules: PachinkoRules, at: Vector2) -> void:
 	if rules.press_flipper(at):
 		_source = Source.POINTER
+		_drag_origin = at
 
 
 ## Mouse motion and release during a pointer drawback. True when the event was used.
@@ -56,11 +64,11 @@ func handle_pointer(rules: PachinkoRules, event: InputEvent, _owner: Node) -> bo
 		return false
 	var motion := event as InputEventMouseMotion
 	if motion != null:
-		rules.drag_to(motion.position)
+		rules.drag_to(_drag_point(motion.position))
 		return true
 	var button := event as InputEventMouseButton
 	if button != null and not button.pressed and button.button_index == MOUSE_BUTTON_LEFT:
-		rules.drag_to(button.position)
+		rules.drag_to(_drag_point(button.position))
 		rules.release()
 		_source = Source.NONE
 		return true
@@ -110,6 +118,12 @@ func poll(rules: PachinkoRules, delta: float) -> void:
 		_source = Source.NONE  # the game ended or restarted under us
 	if _handle_source != Source.NONE and not rules.handle.held:
 		_handle_source = Source.NONE
+
+
+# The pointer at `at` as the rules measure a drag: its way from the press in board-sized
+# units.
+func _drag_point(at: Vector2) -> Vector2:
+	return _drag_origin + (at - _drag_origin) / maxf(drag_scale, 0.01)
 
 
 func _handle_pointer(rules: PachinkoRules, event: InputEvent) -> bool:

@@ -119,7 +119,7 @@ func move_range(from: int, to: int) -> void:
 			if cell_stale:
 				at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 				c = at.y * _cols + at.x
-			_cell_keys[i] = (c << BallPairs.SORT_SHIFT) | i
+			_cell_keys[_key_slot[i]] = (c << BallPairs.SORT_SHIFT) | i
 		if _gone:
 			_alive[i] = 0
 		elif _has_sensors or _v.length_squared() < _rest_speed2:

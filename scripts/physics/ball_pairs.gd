@@ -45,6 +45,7 @@ var _solve := BallSolve.new()
 var _keys := PackedInt64Array()
 var _pos := PackedVector2Array()
 var _rad := PackedFloat32Array()
+var _slot := PackedInt32Array()
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
@@ -75,6 +76,7 @@ func begin(
 func find(b: BallStore, g: StaticGeometry, lanes: BallLanes, solve_even: bool) -> void:
 	var n: int = b.ids.size()
 	if n < 2:
+		b.keys_valid = false  # no sort, no key slots: a lone ball is binned again
 		_lane_bounds = PackedInt32Array([0, 0])
 		_lane_pair_counts = PackedInt32Array([0, 0])
 		return
@@ -93,6 +95,9 @@ func find(b: BallStore, g: StaticGeometry, lanes: BallLanes, solve_even: bool) -
 	_keys = b.cell_keys.duplicate()
 	_keys.append(SORT_SENTINEL)
 	_keys.sort()
+	# Next step's keys start in this order; the lanes note where each ball's key is.
+	b.cell_keys = _keys.slice(0, n)
+	_slot = b.key_slot
 	_cut_stripes(g.rows, n, lanes.lanes_for(n))
 	_solve_even = solve_even
 	_lane_pair_counts.resize(2 * (_lane_bounds.size() - 1))
@@ -172,10 +177,12 @@ func _bin_range(_lane: int, from: int, to: int) -> void:
 
 
 ## Lists in `out` every touching pair whose first ball holds sorted key from..to - 1, from
-## its start on, growing it when full; returns the entries used (two per pair).
+## its start on, growing it when full; returns the entries used (two per pair). Notes each
+## of these balls' place in the sorted keys in key_slot.
 func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
 	var used := 0
 	var room: int = out.size()
+	var slot: PackedInt32Array = _slot
 	var keys: PackedInt64Array = _keys
 	var pos: PackedVector2Array = _pos
 	var rad: PackedFloat32Array = _rad
@@ -192,39 +199,30 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
 	# is known by two key reads and costs nothing more.
 	for k: int in range(from, to):
 		var key: int = keys[k]
+		slot[key & mask] = k
 		var cell_key: int = key & cell_bits
 		var end: int = cell_key + next_off
 		var first_below: int = cell_key + below_off
 		while keys[below] < first_below:
 			below += 1
 		var past_below: int = cell_key + past_below_off
-		var m: int = k + 1
-		if keys[m] >= end and keys[below] >= past_below:
+		if keys[k + 1] >= end and keys[below] >= past_below:
 			continue
 		var i: int = key & mask
 		var pi: Vector2 = pos[i]
 		var ri: float = rad[i]
-		while keys[m] < end:
-			var j: int = keys[m] & mask
-			var rr: float = ri + rad[j]
-			if pi.distance_squared_to(pos[j]) < rr * rr:
-				if used == room:
-					room = maxi(2 * room, PAIRS_ROOM)
-					out.resize(room)
-				out[used] = i
-				out[used + 1] = j
-				used += 2
-			m += 1
-		m = below
-		while keys[m] < past_below:
-			var j: int = keys[m] & mask
-			var rr: float = ri + rad[j]
-			if pi.distance_squared_to(pos[j]) < rr * rr:
-				if used == room:
-					room = maxi(2 * room, PAIRS_ROOM)
-					out.resize(room)
-				out[used] = i
-				out[used + 1] = j
-				used += 2
-			m += 1
+		for run: int in 2:
+			var m: int = k + 1 if run == 0 else below
+			var past: int = end if run == 0 else past_below
+			while keys[m] < past:
+				var j: int = keys[m] & mask
+				var rr: float = ri + rad[j]
+				if pi.distance_squared_to(pos[j]) < rr * rr:
+					if used == room:
+						room = maxi(2 * room, PAIRS_ROOM)
+						out.resize(room)
+					out[used] = i
+					out[used + 1] = j
+					used += 2
+				m += 1
 	return used

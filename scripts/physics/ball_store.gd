@@ -54,11 +54,16 @@ var sleep_ball_normal := PackedVector2Array()
 # SCRATCH, rebuilt by each step:
 ## Extra displacement for this step from ball-ball separation (swept with the motion).
 var push := PackedVector2Array()
-## Each slot's broad-phase key (cell << BallPairs.SORT_SHIFT | slot), written by the
-## motion stage where the ball ended while they are valid; `keys_valid` turns false
-## whenever a ball is placed, added or removed, the grid changes or a step runs without
-## ball contacts, and the broad phase then bins every ball again.
+## The broad-phase keys (cell << BallPairs.SORT_SHIFT | slot), in the order the broad
+## phase sorted them last step: ball i's key is at key_slot[i], and the motion stage writes
+## it there where the ball ended. So next step's sort starts from an almost sorted array (a
+## few balls change cell), which the native sort takes in a tenth of the time of balls in
+## slot order. `keys_valid` turns false whenever a ball is placed, added or removed, the
+## grid changes or a step runs without ball contacts; the broad phase then bins every ball
+## again, in slot order.
 var cell_keys := PackedInt64Array()
+## Where each ball's key is in cell_keys (its place in last step's sorted keys).
+var key_slot := PackedInt32Array()
 ## 1 for a ball that touched another ball in this step's ball-ball pass: a sleeper held up
 ## by balls wakes when it touches none, so it never hangs where a ball was knocked away.
 var touching := PackedByteArray()

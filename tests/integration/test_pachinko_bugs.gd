@@ -75,7 +75,9 @@ func test_a_drag_let_go_during_the_pause_does_not_follow_the_mouse_after() -> vo
 	launcher.emit_signal("flipper_pressed", Vector2(1000, 600))
 	motion.position = Vector2(1000, 550)
 	game._input(motion)
-	assert_almost_eq(rules.power, 50.0, 0.01, "a new drag works")
+	# 50 view units of drag, in a window whose board asks full_power_drag() for full power
+	var drawn := 50.0 * LaunchPower.MAX_POWER / game.full_power_drag()
+	assert_almost_eq(rules.power, drawn, 0.01, "a new drag works")
 	game._input(_pointer(false, motion.position))
 	assert_eq(rules.ledger.shots, 1)
 

@@ -3,8 +3,10 @@ extends GutTest
 ## on a 720 × 1280 screen, which made the launcher's hint and HANDLE 7 px and the notes 8 px
 ## in a 420-wide band under the board. Now the panel in that band puts the launcher beside
 ## the numbers and is drawn bigger: every word of it is at least 14 px on the screen at
-## 720 × 1280. At 1280 × 720 and 900 × 700 it is the column beside the board as before; in
-## every window the panel stays on screen, off the board, and its content fits it.
+## 720 × 1280. At 1280 × 720 and 900 × 700 it is the column beside the board; a 900 × 700
+## window drew it at 0.7 (the launcher's words 9.8 px), so there the column is drawn bigger
+## and wider by as much, and every word reads at 14 px in all three windows. In every
+## window the panel stays on screen, off the board, and its content fits it.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
 const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
@@ -49,12 +51,18 @@ static func _panel_texts(game: PachinkoGame) -> Dictionary:
 	return sizes
 
 
-func test_a_phone_reads_every_word_of_the_panel_at_14_px() -> void:
+func test_every_word_of_the_panel_reads_at_14_px() -> void:
+	for size in SIZES:
+		var game := await _game_in_window(size)
+		var sizes := _panel_texts(game)
+		assert_eq(sizes.size(), 5)
+		for text: String in sizes:
+			assert_gte(sizes[text], 14.0, "%s: the %s is %.1f px" % [size, text, sizes[text]])
+		game.free()  # before its window
+
+
+func test_a_phone_puts_the_panel_under_the_board() -> void:
 	var game := await _game_in_window(Vector2i(720, 1280))
-	var sizes := _panel_texts(game)
-	assert_eq(sizes.size(), 5)
-	for text: String in sizes:
-		assert_gte(sizes[text], 14.0, "720x1280: the %s is %.1f px" % [text, sizes[text]])
 	# QA: its gold edge stayed on the left, a stray line down the screen's edge under the board
 	var style := game.hud.get_theme_stylebox(&"panel") as StyleBoxFlat
 	assert_gt(style.border_width_top, 0, "the panel's edge runs along the board above it")
@@ -65,14 +73,17 @@ func test_a_phone_reads_every_word_of_the_panel_at_14_px() -> void:
 func test_landscape_keeps_the_designed_column_beside_the_board() -> void:
 	for size: Vector2i in [Vector2i(1280, 720), Vector2i(900, 700)]:
 		var game := await _game_in_window(size)
-		assert_eq(game.hud.scale, Vector2.ONE, "%s: the panel as designed" % size)
+		var stretch := game.get_viewport().get_final_transform().get_scale().y
+		var zoom := maxf(1.0, 14.0 / (LauncherPanel.SMALL_FONT_SIZE * stretch))
+		assert_almost_eq(game.hud.scale.x, zoom, 0.011, "%s: drawn big enough to read" % size)
 		assert_true(game.hud_column.vertical, "%s: one column" % size)
 		var style := game.hud.get_theme_stylebox(&"panel") as StyleBoxFlat
 		assert_gt(style.border_width_left, 0, "%s: its edge along the board" % size)
 		assert_eq(style.border_width_top, 0)
 		var view := game.get_viewport_rect().size
-		assert_almost_eq(game.hud.size.x, PachinkoGame.HUD_WIDTH, 0.5)
+		assert_almost_eq(game.hud.size.x, PachinkoGame.HUD_WIDTH, 0.5, "the designed column")
 		assert_almost_eq(game.hud.get_global_rect().end.x, view.x, 0.5, "on the right edge")
+		assert_almost_eq(game.hud.get_global_rect().size.y, view.y, 0.5, "top to bottom")
 		game.free()
 
 

@@ -40,7 +40,8 @@ func test_a_click_starts_and_a_flipper_drag_fires() -> void:
 	var motion := InputEventMouseMotion.new()
 	motion.position = Vector2(1000, 540)
 	game._input(motion)
-	assert_almost_eq(rules.power, 60.0, 0.01)
+	# 60 view units up, in a window whose board asks full_power_drag() for full power
+	assert_almost_eq(rules.power, 60.0 * 100.0 / game.full_power_drag(), 0.01)
 	var release := InputEventMouseButton.new()
 	release.button_index = MOUSE_BUTTON_LEFT
 	release.pressed = false

@@ -70,7 +70,8 @@ static func _classic() -> Dictionary:
 	}
 
 
-# Windmill country: a sunny landscape of fields and a mill, barn-red ring, walnut plate.
+# Windmill country: a sunny landscape of fields, a red barn, a silo and hay bales (no mill in
+# the picture: the board's real windmills turn in front of it), barn-red ring, walnut plate.
 static func _country() -> Dictionary:
 	return {
 		"art_path": ART_FOLDER + "fascia_country.svg",

@@ -1,7 +1,11 @@
 extends RefCounted
 ## A maze board seen as its grid: which cell a point is in and which cell sides are walls.
-## Built from the board's wall segments; walls that do not lie on grid lines make the board
-## "not a grid" (`is_grid` false), and the autoplay then steers without the grid planner.
+## Built from the board's wall segments. A wall on the grid's lines closes the cell sides it
+## runs along; a wall off them (a slanted one, or one whose end a designer moved off a grid
+## point) closes every side between two neighbouring cells whose centres it separates, the
+## grid's nearest picture of it, so one such wall no longer costs the board its planner
+## (the pilot learns where the physics differs). Only a board without a grid (`is_grid`
+## false) is steered without the planner.
 ##
 ## `slide(cell, dir)` is where a ball ends up when the board is tilted hard toward one of
 ## eight directions and held until it stops: it rolls on while a side is open, and with a
@@ -33,8 +37,10 @@ var cols := 0
 var rows := 0
 ## Size of one cell (corridor plus one wall), px.
 var cell := Vector2.ONE
-## True when every wall lies on the grid.
+## True when the board has a grid the planner can use.
 var is_grid := true
+## Walls that do not lie on the grid's lines (drawn onto it by the cells they separate).
+var off_grid_walls := 0
 ## horizontal[r * cols + c]: a wall on grid line r across cell column c (r in 0..rows).
 var horizontal := PackedByteArray()
 ## vertical[r * (cols + 1) + c]: a wall on grid line c down cell row r (c in 0..cols).
@@ -241,7 +247,8 @@ func _mark(a: Vector2, b: Vector2) -> void:
 		absf(ga.y - roundf(ga.y)) * cell.y < SNAP and absf(gb.y - roundf(gb.y)) * cell.y < SNAP
 	)
 	if not (on_x and on_y) or (a.x != b.x and a.y != b.y):
-		is_grid = false
+		off_grid_walls += 1
+		_mark_separated(a, b)
 		return
 	var c0 := roundi(minf(ga.x, gb.x))
 	var c1 := roundi(maxf(ga.x, gb.x))
@@ -253,3 +260,31 @@ func _mark(a: Vector2, b: Vector2) -> void:
 	elif c0 == c1 and c0 >= 0 and c0 <= cols:
 		for r in range(maxi(r0, 0), mini(r1, rows)):
 			vertical[r * (cols + 1) + c0] = 1
+
+
+# Closes the side between each pair of neighbouring cells whose centres the wall from `a`
+# to `b` lies between (the segment joining the centres crosses the wall).
+func _mark_separated(a: Vector2, b: Vector2) -> void:
+	var low := Vector2(minf(a.x, b.x), minf(a.y, b.y)) / cell
+	var high := Vector2(maxf(a.x, b.x), maxf(a.y, b.y)) / cell
+	for r in range(maxi(floori(low.y) - 1, 0), mini(ceili(high.y) + 1, rows)):
+		for c in range(maxi(floori(low.x) - 1, 0), mini(ceili(high.x) + 1, cols)):
+			var centre := (Vector2(c, r) + Vector2(0.5, 0.5)) * cell
+			if c + 1 < cols and _separates(a, b, centre, centre + Vector2(cell.x, 0.0)):
+				vertical[r * (cols + 1) + c + 1] = 1
+			if r + 1 < rows and _separates(a, b, centre, centre + Vector2(0.0, cell.y)):
+				horizontal[(r + 1) * cols + c] = 1
+
+
+# True when the segment a-b crosses the segment p-q (a point exactly on the wall's line
+# counts as on its left, so a wall through a centre closes one side of it, not two).
+static func _separates(a: Vector2, b: Vector2, p: Vector2, q: Vector2) -> bool:
+	var wall := b - a
+	var p_left := wall.cross(p - a) >= 0.0
+	var q_left := wall.cross(q - a) >= 0.0
+	if p_left == q_left:
+		return false
+	var link := q - p
+	var a_side := link.cross(a - p)
+	var b_side := link.cross(b - p)
+	return (a_side >= 0.0) != (b_side >= 0.0) or a_side == 0.0 or b_side == 0.0

@@ -8,8 +8,10 @@ extends RefCounted
 ## re-planning whenever the balls end somewhere the plan did not expect (and remembering
 ## what really happened, so the next plan does not repeat the mistake). A plan that cannot
 ## gather them yet still brings them nearer, and the pilot plans again from there. Then it
-## rolls the pack along its path (MazeNav) into the goal circle and brakes there. On a
-## board that is not a grid, or when planning fails, it steers the ball nearest the goal.
+## rolls the pack along its path (MazeNav) into the goal circle and brakes there. A wall off
+## the grid's lines (slanted, or an end moved off a grid point) is drawn onto the grid
+## (MazeGrid) and planned with like the rest. On a board with no grid, or when planning
+## fails, it steers the ball nearest the goal.
 ## In hard mode the plans never roll a ball into a black hole's cell (a step stops short of
 ## it), and a MazeHoleGuard vets every tilt on a private copy of the board.
 ## The seed's random number picks the gains, the tilt strength and the order plans try
