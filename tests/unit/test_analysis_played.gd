@@ -1,5 +1,5 @@
 extends GutTest
-## A played analysis (the default) fires its shots as the autoplay does: one at a time, at
+## A played analysis (`--played`) fires its shots as the autoplay does: one at a time, at
 ## its pace, among the balls still in play, with ball contacts on. Measured shot by shot on
 ## Classic against the same powers fired alone: about one shot in thirty ends elsewhere,
 ## more often out of a pocket than into one. A run whose balls flew through each other
@@ -14,7 +14,9 @@ func _classic() -> BoardLevel:
 
 
 func _plan() -> AnalysisPlan:
-	return AnalysisPlan.create(_classic(), SHOTS, SEED)
+	var plan := AnalysisPlan.create(_classic(), SHOTS, SEED)
+	plan.played = true
+	return plan
 
 
 func _launch(plan: AnalysisPlan) -> LaunchTable:
@@ -56,8 +58,9 @@ func test_balls_in_play_knock_some_shots_elsewhere() -> void:
 
 func test_a_played_report_says_so_and_is_cached_apart() -> void:
 	var plan := AnalysisPlan.create(_classic(), 10, 1)
+	plan.played = true
 	var report := AnalysisReport.build(plan, AnalysisTally.new(5, plan.level.size), 1.0)
 	assert_true(report["played"], "the report says how its shots were fired")
 	var lone := AnalysisPlan.create(_classic(), 10, 1)
-	lone.played = false
+	assert_false(lone.played, "a plan fires its balls alone unless asked to play them")
 	assert_ne(AnalysisCache.key_for(plan), AnalysisCache.key_for(lone))

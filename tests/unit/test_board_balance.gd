@@ -1,8 +1,7 @@
 extends GutTest
 ## The shipped pachinko boards stay balanced, measured as the issue measures them: the play
-## analysis at uniform random power, played as the autoplay plays (here fewer shots than the
-## 10000 of the release check, with a fixed seed, so each test takes under a minute of CPU
-## and always gives the same figures).
+## analysis at uniform random power (here fewer shots than the 10000 of the release check,
+## with a fixed seed, so each test takes a few seconds and always gives the same figures).
 ## Every pocket catches something, power aims (weakest vs strongest fifth), and the return,
 ## with the bonus layer's tulips and jackpots on the bonus boards, stays between 0.6 and
 ## 0.95.

@@ -9,9 +9,8 @@ extends Node
 const ENV := "BOARD_EDITOR_ANALYSIS_SHOT"
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const EditorShotHook := preload("res://tools/shots/editor_shot_hook.gd")
-## Longest wait for the analysis, seconds (a played run of 10000 shots takes minutes on a
-## busy two-core machine).
-const RUN_LIMIT := 600.0
+## Longest wait for the analysis, seconds.
+const RUN_LIMIT := 200.0
 
 var _plugin: EditorPlugin
 
