@@ -19,8 +19,15 @@ static var folder_override := ""
 ## The cache key of an analysis of `plan`'s board with its settings.
 static func key_for(plan: AnalysisPlan) -> String:
 	var settings := (
-		"v%d|%d|%d|%s|%s"
-		% [AnalysisReport.VERSION, plan.shots, plan.rng_seed, plan.power_from, plan.power_to]
+		"v%d|%d|%d|%s|%s|%s"
+		% [
+			AnalysisReport.VERSION,
+			plan.shots,
+			plan.rng_seed,
+			plan.power_from,
+			plan.power_to,
+			plan.played,
+		]
 	)
 	return (ReportPayouts.geometry_text(plan.level) + "\n" + settings).sha256_text()
 

@@ -14,8 +14,9 @@ extends RefCounted
 ## left out for a bonus board analysed without the open run.
 
 ## Report format version (bump when keys change meaning; 3: powers in hundredths, as
-## the rules fire them, so reports of the old quarter-point grid are stale).
-const VERSION := 3
+## the rules fire them, so reports of the old quarter-point grid are stale; 4: shots played
+## among the balls in play at the game's pace, powers drawn without putting them back).
+const VERSION := 4
 ## Rates and figures are rounded to this many decimals.
 const DECIMALS := 0.00001
 
@@ -65,6 +66,7 @@ static func build(
 		"shots": n,
 		"seed": plan.rng_seed,
 		"threads": plan.threads,
+		"played": plan.played,
 		"power_from": plan.power_from,
 		"power_to": plan.power_to,
 		"wall_s": snappedf(wall_s, 0.001),

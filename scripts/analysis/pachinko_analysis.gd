@@ -21,7 +21,7 @@ var _launch_table: LaunchTable
 var _table := RailExitTable.new()
 var _groups: Array[PackedInt32Array] = []
 var _group_results: Array[RailExitTable] = []
-var _chunk_results: Array[PachinkoShotChunk] = []
+var _chunk_results: Array[AnalysisTally] = []
 var _chunks_done := 0
 var _task := -1
 var _cancelled := false
@@ -121,14 +121,14 @@ func shots_done() -> int:
 func tally() -> AnalysisTally:
 	var merged: AnalysisTally = null
 	_mutex.lock()
-	for chunk in _chunk_results:
-		if chunk == null:
+	for chunk_tally in _chunk_results:
+		if chunk_tally == null:
 			continue
 		if merged == null:
 			merged = AnalysisTally.new(
 				BonusGeometry.world_pockets(plan.level).size(), plan.level.size
 			)
-		merged.merge(chunk.tally)
+		merged.merge(chunk_tally)
 	_mutex.unlock()
 	return merged
 
@@ -160,10 +160,17 @@ func _climb_group(g: int) -> void:
 func _run_chunk(c: int) -> void:
 	if _cancelled:
 		return
-	var chunk := PachinkoShotChunk.new(plan, _launch_table, _table)
-	if not chunk.run(c, func() -> bool: return _cancelled):
+	var stop := func() -> bool: return _cancelled
+	var counts: AnalysisTally = null
+	if plan.played:
+		var played := PlayedShotChunk.new(plan, _launch_table, _table)
+		counts = played.tally if played.run(c, stop) else null
+	else:
+		var lone := PachinkoShotChunk.new(plan, _launch_table, _table)
+		counts = lone.tally if lone.run(c, stop) else null
+	if counts == null:
 		return
 	_mutex.lock()
-	_chunk_results[c] = chunk
+	_chunk_results[c] = counts
 	_chunks_done += 1
 	_mutex.unlock()

@@ -3,7 +3,8 @@ extends RefCounted
 ## Runs one chunk of an analysis: its shots, fired into one fresh world on the calling
 ## thread, each ball followed until it is paid, drained, rolled back or stuck. The balls
 ## pass through each other (BallWorld.ball_contacts off), so many fly at once and each
-## behaves as if alone; the chunk's seed alone decides every power.
+## behaves as if alone; the plan alone decides every power (AnalysisPlan.chunk_levels).
+## A played run fires its chunks with PlayedShotChunk instead.
 ##
 ## Two shortcuts that change no outcome: a shot starts where RailExitTable says its power
 ## leaves the rail (the climb is the same for every shot of that power), and a ball whose
@@ -93,7 +94,7 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	_world.threads = 1
 	_world.ball_contacts = false
 	if _plan.bonus_open:
-		_open_bonus_parts()
+		open_bonus_parts(_world, _plan.level)
 	_world.ball_captured.connect(_on_pocketed)
 	_world.ball_drained.connect(_on_drained)
 	_world.ball_entered_zone.connect(_on_zone)
@@ -124,14 +125,15 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	return true
 
 
-# Lifts every attacker lid and spreads every tulip's wings (the world built them shut).
-func _open_bonus_parts() -> void:
-	var parts := BonusGeometry.wall_plan(_plan.level)
+## Lifts every attacker lid and spreads every tulip's wings in `world`, built for `level`
+## (BoardWorldFactory builds them shut).
+static func open_bonus_parts(world: BallWorld, level: BoardLevel) -> void:
+	var parts := BonusGeometry.wall_plan(level)
 	for wall in parts.size():
 		var part: BonusGeometry.Part = parts[wall]["part"]
-		_world.shapes.set_wall_enabled(wall, BonusGeometry.part_solid(part, true))
-	for gate in _world.shapes.gate_count():
-		_world.shapes.set_gate_open(gate, true, true)
+		world.shapes.set_wall_enabled(wall, BonusGeometry.part_solid(part, true))
+	for gate in world.shapes.gate_count():
+		world.shapes.set_gate_open(gate, true, true)
 
 
 # One shot of power level `q` at step `step`: from the rail table when it knows the climb.

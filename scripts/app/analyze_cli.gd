@@ -44,6 +44,7 @@ static func run(values: Dictionary) -> int:
 			return _fail(EXIT_BAD_INPUT, "--shots must be at least 1 (got %d)" % shots)
 		var plan := AnalysisPlan.create(loaded.level, shots, rng_seed)
 		plan.threads = threads
+		plan.played = values.get("played", false)
 		var analysis := PachinkoAnalysis.new(plan)
 		var tally := analysis.run()
 		if tally == null:

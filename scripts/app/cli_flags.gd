@@ -154,6 +154,18 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--analyze=pachinko --shots=2000",
 	},
 	{
+		"flag": "--played",
+		"for": ["--analyze"],
+		"value": Value.NONE,
+		"default": false,
+		"help":
+		(
+			"Pachinko: fire the shots as the autoplay plays them, one at a time among the"
+			+ " balls in play with ball contacts on (about seven times slower)."
+		),
+		"example": "--analyze=pachinko --board=classic --played",
+	},
+	{
 		"flag": "--runs",
 		"for": ["--analyze"],
 		"value": Value.WHOLE,

@@ -49,6 +49,18 @@ func test_a_pachinko_run_writes_its_report_and_heat_map() -> void:
 		assert_eq(image.get_size(), Vector2i(700, 700), "drawn at the board's size")
 
 
+func test_played_fires_the_shots_as_the_autoplay_and_says_so() -> void:
+	var values := {"analyze": "pachinko", "board": "classic", "shots": 60, "seed": 4, "threads": 1}
+	assert_eq(AnalyzeCli.run(values), 0)
+	var json := ProjectSettings.globalize_path("res://build/test_analysis/pachinko_classic.json")
+	var report: Dictionary = JSON.parse_string(FileAccess.get_file_as_string(json))
+	assert_false(report["played"], "by default the balls fly alone (the editor's fast run)")
+	values["played"] = true
+	assert_eq(AnalyzeCli.run(values), 0)
+	report = JSON.parse_string(FileAccess.get_file_as_string(json))
+	assert_true(report["played"], "--played fires them as the autoplay does")
+
+
 func test_bad_input_exits_2() -> void:
 	var missing := {"analyze": "pachinko", "board": "no_such_board", "shots": 10, "seed": 1}
 	assert_eq(AnalyzeCli.run(missing), 2)
