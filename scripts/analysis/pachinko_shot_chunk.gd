@@ -22,26 +22,19 @@ const CHECK_EVERY := 60
 ## the game's nudge for a resting ball, and the integrator's rounding.
 const HOPELESS_MARGIN := 8.0
 
+## The chunk's figures (its ledger's tally).
 var tally: AnalysisTally
 
+var _ledger: ShotLedger
 var _plan: AnalysisPlan
 var _table: RailExitTable
 var _world: BallWorld
 var _launch: LaunchTable
 ## A ball whose highest reachable centre lies below this y can reach no special pin.
 var _hopeless_y := -INF
-## Per ball id (ids count up from 0 in a fresh world): its power band, the step its shot
-## was fired on, and 1 once it is known to be out of the rail (the energy test applies).
-var _band_of := PackedInt32Array()
-var _born := PackedInt32Array()
+## Per ball id (ids count up from 0 in a fresh world): 1 once it is known to be out of
+## the rail (the energy test applies).
 var _in_field := PackedByteArray()
-var _payouts := PackedInt32Array()
-## The density grid while the chunk runs (the tally's, moved here and back): a member of
-## this object, so the per-ball loops never look another object up. That matters on
-## threads: every access to another object goes through one engine-wide lock in debug
-## builds (the object database check), and two threads then queue on it.
-var _density := PackedInt64Array()
-var _grid := Vector2i.ZERO
 
 
 ## `launch` is LaunchCalibration.table(plan.level), measured once beforehand on the
@@ -52,11 +45,8 @@ func _init(plan: AnalysisPlan, launch: LaunchTable, table: RailExitTable = null)
 	_launch = launch
 	_table = table
 	# The level's pockets and then the bonus pockets (shut unless the plan holds them open).
-	var pockets := BonusGeometry.world_pockets(plan.level)
-	tally = AnalysisTally.new(pockets.size(), plan.level.size)
-	for pocket in pockets:
-		var payout: int = pocket["payout"]
-		_payouts.append(payout)
+	_ledger = ShotLedger.new(plan)
+	tally = _ledger.tally
 	_hopeless_y = hopeless_line(plan.level)
 
 
@@ -86,9 +76,7 @@ static func cell_of(p: Vector2, board_size: Vector2) -> int:
 ## true the run stops early and returns false (the tally then holds only finished shots).
 func run(index: int, cancelled: Callable = Callable()) -> bool:
 	var levels := _plan.chunk_levels(index)
-	_density = tally.density
-	tally.density = PackedInt64Array()
-	_grid = tally.grid_size
+	_ledger.open()
 	var in_flight := _plan.in_flight
 	_world = BoardWorldFactory.build(_plan.level)
 	_world.threads = 1
@@ -111,16 +99,16 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 		_world.step(dt)
 		step += 1
 		if step % SAMPLE_EVERY == 0:
-			_sample_density()
+			_ledger.sample(_world.get_positions())
 		if hopeless_ok and step % HOPELESS_EVERY == 0:
 			_drop_hopeless()
 		if step % CHECK_EVERY == 0:
 			_drop_stuck(step - max_steps)
 			if cancelled.is_valid() and cancelled.call():
-				tally.density = _density
+				_ledger.close()
 				return false
 	tally.steps += step
-	tally.density = _density
+	_ledger.close()
 	_world = null
 	return true
 
@@ -141,7 +129,7 @@ func _fire(q: int, step: int) -> void:
 	var band := AnalysisPlan.band_of(AnalysisPlan.power_of(q))
 	var fate := _table.fate[q] if _table != null else RailExitTable.Fate.UNKNOWN
 	if fate == RailExitTable.Fate.RETURNED or fate == RailExitTable.Fate.EXIT:
-		_add_samples(_table.samples[q])
+		_ledger.add_samples(_table.samples[q])
 	if _table != null:
 		tally.record_entry(band, _table.entry_x[q])
 	if fate == RailExitTable.Fate.RETURNED:
@@ -156,29 +144,9 @@ func _fire(q: int, step: int) -> void:
 		var launch := LaunchRail.launch_position(_plan.level)
 		var direction := LaunchRail.launch_direction(_plan.level)
 		id = _world.spawn_ball(launch, direction * speed, _plan.level.ball_radius)
-	_band_of.resize(id + 1)
-	_born.resize(id + 1)
+	_ledger.fired(id, band, step)
 	_in_field.resize(id + 1)
-	_band_of[id] = band
-	_born[id] = step
 	_in_field[id] = 1 if fate == RailExitTable.Fate.EXIT else 0
-
-
-func _add_samples(cells: PackedInt32Array) -> void:
-	for c in cells:
-		_density[c] += 1
-
-
-# Every ball in the world adds one sample to the cell it is in.
-func _sample_density() -> void:
-	var inv_cell := 1.0 / AnalysisPlan.DENSITY_CELL
-	var cols := _grid.x
-	var rows := _grid.y
-	for p: Vector2 in _world.get_positions():
-		var cx := int(p.x * inv_cell)
-		var cy := int(p.y * inv_cell)
-		if p.x >= 0.0 and p.y >= 0.0 and cx < cols and cy < rows:
-			_density[cy * cols + cx] += 1
 
 
 # Balls out of the rail whose energy cannot lift them to any special pin: drained.
@@ -191,24 +159,23 @@ func _drop_hopeless() -> void:
 		var id := ids[k]
 		if _in_field[id] != 0 and pos[k].y - vel[k].length_squared() / two_g > _hopeless_y:
 			_world.remove_ball(id)
-			tally.record(_band_of[id], AnalysisTally.Outcome.DRAINED)
+			_ledger.record(id, AnalysisTally.Outcome.DRAINED)
 
 
 # Balls fired before `born_before` have flown too long: they count as stuck.
 func _drop_stuck(born_before: int) -> void:
 	for id: int in _world.get_ids():
-		if _born[id] < born_before:
+		if _ledger.born(id) < born_before:
 			_world.remove_ball(id)
-			tally.record(_band_of[id], AnalysisTally.Outcome.STUCK)
+			_ledger.record(id, AnalysisTally.Outcome.STUCK)
 
 
 func _on_pocketed(ball_id: int, pocket_id: int) -> void:
-	var payout := _payouts[pocket_id] if pocket_id >= 0 and pocket_id < _payouts.size() else 0
-	tally.record(_band_of[ball_id], AnalysisTally.Outcome.POCKETED, pocket_id, payout)
+	_ledger.record(ball_id, AnalysisTally.Outcome.POCKETED, pocket_id)
 
 
 func _on_drained(ball_id: int) -> void:
-	tally.record(_band_of[ball_id], AnalysisTally.Outcome.DRAINED)
+	_ledger.record(ball_id, AnalysisTally.Outcome.DRAINED)
 
 
 # Zone 0 is the rail's return zone: a weak shot rolled back into the cup.
@@ -216,4 +183,4 @@ func _on_zone(ball_id: int, zone_index: int) -> void:
 	if zone_index != 0:
 		return
 	_world.remove_ball(ball_id)
-	tally.record(_band_of[ball_id], AnalysisTally.Outcome.RETURNED)
+	_ledger.record(ball_id, AnalysisTally.Outcome.RETURNED)

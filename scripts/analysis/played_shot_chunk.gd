@@ -21,21 +21,15 @@ const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_auto
 const BallUpkeep := preload("res://scripts/pachinko/rules/ball_upkeep.gd")
 const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
 
+## The chunk's figures (its ledger's tally).
 var tally: AnalysisTally
 
+var _ledger: ShotLedger
 var _plan: AnalysisPlan
 var _table: RailExitTable
 var _world: BallWorld
 var _launch: LaunchTable
 var _upkeep := BallUpkeep.new()
-## Per ball id: its power band and the step it was fired on.
-var _band_of := PackedInt32Array()
-var _born := PackedInt32Array()
-var _payouts := PackedInt32Array()
-## The density grid while the chunk runs (see PachinkoShotChunk._density: kept on this
-## object so the per-ball loop reads no other object).
-var _density := PackedInt64Array()
-var _grid := Vector2i.ZERO
 
 
 ## `launch` is LaunchCalibration.table(plan.level); `table` the rail climbs, read only for
@@ -44,20 +38,15 @@ func _init(plan: AnalysisPlan, launch: LaunchTable, table: RailExitTable = null)
 	_plan = plan
 	_launch = launch
 	_table = table
-	var pockets := BonusGeometry.world_pockets(plan.level)
-	tally = AnalysisTally.new(pockets.size(), plan.level.size)
-	for pocket in pockets:
-		var payout: int = pocket["payout"]
-		_payouts.append(payout)
+	_ledger = ShotLedger.new(plan)
+	tally = _ledger.tally
 
 
 ## Fires the shots of chunk `index`. `cancelled` is polled now and then; when it returns
 ## true the run stops early and returns false (the tally then holds only finished shots).
 func run(index: int, cancelled: Callable = Callable()) -> bool:
 	var levels := _plan.chunk_levels(index)
-	_density = tally.density
-	tally.density = PackedInt64Array()
-	_grid = tally.grid_size
+	_ledger.open()
 	_world = BoardWorldFactory.build(_plan.level)
 	_world.threads = 1
 	if _plan.bonus_open:
@@ -85,16 +74,16 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 		tally.ball_steps += _world.ball_count() * ran
 		step += ran
 		if ran > 0:
-			_sample_density()
+			_ledger.sample(_world.get_positions())
 			_upkeep_after(ran * dt, pace)
 		if step >= next_check:
 			next_check += PachinkoShotChunk.CHECK_EVERY
 			_drop_stuck(step - max_steps)
 			if cancelled.is_valid() and cancelled.call():
-				tally.density = _density
+				_ledger.close()
 				return false
 	tally.steps += step
-	tally.density = _density
+	_ledger.close()
 	_world = null
 	return true
 
@@ -115,10 +104,7 @@ func _fire(q: int, step: int) -> void:
 	var direction := LaunchRail.launch_direction(_plan.level)
 	var at := LaunchRail.launch_position(_plan.level)
 	var id := _world.spawn_ball(at, direction * speed, _plan.level.ball_radius)
-	_band_of.resize(id + 1)
-	_born.resize(id + 1)
-	_band_of[id] = band
-	_born[id] = step
+	_ledger.fired(id, band, step)
 
 
 # The rules' upkeep between frames: wedged balls are caught, resting ones nudged.
@@ -135,37 +121,23 @@ func _upkeep_after(seconds: float, rng: RandomNumberGenerator) -> void:
 	_upkeep.nudge_resting(_world, in_play, seconds, rng)
 
 
-# Every ball in the world adds one sample to the cell it is in (once a frame: every other
-# step at the game's 120 steps a second, PachinkoShotChunk.SAMPLE_EVERY).
-func _sample_density() -> void:
-	var inv_cell := 1.0 / AnalysisPlan.DENSITY_CELL
-	var cols := _grid.x
-	var rows := _grid.y
-	for p: Vector2 in _world.get_positions():
-		var cx := int(p.x * inv_cell)
-		var cy := int(p.y * inv_cell)
-		if p.x >= 0.0 and p.y >= 0.0 and cx < cols and cy < rows:
-			_density[cy * cols + cx] += 1
-
-
 # Balls fired before `born_before` have flown too long: they count as stuck.
 func _drop_stuck(born_before: int) -> void:
 	for id: int in _world.get_ids():
-		if _born[id] < born_before:
+		if _ledger.born(id) < born_before:
 			_world.remove_ball(id)
 			_upkeep.forget(id)
-			tally.record(_band_of[id], AnalysisTally.Outcome.STUCK)
+			_ledger.record(id, AnalysisTally.Outcome.STUCK)
 
 
 func _on_pocketed(ball_id: int, pocket_id: int) -> void:
 	_upkeep.forget(ball_id)
-	var payout := _payouts[pocket_id] if pocket_id >= 0 and pocket_id < _payouts.size() else 0
-	tally.record(_band_of[ball_id], AnalysisTally.Outcome.POCKETED, pocket_id, payout)
+	_ledger.record(ball_id, AnalysisTally.Outcome.POCKETED, pocket_id)
 
 
 func _on_drained(ball_id: int) -> void:
 	_upkeep.forget(ball_id)
-	tally.record(_band_of[ball_id], AnalysisTally.Outcome.DRAINED)
+	_ledger.record(ball_id, AnalysisTally.Outcome.DRAINED)
 
 
 # Zone 0 is the rail's return zone: a shot rolled back into the cup.
@@ -174,4 +146,4 @@ func _on_zone(ball_id: int, zone_index: int) -> void:
 		return
 	_world.remove_ball(ball_id)
 	_upkeep.forget(ball_id)
-	tally.record(_band_of[ball_id], AnalysisTally.Outcome.RETURNED)
+	_ledger.record(ball_id, AnalysisTally.Outcome.RETURNED)
