@@ -17,6 +17,21 @@ static func make(size: Vector2i) -> Window:
 	return window
 
 
+## `scene` made in a new window of `size` (see make()) that `test` frees after the test,
+## after `frames` frames. `prepare` (optional) gets the new node before it enters the tree.
+static func open(
+	test: GutTest, scene: PackedScene, size: Vector2i, frames: int, prepare := Callable()
+) -> Node:
+	var window := make(size)
+	test.add_child_autofree(window)
+	var node := scene.instantiate()
+	if prepare.is_valid():
+		prepare.call(node)
+	window.add_child(node)
+	await test.wait_process_frames(frames)
+	return node
+
+
 ## Screen pixels one unit of font size takes when `control` draws it: its own scale times
 ## the window's stretch.
 static func px_per_font_unit(control: Control) -> float:

@@ -24,12 +24,10 @@ func after_each() -> void:
 
 ## The maze level select in a window of `size` pixels, stretched as the project stretches.
 func _open_in_window(size: Vector2i) -> LevelSelect:
-	var window := StretchedWindow.make(size)
-	add_child_autofree(window)
 	App.level_select_kind = BoardLevel.MAZE_NAME
-	var screen := LevelSelectScene.instantiate() as LevelSelect
-	screen.set("user_root", EMPTY_USER_ROOT)
-	window.add_child(screen)
+	var no_boards := func(node: Node) -> void: node.set("user_root", EMPTY_USER_ROOT)
+	var node: Node = await StretchedWindow.open(self, LevelSelectScene, size, 1, no_boards)
+	var screen := node as LevelSelect
 	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	await wait_process_frames(4)
 	return screen

@@ -14,12 +14,7 @@ const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(1280, 720), Vector
 
 ## The game in a window of `size` stretched as the project stretches its own window.
 func _game_in_window(size: Vector2i) -> Control:
-	var window := StretchedWindow.make(size)
-	add_child_autofree(window)
-	var game: Control = GAME.instantiate()
-	window.add_child(game)
-	await wait_process_frames(3)
-	return game
+	return await StretchedWindow.open(self, GAME, size, 3) as Control
 
 
 func test_the_side_text_is_at_least_14_px_on_screen() -> void:

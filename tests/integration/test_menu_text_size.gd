@@ -17,12 +17,7 @@ const MIN_SCREEN_PX := 14.0
 
 ## `scene` in a window of `size` pixels, stretched as the project stretches its own window.
 func _open_in_window(scene: PackedScene, size: Vector2i) -> Control:
-	var window := StretchedWindow.make(size)
-	add_child_autofree(window)
-	var screen := scene.instantiate() as Control
-	window.add_child(screen)
-	await wait_process_frames(5)
-	return screen
+	return await StretchedWindow.open(self, scene, size, 5) as Control
 
 
 ## How tall `control`'s text is on the screen, in pixels.

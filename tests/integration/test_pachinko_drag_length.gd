@@ -16,12 +16,7 @@ func before_each() -> void:
 
 
 func _game_in_window(size: Vector2i) -> PachinkoGame:
-	var window := StretchedWindow.make(size)
-	add_child_autofree(window)
-	var game := GAME.instantiate() as PachinkoGame
-	window.add_child(game)
-	await wait_process_frames(4)
-	return game
+	return await StretchedWindow.open(self, GAME, size, 4) as PachinkoGame
 
 
 # Presses the grip at `at`, drags it `up` view units and returns the power drawn.

@@ -25,12 +25,7 @@ func before_each() -> void:
 
 ## The game in a window of `size` stretched as the project stretches its own window.
 func _game_in_window(size: Vector2i) -> PachinkoGame:
-	var window := StretchedWindow.make(size)
-	add_child_autofree(window)
-	var game := GAME.instantiate() as PachinkoGame
-	window.add_child(game)
-	await wait_process_frames(4)
-	return game
+	return await StretchedWindow.open(self, GAME, size, 4) as PachinkoGame
 
 
 ## Every text of the panel with the font size it is drawn at: its labels, the numbers, the
