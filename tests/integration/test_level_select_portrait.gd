@@ -6,10 +6,9 @@ extends GutTest
 ## the window, and the header's title wraps instead of being cut ("Tilt M…"). A landscape
 ## window is laid out as before.
 
-const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
 const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const PortraitZoom := preload("res://scenes/common/portrait_zoom.gd")
-const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
+const MazeLevelSelectWindow := preload("res://tests/integration/maze_level_select_window.gd")
 const EMPTY_USER_ROOT := "user://test_level_select_portrait_no_boards"
 
 
@@ -24,13 +23,7 @@ func after_each() -> void:
 
 ## The maze level select in a window of `size` pixels, stretched as the project stretches.
 func _open_in_window(size: Vector2i) -> LevelSelect:
-	App.level_select_kind = BoardLevel.MAZE_NAME
-	var no_boards := func(node: Node) -> void: node.set("user_root", EMPTY_USER_ROOT)
-	var node: Node = await StretchedWindow.open(self, LevelSelectScene, size, 1, no_boards)
-	var screen := node as LevelSelect
-	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
-	await wait_process_frames(4)
-	return screen
+	return await MazeLevelSelectWindow.open(self, size, EMPTY_USER_ROOT)
 
 
 func test_portrait_cards_read_at_14_px_in_two_columns_inside_the_window() -> void:

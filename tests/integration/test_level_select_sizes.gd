@@ -7,12 +7,11 @@ extends GutTest
 ## nearly always, and the cards sat in a narrow block with empty bands either side: now the
 ## status line shows only with something to say, and the cards share the row's width.
 
-const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
 const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const LevelCard := preload("res://scenes/menu/level_card.gd")
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
-const SaveDataScript := preload("res://scripts/app/save_data.gd")
-const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
+const MazeLevelSelectWindow := preload("res://tests/integration/maze_level_select_window.gd")
+const ScratchSave := preload("res://tests/helpers/scratch_save.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]
 const EMPTY_USER_ROOT := "user://test_level_select_sizes_no_boards"
 const SAVE := "user://test_level_select_sizes_save.cfg"
@@ -22,29 +21,17 @@ var _real_save: RefCounted = null
 
 func before_each() -> void:
 	# a fresh save: Garden Path open and played by no one, the next boards locked
-	_real_save = App.save_data
-	var scratch := SaveDataScript.new()
-	scratch.load_file(SAVE)
-	App.save_data = scratch
-	App.settings.unlock_all_boards = false
+	_real_save = ScratchSave.swap_in(SAVE)
 
 
 func after_each() -> void:
-	App.save_data = _real_save
-	App.settings.unlock_all_boards = false
+	ScratchSave.restore(_real_save, SAVE)
 	App.level_select_kind = BoardLevel.PACHINKO_NAME
-	DirAccess.remove_absolute(SAVE)
 
 
 ## The maze level select in a window of `size` pixels, stretched as the project stretches.
 func _open_in_window(size: Vector2i) -> LevelSelect:
-	App.level_select_kind = BoardLevel.MAZE_NAME
-	var no_boards := func(node: Node) -> void: node.set("user_root", EMPTY_USER_ROOT)
-	var node: Node = await StretchedWindow.open(self, LevelSelectScene, size, 1, no_boards)
-	var screen := node as LevelSelect
-	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
-	await wait_process_frames(4)
-	return screen
+	return await MazeLevelSelectWindow.open(self, size, EMPTY_USER_ROOT)
 
 
 func test_medal_times_and_locks_read_at_14_px_and_fit_the_card() -> void:

@@ -3,7 +3,7 @@ extends GutTest
 ## open them all), and the level select shows the locks and each board's medals.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
-const SaveDataScript := preload("res://scripts/app/save_data.gd")
+const ScratchSave := preload("res://tests/helpers/scratch_save.gd")
 const LevelCard := preload("res://scenes/menu/level_card.gd")
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const LevelSelect := preload("res://scenes/menu/level_select.gd")
@@ -15,17 +15,11 @@ var _real_save: RefCounted = null
 
 
 func before_each() -> void:
-	_real_save = App.save_data
-	var scratch := SaveDataScript.new()
-	scratch.load_file(SAVE)
-	App.save_data = scratch
-	App.settings.unlock_all_boards = false
+	_real_save = ScratchSave.swap_in(SAVE)
 
 
 func after_each() -> void:
-	App.save_data = _real_save
-	App.settings.unlock_all_boards = false
-	DirAccess.remove_absolute(SAVE)
+	ScratchSave.restore(_real_save, SAVE)
 	DirAccess.remove_absolute(SETTINGS)
 
 
