@@ -7,8 +7,12 @@ extends RefCounted
 const CabinetBackdrop := preload("res://scenes/pachinko/cabinet_backdrop.gd")
 
 
-## Gives the pachinko screen `game` (pachinko_game.tscn) the look of `level`'s machine.
-static func apply(game: Control, level: BoardLevel) -> void:
+## Gives the pachinko screen `game` (pachinko_game.tscn) the look of `level`'s machine: its
+## panel's `stats` box, `title` and `notes` are handed in by the screen, which knows where
+## its layout put them (the portrait layout moves them).
+static func apply(
+	game: Control, level: BoardLevel, stats: Control, title: Label, notes: Label
+) -> void:
 	var palette := FasciaBook.palette_of(level.fascia)
 	var backdrop := game.get_node_or_null(^"Backdrop") as CabinetBackdrop
 	if backdrop != null:
@@ -16,16 +20,13 @@ static func apply(game: Control, level: BoardLevel) -> void:
 	var hud := game.get_node_or_null(^"Hud") as Control
 	if hud != null:
 		_restyle(hud, &"panel", palette.panel, palette.panel_border)
-	var stats := game.get_node_or_null(^"Hud/Column/Info/Stats") as Control
 	if stats != null:
 		_restyle(stats, &"panel", palette.box, palette.box_border)
-	var title := game.get_node_or_null(^"Hud/Column/Info/Title") as Label
 	if title != null and title.label_settings != null:
 		var settings := title.label_settings.duplicate() as LabelSettings
 		settings.font_color = palette.title
 		settings.outline_color = palette.title_outline
 		title.label_settings = settings
-	var notes := game.get_node_or_null(^"Hud/Column/Info/Notes") as Label
 	if notes != null:
 		notes.add_theme_color_override(&"font_color", palette.notes)
 

@@ -67,7 +67,7 @@ func _ready() -> void:
 		instructions.show_problem(problem)
 		return
 	_level = loaded.level
-	MachineDress.apply(self, _level)
+	MachineDress.apply(self, _level, stats_panel, title, notes)
 	(
 		SoundBank
 		. warm(

@@ -41,7 +41,7 @@ func test_the_ball_layer_sits_above_the_lights() -> void:
 
 func test_paid_balls_pour_into_the_cup() -> void:
 	var game := _game()
-	var cup := game.get_node("Hud/Column/Info/Cup")
+	var cup := game.cup
 	cup.pour(4)
 	assert_eq(cup.pouring(), 4, "four balls on their way")
 	for i in 60:

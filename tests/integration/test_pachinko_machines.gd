@@ -33,7 +33,7 @@ func test_each_board_dresses_the_screen_as_its_machine() -> void:
 		var hud := game.get_node("Hud") as Control
 		var style := hud.get_theme_stylebox(&"panel") as StyleBoxFlat
 		assert_eq(style.border_color, palette.panel_border, board + ": the side panel")
-		var title := game.get_node("Hud/Column/Info/Title") as Label
+		var title := game.title
 		assert_eq(title.label_settings.font_color, palette.title)
 		arts[view.fascia.texture.resource_path] = board
 		# one game at a time: five screens open at once each start their own worker threads

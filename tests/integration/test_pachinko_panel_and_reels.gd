@@ -6,6 +6,7 @@ extends GutTest
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
 const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 
 
@@ -20,7 +21,7 @@ func _game() -> Control:
 
 
 func _panel_text(game: Node) -> String:
-	var panel := game.get_node("Hud/Column/Info/Stats")
+	var panel := (game as PachinkoGame).stats_panel
 	return (panel.get_child(0) as RichTextLabel).get_parsed_text()
 
 
@@ -126,7 +127,7 @@ func test_balls_go_round_the_reels_not_over_them() -> void:
 func test_the_frame_counter_leaves_the_title_clear() -> void:
 	var game := _game()
 	await wait_process_frames(2)
-	var title := game.get_node("Hud/Column/Info/Title") as Control
+	var title := (game as PachinkoGame).title as Control
 	var counter := game.get_node("FrameCounter/FpsLabel") as Control
 	var title_rect := title.get_global_rect()
 	var counter_rect := counter.get_global_rect()

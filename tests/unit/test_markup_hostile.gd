@@ -5,6 +5,7 @@ extends GutTest
 
 const InstructionsScene := preload("res://scenes/pachinko/instructions_panel.tscn")
 const GameScene := preload("res://scenes/pachinko/pachinko_game.tscn")
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const ROOT := "res://tests/fixtures/hostile_markup/"
 const PAYLOAD := ROOT + "payload.tres"
@@ -112,7 +113,7 @@ func test_the_game_scene_shows_a_named_board_literally() -> void:
 	add_child_autofree(game)
 	assert_not_null(game.get("rules"), "the board plays")
 	_assert_literal(_body(game.get_node("Instructions")).get_parsed_text(), "the game's panel", [])
-	var title := game.get_node("Hud/Column/Info/Title") as Label
+	var title := (game as PachinkoGame).title
 	assert_eq(title.text, NAMED["name_font.board"], "the HUD title is a plain label")
 
 
