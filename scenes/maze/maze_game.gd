@@ -17,6 +17,7 @@ const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
 const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
 const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const MazeHints := preload("res://scenes/maze/maze_hints.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
@@ -87,7 +88,7 @@ func _ready() -> void:
 	_calibrate.pressed.connect(_on_calibrate)
 	MazeFocusRing.apply(_calibrate)
 	_calibrate.visible = false
-	_controls.text = _controls_text()
+	_controls.text = MazeHints.controls()
 	var level := _load_level()
 	if level == null:
 		_note.show_note("This board could not be loaded.", _load_problem)
@@ -198,12 +199,7 @@ func _on_game_reset() -> void:
 	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
-	var hint := (
-		"Hard mode: avoid the black holes. Back to easy mode? Press %s" % _key("maze_easy_mode")
-		if rules.hard_mode
-		else "Move every ball to the center. Ready for hard mode? Press %s" % _key("maze_hard_mode")
-	)
-	_note.show_note("Tilt the board to start!", hint)
+	_note.show_note("Tilt the board to start!", MazeHints.start(rules.hard_mode))
 	_show_best()
 
 
@@ -216,8 +212,7 @@ func _on_won(seconds: float) -> void:
 	if best:
 		var path := ReplayStore.best_maze_path(board_id, rules.hard_mode)
 		ReplayStore.save(_recorder.finish(), path)
-	var hint := "" if rules.hard_mode else "Press %s for hard mode" % _key("maze_hard_mode")
-	_note.show_note("Congrats, you did it!", hint)
+	_note.show_note("Congrats, you did it!", MazeHints.won(rules.hard_mode))
 	_next_medal.text = summary.medal_line()
 	_show_best()
 	_win_panel.present(summary, rules.hard_mode, not _next_board_path().is_empty())
@@ -316,10 +311,8 @@ func _on_lost(hole: int) -> void:
 	_stage.set_lost_hole(hole)
 	_sounds.play(Recipes.BALL_DROP)
 	haptics.drop()
-	_note.show_note(
-		"A ball fell into a black hole! Press %s to reset the game." % _key("maze_reset"),
-		"Back to easy? Press %s" % _key("maze_easy_mode")
-	)
+	var lost := MazeHints.lost()
+	_note.show_note(lost[0], lost[1])
 	_sounds.play(SoundBank.HOLE_FALL, -9.0)
 
 
@@ -373,29 +366,6 @@ func _add_optional_scene(path: String) -> void:
 	var pause_menu := node as PauseMenu
 	if pause_menu != null:
 		pause_menu.restart_requested.connect(_on_restart_requested)
-
-
-func _controls_text() -> String:
-	return (
-		"Tilt: joystick, %s, or a gamepad stick\n%s reset  ·  %s hard  ·  %s easy  ·  %s pause"
-		% [
-			"arrows / WASD",
-			_key("maze_reset"),
-			_key("maze_hard_mode"),
-			_key("maze_easy_mode"),
-			_key("pause"),
-		]
-	)
-
-
-## The name of the first key bound to `action` ("Space", "H"), for the player-facing text.
-static func _key(action: String) -> String:
-	for event in InputMap.action_get_events(action):
-		var key := event as InputEventKey
-		if key != null:
-			var code := key.physical_keycode if key.keycode == KEY_NONE else key.keycode
-			return OS.get_keycode_string(code)
-	return action
 
 
 static func _format_time(seconds: float) -> String:

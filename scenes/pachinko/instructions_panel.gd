@@ -5,7 +5,6 @@ extends Control
 ## it that came from a file (the board's name, a refusal quoting a field) goes through
 ## PlainMarkup.escape, the title and footer are plain labels.
 
-const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
 const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
 const ReadableText := preload("res://scenes/common/readable_text.gd")
 ## The card's smallest font size (the legend's) in the design: the card is scaled up until
@@ -49,7 +48,7 @@ func show_start(level: BoardLevel) -> void:
 						"[b]One shot:[/b] press the red grip and drag up to draw the flipper back (the"
 						+ (
 							" red bar shows the power), or hold [b]%s[/b]; let go to fire."
-							% PachinkoInput.key_name(&"launch_charge", "the charge key")
+							% KeyNames.of(&"launch_charge", "the charge key")
 						)
 					),
 					(
@@ -59,9 +58,9 @@ func show_start(level: BoardLevel) -> void:
 							+ " [b]%s[/b] / [b]%s[/b], the wheel or a drag on the dial."
 						)
 						% [
-							PachinkoInput.key_name(&"launch_handle", "the handle key"),
-							PachinkoInput.key_name(&"handle_weaker", "?"),
-							PachinkoInput.key_name(&"handle_stronger", "?"),
+							KeyNames.of(&"launch_handle", "the handle key"),
+							KeyNames.of(&"handle_weaker", "?"),
+							KeyNames.of(&"handle_stronger", "?"),
 						]
 					),
 					(
@@ -76,8 +75,7 @@ func show_start(level: BoardLevel) -> void:
 	_legend.show_pieces(level)
 	_legend.visible = true
 	_footer.text = (
-		"Click anywhere or press %s to start"
-		% PachinkoInput.key_name(&"game_start", "the start key")
+		"Click anywhere or press %s to start" % KeyNames.of(&"game_start", "the start key")
 	)
 	visible = true
 

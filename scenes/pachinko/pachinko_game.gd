@@ -192,10 +192,10 @@ func _new_rules() -> void:
 					+ "\nor %s. Turn it with\n%s / %s."
 				)
 				% [
-					PachinkoInput.key_name(&"launch_charge", "the charge key"),
-					PachinkoInput.key_name(&"launch_handle", "the handle key"),
-					PachinkoInput.key_name(&"handle_weaker", "?"),
-					PachinkoInput.key_name(&"handle_stronger", "?"),
+					KeyNames.of(&"launch_charge", "the charge key"),
+					KeyNames.of(&"launch_handle", "the handle key"),
+					KeyNames.of(&"handle_weaker", "?"),
+					KeyNames.of(&"handle_stronger", "?"),
 				]
 			)
 		)
@@ -216,9 +216,9 @@ func _show_notes() -> void:
 			(
 				"%s restart  ·  %s pause  ·  %s frame counter"
 				% [
-					PachinkoInput.key_name(&"game_restart", "?"),
-					PachinkoInput.key_name(&"pause", "?"),
-					PachinkoInput.key_name(&"toggle_frame_counter", "?"),
+					KeyNames.of(&"game_restart", "?"),
+					KeyNames.of(&"pause", "?"),
+					KeyNames.of(&"toggle_frame_counter", "?"),
 				]
 			)
 		)

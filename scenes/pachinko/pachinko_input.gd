@@ -191,19 +191,3 @@ func _analog(rules: PachinkoRules, strength: float) -> bool:
 		_source = Source.NONE
 		return true
 	return false
-
-
-## The first keyboard key bound to `action`, as the player would read it ("Space"), or
-## `fallback` when the action has no key. Keeps on-screen help true after a remap.
-static func key_name(action: StringName, fallback: String = "") -> String:
-	if not InputMap.has_action(action):
-		return fallback
-	for event in InputMap.action_get_events(action):
-		var key := event as InputEventKey
-		if key == null:
-			continue
-		# A physical key is named by its US-layout key, which is what the bindings store.
-		var code := key.keycode if key.keycode != KEY_NONE else key.physical_keycode
-		if code != KEY_NONE:
-			return OS.get_keycode_string(code)
-	return fallback

@@ -1,0 +1,46 @@
+extends RefCounted
+## What the maze screen tells the player in words: the controls line and the hints under
+## its notes. Every key is named as the player has bound it (KeyNames), so the words stay
+## true after a remap.
+
+
+## The controls line under the side panel.
+static func controls() -> String:
+	return (
+		"Tilt: joystick, %s, or a gamepad stick\n%s reset  ·  %s hard  ·  %s easy  ·  %s pause"
+		% ["arrows / WASD", _reset(), _hard(), _easy(), KeyNames.of(&"pause", "the pause key")]
+	)
+
+
+## The hint under "Tilt the board to start!" in easy or `hard` mode.
+static func start(hard: bool) -> String:
+	if hard:
+		return "Hard mode: avoid the black holes. Back to easy mode? Press %s" % _easy()
+	return "Move every ball to the center. Ready for hard mode? Press %s" % _hard()
+
+
+## The hint under "Congrats, you did it!" (hard mode has nothing harder to offer).
+static func won(hard: bool) -> String:
+	return "" if hard else "Press %s for hard mode" % _hard()
+
+
+## The note and its hint when a ball falls into a black hole.
+static func lost() -> PackedStringArray:
+	return PackedStringArray(
+		[
+			"A ball fell into a black hole! Press %s to reset the game." % _reset(),
+			"Back to easy? Press %s" % _easy(),
+		]
+	)
+
+
+static func _reset() -> String:
+	return KeyNames.of(&"maze_reset", "the reset key")
+
+
+static func _hard() -> String:
+	return KeyNames.of(&"maze_hard_mode", "the hard-mode key")
+
+
+static func _easy() -> String:
+	return KeyNames.of(&"maze_easy_mode", "the easy-mode key")
