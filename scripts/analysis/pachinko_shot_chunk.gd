@@ -78,14 +78,7 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	var levels := _plan.chunk_levels(index)
 	_ledger.open()
 	var in_flight := _plan.in_flight
-	_world = BoardWorldFactory.build(_plan.level)
-	_world.threads = 1
-	_world.ball_contacts = false
-	if _plan.bonus_open:
-		open_bonus_parts(_world, _plan.level)
-	_world.ball_captured.connect(_on_pocketed)
-	_world.ball_drained.connect(_on_drained)
-	_world.ball_entered_zone.connect(_on_zone)
+	_world = chunk_world(_plan, false, _on_pocketed, _on_drained, _on_zone)
 	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)
 	var max_steps := int(AnalysisPlan.MAX_BALL_SECONDS / dt)
 	var hopeless_ok := _world.gravity.x == 0.0 and _world.gravity.y > 0.0
@@ -111,6 +104,23 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	_ledger.close()
 	_world = null
 	return true
+
+
+## A chunk's world for `plan`'s board, on the calling thread, ball contacts on or off, its
+## bonus parts open if the plan holds them open, its catches, drains and zone entries
+## reported to the three handlers.
+static func chunk_world(
+	plan: AnalysisPlan, contacts: bool, on_caught: Callable, on_drained: Callable, on_zone: Callable
+) -> BallWorld:
+	var world := BoardWorldFactory.build(plan.level)
+	world.threads = 1
+	world.ball_contacts = contacts
+	if plan.bonus_open:
+		open_bonus_parts(world, plan.level)
+	world.ball_captured.connect(on_caught)
+	world.ball_drained.connect(on_drained)
+	world.ball_entered_zone.connect(on_zone)
+	return world
 
 
 ## Lifts every attacker lid and spreads every tulip's wings in `world`, built for `level`

@@ -47,13 +47,7 @@ func _init(plan: AnalysisPlan, launch: LaunchTable, table: RailExitTable = null)
 func run(index: int, cancelled: Callable = Callable()) -> bool:
 	var levels := _plan.chunk_levels(index)
 	_ledger.open()
-	_world = BoardWorldFactory.build(_plan.level)
-	_world.threads = 1
-	if _plan.bonus_open:
-		PachinkoShotChunk.open_bonus_parts(_world, _plan.level)
-	_world.ball_captured.connect(_on_pocketed)
-	_world.ball_drained.connect(_on_drained)
-	_world.ball_entered_zone.connect(_on_zone)
+	_world = PachinkoShotChunk.chunk_world(_plan, true, _on_pocketed, _on_drained, _on_zone)
 	var pace := RandomNumberGenerator.new()
 	pace.seed = _plan.chunk_seed(index)
 	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)
