@@ -119,7 +119,13 @@ func move_range(from: int, to: int) -> void:
 			if cell_stale:
 				at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 				c = at.y * _cols + at.x
-			_cell_keys[_key_slot[i]] = (c << BallPairs.SORT_SHIFT) | i
+			# Written only when it changed (the ball left its cell): the keys lie in cell
+			# order, so every lane's balls share cache lines in them, and a write there stalls
+			# the other core (about 50 µs a step of S1 on two threads when always written).
+			var key: int = (c << BallPairs.SORT_SHIFT) | i
+			var slot: int = _key_slot[i]
+			if _cell_keys[slot] != key:
+				_cell_keys[slot] = key
 		if _gone:
 			_alive[i] = 0
 		elif _has_sensors or _v.length_squared() < _rest_speed2:
