@@ -117,16 +117,19 @@ func move_range(from: int, to: int) -> void:
 			_rest[i] = 0.0
 
 
-## Ball `i` after its move: its rest time or sleep (BallSleep.rest_or_sleep), then its sensor
+## Ball `i` after its move: its rest time or sleep (BallSleep.sleep_if_settled), then its sensor
 ## pass. With zones alone (no holes, no goals) BallSensors has work only when the ball
 ## crossed a zone's edge, so that is looked for first.
 func _after_move(i: int) -> void:
 	if _v.length_squared() >= _rest_speed2:
 		_rest[i] = 0.0
 	else:
-		# Near a windmill a ball never sleeps: a sleeper does not move, and a blade would
-		# pass it.
-		BallSleep.rest_or_sleep(_store, i, _dt, 0.0 if _near_wheel else _sleep_time, _settled_push)
+		# It rests `dt` longer; once it has rested the sleep time it may fall asleep. Near a
+		# windmill a ball never sleeps: a sleeper does not move, and a blade would pass it.
+		var rested: float = _rest[i] + _dt
+		_rest[i] = rested
+		if not _near_wheel and _sleep_time > 0.0 and rested >= _sleep_time:
+			BallSleep.sleep_if_settled(_store, i, _settled_push)
 	if not _has_sensors:
 		return
 	if _zones_only and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad):

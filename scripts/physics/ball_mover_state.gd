@@ -59,7 +59,7 @@ var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
 var _cell_keys := PackedInt64Array()
 var _key_slot := PackedInt32Array()
-## The store itself, for the rarer per-ball work that reads it by name (BallSleep.rest_or_sleep).
+## The store itself, for the rarer per-ball work that reads it by name (BallSleep.sleep_if_settled).
 var _store: BallStore
 ## 1 for each hit event kind (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT, BLADE_HIT) some signal
 ## handler listens to: the others are not queued (on a busy board most events are hits).

@@ -20,18 +20,13 @@ const BallStore := preload("res://scripts/physics/ball_store.gd")
 const HELD_SLACK := 1e-3
 
 
-## Rest time and sleep of ball `i`, which just moved slower than the rest speed in a step
-## of `dt` s: it rests `dt` longer, and once it has rested `sleep_time` s (0: it may not
-## sleep now) it falls asleep, unless it is still being pushed apart (by `settled_push` px
-## or more: still settling) or lies on the drain arc (it must still drain). Called by the
-## motion lanes, each for its own balls.
-static func rest_or_sleep(
-	b: BallStore, i: int, dt: float, sleep_time: float, settled_push: float
-) -> void:
-	var rested: float = b.rest[i] + dt
-	b.rest[i] = rested
-	if sleep_time <= 0.0 or rested < sleep_time:
-		return
+## Ball `i`, which has just rested (moved slower than the rest speed) for the tuning's
+## sleep time, falls asleep unless it is still being pushed apart (by `settled_push` px or
+## more: still settling) or lies on the drain arc (it must still drain). Called by the
+## motion lanes, each for its own balls (the mover adds up the rest time itself, in its
+## members: most resting balls are not due yet, and a read of the store by name costs a
+## lookup).
+static func sleep_if_settled(b: BallStore, i: int, settled_push: float) -> void:
 	var push: Vector2 = b.push[i]
 	if push.length() >= settled_push or b.drain_time[i] != 0.0 or b.drain_hits[i] != 0:
 		return
