@@ -90,6 +90,12 @@ static func _print_summary(out: Dictionary) -> void:
 			% [out["threads"], out["thread_scaling"], out["threads_identical"]]
 		)
 	)
+	print(
+		(
+			"the machine in those rounds: a second thread gave a call-free loop %.2fx"
+			% out.get("machine_scaling", 0.0)
+		)
+	)
 	print("scale: %s" % JSON.stringify(out["scale"]))
 	var cost: String = "4x the pins costs %.2fx the time (balls flowing); %.2fx with 5 px balls"
 	print(

@@ -8,6 +8,7 @@ const SweptCheck := preload("res://tests/bench/physics/swept_check.gd")
 const BladeCheck := preload("res://tests/bench/physics/blade_check.gd")
 
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
+const MachineScaling := preload("res://tests/bench/physics/machine_scaling.gd")
 const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
 
 ## Steps excluded from timing at the start of a run.
@@ -178,18 +179,28 @@ static func harness_rules(
 
 ## S1's wall-clock speed on every core over its speed on one thread, from alternating
 ## runs in the same process (the medians of `rounds` each): the parallel stages' gain.
+## Each round also times what the machine gives a second thread then (MachineScaling):
+## "machine_scaling", and "scaling_of_machine" = scaling / machine_scaling.
 static func thread_scaling(scene: Dictionary, steps: int, rounds: int) -> Dictionary:
 	var one: Array = []
 	var all: Array = []
+	var machine: Array = []
 	for _round: int in rounds:
+		machine.append(MachineScaling.round_scaling())
 		one.append(run(scene, steps + WARMUP, false, true, 1)["ball_steps_per_s"])
 		all.append(run(scene, steps + WARMUP, false, true, 0)["ball_steps_per_s"])
+		machine.append(MachineScaling.round_scaling())
 	var one_median: float = TimingRounds.median(one)
 	var all_median: float = TimingRounds.median(all)
+	var scaling: float = all_median / maxf(one_median, 1e-9)
+	var machine_median: float = TimingRounds.median(machine)
 	return {
 		"one_thread_steps_per_s": one_median,
 		"all_threads_steps_per_s": all_median,
-		"scaling": all_median / maxf(one_median, 1e-9),
+		"scaling": scaling,
+		"machine_scaling": machine_median,
+		"machine_rounds": machine,
+		"scaling_of_machine": scaling / maxf(machine_median, 1e-9),
 	}
 
 
