@@ -19,6 +19,8 @@ const LaneCrew := preload("res://scripts/physics/lane_crew.gd")
 const MIN_BALLS_PER_LANE := 48
 ## Lanes per thread, at most.
 const LANES_PER_THREAD := 4
+## See tapered_bounds(): the last lane's share, in parts (lane k has TAPER_TOP + lanes - k).
+const TAPER_TOP := 2
 
 ## Threads a stage may use (1 runs everything on the calling thread).
 var threads := 1
@@ -53,13 +55,13 @@ func workers_for(count: int) -> int:
 ## Calls `job(lane, from, to)` once per lane, covering 0..count without overlap, and
 ## returns once every lane is done. Returns the number of lanes used.
 func run(job: Callable, count: int) -> int:
-	return _run(job, even_bounds(count, lanes_for(count)), false)
+	return _run(job, tapered_bounds(count, lanes_for(count)), false)
 
 
 ## As run(), but calls `job(worker, lane, from, to)`: `worker` (0 is the calling thread,
 ## below workers_for(count)) lets a stage keep one set of working state per thread.
 func run_by_worker(job: Callable, count: int) -> int:
-	return _run(job, even_bounds(count, lanes_for(count)), true)
+	return _run(job, tapered_bounds(count, lanes_for(count)), true)
 
 
 ## As run_by_worker(), over lanes the caller cut: lane k covers items bounds[k] ..
@@ -68,14 +70,21 @@ func run_spans(job: Callable, bounds: PackedInt32Array) -> int:
 	return _run(job, bounds, true)
 
 
-## Bounds of `lanes` lanes over `count` items, as even as whole items allow: lane k covers
-## count·k / lanes .. count·(k+1) / lanes.
-static func even_bounds(count: int, lanes: int) -> PackedInt32Array:
+## Bounds of `lanes` lanes over `count` items, each lane smaller than the one before (lane
+## k's share is TAPER_TOP + lanes - k parts, so the last is about a third of the first):
+## the threads take the big lanes first, and the small ones at the end even out who
+## finishes last (even lanes left one thread up to a whole lane behind the other).
+static func tapered_bounds(count: int, lanes: int) -> PackedInt32Array:
 	var bounds := PackedInt32Array()
 	bounds.resize(lanes + 1)
+	@warning_ignore("integer_division")  # parts: lanes·(lanes + 1) / 2 + TAPER_TOP·lanes
+	var parts: int = lanes * (lanes + 1) / 2 + TAPER_TOP * lanes
+	var before := 0
 	for k: int in lanes + 1:
 		@warning_ignore("integer_division")
-		bounds[k] = count * k / lanes
+		bounds[k] = count * before / parts
+		before += TAPER_TOP + lanes - k
+	bounds[lanes] = count
 	return bounds
 
 

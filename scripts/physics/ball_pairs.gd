@@ -14,7 +14,7 @@ extends RefCounted
 ## row wraps), so two stripes of the same parity never share a ball: the solve answers
 ## every even stripe side by side, then every odd one, each stripe's list in order on one
 ## thread. That order depends only on where the balls are, so any number of threads gives
-## the same result. The lanes are runs of whole stripes with about as many balls each.
+## the same result. The lanes are runs of whole stripes, the later ones with fewer balls.
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
@@ -125,8 +125,8 @@ func finish(b: BallStore) -> void:
 	_solve.finish(b)
 
 
-## Stripe starts in the sorted keys, and lanes of whole stripes with about n / lanes
-## balls each.
+## Stripe starts in the sorted keys, and lanes of whole stripes, each with fewer balls than
+## the one before (see BallLanes.tapered_bounds()).
 func _cut_stripes(rows: int, n: int, lanes: int) -> void:
 	var stripes: int = ceili(float(rows) / STRIPE_ROWS)
 	while stripe_pairs.size() < stripes:
@@ -137,11 +137,11 @@ func _cut_stripes(rows: int, n: int, lanes: int) -> void:
 		_stripe_first[s] = _keys.bsearch((s * STRIPE_ROWS * _cols) << SORT_SHIFT)
 	_stripe_first[stripes] = n
 	lanes = mini(lanes, stripes)
+	var balls_before: PackedInt32Array = BallLanes.tapered_bounds(n, lanes)
 	_lane_bounds.resize(lanes + 1)
 	_lane_bounds[0] = 0
 	for k: int in range(1, lanes):
-		@warning_ignore("integer_division")
-		_lane_bounds[k] = _stripe_first.bsearch(n * k / lanes)
+		_lane_bounds[k] = _stripe_first.bsearch(balls_before[k])
 	_lane_bounds[lanes] = stripes
 
 

@@ -17,7 +17,7 @@ func test_every_lane_of_many_hand_offs_runs_once_and_is_done_on_return() -> void
 		var helpers: int = rng.randi_range(1, 3)
 		var lanes: int = rng.randi_range(1, 12)
 		var items: int = lanes * 20
-		var bounds := BallLanes.even_bounds(items, lanes)
+		var bounds := BallLanes.tapered_bounds(items, lanes)
 		var seen := PackedInt32Array()
 		seen.resize(items)
 		seen.fill(0)
@@ -64,7 +64,7 @@ func test_hand_offs_to_watching_and_to_sleeping_workers_each_run_every_lane_once
 				OS.delay_usec(50)
 				for i: int in range(from, to):
 					seen[i] += 1,
-			BallLanes.even_bounds(60, 6),
+			BallLanes.tapered_bounds(60, 6),
 			2,
 			true
 		)
@@ -86,7 +86,7 @@ func test_a_job_without_worker_numbers_gets_lane_and_range() -> void:
 		func(_lane: int, from: int, to: int) -> void:
 			for i: int in range(from, to):
 				seen[i] += 1,
-		BallLanes.even_bounds(100, 5),
+		BallLanes.tapered_bounds(100, 5),
 		1,
 		false
 	)
@@ -102,3 +102,25 @@ func test_freeing_the_lanes_joins_their_workers() -> void:
 	assert_eq(crew.started, 1, "two threads: one worker besides the calling thread")
 	lanes = null
 	assert_eq(crew.started, 0, "the worker was stopped and joined with its lanes object")
+
+
+func test_tapered_lanes_cover_every_item_once_each_no_larger_than_the_one_before() -> void:
+	var problems: Array[String] = []
+	for lanes: int in range(1, 17):
+		for count: int in [0, 1, 7, 48, 100, 1000, 3001]:
+			var bounds: PackedInt32Array = BallLanes.tapered_bounds(count, lanes)
+			var what := "%d items in %d lanes: %s" % [count, lanes, bounds]
+			if bounds.size() != lanes + 1 or bounds[0] != 0 or bounds[lanes] != count:
+				problems.append(what + " (ends)")
+				continue
+			for k: int in lanes:
+				var size: int = bounds[k + 1] - bounds[k]
+				if size < 0 or (k > 0 and size > bounds[k] - bounds[k - 1] + 1):
+					problems.append(what + " (lane %d)" % k)
+	assert_eq(problems, [] as Array[String], "whole, ordered, tapering lanes")
+	var thousand: PackedInt32Array = BallLanes.tapered_bounds(1000, 8)
+	assert_gt(
+		thousand[1] - thousand[0],
+		3 * (thousand[8] - thousand[7]) - 10,
+		"last lane ~ a third of the first"
+	)
