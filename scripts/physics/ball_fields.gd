@@ -59,17 +59,31 @@ static var _members: Array[StringName] = _member_names()
 ## Copies each of the store `from`'s table arrays into the `_name` member of `to`, where
 ## `to` declares one (a stage that keeps the fields it reads in members of its own, as an
 ## indexed member read is cheaper than a named one). The arrays are shared, not copied:
-## a lane writes the store's own buffers (see BallStore.own_buffers()).
+## a lane writes the store's own buffers (see BallStore.own_buffers()). `rows`, when given,
+## are the rows `to` declares (rows_declared_by(to), kept by a stage that takes every step:
+## asking the object for each name is a lookup a row).
 ## In the editor (the play analysis) the names are made on each call instead: lanes on
 ## several threads call this, so it never fills the shared list itself.
-static func take(from: Object, to: Object) -> void:
-	var members: Array[StringName] = (
-		_members if _members.size() == TABLE.size() else _member_names()
-	)
+static func take(from: Object, to: Object, rows := PackedInt32Array()) -> void:
+	var members: Array[StringName] = _names()
+	if rows.is_empty():
+		rows = rows_declared_by(to)
+	for k: int in rows:
+		to.set(members[k], from.get(TABLE[k][NAME]))
+
+
+## The TABLE rows whose `_name` member `object` declares.
+static func rows_declared_by(object: Object) -> PackedInt32Array:
+	var members: Array[StringName] = _names()
+	var rows := PackedInt32Array()
 	for k: int in TABLE.size():
-		if members[k] in to:
-			var name: StringName = TABLE[k][NAME]
-			to.set(members[k], from.get(name))
+		if members[k] in object:
+			rows.append(k)
+	return rows
+
+
+static func _names() -> Array[StringName]:
+	return _members if _members.size() == TABLE.size() else _member_names()
 
 
 ## An empty array of a row's type.

@@ -61,6 +61,8 @@ var _cell_keys := PackedInt64Array()
 var _key_slot := PackedInt32Array()
 ## The store itself, for the rarer per-ball work that reads it by name (BallSleep.sleep_if_settled).
 var _store: BallStore
+## The BallFields.TABLE rows this class declares (see BallFields.take()).
+var _field_rows: PackedInt32Array = BallFields.rows_declared_by(self)
 ## 1 for each hit event kind (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT, BLADE_HIT) some signal
 ## handler listens to: the others are not queued (on a busy board most events are hits).
 var _hits_heard := PackedByteArray([1, 1, 1, 1])
@@ -211,7 +213,7 @@ func begin(
 
 func _take_balls(b: BallStore) -> void:
 	_store = b
-	BallFields.take(b, self)
+	BallFields.take(b, self, _field_rows)
 	_keyed = b.keys_valid
 
 

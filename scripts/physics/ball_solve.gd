@@ -36,6 +36,8 @@ var _support_static := PackedVector2Array()
 var _support_static2 := PackedVector2Array()
 var _support_ball := PackedVector2Array()
 var _sup_next := PackedVector2Array()
+## The BallFields.TABLE rows this class declares (see BallFields.take()).
+var _field_rows: PackedInt32Array = BallFields.rows_declared_by(self)
 var _restitution := 0.0
 var _threshold := 0.0
 var _wake_speed := 0.0
@@ -60,7 +62,7 @@ func begin(
 	b.touching.fill(0)
 	_sup_next = PackedVector2Array()
 	_sup_next.resize(n)
-	BallFields.take(b, self)
+	BallFields.take(b, self, _field_rows)
 	_restitution = restitution
 	_threshold = threshold
 	_wake_speed = wake_speed

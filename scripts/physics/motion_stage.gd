@@ -82,8 +82,9 @@ func run(
 	_begun.fill(0)
 	_lane_worker.resize(lanes)
 	_lane_spans.resize(lanes * SPANS)
-	if lanes > 1:
-		_balls.own_buffers()
+	# The lanes write the store's arrays side by side: each already has a buffer of its own
+	# (the solve's begin() saw to it this step, see BallStore.own_buffers(), and no array
+	# has been handed out since: the step's signals come after the motion).
 	_lanes.run_by_worker(_move_lane, n)
 	_gather(lanes)
 
