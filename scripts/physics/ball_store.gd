@@ -72,6 +72,9 @@ var touching := PackedByteArray()
 ## Slot of each id ever spawned (-1 once removed).
 var index_of := PackedInt32Array()
 var keys_valid := false
+## True when a copy of a field handed out of the world (copy()) may still share its buffer,
+## or the arrays were just remade (add(), compact()): the next own_buffers() then has work.
+var shared := true
 ## Set by wake_all(); BallWorld reads and clears it to hold off sleep for a while.
 var woken := false
 var max_radius := 0.0
@@ -115,6 +118,7 @@ func _set_column(name: StringName, values: Variant) -> void:
 
 
 func add(p: Vector2, v: Vector2, r: float) -> int:
+	shared = true
 	var id: int = index_of.size()
 	var slot: int = ids.size()
 	index_of.append(slot)
@@ -159,14 +163,23 @@ func kill(i: int) -> void:
 ## Gives every array the motion lanes write a buffer of its own. Packed arrays are
 ## copy-on-write: after get_positions() (a duplicate() shares the buffer until one side
 ## writes), the lanes' first writes would each copy the array at the same time and corrupt
-## it. One write here, on the world's thread, makes that copy once, before the lanes run.
+## it. One write here, on the world's thread, makes that copy once, before the lanes run;
+## a step with nothing handed out since the last one (`shared` false) has nothing to do.
 func own_buffers() -> void:
-	if ids.is_empty():
+	if ids.is_empty() or not shared:
 		return
 	for row: Array in _table:
 		var name: StringName = row[BallFields.NAME]
 		var values: Variant = column(name)
 		values[0] = values[0]
+	shared = false
+
+
+## A copy of `values` (one of this store's fields) for a caller outside the world. It
+## shares the buffer until one side writes, so the next own_buffers() must make it ours.
+func copy(values: Variant) -> Variant:
+	shared = true
+	return values.duplicate()
 
 
 ## Wakes every ball (gravity changed, a ball was moved or removed under a pile, ...).
@@ -180,6 +193,7 @@ func wake_all() -> void:
 func compact() -> void:
 	if alive.count(0) == 0:
 		return
+	shared = true
 	var first_gap: int = alive.find(0)
 	# The slots that stay, from the first gap on (the ones before it stay where they are).
 	var kept := PackedInt32Array()

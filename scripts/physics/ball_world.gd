@@ -240,19 +240,19 @@ func get_ball_rest_time(id: int) -> float:
 ## Positions of all balls, dense, in the same order as get_radii() and get_ids() (copies:
 ## packed arrays are shared by reference, and the world's own must not change under it).
 func get_positions() -> PackedVector2Array:
-	return _balls.pos.duplicate()
+	return _balls.copy(_balls.pos)
 
 
 func get_velocities() -> PackedVector2Array:
-	return _balls.vel.duplicate()
+	return _balls.copy(_balls.vel)
 
 
 func get_radii() -> PackedFloat32Array:
-	return _balls.radius.duplicate()
+	return _balls.copy(_balls.radius)
 
 
 func get_ids() -> PackedInt32Array:
-	return _balls.ids.duplicate()
+	return _balls.copy(_balls.ids)
 
 
 ## Turns path recording on or off (see take_step_paths()). Off by default: it costs memory
