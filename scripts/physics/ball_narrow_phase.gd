@@ -84,26 +84,27 @@ func _touch_walls() -> void:
 		var best := -1
 		var found := 0
 		var best_depth := 0.0
+		var best_s := 0.0
+		var best_q := Vector2.ZERO
 		for k: int in range(k0, k1):
 			var a: Vector2 = _wall_item_a[k]
 			var ab: Vector2 = _wall_item_ab[k]
-			var q: Vector2 = a + ab * clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
-			var lim: float = _wall_item_rad[k] + _r
+			var s: float = clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
+			var q: Vector2 = a + ab * s
+			var reach: float = _wall_item_rad[k] + _r
 			var d2: float = _p.distance_squared_to(q)
-			if d2 < lim * lim:
+			if d2 < reach * reach:
 				found += 1
-				var depth: float = lim - sqrt(d2)
+				var depth: float = reach - sqrt(d2)
 				if best < 0 or depth > best_depth:
 					best = k
 					best_depth = depth
+					best_s = s
+					best_q = q
 		if best < 0:
 			return
-		# The deepest contact again, where on the wall it is and how far from the ball.
-		var best_a: Vector2 = _wall_item_a[best]
-		var best_ab: Vector2 = _wall_item_ab[best]
-		var best_s: float = clampf((_p - best_a).dot(best_ab) * _wall_item_inv[best], 0.0, 1.0)
-		var best_q: Vector2 = best_a + best_ab * best_s
-		var best_lim: float = _wall_item_rad[best] + _r
+		# The deepest contact: how far from the ball, and which way it pushes.
+		var lim: float = _wall_item_rad[best] + _r
 		var wall: int = _wall_items[best]
 		var d: Vector2 = _p - best_q
 		var dist2: float = d.length_squared()
@@ -113,27 +114,18 @@ func _touch_walls() -> void:
 		elif _wall_inv_len2[wall] > 0.0:
 			nrm = Vector2(_wall_ab[wall].y, -_wall_ab[wall].x).normalized()
 		var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
-		_p = best_q + nrm * best_lim
+		_p = best_q + nrm * lim
 		var id: int = (wall << ContactId.KIND_BITS) | ContactId.KIND_WALL
 		var vn: float = _v.dot(nrm)
 		var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
 		var gn_dt: float = _gravity.dot(nrm) * _dt
-		if (
-			vn >= 0.0
-			or (on_cap and _caps_glance)
-			or (not held and ContactRule.bounces(vn, gn_dt, _threshold))
-		):
-			var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
-			respond(id, best_q, d, nrm, best_lim, surface, wall)
-		else:
+		var slides: bool = vn < 0.0 and not (on_cap and _caps_glance)
+		if slides and (held or not ContactRule.bounces(vn, gn_dt, _threshold)):
 			var vt: Vector2 = _v - nrm * vn
-			if on_cap and best_lim > EPS:
-				var t2: float = vt.length_squared()
-				if t2 > EPS:
-					var c: float = maxf(
-						minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * (_h / best_lim)
-					)
-					vt *= sqrt((t2 + c * c) / t2)
+			var t2: float = vt.length_squared()
+			if on_cap and lim > EPS and t2 > EPS:
+				var c: float = maxf(minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * (_h / lim))
+				vt *= sqrt((t2 + c * c) / t2)
 			_v = vt
 			# _note_contact(), written out.
 			if _cur_a == ContactId.NONE or _cur_a == id:
@@ -142,6 +134,9 @@ func _touch_walls() -> void:
 			else:
 				_cur_b = id
 				_n_b = nrm
+		elif vn < 0.0:  # (a ball moving away gets no answer: respond() returns at once)
+			var surface: int = Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
+			respond(id, best_q, d, nrm, lim, surface, wall)
 		if found == 1:
 			return
 
