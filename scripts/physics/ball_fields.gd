@@ -46,7 +46,7 @@ const TABLE: Array[Array] = [
 	# SCRATCH: rebuilt by each step.
 	[&"push", Part.SCRATCH, TYPE_PACKED_VECTOR2_ARRAY, Vector2.ZERO],
 	[&"cell_keys", Part.SCRATCH, TYPE_PACKED_INT64_ARRAY, 0],
-	[&"key_slot", Part.SCRATCH, TYPE_PACKED_INT32_ARRAY, 0],
+	[&"key_cell", Part.SCRATCH, TYPE_PACKED_INT32_ARRAY, 0],
 	[&"touching", Part.SCRATCH, TYPE_PACKED_BYTE_ARRAY, 0],
 ]
 

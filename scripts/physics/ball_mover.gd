@@ -32,9 +32,12 @@ const MAX_SUBSTEPS := 1024
 ##   passed over;
 ## - a ball touching nothing now or last step keeps its contact slots as they are (that
 ##   saves writes for most of a flowing board);
-## - the broad phase's key for next step (see BallStore.cell_keys) is written unless the
-##   keys are stale anyway (no broad phase ran: it bins every ball again before it reads
-##   them).
+## - the broad phase's key for next step (see BallStore.cell_keys) is rewritten only when
+##   the ball left its cell (found by its old key in BallStore.sorted_keys), and not at all
+##   when the keys are stale anyway (no broad phase ran: it bins every ball again before it
+##   reads them). The keys lie in cell order, so every lane's balls share cache lines in
+##   them, and a write there stalls the other core (about 50 µs a step of S1 on two
+##   threads when every key was written).
 func move_range(from: int, to: int) -> void:
 	for i: int in range(from, to):
 		if _asleep[i] != 0:
@@ -102,13 +105,11 @@ func move_range(from: int, to: int) -> void:
 			if cell_stale:
 				at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 				c = at.y * _cols + at.x
-			# Written only when it changed (the ball left its cell): the keys lie in cell
-			# order, so every lane's balls share cache lines in them, and a write there stalls
-			# the other core (about 50 µs a step of S1 on two threads when always written).
-			var key: int = (c << BallPairs.SORT_SHIFT) | i
-			var slot: int = _key_slot[i]
-			if _cell_keys[slot] != key:
-				_cell_keys[slot] = key
+			# Only when the ball left its cell (see the list above).
+			if _key_cell[i] != c:
+				var slot: int = _sorted_keys.bsearch((_key_cell[i] << BallPairs.SORT_SHIFT) | i)
+				_cell_keys[slot] = (c << BallPairs.SORT_SHIFT) | i
+				_key_cell[i] = c
 		if _gone:
 			_alive[i] = 0
 		elif _has_sensors or _v.length_squared() < _rest_speed2:

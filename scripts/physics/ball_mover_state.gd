@@ -58,7 +58,9 @@ var _drain_time := PackedFloat32Array()
 var _goal_mask := PackedInt32Array()
 var _zone_mask := PackedInt32Array()
 var _cell_keys := PackedInt64Array()
-var _key_slot := PackedInt32Array()
+var _key_cell := PackedInt32Array()
+## This step's sorted keys (BallStore.sorted_keys): read only.
+var _sorted_keys := PackedInt64Array()
 ## The store itself, for the rarer per-ball work that reads it by name (BallSleep.sleep_if_settled).
 var _store: BallStore
 ## The BallFields.TABLE rows this class declares (see BallFields.take()).
@@ -215,6 +217,7 @@ func _take_balls(b: BallStore) -> void:
 	_store = b
 	BallFields.take(b, self, _field_rows)
 	_keyed = b.keys_valid
+	_sorted_keys = b.sorted_keys
 
 
 func _take_geometry(g: StaticGeometry) -> void:

@@ -45,7 +45,7 @@ var _solve := BallSolve.new()
 var _keys := PackedInt64Array()
 var _pos := PackedVector2Array()
 var _rad := PackedFloat32Array()
-var _slot := PackedInt32Array()
+var _key_cell := PackedInt32Array()
 var _origin := Vector2.ZERO
 var _inv_cell := 1.0
 var _cols := 1
@@ -90,14 +90,15 @@ func find(b: BallStore, g: StaticGeometry, lanes: BallLanes, solve_even: bool) -
 	if not b.keys_valid:
 		b.own_buffers()
 		_keys = b.cell_keys
+		_key_cell = b.key_cell
 		lanes.run(_bin_range, n)
 		b.keys_valid = true
 	_keys = b.cell_keys.duplicate()
 	_keys.append(SORT_SENTINEL)
 	_keys.sort()
-	# Next step's keys start in this order; the lanes note where each ball's key is.
+	# Next step's keys start in this order (the motion stage finds a ball's in sorted_keys).
 	b.cell_keys = _keys.slice(0, n)
-	_slot = b.key_slot
+	b.sorted_keys = _keys
 	_cut_stripes(g.rows, n, lanes.lanes_for(n))
 	_solve_even = solve_even
 	_lane_pair_counts.resize(2 * (_lane_bounds.size() - 1))
@@ -170,19 +171,20 @@ func _solve_stripes(_worker: int, _lane: int, from: int, to: int) -> void:
 
 func _bin_range(_lane: int, from: int, to: int) -> void:
 	var keys: PackedInt64Array = _keys
+	var key_cell: PackedInt32Array = _key_cell
 	var pos: PackedVector2Array = _pos
 	for i: int in range(from, to):
 		var ci: Vector2i = Vector2i((pos[i] - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-		keys[i] = ((ci.y * _cols + ci.x) << SORT_SHIFT) | i
+		var cell: int = ci.y * _cols + ci.x
+		keys[i] = (cell << SORT_SHIFT) | i
+		key_cell[i] = cell
 
 
 ## Lists in `out` every touching pair whose first ball holds sorted key from..to - 1, from
-## its start on, growing it when full; returns the entries used (two per pair). Notes each
-## of these balls' place in the sorted keys in key_slot.
+## its start on, growing it when full; returns the entries used (two per pair).
 func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
 	var used := 0
 	var room: int = out.size()
-	var slot: PackedInt32Array = _slot
 	var keys: PackedInt64Array = _keys
 	var pos: PackedVector2Array = _pos
 	var rad: PackedFloat32Array = _rad
@@ -199,7 +201,6 @@ func _find_in_range(out: PackedInt32Array, from: int, to: int) -> int:
 	# is known by two key reads and costs nothing more.
 	for k: int in range(from, to):
 		var key: int = keys[k]
-		slot[key & mask] = k
 		var cell_key: int = key & cell_bits
 		var end: int = cell_key + next_off
 		var first_below: int = cell_key + below_off

@@ -55,15 +55,15 @@ var sleep_ball_normal := PackedVector2Array()
 ## Extra displacement for this step from ball-ball separation (swept with the motion).
 var push := PackedVector2Array()
 ## The broad-phase keys (cell << BallPairs.SORT_SHIFT | slot), in the order the broad
-## phase sorted them last step: ball i's key is at key_slot[i], and the motion stage writes
-## it there where the ball ended. So next step's sort starts from an almost sorted array (a
+## phase sorted them last step (sorted_keys): the motion stage rewrites a ball's key there
+## when the ball changes cell. So next step's sort starts from an almost sorted array (a
 ## few balls change cell), which the native sort takes in a tenth of the time of balls in
 ## slot order. `keys_valid` turns false whenever a ball is placed, added or removed, the
 ## grid changes or a step runs without ball contacts; the broad phase then bins every ball
 ## again, in slot order.
 var cell_keys := PackedInt64Array()
-## Where each ball's key is in cell_keys (its place in last step's sorted keys).
-var key_slot := PackedInt32Array()
+## The cell in each ball's key in cell_keys.
+var key_cell := PackedInt32Array()
 ## 1 for a ball that touched another ball in this step's ball-ball pass: a sleeper held up
 ## by balls wakes when it touches none, so it never hangs where a ball was knocked away.
 var touching := PackedByteArray()
@@ -72,6 +72,12 @@ var touching := PackedByteArray()
 ## Slot of each id ever spawned (-1 once removed).
 var index_of := PackedInt32Array()
 var keys_valid := false
+## This step's keys as the broad phase sorted them (and a sentinel), read only after it:
+## cell_keys in the same order before the motion stage rewrote any. A moved ball's key is
+## found there by binary search (its cell is key_cell), so the broad phase never writes
+## where each ball's key went: those writes, one per ball in the order of the keys, made
+## two threads' lanes share cache lines.
+var sorted_keys := PackedInt64Array()
 ## True when a copy of a field handed out of the world (copy()) may still share its buffer,
 ## or the arrays were just remade (add(), compact()): the next own_buffers() then has work.
 var shared := true

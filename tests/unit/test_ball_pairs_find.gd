@@ -71,7 +71,7 @@ func test_the_broad_phase_lists_exactly_the_touching_pairs() -> void:
 
 
 func test_after_steps_the_keys_kept_in_sorted_order_still_give_exactly_the_touching_pairs() -> void:
-	# After a step the keys wait in last step's sorted order (BallStore.key_slot): each moved
+	# After a step the keys wait in last step's sorted order (BallStore.cell_keys): each moved
 	# ball's is rewritten in place, and a sleeper's stays where it is. While a heap settles,
 	# some balls sleep and others move; the broad phase must find the same pairs as brute
 	# force at every check.
