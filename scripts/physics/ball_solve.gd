@@ -120,15 +120,26 @@ func solve_pairs(pairs: PackedInt32Array, used: int) -> void:
 		var s: Vector2 = (
 			nrm * (maxf(_radius[i] + _radius[j] - dist - CONTACT_SLOP, 0.0) * PUSH_SHARE)
 		)
-		if fixed_j and not fixed_i:
-			# The support cancels j's own motion into it: only i's speed counts.
-			_bounce_off_held(i, vi, -nrm)
-			_push[i] -= s * 2.0
-			_sup_next[i] = -nrm
-		elif fixed_i and not fixed_j:
-			_bounce_off_held(j, vj, nrm)
-			_push[j] += s * 2.0
-			_sup_next[j] = nrm
+		if fixed_i != fixed_j:
+			# One ball is held from behind: the other takes the whole response, along `away`
+			# (from the held ball to it); the support cancels the held ball's own motion into
+			# it, so only the free ball's speed counts. Written out, not called: a pile has
+			# hundreds of these pairs a step.
+			var free: int = i if fixed_j else j
+			var away: Vector2 = -nrm if fixed_j else nrm
+			var v: Vector2 = vi if fixed_j else vj
+			var vn_free: float = v.dot(away)
+			if vn_free < 0.0:
+				var gn: float = _gravity_dt.dot(away)
+				var e_free: float = (
+					_restitution if ContactRule.bounces(vn_free, gn, _threshold) else 0.0
+				)
+				_vel[free] = v - away * ((1.0 + e_free) * vn_free)
+			if fixed_j:
+				_push[i] -= s * 2.0
+			else:
+				_push[j] += s * 2.0
+			_sup_next[free] = away
 		elif not (sleep_i or sleep_j):
 			var vn: float = (vj - vi).dot(nrm)
 			if vn < 0.0:
@@ -139,14 +150,3 @@ func solve_pairs(pairs: PackedInt32Array, used: int) -> void:
 				_vel[j] = vj + imp
 			_push[i] -= s
 			_push[j] += s
-
-
-## Ball `i` (velocity `v`) against a ball that does not give way, along `nrm` (pointing
-## from the held ball to `i`).
-func _bounce_off_held(i: int, v: Vector2, nrm: Vector2) -> void:
-	var vn: float = v.dot(nrm)
-	if vn >= 0.0:
-		return
-	var bounces: bool = ContactRule.bounces(vn, _gravity_dt.dot(nrm), _threshold)
-	var e: float = _restitution if bounces else 0.0
-	_vel[i] = v - nrm * ((1.0 + e) * vn)
