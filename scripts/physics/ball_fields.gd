@@ -69,7 +69,8 @@ static func take(from: Object, to: Object, rows := PackedInt32Array()) -> void:
 	if rows.is_empty():
 		rows = rows_declared_by(to)
 	for k: int in rows:
-		to.set(members[k], from.get(TABLE[k][NAME]))
+		var name: StringName = TABLE[k][NAME]
+		to.set(members[k], from.get(name))
 
 
 ## The TABLE rows whose `_name` member `object` declares.

@@ -78,8 +78,8 @@ var keys_valid := false
 ## where each ball's key went: those writes, one per ball in the order of the keys, made
 ## two threads' lanes share cache lines.
 var sorted_keys := PackedInt64Array()
-## True when a copy of a field handed out of the world (copy()) may still share its buffer,
-## or the arrays were just remade (add(), compact()): the next own_buffers() then has work.
+## True when a copy of a field handed out of the world (handed_out()) may still share its
+## buffer, or the arrays were just remade (add(), compact()): own_buffers() then has work.
 var shared := true
 ## Set by wake_all(); BallWorld reads and clears it to hold off sleep for a while.
 var woken := false
@@ -181,11 +181,12 @@ func own_buffers() -> void:
 	shared = false
 
 
-## A copy of `values` (one of this store's fields) for a caller outside the world. It
-## shares the buffer until one side writes, so the next own_buffers() must make it ours.
-func copy(values: Variant) -> Variant:
+## Returns `copy`, a duplicate() of one of this store's fields going out of the world
+## (BallWorld.get_positions() and the other getters), and notes it: it shares the buffer
+## until one side writes, so the next own_buffers() must make it ours again.
+func handed_out(copy: Variant) -> Variant:
 	shared = true
-	return values.duplicate()
+	return copy
 
 
 ## Wakes every ball (gravity changed, a ball was moved or removed under a pile, ...).
