@@ -105,17 +105,23 @@ func move_range(from: int, to: int) -> void:
 			if cell_stale:
 				at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 				c = at.y * _cols + at.x
-			# Only when the ball left its cell (see the list above).
 			if _key_cell[i] != c:
-				var slot: int = _sorted_keys.bsearch((_key_cell[i] << BallPairs.SORT_SHIFT) | i)
-				_cell_keys[slot] = (c << BallPairs.SORT_SHIFT) | i
-				_key_cell[i] = c
+				_rekey(i, c)
 		if _gone:
 			_alive[i] = 0
 		elif _has_sensors or _v.length_squared() < _rest_speed2:
 			_after_move(i)
 		else:
 			_rest[i] = 0.0
+
+
+## Ball `i` left its cell for cell `c`: its broad-phase key is rewritten where the broad
+## phase sorted it (found in BallStore.sorted_keys by the cell it was keyed with). Only
+## such balls are rekeyed: see move_range().
+func _rekey(i: int, c: int) -> void:
+	var slot: int = _sorted_keys.bsearch((_key_cell[i] << BallPairs.SORT_SHIFT) | i)
+	_cell_keys[slot] = (c << BallPairs.SORT_SHIFT) | i
+	_key_cell[i] = c
 
 
 ## Ball `i` after its move: its rest time or sleep (BallSleep.sleep_if_settled), then its sensor
