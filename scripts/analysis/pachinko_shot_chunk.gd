@@ -96,7 +96,7 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 		if hopeless_ok and step % HOPELESS_EVERY == 0:
 			_drop_hopeless()
 		if step % CHECK_EVERY == 0:
-			_drop_stuck(step - max_steps)
+			_ledger.drop_stuck(_world, step - max_steps)
 			if cancelled.is_valid() and cancelled.call():
 				_ledger.close()
 				return false
@@ -170,14 +170,6 @@ func _drop_hopeless() -> void:
 		if _in_field[id] != 0 and pos[k].y - vel[k].length_squared() / two_g > _hopeless_y:
 			_world.remove_ball(id)
 			_ledger.record(id, AnalysisTally.Outcome.DRAINED)
-
-
-# Balls fired before `born_before` have flown too long: they count as stuck.
-func _drop_stuck(born_before: int) -> void:
-	for id: int in _world.get_ids():
-		if _ledger.born(id) < born_before:
-			_world.remove_ball(id)
-			_ledger.record(id, AnalysisTally.Outcome.STUCK)
 
 
 func _on_pocketed(ball_id: int, pocket_id: int) -> void:

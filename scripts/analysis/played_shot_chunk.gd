@@ -72,7 +72,8 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 			_upkeep_after(ran * dt, pace)
 		if step >= next_check:
 			next_check += PachinkoShotChunk.CHECK_EVERY
-			_drop_stuck(step - max_steps)
+			for id: int in _ledger.drop_stuck(_world, step - max_steps):
+				_upkeep.forget(id)
 			if cancelled.is_valid() and cancelled.call():
 				_ledger.close()
 				return false
@@ -113,15 +114,6 @@ func _upkeep_after(seconds: float, rng: RandomNumberGenerator) -> void:
 	if not jammed.is_empty():
 		in_play = Array(_world.get_ids())
 	_upkeep.nudge_resting(_world, in_play, seconds, rng)
-
-
-# Balls fired before `born_before` have flown too long: they count as stuck.
-func _drop_stuck(born_before: int) -> void:
-	for id: int in _world.get_ids():
-		if _ledger.born(id) < born_before:
-			_world.remove_ball(id)
-			_upkeep.forget(id)
-			_ledger.record(id, AnalysisTally.Outcome.STUCK)
 
 
 func _on_pocketed(ball_id: int, pocket_id: int) -> void:

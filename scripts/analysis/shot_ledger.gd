@@ -51,16 +51,23 @@ func fired(id: int, band: int, step: int) -> void:
 	_born[id] = step
 
 
-## The step ball `id` was fired on.
-func born(id: int) -> int:
-	return _born[id]
-
-
 ## Ball `id`'s shot ended as `outcome` (AnalysisTally.Outcome); a POCKETED one in pocket
 ## `pocket`, which pays its payout.
 func record(id: int, outcome: AnalysisTally.Outcome, pocket := -1) -> void:
 	var payout := _payouts[pocket] if pocket >= 0 and pocket < _payouts.size() else 0
 	tally.record(_band_of[id], outcome, pocket, payout)
+
+
+## The balls of `world` fired before step `born_before` have flown too long: each is
+## removed and counted STUCK. Returns their ids.
+func drop_stuck(world: BallWorld, born_before: int) -> PackedInt32Array:
+	var stuck := PackedInt32Array()
+	for id: int in world.get_ids():
+		if _born[id] < born_before:
+			world.remove_ball(id)
+			record(id, AnalysisTally.Outcome.STUCK)
+			stuck.append(id)
+	return stuck
 
 
 ## One density sample for the cell each of `positions` is in.
