@@ -167,11 +167,19 @@ func _thread_extras() -> void:
 		return
 	_clock.begin()
 	var s1: Dictionary = Scenes.make("S1", "flow", 24.0, 1000, 240.0)
-	_thread_scaling = Ours.thread_scaling(s1, THREAD_SCALING_STEPS, TIMING_ROUNDS)
+	_thread_scaling = Ours.thread_scaling(
+		s1, THREAD_SCALING_STEPS, TIMING_ROUNDS, _floors.get("S1") as FloorKernel
+	)
 	print(
 		(
-			"  thread scaling (S1): %.2fx; the machine gave a second thread %.2fx"
-			% [_thread_scaling["scaling"], _thread_scaling["machine_scaling"]]
+			(
+				"  thread scaling (S1): %.2fx; a second thread gave the call-free loop %.2fx,"
+				% [_thread_scaling["scaling"], _thread_scaling["machine_scaling"]]
+			)
+			+ (
+				" the floor %.2fx, two one-thread worlds %.2fx"
+				% [_thread_scaling["floor_scaling"], _thread_scaling["two_worlds_scaling"]]
+			)
 		)
 	)
 	_clock.end("ours thread scaling")
@@ -356,6 +364,8 @@ func _finish() -> void:
 		"thread_scaling": _thread_scaling.get("scaling", 0.0),
 		"thread_scaling_runs": _thread_scaling,
 		"machine_scaling": _thread_scaling.get("machine_scaling", 0.0),
+		"floor_scaling": _thread_scaling.get("floor_scaling", 0.0),
+		"two_worlds_scaling": _thread_scaling.get("two_worlds_scaling", 0.0),
 		"threads_identical": _threads_identical,
 		"thread_hashes": _thread_hashes,
 		"scale": _scale,

@@ -92,8 +92,14 @@ static func _print_summary(out: Dictionary) -> void:
 	)
 	print(
 		(
-			"the machine in those rounds: a second thread gave a call-free loop %.2fx"
-			% out.get("machine_scaling", 0.0)
+			(
+				"the machine in those rounds, what a second thread gave: a call-free loop %.2fx,"
+				% out.get("machine_scaling", 0.0)
+			)
+			+ (
+				" the S1 floor %.2fx, two one-thread S1 worlds %.2fx"
+				% [out.get("floor_scaling", 0.0), out.get("two_worlds_scaling", 0.0)]
+			)
 		)
 	)
 	print("scale: %s" % JSON.stringify(out["scale"]))

@@ -13,6 +13,7 @@ extends RefCounted
 const Ours := preload("res://tests/bench/physics/ours_runner.gd")
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
+const FloorKernel := preload("res://tests/bench/physics/floor_kernel.gd")
 
 const SNAPSHOT_EVERY := 4
 ## Kernel steps timed: enough for about half a second of CPU on the 10 ms clock.
@@ -53,6 +54,25 @@ func prepare(steps: int) -> void:
 func time_round() -> Dictionary:
 	_pairs_usec = 0
 	return _time()
+
+
+## A kernel reading this one's recorded states and bins (read only, shared), with its own
+## timing: two of them can run at once on two threads.
+func twin() -> FloorKernel:
+	var other := FloorKernel.new(_scene)
+	other._pos = _pos
+	other._vel = _vel
+	other._origin = _origin
+	other._inv = _inv
+	other._cols = _cols
+	other._rows = _rows
+	other._pin_start = _pin_start
+	other._pin_pos = _pin_pos
+	other._wall_start = _wall_start
+	other._wall_a = _wall_a
+	other._wall_ab = _wall_ab
+	other._wall_inv = _wall_inv
+	return other
 
 
 func _record(steps: int) -> void:

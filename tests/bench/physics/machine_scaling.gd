@@ -1,29 +1,37 @@
 extends RefCounted
-## What this machine gives a second GDScript thread right now: a loop free of calls and of
-## shared writes (float math over a packed array each thread only reads) timed on one
-## thread, then on two threads at once with the same work each; the scaling is
-## 2 × one / both (2.0: the second core is as fast as the first). On the shared machines this
-## project is measured on, it moved between about 1.0 and 2.0 from one ten minutes to the
-## next, so S1's thread_scaling is read against it, measured in the same rounds.
+## What this machine gives a second GDScript thread right now: a piece of work timed on one
+## thread, then two such pieces at once on two threads, sharing nothing; the scaling is
+## 2 × one / both (2.0: the second core is as fast as the first). round_scaling() times a
+## loop free of calls and of shared writes (float math over a packed array each thread only
+## reads); pair_scaling() any two pieces, such as two copies of the GDScript floor or two
+## whole worlds (see OursRunner.thread_scaling). On the shared machines this project is
+## measured on, it moved between about 1.0 and 2.0 from one ten minutes to the next, so S1's
+## thread_scaling is read against these, measured in the same rounds.
 
 ## Loop iterations per thread and run: some 10-20 ms.
 const WORK := 400000
 
 
-## One round: returns 2 × (one thread alone) / (two threads at once).
+## One round of the call-free loop: returns 2 × (one thread alone) / (two threads at once).
 static func round_scaling() -> float:
 	var first := Loop.new()
 	var second := Loop.new()
+	return pair_scaling(first.run, first.run, second.run)
+
+
+## Times `alone` on this thread, then `first` here and `second` on a new thread at once
+## (each the same work as `alone`, on data of its own); returns 2 × alone / both.
+static func pair_scaling(alone: Callable, first: Callable, second: Callable) -> float:
 	var t0: int = Time.get_ticks_usec()
-	first.run()
-	var alone: int = Time.get_ticks_usec() - t0
+	alone.call()
+	var one: int = Time.get_ticks_usec() - t0
 	var thread := Thread.new()
 	t0 = Time.get_ticks_usec()
-	thread.start(second.run)
-	first.run()
+	thread.start(second)
+	first.call()
 	thread.wait_to_finish()
 	var both: int = Time.get_ticks_usec() - t0
-	return 2.0 * alone / maxf(both, 1.0)
+	return 2.0 * one / maxf(both, 1.0)
 
 
 ## The loop each thread runs (on its own values: no line is written by both threads).

@@ -9,6 +9,7 @@ const BladeCheck := preload("res://tests/bench/physics/blade_check.gd")
 
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const MachineScaling := preload("res://tests/bench/physics/machine_scaling.gd")
+const FloorKernel := preload("res://tests/bench/physics/floor_kernel.gd")
 const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
 
 ## Steps excluded from timing at the start of a run.
@@ -180,27 +181,45 @@ static func harness_rules(
 ## S1's wall-clock speed on every core over its speed on one thread, from alternating
 ## runs in the same process (the medians of `rounds` each): the parallel stages' gain.
 ## Each round also times what the machine gives a second thread then (MachineScaling):
-## "machine_scaling", and "scaling_of_machine" = scaling / machine_scaling.
-static func thread_scaling(scene: Dictionary, steps: int, rounds: int) -> Dictionary:
+## "machine_scaling" (a call-free loop), "floor_scaling" (two copies of the scene's
+## GDScript floor, `floor`, at once; skipped when null) and "two_worlds_scaling" (two
+## one-thread worlds of the scene at once, sharing nothing: the most threads could give
+## ours, with no stage boundary and no shared data); and "scaling_of_machine" =
+## scaling / machine_scaling, "scaling_of_two_worlds" = scaling / two_worlds_scaling.
+static func thread_scaling(
+	scene: Dictionary, steps: int, rounds: int, floor_kernel: FloorKernel = null
+) -> Dictionary:
 	var one: Array = []
 	var all: Array = []
 	var machine: Array = []
+	var floors: Array = []
+	var worlds: Array = []
+	var one_world: Callable = func() -> void: run(scene, steps + WARMUP, false, true, 1)
 	for _round: int in rounds:
 		machine.append(MachineScaling.round_scaling())
 		one.append(run(scene, steps + WARMUP, false, true, 1)["ball_steps_per_s"])
 		all.append(run(scene, steps + WARMUP, false, true, 0)["ball_steps_per_s"])
 		machine.append(MachineScaling.round_scaling())
-	var one_median: float = TimingRounds.median(one)
-	var all_median: float = TimingRounds.median(all)
-	var scaling: float = all_median / maxf(one_median, 1e-9)
+		worlds.append(MachineScaling.pair_scaling(one_world, one_world, one_world))
+		if floor_kernel != null:
+			var twin: FloorKernel = floor_kernel.twin()
+			var first: Callable = floor_kernel.time_round
+			floors.append(MachineScaling.pair_scaling(first, first, twin.time_round))
+	var scaling: float = TimingRounds.median(all) / maxf(TimingRounds.median(one), 1e-9)
 	var machine_median: float = TimingRounds.median(machine)
+	var worlds_median: float = TimingRounds.median(worlds)
 	return {
-		"one_thread_steps_per_s": one_median,
-		"all_threads_steps_per_s": all_median,
+		"one_thread_steps_per_s": TimingRounds.median(one),
+		"all_threads_steps_per_s": TimingRounds.median(all),
 		"scaling": scaling,
 		"machine_scaling": machine_median,
 		"machine_rounds": machine,
+		"floor_scaling": TimingRounds.median(floors),
+		"floor_scaling_rounds": floors,
+		"two_worlds_scaling": worlds_median,
+		"two_worlds_rounds": worlds,
 		"scaling_of_machine": scaling / maxf(machine_median, 1e-9),
+		"scaling_of_two_worlds": scaling / maxf(worlds_median, 1e-9),
 	}
 
 
