@@ -73,18 +73,19 @@ func move_range(from: int, to: int) -> void:
 				_touch_ring()
 			at = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
 			c = at.y * _cols + at.x
-			var k0: int = _pin_start[c] if _zoned else 0
-			var k1: int = _pin_start[c + 1] if _zoned else _pin_items.size()
 			var moved := false
-			for k: int in range(k0, k1):
-				var d: Vector2 = _p - _pin_item_pos[k]
-				var lim: float = _pin_item_rad[k] + _r
-				if d.length_squared() < lim * lim and not _gone:
-					_touch_pin(k, d, lim)
-					moved = true
+			if _has_pins:
+				var k0: int = _pin_start[c] if _zoned else 0
+				var k1: int = _pin_start[c + 1] if _zoned else _pin_items.size()
+				for k: int in range(k0, k1):
+					var d: Vector2 = _p - _pin_item_pos[k]
+					var lim: float = _pin_item_rad[k] + _r
+					if d.length_squared() < lim * lim and not _gone:
+						_touch_pin(k, d, lim)
+						moved = true
 			cell_stale = moved
 			if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
-				_touch_walls()
+				_touch_walls(c if not moved else -1)
 				cell_stale = true
 			if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
 				cell_stale = true

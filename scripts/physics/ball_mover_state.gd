@@ -72,6 +72,8 @@ var _hits_heard := PackedByteArray([1, 1, 1, 1])
 var _keyed := true
 var _g: StaticGeometry
 var _zoned := true
+## False on a board without pins (a maze): the mover then skips the pin test outright.
+var _has_pins := true
 var _pin_start := PackedInt32Array()
 var _pin_items := PackedInt32Array()
 var _pin_item_pos := PackedVector2Array()
@@ -230,6 +232,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_pin_captures = g.pin_captures
 	_pin_tag = g.pin_tag
 	_pin_min_speed_x = g.pin_min_speed_x
+	_has_pins = not _pin_items.is_empty()
 	_has_walls = not g.wall_a.is_empty()
 	_wall_start = g.wall_start
 	_wall_items = g.wall_items

@@ -76,10 +76,13 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 ## search and the common answer are written out here, not called: most moving balls of a
 ## maze touch a wall, and roll along it (a held contact, or one too slow to bounce: the
 ## slide of respond(), line for line). A bounce or a glancing cap goes to respond().
-func _touch_walls() -> void:
-	var cell: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
-	var k0: int = _wall_start[cell.y * _cols + cell.x]
-	var k1: int = _wall_start[cell.y * _cols + cell.x + 1]
+## `cell` is the ball's cell when the caller knows it (-1 when a pin has just moved it).
+func _touch_walls(cell: int) -> void:
+	if cell < 0:
+		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)
+		cell = at.y * _cols + at.x
+	var k0: int = _wall_start[cell]
+	var k1: int = _wall_start[cell + 1]
 	for _pass: int in 3:
 		var best := -1
 		var found := 0
