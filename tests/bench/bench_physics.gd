@@ -167,9 +167,10 @@ func _thread_extras() -> void:
 		return
 	_clock.begin()
 	var s1: Dictionary = Scenes.make("S1", "flow", 24.0, 1000, 240.0)
-	_thread_scaling = Ours.thread_scaling(
-		s1, THREAD_SCALING_STEPS, TIMING_ROUNDS, _floors.get("S1") as FloorKernel
-	)
+	var floor_round := Callable()
+	if _floors.has("S1"):
+		floor_round = (_floors["S1"] as FloorKernel).time_round
+	_thread_scaling = Ours.thread_scaling(s1, THREAD_SCALING_STEPS, TIMING_ROUNDS, floor_round)
 	print(
 		(
 			(

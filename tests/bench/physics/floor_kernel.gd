@@ -13,7 +13,6 @@ extends RefCounted
 const Ours := preload("res://tests/bench/physics/ours_runner.gd")
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
-const FloorKernel := preload("res://tests/bench/physics/floor_kernel.gd")
 
 const SNAPSHOT_EVERY := 4
 ## Kernel steps timed: enough for about half a second of CPU on the 10 ms clock.
@@ -33,8 +32,6 @@ var _wall_start := PackedInt32Array()
 var _wall_a := PackedVector2Array()
 var _wall_ab := PackedVector2Array()
 var _wall_inv := PackedFloat32Array()
-## Wall-clock microseconds spent in the ball-pair part, for its share of the floor.
-var _pairs_usec := 0
 
 
 func _init(scene: Dictionary) -> void:
@@ -51,28 +48,9 @@ func prepare(steps: int) -> void:
 ## Times the kernel over the recorded states (about MIN_BALL_STEPS ball-steps). Returns
 ## {"floor_steps_per_s", "ns_per_ball_step", "overlaps_per_ball_step", "pairs_share"}
 ## (pairs_share: the share of the time the ball-pair part took).
+## It writes nothing of the kernel's: two threads may time one kernel at once.
 func time_round() -> Dictionary:
-	_pairs_usec = 0
 	return _time()
-
-
-## A kernel reading this one's recorded states and bins (read only, shared), with its own
-## timing: two of them can run at once on two threads.
-func twin() -> FloorKernel:
-	var other := FloorKernel.new(_scene)
-	other._pos = _pos
-	other._vel = _vel
-	other._origin = _origin
-	other._inv = _inv
-	other._cols = _cols
-	other._rows = _rows
-	other._pin_start = _pin_start
-	other._pin_pos = _pin_pos
-	other._wall_start = _wall_start
-	other._wall_a = _wall_a
-	other._wall_ab = _wall_ab
-	other._wall_inv = _wall_inv
-	return other
 
 
 func _record(steps: int) -> void:
@@ -148,11 +126,15 @@ func _time() -> Dictionary:
 	var n: int = _pos[0].size()
 	var rounds: int = maxi(1, ceili(float(MIN_BALL_STEPS) / (n * _pos.size())))
 	var overlaps := 0
+	# Wall-clock microseconds spent in the ball-pair part, for its share of the floor.
+	var pairs_usec := 0
 	var cpu0: int = CpuClock.usec()
 	var wall0: int = Time.get_ticks_usec()
 	for _r: int in rounds:
 		for s: int in _pos.size():
-			overlaps += _kernel_step(_pos[s].duplicate(), _vel[s].duplicate())
+			var step: Vector2i = _kernel_step(_pos[s].duplicate(), _vel[s].duplicate())
+			overlaps += step.x
+			pairs_usec += step.y
 	var cpu: float = maxf((CpuClock.usec() - cpu0) / 1e6, 1e-6)
 	var wall: int = maxi(Time.get_ticks_usec() - wall0, 1)
 	var ball_steps: int = rounds * _pos.size() * n
@@ -160,12 +142,13 @@ func _time() -> Dictionary:
 		"floor_steps_per_s": ball_steps / cpu,
 		"ns_per_ball_step": cpu * 1e9 / ball_steps,
 		"overlaps_per_ball_step": float(overlaps) / ball_steps,
-		"pairs_share": float(_pairs_usec) / wall,
+		"pairs_share": float(pairs_usec) / wall,
 	}
 
 
-## One step's least work over every ball; returns the overlaps it found (pins, walls, balls).
-func _kernel_step(pos: PackedVector2Array, vel: PackedVector2Array) -> int:
+## One step's least work over every ball; returns the overlaps it found (pins, walls, balls)
+## and the microseconds its ball-pair part took.
+func _kernel_step(pos: PackedVector2Array, vel: PackedVector2Array) -> Vector2i:
 	var dt: float = 1.0 / float(_scene["hz"])
 	var r: float = _scene["ball_r"]
 	var pin_lim2: float = (r + _scene["pin_r"]) ** 2
@@ -210,8 +193,7 @@ func _kernel_step(pos: PackedVector2Array, vel: PackedVector2Array) -> int:
 	keys.sort()
 	var t0: int = Time.get_ticks_usec()
 	found += _pairs(pos, keys, 4.0 * r * r)
-	_pairs_usec += Time.get_ticks_usec() - t0
-	return found
+	return Vector2i(found, Time.get_ticks_usec() - t0)
 
 
 ## Ball pairs closer than a diameter, over each ball's cell, the next and the three below.

@@ -9,7 +9,6 @@ const BladeCheck := preload("res://tests/bench/physics/blade_check.gd")
 
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const MachineScaling := preload("res://tests/bench/physics/machine_scaling.gd")
-const FloorKernel := preload("res://tests/bench/physics/floor_kernel.gd")
 const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
 
 ## Steps excluded from timing at the start of a run.
@@ -181,13 +180,14 @@ static func harness_rules(
 ## S1's wall-clock speed on every core over its speed on one thread, from alternating
 ## runs in the same process (the medians of `rounds` each): the parallel stages' gain.
 ## Each round also times what the machine gives a second thread then (MachineScaling):
-## "machine_scaling" (a call-free loop), "floor_scaling" (two copies of the scene's
-## GDScript floor, `floor`, at once; skipped when null) and "two_worlds_scaling" (two
-## one-thread worlds of the scene at once, sharing nothing: the most threads could give
-## ours, with no stage boundary and no shared data); and "scaling_of_machine" =
-## scaling / machine_scaling, "scaling_of_two_worlds" = scaling / two_worlds_scaling.
+## "machine_scaling" (a call-free loop), "floor_scaling" (`floor_round`, a round of the
+## scene's GDScript floor, FloorKernel.time_round, on two threads at once; skipped when
+## not given) and "two_worlds_scaling" (two one-thread worlds of the scene at once, sharing
+## nothing: the most threads could give ours, with no stage boundary and no shared data);
+## and "scaling_of_machine" = scaling / machine_scaling, "scaling_of_two_worlds" =
+## scaling / two_worlds_scaling.
 static func thread_scaling(
-	scene: Dictionary, steps: int, rounds: int, floor_kernel: FloorKernel = null
+	scene: Dictionary, steps: int, rounds: int, floor_round := Callable()
 ) -> Dictionary:
 	var one: Array = []
 	var all: Array = []
@@ -201,10 +201,8 @@ static func thread_scaling(
 		all.append(run(scene, steps + WARMUP, false, true, 0)["ball_steps_per_s"])
 		machine.append(MachineScaling.round_scaling())
 		worlds.append(MachineScaling.pair_scaling(one_world, one_world, one_world))
-		if floor_kernel != null:
-			var twin: FloorKernel = floor_kernel.twin()
-			var first: Callable = floor_kernel.time_round
-			floors.append(MachineScaling.pair_scaling(first, first, twin.time_round))
+		if floor_round.is_valid():
+			floors.append(MachineScaling.pair_scaling(floor_round, floor_round, floor_round))
 	var scaling: float = TimingRounds.median(all) / maxf(TimingRounds.median(one), 1e-9)
 	var machine_median: float = TimingRounds.median(machine)
 	var worlds_median: float = TimingRounds.median(worlds)
