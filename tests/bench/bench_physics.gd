@@ -171,18 +171,8 @@ func _thread_extras() -> void:
 	if _floors.has("S1"):
 		floor_round = (_floors["S1"] as FloorKernel).time_round
 	_thread_scaling = Ours.thread_scaling(s1, THREAD_SCALING_STEPS, TIMING_ROUNDS, floor_round)
-	print(
-		(
-			(
-				"  thread scaling (S1): %.2fx; a second thread gave the call-free loop %.2fx,"
-				% [_thread_scaling["scaling"], _thread_scaling["machine_scaling"]]
-			)
-			+ (
-				" the floor %.2fx, two one-thread worlds %.2fx"
-				% [_thread_scaling["floor_scaling"], _thread_scaling["two_worlds_scaling"]]
-			)
-		)
-	)
+	# The machine figures of the same rounds are printed with the table (BenchTable).
+	print("  thread scaling (S1): %.2fx" % _thread_scaling["scaling"])
 	_clock.end("ours thread scaling")
 
 

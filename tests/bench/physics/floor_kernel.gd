@@ -48,9 +48,30 @@ func prepare(steps: int) -> void:
 ## Times the kernel over the recorded states (about MIN_BALL_STEPS ball-steps). Returns
 ## {"floor_steps_per_s", "ns_per_ball_step", "overlaps_per_ball_step", "pairs_share"}
 ## (pairs_share: the share of the time the ball-pair part took).
-## It writes nothing of the kernel's: two threads may time one kernel at once.
+## It writes nothing of the kernel's: two threads may run one kernel at once (its rates are
+## then the process's CPU over both; MachineScaling.pair_scaling times such a pair by wall).
 func time_round() -> Dictionary:
-	return _time()
+	var n: int = _pos[0].size()
+	var rounds: int = maxi(1, ceili(float(MIN_BALL_STEPS) / (n * _pos.size())))
+	var overlaps := 0
+	# Wall-clock microseconds spent in the ball-pair part, for its share of the floor.
+	var pairs_usec := 0
+	var cpu0: int = CpuClock.usec()
+	var wall0: int = Time.get_ticks_usec()
+	for _r: int in rounds:
+		for s: int in _pos.size():
+			var step: Vector2i = _kernel_step(_pos[s].duplicate(), _vel[s].duplicate())
+			overlaps += step.x
+			pairs_usec += step.y
+	var cpu: float = maxf((CpuClock.usec() - cpu0) / 1e6, 1e-6)
+	var wall: int = maxi(Time.get_ticks_usec() - wall0, 1)
+	var ball_steps: int = rounds * _pos.size() * n
+	return {
+		"floor_steps_per_s": ball_steps / cpu,
+		"ns_per_ball_step": cpu * 1e9 / ball_steps,
+		"overlaps_per_ball_step": float(overlaps) / ball_steps,
+		"pairs_share": float(pairs_usec) / wall,
+	}
 
 
 func _record(steps: int) -> void:
@@ -120,30 +141,6 @@ func _cells_of(lo: Vector2, hi: Vector2) -> PackedInt32Array:
 		for x: int in range(c0.x, c1.x + 1):
 			out.append(y * _cols + x)
 	return out
-
-
-func _time() -> Dictionary:
-	var n: int = _pos[0].size()
-	var rounds: int = maxi(1, ceili(float(MIN_BALL_STEPS) / (n * _pos.size())))
-	var overlaps := 0
-	# Wall-clock microseconds spent in the ball-pair part, for its share of the floor.
-	var pairs_usec := 0
-	var cpu0: int = CpuClock.usec()
-	var wall0: int = Time.get_ticks_usec()
-	for _r: int in rounds:
-		for s: int in _pos.size():
-			var step: Vector2i = _kernel_step(_pos[s].duplicate(), _vel[s].duplicate())
-			overlaps += step.x
-			pairs_usec += step.y
-	var cpu: float = maxf((CpuClock.usec() - cpu0) / 1e6, 1e-6)
-	var wall: int = maxi(Time.get_ticks_usec() - wall0, 1)
-	var ball_steps: int = rounds * _pos.size() * n
-	return {
-		"floor_steps_per_s": ball_steps / cpu,
-		"ns_per_ball_step": cpu * 1e9 / ball_steps,
-		"overlaps_per_ball_step": float(overlaps) / ball_steps,
-		"pairs_share": float(pairs_usec) / wall,
-	}
 
 
 ## One step's least work over every ball; returns the overlaps it found (pins, walls, balls)

@@ -200,15 +200,17 @@ static func thread_scaling(
 		one.append(run(scene, steps + WARMUP, false, true, 1)["ball_steps_per_s"])
 		all.append(run(scene, steps + WARMUP, false, true, 0)["ball_steps_per_s"])
 		machine.append(MachineScaling.round_scaling())
-		worlds.append(MachineScaling.pair_scaling(one_world, one_world, one_world))
+		worlds.append(MachineScaling.pair_scaling(one_world, one_world))
 		if floor_round.is_valid():
-			floors.append(MachineScaling.pair_scaling(floor_round, floor_round, floor_round))
-	var scaling: float = TimingRounds.median(all) / maxf(TimingRounds.median(one), 1e-9)
+			floors.append(MachineScaling.pair_scaling(floor_round, floor_round))
+	var one_median: float = TimingRounds.median(one)
+	var all_median: float = TimingRounds.median(all)
+	var scaling: float = all_median / maxf(one_median, 1e-9)
 	var machine_median: float = TimingRounds.median(machine)
 	var worlds_median: float = TimingRounds.median(worlds)
 	return {
-		"one_thread_steps_per_s": TimingRounds.median(one),
-		"all_threads_steps_per_s": TimingRounds.median(all),
+		"one_thread_steps_per_s": one_median,
+		"all_threads_steps_per_s": all_median,
 		"scaling": scaling,
 		"machine_scaling": machine_median,
 		"machine_rounds": machine,
