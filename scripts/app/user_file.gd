@@ -6,6 +6,8 @@ extends RefCounted
 
 ## A settings or best-results file is a few kilobytes; anything past this is not one.
 const MAX_BYTES := 1024 * 1024
+## U+FEFF, the byte order mark a text may begin with.
+const BYTE_ORDER_MARK := 0xFEFF
 
 
 ## Reads a text file: {"text": String} (a UTF-8 byte order mark dropped), {"missing": true},
@@ -39,8 +41,12 @@ static func decode(bytes: PackedByteArray) -> Dictionary:
 	if invalid >= 0:
 		return {"error": "it is not UTF-8 text (byte %d)" % invalid}
 	var text := bytes.get_string_from_utf8()
-	if text.begins_with("\ufeff"):
-		text = text.substr(1)  # a byte order mark some editors add: not part of the text
+	# A byte order mark some editors add is not part of the text. Compared by code point:
+	# the release build's compressed scripts store string constants as UTF-8 and drop a
+	# leading BOM when reading them back, so a "\ufeff" literal there is "" and every
+	# text "begins with" it (which cut the first character off every file, issue 39).
+	if not text.is_empty() and text.unicode_at(0) == BYTE_ORDER_MARK:
+		text = text.substr(1)
 	return {"text": text}
 
 

@@ -7,6 +7,7 @@ extends GutTest
 const AppScript := preload("res://scenes/app/app.gd")
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 const SaveDataScript := preload("res://scripts/app/save_data.gd")
+const UserFile := preload("res://scripts/app/user_file.gd")
 const SETTINGS := "user://test_settings_files_settings.cfg"
 const SAVE := "user://test_settings_files_save.cfg"
 
@@ -64,7 +65,6 @@ func test_app_keeps_damaged_files_and_names_the_kept_copies() -> void:
 
 
 func test_a_second_damage_in_the_same_second_gets_its_own_copy() -> void:
-	const UserFile := preload("res://scripts/app/user_file.gd")
 	var when := {"year": 2030, "month": 1, "day": 2, "hour": 3, "minute": 4, "second": 5}
 	_write(SETTINGS, "one")
 	assert_eq(UserFile.keep_aside(SETTINGS, when), SETTINGS + ".bad-20300102-030405")
@@ -156,3 +156,30 @@ func test_a_pause_list_without_a_gamepad_binding_gets_the_default_one() -> void:
 	var codes := settings.events_for("pause").map(Codec.encode)
 	assert_has(codes, "key:P")
 	assert_true(settings.events_for("pause").any(Codec.is_gamepad), "a gamepad pause is back")
+
+
+# Issue 39: on the release build every second start called both files damaged and moved
+# them aside ("line 1 (outside a [section])"): the compressed scripts read the "\ufeff"
+# literal as "", so the first character of every file was cut off. A file the game itself
+# wrote must load with no problem, launch after launch, and stay where it is.
+func test_files_the_game_wrote_load_cleanly_on_every_later_start() -> void:
+	for start in 3:
+		var app := AppScript.new()
+		app.load_player_files(SETTINGS, SAVE)
+		var problems: PackedStringArray = app.take_problems()
+		assert_eq(problems, PackedStringArray(), "start %d: no file called damaged" % start)
+		app.save_settings()
+		app.save_data.save()
+		app.free()
+	assert_eq(_kept_copies(SETTINGS), PackedStringArray(), "settings.cfg never moved aside")
+	assert_eq(_kept_copies(SAVE), PackedStringArray(), "save.cfg never moved aside")
+	assert_true(FileAccess.get_file_as_string(SETTINGS).begins_with("; "), "header kept whole")
+
+
+func test_only_a_leading_byte_order_mark_is_dropped() -> void:
+	var text := "; comment\n[meta]\nversion=1\n"
+	assert_eq(UserFile.decode(text.to_utf8_buffer()), {"text": text}, "no mark: text as it is")
+	var marked := PackedByteArray([0xEF, 0xBB, 0xBF])
+	marked.append_array(text.to_utf8_buffer())
+	assert_eq(UserFile.decode(marked), {"text": text}, "the mark alone is dropped")
+	assert_eq(UserFile.decode(PackedByteArray()), {"text": ""}, "an empty file is empty text")
