@@ -9,6 +9,8 @@ extends Node
 ## file, and an exported script is no file (it is `name.gdc` behind `name.gd.remap`), so every
 ## script named by `-gtest=a.gd,b.gd` is loaded here first: GUT then finds it in the cache.
 
+const KnownEngineErrors := preload("res://tests/release/known_engine_errors.gd")
+
 ## The fixture pack's file name, beside the test binary.
 const FIXTURE_PACK := "fixtures.pck"
 # Keeps every loaded test script in the resource cache until GUT has run.
@@ -29,8 +31,16 @@ func _ready() -> void:
 			return
 		_loaded_scripts.append(script)
 	var runner: Node = load("res://addons/gut/cli/gut_cli.gd").new()
-	runner.ready.connect(runner.main, CONNECT_ONE_SHOT)
+	runner.ready.connect(_start.bind(runner), CONNECT_ONE_SHOT)
 	get_tree().root.add_child.call_deferred(runner)
+
+
+# Starts GUT with the known-error logger after GUT's own tracker (see its header): the
+# tracker is registered here first, which GUT's own later registration leaves as it is.
+func _start(runner: Node) -> void:
+	GutErrorTracker.register_logger(GutUtils.get_error_tracker())
+	OS.add_logger(KnownEngineErrors.new())
+	runner.call("main")
 
 
 # The scripts named by -gtest= (GUT's own option, comma-separated) among the arguments.
