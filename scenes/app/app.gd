@@ -30,6 +30,8 @@ var pending_problems := PackedStringArray()
 
 var _picked_boards := {}
 var _settings_path := SETTINGS_PATH
+# the window size set at start (WindowFit), ZERO when the window was left alone
+var _fitted_window_size := Vector2i.ZERO
 
 
 func _ready() -> void:
@@ -43,11 +45,13 @@ func _ready() -> void:
 		get_tree().quit(code)
 		return
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
+	_fitted_window_size = WindowFit.fit_window(settings.window_size)
 
 
 # The game is quitting (App leaves the tree last, after the scenes that cancelled their
 # board loadings): wait for those loading threads, so none is destroyed while it runs.
 func _exit_tree() -> void:
+	_remember_window_size()
 	BoardListLoading.wait_for_cancelled()
 
 
@@ -146,6 +150,20 @@ func _change_scene(path: String) -> void:
 	var error := get_tree().change_scene_to_file(path)
 	if error != OK:
 		push_error("Could not open the scene %s: %s" % [path, error_string(error)])
+
+
+# A window the player resized is reopened at that size next time (cut to the screen then):
+# saved at quit, only when it differs from what the start set and from what is saved.
+func _remember_window_size() -> void:
+	if _fitted_window_size == Vector2i.ZERO:
+		return
+	if DisplayServer.window_get_mode() != DisplayServer.WINDOW_MODE_WINDOWED:
+		return
+	var size := DisplayServer.window_get_size()
+	if size == _fitted_window_size or size == settings.window_size:
+		return
+	settings.window_size = size
+	settings.save_file(_settings_path)
 
 
 func _report(message: String) -> void:

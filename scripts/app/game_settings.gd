@@ -18,6 +18,8 @@ const MAX_TILT_SENSITIVITY := 3.0
 const REQUIRED_ACTIONS: Array[String] = ["pause"]
 ## More bindings than this on one action is not a file a person wrote.
 const MAX_BINDINGS_PER_ACTION := 16
+## A remembered window side past this many pixels is not one a screen has.
+const MAX_WINDOW_SIDE := 16384.0
 const IniText := preload("res://scripts/app/ini_text.gd")
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 const FILE_HEADER := (
@@ -55,6 +57,8 @@ var unlock_all_boards := false
 var vibration := true
 ## The pachinko board jolts on a jackpot (off for players whom screen motion troubles).
 var screen_shake := true
+## The window size the player left the game at (Vector2i.ZERO: none yet, fit the screen).
+var window_size := Vector2i.ZERO
 ## Action name -> Array of InputEvent, for every action in `remappable_actions()`.
 var bindings := {}
 
@@ -101,6 +105,7 @@ func reset_to_defaults() -> void:
 	unlock_all_boards = false
 	vibration = true
 	screen_shake = true
+	window_size = Vector2i.ZERO
 	bindings = default_bindings()
 	changed.emit()
 
@@ -225,6 +230,8 @@ func save_file(path: String) -> Error:
 				"show_ghost": show_ghost,
 				"maze_tutorial_look": maze_tutorial_look,
 				"screen_shake": screen_shake,
+				"window_width": window_size.x,
+				"window_height": window_size.y,
 			}
 		],
 		["controls", {"tilt_sensitivity": tilt_sensitivity, "vibration": vibration}],
@@ -267,6 +274,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "show_ghost", problems)
 	_read_flag(display, "maze_tutorial_look", problems)
 	_read_flag(display, "screen_shake", problems)
+	_read_window_size(display, problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)
 	_read_flag(controls, "vibration", problems)
 	var progress: Dictionary = sections.get("progress", {})
@@ -292,6 +300,26 @@ func _read_number(
 	if number < low or number > high:
 		problems.append(key)
 	set(key, clampf(number, low, high))
+
+
+# The remembered window size: both sides whole numbers of pixels from 0 (0 0: none yet) to
+# MAX_WINDOW_SIDE; anything else is a problem and leaves no size remembered.
+func _read_window_size(display: Dictionary, problems: PackedStringArray) -> void:
+	var sides := Vector2i.ZERO
+	for axis in 2:
+		var key: String = ["window_width", "window_height"][axis]
+		if not display.has(key):
+			return
+		var value: Variant = display[key]
+		var number: float = value if value is float or value is int else NAN
+		if not is_finite(number) or number != floorf(number):
+			problems.append(key)
+			return
+		if number < 0.0 or number > MAX_WINDOW_SIDE:
+			problems.append(key)
+			return
+		sides[axis] = int(number)
+	window_size = sides
 
 
 func _read_flag(section: Dictionary, key: String, problems: PackedStringArray) -> void:

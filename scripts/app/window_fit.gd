@@ -1,0 +1,60 @@
+class_name WindowFit
+extends RefCounted
+## The game window's size at start: on a first start the designed 1280 × 720, made smaller
+## (same shape) until it fits the screen's usable area (the desktop less its panels); on a
+## later start the size the player left it at, cut down to the screen when that is smaller
+## now. Never larger than the screen, never smaller than MINIMUM.
+
+## The design size the layouts are made for (project.godot's viewport size).
+const DESIGN := Vector2i(1280, 720)
+## Room kept for the window manager's frame and title bar, which the usable area includes.
+const FRAME_ALLOWANCE := Vector2i(12, 44)
+## The smallest window the layouts still work in.
+const MINIMUM := Vector2i(480, 360)
+
+
+## The window size for a first start on a screen whose usable area is `usable`: the design
+## size, or the largest of its shape that fits.
+static func first_size(usable: Vector2i) -> Vector2i:
+	var room := _room(usable)
+	var scale := minf(1.0, minf(float(room.x) / float(DESIGN.x), float(room.y) / float(DESIGN.y)))
+	var fitted := Vector2i(floori(DESIGN.x * scale), floori(DESIGN.y * scale))
+	return fitted.max(MINIMUM).min(room)
+
+
+## The size the player left the window at, cut to fit `usable` (each side on its own: a
+## player's shape is theirs).
+static func remembered_size(remembered: Vector2i, usable: Vector2i) -> Vector2i:
+	return remembered.max(MINIMUM).min(_room(usable))
+
+
+## The top-left corner that centres a window of `size` in the usable area `usable`.
+static func centred(size: Vector2i, usable: Rect2i) -> Vector2i:
+	return usable.position + ((usable.size - size) / 2).max(Vector2i.ZERO)
+
+
+## Sizes and centres the game window for this screen: `remembered` is the player's last
+## window size (Vector2i.ZERO when none). Returns the size set, or Vector2i.ZERO when the
+## window was left alone (no display, fullscreen, or a window managed by someone else).
+static func fit_window(remembered: Vector2i) -> Vector2i:
+	if DisplayServer.get_name() == "headless":
+		return Vector2i.ZERO
+	if DisplayServer.window_get_mode() != DisplayServer.WINDOW_MODE_WINDOWED:
+		return Vector2i.ZERO
+	var screen := DisplayServer.window_get_current_screen()
+	var usable := DisplayServer.screen_get_usable_rect(screen)
+	if usable.size.x <= 0 or usable.size.y <= 0:
+		return Vector2i.ZERO
+	var size := (
+		first_size(usable.size)
+		if remembered == Vector2i.ZERO
+		else remembered_size(remembered, usable.size)
+	)
+	DisplayServer.window_set_size(size)
+	DisplayServer.window_set_position(centred(size + FRAME_ALLOWANCE, usable))
+	return size
+
+
+# The client area a window can have on a usable area of `usable`, frame left out.
+static func _room(usable: Vector2i) -> Vector2i:
+	return (usable - FRAME_ALLOWANCE).max(Vector2i.ONE)
