@@ -2,14 +2,19 @@ extends RefCounted
 ## The `--analyze` command: a play analysis of one board, headless. Pachinko fires
 ## `--shots` shots (AnalysisPlan); the maze plays `--runs` autoplay games in easy and hard
 ## mode (MazeAnalysis). Prints one JSON line and writes it, with a heat-map PNG for
-## pachinko, to build/analysis/<game>_<board>.json. command_line.gd hands it the flags.
+## pachinko, to <folder>/<game>_<board>.json, and says on stderr where. The folder is
+## `--out` (relative to the folder the command runs in); without it, build/analysis/ in the
+## project when run from the project, and the player's own data folder (beside their
+## settings, user://reports/) in the exported game. command_line.gd hands it the flags.
 
 const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
 ## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).
 const EXIT_BAD_INPUT := 2
 const EXIT_FAILED := 1
-## Where the reports go, relative to the project folder.
+## Where the reports go when run from the project, relative to the project folder.
 const OUT_DIR := "build/analysis"
+## Where they go in the exported game: the player's data folder.
+const PLAYER_OUT_DIR := "user://reports"
 ## Another folder for tests ("" uses OUT_DIR; a static initialiser would not run in the
 ## editor for a script that is not @tool).
 static var out_dir_override := ""
@@ -28,8 +33,11 @@ static func run(values: Dictionary) -> int:
 	if threads < 1 or threads > 64:
 		return _fail(EXIT_BAD_INPUT, "--threads must be 1 to 64 (got %d)" % threads)
 	var name := "%s_%s" % [game, board_name.get_file().get_basename()]
-	var base := _out_rel().path_join(name)
-	var abs_base := _out_dir().path_join(name)
+	var folder := _out_folder(str(values.get("out", "")))
+	if folder.has("error"):
+		return _fail(EXIT_BAD_INPUT, folder["error"])
+	var base := str(folder["shown"]).path_join(name)
+	var abs_base := str(folder["dir"]).path_join(name)
 	var report: Dictionary
 	if game == BoardLevel.MAZE_NAME:
 		var runs: int = values.get("runs", MazeAnalysis.DEFAULT_RUNS)
@@ -69,17 +77,42 @@ static func run(values: Dictionary) -> int:
 	file.store_line(text)
 	file.close()
 	print(text)
+	printerr("analyze: report written to %s.json" % abs_base)
 	return 0
 
 
-static func _out_dir() -> String:
-	var dir := ProjectSettings.globalize_path("res://").path_join(_out_rel())
-	DirAccess.make_dir_recursive_absolute(dir)
-	return dir
+# The folder the command was typed in: the shell's PWD (Godot itself moves into the project
+# folder when given --path), else the process's own.
+static func _invoking_folder() -> String:
+	var typed_in := OS.get_environment("PWD")
+	if typed_in.is_absolute_path() and DirAccess.dir_exists_absolute(typed_in):
+		return typed_in
+	return DirAccess.open(".").get_current_dir()
 
 
-static func _out_rel() -> String:
-	return out_dir_override if not out_dir_override.is_empty() else OUT_DIR
+# The folder the reports go to, made when missing: {"dir": its absolute path, "shown": how
+# the report names it (relative to the project when run from it)}, or {"error": why not}.
+static func _out_folder(out_flag: String) -> Dictionary:
+	var dir := ""
+	var shown := ""
+	if not out_flag.is_empty():
+		dir = out_flag
+		if dir.is_relative_path():
+			dir = _invoking_folder().path_join(dir)
+		shown = dir.simplify_path()
+		dir = shown
+	elif not out_dir_override.is_empty() or not OS.has_feature("template"):
+		shown = out_dir_override if not out_dir_override.is_empty() else OUT_DIR
+		dir = ProjectSettings.globalize_path("res://").path_join(shown)
+	else:
+		dir = ProjectSettings.globalize_path(PLAYER_OUT_DIR)
+		shown = dir
+	var made := DirAccess.make_dir_recursive_absolute(dir)
+	if made != OK and not DirAccess.dir_exists_absolute(dir):
+		return {
+			"error": "cannot make the folder %s for the report (%s)" % [dir, error_string(made)]
+		}
+	return {"dir": dir, "shown": shown}
 
 
 static func _fail(code: int, problem: String) -> int:

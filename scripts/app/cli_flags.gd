@@ -80,7 +80,8 @@ const FLAGS: Array[Dictionary] = [
 		"help":
 		(
 			"Play analysis: fire many shots (pachinko) or play many pilot games (maze), print"
-			+ " one JSON line and write it to build/analysis/ (with a heat-map PNG for pachinko)."
+			+ " one JSON line and write it, with a heat-map PNG for pachinko, to --out or to"
+			+ " the folder of your saved games (reports/)."
 		),
 		"example": "--analyze=pachinko --board=classic --shots=10000 --seed=1 --threads=2",
 	},
@@ -173,6 +174,14 @@ const FLAGS: Array[Dictionary] = [
 		"default": 20,
 		"help": "Games the maze analysis plays in each of easy and hard mode (default 20).",
 		"example": "--analyze=maze --board=catacombs --runs=20",
+	},
+	{
+		"flag": "--out",
+		"for": ["--analyze"],
+		"value": Value.TEXT,
+		"placeholder": "DIR",
+		"help": "The folder the analysis report goes to (made when missing).",
+		"example": "--analyze=pachinko --board=classic --out=reports",
 	},
 	{
 		"flag": "--threads",

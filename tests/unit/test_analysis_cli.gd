@@ -68,3 +68,43 @@ func test_bad_input_exits_2() -> void:
 	assert_eq(AnalyzeCli.run(no_shots), 2)
 	var wrong_game := {"analyze": "maze", "board": "res://levels/pachinko/classic.board", "seed": 1}
 	assert_eq(AnalyzeCli.run(wrong_game), 2)
+
+
+func test_out_puts_the_report_in_that_folder_and_names_it_whole() -> void:
+	var folder := ProjectSettings.globalize_path("user://test_analysis_out/deeper")
+	var values := {
+		"analyze": "pachinko",
+		"board": "classic",
+		"shots": 20,
+		"seed": 1,
+		"threads": 1,
+		"out": folder
+	}
+	assert_eq(AnalyzeCli.run(values), 0)
+	var json := folder.path_join("pachinko_classic.json")
+	assert_true(FileAccess.file_exists(json), "the report is in the --out folder, made for it")
+	var report: Dictionary = JSON.parse_string(FileAccess.get_file_as_string(json))
+	assert_eq(report["report"], json, "the report names where it is")
+	assert_eq(report["heatmap"], folder.path_join("pachinko_classic.png"))
+	for name in ["pachinko_classic.json", "pachinko_classic.png"]:
+		DirAccess.remove_absolute(folder.path_join(name))
+	DirAccess.remove_absolute(folder)
+	DirAccess.remove_absolute(folder.get_base_dir())
+
+
+# Issue 39: the exported game wrote build/analysis/ under whatever folder the player stood
+# in. This runs on both builds: the release test run checks the player's side.
+func test_without_out_the_game_writes_beside_the_players_files() -> void:
+	AnalyzeCli.out_dir_override = ""
+	var values := {"analyze": "pachinko", "board": "classic", "shots": 20, "seed": 1, "threads": 1}
+	assert_eq(AnalyzeCli.run(values), 0)
+	var folder := (
+		ProjectSettings.globalize_path("user://reports")
+		if OS.has_feature("template")
+		else ProjectSettings.globalize_path("res://build/analysis")
+	)
+	var json := folder.path_join("pachinko_classic.json")
+	assert_true(FileAccess.file_exists(json), "written to %s" % folder)
+	if OS.has_feature("template"):
+		for name in ["pachinko_classic.json", "pachinko_classic.png"]:
+			DirAccess.remove_absolute(folder.path_join(name))
