@@ -45,7 +45,7 @@ func _ready() -> void:
 		get_tree().quit(code)
 		return
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
-	_fitted_window_size = WindowFit.fit_window(settings.window_size)
+	_fitted_window_size = WindowFit.fit_window(get_window(), settings.window_size)
 
 
 # The game is quitting (App leaves the tree last, after the scenes that cancelled their

@@ -33,16 +33,16 @@ static func centred(size: Vector2i, usable: Rect2i) -> Vector2i:
 	return usable.position + ((usable.size - size) / 2).max(Vector2i.ZERO)
 
 
-## Sizes and centres the game window for this screen: `remembered` is the player's last
-## window size (Vector2i.ZERO when none). Returns the size set, or Vector2i.ZERO when the
-## window was left alone (no display, fullscreen, or a window managed by someone else).
-static func fit_window(remembered: Vector2i) -> Vector2i:
+## Sizes and centres the game's main window for its screen: `remembered` is the player's
+## last window size (Vector2i.ZERO when none). Returns the size set, or Vector2i.ZERO when
+## the window was left alone (no display, fullscreen or maximised, no usable area known).
+## Through the Window, not the DisplayServer alone, so the view is stretched to the new size.
+static func fit_window(window: Window, remembered: Vector2i) -> Vector2i:
 	if DisplayServer.get_name() == "headless":
 		return Vector2i.ZERO
-	if DisplayServer.window_get_mode() != DisplayServer.WINDOW_MODE_WINDOWED:
+	if window.mode != Window.MODE_WINDOWED:
 		return Vector2i.ZERO
-	var screen := DisplayServer.window_get_current_screen()
-	var usable := DisplayServer.screen_get_usable_rect(screen)
+	var usable := DisplayServer.screen_get_usable_rect(window.current_screen)
 	if usable.size.x <= 0 or usable.size.y <= 0:
 		return Vector2i.ZERO
 	var size := (
@@ -50,8 +50,8 @@ static func fit_window(remembered: Vector2i) -> Vector2i:
 		if remembered == Vector2i.ZERO
 		else remembered_size(remembered, usable.size)
 	)
-	DisplayServer.window_set_size(size)
-	DisplayServer.window_set_position(centred(size + FRAME_ALLOWANCE, usable))
+	window.size = size
+	window.position = centred(size + FRAME_ALLOWANCE, usable)
 	return size
 
 

@@ -53,7 +53,7 @@ func test_the_window_is_centred_in_the_usable_area() -> void:
 
 
 func test_headless_leaves_the_window_alone() -> void:
-	assert_eq(WindowFit.fit_window(Vector2i(800, 600)), Vector2i.ZERO)
+	assert_eq(WindowFit.fit_window(get_window(), Vector2i(800, 600)), Vector2i.ZERO)
 
 
 func test_the_remembered_size_survives_a_save_and_a_load() -> void:
