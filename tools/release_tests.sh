@@ -11,7 +11,8 @@
 #
 # A test file that cannot run on the release template is left out with its reason, printed
 # every run: the board tool's tests (addons/board_editor is editor-only and not in the game)
-# and those listed in tests/release/not_on_release.txt. JUnit XML: build/release-tests.xml.
+# and those listed in tests/release/not_on_release.txt. The developer tools (tools/*.gd) are
+# in the test pack: some tests drive the game's code through them. JUnit XML: build/release-tests.xml.
 # Exit 0 passed, 1 failed.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -41,6 +42,14 @@ while IFS= read -r file; do
 	reason=$(awk -v f="$file" -F ' *\\| *' '$1 == f { print $2 }' "$SKIP_LIST")
 	if [ -z "$reason" ] && grep -q 'res://addons/board_editor/' "$file"; then
 		reason="tests the board tool (addons/board_editor), which runs in the editor only"
+	fi
+	if [ -z "$reason" ]; then # a developer tool it loads may use the board tool
+		for tool in $(grep -o 'res://tools/[A-Za-z0-9_/]*\.gd' "$file" | sort -u); do
+			if grep -q 'res://addons/board_editor/' "${tool#res://}"; then
+				reason="loads ${tool#res://}, which uses the board tool (editor only)"
+				break
+			fi
+		done
 	fi
 	if [ -n "$reason" ]; then
 		echo "release tests: not run on the release template: $file ($reason)"

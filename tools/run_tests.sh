@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The whole test run: lint, every GUT test headless (JUnit XML in build/), the headless
-# editor smoke check, the windowed game under Xvfb (tools/play_check.sh; skipped, and said
-# so, where Xvfb cannot be had), the release launcher's tests and, where this machine can,
-# make release + the release check in a clean Debian 12 root (tools/release/test_hook.sh).
+# editor smoke check, the same GUT suites on Godot's release template (tools/release_tests.sh;
+# its tests count in the totals), the windowed game under Xvfb (tools/play_check.sh; skipped,
+# and said so, where Xvfb cannot be had), the release launcher's tests and, where this
+# machine can, make release + the release check in a clean Debian 12 root and the scripted
+# two-session check on the release folder (tools/release/test_hook.sh).
 # Ends with one plain line "N passed, N failed"; exits non-zero when anything failed or no
 # test ran.
 set -uo pipefail
@@ -34,6 +36,18 @@ if [ "$script_errors" -gt 0 ]; then
 	extra_failed=$((extra_failed + 1))
 fi
 
+echo "== GUT again on Godot's release template (tools/release_tests.sh: what players run)"
+release_tests_status=77
+setup_log=$(mktemp)
+if tools/setup.sh export >"$setup_log" 2>&1; then
+	tools/release_tests.sh
+	release_tests_status=$?
+	[ "$release_tests_status" = 0 ] || extra_failed=$((extra_failed + 1))
+else
+	echo "release tests: SKIPPED: no release export template ($(grep -v '^$' "$setup_log" | tail -n 1))"
+fi
+rm -f "$setup_log"
+
 echo "== editor smoke check (plugin enabled, headless)"
 tools/editor_smoke.sh || extra_failed=$((extra_failed + 1))
 
@@ -55,12 +69,18 @@ if [ "$release_status" -ne 0 ] && [ "$release_status" -ne 77 ]; then
 fi
 
 read -r passed failed < <(python3 tools/junit_counts.py "$XML")
+if [ "$release_tests_status" != 77 ] && [ -f build/release-tests.xml ]; then
+	read -r release_passed release_failed < <(python3 tools/junit_counts.py build/release-tests.xml)
+	passed=$((passed + release_passed))
+	failed=$((failed + release_failed))
+fi
 failed=$((failed + extra_failed))
 if [ "$gut_status" -ne 0 ] && [ "$failed" -eq 0 ]; then
 	failed=1 # GUT failed without a readable report: never report green
 fi
 [ "$play_status" -ne 77 ] || echo "(the play check was SKIPPED: no Xvfb, see above)"
 [ "$release_status" -ne 77 ] || echo "(the release check was SKIPPED, see above)"
+[ "$release_tests_status" -ne 77 ] || echo "(the release-template test run was SKIPPED, see above)"
 echo "$passed passed, $failed failed"
 if [ "$passed" -eq 0 ] || [ "$failed" -ne 0 ]; then
 	exit 1

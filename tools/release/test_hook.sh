@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make test's release part: the tests of the launcher's error paths and of elf_paths.py
-# always; then, when this machine can, make release and the release check
-# (tools/release/check.sh). Prints SKIPPED with the reason for the part it cannot do.
+# always; then, when this machine can, make release, the release check
+# (tools/release/check.sh) and two scripted sessions on the folder (session_check.sh). Prints SKIPPED with the reason for the part it cannot do.
 # Exit 0 passed, 1 failed, 77 the release check skipped.
 set -uo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -31,4 +31,8 @@ started=$(date +%s)
 tools/release/check.sh
 status=$?
 echo "release check: the check took $(($(date +%s) - started)) s"
+folder=$(ls -d build/release/board-studio-*/ | head -n 1)
+tools/release/session_check.sh "$folder"
+session_status=$?
+[ "$session_status" = 0 ] || [ "$session_status" = 77 ] || status=1
 exit $status
