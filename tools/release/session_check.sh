@@ -8,7 +8,9 @@
 #   (2) after each session the player's files are there, none moved aside (*.bad-*), and
 #       the second start reports no problem with them (the release build once called every
 #       file it had written damaged),
-#   (3) the console holds no ERROR or WARNING line but those ALLOWED below, with the reason.
+#   (3) the console holds no ERROR or WARNING line but those ALLOWED below, with the reason,
+#       in those sessions and in each headless command (help, autoplays, analyses, checks,
+#       a wrong flag).
 # Screenshots of each step: build/session-check/<session>-<step>.png.
 #   tools/release/session_check.sh [FOLDER]    default: build/release/board-studio-<version>
 # Exit 0 passed, 1 failed, 77 skipped (no Xvfb or xdotool here).
@@ -119,6 +121,21 @@ session() { # number
 		ok "session $1: no ERROR or WARNING line on the console ($allowed allowed: V-Sync)"
 	fi
 }
+
+# every headless command a player or a script may run: a quiet console too
+for args in "--help" "--autoplay=pachinko --seconds=3" "--autoplay=maze --seconds=3" \
+	"--analyze=pachinko --shots=50" "--analyze=maze --runs=1" "--check-boards" "--optimise"; do
+	# shellcheck disable=SC2086 # the flags are split on purpose
+	noise=$(HOME=$home XDG_DATA_HOME=$home/.local/share XDG_CONFIG_HOME=$home/.config \
+		"$folder/board-studio" --headless -- $args 2>&1 >/dev/null |
+		grep -E '^(ERROR|WARNING|SCRIPT ERROR)' | head -n 3)
+	if [ -n "$noise" ]; then
+		fail "--headless -- $args printed: $noise"
+	else
+		ok "--headless -- $args: no ERROR or WARNING line"
+	fi
+done
+rm -rf "$data"
 
 session 1
 [ -f "$data/settings.cfg" ] || fail "session 1 left no settings.cfg (the volume change was not saved)"
