@@ -5,7 +5,7 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s res://tools/make_original_boards.gd
 ## pachinko/tulips: a dense lattice with four tulips and three plain pockets.
 ## pachinko/windmills: an open board of pin rows, five windmills and a few rich pockets.
-## maze/catacombs: 14 x 12 twisting corridors with black holes in the dead ends.
+## maze/catacombs: 12 x 9 twisting corridors with black holes in the dead ends.
 ## maze/courtyards: wide square rings round the goal with chicanes, built in mirror mode.
 
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
