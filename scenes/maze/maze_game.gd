@@ -63,6 +63,7 @@ var _side_text: MazeSideText
 @onready var _timer: Label = %Timer
 @onready var _best: Label = %Best
 @onready var _next_medal: Label = %NextMedal
+@onready var _in_goal: Label = %InGoal
 @onready var _calibrate: Button = %Calibrate
 @onready var _controls: Label = %Controls
 
@@ -188,7 +189,7 @@ func _on_calibrate() -> void:
 
 
 func _on_game_reset() -> void:
-	_goal_count = 0
+	_show_goal_count(0)
 	_win_panel.hide()
 	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
 	_ghost_view.set_board_size(rules.level.size)
@@ -316,10 +317,23 @@ func _on_lost(hole: int) -> void:
 	_sounds.play(SoundBank.HOLE_FALL, -9.0)
 
 
+# The rules counted a ball in (or out): the panel's count at once, and for a ball in, a
+# small chime (higher for each) and the goal's dish lit up.
 func _on_goal_count_changed(count: int) -> void:
 	if count > _goal_count:
 		_sounds.play(SoundBank.GOAL_CHIME, -10.0, 0.9 + 0.1 * float(count))
+		_stage.light_goal()
+	_show_goal_count(count)
+
+
+func _show_goal_count(count: int) -> void:
 	_goal_count = count
+	_in_goal.text = "In goal  %d / %d" % [count, rules.ball_total()]
+
+
+## The panel's "In goal 2 / 4" line (for tests).
+func goal_count_text() -> String:
+	return _in_goal.text
 
 
 func _on_wall_bumped(speed: float) -> void:
