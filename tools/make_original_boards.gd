@@ -5,6 +5,7 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s res://tools/make_original_boards.gd
 ## pachinko/tulips: a dense lattice with four tulips and three plain pockets.
 ## pachinko/windmills: an open board of pin rows, five windmills and a few rich pockets.
+## maze/first_roll, maze/two_together: the first boards, one ball then two in a folding corridor.
 ## maze/catacombs: 12 x 9 twisting corridors with black holes in the dead ends.
 ## maze/courtyards: wide square rings round the goal with chicanes, built in mirror mode.
 
@@ -38,7 +39,12 @@ func _initialize() -> void:
 	var ok := true
 	for board: BoardLevel in [make_tulips(), make_windmills()]:
 		ok = _save(board) and ok
-	for board: BoardLevel in [MazeCarver.make_catacombs(), MazeCarver.make_courtyards()]:
+	for board: BoardLevel in [
+		MazeCarver.make_first_roll(),
+		MazeCarver.make_two_together(),
+		MazeCarver.make_catacombs(),
+		MazeCarver.make_courtyards()
+	]:
 		ok = _save(board) and ok
 	quit(0 if ok else 1)
 

@@ -12,6 +12,8 @@ const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd
 
 const CELL := 35.0
 const CATACOMBS_SEED := 20240611
+## The teaching boards' goal radius: it fits the corridor's dead end (px).
+const FOLD_GOAL_RADIUS := 14.0
 ## Share of the carved maze's inner walls knocked out again.
 const OPENNESS := 0.3
 
@@ -123,6 +125,74 @@ static func make_courtyards() -> BoardLevel:
 		SetProperties.new(level, {"goal_radius": MazeGenerator.GOAL_RADIUS}, "Goal ring")
 	)
 	return refuse_wall_in_goal_ring(level)
+
+
+## First Roll: one ball and a corridor that folds back twice (right, down, left, down,
+## right): each tilt rolls the ball to the next turn, and the goal lies at the corridor's
+## dead end, so a ball resting there is in. The first board: it teaches tilting.
+static func make_first_roll() -> BoardLevel:
+	return _fold(
+		"first_roll",
+		"First Roll",
+		"One ball. Tilt it right, down, left, down and right again: it rests in the goal.",
+		Vector2i(5, 3),
+		[Vector2i(0, 0)]
+	)
+
+
+## Two Together: the same folding corridor, one fold longer, with two balls that roll as a
+## pair; the dead end holds both, one behind the other, inside the goal.
+static func make_two_together() -> BoardLevel:
+	return _fold(
+		"two_together",
+		"Two Together",
+		"Two balls roll one behind the other: bring both into the goal at the corridor's end.",
+		Vector2i(6, 4),
+		[Vector2i(0, 0), Vector2i(1, 0)]
+	)
+
+
+# A one-cell corridor folding back at every row (it turns down at the right end of the even
+# rows and the left end of the odd ones), balls starting in `start_cells`, and a small goal
+# at the corridor's dead end: a ball there, or two in a row, rest with their centres in it.
+static func _fold(
+	id: String, title: String, blurb: String, cells: Vector2i, start_cells: Array
+) -> BoardLevel:
+	var history := ActionHistory.new()
+	var level := maze_base(history, id, title, blurb, cells)
+	var far := Vector2(cells) * CELL
+	var walls: Array = [
+		[Vector2.ZERO, Vector2(far.x, 0.0)],
+		[Vector2(far.x, 0.0), far],
+		[far, Vector2(0.0, far.y)],
+		[Vector2(0.0, far.y), Vector2.ZERO],
+	]
+	for row in range(1, cells.y):
+		var y := row * CELL
+		# after an even row the way down is at the right end, after an odd one at the left
+		if row % 2 == 1:
+			walls.append([Vector2(0.0, y), Vector2(far.x - CELL, y)])
+		else:
+			walls.append([Vector2(CELL, y), Vector2(far.x, y)])
+	for wall: Array in walls:
+		history.commit(WallAction.new(level, wall[0], wall[1]))
+	var starts := Items.empty_set()
+	starts["starts"] = _centres(start_cells)
+	history.commit(AddItems.new(level, starts, "Add ball start"))
+	# The last row runs toward the side its fold does not open on: the dead end is there.
+	var last := cells.y - 1
+	var dead_end_right := last % 2 == 0
+	var face := far.x - level.wall_width * 0.5 if dead_end_right else level.wall_width * 0.5
+	var inward := -1.0 if dead_end_right else 1.0
+	# a ball resting at the end lies a radius from the wall's face; a second one behind it
+	# two radii further: the goal's centre between them takes both in
+	var goal := Vector2(face + inward * level.ball_radius * 2.0, (last + 0.5) * CELL)
+	history.commit(
+		SetProperties.new(
+			level, {"goal_center": goal, "goal_radius": FOLD_GOAL_RADIUS}, "Goal at the end"
+		)
+	)
+	return level
 
 
 ## `level`, or null (with an error naming the wall) when a wall crosses its goal ring: a

@@ -200,7 +200,9 @@ func _on_game_reset() -> void:
 	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
-	_note.show_note("Tilt the board to start!", MazeHints.start(rules.hard_mode))
+	_note.show_note(
+		"Tilt the board to start!", MazeHints.start(rules.hard_mode, rules.ball_total())
+	)
 	_show_best()
 
 

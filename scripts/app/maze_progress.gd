@@ -6,6 +6,8 @@ extends RefCounted
 
 ## Shipped boards from the first to open to the last.
 const ORDER: Array[String] = [
+	"maze_first_roll",
+	"maze_two_together",
 	"maze_garden",
 	"maze_classic",
 	"maze_cloister",
