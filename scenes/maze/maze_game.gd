@@ -32,8 +32,6 @@ const SIDE_EDGE := 24.0
 ## A column whose text grew (a small window) is at most this share of the window's width.
 const SIDE_MOST_SHARE := 0.36
 const PORTRAIT_SIDE_SHARE := 0.45
-## The height (px) the side panel's text takes in a portrait band, beside the joystick.
-const PORTRAIT_TEXT_HEIGHT := 380.0
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -53,6 +51,8 @@ var _ghost_view := MazeGhost3D.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
 var _side_text: MazeSideText
+## Layouts left to try again next frame while the panel has no width yet.
+var _relayouts_left := 3
 
 @onready var _stage: MazeStage = $Stage
 @onready var _side: VBoxContainer = $Side
@@ -106,7 +106,7 @@ func _ready() -> void:
 	rules.wall_bumped.connect(_on_wall_bumped)
 	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
-	get_viewport().size_changed.connect(_layout)
+	get_viewport().size_changed.connect(_on_size_changed)
 	_layout()
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
@@ -225,6 +225,11 @@ func _on_won(seconds: float) -> void:
 		_sounds.play(SoundBank.GOAL_CHIME, -4.0, 1.0 + 0.25 * float(summary.medal))
 
 
+func _on_size_changed() -> void:
+	_relayouts_left = 3
+	_layout()
+
+
 ## Puts the side panel where the window's shape leaves room (a column on the right, or a
 ## band along the bottom of a portrait window) and frames the board in the rest. Returns the
 ## board's region (screen pixels).
@@ -246,7 +251,7 @@ func _layout() -> Rect2:
 		_side.offset_top = SIDE_EDGE
 		_side.offset_bottom = -SIDE_EDGE
 		region = Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
-		_joystick.ui_scale = minf(2.0, width / MazeJoystick.drawn_size(1.0))
+		_fit_joystick(minf(2.0, width / MazeJoystick.drawn_size(1.0)), view.y - SIDE_EDGE * 2.0)
 	else:
 		var height := view.y * PORTRAIT_SIDE_SHARE
 		_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
@@ -255,17 +260,27 @@ func _layout() -> Rect2:
 		_side.offset_top = -height
 		_side.offset_bottom = -SIDE_EDGE * 0.5
 		region = Rect2(0.0, 0.0, view.x, view.y - height)
-		# the joystick takes what the band's text leaves
-		_joystick.ui_scale = clampf(
-			(height - PORTRAIT_TEXT_HEIGHT * _side_text.factor) / MazeJoystick.drawn_size(1.0),
-			0.8,
-			2.0
-		)
+		_fit_joystick(2.0, height - SIDE_EDGE * 0.5)
 	_stage.set_board_region(region)
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
 	_win_panel.size = region.size
 	return region
+
+
+# Sizes the joystick at most `largest` times the seed's size and no bigger than the height
+# the panel's other lines leave of `panel_height` (px), so the whole panel fits its place.
+func _fit_joystick(largest: float, panel_height: float) -> void:
+	var stick := MazeJoystick.drawn_size(1.0)
+	var others := _side.get_combined_minimum_size().y - _joystick.get_combined_minimum_size().y
+	if others >= panel_height and _relayouts_left > 0:
+		# the column has no width yet (its wrapping lines stand one word a line): again
+		# once it is laid out
+		_relayouts_left -= 1
+		if not get_tree().process_frame.is_connected(_layout):
+			get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)
+		return
+	_joystick.ui_scale = clampf((panel_height - others) / stick, 0.5, largest)
 
 
 ## The win panel (for tests and the screenshots).
