@@ -35,8 +35,8 @@ func _draw() -> void:
 			[
 				Vector2(top + side * 30.0, 0.0),
 				Vector2(top + side * 12.0, 0.0),
-				Vector2(top - side * 8.0, RIBBON + 12.0),
 				Vector2(top - side * 26.0, RIBBON + 12.0),
+				Vector2(top - side * 8.0, RIBBON + 12.0),
 			]
 		)
 		draw_colored_polygon(band, RIBBON_COLOUR.lightened(0.12 if side < 0.0 else 0.0))

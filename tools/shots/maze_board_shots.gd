@@ -21,8 +21,8 @@ func _run() -> void:
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(scratch))
 	var app := root.get_node("/root/App")
 	app.call("load_player_files", SCRATCH_SETTINGS, SCRATCH_SAVE)
-	var size := root.get_visible_rect().size
-	var tag := "%dx%d" % [int(size.x), int(size.y)]
+	var window := DisplayServer.window_get_size()
+	var tag := "%dx%d" % [window.x, window.y]
 	var failed := 0
 	for board in _boards():
 		var path := "res://levels/maze/%s.board" % board
