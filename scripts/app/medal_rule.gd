@@ -49,6 +49,7 @@ static func rounded(seconds: float) -> float:
 
 static func _median(sorted: PackedFloat64Array) -> float:
 	var n := sorted.size()
+	var half := floori(n * 0.5)
 	if n % 2 == 1:
-		return sorted[n / 2]
-	return (sorted[n / 2 - 1] + sorted[n / 2]) * 0.5
+		return sorted[half]
+	return (sorted[half - 1] + sorted[half]) * 0.5
