@@ -1,9 +1,10 @@
 extends GutTest
 ## The maze pilot on a board with a wall off the grid's lines. QA moved one end of a
 ## Courtyards wall by one cell (the wall along y = 70 now slants from (70, 105) to
-## (140, 70) on the 10 x 10 Courtyards; (175, 70) on the 12 x 12 one it was found on): a person still wins it, but the pilot's grid lost the whole board over that
-## one wall ("not a grid"), fell back to steering the ball nearest the goal and never got
-## more than one ball in. The grid now draws an off-grid wall onto its cell sides (those
+## (140, 70) on the 10 x 10 Courtyards; to (175, 70) on the 12 x 12 one it was found on):
+## a person still wins it, but the pilot's grid lost the whole board over that one wall
+## ("not a grid"), fell back to steering the ball nearest the goal and never got more than
+## one ball in. The grid now draws an off-grid wall onto its cell sides (those
 ## between the cells whose centres it separates), and the planner plays on.
 
 const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
