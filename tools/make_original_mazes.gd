@@ -15,7 +15,7 @@ const CATACOMBS_SEED := 20240611
 ## The teaching boards' goal radius: it fits the corridor's dead end (px).
 const FOLD_GOAL_RADIUS := 14.0
 ## Share of the carved maze's inner walls knocked out again.
-const OPENNESS := 0.3
+const OPENNESS := 0.2
 
 
 ## Catacombs: 12 x 9 cells of twisting corridors carved from a fixed seed, a few loops so

@@ -12,8 +12,8 @@ const ORDER: Array[String] = [
 	"maze_two_together",  # 16.5
 	"maze_cloister",  # 13.6
 	"maze_long_hall",  # 14.8
+	"maze_catacombs",  # 19.9
 	"maze_switchbacks",  # 20.5
-	"maze_catacombs",  # 22.1
 	"maze_garden",  # 23.7
 	"maze_undercroft",  # 24.4
 	"maze_classic",  # 25.1
