@@ -9,7 +9,7 @@ extends RefCounted
 ## Units: 3D units in the stage's space (camera on +z looking down -z), screen pixels.
 
 ## The smallest a ball may be drawn on a 1280 × 720 window, in pixels across (a design
-## rule the shipped boards are made to; the camera never zooms past the whole board).
+## rule the shipped boards are made to; the camera never zooms in on part of the board).
 const MIN_BALL_PX := 14.0
 ## Space kept free round the board inside its region (px).
 const MARGIN_PX := 8.0

@@ -140,7 +140,7 @@ func set_board_region(region: Rect2) -> void:
 	_frame()
 
 
-## How the board is framed now (its scale, zoom and where it is drawn), for tests.
+## How the board is framed now (its scale and where it is drawn), for tests.
 func framing() -> MazeFraming:
 	return _framing
 
