@@ -5,7 +5,8 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s res://tools/make_original_boards.gd
 ## pachinko/tulips: a dense lattice with four tulips and three plain pockets.
 ## pachinko/windmills: an open board of pin rows, five windmills and a few rich pockets.
-## maze/catacombs: 14 x 12 twisting corridors with black holes in the dead ends.
+## maze/first_roll, maze/two_together: the first boards, one ball then two in a folding corridor.
+## maze/catacombs: 12 x 9 twisting corridors with black holes in the dead ends.
 ## maze/courtyards: wide square rings round the goal with chicanes, built in mirror mode.
 
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
@@ -38,7 +39,12 @@ func _initialize() -> void:
 	var ok := true
 	for board: BoardLevel in [make_tulips(), make_windmills()]:
 		ok = _save(board) and ok
-	for board: BoardLevel in [MazeCarver.make_catacombs(), MazeCarver.make_courtyards()]:
+	for board: BoardLevel in [
+		MazeCarver.make_first_roll(),
+		MazeCarver.make_two_together(),
+		MazeCarver.make_catacombs(),
+		MazeCarver.make_courtyards()
+	]:
 		ok = _save(board) and ok
 	quit(0 if ok else 1)
 
@@ -194,6 +200,7 @@ static func _save(level: BoardLevel) -> bool:
 		push_error("make_original_boards: %s has %d errors." % [level.board_id, errors.size()])
 		return false
 	var path := "res://levels/%s/%s.board" % [kind, id]
+	_keep_medals(level, path)
 	# The file's uid lives in its .board.uid sidecar, which saving leaves alone.
 	var error := ResourceSaver.save(level, path)
 	if error != OK:
@@ -222,3 +229,14 @@ static func _save(level: BoardLevel) -> bool:
 		)
 	)
 	return true
+
+
+# Medal times belong to the pilot's measurements (tools/maze_pilot_table.gd --write-medals),
+# not to the layout: a maze keeps the ones its file has.
+static func _keep_medals(level: BoardLevel, path: String) -> void:
+	if not level.is_maze() or not FileAccess.file_exists(path):
+		return
+	var old := BoardLoader.load_board(path)
+	if old.level != null:
+		level.medal_times_easy = old.level.medal_times_easy
+		level.medal_times_hard = old.level.medal_times_hard

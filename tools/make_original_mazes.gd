@@ -12,23 +12,31 @@ const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd
 
 const CELL := 35.0
 const CATACOMBS_SEED := 20240611
+## The teaching boards' goal radius: it fits the corridor's dead end (px).
+const FOLD_GOAL_RADIUS := 14.0
 ## Share of the carved maze's inner walls knocked out again.
-const OPENNESS := 0.3
+const OPENNESS := 0.2
 
 
-## Catacombs: 14 x 12 cells of twisting corridors carved from a fixed seed, a few loops so
+## Catacombs: 12 x 9 cells of twisting corridors carved from a fixed seed, a few loops so
 ## no route is forced past a hole, a two-by-two goal room in the middle and black holes
-## waiting in the dead ends.
+## waiting in the dead ends. (It was 14 x 12 until the camera showed the whole board: its
+## balls were then under 14 px at 1280 x 720.)
 static func make_catacombs() -> BoardLevel:
 	var history := ActionHistory.new()
-	var cols := 14
-	var rows := 12
+	var cols := 12
+	var rows := 9
 	var level := maze_base(
 		history,
 		"catacombs",
 		"Catacombs",
-		"Fourteen by twelve cells of winding passages; in hard mode the dead ends hold holes.",
+		"Twelve by nine cells of winding passages; in hard mode the dead ends hold holes.",
 		Vector2i(cols, rows)
+	)
+	# the goal room's top left cell; the goal sits on its middle grid point
+	var room := Vector2i(cols / 2 - 1, rows / 2 - 1)
+	history.commit(
+		SetProperties.new(level, {"goal_center": Vector2(room + Vector2i.ONE) * CELL}, "Goal")
 	)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = CATACOMBS_SEED
@@ -36,12 +44,12 @@ static func make_catacombs() -> BoardLevel:
 	# vertical[c][r] the wall on grid line x = c left of cell (c, r).
 	var horizontal := _grid(rows + 1, cols)
 	var vertical := _grid(cols + 1, rows)
-	# The goal room: cells (6..7, 5..6) open into each other.
-	horizontal[6][6] = false
-	horizontal[6][7] = false
-	vertical[7][5] = false
-	vertical[7][6] = false
-	_carve(rng, cols, rows, horizontal, vertical)
+	# The goal room: its four cells open into each other.
+	horizontal[room.y + 1][room.x] = false
+	horizontal[room.y + 1][room.x + 1] = false
+	vertical[room.x + 1][room.y] = false
+	vertical[room.x + 1][room.y + 1] = false
+	_carve(rng, cols, rows, room, horizontal, vertical)
 	# Knock out a share of the inner walls: loops let the four balls (which all roll the
 	# same way) find common routes, and no hole guards the only way through.
 	for r in range(1, rows):
@@ -61,7 +69,7 @@ static func make_catacombs() -> BoardLevel:
 	bottom["starts"] = _centres([Vector2i(0, rows - 1), Vector2i(cols - 1, rows - 1)])
 	history.commit(AddItems.new(level, bottom, "Add ball start"))
 	var holes := Items.empty_set()
-	holes["holes"] = _centres(_dead_ends(horizontal, vertical, cols, rows).slice(0, 10))
+	holes["holes"] = _centres(_dead_ends(horizontal, vertical, cols, rows).slice(0, 8))
 	history.commit(AddItems.new(level, holes, "Add black hole"))
 	# The goal room is two cells wide, like a generated maze's: the generator's ring fits
 	# inside it with its dashed line clear of the room's walls.
@@ -71,9 +79,10 @@ static func make_catacombs() -> BoardLevel:
 	return refuse_wall_in_goal_ring(level)
 
 
-## Courtyards: three square rings round the goal, two cells apart, entered through gaps
+## Courtyards: two square rings and the goal room, two cells apart, entered through gaps
 ## that alternate top and bottom, with one-cell chicanes in the corridors. Every wall after
-## the border was drawn once on the left half in mirror mode.
+## the border was drawn once on the left half in mirror mode. (It was 12 x 12 with a third
+## ring until the camera showed the whole board: its balls were then 12 px at 1280 x 720.)
 static func make_courtyards() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := maze_base(
@@ -81,39 +90,108 @@ static func make_courtyards() -> BoardLevel:
 		"courtyards",
 		"Courtyards",
 		"Wide square corridors spiral in to the goal; chicanes make you tilt with care.",
-		Vector2i(12, 12)
+		Vector2i(10, 10)
 	)
 	var axis := level.size.x * 0.5
 	# Border (the whole square; drawn in halves with mirror mode).
 	var left_half := [
-		[Vector2(0, 0), Vector2(6, 0)],
-		[Vector2(0, 0), Vector2(0, 12)],
-		[Vector2(0, 12), Vector2(6, 12)],
+		[Vector2(0, 0), Vector2(5, 0)],
+		[Vector2(0, 0), Vector2(0, 10)],
+		[Vector2(0, 10), Vector2(5, 10)],
 		# Ring two: gap of two cells in the top middle.
-		[Vector2(2, 2), Vector2(5, 2)],
-		[Vector2(2, 2), Vector2(2, 10)],
-		[Vector2(2, 10), Vector2(6, 10)],
-		# Ring four: gap of two cells in the bottom middle.
-		[Vector2(4, 4), Vector2(6, 4)],
-		[Vector2(4, 4), Vector2(4, 8)],
-		[Vector2(4, 8), Vector2(5, 8)],
+		[Vector2(2, 2), Vector2(4, 2)],
+		[Vector2(2, 2), Vector2(2, 8)],
+		[Vector2(2, 8), Vector2(5, 8)],
+		# The goal room: two cells square, open along the bottom.
+		[Vector2(4, 4), Vector2(5, 4)],
+		[Vector2(4, 4), Vector2(4, 6)],
 		# Chicanes: one-cell stubs into the corridors, alternating sides.
 		[Vector2(0, 4), Vector2(1, 4)],
-		[Vector2(2, 7), Vector2(1, 7)],
+		[Vector2(2, 6), Vector2(1, 6)],
 		[Vector2(3, 0), Vector2(3, 1)],
-		[Vector2(3, 12), Vector2(3, 11)],
-		[Vector2(2, 6), Vector2(3, 6)],
-		[Vector2(4, 2), Vector2(4, 3)],
-		[Vector2(4, 10), Vector2(4, 9)],
+		[Vector2(3, 10), Vector2(3, 9)],
+		[Vector2(2, 5), Vector2(3, 5)],
+		[Vector2(4, 8), Vector2(4, 7)],
 	]
 	for wall: Array in left_half:
 		history.commit(WallAction.new(level, wall[0] * CELL, wall[1] * CELL, axis))
 	var starts := Items.empty_set()
-	starts["starts"] = _centres([Vector2i(0, 0), Vector2i(0, 11)])
+	starts["starts"] = _centres([Vector2i(0, 0), Vector2i(0, 9)])
 	history.commit(AddItems.new(level, Mirror.mirror_set(starts, axis), "Add ball start"))
 	var holes := Items.empty_set()
-	holes["holes"] = _centres([Vector2i(1, 2), Vector2i(0, 9), Vector2i(3, 4), Vector2i(5, 3)])
+	holes["holes"] = _centres([Vector2i(1, 2), Vector2i(0, 8), Vector2i(3, 3)])
 	history.commit(AddItems.new(level, Mirror.mirror_set(holes, axis), "Add black hole"))
+	history.commit(
+		SetProperties.new(level, {"goal_radius": MazeGenerator.GOAL_RADIUS}, "Goal ring")
+	)
+	return refuse_wall_in_goal_ring(level)
+
+
+## First Roll: one ball and a corridor that folds back twice (right, down, left, down,
+## right): each tilt rolls the ball to the next turn, and the goal lies at the corridor's
+## dead end, so a ball resting there is in. The first board: it teaches tilting.
+static func make_first_roll() -> BoardLevel:
+	return _fold(
+		"first_roll",
+		"First Roll",
+		"One ball. Tilt it right, down, left, down and right again: it rests in the goal.",
+		Vector2i(5, 3),
+		[Vector2i(0, 0)]
+	)
+
+
+## Two Together: the same folding corridor, one fold longer, with two balls that roll as a
+## pair; the dead end holds both, one behind the other, inside the goal.
+static func make_two_together() -> BoardLevel:
+	return _fold(
+		"two_together",
+		"Two Together",
+		"Two balls roll one behind the other: bring both into the goal at the corridor's end.",
+		Vector2i(6, 4),
+		[Vector2i(0, 0), Vector2i(1, 0)]
+	)
+
+
+# A one-cell corridor folding back at every row (it turns down at the right end of the even
+# rows and the left end of the odd ones), balls starting in `start_cells`, and a small goal
+# at the corridor's dead end: a ball there, or two in a row, rest with their centres in it.
+static func _fold(
+	id: String, title: String, blurb: String, cells: Vector2i, start_cells: Array
+) -> BoardLevel:
+	var history := ActionHistory.new()
+	var level := maze_base(history, id, title, blurb, cells)
+	var far := Vector2(cells) * CELL
+	var walls: Array = [
+		[Vector2.ZERO, Vector2(far.x, 0.0)],
+		[Vector2(far.x, 0.0), far],
+		[far, Vector2(0.0, far.y)],
+		[Vector2(0.0, far.y), Vector2.ZERO],
+	]
+	for row in range(1, cells.y):
+		var y := row * CELL
+		# after an even row the way down is at the right end, after an odd one at the left
+		if row % 2 == 1:
+			walls.append([Vector2(0.0, y), Vector2(far.x - CELL, y)])
+		else:
+			walls.append([Vector2(CELL, y), Vector2(far.x, y)])
+	for wall: Array in walls:
+		history.commit(WallAction.new(level, wall[0], wall[1]))
+	var starts := Items.empty_set()
+	starts["starts"] = _centres(start_cells)
+	history.commit(AddItems.new(level, starts, "Add ball start"))
+	# The last row runs toward the side its fold does not open on: the dead end is there.
+	var last := cells.y - 1
+	var dead_end_right := last % 2 == 0
+	var face := far.x - level.wall_width * 0.5 if dead_end_right else level.wall_width * 0.5
+	var inward := -1.0 if dead_end_right else 1.0
+	# a ball resting at the end lies a radius from the wall's face; a second one behind it
+	# two radii further: the goal's centre between them takes both in
+	var goal := Vector2(face + inward * level.ball_radius * 2.0, (last + 0.5) * CELL)
+	history.commit(
+		SetProperties.new(
+			level, {"goal_center": goal, "goal_radius": FOLD_GOAL_RADIUS}, "Goal at the end"
+		)
+	)
 	return level
 
 
@@ -142,14 +220,20 @@ static func maze_base(
 	return level
 
 
-# Depth-first carving from the goal room: a perfect maze over every cell.
+# Depth-first carving from the goal room (its top left cell `room`): a perfect maze over
+# every cell.
 static func _carve(
-	rng: RandomNumberGenerator, cols: int, rows: int, horizontal: Array, vertical: Array
+	rng: RandomNumberGenerator,
+	cols: int,
+	rows: int,
+	room: Vector2i,
+	horizontal: Array,
+	vertical: Array
 ) -> void:
 	var seen := {}
-	for room in [Vector2i(6, 5), Vector2i(7, 5), Vector2i(6, 6), Vector2i(7, 6)]:
-		seen[room] = true
-	var stack: Array[Vector2i] = [Vector2i(6, 5)]
+	for cell: Vector2i in [room, room + Vector2i.RIGHT, room + Vector2i.DOWN, room + Vector2i.ONE]:
+		seen[cell] = true
+	var stack: Array[Vector2i] = [room]
 	var steps: Array[Vector2i] = [Vector2i.LEFT, Vector2i.RIGHT, Vector2i.UP, Vector2i.DOWN]
 	while not stack.is_empty():
 		var here: Vector2i = stack.back()

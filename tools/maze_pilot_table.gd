@@ -4,15 +4,13 @@ extends SceneTree
 ## ball came to a hole, times).
 ##   tools/godot.sh --headless --path . -s res://tools/maze_pilot_table.gd
 ## Options after `--`: `--board=ID` (one board), `--hard-seeds=N` (seeds 1..N in hard mode),
-## `--write-medals` (store medal times from the pilot's times in each board file, see
-## Medals: hard from the fastest hard win, easy from the easy run or that win if faster).
+## `--write-medals` (store medal times from the pilot's times in each board file by
+## MedalRule, and what the pilot measured in MedalRule.PILOT_RECORD).
 ## Exits 1 when a board fails easy seed 1 or hard wins fall under 80 %.
 
 const MAZE_DIR := "res://levels/maze/"
 const SECONDS := 120.0
 const HARD_TARGET := 0.8
-## Hard medal times from the easy time when the pilot never wins hard mode.
-const HARD_FALLBACK := 1.5
 
 
 func _initialize() -> void:
@@ -34,7 +32,7 @@ func _initialize() -> void:
 		if not only.is_empty() and level.board_id != only and file.get_basename() != only:
 			continue
 		var easy := MazeAutoplay.run(level, SECONDS, 1, false)
-		var easy_time: float = easy["time_to_win"]
+		var easy_time: float = MedalRule.rounded(easy["time_to_win"]) if easy["won"] else -1.0
 		if not easy["won"]:
 			easy_failed += 1
 		var wins := 0
@@ -48,7 +46,7 @@ func _initialize() -> void:
 				closest = minf(closest, float(hard["closest_hole_gap"]))
 			if hard["won"]:
 				wins += 1
-				times.append(float(hard["time_to_win"]))
+				times.append(MedalRule.rounded(hard["time_to_win"]))
 		hard_won += wins
 		hard_runs += hard_seeds
 		print(
@@ -73,23 +71,35 @@ func _initialize() -> void:
 
 
 func _write_medals(path: String, level: BoardLevel, easy: float, hard: PackedFloat64Array) -> void:
-	var sorted := hard.duplicate()
-	sorted.sort()
-	if not sorted.is_empty() and (easy <= 0.0 or sorted[0] < easy):
-		# Easy mode is the same board with the holes asleep: the hard run's way works there
-		# too, so easy medals are never slower than hard ones.
-		easy = sorted[0]
-	if easy > 0.0:
-		level.medal_times_easy = Medals.from_pilot_time(easy)
-	if not sorted.is_empty():
-		level.medal_times_hard = Medals.from_pilot_time(sorted[0])
-	elif easy > 0.0:
-		# The pilot never finished hard mode here: hard medals assume it is half as slow again.
-		level.medal_times_hard = Medals.from_pilot_time(easy * HARD_FALLBACK)
-		print("%s: no hard win, hard medals from %.1f × the easy time" % [path, HARD_FALLBACK])
+	var made := MedalRule.medal_times(easy, hard, not level.holes.is_empty())
+	level.medal_times_easy = made[0]
+	level.medal_times_hard = made[1]
+	if hard.is_empty() and not level.holes.is_empty():
+		print("%s: no hard win, hard medals from the easy time" % path)
 	var error := ResourceSaver.save(level, path)
 	if error != OK:
 		printerr("could not save %s: %s" % [path, error_string(error)])
+		return
+	var record := {}
+	if FileAccess.file_exists(MedalRule.PILOT_RECORD):
+		var old: Variant = JSON.parse_string(FileAccess.get_file_as_string(MedalRule.PILOT_RECORD))
+		if old is Dictionary:
+			record = old
+	record[level.board_id] = {
+		"board": MedalRule.fingerprint(FileAccess.get_file_as_string(path)),
+		"easy": easy,
+		"hard": Array(hard),
+	}
+	var keys := record.keys()
+	keys.sort()
+	var lines := PackedStringArray()
+	for key: String in keys:
+		lines.append("  %s: %s" % [JSON.stringify(key), JSON.stringify(record[key], "", true)])
+	var file := FileAccess.open(MedalRule.PILOT_RECORD, FileAccess.WRITE)
+	if file == null:
+		printerr("could not write %s" % MedalRule.PILOT_RECORD)
+		return
+	file.store_string("{\n%s\n}\n" % ",\n".join(lines))
 
 
 func _board_files() -> PackedStringArray:

@@ -120,6 +120,11 @@ func _paint_look() -> void:
 		material.set_shader_parameter("grain_strength", 0.5 if wood else 0.0)
 
 
+## Lights the goal's dish: 0 plain, 1 brightest (the stage fades it after a ball is counted).
+func set_goal_glow(glow: float) -> void:
+	_set_paint("goal_glow", clampf(glow, 0.0, 1.0))
+
+
 ## Shows or hides the holes.
 func set_hard_mode(hard: bool) -> void:
 	if _level == null:

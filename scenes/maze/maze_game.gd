@@ -32,8 +32,6 @@ const SIDE_EDGE := 24.0
 ## A column whose text grew (a small window) is at most this share of the window's width.
 const SIDE_MOST_SHARE := 0.36
 const PORTRAIT_SIDE_SHARE := 0.45
-## The height (px) the side panel's text takes in a portrait band, beside the joystick.
-const PORTRAIT_TEXT_HEIGHT := 380.0
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -53,6 +51,8 @@ var _ghost_view := MazeGhost3D.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
 var _side_text: MazeSideText
+## Layouts left to try again next frame while the panel has no width yet.
+var _relayouts_left := 3
 
 @onready var _stage: MazeStage = $Stage
 @onready var _side: VBoxContainer = $Side
@@ -63,6 +63,7 @@ var _side_text: MazeSideText
 @onready var _timer: Label = %Timer
 @onready var _best: Label = %Best
 @onready var _next_medal: Label = %NextMedal
+@onready var _in_goal: Label = %InGoal
 @onready var _calibrate: Button = %Calibrate
 @onready var _controls: Label = %Controls
 
@@ -105,7 +106,7 @@ func _ready() -> void:
 	rules.wall_bumped.connect(_on_wall_bumped)
 	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
-	get_viewport().size_changed.connect(_layout)
+	get_viewport().size_changed.connect(_on_size_changed)
 	_layout()
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
@@ -188,7 +189,7 @@ func _on_calibrate() -> void:
 
 
 func _on_game_reset() -> void:
-	_goal_count = 0
+	_show_goal_count(0)
 	_win_panel.hide()
 	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
 	_ghost_view.set_board_size(rules.level.size)
@@ -199,7 +200,9 @@ func _on_game_reset() -> void:
 	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
-	_note.show_note("Tilt the board to start!", MazeHints.start(rules.hard_mode))
+	_note.show_note(
+		"Tilt the board to start!", MazeHints.start(rules.hard_mode, rules.ball_total())
+	)
 	_show_best()
 
 
@@ -220,6 +223,11 @@ func _on_won(seconds: float) -> void:
 	if summary.medal != Medals.Medal.NONE:
 		# a chime on top, higher for a better medal
 		_sounds.play(SoundBank.GOAL_CHIME, -4.0, 1.0 + 0.25 * float(summary.medal))
+
+
+func _on_size_changed() -> void:
+	_relayouts_left = 3
+	_layout()
 
 
 ## Puts the side panel where the window's shape leaves room (a column on the right, or a
@@ -243,7 +251,7 @@ func _layout() -> Rect2:
 		_side.offset_top = SIDE_EDGE
 		_side.offset_bottom = -SIDE_EDGE
 		region = Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
-		_joystick.ui_scale = minf(2.0, width / MazeJoystick.drawn_size(1.0))
+		_fit_joystick(minf(2.0, width / MazeJoystick.drawn_size(1.0)), view.y - SIDE_EDGE * 2.0)
 	else:
 		var height := view.y * PORTRAIT_SIDE_SHARE
 		_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
@@ -252,17 +260,27 @@ func _layout() -> Rect2:
 		_side.offset_top = -height
 		_side.offset_bottom = -SIDE_EDGE * 0.5
 		region = Rect2(0.0, 0.0, view.x, view.y - height)
-		# the joystick takes what the band's text leaves
-		_joystick.ui_scale = clampf(
-			(height - PORTRAIT_TEXT_HEIGHT * _side_text.factor) / MazeJoystick.drawn_size(1.0),
-			0.8,
-			2.0
-		)
+		_fit_joystick(2.0, height - SIDE_EDGE * 0.5)
 	_stage.set_board_region(region)
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
 	_win_panel.size = region.size
 	return region
+
+
+# Sizes the joystick at most `largest` times the seed's size and no bigger than the height
+# the panel's other lines leave of `panel_height` (px), so the whole panel fits its place.
+func _fit_joystick(largest: float, panel_height: float) -> void:
+	var stick := MazeJoystick.drawn_size(1.0)
+	var others := _side.get_combined_minimum_size().y - _joystick.get_combined_minimum_size().y
+	if others >= panel_height and _relayouts_left > 0:
+		# the column has no width yet (its wrapping lines stand one word a line): again
+		# once it is laid out
+		_relayouts_left -= 1
+		if not get_tree().process_frame.is_connected(_layout):
+			get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)
+		return
+	_joystick.ui_scale = clampf((panel_height - others) / stick, 0.5, largest)
 
 
 ## The win panel (for tests and the screenshots).
@@ -316,10 +334,23 @@ func _on_lost(hole: int) -> void:
 	_sounds.play(SoundBank.HOLE_FALL, -9.0)
 
 
+# The rules counted a ball in (or out): the panel's count at once, and for a ball in, a
+# small chime (higher for each) and the goal's dish lit up.
 func _on_goal_count_changed(count: int) -> void:
 	if count > _goal_count:
 		_sounds.play(SoundBank.GOAL_CHIME, -10.0, 0.9 + 0.1 * float(count))
+		_stage.light_goal()
+	_show_goal_count(count)
+
+
+func _show_goal_count(count: int) -> void:
 	_goal_count = count
+	_in_goal.text = "In goal  %d / %d" % [count, rules.ball_total()]
+
+
+## The panel's "In goal 2 / 4" line (for tests).
+func goal_count_text() -> String:
+	return _in_goal.text
 
 
 func _on_wall_bumped(speed: float) -> void:

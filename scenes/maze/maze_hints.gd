@@ -12,11 +12,17 @@ static func controls() -> String:
 	)
 
 
-## The hint under "Tilt the board to start!" in easy or `hard` mode.
-static func start(hard: bool) -> String:
+## The hint under "Tilt the board to start!" in easy or `hard` mode, on a board of `balls`
+## balls (a one-ball board is the first: it says how tilting works).
+static func start(hard: bool, balls: int = 4) -> String:
 	if hard:
 		return "Hard mode: avoid the black holes. Back to easy mode? Press %s" % _easy()
-	return "Move every ball to the center. Ready for hard mode? Press %s" % _hard()
+	if balls == 1:
+		return (
+			"Tilt with the arrow keys or the joystick: the ball rolls downhill."
+			+ " Roll it into the round dip."
+		)
+	return "Roll every ball into the round dip. Ready for hard mode? Press %s" % _hard()
 
 
 ## The hint under "Congrats, you did it!" (hard mode has nothing harder to offer).

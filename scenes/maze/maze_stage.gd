@@ -12,7 +12,6 @@ const MazeBalls3D := preload("res://scenes/maze/maze_balls_3d.gd")
 const MazeTableShadow := preload("res://scenes/maze/maze_table_shadow.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const MazeFraming := preload("res://scenes/maze/maze_framing.gd")
-const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const UNITS_PER_PX := 0.01
 ## The seed's CSS perspective distance, in board pixels.
 const PERSPECTIVE_PX := 600.0
@@ -21,8 +20,8 @@ const TABLE_CLEARANCE_PX := 10.0
 ## Where the sun shines (x right, y up the screen, z out of the screen): from the upper
 ## left and in front, so shadows fall down and to the right as on a desk lamp's board.
 const SUN_DIRECTION := Vector3(0.42, -0.5, -1.0)
-## How fast a zoomed view catches up with the balls (1/s).
-const FOLLOW_RATE := 3.0
+## How fast the goal's light fades after a ball is counted in (its brightness per second).
+const GOAL_GLOW_FADE := 1.6
 ## Light energies: the ambient fill and the sun that shades.
 const AMBIENT_ENERGY := 0.28
 const SUN_ENERGY := 0.42
@@ -53,8 +52,8 @@ var _board_size := Vector2(350.0, 315.0)
 var _ball_radius := 5.0
 var _framing := MazeFraming.new()
 var _region := Rect2()
-## The box round the balls the zoomed view is easing toward (MazeFraming.balls_box).
-var _follow_box := Rect2()
+## How brightly the goal's dish glows now (0 to 1).
+var _goal_glow := 0.0
 
 
 func _ready() -> void:
@@ -89,7 +88,6 @@ func _exit_tree() -> void:
 func set_level(level: BoardLevel, hard: bool) -> void:
 	_board_size = level.size
 	_ball_radius = level.ball_radius
-	_follow_box = Rect2()
 	_board.tutorial_look = tutorial_look
 	_board.build(level, hard)
 	_balls.clear()
@@ -114,33 +112,25 @@ func set_lost_hole(index: int) -> void:
 	_board.set_lost_hole(index)
 
 
-## Moves, rolls and drops the balls to match `rules`' world (call every frame). A zoomed
-## view follows the balls and keeps every one of them on screen.
+## Moves, rolls and drops the balls to match `rules`' world (call every frame). The camera
+## stays where it is: the whole board is always in view.
 func sync_balls(rules: MazeRules, delta: float) -> void:
 	_balls.sync(rules, delta)
 	_board.set_ball_shadows(_balls.shadow_casters())
-	if _framing.zoomed:
-		_follow_balls(rules.ball_positions(), delta)
+	if _goal_glow > 0.0:
+		_goal_glow = maxf(0.0, _goal_glow - GOAL_GLOW_FADE * maxf(delta, 0.0))
+		_board.set_goal_glow(_goal_glow)
 
 
-# Eases the zoomed view toward the box round the balls, but never so slowly that a ball
-# leaves it: the view always holds the eased box and the balls' box now.
-func _follow_balls(positions: PackedVector2Array, delta: float) -> void:
-	if positions.is_empty():
-		return
-	var points := PackedVector3Array()
-	for p in positions:
-		points.append(_pivot.transform * Meshes.to_local(_board_size, p, _ball_radius))
-	var box := _framing.balls_box(points, _ball_radius * UNITS_PER_PX)
-	if not _follow_box.has_area():
-		_follow_box = box
-	var catch_up := 1.0 - exp(-FOLLOW_RATE * maxf(delta, 0.0))
-	_follow_box = Rect2(
-		_follow_box.position.lerp(box.position, catch_up), _follow_box.size.lerp(box.size, catch_up)
-	)
-	_framing.frame_box(_follow_box.merge(box))
-	_camera.size = _framing.size
-	_camera.frustum_offset = _framing.offset
+## Lights the goal's dish at once (a ball was just counted in); it fades over a moment.
+func light_goal() -> void:
+	_goal_glow = 1.0
+	_board.set_goal_glow(_goal_glow)
+
+
+## How brightly the goal's dish glows now (0 plain to 1), for tests.
+func goal_glow() -> float:
+	return _goal_glow
 
 
 ## Frames the board inside `region` (screen pixels): the part of the window the game's
@@ -150,7 +140,7 @@ func set_board_region(region: Rect2) -> void:
 	_frame()
 
 
-## How the board is framed now (its scale, zoom and where it is drawn), for tests.
+## How the board is framed now (its scale and where it is drawn), for tests.
 func framing() -> MazeFraming:
 	return _framing
 
@@ -329,13 +319,7 @@ func _frame() -> void:
 			lowest = minf(lowest, p.z)
 	_framing.distance = distance
 	_framing.near = _camera.near
-	# the window may stretch the view (project stretch settings): balls are measured on screen
-	_framing.screen_scale = (
-		get_viewport().get_final_transform().get_scale().y if is_inside_tree() else 1.0
-	)
 	_framing.fit(points, view, region, _ball_radius * 2.0 * UNITS_PER_PX)
-	if _framing.zoomed and _follow_box.has_area():
-		_framing.frame_box(_follow_box)
 	_pivot.position = Vector3.ZERO
 	_camera.position = Vector3(0.0, 0.0, distance)
 	_camera.projection = Camera3D.PROJECTION_FRUSTUM

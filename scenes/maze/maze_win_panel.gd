@@ -1,7 +1,8 @@
 extends CenterContainer
-## The card that shows over the board when a maze is won: the time, the medal earned (or
-## how far it was from the next), the change against the best time, and Next board / Retry /
-## Menu. The buttons take keyboard and gamepad focus (the first shown one gets it).
+## The card that shows over the board when a maze is won: the medal earned drawn large, the
+## time, the medal's line (or how far it was from the next), the change against the best
+## time, and Next board / Retry / Menu. The buttons take keyboard and gamepad focus (the
+## first shown one gets it).
 
 ## The player chose the next board.
 signal next_board_chosen
@@ -13,11 +14,13 @@ signal menu_chosen
 const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const MazeMedalDisc := preload("res://scenes/maze/maze_medal_disc.gd")
 const ReadableText := preload("res://scenes/common/readable_text.gd")
 const INK := Color(0.129, 0.004, 0.141)
 ## The card's colour.
 const CARD := Color(0.99, 0.97, 0.94, 0.96)
 
+var _disc := MazeMedalDisc.new()
 var _headline := Label.new()
 var _time := Label.new()
 var _medal := Label.new()
@@ -51,6 +54,8 @@ func _init() -> void:
 	_style_label(_time, 24, 1.0)
 	_style_label(_medal, 20, 1.0)
 	_style_label(_best, 17, 0.8)
+	_disc.size_flags_horizontal = Control.SIZE_SHRINK_CENTER
+	box.add_child(_disc)
 	for label: Label in [_headline, _time, _medal, _best]:
 		box.add_child(label)
 	var row := HBoxContainer.new()
@@ -88,6 +93,7 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 		if summary.medal != Medals.Medal.NONE
 		else "You did it!"
 	)
+	_disc.medal = summary.medal
 	_next.visible = has_next
 	show()
 	(_next if has_next else _retry).grab_focus.call_deferred()
@@ -96,6 +102,11 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 ## The texts shown, top to bottom (for tests).
 func texts() -> PackedStringArray:
 	return PackedStringArray([_headline.text, _time.text, _medal.text, _best.text])
+
+
+## The medal drawn large (hidden when the run earned none).
+func medal_disc() -> Control:
+	return _disc
 
 
 ## The buttons in order: Next board, Retry, Menu.

@@ -55,7 +55,7 @@ func _run() -> void:
 	var before := _count(level)
 	var data := Items.empty_set()
 	var key := "walls" if level.is_maze() else "pins"
-	var spot := level.size * 0.25
+	var spot := _spot(level)
 	data[key] = PackedVector2Array([spot, spot + Vector2(35, 0)] if level.is_maze() else [spot])
 	session.commit(AddItemsAction.new(level, data, "Self-check edit"))
 	_expect(_count(level) == before + 1, "the edit did not reach the board")
@@ -121,11 +121,20 @@ func _check_play_test(level: BoardLevel) -> void:
 	level.take_over_path(scratch_path)
 
 
+# Where the check adds its wall or pin: a quarter of the way into the board, on a grid point
+# of a maze (a wall off the grid's lines would leave gaps narrower than a ball: errors).
+static func _spot(level: BoardLevel) -> Vector2:
+	var spot := level.size * 0.25
+	if level.is_maze():
+		spot = spot.snapped(Vector2.ONE * (level.path_width + level.wall_width))
+	return spot
+
+
 # A select-tool drag of the thing just added: previewed live, one step in the scene history.
 func _check_drag(session: Session, history: UndoRedo) -> void:
 	var input := _plugin.get_board_input()
 	var item := session.level.pins.size() - 1 if session.level.is_pachinko() else -1
-	var from := session.level.pins[item] if item >= 0 else session.level.size * 0.25
+	var from := session.level.pins[item] if item >= 0 else _spot(session.level)
 	if session.level.is_maze():
 		from += Vector2(17.5, 0)  # the middle of the wall added above
 	var start := _position(session.level)

@@ -88,7 +88,7 @@ func test_the_dock_counts_the_bonus_layer_on_a_pachinko_board_only() -> void:
 		BoardDock.count_text(level), "Start pockets: 1   Attackers: 1   Tulips: 2"
 	)
 	var maze := load("res://levels/maze/catacombs.board") as BoardLevel
-	assert_eq(BoardDock.count_text(maze), "Walls: 77   Holes: 6   Ball starts: 4")
+	assert_eq(BoardDock.count_text(maze), "Walls: 47   Holes: 6   Ball starts: 4")
 
 
 func test_the_role_picker_turns_a_tulip_into_a_start_pocket_in_one_undo_step() -> void:

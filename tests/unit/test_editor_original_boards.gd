@@ -40,5 +40,5 @@ func test_boards_differ_in_character() -> void:
 	assert_gt(tulips.pins.size(), windmills.pins.size() * 2, "tulips is the dense one")
 	assert_gt(tulips.pockets.size(), windmills.pockets.size())
 	var catacombs := BoardLoader.load_board("res://levels/maze/catacombs.board").level
-	assert_eq(Vector2i(catacombs.grid_cols, catacombs.grid_rows), Vector2i(14, 12))
+	assert_eq(Vector2i(catacombs.grid_cols, catacombs.grid_rows), Vector2i(12, 9))
 	assert_gt(catacombs.holes.size(), 0)

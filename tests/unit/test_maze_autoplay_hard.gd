@@ -101,8 +101,8 @@ func test_the_planner_remembers_what_a_move_really_did() -> void:
 
 
 func test_plans_gather_the_balls_on_the_largest_board() -> void:
-	# The Deep (18 × 14 cells, 12 holes): a breadth-first search ran out of states here and
-	# the pilot never gathered the balls. Each plan may stop short; planning again from
+	# The Deep (12 holes; 18 × 14 cells then, 14 × 9 now): a breadth-first search ran out
+	# of states and the pilot never gathered the balls. Each plan may stop short; planning again from
 	# where it ends gathers them within a few plans.
 	var level := BoardLoader.load_board("res://levels/maze/the_deep.board").level
 	var grid := MazeGrid.new(level, true)

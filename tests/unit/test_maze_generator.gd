@@ -99,17 +99,19 @@ func test_no_wall_crosses_the_goal_ring_and_one_that_does_is_named() -> void:
 
 func test_every_shipped_maze_board_but_the_tutorials_keeps_its_goal_ring_clear() -> void:
 	# Every board in levels/maze, the two built with the editor's actions too (Catacombs
-	# once had three walls through its ring); Classic keeps the tutorial's own layout.
+	# once had three walls through its ring); Classic keeps the tutorial's own layout, and
+	# the two first boards put their small goal at a corridor's dead end on purpose (a ball
+	# resting there is in: test_maze_first_board wins them by holding the arrows in turn).
 	var checked: Array[String] = []
 	for loaded in BoardLoader.list_boards(BoardLevel.Kind.MAZE):
 		var id := loaded.path.get_file().get_basename()
-		if id == "classic":
+		if id in ["classic", "first_roll", "two_together"]:
 			continue
 		checked.append(id)
 		var crossing := MazeGenerator.wall_in_goal_ring(loaded.level)
 		assert_eq(crossing, -1, "%s: wall %d crosses the goal ring" % [id, crossing])
 	assert_true(checked.has("catacombs") and checked.has("courtyards"), str(checked))
-	assert_eq(checked.size(), 11, "every shipped maze but Classic: %s" % [checked])
+	assert_eq(checked.size(), 11, "every shipped maze but those three: %s" % [checked])
 
 
 func test_the_board_builder_refuses_a_wall_across_the_goal_ring() -> void:

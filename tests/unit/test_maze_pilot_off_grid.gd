@@ -1,9 +1,10 @@
 extends GutTest
 ## The maze pilot on a board with a wall off the grid's lines. QA moved one end of a
 ## Courtyards wall by one cell (the wall along y = 70 now slants from (70, 105) to
-## (175, 70)): a person still wins it, but the pilot's grid lost the whole board over that
-## one wall ("not a grid"), fell back to steering the ball nearest the goal and never got
-## more than one ball in. The grid now draws an off-grid wall onto its cell sides (those
+## (140, 70) on the 10 x 10 Courtyards; to (175, 70) on the 12 x 12 one it was found on):
+## a person still wins it, but the pilot's grid lost the whole board over that one wall
+## ("not a grid"), fell back to steering the ball nearest the goal and never got more than
+## one ball in. The grid now draws an off-grid wall onto its cell sides (those
 ## between the cells whose centres it separates), and the planner plays on.
 
 const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
@@ -39,11 +40,11 @@ func test_an_off_grid_wall_closes_the_sides_it_separates() -> void:
 	var grid := MazeGrid.new(_edited_courtyards())
 	assert_true(grid.is_grid, "one slanted wall keeps the grid")
 	assert_eq(grid.off_grid_walls, 1)
-	# it crosses the line between the centres of cells (2, 2) and (2, 3) at y = 99: closed
+	# it crosses the line between the centres of cells (2, 2) and (2, 3) at y = 96: closed
 	assert_false(grid.is_open(2, 2, 0, 1), "the slant parts (2, 2) from (2, 3) below it")
 	# the sides it left along y = 70 are open now, past its upper end still closed
 	assert_true(grid.is_open(2, 1, 0, 1), "(2, 1) opens down into (2, 2)")
-	assert_false(grid.is_open(4, 1, 0, 1), "the slant still parts (4, 1) from (4, 2)")
+	assert_false(grid.is_open(3, 1, 0, 1), "the slant still parts (3, 1) from (3, 2)")
 
 
 func test_the_shipped_mazes_lie_on_their_grids() -> void:

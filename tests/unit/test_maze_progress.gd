@@ -123,3 +123,21 @@ func _badges(card: LevelCard) -> MedalBadges:
 # Records an easy-mode finish.
 func _record(board_id: String, seconds: float) -> void:
 	App.record_maze_time(board_id, false, seconds)
+
+
+func test_the_way_in_is_one_ball_then_two_then_four() -> void:
+	var balls := PackedInt32Array()
+	for board_id in MazeProgress.ORDER:
+		var level := BoardLoader.load_board(MazeProgress.shipped_path(board_id)).level
+		balls.append(level.ball_starts.size())
+	assert_eq(balls[0], 1, "the first board has one ball")
+	assert_eq(balls[1], 2, "the second two")
+	for i in range(2, balls.size()):
+		assert_eq(balls[i], 4, "then four: %s" % MazeProgress.ORDER[i])
+
+
+func test_the_autoplay_finishes_the_first_board_in_under_30_s() -> void:
+	var first := BoardLoader.load_board(MazeProgress.shipped_path(MazeProgress.ORDER[0])).level
+	var played := MazeAutoplay.run(first, 60.0, 1, false)
+	assert_true(played["won"])
+	assert_lt(float(played["time_to_win"]), 30.0)

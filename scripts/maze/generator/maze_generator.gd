@@ -19,8 +19,8 @@ const BALL_RADIUS := 5.0
 ## walls: the floor paints the line RING_LINE px wide just outside the radius, and the walls'
 ## faces stand 35 − 5 = 30 px from the centre: 24 + 5 leaves a pixel between them.
 const GOAL_RADIUS := 24.0
-## The width of the dashed line the goal ring is drawn with, outside its radius (px; the
-## floor shader's goal_line).
+## The room kept for the goal's drawn edge outside its radius (px; the floor shader's dish
+## lip, goal_line, is 2).
 const RING_LINE := 5.0
 const HOLE_RADIUS := 9.0
 ## Share of the inner walls knocked out at difficulty 0 and at difficulty 1.

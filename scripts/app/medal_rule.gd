@@ -1,0 +1,55 @@
+class_name MedalRule
+extends RefCounted
+## Where a maze board's medal times come from: the autoplay pilot's own games on it
+## (tools/maze_pilot_table.gd --write-medals plays them and keeps what it measured in
+## PILOT_RECORD, so tests/unit/test_medal_times.gd can check every board file against it).
+## Easy medals from the pilot's easy game (seed 1), or its fastest hard win when faster (the
+## hard run's way works with the holes asleep too). Hard medals from the median of its hard
+## wins (seeds 1..5): holes make the pilot wait and go round, so where they are live hard
+## mode asks for more time. A board without holes has the same times in both modes.
+
+## The pilot's measured times per board: {board_id: {"board": fingerprint, "easy": s,
+## "hard": [s, ...]}} (JSON).
+const PILOT_RECORD := "res://tools/maze_pilot_times.json"
+## Hard medals from the easy time times this when the pilot never won hard mode.
+const HARD_FALLBACK := 1.5
+
+
+## [easy medal times, hard medal times] (each [gold, silver, bronze], see Medals) from the
+## pilot's easy time (`easy` <= 0: it lost), its hard wins' times, and whether the board has
+## holes.
+static func medal_times(easy: float, hard_wins: PackedFloat64Array, has_holes: bool) -> Array:
+	var sorted := hard_wins.duplicate()
+	sorted.sort()
+	var easy_base := easy
+	if not sorted.is_empty() and (easy_base <= 0.0 or sorted[0] < easy_base):
+		easy_base = sorted[0]
+	var hard_base := easy_base
+	if has_holes:
+		hard_base = _median(sorted) if not sorted.is_empty() else easy_base * HARD_FALLBACK
+	var easy_times := Medals.from_pilot_time(easy_base) if easy_base > 0.0 else PackedFloat64Array()
+	var hard_times := Medals.from_pilot_time(hard_base) if hard_base > 0.0 else PackedFloat64Array()
+	return [easy_times, hard_times]
+
+
+## What the pilot's record says a board was when it was measured: the board file's text
+## without its medal_times line, as a SHA-256 (any other change to the board changes it).
+static func fingerprint(board_text: String) -> String:
+	var kept := PackedStringArray()
+	for line in board_text.split("\n"):
+		if not line.begins_with('{"medal_times"'):
+			kept.append(line)
+	return "\n".join(kept).sha256_text()
+
+
+## A pilot time as the record keeps it (milliseconds).
+static func rounded(seconds: float) -> float:
+	return roundf(seconds * 1000.0) / 1000.0
+
+
+static func _median(sorted: PackedFloat64Array) -> float:
+	var n := sorted.size()
+	var half := floori(n * 0.5)
+	if n % 2 == 1:
+		return sorted[half]
+	return (sorted[half - 1] + sorted[half]) * 0.5
