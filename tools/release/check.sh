@@ -9,7 +9,9 @@
 #       folder, and it printed none of the warnings a player should not see (fontconfig,
 #       XKB, ALSA, GL loader);
 #   (c) no ELF in the folder names a path outside it (tools/release/elf_paths.py);
-#   (d) a missing and a damaged file each get the launcher's one sentence naming the file.
+#   (d) a missing and a damaged file each get the launcher's one sentence naming the file;
+#   (e) the GUT suites (the test pack of tools/release_tests.sh) on the folder's own engine
+#       and libraries inside the root.
 # Prints SKIPPED with the reason and exits 77 when this machine cannot do it (no root, no
 # debootstrap, no Debian archive, no Xvfb). Exits 1 when a check fails.
 set -uo pipefail
@@ -163,6 +165,31 @@ else
 		"$REPORT/window.log" | head -n 5)
 	if [ -n "$noise" ]; then fail "the window printed warnings a player should not see: $noise"; else ok "no fontconfig, XKB, ALSA or GL loader warnings"; fi
 fi
+
+# (e) the GUT suites on the folder's own engine and libraries, inside the root: the test
+# pack (tools/release_tests.sh --pack) beside a copy of the folder's loader named "tests",
+# so the release template loads tests.pck as it loads the game's pack
+packed=$(mktemp -d)
+if tools/release_tests.sh --pack "$packed" >"$REPORT/test-pack.log" 2>&1; then
+	engine_dir=$scratch/$folder_name/engine
+	cp "$packed/tests.pck" "$packed/fixtures.pck" "$engine_dir/"
+	cp "$engine_dir/board-studio" "$engine_dir/tests"
+	started=$(date +%s)
+	in_root '' timeout 1800 "$game/engine/tests" --library-path "$game/engine/lib" \
+		"$game/engine/godot" --headless -gtest="$(paste -sd, "$packed/tests.list")" \
+		-gjunit_xml_file="$work/release-tests.xml" -glog=1 -gexit >"$REPORT/release-tests.log" 2>&1
+	cp "$scratch/release-tests.xml" "$REPORT/release-tests.xml" 2>/dev/null
+	read -r passed_in_root failed_in_root < <(python3 tools/junit_counts.py "$REPORT/release-tests.xml")
+	if [ "$passed_in_root" -gt 0 ] && [ "$failed_in_root" = 0 ]; then
+		ok "the GUT suites on the folder's engine in the Debian 12 root: $passed_in_root passed ($(($(date +%s) - started)) s)"
+	else
+		fail "the GUT suites in the Debian 12 root: $passed_in_root passed, $failed_in_root failed (log: $REPORT/release-tests.log)"
+	fi
+	rm -f "$engine_dir/tests" "$engine_dir/tests.pck" "$engine_dir/fixtures.pck"
+else
+	fail "the test pack could not be made (log: $REPORT/test-pack.log)"
+fi
+rm -rf "$packed"
 
 # (d) a missing and a damaged file, each named in one sentence
 victim=engine/lib/libz.so.1
