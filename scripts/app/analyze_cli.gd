@@ -35,7 +35,7 @@ static func run(values: Dictionary) -> int:
 	var name := "%s_%s" % [game, board_name.get_file().get_basename()]
 	var folder := _out_folder(str(values.get("out", "")))
 	if folder.has("error"):
-		return _fail(EXIT_BAD_INPUT, folder["error"])
+		return _fail(EXIT_BAD_INPUT, str(folder["error"]))
 	var base := str(folder["shown"]).path_join(name)
 	var abs_base := str(folder["dir"]).path_join(name)
 	var report: Dictionary

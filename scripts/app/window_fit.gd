@@ -30,7 +30,9 @@ static func remembered_size(remembered: Vector2i, usable: Vector2i) -> Vector2i:
 
 ## The top-left corner that centres a window of `size` in the usable area `usable`.
 static func centred(size: Vector2i, usable: Rect2i) -> Vector2i:
-	return usable.position + ((usable.size - size) / 2).max(Vector2i.ZERO)
+	@warning_ignore("integer_division")  # whole pixels: half a pixel more on one side is fine
+	var margin := ((usable.size - size) / 2).max(Vector2i.ZERO)
+	return usable.position + margin
 
 
 ## Sizes and centres the game's main window for its screen: `remembered` is the player's

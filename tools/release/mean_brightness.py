@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Prints the mean brightness (0-255) of a binary PPM (P6) image, such as xwdtopnm writes.
+"""Prints the mean brightness (0-255) of a binary PPM (P6) image, such as xwdtopnm writes
+(8-bit samples, or 16-bit ones, which some netpbm releases write for a 24-bit screen).
 
 The release check tells the dark menus from the light maze board with it.
 Usage: mean_brightness.py IMAGE.ppm
@@ -27,13 +28,25 @@ def _header_fields(data):
 def mean_brightness(data):
     """The mean of every channel of every pixel of a P6 image with 8-bit samples."""
     fields, start = _header_fields(data)
-    if fields[0] != b"P6" or int(fields[3]) > 255:
-        raise ValueError("not an 8-bit binary PPM")
+    maxval = int(fields[3])
+    if fields[0] != b"P6" or not 0 < maxval <= 65535:
+        raise ValueError("not a binary PPM")
     width, height = int(fields[1]), int(fields[2])
-    pixels = data[start:start + width * height * 3]
-    if len(pixels) < width * height * 3:
+    sample_bytes = 1 if maxval <= 255 else 2
+    size = width * height * 3 * sample_bytes
+    pixels = data[start:start + size]
+    if len(pixels) < size:
         raise ValueError("the image is cut short")
-    return sum(pixels) / len(pixels)
+    if sample_bytes == 1:
+        return sum(pixels) * 255 / (len(pixels) * maxval)
+    samples = memoryview(pixels).cast("H") if sys.byteorder == "big" else None
+    total = sum(samples) if samples is not None else _big_endian_sum(pixels)
+    return total * 255 / ((len(pixels) // 2) * maxval)
+
+
+def _big_endian_sum(pixels):
+    """The sum of 16-bit big-endian samples (PPM's order) on a little-endian machine."""
+    return sum(pixels[0::2]) * 256 + sum(pixels[1::2])
 
 
 def main(argv):

@@ -65,15 +65,22 @@ session() { # number
 	local pid=$!
 	window=
 	for _ in $(seq 60); do
-		window=$(xdotool search --name "Board Studio" 2>/dev/null | head -n 1)
+		window=$(xdotool search --onlyvisible --name "Board Studio" 2>/dev/null | head -n 1)
 		[ -n "$window" ] && break
 		sleep 0.5
 	done
 	[ -n "$window" ] || { fail "session $1: no window appeared"; kill "$pid"; return; }
 	sleep 8
 	shoot "$1" 1-menu
-	read -r width height < <(xdotool getwindowgeometry "$window" |
-		sed -n 's/^ *Geometry: \([0-9]*\)x\([0-9]*\)$/\1 \2/p')
+	local width= height=
+	WIDTH= HEIGHT=
+	for _ in $(seq 5); do
+		eval "$(xdotool getwindowgeometry --shell "$window" 2>/dev/null | grep -E '^(WIDTH|HEIGHT)=[0-9]+$')"
+		width=${WIDTH:-}
+		height=${HEIGHT:-}
+		[ -n "$width" ] && break
+		sleep 1
+	done
 	if [ "${width:-9999}" -le 900 ] && [ "${height:-9999}" -le 700 ]; then
 		ok "session $1: the window is ${width}x${height} on a 900x700 screen"
 	else
