@@ -186,21 +186,10 @@ static func _number(row: Array, index: int) -> float:
 
 
 static func _save(level: BoardLevel, path: String) -> bool:
-	_keep_medals(level, path)
+	MedalRule.keep_file_medals(level, path)
 	var error := ResourceSaver.save(level, path)
 	if error != OK:
 		push_error("make_classic_boards: could not write %s (%s)" % [path, error_string(error)])
 		return false
 	print("wrote %s" % path)
 	return true
-
-
-# Medal times come from the pilot's measurements (tools/maze_pilot_table.gd --write-medals),
-# not from the recipe: a maze keeps the ones its file already has.
-static func _keep_medals(level: BoardLevel, path: String) -> void:
-	if not level.is_maze() or not FileAccess.file_exists(path):
-		return
-	var old := BoardLoader.load_board(path)
-	if old.level != null:
-		level.medal_times_easy = old.level.medal_times_easy
-		level.medal_times_hard = old.level.medal_times_hard

@@ -127,7 +127,7 @@ func _initialize() -> void:
 			continue
 		var level: BoardLevel = made["level"]
 		var path := "res://levels/maze/%s.board" % settings.id
-		_keep_medals(level, path)
+		MedalRule.keep_file_medals(level, path)
 		var error := ResourceSaver.save(level, path)
 		if error != OK:
 			printerr("%s: could not save (%s)" % [path, error_string(error)])
@@ -135,13 +135,3 @@ func _initialize() -> void:
 			continue
 		print("%s: %d × %d, %d holes" % [path, settings.cols, settings.rows, made["holes_placed"]])
 	quit(1 if failed else 0)
-
-
-# Medal times belong to the pilot's measurements, not to the layout: keep the old ones.
-func _keep_medals(level: BoardLevel, path: String) -> void:
-	if not FileAccess.file_exists(path):
-		return
-	var old := BoardLoader.load_board(path)
-	if old.level != null:
-		level.medal_times_easy = old.level.medal_times_easy
-		level.medal_times_hard = old.level.medal_times_hard

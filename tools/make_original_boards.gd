@@ -200,7 +200,7 @@ static func _save(level: BoardLevel) -> bool:
 		push_error("make_original_boards: %s has %d errors." % [level.board_id, errors.size()])
 		return false
 	var path := "res://levels/%s/%s.board" % [kind, id]
-	_keep_medals(level, path)
+	MedalRule.keep_file_medals(level, path)
 	# The file's uid lives in its .board.uid sidecar, which saving leaves alone.
 	var error := ResourceSaver.save(level, path)
 	if error != OK:
@@ -229,14 +229,3 @@ static func _save(level: BoardLevel) -> bool:
 		)
 	)
 	return true
-
-
-# Medal times belong to the pilot's measurements (tools/maze_pilot_table.gd --write-medals),
-# not to the layout: a maze keeps the ones its file has.
-static func _keep_medals(level: BoardLevel, path: String) -> void:
-	if not level.is_maze() or not FileAccess.file_exists(path):
-		return
-	var old := BoardLoader.load_board(path)
-	if old.level != null:
-		level.medal_times_easy = old.level.medal_times_easy
-		level.medal_times_hard = old.level.medal_times_hard

@@ -47,6 +47,18 @@ static func rounded(seconds: float) -> float:
 	return roundf(seconds * 1000.0) / 1000.0
 
 
+## Gives a remade maze the medal times its file at `path` already holds: the times belong to
+## the pilot's measurements (tools/maze_pilot_table.gd --write-medals), not to the recipe
+## that builds the layout (the board generators call this before they save).
+static func keep_file_medals(level: BoardLevel, path: String) -> void:
+	if not level.is_maze() or not FileAccess.file_exists(path):
+		return
+	var old := BoardLoader.load_board(path)
+	if old.level != null:
+		level.medal_times_easy = old.level.medal_times_easy
+		level.medal_times_hard = old.level.medal_times_hard
+
+
 static func _median(sorted: PackedFloat64Array) -> float:
 	var n := sorted.size()
 	var half := floori(n * 0.5)
