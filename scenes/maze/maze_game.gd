@@ -317,7 +317,7 @@ func _show_next_medal() -> void:
 	if times.size() != 3:
 		_next_medal.text = ""
 	elif medal == Medals.Medal.NONE:
-		_next_medal.text = "No medal left this run: finish anyway!"
+		_next_medal.text = "No medal left: finish anyway!"
 	else:
 		var seconds: float = target["seconds"]
 		_next_medal.text = "%s by %s" % [Medals.name_of(medal), _format_time(seconds)]
