@@ -16,6 +16,8 @@ var plan: AnalysisPlan
 var phase := Phase.IDLE
 ## Seconds from start to done (wall clock).
 var wall_seconds := 0.0
+## Set before start() to time the run's stages into it (AnalysisProfile); null: untimed.
+var profile: AnalysisProfile = null
 
 var _launch_table: LaunchTable
 var _table := RailExitTable.new()
@@ -45,7 +47,11 @@ func run() -> AnalysisTally:
 		if _task >= 0:
 			WorkerThreadPool.wait_for_group_task_completion(_task)
 			_task = -1
-	return tally()
+	var mark := Time.get_ticks_usec()
+	var merged := tally()
+	if profile != null:
+		profile.add_usec(AnalysisProfile.Stage.MERGE, Time.get_ticks_usec() - mark)
+	return merged
 
 
 ## Begins the analysis in the background. False (with an error) for a bad plan.
@@ -57,6 +63,8 @@ func start() -> bool:
 	_started_usec = Time.get_ticks_usec()
 	# Measured here, on one thread: LaunchCalibration's cache is not thread-safe.
 	_launch_table = LaunchCalibration.table(plan.level)
+	if profile != null:
+		profile.add_usec(AnalysisProfile.Stage.LAUNCH_TABLE, Time.get_ticks_usec() - _started_usec)
 	var needed := PackedByteArray()
 	needed.resize(AnalysisPlan.level_count())
 	for c in plan.chunk_count():
@@ -151,9 +159,14 @@ func _launch(job: Callable, count: int) -> void:
 func _climb_group(g: int) -> void:
 	if _cancelled:
 		return
-	var part := RailClimber.climb_group(plan.level, _launch_table, _groups[g])
+	var mark := Time.get_ticks_usec()
+	var timed := AnalysisProfile.new() if profile != null else null
+	var part := RailClimber.climb_group(plan.level, _launch_table, _groups[g], timed)
 	_mutex.lock()
 	_group_results[g] = part
+	if timed != null:
+		timed.add_usec(AnalysisProfile.Stage.CLIMB, Time.get_ticks_usec() - mark)
+		profile.add(timed)
 	_mutex.unlock()
 
 
@@ -162,15 +175,20 @@ func _run_chunk(c: int) -> void:
 		return
 	var stop := func() -> bool: return _cancelled
 	var counts: AnalysisTally = null
+	var timed: AnalysisProfile = null
 	if plan.played:
 		var played := PlayedShotChunk.new(plan, _launch_table, _table)
 		counts = played.tally if played.run(c, stop) else null
 	else:
 		var lone := PachinkoShotChunk.new(plan, _launch_table, _table)
+		lone.profile = AnalysisProfile.new() if profile != null else null
 		counts = lone.tally if lone.run(c, stop) else null
+		timed = lone.profile
 	if counts == null:
 		return
 	_mutex.lock()
 	_chunk_results[c] = counts
 	_chunks_done += 1
+	if timed != null:
+		profile.add(timed)
 	_mutex.unlock()

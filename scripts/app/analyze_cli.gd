@@ -46,6 +46,8 @@ static func run(values: Dictionary) -> int:
 		plan.threads = threads
 		plan.played = values.get("played", false)
 		var analysis := PachinkoAnalysis.new(plan)
+		if values.get("profile", false):
+			analysis.profile = AnalysisProfile.new()
 		var tally := analysis.run()
 		if tally == null:
 			return _fail(EXIT_BAD_INPUT, plan.problem())
@@ -53,9 +55,15 @@ static func run(values: Dictionary) -> int:
 		if not loaded.level.bonus_pockets.is_empty():
 			# The same shots again with the bonus pockets held open, for BonusEstimate.
 			open_tally = PachinkoAnalysis.new(plan.with_bonus_open()).run()
+		var mark := Time.get_ticks_usec()
 		report = AnalysisReport.build(plan, tally, analysis.wall_seconds, open_tally)
 		report["heatmap"] = base + ".png"
 		var png_error := HeatmapImage.render(loaded.level, tally).save_png(abs_base + ".png")
+		if analysis.profile != null:
+			report["profile"] = analysis.profile.to_dict()
+			report["profile"]["report_and_heatmap_s"] = snappedf(
+				(Time.get_ticks_usec() - mark) / 1e6, 0.001
+			)
 		if png_error != OK:
 			return _fail(
 				EXIT_FAILED, "could not write %s (%s)" % [base + ".png", error_string(png_error)]

@@ -166,6 +166,18 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--analyze=pachinko --board=classic --played",
 	},
 	{
+		"flag": "--profile",
+		"for": ["--analyze"],
+		"value": Value.NONE,
+		"default": false,
+		"help":
+		(
+			'Pachinko: add a "profile" entry to the report, the seconds each stage of the'
+			+ " analysis took (rail climbs, chunk set-up, stepping, samples, tally)."
+		),
+		"example": "--analyze=pachinko --board=classic --threads=1 --profile",
+	},
+	{
 		"flag": "--runs",
 		"for": ["--analyze"],
 		"value": Value.WHOLE,
