@@ -54,6 +54,20 @@ func run() -> AnalysisTally:
 	return merged
 
 
+## Hands this analysis the rail climbs of an earlier one on the same board (its
+## climb_table()): call before start(). When they hold every power level the plan fires,
+## the climbs are not run again (a rail climb never depends on the plan: the climb world
+## has the bonus parts shut, as BoardWorldFactory builds them), and the figures are the same.
+func reuse_climbs(table: RailExitTable) -> void:
+	if phase == Phase.IDLE and table != null:
+		_table = table
+
+
+## The rail climbs the analysis ran or was handed (complete once it is done).
+func climb_table() -> RailExitTable:
+	return _table
+
+
 ## Begins the analysis in the background. False (with an error) for a bad plan.
 func start() -> bool:
 	var problem := plan.problem()
@@ -70,7 +84,9 @@ func start() -> bool:
 	for c in plan.chunk_count():
 		for q in plan.chunk_levels(c):
 			needed[q] = 1
-	_groups = RailExitTable.groups_for(needed)
+	if not _covers(_table, needed):
+		_table = RailExitTable.new()
+		_groups = RailExitTable.groups_for(needed)
 	_group_results.resize(_groups.size())
 	_chunk_results.resize(plan.chunk_count())
 	phase = Phase.CLIMBS
@@ -139,6 +155,14 @@ func tally() -> AnalysisTally:
 		merged.merge(chunk_tally)
 	_mutex.unlock()
 	return merged
+
+
+# True when `table` holds the climb of every level `needed` marks.
+static func _covers(table: RailExitTable, needed: PackedByteArray) -> bool:
+	for q in needed.size():
+		if needed[q] != 0 and table.fate[q] == RailExitTable.Fate.UNKNOWN:
+			return false
+	return true
 
 
 # Runs `job(index)` for index 0..count-1: on this thread for a blocking one-thread run,

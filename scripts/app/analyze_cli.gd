@@ -54,7 +54,10 @@ static func run(values: Dictionary) -> int:
 		var open_tally: AnalysisTally = null
 		if not loaded.level.bonus_pockets.is_empty():
 			# The same shots again with the bonus pockets held open, for BonusEstimate.
-			open_tally = PachinkoAnalysis.new(plan.with_bonus_open()).run()
+			# Its rail climbs are the first run's (the climb world keeps the bonus parts shut).
+			var open_run := PachinkoAnalysis.new(plan.with_bonus_open())
+			open_run.reuse_climbs(analysis.climb_table())
+			open_tally = open_run.run()
 		var mark := Time.get_ticks_usec()
 		report = AnalysisReport.build(plan, tally, analysis.wall_seconds, open_tally)
 		report["heatmap"] = base + ".png"
