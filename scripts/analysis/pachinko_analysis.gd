@@ -134,6 +134,19 @@ func progress() -> float:
 	return float(done) / maxf(plan.chunk_count(), 1)
 
 
+## Share of the rail climbs done, 0..1 (by climb groups; 1 once the shots began).
+func climb_progress() -> float:
+	if phase != Phase.CLIMBS:
+		return 1.0 if phase != Phase.IDLE else 0.0
+	var done := 0
+	_mutex.lock()
+	for part in _group_results:
+		if part != null:
+			done += 1
+	_mutex.unlock()
+	return float(done) / maxf(_groups.size(), 1)
+
+
 ## Shots finished so far (the chunks done, whole).
 func shots_done() -> int:
 	var t := tally()

@@ -21,7 +21,10 @@ static func run(values: Dictionary) -> int:
 	var game: String = values["analyze"]
 	var rng_seed: int = values["seed"]
 	var board_name := str(values["board"])
-	var loaded := BoardLoader.load_board(AutoplayCli.resolve_board_path(game, board_name))
+	var roots := BoardLoader.BOARD_ROOTS.duplicate()
+	if not str(values.get("tally", "")).is_empty():
+		roots.append(AnalysisWorker.FOLDER + "/")  # the editor's worker reads its board there
+	var loaded := BoardLoader.load_board(AutoplayCli.resolve_board_path(game, board_name), roots)
 	if loaded.level == null:
 		return _fail(EXIT_BAD_INPUT, loaded.error)
 	var threads: int = values.get("threads", OS.get_processor_count())
@@ -45,6 +48,8 @@ static func run(values: Dictionary) -> int:
 		var plan := AnalysisPlan.create(loaded.level, shots, rng_seed)
 		plan.threads = threads
 		plan.played = values.get("played", false)
+		if not str(values.get("tally", "")).is_empty():
+			return _run_worker(plan, str(values["tally"]))
 		var analysis := PachinkoAnalysis.new(plan)
 		if values.get("profile", false):
 			analysis.profile = AnalysisProfile.new()
@@ -81,6 +86,60 @@ static func run(values: Dictionary) -> int:
 	file.close()
 	print(text)
 	return 0
+
+
+# Worker mode (`--tally=FILE`, AnalysisWorker): runs the plan and writes only its counts,
+# FILE (AnalysisTally.to_bytes()) at the end; meanwhile FILE.status (JSON: phase, climbs
+# 0..1, shots_done, shots) and FILE.part (the counts of the chunks done so far) as they
+# change, each replaced whole (written aside, then renamed), so a reader never sees half.
+static func _run_worker(plan: AnalysisPlan, path: String) -> int:
+	var analysis := PachinkoAnalysis.new(plan)
+	if not analysis.start():
+		return _fail(EXIT_BAD_INPUT, plan.problem())
+	var last_status := ""
+	var last_chunks := 0.0
+	var shots_done := 0
+	while true:
+		var done := analysis.poll()
+		var chunks := analysis.progress()
+		if chunks != last_chunks or done:
+			last_chunks = chunks
+			var part := analysis.tally()
+			if part != null:
+				shots_done = part.total_shots()
+				if not done and not _replace(path + ".part", part.to_bytes()):
+					return _fail(EXIT_FAILED, "could not write %s.part" % path)
+		var status := {
+			"phase": "done" if done else PachinkoAnalysis.Phase.keys()[analysis.phase].to_lower(),
+			"climbs": snappedf(analysis.climb_progress(), 0.001),
+			"shots_done": shots_done,
+			"shots": plan.shots,
+		}
+		var text := JSON.stringify(status)
+		if text != last_status:
+			last_status = text
+			_replace(path + ".status", text.to_utf8_buffer())
+		if done:
+			break
+		OS.delay_msec(50)
+	var tally := analysis.tally()
+	if tally == null or not _replace(path, tally.to_bytes()):
+		return _fail(EXIT_FAILED, "could not write %s" % path)
+	var line := {"ok": true, "tally": path, "shots": tally.total_shots()}
+	line["wall_s"] = snappedf(analysis.wall_seconds, 0.001)
+	print(JSON.stringify(line))
+	return 0
+
+
+# Writes `bytes` to `path` whole: into a file beside it, then renamed over it.
+static func _replace(path: String, bytes: PackedByteArray) -> bool:
+	var aside := path + ".tmp"
+	var file := FileAccess.open(aside, FileAccess.WRITE)
+	if file == null:
+		return false
+	file.store_buffer(bytes)
+	file.close()
+	return DirAccess.rename_absolute(aside, path) == OK
 
 
 static func _out_dir() -> String:

@@ -178,6 +178,18 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--analyze=pachinko --board=classic --threads=1 --profile",
 	},
 	{
+		"flag": "--tally",
+		"for": ["--analyze"],
+		"value": Value.TEXT,
+		"placeholder": "FILE",
+		"help":
+		(
+			"Pachinko, worker mode (the editor's Analyze runs it): write only the counts to"
+			+ " FILE, with FILE.status and FILE.part while it runs; no report, no heat map."
+		),
+		"example": "--analyze=pachinko --board=classic --tally=/tmp/classic.tally",
+	},
+	{
 		"flag": "--runs",
 		"for": ["--analyze"],
 		"value": Value.WHOLE,
