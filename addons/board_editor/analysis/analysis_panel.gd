@@ -1,10 +1,10 @@
 @tool
 extends VBoxContainer
 ## The dock's play-analysis section: Analyze fires AnalysisPlan.EDITOR_SHOTS shots at the
-## board in a worker process (AnalysisWorker: the game binary headless, on every core, at
-## the command line's speed, never holding up the editor), or on worker threads of the
-## editor (PachinkoAnalysis) where no worker can run, with a progress bar and Cancel; the
-## figures and the heat map update as chunks of shots finish.
+## board on worker threads of the editor (PachinkoAnalysis), or with `use_worker` in a
+## worker process (AnalysisWorker: the game binary headless, on every core), while the
+## editor stays responsive, with a progress bar and Cancel; the figures and the heat map
+## update as chunks of shots finish.
 ## A finished run is cached per board content (AnalysisCache), so reopening a board, or
 ## undoing back to an analysed state, shows its figures at once. The overlay itself is
 ## drawn by analysis_overlay_draw.gd when the plugin calls draw_over().
@@ -31,8 +31,11 @@ const UPDATE_MS := 400
 ## Shots a run fires (tests fire fewer).
 var shots := AnalysisPlan.EDITOR_SHOTS
 ## True runs the analysis in a worker process when one can start (AnalysisWorker.available);
-## false, or a worker that fails, runs it on the editor's own threads.
-var use_worker := true
+## false, or a worker that fails, runs it on the editor's own threads. Off for now: on this
+## 2-core machine shared with other work (load 7-11), 10000 shots on Classic took 74-110 s
+## in the worker against 35-76 s on the editor's threads (tools/editor_analysis_shot.sh),
+## the worker getting about a third of a core; to be measured again on a quiet machine.
+var use_worker := false
 
 var _level: BoardLevel
 var _key := ""
