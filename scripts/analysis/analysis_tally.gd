@@ -141,11 +141,15 @@ static func from_bytes(bytes: PackedByteArray) -> AnalysisTally:
 		if not fields.get(key) is PackedInt64Array:
 			return null
 		tally.set(key, fields[key])
-	tally.pocket_count = int(fields.get("pocket_count", 0))
-	tally.entry_width = int(fields.get("entry_width", 1))
+	var pockets: int = fields.get("pocket_count", 0)
+	var width: int = fields.get("entry_width", 1)
+	var steps_run: int = fields.get("steps", 0)
+	var ball_steps_run: int = fields.get("ball_steps", 0)
+	tally.pocket_count = pockets
+	tally.entry_width = width
 	tally.grid_size = fields["grid_size"]
-	tally.steps = int(fields.get("steps", 0))
-	tally.ball_steps = int(fields.get("ball_steps", 0))
+	tally.steps = steps_run
+	tally.ball_steps = ball_steps_run
 	var bands := tally.band_shots.size()
 	if (
 		bands != tally.band_count

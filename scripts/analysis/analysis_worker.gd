@@ -146,14 +146,16 @@ func cancel() -> void:
 func progress() -> float:
 	if phase == Phase.DONE:
 		return 1.0
-	return float(_status.get("shots_done", 0)) / maxf(plan.shots, 1)
+	var said: float = _status.get("shots_done", 0.0)
+	return said / maxf(plan.shots, 1)
 
 
 ## Share of the rail climbs done, 0..1 (as the worker last said).
 func climb_progress() -> float:
 	if phase == Phase.DONE or phase == Phase.SHOTS:
 		return 1.0
-	return float(_status.get("climbs", 0.0))
+	var share: float = _status.get("climbs", 0.0)
+	return share
 
 
 ## The worker's counts so far (all of them once done); null before any chunk finished.
@@ -175,7 +177,7 @@ func _read_status() -> void:
 # Reads the counts so far when the worker's status says it has more than were read.
 func _read_part() -> void:
 	var path := _tally_path + ".part"
-	var said := int(_status.get("shots_done", 0))
+	var said: int = _status.get("shots_done", 0)
 	if said <= (_counts.total_shots() if _counts != null else 0):
 		return
 	if not FileAccess.file_exists(path):
@@ -186,7 +188,7 @@ func _read_part() -> void:
 
 
 func _remove_files() -> void:
-	for path in [
+	var paths: Array[String] = [
 		ProjectSettings.globalize_path(_board_path),
 		_tally_path,
 		_tally_path + ".status",
@@ -194,6 +196,7 @@ func _remove_files() -> void:
 		_tally_path + ".tmp",
 		_tally_path + ".status.tmp",
 		_tally_path + ".part.tmp",
-	]:
+	]
+	for path: String in paths:
 		if not path.is_empty() and FileAccess.file_exists(path):
 			DirAccess.remove_absolute(path)

@@ -109,8 +109,9 @@ static func _run_worker(plan: AnalysisPlan, path: String) -> int:
 				shots_done = part.total_shots()
 				if not done and not _replace(path + ".part", part.to_bytes()):
 					return _fail(EXIT_FAILED, "could not write %s.part" % path)
+		var phase_name: String = PachinkoAnalysis.Phase.keys()[analysis.phase]
 		var status := {
-			"phase": "done" if done else PachinkoAnalysis.Phase.keys()[analysis.phase].to_lower(),
+			"phase": "done" if done else phase_name.to_lower(),
 			"climbs": snappedf(analysis.climb_progress(), 0.001),
 			"shots_done": shots_done,
 			"shots": plan.shots,
