@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # make bench: runs every tests/bench/bench_*.gd headless (each writes build/bench/<name>.json)
 # and fails if any of them fails. Nothing is pinned: BallWorld steps its per-ball stages on
-# every core, and GodotPhysics2D gets the same cores for its worker pool.
+# every core, and GodotPhysics2D gets the same cores for its worker pool. bench_analysis.gd
+# times the pachinko play analysis (shots/s on Classic and Fever, 1 thread and every core).
 # Arguments go to the benchmarks: `tools/bench.sh --only=S4` is a quick look at one scenario
 # (bench_physics.gd reads it; the others ignore it).
 set -uo pipefail

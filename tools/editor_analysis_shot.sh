@@ -3,6 +3,8 @@
 # on a board scene (SCENE=, pachinko classic by default; a maze scene analyses the maze), presses Analyze in the board dock (the hook
 # tools/shots/editor_analysis_hook.gd), waits for the run and saves the editor window.
 #   tools/editor_analysis_shot.sh [out.png]     default build/shots/editor_analysis.png
+# EDITOR_ANALYSIS_IDLE_EDITOR=1 times the run with the editor in its default low-processor mode
+# (it draws what changes, as a designer's editor does) instead of drawing every frame.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"

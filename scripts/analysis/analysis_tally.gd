@@ -7,6 +7,19 @@ extends RefCounted
 ## What a shot ended as.
 enum Outcome { POCKETED, DRAINED, RETURNED, STUCK }
 
+## The count arrays to_bytes() saves.
+const SAVED_ARRAYS: Array[String] = [
+	"band_shots",
+	"band_returned",
+	"band_drained",
+	"band_stuck",
+	"band_value",
+	"band_value_sq",
+	"band_pocket_hits",
+	"band_entry",
+	"density",
+]
+
 var pocket_count := 0
 var band_count := AnalysisPlan.BAND_COUNT
 ## Per band: shots fired, shots rolled back, drained, stuck.
@@ -101,6 +114,51 @@ func merge(other: AnalysisTally) -> void:
 	_add_into(density, other.density)
 	steps += other.steps
 	ball_steps += other.ball_steps
+
+
+## The counts as bytes (var_to_bytes of plain data, no objects): what an analysis worker
+## process hands back to the editor (AnalysisWorker). from_bytes() reads them.
+func to_bytes() -> PackedByteArray:
+	var fields := {"pocket_count": pocket_count, "entry_width": entry_width}
+	fields["grid_size"] = grid_size
+	fields["steps"] = steps
+	fields["ball_steps"] = ball_steps
+	for key in SAVED_ARRAYS:
+		fields[key] = get(key)
+	return var_to_bytes(fields)
+
+
+## A tally read back from to_bytes(), or null when `bytes` are not one.
+static func from_bytes(bytes: PackedByteArray) -> AnalysisTally:
+	var data: Variant = bytes_to_var(bytes) if bytes.size() >= 4 else null
+	if not data is Dictionary:
+		return null
+	var fields: Dictionary = data
+	var tally := AnalysisTally.new()
+	if not fields.get("grid_size") is Vector2i:
+		return null
+	for key in SAVED_ARRAYS:
+		if not fields.get(key) is PackedInt64Array:
+			return null
+		tally.set(key, fields[key])
+	var pockets: int = fields.get("pocket_count", 0)
+	var width: int = fields.get("entry_width", 1)
+	var steps_run: int = fields.get("steps", 0)
+	var ball_steps_run: int = fields.get("ball_steps", 0)
+	tally.pocket_count = pockets
+	tally.entry_width = width
+	tally.grid_size = fields["grid_size"]
+	tally.steps = steps_run
+	tally.ball_steps = ball_steps_run
+	var bands := tally.band_shots.size()
+	if (
+		bands != tally.band_count
+		or tally.band_pocket_hits.size() != bands * tally.pocket_count
+		or tally.band_entry.size() != bands * tally.entry_width
+		or tally.density.size() != tally.grid_size.x * tally.grid_size.y
+	):
+		return null
+	return tally
 
 
 ## Shots recorded in every band.

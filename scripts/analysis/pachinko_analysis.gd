@@ -16,6 +16,8 @@ var plan: AnalysisPlan
 var phase := Phase.IDLE
 ## Seconds from start to done (wall clock).
 var wall_seconds := 0.0
+## Set before start() to time the run's stages into it (AnalysisProfile); null: untimed.
+var profile: AnalysisProfile = null
 
 var _launch_table: LaunchTable
 var _table := RailExitTable.new()
@@ -45,7 +47,25 @@ func run() -> AnalysisTally:
 		if _task >= 0:
 			WorkerThreadPool.wait_for_group_task_completion(_task)
 			_task = -1
-	return tally()
+	var mark := Time.get_ticks_usec()
+	var merged := tally()
+	if profile != null:
+		profile.add_usec(AnalysisProfile.Stage.MERGE, Time.get_ticks_usec() - mark)
+	return merged
+
+
+## Hands this analysis the rail climbs of an earlier one on the same board (its
+## climb_table()): call before start(). When they hold every power level the plan fires,
+## the climbs are not run again (a rail climb never depends on the plan: the climb world
+## has the bonus parts shut, as BoardWorldFactory builds them), and the figures are the same.
+func reuse_climbs(table: RailExitTable) -> void:
+	if phase == Phase.IDLE and table != null:
+		_table = table
+
+
+## The rail climbs the analysis ran or was handed (complete once it is done).
+func climb_table() -> RailExitTable:
+	return _table
 
 
 ## Begins the analysis in the background. False (with an error) for a bad plan.
@@ -57,12 +77,16 @@ func start() -> bool:
 	_started_usec = Time.get_ticks_usec()
 	# Measured here, on one thread: LaunchCalibration's cache is not thread-safe.
 	_launch_table = LaunchCalibration.table(plan.level)
+	if profile != null:
+		profile.add_usec(AnalysisProfile.Stage.LAUNCH_TABLE, Time.get_ticks_usec() - _started_usec)
 	var needed := PackedByteArray()
 	needed.resize(AnalysisPlan.level_count())
 	for c in plan.chunk_count():
 		for q in plan.chunk_levels(c):
 			needed[q] = 1
-	_groups = RailExitTable.groups_for(needed)
+	if not _covers(_table, needed):
+		_table = RailExitTable.new()
+		_groups = RailExitTable.groups_for(needed)
 	_group_results.resize(_groups.size())
 	_chunk_results.resize(plan.chunk_count())
 	phase = Phase.CLIMBS
@@ -110,6 +134,19 @@ func progress() -> float:
 	return float(done) / maxf(plan.chunk_count(), 1)
 
 
+## Share of the rail climbs done, 0..1 (by climb groups; 1 once the shots began).
+func climb_progress() -> float:
+	if phase != Phase.CLIMBS:
+		return 1.0 if phase != Phase.IDLE else 0.0
+	var done := 0
+	_mutex.lock()
+	for part in _group_results:
+		if part != null:
+			done += 1
+	_mutex.unlock()
+	return float(done) / maxf(_groups.size(), 1)
+
+
 ## Shots finished so far (the chunks done, whole).
 func shots_done() -> int:
 	var t := tally()
@@ -133,6 +170,14 @@ func tally() -> AnalysisTally:
 	return merged
 
 
+# True when `table` holds the climb of every level `needed` marks.
+static func _covers(table: RailExitTable, needed: PackedByteArray) -> bool:
+	for q in needed.size():
+		if needed[q] != 0 and table.fate[q] == RailExitTable.Fate.UNKNOWN:
+			return false
+	return true
+
+
 # Runs `job(index)` for index 0..count-1: on this thread for a blocking one-thread run,
 # else as one high-priority group task (low-priority tasks get a single thread on two
 # cores), so a background run never blocks its caller.
@@ -151,9 +196,14 @@ func _launch(job: Callable, count: int) -> void:
 func _climb_group(g: int) -> void:
 	if _cancelled:
 		return
-	var part := RailClimber.climb_group(plan.level, _launch_table, _groups[g])
+	var mark := Time.get_ticks_usec()
+	var timed := AnalysisProfile.new() if profile != null else null
+	var part := RailClimber.climb_group(plan.level, _launch_table, _groups[g], timed)
 	_mutex.lock()
 	_group_results[g] = part
+	if timed != null:
+		timed.add_usec(AnalysisProfile.Stage.CLIMB, Time.get_ticks_usec() - mark)
+		profile.add(timed)
 	_mutex.unlock()
 
 
@@ -162,15 +212,20 @@ func _run_chunk(c: int) -> void:
 		return
 	var stop := func() -> bool: return _cancelled
 	var counts: AnalysisTally = null
+	var timed: AnalysisProfile = null
 	if plan.played:
 		var played := PlayedShotChunk.new(plan, _launch_table, _table)
 		counts = played.tally if played.run(c, stop) else null
 	else:
 		var lone := PachinkoShotChunk.new(plan, _launch_table, _table)
+		lone.profile = AnalysisProfile.new() if profile != null else null
 		counts = lone.tally if lone.run(c, stop) else null
+		timed = lone.profile
 	if counts == null:
 		return
 	_mutex.lock()
 	_chunk_results[c] = counts
 	_chunks_done += 1
+	if timed != null:
+		profile.add(timed)
 	_mutex.unlock()

@@ -24,6 +24,8 @@ const HOPELESS_MARGIN := 8.0
 
 ## The chunk's figures (its ledger's tally).
 var tally: AnalysisTally
+## Set before run() to time the chunk's stages into it (AnalysisProfile); null: untimed.
+var profile: AnalysisProfile = null
 
 var _ledger: ShotLedger
 var _plan: AnalysisPlan
@@ -75,6 +77,8 @@ static func cell_of(p: Vector2, board_size: Vector2) -> int:
 ## Fires the shots of chunk `index`. `cancelled` is polled now and then; when it returns
 ## true the run stops early and returns false (the tally then holds only finished shots).
 func run(index: int, cancelled: Callable = Callable()) -> bool:
+	var prof := profile != null
+	var mark := Time.get_ticks_usec() if prof else 0
 	var levels := _plan.chunk_levels(index)
 	_ledger.open()
 	var in_flight := _plan.in_flight
@@ -84,25 +88,40 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	var hopeless_ok := _world.gravity.x == 0.0 and _world.gravity.y > 0.0
 	var fired := 0
 	var step := 0
+	if prof:
+		mark = _lap(AnalysisProfile.Stage.CHUNK_SETUP, mark)
 	while fired < levels.size() or _world.ball_count() > 0:
 		while fired < levels.size() and _world.ball_count() < in_flight:
 			_fire(levels[fired], step)
 			fired += 1
 		tally.ball_steps += _world.ball_count()
+		if prof:
+			mark = _lap(AnalysisProfile.Stage.FIRE, mark)
 		_world.step(dt)
 		step += 1
+		if prof:
+			mark = _lap(AnalysisProfile.Stage.STEP, mark)
 		if step % SAMPLE_EVERY == 0:
 			_ledger.sample(_world.get_positions())
+			if prof:
+				mark = _lap(AnalysisProfile.Stage.SAMPLE, mark)
 		if hopeless_ok and step % HOPELESS_EVERY == 0:
 			_drop_hopeless()
+			if prof:
+				mark = _lap(AnalysisProfile.Stage.HOPELESS, mark)
 		if step % CHECK_EVERY == 0:
 			_ledger.drop_stuck(_world, step - max_steps)
+			if prof:
+				mark = _lap(AnalysisProfile.Stage.CHECK, mark)
 			if cancelled.is_valid() and cancelled.call():
 				_ledger.close()
 				return false
 	tally.steps += step
 	_ledger.close()
 	_world = null
+	if prof:
+		profile.chunks += 1
+		profile.chunk_steps += step
 	return true
 
 
@@ -132,6 +151,13 @@ static func open_bonus_parts(world: BallWorld, level: BoardLevel) -> void:
 		world.shapes.set_wall_enabled(wall, BonusGeometry.part_solid(part, true))
 	for gate in world.shapes.gate_count():
 		world.shapes.set_gate_open(gate, true, true)
+
+
+# Adds the time since `mark` to `stage` of the profile; returns the time now.
+func _lap(stage: AnalysisProfile.Stage, mark: int) -> int:
+	var now := Time.get_ticks_usec()
+	profile.add_usec(stage, now - mark)
+	return now
 
 
 # One shot of power level `q` at step `step`: from the rail table when it knows the climb.

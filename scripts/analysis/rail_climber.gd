@@ -18,6 +18,7 @@ var _last_vel := PackedVector2Array()
 var _handed := PackedByteArray()
 var _met_pin := PackedByteArray()
 var _step := 0
+var _ball_steps := 0
 ## Per ball id: the density cells it passed (moved into the table at the end). Kept here,
 ## with the board's numbers below, so the per-ball loop reads only this object's members
 ## (see PachinkoShotChunk._density).
@@ -28,11 +29,21 @@ var _board_size := Vector2.ZERO
 
 ## Climbs every power level in `levels` side by side on `level` (a pachinko board) and
 ## returns a table holding their results (other levels stay UNKNOWN). Thread-safe: it
-## touches nothing shared. `launch` is LaunchCalibration.table(level).
+## touches nothing shared but `profile` (when given, the climb's steps are counted into it).
+## `launch` is LaunchCalibration.table(level).
 static func climb_group(
-	level: BoardLevel, launch: LaunchTable, levels: PackedInt32Array
+	level: BoardLevel,
+	launch: LaunchTable,
+	levels: PackedInt32Array,
+	profile: AnalysisProfile = null
 ) -> RailExitTable:
-	return RailClimber.new(level, launch).climb(levels)
+	var climber := RailClimber.new(level, launch)
+	var table := climber.climb(levels)
+	if profile != null:
+		profile.climb_groups += 1
+		profile.climb_steps += climber._step
+		profile.climb_ball_steps += climber._ball_steps
+	return table
 
 
 func _init(level: BoardLevel, launch: LaunchTable) -> void:
@@ -69,6 +80,7 @@ func climb(levels: PackedInt32Array) -> RailExitTable:
 	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)
 	var max_steps := int(RailExitTable.MAX_SECONDS / dt)
 	while _world.ball_count() > 0 and _step < max_steps:
+		_ball_steps += _world.ball_count()
 		_world.step(dt)
 		_step += 1
 		_follow(dt)

@@ -26,7 +26,10 @@ static func run(values: Dictionary) -> int:
 	var game: String = values["analyze"]
 	var rng_seed: int = values["seed"]
 	var board_name := str(values["board"])
-	var loaded := BoardLoader.load_board(AutoplayCli.resolve_board_path(game, board_name))
+	var roots := BoardLoader.BOARD_ROOTS.duplicate()
+	if not str(values.get("tally", "")).is_empty():
+		roots.append(AnalysisWorker.FOLDER + "/")  # the editor's worker reads its board there
+	var loaded := BoardLoader.load_board(AutoplayCli.resolve_board_path(game, board_name), roots)
 	if loaded.level == null:
 		return _fail(EXIT_BAD_INPUT, loaded.error)
 	var threads: int = values.get("threads", OS.get_processor_count())
@@ -53,17 +56,30 @@ static func run(values: Dictionary) -> int:
 		var plan := AnalysisPlan.create(loaded.level, shots, rng_seed)
 		plan.threads = threads
 		plan.played = values.get("played", false)
+		if not str(values.get("tally", "")).is_empty():
+			return _run_worker(plan, str(values["tally"]))
 		var analysis := PachinkoAnalysis.new(plan)
+		if values.get("profile", false):
+			analysis.profile = AnalysisProfile.new()
 		var tally := analysis.run()
 		if tally == null:
 			return _fail(EXIT_BAD_INPUT, plan.problem())
 		var open_tally: AnalysisTally = null
 		if not loaded.level.bonus_pockets.is_empty():
 			# The same shots again with the bonus pockets held open, for BonusEstimate.
-			open_tally = PachinkoAnalysis.new(plan.with_bonus_open()).run()
+			# Its rail climbs are the first run's (the climb world keeps the bonus parts shut).
+			var open_run := PachinkoAnalysis.new(plan.with_bonus_open())
+			open_run.reuse_climbs(analysis.climb_table())
+			open_tally = open_run.run()
+		var mark := Time.get_ticks_usec()
 		report = AnalysisReport.build(plan, tally, analysis.wall_seconds, open_tally)
 		report["heatmap"] = base + ".png"
 		var png_error := HeatmapImage.render(loaded.level, tally).save_png(abs_base + ".png")
+		if analysis.profile != null:
+			report["profile"] = analysis.profile.to_dict()
+			report["profile"]["report_and_heatmap_s"] = snappedf(
+				(Time.get_ticks_usec() - mark) / 1e6, 0.001
+			)
 		if png_error != OK:
 			return _fail(
 				EXIT_FAILED, "could not write %s (%s)" % [base + ".png", error_string(png_error)]
@@ -88,6 +104,61 @@ static func _invoking_folder() -> String:
 	if typed_in.is_absolute_path() and DirAccess.dir_exists_absolute(typed_in):
 		return typed_in
 	return DirAccess.open(".").get_current_dir()
+
+
+# Worker mode (`--tally=FILE`, AnalysisWorker): runs the plan and writes only its counts,
+# FILE (AnalysisTally.to_bytes()) at the end; meanwhile FILE.status (JSON: phase, climbs
+# 0..1, shots_done, shots) and FILE.part (the counts of the chunks done so far) as they
+# change, each replaced whole (written aside, then renamed), so a reader never sees half.
+static func _run_worker(plan: AnalysisPlan, path: String) -> int:
+	var analysis := PachinkoAnalysis.new(plan)
+	if not analysis.start():
+		return _fail(EXIT_BAD_INPUT, plan.problem())
+	var last_status := ""
+	var last_chunks := 0.0
+	var shots_done := 0
+	while true:
+		var done := analysis.poll()
+		var chunks := analysis.progress()
+		if chunks != last_chunks or done:
+			last_chunks = chunks
+			var part := analysis.tally()
+			if part != null:
+				shots_done = part.total_shots()
+				if not done and not _replace(path + ".part", part.to_bytes()):
+					return _fail(EXIT_FAILED, "could not write %s.part" % path)
+		var phase_name: String = PachinkoAnalysis.Phase.keys()[analysis.phase]
+		var status := {
+			"phase": "done" if done else phase_name.to_lower(),
+			"climbs": snappedf(analysis.climb_progress(), 0.001),
+			"shots_done": shots_done,
+			"shots": plan.shots,
+		}
+		var text := JSON.stringify(status)
+		if text != last_status:
+			last_status = text
+			_replace(path + ".status", text.to_utf8_buffer())
+		if done:
+			break
+		OS.delay_msec(50)
+	var tally := analysis.tally()
+	if tally == null or not _replace(path, tally.to_bytes()):
+		return _fail(EXIT_FAILED, "could not write %s" % path)
+	var line := {"ok": true, "tally": path, "shots": tally.total_shots()}
+	line["wall_s"] = snappedf(analysis.wall_seconds, 0.001)
+	print(JSON.stringify(line))
+	return 0
+
+
+# Writes `bytes` to `path` whole: into a file beside it, then renamed over it.
+static func _replace(path: String, bytes: PackedByteArray) -> bool:
+	var aside := path + ".tmp"
+	var file := FileAccess.open(aside, FileAccess.WRITE)
+	if file == null:
+		return false
+	file.store_buffer(bytes)
+	file.close()
+	return DirAccess.rename_absolute(aside, path) == OK
 
 
 # The folder the reports go to, made when missing: {"dir": its absolute path, "shown": how

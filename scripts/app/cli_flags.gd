@@ -167,6 +167,30 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--analyze=pachinko --board=classic --played",
 	},
 	{
+		"flag": "--profile",
+		"for": ["--analyze"],
+		"value": Value.NONE,
+		"default": false,
+		"help":
+		(
+			'Pachinko: add a "profile" entry to the report, the seconds each stage of the'
+			+ " analysis took (rail climbs, chunk set-up, stepping, samples, tally)."
+		),
+		"example": "--analyze=pachinko --board=classic --threads=1 --profile",
+	},
+	{
+		"flag": "--tally",
+		"for": ["--analyze"],
+		"value": Value.TEXT,
+		"placeholder": "FILE",
+		"help":
+		(
+			"Pachinko, worker mode (the editor's Analyze runs it): write only the counts to"
+			+ " FILE, with FILE.status and FILE.part while it runs; no report, no heat map."
+		),
+		"example": "--analyze=pachinko --board=classic --tally=/tmp/classic.tally",
+	},
+	{
 		"flag": "--runs",
 		"for": ["--analyze"],
 		"value": Value.WHOLE,

@@ -61,6 +61,26 @@ func test_played_fires_the_shots_as_the_autoplay_and_says_so() -> void:
 	assert_true(report["played"], "--played fires them as the autoplay does")
 
 
+func test_profile_times_the_stages_and_changes_no_figure() -> void:
+	var values := {"analyze": "pachinko", "board": "classic", "shots": 250, "seed": 3, "threads": 1}
+	var json := ProjectSettings.globalize_path("res://build/test_analysis/pachinko_classic.json")
+	assert_eq(AnalyzeCli.run(values), 0)
+	var plain: Dictionary = JSON.parse_string(FileAccess.get_file_as_string(json))
+	assert_false(plain.has("profile"), "no profile unless asked for")
+	values["profile"] = true
+	assert_eq(AnalyzeCli.run(values), 0)
+	var timed: Dictionary = JSON.parse_string(FileAccess.get_file_as_string(json))
+	var profile: Dictionary = timed.get("profile", {})
+	for stage: String in AnalysisProfile.NAMES:
+		assert_true(profile.get("seconds", {}).has(stage), "the profile times %s" % stage)
+	assert_eq(profile.get("chunks"), 1.0, "one chunk of 250 shots")
+	assert_gt(float(profile.get("climb_ball_steps", 0)), 0.0, "the rail climbs are counted")
+	for key: String in ["profile", "wall_s", "shots_per_s", "report"]:
+		plain.erase(key)
+		timed.erase(key)
+	assert_eq(timed, plain, "the same figures with and without the profile")
+
+
 func test_bad_input_exits_2() -> void:
 	var missing := {"analyze": "pachinko", "board": "no_such_board", "shots": 10, "seed": 1}
 	assert_eq(AnalyzeCli.run(missing), 2)

@@ -60,6 +60,29 @@ func test_a_run_shows_figures_and_caches_them_per_board_content() -> void:
 	assert_true(reopened.report().is_empty(), "edited board: the old figures are gone")
 
 
+func test_the_worker_process_gives_the_figures_of_a_run_in_the_editor() -> void:
+	if not AnalysisWorker.available():
+		pass_test("no worker process on this platform")
+		return
+	var figures: Array[Dictionary] = []
+	for worker: bool in [true, false]:
+		AnalysisCache.folder_override = TEST_FOLDER + ("_w" if worker else "_e")
+		var panel := _panel()
+		panel.use_worker = worker
+		panel.bind(_classic())
+		panel.start()
+		assert_eq(panel._run is AnalysisWorker, worker, "worker: %s" % worker)
+		_finish(panel)
+		var report := panel.report().duplicate(true)
+		for key: String in ["wall_s", "shots_per_s"]:
+			report.erase(key)
+		figures.append(report)
+		for file in DirAccess.get_files_at(AnalysisCache.folder()):
+			DirAccess.remove_absolute(AnalysisCache.folder().path_join(file))
+	assert_eq(figures[0].get("shots"), 260)
+	assert_eq(JSON.stringify(figures[0]), JSON.stringify(figures[1]), "the same figures")
+
+
 func test_cancel_keeps_the_editor_usable() -> void:
 	var panel := _panel()
 	panel.shots = 5000

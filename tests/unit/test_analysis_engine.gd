@@ -70,6 +70,31 @@ func test_the_rail_hand_over_changes_no_outcome() -> void:
 	assert_lt(with_table.ball_steps, full.tally.ball_steps, "the climbs were not simulated")
 
 
+func test_climbs_handed_on_to_the_bonus_open_run_give_its_own_figures() -> void:
+	# The CLI's second run (bonus pockets held open) takes the first run's rail climbs.
+	var level := BoardLoader.load_board("res://levels/pachinko/fever.board").level
+	var plan := AnalysisPlan.create(level, 250, 2)
+	var first := PachinkoAnalysis.new(plan)
+	first.run()
+	var fresh := PachinkoAnalysis.new(plan.with_bonus_open()).run()
+	var reused := PachinkoAnalysis.new(plan.with_bonus_open())
+	reused.reuse_climbs(first.climb_table())
+	reused.profile = AnalysisProfile.new()
+	var tally := reused.run()
+	assert_eq(reused.profile.climb_groups, 0, "no climb run again")
+	var a := AnalysisReport.build(plan, fresh, 1.0)
+	var b := AnalysisReport.build(plan, tally, 1.0)
+	assert_eq(JSON.stringify(b), JSON.stringify(a), "the same figures as its own climbs")
+	assert_eq(tally.ball_steps, fresh.ball_steps)
+	assert_eq(tally.density, fresh.density)
+	# Climbs that miss a level the plan fires are not used: every climb runs again.
+	var other := PachinkoAnalysis.new(AnalysisPlan.create(level, 250, 3))
+	other.reuse_climbs(first.climb_table())
+	other.profile = AnalysisProfile.new()
+	other.run()
+	assert_gt(other.profile.climb_groups, 0, "a table that misses levels is not used")
+
+
 func test_each_band_reports_where_its_shots_first_met_a_pin() -> void:
 	# 400 shots a band: the weak fifth's entries cluster at x 541 and 554..567 (median 554
 	# over 10000 shots), so 100 shots a band could put the median on either side of 548.

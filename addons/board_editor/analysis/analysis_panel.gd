@@ -1,8 +1,10 @@
 @tool
 extends VBoxContainer
 ## The dock's play-analysis section: Analyze fires AnalysisPlan.EDITOR_SHOTS shots at the
-## board on worker threads (PachinkoAnalysis) while the editor stays responsive, with a
-## progress bar and Cancel; the figures and the heat map update as chunks of shots finish.
+## board on worker threads of the editor (PachinkoAnalysis), or with `use_worker` in a
+## worker process (AnalysisWorker: the game binary headless, on every core), while the
+## editor stays responsive, with a progress bar and Cancel; the figures and the heat map
+## update as chunks of shots finish.
 ## A finished run is cached per board content (AnalysisCache), so reopening a board, or
 ## undoing back to an analysed state, shows its figures at once. The overlay itself is
 ## drawn by analysis_overlay_draw.gd when the plugin calls draw_over().
@@ -28,11 +30,18 @@ const UPDATE_MS := 400
 
 ## Shots a run fires (tests fire fewer).
 var shots := AnalysisPlan.EDITOR_SHOTS
+## True runs the analysis in a worker process when one can start (AnalysisWorker.available);
+## false, or a worker that fails, runs it on the editor's own threads. Off for now: on this
+## 2-core machine shared with other work (load 7-11), 10000 shots on Classic took 74-110 s
+## in the worker against 35-76 s on the editor's threads (tools/editor_analysis_shot.sh),
+## the worker getting about a third of a core; to be measured again on a quiet machine.
+var use_worker := false
 
 var _level: BoardLevel
 var _key := ""
 var _report: Dictionary = {}
 var _heat: ImageTexture
+## The run: a PachinkoAnalysis here, or an AnalysisWorker (the same interface).
 var _run: PachinkoAnalysis
 var _run_key := ""
 var _run_level: BoardLevel
@@ -81,6 +90,13 @@ func bind(level: BoardLevel) -> void:
 		_say_result()  # new content with no figures, like the old: "Not analysed..."
 
 
+func _notification(what: int) -> void:
+	# The dock is going away (the editor closes, the plugin is turned off): no worker
+	# process outlives it.
+	if what == NOTIFICATION_PREDELETE and _run != null:
+		_run.cancel()
+
+
 ## Starts an analysis of the bound board (a snapshot of it: edits during the run do not
 ## reach the worker threads).
 func start() -> void:
@@ -90,17 +106,29 @@ func start() -> void:
 	var plan := _plan_for(_run_level)
 	plan.threads = OS.get_processor_count()
 	_run_key = _key
-	_run = PachinkoAnalysis.new(plan)
-	if not _run.start():
-		_controls.status.text = "This board cannot be analysed: %s." % plan.problem()
-		_run = null
-		return
+	var worker_failure := ""
+	_run = null
+	if use_worker and AnalysisWorker.available():
+		_run = AnalysisWorker.new(plan)
+		if not _run.start():
+			worker_failure = (_run as AnalysisWorker).failure
+			_run = null
+	if _run == null:
+		_run = PachinkoAnalysis.new(plan)
+		if not _run.start():
+			_controls.status.text = "This board cannot be analysed: %s." % plan.problem()
+			_run = null
+			return
 	_run_started = Time.get_ticks_msec()
 	_shown_shots = -1
 	if not _report.is_empty():  # what the run's figures will be compared with
 		_before_rows = _rows
 		_before_return = AnalysisReport.number(_report.get("return"))
-	_controls.show_running("Climbing the rail at every power...")
+	_controls.show_running(_climbing_text())
+	if not worker_failure.is_empty():
+		push_warning(
+			"Play analysis: no worker process (%s); running in the editor" % worker_failure
+		)
 	set_process(true)
 
 
@@ -142,11 +170,42 @@ func _process(_delta: float) -> void:
 		return
 	var done := _run.poll()
 	_controls.progress.value = _run.progress()
-	if done:
+	if done and _worker_failed():
+		_run_here_instead()
+	elif done:
 		_finish()
 	elif Time.get_ticks_msec() - _last_update >= UPDATE_MS:
 		_last_update = Time.get_ticks_msec()
+		if _run.phase == PachinkoAnalysis.Phase.CLIMBS:
+			_controls.status.text = _climbing_text()
 		_show_partial(false)
+
+
+# "Climbing the rail..." with how far the climbs are.
+func _climbing_text() -> String:
+	var share := _run.climb_progress() if _run != null else 0.0
+	return "Climbing the rail at every power (%d %%)..." % roundi(share * 100.0)
+
+
+# True when the run was a worker that stopped without its counts (not a cancel).
+func _worker_failed() -> bool:
+	return _run is AnalysisWorker and not (_run as AnalysisWorker).failure.is_empty()
+
+
+# The worker failed: the same plan again on the editor's threads (the shots so far are
+# dropped: the new run starts over and gives the whole run's figures).
+func _run_here_instead() -> void:
+	var failure := (_run as AnalysisWorker).failure
+	push_warning("Play analysis: %s; running in the editor instead" % failure)
+	_run = PachinkoAnalysis.new(_run.plan)
+	if not _run.start():
+		_run = null
+		_controls.show_idle()
+		set_process(false)
+		_controls.status.text = "The analysis failed: %s." % failure
+		return
+	_run_started = Time.get_ticks_msec()
+	_shown_shots = -1
 
 
 # Rebuilds the figures and heat map from the chunks finished so far; `final` ones (the
