@@ -68,8 +68,8 @@ def mark_out_of_scope(path, functions):
     lines = path.read_text().split("\n")
     found = {m.group(1) for m in (re.match(r"(?:static\s+)?func\s+(\w+)\s*\(", l) for l in lines) if m}
     missing = [f for f in functions if f not in found]
-    if missing:
-        sys.exit(f"{path}: no function {', '.join(missing)} (tools/mutate/targets.txt)")
+    if missing:  # an older tree (MUTATE_FROM) may not have them yet
+        print(f"mutate: {path.name} has no function {', '.join(missing)}", file=sys.stderr)
     inside = function_lines(lines, functions)
     in_string = False
     for index, line in enumerate(lines):
