@@ -87,6 +87,14 @@ func test_a_line_after_a_broken_header_is_outside_any_section() -> void:
 func test_quoted_keys() -> void:
 	var read := IniText.parse('[a]\n"x=y"=1\n"say \\"hi\\""=2\n"b\\\\"=3\n')
 	assert_eq(read["sections"]["a"], {"x=y": 1.0, 'say "hi"': 2.0, "b\\": 3.0})
+	var edges := IniText.parse('[a]\n""=1\n"\\"q\\""=2\n')
+	assert_eq(
+		edges["sections"]["a"], {"": 1.0, '"q"': 2.0}, "an empty key, a key opening with a quote"
+	)
+	var bad_escape := IniText.parse('[a]\n"\\x"=1\n')
+	assert_eq(
+		bad_escape["problems"], PackedStringArray(["line 2 (a quoted key must be one JSON string)"])
+	)
 	var broken := IniText.parse('[a]\n"open=1\n"k" 1\n"k"\n')
 	assert_eq(
 		broken["problems"],

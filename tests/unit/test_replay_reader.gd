@@ -4,6 +4,10 @@ extends GutTest
 
 const Reader := preload("res://scripts/replay/replay_reader.gd")
 const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
+## The limits as numbers, not the reader's constants: a changed limit must fail a test.
+const MOST_WHOLE := 9_007_199_254_740_991
+const MOST_BYTES := 2_097_152
+const MOST_LINES := 100_000
 const HASH := "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef"
 
 
@@ -183,11 +187,11 @@ func test_the_header_fields_and_names() -> void:
 
 func test_each_header_number_allows_its_range_and_no_more() -> void:
 	var ranges := {
-		"seed": [-Reader.MAX_WHOLE, Reader.MAX_WHOLE],
+		"seed": [-MOST_WHOLE, MOST_WHOLE],
 		"step_hz": [1, 1000],
-		"state_hash": [0, Reader.MAX_WHOLE],
-		"physics": [1, Reader.MAX_PHYSICS],
-		"rules": [1, Reader.MAX_PHYSICS],
+		"state_hash": [0, MOST_WHOLE],
+		"physics": [1, 1000],
+		"rules": [1, 1000],
 	}
 	for field: String in ranges:
 		var low: int = ranges[field][0]
@@ -311,7 +315,7 @@ func test_packed_tilts_are_limited_in_length_frames_and_steps() -> void:
 		_error(_steps(251), [["tilts", TiltPacking.encode(most)]]),
 		'line 2: "tilts": more than 250 frames'
 	)
-	var long := "A".repeat(Reader.MAX_PACKED_CHARS + 1)
+	var long := "A".repeat(3001)
 	assert_eq(
 		_error(_steps(0), [["tilts", long]]),
 		'line 2: "tilts": the packed frames are longer than 3000 characters'
@@ -339,15 +343,56 @@ func test_the_file_as_a_whole() -> void:
 	assert_eq(
 		Reader.read("[1]"), {"error": "line 1: the first line must be the header object { ... }"}
 	)
-	var big := " ".repeat(Reader.MAX_BYTES + 1)
-	assert_eq(Reader.read(big), {"error": "the file is larger than %d bytes" % Reader.MAX_BYTES})
-	var many := "\n".repeat(Reader.MAX_LINES)
+	var big := " ".repeat(MOST_BYTES + 1)
+	assert_eq(Reader.read(big), {"error": "the file is larger than 2097152 bytes"})
+	assert_eq(Reader.read(" ".repeat(MOST_BYTES)), {"error": "the file is empty"}, "2 MB is fine")
+	var many := "\n".repeat(MOST_LINES)
 	assert_eq(
 		Reader.read(many),
-		{"error": "the file has %d lines; at most %d" % [Reader.MAX_LINES + 1, Reader.MAX_LINES]}
+		{"error": "the file has %d lines; at most %d" % [MOST_LINES + 1, MOST_LINES]}
 	)
 	assert_eq(
-		Reader.read("\n".repeat(Reader.MAX_LINES - 1)),
-		{"error": "the file is empty"},
-		"the most lines"
+		Reader.read("\n".repeat(MOST_LINES - 1)), {"error": "the file is empty"}, "the most lines"
+	)
+
+
+func test_the_largest_whole_numbers_a_double_holds_exactly() -> void:
+	var seed_problem := (
+		'line 1: "seed" must be a whole number from %d to %d' % [-MOST_WHOLE, MOST_WHOLE]
+	)
+	assert_eq(_error(_header("maze", {"seed": MOST_WHOLE + 1})), seed_problem)
+	assert_eq(_error(_header("maze", {"seed": -MOST_WHOLE - 1})), seed_problem)
+	var hash_problem := 'line 1: "state_hash" must be a whole number from 0 to %d' % MOST_WHOLE
+	assert_eq(_error(_header("maze", {"state_hash": MOST_WHOLE + 1})), hash_problem)
+	var big: Replay = _read(_header("maze", {"seed": -MOST_WHOLE})).get("replay")
+	assert_eq(big.rng_seed if big != null else 0, -MOST_WHOLE, "kept exactly")
+
+
+func test_a_hair_below_zero_seconds_is_refused() -> void:
+	assert_eq(
+		_error(_header("maze", {"seconds": -0.05})),
+		'line 1: "seconds" must be a finite number >= 0'
+	)
+
+
+func test_a_format_1_file_needs_every_field_of_its_day() -> void:
+	var old := _header("maze", {"replay": 1})
+	old.erase("physics")
+	old.erase("rules")
+	var replay: Replay = _read(old, []).get("replay")
+	assert_eq(replay.format_version if replay != null else 0, 1, "a format 1 file reads")
+	old.erase("seed")
+	assert_eq(_error(old), 'line 1: the header has no "seed"')
+
+
+func test_packed_tilts_came_with_format_2() -> void:
+	var two := _steps(1)
+	two["replay"] = 2
+	two.erase("physics")
+	two.erase("rules")
+	var replay: Replay = _read(two, [["tilts", TiltPacking.encode([1, 5, 5])]]).get("replay")
+	assert_not_null(replay, "format 2 has packed tilts")
+	var garbage := "*".repeat(3000)
+	assert_string_contains(
+		_error(_steps(0), [["tilts", garbage]]), "not a base64 digit", "3000 characters are read"
 	)
