@@ -112,6 +112,8 @@ func test_fields_unknown_missing_and_wrong_are_named() -> void:
 		_error(PACHINKO, ['{"fascia": "disco"}'], ['"fascia"']),
 		'"fascia" names no machine this game has ("disco")'
 	)
+	assert_not_null(_level(PACHINKO, [], ['"fascia"']), "the machine may be left out")
+	assert_not_null(_level(MAZE, [], ["medal_times"]), "so may the medal times")
 	var neon := _level(PACHINKO, ['{"fascia": "neon"}'], ['"fascia"'])
 	assert_eq(neon.fascia if neon != null else "", "neon", "a known machine is taken")
 	assert_string_contains(

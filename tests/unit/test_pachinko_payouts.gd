@@ -81,6 +81,27 @@ func test_a_catch_by_no_pocket_of_the_board_pays_nothing_but_ends_the_ball() -> 
 	assert_true(rules.accounting_ok())
 
 
+func test_a_catch_by_pocket_minus_one_pays_nothing() -> void:
+	var rules := _rules()
+	watch_signals(rules)
+	var id := _shot(rules)
+	var cup := rules.cup
+	_catch(rules, id, -1)
+	assert_eq(rules.cup, cup, "not the last pocket's payout")
+	assert_signal_emitted_with_parameters(rules, "ball_won", [id, -1, 0, Vector2.ZERO])
+
+
+func test_the_first_bonus_pocket_is_where_the_win_shows() -> void:
+	var rules := _rules(HANAMI)
+	watch_signals(rules)
+	var spec: BonusPocketSpec = rules.level.bonus_pockets[0]
+	var id := _shot(rules)
+	_catch(rules, id, rules.level.pockets.size())
+	var won: Array = get_signal_parameters(rules, "ball_won")
+	assert_eq(won[3], spec.position, "the first bonus pocket's own place")
+	assert_eq(rules.ledger.pocket_hits[rules.level.pockets.size()], 1)
+
+
 func test_a_ball_is_paid_once() -> void:
 	var rules := _rules()
 	var id := _shot(rules)
