@@ -69,6 +69,7 @@ func test_keys_of_a_closed_object_do_not_count_against_its_parent() -> void:
 	assert_eq(JsonKeys.repeated('{"x": [{"a": 1}], "y": {"a": 2}}'), "")
 	assert_eq(JsonKeys.repeated('{"a": "x", "c": "x"}'), "", "equal values are no repeat")
 	assert_eq(JsonKeys.repeated('{"ab": 1, "ac": 2, "abc": 3}'), "", "keys alike but not equal")
+	assert_eq(JsonKeys.repeated('{"": 1, "a": 1, "a": 2}'), "a", "an empty key before a repeat")
 
 
 func test_escaped_quotes_and_backslashes_in_keys() -> void:
