@@ -91,6 +91,13 @@ func test_quoted_keys() -> void:
 	assert_eq(
 		edges["sections"]["a"], {"": 1.0, '"q"': 2.0}, "an empty key, a key opening with a quote"
 	)
+	var after_text := IniText.parse('[a]\n"ok"="v"\n"\\x"=2\n')
+	assert_eq(
+		after_text["sections"]["a"], {"ok": "v"}, "the bad key does not borrow the last value"
+	)
+	assert_eq(
+		after_text["problems"], PackedStringArray(["line 3 (a quoted key must be one JSON string)"])
+	)
 	var bad_escape := IniText.parse('[a]\n"\\x"=1\n')
 	assert_eq(
 		bad_escape["problems"], PackedStringArray(["line 2 (a quoted key must be one JSON string)"])
@@ -151,6 +158,13 @@ func test_the_written_file_reads_back_the_same() -> void:
 	assert_eq(read["sections"]["k"], odd_keys)
 
 
+func test_a_lone_control_character_is_escaped_too() -> void:
+	var unit := IniText.format("h", [["s", {"k": "x\u001fy"}]])
+	assert_string_contains(unit, 'k="x\\u001fy"', "the last one below a space")
+	var delete := IniText.format("h", [["s", {"k": "x\u007fy"}]])
+	assert_string_contains(delete, 'k="x\\u007fy"', "DEL")
+
+
 func test_control_characters_are_written_as_escapes() -> void:
 	var text := IniText.format("h", [["s", {"k": "a\u0001b\u001f\u007fc\u0020"}]])
 	assert_string_contains(text, 'k="a\\u0001b\\u001f\\u007fc "')
@@ -170,6 +184,9 @@ func test_a_versioned_file_with_many_problems_counts_the_rest() -> void:
 	assert_eq(problems.size(), 6)
 	assert_eq(problems[0], "line 4 (no =)")
 	assert_eq(problems[5], "3 more lines")
+	var six := _write("six.cfg", "[meta]\nversion=1\n[s]\n" + "bad\n".repeat(6))
+	var with_one: PackedStringArray = IniText.read_versioned_file(six)["problems"]
+	assert_eq(with_one[5], "1 more lines", "one past the five listed is counted")
 	var five := _write("five.cfg", "[meta]\nversion=1\n[s]\n" + "bad\n".repeat(5))
 	var listed: PackedStringArray = IniText.read_versioned_file(five)["problems"]
 	assert_eq(listed.size(), 5, "all five listed, no 'more lines'")
