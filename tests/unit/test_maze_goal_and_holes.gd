@@ -110,3 +110,12 @@ func test_a_hole_after_the_win_or_before_the_start_changes_nothing() -> void:
 	assert_eq(waiting.state, MazeRules.State.READY)
 	assert_eq(waiting.lost_hole, -1)
 	assert_eq(waiting.balls_lost(), 0, "no ball lost yet")
+
+
+func test_a_board_that_could_not_be_built_shows_no_ball_in_the_goal() -> void:
+	var board := BoardLevel.new()
+	board.kind = BoardLevel.Kind.PACHINKO
+	var rules := MazeRules.new(board)
+	assert_push_error("needs a maze board")
+	assert_eq(rules.count_in_goal(), 0)
+	assert_eq(rules.balls_lost(), 0)
