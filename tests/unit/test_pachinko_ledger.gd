@@ -143,3 +143,19 @@ func test_the_snapshot_the_panel_and_autoplay_read() -> void:
 			"payout_ratio": 6.667,
 		}
 	)
+
+
+func test_a_new_session_starts_from_nothing() -> void:
+	var fresh := Ledger.new(2).to_dict()
+	for key: String in ["given", "shots", "payouts", "won", "drained", "returned", "nudges"]:
+		assert_eq(fresh[key], 0, key)
+	assert_eq(fresh["vanished"], 0)
+	assert_eq(fresh["pocket_hits"], [0, 0])
+	assert_eq(fresh["payout_ratio"], 0.0)
+
+
+func test_the_first_shot_to_reach_the_field_sets_the_ratio() -> void:
+	var ledger := Ledger.new(1)
+	ledger.shots = 1
+	ledger.record_win(0, 6)
+	assert_eq(ledger.payout_ratio(), 6.0, "one shot, six balls back")
