@@ -119,3 +119,29 @@ func test_a_board_that_could_not_be_built_shows_no_ball_in_the_goal() -> void:
 	assert_push_error("needs a maze board")
 	assert_eq(rules.count_in_goal(), 0)
 	assert_eq(rules.balls_lost(), 0)
+
+
+func test_a_one_ball_board_is_won_by_its_one_ball() -> void:
+	var level := BoardLoader.load_board(CLASSIC).level.duplicate(true) as BoardLevel
+	level.ball_starts = PackedVector2Array([level.ball_starts[0]])
+	var rules := MazeRules.new(level)
+	rules.start()
+	_enter_goal(rules, 1)
+	rules.run_steps(1)
+	assert_eq(rules.state, MazeRules.State.WON)
+
+
+func test_the_step_a_ball_falls_in_does_not_count_on_the_clock() -> void:
+	var rules := _rules(true)
+	var id: int = rules.world.get_ids()[0]
+	var hole := rules.level.holes[1]
+	rules.world.set_ball_position(id, hole + Vector2(-12.0, 0.0))
+	rules.world.set_ball_velocity(id, Vector2(60.0, 0.0))
+	var played := 0
+	for i in 120:
+		rules.step()
+		if rules.state != MazeRules.State.PLAYING:
+			break
+		played += 1
+	assert_eq(rules.state, MazeRules.State.LOST, "the ball fell in")
+	assert_almost_eq(rules.elapsed, played * rules.step_seconds(), 1e-9, "the clock stopped first")

@@ -281,6 +281,12 @@ func test_packed_tilts_read_frame_by_frame() -> void:
 		_error(_steps(1), [["tilts", tilt]]),
 		'line 2: "tilts": a tilt must be within ±1200 hundredths of a degree'
 	)
+	var y_tilt := TiltPacking.encode([1, 0, -1201])
+	assert_eq(
+		_error(_steps(1), [["tilts", y_tilt]]),
+		'line 2: "tilts": a tilt must be within ±1200 hundredths of a degree',
+		"the y tilt is checked too"
+	)
 	var steps_zero := TiltPacking.encode([0, 0, 0])
 	assert_eq(
 		_error(_steps(0), [["tilts", steps_zero]]),
@@ -396,3 +402,11 @@ func test_packed_tilts_came_with_format_2() -> void:
 	assert_string_contains(
 		_error(_steps(0), [["tilts", garbage]]), "not a base64 digit", "3000 characters are read"
 	)
+
+
+func test_the_rules_version_is_the_files() -> void:
+	var replay: Replay = _read(_header("maze", {"rules": 3, "physics": 7})).get("replay")
+	assert_not_null(replay)
+	if replay != null:
+		assert_eq(replay.rules_version, 3)
+		assert_eq(replay.physics_version, 7)

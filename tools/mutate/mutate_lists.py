@@ -98,7 +98,8 @@ def cmd_prepare(copy, file, functions, tests):
 
 
 def load_equivalents(path):
-    """{(file, source line, original, replacement): reason}"""
+    """{(file, source line, original, replacement): reason}. ORIGINAL may end in @COLUMN
+    (gdmutant's, from 1) where the line holds the same text more than once."""
     known = {}
     if not Path(path).is_file():
         return known
@@ -153,9 +154,12 @@ def cmd_table(equivalents_path, reports):
                 original = span_text(source_lines, location)
                 replacement = mutant.get("replacement", "")
                 key = (file, source, describe(original), describe(replacement))
-                if key in equivalents:
+                column = location["start"]["column"]
+                at_column = (file, source, f"{describe(original)}@{column}", describe(replacement))
+                found = next((k for k in (at_column, key) if k in equivalents), None)
+                if found is not None:
                     counts["suppressed"] += 1
-                    used.add(key)
+                    used.add(found)
                     continue
                 counts["survived"] += 1
                 survivors.append((line, mutant["mutatorName"], original, replacement, source))
