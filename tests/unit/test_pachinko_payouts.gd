@@ -175,6 +175,7 @@ func test_this_games_figures_start_again_with_each_game() -> void:
 		rules.world.remove_ball(ball)
 		rules.world.ball_drained.emit(ball)
 	assert_eq(rules.state, PachinkoRules.State.GAME_OVER)
+	assert_eq(rules.stats(true)["balls_left"], 0, "nothing loaded, nothing in the cup")
 	assert_true(rules.start_game())
 	var fresh := rules.stats(true)
 	assert_eq(fresh["game_payouts"], 0, "a new game has paid nothing yet")
