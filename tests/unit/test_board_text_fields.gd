@@ -93,6 +93,9 @@ func test_the_header_says_what_the_file_is() -> void:
 	assert_string_contains(
 		_error(PACHINKO, ['{"kind": "chess"}'], ['{"kind":']), '"kind" must be "pachinko" or'
 	)
+	assert_string_contains(
+		_error(PACHINKO, ['{"kind": 5}'], ['{"kind":']), '"kind" must be "pachinko" or'
+	)
 	assert_not_null(_level(PACHINKO, []), "the shipped header reads")
 
 
