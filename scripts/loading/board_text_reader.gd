@@ -142,7 +142,9 @@ static func _check_fields(data: Dictionary) -> String:
 		var problem := _check_list(list, data.get(list, []))
 		if not problem.is_empty():
 			return problem
-	var pin_problem := _check_pin_pockets(data.get("pins", []), data.get("pockets", []))
+	var pins: Array = data.get("pins", [])
+	var pockets: Array = data.get("pockets", [])
+	var pin_problem := _check_pin_pockets(pins, pockets)
 	if not pin_problem.is_empty():
 		return pin_problem
 	var counters_problem := _check_counters(data.get(Schema.NEXT_IDS_FIELD, {}), lists)
