@@ -4,7 +4,7 @@ SHELL := /bin/bash
 GODOT := tools/godot.sh
 GD_SOURCES = $(shell git ls-files -co --exclude-standard '*.gd' | grep -v '^addons/gut/')
 
-.PHONY: play test setup lint format editor shots bench export export-check release release-check check-boards analyze clean seed-reference
+.PHONY: play test setup lint format editor shots bench export export-check release release-check check-boards analyze clean seed-reference mutate
 
 ## make play: the game window with a display, the headless autoplay demo without one
 play: setup
@@ -54,6 +54,12 @@ analyze: setup
 
 bench: setup
 	@tools/bench.sh
+
+## make mutate [FILE=scripts/app/medals.gd]: mutation testing of the rule files listed in
+## tools/mutate/targets.txt (or of FILE), each against its own tests; slow, not in make test.
+## The table (file, mutants, killed, score, survivors) goes to build/mutate/table.md.
+mutate: setup
+	@tools/mutate.sh $(FILE)
 
 export:
 	@tools/setup.sh export

@@ -142,6 +142,11 @@ static func _check_fields(data: Dictionary) -> String:
 		var problem := _check_list(list, data.get(list, []))
 		if not problem.is_empty():
 			return problem
+	var pins: Array = data.get("pins", [])
+	var pockets: Array = data.get("pockets", [])
+	var pin_problem := _check_pin_pockets(pins, pockets)
+	if not pin_problem.is_empty():
+		return pin_problem
 	var counters_problem := _check_counters(data.get(Schema.NEXT_IDS_FIELD, {}), lists)
 	if not counters_problem.is_empty():
 		return counters_problem
@@ -179,6 +184,24 @@ static func _check_list(list: String, value: Variant) -> String:
 			problem = _check_windmill_drive(wheel)
 		if not problem.is_empty():
 			return "%s item %d: %s" % [list, i + 1, problem]
+	return ""
+
+
+# A pin of an older file names its pocket by number (0 = the first). The builder drops such
+# pins, but one naming a pocket the board does not have is refused: the file is wrong.
+static func _check_pin_pockets(pins: Array, pockets: Array) -> String:
+	for i in pins.size():
+		var pin: Dictionary = pins[i]
+		var pocket := Builder.int_of(pin.get("pocket", -1))
+		if pocket < pockets.size():
+			continue
+		var name := "pins item %d" % (i + 1)
+		if pin.has("id"):
+			name = "pin %d" % Builder.int_of(pin["id"])
+		var has := "has no pockets"
+		if not pockets.is_empty():
+			has = "has %d pockets (0 to %d)" % [pockets.size(), pockets.size() - 1]
+		return "%s names pocket %d; the board %s" % [name, pocket, has]
 	return ""
 
 

@@ -56,6 +56,7 @@ func test_the_reasons_are_the_real_problems() -> void:
 		"repeated_key_in_tuning.board": 'the key "restitution" is given twice',
 		"tuning_old_and_new_name.board":
 		'"gutter_slide_time" is the old name of "drain_slide_time"',
+		"pin_pocket_150.board": "pin 777 names pocket 150; the board has 5 pockets (0 to 4)",
 	}
 	for file: String in expected:
 		assert_string_contains(reasons.get(file, "(missing)"), expected[file], file)

@@ -91,3 +91,82 @@ func test_every_shipped_maze_has_medal_times_for_both_modes() -> void:
 			continue
 		assert_eq(loaded.level.medal_times_easy.size(), 3, loaded.path)
 		assert_eq(loaded.level.medal_times_hard.size(), 3, loaded.path)
+
+
+# A level with easy medal times [10, 20, 30] and hard ones [15, 25, 40].
+func _level_with_times() -> BoardLevel:
+	var level := BoardLevel.new()
+	level.medal_times_easy = PackedFloat64Array([10.0, 20.0, 30.0])
+	level.medal_times_hard = PackedFloat64Array([15.0, 25.0, 40.0])
+	return level
+
+
+func test_each_medal_time_is_the_last_second_that_earns_it() -> void:
+	var times := PackedFloat64Array([10.0, 20.0, 30.0])
+	assert_eq(Medals.medal_for_time(times, 10.0), Medals.Medal.GOLD, "gold time itself")
+	assert_eq(Medals.medal_for_time(times, 10.05), Medals.Medal.SILVER, "a hair over gold")
+	assert_eq(Medals.medal_for_time(times, 20.0), Medals.Medal.SILVER, "silver time itself")
+	assert_eq(Medals.medal_for_time(times, 20.05), Medals.Medal.BRONZE, "a hair over silver")
+	assert_eq(Medals.medal_for_time(times, 30.0), Medals.Medal.BRONZE, "bronze time itself")
+	assert_eq(Medals.medal_for_time(times, 30.05), Medals.Medal.NONE, "a hair over bronze")
+	assert_eq(Medals.medal_for_time(times, 0.1), Medals.Medal.GOLD, "any finish under gold")
+
+
+func test_no_finish_and_broken_times_earn_no_medal() -> void:
+	var times := PackedFloat64Array([10.0, 20.0, 30.0])
+	assert_eq(Medals.medal_for_time(times, 0.0), Medals.Medal.NONE, "0 s is no finish")
+	assert_eq(Medals.medal_for_time(times, INF), Medals.Medal.NONE)
+	assert_eq(Medals.medal_for_time(times, NAN), Medals.Medal.NONE)
+	assert_eq(Medals.medal_for_time(PackedFloat64Array([10.0, 20.0]), 5.0), Medals.Medal.NONE)
+	var four := PackedFloat64Array([10.0, 20.0, 30.0, 40.0])
+	assert_eq(Medals.medal_for_time(four, 5.0), Medals.Medal.NONE, "four times are no medal set")
+
+
+func test_the_pilot_time_sets_each_medal_rounded_up_to_a_tenth() -> void:
+	assert_eq(Medals.from_pilot_time(10.0), PackedFloat64Array([15.0, 22.0, 35.0]))
+	assert_eq(Medals.from_pilot_time(10.01), PackedFloat64Array([15.1, 22.1, 35.1]))
+	assert_eq(Medals.from_pilot_time(0.0), PackedFloat64Array([0.0, 0.0, 0.0]))
+
+
+func test_a_best_time_is_judged_against_its_own_mode() -> void:
+	var level := _level_with_times()
+	assert_eq(Medals.times_for(level, false), PackedFloat64Array([10.0, 20.0, 30.0]))
+	assert_eq(Medals.times_for(level, true), PackedFloat64Array([15.0, 25.0, 40.0]))
+	assert_eq(Medals.times_for(null, true), PackedFloat64Array(), "no board, no times")
+	assert_eq(Medals.medal(level, false, 12.0), Medals.Medal.SILVER, "easy: 12 s is silver")
+	assert_eq(Medals.medal(level, true, 12.0), Medals.Medal.GOLD, "hard: 12 s is gold")
+	assert_eq(Medals.medal(level, true, 35.0), Medals.Medal.BRONZE)
+	assert_eq(Medals.medal(level, false, -1.0), Medals.Medal.NONE, "never finished")
+	assert_eq(Medals.medal(null, false, 5.0), Medals.Medal.NONE, "no board")
+
+
+func test_every_medal_has_its_name() -> void:
+	assert_eq(Medals.name_of(Medals.Medal.NONE), "No medal")
+	assert_eq(Medals.name_of(Medals.Medal.BRONZE), "Bronze")
+	assert_eq(Medals.name_of(Medals.Medal.SILVER), "Silver")
+	assert_eq(Medals.name_of(Medals.Medal.GOLD), "Gold")
+
+
+func test_the_side_panel_shows_the_best_medal_still_in_reach() -> void:
+	var times := PackedFloat64Array([10.0, 20.0, 30.0])
+	assert_eq(Medals.next_target(times, 0.0), {"medal": Medals.Medal.GOLD, "seconds": 10.0})
+	assert_eq(Medals.next_target(times, 10.0), {"medal": Medals.Medal.GOLD, "seconds": 10.0})
+	assert_eq(Medals.next_target(times, 10.5), {"medal": Medals.Medal.SILVER, "seconds": 20.0})
+	assert_eq(Medals.next_target(times, 20.0), {"medal": Medals.Medal.SILVER, "seconds": 20.0})
+	assert_eq(Medals.next_target(times, 25.0), {"medal": Medals.Medal.BRONZE, "seconds": 30.0})
+	assert_eq(Medals.next_target(times, 30.0), {"medal": Medals.Medal.BRONZE, "seconds": 30.0})
+	assert_eq(Medals.next_target(times, 30.5), {"medal": Medals.Medal.NONE, "seconds": 0.0})
+	var none := {"medal": Medals.Medal.NONE, "seconds": 0.0}
+	assert_eq(Medals.next_target(PackedFloat64Array(), 1.0), none, "a board without times")
+	assert_eq(Medals.next_target(PackedFloat64Array([10.0, 20.0]), 1.0), none)
+
+
+func test_the_time_each_medal_asks_for() -> void:
+	var times := PackedFloat64Array([10.0, 20.0, 30.0])
+	assert_eq(Medals.time_of(times, Medals.Medal.GOLD), 10.0)
+	assert_eq(Medals.time_of(times, Medals.Medal.SILVER), 20.0)
+	assert_eq(Medals.time_of(times, Medals.Medal.BRONZE), 30.0)
+	assert_eq(Medals.time_of(times, Medals.Medal.NONE), -1.0, "no medal asks for no time")
+	assert_eq(Medals.time_of(PackedFloat64Array(), Medals.Medal.GOLD), -1.0, "no times")
+	var two := PackedFloat64Array([10.0, 20.0])
+	assert_eq(Medals.time_of(two, Medals.Medal.GOLD), -1.0, "not a set of three")

@@ -88,3 +88,48 @@ func test_the_total_cap_keeps_direction_and_the_per_axis_cap_each_axis() -> void
 ## A value in -scale .. scale, or exactly 0 one time in four.
 func _some(rng: RandomNumberGenerator, scale: float) -> float:
 	return 0.0 if rng.randi_range(0, 3) == 0 else rng.randf_range(-scale, scale)
+
+
+## A per-axis tuning that tops x out below the cap downhill (the tilt maze seed's).
+func _seed_tuning(cap: float, x_time: float) -> PhysicsTuning:
+	var t := PhysicsTuning.new()
+	t.max_speed = cap
+	t.speed_cap = PhysicsTuning.SpeedCap.PER_AXIS
+	t.x_cap_friction_time = x_time
+	return t
+
+
+func test_downhill_x_tops_out_below_the_cap_and_uphill_does_not() -> void:
+	var rules := SpeedRules.new()
+	var dt := 0.01
+	# friction 0.5 px/s a step over 0.01 s for 0.4 s: x tops out 20 px/s under the cap of 100
+	rules.prepare(_seed_tuning(100.0, 0.4), Vector2(50.0, 0.0), Vector2(0.5, 0.0), dt)
+	assert_eq(rules.limit(Vector2(500.0, 0.0)).x, 80.0, "downhill (+x): 80")
+	assert_eq(rules.limit(Vector2(-500.0, 0.0)).x, -100.0, "uphill: the plain cap")
+	rules.prepare(_seed_tuning(100.0, 0.4), Vector2(-50.0, 0.0), Vector2(0.5, 0.0), dt)
+	assert_eq(rules.limit(Vector2(-500.0, 0.0)).x, -80.0, "downhill (-x): -80")
+	assert_eq(rules.limit(Vector2(500.0, 0.0)).x, 100.0)
+	rules.prepare(_seed_tuning(100.0, 0.4), Vector2(0.05, 0.0), Vector2(0.5, 0.0), dt)
+	assert_eq(rules.limit(Vector2(500.0, 0.0)).x, 80.0, "the faintest tilt right is downhill")
+	rules.prepare(_seed_tuning(100.0, 0.4), Vector2(-0.05, 0.0), Vector2(0.5, 0.0), dt)
+	assert_eq(rules.limit(Vector2(-500.0, 0.0)).x, -80.0, "and the faintest tilt left")
+
+
+func test_friction_that_eats_the_whole_cap_holds_x_still_downhill() -> void:
+	var rules := SpeedRules.new()
+	rules.prepare(_seed_tuning(10.0, 1.0), Vector2(900.0, 0.0), Vector2(1.0, 0.0), 0.01)
+	assert_eq(rules.limit(Vector2(40.0, 0.0)).x, 0.0, "never below zero: held, not pushed back")
+
+
+func test_a_step_of_no_time_caps_as_usual() -> void:
+	var rules := SpeedRules.new()
+	rules.prepare(_seed_tuning(100.0, 0.4), Vector2(50.0, 0.0), Vector2(0.5, 0.0), 0.0)
+	assert_eq(rules.limit(Vector2(500.0, 0.0)).x, 100.0, "no friction time, no lower top")
+
+
+func test_without_a_pull_friction_slows_each_axis_toward_zero() -> void:
+	var t := TuningPresets.maze()
+	var rules := SpeedRules.new()
+	rules.prepare(t, Vector2.ZERO, Vector2(2.0, 3.0), 0.01)
+	assert_eq(rules.limit(Vector2(10.0, -10.0)), Vector2(8.0, -7.0))
+	assert_eq(rules.limit(Vector2(1.0, -2.0)), Vector2.ZERO, "never past zero")
