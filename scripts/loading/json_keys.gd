@@ -7,10 +7,14 @@ extends RefCounted
 ## A repeated key is quoted at most this long in a message.
 const QUOTED_CHARS := 40
 
+## What `repeated` returns for a repeated empty key (`{"": 1, "": 2}`), since its own
+## answer for "no repeat" is "".
+const EMPTY_KEY := '""'
 
-## The first key that appears twice in the same object of `text`, or "" when none does.
-## `text` must already have parsed as JSON (the scan trusts its strings to be closed);
-## `parsed`, what it parsed to, lets most lines skip the scan.
+
+## The first key that appears twice in the same object of `text` (EMPTY_KEY for the empty
+## key), or "" when none does. `text` must already have parsed as JSON (the scan trusts its
+## strings to be closed); `parsed`, what it parsed to, lets most lines skip the scan.
 static func repeated(text: String, parsed: Variant = null) -> String:
 	if not text.contains(","):
 		return ""  # two keys in one object need a comma between them
@@ -29,7 +33,7 @@ static func repeated(text: String, parsed: Variant = null) -> String:
 					var keys: Dictionary = open
 					var key := _decoded(text.substr(at, end - at + 1))
 					if keys.has(key):
-						return key
+						return key if not key.is_empty() else EMPTY_KEY
 					keys[key] = true
 			at = end + 1
 			continue
@@ -59,6 +63,8 @@ static func _key_count(value: Variant) -> int:
 
 ## The problem for a repeated `key`, as the readers word it.
 static func problem(key: String) -> String:
+	if key == EMPTY_KEY:
+		return 'the empty key "" is given twice'
 	var shown := key if key.length() <= QUOTED_CHARS else key.left(QUOTED_CHARS) + "…"
 	return 'the key "%s" is given twice' % shown.c_escape()
 

@@ -102,3 +102,12 @@ func test_a_long_key_is_cut_at_forty_characters() -> void:
 	assert_eq(JsonKeys.problem(forty), 'the key "%s" is given twice' % forty, "40 shown whole")
 	assert_eq(JsonKeys.problem(forty + "x"), 'the key "%s…" is given twice' % forty, "41 cut to 40")
 	assert_eq(JsonKeys.problem('a"b\n'), 'the key "a\\"b\\n" is given twice')
+
+
+# A repeated empty key was answered "" (no repeat), so {"": 1, "": 2} loaded with the
+# second value quietly winning (found by the mutation work of issue 45).
+func test_a_repeated_empty_key_is_found_and_named() -> void:
+	assert_eq(JsonKeys.repeated('{"": 1, "": 2}'), JsonKeys.EMPTY_KEY)
+	assert_eq(JsonKeys.repeated('{"a": {"": 1, "": 2}}', {"a": {"": 2}}), JsonKeys.EMPTY_KEY)
+	assert_eq(JsonKeys.repeated('{"": 1, "b": 2}'), "", "one empty key is no repeat")
+	assert_eq(JsonKeys.problem(JsonKeys.EMPTY_KEY), 'the empty key "" is given twice')
