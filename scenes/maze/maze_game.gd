@@ -16,22 +16,12 @@ const MazeNote := preload("res://scenes/maze/maze_note.gd")
 const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
 const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
 const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
-const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const MazePanelLayout := preload("res://scenes/maze/maze_panel_layout.gd")
 const MazeHints := preload("res://scenes/maze/maze_hints.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
-## The side panel: a column on the right of a landscape window (this share of its width,
-## within these bounds, and this far from the edge), a band along the bottom of a portrait one
-## (this share of its height). The board is framed in the rest, so no text lies over it.
-const SIDE_SHARE := 0.2
-const SIDE_MIN_WIDTH := 260.0
-const SIDE_MAX_WIDTH := 350.0
-const SIDE_EDGE := 24.0
-## A column whose text grew (a small window) is at most this share of the window's width.
-const SIDE_MOST_SHARE := 0.36
-const PORTRAIT_SIDE_SHARE := 0.45
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -50,9 +40,7 @@ var _ghost: GhostRun
 var _ghost_view := MazeGhost3D.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
-var _side_text: MazeSideText
-## Layouts left to try again next frame while the panel has no width yet.
-var _relayouts_left := 3
+var _panel_layout: MazePanelLayout
 
 @onready var _stage: MazeStage = $Stage
 @onready var _side: VBoxContainer = $Side
@@ -226,61 +214,25 @@ func _on_won(seconds: float) -> void:
 
 
 func _on_size_changed() -> void:
-	_relayouts_left = 3
+	if _panel_layout != null:
+		_panel_layout.window_changed()
 	_layout()
 
 
-## Puts the side panel where the window's shape leaves room (a column on the right, or a
-## band along the bottom of a portrait window) and frames the board in the rest. Returns the
-## board's region (screen pixels).
+## Puts the side panel where the window's shape leaves room (MazePanelLayout) and frames the
+## board in the rest. Returns the board's region (screen pixels).
 func _layout() -> Rect2:
-	var view := get_viewport_rect().size
-	if _side_text == null:
-		_side_text = MazeSideText.new(_side)
-	var region: Rect2
+	if _panel_layout == null:
+		_panel_layout = MazePanelLayout.new(_side, _joystick)
 	var stretch := get_viewport().get_final_transform().get_scale().y
-	_side_text.apply(stretch)
-	if view.x >= view.y:
-		# the design's sizes, or bigger in a small window (900 × 700 drew them at 0.7): the
-		# column widens with its text and the board takes the rest
-		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
-		width = minf(width * _side_text.factor, view.x * SIDE_MOST_SHARE)
-		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
-		_side.offset_left = -width - SIDE_EDGE
-		_side.offset_right = -SIDE_EDGE
-		_side.offset_top = SIDE_EDGE
-		_side.offset_bottom = -SIDE_EDGE
-		region = Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
-		_fit_joystick(minf(2.0, width / MazeJoystick.drawn_size(1.0)), view.y - SIDE_EDGE * 2.0)
-	else:
-		var height := view.y * PORTRAIT_SIDE_SHARE
-		_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
-		_side.offset_left = SIDE_EDGE
-		_side.offset_right = -SIDE_EDGE
-		_side.offset_top = -height
-		_side.offset_bottom = -SIDE_EDGE * 0.5
-		region = Rect2(0.0, 0.0, view.x, view.y - height)
-		_fit_joystick(2.0, height - SIDE_EDGE * 0.5)
+	var region := _panel_layout.place(get_viewport_rect().size, stretch)
+	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
+		get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)
 	_stage.set_board_region(region)
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
 	_win_panel.size = region.size
 	return region
-
-
-# Sizes the joystick at most `largest` times the seed's size and no bigger than the height
-# the panel's other lines leave of `panel_height` (px), so the whole panel fits its place.
-func _fit_joystick(largest: float, panel_height: float) -> void:
-	var stick := MazeJoystick.drawn_size(1.0)
-	var others := _side.get_combined_minimum_size().y - _joystick.get_combined_minimum_size().y
-	if others >= panel_height and _relayouts_left > 0:
-		# the column has no width yet (its wrapping lines stand one word a line): again
-		# once it is laid out
-		_relayouts_left -= 1
-		if not get_tree().process_frame.is_connected(_layout):
-			get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)
-		return
-	_joystick.ui_scale = clampf((panel_height - others) / stick, 0.5, largest)
 
 
 ## The win panel (for tests and the screenshots).

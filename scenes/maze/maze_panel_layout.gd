@@ -1,0 +1,78 @@
+extends RefCounted
+## Where the maze screen's side panel goes for the window's shape: a column on the right of
+## a landscape window, a band along the bottom of a portrait one, its text grown in a small
+## window (MazeSideText) and the joystick sized to what the other lines leave. The board is
+## framed in the rest, so no text lies over it.
+
+const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
+const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+## The column's share of a landscape window's width, within these bounds, this far from the
+## edge; a portrait band's share of the height.
+const SIDE_SHARE := 0.2
+const SIDE_MIN_WIDTH := 260.0
+const SIDE_MAX_WIDTH := 350.0
+const SIDE_EDGE := 24.0
+## A column whose text grew (a small window) is at most this share of the window's width.
+const SIDE_MOST_SHARE := 0.36
+const PORTRAIT_SIDE_SHARE := 0.45
+## Layouts tried again, a frame apart, while the column has no width yet.
+const RETRIES := 3
+
+## Set by `place`: the layout must be tried again next frame.
+var needs_retry := false
+
+var _side: VBoxContainer
+var _joystick: MazeJoystick
+var _side_text: MazeSideText
+var _retries_left := RETRIES
+
+
+func _init(side: VBoxContainer, joystick: MazeJoystick) -> void:
+	_side = side
+	_joystick = joystick
+	_side_text = MazeSideText.new(side)
+
+
+## The window changed: the retries start over.
+func window_changed() -> void:
+	_retries_left = RETRIES
+
+
+## Places the panel for a view of `view` px drawn `stretch` times its size and returns the
+## board's region. True in `needs_retry` afterwards when the column had no width yet (its
+## wrapping lines stood one word a line): place it again next frame.
+func place(view: Vector2, stretch: float) -> Rect2:
+	needs_retry = false
+	_side_text.apply(stretch)
+	if view.x >= view.y:
+		# the design's sizes, or bigger in a small window (900 × 700 drew them at 0.7): the
+		# column widens with its text and the board takes the rest
+		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
+		width = minf(width * _side_text.factor, view.x * SIDE_MOST_SHARE)
+		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
+		_side.offset_left = -width - SIDE_EDGE
+		_side.offset_right = -SIDE_EDGE
+		_side.offset_top = SIDE_EDGE
+		_side.offset_bottom = -SIDE_EDGE
+		_fit_joystick(minf(2.0, width / MazeJoystick.drawn_size(1.0)), view.y - SIDE_EDGE * 2.0)
+		return Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
+	var height := view.y * PORTRAIT_SIDE_SHARE
+	_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
+	_side.offset_left = SIDE_EDGE
+	_side.offset_right = -SIDE_EDGE
+	_side.offset_top = -height
+	_side.offset_bottom = -SIDE_EDGE * 0.5
+	_fit_joystick(2.0, height - SIDE_EDGE * 0.5)
+	return Rect2(0.0, 0.0, view.x, view.y - height)
+
+
+# Sizes the joystick at most `largest` times the seed's size and no bigger than the height
+# the panel's other lines leave of `panel_height` (px), so the whole panel fits its place.
+func _fit_joystick(largest: float, panel_height: float) -> void:
+	var stick := MazeJoystick.drawn_size(1.0)
+	var others := _side.get_combined_minimum_size().y - _joystick.get_combined_minimum_size().y
+	if others >= panel_height and _retries_left > 0:
+		_retries_left -= 1
+		needs_retry = true
+		return
+	_joystick.ui_scale = clampf((panel_height - others) / stick, 0.5, largest)
