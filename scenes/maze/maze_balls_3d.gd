@@ -15,7 +15,7 @@ const FALL_MAX_STEP := 1.0 / 30.0
 const SPHERE_RINGS := 16
 const SPHERE_SEGMENTS := 32
 
-## The ball's surface; set before the first `sync`.
+## The ball's surface; set before the first `sync` (or with `set_material` later).
 var material: Material
 ## How deep the holes are, in board pixels (how far a falling ball sinks).
 var hole_depth_px := 12.0
@@ -32,6 +32,14 @@ var _falls: Dictionary[MeshInstance3D, Array] = {}
 func _init() -> void:
 	_mesh.rings = SPHERE_RINGS
 	_mesh.radial_segments = SPHERE_SEGMENTS
+
+
+## Gives every ball on the board, and every ball to come, the surface `surface` (balls
+## falling into a hole keep the darkening copy they have).
+func set_material(surface: Material) -> void:
+	material = surface
+	for node: MeshInstance3D in _nodes.values():
+		node.material_override = surface
 
 
 ## Removes every ball (a reset rebuilds the world with new ids).

@@ -41,6 +41,9 @@ const FLOOR_GAIN := 1.22
 
 ## The tutorial's flat colours instead of wood (set before `build`).
 var tutorial_look := false
+## Low graphics: the wood's grain and the soft shadows are left out (the floor and walls in
+## their plain colours), for machines that draw 3D on the CPU. See `set_low_graphics`.
+var low_graphics := false
 
 var _level: BoardLevel
 var _floor := MeshInstance3D.new()
@@ -99,7 +102,9 @@ func _paint_look() -> void:
 	var wood := not tutorial_look
 	_set_paint("floor_color", MAPLE if wood else Palette.BACKGROUND)
 	_set_paint("floor_gain", 1.0 if wood else FLOOR_GAIN)
-	_set_paint("grain_strength", 0.55 if wood else 0.0)
+	var grain := wood and not low_graphics
+	_set_paint("grain_strength", 0.55 if grain else 0.0)
+	_set_paint("shadows_on", not low_graphics)
 	_set_paint("grain_color", MAPLE_GRAIN)
 	_set_paint("plank_px", _level.path_width + _level.wall_width if _level != null else 35.0)
 	var looks := [
@@ -117,7 +122,13 @@ func _paint_look() -> void:
 		material.set_shader_parameter("side_color", look[1] if wood else look[3])
 		material.set_shader_parameter("cap_color", look[2] if wood else look[4])
 		material.set_shader_parameter("grain_color", WALNUT_GRAIN)
-		material.set_shader_parameter("grain_strength", 0.5 if wood else 0.0)
+		material.set_shader_parameter("grain_strength", 0.5 if grain else 0.0)
+
+
+## Switches Low graphics on or off on a board already built (see `low_graphics`).
+func set_low_graphics(low: bool) -> void:
+	low_graphics = low
+	_paint_look()
 
 
 ## Lights the goal's dish: 0 plain, 1 brightest (the stage fades it after a ball is counted).

@@ -94,6 +94,7 @@ func _ready() -> void:
 	rules.wall_bumped.connect(_on_wall_bumped)
 	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
+	_stage.set_low_graphics(App.settings.maze_low_graphics)
 	get_viewport().size_changed.connect(_on_size_changed)
 	_layout()
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
@@ -314,6 +315,8 @@ func _on_settings_changed() -> void:
 	haptics.enabled = App.settings.vibration
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
+	if _stage.low_graphics != App.settings.maze_low_graphics:
+		_stage.set_low_graphics(App.settings.maze_low_graphics)
 
 
 func _on_restart_requested() -> void:

@@ -40,7 +40,12 @@ const ROOM_SIZE := Vector2i(256, 128)
 ## The tutorial's flat colours and red balls instead of wood and steel (set before
 ## `set_level`).
 var tutorial_look := false
+## Low graphics (the player's setting, for machines that draw 3D on the CPU): no soft
+## shadows, no wood grain, no table shadow, no reflections in the balls
+## (tools/maze_fps.sh measures it beside the full look). Set with `set_low_graphics`.
+var low_graphics := false
 
+var _world_env := WorldEnvironment.new()
 var _pivot := Node3D.new()
 var _board: MazeBoard3D = MazeBoard3D.new()
 var _balls: MazeBalls3D = MazeBalls3D.new()
@@ -57,9 +62,8 @@ var _goal_glow := 0.0
 
 
 func _ready() -> void:
-	var world_env := WorldEnvironment.new()
-	world_env.environment = _environment()
-	add_child(world_env)
+	_world_env.environment = _environment()
+	add_child(_world_env)
 	use_render_settings(get_viewport(), RenderingServer.get_video_adapter_name())
 	# One light, no shadow map: the floor's shader lays soft shadows cast along the same
 	# direction (maze_board_3d.gd). A shadow map cost a third of each frame on software GL
@@ -71,6 +75,7 @@ func _ready() -> void:
 	add_child(_camera)
 	_camera.current = true
 	_table.colour = Palette.JOYSTICK
+	_table.visible = not low_graphics
 	add_child(_table)
 	add_child(_pivot)
 	_pivot.add_child(_board)
@@ -89,11 +94,24 @@ func set_level(level: BoardLevel, hard: bool) -> void:
 	_board_size = level.size
 	_ball_radius = level.ball_radius
 	_board.tutorial_look = tutorial_look
+	_board.low_graphics = low_graphics
 	_board.build(level, hard)
 	_balls.clear()
 	_balls.hole_depth_px = _board.hole_depth_px()
-	_balls.material = ball_material(tutorial_look)
+	_balls.material = ball_material(tutorial_look, low_graphics)
 	_frame()
+
+
+## Switches Low graphics (`low_graphics`) on or off, on a board already built or not.
+func set_low_graphics(low: bool) -> void:
+	low_graphics = low
+	_board.set_low_graphics(low)
+	_balls.set_material(ball_material(tutorial_look, low))
+	_table.visible = not low
+	if _world_env.environment != null:
+		_world_env.environment.reflected_light_source = (
+			Environment.REFLECTION_SOURCE_DISABLED if low else Environment.REFLECTION_SOURCE_SKY
+		)
 
 
 ## Shows or hides the holes and forgets the balls (the world was rebuilt).
@@ -179,6 +197,16 @@ func sun() -> DirectionalLight3D:
 	return _sun
 
 
+## The table's shade under the board (hidden with Low graphics), for tests.
+func table() -> Node3D:
+	return _table
+
+
+## The stage's environment (light, the room the balls reflect), for tests.
+func environment() -> Environment:
+	return _world_env.environment
+
+
 ## Height (stage z) of the table under the board.
 func table_height() -> float:
 	return _table_z
@@ -189,8 +217,9 @@ func lowest_board_point() -> float:
 	return _lowest_point(_pivot.transform)
 
 
-## The balls' surface: the seed's glossy red-orange (the tutorial's look), or polished steel.
-static func ball_material(seed_red: bool) -> StandardMaterial3D:
+## The balls' surface: the seed's glossy red-orange (the tutorial's look), or polished steel
+## (with `low` graphics a satin steel that needs no reflections to read as metal).
+static func ball_material(seed_red: bool, low := false) -> StandardMaterial3D:
 	var mat := StandardMaterial3D.new()
 	mat.albedo_texture = _ball_band_texture(Palette.BALL if seed_red else Color(0.78, 0.8, 0.83))
 	# a little glow of its own, so the ball stays as bright as the seed's beside the floor
@@ -200,6 +229,11 @@ static func ball_material(seed_red: bool) -> StandardMaterial3D:
 	if seed_red:
 		mat.roughness = 0.28
 		mat.metallic_specular = 0.7
+	elif low:
+		# no room to reflect: a bright satin grey with the sun's highlight
+		mat.roughness = 0.3
+		mat.metallic_specular = 0.8
+		mat.emission_energy_multiplier = 0.9
 	else:
 		# polished: the room (room_panorama) shows in it; less glow of its own
 		mat.metallic = 0.95

@@ -27,6 +27,7 @@ const PORTRAIT_BUTTON_WIDTH := 190.0
 @onready var _frame_counter: Button = %FrameCounterCheck
 @onready var _ghost: Button = %GhostCheck
 @onready var _maze_look: Button = %MazeLookCheck
+@onready var _graphics: Button = %GraphicsCheck
 @onready var _vibration: Button = %VibrationCheck
 @onready var _screen_shake: Button = %ScreenShakeCheck
 @onready var _unlock_all: Button = %UnlockAllCheck
@@ -50,6 +51,7 @@ func _ready() -> void:
 	_frame_counter.toggled.connect(_on_value_changed.bind("show_frame_counter"))
 	_ghost.toggled.connect(_on_value_changed.bind("show_ghost"))
 	_maze_look.toggled.connect(_on_value_changed.bind("maze_tutorial_look"))
+	_graphics.toggled.connect(_on_value_changed.bind("maze_low_graphics"))
 	_vibration.toggled.connect(_on_value_changed.bind("vibration"))
 	_screen_shake.toggled.connect(_on_value_changed.bind("screen_shake"))
 	_unlock_all.toggled.connect(_on_value_changed.bind("unlock_all_boards"))
@@ -64,6 +66,7 @@ func _ready() -> void:
 		_frame_counter,
 		_ghost,
 		_maze_look,
+		_graphics,
 		_vibration,
 		_screen_shake,
 		_unlock_all
@@ -120,6 +123,7 @@ func _load_values() -> void:
 	_frame_counter.set_pressed_no_signal(settings.show_frame_counter)
 	_ghost.set_pressed_no_signal(settings.show_ghost)
 	_maze_look.set_pressed_no_signal(settings.maze_tutorial_look)
+	_graphics.set_pressed_no_signal(settings.maze_low_graphics)
 	_vibration.set_pressed_no_signal(settings.vibration)
 	_screen_shake.set_pressed_no_signal(settings.screen_shake)
 	_unlock_all.set_pressed_no_signal(settings.unlock_all_boards)
@@ -136,6 +140,7 @@ func _show_numbers() -> void:
 	_frame_counter.text = "On" if _frame_counter.button_pressed else "Off"
 	_ghost.text = "On" if _ghost.button_pressed else "Off"
 	_maze_look.text = "Tutorial" if _maze_look.button_pressed else "Wood and steel"
+	_graphics.text = "Low (faster)" if _graphics.button_pressed else "Full"
 	_vibration.text = "On" if _vibration.button_pressed else "Off"
 	_screen_shake.text = "On" if _screen_shake.button_pressed else "Off"
 	_unlock_all.text = "On" if _unlock_all.button_pressed else "Off"

@@ -49,6 +49,9 @@ var show_frame_counter := false
 var show_ghost := true
 ## Draw the tilt maze in the tutorial's flat colours instead of wood and steel.
 var maze_tutorial_look := false
+## Low graphics for the tilt maze: no soft shadows, no wood grain, no reflections, for
+## machines that draw 3D without a graphics card (software GL).
+var maze_low_graphics := false
 ## Multiplier on the maze tilt from keys and sticks.
 var tilt_sensitivity := 1.0
 ## Every maze board open from the start, instead of one after another.
@@ -101,6 +104,7 @@ func reset_to_defaults() -> void:
 	show_frame_counter = false
 	show_ghost = true
 	maze_tutorial_look = false
+	maze_low_graphics = false
 	tilt_sensitivity = 1.0
 	unlock_all_boards = false
 	vibration = true
@@ -168,7 +172,10 @@ func set_value(key: String, value: Variant) -> void:
 		"fullscreen":
 			var on: bool = value
 			fullscreen = on
-		"show_frame_counter", "show_ghost", "unlock_all_boards", "maze_tutorial_look":
+		"show_frame_counter", "show_ghost", "unlock_all_boards":
+			var on: bool = value
+			set(key, on)
+		"maze_tutorial_look", "maze_low_graphics":
 			var on: bool = value
 			set(key, on)
 		"screen_shake":
@@ -229,6 +236,7 @@ func save_file(path: String) -> Error:
 				"show_frame_counter": show_frame_counter,
 				"show_ghost": show_ghost,
 				"maze_tutorial_look": maze_tutorial_look,
+				"maze_low_graphics": maze_low_graphics,
 				"screen_shake": screen_shake,
 				"window_width": window_size.x,
 				"window_height": window_size.y,
@@ -273,6 +281,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	_read_flag(display, "show_frame_counter", problems)
 	_read_flag(display, "show_ghost", problems)
 	_read_flag(display, "maze_tutorial_look", problems)
+	_read_flag(display, "maze_low_graphics", problems)
 	_read_flag(display, "screen_shake", problems)
 	_read_window_size(display, problems)
 	_read_number(controls, "tilt_sensitivity", MIN_TILT_SENSITIVITY, MAX_TILT_SENSITIVITY, problems)

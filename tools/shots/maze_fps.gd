@@ -15,15 +15,18 @@ const SCRATCH_SETTINGS := "user://fps_settings.cfg"
 const SCRATCH_SAVE := "user://fps_save.cfg"
 ## Variants: a name and the settings it changes from the game's own ("as shipped" changes
 ## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*),
-## hide (parts not drawn: floor, walls, frame, balls, table, shadows).
+## hide (parts not drawn: floor, walls, frame, balls, table, shadows), low (the player's
+## Low graphics setting). MAZE_FPS_ONLY="as shipped|Low graphics" runs only those;
+## MAZE_FPS_THREADS=1 prints each thread's CPU ms a frame (llvmpipe's, the engine's).
 const VARIANTS := [
 	["full res, MSAA 2x (GPU path)", {"scale": 1.0, "msaa": Viewport.MSAA_2X}],
 	["as shipped", {}],
-	["scale 0.6", {"scale": 0.6}],
-	["scale 0.67", {"scale": 0.67}],
-	["scale 0.75", {"scale": 0.75}],
+	["Low graphics", {"low": true}],
+	["Low graphics, full res", {"low": true, "scale": 1.0}],
+	["Low graphics, scale 0.35", {"low": true, "scale": 0.35}],
 	["full res", {"scale": 1.0}],
 	["no shadows", {"hide": ["shadows"]}],
+	["no 3D", {"hide": ["floor", "walls", "frame", "balls", "table"]}],
 ]
 
 var _angle := 0.0
@@ -55,14 +58,15 @@ func _run() -> void:
 	var frames := (
 		int(OS.get_environment("MAZE_FPS_FRAMES")) if OS.has_environment("MAZE_FPS_FRAMES") else 40
 	)
+	var variants := _chosen_variants()
 	var rates := {}
 	var mains := {}
-	for variant: Array in VARIANTS:
+	for variant: Array in variants:
 		rates[variant[0]] = PackedFloat64Array()
 		mains[variant[0]] = PackedFloat64Array()
 	await _frames(20)  # the game starts on the first tilt; let it settle
 	for r in rounds:
-		for variant: Array in VARIANTS:
+		for variant: Array in variants:
 			_apply(stage, defaults.merged(variant[1], true))
 			await _frames(4)
 			var measured := await _measure(frames)
@@ -79,7 +83,7 @@ func _run() -> void:
 		)
 	)
 	print("maze_fps:   variant                      frames/CPU s (min-max)   main thread ms/frame")
-	for variant: Array in VARIANTS:
+	for variant: Array in variants:
 		var list: PackedFloat64Array = rates[variant[0]]
 		list.sort()
 		var main: PackedFloat64Array = mains[variant[0]]
@@ -94,9 +98,18 @@ func _run() -> void:
 	quit(0)
 
 
+# The variants named in MAZE_FPS_ONLY (names joined by "|"), or all of them.
+func _chosen_variants() -> Array:
+	if not OS.has_environment("MAZE_FPS_ONLY"):
+		return VARIANTS
+	var names := OS.get_environment("MAZE_FPS_ONLY").split("|")
+	return VARIANTS.filter(func(variant: Array) -> bool: return names.has(variant[0]))
+
+
 func _read_settings(_stage: MazeStage) -> Dictionary:
 	return {
 		"hide": [],
+		"low": false,
 		"scale": root.scaling_3d_scale,
 		"msaa": root.msaa_3d,
 	}
@@ -105,17 +118,23 @@ func _read_settings(_stage: MazeStage) -> Dictionary:
 func _apply(stage: MazeStage, settings: Dictionary) -> void:
 	root.scaling_3d_scale = settings["scale"]
 	root.msaa_3d = settings["msaa"]
+	# Low graphics as the player's setting gives it
+	stage.set_low_graphics(settings["low"])
 	var board := stage.board()
 	var parts := {
 		"floor": [board.part("floor")],
 		"walls": [board.part("walls")],
 		"frame": [board.part("frame")],
 		"balls": [stage.balls()],
-		"table": [stage.get("_table")],
+		"table": [stage.table()],
 	}
+	if settings["low"]:
+		parts.erase("table")  # hidden by the setting
 	for part: String in parts:
 		for node: Node3D in parts[part]:
 			node.visible = not settings["hide"].has(part)
+	if settings["low"]:
+		return
 	# the shadows are the floor shader's
 	board.floor_material().set_shader_parameter("shadows_on", not settings["hide"].has("shadows"))
 
@@ -134,7 +153,15 @@ func _measure(count: int) -> Array[float]:
 	var main_stat := "/proc/self/task/%d/stat" % OS.get_process_id()
 	var cpu_start := _cpu_seconds()
 	var main_start := _cpu_seconds(main_stat)
+	var threads_start := _thread_seconds()
 	await _frames(count)
+	if OS.has_environment("MAZE_FPS_THREADS"):
+		var threads_end := _thread_seconds()
+		var parts := PackedStringArray()
+		for name: String in threads_end:
+			var spent: float = threads_end[name] - threads_start.get(name, 0.0)
+			parts.append("%s %.1f" % [name, spent * 1000.0 / count])
+		print("maze_fps: threads ms/frame: ", ", ".join(parts))
 	var cpu := maxf(_cpu_seconds() - cpu_start, 0.001)
 	var main := _cpu_seconds(main_stat) - main_start
 	return [count / cpu, main * 1000.0 / count]
@@ -157,6 +184,22 @@ func _tilt(strength: Vector2) -> void:
 func _release() -> void:
 	for action: StringName in [&"tilt_left", &"tilt_right", &"tilt_up", &"tilt_down"]:
 		Input.action_release(action)
+
+
+# CPU seconds of this process's threads, summed by thread name.
+static func _thread_seconds() -> Dictionary:
+	var totals := {}
+	for task in DirAccess.get_directories_at("/proc/self/task"):
+		var file := FileAccess.open("/proc/self/task/%s/stat" % task, FileAccess.READ)
+		if file == null:
+			continue
+		var text := file.get_line()
+		var name := text.substr(text.find("(") + 1, text.rfind(")") - text.find("(") - 1)
+		var fields := text.substr(text.rfind(")") + 2).split(" ")
+		totals[name] = (
+			totals.get(name, 0.0) + (fields[11].to_float() + fields[12].to_float()) / 100.0
+		)
+	return totals
 
 
 # User + system CPU seconds of this process, all its threads (software GL's too).

@@ -1,0 +1,104 @@
+extends GutTest
+## Low graphics (Settings, "Tilt Maze graphics"): the maze drops its costly looks (soft
+## shadows, wood grain, the table's shadow, reflections in the balls) at once, on a board
+## already in play, and brings them back; the setting is kept in the settings file.
+
+const GAME := preload("res://scenes/maze/maze_game.tscn")
+const MazeGame := preload("res://scenes/maze/maze_game.gd")
+const MazeStage := preload("res://scenes/maze/maze_stage.gd")
+const TEST_SETTINGS := "user://test_low_graphics_settings.cfg"
+const TEST_SAVE := "user://test_low_graphics_save.cfg"
+
+var _game: MazeGame
+
+
+func before_all() -> void:
+	App.load_player_files(TEST_SETTINGS, TEST_SAVE)
+
+
+func after_all() -> void:
+	App.settings.set_value("maze_low_graphics", false)
+	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
+	for path in [TEST_SETTINGS, TEST_SAVE]:
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+
+func before_each() -> void:
+	App.settings.set_value("maze_low_graphics", false)
+	_game = GAME.instantiate()
+	add_child_autofree(_game)
+	await wait_process_frames(2)
+
+
+func _floor_uniform(uniform: String) -> Variant:
+	return _game.stage().board().floor_material().get_shader_parameter(uniform)
+
+
+func _wall_grain() -> float:
+	var walls := _game.stage().board().part("walls").material_override as ShaderMaterial
+	return walls.get_shader_parameter("grain_strength")
+
+
+func _reflections() -> int:
+	return _game.stage().environment().reflected_light_source
+
+
+func _table_visible() -> bool:
+	return _game.stage().table().visible
+
+
+func test_full_look_has_shadows_grain_table_and_reflections() -> void:
+	assert_true(_floor_uniform("shadows_on"))
+	assert_gt(_floor_uniform("grain_strength"), 0.0)
+	assert_gt(_wall_grain(), 0.0)
+	assert_true(_table_visible())
+	assert_eq(_reflections(), Environment.REFLECTION_SOURCE_SKY)
+
+
+func test_the_setting_turns_the_costly_looks_off_in_play_and_back_on() -> void:
+	App.settings.set_value("maze_low_graphics", true)
+	App.settings.changed.emit()
+	assert_false(_floor_uniform("shadows_on"), "no soft shadows")
+	assert_eq(_floor_uniform("grain_strength"), 0.0, "a plain floor")
+	assert_eq(_wall_grain(), 0.0, "plain walls")
+	assert_false(_table_visible(), "no table shadow")
+	assert_eq(_reflections(), Environment.REFLECTION_SOURCE_DISABLED, "no reflections")
+	App.settings.set_value("maze_low_graphics", false)
+	App.settings.changed.emit()
+	assert_true(_floor_uniform("shadows_on"))
+	assert_gt(_floor_uniform("grain_strength"), 0.0)
+	assert_true(_table_visible())
+	assert_eq(_reflections(), Environment.REFLECTION_SOURCE_SKY)
+
+
+func test_a_board_opened_with_the_setting_on_starts_low() -> void:
+	App.settings.set_value("maze_low_graphics", true)
+	var game: MazeGame = GAME.instantiate()
+	add_child_autofree(game)
+	await wait_process_frames(2)
+	assert_true(game.stage().low_graphics)
+	var floor_material := game.stage().board().floor_material()
+	assert_false(floor_material.get_shader_parameter("shadows_on"))
+	assert_false(game.stage().table().visible)
+
+
+func test_balls_on_the_board_take_the_low_surface_at_once() -> void:
+	await wait_physics_frames(3)
+	var balls := _game.stage().balls()
+	assert_gt(balls.get_child_count(), 0, "balls are on the board")
+	App.settings.set_value("maze_low_graphics", true)
+	App.settings.changed.emit()
+	for ball: MeshInstance3D in balls.get_children():
+		var surface := ball.material_override as StandardMaterial3D
+		assert_eq(surface.metallic, 0.0, "no mirror steel without reflections to show")
+
+
+func test_the_setting_is_kept_in_the_settings_file() -> void:
+	var settings := GameSettings.new()
+	settings.set_value("maze_low_graphics", true)
+	var path := "user://test_low_graphics_round_trip.cfg"
+	assert_eq(settings.save_file(path), OK)
+	var loaded := GameSettings.new()
+	assert_eq(loaded.load_file(path), "")
+	assert_true(loaded.maze_low_graphics)
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
