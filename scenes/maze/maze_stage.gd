@@ -41,8 +41,9 @@ const ROOM_SIZE := Vector2i(256, 128)
 ## `set_level`).
 var tutorial_look := false
 ## Low graphics (the player's setting, for machines that draw 3D on the CPU): no soft
-## shadows, no wood grain, no table shadow, no reflections in the balls
-## (tools/maze_fps.sh measures it beside the full look). Set with `set_low_graphics`.
+## shadows, no wood grain, no table shadow, no reflections in the balls, and on software GL
+## the 3D drawn at the window's own size (`use_render_settings`); tools/maze_fps.sh measures
+## it beside the full look. Set with `set_low_graphics`.
 var low_graphics := false
 
 var _world_env := WorldEnvironment.new()
@@ -64,7 +65,7 @@ var _goal_glow := 0.0
 func _ready() -> void:
 	_world_env.environment = _environment()
 	add_child(_world_env)
-	use_render_settings(get_viewport(), RenderingServer.get_video_adapter_name())
+	use_render_settings(get_viewport(), RenderingServer.get_video_adapter_name(), low_graphics)
 	# One light, no shadow map: the floor's shader lays soft shadows cast along the same
 	# direction (maze_board_3d.gd). A shadow map cost a third of each frame on software GL
 	# (its own pass over the floor, and jagged edges on thin walls at any affordable size).
@@ -112,6 +113,8 @@ func set_low_graphics(low: bool) -> void:
 		_world_env.environment.reflected_light_source = (
 			Environment.REFLECTION_SOURCE_DISABLED if low else Environment.REFLECTION_SOURCE_SKY
 		)
+	if is_inside_tree():
+		use_render_settings(get_viewport(), RenderingServer.get_video_adapter_name(), low)
 
 
 ## Shows or hides the holes and forgets the balls (the world was rebuilt).
@@ -256,9 +259,16 @@ static func _ball_band_texture(colour: Color) -> ImageTexture:
 
 ## Sets how `view` draws 3D for the graphics adapter named `adapter_name`: scaled down and
 ## without MSAA on software GL (SOFTWARE_GL_RENDER_SCALE), the project's settings otherwise.
-static func use_render_settings(view: Viewport, adapter_name: String) -> void:
+## With `low` graphics on software GL the 3D is drawn straight to the window, without
+## MSAA: there a scaled picture's extra buffer and its smoothed copy to the window cost more
+## than the pixels it saves once the floor is plain (tools/maze_fps.sh: 34 frames per CPU
+## second at full size against 31 at half, the full look 24.5).
+static func use_render_settings(view: Viewport, adapter_name: String, low := false) -> void:
 	view.scaling_3d_mode = Viewport.SCALING_3D_MODE_BILINEAR
-	if is_software_gl(adapter_name):
+	if low and is_software_gl(adapter_name):
+		view.msaa_3d = Viewport.MSAA_DISABLED
+		view.scaling_3d_scale = 1.0
+	elif is_software_gl(adapter_name):
 		view.msaa_3d = Viewport.MSAA_DISABLED
 		view.scaling_3d_scale = SOFTWARE_GL_RENDER_SCALE
 	else:

@@ -102,3 +102,19 @@ func test_the_setting_is_kept_in_the_settings_file() -> void:
 	assert_eq(loaded.load_file(path), "")
 	assert_true(loaded.maze_low_graphics)
 	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+
+# On software GL a scaled 3D picture costs an extra buffer and a smoothed copy, more than
+# the pixels it saves once the floor is plain: Low draws straight to the window, no MSAA.
+func test_low_draws_software_gl_at_full_size_without_msaa() -> void:
+	var view := SubViewport.new()
+	add_child_autofree(view)
+	MazeStage.use_render_settings(view, "llvmpipe (LLVM 22.1.8, 256 bits)", true)
+	assert_eq(view.scaling_3d_scale, 1.0)
+	assert_eq(view.msaa_3d, Viewport.MSAA_DISABLED)
+	MazeStage.use_render_settings(view, "llvmpipe (LLVM 22.1.8, 256 bits)", false)
+	assert_eq(view.scaling_3d_scale, MazeStage.SOFTWARE_GL_RENDER_SCALE)
+	var project_msaa: int = ProjectSettings.get_setting("rendering/anti_aliasing/quality/msaa_3d")
+	MazeStage.use_render_settings(view, "NVIDIA GeForce RTX 3060/PCIe/SSE2", true)
+	assert_eq(view.scaling_3d_scale, 1.0, "a graphics card keeps its settings")
+	assert_eq(view.msaa_3d, project_msaa)

@@ -16,14 +16,13 @@ const SCRATCH_SAVE := "user://fps_save.cfg"
 ## Variants: a name and the settings it changes from the game's own ("as shipped" changes
 ## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*),
 ## hide (parts not drawn: floor, walls, frame, balls, table, shadows), low (the player's
-## Low graphics setting). MAZE_FPS_ONLY="as shipped|Low graphics" runs only those;
+## Low graphics setting), low_scale (Low at another render scale). MAZE_FPS_ONLY="as shipped|Low graphics" runs only those;
 ## MAZE_FPS_THREADS=1 prints each thread's CPU ms a frame (llvmpipe's, the engine's).
 const VARIANTS := [
 	["full res, MSAA 2x (GPU path)", {"scale": 1.0, "msaa": Viewport.MSAA_2X}],
 	["as shipped", {}],
 	["Low graphics", {"low": true}],
-	["Low graphics, full res", {"low": true, "scale": 1.0}],
-	["Low graphics, scale 0.35", {"low": true, "scale": 0.35}],
+	["Low graphics, half size", {"low": true, "low_scale": 0.5}],
 	["full res", {"scale": 1.0}],
 	["no shadows", {"hide": ["shadows"]}],
 	["no 3D", {"hide": ["floor", "walls", "frame", "balls", "table"]}],
@@ -118,8 +117,10 @@ func _read_settings(_stage: MazeStage) -> Dictionary:
 func _apply(stage: MazeStage, settings: Dictionary) -> void:
 	root.scaling_3d_scale = settings["scale"]
 	root.msaa_3d = settings["msaa"]
-	# Low graphics as the player's setting gives it
+	# Low graphics as the player's setting gives it (its own render size), or at low_scale
 	stage.set_low_graphics(settings["low"])
+	if settings.has("low_scale"):
+		root.scaling_3d_scale = settings["low_scale"]
 	var board := stage.board()
 	var parts := {
 		"floor": [board.part("floor")],
