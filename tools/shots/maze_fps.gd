@@ -16,7 +16,8 @@ const SCRATCH_SAVE := "user://fps_save.cfg"
 ## Variants: a name and the settings it changes from the game's own ("as shipped" changes
 ## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*),
 ## hide (parts not drawn: floor, walls, frame, balls, table, shadows), low (the player's
-## Low graphics setting), low_scale (Low at another render scale). MAZE_FPS_ONLY="as shipped|Low graphics" runs only those;
+## Low graphics setting), low_scale (Low at another render scale).
+## MAZE_FPS_ONLY="as shipped|Low graphics" runs only those;
 ## MAZE_FPS_THREADS=1 prints each thread's CPU ms a frame (llvmpipe's, the engine's).
 const VARIANTS := [
 	["full res, MSAA 2x (GPU path)", {"scale": 1.0, "msaa": Viewport.MSAA_2X}],
