@@ -1,5 +1,5 @@
 # gdlint: disable=max-public-methods
-# The contract in docs/architecture.md is one façade; its getters are small on purpose.
+# The contract in scripts/physics/README.md is one façade; its getters are small on purpose.
 class_name BallWorld
 extends RefCounted
 ## Fixed-step ball physics in GDScript, with no Node and no built-in physics: circles

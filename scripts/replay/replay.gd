@@ -4,7 +4,7 @@ extends RefCounted
 ## seed, the mode, and the inputs as a list of records, plus the step count and the world's
 ## state hash at the end. Playing the records through the same rules on the same board must
 ## end in the same state hash (ReplayPlayer). Read and written as JSON Lines by
-## ReplayReader / ReplayWriter; the format is described in docs/architecture.md.
+## ReplayReader / ReplayWriter; the format is described in scripts/replay/README.md.
 ##
 ## A record is an Array whose first item names it; the rest are whole numbers:
 ## [br]- `["tilt", frames, steps, x, y]`: maze, `frames` frames in a row, each running `steps`
