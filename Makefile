@@ -2,7 +2,6 @@
 # when warm). See README.md.
 SHELL := /bin/bash
 GODOT := tools/godot.sh
-GD_SOURCES = $(shell git ls-files -co --exclude-standard '*.gd' | grep -v '^addons/gut/')
 
 .PHONY: play test setup lint format editor shots bench export export-check release release-check check-boards analyze clean seed-reference mutate
 

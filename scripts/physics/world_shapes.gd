@@ -1,5 +1,6 @@
 # gdlint: disable=max-public-methods
-# The door to the shapes is one contract (scripts/physics/README.md); its calls are small on purpose.
+# The door to the shapes is one contract (scripts/physics/README.md); its calls are small
+# on purpose.
 extends RefCounted
 ## A BallWorld's shapes, as its callers build them: `world.shapes.add_pin(...)` and the
 ## other calls that add pins, capsule walls, the ring, its drain arc and sensor circles (all

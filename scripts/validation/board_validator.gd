@@ -2,7 +2,8 @@ class_name BoardValidator
 extends RefCounted
 ## Checks a board for everything that would break the game or trap a ball, fast enough to
 ## run on every edit in the editor. Errors make the loader refuse the board; warnings are
-## design hints. Each issue carries a short code (BoardIssue.kind, e.g. "unknown_fascia") set by its check.
+## design hints. Each issue carries a short code (BoardIssue.kind, e.g. "unknown_fascia")
+## set by its check.
 
 const PachinkoChecks := preload("res://scripts/validation/pachinko_checks.gd")
 const MazeChecks := preload("res://scripts/validation/maze_checks.gd")
