@@ -3,7 +3,7 @@
 SHELL := /bin/bash
 GODOT := tools/godot.sh
 
-.PHONY: play test setup lint format editor shots bench export export-check release release-check check-boards analyze clean seed-reference mutate
+.PHONY: play test setup lint format editor shots bench export export-check release release-check check-boards analyze clean seed-reference mutate golden
 
 ## make play: the game window with a display, the headless autoplay demo without one
 play: setup
@@ -50,6 +50,12 @@ analyze: setup
 	@for f in levels/maze/*.board; do \
 		$(GODOT) --headless --path . -- --analyze=maze --board=$$(basename $$f .board) || exit 1; \
 	done
+
+## make golden: records the golden state hashes again (tests/golden/golden_hashes.json: the
+## bench scenes, every board's autoplay, a replay of each game); after a meant physics or
+## rules change, with its version bumped. test_golden_hashes.gd checks them in make test.
+golden: setup
+	@$(GODOT) --headless --path . -s res://tests/golden/record_golden.gd
 
 bench: setup
 	@tools/bench.sh
