@@ -27,10 +27,12 @@ func test_the_table_is_of_this_build_s_versions() -> void:
 	assert_true(
 		same_physics and same_rules,
 		(
-			"the golden hashes were recorded with physics %s and rules %s; this build is physics"
-			+ " %s, rules %s: run `make golden` to re-record them"
+			(
+				"the golden hashes were recorded with physics %s and rules %s; this build is physics"
+				+ " %s, rules %s: run `make golden` to re-record them"
+			)
+			% [recorded.get("physics"), recorded_rules, now["physics"], now["rules"]]
 		)
-		% [recorded.get("physics"), recorded_rules, now["physics"], now["rules"]]
 	)
 
 
@@ -51,10 +53,12 @@ func test_every_golden_run_gives_its_hash() -> void:
 			now,
 			int(hashes[name]),
 			(
-				"%s: state hash %d, the table's %d. The balls moved while PHYSICS_VERSION (%d)"
-				+ " and the rules versions stayed: if that is meant, bump PHYSICS_VERSION"
-				+ " (scripts/physics/ball_world.gd) or the game's rules version and re-record"
-				+ " with `make golden`"
+				(
+					"%s: state hash %d, the table's %d. The balls moved while PHYSICS_VERSION (%d)"
+					+ " and the rules versions stayed: if that is meant, bump PHYSICS_VERSION"
+					+ " (scripts/physics/ball_world.gd) or the game's rules version and re-record"
+					+ " with `make golden`"
+				)
+				% [name, now, int(hashes[name]), BallWorld.PHYSICS_VERSION]
 			)
-			% [name, now, int(hashes[name]), BallWorld.PHYSICS_VERSION]
 		)
