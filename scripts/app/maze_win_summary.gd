@@ -30,7 +30,9 @@ static func of(
 	summary.medal = Medals.medal_for_time(times, won_seconds)
 	if times.size() == 3 and summary.medal != Medals.Medal.GOLD:
 		summary.next_medal = (summary.medal + 1) as Medals.Medal
-		summary.short_by = won_seconds - Medals.time_of(times, summary.next_medal)
+		summary.short_by = (
+			Medals.shown_time(won_seconds) - Medals.time_of(times, summary.next_medal)
+		)
 	return summary
 
 

@@ -37,6 +37,9 @@ static func times_for(level: BoardLevel, hard: bool) -> PackedFloat64Array:
 static func medal_for_time(times: PackedFloat64Array, seconds: float) -> Medal:
 	if times.size() != 3 or not is_finite(seconds) or seconds <= 0.0:
 		return Medal.NONE
+	# judged on the time as the clock shows it (whole tenths, rounded down): a run the clock
+	# calls 0:22.8 earns a 22.8 s gold, as the player reads it
+	seconds = shown_time(seconds)
 	if seconds <= times[0]:
 		return Medal.GOLD
 	if seconds <= times[1]:
@@ -44,6 +47,12 @@ static func medal_for_time(times: PackedFloat64Array, seconds: float) -> Medal:
 	if seconds <= times[2]:
 		return Medal.BRONZE
 	return Medal.NONE
+
+
+## `seconds` as the game's clock shows it: whole tenths, rounded down (the nudge keeps 36.3
+## from reading 36.2, as 36.3 * 10 is 362.99999... in binary).
+static func shown_time(seconds: float) -> float:
+	return floorf(maxf(seconds, 0.0) * 10.0 + 1e-6) / 10.0
 
 
 ## The medal of a best time `best_seconds` (-1 = never finished) on `level` in that mode.
@@ -62,7 +71,7 @@ static func name_of(which: Medal) -> String:
 static func next_target(times: PackedFloat64Array, elapsed: float) -> Dictionary:
 	if times.size() == 3:
 		for rank in 3:
-			if elapsed <= times[rank]:
+			if shown_time(elapsed) <= times[rank]:
 				return {
 					"medal": [Medal.GOLD, Medal.SILVER, Medal.BRONZE][rank], "seconds": times[rank]
 				}

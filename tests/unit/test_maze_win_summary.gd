@@ -40,6 +40,18 @@ func test_a_silver_win_says_how_far_from_gold() -> void:
 	assert_eq(summary.best_line(), "2.8 s slower than your best (0:29.0)")
 
 
+func test_a_win_the_clock_shows_at_the_gold_time_is_gold_and_the_live_target_agrees() -> void:
+	var level := _level()
+	level.medal_times_easy = PackedFloat64Array([22.8, 45.0, 70.0])
+	var summary := MazeWinSummary.of(level, false, 22.833, -1.0)
+	assert_eq(MazeWinSummary.clock(22.833), "0:22.8")
+	assert_eq(summary.medal_line(), "Gold!", "as the clock reads, not 0.1 s short")
+	var times := level.medal_times_easy
+	assert_eq(Medals.next_target(times, 22.85)["medal"], Medals.Medal.GOLD, "still 0:22.8")
+	var late := MazeWinSummary.of(level, false, 22.95, -1.0)
+	assert_eq(late.medal_line(), "Silver medal: 0.1 s short of Gold", "0:22.9 against 0:22.8")
+
+
 func test_no_medal_says_how_far_from_bronze_and_hard_uses_its_own_times() -> void:
 	var summary := MazeWinSummary.of(_level(), true, 94.0, -1.0)
 	assert_eq(summary.medal, Medals.Medal.NONE)

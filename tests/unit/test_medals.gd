@@ -104,12 +104,22 @@ func _level_with_times() -> BoardLevel:
 func test_each_medal_time_is_the_last_second_that_earns_it() -> void:
 	var times := PackedFloat64Array([10.0, 20.0, 30.0])
 	assert_eq(Medals.medal_for_time(times, 10.0), Medals.Medal.GOLD, "gold time itself")
-	assert_eq(Medals.medal_for_time(times, 10.05), Medals.Medal.SILVER, "a hair over gold")
+	assert_eq(Medals.medal_for_time(times, 10.1), Medals.Medal.SILVER, "a tenth over gold")
 	assert_eq(Medals.medal_for_time(times, 20.0), Medals.Medal.SILVER, "silver time itself")
-	assert_eq(Medals.medal_for_time(times, 20.05), Medals.Medal.BRONZE, "a hair over silver")
+	assert_eq(Medals.medal_for_time(times, 20.1), Medals.Medal.BRONZE, "a tenth over silver")
 	assert_eq(Medals.medal_for_time(times, 30.0), Medals.Medal.BRONZE, "bronze time itself")
-	assert_eq(Medals.medal_for_time(times, 30.05), Medals.Medal.NONE, "a hair over bronze")
+	assert_eq(Medals.medal_for_time(times, 30.1), Medals.Medal.NONE, "a tenth over bronze")
 	assert_eq(Medals.medal_for_time(times, 0.1), Medals.Medal.GOLD, "any finish under gold")
+
+
+# A play trial finished in 22.833 s against a 22.8 s gold: the clock said 0:22.8, the card
+# said Silver, "0.1 s short of Gold". The medal is judged on the time the clock shows.
+func test_a_time_the_clock_shows_as_the_gold_time_earns_gold() -> void:
+	var times := PackedFloat64Array([22.8, 30.0, 40.0])
+	assert_eq(Medals.medal_for_time(times, 22.833), Medals.Medal.GOLD, "the clock shows 0:22.8")
+	assert_eq(Medals.medal_for_time(times, 22.899), Medals.Medal.GOLD, "still 0:22.8")
+	assert_eq(Medals.medal_for_time(times, 22.9), Medals.Medal.SILVER, "0:22.9 is over")
+	assert_eq(Medals.medal_for_time(times, 36.3), Medals.Medal.BRONZE, "36.3 stays 36.3")
 
 
 func test_no_finish_and_broken_times_earn_no_medal() -> void:

@@ -12,6 +12,10 @@ const JOYSTICK_RANGE := 15.0
 const DEG_PER_JOYSTICK_PX := 0.8
 ## Keyboard and gamepad tilt eases toward its target at this rate (1/s): smooth, not instant.
 const EASE_RATE := 7.0
+## ...and back toward level (a key let go, or turned the other way) at this faster rate: a
+## play trial felt the board "carry on" for a second after the key came up at EASE_RATE.
+## 20/s takes a full 12° tilt under 1° in an eighth of a second.
+const RELEASE_RATE := 20.0
 
 
 ## Clamps a tilt to ±MAX_TILT_DEG per axis; non-finite components become 0.
@@ -44,10 +48,19 @@ static func tilt_from_vector(v: Vector2) -> Vector2:
 	return clamp_tilt(v * MAX_TILT_DEG)
 
 
-## Moves `current` toward `target` for `delta` seconds, exponentially (frame-rate free).
+## Moves `current` toward `target` for `delta` seconds, exponentially (frame-rate free): each
+## axis at EASE_RATE while it tilts further the same way, at RELEASE_RATE back toward level.
 static func ease_toward(current: Vector2, target: Vector2, delta: float) -> Vector2:
-	var k := 1.0 - exp(-EASE_RATE * maxf(delta, 0.0))
-	return current.lerp(target, k)
+	var dt := maxf(delta, 0.0)
+	return Vector2(
+		_ease_axis(current.x, target.x, dt), _ease_axis(current.y, target.y, dt)
+	)
+
+
+static func _ease_axis(current: float, target: float, delta: float) -> float:
+	var levelling := absf(target) < absf(current) or signf(target) * signf(current) < 0.0
+	var rate := RELEASE_RATE if levelling else EASE_RATE
+	return lerpf(current, target, 1.0 - exp(-rate * delta))
 
 
 ## Tilt from an accelerometer reading (m/s², device axes) relative to a calibrated neutral
