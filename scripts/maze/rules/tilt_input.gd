@@ -52,9 +52,7 @@ static func tilt_from_vector(v: Vector2) -> Vector2:
 ## axis at EASE_RATE while it tilts further the same way, at RELEASE_RATE back toward level.
 static func ease_toward(current: Vector2, target: Vector2, delta: float) -> Vector2:
 	var dt := maxf(delta, 0.0)
-	return Vector2(
-		_ease_axis(current.x, target.x, dt), _ease_axis(current.y, target.y, dt)
-	)
+	return Vector2(_ease_axis(current.x, target.x, dt), _ease_axis(current.y, target.y, dt))
 
 
 static func _ease_axis(current: float, target: float, delta: float) -> float:
