@@ -190,7 +190,8 @@ func _on_game_reset() -> void:
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
 	_note.show_note(
-		"Tilt the board to start!", MazeHints.start(rules.hard_mode, rules.ball_total())
+		"Tilt the board to start!",
+		MazeHints.start(rules.hard_mode, rules.ball_total(), rules.level.holes.size())
 	)
 	_show_best()
 

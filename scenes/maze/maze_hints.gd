@@ -13,8 +13,14 @@ static func controls() -> String:
 
 
 ## The hint under "Tilt the board to start!" in easy or `hard` mode, on a board of `balls`
-## balls (a one-ball board is the first: it says how tilting works).
-static func start(hard: bool, balls: int = 4) -> String:
+## balls and `holes` black holes (a one-ball board is the first: it says how tilting works;
+## hard mode on a board without holes says it plays the same).
+static func start(hard: bool, balls: int = 4, holes: int = 1) -> String:
+	if hard and holes == 0:
+		return (
+			"Hard mode: this board has no black holes, so it plays as in easy mode."
+			+ " Back to easy mode? Press %s" % _easy()
+		)
 	if hard:
 		return "Hard mode: avoid the black holes. Back to easy mode? Press %s" % _easy()
 	if balls == 1:

@@ -62,8 +62,10 @@ const StageClock := preload("res://scripts/physics/stage_clock.gd")
 ## chapter).
 const PHYSICS_VERSION := 4
 ## advance() runs at most this many steps per call, then drops the backlog, so a long
-## hitch slows the game down instead of freezing it.
-const MAX_STEPS_PER_ADVANCE := 8
+## hitch slows the game down instead of freezing it. 30 steps (a quarter second at 120 Hz)
+## keep the game in real time down to about 4 frames a second: a play trial on a machine
+## drawing 5-14 frames a second saw the clock run at half speed with 8.
+const MAX_STEPS_PER_ADVANCE := 30
 ## Goals and zones are tracked per ball in one int bit mask each: at most this many of each.
 const MAX_SENSORS := StaticGeometry.MAX_SENSORS
 ## Balls smaller than this still get a grid sized for it (px).

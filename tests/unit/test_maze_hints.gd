@@ -1,0 +1,21 @@
+extends GutTest
+## The maze's start hints say what the board really is: hard mode on a board without black
+## holes says it plays as easy (a play trial pressed H on First Roll, read "avoid the black
+## holes" and found none).
+
+const MazeHints := preload("res://scenes/maze/maze_hints.gd")
+
+
+func test_hard_mode_with_holes_says_avoid_them() -> void:
+	assert_string_contains(MazeHints.start(true, 4, 8), "avoid the black holes")
+
+
+func test_hard_mode_on_a_board_without_holes_says_it_plays_as_easy() -> void:
+	var hint := MazeHints.start(true, 1, 0)
+	assert_string_contains(hint, "no black holes")
+	assert_false(hint.contains("avoid the black holes"))
+
+
+func test_easy_hints_are_unchanged_by_the_holes() -> void:
+	assert_eq(MazeHints.start(false, 4, 0), MazeHints.start(false, 4, 8))
+	assert_string_contains(MazeHints.start(false, 1, 0), "rolls downhill")
