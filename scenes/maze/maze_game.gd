@@ -99,6 +99,9 @@ func _ready() -> void:
 	_layout()
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
+	# the first frame drawn shows the board ready: its balls and the medal in reach
+	_stage.sync_balls(rules, 0.0)
+	_show_next_medal()
 
 
 func _process(delta: float) -> void:
