@@ -297,16 +297,6 @@ func test_a_win_shows_the_message_and_saves_the_best_time() -> void:
 	assert_almost_eq(best, rules.elapsed, 0.001, "the time is saved as the best")
 
 
-# A play trial's first frame of a board showed no balls and "Gold by 0:00.0" (the scene's
-# placeholder) until the next frame: the board opens ready.
-func test_the_board_opens_with_its_balls_and_medal_target_before_any_frame() -> void:
-	var rules := _rules()
-	assert_eq(_stage().balls().get_child_count(), rules.ball_total(), "every ball is drawn")
-	var label: Label = _game.get_node("%NextMedal")
-	var gold: float = rules.level.medal_times_easy[0]
-	assert_eq(label.text, "Gold by %s" % MazeWinSummary.clock(gold))
-
-
 func test_the_next_medal_time_shows_while_playing() -> void:
 	var rules := _rules()
 	_game._start()
