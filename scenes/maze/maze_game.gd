@@ -17,6 +17,9 @@ const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
 const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
 const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
 const MazePanelLayout := preload("res://scenes/maze/maze_panel_layout.gd")
+## After a window change the panel is placed again this many frames running, while its
+## wrapped text settles to the new width.
+const SETTLE_FRAMES := 3
 const MazeHints := preload("res://scenes/maze/maze_hints.gd")
 const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
@@ -41,6 +44,8 @@ var _ghost_view := MazeGhost3D.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
 var _panel_layout: MazePanelLayout
+## Frames left in which the panel is placed again after a window change (SETTLE_FRAMES).
+var _settle_frames := 0
 
 @onready var _stage: MazeStage = $Stage
 @onready var _side: VBoxContainer = $Side
@@ -105,6 +110,9 @@ func _ready() -> void:
 
 
 func _process(delta: float) -> void:
+	if _settle_frames > 0:
+		_settle_frames -= 1
+		_layout()
 	if rules == null:
 		return
 	var keys := Input.get_vector("tilt_left", "tilt_right", "tilt_up", "tilt_down")
@@ -222,6 +230,9 @@ func _on_size_changed() -> void:
 	if _panel_layout != null:
 		_panel_layout.window_changed()
 	_layout()
+	# the panel's text wraps to the new width only as its container sorts, over the next
+	# frames: place it again then, or a window grown back keeps the small window's joystick
+	_settle_frames = SETTLE_FRAMES
 
 
 ## Puts the side panel where the window's shape leaves room (MazePanelLayout) and frames the

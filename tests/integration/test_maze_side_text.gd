@@ -8,6 +8,7 @@ extends GutTest
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
+const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(1280, 720), Vector2i(900, 700)]
 
@@ -74,3 +75,20 @@ func test_the_win_card_reads_at_14_px_and_stays_over_the_board() -> void:
 			"%s: the card %s stays over the board %s" % [size, card.get_global_rect(), region]
 		)
 		game.free()
+
+
+# A play trial resized the window to 900 x 700 and back: the joystick stayed small and the
+# panel kept the small window's spacing.
+func test_a_window_resized_small_and_back_gets_its_layout_back() -> void:
+	var game := await _game_in_window(Vector2i(1280, 720))
+	var stick: MazeJoystick = game.get_node("%Joystick")
+	var first_scale := stick.ui_scale
+	var window := game.get_window()
+	window.size = Vector2i(900, 700)
+	await wait_process_frames(4)
+	window.size = Vector2i(1280, 720)
+	await wait_process_frames(4)
+	assert_almost_eq(
+		stick.ui_scale, first_scale, 0.05, "the joystick is its size again (was 0.78 of 1.59)"
+	)
+	game.free()
