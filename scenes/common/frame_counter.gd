@@ -1,3 +1,4 @@
+class_name FrameCounter
 extends CanvasLayer
 ## Frames per second in the top-right corner (or the bottom-left one, for a screen whose
 ## top right holds its title). Shown when the setting says so; the `toggle_frame_counter`

@@ -363,6 +363,9 @@ func _add_optional_scene(path: String) -> void:
 		return
 	var packed: PackedScene = load(path)
 	var node := packed.instantiate()
+	var counter := node as FrameCounter
+	if counter != null:
+		counter.bottom_left = true  # the side panel's title is in the top right
 	add_child(node)
 	var pause_menu := node as PauseMenu
 	if pause_menu != null:

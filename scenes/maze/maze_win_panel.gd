@@ -20,6 +20,11 @@ const INK := Color(0.129, 0.004, 0.141)
 ## The card's colour.
 const CARD := Color(0.99, 0.97, 0.94, 0.96)
 
+## How long after the card appears it ignores the arrow and accept keys (ms).
+const HELD_KEYS_IGNORED_MSEC := 600
+
+# When the card was last shown (Time.get_ticks_msec).
+var _shown_at_msec := -1000000
 var _disc := MazeMedalDisc.new()
 var _headline := Label.new()
 var _time := Label.new()
@@ -96,7 +101,20 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 	_disc.medal = summary.medal
 	_next.visible = has_next
 	show()
+	_shown_at_msec = Time.get_ticks_msec()
 	(_next if has_next else _retry).grab_focus.call_deferred()
+
+
+func _input(event: InputEvent) -> void:
+	# the arrow keys that tilted the board are Godot's menu keys too: a key still held as the
+	# last ball rolls in would walk the focus from Next board to Menu (a play trial pressed
+	# Enter on Menu that way), so the card ignores them for its first moments
+	if not visible or Time.get_ticks_msec() - _shown_at_msec > HELD_KEYS_IGNORED_MSEC:
+		return
+	for action: StringName in [&"ui_left", &"ui_right", &"ui_up", &"ui_down", &"ui_accept"]:
+		if event.is_action(action):
+			get_viewport().set_input_as_handled()
+			return
 
 
 ## The texts shown, top to bottom (for tests).
