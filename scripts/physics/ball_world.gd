@@ -83,6 +83,10 @@ var gravity: Vector2
 var rolling_friction: Vector2
 ## Steps run so far.
 var step_count := 0
+## Called with the step's length at the start of every step, before gravity, when set: a
+## game rule that adds a force of its own (the maze's goal dip, GoalDip) changes ball
+## velocities there. Worlds without it step exactly as before.
+var before_step := Callable()
 ## False tests every ball against every pin (the benchmark's "no zoning" baseline).
 var use_zoning := true:
 	set(value):
@@ -284,6 +288,8 @@ func step(dt: float) -> void:
 		return
 	if not _inputs_ok(dt):
 		return
+	if before_step.is_valid():
+		before_step.call(dt)
 	_stepping = true
 	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()

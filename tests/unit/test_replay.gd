@@ -75,13 +75,15 @@ class TestFormat:
 				var steps := Replay.frame_steps(record, frame)
 				lines.append(JSON.stringify(["tilt", 1, steps, tilt.x, tilt.y]))
 		var text := Writer.write(replay).get_slice("\n", 0).replace('"replay": 4', '"replay": 1')
-		text = text.replace(', "physics": %d, "rules": 1' % Replay.PHYSICS_VERSION, "")
+		var versions := [Replay.PHYSICS_VERSION, Replay.RULES_VERSIONS["maze"]]
+		text = text.replace(', "physics": %d, "rules": %d' % versions, "")
 		var read := Reader.read(text + "\n" + "\n".join(lines) + "\n")
 		assert_true(read.has("replay"), str(read.get("error")))
 		var old: Replay = read["replay"]
 		assert_eq(old.format_version, 1)
 		assert_eq(old.physics_version, 1, "files before format 3 were recorded with physics 1")
 		old.physics_version = Replay.PHYSICS_VERSION  # recorded just now, by this build
+		old.rules_version = Replay.RULES_VERSIONS["maze"]
 		var played := ReplayPlayer.new(old, level).play_to_end()
 		assert_true(played["match"], str(played))
 
@@ -280,13 +282,14 @@ class TestCommand:
 	func test_the_physics_field_belongs_to_format_3_and_up() -> void:
 		var header := Writer.write(_recorded()).get_slice("\n", 0)
 		var physics := ', "physics": %d' % Replay.PHYSICS_VERSION
+		var rules := ', "rules": %d' % Replay.RULES_VERSIONS["maze"]
 		var cases := {
 			header.replace(physics, ""): 'the header has no "physics"',
-			header.replace('"replay": 4', '"replay": 2').replace(', "rules": 1', ""):
+			header.replace('"replay": 4', '"replay": 2').replace(rules, ""):
 			'"physics" came with format 3',
 			header.replace('"replay": 4', '"replay": 3'): '"rules" came with format 4',
-			header.replace(', "rules": 1', ""): 'the header has no "rules"',
-			header.replace('"rules": 1', '"rules": 0'): '"rules" must be a whole number from 1',
+			header.replace(rules, ""): 'the header has no "rules"',
+			header.replace(rules, ', "rules": 0'): '"rules" must be a whole number from 1',
 			header.replace(physics, ', "physics": 0'):
 			'"physics" must be a whole number from 1 to 1000',
 			header.replace(physics, ', "physics": "2"'):

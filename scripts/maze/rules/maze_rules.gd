@@ -49,6 +49,8 @@ var balls_in_goal := 0
 var _step_dt := 1.0 / 120.0
 ## Balls inside the goal, kept from the world's goal sensor events.
 var _in_goal := 0
+## The goal's dish, which holds the balls that roll in (GoalDip).
+var _dip: GoalDip
 
 
 ## Builds the world for `board` (a maze BoardLevel) in easy or hard mode.
@@ -187,6 +189,8 @@ func _rebuild() -> void:
 	if world.ball_count() == 0:
 		for start_pos in level.ball_starts:
 			world.spawn_ball(start_pos, Vector2.ZERO, level.ball_radius)
+	_dip = GoalDip.new(world, level)  # kept: the world's callable does not hold it
+	world.before_step = _dip.apply
 	world.ball_fell_in_hole.connect(_on_ball_fell_in_hole)
 	world.ball_reached_goal.connect(_on_goal_crossed.bind(1))
 	world.ball_left_goal.connect(_on_goal_crossed.bind(-1))

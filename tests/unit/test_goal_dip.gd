@@ -1,0 +1,72 @@
+extends GutTest
+## The goal's dish (GoalDip): a ball that rolls in stays in, even with the board tilted fully
+## away, and settles near the middle; outside the rim nothing changes (a play trial saw balls
+## roll across the goal and out again).
+
+const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
+
+
+func _rules() -> MazeRules:
+	var rules := MazeRules.new(BoardLoader.load_board("res://levels/maze/cloister.board").level)
+	rules.start()
+	return rules
+
+
+# Moves every ball but the first far from the goal (they would count too) and puts the
+# first at `at` with velocity `velocity`.
+func _place(rules: MazeRules, at: Vector2, velocity: Vector2) -> int:
+	var ids := rules.world.get_ids()
+	for i in ids.size():
+		if i > 0:
+			rules.world.remove_ball(ids[i])
+	rules.world.set_ball_position(ids[0], at)
+	rules.world.set_ball_velocity(ids[0], velocity)
+	return ids[0]
+
+
+func test_a_ball_in_the_dish_stays_in_at_full_tilt_away() -> void:
+	var rules := _rules()
+	var goal := rules.level.goal_center
+	var id := _place(rules, goal + Vector2(10.0, 0.0), Vector2.ZERO)
+	rules.set_tilt(Vector2(TiltInput.MAX_TILT_DEG, TiltInput.MAX_TILT_DEG))
+	for i in 240:  # two seconds
+		rules.step()
+	var offset := rules.world.get_ball_position(id) - goal
+	assert_lt(offset.length(), rules.level.goal_radius, "still in the dish at %s" % offset)
+	assert_lt(offset.length(), GoalDip.REST_OFFSET_PX * 2.0, "resting near the middle")
+
+
+func test_a_ball_rolling_across_the_rim_is_caught() -> void:
+	var rules := _rules()
+	var goal := rules.level.goal_center
+	var radius := rules.level.goal_radius
+	var id := _place(rules, goal + Vector2(-radius + 2.0, 8.0), Vector2(90.0, 0.0))
+	for i in 240:
+		rules.step()
+	var offset := rules.world.get_ball_position(id) - goal
+	assert_lt(offset.length(), radius, "caught, not rolled across")
+
+
+func test_the_pull_is_toward_the_middle_and_only_inside_the_rim() -> void:
+	var rules := _rules()
+	var dip := GoalDip.new(rules.world, rules.level)
+	var radius := rules.level.goal_radius
+	var full_tilt := (
+		MazeTilt.gravity(Vector2(TiltInput.MAX_TILT_DEG, 0.0), rules.world.tuning.tilt_gravity).x
+	)
+	var near_rim := dip.pull_at(Vector2(radius - 1.0, 0.0))
+	assert_lt(near_rim.x, 0.0, "toward the middle")
+	assert_gt(-near_rim.x, full_tilt, "harder than the steepest tilt")
+	assert_eq(dip.pull_at(Vector2(radius + 1.0, 0.0)), Vector2.ZERO, "nothing outside the rim")
+	assert_eq(dip.pull_at(Vector2.ZERO), Vector2.ZERO, "nothing at the middle")
+
+
+func test_a_world_without_the_dip_steps_as_before() -> void:
+	var rules := _rules()
+	rules.world.before_step = Callable()
+	var goal := rules.level.goal_center
+	var id := _place(rules, goal + Vector2(-rules.level.goal_radius + 2.0, 8.0), Vector2(90.0, 0.0))
+	for i in 240:
+		rules.step()
+	var offset := rules.world.get_ball_position(id) - goal
+	assert_gt(offset.length(), rules.level.goal_radius, "without it the ball rolls on out")
