@@ -66,7 +66,9 @@ func pin_items(indices: Array[int]) -> Array[Vector2i]:
 
 func test_h_flips_the_selection_about_its_centre_in_one_step() -> void:
 	var level := with_pins([Vector2(100, 100), Vector2(120, 140), Vector2(160, 100)])
-	level.windmills = [WindmillSpec.driven(Vector2(200, 200), 4, 22.0, 120.0)] as Array[WindmillSpec]
+	level.windmills = (
+		[WindmillSpec.driven(Vector2(200, 200), 4, 22.0, 120.0)] as Array[WindmillSpec]
+	)
 	start(level)
 	session.select(pin_items([0, 1, 2]))
 	assert_true(key(KEY_H))
@@ -117,15 +119,15 @@ func test_shift_m_adds_the_mirror_image_keeping_the_originals_and_existing_twins
 	assert_eq(
 		session.level.pins,
 		PackedVector2Array(
-			[Vector2(100, 100), Vector2(150, 120), Vector2(500, 100), Vector2(300, 50)]
-			+ [Vector2(450, 120)]
+			(
+				[Vector2(100, 100), Vector2(150, 120), Vector2(500, 100), Vector2(300, 50)]
+				+ [Vector2(450, 120)]
+			)
 		),
 		"only pin 1 lacked its twin; pin 0 has one and pin 3 is on the axis"
 	)
 	assert_eq(session.selection.size(), 4, "the originals and the new twin are selected")
-	assert_eq(
-		session.history.names(), PackedStringArray(["Mirror 1 item to the other half"])
-	)
+	assert_eq(session.history.names(), PackedStringArray(["Mirror 1 item to the other half"]))
 	assert_true(key(KEY_M, false, true))
 	assert_eq(session.level.pins.size(), 5, "a second Shift+M doubles nothing")
 
@@ -155,7 +157,9 @@ func test_ctrl_d_in_mirror_mode_duplicates_the_twin_the_other_way() -> void:
 	assert_true(key(KEY_D, true))
 	assert_eq(
 		session.level.pins,
-		PackedVector2Array([Vector2(100, 100), Vector2(500, 100), Vector2(120, 100), Vector2(480, 100)])
+		PackedVector2Array(
+			[Vector2(100, 100), Vector2(500, 100), Vector2(120, 100), Vector2(480, 100)]
+		)
 	)
 	assert_eq(session.history.names().size(), 1)
 	session.select(pin_items([0, 1]))

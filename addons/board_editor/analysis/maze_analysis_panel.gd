@@ -69,9 +69,14 @@ func bind(level: BoardLevel) -> void:
 
 
 ## Starts an analysis of a snapshot of the bound board (edits during the run do not reach
-## the games).
+## the games). A board the board check proves unwinnable (the goal or a start closed in)
+## plays no games: the status says why at once.
 func start() -> void:
 	if _level == null or _run != null:
+		return
+	var unwinnable := unwinnable_reason(_level)
+	if not unwinnable.is_empty():
+		_controls.status.text = "No games played: this board cannot be won. " + unwinnable
 		return
 	_run_level = _level.duplicate_level()
 	_run_key = _key
@@ -79,6 +84,16 @@ func start() -> void:
 	_run.start(OS.get_processor_count())
 	_controls.show_running("The pilot is playing %d games..." % _run.games())
 	set_process(true)
+
+
+## The board check's reason why no ball can be won on `level` (a goal or ball starts closed
+## in by walls), or "" when every start can roll to the goal.
+static func unwinnable_reason(level: BoardLevel) -> String:
+	var reasons := PackedStringArray()
+	for issue in BoardValidator.validate(level):
+		if issue.kind in ["goal_closed_in", "start_cannot_reach_goal"]:
+			reasons.append(issue.message)
+	return " ".join(reasons)
 
 
 ## Stops the running analysis at the games' next frame; nothing is kept.

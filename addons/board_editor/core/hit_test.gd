@@ -84,7 +84,9 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 ## Every item a brush of radius `tolerance` touches as it sweeps from `from` to `to` (a
 ## capsule round the segment), pockets once: what an erase drag passes over, however far
 ## apart the mouse events that bound the stroke. The goal is never in it.
-static func along(level: BoardLevel, from: Vector2, to: Vector2, tolerance: float) -> Array[Vector2i]:
+static func along(
+	level: BoardLevel, from: Vector2, to: Vector2, tolerance: float
+) -> Array[Vector2i]:
 	var found: Array[Vector2i] = []
 	for i in level.pins.size():
 		if _reach(level.pins[i], from, to) <= level.pin_radius + tolerance:
@@ -94,7 +96,10 @@ static func along(level: BoardLevel, from: Vector2, to: Vector2, tolerance: floa
 				found.append(item)
 	for i in level.pockets.size():
 		var item := Items.make(Items.Kind.POCKET, i)
-		if not found.has(item) and _crosses(_pocket_rect(level.pockets[i]).grow(tolerance), from, to):
+		if (
+			not found.has(item)
+			and _crosses(_pocket_rect(level.pockets[i]).grow(tolerance), from, to)
+		):
 			found.append(item)
 	for w in Items.wall_count(level.walls):
 		var ends := Geometry2D.get_closest_points_between_segments(

@@ -2,8 +2,8 @@
 extends "res://addons/board_editor/tools/board_tool.gd"
 ## Click a thing to delete it, or drag across several: everything the brush passes over
 ## (the whole stroke between one mouse event and the next, not only the points the mouse
-## reported) is marked and deleted together on release, as one undo step. In mirror mode the mirrored
-## partners go too. A pocket goes with all its pins; the goal cannot be erased, only moved.
+## reported) is marked and deleted together on release, as one undo step. In mirror mode the
+## mirrored partners go too. A pocket goes with all its pins; the goal cannot be erased.
 
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")

@@ -81,8 +81,12 @@ func _init() -> void:
 	for entry: Array in ALIGN_BUTTONS:
 		var tip: String = entry[2]
 		_arrange_button(history_name(str(entry[1])), tip, align.bind(str(entry[1])))
-	_arrange_button(history_name("x"), "Space them evenly from left to right.", distribute.bind("x"))
-	_arrange_button(history_name("y"), "Space them evenly from top to bottom.", distribute.bind("y"))
+	_arrange_button(
+		history_name("x"), "Space them evenly from left to right.", distribute.bind("x")
+	)
+	_arrange_button(
+		history_name("y"), "Space them evenly from top to bottom.", distribute.bind("y")
+	)
 
 
 # A bonus pocket's role (start pocket, attacker, tulip), shown for one selected bonus pocket.
