@@ -25,6 +25,7 @@ const OverlayDraw := preload("res://addons/board_editor/analysis/analysis_overla
 const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 const BalanceRows := preload("res://addons/board_editor/analysis/balance_rows.gd")
 const BalanceTable := preload("res://addons/board_editor/analysis/balance_table.gd")
+const RunProgress := preload("res://addons/board_editor/analysis/run_progress.gd")
 ## Partial figures are refreshed at most this often while a run goes on, ms.
 const UPDATE_MS := 400
 
@@ -169,7 +170,7 @@ func _process(_delta: float) -> void:
 		set_process(false)
 		return
 	var done := _run.poll()
-	_controls.progress.value = _run.progress()
+	_controls.progress.value = run_share()
 	if done and _worker_failed():
 		_run_here_instead()
 	elif done:
@@ -181,10 +182,22 @@ func _process(_delta: float) -> void:
 		_show_partial(false)
 
 
-# "Climbing the rail..." with how far the climbs are.
+## The share of the running analysis done, climbs and shots together (RunProgress); 0 when
+## none runs.
+func run_share() -> float:
+	if _run == null:
+		return 0.0
+	return RunProgress.pachinko_share(_run.climb_progress(), _run.progress())
+
+
+# "Climbing the rail at every power: 3 % done, about 45 s left."
 func _climbing_text() -> String:
-	var share := _run.climb_progress() if _run != null else 0.0
-	return "Climbing the rail at every power (%d %%)..." % roundi(share * 100.0)
+	return RunProgress.line("Climbing the rail at every power", run_share(), _run_seconds())
+
+
+# Seconds since the run started.
+func _run_seconds() -> float:
+	return (Time.get_ticks_msec() - _run_started) / 1000.0
 
 
 # True when the run was a worker that stopped without its counts (not a cancel).
@@ -222,9 +235,8 @@ func _show_partial(final: bool) -> void:
 		# Payouts edited during the run price the counts so far at once.
 		var heat := ImageTexture.create_from_image(image)
 		_show_report(ReportPayouts.repriced(fresh, _level), heat, true)
-	_controls.status.text = (
-		"%d of %d shots (%.0f shots/s)..." % [_shown_shots, _run.plan.shots, fresh["shots_per_s"]]
-	)
+	var doing := "%d of %d shots fired" % [_shown_shots, _run.plan.shots]
+	_controls.status.text = RunProgress.line(doing, run_share(), seconds)
 	if final:
 		var saved := AnalysisCache.save(_run_key, fresh, image)
 		if saved != OK:

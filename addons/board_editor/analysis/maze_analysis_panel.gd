@@ -17,6 +17,7 @@ const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
 const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 const LossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
+const RunProgress := preload("res://addons/board_editor/analysis/run_progress.gd")
 ## First seed of the games: the same board always gives the same figures.
 const SEED := 1
 
@@ -31,6 +32,7 @@ var _report: Dictionary = {}
 var _run: MazeAnalysis
 var _run_key := ""
 var _run_level: BoardLevel
+var _run_started := 0
 
 var _controls: Controls
 
@@ -82,7 +84,8 @@ func start() -> void:
 	_run_key = _key
 	_run = MazeAnalysis.create(_run_level, runs, SEED)
 	_run.start(OS.get_processor_count())
-	_controls.show_running("The pilot is playing %d games..." % _run.games())
+	_run_started = Time.get_ticks_msec()
+	_controls.show_running(_playing_text())
 	set_process(true)
 
 
@@ -122,9 +125,17 @@ func _process(_delta: float) -> void:
 	if _run == null:
 		set_process(false)
 		return
-	_controls.progress.value = float(_run.games_done()) / _run.games()
+	_controls.progress.value = _run.progress()
+	_controls.status.text = _playing_text()
 	if _run.poll():
 		_finish()
+
+
+# "The pilot is playing 12 games (3 done): 30 % done, about 35 s left."
+func _playing_text() -> String:
+	var doing := "The pilot is playing %d games (%d done)" % [_run.games(), _run.games_done()]
+	var seconds := (Time.get_ticks_msec() - _run_started) / 1000.0
+	return RunProgress.line(doing, _run.progress(), seconds)
 
 
 func _finish() -> void:
