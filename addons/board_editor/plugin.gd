@@ -32,7 +32,7 @@ const NEW_BOARD_MENU := "New board..."
 
 var _node: BoardNode
 var _session: Session
-var _input: BoardInput
+var _board_input: BoardInput
 var _toolbar: BoardToolbar
 var _generator: MazeGeneratorButton
 var _dock: BoardDock
@@ -108,7 +108,7 @@ func _edit(object: Object) -> void:
 	_session.selection_changed.connect(_on_selection_changed)
 	_session.settings_changed.connect(_on_settings_changed)
 	_session.tool_changed.connect(func(_tool: int) -> void: update_overlays())
-	_input = BoardInput.new(_session)
+	_board_input = BoardInput.new(_session)
 	level.changed.connect(_on_level_changed)
 	_toolbar.bind(_session)
 	_generator.bind(_session)
@@ -119,8 +119,8 @@ func _edit(object: Object) -> void:
 func _make_visible(visible: bool) -> void:
 	_visible = visible
 	_toolbar.visible = visible and _session != null
-	if not visible and _input != null:
-		_input.active_tool().cancel()
+	if not visible and _board_input != null:
+		_board_input.active_tool().cancel()
 
 
 func _forward_canvas_gui_input(event: InputEvent) -> bool:
@@ -137,12 +137,29 @@ func _forward_canvas_gui_input(event: InputEvent) -> bool:
 	if focused and FrameSelection.is_frame_key(event):
 		frame_selection()
 		return true
-	var used := _input.handle(event, _to_screen().affine_inverse(), focused)
+	var used := _board_input.handle(event, _to_screen().affine_inverse(), focused)
 	if not focused and event is InputEventMouseButton:
 		_return_focus()
 	if used or event is InputEventMouseMotion:
 		update_overlays()
 	return used
+
+
+# Godot's 2D view zooms on the digit keys (1 = 100 %, 2 = 200 %, Shift+1 = 50 % ...) even
+# when _forward_canvas_gui_input used the key: its zoom shortcuts run after the plugins
+# whatever they answered. So while the board's viewport has the keys, a digit is taken here,
+# before the GUI sees it, and goes to the board tool like any other key.
+func _input(event: InputEvent) -> void:
+	var key := event as InputEventKey
+	if key == null or not _visible or _board_input == null or not is_instance_valid(_node):
+		return
+	if not BoardInput.is_view_zoom_key(key) or _focus_in_dock:
+		return
+	if not (is_instance_valid(_viewport_control) and _viewport_control.has_focus()):
+		return
+	if _node.is_inside_tree():
+		_board_input.handle(key, _to_screen().affine_inverse())
+	get_viewport().set_input_as_handled()
 
 
 func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
@@ -152,7 +169,7 @@ func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
 	_dock.analysis.draw_over(overlay, _to_screen())
 	_dock.maze_analysis.draw_over(overlay, _to_screen())
 	BoardOverlay.draw(
-		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
+		overlay, _to_screen(), _session, _board_input.active_tool(), _issues, _focused_issue
 	)
 
 
@@ -171,7 +188,7 @@ func get_session() -> Session:
 
 ## The input router (null when no board is edited); used by the screenshot hook.
 func get_board_input() -> BoardInput:
-	return _input
+	return _board_input
 
 
 ## The problems found on the edited board (a copy; empty when none is edited).
@@ -235,14 +252,14 @@ func _commit(action: BoardAction, already_applied: bool) -> void:
 func _release() -> void:
 	if _session != null:
 		_kept_settings = ToolSettings.capture(_session)
-		if _input != null:
-			_input.active_tool().cancel()
+		if _board_input != null:
+			_board_input.active_tool().cancel()
 		if _session.level.changed.is_connected(_on_level_changed):
 			_session.level.changed.disconnect(_on_level_changed)
 	if is_instance_valid(_node):
 		_node.editor_hidden_layers = 0
 	_session = null
-	_input = null
+	_board_input = null
 	_node = null
 	_issues = []  # a new array: never clear one the board node may share
 	_focused_issue = -1
