@@ -210,13 +210,14 @@ func focus_issue(index: int) -> void:
 
 
 ## Frames the selected items in the 2D view (the whole board when none is selected), as
-## Godot's Frame Selection does for nodes.
-func frame_selection() -> void:
+## Godot's Frame Selection does for nodes; with `zoom_in` false it only pans (and zooms out
+## when they do not fit), as a balance table line does.
+func frame_selection(zoom_in := true) -> void:
 	if _session == null or not is_instance_valid(_node) or not _node.is_inside_tree():
 		return
 	if is_instance_valid(_viewport_control):
 		var area := FrameSelection.area(_session.level, _session.selection)
-		ViewFocus.show_area(_node.get_global_transform() * area, _viewport_control)
+		ViewFocus.show_area(_node.get_global_transform() * area, _viewport_control, zoom_in)
 	update_overlays()
 
 
@@ -226,12 +227,13 @@ func _on_view_framed() -> void:
 		frame_selection()
 
 
-## Selects `item` on the board and frames it (a line of the balance table).
+## Selects `item` on the board and brings it into view at the designer's zoom (a line of the
+## balance table: reading down the table must not zoom the board to 200 %).
 func select_item(item: Vector2i) -> void:
 	if _session == null or not Items.is_valid(_session.level, item):
 		return
 	_session.select([item] as Array[Vector2i])
-	frame_selection()
+	frame_selection(false)
 
 
 ## True for the node this plugin edits.

@@ -133,6 +133,18 @@ func test_ghosts_turn_red_where_a_click_would_add_an_error() -> void:
 	assert_eq(maze.holes.size(), 8, "asking never changes the board")
 
 
+func test_the_goal_ghost_turns_red_over_walls_starts_and_holes() -> void:
+	var maze := _load_board("res://levels/maze/classic.board")
+	_helper.start(maze)
+	_helper.session.set_tool(Session.Tool.GOAL)
+	var goal: Variant = _helper.input.active_tool()
+	assert_false(goal.would_add_error(maze.goal_center), "where it is now: clear")
+	assert_true(goal.would_add_error(maze.ball_starts[0]), "on a ball start")
+	var wall_middle := (maze.walls[20] + maze.walls[21]) * 0.5
+	assert_true(goal.would_add_error(wall_middle), "on a wall")
+	assert_true(goal.would_add_error(maze.holes[0]), "on a black hole")
+
+
 func _load_board(path: String) -> BoardLevel:
 	var result := BoardLoader.load_board(path)
 	assert_not_null(result.level, result.error)

@@ -56,6 +56,9 @@ var _table: BalanceTable
 var _rows: Array[BalanceRows.Row] = []
 var _before_rows: Array[BalanceRows.Row] = []
 var _before_return := NAN
+# Board (its instance id) -> [before rows, before return] of the boards not shown now: a
+# scene tab switched away and back keeps its "(before: 1.21)".
+var _kept_before := {}
 
 
 func _init() -> void:
@@ -74,7 +77,10 @@ func _init() -> void:
 ## edit: a changed board shows its cached figures, or none; a payout edit reprices them.
 func bind(level: BoardLevel) -> void:
 	visible = level != null and level.is_pachinko()
-	_level = level if visible else null
+	var shown := level if visible else null
+	if shown != _level:
+		_switch_board(shown)
+	_level = shown
 	var key := AnalysisCache.key_for(_plan_for(_level)) if _level != null else ""
 	if key == _key:
 		if not _report.is_empty():
@@ -89,6 +95,20 @@ func bind(level: BoardLevel) -> void:
 	_show_report(ReportPayouts.repriced(stored, _level), heat)
 	if _run == null:
 		_say_result()  # new content with no figures, like the old: "Not analysed..."
+
+
+# Another board is shown (a scene tab switched, the board deselected): the figures before of
+# the board leaving are kept for its return, and the coming board's own come back. Its
+# figures are shown afresh: they never become the coming board's "before".
+func _switch_board(coming: BoardLevel) -> void:
+	if _level != null:
+		_kept_before[_level.get_instance_id()] = [_before_rows, _before_return]
+	var kept: Array = _kept_before.get(coming.get_instance_id(), []) if coming != null else []
+	var rows: Array[BalanceRows.Row] = []
+	_before_rows = kept[0] if not kept.is_empty() else rows
+	_before_return = kept[1] if not kept.is_empty() else NAN
+	_report = {}
+	_rows = []
 
 
 func _notification(what: int) -> void:
