@@ -301,7 +301,8 @@ static func _check_reachability(
 
 # One problem for one cause of MazeEnclosure: the goal closed in ("goal_closed_in", marked
 # at the goal) or starts closed in ("start_cannot_reach_goal", marked at the first start),
-# naming the walls round it; the problem covers the walls, the starts and the goal.
+# naming the walls round it; the problem covers the walls and the goal (and the starts
+# when they are the ones closed in).
 static func _closed_in_issue(level: BoardLevel, cause: Dictionary, start_total: int) -> BoardIssue:
 	var starts: PackedInt32Array = cause["starts"]
 	var walls: PackedInt32Array = cause["walls"]
@@ -316,8 +317,9 @@ static func _closed_in_issue(level: BoardLevel, cause: Dictionary, start_total: 
 		segments.append(level.walls[w * 2])
 		segments.append(level.walls[w * 2 + 1])
 		covers = covers.expand(level.walls[w * 2]).expand(level.walls[w * 2 + 1])
-	for i in starts:
-		covers = covers.expand(level.ball_starts[i])
+	if not bool(cause["goal"]):  # closed-in starts are framed with the goal they miss
+		for i in starts:
+			covers = covers.expand(level.ball_starts[i])
 	var closers := _closers(wall_ids, bool(cause["edge"]))
 	var issue: BoardIssue
 	if bool(cause["goal"]):
