@@ -27,6 +27,8 @@ const Items := preload("res://addons/board_editor/core/board_items.gd")
 ## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
 const TOOLING_HOOK_ENV := "BOARD_EDITOR_HOOK"
 const TOOLING_HOOK_FOLDERS: Array[String] = ["res://tools/", "res://tests/"]
+## Screens this wide (px) or wider give the Board dock a column of its own (dock_slot_for).
+const WIDE_SCREEN := 1600
 ## The Project > Tools entry that starts a new board.
 const NEW_BOARD_MENU := "New board..."
 
@@ -65,7 +67,7 @@ func _enter_tree() -> void:
 	_dock.new_board_file_requested.connect(open_new_board_dialog)
 	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
 	_dock.focus_return_requested.connect(_return_focus)
-	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
+	add_control_to_dock(dock_slot_for(DisplayServer.screen_get_size().x), _dock)
 	FrameSelection.follow_view_menu(_on_view_framed)
 	_save_dialog = SaveAsDialog.new()
 	_save_dialog.save_confirmed.connect(_save_as_named)
@@ -77,6 +79,15 @@ func _enter_tree() -> void:
 	_dock.analysis.item_picked.connect(select_item)
 	_dock.maze_analysis.redraw_needed.connect(update_overlays)
 	_attach_tooling_hook()
+
+
+## Where the Board dock goes on a screen `screen_width` px wide: a column of its own at the
+## right edge, beside the Inspector's (the Selection panel and the analysis get the full
+## height), where the screen has room for one more column; under the Inspector on a smaller
+## screen (at 1366 px a fifth column pushed the window past the screen's edge). Once the
+## designer moves it, Godot keeps it where they put it.
+static func dock_slot_for(screen_width: int) -> DockSlot:
+	return DOCK_SLOT_RIGHT_UR if screen_width >= WIDE_SCREEN else DOCK_SLOT_RIGHT_BL
 
 
 func _exit_tree() -> void:
