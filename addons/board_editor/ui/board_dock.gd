@@ -7,7 +7,8 @@ extends VBoxContainer
 ## so it gets the window's full height. Everything scrolls in one body, never a scroll
 ## inside a scroll: the problems and the balance table grow with their lines. Its width is
 ## fixed (DOCK_WIDTH) and nothing in it may ask for more, so it stays as wide as the
-## designer left it; its scroll position stays put when the board is shown again.
+## designer left it; its scroll position stays put when the board is shown again (its rows
+## are rebuilt within one frame, before the body is laid out again).
 
 signal play_test_requested
 signal issue_focused(index: int)
@@ -164,7 +165,6 @@ func show_board(
 	session: Session, issues: Array[BoardIssue], node_without_board := false, focused_issue := -1
 ) -> void:
 	var editing := session != null and session.level != null
-	_keep_scroll()
 	analysis.bind(session.level if editing else null)
 	maze_analysis.bind(session.level if editing else null)
 	_play.disabled = not editing
@@ -207,28 +207,10 @@ func show_board(
 
 ## Updates the tool settings (after a selection or settings change).
 func refresh_options() -> void:
-	_keep_scroll()
 	_options.refresh()
 	_properties.refresh()
 	_machine.refresh()
 	_layers.refresh()
-
-
-# Rebuilding the problem rows or a panel shortens the body for a moment, and the scroll
-# bar clamps to it: the position the designer left is put back once the body is laid out.
-func _keep_scroll() -> void:
-	var kept := _body.scroll_vertical
-	if kept > 0:
-		_restore_scroll.call_deferred(kept)
-
-
-func _restore_scroll(kept: int) -> void:
-	if not is_inside_tree():
-		return
-	_body.scroll_vertical = kept
-	await get_tree().process_frame
-	if is_instance_valid(_body):
-		_body.scroll_vertical = kept
 
 
 ## The selection panel (the self-check types into its fields).
