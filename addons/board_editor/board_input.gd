@@ -118,7 +118,18 @@ static func owns_key(key: InputEventKey) -> bool:
 	return not (code >= KEY_F1 and code <= KEY_F12) and code != KEY_TAB
 
 
-## Keyboard: tool keys, snap and mirror toggles, Escape, Delete, Ctrl+C/V/D, arrow nudges.
+## True for a key Godot's 2D view zooms on even when the plugin used it: a digit (1 to
+## 100 %, 2 to 200 %, Shift+1 to 50 % ...), on the main keys or the keypad, without Ctrl,
+## Cmd or Alt. The plugin takes these before the view sees them.
+static func is_view_zoom_key(key: InputEventKey) -> bool:
+	if key.is_command_or_control_pressed() or key.alt_pressed or key.meta_pressed:
+		return false
+	var code := key.keycode
+	return (code >= KEY_0 and code <= KEY_9) or (code >= KEY_KP_0 and code <= KEY_KP_9)
+
+
+## Keyboard: tool keys, snap and mirror toggles, flip (H) and mirror to the other half
+## (Shift+M), Escape, Delete, Ctrl+C/V/D, arrow nudges.
 func handle_key(key: InputEventKey) -> bool:
 	var code := key.keycode
 	if key.is_command_or_control_pressed():
@@ -194,8 +205,14 @@ func _command_key(key: InputEventKey) -> bool:
 	return true
 
 
-# Snap, mirror and the tool keys.
+# Snap, mirror, flip and the tool keys.
 func _toggle_key(key: InputEventKey) -> bool:
+	if key.shift_pressed and key.keycode == Shortcuts.MIRROR_COPY_KEY:
+		Commands.mirror_to_other_half(session)
+		return true
+	if key.keycode == Shortcuts.FLIP_KEY and not key.shift_pressed:
+		Commands.flip_selection(session)
+		return true
 	if key.keycode == Shortcuts.SNAP_KEY:
 		session.set_snap(not session.snap_enabled)
 		return true

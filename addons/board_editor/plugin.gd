@@ -27,12 +27,14 @@ const Items := preload("res://addons/board_editor/core/board_items.gd")
 ## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
 const TOOLING_HOOK_ENV := "BOARD_EDITOR_HOOK"
 const TOOLING_HOOK_FOLDERS: Array[String] = ["res://tools/", "res://tests/"]
+## Screens this wide (px) or wider give the Board dock a column of its own (dock_slot_for).
+const WIDE_SCREEN := 1600
 ## The Project > Tools entry that starts a new board.
 const NEW_BOARD_MENU := "New board..."
 
 var _node: BoardNode
 var _session: Session
-var _input: BoardInput
+var _board_input: BoardInput
 var _toolbar: BoardToolbar
 var _generator: MazeGeneratorButton
 var _dock: BoardDock
@@ -65,7 +67,7 @@ func _enter_tree() -> void:
 	_dock.new_board_file_requested.connect(open_new_board_dialog)
 	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
 	_dock.focus_return_requested.connect(_return_focus)
-	add_control_to_dock(DOCK_SLOT_RIGHT_BL, _dock)
+	add_control_to_dock(dock_slot_for(DisplayServer.screen_get_size().x), _dock)
 	FrameSelection.follow_view_menu(_on_view_framed)
 	_save_dialog = SaveAsDialog.new()
 	_save_dialog.save_confirmed.connect(_save_as_named)
@@ -77,6 +79,15 @@ func _enter_tree() -> void:
 	_dock.analysis.item_picked.connect(select_item)
 	_dock.maze_analysis.redraw_needed.connect(update_overlays)
 	_attach_tooling_hook()
+
+
+## Where the Board dock goes on a screen `screen_width` px wide: a column of its own at the
+## right edge, beside the Inspector's (the Selection panel and the analysis get the full
+## height), where the screen has room for one more column; under the Inspector on a smaller
+## screen (at 1366 px a fifth column pushed the window past the screen's edge). Once the
+## designer moves it, Godot keeps it where they put it.
+static func dock_slot_for(screen_width: int) -> DockSlot:
+	return DOCK_SLOT_RIGHT_UR if screen_width >= WIDE_SCREEN else DOCK_SLOT_RIGHT_BL
 
 
 func _exit_tree() -> void:
@@ -108,7 +119,7 @@ func _edit(object: Object) -> void:
 	_session.selection_changed.connect(_on_selection_changed)
 	_session.settings_changed.connect(_on_settings_changed)
 	_session.tool_changed.connect(func(_tool: int) -> void: update_overlays())
-	_input = BoardInput.new(_session)
+	_board_input = BoardInput.new(_session)
 	level.changed.connect(_on_level_changed)
 	_toolbar.bind(_session)
 	_generator.bind(_session)
@@ -119,8 +130,8 @@ func _edit(object: Object) -> void:
 func _make_visible(visible: bool) -> void:
 	_visible = visible
 	_toolbar.visible = visible and _session != null
-	if not visible and _input != null:
-		_input.active_tool().cancel()
+	if not visible and _board_input != null:
+		_board_input.active_tool().cancel()
 
 
 func _forward_canvas_gui_input(event: InputEvent) -> bool:
@@ -137,12 +148,29 @@ func _forward_canvas_gui_input(event: InputEvent) -> bool:
 	if focused and FrameSelection.is_frame_key(event):
 		frame_selection()
 		return true
-	var used := _input.handle(event, _to_screen().affine_inverse(), focused)
+	var used := _board_input.handle(event, _to_screen().affine_inverse(), focused)
 	if not focused and event is InputEventMouseButton:
 		_return_focus()
 	if used or event is InputEventMouseMotion:
 		update_overlays()
 	return used
+
+
+# Godot's 2D view zooms on the digit keys (1 = 100 %, 2 = 200 %, Shift+1 = 50 % ...) even
+# when _forward_canvas_gui_input used the key: its zoom shortcuts run after the plugins
+# whatever they answered. So while the board's viewport has the keys, a digit is taken here,
+# before the GUI sees it, and goes to the board tool like any other key.
+func _input(event: InputEvent) -> void:
+	var key := event as InputEventKey
+	if key == null or not _visible or _board_input == null or not is_instance_valid(_node):
+		return
+	if not BoardInput.is_view_zoom_key(key) or _focus_in_dock:
+		return
+	if not (is_instance_valid(_viewport_control) and _viewport_control.has_focus()):
+		return
+	if _node.is_inside_tree():
+		_board_input.handle(key, _to_screen().affine_inverse())
+	get_viewport().set_input_as_handled()
 
 
 func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
@@ -152,7 +180,7 @@ func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
 	_dock.analysis.draw_over(overlay, _to_screen())
 	_dock.maze_analysis.draw_over(overlay, _to_screen())
 	BoardOverlay.draw(
-		overlay, _to_screen(), _session, _input.active_tool(), _issues, _focused_issue
+		overlay, _to_screen(), _session, _board_input.active_tool(), _issues, _focused_issue
 	)
 
 
@@ -171,7 +199,7 @@ func get_session() -> Session:
 
 ## The input router (null when no board is edited); used by the screenshot hook.
 func get_board_input() -> BoardInput:
-	return _input
+	return _board_input
 
 
 ## The problems found on the edited board (a copy; empty when none is edited).
@@ -193,13 +221,14 @@ func focus_issue(index: int) -> void:
 
 
 ## Frames the selected items in the 2D view (the whole board when none is selected), as
-## Godot's Frame Selection does for nodes.
-func frame_selection() -> void:
+## Godot's Frame Selection does for nodes; with `zoom_in` false it only pans (and zooms out
+## when they do not fit), as a balance table line does.
+func frame_selection(zoom_in := true) -> void:
 	if _session == null or not is_instance_valid(_node) or not _node.is_inside_tree():
 		return
 	if is_instance_valid(_viewport_control):
 		var area := FrameSelection.area(_session.level, _session.selection)
-		ViewFocus.show_area(_node.get_global_transform() * area, _viewport_control)
+		ViewFocus.show_area(_node.get_global_transform() * area, _viewport_control, zoom_in)
 	update_overlays()
 
 
@@ -209,12 +238,13 @@ func _on_view_framed() -> void:
 		frame_selection()
 
 
-## Selects `item` on the board and frames it (a line of the balance table).
+## Selects `item` on the board and brings it into view at the designer's zoom (a line of the
+## balance table: reading down the table must not zoom the board to 200 %).
 func select_item(item: Vector2i) -> void:
 	if _session == null or not Items.is_valid(_session.level, item):
 		return
 	_session.select([item] as Array[Vector2i])
-	frame_selection()
+	frame_selection(false)
 
 
 ## True for the node this plugin edits.
@@ -235,14 +265,14 @@ func _commit(action: BoardAction, already_applied: bool) -> void:
 func _release() -> void:
 	if _session != null:
 		_kept_settings = ToolSettings.capture(_session)
-		if _input != null:
-			_input.active_tool().cancel()
+		if _board_input != null:
+			_board_input.active_tool().cancel()
 		if _session.level.changed.is_connected(_on_level_changed):
 			_session.level.changed.disconnect(_on_level_changed)
 	if is_instance_valid(_node):
 		_node.editor_hidden_layers = 0
 	_session = null
-	_input = null
+	_board_input = null
 	_node = null
 	_issues = []  # a new array: never clear one the board node may share
 	_focused_issue = -1

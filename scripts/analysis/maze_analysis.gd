@@ -20,6 +20,8 @@ const DEFAULT_RUNS := 20
 const RUN_SECONDS := 120.0
 ## The report's maze figures version: 2 added why each game was lost ("losses", "games").
 const MAZE_VERSION := 2
+## A running game says how far it is every this many frames (about a second of play).
+const PROGRESS_FRAMES := 60
 
 var _level: BoardLevel
 var _seed := 1
@@ -28,6 +30,9 @@ var _threads := 1
 var _results: Array[Dictionary] = []
 var _mutex := Mutex.new()
 var _games_done := 0
+# Game index -> the share of its time limit a running game has played (updated each
+# PROGRESS_FRAMES frames, dropped when it ends): progress() moves before a game finishes.
+var _running_share := {}
 var _cancelled := false
 var _task := -1
 var _started_usec := 0
@@ -110,6 +115,18 @@ func games_done() -> int:
 	return done
 
 
+## The share of the run done, 0..1: the finished games, plus each running game's share of
+## its time limit (a lower bound: most games end well before the limit, and the share then
+## jumps to the whole game).
+func progress() -> float:
+	_mutex.lock()
+	var done := float(_games_done)
+	for share: float in _running_share.values():
+		done += share
+	_mutex.unlock()
+	return done / maxf(games(), 1)
+
+
 ## The report of the finished games (call once poll() is true).
 func report() -> Dictionary:
 	var wall := (Time.get_ticks_usec() - _started_usec) / 1e6
@@ -148,6 +165,9 @@ func _play(i: int) -> void:
 		var frames := 0
 		while frames < limit and rules.is_playing():
 			if _cancelled:
+				_mutex.lock()
+				_running_share.erase(i)
+				_mutex.unlock()
 				return  # an unfinished game counts nowhere
 			var world := rules.world
 			var positions := world.get_positions()
@@ -157,8 +177,13 @@ func _play(i: int) -> void:
 			rules.set_tilt(pilot.decide(positions, world.get_velocities()))
 			rules.step()
 			frames += 1
+			if frames % PROGRESS_FRAMES == 0:
+				_mutex.lock()
+				_running_share[i] = float(frames) / limit
+				_mutex.unlock()
 		out = _outcome(rules, watch, hard)
 	_mutex.lock()
+	_running_share.erase(i)
 	_results[i] = out
 	_games_done += 1
 	_mutex.unlock()

@@ -18,6 +18,9 @@ var kind: String = ""
 ## a start and the goal it cannot reach, a ring that pokes out): the editor's jump frames
 ## all of it. Empty for a problem at `position` alone.
 var area: Rect2 = Rect2()
+## Walls to point at, as pairs of ends (the walls that close a goal or a start in): the
+## editor draws them in the problem's colour. Empty for most problems.
+var segments: PackedVector2Array = PackedVector2Array()
 
 
 func _init(

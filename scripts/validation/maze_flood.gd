@@ -36,7 +36,7 @@ func _init(
 		free = walls_free.duplicate()
 	else:
 		_block_edges()
-		var grow := level.wall_width * 0.5 + level.ball_radius - minf(0.5, cell * 0.25)
+		var grow := wall_grow()
 		@warning_ignore("integer_division")  # walls are pairs of points; a lone end is ignored
 		var wall_count := level.walls.size() / 2
 		for w in wall_count:
@@ -47,6 +47,7 @@ func _init(
 	_label_regions()
 
 
+## True when a ball's centre at `start` can roll into the goal.
 func reaches_goal(start: Vector2) -> bool:
 	var index := _index_of(start)
 	return index >= 0 and goal_regions.has(region[index])
@@ -62,6 +63,11 @@ func region_at(p: Vector2) -> int:
 ## True when region `label` (region_at) joins the goal.
 func region_reaches_goal(label: int) -> bool:
 	return goal_regions.has(label)
+
+
+## The grid cell holding `p` (row * cols + column), or -1 off the grid.
+func cell_of(p: Vector2) -> int:
+	return _index_of(p)
 
 
 func _index_of(p: Vector2) -> int:
@@ -85,10 +91,23 @@ func _block_edges() -> void:
 				free[cy * cols + cx] = 0
 
 
-# Blocks the cells whose centre is closer than `grow` to the segment a-b. Each row only
-# visits the cells beside the part of the segment within `grow` of that row, so the work
-# follows the wall's length times its width, never the area of its bounding box.
+# Blocks the cells whose centre is closer than `grow` to the segment a-b.
 func _block_capsule(a: Vector2, b: Vector2, grow: float) -> void:
+	for index in capsule_cells(a, b, grow):
+		free[index] = 0
+
+
+## How far a wall blocks the grid on each side of its centre line: half its width plus a
+## ball's radius (a hair less, so a gap exactly a ball wide stays open).
+func wall_grow() -> float:
+	return _level.wall_width * 0.5 + _level.ball_radius - minf(0.5, cell * 0.25)
+
+
+## The cells whose centre is closer than `grow` to the segment a-b. Each row only visits
+## the cells beside the part of the segment within `grow` of that row, so the work follows
+## the wall's length times its width, never the area of its bounding box.
+func capsule_cells(a: Vector2, b: Vector2, grow: float) -> PackedInt32Array:
+	var cells := PackedInt32Array()
 	var box := Rect2(a, Vector2.ZERO).expand(b).grow(grow)
 	var y0 := maxi(0, floori(box.position.y / cell))
 	var y1 := mini(rows - 1, floori(box.end.y / cell))
@@ -108,7 +127,8 @@ func _block_capsule(a: Vector2, b: Vector2, grow: float) -> void:
 			var dx := px - (a.x + ab.x * t)
 			var dy := py - (a.y + ab.y * t)
 			if dx * dx + dy * dy < grow2:
-				free[cy * cols + cx] = 0
+				cells.append(cy * cols + cx)
+	return cells
 
 
 # The x range (as x..y) holding every point of row `py` within `grow` of the segment

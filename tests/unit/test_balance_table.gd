@@ -168,3 +168,22 @@ func _first_tulip(level: BoardLevel) -> int:
 		if level.bonus_pockets[i].role == BonusPocketSpec.Role.TULIP:
 			return i
 	return -1
+
+
+func test_the_return_before_stays_when_another_board_is_shown_and_back() -> void:
+	var level := _board("classic")
+	var panel := _panel()
+	panel.bind(level)
+	_run(panel)
+	var old_return := AnalysisReport.number(panel.report()["return"])
+	_set_payout(level, 1, level.pockets[1].payout + 10)
+	panel.bind(level)
+	assert_almost_eq(panel.return_before(), old_return, 0.00001)
+	# Another scene tab: the board is let go (null), another board shows, then this again.
+	panel.bind(null)
+	panel.bind(_board("tulips"))
+	assert_true(is_nan(panel.return_before()), "the other board has no figures before")
+	panel.bind(null)
+	panel.bind(level)
+	assert_almost_eq(panel.return_before(), old_return, 0.00001, "(before: ...) is kept")
+	assert_string_contains(panel._controls.status.text, "(before: %.2f)" % old_return)

@@ -124,10 +124,10 @@ func test_picking_the_same_role_or_a_pin_changes_nothing() -> void:
 	assert_eq(level.bonus_pockets[1].role, BonusPocketSpec.Role.ATTACKER)
 
 
-func test_the_problem_list_comes_before_the_scrolling_panels() -> void:
+func test_the_problem_list_comes_before_the_selection_panel() -> void:
 	var dock: BoardDock = add_child_autofree(BoardDock.new())
 	var problems := dock.problems()
-	var scroll := dock.properties().get_parent().get_parent()
-	assert_true(scroll is ScrollContainer, "the Selection panel scrolls with the tool settings")
-	assert_lt(problems.get_index(), scroll.get_index(), "the problems sit above the panels")
-	assert_eq(problems.get_parent(), dock, "in the dock itself, never scrolled away")
+	var selection := dock.properties()
+	assert_eq(problems.get_parent(), selection.get_parent(), "both in the dock's one body")
+	assert_lt(problems.get_index(), selection.get_index(), "the problems sit above")
+	assert_true(dock.body().is_ancestor_of(problems), "and scroll with it")

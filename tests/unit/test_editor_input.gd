@@ -157,3 +157,22 @@ func test_a_box_drag_round_pins_placed_above_the_board_stays_in_the_tool() -> vo
 	assert_true(input.handle(press, Transform2D.IDENTITY))
 	assert_eq(session.selection.size(), 2, "the box picked both pins")
 	assert_false(input.is_over_board(Vector2(80, -400)), "far from board and items: Godot's")
+
+
+func test_the_digits_godot_zooms_on_are_the_plugins_to_take_first() -> void:
+	# Godot's 2D view runs its zoom shortcuts (1 = 100 %, 2 = 200 %, Shift+1 = 50 %) after
+	# the plugin whatever the plugin answered, so the plugin takes these keys in _input.
+	for code: Key in [KEY_1, KEY_2, KEY_3, KEY_5, KEY_KP_2]:
+		var digit := InputEventKey.new()
+		digit.keycode = code
+		digit.pressed = true
+		assert_true(BoardInput.is_view_zoom_key(digit), OS.get_keycode_string(code))
+		digit.shift_pressed = true
+		assert_true(BoardInput.is_view_zoom_key(digit), "Shift+" + OS.get_keycode_string(code))
+	var letter := InputEventKey.new()
+	letter.keycode = KEY_Q
+	assert_false(BoardInput.is_view_zoom_key(letter), "tool keys go the usual way")
+	var save := InputEventKey.new()
+	save.keycode = KEY_1
+	save.ctrl_pressed = true
+	assert_false(BoardInput.is_view_zoom_key(save), "Ctrl+1 stays Godot's")

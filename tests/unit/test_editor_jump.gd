@@ -15,6 +15,12 @@ func test_a_large_area_zooms_the_view_out_until_it_fits() -> void:
 	assert_lt(zoom * 700.0, VIEW.y, "the whole area is on screen")
 
 
+func test_a_balance_table_line_never_zooms_in() -> void:
+	assert_eq(ViewFocus.zoom_for(1.0, Vector2(30, 30), VIEW, false), 1.0, "the zoom stays 100 %")
+	var out := ViewFocus.zoom_for(4.0, Vector2(700, 700), VIEW, false)
+	assert_lt(out, 4.0, "but out, when the item does not fit")
+
+
 func test_a_small_problem_zooms_in_from_far_out_and_keeps_a_close_view() -> void:
 	assert_eq(ViewFocus.zoom_for(0.5, Vector2(4, 4), VIEW), ViewFocus.CLOSE_ZOOM)
 	assert_eq(ViewFocus.zoom_for(3.0, Vector2(4, 4), VIEW), 3.0, "already close: kept")

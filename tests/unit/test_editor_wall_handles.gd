@@ -62,6 +62,21 @@ func test_with_the_second_wall_selected_its_end_moves_instead() -> void:
 	assert_eq(walls[3], Vector2(105, 35))
 
 
+func test_a_press_on_the_walls_round_cap_beside_the_dot_grabs_the_end() -> void:
+	_helper.start(_corner_board())
+	var session := _helper.session
+	session.set_snap(false)
+	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	# 10 px from the end dot at (105, 105): on the 10 px wall's cap, past the 8 px pick.
+	_helper.press(Vector2(113, 111), true)
+	_helper.move(Vector2(125, 115))
+	_helper.move(Vector2(133, 121))
+	_helper.press(Vector2(133, 121), false)
+	var walls := session.level.walls
+	assert_eq(walls[0], Vector2(35, 105), "the far end stays: not the whole wall")
+	assert_eq(walls[1], Vector2(125, 115), "the grabbed end moves by the drag, no jump")
+
+
 func test_dragging_the_middle_of_a_wall_still_moves_the_whole_wall() -> void:
 	_helper.start(_corner_board())
 	var session := _helper.session
@@ -116,6 +131,18 @@ func test_ghosts_turn_red_where_a_click_would_add_an_error() -> void:
 	var holes: Variant = _helper.input.active_tool()
 	assert_true(holes.would_add_error(maze.ball_starts[0]), "a hole on a ball start is red")
 	assert_eq(maze.holes.size(), 8, "asking never changes the board")
+
+
+func test_the_goal_ghost_turns_red_over_walls_starts_and_holes() -> void:
+	var maze := _load_board("res://levels/maze/classic.board")
+	_helper.start(maze)
+	_helper.session.set_tool(Session.Tool.GOAL)
+	var goal: Variant = _helper.input.active_tool()
+	assert_false(goal.would_add_error(maze.goal_center), "where it is now: clear")
+	assert_true(goal.would_add_error(maze.ball_starts[0]), "on a ball start")
+	var wall_middle := (maze.walls[20] + maze.walls[21]) * 0.5
+	assert_true(goal.would_add_error(wall_middle), "on a wall")
+	assert_true(goal.would_add_error(maze.holes[0]), "on a black hole")
 
 
 func _load_board(path: String) -> BoardLevel:

@@ -125,3 +125,24 @@ func test_holes_are_named_by_their_stable_ids_in_words() -> void:
 	var figures := {"games": 6, "wins": 5, "median_time_s": 41.23}
 	assert_eq(OverlayDraw.mode_line("hard", figures), "Hard: won 5 of 6, median 41.2 s")
 	assert_eq(OverlayDraw.mode_line("easy", {"games": 3, "wins": 0}), "Easy: won 0 of 3")
+
+
+func test_a_board_the_check_proves_unwinnable_plays_no_games() -> void:
+	var level := _garden()
+	var walls := level.walls
+	var c := level.goal_center
+	var half := level.goal_radius + level.wall_width + level.ball_radius + 2.0
+	var corners := [c + Vector2(-half, -half), c + Vector2(half, -half)]
+	corners.append_array([c + Vector2(half, half), c + Vector2(-half, half)])
+	for k in 4:
+		walls.append(corners[k])
+		walls.append(corners[(k + 1) % 4])
+	level.walls = walls
+	ItemIds.fill(level)
+	var panel := _panel()
+	panel.bind(level)
+	panel.start()
+	assert_false(panel.is_running(), "no pilot games on a board nobody can win")
+	var said := panel._controls.status.text
+	assert_string_contains(said, "No games played: this board cannot be won.")
+	assert_string_contains(said, "The goal is closed in by walls ")

@@ -109,8 +109,8 @@ func test_a_boxed_in_start_is_reported_beside_other_errors() -> void:
 	assert_eq(_messages(level, "wall_zero_length").size(), 1, "the other error is there")
 	assert_eq(
 		_messages(level, "start_cannot_reach_goal"),
-		PackedStringArray(["Ball start 1 cannot roll to the goal: walls close it in."]),
-		"and the boxed-in start is still reported"
+		PackedStringArray(["Ball start 1 cannot roll to the goal: wall 50 closes it in."]),
+		"and the boxed-in start is still reported (its box's other three walls back onto the maze's)"
 	)
 
 

@@ -71,20 +71,18 @@ func test_a_five_pixel_trap_is_given_up_at_once_and_named_at_the_gap() -> void:
 	assert_eq(words[0], expected % LossWords.place(at))
 
 
-func test_the_dock_says_why_the_games_were_lost() -> void:
+func test_the_dock_names_a_trap_the_board_check_proves_at_once() -> void:
+	# The board check already proves the trap (the gap is narrower than a ball), so the dock
+	# says so without playing a game; the games' own loss words are checked above.
 	var panel := MazeAnalysisPanel.new()
 	panel.runs = 1
 	add_child_autofree(panel)
 	panel.bind(_trap_board())
 	panel.start()
-	var started := Time.get_ticks_msec()
-	while panel.is_running() and Time.get_ticks_msec() - started < 60000:
-		panel._process(0.016)
-		OS.delay_msec(10)
+	assert_false(panel.is_running(), "no games played")
 	var status: String = panel._controls.status.text
-	assert_string_contains(status, "Easy: won 0 of 1")
-	assert_string_contains(status, "2 of 2 games: a ball was trapped near (")
-	assert_string_contains(status, "(the gap at (100, 8) is narrower than a ball)")
+	assert_string_contains(status, "this board cannot be won")
+	assert_string_contains(status, "Ball starts 1 and 3 cannot roll to the goal: walls ")
 
 
 func test_no_progress_for_twenty_seconds_is_stuck() -> void:

@@ -39,6 +39,8 @@ func _init(
 	section.add_child(row)
 	progress = ProgressBar.new()
 	progress.max_value = 1.0
+	progress.step = 0.0  # a bar that moves with the first climbs, not in whole percents
+	progress.show_percentage = false  # the status line says how far, to a tenth early on
 	progress.visible = false
 	section.add_child(progress)
 	status = Label.new()

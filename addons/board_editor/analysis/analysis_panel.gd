@@ -25,6 +25,7 @@ const OverlayDraw := preload("res://addons/board_editor/analysis/analysis_overla
 const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 const BalanceRows := preload("res://addons/board_editor/analysis/balance_rows.gd")
 const BalanceTable := preload("res://addons/board_editor/analysis/balance_table.gd")
+const RunProgress := preload("res://addons/board_editor/analysis/run_progress.gd")
 ## Partial figures are refreshed at most this often while a run goes on, ms.
 const UPDATE_MS := 400
 
@@ -55,6 +56,9 @@ var _table: BalanceTable
 var _rows: Array[BalanceRows.Row] = []
 var _before_rows: Array[BalanceRows.Row] = []
 var _before_return := NAN
+# Board (its instance id) -> [before rows, before return] of the boards not shown now: a
+# scene tab switched away and back keeps its "(before: 1.21)".
+var _kept_before := {}
 
 
 func _init() -> void:
@@ -73,7 +77,10 @@ func _init() -> void:
 ## edit: a changed board shows its cached figures, or none; a payout edit reprices them.
 func bind(level: BoardLevel) -> void:
 	visible = level != null and level.is_pachinko()
-	_level = level if visible else null
+	var shown := level if visible else null
+	if shown != _level:
+		_switch_board(shown)
+	_level = shown
 	var key := AnalysisCache.key_for(_plan_for(_level)) if _level != null else ""
 	if key == _key:
 		if not _report.is_empty():
@@ -88,6 +95,20 @@ func bind(level: BoardLevel) -> void:
 	_show_report(ReportPayouts.repriced(stored, _level), heat)
 	if _run == null:
 		_say_result()  # new content with no figures, like the old: "Not analysed..."
+
+
+# Another board is shown (a scene tab switched, the board deselected): the figures before of
+# the board leaving are kept for its return, and the coming board's own come back. Its
+# figures are shown afresh: they never become the coming board's "before".
+func _switch_board(coming: BoardLevel) -> void:
+	if _level != null:
+		_kept_before[_level.get_instance_id()] = [_before_rows, _before_return]
+	var kept: Array = _kept_before.get(coming.get_instance_id(), []) if coming != null else []
+	var rows: Array[BalanceRows.Row] = []
+	_before_rows = kept[0] if not kept.is_empty() else rows
+	_before_return = kept[1] if not kept.is_empty() else NAN
+	_report = {}
+	_rows = []
 
 
 func _notification(what: int) -> void:
@@ -169,7 +190,7 @@ func _process(_delta: float) -> void:
 		set_process(false)
 		return
 	var done := _run.poll()
-	_controls.progress.value = _run.progress()
+	_controls.progress.value = run_share()
 	if done and _worker_failed():
 		_run_here_instead()
 	elif done:
@@ -181,10 +202,22 @@ func _process(_delta: float) -> void:
 		_show_partial(false)
 
 
-# "Climbing the rail..." with how far the climbs are.
+## The share of the running analysis done, climbs and shots together (RunProgress); 0 when
+## none runs.
+func run_share() -> float:
+	if _run == null:
+		return 0.0
+	return RunProgress.pachinko_share(_run.climb_progress(), _run.progress())
+
+
+# "Climbing the rail at every power: 3 % done, about 45 s left."
 func _climbing_text() -> String:
-	var share := _run.climb_progress() if _run != null else 0.0
-	return "Climbing the rail at every power (%d %%)..." % roundi(share * 100.0)
+	return RunProgress.line("Climbing the rail at every power", run_share(), _run_seconds())
+
+
+# Seconds since the run started.
+func _run_seconds() -> float:
+	return (Time.get_ticks_msec() - _run_started) / 1000.0
 
 
 # True when the run was a worker that stopped without its counts (not a cancel).
@@ -222,9 +255,8 @@ func _show_partial(final: bool) -> void:
 		# Payouts edited during the run price the counts so far at once.
 		var heat := ImageTexture.create_from_image(image)
 		_show_report(ReportPayouts.repriced(fresh, _level), heat, true)
-	_controls.status.text = (
-		"%d of %d shots (%.0f shots/s)..." % [_shown_shots, _run.plan.shots, fresh["shots_per_s"]]
-	)
+	var doing := "%d of %d shots fired" % [_shown_shots, _run.plan.shots]
+	_controls.status.text = RunProgress.line(doing, run_share(), seconds)
 	if final:
 		var saved := AnalysisCache.save(_run_key, fresh, image)
 		if saved != OK:

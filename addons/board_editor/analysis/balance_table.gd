@@ -21,10 +21,10 @@ const TIPS: Array[String] = [
 	"Its share in the result shown before this one (its payout then, if another).",
 ]
 ## Narrowest each column gets, px (the dock is narrow: the item's name takes what is left).
-const MIN_WIDTHS: Array[int] = [84, 40, 76, 52, 60]
-## Height of one line and of the title row, px (the table grows with its lines).
+const MIN_WIDTHS: Array[int] = [86, 40, 72, 52, 56]
+## Height of one line and of the title row, px (the table grows with all its lines: it
+## scrolls with the dock's body, never inside it).
 const LINE_PX := 24
-const MOST_LINES := 12
 
 var _rows: Array[Rows.Row] = []
 var _before: Dictionary[String, Rows.Row] = {}
@@ -38,6 +38,8 @@ func _init() -> void:
 	column_titles_visible = true
 	hide_root = true
 	select_mode = Tree.SELECT_ROW
+	scroll_vertical_enabled = false  # every line shows: the dock's body scrolls
+	scroll_horizontal_enabled = false  # the item column clips; the rest fits DOCK_WIDTH
 	for c in TITLES.size():
 		set_column_title(c, TITLES[c])
 		set_column_title_tooltip_text(c, TIPS[c])
@@ -102,7 +104,7 @@ func _fill() -> void:
 		line.set_metadata(0, row.item)
 		for c in range(1, TITLES.size()):
 			line.set_text_alignment(c, HORIZONTAL_ALIGNMENT_RIGHT)
-	var lines := mini(_rows.size(), MOST_LINES) + 1
+	var lines := _rows.size() + 1
 	custom_minimum_size = Vector2(0, lines * LINE_PX + 8)
 
 

@@ -17,6 +17,7 @@ const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
 const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 const LossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
+const RunProgress := preload("res://addons/board_editor/analysis/run_progress.gd")
 ## First seed of the games: the same board always gives the same figures.
 const SEED := 1
 
@@ -31,6 +32,7 @@ var _report: Dictionary = {}
 var _run: MazeAnalysis
 var _run_key := ""
 var _run_level: BoardLevel
+var _run_started := 0
 
 var _controls: Controls
 
@@ -69,16 +71,32 @@ func bind(level: BoardLevel) -> void:
 
 
 ## Starts an analysis of a snapshot of the bound board (edits during the run do not reach
-## the games).
+## the games). A board the board check proves unwinnable (the goal or a start closed in)
+## plays no games: the status says why at once.
 func start() -> void:
 	if _level == null or _run != null:
+		return
+	var unwinnable := unwinnable_reason(_level)
+	if not unwinnable.is_empty():
+		_controls.status.text = "No games played: this board cannot be won. " + unwinnable
 		return
 	_run_level = _level.duplicate_level()
 	_run_key = _key
 	_run = MazeAnalysis.create(_run_level, runs, SEED)
 	_run.start(OS.get_processor_count())
-	_controls.show_running("The pilot is playing %d games..." % _run.games())
+	_run_started = Time.get_ticks_msec()
+	_controls.show_running(_playing_text())
 	set_process(true)
+
+
+## The board check's reason why no ball can be won on `level` (a goal or ball starts closed
+## in by walls), or "" when every start can roll to the goal.
+static func unwinnable_reason(level: BoardLevel) -> String:
+	var reasons := PackedStringArray()
+	for issue in BoardValidator.validate(level):
+		if issue.kind in ["goal_closed_in", "start_cannot_reach_goal"]:
+			reasons.append(issue.message)
+	return " ".join(reasons)
 
 
 ## Stops the running analysis at the games' next frame; nothing is kept.
@@ -107,9 +125,17 @@ func _process(_delta: float) -> void:
 	if _run == null:
 		set_process(false)
 		return
-	_controls.progress.value = float(_run.games_done()) / _run.games()
+	_controls.progress.value = _run.progress()
+	_controls.status.text = _playing_text()
 	if _run.poll():
 		_finish()
+
+
+# "The pilot is playing 12 games (3 done): 30 % done, about 35 s left."
+func _playing_text() -> String:
+	var doing := "The pilot is playing %d games (%d done)" % [_run.games(), _run.games_done()]
+	var seconds := (Time.get_ticks_msec() - _run_started) / 1000.0
+	return RunProgress.line(doing, _run.progress(), seconds)
 
 
 func _finish() -> void:

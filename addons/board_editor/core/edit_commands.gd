@@ -1,14 +1,17 @@
 @tool
 extends RefCounted
-## The keyboard commands on a selection: delete, copy, paste, duplicate, nudge. Each one
-## is a single undoable action; mirror mode takes the mirrored partners along.
+## The keyboard commands on a selection: delete, copy, paste, duplicate, nudge, flip and
+## mirror to the other half. Each one is a single undoable action; mirror mode takes the
+## mirrored partners along.
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const ItemKeys := preload("res://addons/board_editor/core/item_keys.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
+const FlipItemsAction := preload("res://addons/board_editor/actions/flip_items_action.gd")
 
 
 ## Deletes the selection (and mirrored partners); false when there is nothing to delete.
@@ -43,18 +46,81 @@ static func paste_at(session: Session, at: Vector2) -> bool:
 	return true
 
 
-## Copies the selection one grid step (a cell on a maze) down and right, selecting the copy.
+## Copies the selection beside itself (duplicate_offset), selecting the copy. In mirror
+## mode the copy's twin goes the other way on the other half, as a paste's does: a selection
+## holding both twins is copied from one half only, so each copy comes once.
 static func duplicate_selection(session: Session) -> bool:
 	var items := _editable(session)
 	if items.is_empty():
 		return false
-	var data := Items.extract(session.level, items, Vector2.ZERO)
-	var offset := duplicate_offset(session, items)
-	var action := AddItemsAction.new(
-		session.level, Items.offset_set(data, offset), "Duplicate board items"
-	)
+	var source := items
+	if session.mirror_enabled:
+		source = _one_half(session.level, items, Mirror.axis_of(session.level))
+	var data := Items.extract(session.level, source, Vector2.ZERO)
+	var offset := duplicate_offset(session, source)
+	var copy := session.mirrored(Items.offset_set(data, offset))
+	var action := AddItemsAction.new(session.level, copy, "Duplicate board items")
 	session.commit(action)
 	session.select(action.added)
+	return true
+
+
+## Flips the selection left to right about its own centre (one undo step). In mirror mode
+## the twins of the selected items flip too, about the reflected centre, so each stays the
+## mirror image of its twin.
+static func flip_selection(session: Session) -> bool:
+	var level := session.level
+	var items: Array[Vector2i] = []
+	for item in session.selection:
+		if Items.is_valid(level, item):
+			items.append(item)
+	if items.is_empty():
+		return false
+	var bounds := extent_of(level, items[0])
+	for item in items:
+		bounds = bounds.merge(extent_of(level, item))
+	var centre := bounds.get_center().x
+	var groups: Array = [[items, centre]]
+	if session.mirror_enabled:
+		var axis := Mirror.axis_of(level)
+		var twins: Array[Vector2i] = []
+		for item in items:
+			var twin := Mirror.partner(level, item, axis)
+			if twin != Items.NONE and twin != item and not items.has(twin):
+				twins.append(twin)
+		if not twins.is_empty():
+			groups.append([twins, 2.0 * axis - centre])
+	session.commit(FlipItemsAction.new(level, groups))
+	return true
+
+
+## Adds the mirror image of the selection on the other half of the board (across the
+## board's axis, Mirror.axis_of), keeping the originals; an item that already has its twin
+## there, or sits on the axis, is not doubled. Selects the originals and the new twins.
+## False when every selected item already has its twin.
+static func mirror_to_other_half(session: Session) -> bool:
+	var level := session.level
+	var axis := Mirror.axis_of(level)
+	var items := _editable(session)
+	var lonely: Array[Vector2i] = []
+	for item in items:
+		if Mirror.partner(level, item, axis) == Items.NONE:
+			lonely.append(item)
+	if lonely.is_empty():
+		return false
+	var twins := Mirror.reflections_of(Items.extract(level, lonely, Vector2.ZERO), axis)
+	var action := AddItemsAction.new(
+		level,
+		twins,
+		"Mirror %d item%s to the other half" % [lonely.size(), "" if lonely.size() == 1 else "s"]
+	)
+	var kept_keys: Array = []
+	for item in items:
+		kept_keys.append(ItemKeys.of(level, item))
+	session.commit(action)
+	var selected := ItemKeys.find_all(level, kept_keys)
+	selected.append_array(action.added)
+	session.select(selected)
 	return true
 
 
@@ -121,6 +187,17 @@ static func step(session: Session) -> float:
 	if session.level.is_maze() and session.snap_enabled:
 		return session.level.path_width + session.level.wall_width
 	return session.grid_step
+
+
+# `items` without the twins on the right of `axis` whose left twin is in `items` too.
+static func _one_half(level: BoardLevel, items: Array[Vector2i], axis: float) -> Array[Vector2i]:
+	var half: Array[Vector2i] = []
+	for item in items:
+		var twin := Mirror.partner(level, item, axis)
+		var on_right := Items.position_of(level, item).x > axis
+		if not (on_right and twin != item and items.has(twin)):
+			half.append(item)
+	return half
 
 
 # The selection without the goal, which cannot be copied or deleted.

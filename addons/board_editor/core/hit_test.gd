@@ -81,6 +81,49 @@ static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2
 	return best
 
 
+## Every item a brush of radius `tolerance` touches as it sweeps from `from` to `to` (a
+## capsule round the segment), pockets once: what an erase drag passes over, however far
+## apart the mouse events that bound the stroke. The goal is never in it.
+static func along(
+	level: BoardLevel, from: Vector2, to: Vector2, tolerance: float
+) -> Array[Vector2i]:
+	var found: Array[Vector2i] = []
+	for i in level.pins.size():
+		if _reach(level.pins[i], from, to) <= level.pin_radius + tolerance:
+			var owner := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
+			var item := Items.make(Items.Kind.POCKET, owner) if owner >= 0 else Vector2i(0, i)
+			if not found.has(item):
+				found.append(item)
+	for i in level.pockets.size():
+		var item := Items.make(Items.Kind.POCKET, i)
+		if (
+			not found.has(item)
+			and _crosses(_pocket_rect(level.pockets[i]).grow(tolerance), from, to)
+		):
+			found.append(item)
+	for w in Items.wall_count(level.walls):
+		var ends := Geometry2D.get_closest_points_between_segments(
+			from, to, level.walls[w * 2], level.walls[w * 2 + 1]
+		)
+		if ends[0].distance_to(ends[1]) <= level.wall_width * 0.5 + tolerance:
+			found.append(Items.make(Items.Kind.WALL, w))
+	for i in level.holes.size():
+		if _reach(level.holes[i], from, to) <= level.hole_radius + tolerance:
+			found.append(Items.make(Items.Kind.HOLE, i))
+	for i in level.ball_starts.size():
+		if _reach(level.ball_starts[i], from, to) <= level.ball_radius + tolerance:
+			found.append(Items.make(Items.Kind.START, i))
+	for i in level.bonus_pockets.size():
+		var spec := level.bonus_pockets[i]
+		if spec != null and _crosses(BonusChecks.cup_rect(level, spec).grow(tolerance), from, to):
+			found.append(Items.make(Items.Kind.BONUS, i))
+	for i in level.windmills.size():
+		var wheel := level.windmills[i]
+		if wheel != null and _reach(wheel.position, from, to) <= wheel.sweep_radius() + tolerance:
+			found.append(Items.make(Items.Kind.WINDMILL, i))
+	return found
+
+
 ## True when a pin ghost at `point` shows red: a click there would crowd a pin, or put it
 ## outside the ring or in the launch rail (the validator's errors, PinChecks.where_outside).
 static func pin_blocked(level: BoardLevel, point: Vector2) -> bool:
@@ -187,3 +230,23 @@ static func handle_value(level: BoardLevel, handle: String, point: Vector2) -> V
 ## A pocket's body as a box: the mouth's width, from the mouth down to the special pin.
 static func _pocket_rect(spec: PocketSpec) -> Rect2:
 	return Rect2(spec.position - Vector2(spec.width * 0.5, 0), Vector2(spec.width, spec.depth))
+
+
+# How near the segment from `from` to `to` comes to `point`.
+static func _reach(point: Vector2, from: Vector2, to: Vector2) -> float:
+	return Geometry2D.get_closest_point_to_segment(point, from, to).distance_to(point)
+
+
+# True when the segment from `from` to `to` touches `box` (an end inside, or an edge crossed).
+static func _crosses(box: Rect2, from: Vector2, to: Vector2) -> bool:
+	if box.has_point(from) or box.has_point(to):
+		return true
+	var corners := [box.position, Vector2(box.end.x, box.position.y), box.end]
+	corners.append(Vector2(box.position.x, box.end.y))
+	for k in 4:
+		var hit: Variant = Geometry2D.segment_intersects_segment(
+			from, to, corners[k], corners[(k + 1) % 4]
+		)
+		if hit != null:
+			return true
+	return false

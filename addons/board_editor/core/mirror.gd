@@ -73,6 +73,31 @@ static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 	return result
 
 
+## The mirror image of an item set alone (the originals left out): what "Mirror to the
+## other half" adds. Windmill twins turn the other way.
+static func reflections_of(data: Dictionary, axis: float) -> Dictionary:
+	var result := Items.empty_set()
+	for key: String in ["pins", "walls", "holes", "starts"]:
+		var points: PackedVector2Array = data.get(key, PackedVector2Array())
+		var reflected := PackedVector2Array()
+		for point in points:
+			reflected.append(reflect(point, axis))
+		result[key] = reflected
+	var pockets: Array = result["pockets"]
+	for spec: PocketSpec in data.get("pockets", []):
+		var at := reflect(spec.position, axis)
+		pockets.append(PocketSpec.create(at, spec.width, spec.depth, spec.payout))
+	var bonus: Array = result["bonus"]
+	for spec: BonusPocketSpec in data.get("bonus", []):
+		bonus.append(Items.moved_bonus(spec, reflect(spec.position, axis) - spec.position))
+	var wheels: Array = result["windmills"]
+	for spec: WindmillSpec in data.get("windmills", []):
+		var twin := spec.moved(reflect(spec.position, axis) - spec.position)
+		twin.speed = -spec.speed
+		wheels.append(twin)
+	return result
+
+
 # The windmills and their mirror images, which turn the other way (a mirrored board plays
 # the same from both sides); one on the axis stays single.
 static func _mirrored_windmills(wheels: Array, axis: float) -> Array:

@@ -35,3 +35,24 @@ static func would_add_error(level: BoardLevel, data: Dictionary) -> bool:
 	var before := BoardValidator.errors(trial).size()
 	AddItemsAction.new(trial, data, "Try").do()
 	return BoardValidator.errors(trial).size() > before
+
+
+## True when the goal moved to `spot` would sit on a wall (a wall's centre line runs inside
+## its ring; a ring that only grazes a wall's side, as on the Classic maze, is fine), hold a
+## ball start (the ball would start in the goal) or cover a black hole: its ghost shows red
+## there. The board check warns of the last two.
+static func goal_blocked(level: BoardLevel, spot: Vector2) -> bool:
+	var radius := level.goal_radius
+	for w in range(0, level.walls.size() - 1, 2):
+		var near := Geometry2D.get_closest_point_to_segment(
+			spot, level.walls[w], level.walls[w + 1]
+		)
+		if near.distance_to(spot) < radius:
+			return true
+	for start in level.ball_starts:
+		if start.distance_to(spot) < radius:
+			return true
+	for hole in level.holes:
+		if hole.distance_to(spot) < radius + level.hole_radius:
+			return true
+	return false

@@ -1,19 +1,23 @@
 @tool
 extends "res://addons/board_editor/tools/board_tool.gd"
-## Click a thing to delete it, or drag across several: everything the mouse passes over is
-## marked and deleted together on release, as one undo step. In mirror mode the mirrored
-## partners go too. A pocket goes with all its pins; the goal cannot be erased, only moved.
+## Click a thing to delete it, or drag across several: everything the brush passes over
+## (the whole stroke between one mouse event and the next, not only the points the mouse
+## reported) is marked and deleted together on release, as one undo step. In mirror mode the
+## mirrored partners go too. A pocket goes with all its pins; the goal cannot be erased.
 
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 
 var _erasing := false
 var _marked: Array[Vector2i] = []
+# Where the stroke was at the last mouse event (board px).
+var _last := Vector2.ZERO
 
 
 func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 	_erasing = true
 	_marked.clear()
+	_last = at
 	_mark(at)
 	return true
 
@@ -21,7 +25,8 @@ func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 func motion(at: Vector2, _event: InputEventMouseMotion) -> bool:
 	hover = at
 	if _erasing:
-		_mark(at)
+		_mark_along(_last, at)
+		_last = at
 	return _erasing
 
 
@@ -64,6 +69,13 @@ func _mark(at: Vector2) -> void:
 	var item := _erasable(at)
 	if item != Items.NONE and not _marked.has(item):
 		_marked.append(item)
+
+
+# Marks everything the brush touches on its way from `from` to `to`.
+func _mark_along(from: Vector2, to: Vector2) -> void:
+	for item in HitTest.along(level(), from, to, tolerance()):
+		if session.can_pick(item) and not _marked.has(item):
+			_marked.append(item)
 
 
 func _erasable(at: Vector2) -> Vector2i:

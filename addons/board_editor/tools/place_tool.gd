@@ -56,16 +56,19 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 		Draw.ghost_points(canvas, to_screen, spots, radius, level())
 		return
 	var color := Draw.GHOST_COLOR
-	if kind != Items.Kind.GOAL and would_add_error(spot):
-		color = Draw.BLOCKED_COLOR  # a click here would give the board an error
+	if would_add_error(spot):
+		color = Draw.BLOCKED_COLOR  # a click here would give the board a problem
 	# The goal and a windmill's sweep are big: an outline keeps the board under them visible.
 	var filled := kind != Items.Kind.GOAL and kind != Items.Kind.WINDMILL
 	for point in spots:
 		Draw.circle(canvas, to_screen, point, radius, color, filled)
 
 
-## True when placing here (with its mirror twin) would give the board a new error.
+## True when placing here (with its mirror twin) would give the board a new error; for the
+## goal, when it would land on a wall, a ball start or a black hole.
 func would_add_error(spot: Vector2) -> bool:
+	if kind == Items.Kind.GOAL:
+		return PlacementCheck.goal_blocked(level(), spot)
 	return _check.adds_error(level(), session.mirrored(_data_at(spot)))
 
 

@@ -22,6 +22,8 @@ var _move: MoveItemsAction = null
 # The wall end being dragged: its index in the board's `walls` points (-1: none).
 var _end_index := -1
 var _end_drag: SetPointAction = null
+# Where the dragged end was when it was grabbed.
+var _end_start := Vector2.ZERO
 var _arc_drag := ArcHandleDrag.new()
 
 
@@ -31,6 +33,7 @@ func press(at: Vector2, event: InputEventMouseButton) -> bool:
 	_box_mode = 1 if event.shift_pressed else (2 if event.ctrl_pressed else 0)
 	_end_index = selected_wall_end(at) if _box_mode == 0 else -1
 	if _end_index >= 0:
+		_end_start = level().walls[_end_index]
 		return true  # a handle: the wall keeps its selection, only this end moves
 	var arc_handle := -1
 	if _box_mode == 0:
@@ -119,14 +122,19 @@ func cancel() -> bool:
 ## The index in the board's `walls` points of the selected wall's end under `at`, or -1.
 ## Only a wall selected on its own has end handles (at a corner two walls share, only the
 ## selected one's end moves); with more selected, a drag moves the whole selection.
+## An end grabs anywhere on the wall's round cap plus the pick tolerance (a press 7 px off
+## the dot on a 10 px wall is the end's, not the whole wall's), but never past a third of
+## the wall's length: the middle third always moves the whole wall.
 func selected_wall_end(at: Vector2) -> int:
 	if session.selection.size() != 1:
 		return -1
 	var best := -1
-	var best_distance := tolerance()
 	for item: Vector2i in session.selection:
 		if item.x != Items.Kind.WALL or not Items.is_valid(level(), item):
 			continue
+		var length := level().walls[item.y * 2].distance_to(level().walls[item.y * 2 + 1])
+		var best_distance := minf(level().wall_width * 0.5 + tolerance(), length / 3.0)
+		best_distance = maxf(best_distance, minf(tolerance(), length * 0.5))
 		for end in 2:
 			var index := item.y * 2 + end
 			var distance := level().walls[index].distance_to(at)
@@ -136,11 +144,13 @@ func selected_wall_end(at: Vector2) -> int:
 	return best
 
 
-# Moves the dragged wall end to `at` (on the wall grid when snapping), live.
+# Moves the dragged wall end by the drag so far (on the wall grid when snapping), live: an
+# end grabbed beside its dot keeps that offset instead of jumping to the mouse.
 func _drag_end(at: Vector2) -> void:
 	if _end_drag == null and at.distance_to(_press_at) < DRAG_START_PIXELS * pixel:
 		return
-	var to := session.snap_wall_point(at) if session.snap_enabled else at
+	var moved := _end_start + (at - _press_at)
+	var to := session.snap_wall_point(moved) if session.snap_enabled else moved
 	var other := level().walls[_end_index + (1 if _end_index % 2 == 0 else -1)]
 	if to.distance_to(other) < 1.0:
 		return  # never fold a wall to nothing

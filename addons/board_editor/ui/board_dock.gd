@@ -2,6 +2,13 @@
 extends VBoxContainer
 ## The "Board" dock: which board is being edited, its counts, the play-test button, the
 ## tool settings and the live list of problems (click one to mark it on the board).
+##
+## It has a column of its own beside the Inspector (the plugin docks it at the right edge),
+## so it gets the window's full height. Everything scrolls in one body, never a scroll
+## inside a scroll: the problems and the balance table grow with their lines. Its width is
+## fixed (DOCK_WIDTH) and nothing in it may ask for more, so it stays as wide as the
+## designer left it; its scroll position stays put when the board is shown again (its rows
+## are rebuilt within one frame, before the body is laid out again).
 
 signal play_test_requested
 signal issue_focused(index: int)
@@ -23,6 +30,8 @@ const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
 const FasciaPicker := preload("res://addons/board_editor/ui/fascia_picker.gd")
 const AnalysisPanel := preload("res://addons/board_editor/analysis/analysis_panel.gd")
 const MazeAnalysisPanel := preload("res://addons/board_editor/analysis/maze_analysis_panel.gd")
+## The dock's width, px: the balance table's columns fit in it, and nothing asks for more.
+const DOCK_WIDTH := 360.0
 
 ## The play-analysis section (Analyze button, progress, figures).
 var analysis: AnalysisPanel
@@ -40,23 +49,35 @@ var _play: Button
 var _new_box: HBoxContainer
 var _save_as: Button
 var _status: Label
+var _body: ScrollContainer
 
 
 func _init() -> void:
 	name = "Board"
-	custom_minimum_size = Vector2(220, 0)
+	custom_minimum_size = Vector2(DOCK_WIDTH, 0)
+	# One scrolling body for everything (see the class notes).
+	_body = ScrollContainer.new()
+	_body.size_flags_vertical = Control.SIZE_EXPAND_FILL
+	_body.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
+	add_child(_body)
+	var content := VBoxContainer.new()
+	content.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+	_body.add_child(content)
 	_title = Label.new()
 	_title.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
-	add_child(_title)
+	content.add_child(_title)
 	_counts = Label.new()
-	add_child(_counts)
+	_counts.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+	content.add_child(_counts)
 	_machine = FasciaPicker.new()
-	add_child(_machine)
+	content.add_child(_machine)
+	var buttons := HFlowContainer.new()
+	content.add_child(buttons)
 	_play = Button.new()
-	_play.text = "Play-test this board"
+	_play.text = "Play-test"
 	_play.tooltip_text = "Save the board and run it in its game."
 	_play.pressed.connect(func() -> void: play_test_requested.emit())
-	add_child(_play)
+	buttons.add_child(_play)
 	_save_as = Button.new()
 	_save_as.text = "Save board as..."
 	_save_as.tooltip_text = (
@@ -64,7 +85,7 @@ func _init() -> void:
 		+ "where the games and play-test find it."
 	)
 	_save_as.pressed.connect(func() -> void: save_as_requested.emit())
-	add_child(_save_as)
+	buttons.add_child(_save_as)
 	var new_file := Button.new()
 	new_file.text = "New board..."
 	new_file.tooltip_text = (
@@ -72,7 +93,7 @@ func _init() -> void:
 		+ "and its scene in scenes/boards/, and opens it here (also in Project > Tools)."
 	)
 	new_file.pressed.connect(func() -> void: new_board_file_requested.emit())
-	add_child(new_file)
+	buttons.add_child(new_file)
 	_new_box = HBoxContainer.new()
 	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		var button := Button.new()
@@ -80,45 +101,38 @@ func _init() -> void:
 		button.tooltip_text = "Give this node a new, empty %s board." % BoardLevel.kind_name(kind)
 		button.pressed.connect(func() -> void: new_board_requested.emit(kind))
 		_new_box.add_child(button)
-	add_child(_new_box)
+	content.add_child(_new_box)
 	_status = Label.new()
 	_status.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	_status.add_theme_color_override("font_color", Color(1.0, 0.75, 0.3))
-	add_child(_status)
-	add_child(HSeparator.new())
-	# The problems come first, right under the buttons: in the default layout the dock is
-	# shorter than its panels, and a list at the bottom showed about three lines.
+	content.add_child(_status)
+	content.add_child(HSeparator.new())
+	# Top to bottom in the order a designer reaches for them: what is wrong, what is
+	# selected, the tool's settings, how the board plays, then the layers.
 	_problems = ProblemsList.new()
 	_problems.issue_focused.connect(func(index: int) -> void: issue_focused.emit(index))
-	add_child(_problems)
-	add_child(HSeparator.new())
-	# The analysis (with its balance table) and the panels scroll together in the room
-	# left: a dock cannot be shorter than its content, and when they sat in the dock itself
-	# it ran off the bottom of the window with the Selection fields out of reach.
-	var scroll := ScrollContainer.new()
-	scroll.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	# Most of the room goes to the panels; the problem list keeps its 150 px and a share.
-	scroll.size_flags_stretch_ratio = 4.0
-	scroll.custom_minimum_size = Vector2(0, 160)
-	scroll.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
-	add_child(scroll)
-	var panels := VBoxContainer.new()
-	panels.size_flags_horizontal = Control.SIZE_EXPAND_FILL
-	scroll.add_child(panels)
-	analysis = AnalysisPanel.new()
-	panels.add_child(analysis)
-	maze_analysis = MazeAnalysisPanel.new()
-	panels.add_child(maze_analysis)
+	content.add_child(_problems)
+	content.add_child(HSeparator.new())
 	_properties = PropertyPanel.new()
-	panels.add_child(_properties)
-	panels.add_child(HSeparator.new())
+	content.add_child(_properties)
+	content.add_child(HSeparator.new())
 	_options = ToolOptions.new()
-	panels.add_child(_options)
+	content.add_child(_options)
+	content.add_child(HSeparator.new())
+	analysis = AnalysisPanel.new()
+	content.add_child(analysis)
+	maze_analysis = MazeAnalysisPanel.new()
+	content.add_child(maze_analysis)
 	_layers = LayersPanel.new()
-	panels.add_child(_layers)
+	content.add_child(_layers)
 	show_board(null, [])
 	show_message("")
 	_watch_fields(self)
+
+
+## The scrolling body (tests read and set its scroll position).
+func body() -> ScrollContainer:
+	return _body
 
 
 # Every text field (the spin boxes' too) reports when it takes the focus and hands it

@@ -110,6 +110,12 @@ static func _draw_issue(
 		# The whole area the problem covers (both items, the ring), as the jump framed it.
 		var box := Rect2(to_screen * issue.area.position, issue.area.size * to_screen.get_scale())
 		Draw.dashed_rect(canvas, box.grow(4.0), Color(color, 0.9))
+	# The walls the problem names (those that close a goal or a start in).
+	var width := (6.0 if focused else 4.0) * to_screen.get_scale().x
+	for k in range(0, issue.segments.size() - 1, 2):
+		var a := to_screen * issue.segments[k]
+		var b := to_screen * issue.segments[k + 1]
+		canvas.draw_line(a, b, Color(color, 0.8 if focused else 0.5), maxf(width, 3.0), true)
 	var radius := 11.0 if focused else 8.0
 	canvas.draw_circle(at, radius, Color(color, 0.25))
 	canvas.draw_arc(at, radius, 0.0, TAU, 24, color, 2.0 if focused else 1.5, true)

@@ -23,6 +23,10 @@ func _init() -> void:
 	)
 	for title in FasciaNames.TITLES:
 		_picker.add_item(title)
+	# Cut a long name short rather than widen the dock.
+	_picker.fit_to_longest_item = false
+	_picker.clip_text = true
+	_picker.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 	_picker.item_selected.connect(func(index: int) -> void: pick(FasciaNames.NAMES[index]))
 	add_child(_picker)
 

@@ -15,6 +15,7 @@ static func make(spec: Array) -> HBoxContainer:
 	var label := Label.new()
 	label.text = spec[0]
 	label.size_flags_horizontal = Control.SIZE_EXPAND_FILL
+	label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART  # never wider than the dock
 	row.add_child(label)
 	var spin := SpinBox.new()
 	spin.min_value = spec[1]

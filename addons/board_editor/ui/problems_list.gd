@@ -2,32 +2,23 @@
 extends VBoxContainer
 ## The dock's problem list: one row per validator finding with its whole message (wrapped,
 ## never cut off), an error or warning icon, and a tooltip with the message and where it
-## is. Clicking a row asks the plugin to show that problem on the board.
+## is. Clicking a row asks the plugin to show that problem on the board. The list grows
+## with its rows: it scrolls with the dock's body, never inside it.
 
 ## A row was clicked.
 signal issue_focused(index: int)
 
-## The list is at least this tall (px), and grows with the dock.
-const MIN_HEIGHT := 150.0
-
 var _title: Label
 var _rows: VBoxContainer
-var _scroll: ScrollContainer
 
 
 func _init() -> void:
-	size_flags_vertical = Control.SIZE_EXPAND_FILL
 	_title = Label.new()
 	_title.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
 	add_child(_title)
-	_scroll = ScrollContainer.new()
-	_scroll.custom_minimum_size = Vector2(0, MIN_HEIGHT)
-	_scroll.size_flags_vertical = Control.SIZE_EXPAND_FILL
-	_scroll.horizontal_scroll_mode = ScrollContainer.SCROLL_MODE_DISABLED
-	add_child(_scroll)
 	_rows = VBoxContainer.new()
 	_rows.size_flags_horizontal = Control.SIZE_EXPAND_FILL
-	_scroll.add_child(_rows)
+	add_child(_rows)
 
 
 ## Shows `issues` ("No problems found." for none); the row `focused` stays highlighted.
@@ -70,12 +61,21 @@ func row_tooltip(index: int) -> String:
 	return (_rows.get_child(index) as Button).tooltip_text
 
 
-## Highlights row `index` (-1: none) and scrolls it into view.
+## Highlights row `index` (-1: none) and scrolls the dock's body to it.
 func select_issue(index: int) -> void:
 	for i in _rows.get_child_count():
 		(_rows.get_child(i) as Button).set_pressed_no_signal(i == index)
-	if index >= 0 and index < _rows.get_child_count() and _scroll.is_inside_tree():
-		_scroll.ensure_control_visible.call_deferred(_rows.get_child(index))
+	var scroll := _scroll_around()
+	if index >= 0 and index < _rows.get_child_count() and scroll != null:
+		scroll.ensure_control_visible.call_deferred(_rows.get_child(index))
+
+
+# The ScrollContainer the list scrolls in (the dock's body), or null.
+func _scroll_around() -> ScrollContainer:
+	var node := get_parent()
+	while node != null and not node is ScrollContainer:
+		node = node.get_parent()
+	return node as ScrollContainer
 
 
 func _row(issue: BoardIssue, index: int, editor_theme: Theme) -> Button:

@@ -15,6 +15,7 @@ const Arrange := preload("res://addons/board_editor/core/arrange.gd")
 const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
 const ArcFields := preload("res://addons/board_editor/ui/arc_fields.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
+const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
 
 ## Align buttons: [label, Arrange mode, tooltip].
 const ALIGN_BUTTONS := [
@@ -32,6 +33,7 @@ var _rows: Dictionary[String, HBoxContainer] = {}
 var _fields: Dictionary[String, SpinBox] = {}
 var _mixed: Dictionary[String, bool] = {}
 var _arrange: HFlowContainer
+var _flip: HFlowContainer
 var _arc_fields: ArcFields
 var _role_row: HBoxContainer
 var _role: OptionButton
@@ -60,13 +62,31 @@ func _init() -> void:
 	# The arc's shape first: with a long selection the align buttons are the less often used.
 	_arc_fields = ArcFields.new()
 	add_child(_arc_fields)
+	_flip = HFlowContainer.new()
+	add_child(_flip)
+	_add_button(
+		_flip,
+		"Flip (H)",
+		"Flip the selection left to right about its centre (mirror mode flips the twins too).",
+		func() -> void: Commands.flip_selection(_session)
+	)
+	_add_button(
+		_flip,
+		"Mirror to other half (Shift+M)",
+		"Add the selection's mirror image on the other half of the board, keeping it.",
+		func() -> void: Commands.mirror_to_other_half(_session)
+	)
 	_arrange = HFlowContainer.new()
 	add_child(_arrange)
 	for entry: Array in ALIGN_BUTTONS:
 		var tip: String = entry[2]
-		_arrange_button("Align " + str(entry[0]), tip, align.bind(str(entry[1])))
-	_arrange_button("Space across", "Space them evenly from left to right.", distribute.bind("x"))
-	_arrange_button("Space down", "Space them evenly from top to bottom.", distribute.bind("y"))
+		_arrange_button(history_name(str(entry[1])), tip, align.bind(str(entry[1])))
+	_arrange_button(
+		history_name("x"), "Space them evenly from left to right.", distribute.bind("x")
+	)
+	_arrange_button(
+		history_name("y"), "Space them evenly from top to bottom.", distribute.bind("y")
+	)
 
 
 # A bonus pocket's role (start pocket, attacker, tulip), shown for one selected bonus pocket.
@@ -110,23 +130,40 @@ func role_picker() -> OptionButton:
 func align(mode: String) -> void:
 	var offsets := Arrange.align_offsets(_session.level, _session.selection, mode)
 	if not offsets.is_empty():
-		_session.commit(ArrangeAction.new(_session.level, offsets, "Align %s" % mode))
+		_session.commit(ArrangeAction.new(_session.level, offsets, history_name(mode)))
 
 
 ## Spaces the selection evenly along "x" or "y"; one undo step.
 func distribute(axis: String) -> void:
 	var offsets := Arrange.distribute_offsets(_session.level, _session.selection, axis)
 	if not offsets.is_empty():
-		_session.commit(ArrangeAction.new(_session.level, offsets, "Distribute along %s" % axis))
+		_session.commit(ArrangeAction.new(_session.level, offsets, history_name(axis)))
+
+
+## The words an align or space step goes by, on its button and in the History: "Align
+## middle" for "center_y", "Space across" for "x".
+static func history_name(mode: String) -> String:
+	if mode == "x":
+		return "Space across"
+	if mode == "y":
+		return "Space down"
+	for entry: Array in ALIGN_BUTTONS:
+		if entry[1] == mode:
+			return "Align %s" % str(entry[0]).to_lower()
+	return "Arrange"
 
 
 func _arrange_button(text: String, tooltip: String, action: Callable) -> void:
+	_add_button(_arrange, text, tooltip, action)
+
+
+func _add_button(row: Container, text: String, tooltip: String, action: Callable) -> void:
 	var button := Button.new()
 	button.text = text
 	button.tooltip_text = tooltip
 	button.focus_mode = Control.FOCUS_NONE
 	button.pressed.connect(func() -> void: action.call())
-	_arrange.add_child(button)
+	row.add_child(button)
 
 
 ## Shows `session`'s selection and edits it from now on.
@@ -198,6 +235,7 @@ func refresh() -> void:
 	_arc_fields.show_arc(arc)
 	_show_role()
 	_arrange.visible = _session != null and _session.selection.size() >= 2
+	_flip.visible = _session != null and not _session.selection.is_empty()
 	for key: String in _rows:
 		_rows[key].visible = values.has(key)
 		var value: float = values.get(key, 0.0)

@@ -62,6 +62,10 @@ const TOOLS := {
 ## Toggles.
 const SNAP_KEY := KEY_N
 const MIRROR_KEY := KEY_M
+## Commands on the selection: H flips it left to right about its centre, Shift+M adds its
+## mirror image on the other half of the board.
+const FLIP_KEY := KEY_H
+const MIRROR_COPY_KEY := KEY_M
 
 
 ## The tool's name ("Pin").

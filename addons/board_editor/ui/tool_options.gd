@@ -1,8 +1,9 @@
 @tool
 extends VBoxContainer
-## The dock's tool settings: the pin pattern (kind, count, spacing, rows) and
-## the size and payout of the next pocket placed. (A placed pocket is edited in the
-## Selection panel, PropertyPanel.) Only the fields the chosen pattern uses are shown.
+## The dock's tool settings, for the active tool only: the pin pattern (kind, count,
+## spacing, rows), the peg curve, and the size and payout of the next pocket placed. (A
+## placed pocket is edited in the Selection panel, PropertyPanel.) Only the fields the
+## chosen pattern uses are shown.
 
 const Session := preload("res://addons/board_editor/board_edit_session.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
@@ -46,6 +47,8 @@ func _init() -> void:
 ## Shows `session`'s settings and edits them from now on.
 func bind(session: Session) -> void:
 	_session = session
+	if session != null and not session.tool_changed.is_connected(_on_tool_changed):
+		session.tool_changed.connect(_on_tool_changed)
 	refresh()
 
 
@@ -58,14 +61,16 @@ func shows_pattern_field(key: String) -> bool:
 func refresh() -> void:
 	if _session == null:
 		return
+	# Only the active tool's settings: the dock keeps its height for the Selection panel and
+	# the analysis.
 	var pachinko := _session.level.is_pachinko()
-	_pattern_box.visible = pachinko
-	_curve_box.visible = pachinko
+	_pattern_box.visible = pachinko and _session.tool == Session.Tool.PATTERN
+	_curve_box.visible = pachinko and _session.tool == Session.Tool.CURVE
 	var curve_count: int = _session.curve["count"]
 	var curve_spacing: float = _session.curve["spacing"]
 	_fields["curve_count"].set_value_no_signal(curve_count)
 	_fields["curve_spacing"].set_value_no_signal(curve_spacing)
-	_pocket_box.visible = pachinko
+	_pocket_box.visible = pachinko and _session.tool == Session.Tool.POCKET
 	_kind.select(maxi(PatternAction.KINDS.find(str(_session.pattern["kind"])), 0))
 	var used: Array = PATTERN_FIELDS.get(str(_session.pattern["kind"]), [])
 	for key: String in ["count", "spacing", "rows"]:
@@ -103,6 +108,10 @@ func _add_field(
 	row.add_child(spin)
 	_fields[key] = spin
 	box.add_child(row)
+
+
+func _on_tool_changed(_tool: int) -> void:
+	refresh()
 
 
 func _on_pattern_changed(index: int) -> void:

@@ -16,8 +16,12 @@ const ZOOM_RANGE := Vector2(1.0 / 128.0, 128.0)
 
 ## The zoom that shows `area_size` (canvas px) in a view of `view_size` (screen px) from a view
 ## at `current`: kept when the area fits and the view is close enough, else the nearest zoom
-## that fits it, no closer than CLOSE_ZOOM.
-static func zoom_for(current: float, area_size: Vector2, view_size: Vector2) -> float:
+## that fits it, no closer than CLOSE_ZOOM. With `zoom_in` false the view only ever zooms
+## out (to fit the area), never in: a balance table line brings its item into view at the
+## designer's zoom.
+static func zoom_for(
+	current: float, area_size: Vector2, view_size: Vector2, zoom_in := true
+) -> float:
 	var fits := INF
 	if area_size.x > 0.0:
 		fits = minf(fits, view_size.x * FILL / area_size.x)
@@ -26,14 +30,15 @@ static func zoom_for(current: float, area_size: Vector2, view_size: Vector2) -> 
 	var zoom := current
 	if current > fits:
 		zoom = fits  # out: the whole area in view
-	elif current < minf(CLOSE_ZOOM, fits):
+	elif zoom_in and current < minf(CLOSE_ZOOM, fits):
 		zoom = minf(CLOSE_ZOOM, fits)  # in: close, but the whole area still in view
 	return clampf(zoom, ZOOM_RANGE.x, ZOOM_RANGE.y)
 
 
 ## Frames `global_area` (canvas coordinates) in `view`, the 2D viewport's control (the
-## one the plugin draws its overlay on; its own scroll bars move the view).
-static func show_area(global_area: Rect2, view: Control) -> bool:
+## one the plugin draws its overlay on; its own scroll bars move the view); `zoom_in` as in
+## zoom_for.
+static func show_area(global_area: Rect2, view: Control, zoom_in := true) -> bool:
 	var view_size := view.size
 	var main := EditorInterface.get_editor_main_screen()
 	var editors := main.find_children("*", "CanvasItemEditor", true, false)
@@ -46,7 +51,7 @@ static func show_area(global_area: Rect2, view: Control) -> bool:
 	if not widgets.is_empty() and widgets[0].has_method("get_zoom") and view_size.x > 0.0:
 		var widget: Node = widgets[0]
 		zoom = widget.call("get_zoom")
-		var wanted := zoom_for(zoom, global_area.size, view_size)
+		var wanted := zoom_for(zoom, global_area.size, view_size, zoom_in)
 		if not is_equal_approx(wanted, zoom):
 			widget.call("set_zoom", wanted)
 			widget.emit_signal("zoom_changed", wanted)
