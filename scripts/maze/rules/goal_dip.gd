@@ -8,9 +8,11 @@ extends RefCounted
 ## velocities before each step (BallWorld.before_step).
 
 ## The dish's pull at and near its rim, as a share of one axis's full tilt pull
-## (MAX_TILT_DEG): the board tilted fully on both axes pulls √2 (1.41) times that.
-const HOLD_SHARE := 1.6
-## Where the full diagonal tilt's pull is balanced by the dish's, from the middle (px): nearer the
+## (MAX_TILT_DEG): more than any tilt the keys or a stick give (they reach full tilt on one
+## axis, or 8.5 degrees on both), so a held ball stays; the joystick dragged into its very
+## corner (12 degrees on both axes, 1.41 times one axis) can still tip a ball out.
+const HOLD_SHARE := 1.3
+## Where one axis's full tilt pull is balanced by the dish's, from the middle (px): nearer the
 ## middle the pull falls off in proportion, so a held ball rests there instead of jittering.
 const REST_OFFSET_PX := 4.0
 ## How fast a ball in the dish loses its speed (1/s): it settles within about a second.
@@ -23,6 +25,9 @@ var _centre := Vector2.ZERO
 var _radius := 0.0
 var _max_pull := 0.0
 var _stiffness := 0.0
+## The centre lines of the walls that cross the dish (pairs of ends): a ball on the far side
+## of one is in the next corridor, not in the dish, and is not pulled into the wall.
+var _walls_across := PackedVector2Array()
 
 
 ## The dip of `level`'s goal in `world` (a maze world built from it).
@@ -34,16 +39,36 @@ func _init(world: BallWorld, level: BoardLevel) -> void:
 		MazeTilt.gravity(Vector2(TiltInput.MAX_TILT_DEG, 0.0), world.tuning.tilt_gravity).x
 	)
 	_max_pull = steepest * HOLD_SHARE
-	_stiffness = steepest * sqrt(2.0) / REST_OFFSET_PX
+	var reach := _radius + level.wall_width
+	for i in range(0, level.walls.size() - 1, 2):
+		var a := level.walls[i]
+		var b := level.walls[i + 1]
+		if Geometry2D.get_closest_point_to_segment(_centre, a, b).distance_to(_centre) < reach:
+			_walls_across.append(a)
+			_walls_across.append(b)
+	_stiffness = steepest / REST_OFFSET_PX
 
 
 ## The pull (px/s²) on a ball at `offset` from the goal's middle: toward the middle,
-## growing with the distance up to the rim's pull; none outside the rim.
+## growing with the distance up to the rim's pull; none outside the rim, and none when a
+## wall stands between the ball and the middle.
 func pull_at(offset: Vector2) -> Vector2:
 	var distance := offset.length()
-	if distance >= _radius or distance <= 0.0:
+	if distance >= _radius or distance <= 0.0 or _walled_off(offset):
 		return Vector2.ZERO
 	return -offset / distance * minf(_stiffness * distance, _max_pull)
+
+
+# True when a wall's centre line crosses the line from the middle to `offset`.
+func _walled_off(offset: Vector2) -> bool:
+	var at := _centre + offset
+	for i in range(0, _walls_across.size(), 2):
+		var crossing: Variant = Geometry2D.segment_intersects_segment(
+			_centre, at, _walls_across[i], _walls_across[i + 1]
+		)
+		if crossing != null:
+			return true
+	return false
 
 
 ## Pulls and slows every ball inside the rim for a step of `dt` seconds (the world calls it
@@ -56,5 +81,8 @@ func apply(dt: float) -> void:
 		var offset := positions[i] - _centre
 		if offset.length_squared() >= _radius * _radius:
 			continue
+		var pull := pull_at(offset)
+		if pull == Vector2.ZERO:
+			continue  # walled off (or dead centre): left to roll as anywhere else
 		var velocity := _world.get_ball_velocity(ids[i])
-		_world.set_ball_velocity(ids[i], velocity * slowing + pull_at(offset) * dt)
+		_world.set_ball_velocity(ids[i], velocity * slowing + pull * dt)
