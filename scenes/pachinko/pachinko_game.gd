@@ -58,6 +58,7 @@ var _recorder: ReplayRecorder
 
 func _ready() -> void:
 	pause_menu.restart_requested.connect(restart)
+	instructions.play_requested.connect(_start_from_card)
 	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -134,9 +135,11 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 		return
 	if rules.state != PachinkoRules.State.PLAYING:
-		if _is_start_event(event):
-			rules.start_game()
-			sounds.play(SoundBank.UI_CLICK)
+		if _is_click(event):
+			# the card goes only by its own button (or a key): point the player at it
+			instructions.nudge()
+		elif _is_start_key(event) and instructions.accepts_start():
+			_start_from_card()
 			get_viewport().set_input_as_handled()
 			# a held charge or handle key goes on to charge or stream: the player pressed it
 			# to shoot, not only to close the instructions
@@ -308,27 +311,47 @@ func _edge_hud_toward_board(side: Side) -> void:
 	style.border_width_top = width if side == SIDE_TOP else 0
 
 
-func _is_start_event(event: InputEvent) -> bool:
+func _is_click(event: InputEvent) -> bool:
 	var button := event as InputEventMouseButton
-	if button != null:
-		return button.pressed and button.button_index == MOUSE_BUTTON_LEFT
-	# any of the keys a player reaches for first starts the game: start, charge or the handle
+	return button != null and button.pressed and button.button_index == MOUSE_BUTTON_LEFT
+
+
+# Any of the keys a player reaches for first starts the game: start, charge or the handle.
+func _is_start_key(event: InputEvent) -> bool:
+	if event is InputEventMouseButton:
+		return false
 	for action: String in ["game_start", "launch_charge", "launch_handle"]:
 		if event.is_action_pressed(action):
 			return true
 	return false
 
 
+# The player chose to play from the card (its button or a start key).
+func _start_from_card() -> void:
+	if rules == null or rules.state == PachinkoRules.State.PLAYING:
+		return
+	rules.start_game()
+	sounds.play(SoundBank.UI_CLICK)
+
+
+# The launcher is a deliberate control of its own: grabbing it while the card is up starts
+# the game, once the card has been up long enough that the press is not a stray one.
 func _on_flipper_pressed(at: Vector2) -> void:
 	if rules.state != PachinkoRules.State.PLAYING:
-		rules.start_game()
+		if instructions.accepts_start():
+			_start_from_card()
+		else:
+			instructions.nudge()
 		return
 	_controls.begin_drag(rules, at)
 
 
 func _on_handle_pressed(at: Vector2) -> void:
 	if rules.state != PachinkoRules.State.PLAYING:
-		rules.start_game()
+		if not instructions.accepts_start():
+			instructions.nudge()
+			return
+		_start_from_card()
 	_controls.begin_handle_drag(rules, at)
 
 
