@@ -28,13 +28,20 @@ var level_select_kind := BoardLevel.PACHINKO_NAME
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 
+## Up from the moment a scene change is asked for until the new screen has drawn.
+var curtain := LoadingCurtain.new()
+
 var _picked_boards := {}
+# scene changes asked for so far: only the latest one lowers the curtain
+var _changes := 0
 var _settings_path := SETTINGS_PATH
 # the window size set at start (WindowFit), ZERO when the window was left alone
 var _fitted_window_size := Vector2i.ZERO
 
 
 func _ready() -> void:
+	curtain.name = "LoadingCurtain"
+	add_child(curtain)
 	# A tool script run with -s (converters, shots, tests) owns the arguments after `--`.
 	var engine_args := OS.get_cmdline_args()
 	if engine_args.has("-s") or engine_args.has("--script"):
@@ -46,6 +53,8 @@ func _ready() -> void:
 		return
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
 	_fitted_window_size = WindowFit.fit_window(get_window(), settings.window_size)
+	# the sounds build on a worker while the player reads the menu, not when a board loads
+	SoundBank.warm_in_background(SoundBank.Recipes.names())
 
 
 # The game is quitting (App leaves the tree last, after the scenes that cancelled their
@@ -53,6 +62,7 @@ func _ready() -> void:
 func _exit_tree() -> void:
 	_remember_window_size()
 	BoardListLoading.wait_for_cancelled()
+	SoundBank.wait_for_background()
 
 
 ## Loads settings and best results and applies the settings. After a problem the file is
@@ -145,11 +155,27 @@ func start_game(kind: String, path: String) -> void:
 	_change_scene(scene_path)
 
 
+# The curtain goes up first and is drawn before the wait begins (a board took seconds to
+# load with nothing on the screen); it comes down once the new screen has drawn a frame.
 func _change_scene(path: String) -> void:
 	get_tree().paused = false
+	_changes += 1
+	var change := _changes
+	curtain.cover()
+	if DisplayServer.get_name() != "headless":
+		await RenderingServer.frame_post_draw
 	var error := get_tree().change_scene_to_file(path)
 	if error != OK:
 		push_error("Could not open the scene %s: %s" % [path, error_string(error)])
+		curtain.lift()
+		return
+	# the change happens at the end of this frame; the new screen draws in the next
+	await get_tree().process_frame
+	await get_tree().process_frame
+	if DisplayServer.get_name() != "headless":
+		await RenderingServer.frame_post_draw
+	if change == _changes:
+		curtain.lift()
 
 
 # A window the player resized is reopened at that size next time (cut to the screen then):
