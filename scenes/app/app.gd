@@ -63,6 +63,7 @@ func _exit_tree() -> void:
 	_remember_window_size()
 	BoardListLoading.wait_for_cancelled()
 	SoundBank.wait_for_background()
+	MusicBank.wait_for_background()
 
 
 ## Loads settings and best results and applies the settings. After a problem the file is

@@ -16,6 +16,7 @@ const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const ReadableText := preload("res://scenes/common/readable_text.gd")
+const PachinkoMusic := preload("res://scenes/pachinko/pachinko_music.gd")
 const HUD_WIDTH := 360.0
 ## Beside the board, the panel drawn bigger to read (a small window) takes at most this
 ## share of the window's width: the board keeps the rest.
@@ -40,6 +41,7 @@ var _stats_refresh := 0.0
 # Made once a board has loaded: a game with no board never owns one outside the tree.
 var _bonus_view: BonusView
 var _juice: JuiceView
+var _music: PachinkoMusic
 var _recorder: ReplayRecorder
 
 @onready var board_view: BoardView = $BoardView
@@ -90,6 +92,10 @@ func _ready() -> void:
 	_juice.name = "Juice"
 	add_child(_juice)
 	_juice.attach(board_view, sounds)
+	_music = PachinkoMusic.new()
+	_music.name = "Music"
+	add_child(_music)
+	_music.play_machine(_level.fascia)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
 	launcher.handle_pressed.connect(_on_handle_pressed)
 	launcher.handle_turned.connect(
@@ -180,6 +186,7 @@ func _new_rules() -> void:
 	board_view.bind(rules)
 	_bonus_view.bind(rules)
 	_juice.bind(rules)
+	_music.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
 	cup.set_count(0)
