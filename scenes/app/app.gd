@@ -12,6 +12,8 @@ const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SaveData := preload("res://scripts/app/save_data.gd")
 const SETTINGS_PATH := "user://settings.cfg"
 const SAVE_PATH := "user://save.cfg"
+## Frames a scene change may take before the curtain comes down anyway.
+const SCENE_CHANGE_FRAMES := 30
 const MENU_SCENE := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT_SCENE := "res://scenes/menu/level_select.tscn"
 const GAME_SCENES := {
@@ -34,6 +36,8 @@ var curtain := LoadingCurtain.new()
 var _picked_boards := {}
 # scene changes asked for so far: only the latest one lowers the curtain
 var _changes := 0
+# scenes being loaded on a worker (ResourceLoader's threaded load), by path
+var _background_loads := {}
 var _settings_path := SETTINGS_PATH
 # the window size set at start (WindowFit), ZERO when the window was left alone
 var _fitted_window_size := Vector2i.ZERO
@@ -54,7 +58,10 @@ func _ready() -> void:
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
 	_fitted_window_size = WindowFit.fit_window(get_window(), settings.window_size)
 	# the sounds build on a worker while the player reads the menu, not when a board loads
-	SoundBank.warm_in_background(SoundBank.Recipes.names())
+	# (and not while the menu itself loads: after its first frame)
+	RenderingServer.frame_post_draw.connect(
+		func() -> void: SoundBank.warm_in_background(SoundBank.Recipes.names()), CONNECT_ONE_SHOT
+	)
 
 
 # The game is quitting (App leaves the tree last, after the scenes that cancelled their
@@ -64,6 +71,10 @@ func _exit_tree() -> void:
 	BoardListLoading.wait_for_cancelled()
 	SoundBank.wait_for_background()
 	MusicBank.wait_for_background()
+	# a game scene loaded for a board never chosen: take it, so it is freed with the rest
+	for path: String in _background_loads:
+		ResourceLoader.load_threaded_get(path)
+	_background_loads.clear()
 
 
 ## Loads settings and best results and applies the settings. After a problem the file is
@@ -143,7 +154,11 @@ func go_to_menu() -> void:
 ## Opens the level select listing the boards of one game.
 func go_to_level_select(kind: String) -> void:
 	level_select_kind = kind
-	_change_scene(LEVEL_SELECT_SCENE)
+	await _change_scene(LEVEL_SELECT_SCENE)
+	# the game's scene (0.8 s of loading and compiling) loads on a worker while the player
+	# picks a board, once the level select is up (it loads its own boards meanwhile)
+	if GAME_SCENES.has(kind):
+		_load_in_background(GAME_SCENES[kind])
 
 
 ## Starts a game on a board.
@@ -157,7 +172,7 @@ func start_game(kind: String, path: String) -> void:
 
 
 # The curtain goes up first and is drawn before the wait begins (a board took seconds to
-# load with nothing on the screen); it comes down once the new screen has drawn a frame.
+# load with nothing on the screen); it comes down with the new screen's first frame.
 func _change_scene(path: String) -> void:
 	get_tree().paused = false
 	_changes += 1
@@ -165,18 +180,35 @@ func _change_scene(path: String) -> void:
 	curtain.cover()
 	if DisplayServer.get_name() != "headless":
 		await RenderingServer.frame_post_draw
-	var error := get_tree().change_scene_to_file(path)
+	var leaving := get_tree().current_scene
+	var error: Error
+	if _background_loads.has(path):
+		_background_loads.erase(path)
+		var scene := ResourceLoader.load_threaded_get(path) as PackedScene
+		error = get_tree().change_scene_to_packed(scene) if scene != null else ERR_CANT_OPEN
+	else:
+		error = get_tree().change_scene_to_file(path)
 	if error != OK:
 		push_error("Could not open the scene %s: %s" % [path, error_string(error)])
 		curtain.lift()
 		return
-	# the change happens at the end of this frame; the new screen draws in the next
-	await get_tree().process_frame
-	await get_tree().process_frame
-	if DisplayServer.get_name() != "headless":
-		await RenderingServer.frame_post_draw
+	# the new screen becomes the current one at the end of a frame: lowered then, the curtain
+	# stays on the screen until that screen's first frame replaces it
+	for frame in SCENE_CHANGE_FRAMES:
+		await get_tree().process_frame
+		var now := get_tree().current_scene
+		if now != null and now != leaving:
+			break
 	if change == _changes:
 		curtain.lift()
+
+
+# Starts loading the scene at `path` on a worker, once; _change_scene takes it from there.
+func _load_in_background(path: String) -> void:
+	if _background_loads.has(path):
+		return
+	if ResourceLoader.load_threaded_request(path, "PackedScene") == OK:
+		_background_loads[path] = true
 
 
 # A window the player resized is reopened at that size next time (cut to the screen then):

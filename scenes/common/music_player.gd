@@ -16,6 +16,9 @@ const BUS := &"Music"
 const FADE_SECONDS := 0.8
 ## Quietest a fading loop gets before it stops, dB.
 const SILENT_DB := -60.0
+## Seconds after play_machine before the loops start building: the board's own loading and
+## first frames get the processor first (on two cores the build slowed them by a second).
+const BUILD_DELAY := 1.0
 
 ## Builds and plays music; false in headless runs (set before the node enters the tree to
 ## override).
@@ -26,6 +29,7 @@ var _mood := NORMAL
 var _players: Array[AudioStreamPlayer] = []
 var _active := 0
 var _fade: Tween
+var _build_wait := 0.0
 
 
 func _ready() -> void:
@@ -43,7 +47,7 @@ func _ready() -> void:
 func play_machine(fascia: String) -> void:
 	_machine = fascia if Recipes.STYLES.has(fascia) else FasciaNames.CLASSIC
 	if enabled:
-		MusicBank.request(_machine)
+		_build_wait = 0.0 if MusicBank.is_requested(_machine) else BUILD_DELAY
 		set_process(true)
 
 
@@ -77,8 +81,13 @@ func playing_stream() -> AudioStreamWAV:
 	return _players[_active].stream as AudioStreamWAV
 
 
-# Waits for the wanted loop to be built, then fades into it; sleeps once it plays.
-func _process(_delta: float) -> void:
+# Starts the build after BUILD_DELAY, waits for the wanted loop, then fades into it; sleeps
+# once it plays.
+func _process(delta: float) -> void:
+	if _build_wait > 0.0:
+		_build_wait -= delta
+		return
+	MusicBank.request(_machine)
 	var wanted := MusicBank.loop(_machine, _mood)
 	if wanted == null:
 		return

@@ -3,6 +3,7 @@ extends GutTest
 ## loading curtain, until the new screen has drawn; the board load took seconds with none.
 
 const PACHINKO := "res://scenes/pachinko/pachinko_game.tscn"
+const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const MAX_FRAMES := 600
 
 
@@ -59,3 +60,22 @@ func test_a_second_change_keeps_the_curtain_up_for_its_own_screen() -> void:
 		await get_tree().process_frame
 	await wait_process_frames(4)
 	assert_false(App.curtain.is_covering())
+
+
+func test_the_game_loads_while_the_player_picks_a_board() -> void:
+	App.go_to_level_select("pachinko")
+	for frame in MAX_FRAMES:
+		var scene := get_tree().current_scene
+		if scene != null and scene.scene_file_path == LEVEL_SELECT and not App.curtain.visible:
+			break
+		await get_tree().process_frame
+	await wait_process_frames(2)
+	var status := ResourceLoader.load_threaded_get_status(PACHINKO)
+	assert_ne(status, ResourceLoader.THREAD_LOAD_INVALID_RESOURCE, "the game's scene is loading")
+	App.start_game("pachinko", "res://levels/pachinko/classic.board")
+	for frame in MAX_FRAMES:
+		var scene := get_tree().current_scene
+		if scene != null and scene.scene_file_path == PACHINKO:
+			break
+		await get_tree().process_frame
+	assert_eq(get_tree().current_scene.scene_file_path, PACHINKO, "and opens from it")

@@ -63,6 +63,10 @@ func test_a_player_plays_the_loop_on_the_music_bus_and_fades_to_a_new_mood() -> 
 	player.enabled = true  # headless runs build nothing unless asked
 	add_child_autofree(player)
 	player.play_machine("neon")
+	assert_false(MusicBank.is_requested("neon"), "the board's loading goes first")
+	player._process(MusicPlayer.BUILD_DELAY + 0.1)
+	player._process(0.0)
+	assert_true(MusicBank.is_requested("neon"), "then the loops build")
 	MusicBank.wait_for_background()
 	player._process(0.0)
 	assert_same(player.playing_stream(), MusicBank.loop("neon", Recipes.NORMAL))
