@@ -158,7 +158,8 @@ func go_to_level_select(kind: String) -> void:
 	# the game's scene (0.8 s of loading and compiling) loads on a worker while the player
 	# picks a board, once the level select is up (it loads its own boards meanwhile)
 	if GAME_SCENES.has(kind):
-		_load_in_background(GAME_SCENES[kind])
+		var game_scene: String = GAME_SCENES[kind]
+		_load_in_background(game_scene)
 
 
 ## Starts a game on a board.
