@@ -179,8 +179,19 @@ func _change_scene(path: String) -> void:
 	_changes += 1
 	var change := _changes
 	curtain.cover()
-	if DisplayServer.get_name() != "headless":
-		await RenderingServer.frame_post_draw
+	# the scene loads on a worker while the curtain is drawn (not one after the other); the
+	# change waits for at least one drawn frame, so the curtain is up before the new screen's
+	# own setup holds the main thread
+	_load_in_background(path)
+	var drawing := DisplayServer.get_name() != "headless"
+	await (RenderingServer.frame_post_draw if drawing else get_tree().process_frame)
+	while (
+		_background_loads.has(path)
+		and ResourceLoader.load_threaded_get_status(path) == ResourceLoader.THREAD_LOAD_IN_PROGRESS
+	):
+		await get_tree().process_frame
+	if change != _changes:
+		return  # a later change owns the screen now
 	var leaving := get_tree().current_scene
 	var error: Error
 	if _background_loads.has(path):
@@ -193,8 +204,14 @@ func _change_scene(path: String) -> void:
 		push_error("Could not open the scene %s: %s" % [path, error_string(error)])
 		curtain.lift()
 		return
-	# the new screen becomes the current one at the end of a frame: lowered then, the curtain
-	# stays on the screen until that screen's first frame replaces it
+	# lowered the moment the new screen is in the tree, so that screen's first frame is drawn
+	# without it (the curtain stays on the screen until then); the frames below are a net
+	get_tree().scene_changed.connect(
+		func() -> void:
+			if change == _changes:
+				curtain.lift(),
+		CONNECT_ONE_SHOT
+	)
 	for frame in SCENE_CHANGE_FRAMES:
 		await get_tree().process_frame
 		var now := get_tree().current_scene
