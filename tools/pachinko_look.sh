@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Plays one pachinko board in a real window under Xvfb, driven by xdotool as a player would
-# (a click starts the game, Shift held streams balls from the handle, Space charges one
+# (Enter on the instructions starts the game, Shift held streams balls from the handle, Space charges one
 # shot), and saves screenshots of the whole screen to build/look/<board>_<size>_<n>.png.
 # A scratch user folder keeps the player's own settings and best results out of it.
 #   tools/pachinko_look.sh hanami 720x1280     XVFB_NUM=63: the first X display number tried
@@ -23,7 +23,7 @@ xvfb-run -a -n "${XVFB_NUM:-99}" -s "-screen 0 ${SIZE}x24" bash -c '
 	sleep 18
 	shot() { import -window root "'"$OUT"'/'"$BOARD"'_'"$SIZE"'_$1.png"; }
 	shot 0
-	xdotool mousemove '"$((WIDTH / 3))"' '"$((HEIGHT / 3))"' click 1
+	xdotool key Return
 	sleep 0.5
 	xdotool keydown shift
 	sleep 5

@@ -12,6 +12,8 @@ const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SaveData := preload("res://scripts/app/save_data.gd")
 const SETTINGS_PATH := "user://settings.cfg"
 const SAVE_PATH := "user://save.cfg"
+## Frames a scene change may take before the curtain comes down anyway.
+const SCENE_CHANGE_FRAMES := 30
 const MENU_SCENE := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT_SCENE := "res://scenes/menu/level_select.tscn"
 const GAME_SCENES := {
@@ -28,13 +30,22 @@ var level_select_kind := BoardLevel.PACHINKO_NAME
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 
+## Up from the moment a scene change is asked for until the new screen has drawn.
+var curtain := LoadingCurtain.new()
+
 var _picked_boards := {}
+# scene changes asked for so far: only the latest one lowers the curtain
+var _changes := 0
+# scenes being loaded on a worker (ResourceLoader's threaded load), by path
+var _background_loads := {}
 var _settings_path := SETTINGS_PATH
 # the window size set at start (WindowFit), ZERO when the window was left alone
 var _fitted_window_size := Vector2i.ZERO
 
 
 func _ready() -> void:
+	curtain.name = "LoadingCurtain"
+	add_child(curtain)
 	# A tool script run with -s (converters, shots, tests) owns the arguments after `--`.
 	var engine_args := OS.get_cmdline_args()
 	if engine_args.has("-s") or engine_args.has("--script"):
@@ -46,6 +57,11 @@ func _ready() -> void:
 		return
 	load_player_files(SETTINGS_PATH, SAVE_PATH)
 	_fitted_window_size = WindowFit.fit_window(get_window(), settings.window_size)
+	# the sounds build on a worker while the player reads the menu, not when a board loads
+	# (and not while the menu itself loads: after its first frame)
+	RenderingServer.frame_post_draw.connect(
+		func() -> void: SoundBank.warm_in_background(SoundBank.Recipes.names()), CONNECT_ONE_SHOT
+	)
 
 
 # The game is quitting (App leaves the tree last, after the scenes that cancelled their
@@ -53,6 +69,12 @@ func _ready() -> void:
 func _exit_tree() -> void:
 	_remember_window_size()
 	BoardListLoading.wait_for_cancelled()
+	SoundBank.wait_for_background()
+	MusicBank.wait_for_background()
+	# a game scene loaded for a board never chosen: take it, so it is freed with the rest
+	for path: String in _background_loads:
+		ResourceLoader.load_threaded_get(path)
+	_background_loads.clear()
 
 
 ## Loads settings and best results and applies the settings. After a problem the file is
@@ -132,7 +154,12 @@ func go_to_menu() -> void:
 ## Opens the level select listing the boards of one game.
 func go_to_level_select(kind: String) -> void:
 	level_select_kind = kind
-	_change_scene(LEVEL_SELECT_SCENE)
+	await _change_scene(LEVEL_SELECT_SCENE)
+	# the game's scene (0.8 s of loading and compiling) loads on a worker while the player
+	# picks a board, once the level select is up (it loads its own boards meanwhile)
+	if GAME_SCENES.has(kind):
+		var game_scene: String = GAME_SCENES[kind]
+		_load_in_background(game_scene)
 
 
 ## Starts a game on a board.
@@ -145,11 +172,61 @@ func start_game(kind: String, path: String) -> void:
 	_change_scene(scene_path)
 
 
+# The curtain goes up first and is drawn before the wait begins (a board took seconds to
+# load with nothing on the screen); it comes down with the new screen's first frame.
 func _change_scene(path: String) -> void:
 	get_tree().paused = false
-	var error := get_tree().change_scene_to_file(path)
+	_changes += 1
+	var change := _changes
+	curtain.cover()
+	# the scene loads on a worker while the curtain is drawn (not one after the other); the
+	# change waits for at least one drawn frame, so the curtain is up before the new screen's
+	# own setup holds the main thread
+	_load_in_background(path)
+	var drawing := DisplayServer.get_name() != "headless"
+	await (RenderingServer.frame_post_draw if drawing else get_tree().process_frame)
+	while (
+		_background_loads.has(path)
+		and ResourceLoader.load_threaded_get_status(path) == ResourceLoader.THREAD_LOAD_IN_PROGRESS
+	):
+		await get_tree().process_frame
+	if change != _changes:
+		return  # a later change owns the screen now
+	var leaving := get_tree().current_scene
+	var error: Error
+	if _background_loads.has(path):
+		_background_loads.erase(path)
+		var scene := ResourceLoader.load_threaded_get(path) as PackedScene
+		error = get_tree().change_scene_to_packed(scene) if scene != null else ERR_CANT_OPEN
+	else:
+		error = get_tree().change_scene_to_file(path)
 	if error != OK:
 		push_error("Could not open the scene %s: %s" % [path, error_string(error)])
+		curtain.lift()
+		return
+	# lowered the moment the new screen is in the tree, so that screen's first frame is drawn
+	# without it (the curtain stays on the screen until then); the frames below are a net
+	get_tree().scene_changed.connect(
+		func() -> void:
+			if change == _changes:
+				curtain.lift(),
+		CONNECT_ONE_SHOT
+	)
+	for frame in SCENE_CHANGE_FRAMES:
+		await get_tree().process_frame
+		var now := get_tree().current_scene
+		if now != null and now != leaving:
+			break
+	if change == _changes:
+		curtain.lift()
+
+
+# Starts loading the scene at `path` on a worker, once; _change_scene takes it from there.
+func _load_in_background(path: String) -> void:
+	if _background_loads.has(path):
+		return
+	if ResourceLoader.load_threaded_request(path, "PackedScene") == OK:
+		_background_loads[path] = true
 
 
 # A window the player resized is reopened at that size next time (cut to the screen then):

@@ -19,9 +19,11 @@ const PORTRAIT_BUTTON_WIDTH := 190.0
 
 @onready var _master: HSlider = %MasterSlider
 @onready var _sfx: HSlider = %SfxSlider
+@onready var _music: HSlider = %MusicSlider
 @onready var _tilt: HSlider = %TiltSlider
 @onready var _master_value: Label = %MasterValue
 @onready var _sfx_value: Label = %SfxValue
+@onready var _music_value: Label = %MusicValue
 @onready var _tilt_value: Label = %TiltValue
 @onready var _fullscreen: Button = %FullscreenCheck
 @onready var _frame_counter: Button = %FrameCounterCheck
@@ -46,6 +48,7 @@ func _ready() -> void:
 	_load_values()
 	_master.value_changed.connect(_on_value_changed.bind("master_volume"))
 	_sfx.value_changed.connect(_on_value_changed.bind("sfx_volume"))
+	_music.value_changed.connect(_on_value_changed.bind("music_volume"))
 	_tilt.value_changed.connect(_on_value_changed.bind("tilt_sensitivity"))
 	_fullscreen.toggled.connect(_on_value_changed.bind("fullscreen"))
 	_frame_counter.toggled.connect(_on_value_changed.bind("show_frame_counter"))
@@ -61,6 +64,7 @@ func _ready() -> void:
 	var rows: Array[Control] = [
 		_master,
 		_sfx,
+		_music,
 		_tilt,
 		_fullscreen,
 		_frame_counter,
@@ -106,7 +110,7 @@ func _fit_to_window() -> void:
 	var view := get_viewport_rect().size
 	var portrait := view.y > view.x
 	_first_label.custom_minimum_size.x = PORTRAIT_LABEL_WIDTH if portrait else LABEL_WIDTH
-	for slider: HSlider in [_master, _sfx, _tilt]:
+	for slider: HSlider in [_master, _sfx, _music, _tilt]:
 		slider.custom_minimum_size.x = PORTRAIT_SLIDER_WIDTH if portrait else SLIDER_WIDTH
 	var side := PORTRAIT_SIDE_MARGIN if portrait else SIDE_MARGIN
 	_margin.add_theme_constant_override("margin_left", side)
@@ -118,6 +122,7 @@ func _load_values() -> void:
 	var settings := App.settings
 	_master.set_value_no_signal(settings.master_volume)
 	_sfx.set_value_no_signal(settings.sfx_volume)
+	_music.set_value_no_signal(settings.music_volume)
 	_tilt.set_value_no_signal(settings.tilt_sensitivity)
 	_fullscreen.set_pressed_no_signal(settings.fullscreen)
 	_frame_counter.set_pressed_no_signal(settings.show_frame_counter)
@@ -146,6 +151,7 @@ func _show_numbers() -> void:
 	_unlock_all.text = "On" if _unlock_all.button_pressed else "Off"
 	_master_value.text = "%d%%" % roundi(_master.value * 100.0)
 	_sfx_value.text = "%d%%" % roundi(_sfx.value * 100.0)
+	_music_value.text = "%d%%" % roundi(_music.value * 100.0)
 	_tilt_value.text = "×%.2f" % _tilt.value
 
 

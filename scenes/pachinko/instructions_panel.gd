@@ -1,9 +1,14 @@
 extends Control
-## The instructions panel: up before the first game and again at game over. A click (or
-## the start button / key) anywhere takes it away and starts a game; the game scene does
-## that, this panel only shows the words. The body is BBCode for the bold words: anything in
-## it that came from a file (the board's name, a refusal quoting a field) goes through
-## PlainMarkup.escape, the title and footer are plain labels.
+## The instructions panel: up before the first game and again at game over. It goes away
+## only when the player means it to: its own Play button or the start key, and only once it
+## has been up READ_SECONDS (a click anywhere else, or one still queued from the click that
+## chose the board, leaves it up and points at the button). The game scene starts the game
+## on `play_requested`; this panel only shows the words. The body is BBCode for the bold
+## words: anything in it that came from a file (the board's name, a refusal quoting a
+## field) goes through PlainMarkup.escape, the title and footer are plain labels.
+
+## The player asked to play: the Play button, after the card had been up READ_SECONDS.
+signal play_requested
 
 const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
 const ReadableText := preload("res://scenes/common/readable_text.gd")
@@ -12,22 +17,51 @@ const ReadableText := preload("res://scenes/common/readable_text.gd")
 const SMALLEST_FONT := 14.0
 ## The share of the panel the scaled card may cover at most, each way.
 const MAX_COVER := 0.94
+## Seconds the card is up before anything takes it away: a click queued while the board
+## loaded, or a double click on the level select, lands before this and is not a choice.
+const READ_SECONDS := 0.5
 
 ## What this board's pieces do, under the words (only at the start).
 var _legend := PieceLegend.new()
+## Seconds since the card last came up.
+var _shown_seconds := 0.0
+var _nudge: Tween
 
 @onready var _title: Label = $Card/Margin/Box/Title
 @onready var _body: RichTextLabel = $Card/Margin/Box/Body
 @onready var _footer: Label = $Card/Margin/Box/Footer
+@onready var _play: Button = $Card/Margin/Box/Play
 @onready var _card: Control = $Card
 
 
 func _ready() -> void:
+	_play.pressed.connect(_on_play_pressed)
 	var box := $Card/Margin/Box
 	box.add_child(_legend)
 	box.move_child(_legend, _body.get_index() + 1)
 	resized.connect(_fit_card)
 	_card.resized.connect(_fit_card)
+
+
+func _process(delta: float) -> void:
+	_shown_seconds += delta
+
+
+## True when a start from the player counts: the card is up and has been for READ_SECONDS.
+func accepts_start() -> bool:
+	return visible and _play.visible and _shown_seconds >= READ_SECONDS
+
+
+## Points the player at the Play button (they clicked elsewhere on the card's screen).
+func nudge() -> void:
+	if not visible or not _play.visible or not is_inside_tree():
+		return
+	if _nudge != null:
+		_nudge.kill()
+	_play.pivot_offset = _play.size * 0.5
+	_nudge = create_tween()
+	_nudge.tween_property(_play, "scale", Vector2.ONE * 1.15, 0.08)
+	_nudge.tween_property(_play, "scale", Vector2.ONE, 0.18)
 
 
 ## How much the card is scaled up for the screen (1: drawn at its design size).
@@ -74,10 +108,7 @@ func show_start(level: BoardLevel) -> void:
 	)
 	_legend.show_pieces(level)
 	_legend.visible = true
-	_footer.text = (
-		"Click anywhere or press %s to start" % KeyNames.of(&"game_start", "the start key")
-	)
-	visible = true
+	_show_play("Play", "or press %s" % KeyNames.of(&"game_start", "the start key"))
 
 
 ## The game-over screen with the last game's numbers; `new_best` when it beat the record.
@@ -101,8 +132,7 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	lines.append("Another %d balls are waiting." % level.cup_start_balls)
 	_body.text = "\n".join(lines)
 	_legend.visible = false
-	_footer.text = "Click anywhere to play again"
-	visible = true
+	_show_play("Play again", "or press %s" % KeyNames.of(&"game_start", "the start key"))
 
 
 ## A board that cannot be played: says what went wrong and how to get back.
@@ -111,7 +141,22 @@ func show_problem(problem: String) -> void:
 	_legend.visible = false
 	_body.text = PlainMarkup.escape(problem)
 	_footer.text = "Press Esc for the menu"
+	_play.visible = false
 	visible = true
+
+
+# Up with its Play button reading `words` over `footer`; the read time starts now.
+func _show_play(words: String, footer: String) -> void:
+	_play.text = words
+	_play.visible = true
+	_footer.text = footer
+	_shown_seconds = 0.0
+	visible = true
+
+
+func _on_play_pressed() -> void:
+	if accepts_start():
+		play_requested.emit()
 
 
 # Scales the card about its centre so its smallest text reads (ReadableText) on the

@@ -16,6 +16,7 @@ const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
 const ReadableText := preload("res://scenes/common/readable_text.gd")
+const PachinkoMusic := preload("res://scenes/pachinko/pachinko_music.gd")
 const HUD_WIDTH := 360.0
 ## Beside the board, the panel drawn bigger to read (a small window) takes at most this
 ## share of the window's width: the board keeps the rest.
@@ -40,6 +41,7 @@ var _stats_refresh := 0.0
 # Made once a board has loaded: a game with no board never owns one outside the tree.
 var _bonus_view: BonusView
 var _juice: JuiceView
+var _music: PachinkoMusic
 var _recorder: ReplayRecorder
 
 @onready var board_view: BoardView = $BoardView
@@ -58,6 +60,7 @@ var _recorder: ReplayRecorder
 
 func _ready() -> void:
 	pause_menu.restart_requested.connect(restart)
+	instructions.play_requested.connect(_start_from_card)
 	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -89,6 +92,10 @@ func _ready() -> void:
 	_juice.name = "Juice"
 	add_child(_juice)
 	_juice.attach(board_view, sounds)
+	_music = PachinkoMusic.new()
+	_music.name = "Music"
+	add_child(_music)
+	_music.play_machine(_level.fascia)
 	launcher.flipper_pressed.connect(_on_flipper_pressed)
 	launcher.handle_pressed.connect(_on_handle_pressed)
 	launcher.handle_turned.connect(
@@ -134,9 +141,11 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 		return
 	if rules.state != PachinkoRules.State.PLAYING:
-		if _is_start_event(event):
-			rules.start_game()
-			sounds.play(SoundBank.UI_CLICK)
+		if _is_click(event):
+			# the card goes only by its own button (or a key): point the player at it
+			instructions.nudge()
+		elif _is_start_key(event) and instructions.accepts_start():
+			_start_from_card()
 			get_viewport().set_input_as_handled()
 			# a held charge or handle key goes on to charge or stream: the player pressed it
 			# to shoot, not only to close the instructions
@@ -177,6 +186,7 @@ func _new_rules() -> void:
 	board_view.bind(rules)
 	_bonus_view.bind(rules)
 	_juice.bind(rules)
+	_music.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
 	cup.set_count(0)
@@ -308,27 +318,47 @@ func _edge_hud_toward_board(side: Side) -> void:
 	style.border_width_top = width if side == SIDE_TOP else 0
 
 
-func _is_start_event(event: InputEvent) -> bool:
+func _is_click(event: InputEvent) -> bool:
 	var button := event as InputEventMouseButton
-	if button != null:
-		return button.pressed and button.button_index == MOUSE_BUTTON_LEFT
-	# any of the keys a player reaches for first starts the game: start, charge or the handle
+	return button != null and button.pressed and button.button_index == MOUSE_BUTTON_LEFT
+
+
+# Any of the keys a player reaches for first starts the game: start, charge or the handle.
+func _is_start_key(event: InputEvent) -> bool:
+	if event is InputEventMouseButton:
+		return false
 	for action: String in ["game_start", "launch_charge", "launch_handle"]:
 		if event.is_action_pressed(action):
 			return true
 	return false
 
 
+# The player chose to play from the card (its button or a start key).
+func _start_from_card() -> void:
+	if rules == null or rules.state == PachinkoRules.State.PLAYING:
+		return
+	rules.start_game()
+	sounds.play(SoundBank.UI_CLICK)
+
+
+# The launcher is a deliberate control of its own: grabbing it while the card is up starts
+# the game, once the card has been up long enough that the press is not a stray one.
 func _on_flipper_pressed(at: Vector2) -> void:
 	if rules.state != PachinkoRules.State.PLAYING:
-		rules.start_game()
+		if instructions.accepts_start():
+			_start_from_card()
+		else:
+			instructions.nudge()
 		return
 	_controls.begin_drag(rules, at)
 
 
 func _on_handle_pressed(at: Vector2) -> void:
 	if rules.state != PachinkoRules.State.PLAYING:
-		rules.start_game()
+		if not instructions.accepts_start():
+			instructions.nudge()
+			return
+		_start_from_card()
 	_controls.begin_handle_drag(rules, at)
 
 

@@ -1,7 +1,7 @@
 class_name GameSettings
 extends RefCounted
-## The player's settings: volumes, window mode, frame counter, tilt sensitivity and the
-## key and gamepad bindings of every game action. Saved as a readable INI file
+## The player's settings: volumes (master, effects, music), window mode, frame counter, tilt
+## sensitivity and the key and gamepad bindings of every game action. Saved as a readable INI file
 ## (user://settings.cfg). `load_file` reads it as data and validates every value: an
 ## unreadable value gets its default, a damaged file is moved aside (kept for the player) and
 ## the defaults are used, a file from a newer version is left untouched and never saved over.
@@ -11,6 +11,7 @@ extends RefCounted
 signal changed
 
 const VERSION := 1
+const DEFAULT_MUSIC_VOLUME := 0.6
 const MIN_TILT_SENSITIVITY := 0.25
 const MAX_TILT_SENSITIVITY := 3.0
 ## Actions that must keep a keyboard and a gamepad binding: without one, a player on that
@@ -41,6 +42,9 @@ const LOAD_WORDS := {
 var master_volume := 1.0
 ## Sound effects volume, 0 to 1.
 var sfx_volume := 1.0
+## Music volume, 0 to 1: under the effects by default, so the machine's tune sits behind the
+## balls rather than over them.
+var music_volume := DEFAULT_MUSIC_VOLUME
 ## Fullscreen when true, a window when false.
 var fullscreen := false
 ## Show the frames-per-second counter in a corner.
@@ -100,6 +104,7 @@ static func default_bindings() -> Dictionary:
 func reset_to_defaults() -> void:
 	master_volume = 1.0
 	sfx_volume = 1.0
+	music_volume = DEFAULT_MUSIC_VOLUME
 	fullscreen = false
 	show_frame_counter = false
 	show_ghost = true
@@ -169,6 +174,9 @@ func set_value(key: String, value: Variant) -> void:
 		"sfx_volume":
 			var volume: float = value
 			sfx_volume = clampf(volume, 0.0, 1.0)
+		"music_volume":
+			var volume: float = value
+			music_volume = clampf(volume, 0.0, 1.0)
 		"fullscreen":
 			var on: bool = value
 			fullscreen = on
@@ -197,6 +205,7 @@ func set_value(key: String, value: Variant) -> void:
 func apply() -> void:
 	_apply_bus("Master", master_volume)
 	_apply_bus("SFX", sfx_volume)
+	_apply_bus("Music", music_volume)
 	if DisplayServer.get_name() != "headless":
 		var mode := DisplayServer.window_get_mode()
 		var is_full := mode == DisplayServer.WINDOW_MODE_FULLSCREEN
@@ -228,7 +237,14 @@ func save_file(path: String) -> Error:
 		input[action] = codes
 	var sections := [
 		["meta", {"version": VERSION}],
-		["audio", {"master_volume": master_volume, "sfx_volume": sfx_volume}],
+		[
+			"audio",
+			{
+				"master_volume": master_volume,
+				"sfx_volume": sfx_volume,
+				"music_volume": music_volume,
+			}
+		],
 		[
 			"display",
 			{
@@ -277,6 +293,7 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 	var controls: Dictionary = sections.get("controls", {})
 	_read_number(audio, "master_volume", 0.0, 1.0, problems)
 	_read_number(audio, "sfx_volume", 0.0, 1.0, problems)
+	_read_number(audio, "music_volume", 0.0, 1.0, problems)
 	_read_flag(display, "fullscreen", problems)
 	_read_flag(display, "show_frame_counter", problems)
 	_read_flag(display, "show_ghost", problems)

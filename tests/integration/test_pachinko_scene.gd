@@ -1,9 +1,10 @@
 extends GutTest
-## The game scene headless: it loads the board, the instructions gate the game, a click
-## starts it and a drag on the flipper fires a ball drawn by the one ball layer.
+## The game scene headless: it loads the board, the instructions gate the game, their Play
+## button starts it and a drag on the flipper fires a ball drawn by the one ball layer.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
 const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
+const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 
 
 func _game() -> PachinkoGame:
@@ -29,10 +30,20 @@ func test_the_scene_starts_with_the_instructions() -> void:
 	assert_not_null(game.get_node_or_null("PauseMenu"), "the shell's pause menu is in")
 
 
-func test_a_click_starts_and_a_flipper_drag_fires() -> void:
+# The card has been up long enough to be read (InstructionsPanel.READ_SECONDS).
+func _let_the_card_be_read(game: PachinkoGame) -> void:
+	game.instructions._process(InstructionsPanel.READ_SECONDS + 0.1)
+
+
+func _play_button(game: Node) -> Button:
+	return game.get_node("Instructions/Card/Margin/Box/Play") as Button
+
+
+func test_the_play_button_starts_and_a_flipper_drag_fires() -> void:
 	var game := _game()
 	var rules := game.get("rules") as PachinkoRules
-	_click(game, Vector2(300, 300), true)
+	_let_the_card_be_read(game)
+	_play_button(game).pressed.emit()
 	assert_eq(rules.state, PachinkoRules.State.PLAYING)
 	assert_false((game.get_node("Instructions") as Control).visible)
 	var launcher := game.get_node("Hud/Column/Launcher")
@@ -62,6 +73,7 @@ func test_the_start_charge_and_handle_keys_each_start_the_game() -> void:
 		key.physical_keycode = _first_key(action)
 		key.pressed = true
 		assert_true(key.is_action_pressed(action), "a key is bound to %s" % action)
+		_let_the_card_be_read(game)
 		game._unhandled_input(key)
 		assert_eq(rules.state, PachinkoRules.State.PLAYING, "%s starts the game" % action)
 		if action == &"launch_handle":
@@ -72,7 +84,46 @@ func test_the_start_charge_and_handle_keys_each_start_the_game() -> void:
 func test_the_start_line_names_a_key() -> void:
 	var game := _game()
 	var footer := game.get_node("Instructions/Card/Margin/Box/Footer") as Label
-	assert_string_contains(footer.text, "press Enter to start")
+	assert_eq(_play_button(game).text, "Play")
+	assert_string_contains(footer.text, "press Enter")
+
+
+func test_a_click_elsewhere_leaves_the_card_up() -> void:
+	var game := _game()
+	var rules := game.get("rules") as PachinkoRules
+	_let_the_card_be_read(game)
+	_click(game, Vector2(300, 300), true)
+	assert_eq(rules.state, PachinkoRules.State.INSTRUCTIONS, "the card is dismissed by its button")
+	assert_true(game.instructions.visible)
+
+
+func test_the_click_that_chose_the_board_cannot_dismiss_the_card() -> void:
+	var game := _game()
+	var rules := game.get("rules") as PachinkoRules
+	# a click queued while the board loaded lands on the card's first frames
+	_play_button(game).pressed.emit()
+	var enter := InputEventKey.new()
+	enter.physical_keycode = _first_key(&"game_start")
+	enter.pressed = true
+	game._unhandled_input(enter)
+	game.launcher.flipper_pressed.emit(Vector2(1000, 600))
+	assert_eq(rules.state, PachinkoRules.State.INSTRUCTIONS, "nothing in its first half second")
+	_let_the_card_be_read(game)
+	_play_button(game).pressed.emit()
+	assert_eq(rules.state, PachinkoRules.State.PLAYING, "then its button starts the game")
+
+
+func test_game_over_offers_play_again_on_the_card() -> void:
+	var game := _game()
+	var rules := game.get("rules") as PachinkoRules
+	game.instructions.show_game_over(rules.level, rules.stats(true), 0, false)
+	assert_eq(_play_button(game).text, "Play again")
+	_play_button(game).pressed.emit()
+	_click(game, Vector2(300, 300), true)
+	assert_eq(rules.state, PachinkoRules.State.INSTRUCTIONS, "not at once, nor by a click")
+	_let_the_card_be_read(game)
+	_play_button(game).pressed.emit()
+	assert_eq(rules.state, PachinkoRules.State.PLAYING)
 
 
 func _first_key(action: StringName) -> Key:

@@ -33,7 +33,7 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	match shot_name:
 		"pachinko_play":
 			_play(rules, game.get_node("BoardView/PinLights"))
-			game.get_node("Hud/Column/Info/Stats").call("show_stats", rules.stats())
+			game.get_node("Hud/Column/Info/Numbers/Stats").call("show_stats", rules.stats())
 		"pachinko_win":
 			if not _win(rules):
 				printerr("shots: pachinko_win: no pocket paid out in 90 s of play")

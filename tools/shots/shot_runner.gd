@@ -14,6 +14,7 @@ const SHOT_FILES: Array[String] = [
 	"res://tools/shots/bonus_shots.gd",
 	"res://tools/shots/juice_shots.gd",
 	"res://tools/shots/machine_shots.gd",
+	"res://tools/shots/flash_shots.gd",
 	"res://tools/shots/maze_shots.gd",
 ]
 ## Pictures must never touch the player's own settings and best results; the scratch files

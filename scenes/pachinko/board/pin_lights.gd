@@ -5,8 +5,13 @@ extends Node2D
 ## FADE_SECONDS, brighter for a harder hit. One canvas item draws every lit pin in one pass
 ## (no node per pin), with additive blending, and it sleeps while nothing is lit.
 
-## Seconds a full-strength flash takes to fade out.
-const FADE_SECONDS := 0.45
+## Seconds a full-strength flash takes to fade out (long enough to see where a ball went).
+const FADE_SECONDS := 0.6
+## A flash's outer glow, as a multiple of the lit pin's radius: about 20 board pixels across
+## for Classic's pins, 19 px on screen at 1280 × 720.
+const HALO_REACH := 4.5
+## The ring a flash throws out grows to this multiple of the pin's radius as it fades.
+const RING_REACH := 5.5
 ## Impact speed (px/s) that lights a pin fully; softer taps glow less (never under MIN_GLOW).
 const FULL_SPEED := 320.0
 const MIN_GLOW := 0.35
@@ -57,6 +62,11 @@ func bind(rules: PachinkoRules) -> void:
 	_lit = PackedInt32Array()
 	rules.world.pin_hit.connect(_on_pin_hit)
 	queue_redraw()
+
+
+## How far a flash reaches from its pin's centre at full strength, in board pixels.
+func flash_reach() -> float:
+	return _radius * maxf(HALO_REACH, RING_REACH)
 
 
 ## How brightly pin `index` glows now, 0..1.
@@ -120,7 +130,10 @@ func _draw() -> void:
 		var a := _glow[pin]
 		var p := _pins[pin]
 		var tint := _tint[pin]
-		draw_circle(p, _radius * 4.5, Color(tint, 0.25 * a))
-		draw_circle(p, _radius * 2.6, Color(tint, 0.55 * a))
-		draw_circle(p, _radius * 1.3, Color(CORE.lerp(tint, 0.3), a))
+		draw_circle(p, _radius * HALO_REACH, Color(tint, 0.4 * a))
+		draw_circle(p, _radius * 2.6, Color(tint, 0.8 * a))
+		draw_circle(p, _radius * 1.4, Color(CORE.lerp(tint, 0.2), a))
+		# a ring thrown out from the pin: the eye catches the motion on busy art
+		var ring := lerpf(2.0, RING_REACH, 1.0 - a)
+		draw_arc(p, _radius * ring, 0.0, TAU, 16, Color(CORE, a), 1.5, true)
 	last_lit = _lit.size()

@@ -9,6 +9,8 @@ const PinArt := preload("res://scenes/board_view/pin_art.gd")
 const PETAL := Color("c0283c")
 const PETAL_LIGHT := Color("ee5a5f")
 const GOLD := Color("f2c14e")
+## Seconds a pocket's flash takes to fade.
+const FLASH_SECONDS := 0.9
 
 var _glow := PackedFloat32Array()
 
@@ -21,6 +23,16 @@ func setup(level: BoardLevel) -> void:
 	super(level)
 
 
+## How brightly pocket `index` glows now, 0..1 (1 the moment it paid out).
+func glow_of(index: int) -> float:
+	return _glow[index] if index >= 0 and index < _glow.size() else 0.0
+
+
+## `base` as a pocket glowing `glow` (0..1) shows it: white-hot at 1, itself at 0.
+static func flash_color(base: Color, glow: float) -> Color:
+	return base.lerp(Color(1.0, 0.98, 0.9), 0.8 * clampf(glow, 0.0, 1.0))
+
+
 ## Lights pocket `index` (it just paid out).
 func celebrate(index: int) -> void:
 	if index >= 0 and index < _glow.size():
@@ -31,7 +43,7 @@ func celebrate(index: int) -> void:
 func _process(delta: float) -> void:
 	var any := false
 	for i in _glow.size():
-		_glow[i] = maxf(_glow[i] - delta * 1.2, 0.0)
+		_glow[i] = maxf(_glow[i] - delta / FLASH_SECONDS, 0.0)
 		any = any or _glow[i] > 0.0
 	queue_redraw()
 	if not any:
@@ -51,12 +63,14 @@ func _draw_pocket(spec: PocketSpec, glow: float) -> void:
 	var band := pr * 2.0 + 4.0
 	var top := spec.position
 	var bottom_center := top + Vector2(0.0, maxf(spec.depth - half, 0.0))
-	var petal_color := _palette.petal
-	var gold := _palette.pocket_trim
+	# a pocket that paid flashes: the cup goes white-hot and fades back to its colours, over
+	# a gold burst and a ring thrown out from it
+	var petal_color := flash_color(_palette.petal, glow)
+	var gold := flash_color(_palette.pocket_trim, glow)
 	if glow > 0.0:
-		draw_circle(
-			bottom_center, half + band * (1.5 + glow * 2.0), Color(1, 0.85, 0.3, 0.35 * glow)
-		)
+		var reach := half + band * (1.5 + (1.0 - glow) * 3.0)
+		draw_circle(bottom_center, reach, Color(1, 0.85, 0.3, 0.55 * glow))
+		draw_arc(bottom_center, reach * 1.3, 0.0, TAU, 32, Color(1, 1, 0.9, glow), 3.0, true)
 	# The cup: two sides and a half circle, a thick band over the rim pins.
 	var rim := PackedVector2Array()
 	rim.append(top + Vector2(-half, -band * 0.3))
