@@ -44,11 +44,6 @@ func is_on_stage() -> bool:
 	return _shown > 0.0
 
 
-## The height one reel's box takes on screen, in screen pixels, at full size.
-func symbol_box_height_on_screen() -> float:
-	return BOX.y * get_global_transform_with_canvas().get_scale().y
-
-
 func _process(delta: float) -> void:
 	if _machine == null:
 		return
