@@ -52,6 +52,8 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		cup.call("_process", FRAME)
 	if shot_name == "pachinko_jackpot":
 		_play_for(rules, 0.3)  # the banner at its height, balls heading for the open lid
+		# after the reach stage's moment of three alike, as on screen
+		bonus_view.get("banner").call("_process", 1.9)
 	if shot_name == "pachinko_round":
 		_play_for(rules, 0.5)
 		bonus_view.get("banner").call("_process", 0.5)

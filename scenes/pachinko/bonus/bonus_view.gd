@@ -92,7 +92,9 @@ func _on_reel_stopped(reel: int, _symbol: int) -> void:
 
 func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
 	if jackpot:
-		banner.show_jackpot(_rules.level.ring_center, _rules.level.ring_radius)
+		var level := _rules.level
+		var rounds := JackpotRounds.ROUNDS
+		banner.show_jackpot(level.ring_center, level.ring_radius, rounds, ReachStage.HOLD_JACKPOT)
 		_play(SoundBank.JACKPOT_FANFARE)
 
 

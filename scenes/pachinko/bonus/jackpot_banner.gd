@@ -1,7 +1,7 @@
 extends Node2D
-## The jackpot's moments over the board, low in the field (the reach stage holds the
-## middle): a gold flash across the field with "ROUND 1 / 10" growing as the attacker opens;
-## each later round announced ("ROUND 3 / 10"); and at the end what the jackpot paid.
+## The jackpot's moments in the middle of the board: once the reach stage has shown the
+## three alike, a gold flash across the field with "ROUND 1 / 10" growing as the attacker
+## opens; each later round announced ("ROUND 3 / 10"); and at the end what the jackpot paid.
 ## Play goes on underneath: it is drawn over the balls but takes no input.
 
 ## Seconds each moment shows.
@@ -20,8 +20,12 @@ var _flash := false
 
 ## Shows the jackpot on a board with its ring at `center`, `radius` px: its first round of
 ## `rounds` opens with it.
-func show_jackpot(center: Vector2, radius: float, rounds := JackpotRounds.ROUNDS) -> void:
+## The moment waits `delay` seconds (while the reach stage holds the middle).
+func show_jackpot(
+	center: Vector2, radius: float, rounds := JackpotRounds.ROUNDS, delay := 0.0
+) -> void:
 	_show(center, radius, "ROUND 1 / %d" % rounds, "the attacker is open!", JACKPOT_SECONDS, true)
+	_age = -maxf(delay, 0.0)
 
 
 ## Announces round `round` of `rounds`.
@@ -78,7 +82,7 @@ func _process(delta: float) -> void:
 
 
 func _draw() -> void:
-	if not is_showing():
+	if not is_showing() or _age < 0.0:
 		return
 	var t := _age / _seconds
 	if _flash:
@@ -89,7 +93,7 @@ func _draw() -> void:
 	var fade := clampf((1.0 - t) / 0.3, 0.0, 1.0) * clampf(_age / 0.12, 0.0, 1.0)
 	var font := ThemeDB.fallback_font
 	var size := int(40 + 30 * minf(t * 5.0, 1.0))
-	var at := _center + Vector2(0, _radius * 0.42)
+	var at := _center + Vector2(0, _radius * 0.05)
 	_centered(font, _title, at, size, Color("ffe14d"), fade)
 	if t > 0.15:
 		_centered(font, _subtitle, at + Vector2(0.0, 40.0), 26, Color.WHITE, fade)
