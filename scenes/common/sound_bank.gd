@@ -28,6 +28,9 @@ const JACKPOT_THUMP := Recipes.JuiceRecipes.JACKPOT_THUMP
 const LIGHT_SWEEP := Recipes.JuiceRecipes.LIGHT_SWEEP
 const FEVER_TICK := Recipes.JuiceRecipes.FEVER_TICK
 const PIN_FEVER := Recipes.JuiceRecipes.PIN_FEVER
+const REACH_RISE := Recipes.JackpotRecipes.REACH_RISE
+const JACKPOT_FANFARE := Recipes.JackpotRecipes.JACKPOT_FANFARE
+const ROUND_BELL := Recipes.JackpotRecipes.ROUND_BELL
 
 const PREFERRED_BUS := &"SFX"
 const FALLBACK_BUS := &"Master"

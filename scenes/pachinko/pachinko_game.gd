@@ -114,7 +114,7 @@ func _process(delta: float) -> void:
 		return
 	_controls.poll(rules, delta)
 	# Slow motion slows the game's clock only: the same fixed steps, fewer per frame.
-	rules.advance(delta * _juice.time_scale(rules, delta))
+	rules.advance(delta * _juice.time_scale(rules, delta) * _bonus_view.time_scale(delta))
 	_recorder.note_frame()
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
@@ -218,6 +218,7 @@ func _new_rules() -> void:
 func _show_notes() -> void:
 	var lines := PackedStringArray()
 	var best := App.best_pachinko_balls(_level.board_id)
+	stats_panel.best_session = best
 	if best > 0:
 		lines.append("Best on this board: %d balls paid back" % best)
 	(

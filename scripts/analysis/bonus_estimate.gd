@@ -14,8 +14,9 @@ extends RefCounted
 ## - Start pockets queue spins; a spin lasts the reels' stop times (longer on a reach), and
 ##   no spin starts while an attacker is open. Spins run at the rate balls reach the start
 ##   pockets, up to what the reels can turn (a fluid model: no queue overflow counted).
-## - A jackpot opens every attacker: each catches at its open rate for its open seconds, up
-##   to its open catches, and pays its payout per catch.
+## - A jackpot opens every attacker for JackpotRounds.ROUNDS rounds: in each, an attacker
+##   catches at its open rate for its open seconds, up to its open catches, and pays its
+##   payout per catch (JackpotFigures turns a round into a jackpot).
 ##
 ## The figures are expectations from measured rates, not a simulation of the rules; the
 ## autoplay (`--autoplay=pachinko --handle=P`) plays the real rules to check them.
@@ -76,13 +77,17 @@ static func estimate(
 	var jackpot_odds := jackpot_weight / start_rate if start_rate > 0.0 else 0.0
 	var reach_odds := reach_weight / start_rate if start_rate > 0.0 else 0.0
 	var spin_seconds := _spin_seconds(reach_odds)
-	var most_spins := 1.0 / (spin_seconds + jackpot_odds * round_seconds)
+	var jackpot_seconds := JackpotFigures.seconds(round_seconds) if round_value > 0.0 else 0.0
+	var most_spins := 1.0 / (spin_seconds + jackpot_odds * jackpot_seconds)
 	var spins_per_second := minf(start_rate * fire_rate, most_spins)
 	var jackpots_per_shot := spins_per_second * jackpot_odds / fire_rate
+	var payout := JackpotFigures.payout(round_value)
 	return {
 		"tulip_return": tulip_extra,
-		"jackpot_return": jackpots_per_shot * round_value,
+		"jackpot_return": jackpots_per_shot * payout,
 		"jackpots_per_1000": jackpots_per_shot * 1000.0,
+		"jackpots_per_hour": JackpotFigures.per_hour(jackpots_per_shot, shot_interval),
+		"jackpot_payout": payout,
 		"round_value": round_value,
 		"jackpot_odds": jackpot_odds,
 	}

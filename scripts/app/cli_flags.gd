@@ -86,8 +86,22 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--analyze=pachinko --board=classic --shots=10000 --seed=1 --threads=2",
 	},
 	{
+		"flag": "--sessions",
+		"command": true,
+		"value": Value.WHOLE,
+		"placeholder": "N",
+		"runs": preload("res://scripts/analysis/pachinko_sessions.gd"),
+		"help":
+		(
+			"Pachinko: play N sessions from a full cup to an empty one at the autoplay's"
+			+ " single-shot pace (seeds --seed, --seed + 1, ...) and print one JSON line: median"
+			+ " and 10th percentile session seconds, jackpots per hour, mean jackpot payout."
+		),
+		"example": "--sessions=20 --board=fever --seed=1",
+	},
+	{
 		"flag": "--board",
-		"for": ["--autoplay", "--analyze"],
+		"for": ["--autoplay", "--analyze", "--sessions"],
 		"value": Value.TEXT,
 		"placeholder": "ID",
 		"default": "classic",
@@ -109,7 +123,7 @@ const FLAGS: Array[Dictionary] = [
 	},
 	{
 		"flag": "--seed",
-		"for": ["--autoplay", "--analyze"],
+		"for": ["--autoplay", "--analyze", "--sessions"],
 		"value": Value.WHOLE,
 		"placeholder": "N",
 		"default": 1,

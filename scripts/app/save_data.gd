@@ -81,7 +81,9 @@ func best_pachinko_balls(board_id: String) -> int:
 	return count
 
 
-## Records a finished pachinko game; true (and saved) when it won more balls than before.
+## Records a finished pachinko game (saved when it won more balls than any before); true
+## only when it beat an earlier game's record: a first game sets the record without being
+## a "new best", and a game that won nothing never is one.
 func record_pachinko_balls(board_id: String, balls: int) -> bool:
 	if board_id.is_empty() or balls < 0:
 		push_error(
@@ -91,11 +93,12 @@ func record_pachinko_balls(board_id: String, balls: int) -> bool:
 			)
 		)
 		return false
-	if balls <= best_pachinko_balls(board_id):
+	var before := best_pachinko_balls(board_id)
+	if balls <= before:
 		return false
 	_pachinko_balls[board_id] = balls
 	save()
-	return true
+	return before >= 0
 
 
 ## Writes the records to the file they were loaded from (nothing when never loaded).

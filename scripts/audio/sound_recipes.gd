@@ -5,6 +5,7 @@ extends RefCounted
 
 const Synth := preload("res://scripts/audio/sound_synth.gd")
 const JuiceRecipes := preload("res://scripts/audio/juice_recipes.gd")
+const JackpotRecipes := preload("res://scripts/audio/jackpot_recipes.gd")
 
 ## Sound names, so callers never spell a string twice.
 const PIN_TICK := &"pin_tick"
@@ -33,7 +34,7 @@ const START_CATCH := &"start_catch"
 const FEVER_END := &"fever_end"
 
 
-## Every recipe name, in a stable order (the juice recipes last).
+## Every recipe name, in a stable order (the juice and then the jackpot recipes last).
 static func names() -> Array[StringName]:
 	var all: Array[StringName] = [
 		PIN_TICK,
@@ -56,6 +57,7 @@ static func names() -> Array[StringName]:
 		FEVER_END,
 	]
 	all.append_array(JuiceRecipes.names())
+	all.append_array(JackpotRecipes.names())
 	return all
 
 
@@ -103,6 +105,8 @@ static func build(sound: StringName) -> AudioStreamWAV:
 			return Synth.to_stream(_arpeggio([1047.0, 784.0, 523.0], 0.12), 0.7)
 	if JuiceRecipes.has(sound):
 		return JuiceRecipes.build(sound)
+	if JackpotRecipes.has(sound):
+		return JackpotRecipes.build(sound)
 	push_error("SoundRecipes: no recipe for sound '%s'" % sound)
 	return null
 

@@ -32,8 +32,11 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## (LaunchTable), so a recorded shot's power sends its ball elsewhere than under 1.
 ## Pachinko 3: a tulip's wings are moving petals (a world gate) instead of walls switched
 ## in one step, so a run on a board with tulips rolls differently than under 2.
+## Pachinko 4: a jackpot is ten rounds (JackpotRounds), a reach's last reel turns longer and
+## the first spin no longer waits, so a run on a board with reels plays differently than
+## under 3.
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
-const RULES_VERSIONS := {"maze": 2, "pachinko": 3}
+const RULES_VERSIONS := {"maze": 2, "pachinko": 4}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME

@@ -47,8 +47,21 @@ func test_paid_balls_pour_into_the_cup() -> void:
 	for i in 60:
 		cup._process(1.0 / 60.0)
 	assert_eq(cup.pouring(), 0, "all landed within a second")
-	cup.pour(500)
-	assert_eq(cup.pouring(), 14, "a big payout pours a capped stream")
+	cup.set_count(10 + 150)  # the rules paid a jackpot's 150 balls into a cup of 10
+	cup.pour(150)
+	assert_eq(cup.pouring(), 20, "a big payout pours a capped stream of drops")
+	assert_eq(cup.count(), 10, "the count waits for the balls to land")
+	var seen := PackedInt32Array()
+	for i in 240:
+		cup._process(1.0 / 60.0)
+		seen.append(cup.count())
+	assert_eq(cup.pouring(), 0, "every drop landed")
+	assert_eq(cup.count(), 160, "the whole payout reached the cup")
+	assert_gt(
+		Array(seen).filter(func(n: int) -> bool: return n > 10 and n < 160).size(),
+		5,
+		"it rose as they landed"
+	)
 
 
 func test_balls_have_a_dark_rim() -> void:

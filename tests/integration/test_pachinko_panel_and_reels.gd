@@ -134,3 +134,12 @@ func test_the_frame_counter_leaves_the_title_clear() -> void:
 	assert_false(
 		title_rect.intersects(counter_rect), "title %s, counter %s" % [title_rect, counter_rect]
 	)
+
+
+func test_the_panel_shows_this_sessions_balls_and_the_best_session() -> void:
+	var stats := {"shots": 40, "payouts": 57, "pocket_hits": [9]}
+	var lines := "\n".join(StatsPanel.lines_for(stats, 120))
+	assert_string_contains(lines, "Paid back[/b] 57 balls this session")
+	assert_string_contains(lines, "Best session[/b] 120 balls")
+	var first := "\n".join(StatsPanel.lines_for(stats))
+	assert_string_contains(first, "Best session[/b] none yet")

@@ -86,7 +86,8 @@ func test_best_maze_time_keeps_the_fastest_and_persists() -> void:
 func test_best_pachinko_balls_keeps_the_most_and_persists() -> void:
 	_app.load_player_files(SETTINGS, SAVE)
 	assert_eq(_app.best_pachinko_balls("classic"), -1)
-	assert_true(_app.record_pachinko_balls("classic", 12))
+	assert_false(_app.record_pachinko_balls("classic", 12), "a first game is no new best")
+	assert_eq(_app.best_pachinko_balls("classic"), 12, "but it is the record")
 	assert_false(_app.record_pachinko_balls("classic", 12))
 	assert_true(_app.record_pachinko_balls("classic", 20))
 	var again := AppScript.new()

@@ -40,14 +40,18 @@ func test_tulips_and_jackpots_add_what_the_model_says() -> void:
 	var figures := BonusEstimate.estimate(_level(), shut, open, -1, HANDLE)
 	# Tulip: alternating 2 * 0.1 * 0.3 / 0.4 = 0.15 a shot, 0.05 more than shut, 4 balls each.
 	assert_almost_eq(figures["tulip_return"], 0.2, 1e-6)
-	# A ball every 0.6 s; spins at 0.1 a shot are under what the reels can turn (one per
-	# 1.9 + 0.6 + 0.5 s plus a quarter of a 6 s round); a quarter are jackpots: 25 a 1000.
-	assert_almost_eq(figures["jackpots_per_1000"], 25.0, 1e-6)
-	# A round: 10 balls in 6 s, half caught: 5 catches of 10 balls.
+	# A ball every 0.6 s; spins at 0.1 a shot (0.167 a second) are more than the reels can
+	# turn: one per 1.9 + 0.5 * 2.0 + 0.5 s (half are reaches) plus a quarter of a jackpot's
+	# 10 rounds of 6 s and 9 breaks of 1.5 s: 1 / 21.775 a second; a quarter are jackpots.
+	var per_shot := 0.6 / 21.775 / 4.0
+	assert_almost_eq(figures["jackpots_per_1000"], per_shot * 1000.0, 1e-6)
+	assert_almost_eq(figures["jackpots_per_hour"], per_shot * 3600.0 / 0.6, 1e-6)
+	# A round: 10 balls in 6 s, half caught: 5 catches of 10 balls; a jackpot: 10 rounds.
 	assert_almost_eq(figures["round_value"], 50.0, 1e-6)
-	assert_almost_eq(BonusEstimate.added_return(figures), 0.2 + 1.25, 1e-6)
+	assert_almost_eq(figures["jackpot_payout"], 500.0, 1e-6)
+	assert_almost_eq(BonusEstimate.added_return(figures), 0.2 + per_shot * 500.0, 1e-6)
 	var band := BonusEstimate.estimate(_level(), shut, open, 2, HANDLE)
-	assert_almost_eq(band["jackpot_return"], 1.25, 1e-6, "band 2 holds every shot")
+	assert_almost_eq(band["jackpot_return"], per_shot * 500.0, 1e-6, "band 2 holds every shot")
 	var empty := BonusEstimate.estimate(_level(), shut, open, 0)
 	assert_eq(BonusEstimate.added_return(empty), 0.0, "a band without shots adds nothing")
 
@@ -57,8 +61,8 @@ func test_the_reels_cap_the_spins() -> void:
 	var shut := _tally([500, 0, 0])
 	var open := _tally([500, 500, 0])
 	var figures := BonusEstimate.estimate(_level(), shut, open, -1, HANDLE)
-	# One spin per 3.0 s + 0.25 * 6 s = 4.5 s; 0.6 s a shot: 0.6 / 4.5 / 4 jackpots a shot.
-	assert_almost_eq(figures["jackpots_per_1000"], 1000.0 * 0.6 / 4.5 / 4.0, 1e-6)
+	# One spin per 3.4 s + 0.25 * (10 * 6 s + 9 * 1.5 s) = 21.775 s; 0.6 s a shot.
+	assert_almost_eq(figures["jackpots_per_1000"], 1000.0 * 0.6 / 21.775 / 4.0, 1e-6)
 
 
 func test_by_default_the_pace_is_the_autoplays_single_shots() -> void:
@@ -68,8 +72,10 @@ func test_by_default_the_pace_is_the_autoplays_single_shots() -> void:
 	var figures := BonusEstimate.estimate(_level(), shut, open)
 	# A round: 6 s / 0.9 s = 6.67 balls, half caught: 3.33 catches of 10 balls.
 	assert_almost_eq(figures["round_value"], 100.0 / 3.0, 1e-6)
-	# Spins at 0.1 a shot, a quarter jackpots: still 25 a 1000 (the reels keep up).
-	assert_almost_eq(figures["jackpots_per_1000"], 25.0, 1e-6)
+	# Spins at 0.1 a shot, 0.111 a second, a quarter jackpots: the reels keep up with them
+	# until the jackpots' rounds take their time: at most one spin per 3.4 s + 0.25 * (10
+	# * 6 s + 9 * 1.5 s) = 21.775 s.
+	assert_almost_eq(figures["jackpots_per_1000"], 1000.0 * 0.9 / 21.775 / 4.0, 1e-6)
 	assert_almost_eq(figures["tulip_return"], 0.2, 1e-6, "tulips count per shot, not per second")
 
 

@@ -91,12 +91,13 @@ func test_an_attacker_closes_after_its_catches_or_its_time() -> void:
 	assert_false(machine.is_open(1), "closed after its second catch")
 	assert_true(world.shapes.is_wall_enabled(0), "the lid is back")
 	assert_eq(machine.attacker_paid, 30)
-	machine._on_spin_finished(PackedInt32Array([0, 0, 0]), true)
+	machine.advance(JackpotRounds.BREAK_SECONDS + 0.01)
+	assert_true(machine.is_open(1), "the next round opens it again")
 	machine.advance(4.9)
 	assert_true(machine.is_open(1))
 	machine.advance(0.2)
 	assert_false(machine.is_open(1), "closed after five seconds")
-	assert_eq(machine.jackpots, 2)
+	assert_eq(machine.jackpots, 1)
 
 
 func test_a_tulip_opens_after_a_catch_and_closes_after_the_next() -> void:
@@ -229,6 +230,11 @@ func test_the_fever_state_shows_while_the_attacker_is_open() -> void:
 	assert_eq(glow.caption(), "")
 	machine._on_spin_finished(PackedInt32Array([1, 1, 1]), true)
 	assert_true(glow.is_lit(), "a jackpot opens the attacker: fever")
-	assert_eq(glow.caption(), "FEVER  5s  2 to catch")
+	assert_eq(glow.caption(), "ROUND 1 / %d  5s  2 to catch" % JackpotRounds.ROUNDS)
 	machine.advance(5.5)
-	assert_false(glow.is_lit(), "the round is over")
+	assert_true(glow.is_lit(), "a break between rounds is still the jackpot")
+	assert_eq(glow.caption(), "ROUND 1 / %d  next round…" % JackpotRounds.ROUNDS)
+	for n in JackpotRounds.ROUNDS:
+		machine.advance(JackpotRounds.BREAK_SECONDS + 0.01)
+		machine.advance(5.5)
+	assert_false(glow.is_lit(), "the last round is over")

@@ -58,3 +58,16 @@ func test_a_version_1_file_migrates_its_times_as_easy() -> void:
 	var again := _loaded()
 	assert_eq(again.best_maze_time("classic", false), 33.5, "the migrated time is kept")
 	assert_eq(again.best_maze_time("classic", true), 80.0)
+
+
+func test_new_best_pachinko_only_when_a_game_beats_an_earlier_one() -> void:
+	var data := _loaded()
+	assert_false(data.record_pachinko_balls("fever", 0), "nothing won is never a new best")
+	assert_eq(data.best_pachinko_balls("fever"), 0, "but the first game is on the record")
+	assert_false(data.record_pachinko_balls("fever", 0), "nor is nothing won again")
+	assert_true(data.record_pachinko_balls("fever", 9), "9 balls beat 0")
+	assert_false(data.record_pachinko_balls("fever", 9), "a tie is no new best")
+	assert_false(data.record_pachinko_balls("fever", 4))
+	assert_eq(data.best_pachinko_balls("fever"), 9)
+	assert_false(data.record_pachinko_balls("hanami", 120), "a first game on a board sets it")
+	assert_true(data.record_pachinko_balls("hanami", 121))

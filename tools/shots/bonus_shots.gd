@@ -1,8 +1,10 @@
 extends RefCounted
 ## The bonus layer's shots on the Fever board: "pachinko_bonus" the reels turning (one
-## landed, two rolling), and "pachinko_jackpot" the jackpot moment with the attacker open. Each
-## opens the game as the level select does and plays the screen's own rules forward at
-## 60 fps until the moment comes; nothing is faked.
+## landed, two rolling), "pachinko_reach" a reach on centre stage (the last reel slowing),
+## "pachinko_jackpot" the jackpot moment with the attacker open, and "pachinko_round" a later
+## round of the jackpot. Each opens the game as the level select does and plays the screen's
+## own rules forward at 60 fps until the moment comes; nothing is faked (the views that ease
+## in are given the real seconds they would have had on screen).
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
@@ -10,7 +12,9 @@ const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/fever.board"
 ## The shots this file takes, in order.
-const NAMES: Array[String] = ["pachinko_bonus", "pachinko_jackpot"]
+const NAMES: Array[String] = [
+	"pachinko_bonus", "pachinko_reach", "pachinko_jackpot", "pachinko_round"
+]
 const FRAME := 1.0 / 60.0
 ## Game seconds a shot may play before it gives up.
 const LIMIT := 2400.0
@@ -30,12 +34,31 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if rules == null:
 		printerr("shots: %s: the game has no rules (the board did not load)" % shot_name)
 		return ERR_CANT_OPEN
-	var wanted := _spinning if shot_name == "pachinko_bonus" else _jackpot
-	if not _play_until(rules, wanted):
+	var moments := {
+		"pachinko_bonus": _spinning,
+		"pachinko_reach": _mid_reach,
+		"pachinko_jackpot": _jackpot,
+		"pachinko_round": _third_round,
+	}
+	if not _play_until(rules, moments[shot_name]):
 		printerr("shots: %s: the moment did not come in %d s of play" % [shot_name, LIMIT])
 		return FAILED
+	var bonus_view: Node = game.get("_bonus_view")
+	# The balls paid in those minutes of play have landed in the cup by now on screen.
+	var cup := (game as PachinkoGame).cup
+	for frame in 20000:
+		if cup.pouring() == 0:
+			break
+		cup.call("_process", FRAME)
 	if shot_name == "pachinko_jackpot":
 		_play_for(rules, 0.3)  # the banner at its height, balls heading for the open lid
+		# after the reach stage's moment of three alike, as on screen
+		bonus_view.get("banner").call("_process", 1.9)
+	if shot_name == "pachinko_round":
+		_play_for(rules, 0.5)
+		bonus_view.get("banner").call("_process", 0.5)
+	if shot_name == "pachinko_reach":
+		bonus_view.get("stage").call("_process", 1.0)  # the stage has come in
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 
@@ -46,6 +69,15 @@ static func _spinning(rules: PachinkoRules) -> bool:
 
 static func _jackpot(rules: PachinkoRules) -> bool:
 	return rules.bonus.any_attacker_open()
+
+
+# Half way through a reach: the last reel has slowed a good deal.
+static func _mid_reach(rules: PachinkoRules) -> bool:
+	return rules.bonus.reels.reach_progress() >= 0.5
+
+
+static func _third_round(rules: PachinkoRules) -> bool:
+	return rules.bonus.rounds.round == 3 and rules.bonus.any_attacker_open()
 
 
 static func _play_until(rules: PachinkoRules, moment: Callable) -> bool:

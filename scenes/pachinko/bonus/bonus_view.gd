@@ -1,17 +1,23 @@
 extends Node
 ## Wires the bonus layer's pictures and sounds to a game: puts the bonus art and the reels
-## into the board view under the balls and the jackpot moment over them, and answers the
-## BonusMachine's signals (lamps, reel sounds, the jackpot, tulips opening).
+## into the board view under the balls and the reach stage and the jackpot's moments over
+## them, answers the BonusMachine's signals (lamps, reel sounds, the reach's rising tone,
+## the jackpot's fanfare and rounds, tulips opening), and slows the game's clock for a
+## reach (`time_scale`).
 
 const BonusArt := preload("res://scenes/pachinko/bonus/bonus_art.gd")
 const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 const JackpotBanner := preload("res://scenes/pachinko/bonus/jackpot_banner.gd")
 const FeverGlow := preload("res://scenes/pachinko/bonus/fever_glow.gd")
+const ReachStage := preload("res://scenes/pachinko/bonus/reach_stage.gd")
+const ReachSlowMotion := preload("res://scenes/pachinko/bonus/reach_slow_motion.gd")
 
 var art := BonusArt.new()
 var reels := ReelDisplay.new()
 var banner := JackpotBanner.new()
 var fever := FeverGlow.new()
+var stage := ReachStage.new()
+var slow_motion := ReachSlowMotion.new()
 
 var _sounds: SoundBank
 var _rules: PachinkoRules
@@ -28,16 +34,19 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 	board_view.move_child(reels, under + 1)
 	board_view.add_child(fever)
 	board_view.move_child(fever, under + 2)
+	board_view.add_child(stage)
 	board_view.add_child(banner)
 	(
 		SoundBank
 		. warm(
 			[
 				SoundBank.REEL_STOP,
-				SoundBank.JACKPOT,
 				SoundBank.TULIP_OPEN,
 				SoundBank.START_CATCH,
 				SoundBank.FEVER_END,
+				SoundBank.REACH_RISE,
+				SoundBank.JACKPOT_FANFARE,
+				SoundBank.ROUND_BELL,
 			]
 		)
 	)
@@ -50,12 +59,23 @@ func bind(rules: PachinkoRules) -> void:
 	art.bind(rules.level, machine)
 	reels.bind(rules.level, machine)
 	fever.bind(rules.level, machine)
+	stage.bind(rules.level, machine)
+	slow_motion.reset()
 	machine.start_caught.connect(_on_start_caught)
 	machine.reel_stopped.connect(_on_reel_stopped)
 	machine.reels_finished.connect(_on_reels_finished)
 	machine.attacker_changed.connect(_on_attacker_changed)
 	machine.tulip_changed.connect(_on_tulip_changed)
+	machine.reach_started.connect(_on_reach_started)
+	machine.jackpot_round_started.connect(_on_round_started)
+	machine.jackpot_ended.connect(_on_jackpot_ended)
 	rules.ball_won.connect(_on_ball_won)
+
+
+## The factor for the game's clock this frame of `real_delta` seconds: below 1 during a
+## reach (ReachSlowMotion).
+func time_scale(real_delta: float) -> float:
+	return slow_motion.time_scale(_rules.bonus if _rules != null else null, real_delta)
 
 
 func _on_ball_won(_id: int, pocket: int, _payout: int, _at: Vector2) -> void:
@@ -72,14 +92,29 @@ func _on_reel_stopped(reel: int, _symbol: int) -> void:
 
 func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
 	if jackpot:
-		banner.show_jackpot(_rules.level.ring_center, _rules.level.ring_radius)
-		_play(SoundBank.JACKPOT)
+		var level := _rules.level
+		var rounds := JackpotRounds.ROUNDS
+		banner.show_jackpot(level.ring_center, level.ring_radius, rounds, ReachStage.HOLD_JACKPOT)
+		_play(SoundBank.JACKPOT_FANFARE)
 
 
-func _on_attacker_changed(index: int, open: bool) -> void:
+func _on_reach_started() -> void:
+	_play(SoundBank.REACH_RISE, -3.0)
+
+
+func _on_round_started(round: int, rounds: int) -> void:
+	if round > 1:  # the first comes with the jackpot's own moment
+		banner.show_round(_rules.level.ring_center, _rules.level.ring_radius, round, rounds)
+		_play(SoundBank.ROUND_BELL, -4.0)
+
+
+func _on_jackpot_ended(paid: int) -> void:
+	banner.show_total(_rules.level.ring_center, _rules.level.ring_radius, paid)
+	_play(SoundBank.FEVER_END, -3.0)
+
+
+func _on_attacker_changed(index: int, _open: bool) -> void:
 	art.flash(index)
-	if not open and not _rules.bonus.any_attacker_open():
-		_play(SoundBank.FEVER_END, -3.0)
 
 
 func _on_tulip_changed(index: int, open: bool) -> void:

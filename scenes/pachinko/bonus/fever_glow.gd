@@ -1,8 +1,9 @@
 extends Node2D
-## The fever state: while an attacker's lid is up (a jackpot round) the ring burns with a
-## pulsing warm band, and "FEVER" with the round's seconds and catches left hangs over the
-## top of the field, so a player knows at a glance that now is the time to feed the
-## attacker. Drawn over the board, under nothing: it only tints the edge.
+## The fever state: while a jackpot is on (its rounds and the breaks between them) the ring
+## burns with a pulsing warm band, and the round ("ROUND 3 / 10") with its seconds and
+## catches left hangs over the top of the field, so a player knows at a glance that now is
+## the time to feed the attacker. Drawn over the board, under nothing: it only tints the
+## edge.
 
 const RING_WIDTH := 14.0
 const WARM := Color("ff8a2a")
@@ -20,22 +21,27 @@ func bind(level: BoardLevel, machine: BonusMachine) -> void:
 	queue_redraw()
 
 
-## True while the fever state shows (an attacker is open).
+## True while the fever state shows (a jackpot is on, or an attacker is open).
 func is_lit() -> bool:
-	return _machine != null and _machine.any_attacker_open()
+	return _machine != null and (_machine.rounds.active() or _machine.any_attacker_open())
 
 
-## The words over the field during fever: seconds and catches left of the first open
-## attacker, or "" when none is open.
+## The words over the field during fever: the round, and the seconds and catches left of
+## the first open attacker ("ROUND 3 / 10  5s  8 to catch"), the break before the next
+## round, or "" when no jackpot is on.
 func caption() -> String:
 	if not is_lit():
 		return ""
+	var round := "ROUND %d / %d" % [_machine.rounds.round, JackpotRounds.ROUNDS]
+	if _machine.rounds.in_break():
+		return "%s  next round…" % round
 	for i in _level.bonus_pockets.size():
 		if _machine.is_open(i) and _level.bonus_pockets[i].role == BonusPocketSpec.Role.ATTACKER:
 			return (
-				"FEVER  %ds  %d to catch" % [ceili(_machine.time_left(i)), _machine.catches_left(i)]
+				"%s  %ds  %d to catch"
+				% [round, ceili(_machine.time_left(i)), _machine.catches_left(i)]
 			)
-	return "FEVER"
+	return round
 
 
 func _process(delta: float) -> void:

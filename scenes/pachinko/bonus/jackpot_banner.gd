@@ -1,26 +1,73 @@
 extends Node2D
-## The jackpot moment over the board: a gold flash across the field and "JACKPOT!" growing
-## in the middle, then "ATTACKER OPEN" while it fades. Play goes on underneath: it is drawn
-## over the balls but takes no input.
+## The jackpot's moments in the middle of the board: once the reach stage has shown the
+## three alike, a gold flash across the field with "ROUND 1 / 10" growing as the attacker
+## opens; each later round announced ("ROUND 3 / 10"); and at the end what the jackpot paid.
+## Play goes on underneath: it is drawn over the balls but takes no input.
 
-const SECONDS := 3.5
+## Seconds each moment shows.
+const JACKPOT_SECONDS := 3.5
+const ROUND_SECONDS := 1.6
+const TOTAL_SECONDS := 3.0
 
 var _center := Vector2.ZERO
 var _radius := 300.0
-var _age := SECONDS
+var _age := 0.0
+var _seconds := 0.0
+var _title := ""
+var _subtitle := ""
+var _flash := false
 
 
-## Shows the moment on a board with its ring at `center`, `radius` px.
-func show_jackpot(center: Vector2, radius: float) -> void:
+## Shows the jackpot on a board with its ring at `center`, `radius` px: its first round of
+## `rounds` opens with it.
+## The moment waits `delay` seconds (while the reach stage holds the middle).
+func show_jackpot(
+	center: Vector2, radius: float, rounds := JackpotRounds.ROUNDS, delay := 0.0
+) -> void:
+	_show(center, radius, "ROUND 1 / %d" % rounds, "the attacker is open!", JACKPOT_SECONDS, true)
+	_age = -maxf(delay, 0.0)
+
+
+## Announces round `round` of `rounds`.
+func show_round(center: Vector2, radius: float, round: int, rounds: int) -> void:
+	_show(
+		center,
+		radius,
+		"ROUND %d / %d" % [round, rounds],
+		"feed the attacker!",
+		ROUND_SECONDS,
+		false
+	)
+
+
+## Shows what the jackpot paid once its last round is over.
+func show_total(center: Vector2, radius: float, paid: int) -> void:
+	var balls := "1 BALL" if paid == 1 else "%d BALLS" % paid
+	_show(center, radius, balls, "the jackpot paid", TOTAL_SECONDS, false)
+
+
+## True while a moment is on screen.
+func is_showing() -> bool:
+	return _age < _seconds
+
+
+## The words on screen now: title and subtitle ("" when nothing shows).
+func caption() -> String:
+	return "%s %s" % [_title, _subtitle] if is_showing() else ""
+
+
+func _show(
+	center: Vector2, radius: float, title: String, subtitle: String, seconds: float, flash: bool
+) -> void:
 	_center = center
 	_radius = radius
+	_title = title
+	_subtitle = subtitle
+	_seconds = seconds
+	_flash = flash
 	_age = 0.0
 	set_process(true)
-
-
-## True while the moment is on screen.
-func is_showing() -> bool:
-	return _age < SECONDS
+	queue_redraw()
 
 
 func _ready() -> void:
@@ -35,24 +82,21 @@ func _process(delta: float) -> void:
 
 
 func _draw() -> void:
-	if not is_showing():
+	if not is_showing() or _age < 0.0:
 		return
-	var t := _age / SECONDS
-	var flash := maxf(0.0, 1.0 - t * 4.0) * 0.45 + 0.12 * (0.5 + 0.5 * sin(_age * 20.0)) * (1.0 - t)
-	draw_circle(_center, _radius, Color(1.0, 0.82, 0.3, flash))
-	var fade := clampf((1.0 - t) / 0.3, 0.0, 1.0)
+	var t := _age / _seconds
+	if _flash:
+		var flash := (
+			maxf(0.0, 1.0 - t * 4.0) * 0.45 + 0.12 * (0.5 + 0.5 * sin(_age * 20.0)) * (1.0 - t)
+		)
+		draw_circle(_center, _radius, Color(1.0, 0.82, 0.3, flash))
+	var fade := clampf((1.0 - t) / 0.3, 0.0, 1.0) * clampf(_age / 0.12, 0.0, 1.0)
 	var font := ThemeDB.fallback_font
 	var size := int(40 + 30 * minf(t * 5.0, 1.0))
-	_centered(font, "JACKPOT!", _center + Vector2(0, -_radius * 0.12), size, Color("ffe14d"), fade)
-	if t > 0.25:
-		_centered(
-			font,
-			"ATTACKER OPEN",
-			_center + Vector2(0, -_radius * 0.12 + 40.0),
-			22,
-			Color.WHITE,
-			fade
-		)
+	var at := _center + Vector2(0, _radius * 0.05)
+	_centered(font, _title, at, size, Color("ffe14d"), fade)
+	if t > 0.15:
+		_centered(font, _subtitle, at + Vector2(0.0, 40.0), 26, Color.WHITE, fade)
 
 
 func _centered(font: Font, text: String, at: Vector2, size: int, color: Color, fade: float) -> void:

@@ -1,29 +1,24 @@
 extends Control
 ## The ball cup: a chrome tray heaped with balls (more balls, a bigger heap) and the count
-## written large on its front. Paid balls pour in from above one after another and the
-## count bounces as they land.
+## written large on its front. Paid balls pour in from above one after another
+## (PayoutPour) and the count rises and bounces as they land.
 
 const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
+const PayoutPour := preload("res://scenes/pachinko/hud/payout_pour.gd")
 const MAX_HEAP := 40
 const TRAY := Color("b9bfcc")
 const TRAY_DARK := Color("4b5064")
 ## The font size of "balls in the cup" under the count.
 const LABEL_FONT_SIZE := 15
 
-## Most falling balls shown for one payout (a big one still pours for a moment).
-const MAX_POUR := 14
-## Seconds between two poured balls, and the fall's acceleration (px/s²).
-const POUR_GAP := 0.07
-const POUR_GRAVITY := 1500.0
-
 var _count := 0
 var _bump := 0.0
 var _ball: Texture2D
-## Balls falling into the cup: x, y, speed and seconds still to wait, per ball.
-var _falling: Array[Vector4] = []
+var _pour := PayoutPour.new()
 
 
-## Shows `balls` balls; a rise bounces the number.
+## The cup holds `balls` balls (the rules' count, paid balls included); a rise bounces the
+## number.
 func set_count(balls: int) -> void:
 	if balls > _count:
 		_bump = 1.0
@@ -32,24 +27,23 @@ func set_count(balls: int) -> void:
 	queue_redraw()
 
 
-## Pours `balls` paid balls into the cup (an animation; the count is already set).
+## Pours `balls` paid balls into the cup: they are in the count already, and it shows
+## them as they land.
 func pour(balls: int) -> void:
-	var shown := mini(balls, MAX_POUR)
-	for i in shown:
-		var x := size.x * 0.5 + (float(i % 5) - 2.0) * 14.0
-		_falling.append(Vector4(x, -12.0, 0.0, POUR_GAP * i))
-	if shown > 0:
+	_pour.pour(balls, size.x * 0.5, size.y * 0.45 + 12.0)
+	if balls > 0:
 		set_process(true)
+		queue_redraw()
 
 
-## Balls still falling into the cup.
+## Drops still falling into the cup.
 func pouring() -> int:
-	return _falling.size()
+	return _pour.drops.size()
 
 
-## The count shown.
+## The count shown: the cup's balls less those still on their way in.
 func count() -> int:
-	return _count
+	return maxi(_count - _pour.pending(), 0)
 
 
 func _ready() -> void:
@@ -60,21 +54,10 @@ func _ready() -> void:
 
 func _process(delta: float) -> void:
 	_bump = maxf(_bump - delta * 3.0, 0.0)
-	var landing := size.y * 0.45
-	var still: Array[Vector4] = []
-	for ball in _falling:
-		if ball.w > 0.0:
-			ball.w -= delta
-		else:
-			ball.z += POUR_GRAVITY * delta
-			ball.y += ball.z * delta
-		if ball.y < landing:
-			still.append(ball)
-		else:
-			_bump = 1.0  # each landing ball bounces the count
-	_falling = still
+	if _pour.advance(delta) > 0:
+		_bump = 1.0  # each landing drop bounces the count
 	queue_redraw()
-	if _bump <= 0.0 and _falling.is_empty():
+	if _bump <= 0.0 and _pour.drops.is_empty():
 		set_process(false)
 
 
@@ -84,7 +67,7 @@ func _draw() -> void:
 	var tray_top := h * 0.45
 	var rim := Rect2(Vector2(w * 0.08, tray_top), Vector2(w * 0.84, h * 0.5))
 	# The heap: rows of balls, narrower towards the top.
-	var shown := mini(_count, MAX_HEAP)
+	var shown := mini(count(), MAX_HEAP)
 	var r := 9.0
 	var row := 0
 	var placed := 0
@@ -101,9 +84,9 @@ func _draw() -> void:
 			)
 			placed += 1
 		row += 1
-	for ball in _falling:
-		if ball.w <= 0.0:
-			var at := Vector2(ball.x, ball.y)
+	for drop in _pour.drops:
+		if drop.w <= 0.0:
+			var at := Vector2(drop.x, tray_top - drop.y)
 			draw_texture_rect(_ball, Rect2(at - Vector2(r, r), Vector2(r, r) * 2.0), false)
 	# The tray in front of the heap.
 	var tray := PackedVector2Array(
@@ -122,7 +105,7 @@ func _draw() -> void:
 	draw_line(tray[0], tray[1], Color.WHITE, 3.0, true)
 	var font := get_theme_default_font()
 	var font_size := int(40 + 14 * _bump)
-	var text := str(_count)
+	var text := str(count())
 	var tw := font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size).x
 	var base := Vector2(w * 0.5 - tw * 0.5, rim.position.y + rim.size.y * 0.5 + font_size * 0.35)
 	draw_string_outline(font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size, 6, TRAY_DARK)

@@ -1,8 +1,12 @@
 extends PanelContainer
-## Session numbers: shots, where the balls went, hits per pocket and the payout ratio.
+## Session numbers: shots, where the balls went, hits per pocket, the balls paid back this
+## session (one game, a full cup to an empty one) and the best session on this board.
 
 ## The font size of the numbers.
 const FONT_SIZE := 15
+
+## Most balls paid back in one session on this board before, or -1 for none yet.
+var best_session := -1
 
 var _text: RichTextLabel
 
@@ -23,13 +27,13 @@ func _ready() -> void:
 func show_stats(stats: Dictionary) -> void:
 	if _text == null:
 		return
-	_text.text = "\n".join(lines_for(stats))
+	_text.text = "\n".join(lines_for(stats, best_session))
 
 
 ## The panel's lines for `stats`, in the words the card and the game-over box use:
 ## "pocket hits" counts every paying piece (pockets, start pockets, attackers, tulips),
-## "paid back" the balls they paid into the cup.
-static func lines_for(stats: Dictionary) -> PackedStringArray:
+## "paid back" the balls they paid into the cup; `best` is the best session's (-1: none).
+static func lines_for(stats: Dictionary, best := -1) -> PackedStringArray:
 	var hits := 0
 	for count: int in stats.get("pocket_hits", []):
 		hits += count
@@ -43,6 +47,11 @@ static func lines_for(stats: Dictionary) -> PackedStringArray:
 				"[b]Pocket hits[/b] %d    [b]Lost in the gutter[/b] %d"
 				% [hits, stats.get("drained", 0)]
 			),
-			"[b]Paid back[/b] %d balls, %.2f a shot" % [paid, ratio],
+			"[b]Paid back[/b] %d balls this session, %.2f a shot" % [paid, ratio],
+			(
+				"[b]Best session[/b] %d balls paid back" % best
+				if best >= 0
+				else "[b]Best session[/b] none yet: this one sets it"
+			),
 		]
 	)

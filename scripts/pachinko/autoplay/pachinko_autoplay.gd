@@ -78,6 +78,8 @@ static func run(
 		"reel_spins": stats["reel_spins"],
 		"jackpots": stats["jackpots"],
 		"attacker_paid": stats["attacker_paid"],
+		"jackpot_paid": stats["jackpot_paid"],
+		"jackpots_finished": stats["jackpots_finished"],
 		"tulip_opens": stats["tulip_opens"],
 		"mode": "handle %d" % handle_power if use_handle else "single shots",
 		"accounting_ok": accounting_held and rules.accounting_ok(),

@@ -1,7 +1,8 @@
 class_name BonusMachine
 extends RefCounted
 ## The bonus layer of a pachinko machine, without pictures: start pockets spin the reels,
-## a jackpot (three equal symbols) opens the attackers' lids for a while, and tulips open
+## a jackpot (three equal symbols) opens the attackers' lids for JackpotRounds.ROUNDS
+## numbered rounds (each over after the attacker's catches or seconds), and tulips open
 ## after a catch and close after the next. It owns no balls: PachinkoRules tells it about
 ## catches (`catch`) and time (`advance`), and it switches the lids and swings the tulips'
 ## wings (the world's gates) in the world.
@@ -20,6 +21,16 @@ signal reels_finished(result: PackedInt32Array, jackpot: bool)
 signal attacker_changed(index: int, open: bool)
 ## Tulip `index` opened or closed.
 signal tulip_changed(index: int, open: bool)
+## The first two reels stopped on the same symbol: the last one decides a jackpot.
+signal reach_started
+## The last reel of a reach stopped; `jackpot` when it matched.
+signal reach_ended(jackpot: bool)
+## Round `round` of `rounds` of a jackpot began (the attackers open).
+signal jackpot_round_started(round: int, rounds: int)
+## Round `round` of `rounds` of a jackpot ended (the attackers shut).
+signal jackpot_round_ended(round: int, rounds: int)
+## A jackpot's last round ended; it paid `paid` balls.
+signal jackpot_ended(paid: int)
 
 ## Spins a start pocket can hold while the reels are busy (real machines show four lamps).
 const MAX_QUEUED := 4
@@ -30,6 +41,12 @@ var reel_spins := 0
 var jackpots := 0
 ## Balls the attackers paid.
 var attacker_paid := 0
+## Balls the attackers paid during jackpots (a jackpot's payout, summed).
+var jackpot_paid := 0
+## Jackpots whose last round has ended.
+var jackpots_finished := 0
+## The rounds of the jackpot under way (read by the view).
+var rounds := JackpotRounds.new()
 ## Times a tulip opened.
 var tulip_opens := 0
 ## The reels (read by the view).
@@ -79,6 +96,9 @@ func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
 	# hold the lambda, and the cycle would keep the machine and its world alive forever.
 	reels.reel_stopped.connect(_on_reel_stopped)
 	reels.spin_finished.connect(_on_spin_finished)
+	rounds.round_started.connect(_on_round_started)
+	rounds.round_ended.connect(_on_round_ended)
+	rounds.finished.connect(_on_jackpot_finished)
 
 
 ## True when the board has any bonus pocket.
@@ -97,11 +117,15 @@ func catch(index: int) -> int:
 				_queued.append(spec.symbols)
 			start_caught.emit(index, _queued.size())
 		BonusPocketSpec.Role.ATTACKER:
-			attacker_paid += spec.payout
+			attacker_paid += maxi(spec.payout, 0)
+			if rounds.active():
+				jackpot_paid += maxi(spec.payout, 0)
+				rounds.add_paid(spec.payout)
 			if is_open(index):
 				_catches_left[index] -= 1
 				if _catches_left[index] <= 0:
 					_set_open(index, false)
+					_end_round_when_shut()
 		BonusPocketSpec.Role.TULIP:
 			_set_open(index, not is_open(index))
 			if is_open(index):
@@ -109,19 +133,26 @@ func catch(index: int) -> int:
 	return maxi(spec.payout, 0)
 
 
-## Runs the timers for `delta` seconds of game time: open attackers count down, the reels
-## turn, and a waiting spin starts once the reels are free and no attacker is open.
+## Runs the timers for `delta` seconds of game time: open attackers count down, a jackpot's
+## break between rounds runs, the reels turn, and a waiting spin starts once the reels are
+## free and no jackpot is on.
 func advance(delta: float) -> void:
 	if _open.is_empty() or delta <= 0.0:
 		return
+	# A break that begins in this call starts counting in the next, and a round it opens
+	# is not charged for this one.
+	var was_in_break := rounds.in_break()
 	for i in _open.size():
 		if _open[i] != 0 and _is_attacker(i):
 			_time_left[i] -= delta
 			if _time_left[i] <= 0.0:
 				_set_open(i, false)
+				_end_round_when_shut()
+	if was_in_break:
+		rounds.advance(delta)
 	if reels.busy():
 		reels.advance(delta)
-	elif not _queued.is_empty() and not any_attacker_open():
+	elif not _queued.is_empty() and not rounds.active():
 		_start_spin()
 
 
@@ -167,6 +198,8 @@ func counters() -> Dictionary:
 		"reel_spins": reel_spins,
 		"jackpots": jackpots,
 		"attacker_paid": attacker_paid,
+		"jackpot_paid": jackpot_paid,
+		"jackpots_finished": jackpots_finished,
 		"tulip_opens": tulip_opens,
 	}
 
@@ -184,18 +217,50 @@ func _start_spin() -> void:
 
 func _on_reel_stopped(reel: int, symbol: int) -> void:
 	reel_stopped.emit(reel, symbol)
+	if reels.is_reach() and reel == ReelSet.REELS - 2:
+		reach_started.emit()
+	elif reels.is_reach() and reel == ReelSet.REELS - 1:
+		reach_ended.emit(reels.is_jackpot())
 
 
 func _on_spin_finished(result: PackedInt32Array, jackpot: bool) -> void:
 	if jackpot:
 		jackpots += 1
-		for i in _open.size():
-			if _is_attacker(i):
-				var spec := _level.bonus_pockets[i]
-				_time_left[i] = spec.open_seconds
-				_catches_left[i] = spec.open_catches
-				_set_open(i, true)
+		if _has_attacker():
+			rounds.begin()
 	reels_finished.emit(result, jackpot)
+
+
+func _on_round_started(round: int, count: int) -> void:
+	for i in _open.size():
+		if _is_attacker(i):
+			var spec := _level.bonus_pockets[i]
+			_time_left[i] = spec.open_seconds
+			_catches_left[i] = maxi(spec.open_catches, 1)
+			_set_open(i, true)
+	jackpot_round_started.emit(round, count)
+
+
+func _on_round_ended(round: int, count: int) -> void:
+	jackpot_round_ended.emit(round, count)
+
+
+func _on_jackpot_finished(paid: int) -> void:
+	jackpots_finished += 1
+	jackpot_ended.emit(paid)
+
+
+# A round is over once every attacker has shut.
+func _end_round_when_shut() -> void:
+	if rounds.active() and not any_attacker_open():
+		rounds.end_round()
+
+
+func _has_attacker() -> bool:
+	for i in _open.size():
+		if _is_attacker(i):
+			return true
+	return false
 
 
 func _is_attacker(index: int) -> bool:

@@ -3,7 +3,8 @@ extends RefCounted
 ## The three digital reels a start pocket spins. A spin's result is fixed when it starts
 ## (drawn by BonusMachine from the game's seeded generator); the reels then stop one by one,
 ## left to right. When the first two already match (a "reach"), the last reel keeps the
-## player waiting a little longer. Time is game time, so a replay stops them identically.
+## player waiting REACH_EXTRA seconds longer, turning slower and slower. Time is game time,
+## so a replay stops them identically.
 
 ## A reel stopped showing `symbol`.
 signal reel_stopped(reel: int, symbol: int)
@@ -13,8 +14,13 @@ signal spin_finished(result: PackedInt32Array, jackpot: bool)
 const REELS := 3
 ## Seconds after the start at which each reel stops.
 const STOP_SECONDS: Array[float] = [0.9, 1.4, 1.9]
-## Extra seconds the last reel spins during a reach.
-const REACH_EXTRA := 1.2
+## Extra seconds the last reel spins during a reach (the game view also slows its clock
+## then, so on screen it lasts longer still).
+const REACH_EXTRA := 2.0
+## Symbols a rolling reel passes per second.
+const ROLL_RATE := 14.0
+## The last reel of a reach slows to this share of ROLL_RATE by the time it stops.
+const REACH_END_RATE := 0.15
 ## Pause after the last reel stops before the next spin may start, seconds.
 const SETTLE_SECONDS := 0.5
 
@@ -31,8 +37,10 @@ var elapsed := 0.0
 var spun := false
 
 
-## True from a spin's start until its result has settled.
+## True from a spin's start until its result has settled (never before the first spin).
 func busy() -> bool:
+	if not spun:
+		return false
 	return stopped < REELS or elapsed < _last_stop() + SETTLE_SECONDS
 
 
@@ -53,6 +61,20 @@ func is_reach() -> bool:
 ## True when every reel shows the same symbol.
 func is_jackpot() -> bool:
 	return is_reach() and result[1] == result[2]
+
+
+## True while the last reel of a reach is still turning (the moment the view stages).
+func in_reach() -> bool:
+	return stopped == REELS - 1 and is_reach()
+
+
+## How far a reach has gone, 0 when the second reel stopped .. 1 as the last one stops
+## (0 when there is no reach under way).
+func reach_progress() -> float:
+	if not in_reach():
+		return 0.0
+	var from := stop_time(REELS - 2)
+	return clampf((elapsed - from) / maxf(stop_time(REELS - 1) - from, 0.001), 0.0, 1.0)
 
 
 ## The seconds at which reel `reel` stops in this spin.
@@ -82,7 +104,21 @@ func shown_symbol(reel: int) -> int:
 		return -1
 	if reel < stopped:
 		return result[reel]
-	return (int(elapsed * 14.0) + reel * 2 + result[reel]) % symbols
+	return (int(roll_position(reel)) + reel * 2 + result[reel]) % symbols
+
+
+## How many symbols reel `reel` has rolled past since the spin began (for drawing): the
+## last reel of a reach slows down evenly to REACH_END_RATE.
+func roll_position(reel: int) -> float:
+	if reel != REELS - 1 or not is_reach():
+		return elapsed * ROLL_RATE
+	var from := stop_time(REELS - 2)
+	if elapsed <= from:
+		return elapsed * ROLL_RATE
+	var span := maxf(stop_time(REELS - 1) - from, 0.001)
+	var t := minf(elapsed - from, span)
+	var slowing := (1.0 - REACH_END_RATE) * 0.5 * t * t / span
+	return from * ROLL_RATE + (t - slowing) * ROLL_RATE
 
 
 ## True while reel `reel` is still turning.

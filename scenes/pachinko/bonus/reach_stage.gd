@@ -1,0 +1,125 @@
+extends Node2D
+## The reach on centre stage: when the first two reels match, the reels come out of their
+## small window to the middle of the board, large (each reel's number SYMBOL_FONT_SIZE board
+## pixels, about 110 px tall at 1280 × 720), the last reel slowing down under "REACH!";
+## on a jackpot the three numbers flash gold under "JACKPOT!" a moment before the stage
+## goes. Drawn over the balls; play goes on underneath (slowed by ReachSlowMotion).
+
+## Seconds the stage takes to come in and to go.
+const GROW_SECONDS := 0.25
+## Seconds the stage stays after the last reel stopped: longer on a jackpot.
+const HOLD_MISS := 0.7
+const HOLD_JACKPOT := 1.6
+## One reel's box, board pixels, and the gap between two.
+const BOX := Vector2(130.0, 176.0)
+const GAP := 14.0
+## The numbers' font size, board pixels (a digit is about 0.7 of it tall).
+const SYMBOL_FONT_SIZE := 156
+const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
+
+var _machine: BonusMachine
+var _center := Vector2.ZERO
+## 0 hidden .. 1 fully on stage.
+var _shown := 0.0
+## Seconds left to hold the stage after the last reel stopped (-1: no reach ended).
+var _hold := -1.0
+var _jackpot := false
+var _clock := 0.0
+
+
+## Stages `machine`'s reaches in the middle of `level`'s ring.
+func bind(level: BoardLevel, machine: BonusMachine) -> void:
+	_machine = machine
+	_center = level.ring_center
+	_shown = 0.0
+	_hold = -1.0
+	machine.reach_ended.connect(_on_reach_ended)
+	visible = BonusGeometry.has_reels(level)
+	set_process(visible)
+	queue_redraw()
+
+
+## True while the stage shows (coming in, on, or going).
+func is_on_stage() -> bool:
+	return _shown > 0.0
+
+
+func _process(delta: float) -> void:
+	if _machine == null:
+		return
+	_clock += delta
+	var wanted := _machine.reels.in_reach() or _hold > 0.0
+	if _hold > 0.0:
+		_hold -= delta
+	_shown = move_toward(_shown, 1.0 if wanted else 0.0, delta / GROW_SECONDS)
+	queue_redraw()
+
+
+func _on_reach_ended(jackpot: bool) -> void:
+	_jackpot = jackpot
+	_hold = HOLD_JACKPOT if jackpot else HOLD_MISS
+
+
+func _draw() -> void:
+	if _machine == null or _shown <= 0.0:
+		return
+	var grow := ease(_shown, -2.0)
+	draw_set_transform(_center, 0.0, Vector2.ONE * lerpf(0.35, 1.0, grow))
+	var reels := _machine.reels
+	var width := BOX.x * ReelSet.REELS + GAP * (ReelSet.REELS + 1)
+	var panel := Rect2(Vector2(-width * 0.5, -BOX.y * 0.5 - GAP), Vector2(width, BOX.y + GAP * 2.0))
+	var alpha := grow
+	var pulse := 0.5 + 0.5 * sin(_clock * 10.0)
+	var won := _hold > 0.0 and _jackpot
+	var rim := Color("ffd84a") if won else Color(1.0, 0.35 + 0.3 * pulse, 0.2)
+	draw_rect(panel.grow(10.0), Color(rim, 0.85 * alpha))
+	draw_rect(panel, Color(0.03, 0.02, 0.07, 0.93 * alpha))
+	var font := ThemeDB.fallback_font
+	for reel in ReelSet.REELS:
+		var box := Rect2(panel.position + Vector2(GAP + reel * (BOX.x + GAP), GAP), BOX)
+		var last := reel == ReelSet.REELS - 1
+		draw_rect(box, Color(0.13, 0.1, 0.22, alpha))
+		if last and reels.in_reach():
+			# The deciding reel glows hotter as it slows.
+			var heat := reels.reach_progress()
+			draw_rect(box, Color(1.0, 0.5, 0.1, (0.15 + 0.35 * heat * pulse) * alpha))
+		var symbol := reels.shown_symbol(reel)
+		var text := ReelDisplay.face_text(symbol)
+		var color: Color = ReelDisplay.SYMBOL_COLORS[
+			maxi(symbol, 0) % ReelDisplay.SYMBOL_COLORS.size()
+		]
+		if won:
+			color = Color("fff3a0").lerp(Color("ffb000"), pulse)
+		var text_width := (
+			font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, SYMBOL_FONT_SIZE).x
+		)
+		var base := Vector2(
+			box.get_center().x - text_width * 0.5,
+			box.get_center().y + font.get_ascent(SYMBOL_FONT_SIZE) * 0.36
+		)
+		if reels.is_spinning(reel):
+			# A rolling number slides down through its box.
+			var slide := (fmod(reels.roll_position(reel), 1.0) - 0.5) * BOX.y * 0.5
+			base.y += slide
+		draw_string_outline(
+			font,
+			base,
+			text,
+			HORIZONTAL_ALIGNMENT_LEFT,
+			-1,
+			SYMBOL_FONT_SIZE,
+			12,
+			Color(0, 0, 0, alpha)
+		)
+		draw_string(
+			font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, SYMBOL_FONT_SIZE, Color(color, alpha)
+		)
+	var title := "JACKPOT!" if won else "REACH!"
+	var title_size := 64
+	var title_width := font.get_string_size(title, HORIZONTAL_ALIGNMENT_LEFT, -1, title_size).x
+	var at := Vector2(-title_width * 0.5, panel.position.y - 26.0)
+	draw_string_outline(
+		font, at, title, HORIZONTAL_ALIGNMENT_LEFT, -1, title_size, 12, Color(0.3, 0.0, 0.05, alpha)
+	)
+	draw_string(font, at, title, HORIZONTAL_ALIGNMENT_LEFT, -1, title_size, Color(rim, alpha))
+	draw_set_transform(Vector2.ZERO)

@@ -1,0 +1,130 @@
+extends RefCounted
+## How long a pachinko session lasts and what its jackpots bring, for `--sessions=N`: plays N
+## games from a full cup to an empty one with the real rules, at the autoplay's single-shot
+## pace (a random power, then a pause of MIN_GAP to MAX_GAP seconds), one seed per game, and
+## reports the median and 10th percentile of their lengths, jackpots per hour of play and
+## what a jackpot paid on average. Same board, N and seed: the same report.
+
+const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
+const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
+## The longest a session is played, game seconds: one still going then counts as this long
+## (and as `capped` in the report), so a lucky streak cannot run forever.
+const MAX_SESSION_SECONDS := 1800.0
+## A board that cannot be loaded (cli_flags.gd EXIT_USAGE).
+const EXIT_BAD_BOARD := 2
+
+
+## The `--sessions=N` command (keys sessions, board, seed): prints one JSON line; 0 when the
+## sessions were played, EXIT_BAD_BOARD when the board is not a pachinko board or N < 1.
+static func run(values: Dictionary) -> int:
+	var count: int = values["sessions"]
+	var path := AutoplayCli.resolve_board_path("pachinko", str(values["board"]))
+	var loaded := BoardLoader.load_board(path)
+	var problem := ""
+	if loaded.level == null:
+		problem = loaded.error
+	elif not loaded.level.is_pachinko():
+		problem = "%s is not a pachinko board" % path
+	elif count < 1:
+		problem = "--sessions needs at least 1 session, got %d" % count
+	if not problem.is_empty():
+		printerr("sessions: %s" % problem)
+		print(JSON.stringify({"ok": false, "error": problem}))
+		return EXIT_BAD_BOARD
+	var report := {"ok": true, "board": loaded.level.board_id}
+	report.merge(report_for(loaded.level, count, values["seed"]))
+	print(JSON.stringify(report))
+	return 0
+
+
+## Plays `count` sessions on `level` with seeds `first_seed`, `first_seed` + 1, ... and
+## summarises them (see summarize()).
+static func report_for(
+	level: BoardLevel, count: int, first_seed: int, most_seconds := MAX_SESSION_SECONDS
+) -> Dictionary:
+	var sessions: Array[Dictionary] = []
+	for i in count:
+		sessions.append(play(level, first_seed + i, most_seconds))
+	return summarize(sessions)
+
+
+## One session on `level`: a fresh game from the board's start balls, fired at the
+## autoplay's pace until the game is over or `most_seconds` have passed. Returns seconds,
+## shots, balls_won (paid back), jackpots, jackpot_payouts (per finished jackpot; one still
+## under way at the end counts what it paid so far) and capped.
+static func play(
+	level: BoardLevel, rng_seed: int, most_seconds := MAX_SESSION_SECONDS
+) -> Dictionary:
+	var rng := RandomNumberGenerator.new()
+	rng.seed = rng_seed
+	var rules := PachinkoRules.new(level, rng_seed)
+	var payouts: Array[int] = []
+	rules.bonus.jackpot_ended.connect(func(paid: int) -> void: payouts.append(paid))
+	rules.start_game()
+	var clock := 0.0
+	var next_shot := 0.0
+	var frame := PachinkoAutoplay.FRAME_SECONDS
+	while rules.state == PachinkoRules.State.PLAYING and clock < most_seconds:
+		clock += frame
+		if rules.loaded and clock >= next_shot:
+			rules.fire(rng.randf_range(0.0, 100.0))
+			next_shot = clock + rng.randf_range(PachinkoAutoplay.MIN_GAP, PachinkoAutoplay.MAX_GAP)
+		rules.advance(frame)
+	if rules.bonus.rounds.active():
+		payouts.append(rules.bonus.rounds.paid)
+	var stats := rules.stats()
+	return {
+		"seconds": clock,
+		"shots": stats["shots"],
+		"balls_won": stats["payouts"],
+		"jackpots": stats["jackpots"],
+		"jackpot_payouts": payouts,
+		"capped": rules.state == PachinkoRules.State.PLAYING,
+	}
+
+
+## The report over `sessions` (play() results): sessions, median_seconds, p10_seconds,
+## capped (sessions still going at the cap), jackpots, jackpots_per_hour (over all the
+## seconds played), jackpot_payout_mean (balls a jackpot paid, 0 with none) and
+## median_balls_won.
+static func summarize(sessions: Array[Dictionary]) -> Dictionary:
+	var seconds := PackedFloat64Array()
+	var won := PackedFloat64Array()
+	var played := 0.0
+	var jackpots := 0
+	var capped := 0
+	var payouts: Array[int] = []
+	for session in sessions:
+		seconds.append(session["seconds"])
+		won.append(session["balls_won"])
+		played += float(session["seconds"])
+		jackpots += int(session["jackpots"])
+		capped += 1 if session["capped"] else 0
+		payouts.append_array(session["jackpot_payouts"])
+	var paid := 0
+	for balls in payouts:
+		paid += balls
+	return {
+		"sessions": sessions.size(),
+		"median_seconds": snappedf(percentile(seconds, 0.5), 0.1),
+		"p10_seconds": snappedf(percentile(seconds, 0.1), 0.1),
+		"capped": capped,
+		"jackpots": jackpots,
+		"jackpots_per_hour": snappedf(jackpots * 3600.0 / played, 0.01) if played > 0.0 else 0.0,
+		"jackpot_payout_mean":
+		snappedf(float(paid) / payouts.size(), 0.1) if not payouts.is_empty() else 0.0,
+		"median_balls_won": percentile(won, 0.5),
+	}
+
+
+## The `share` (0..1) percentile of `values`, between the nearest ranks as a spreadsheet's
+## PERCENTILE does (0 for no values).
+static func percentile(values: PackedFloat64Array, share: float) -> float:
+	if values.is_empty():
+		return 0.0
+	var sorted := values.duplicate()
+	sorted.sort()
+	var at := clampf(share, 0.0, 1.0) * (sorted.size() - 1)
+	var below := floori(at)
+	var above := mini(below + 1, sorted.size() - 1)
+	return lerpf(sorted[below], sorted[above], at - below)

@@ -1,0 +1,105 @@
+extends GutTest
+## The reach and the jackpot on screen (issue 41): a reach brings the reels to the middle of
+## the board with numbers at least 80 px tall at 1280 × 720 and slows the game's clock
+## while the last reel turns; the jackpot's rounds are announced and its end says what it
+## paid; the rising tone, the fanfare and the round bell play.
+
+const GAME := "res://scenes/pachinko/pachinko_game.tscn"
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
+const ReachStage := preload("res://scenes/pachinko/bonus/reach_stage.gd")
+const ReachSlowMotion := preload("res://scenes/pachinko/bonus/reach_slow_motion.gd")
+## A digit of the fallback font is this share of its font size tall (measured on the
+## pachinko_reach shot: 156 px type, digits 109 px from top to bottom).
+const DIGIT_SHARE := 0.7
+const FRAME := 1.0 / 60.0
+const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
+
+
+class RecordingBank:
+	extends SoundBank
+	var heard: Array[StringName] = []
+
+	func play(sound: StringName, _volume_db: float = 0.0, _pitch: float = 1.0) -> bool:
+		heard.append(sound)
+		return true
+
+
+func after_each() -> void:
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+
+
+func _fever_game() -> PachinkoGame:
+	App.request_board("pachinko", "res://levels/pachinko/fever.board")
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
+	add_child_autofree(game)
+	return game
+
+
+func _start_reach(rules: PachinkoRules) -> void:
+	rules.bonus.reels.start(PackedInt32Array([3, 3, 1]), 7)
+	rules.bonus.reels.advance(ReelSet.STOP_SECONDS[1] + 0.01)
+
+
+func test_a_reach_takes_the_middle_of_the_board_in_large_numbers() -> void:
+	App.request_board("pachinko", "res://levels/pachinko/fever.board")
+	var scene: PackedScene = load(GAME)
+	var game := await StretchedWindow.open(self, scene, Vector2i(1280, 720), 2) as PachinkoGame
+	var view: Node = game.get("_bonus_view")
+	var stage: ReachStage = view.get("stage")
+	assert_false(stage.is_on_stage(), "no reach yet")
+	_start_reach(game.rules)
+	assert_true(game.rules.bonus.reels.in_reach())
+	stage._process(1.0)
+	assert_true(stage.is_on_stage())
+	var screen_scale := (
+		stage.get_global_transform_with_canvas().get_scale().y
+		* stage.get_viewport().get_final_transform().get_scale().y
+	)
+	var digit := ReachStage.SYMBOL_FONT_SIZE * DIGIT_SHARE * screen_scale
+	assert_gte(digit, 80.0, "reel numbers %.0f px tall on screen" % digit)
+	var level := game.rules.level
+	assert_eq(stage.get("_center"), level.ring_center, "in the middle of the board")
+	game.rules.bonus.reels.advance(ReelSet.REACH_EXTRA + 1.0)
+	stage._process(ReachStage.HOLD_MISS + ReachStage.GROW_SECONDS + 0.1)
+	stage._process(ReachStage.GROW_SECONDS + 0.1)
+	assert_false(stage.is_on_stage(), "gone once the last reel stopped and the moment passed")
+	game.free()  # before its window, whose last size change it would answer
+
+
+func test_a_reach_slows_the_game_clock_and_gives_it_back() -> void:
+	var game := _fever_game()
+	var view: Node = game.get("_bonus_view")
+	assert_eq(view.call("time_scale", FRAME), 1.0, "full speed with no reach")
+	_start_reach(game.rules)
+	var scale := 1.0
+	for i in 60:
+		scale = view.call("time_scale", FRAME)
+	assert_almost_eq(scale, ReachSlowMotion.SLOW_SCALE, 1e-6, "slow while the last reel turns")
+	game.rules.bonus.reels.advance(ReelSet.REACH_EXTRA + 1.0)
+	for i in 60:
+		scale = view.call("time_scale", FRAME)
+	assert_eq(scale, 1.0, "back to full speed")
+
+
+func test_reach_and_jackpot_sound_and_announce_their_rounds() -> void:
+	var game := _fever_game()
+	var view: Node = game.get("_bonus_view")
+	var bank := RecordingBank.new()
+	add_child_autofree(bank)
+	view.set("_sounds", bank)
+	var machine := game.rules.bonus
+	machine.reels.start(PackedInt32Array([2, 2, 2]), 7)
+	for i in 300:
+		machine.advance(FRAME)
+	assert_has(bank.heard, SoundBank.REACH_RISE, "the reach rises")
+	assert_has(bank.heard, SoundBank.JACKPOT_FANFARE, "the jackpot's fanfare")
+	var banner: Node = view.get("banner")
+	assert_string_contains(banner.call("caption"), "ROUND 1 / %d" % JackpotRounds.ROUNDS)
+	machine.rounds.end_round()
+	machine.advance(JackpotRounds.BREAK_SECONDS + 0.01)
+	assert_string_contains(banner.call("caption"), "ROUND 2 / %d" % JackpotRounds.ROUNDS)
+	assert_has(bank.heard, SoundBank.ROUND_BELL)
+	machine.rounds.paid = 150
+	machine.rounds.round = JackpotRounds.ROUNDS
+	machine.rounds.end_round()
+	assert_string_contains(banner.call("caption"), "150 BALLS")
