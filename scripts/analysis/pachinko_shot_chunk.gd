@@ -199,11 +199,14 @@ func _drop_hopeless() -> void:
 	var pos := _world.get_positions()
 	var vel := _world.get_velocities()
 	var two_g := 2.0 * _world.gravity.y
+	var dropped := PackedInt32Array()
 	for k in ids.size():
 		var id := ids[k]
 		if _in_field[id] != 0 and pos[k].y - vel[k].length_squared() / two_g > _hopeless_y:
-			_world.remove_ball(id)
+			dropped.append(id)
 			_ledger.record(id, AnalysisTally.Outcome.DRAINED)
+	if not dropped.is_empty():
+		_world.remove_balls(dropped)
 
 
 # The first pin a ball handed over before meeting one meets: its shot's entry (the pins of

@@ -111,6 +111,7 @@ func _follow(dt: float) -> void:
 	var ids := _world.get_ids()
 	var pos := _world.get_positions()
 	var vel := _world.get_velocities()
+	var done := PackedInt32Array()
 	for k in ids.size():
 		var id := ids[k]
 		var q := _level_of[id]
@@ -131,7 +132,9 @@ func _follow(dt: float) -> void:
 			_table.steps[q] = _step
 			_handed[id] = 1
 			if _met_pin[id] != 0 or not _to_first_pin:
-				_world.remove_ball(id)
+				done.append(id)
+	if not done.is_empty():
+		_world.remove_balls(done)
 
 
 # Adds the density cell of `p` to ball `id`'s list (the same cells as
