@@ -4,6 +4,7 @@
 # shared machine costs both alike, and each build's best run (least wall time) is its figure.
 #   tools/analysis_side_by_side.sh [OTHER_TREE]     default OTHER_TREE: /work/wt-old
 # Settings (environment): BOARD (classic), SHOTS (4000), SEED (1), THREADS (1), ROUNDS (3).
+# CPU s counts the whole process (engine start and the report too), wall s the analysis.
 # The other tree needs its own build/tools.env (its tools/setup.sh). Prints one line per run
 # and a table; the reports are kept in build/side_by_side/ (this build's last one is checked
 # against the first: the figures must not move from run to run).
@@ -17,17 +18,22 @@ THREADS=${THREADS:-1}
 ROUNDS=${ROUNDS:-3}
 OUT="$ROOT/build/side_by_side"
 mkdir -p "$OUT"
+rm -f "$OUT"/this.* "$OUT"/other.*
 [ -f "$OTHER/build/tools.env" ] || {
 	echo "analysis_side_by_side: $OTHER has no build/tools.env (run its tools/setup.sh)" >&2
 	exit 1
 }
 
-# One run of tree $1 (label $2, round $3): its report's JSON line into $OUT/$2.$3.json.
+# One run of tree $1 (label $2, round $3): its report's JSON line into $OUT/$2.$3.json and
+# the process's CPU seconds (user + system) into $OUT/$2.$3.cpu: on a busy machine the CPU
+# time moves far less than the wall time.
 run_one() {
 	local tree=$1 label=$2 round=$3
-	(cd "$tree" && tools/godot.sh --headless --path . -- --analyze=pachinko --board="$BOARD" \
-		--shots="$SHOTS" --seed="$SEED" --threads="$THREADS" 2>/dev/null) |
+	(cd "$tree" && /usr/bin/time -f '%U %S' -o "$OUT/$label.$round.time" tools/godot.sh \
+		--headless --path . -- --analyze=pachinko --board="$BOARD" --shots="$SHOTS" \
+		--seed="$SEED" --threads="$THREADS" 2>/dev/null) |
 		grep -m1 '^{' >"$OUT/$label.$round.json"
+	awk '{printf "%.2f\n", $1 + $2}' "$OUT/$label.$round.time" >"$OUT/$label.$round.cpu"
 }
 
 # A report's field (a number or string at the top level).
@@ -41,8 +47,8 @@ for round in $(seq 1 "$ROUNDS"); do
 		[ "$label" = other ] && tree=$OTHER
 		run_one "$tree" "$label" "$round"
 		f="$OUT/$label.$round.json"
-		printf '  round %d %-5s %7.1f shots/s  %6.2f s\n' "$round" "$label" \
-			"$(field "$f" shots_per_s)" "$(field "$f" wall_s)"
+		printf '  round %d %-5s %7.1f shots/s  %6.2f s  %6.2f CPU s\n' "$round" "$label" \
+			"$(field "$f" shots_per_s)" "$(field "$f" wall_s)" "$(cat "$OUT/$label.$round.cpu")"
 	done
 done
 
@@ -61,15 +67,19 @@ same_game "$OUT"/this.*.json
 same_game "$OUT"/other.*.json
 
 echo
-echo "pachinko $BOARD, $SHOTS shots, seed $SEED, $THREADS thread(s), best of $ROUNDS (alternating)"
-printf '| %-22s | %-10s | %-8s | %-10s | %-7s | %-7s |\n' build "shots/s" "wall s" ball_steps return version
-printf '|%s|%s|%s|%s|%s|%s|\n' ------------------------ ------------ ---------- ------------ --------- ---------
+echo "pachinko $BOARD, $SHOTS shots, seed $SEED, $THREADS thread(s), best of $ROUNDS (alternating;"
+echo "shots/s and wall s from the run with the least wall time, CPU s the least of the runs)"
+printf '| %-22s | %-10s | %-8s | %-8s | %-10s | %-7s | %-7s |\n' build "shots/s" "wall s" "CPU s" \
+	ball_steps return version
+printf '|%s|%s|%s|%s|%s|%s|%s|\n' ------------------------ ------------ ---------- ---------- \
+	------------ --------- ---------
 for label in this other; do
 	tree=$ROOT
 	[ "$label" = other ] && tree=$OTHER
 	best=$(for f in "$OUT/$label".*.json; do echo "$(field "$f" wall_s) $f"; done | sort -n | head -1 | cut -d' ' -f2)
+	cpu=$(sort -n "$OUT/$label".*.cpu | head -1)
 	name="$label $(git -C "$tree" rev-parse --short HEAD)"
-	printf '| %-22s | %10s | %8s | %10s | %7s | %7s |\n' "$name" "$(field "$best" shots_per_s)" \
-		"$(field "$best" wall_s)" "$(field "$best" ball_steps)" "$(field "$best" return)" \
-		"$(field "$best" version)"
+	printf '| %-22s | %10s | %8s | %8s | %10s | %7s | %7s |\n' "$name" \
+		"$(field "$best" shots_per_s)" "$(field "$best" wall_s)" "$cpu" \
+		"$(field "$best" ball_steps)" "$(field "$best" return)" "$(field "$best" version)"
 done
