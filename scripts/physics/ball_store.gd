@@ -131,9 +131,10 @@ func add(p: Vector2, v: Vector2, r: float) -> int:
 	var slot: int = ids.size()
 	index_of.append(slot)
 	for row: Array in _table:
-		# Packed arrays are references: the append grows the store's own column.
-		var values: Variant = column(row[BallFields.NAME])
-		values.append(row[BallFields.NEW_VALUE])
+		var name: StringName = row[BallFields.NAME]
+		var values: Variant = BallFields.resized(column(name), slot + 1)
+		values[slot] = row[BallFields.NEW_VALUE]
+		_set_column(name, values)
 	pos[slot] = p
 	vel[slot] = v
 	radius[slot] = r
@@ -168,8 +169,8 @@ func kill(i: int) -> void:
 
 
 ## Removes the balls of `ids` (unknown ones are ignored), closing the gaps once.
-func remove(ids: PackedInt32Array) -> void:
-	for id: int in ids:
+func remove(gone: PackedInt32Array) -> void:
+	for id: int in gone:
 		var i: int = find(id)
 		if i >= 0:
 			kill(i)
@@ -186,20 +187,20 @@ func own_buffers() -> void:
 		return
 	for name: StringName in _handed:
 		var values: Variant = column(name)
-		if not values.is_empty():
+		if not ids.is_empty():
 			values[0] = values[0]
 	_handed.clear()
 	shared = false
 
 
-## A copy of field `name` going out of the world (BallWorld.get_positions() and the other
-## getters), noted: it shares the buffer until one side writes, so the next own_buffers()
-## must make that field's buffer ours again.
-func handed_out(name: StringName) -> Variant:
+## Returns `copy`, a duplicate() of field `name` going out of the world
+## (BallWorld.get_positions() and the other getters), and notes it: it shares the buffer
+## until one side writes, so the next own_buffers() must make that field's buffer ours again.
+func handed_out(name: StringName, copy: Variant) -> Variant:
 	if not name in _handed:
 		_handed.append(name)
 	shared = true
-	return column(name).duplicate()
+	return copy
 
 
 ## Wakes every ball (gravity changed, a ball was moved or removed under a pile, ...).
@@ -228,7 +229,7 @@ func compact() -> void:
 			# Native removals (a GDScript loop moving every later ball cost about 100 µs
 			# per removed ball of a 125-ball analysis world).
 			for i: int in dead:
-				values.remove_at(i)
+				values = BallFields.without_slot(values, i)
 		_set_column(name, BallFields.resized(values, n))
 	for w: int in range(first_gap, n):
 		index_of[ids[w]] = w

@@ -240,19 +240,19 @@ func get_ball_rest_time(id: int) -> float:
 ## Positions of all balls, dense, in the same order as get_radii() and get_ids() (copies:
 ## packed arrays are shared by reference, and the world's own must not change under it).
 func get_positions() -> PackedVector2Array:
-	return _balls.handed_out(&"pos")
+	return _balls.handed_out(&"pos", _balls.pos.duplicate())
 
 
 func get_velocities() -> PackedVector2Array:
-	return _balls.handed_out(&"vel")
+	return _balls.handed_out(&"vel", _balls.vel.duplicate())
 
 
 func get_radii() -> PackedFloat32Array:
-	return _balls.handed_out(&"radius")
+	return _balls.handed_out(&"radius", _balls.radius.duplicate())
 
 
 func get_ids() -> PackedInt32Array:
-	return _balls.handed_out(&"ids")
+	return _balls.handed_out(&"ids", _balls.ids.duplicate())
 
 
 ## Turns path recording on or off (see take_step_paths()). Off by default: it costs memory
