@@ -5,6 +5,8 @@
 #   tools/editor_analysis_shot.sh [out.png]     default build/shots/editor_analysis.png
 # EDITOR_ANALYSIS_IDLE_EDITOR=1 times the run with the editor in its default low-processor mode
 # (it draws what changes, as a designer's editor does) instead of drawing every frame.
+# EDITOR_ANALYSIS_WORKER=1 runs it in a worker process (AnalysisWorker), =0 on the editor's
+# threads (unset: the analysis panel's default); the log line says which.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"

@@ -84,8 +84,11 @@ func start() -> bool:
 	for c in plan.chunk_count():
 		for q in plan.chunk_levels(c):
 			needed[q] = 1
-	if not _covers(_table, needed):
+	# A played run's shots meet other balls, so its table follows each climb on to its
+	# first pin; a contact-free run's chunks record the first pins past the hand-over.
+	if not _covers(_table, needed) or (plan.played and not _table.to_first_pin):
 		_table = RailExitTable.new()
+		_table.to_first_pin = plan.played
 		_groups = RailExitTable.groups_for(needed)
 	_group_results.resize(_groups.size())
 	_chunk_results.resize(plan.chunk_count())
@@ -198,7 +201,9 @@ func _climb_group(g: int) -> void:
 		return
 	var mark := Time.get_ticks_usec()
 	var timed := AnalysisProfile.new() if profile != null else null
-	var part := RailClimber.climb_group(plan.level, _launch_table, _groups[g], timed)
+	var part := RailClimber.climb_group(
+		plan.level, _launch_table, _groups[g], timed, _table.to_first_pin
+	)
 	_mutex.lock()
 	_group_results[g] = part
 	if timed != null:

@@ -37,6 +37,9 @@ var _hopeless_y := -INF
 ## Per ball id (ids count up from 0 in a fresh world): 1 once it is known to be out of
 ## the rail (the energy test applies).
 var _in_field := PackedByteArray()
+## Per ball id: the power band whose first pin it still has to record (the climb handed it
+## over before it met one, see RailExitTable.to_first_pin), or -1.
+var _entry_band := PackedInt32Array()
 
 
 ## `launch` is LaunchCalibration.table(plan.level), measured once beforehand on the
@@ -83,6 +86,8 @@ func run(index: int, cancelled: Callable = Callable()) -> bool:
 	_ledger.open()
 	var in_flight := _plan.in_flight
 	_world = chunk_world(_plan, false, _on_pocketed, _on_drained, _on_zone)
+	if _table != null and not _table.to_first_pin:
+		_world.pin_hit.connect(_on_pin_hit)
 	var dt := 1.0 / maxf(_world.tuning.fixed_hz, 1.0)
 	var max_steps := int(AnalysisPlan.MAX_BALL_SECONDS / dt)
 	var hopeless_ok := _world.gravity.x == 0.0 and _world.gravity.y > 0.0
@@ -166,7 +171,8 @@ func _fire(q: int, step: int) -> void:
 	var fate := _table.fate[q] if _table != null else RailExitTable.Fate.UNKNOWN
 	if fate == RailExitTable.Fate.RETURNED or fate == RailExitTable.Fate.EXIT:
 		_ledger.add_samples(_table.samples[q])
-	if _table != null:
+	var entry_later := _table != null and _table.entry_after_exit(q)
+	if _table != null and not entry_later:
 		tally.record_entry(band, _table.entry_x[q])
 	if fate == RailExitTable.Fate.RETURNED:
 		tally.record(band, AnalysisTally.Outcome.RETURNED)
@@ -183,6 +189,8 @@ func _fire(q: int, step: int) -> void:
 	_ledger.fired(id, band, step)
 	_in_field.resize(id + 1)
 	_in_field[id] = 1 if fate == RailExitTable.Fate.EXIT else 0
+	_entry_band.resize(id + 1)
+	_entry_band[id] = band if entry_later else -1
 
 
 # Balls out of the rail whose energy cannot lift them to any special pin: drained.
@@ -191,11 +199,24 @@ func _drop_hopeless() -> void:
 	var pos := _world.get_positions()
 	var vel := _world.get_velocities()
 	var two_g := 2.0 * _world.gravity.y
+	var dropped := PackedInt32Array()
 	for k in ids.size():
 		var id := ids[k]
 		if _in_field[id] != 0 and pos[k].y - vel[k].length_squared() / two_g > _hopeless_y:
-			_world.remove_ball(id)
+			dropped.append(id)
 			_ledger.record(id, AnalysisTally.Outcome.DRAINED)
+	if not dropped.is_empty():
+		_world.remove_balls(dropped)
+
+
+# The first pin a ball handed over before meeting one meets: its shot's entry (the pins of
+# the level only, as RailClimber counts them).
+func _on_pin_hit(ball_id: int, pin_index: int, _impact_speed: float) -> void:
+	var band := _entry_band[ball_id]
+	if band < 0 or pin_index >= _plan.level.pins.size():
+		return
+	_entry_band[ball_id] = -1
+	tally.record_entry(band, _plan.level.pins[pin_index].x)
 
 
 func _on_pocketed(ball_id: int, pocket_id: int) -> void:

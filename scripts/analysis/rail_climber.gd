@@ -3,7 +3,8 @@ extends RefCounted
 ## Simulates the rail climb of a group of shot powers for RailExitTable: one world of the
 ## board (the very world the shots fly in, so the hand-over is exact), one ball per power
 ## with ball contacts off, followed until it rolls back into the return zone, or is past
-## the rail's end in free flight and has met its first pin (where power aimed it).
+## the rail's end in free flight and, when the table asks for it (RailExitTable.to_first_pin),
+## has met its first pin (where power aimed it).
 
 var _level: BoardLevel
 var _launch: LaunchTable
@@ -25,19 +26,24 @@ var _ball_steps := 0
 var _cells: Array[PackedInt32Array] = []
 var _centre := Vector2.ZERO
 var _board_size := Vector2.ZERO
+## False: a ball is removed at its hand-over, met a pin or not.
+var _to_first_pin := true
 
 
 ## Climbs every power level in `levels` side by side on `level` (a pachinko board) and
 ## returns a table holding their results (other levels stay UNKNOWN). Thread-safe: it
 ## touches nothing shared but `profile` (when given, the climb's steps are counted into it).
-## `launch` is LaunchCalibration.table(level).
+## `launch` is LaunchCalibration.table(level). `to_first_pin` false stops each climb at its
+## hand-over (see RailExitTable.to_first_pin).
 static func climb_group(
 	level: BoardLevel,
 	launch: LaunchTable,
 	levels: PackedInt32Array,
-	profile: AnalysisProfile = null
+	profile: AnalysisProfile = null,
+	to_first_pin := true
 ) -> RailExitTable:
 	var climber := RailClimber.new(level, launch)
+	climber._to_first_pin = to_first_pin
 	var table := climber.climb(levels)
 	if profile != null:
 		profile.climb_groups += 1
@@ -54,6 +60,7 @@ func _init(level: BoardLevel, launch: LaunchTable) -> void:
 ## Climbs `levels`; returns a table with their fates.
 func climb(levels: PackedInt32Array) -> RailExitTable:
 	_table = RailExitTable.new()
+	_table.to_first_pin = _to_first_pin
 	_centre = _level.ring_center
 	_board_size = _level.size
 	_world = BoardWorldFactory.build(_level)
@@ -94,7 +101,7 @@ func climb(levels: PackedInt32Array) -> RailExitTable:
 
 # After a step: each ball's progress round the ring; hand over the ones past the rail's
 # end whose velocity changed by gravity alone (touching nothing). A ball handed over is
-# followed on until it meets a pin, then removed.
+# removed then, or with _to_first_pin once it has met a pin.
 func _follow(dt: float) -> void:
 	var sweep := deg_to_rad(absf(_level.rail_end_deg - _level.rail_start_deg))
 	var past := sweep + deg_to_rad(RailExitTable.EXIT_MARGIN_DEG)
@@ -104,6 +111,7 @@ func _follow(dt: float) -> void:
 	var ids := _world.get_ids()
 	var pos := _world.get_positions()
 	var vel := _world.get_velocities()
+	var done := PackedInt32Array()
 	for k in ids.size():
 		var id := ids[k]
 		var q := _level_of[id]
@@ -123,8 +131,10 @@ func _follow(dt: float) -> void:
 			_table.exit_steps[q] = _step
 			_table.steps[q] = _step
 			_handed[id] = 1
-			if _met_pin[id] != 0:
-				_world.remove_ball(id)
+			if _met_pin[id] != 0 or not _to_first_pin:
+				done.append(id)
+	if not done.is_empty():
+		_world.remove_balls(done)
 
 
 # Adds the density cell of `p` to ball `id`'s list (the same cells as

@@ -35,6 +35,12 @@ var steps := PackedInt32Array()
 ## Per power level: the x of the first pin the ball met (NAN: it met none). With no other
 ## ball in the way every shot of one power meets the same first pin.
 var entry_x := PackedFloat32Array()
+## True when each EXIT climb was followed on past the hand-over to its first pin (a played
+## run needs that: its shots meet other balls). False: an EXIT climb stops at the hand-over,
+## and where the ball had met no pin by then entry_x is NAN and the contact-free chunk, whose
+## ball flies on from the same state, records the first pin as its shot meets it (the
+## part past the hand-over was about half the climbs' ball-steps).
+var to_first_pin := true
 
 
 func _init() -> void:
@@ -63,6 +69,12 @@ static func groups_for(needed: PackedByteArray) -> Array[PackedInt32Array]:
 	if not current.is_empty():
 		groups.append(current)
 	return groups
+
+
+## True when the shots of power level `q` must record their own first pin (see
+## to_first_pin): the climb handed the ball over before it met one.
+func entry_after_exit(q: int) -> bool:
+	return not to_first_pin and fate[q] == Fate.EXIT and is_nan(entry_x[q])
 
 
 ## Copies a climbed group's results (from RailClimber.climb_group) into the table.

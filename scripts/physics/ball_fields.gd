@@ -123,6 +123,36 @@ static func resized(column: Variant, size: int) -> Variant:
 	return out
 
 
+## `column` (one table array) without slot `i`, removed natively. A field that is not a
+## Packed array is an error.
+static func without_slot(column: Variant, i: int) -> Variant:
+	var out: Variant = null
+	match typeof(column):
+		TYPE_PACKED_VECTOR2_ARRAY:
+			var v2: PackedVector2Array = column
+			v2.remove_at(i)
+			out = v2
+		TYPE_PACKED_FLOAT32_ARRAY:
+			var f32: PackedFloat32Array = column
+			f32.remove_at(i)
+			out = f32
+		TYPE_PACKED_INT32_ARRAY:
+			var i32: PackedInt32Array = column
+			i32.remove_at(i)
+			out = i32
+		TYPE_PACKED_INT64_ARRAY:
+			var i64: PackedInt64Array = column
+			i64.remove_at(i)
+			out = i64
+		TYPE_PACKED_BYTE_ARRAY:
+			var bytes: PackedByteArray = column
+			bytes.remove_at(i)
+			out = bytes
+		_:
+			push_error("BallFields: a ball field must be a Packed array (type %d)" % typeof(column))
+	return out
+
+
 static func _member_names() -> Array[StringName]:
 	var out: Array[StringName] = []
 	for row: Array in TABLE:

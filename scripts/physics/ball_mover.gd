@@ -32,6 +32,9 @@ const MAX_SUBSTEPS := 1024
 ##   passed over;
 ## - a ball touching nothing now or last step keeps its contact slots as they are (that
 ##   saves writes for most of a flowing board);
+## - a ball with no push and no windmill about gets its substep count here, and a moving
+##   ball on a board with zones alone (every pachinko board) its zone-edge test: those two
+##   calls, and the one to _after_move(), were a quarter of a contact-free world's step;
 ## - the broad phase's key for next step (see BallStore.cell_keys) is rewritten only when
 ##   the ball left its cell (found by its old key in BallStore.sorted_keys), and not at all
 ##   when the keys are stale anyway (no broad phase ran: it bins every ball again before it
@@ -58,8 +61,12 @@ func move_range(from: int, to: int) -> void:
 			_set_radius(_radius[i])
 		var steps := 1
 		_push_step = _push[i]
-		if _push_step != Vector2.ZERO or _has_wheels or (_v * _dt).length() > _max_travel:
+		if _push_step != Vector2.ZERO or _has_wheels:
 			steps = _substeps(_push_step)
+		else:
+			var travel: float = (_v * _dt).length()
+			if travel > _max_travel:
+				steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
 		_h = _dt / steps
 		_p_start = _p
 		var c := 0  # the ball's cell (its key), while no contact has moved it
@@ -92,14 +99,7 @@ func move_range(from: int, to: int) -> void:
 			if _gone:
 				break
 		if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
-			_contact_a[i] = _cur_a
-			_contact_b[i] = _cur_b
-			_support_static[i] = _n_a
-			_support_static2[i] = _n_b
-			_cur_a = ContactId.NONE
-			_cur_b = ContactId.NONE
-			_n_a = Vector2.ZERO
-			_n_b = Vector2.ZERO
+			_write_contacts(i)
 		_pos[i] = _p
 		_vel[i] = _v
 		if _keyed:
@@ -110,10 +110,31 @@ func move_range(from: int, to: int) -> void:
 				_rekey(i, c)
 		if _gone:
 			_alive[i] = 0
-		elif _has_sensors or _v.length_squared() < _rest_speed2:
+		elif _v.length_squared() < _rest_speed2 or (_has_sensors and not _zones_only):
 			_after_move(i)
 		else:
 			_rest[i] = 0.0
+			if _has_sensors:
+				for k: int in _zone_pos.size():
+					var zr: float = _zone_rad[k]
+					var inside: bool = _p.distance_squared_to(_zone_pos[k]) <= zr * zr
+					if inside != ((_zone_mask[i] & (1 << k)) != 0):
+						_sense(i)
+						break
+
+
+## Stores the ball's contacts of this step and their normals (its supports next step),
+## then clears them for the next ball. Only a ball touching something now or last step
+## comes here: the others keep their contact slots as they are.
+func _write_contacts(i: int) -> void:
+	_contact_a[i] = _cur_a
+	_contact_b[i] = _cur_b
+	_support_static[i] = _n_a
+	_support_static2[i] = _n_b
+	_cur_a = ContactId.NONE
+	_cur_b = ContactId.NONE
+	_n_a = Vector2.ZERO
+	_n_b = Vector2.ZERO
 
 
 ## Ball `i` left its cell for cell `c`: its broad-phase key is rewritten where the broad
@@ -142,6 +163,11 @@ func _after_move(i: int) -> void:
 		return
 	if _zones_only and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad):
 		return
+	_sense(i)
+
+
+## Ball `i`'s sensor pass (BallSensors.sense): a ball that fell in a hole leaves the world.
+func _sense(i: int) -> void:
 	if BallSensors.sense(_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed):
 		_alive[i] = 0
 

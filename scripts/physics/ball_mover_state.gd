@@ -8,7 +8,6 @@ extends RefCounted
 ## read, a named read a hash lookup, and the motion stage reads them per substep.
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
-const BallFields := preload("res://scripts/physics/ball_fields.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
@@ -38,7 +37,8 @@ var wheel_push := PackedFloat64Array()
 # The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
 # only), static geometry (read only) and constants. Members rather than reads through the
 # store and geometry objects: a member is one indexed read, a named read a hash lookup.
-# The ball arrays are the BallFields.TABLE rows this class declares as `_name`.
+# The ball arrays are the BallFields.TABLE rows this class declares as `_name` (see
+# _take_balls()).
 var _pos := PackedVector2Array()
 var _vel := PackedVector2Array()
 var _radius := PackedFloat32Array()
@@ -63,8 +63,6 @@ var _key_cell := PackedInt32Array()
 var _sorted_keys := PackedInt64Array()
 ## The store itself, for the rarer per-ball work that reads it by name (BallSleep.sleep_if_settled).
 var _store: BallStore
-## The BallFields.TABLE rows this class declares (see BallFields.take()).
-var _field_rows: PackedInt32Array = BallFields.rows_declared_by(self)
 ## 1 for each hit event kind (BallEvents.Kind.PIN_HIT, WALL_HIT, RING_HIT, BLADE_HIT) some signal
 ## handler listens to: the others are not queued (on a busy board most events are hits).
 var _hits_heard := PackedByteArray([1, 1, 1, 1])
@@ -215,9 +213,31 @@ func begin(
 	wheel_push.resize(0)
 
 
+# BallFields.take(b, self) written out: a named set and get per row cost about 6 µs a
+# step (in the editor, where the member names are made on each call, more), and each
+# analysis world steps thousands of times. tests/unit/test_ball_fields.gd pins it to take().
 func _take_balls(b: BallStore) -> void:
 	_store = b
-	BallFields.take(b, self, _field_rows)
+	_pos = b.pos
+	_vel = b.vel
+	_radius = b.radius
+	_ids = b.ids
+	_alive = b.alive
+	_rest = b.rest
+	_asleep = b.asleep
+	_drain_hits = b.drain_hits
+	_drain_time = b.drain_time
+	_goal_mask = b.goal_mask
+	_zone_mask = b.zone_mask
+	_contact_a = b.contact_a
+	_contact_b = b.contact_b
+	_support_static = b.support_static
+	_support_static2 = b.support_static2
+	_support_ball = b.support_ball
+	_sleep_ball_normal = b.sleep_ball_normal
+	_push = b.push
+	_cell_keys = b.cell_keys
+	_key_cell = b.key_cell
 	_keyed = b.keys_valid
 	_sorted_keys = b.sorted_keys
 

@@ -34,12 +34,38 @@ const EPS := ContactMath.EPS
 ## Called only when it is past that. A bounce then leaves the ball the ring's least
 ## horizontal speed (as a pin does). On the drain arc a bounce counts toward draining, and
 ## so does time spent rolling there.
+## A ball riding the ring (up the launch rail: about one ring contact a step) slides, and
+## that answer is respond()'s written out here, two calls fewer a contact;
+## tests/unit/test_ring_slide.gd pins it to respond() bit for bit.
 func _touch_ring() -> void:
 	var d: Vector2 = _p - _ring_center
 	var dist: float = sqrt(d.length_squared())
 	var nrm: Vector2 = -d / dist
 	_p = _ring_center + d * (_ring_lim / dist)
-	var bounced: bool = respond(ContactId.RING, _ring_center, d, nrm, _ring_lim, Surface.RING, 0)
+	var bounced := false
+	var vn: float = _v.dot(nrm)
+	if vn < 0.0:
+		var id: int = ContactId.RING
+		var held: bool = id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
+		var gn_dt: float = _gravity.dot(nrm) * _dt
+		if held or not ContactRule.bounces(vn, gn_dt, _threshold):
+			var vt: Vector2 = _v - nrm * vn
+			if _ring_lim > EPS:
+				var t2: float = vt.length_squared()
+				if t2 > EPS:
+					var c: float = maxf(
+						minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * (_h / _ring_lim)
+					)
+					vt *= sqrt((t2 + c * c) / t2)
+			_v = vt
+			if _cur_a == ContactId.NONE or _cur_a == id:
+				_cur_a = id
+				_n_a = nrm
+			else:
+				_cur_b = id
+				_n_b = nrm
+		else:
+			bounced = respond(id, _ring_center, d, nrm, _ring_lim, Surface.RING, 0)
 	# Only a bounce (the chapter's ring hit): a ball riding the ring up or down the rail
 	# must be free to stop and roll back, which a kept sideways speed would forbid.
 	if bounced and absf(_v.x) < _ring_min_speed_x:

@@ -9,7 +9,6 @@ extends RefCounted
 ## side by side: the solve writes only the two balls of each pair, and reads only them.
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
-const BallFields := preload("res://scripts/physics/ball_fields.gd")
 const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
 ## A support counts when its normal is within about 60° of the line between two balls.
@@ -36,8 +35,6 @@ var _support_static := PackedVector2Array()
 var _support_static2 := PackedVector2Array()
 var _support_ball := PackedVector2Array()
 var _sup_next := PackedVector2Array()
-## The BallFields.TABLE rows this class declares (see BallFields.take()).
-var _field_rows: PackedInt32Array = BallFields.rows_declared_by(self)
 var _restitution := 0.0
 var _threshold := 0.0
 var _wake_speed := 0.0
@@ -62,11 +59,26 @@ func begin(
 	b.touching.fill(0)
 	_sup_next = PackedVector2Array()
 	_sup_next.resize(n)
-	BallFields.take(b, self, _field_rows)
+	_take_balls(b)
 	_restitution = restitution
 	_threshold = threshold
 	_wake_speed = wake_speed
 	_gravity_dt = gravity_dt
+
+
+# BallFields.take(b, self) written out, as in BallMoverState._take_balls() (pinned to it by
+# tests/unit/test_ball_fields.gd).
+func _take_balls(b: BallStore) -> void:
+	_pos = b.pos
+	_radius = b.radius
+	_vel = b.vel
+	_push = b.push
+	_touching = b.touching
+	_asleep = b.asleep
+	_rest = b.rest
+	_support_static = b.support_static
+	_support_static2 = b.support_static2
+	_support_ball = b.support_ball
 
 
 ## Hands the supports found this step to the store (each ball's ball support next step).

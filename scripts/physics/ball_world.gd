@@ -169,17 +169,17 @@ func spawn_ball(pos: Vector2, vel: Vector2, radius: float) -> int:
 
 ## Removes a ball (no signal). Unknown ids are ignored.
 func remove_ball(id: int) -> void:
-	var i: int = _balls.find(id)
-	if i >= 0:
-		_balls.kill(i)
-		_balls.compact()
+	_balls.remove(PackedInt32Array([id]))
+
+
+## remove_ball() on each of `ids`, with one compaction for all (no signal, unknown ignored).
+func remove_balls(ids: PackedInt32Array) -> void:
+	_balls.remove(ids)
 
 
 ## Removes every ball.
 func clear_balls() -> void:
-	for i: int in _balls.ids.size():
-		_balls.kill(i)
-	_balls.compact()
+	_balls.remove(_balls.ids)
 
 
 func has_ball(id: int) -> bool:
@@ -246,19 +246,19 @@ func get_ball_rest_time(id: int) -> float:
 ## Positions of all balls, dense, in the same order as get_radii() and get_ids() (copies:
 ## packed arrays are shared by reference, and the world's own must not change under it).
 func get_positions() -> PackedVector2Array:
-	return _balls.handed_out(_balls.pos.duplicate())
+	return _balls.handed_out(&"pos", _balls.pos.duplicate())
 
 
 func get_velocities() -> PackedVector2Array:
-	return _balls.handed_out(_balls.vel.duplicate())
+	return _balls.handed_out(&"vel", _balls.vel.duplicate())
 
 
 func get_radii() -> PackedFloat32Array:
-	return _balls.handed_out(_balls.radius.duplicate())
+	return _balls.handed_out(&"radius", _balls.radius.duplicate())
 
 
 func get_ids() -> PackedInt32Array:
-	return _balls.handed_out(_balls.ids.duplicate())
+	return _balls.handed_out(&"ids", _balls.ids.duplicate())
 
 
 ## Turns path recording on or off (see take_step_paths()). Off by default: it costs memory

@@ -1,11 +1,13 @@
 extends SceneTree
 ## `make bench`: the pachinko play analysis's speed, shots per second on Classic and Fever
-## on one thread and on every core (the contact-free plan of `--analyze` and the editor's
-## Analyze, without the bonus-open second run), with where each run's time went
-## (AnalysisProfile: rail climbs, stepping, the rest) and the figures that must not move
-## with the speed (return, ball-steps). Each figure is the best of ROUNDS runs, the runs of
-## one board taken in turn (1 thread, all threads, 1 thread, ...), so a busy moment costs
-## one run, not a figure. Writes build/bench/analysis.json.
+## on one thread, on every core, and in a worker process on every core (AnalysisWorker, the
+## editor's route: the game binary started headless, its start-up counted) (the
+## contact-free plan of `--analyze` and the editor's Analyze, without the bonus-open second
+## run), with where each in-process run's time went (AnalysisProfile: rail climbs,
+## stepping, the rest) and the figures that must not move with the speed (return,
+## ball-steps: the worker's must equal the threads'). Each figure is the best of ROUNDS
+## runs, the runs of one board taken in turn (1 thread, all threads, worker, 1 thread, ...),
+## so a busy moment costs one run, not a figure. Writes build/bench/analysis.json.
 ##
 ## `-- --analysis-shots=N` changes the shots per run (default SHOTS).
 
@@ -29,9 +31,12 @@ func _bench() -> void:
 		if arg.begins_with("--analysis-shots="):
 			shots = maxi(int(arg.get_slice("=", 1)), 1)
 	var cores := OS.get_processor_count()
-	var thread_counts: Array[int] = [1]
+	# Each run: [threads, in a worker process].
+	var modes: Array[Vector2i] = [Vector2i(1, 0)]
 	if cores > 1:
-		thread_counts.append(cores)
+		modes.append(Vector2i(cores, 0))
+	if AnalysisWorker.available():
+		modes.append(Vector2i(cores, 1))
 	var rows: Array[Dictionary] = []
 	var started := Time.get_ticks_msec()
 	for board in BOARDS:
@@ -41,21 +46,28 @@ func _bench() -> void:
 			quit(1)
 			return
 		var best: Array[Dictionary] = []
-		best.resize(thread_counts.size())
+		best.resize(modes.size())
 		for round in ROUNDS:
-			for t in thread_counts.size():
-				var run := _run(loaded.level, shots, thread_counts[t])
+			for m in modes.size():
+				var run := _run(loaded.level, shots, modes[m].x, modes[m].y != 0)
+				if run.is_empty():
+					quit(1)
+					return
 				print(
 					(
-						"  %s, %d thread(s), round %d: %.1f shots/s"
-						% [board, thread_counts[t], round + 1, run["shots_per_s"]]
+						"  %s, %s, round %d: %.1f shots/s"
+						% [board, _mode_name(run), round + 1, run["shots_per_s"]]
 					)
 				)
-				if best[t].is_empty() or run["shots_per_s"] > best[t]["shots_per_s"]:
-					best[t] = run
+				if best[m].is_empty() or run["shots_per_s"] > best[m]["shots_per_s"]:
+					best[m] = run
 		for row in best:
 			row["board"] = board
 			rows.append(row)
+			if row["worker"] and row["ball_steps"] != best[0]["ball_steps"]:
+				printerr("bench_analysis: the worker's figures differ from this process's")
+				quit(1)
+				return
 	_print_table(rows)
 	var out := {
 		"shots": shots,
@@ -78,24 +90,36 @@ func _bench() -> void:
 	quit(0)
 
 
-# One analysis of `shots` shots on `level` with `threads` threads, profiled.
-func _run(level: BoardLevel, shots: int, threads: int) -> Dictionary:
+# One analysis of `shots` shots on `level` with `threads` threads, profiled, here or (with
+# `worker`) in a worker process (not profiled: its stages are another process's). {} with
+# an error when the worker failed.
+func _run(level: BoardLevel, shots: int, threads: int, worker: bool) -> Dictionary:
 	var plan := AnalysisPlan.create(level, shots, SEED)
 	plan.threads = threads
-	var analysis := PachinkoAnalysis.new(plan)
-	analysis.profile = AnalysisProfile.new()
+	var analysis := AnalysisWorker.new(plan) if worker else PachinkoAnalysis.new(plan)
+	if not worker:
+		analysis.profile = AnalysisProfile.new()
 	var tally := analysis.run()
+	if tally == null:
+		printerr("bench_analysis: the worker failed: %s" % (analysis as AnalysisWorker).failure)
+		return {}
 	var report := AnalysisReport.build(plan, tally, analysis.wall_seconds)
-	var profile := analysis.profile.to_dict()
+	var profile := analysis.profile.to_dict() if not worker else {}
 	return {
 		"threads": threads,
+		"worker": worker,
 		"shots_per_s": report["shots_per_s"],
 		"wall_s": report["wall_s"],
 		"return": report["return"],
 		"ball_steps": tally.ball_steps,
-		"climb_ball_steps": profile["climb_ball_steps"],
-		"stage_seconds": profile["seconds"],
+		"climb_ball_steps": profile.get("climb_ball_steps", -1),
+		"stage_seconds": profile.get("seconds", {}),
 	}
+
+
+static func _mode_name(run: Dictionary) -> String:
+	var name := "%d thread(s)" % run["threads"]
+	return name + " in a worker" if run["worker"] else name
 
 
 func _print_table(rows: Array[Dictionary]) -> void:
@@ -103,10 +127,10 @@ func _print_table(rows: Array[Dictionary]) -> void:
 	print("Play analysis (best of %d; stage seconds summed over threads)" % ROUNDS)
 	print(
 		(
-			"%-8s %7s %9s %7s %7s %7s %7s %8s %11s"
+			"%-8s %-24s %9s %7s %7s %7s %7s %8s %11s"
 			% [
 				"board",
-				"threads",
+				"run",
 				"shots/s",
 				"wall s",
 				"climb",
@@ -123,17 +147,20 @@ func _print_table(rows: Array[Dictionary]) -> void:
 		for stage: String in s:
 			if stage != "climb" and stage != "step":
 				other += float(s[stage])
+		var stages := ["-", "-", "-"]
+		if not s.is_empty():
+			stages = ["%.2f" % s["climb"], "%.2f" % s["step"], "%.2f" % other]
 		print(
 			(
-				"%-8s %7d %9.1f %7.2f %7.2f %7.2f %7.2f %8.4f %11d"
+				"%-8s %-24s %9.1f %7.2f %7s %7s %7s %8.4f %11d"
 				% [
 					row["board"],
-					row["threads"],
+					_mode_name(row),
 					row["shots_per_s"],
 					row["wall_s"],
-					s["climb"],
-					s["step"],
-					other,
+					stages[0],
+					stages[1],
+					stages[2],
 					row["return"],
 					row["ball_steps"],
 				]

@@ -95,6 +95,56 @@ func test_climbs_handed_on_to_the_bonus_open_run_give_its_own_figures() -> void:
 	assert_gt(other.profile.climb_groups, 0, "a table that misses levels is not used")
 
 
+func test_climbs_stopped_at_the_hand_over_leave_the_same_first_pins() -> void:
+	# A contact-free run stops each climb at its hand-over; the chunks record the first pins
+	# met past it, which must be the ones a climb followed on to the first pin finds.
+	var plan := AnalysisPlan.create(_classic(), 250, 4)
+	var stopped := PachinkoAnalysis.new(plan)
+	stopped.profile = AnalysisProfile.new()
+	var tally := stopped.run()
+	var table := stopped.climb_table()
+	assert_false(table.to_first_pin, "a contact-free run stops at the hand-over")
+	var later := 0
+	for q in plan.chunk_levels(0):
+		later += 1 if table.entry_after_exit(q) else 0
+	assert_gt(later, 100, "most first pins come after the hand-over")
+	var followed := RailExitTable.new()
+	var needed := PackedByteArray()
+	needed.resize(AnalysisPlan.level_count())
+	for q in plan.chunk_levels(0):
+		needed[q] = 1
+	var launch: LaunchTable = PachinkoAnalysis.LaunchCalibration.table(plan.level)
+	var climbs := AnalysisProfile.new()
+	for group in RailExitTable.groups_for(needed):
+		followed.store(RailClimber.climb_group(plan.level, launch, group, climbs), group)
+	var again := PachinkoAnalysis.new(plan)
+	again.reuse_climbs(followed)
+	var tally_followed := again.run()
+	assert_eq(tally.band_entry, tally_followed.band_entry, "the same first pins")
+	var a := AnalysisReport.build(plan, tally, 1.0)
+	var b := AnalysisReport.build(plan, tally_followed, 1.0)
+	assert_eq(JSON.stringify(a), JSON.stringify(b), "the same figures")
+	assert_eq(tally.density, tally_followed.density, "the same heat map")
+	assert_lt(stopped.profile.climb_ball_steps, climbs.climb_ball_steps * 0.7, "shorter climbs")
+
+
+func test_a_played_run_climbs_on_to_the_first_pin() -> void:
+	# Its shots meet other balls, so their first pins come from the climbs: a table that
+	# stopped at the hand-over is not taken.
+	var plan := AnalysisPlan.create(_classic(), 250, 4)
+	var contact_free := PachinkoAnalysis.new(plan)
+	contact_free.run()
+	var played_plan := AnalysisPlan.create(_classic(), 250, 4)
+	played_plan.played = true
+	var played := PachinkoAnalysis.new(played_plan)
+	played.reuse_climbs(contact_free.climb_table())
+	assert_true(played.start())
+	assert_true(played.climb_table().to_first_pin, "its own climbs, to the first pin")
+	played.cancel()
+	while not played.poll():
+		OS.delay_msec(5)
+
+
 func test_each_band_reports_where_its_shots_first_met_a_pin() -> void:
 	# 400 shots a band: the weak fifth's entries cluster at x 541 and 554..567 (median 554
 	# over 10000 shots), so 100 shots a band could put the median on either side of 548.

@@ -122,6 +122,24 @@ func test_the_stages_take_every_table_field_they_declare() -> void:
 	assert_gt(taken, 20, "the mover and the solve read most fields through the table")
 
 
+func test_the_written_out_takes_share_every_declared_field_with_the_store() -> void:
+	# The mover and the solve take their rows member by member (BallFields.take() written
+	# out, for speed): each must hold the store's very array (a lane writes through it),
+	# for every row it declares, as take() would.
+	var b := BallStore.new()
+	b.add(Vector2.ZERO, Vector2.ZERO, 5.0)
+	for stage: Object in [BallMover.new(), BallSolve.new()]:
+		stage.call(&"_take_balls", b)
+		var declared := 0
+		for row: Array in BallFields.TABLE:
+			var name: StringName = row[BallFields.NAME]
+			var member := StringName("_" + String(name))
+			if member in stage:
+				declared += 1
+				assert_true(is_same(stage.get(member), b.column(name)), "%s shared" % member)
+		assert_gt(declared, 9, "the stage declares its rows")
+
+
 ## In the Godot editor a script that is not @tool never runs its static initializers, so
 ## BallFields' member list stays empty there; the editor's play analysis (the rail climb,
 ## the shot chunks, the maze pilot) steps BallWorlds all the same. Before the fix every

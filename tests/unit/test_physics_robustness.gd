@@ -125,6 +125,27 @@ func test_removed_ids_stay_gone_and_are_not_reused() -> void:
 	assert_eq(w.ball_count(), 2)
 
 
+func test_removing_several_balls_at_once_leaves_the_world_one_by_one_leaves() -> void:
+	var worlds: Array[BallWorld] = []
+	for k in 2:
+		var w := BallWorld.new(TuningPresets.pachinko())
+		w.shapes.set_ring(Vector2.ZERO, 200.0)
+		for i in 8:
+			w.spawn_ball(Vector2(i * 12 - 48, i * 5), Vector2(i * 10, -i * 7), 5.0)
+		for _i: int in 30:
+			w.step(1.0 / 120.0)
+		worlds.append(w)
+	var gone := PackedInt32Array([6, 1, 4, 77])
+	for id: int in gone:
+		worlds[0].remove_ball(id)
+	worlds[1].remove_balls(gone)
+	assert_eq(worlds[1].get_ids(), PackedInt32Array([0, 2, 3, 5, 7]))
+	for _i: int in 60:
+		for w: BallWorld in worlds:
+			w.step(1.0 / 120.0)
+	assert_eq(worlds[1].state_hash(), worlds[0].state_hash(), "the same world after")
+
+
 ## A handler that steps the world from inside the step's own signal would run a step inside
 ## a half-done one: it is refused with an error, and the outer step finishes as usual.
 func test_a_step_from_inside_a_steps_signal_is_refused() -> void:

@@ -47,14 +47,23 @@ func _run() -> void:
 	# frame; the picture is taken with every frame drawn again.
 	var idle_editor := OS.get_environment("EDITOR_ANALYSIS_IDLE_EDITOR") == "1"
 	OS.low_processor_usage_mode = idle_editor
+	# EDITOR_ANALYSIS_WORKER=1 / 0 runs it in a worker process / on the editor's threads
+	# (unset: the panel's default), to time the two side by side.
+	var worker := OS.get_environment("EDITOR_ANALYSIS_WORKER")
+	if not is_maze and worker in ["0", "1"]:
+		panel.set("use_worker", worker == "1")
 	panel.call("start")
 	var started := Time.get_ticks_msec()
 	while panel.call("is_running") and Time.get_ticks_msec() - started < RUN_LIMIT * 1000.0:
 		await _frames(10)
 	print(
 		(
-			"Analysis shot: run took %.1f s%s"
-			% [(Time.get_ticks_msec() - started) / 1000.0, " (idle editor)" if idle_editor else ""]
+			"Analysis shot: run took %.1f s%s%s"
+			% [
+				(Time.get_ticks_msec() - started) / 1000.0,
+				" (idle editor)" if idle_editor else "",
+				" (worker process)" if panel.get("use_worker") else " (editor threads)",
+			]
 		)
 	)
 	OS.low_processor_usage_mode = false

@@ -32,10 +32,11 @@ const UPDATE_MS := 400
 ## Shots a run fires (tests fire fewer).
 var shots := AnalysisPlan.EDITOR_SHOTS
 ## True runs the analysis in a worker process when one can start (AnalysisWorker.available);
-## false, or a worker that fails, runs it on the editor's own threads. Off for now: on this
-## 2-core machine shared with other work (load 7-11), 10000 shots on Classic took 74-110 s
-## in the worker against 35-76 s on the editor's threads (tools/editor_analysis_shot.sh),
-## the worker getting about a third of a core; to be measured again on a quiet machine.
+## false, or a worker that fails, runs it on the editor's own threads. Off: measured in the
+## editor (tools/editor_analysis_shot.sh, Classic, 10000 shots, 2 cores shared with other
+## work, load 8-12), the editor's threads took 33.7-41.0 s drawing every frame and 43.6 s
+## idle, the worker 83.5 s and 48.8 s (the headless command line: 30.0 s); the editor's
+## threads no longer lag since the physics stopped looking its ball fields up by name.
 var use_worker := false
 
 var _level: BoardLevel
