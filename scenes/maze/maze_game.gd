@@ -200,10 +200,10 @@ func _on_game_reset() -> void:
 	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
-	_note.show_note(
-		"Tilt the board to start!",
-		MazeHints.start(rules.hard_mode, rules.ball_total(), rules.level.holes.size())
-	)
+	var hint := MazeHints.start(rules.hard_mode, rules.ball_total(), rules.level.holes.size())
+	if _ghost != null:
+		hint += " " + MazeHints.ghost()
+	_note.show_note("Tilt the board to start!", hint)
 	_show_best()
 
 
@@ -216,7 +216,9 @@ func _on_won(seconds: float) -> void:
 	if best:
 		var path := ReplayStore.best_maze_path(board_id, rules.hard_mode)
 		ReplayStore.save(_recorder.finish(), path)
-	_note.show_note("Congrats, you did it!", MazeHints.won(rules.hard_mode))
+	_note.show_note(
+		"Congrats, you did it!", MazeHints.won(rules.hard_mode, rules.level.holes.size())
+	)
 	_next_medal.text = summary.medal_line()
 	_show_best()
 	_win_panel.present(summary, rules.hard_mode, not _next_board_path().is_empty())

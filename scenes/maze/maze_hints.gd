@@ -28,12 +28,21 @@ static func start(hard: bool, balls: int = 4, holes: int = 1) -> String:
 			"Tilt with the arrow keys or the joystick: the ball rolls downhill."
 			+ " Roll it into the round dip."
 		)
+	if holes == 0:
+		return "Roll every ball into the round dip."
 	return "Roll every ball into the round dip. Ready for hard mode? Press %s" % _hard()
 
 
-## The hint under "Congrats, you did it!" (hard mode has nothing harder to offer).
-static func won(hard: bool) -> String:
-	return "" if hard else "Press %s for hard mode" % _hard()
+## The line under the start hint when the best run's ghost rolls beside the balls (a play
+## trial took the pale ball for one more ball of its own).
+static func ghost() -> String:
+	return "The pale ball is your best run."
+
+
+## The hint under "Congrats, you did it!" (hard mode has nothing harder to offer, and a board
+## without black holes has no hard mode worth asking for).
+static func won(hard: bool, holes: int = 1) -> String:
+	return "" if hard or holes == 0 else "Press %s for hard mode" % _hard()
 
 
 ## The note and its hint when a ball falls into a black hole.

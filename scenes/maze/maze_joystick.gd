@@ -83,8 +83,17 @@ func _gui_input(event: InputEvent) -> void:
 
 
 func _input(event: InputEvent) -> void:
+	if not engaged:
+		return
+	var up := event as InputEventMouseButton
+	if up != null and not up.pressed and up.button_index == MOUSE_BUTTON_LEFT:
+		# let go: the head springs back and the board levels (a play trial's board stayed
+		# tilted after the mouse came up, until a key was pressed)
+		release()
+		moved.emit(head_offset)
+		return
 	var motion := event as InputEventMouseMotion
-	if motion == null or not engaged:
+	if motion == null:
 		return
 	head_offset = (motion.global_position - _grab_point) * _gain()
 	moved.emit(head_offset)

@@ -147,3 +147,20 @@ func test_the_joystick_tilts_fully_at_15_screen_pixels_as_in_the_seed() -> void:
 	stick.set("sensitivity", 2.0)
 	head = _drag_joystick(stick, Vector2(7.5, 0.0))
 	assert_eq(TiltInput.tilt_from_joystick(head), Vector2(12.0, 0.0), "sensitivity 2: 7.5 px")
+
+
+# A play trial let go of the mouse with the joystick pushed over: the board stayed tilted
+# until a key was pressed. Letting go springs the head back and levels the board.
+func test_letting_go_of_the_joystick_levels_the_board() -> void:
+	var stick: MazeJoystickScript = add_child_autofree(MazeJoystickScript.new())
+	var offsets: Array[Vector2] = []
+	stick.moved.connect(func(offset: Vector2) -> void: offsets.append(offset))
+	var head := _drag_joystick(stick, Vector2(10.0, 0.0))
+	assert_gt(head.x, 0.0, "pushed over")
+	var up := InputEventMouseButton.new()
+	up.button_index = MOUSE_BUTTON_LEFT
+	up.pressed = false
+	stick._input(up)
+	assert_eq(stick.head_offset, Vector2.ZERO, "the head springs back")
+	assert_false(stick.engaged, "and no longer follows the pointer")
+	assert_eq(offsets[-1], Vector2.ZERO, "the board is told to level")

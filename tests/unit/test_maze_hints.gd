@@ -16,6 +16,9 @@ func test_hard_mode_on_a_board_without_holes_says_it_plays_as_easy() -> void:
 	assert_false(hint.contains("avoid the black holes"))
 
 
-func test_easy_hints_are_unchanged_by_the_holes() -> void:
-	assert_eq(MazeHints.start(false, 4, 0), MazeHints.start(false, 4, 8))
+func test_a_board_without_holes_never_asks_for_hard_mode() -> void:
+	assert_false(MazeHints.start(false, 2, 0).contains("hard mode"), "the start hint")
+	assert_eq(MazeHints.won(false, 0), "", "the win hint")
+	assert_string_contains(MazeHints.start(false, 4, 8), "hard mode")
+	assert_string_contains(MazeHints.won(false, 8), "hard mode")
 	assert_string_contains(MazeHints.start(false, 1, 0), "rolls downhill")

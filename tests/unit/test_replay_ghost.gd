@@ -177,3 +177,5 @@ class TestMazeScreen:
 		App.settings.set_value("show_ghost", true)
 		rules.reset()
 		assert_not_null(_game.get("_ghost"), "and back when it is on")
+		var note := str(_game.get_node("%Note").text())
+		assert_string_contains(note, "pale ball is your best run", "the ghost is named")
