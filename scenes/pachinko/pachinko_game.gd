@@ -157,6 +157,12 @@ func _unhandled_input(event: InputEvent) -> void:
 
 
 ## How far (view units) the flipper's grip is dragged up for full power in this layout.
+## The bonus layer's views (reels, reach stage, jackpot banner), for tests and the
+## screenshots.
+func bonus_view() -> BonusView:
+	return _bonus_view
+
+
 func full_power_drag() -> float:
 	return LaunchPower.MAX_POWER * _controls.drag_scale
 

@@ -44,8 +44,7 @@ func test_a_reach_takes_the_middle_of_the_board_in_large_numbers() -> void:
 	App.request_board("pachinko", "res://levels/pachinko/fever.board")
 	var scene: PackedScene = load(GAME)
 	var game := await StretchedWindow.open(self, scene, Vector2i(1280, 720), 2) as PachinkoGame
-	var view: Node = game.get("_bonus_view")
-	var stage: ReachStage = view.get("stage")
+	var stage: ReachStage = game.bonus_view().stage
 	assert_false(stage.is_on_stage(), "no reach yet")
 	_start_reach(game.rules)
 	assert_true(game.rules.bonus.reels.in_reach())
@@ -58,7 +57,7 @@ func test_a_reach_takes_the_middle_of_the_board_in_large_numbers() -> void:
 	var digit := ReachStage.SYMBOL_FONT_SIZE * DIGIT_SHARE * screen_scale
 	assert_gte(digit, 80.0, "reel numbers %.0f px tall on screen" % digit)
 	var level := game.rules.level
-	assert_eq(stage.get("_center"), level.ring_center, "in the middle of the board")
+	assert_eq(stage.center(), level.ring_center, "in the middle of the board")
 	game.rules.bonus.reels.advance(ReelSet.REACH_EXTRA + 1.0)
 	stage._process(ReachStage.HOLD_MISS + ReachStage.GROW_SECONDS + 0.1)
 	stage._process(ReachStage.GROW_SECONDS + 0.1)
@@ -68,38 +67,38 @@ func test_a_reach_takes_the_middle_of_the_board_in_large_numbers() -> void:
 
 func test_a_reach_slows_the_game_clock_and_gives_it_back() -> void:
 	var game := _fever_game()
-	var view: Node = game.get("_bonus_view")
-	assert_eq(view.call("time_scale", FRAME), 1.0, "full speed with no reach")
+	var view := game.bonus_view()
+	assert_eq(view.time_scale(FRAME), 1.0, "full speed with no reach")
 	_start_reach(game.rules)
 	var scale := 1.0
 	for i in 60:
-		scale = view.call("time_scale", FRAME)
+		scale = view.time_scale(FRAME)
 	assert_almost_eq(scale, ReachSlowMotion.SLOW_SCALE, 1e-6, "slow while the last reel turns")
 	game.rules.bonus.reels.advance(ReelSet.REACH_EXTRA + 1.0)
 	for i in 60:
-		scale = view.call("time_scale", FRAME)
+		scale = view.time_scale(FRAME)
 	assert_eq(scale, 1.0, "back to full speed")
 
 
 func test_reach_and_jackpot_sound_and_announce_their_rounds() -> void:
 	var game := _fever_game()
-	var view: Node = game.get("_bonus_view")
+	var view := game.bonus_view()
 	var bank := RecordingBank.new()
 	add_child_autofree(bank)
-	view.set("_sounds", bank)
+	view.use_sounds(bank)
 	var machine := game.rules.bonus
 	machine.reels.start(PackedInt32Array([2, 2, 2]), 7)
 	for i in 300:
 		machine.advance(FRAME)
 	assert_has(bank.heard, SoundBank.REACH_RISE, "the reach rises")
 	assert_has(bank.heard, SoundBank.JACKPOT_FANFARE, "the jackpot's fanfare")
-	var banner: Node = view.get("banner")
-	assert_string_contains(banner.call("caption"), "ROUND 1 / %d" % JackpotRounds.ROUNDS)
+	var banner := view.banner
+	assert_string_contains(banner.caption(), "ROUND 1 / %d" % JackpotRounds.ROUNDS)
 	machine.rounds.end_round()
 	machine.advance(JackpotRounds.BREAK_SECONDS + 0.01)
-	assert_string_contains(banner.call("caption"), "ROUND 2 / %d" % JackpotRounds.ROUNDS)
+	assert_string_contains(banner.caption(), "ROUND 2 / %d" % JackpotRounds.ROUNDS)
 	assert_has(bank.heard, SoundBank.ROUND_BELL)
 	machine.rounds.paid = 150
 	machine.rounds.round = JackpotRounds.ROUNDS
 	machine.rounds.end_round()
-	assert_string_contains(banner.call("caption"), "150 BALLS")
+	assert_string_contains(banner.caption(), "150 BALLS")

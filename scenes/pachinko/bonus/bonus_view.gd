@@ -23,6 +23,11 @@ var _sounds: SoundBank
 var _rules: PachinkoRules
 
 
+## The sound bank the bonus moments play on (a test may hand it a recording one).
+func use_sounds(sounds: SoundBank) -> void:
+	_sounds = sounds
+
+
 ## Adds the layers to `board_view` (a Node2D with a "Balls" child) and keeps `sounds`.
 func attach(board_view: Node2D, sounds: SoundBank) -> void:
 	_sounds = sounds

@@ -39,6 +39,11 @@ func bind(level: BoardLevel, machine: BonusMachine) -> void:
 	queue_redraw()
 
 
+## Where the reels stand while a reach lasts: the middle of the board (ring centre).
+func center() -> Vector2:
+	return _center
+
+
 ## True while the stage shows (coming in, on, or going).
 func is_on_stage() -> bool:
 	return _shown > 0.0
