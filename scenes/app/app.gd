@@ -59,9 +59,13 @@ func _ready() -> void:
 	_fitted_window_size = WindowFit.fit_window(get_window(), settings.window_size)
 	# the sounds build on a worker while the player reads the menu, not when a board loads
 	# (and not while the menu itself loads: after its first frame)
-	RenderingServer.frame_post_draw.connect(
-		func() -> void: SoundBank.warm_in_background(SoundBank.Recipes.names()), CONNECT_ONE_SHOT
-	)
+	# (headless there is nothing to hear: the worker would only cost CPU, and Debian's release
+	# template crashed at exit after it in the headless test run)
+	if DisplayServer.get_name() != "headless":
+		RenderingServer.frame_post_draw.connect(
+			func() -> void: SoundBank.warm_in_background(SoundBank.Recipes.names()),
+			CONNECT_ONE_SHOT
+		)
 
 
 # The game is quitting (App leaves the tree last, after the scenes that cancelled their

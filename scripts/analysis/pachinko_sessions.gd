@@ -1,40 +1,15 @@
 extends RefCounted
-## How long a pachinko session lasts and what its jackpots bring, for `--sessions=N`: plays N
+## How long a pachinko session lasts and what its jackpots bring (the `--sessions=N` command
+## is scripts/app/sessions_cli.gd): plays N
 ## games from a full cup to an empty one with the real rules, at the autoplay's single-shot
 ## pace (a random power, then a pause of MIN_GAP to MAX_GAP seconds), one seed per game, and
 ## reports the median and 10th percentile of their lengths, jackpots per hour of play and
 ## what a jackpot paid on average. Same board, N and seed: the same report.
 
 const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
-const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
 ## The longest a session is played, game seconds: one still going then counts as this long
 ## (and as `capped` in the report), so a lucky streak cannot run forever.
 const MAX_SESSION_SECONDS := 1800.0
-## A board that cannot be loaded (cli_flags.gd EXIT_USAGE).
-const EXIT_BAD_BOARD := 2
-
-
-## The `--sessions=N` command (keys sessions, board, seed): prints one JSON line; 0 when the
-## sessions were played, EXIT_BAD_BOARD when the board is not a pachinko board or N < 1.
-static func run(values: Dictionary) -> int:
-	var count: int = values["sessions"]
-	var path := AutoplayCli.resolve_board_path("pachinko", str(values["board"]))
-	var loaded := BoardLoader.load_board(path)
-	var problem := ""
-	if loaded.level == null:
-		problem = loaded.error
-	elif not loaded.level.is_pachinko():
-		problem = "%s is not a pachinko board" % path
-	elif count < 1:
-		problem = "--sessions needs at least 1 session, got %d" % count
-	if not problem.is_empty():
-		printerr("sessions: %s" % problem)
-		print(JSON.stringify({"ok": false, "error": problem}))
-		return EXIT_BAD_BOARD
-	var report := {"ok": true, "board": loaded.level.board_id}
-	report.merge(report_for(loaded.level, count, values["seed"]))
-	print(JSON.stringify(report))
-	return 0
 
 
 ## Plays `count` sessions on `level` with seeds `first_seed`, `first_seed` + 1, ... and

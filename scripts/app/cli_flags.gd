@@ -90,7 +90,7 @@ const FLAGS: Array[Dictionary] = [
 		"command": true,
 		"value": Value.WHOLE,
 		"placeholder": "N",
-		"runs": preload("res://scripts/analysis/pachinko_sessions.gd"),
+		"runs": preload("res://scripts/app/sessions_cli.gd"),
 		"help":
 		(
 			"Pachinko: play N sessions from a full cup to an empty one at the autoplay's"

@@ -5,11 +5,10 @@ extends RefCounted
 ## Fixed-step ball physics in GDScript, with no Node and no built-in physics: circles
 ## (balls) against pins, capsule walls, a ring border and each other, plus sensors.
 ##
-## Add the shapes through `shapes` (WorldShapes: pins, walls, ring, sensors, windmills),
-## call build_grid() (adding later rebuilds lazily), spawn balls,
-## then call advance(delta) every frame (or step(dt) directly). Events come out as signals
-## at the end of each step, in the order they happened within it; balls removed by an event
-## (captured by a pin, drained, fell in a hole) are already gone when the signal arrives.
+## Add the shapes through `shapes` (WorldShapes: pins, walls, ring, sensors, windmills), call
+## build_grid() (adding later rebuilds lazily), spawn balls, then call advance(delta) every
+## frame (or step(dt) directly). Events come out as signals at the end of each step, in the
+## order they happened; balls an event removed (captured, drained, fell in a hole) are gone.
 ##
 ## A step runs as stages (see step()); the per-ball ones run on `threads` worker threads,
 ## and any thread count gives bit-identical results. The engine knows shapes, materials and
@@ -53,18 +52,12 @@ const MotionStage := preload("res://scripts/physics/motion_stage.gd")
 const WorldSignals := preload("res://scripts/physics/world_signals.gd")
 const StageClock := preload("res://scripts/physics/stage_clock.gd")
 
-## The physics behaviour: bumped whenever the same inputs roll the balls differently (a new
-## contact order, a changed response), so replays of older runs are refused by name instead
-## of drifting (Replay.PHYSICS_VERSION). 2: ball pairs solved in stripes of cell rows.
-## 3: a glancing cap (PhysicsTuning.CapContact.GLANCE) carries the ball on along its tangent
-## as the seed does, and PER_AXIS caps may hold x under y (x_cap_friction_time). 4: a bounce
-## off the ring leaves the ball the ring's least horizontal speed, as a pin hit does (the
-## chapter).
+## The physics behaviour: bumped whenever the same inputs roll the balls differently, so
+## replays of older runs are refused by name (Replay.PHYSICS_VERSION); each version's change
+## is listed in scripts/physics/README.md ("Physics versions").
 const PHYSICS_VERSION := 4
-## advance() runs at most this many steps per call, then drops the backlog, so a long
-## hitch slows the game down instead of freezing it. 30 steps (a quarter second at 120 Hz)
-## keep the game in real time down to about 4 frames a second: a play trial on a machine
-## drawing 5-14 frames a second saw the clock run at half speed with 8.
+## advance() runs at most this many steps a call and drops the backlog (a hitch slows the
+## game, never freezes it); 30 (0.25 s at 120 Hz) keeps real time down to 4 frames a second.
 const MAX_STEPS_PER_ADVANCE := 30
 ## Goals and zones are tracked per ball in one int bit mask each: at most this many of each.
 const MAX_SENSORS := StaticGeometry.MAX_SENSORS
@@ -83,9 +76,8 @@ var gravity: Vector2
 var rolling_friction: Vector2
 ## Steps run so far.
 var step_count := 0
-## Called with the step's length at the start of every step, before gravity, when set: a
-## game rule that adds a force of its own (the maze's goal dip, GoalDip) changes ball
-## velocities there. Worlds without it step exactly as before.
+## Called with the step's length at the start of every step when set (a rule's own force,
+## the maze's GoalDip); worlds without it step exactly as before.
 var before_step := Callable()
 ## False tests every ball against every pin (the benchmark's "no zoning" baseline).
 var use_zoning := true:

@@ -4,7 +4,6 @@ extends GutTest
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const MazeGame := preload("res://scenes/maze/maze_game.gd")
-const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const TEST_SETTINGS := "user://test_maze_opening_settings.cfg"
 const TEST_SAVE := "user://test_maze_opening_save.cfg"
 
@@ -27,20 +26,3 @@ func test_the_board_opens_with_its_balls_and_medal_target_before_any_frame() -> 
 	var label: Label = game.get_node("%NextMedal")
 	var gold: float = rules.level.medal_times_easy[0]
 	assert_eq(label.text, "Gold by %s" % MazeWinSummary.clock(gold))
-
-
-# A play trial turned the frame counter on (F) in a 1201 x 676 window: it covered the
-# board's title.
-func test_the_frame_counter_leaves_the_title_clear() -> void:
-	App.settings.set_value("show_frame_counter", true)
-	var game := await StretchedWindow.open(self, GAME, Vector2i(1201, 676), 2) as MazeGame
-	await wait_seconds(0.4)  # the counter shows its first figure
-	App.settings.set_value("show_frame_counter", false)
-	var title := game.get_node("Side/Title") as Control
-	var counter := game.find_child("FpsLabel", true, false) as Control
-	assert_not_null(counter, "the counter is on the maze screen")
-	var title_rect := title.get_global_rect()
-	var counter_rect := counter.get_global_rect()
-	assert_false(
-		title_rect.intersects(counter_rect), "title %s, counter %s" % [title_rect, counter_rect]
-	)

@@ -90,7 +90,7 @@ func test_packed_tilts_read_frame_by_frame() -> void:
 	var steps_zero := TiltPacking.encode([0, 0, 0])
 	assert_eq(
 		Lines.error(Lines.steps(0), [["tilts", steps_zero]]),
-		'line 2: "tilts": steps per frame must be 1 to 8'
+		'line 2: "tilts": steps per frame must be 1 to 30'
 	)
 	assert_eq(
 		Lines.error(Lines.steps(0), [["tilts", 5]]),
