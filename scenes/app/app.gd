@@ -172,6 +172,7 @@ func start_game(kind: String, path: String) -> void:
 		push_error("App.start_game: unknown game kind '%s'" % kind)
 		return
 	request_board(kind, path)
+	level_select_kind = kind  # the list the pause menu's "Other boards" goes back to
 	var scene_path: String = GAME_SCENES[kind]
 	_change_scene(scene_path)
 

@@ -1,7 +1,8 @@
 extends CanvasLayer
 ## The pause menu each game instances. The `pause` action (Esc / Start) opens it and pauses
 ## the whole tree, so the game's simulation stops; it runs itself while paused.
-## Resume, Restart (emits `restart_requested`), Settings, and Back to menu.
+## Resume, Restart (emits `restart_requested`), Settings, and Other boards (the game's level
+## select).
 
 ## The player chose Restart; the game resets its board (the tree is already unpaused).
 signal restart_requested
@@ -87,8 +88,10 @@ func _on_restart_pressed() -> void:
 	restart_requested.emit()
 
 
+# Back to the list of the game's boards, not the title screen: both play trials wanted to
+# switch boards and went through three screens to do it.
 func _on_menu_pressed() -> void:
-	App.go_to_menu()
+	App.go_to_level_select(App.level_select_kind)
 
 
 func _open_settings() -> void:

@@ -169,7 +169,23 @@ func full_power_drag() -> float:
 
 ## Starts over on the same board: a fresh world, the instructions up.
 func restart() -> void:
+	_keep_session()
 	_new_rules()
+
+
+func _exit_tree() -> void:
+	_keep_session()
+
+
+# A session left before its cup ran dry (Other boards, Restart, Quit) still counts for the
+# board's best session: a play trial left Hanami at 277 balls and its card said "Not played
+# yet". Only a session that paid something back, and only while it is still being played.
+func _keep_session() -> void:
+	if rules == null or _level == null or rules.state != PachinkoRules.State.PLAYING:
+		return
+	var paid: int = rules.stats(true).get("game_payouts", 0)
+	if paid > 0:
+		App.record_pachinko_balls(_level.board_id, paid)
 
 
 func _new_rules() -> void:

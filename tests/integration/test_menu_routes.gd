@@ -137,12 +137,12 @@ func _route_to_my_board_and_back() -> void:
 	assert_eq(_focused_text(), "Resume")
 	for step in 3:
 		await _press("ui_down")
-	assert_eq(_focused_text(), "Back to menu")
+	assert_eq(_focused_text(), "Other boards")
 	await _press("ui_accept")
-	menu = await _became(MAIN_MENU)
-	assert_not_null(menu, "back on the title screen")
+	var boards := await _became(LEVEL_SELECT)
+	assert_not_null(boards, "back on the game's list of boards, not the title screen")
 	assert_false(get_tree().paused)
-	assert_eq(_focused_text(), "Pachinko", "the game the player came from keeps focus")
+	assert_eq(App.level_select_kind, "pachinko", "the pachinko boards")
 	assert_engine_error_count(0)
 
 

@@ -92,8 +92,9 @@ session() { # number
 	shoot "$1" 3-pachinko
 	keys 2 Escape                        # the pause menu (or the rules card first)
 	shoot "$1" 4-pause
-	keys 4 Down Down Down Return         # Back to menu, the last button
-	shoot "$1" 5-back-to-menu
+	keys 4 Down Down Down Return         # Other boards, the last button: pachinko's list
+	shoot "$1" 5-other-boards
+	keys 4 Escape                        # back to the title screen, on Pachinko
 	keys 6 Down Return                   # Tilt Maze: its level select
 	shoot "$1" 6-maze-boards
 	keys 4 Escape                        # back to the title screen, on Tilt Maze

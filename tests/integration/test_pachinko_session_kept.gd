@@ -1,0 +1,53 @@
+extends GutTest
+## A pachinko session left before its cup ran dry still counts for the board's best session
+## (a play trial left Hanami at 277 balls through the pause menu and its card said "Not
+## played yet"); a session that paid nothing back records nothing.
+
+const GAME := "res://scenes/pachinko/pachinko_game.tscn"
+const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
+const TEST_SETTINGS := "user://test_session_kept_settings.cfg"
+const TEST_SAVE := "user://test_session_kept_save.cfg"
+
+
+func before_each() -> void:
+	for path in [TEST_SETTINGS, TEST_SAVE]:
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+	App.load_player_files(TEST_SETTINGS, TEST_SAVE)
+
+
+func after_all() -> void:
+	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
+	for path in [TEST_SETTINGS, TEST_SAVE]:
+		DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+
+func _playing_game() -> PachinkoGame:
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
+	add_child(game)
+	game.rules.start_game()
+	return game
+
+
+func test_leaving_a_session_that_paid_keeps_it_as_the_best() -> void:
+	var game := _playing_game()
+	var board := game.rules.level.board_id
+	game.rules.ledger.paid += 40
+	assert_eq(App.best_pachinko_balls(board), -1, "nothing recorded while playing")
+	game.free()
+	assert_eq(App.best_pachinko_balls(board), 40, "the session is kept on leaving")
+
+
+func test_restarting_keeps_the_session_too() -> void:
+	var game := _playing_game()
+	var board := game.rules.level.board_id
+	game.rules.ledger.paid += 25
+	game.restart()
+	assert_eq(App.best_pachinko_balls(board), 25)
+	game.free()
+
+
+func test_a_session_that_paid_nothing_records_nothing() -> void:
+	var game := _playing_game()
+	var board := game.rules.level.board_id
+	game.free()
+	assert_eq(App.best_pachinko_balls(board), -1)
