@@ -29,18 +29,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(
-		[
-			"pins",
-			"pockets",
-			"walls",
-			"holes",
-			"ball_starts",
-			"goal_center",
-			"bonus_pockets",
-			"windmills"
-		]
-	)
+	return PackedStringArray(Items.POSITION_FIELDS)
 
 
 func _apply() -> void:

@@ -46,18 +46,7 @@ func preview(offset: Vector2) -> void:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(
-		[
-			"pins",
-			"pockets",
-			"walls",
-			"holes",
-			"ball_starts",
-			"goal_center",
-			"bonus_pockets",
-			"windmills"
-		]
-	)
+	return PackedStringArray(Items.POSITION_FIELDS)
 
 
 func _apply() -> void:

@@ -24,6 +24,19 @@ const ITEM_FIELDS: Array[String] = [
 	"windmills",
 ]
 
+## The BoardLevel fields that hold where items stand (what moving, flipping or arranging
+## items may change).
+const POSITION_FIELDS: Array[String] = [
+	"pins",
+	"pockets",
+	"walls",
+	"holes",
+	"ball_starts",
+	"goal_center",
+	"bonus_pockets",
+	"windmills",
+]
+
 
 ## The item of `kind` at `index`.
 static func make(kind: Kind, index: int) -> Vector2i:
