@@ -85,8 +85,10 @@ func _draw() -> void:
 			placed += 1
 		row += 1
 	for drop in _pour.drops:
-		if drop.w <= 0.0:
-			var at := Vector2(drop.x, tray_top - drop.y)
+		var at := Vector2(drop.x, tray_top - drop.y)
+		# a ball still above the cup's own area stays unseen: drawn there it fell over the
+		# machine's name (a play trial's screenshot)
+		if drop.w <= 0.0 and at.y >= r:
 			draw_texture_rect(_ball, Rect2(at - Vector2(r, r), Vector2(r, r) * 2.0), false)
 	# The tray in front of the heap.
 	var tray := PackedVector2Array(

@@ -43,10 +43,7 @@ static func lines_for(stats: Dictionary, best := -1) -> PackedStringArray:
 	return PackedStringArray(
 		[
 			"[b]Shots[/b] %d    [b]In play[/b] %d" % [shots, stats.get("in_play", 0)],
-			(
-				"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d"
-				% [hits, stats.get("drained", 0)]
-			),
+			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
 			# short lines: longer ones wrapped and pushed the launcher off a 720 px column
 			"[b]Paid back[/b] %d (%.2f a shot)" % [paid, ratio],
 			"[b]Best session[/b] %d balls" % best if best >= 0 else "[b]Best session[/b] none yet",
