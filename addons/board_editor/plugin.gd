@@ -22,11 +22,8 @@ const NewBoardFiles := preload("res://addons/board_editor/core/new_board_files.g
 const ToolSettings := preload("res://addons/board_editor/core/tool_settings.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const Items := preload("res://addons/board_editor/core/board_items.gd")
-## The one hook for tooling (screenshots, the editor self-check): when the editor starts with
-## this variable naming a script under res://tools/ or res://tests/, the plugin adds it as a
-## child Node, built with the plugin as its only argument. Nothing in the shipped game uses it.
-const TOOLING_HOOK_ENV := "BOARD_EDITOR_HOOK"
-const TOOLING_HOOK_FOLDERS: Array[String] = ["res://tools/", "res://tests/"]
+## The one hook for tooling (screenshots, the editor self-check): ToolingHook.
+const ToolingHook := preload("res://addons/board_editor/core/tooling_hook.gd")
 ## Screens this wide (px) or wider give the Board dock a column of its own (dock_slot_for).
 const WIDE_SCREEN := 1600
 ## The Project > Tools entry that starts a new board.
@@ -78,14 +75,12 @@ func _enter_tree() -> void:
 	_dock.analysis.results_changed.connect(_refresh)
 	_dock.analysis.item_picked.connect(select_item)
 	_dock.maze_analysis.redraw_needed.connect(update_overlays)
-	_attach_tooling_hook()
+	ToolingHook.attach(self)
 
 
-## Where the Board dock goes on a screen `screen_width` px wide: a column of its own at the
-## right edge, beside the Inspector's (the Selection panel and the analysis get the full
-## height), where the screen has room for one more column; under the Inspector on a smaller
-## screen (at 1366 px a fifth column pushed the window past the screen's edge). Once the
-## designer moves it, Godot keeps it where they put it.
+## Where the Board dock goes on a screen `screen_width` px wide: a full-height column of its
+## own beside the Inspector's where there is room, under the Inspector on a smaller screen
+## (at 1366 px a fifth column pushed the window off the screen); Godot keeps a moved dock.
 static func dock_slot_for(screen_width: int) -> DockSlot:
 	return DOCK_SLOT_RIGHT_UR if screen_width >= WIDE_SCREEN else DOCK_SLOT_RIGHT_BL
 
@@ -156,10 +151,9 @@ func _forward_canvas_gui_input(event: InputEvent) -> bool:
 	return used
 
 
-# Godot's 2D view zooms on the digit keys (1 = 100 %, 2 = 200 %, Shift+1 = 50 % ...) even
-# when _forward_canvas_gui_input used the key: its zoom shortcuts run after the plugins
-# whatever they answered. So while the board's viewport has the keys, a digit is taken here,
-# before the GUI sees it, and goes to the board tool like any other key.
+# Godot's 2D view zooms on the digit keys (1 = 100 %, 2 = 200 % ...) even when the plugin
+# used the key (its shortcuts run after the plugins): while the board's viewport has the
+# keys, a digit is taken here, before the GUI, and goes to the board tool like any other.
 func _input(event: InputEvent) -> void:
 	var key := event as InputEventKey
 	if key == null or not _visible or _board_input == null or not is_instance_valid(_node):
@@ -404,26 +398,3 @@ func _return_focus() -> void:
 
 func _to_screen() -> Transform2D:
 	return _node.get_viewport_transform() * _node.get_global_transform()
-
-
-func _attach_tooling_hook() -> void:
-	var path := OS.get_environment(TOOLING_HOOK_ENV)
-	if path.is_empty():
-		return
-	var allowed := TOOLING_HOOK_FOLDERS.any(
-		func(folder: String) -> bool: return path.begins_with(folder)
-	)
-	if not allowed or path.contains("..") or not ResourceLoader.exists(path):
-		push_error(
-			(
-				"%s must name a script under %s, got '%s'."
-				% [TOOLING_HOOK_ENV, TOOLING_HOOK_FOLDERS, path]
-			)
-		)
-		return
-	var script := load(path) as GDScript
-	var hook: Object = script.new(self) if script != null else null
-	if hook is Node:
-		add_child(hook as Node)
-	else:
-		push_error("%s: %s is not a Node script." % [TOOLING_HOOK_ENV, path])

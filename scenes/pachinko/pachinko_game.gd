@@ -15,20 +15,13 @@ const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
-const ReadableText := preload("res://scenes/common/readable_text.gd")
 const PachinkoMusic := preload("res://scenes/pachinko/pachinko_music.gd")
-const HUD_WIDTH := 360.0
-## Beside the board, the panel drawn bigger to read (a small window) takes at most this
-## share of the window's width: the board keeps the rest.
-const MOST_HUD_SHARE := 0.45
-## A window this much taller than wide puts the panel under the board, at most this wide
-## (view units before its zoom).
-const PORTRAIT_HUD_HEIGHT := 720.0
-const PORTRAIT_HUD_WIDTH := 760.0
-const MARGIN := 10.0
+const PachinkoHudLayout := preload("res://scenes/pachinko/pachinko_hud_layout.gd")
+## The panel's designed width (PachinkoHudLayout).
+const HUD_WIDTH := PachinkoHudLayout.HUD_WIDTH
 ## The board's area's short side in the designed 1280 × 720 layout: a full-power drag is 100
 ## view units there and as much longer as the board is bigger elsewhere (PachinkoInput).
-const DESIGN_BOARD_SIDE := 720.0 - 2.0 * MARGIN
+const DESIGN_BOARD_SIDE := 720.0 - 2.0 * PachinkoHudLayout.MARGIN
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0
 const TICK_MAX_SPEED := 700.0
@@ -56,6 +49,7 @@ var _recorder: ReplayRecorder
 @onready var instructions: InstructionsPanel = $Instructions
 @onready var sounds: SoundBank = $Sounds
 @onready var pause_menu: PauseMenu = $PauseMenu
+@onready var _hud_layout := PachinkoHudLayout.new(hud, hud_column, hud_info, launcher)
 
 
 func _ready() -> void:
@@ -262,28 +256,7 @@ func _show_notes() -> void:
 func _layout() -> void:
 	if _level == null:
 		return
-	var view := get_viewport_rect().size
-	var area: Rect2
-	if view.y - view.x >= PORTRAIT_HUD_HEIGHT:
-		# A portrait window: the board fills the width on top, the panel takes the band below
-		# (a column beside the board left it a third of the screen).
-		_fit_portrait_hud(Rect2(0.0, view.x, view.x, view.y - view.x))
-		area = Rect2(Vector2(MARGIN, MARGIN), Vector2(view.x, view.x) - Vector2.ONE * MARGIN * 2.0)
-	else:
-		# a small window draws the column bigger, so its smallest words still read, and
-		# wider by as much: the board takes what is left
-		hud_info.vertical = true
-		launcher.size_flags_horizontal = Control.SIZE_FILL
-		launcher.draw_bigger(1.0)
-		var zoom := minf(_readable_zoom(), view.x * MOST_HUD_SHARE / HUD_WIDTH)
-		hud.scale = Vector2.ONE * maxf(zoom, 1.0)
-		_edge_hud_toward_board(SIDE_LEFT)
-		var hud_left := view.x - HUD_WIDTH * hud.scale.x
-		hud.position = Vector2(hud_left, 0.0)
-		hud.size = Vector2(HUD_WIDTH, view.y / hud.scale.y)
-		area = Rect2(
-			Vector2(MARGIN, MARGIN), Vector2(hud_left - MARGIN * 2.0, view.y - MARGIN * 2.0)
-		)
+	var area := _hud_layout.place(get_viewport_rect().size)
 	board_view.fit(_level, area)
 	_controls.drag_scale = minf(area.size.x, area.size.y) / DESIGN_BOARD_SIDE
 	instructions.position = area.position
@@ -291,54 +264,8 @@ func _layout() -> void:
 
 
 func _refit_portrait_hud() -> void:
-	var view := get_viewport_rect().size
-	if _level != null and view.y - view.x >= PORTRAIT_HUD_HEIGHT:
-		_fit_portrait_hud(Rect2(0.0, view.x, view.x, view.y - view.x))
-
-
-# Lays the panel out in `band` under the board: the cup beside the numbers, the launcher
-# under them, the whole drawn bigger so its smallest words read (ReadableText), as far as
-# the band allows. The launcher then takes the height left under the numbers, drawn bigger
-# (a player's thumb is there on a phone): with it at its design size the band's last
-# 190 px stayed empty at 720 × 1280.
-func _fit_portrait_hud(band: Rect2) -> void:
-	hud_info.vertical = false
-	launcher.size_flags_horizontal = Control.SIZE_SHRINK_CENTER
-	launcher.draw_bigger(1.0)
-	_edge_hud_toward_board(SIDE_TOP)
-	var margins := Vector2(
-		hud_column.offset_left - hud_column.offset_right,
-		hud_column.offset_top - hud_column.offset_bottom
-	)
-	var needed := hud_column.get_combined_minimum_size() + margins
-	var zoom := minf(_readable_zoom(), minf(band.size.x / needed.x, band.size.y / needed.y))
-	var hud_size := Vector2(minf(band.size.x / zoom, PORTRAIT_HUD_WIDTH), band.size.y / zoom)
-	hud.scale = Vector2.ONE * zoom
-	hud.size = hud_size
-	hud.position = band.position + Vector2((band.size.x - hud_size.x * zoom) * 0.5, 0.0)
-	var room := hud_size - margins
-	var spare_height := room.y - (needed.y - margins.y)
-	var design := LauncherPanel.DESIGN_SIZE
-	launcher.draw_bigger(minf(1.0 + spare_height / design.y, room.x / design.x))
-
-
-# How much bigger the panel must be drawn for its smallest words (the launcher's) to read
-# (ReadableText); 1 when they do as designed.
-func _readable_zoom() -> float:
-	var screen_scale := ReadableText.screen_scale_of(self)
-	var wanted := ReadableText.growth_at(LauncherPanel.SMALL_FONT_SIZE, screen_scale)
-	# rounded up, so the rounding of the scales on the way to the screen keeps it at 14
-	return maxf(1.0, ceilf(wanted * 100.0) / 100.0)
-
-
-# The panel's gold edge runs along the board: its left side beside it, its top under it.
-func _edge_hud_toward_board(side: Side) -> void:
-	var style := hud.get_theme_stylebox(&"panel") as StyleBoxFlat
-	if style == null:
-		return
-	var width := maxi(style.border_width_left, style.border_width_top)
-	style.border_width_left = width if side == SIDE_LEFT else 0
-	style.border_width_top = width if side == SIDE_TOP else 0
+	if _level != null:
+		_hud_layout.refit(get_viewport_rect().size)
 
 
 func _is_click(event: InputEvent) -> bool:

@@ -23,6 +23,7 @@ const MAX_BINDINGS_PER_ACTION := 16
 const MAX_WINDOW_SIDE := 16384.0
 const IniText := preload("res://scripts/app/ini_text.gd")
 const Codec := preload("res://scripts/app/input_event_codec.gd")
+const SettingsValues := preload("res://scripts/app/settings_values.gd")
 const FILE_HEADER := (
 	"Board Studio settings (format version %d). Delete this file to restore the defaults.\n"
 	+ "Bindings: key:<name>, joy_button:<index>, joy_axis:<index>:<+|->, mouse:<index>."
@@ -313,48 +314,21 @@ func _read_values(sections: Dictionary) -> PackedStringArray:
 func _read_number(
 	section: Dictionary, key: String, low: float, high: float, problems: PackedStringArray
 ) -> void:
-	if not section.has(key):
-		return
-	var value: Variant = section[key]
-	if not (value is float or value is int):
-		problems.append(key)
-		return
-	var number: float = value
-	if not is_finite(number):
-		problems.append(key)
-		return
-	if number < low or number > high:
-		problems.append(key)
-	set(key, clampf(number, low, high))
+	var read: Variant = SettingsValues.number(section, key, low, high, problems)
+	if read != null:
+		set(key, read)
 
 
-# The remembered window size: both sides whole numbers of pixels from 0 (0 0: none yet) to
-# MAX_WINDOW_SIDE; anything else is a problem and leaves no size remembered.
 func _read_window_size(display: Dictionary, problems: PackedStringArray) -> void:
-	var sides := Vector2i.ZERO
-	for axis in 2:
-		var key: String = ["window_width", "window_height"][axis]
-		if not display.has(key):
-			return
-		var value: Variant = display[key]
-		var number: float = value if value is float or value is int else NAN
-		if not is_finite(number) or number != floorf(number):
-			problems.append(key)
-			return
-		if number < 0.0 or number > MAX_WINDOW_SIDE:
-			problems.append(key)
-			return
-		sides[axis] = int(number)
-	window_size = sides
+	var read: Variant = SettingsValues.window_size(display, MAX_WINDOW_SIDE, problems)
+	if read != null:
+		window_size = read
 
 
 func _read_flag(section: Dictionary, key: String, problems: PackedStringArray) -> void:
-	if not section.has(key):
-		return
-	if not section[key] is bool:
-		problems.append(key)
-		return
-	set(key, section[key])
+	var read: Variant = SettingsValues.flag(section, key, problems)
+	if read != null:
+		set(key, read)
 
 
 func _read_bindings(input: Dictionary, problems: PackedStringArray) -> void:
@@ -362,7 +336,7 @@ func _read_bindings(input: Dictionary, problems: PackedStringArray) -> void:
 		if not bindings.has(action):
 			continue  # an action a later version removed: nothing to bind
 		var codes: Variant = input[action]
-		var events := _events_from(codes)
+		var events := SettingsValues.events(codes, MAX_BINDINGS_PER_ACTION)
 		if events.is_empty() and REQUIRED_ACTIONS.has(action):
 			problems.append("%s (it needs a binding)" % action)
 		elif events.is_empty() and not (codes is Array and codes == []):
@@ -384,26 +358,6 @@ func _with_required_columns(action: String, events: Array[InputEvent]) -> Array[
 			if Codec.is_gamepad(shipped) == gamepad:
 				result.append(shipped)
 	return result
-
-
-# The events a list of binding codes names; empty when it is not such a list.
-func _events_from(codes: Variant) -> Array[InputEvent]:
-	var events: Array[InputEvent] = []
-	if not codes is Array:
-		return events
-	var list: Array = codes
-	if list.size() > MAX_BINDINGS_PER_ACTION:
-		return events
-	for code: Variant in list:
-		# a short code with short numbers: longer digit runs are not a key and overflow int()
-		var sane := code is String and str(code).length() <= 40
-		sane = sane and RegEx.create_from_string("\\d{10}").search(str(code)) == null
-		var event: InputEvent = Codec.decode(str(code)) if sane else null
-		if event == null:
-			events.clear()
-			return events
-		events.append(event)
-	return events
 
 
 func _apply_bus(bus_name: String, volume: float) -> void:

@@ -59,14 +59,12 @@ func move_range(from: int, to: int) -> void:
 			_v *= _max_speed / sqrt(_v.length_squared())
 		if _radius[i] != _r:
 			_set_radius(_radius[i])
-		var steps := 1
 		_push_step = _push[i]
+		var steps := 1
 		if _push_step != Vector2.ZERO or _has_wheels:
 			steps = _substeps(_push_step)
-		else:
-			var travel: float = (_v * _dt).length()
-			if travel > _max_travel:
-				steps = mini(ceili(travel / _max_travel), MAX_SUBSTEPS)
+		elif (_v * _dt).length_squared() > _max_travel * _max_travel:
+			steps = mini(ceili((_v * _dt).length() / _max_travel), MAX_SUBSTEPS)
 		_h = _dt / steps
 		_p_start = _p
 		var c := 0  # the ball's cell (its key), while no contact has moved it
