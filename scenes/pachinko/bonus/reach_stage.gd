@@ -56,8 +56,10 @@ func _process(delta: float) -> void:
 	var wanted := _machine.reels.in_reach() or _hold > 0.0
 	if _hold > 0.0:
 		_hold -= delta
+	var before := _shown
 	_shown = move_toward(_shown, 1.0 if wanted else 0.0, delta / GROW_SECONDS)
-	queue_redraw()
+	if _shown > 0.0 or before > 0.0:
+		queue_redraw()  # off stage there is nothing to draw, frame after frame
 
 
 func _on_reach_ended(jackpot: bool) -> void:
