@@ -229,6 +229,8 @@ func _on_won(seconds: float) -> void:
 
 
 func _on_size_changed() -> void:
+	if not is_inside_tree():  # a window closing around the screen resizes as it goes
+		return
 	if _panel_layout != null:
 		_panel_layout.window_changed()
 	_layout()

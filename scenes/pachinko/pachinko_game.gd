@@ -254,7 +254,7 @@ func _show_notes() -> void:
 
 
 func _layout() -> void:
-	if _level == null:
+	if _level == null or not is_inside_tree():  # a window closing around it resizes too
 		return
 	var area := _hud_layout.place(get_viewport_rect().size)
 	board_view.fit(_level, area)

@@ -70,12 +70,16 @@ static func summarize(sessions: Array[Dictionary]) -> Dictionary:
 	var capped := 0
 	var payouts: Array[int] = []
 	for session in sessions:
-		seconds.append(session["seconds"])
-		won.append(session["balls_won"])
-		played += float(session["seconds"])
-		jackpots += int(session["jackpots"])
+		var session_seconds: float = session["seconds"]
+		var session_won: float = session["balls_won"]
+		var session_jackpots: int = session["jackpots"]
+		var session_payouts: Array = session["jackpot_payouts"]
+		seconds.append(session_seconds)
+		won.append(session_won)
+		played += session_seconds
+		jackpots += session_jackpots
 		capped += 1 if session["capped"] else 0
-		payouts.append_array(session["jackpot_payouts"])
+		payouts.append_array(session_payouts)
 	var paid := 0
 	for balls in payouts:
 		paid += balls

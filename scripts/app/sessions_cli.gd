@@ -26,6 +26,7 @@ static func run(values: Dictionary) -> int:
 		print(JSON.stringify({"ok": false, "error": problem}))
 		return EXIT_BAD_BOARD
 	var report := {"ok": true, "board": loaded.level.board_id}
-	report.merge(PachinkoSessions.report_for(loaded.level, count, values["seed"]))
+	var seed_value: int = values["seed"]
+	report.merge(PachinkoSessions.report_for(loaded.level, count, seed_value))
 	print(JSON.stringify(report))
 	return 0

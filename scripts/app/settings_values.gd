@@ -14,10 +14,13 @@ static func number(
 	if not section.has(key):
 		return null
 	var value: Variant = section[key]
-	if not (value is float or value is int) or not is_finite(float(value)):
+	if not (value is float or value is int):
 		problems.append(key)
 		return null
 	var read: float = value
+	if not is_finite(read):
+		problems.append(key)
+		return null
 	if read < low or read > high:
 		problems.append(key)
 	return clampf(read, low, high)

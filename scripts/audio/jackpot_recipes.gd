@@ -67,8 +67,11 @@ static func _fanfare() -> PackedFloat32Array:
 	]
 	var out := PackedFloat32Array()
 	out.resize(int(2.6 * Synth.SAMPLE_RATE))
-	for call in calls:
-		Synth.overlay(out, _brass(call[1], call[2], 8.0), call[0])
+	for note: Array in calls:
+		var at: float = note[0]
+		var pitch: float = note[1]
+		var length: float = note[2]
+		Synth.overlay(out, _brass(pitch, length, 8.0), at)
 	for f: float in [523.0, 659.0, 784.0, 1047.0]:
 		Synth.overlay(out, _brass(f, 1.3, 1.6), 1.25)
 	return out

@@ -35,7 +35,8 @@ static func causes(level: BoardLevel, fill: MazeFlood, skipped: Dictionary) -> A
 	var shut_out_labels: Array[int] = []
 	for label: int in groups:
 		var members: PackedInt32Array = groups[label]
-		if label >= 0 and goal_size < int(sizes.get(label, 0)):
+		var size: int = sizes.get(label, 0)
+		if label >= 0 and goal_size < size:
 			shut_out.append_array(members)
 			shut_out_labels.append(label)
 			continue

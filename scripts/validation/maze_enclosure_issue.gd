@@ -13,6 +13,8 @@ const ERROR := BoardIssue.Severity.ERROR
 static func of(level: BoardLevel, cause: Dictionary, start_total: int) -> BoardIssue:
 	var starts: PackedInt32Array = cause["starts"]
 	var walls: PackedInt32Array = cause["walls"]
+	var around_goal: bool = cause["goal"]
+	var along_edge: bool = cause["edge"]
 	var start_ids: Array[String] = []
 	for i in starts:
 		start_ids.append(str(ItemIds.of(level, "ball_starts", i)))
@@ -24,12 +26,12 @@ static func of(level: BoardLevel, cause: Dictionary, start_total: int) -> BoardI
 		segments.append(level.walls[w * 2])
 		segments.append(level.walls[w * 2 + 1])
 		covers = covers.expand(level.walls[w * 2]).expand(level.walls[w * 2 + 1])
-	if not bool(cause["goal"]):  # closed-in starts are framed with the goal they miss
+	if not around_goal:  # closed-in starts are framed with the goal they miss
 		for i in starts:
 			covers = covers.expand(level.ball_starts[i])
-	var closers := _closers(wall_ids, bool(cause["edge"]))
+	var closers := _closers(wall_ids, along_edge)
 	var issue: BoardIssue
-	if bool(cause["goal"]):
+	if around_goal:
 		var who := "ball start %s cannot" % _and_list(start_ids)
 		if starts.size() > 1:
 			who = "ball starts %s cannot" % _and_list(start_ids)

@@ -99,6 +99,6 @@ func test_reach_and_jackpot_sound_and_announce_their_rounds() -> void:
 	assert_string_contains(banner.caption(), "ROUND 2 / %d" % JackpotRounds.ROUNDS)
 	assert_has(bank.heard, SoundBank.ROUND_BELL)
 	machine.rounds.paid = 150
-	machine.rounds.round = JackpotRounds.ROUNDS
+	machine.rounds.current_round = JackpotRounds.ROUNDS
 	machine.rounds.end_round()
 	assert_string_contains(banner.caption(), "150 BALLS")

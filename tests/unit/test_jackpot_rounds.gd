@@ -48,7 +48,7 @@ func test_rounds_count_from_one_to_the_last_and_then_the_jackpot_is_over() -> vo
 	rounds.finished.connect(func(balls: int) -> void: paid.append(balls))
 	assert_false(rounds.active())
 	rounds.begin()
-	assert_eq(rounds.round, 1)
+	assert_eq(rounds.current_round, 1)
 	for n in JackpotRounds.ROUNDS:
 		rounds.add_paid(10)
 		rounds.end_round()
@@ -69,9 +69,9 @@ func test_a_break_separates_the_rounds() -> void:
 	rounds.end_round()
 	assert_true(rounds.in_break())
 	rounds.advance(JackpotRounds.BREAK_SECONDS - 0.1)
-	assert_eq(rounds.round, 1, "still in the break")
+	assert_eq(rounds.current_round, 1, "still in the break")
 	rounds.advance(0.2)
-	assert_eq(rounds.round, 2)
+	assert_eq(rounds.current_round, 2)
 	assert_false(rounds.in_break())
 
 
@@ -90,7 +90,7 @@ func test_a_round_ends_after_the_attackers_catches() -> void:
 	assert_eq(ended, [1])
 	machine.advance(JackpotRounds.BREAK_SECONDS + 0.01)
 	assert_true(machine.is_open(ATTACKER), "round 2 opens it again")
-	assert_eq(machine.rounds.round, 2)
+	assert_eq(machine.rounds.current_round, 2)
 
 
 func test_a_round_ends_after_the_attackers_seconds() -> void:
@@ -113,7 +113,7 @@ func test_a_whole_jackpot_pays_its_rounds_and_no_spin_starts_meanwhile() -> void
 	_jackpot(machine)
 	machine.catch(0)  # a spin waits for the jackpot to end
 	for n in JackpotRounds.ROUNDS:
-		assert_eq(machine.rounds.round, n + 1)
+		assert_eq(machine.rounds.current_round, n + 1)
 		for i in OPEN_CATCHES:
 			machine.catch(ATTACKER)
 		machine.advance(0.5)

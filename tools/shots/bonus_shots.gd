@@ -77,7 +77,7 @@ static func _mid_reach(rules: PachinkoRules) -> bool:
 
 
 static func _third_round(rules: PachinkoRules) -> bool:
-	return rules.bonus.rounds.round == 3 and rules.bonus.any_attacker_open()
+	return rules.bonus.rounds.current_round == 3 and rules.bonus.any_attacker_open()
 
 
 static func _play_until(rules: PachinkoRules, moment: Callable) -> bool:

@@ -20,7 +20,8 @@ func _init(on_level: BoardLevel, groups: Array) -> void:
 	super(on_level)
 	for group: Array in groups:
 		var items: Array[Vector2i] = group[0]
-		_groups.append([items.duplicate(), float(group[1])])
+		var axis: float = group[1]
+		_groups.append([items.duplicate(), axis])
 		_count += items.size()
 
 

@@ -241,7 +241,7 @@ static func _reach(point: Vector2, from: Vector2, to: Vector2) -> float:
 static func _crosses(box: Rect2, from: Vector2, to: Vector2) -> bool:
 	if box.has_point(from) or box.has_point(to):
 		return true
-	var corners := [box.position, Vector2(box.end.x, box.position.y), box.end]
+	var corners: Array[Vector2] = [box.position, Vector2(box.end.x, box.position.y), box.end]
 	corners.append(Vector2(box.position.x, box.end.y))
 	for k in 4:
 		var hit: Variant = Geometry2D.segment_intersects_segment(

@@ -107,9 +107,9 @@ func _on_reach_started() -> void:
 	_play(SoundBank.REACH_RISE, -3.0)
 
 
-func _on_round_started(round: int, rounds: int) -> void:
-	if round > 1:  # the first comes with the jackpot's own moment
-		banner.show_round(_rules.level.ring_center, _rules.level.ring_radius, round, rounds)
+func _on_round_started(round_number: int, rounds: int) -> void:
+	if round_number > 1:  # the first comes with the jackpot's own moment
+		banner.show_round(_rules.level.ring_center, _rules.level.ring_radius, round_number, rounds)
 		_play(SoundBank.ROUND_BELL, -4.0)
 
 

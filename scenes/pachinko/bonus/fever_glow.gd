@@ -32,16 +32,16 @@ func is_lit() -> bool:
 func caption() -> String:
 	if not is_lit():
 		return ""
-	var round := "ROUND %d / %d" % [_machine.rounds.round, JackpotRounds.ROUNDS]
+	var round_text := "ROUND %d / %d" % [_machine.rounds.current_round, JackpotRounds.ROUNDS]
 	if _machine.rounds.in_break():
-		return "%s  next round…" % round
+		return "%s  next round…" % round_text
 	for i in _level.bonus_pockets.size():
 		if _machine.is_open(i) and _level.bonus_pockets[i].role == BonusPocketSpec.Role.ATTACKER:
 			return (
 				"%s  %ds  %d to catch"
-				% [round, ceili(_machine.time_left(i)), _machine.catches_left(i)]
+				% [round_text, ceili(_machine.time_left(i)), _machine.catches_left(i)]
 			)
-	return round
+	return round_text
 
 
 func _process(delta: float) -> void:

@@ -28,12 +28,12 @@ func show_jackpot(
 	_age = -maxf(delay, 0.0)
 
 
-## Announces round `round` of `rounds`.
-func show_round(center: Vector2, radius: float, round: int, rounds: int) -> void:
+## Announces round `round_number` of `rounds`.
+func show_round(center: Vector2, radius: float, round_number: int, rounds: int) -> void:
 	_show(
 		center,
 		radius,
-		"ROUND %d / %d" % [round, rounds],
+		"ROUND %d / %d" % [round_number, rounds],
 		"feed the attacker!",
 		ROUND_SECONDS,
 		false

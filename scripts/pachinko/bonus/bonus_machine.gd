@@ -231,18 +231,18 @@ func _on_spin_finished(result: PackedInt32Array, jackpot: bool) -> void:
 	reels_finished.emit(result, jackpot)
 
 
-func _on_round_started(round: int, count: int) -> void:
+func _on_round_started(round_number: int, count: int) -> void:
 	for i in _open.size():
 		if _is_attacker(i):
 			var spec := _level.bonus_pockets[i]
 			_time_left[i] = spec.open_seconds
 			_catches_left[i] = maxi(spec.open_catches, 1)
 			_set_open(i, true)
-	jackpot_round_started.emit(round, count)
+	jackpot_round_started.emit(round_number, count)
 
 
-func _on_round_ended(round: int, count: int) -> void:
-	jackpot_round_ended.emit(round, count)
+func _on_round_ended(round_number: int, count: int) -> void:
+	jackpot_round_ended.emit(round_number, count)
 
 
 func _on_jackpot_finished(paid: int) -> void:

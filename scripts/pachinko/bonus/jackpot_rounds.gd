@@ -19,7 +19,7 @@ const ROUNDS := 10
 const BREAK_SECONDS := 1.5
 
 ## The round under way or in its break (1..ROUNDS), 0 when no jackpot is on.
-var round := 0
+var current_round := 0
 ## Balls paid since the jackpot began.
 var paid := 0
 
@@ -28,7 +28,7 @@ var _break_left := 0.0
 
 ## True from a jackpot's first round to the end of its last.
 func active() -> bool:
-	return round > 0
+	return current_round > 0
 
 
 ## True between two rounds.
@@ -40,10 +40,10 @@ func in_break() -> bool:
 func begin() -> void:
 	if active():
 		return
-	round = 1
+	current_round = 1
 	paid = 0
 	_break_left = 0.0
-	round_started.emit(round, ROUNDS)
+	round_started.emit(current_round, ROUNDS)
 
 
 ## The attackers of the round under way have all shut: the round is over, and after the
@@ -51,10 +51,10 @@ func begin() -> void:
 func end_round() -> void:
 	if not active() or in_break():
 		return
-	round_ended.emit(round, ROUNDS)
-	if round >= ROUNDS:
+	round_ended.emit(current_round, ROUNDS)
+	if current_round >= ROUNDS:
 		var total := paid
-		round = 0
+		current_round = 0
 		finished.emit(total)
 	else:
 		_break_left = BREAK_SECONDS
@@ -73,5 +73,5 @@ func advance(delta: float) -> void:
 	_break_left -= delta
 	if _break_left <= 0.0:
 		_break_left = 0.0
-		round += 1
-		round_started.emit(round, ROUNDS)
+		current_round += 1
+		round_started.emit(current_round, ROUNDS)
