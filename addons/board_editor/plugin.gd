@@ -196,6 +196,34 @@ func get_board_input() -> BoardInput:
 	return _board_input
 
 
+## The board tool's dock; used by the self-check and the screenshot hooks.
+func get_dock() -> BoardDock:
+	return _dock
+
+
+## The board node being edited (null when none); used by the self-check.
+func get_board_node() -> BoardNode:
+	return _node if is_instance_valid(_node) else null
+
+
+## Gives the selected node a fresh board of `kind` (BoardLevel.Kind), as the dock's New
+## board button does: one undo step.
+func new_board(kind: int) -> void:
+	_new_board(kind)
+
+
+## Saves the boards and play-tests the edited one, as the dock's Play button does.
+func play_test() -> void:
+	_play_test()
+
+
+## Marks problem `index` on the board and in the dock's list without moving the view (the
+## screenshot hook's still of a marked problem).
+func mark_issue(index: int) -> void:
+	_focused_issue = index
+	update_overlays()
+
+
 ## The problems found on the edited board (a copy; empty when none is edited).
 func get_issues() -> Array[BoardIssue]:
 	return _issues.duplicate()

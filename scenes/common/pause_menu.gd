@@ -94,6 +94,11 @@ func _on_menu_pressed() -> void:
 	App.go_to_level_select(App.level_select_kind)
 
 
+## The settings screen opened from this menu (null while it is not open).
+func open_settings_screen() -> Control:
+	return _settings
+
+
 func _open_settings() -> void:
 	if not ResourceLoader.exists(SETTINGS_SCENE):
 		return

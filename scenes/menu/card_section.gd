@@ -88,6 +88,11 @@ func take_loaded(most: int) -> void:
 
 
 ## True from start until every listed file is on its card.
+## Boards loaded before their card was made, kept until their card comes.
+func waiting_results() -> int:
+	return _early.size()
+
+
 func is_loading() -> bool:
 	return _loading != null
 

@@ -64,6 +64,11 @@ static func arguments(
 	)
 
 
+## The worker process's id (-1 before it starts); the tests look for it once it is gone.
+func process_id() -> int:
+	return _pid
+
+
 ## Starts the worker process. False (with `failure` set) when the plan cannot run this way
 ## or the process does not start.
 func start() -> bool:

@@ -45,7 +45,7 @@ func _run() -> void:
 	var fresh := (root as BoardNode).level == null
 	if fresh:
 		# A node without a board: the dock's "New maze board" button.
-		_plugin.call("_new_board", BoardLevel.Kind.MAZE)
+		_plugin.new_board(BoardLevel.Kind.MAZE)
 		await _frames(5)
 	var session: Session = _plugin.get_session()
 	if session == null:
@@ -106,10 +106,10 @@ func _check_play_test(level: BoardLevel) -> void:
 	var scratch_path := level.resource_path
 	var copy := "res://levels/%s/self_check_play.board" % BoardLevel.kind_name(level.kind)
 	level.take_over_path(copy)
-	_plugin.call("_play_test")
+	_plugin.play_test()
 	await _frames(30)
 	var named: String = PlaytestRequest.read(PlaytestRequest.PATH)["board"]
-	var said: String = (_plugin.get("_dock") as Node).get("_status").text
+	var said := _plugin.get_dock().status_text()
 	_expect(EditorInterface.is_playing_scene() or named == copy, "play-test did not start: " + said)
 	var playing := EditorInterface.get_playing_scene()
 	print("board editor self-check: play-test scene '%s', request '%s'" % [playing, named])
@@ -216,14 +216,14 @@ func _check_input_stays_in_the_tool(session: Session) -> void:
 		var release := press.duplicate() as InputEventMouseButton
 		release.pressed = false
 		events.append_array([press, drag, release])
-	var position := (_plugin.get("_node") as Node2D).position
+	var position := _plugin.get_board_node().position
 	for event in events:
 		var used: bool = _plugin._forward_canvas_gui_input(event)
 		var drag_only := (
 			event is InputEventMouseMotion and (event as InputEventMouseMotion).button_mask == 0
 		)
 		_expect(used or drag_only, "the board tool let %s through to Godot" % event.as_text())
-	_expect((_plugin.get("_node") as Node2D).position == position, "the board node moved")
+	_expect(_plugin.get_board_node().position == position, "the board node moved")
 
 
 # Drags every pin and pocket of the board through the plugin with the overlay drawn each
@@ -292,7 +292,7 @@ func _check_node_outside_the_tree(root: BoardNode) -> void:
 
 
 func _screen_point(board_point: Vector2) -> Vector2:
-	var node := _plugin.get("_node") as Node2D
+	var node := _plugin.get_board_node()
 	return node.get_viewport_transform() * node.get_global_transform() * board_point
 
 

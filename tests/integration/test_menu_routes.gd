@@ -52,12 +52,11 @@ func after_all() -> void:
 func test_escape_leaves_the_level_select_without_a_script_error() -> void:
 	var screen := await _open(App.go_to_level_select.bind("pachinko"), LEVEL_SELECT)
 	await _loaded(screen)
-	# handed to the screen as the viewport hands it unhandled input (under GUT a ui_cancel
-	# press is taken before the GUI; a real window delivers it, see the route tests' pause)
+	# pushed into the screen's viewport as a window delivers it (input, GUI, unhandled input)
 	var cancel := InputEventAction.new()
 	cancel.action = &"ui_cancel"
 	cancel.pressed = true
-	screen.call("_unhandled_input", cancel)
+	screen.get_viewport().push_input(cancel)
 	var menu := await _became(MAIN_MENU)
 	assert_not_null(menu, "Esc goes back to the title screen")
 	assert_engine_error_count(0, "no error on the way out (was: set_input_as_handled on null)")

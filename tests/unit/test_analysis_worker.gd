@@ -45,7 +45,7 @@ func test_cancel_kills_the_worker() -> void:
 	assert_eq(worker.phase, PachinkoAnalysis.Phase.CANCELLED)
 	OS.delay_msec(200)
 	if DirAccess.dir_exists_absolute("/proc/self"):
-		var pid: int = worker.get("_pid")
+		var pid := worker.process_id()
 		assert_false(DirAccess.dir_exists_absolute("/proc/%d" % pid), "the process is gone")
 
 

@@ -40,7 +40,7 @@ func test_a_file_loaded_before_its_card_fills_the_card_as_it_is_made() -> void:
 	# every file loads; the two with no card yet are kept for their cards (read back here)
 	var early_all := func() -> bool:
 		section.take_loaded(10)
-		return (section.get("_early") as Dictionary).size() == 2 and fills[0] == 1
+		return section.waiting_results() == 2 and fills[0] == 1
 	await wait_until(early_all, 20.0)
 	assert_eq(fills[0], 1, "only the card that exists was filled")
 	assert_true(section.is_loading(), "still loading while cards wait to be made")

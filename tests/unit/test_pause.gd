@@ -105,7 +105,7 @@ func test_settings_from_the_pause_menu_show_their_focused_first_row() -> void:
 	_press("pause")
 	_menu.get_node("%SettingsButton").emit_signal("pressed")
 	await wait_process_frames(6)
-	var settings: Control = _menu.get("_settings")
+	var settings: Control = _menu.open_settings_screen()
 	var scroll: ScrollContainer = settings.get_node("Margin/Panel/Box/Scroll")
 	var master: Control = settings.get_node("%MasterSlider")
 	assert_eq(settings.get_viewport().gui_get_focus_owner(), master, "Master volume has focus")

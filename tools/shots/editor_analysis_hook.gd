@@ -12,11 +12,11 @@ const EditorShotHook := preload("res://tools/shots/editor_shot_hook.gd")
 ## Longest wait for the analysis, seconds.
 const RUN_LIMIT := 200.0
 
-var _plugin: EditorPlugin
+var _plugin: BoardEditorPlugin
 
 
 func _init(plugin: EditorPlugin) -> void:
-	_plugin = plugin
+	_plugin = plugin as BoardEditorPlugin
 
 
 func _ready() -> void:
@@ -37,11 +37,10 @@ func _run() -> void:
 		get_tree().quit(1)
 		return
 	var framer := EditorShotHook.new(_plugin)
-	framer.call("_frame_board", node)
+	framer.frame_board(node)
 	framer.free()
-	var dock: Node = _plugin.get("_dock")
+	var dock := _plugin.get_dock()
 	var is_maze := node.level != null and node.level.is_maze()
-	var panel: Node = dock.get("maze_analysis" if is_maze else "analysis")
 	# EDITOR_ANALYSIS_IDLE_EDITOR=1 times the run in an editor that draws only what changes
 	# (its own default low-processor mode), as a designer's does, not one that draws every
 	# frame; the picture is taken with every frame drawn again.
@@ -51,10 +50,13 @@ func _run() -> void:
 	# (unset: the panel's default), to time the two side by side.
 	var worker := OS.get_environment("EDITOR_ANALYSIS_WORKER")
 	if not is_maze and worker in ["0", "1"]:
-		panel.set("use_worker", worker == "1")
-	panel.call("start")
+		dock.analysis.use_worker = worker == "1"
+	if is_maze:
+		dock.maze_analysis.start()
+	else:
+		dock.analysis.start()
 	var started := Time.get_ticks_msec()
-	while panel.call("is_running") and Time.get_ticks_msec() - started < RUN_LIMIT * 1000.0:
+	while _is_running(dock, is_maze) and Time.get_ticks_msec() - started < RUN_LIMIT * 1000.0:
 		await _frames(10)
 	print(
 		(
@@ -62,7 +64,11 @@ func _run() -> void:
 			% [
 				(Time.get_ticks_msec() - started) / 1000.0,
 				" (idle editor)" if idle_editor else "",
-				" (worker process)" if panel.get("use_worker") else " (editor threads)",
+				(
+					" (worker process)"
+					if not is_maze and dock.analysis.use_worker
+					else " (editor threads)"
+				),
 			]
 		)
 	)
@@ -75,3 +81,7 @@ func _run() -> void:
 func _frames(count: int) -> void:
 	for i in count:
 		await get_tree().process_frame
+
+
+func _is_running(dock: BoardDock, is_maze: bool) -> bool:
+	return dock.maze_analysis.is_running() if is_maze else dock.analysis.is_running()

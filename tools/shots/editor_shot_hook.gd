@@ -71,13 +71,12 @@ func _run() -> void:
 		get_tree().quit(1)
 		return
 	_stage(parts[1])
-	_frame_board(node as BoardNode)
+	frame_board(node as BoardNode)
 	await _frames(5)
 	if parts[1] == "wall":
 		_plugin.focus_issue(0)  # jump-to-problem: centred and zoomed in
 	else:
-		_plugin.set("_focused_issue", 0)
-		_plugin.update_overlays()
+		_plugin.mark_issue(0)
 	var window := EditorInterface.get_base_control().get_viewport()
 	var error: Error = await ShotCapture.save(window, parts[2])
 	# Take the staged edit back so the board file is left as it was.
@@ -179,9 +178,9 @@ func _stage_curve(session: Session, input: BoardInput) -> void:
 		tool.motion(at, InputEventMouseMotion.new())
 
 
-# Zooms the 2D view out until the whole board fits and centres it. The 2D editor offers no
-# plugin API for this, so it uses the canvas editor's own zoom widget and `center_at`.
-func _frame_board(node: BoardNode) -> void:
+## Zooms the 2D view out until the whole board fits and centres it. The 2D editor offers no
+## plugin API for this, so it uses the canvas editor's own zoom widget and `center_at`.
+func frame_board(node: BoardNode) -> void:
 	var base := EditorInterface.get_base_control()
 	var editors := base.find_children("*", "CanvasItemEditor", true, false)
 	if editors.is_empty() or node.level == null:

@@ -153,6 +153,11 @@ func _watch_fields(node: Node) -> void:
 	)
 
 
+## The message line's text now (what the last action said, "" when nothing).
+func status_text() -> String:
+	return _status.text
+
+
 ## Shows a line of feedback under the buttons ("" hides it).
 func show_message(text: String) -> void:
 	_status.text = text
