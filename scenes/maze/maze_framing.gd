@@ -48,6 +48,16 @@ func fit(points: PackedVector3Array, view: Vector2, area: Rect2, ball_diameter: 
 	offset = bounds.get_center() - Vector2(shift.x, -shift.y) * _k
 
 
+## The width over the height of `points` (stage units) as the camera sees them.
+func aspect_of(points: PackedVector3Array) -> float:
+	if points.is_empty():
+		return 0.0
+	var bounds := Rect2(_at_near(points[0]), Vector2.ZERO)
+	for p in points:
+		bounds = bounds.expand(_at_near(p))
+	return bounds.size.x / bounds.size.y if bounds.size.y > 0.0 else 0.0
+
+
 ## Where `p` (stage units) is drawn on the screen, in pixels from the top left.
 func project(p: Vector3) -> Vector2:
 	var q := _at_near(p) - offset
