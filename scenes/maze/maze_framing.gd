@@ -24,6 +24,10 @@ var offset := Vector2.ZERO
 ## How many pixels across a ball is drawn (at the board's height, untilted), in the view's
 ## units.
 var ball_px := 0.0
+## The width over the height of the board the camera last fitted (its frame's corners under
+## every tilt, as seen): above the region's own shape the board is drawn by its width and
+## leaves room above and below it (MazePanelLayout narrows the side column then).
+var board_aspect := 0.0
 
 var _view := Vector2(1280.0, 720.0)
 var _region := Rect2(0.0, 0.0, 1280.0, 720.0)

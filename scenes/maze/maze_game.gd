@@ -258,7 +258,7 @@ func _layout() -> Rect2:
 	if _panel_layout == null:
 		_panel_layout = MazePanelLayout.new(_side, _joystick)
 	var stretch := get_viewport().get_final_transform().get_scale().y
-	var aspect := _stage.framed_aspect() if rules != null else 0.0
+	var aspect := _stage.framing().board_aspect if rules != null else 0.0
 	var region := _panel_layout.place(get_viewport_rect().size, stretch, aspect)
 	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
 		get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)

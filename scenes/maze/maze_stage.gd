@@ -347,15 +347,6 @@ func _lowest_point(pose: Transform3D) -> float:
 # Places the camera the seed's perspective distance away and fits every corner of the board
 # under any tilt into the board's region (MazeFraming), and puts the table under the lowest
 # point any tilt can give the board.
-## The width over the height of what the camera fits for this board (its frame's corners
-## under every tilt, seen from the camera): above the board region's own shape, the board
-## is drawn by its width and leaves room above and below it.
-func framed_aspect() -> float:
-	_framing.distance = PERSPECTIVE_PX * UNITS_PER_PX
-	_framing.near = _camera.near
-	return _framing.aspect_of(_tilted_corners())
-
-
 # The board's outer corners (frame included) at each full tilt, in the stage's space.
 func _tilted_corners() -> PackedVector3Array:
 	var box := _board.outer_box()
@@ -378,6 +369,7 @@ func _frame() -> void:
 		lowest = minf(lowest, p.z)
 	_framing.distance = distance
 	_framing.near = _camera.near
+	_framing.board_aspect = _framing.aspect_of(points)
 	_framing.fit(points, view, region, _ball_radius * 2.0 * UNITS_PER_PX)
 	_pivot.position = Vector3.ZERO
 	_camera.position = Vector3(0.0, 0.0, distance)
