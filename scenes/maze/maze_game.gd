@@ -391,6 +391,8 @@ func _on_restart_requested() -> void:
 func _show_best() -> void:
 	var best := App.best_maze_time(rules.level.board_id, rules.hard_mode)
 	_best.text = "Best  %s" % (_format_time(best) if best >= 0.0 else "--")
+	if _panel_layout != null:
+		_layout()  # a narrowed column widens again for a longer line (never while playing)
 
 
 func _load_level() -> BoardLevel:
