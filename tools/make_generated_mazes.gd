@@ -21,11 +21,11 @@ const BOARDS := [
 	[
 		"cloister",
 		"Cloister",
-		"Short corridors round a quiet goal room; three holes wait in the dead ends.",
+		"Short corridors round a quiet goal room, loops to try; two holes wait in dead ends.",
 		8,
 		7,
-		3,
-		0.1,
+		2,
+		0.0,
 		7,
 	],
 	[

@@ -24,6 +24,10 @@ var offset := Vector2.ZERO
 ## How many pixels across a ball is drawn (at the board's height, untilted), in the view's
 ## units.
 var ball_px := 0.0
+## The width over the height of the board the camera last fitted (its frame's corners under
+## every tilt, as seen): above the region's own shape the board is drawn by its width and
+## leaves room above and below it (MazePanelLayout narrows the side column then).
+var board_aspect := 0.0
 
 var _view := Vector2(1280.0, 720.0)
 var _region := Rect2(0.0, 0.0, 1280.0, 720.0)
@@ -46,6 +50,16 @@ func fit(points: PackedVector3Array, view: Vector2, area: Rect2, ball_diameter: 
 	ball_px = ball_diameter * near / distance / _k
 	var shift := _region.get_center() - _view * 0.5
 	offset = bounds.get_center() - Vector2(shift.x, -shift.y) * _k
+
+
+## The width over the height of `points` (stage units) as the camera sees them.
+func aspect_of(points: PackedVector3Array) -> float:
+	if points.is_empty():
+		return 0.0
+	var bounds := Rect2(_at_near(points[0]), Vector2.ZERO)
+	for p in points:
+		bounds = bounds.expand(_at_near(p))
+	return bounds.size.x / bounds.size.y if bounds.size.y > 0.0 else 0.0
 
 
 ## Where `p` (stage units) is drawn on the screen, in pixels from the top left.

@@ -27,6 +27,9 @@ const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
+## The panel's count flashes this long when a ball is lost (seconds), in the hard colour.
+const LOST_FLASH_SECONDS := 1.2
+const LOST_FLASH := Color(0.85, 0.15, 0.2)
 
 ## The rules of the board being played (null if no board could be loaded).
 var rules: MazeRules
@@ -46,6 +49,10 @@ var _win_panel := MazeWinPanel.new()
 var _panel_layout: MazePanelLayout
 ## Frames left in which the panel is placed again after a window change (SETTLE_FRAMES).
 var _settle_frames := 0
+## Seconds left of the count's flash after a ball was lost (0: none).
+var _count_flash_left := 0.0
+## True from a ball lost until the card saying so is up (it waits for the ball to drop).
+var _loss_card_due := false
 
 @onready var _stage: MazeStage = $Stage
 @onready var _side: VBoxContainer = $Side
@@ -140,6 +147,10 @@ func _process(delta: float) -> void:
 	_timer.text = "Time  %s" % _format_time(rules.elapsed)
 	if not rules.is_over():
 		_show_next_medal()
+	_step_count_flash(delta)
+	if _loss_card_due and _stage.balls().fall_progress() >= 1.0:
+		_loss_card_due = false
+		_win_panel.present_loss(rules.balls_left(), rules.ball_total())
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -189,6 +200,8 @@ func _on_calibrate() -> void:
 
 
 func _on_game_reset() -> void:
+	_stop_count_flash()
+	_loss_card_due = false
 	_show_goal_count(0)
 	_win_panel.hide()
 	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
@@ -245,7 +258,8 @@ func _layout() -> Rect2:
 	if _panel_layout == null:
 		_panel_layout = MazePanelLayout.new(_side, _joystick)
 	var stretch := get_viewport().get_final_transform().get_scale().y
-	var region := _panel_layout.place(get_viewport_rect().size, stretch)
+	var aspect := _stage.framing().board_aspect if rules != null else 0.0
+	var region := _panel_layout.place(get_viewport_rect().size, stretch, aspect)
 	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
 		get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)
 	_stage.set_board_region(region)
@@ -302,8 +316,39 @@ func _on_lost(hole: int) -> void:
 	_sounds.play(Recipes.BALL_DROP)
 	haptics.drop()
 	var lost := MazeHints.lost()
-	_note.show_note(lost[0], lost[1])
+	# at once, not faded in: the run is over (every ball must reach the dip)
+	_note.show_note_now(lost[0], lost[1])
 	_sounds.play(SoundBank.HOLE_FALL, -9.0)
+	_in_goal.text = MazeHints.balls_left(rules.balls_left(), rules.ball_total())
+	_flash_count()
+	_in_goal.modulate = LOST_FLASH
+	# the card with Retry comes up once the ball has dropped out of sight (_process)
+	_loss_card_due = not rules.can_still_win()
+
+
+# Flashes the panel's count in red a few times (a ball was lost); _process runs it.
+func _flash_count() -> void:
+	_count_flash_left = LOST_FLASH_SECONDS
+
+
+# Steps the count's flash by `delta` seconds: three red pulses, then its own colour.
+func _step_count_flash(delta: float) -> void:
+	if _count_flash_left <= 0.0:
+		return
+	_count_flash_left = maxf(_count_flash_left - delta, 0.0)
+	var pulses := 3.0 * (1.0 - _count_flash_left / LOST_FLASH_SECONDS)
+	var strength := 0.5 - 0.5 * cos(pulses * TAU)
+	_in_goal.modulate = Color.WHITE.lerp(LOST_FLASH, strength)
+
+
+func _stop_count_flash() -> void:
+	_count_flash_left = 0.0
+	_in_goal.modulate = Color.WHITE
+
+
+## True while the panel's count flashes (for tests).
+func count_flashing() -> bool:
+	return _count_flash_left > 0.0
 
 
 # The rules counted a ball in (or out): the panel's count at once, and for a ball in, a
@@ -346,6 +391,8 @@ func _on_restart_requested() -> void:
 func _show_best() -> void:
 	var best := App.best_maze_time(rules.level.board_id, rules.hard_mode)
 	_best.text = "Best  %s" % (_format_time(best) if best >= 0.0 else "--")
+	if _panel_layout != null:
+		_layout()  # a narrowed column widens again for a longer line (never while playing)
 
 
 func _load_level() -> BoardLevel:

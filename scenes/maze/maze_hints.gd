@@ -45,14 +45,20 @@ static func won(hard: bool, holes: int = 1) -> String:
 	return "" if hard or holes == 0 else "Press %s for hard mode" % _hard()
 
 
-## The note and its hint when a ball falls into a black hole.
+## The note and its hint when a ball falls into a black hole: the run can't be won any
+## more (every ball must reach the dip), and how to go again.
 static func lost() -> PackedStringArray:
 	return PackedStringArray(
 		[
-			"A ball fell into a black hole! Press %s to reset the game." % _reset(),
-			"Back to easy? Press %s" % _easy(),
+			"A ball fell into a black hole: this run can't be won now.",
+			"Retry, or press %s to start again. Back to easy? Press %s" % [_reset(), _easy()],
 		]
 	)
+
+
+## The panel's count once a ball is lost: "Ball lost: 3 of 4 left".
+static func balls_left(left: int, total: int) -> String:
+	return "Ball lost: %d of %d left" % [left, total]
 
 
 static func _reset() -> String:

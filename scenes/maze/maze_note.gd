@@ -18,6 +18,15 @@ func show_note(headline: String, hint: String) -> void:
 	_fade_to(1.0)
 
 
+## Shows `headline` and `hint` at full strength at once (news that cannot wait for the
+## fade: a ball lost).
+func show_note_now(headline: String, hint: String) -> void:
+	show_note(headline, hint)
+	if _tween != null:
+		_tween.kill()
+	modulate.a = 1.0
+
+
 ## Fades the note out (the game started).
 func fade_out() -> void:
 	_fade_to(0.0)

@@ -15,6 +15,10 @@ const SIDE_EDGE := 24.0
 ## A column whose text grew (a small window) is at most this share of the window's width.
 const SIDE_MOST_SHARE := 0.36
 const PORTRAIT_SIDE_SHARE := 0.45
+## The narrowest the column goes for a wide board (design px, grown with the text).
+const SIDE_NARROWEST := 210.0
+## The margin the framing keeps round the board (MazeFraming.MARGIN_PX).
+const BOARD_MARGIN := 8.0
 ## Layouts tried again, a frame apart, while the column has no width yet.
 const RETRIES := 3
 
@@ -40,8 +44,12 @@ func window_changed() -> void:
 
 ## Places the panel for a view of `view` px drawn `stretch` times its size and returns the
 ## board's region. True in `needs_retry` afterwards when the column had no width yet (its
-## wrapping lines stood one word a line): place it again next frame.
-func place(view: Vector2, stretch: float) -> Rect2:
+## wrapping lines stood one word a line): place it again next frame. `board_aspect` (the
+## framed board's width over height, 0 when not known) lets the column narrow, down to what
+## its text needs, for a board wider than the region's shape: such a board is drawn by its
+## width, so each pixel the column gives up draws it bigger (a 900 × 700 window's balls
+## were about 9 px on The Deep).
+func place(view: Vector2, stretch: float, board_aspect := 0.0) -> Rect2:
 	needs_retry = false
 	_side_text.apply(stretch)
 	if view.x >= view.y:
@@ -49,6 +57,7 @@ func place(view: Vector2, stretch: float) -> Rect2:
 		# column widens with its text and the board takes the rest
 		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
 		width = minf(width * _side_text.factor, view.x * SIDE_MOST_SHARE)
+		width = _narrowed(width, view, board_aspect)
 		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
 		_side.offset_left = -width - SIDE_EDGE
 		_side.offset_right = -SIDE_EDGE
@@ -64,6 +73,20 @@ func place(view: Vector2, stretch: float) -> Rect2:
 	_side.offset_bottom = -SIDE_EDGE * 0.5
 	_fit_joystick(2.0, height - SIDE_EDGE * 0.5)
 	return Rect2(0.0, 0.0, view.x, view.y - height)
+
+
+# The column's `width` less what a board of `board_aspect` could use of it (the width it
+# would be drawn at, filling the view's height), but never under the narrowest the column's
+# own lines allow (SIDE_NARROWEST times the text's growth, or its widest unbreakable line).
+func _narrowed(width: float, view: Vector2, board_aspect: float) -> float:
+	if board_aspect <= 0.0:
+		return width
+	var wanted := board_aspect * (view.y - 2.0 * BOARD_MARGIN)
+	var short := wanted - (view.x - width - SIDE_EDGE * 1.5 - 2.0 * BOARD_MARGIN)
+	if short <= 0.0:
+		return width
+	var narrowest := maxf(SIDE_NARROWEST * _side_text.factor, _side.get_combined_minimum_size().x)
+	return maxf(width - short, minf(narrowest, width))
 
 
 # Sizes the joystick at most `largest` times the seed's size and no bigger than the height

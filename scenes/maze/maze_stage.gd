@@ -347,22 +347,29 @@ func _lowest_point(pose: Transform3D) -> float:
 # Places the camera the seed's perspective distance away and fits every corner of the board
 # under any tilt into the board's region (MazeFraming), and puts the table under the lowest
 # point any tilt can give the board.
-func _frame() -> void:
-	var distance := PERSPECTIVE_PX * UNITS_PER_PX
-	var view := get_viewport().get_visible_rect().size if is_inside_tree() else Vector2(1280, 720)
-	var region := _region if _region.has_area() else Rect2(Vector2.ZERO, view)
+# The board's outer corners (frame included) at each full tilt, in the stage's space.
+func _tilted_corners() -> PackedVector3Array:
 	var box := _board.outer_box()
 	var points := PackedVector3Array()
-	var lowest := 0.0
 	var m := deg_to_rad(TiltInput.MAX_TILT_DEG)
 	for corner: Vector2 in [Vector2(m, m), Vector2(m, -m), Vector2(-m, m), Vector2(-m, -m)]:
 		var pose := Transform3D(Basis.from_euler(Vector3(corner.y, corner.x, 0.0)), Vector3.ZERO)
 		for i in 8:
-			var p: Vector3 = pose * box.get_endpoint(i)
-			points.append(p)
-			lowest = minf(lowest, p.z)
+			points.append(pose * box.get_endpoint(i))
+	return points
+
+
+func _frame() -> void:
+	var distance := PERSPECTIVE_PX * UNITS_PER_PX
+	var view := get_viewport().get_visible_rect().size if is_inside_tree() else Vector2(1280, 720)
+	var region := _region if _region.has_area() else Rect2(Vector2.ZERO, view)
+	var points := _tilted_corners()
+	var lowest := 0.0
+	for p in points:
+		lowest = minf(lowest, p.z)
 	_framing.distance = distance
 	_framing.near = _camera.near
+	_framing.board_aspect = _framing.aspect_of(points)
 	_framing.fit(points, view, region, _ball_radius * 2.0 * UNITS_PER_PX)
 	_pivot.position = Vector3.ZERO
 	_camera.position = Vector3(0.0, 0.0, distance)

@@ -1,7 +1,8 @@
 extends CenterContainer
 ## The card that shows over the board when a maze is won: the medal earned drawn large, the
 ## time, the medal's line (or how far it was from the next), the change against the best
-## time, and Next board / Retry / Menu. The buttons take keyboard and gamepad focus (the
+## time, and Next board / Retry / Menu; or, when a ball is lost into a hole, that the run
+## can't be won, with Retry / Menu. The buttons take keyboard and gamepad focus (the
 ## first shown one gets it).
 
 ## The player chose the next board.
@@ -103,6 +104,22 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 	show()
 	_shown_at_msec = Time.get_ticks_msec()
 	(_next if has_next else _retry).grab_focus.call_deferred()
+
+
+## Shows the card of a run lost into a hole: what happened, that it can't be won any
+## more (`left` of `total` balls are still on the board), and Retry (focused) and Menu.
+func present_loss(left: int, total: int) -> void:
+	_headline.text = "Ball lost"
+	_time.text = "%d of %d balls left" % [left, total]
+	_medal.text = "Every ball has to reach the dip,\nso this run can't be won."
+	_medal.visible = true
+	_medal.add_theme_color_override("font_color", INK)
+	_best.text = ""
+	_disc.medal = Medals.Medal.NONE
+	_next.visible = false
+	show()
+	_shown_at_msec = Time.get_ticks_msec()
+	_retry.grab_focus.call_deferred()
 
 
 func _input(event: InputEvent) -> void:

@@ -205,6 +205,7 @@ func get_ball_velocity(id: int) -> Vector2:
 	return _balls.vel[i] if i >= 0 else Vector2.ZERO
 
 
+## Sets a ball's velocity and wakes every ball (a ball set moving may run into sleepers).
 func set_ball_velocity(id: int, v: Vector2) -> void:
 	var i: int = _balls.find(id)
 	if i < 0:
@@ -215,6 +216,22 @@ func set_ball_velocity(id: int, v: Vector2) -> void:
 	_balls.vel[i] = v
 	_balls.rest[i] = 0.0
 	_balls.wake_all()
+
+
+## Sets one ball's velocity from a rule that runs every step (before_step): like
+## set_ball_velocity, but it wakes only that ball, so the others keep sleeping (a rule that
+## woke every ball each step kept the whole board awake). For a nudge in place, where the
+## ball's neighbours have nothing new to answer.
+func steer_ball(id: int, v: Vector2) -> void:
+	var i: int = _balls.find(id)
+	if i < 0:
+		return
+	if not v.is_finite():
+		push_error("BallWorld.steer_ball: velocity must be finite (got %s)" % v)
+		return
+	_balls.vel[i] = v
+	_balls.rest[i] = 0.0
+	_balls.asleep[i] = 0
 
 
 ## Radius of a ball, or 0 for an unknown id.

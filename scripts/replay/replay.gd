@@ -36,7 +36,9 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## the first spin no longer waits, so a run on a board with reels plays differently than
 ## under 3.
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
-const RULES_VERSIONS := {"maze": 2, "pachinko": 4}
+## Maze 3: the dish wakes only the balls it holds (it woke every ball each step), so balls
+## resting elsewhere fall asleep while one sits in the dish and a run plays differently.
+const RULES_VERSIONS := {"maze": 3, "pachinko": 4}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME

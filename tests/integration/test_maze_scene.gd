@@ -357,4 +357,5 @@ func test_a_loss_names_the_reset_key() -> void:
 	for i in 30:
 		rules.step()
 	assert_eq(rules.state, MazeRules.State.LOST)
-	assert_string_contains(_note(), "A ball fell into a black hole! Press Space to reset")
+	assert_string_contains(_note(), "A ball fell into a black hole: this run can't be won now.")
+	assert_string_contains(_note(), "press Space to start again")

@@ -92,3 +92,43 @@ func test_a_ball_behind_a_wall_inside_the_rim_is_not_pulled() -> void:
 	var dip := GoalDip.new(rules.world, level)
 	assert_eq(dip.pull_at(Vector2(18.0, 0.0)), Vector2.ZERO, "behind the wall")
 	assert_lt(dip.pull_at(Vector2(8.0, 0.0)).x, 0.0, "this side of it")
+
+
+# The dish steers the balls inside its rim only: a ball held there must not wake the others
+# every step (it did: BallWorld.set_ball_velocity wakes every ball), so a ball resting
+# against a wall far from the goal still falls asleep while another sits in the dish.
+func test_a_ball_held_in_the_dish_lets_the_others_sleep() -> void:
+	var rules := _rules()
+	var goal := rules.level.goal_center
+	var ids := rules.world.get_ids()
+	rules.world.set_ball_position(ids[0], goal + Vector2(6.0, 0.0))
+	rules.world.set_ball_velocity(ids[0], Vector2.ZERO)
+	rules.set_tilt(Vector2(TiltInput.MAX_TILT_DEG, 0.0))
+	for i in 600:  # five seconds: the others roll to the right-hand walls and rest there
+		rules.step()
+	var offset := rules.world.get_ball_position(ids[0]) - goal
+	assert_lt(offset.length(), rules.level.goal_radius, "the first ball is still held")
+	var sleeping := 0
+	for i in range(1, ids.size()):
+		var at := rules.world.get_ball_position(ids[i]) - goal
+		if at.length() >= rules.level.goal_radius and rules.world.is_ball_asleep(ids[i]):
+			sleeping += 1
+	assert_gt(sleeping, 0, "a ball resting outside the dish sleeps though one is held in it")
+
+
+# Who the dish touches: only balls whose centre is inside its rim, and only themselves.
+func test_the_dish_wakes_only_the_balls_it_holds() -> void:
+	var rules := _rules()
+	var ids := rules.world.get_ids()
+	var dip := GoalDip.new(rules.world, rules.level)
+	for i in 240:  # two level seconds: every ball rests at its start and sleeps
+		rules.step()
+	for id in ids:
+		assert_true(rules.world.is_ball_asleep(id), "ball %d asleep at its start" % id)
+	rules.world.set_ball_position(ids[0], rules.level.goal_center + Vector2(8.0, 0.0))
+	for i in 240:
+		rules.step()
+	dip.apply(1.0 / 120.0)
+	for i in range(1, ids.size()):
+		assert_true(rules.world.is_ball_asleep(ids[i]), "ball %d left asleep" % ids[i])
+	assert_false(rules.world.is_ball_asleep(ids[0]), "the held ball is the one it moved")

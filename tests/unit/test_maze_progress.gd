@@ -136,6 +136,17 @@ func test_the_way_in_is_one_ball_then_two_then_four() -> void:
 		assert_eq(balls[i], 4, "then four: %s" % MazeProgress.ORDER[i])
 
 
+# Two blind play trials found the third board a wall after the second (two balls, no holes,
+# to four balls and three holes): the first four-ball board brings at most two holes, and
+# the fewest of the four-ball boards.
+func test_the_first_four_ball_board_is_a_gentle_step() -> void:
+	var first := BoardLoader.load_board(MazeProgress.shipped_path(MazeProgress.ORDER[2])).level
+	assert_lte(first.holes.size(), 2, "%s: at most two holes" % first.board_id)
+	for i in range(3, MazeProgress.ORDER.size()):
+		var later := BoardLoader.load_board(MazeProgress.shipped_path(MazeProgress.ORDER[i])).level
+		assert_lte(first.holes.size(), later.holes.size(), "no more holes than %s" % later.board_id)
+
+
 func test_the_autoplay_finishes_the_first_board_in_under_30_s() -> void:
 	var first := BoardLoader.load_board(MazeProgress.shipped_path(MazeProgress.ORDER[0])).level
 	var played := MazeAutoplay.run(first, 60.0, 1, false)

@@ -72,7 +72,7 @@ func _walled_off(offset: Vector2) -> bool:
 
 
 ## Pulls and slows every ball inside the rim for a step of `dt` seconds (the world calls it
-## before each step).
+## before each step). It touches no other ball: each it steers wakes alone.
 func apply(dt: float) -> void:
 	var ids := _world.get_ids()
 	var positions := _world.get_positions()
@@ -85,4 +85,5 @@ func apply(dt: float) -> void:
 		if pull == Vector2.ZERO:
 			continue  # walled off (or dead centre): left to roll as anywhere else
 		var velocity := _world.get_ball_velocity(ids[i])
-		_world.set_ball_velocity(ids[i], velocity * slowing + pull * dt)
+		# this ball only: the others keep sleeping (set_ball_velocity woke them all)
+		_world.steer_ball(ids[i], velocity * slowing + pull * dt)

@@ -162,6 +162,17 @@ func balls_lost() -> int:
 	return 1 if lost_hole >= 0 else 0
 
 
+## Balls still on the board (the board's count, less any that fell into a hole).
+func balls_left() -> int:
+	return world.ball_count() if world != null else 0
+
+
+## False once the game cannot be won: every ball must reach the goal, so a ball lost into a
+## hole ends the run's chance (the view says so at once and offers Retry).
+func can_still_win() -> bool:
+	return world != null and state != State.LOST and balls_left() == ball_total()
+
+
 ## The balls inside the goal circle (centre within the goal radius, as the seed), as the
 ## world's goal sensor reports them.
 func count_in_goal() -> int:
