@@ -1,3 +1,4 @@
+class_name MazeGame
 extends Control
 ## The tilt maze screen: loads the board the App picked, owns the MazeRules, feeds it the
 ## tilt from the joystick / keys / stick / accelerometer, and shows the result: the board in
@@ -169,6 +170,27 @@ func _unhandled_input(event: InputEvent) -> void:
 	else:
 		return
 	get_viewport().set_input_as_handled()
+
+
+## The screen's sound bank (its players and the sounds they hold).
+func sounds() -> SoundBank:
+	return _sounds
+
+
+## The best run's ghost being replayed, or null (none recorded, or the setting is off).
+func ghost() -> GhostRun:
+	return _ghost
+
+
+## The ghost's 3D view (hidden while there is no ghost).
+func ghost_view() -> Node3D:
+	return _ghost_view
+
+
+## Places the side panel and frames the board for the window as it is now (the screen does it
+## on every window change); returns the board's region in screen pixels.
+func lay_out() -> Rect2:
+	return _layout()
 
 
 ## The 3D stage showing the board (for tests and the screenshots).

@@ -4,7 +4,6 @@ extends GutTest
 ## ball that falls into a hole instead of vanishing.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const MazeBallSounds := preload("res://scenes/maze/maze_ball_sounds.gd")
 const MazeHaptics := preload("res://scenes/maze/maze_haptics.gd")
@@ -80,7 +79,7 @@ func test_the_vibration_setting_reaches_the_game_and_is_saved() -> void:
 	App.settings.set_value("vibration", false)
 	var game: MazeGame = GAME.instantiate()
 	add_child_autofree(game)
-	var haptics: MazeHaptics = game.get("haptics")
+	var haptics: MazeHaptics = game.haptics
 	assert_false(haptics.enabled, "off in the settings: off in the game")
 	App.settings.set_value("vibration", true)
 	assert_true(haptics.enabled, "switched on while playing")
@@ -95,10 +94,10 @@ func test_the_vibration_setting_reaches_the_game_and_is_saved() -> void:
 func test_a_ball_in_a_hole_falls_with_a_drop_sound_and_a_buzz() -> void:
 	var game: MazeGame = GAME.instantiate()
 	add_child_autofree(game)
-	var haptics: MazeHaptics = game.get("haptics")
+	var haptics: MazeHaptics = game.haptics
 	haptics.output = _record
 	_buzzes.clear()
-	var rules: MazeRules = game.get("rules")
+	var rules := game.rules
 	rules.set_hard_mode(true)
 	game._start()
 	game._process(0.0)

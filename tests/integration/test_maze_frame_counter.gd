@@ -3,7 +3,6 @@ extends GutTest
 ## 1201 x 676 window and it covered the title).
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const TEST_SETTINGS := "user://test_maze_frame_counter_settings.cfg"
 const TEST_SAVE := "user://test_maze_frame_counter_save.cfg"

@@ -30,10 +30,10 @@ func _game(view: Vector2i) -> Array:
 	port.size = view
 	port.render_target_update_mode = SubViewport.UPDATE_DISABLED
 	add_child_autofree(port)
-	var game: Control = GAME.instantiate()
+	var game: MazeGame = GAME.instantiate()
 	port.add_child(game)
 	await wait_process_frames(2)
-	var region: Rect2 = game.call("_layout")
+	var region: Rect2 = game.lay_out()
 	await wait_process_frames(1)
 	return [game, region]
 
@@ -85,11 +85,11 @@ func test_every_shipped_board_is_whole_in_view_at_every_size_and_tilt() -> void:
 	var report: Array[String] = []
 	for view in SIZES:
 		var made: Array = await _game(view)
-		var game: Control = made[0]
+		var game: MazeGame = made[0]
 		var region: Rect2 = made[1]
 		var side: Control = game.get_node("Side")
 		assert_false(side.get_global_rect().intersects(region), "%s: the panel beside" % view)
-		var stage: MazeStage = game.call("stage")
+		var stage := game.stage()
 		for board in boards:
 			var level := BoardLoader.load_board("res://levels/maze/%s.board" % board).level
 			stage.set_level(level, false)
@@ -116,8 +116,8 @@ func test_every_shipped_board_is_whole_in_view_at_every_size_and_tilt() -> void:
 
 func test_the_camera_does_not_move_while_the_balls_roll() -> void:
 	var made: Array = await _game(Vector2i(1280, 720))
-	var game: Control = made[0]
-	var stage: MazeStage = game.call("stage")
+	var game: MazeGame = made[0]
+	var stage := game.stage()
 	var level := BoardLoader.load_board("res://levels/maze/the_deep.board").level
 	stage.set_level(level, false)
 	var rules := MazeRules.new(level)
@@ -136,7 +136,7 @@ func test_the_camera_does_not_move_while_the_balls_roll() -> void:
 func test_the_game_puts_its_panel_beside_the_board_or_under_it_in_portrait() -> void:
 	for view in SIZES:
 		var made: Array = await _game(view)
-		var game: Control = made[0]
+		var game: MazeGame = made[0]
 		var region: Rect2 = made[1]
 		var side_rect := (game.get_node("Side") as Control).get_global_rect()
 		assert_false(side_rect.intersects(region), "%s: the text keeps off the board" % view)

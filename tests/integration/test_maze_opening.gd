@@ -3,7 +3,6 @@ extends GutTest
 ## scene's placeholder "Gold by 0:00.0" until the next frame.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const TEST_SETTINGS := "user://test_maze_opening_settings.cfg"
 const TEST_SAVE := "user://test_maze_opening_save.cfg"
 

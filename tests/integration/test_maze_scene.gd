@@ -5,7 +5,6 @@ extends GutTest
 ## and a win shows the seed's message and saves the best time.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const TEST_SETTINGS := "user://test_maze_settings.cfg"
 const TEST_SAVE := "user://test_maze_save.cfg"
@@ -40,7 +39,7 @@ func after_each() -> void:
 
 
 func _rules() -> MazeRules:
-	return _game.get("rules")
+	return _game.rules
 
 
 func _note() -> String:
@@ -317,7 +316,7 @@ func test_a_win_shows_the_panel_with_medal_best_and_next_board() -> void:
 	App.record_maze_time(rules.level.board_id, false, 500.0)
 	_game._start()
 	rules.advance(0.25)
-	var sounds: SoundBank = _game.get("_sounds")
+	var sounds := _game.sounds()
 	var played_before := sounds.played_count()
 	var ids := rules.world.get_ids()
 	for i in ids.size():

@@ -14,8 +14,8 @@ const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(1280, 720), Vector
 
 
 ## The game in a window of `size` stretched as the project stretches its own window.
-func _game_in_window(size: Vector2i) -> Control:
-	return await StretchedWindow.open(self, GAME, size, 3) as Control
+func _game_in_window(size: Vector2i) -> MazeGame:
+	return await StretchedWindow.open(self, GAME, size, 3) as MazeGame
 
 
 func test_the_side_text_is_at_least_14_px_on_screen() -> void:
@@ -39,7 +39,7 @@ func test_the_side_text_is_at_least_14_px_on_screen() -> void:
 func test_the_grown_text_keeps_off_the_board_and_on_screen() -> void:
 	for size in SIZES:
 		var game := await _game_in_window(size)
-		var region: Rect2 = game.call("_layout")
+		var region: Rect2 = game.lay_out()
 		await wait_process_frames(2)
 		var view := game.get_viewport_rect()
 		var side: Control = game.get_node("Side")
@@ -55,11 +55,11 @@ func test_the_grown_text_keeps_off_the_board_and_on_screen() -> void:
 func test_the_win_card_reads_at_14_px_and_stays_over_the_board() -> void:
 	for size: Vector2i in [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]:
 		var game := await _game_in_window(size)
-		var region: Rect2 = game.call("_layout")
-		var panel: Control = game.call("win_panel")
+		var region: Rect2 = game.lay_out()
+		var panel := game.win_panel()
 		var summary := MazeWinSummary.new()
 		summary.seconds = 49.1
-		panel.call("present", summary, false, true)
+		panel.present(summary, false, true)
 		await wait_process_frames(3)
 		var scale := game.get_viewport().get_final_transform().get_scale().y
 		var checked := 0

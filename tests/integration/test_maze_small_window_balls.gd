@@ -33,9 +33,9 @@ func test_every_board_s_balls_read_in_a_900_by_700_window() -> void:
 func _smallest_on_screen(board: String, size: Vector2i) -> float:
 	var path := "res://levels/maze/%s.board" % board
 	App.request_board(BoardLevel.MAZE_NAME, path)
-	var game: Control = await StretchedWindow.open(self, GAME, size, 3)
-	var stage: MazeStage = game.call("stage")
-	var level: BoardLevel = (game.get("rules") as MazeRules).level
+	var game: MazeGame = await StretchedWindow.open(self, GAME, size, 3)
+	var stage := game.stage()
+	var level: BoardLevel = game.rules.level
 	assert_true(level.board_id.ends_with(board), "the game opened %s" % board)
 	var screen := game.get_viewport().get_final_transform().get_scale().y
 	var smallest := INF

@@ -9,7 +9,6 @@ const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const TEST_FOLDER := "user://test_replay_ghost"
 const TEST_SETTINGS := "user://test_ghost_settings.cfg"
 const TEST_SAVE := "user://test_ghost_save.cfg"
@@ -126,13 +125,13 @@ class TestMazeScreen:
 		ReplayStore.folder = ReplayStore.DIR
 
 	func _rules() -> MazeRules:
-		return _game.get("rules")
+		return _game.rules
 
 	## Plays an attempt through the screen as a player would: the joystick moved each frame
 	## (by the autoplay's pilot) and the screen's own `_process`. Returns positions by step.
 	func _play_attempt(frames: int) -> Dictionary:
 		var rules := _rules()
-		var mixer: TiltMixer = _game.get("mixer")
+		var mixer: TiltMixer = _game.mixer
 		var rng := RandomNumberGenerator.new()
 		rng.seed = 1
 		var pilot := MazePilot.new(rules.level, false, rng, rules.step_seconds())
@@ -150,21 +149,21 @@ class TestMazeScreen:
 	func test_a_best_run_is_saved_and_its_ghost_shows_on_the_next_attempt() -> void:
 		var rules := _rules()
 		var path := ReplayStore.best_maze_path(rules.level.board_id, false)
-		assert_eq(_game.get("_ghost"), null, "no ghost before any best run")
+		assert_eq(_game.ghost(), null, "no ghost before any best run")
 		var first := _play_attempt(60 * 120)
 		assert_eq(rules.state, MazeRules.State.WON, "the pilot won the first attempt")
 		assert_true(FileAccess.file_exists(path), "the best run was saved")
 		var saved: Replay = ReplayStore.read_file(path)["replay"]
 		assert_true(Kit.play(saved, rules.level)["match"], "and it replays to its own end")
 		rules.reset()
-		var ghost: GhostRun = _game.get("_ghost")
+		var ghost: GhostRun = _game.ghost()
 		assert_not_null(ghost, "the second attempt has a ghost")
 		_game._start()
 		for frame in 90:
 			_game._process(1.0 / 60.0)
 		assert_gt(ghost.steps(), 100, "the ghost kept pace with the live game")
 		assert_eq(ghost.positions(), first[ghost.steps()], "where the best run was")
-		var view: Node3D = _game.get("_ghost_view")
+		var view: Node3D = _game.ghost_view()
 		assert_eq(view.get("shown_positions"), ghost.positions(), "the ghost view draws them")
 
 	func test_the_setting_turns_the_ghost_off() -> void:
@@ -173,9 +172,9 @@ class TestMazeScreen:
 		var replay: Replay = Kit.record_live_maze(rules.level, false, 200).finish()
 		ReplayStore.save(replay, ReplayStore.best_maze_path(rules.level.board_id, false))
 		rules.reset()
-		assert_eq(_game.get("_ghost"), null, "no ghost when the setting is off")
+		assert_eq(_game.ghost(), null, "no ghost when the setting is off")
 		App.settings.set_value("show_ghost", true)
 		rules.reset()
-		assert_not_null(_game.get("_ghost"), "and back when it is on")
+		assert_not_null(_game.ghost(), "and back when it is on")
 		var note := str(_game.get_node("%Note").text())
 		assert_string_contains(note, "pale ball is your best run", "the ghost is named")

@@ -10,7 +10,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const MazeGame := preload("res://scenes/maze/maze_game.gd")
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
@@ -150,7 +149,7 @@ static func _second_attempt(tree: SceneTree, game: MazeGame) -> Error:
 	await tree.process_frame
 	_press_tilt(GHOST_LIVE_TILT)  # the first tilt starts the attempt
 	await _wait(tree, GHOST_SHOT_SECONDS)
-	if game.get("_ghost") == null:
+	if (game as MazeGame).ghost() == null:
 		_release_tilt()
 		printerr("shots: maze_ghost: the second attempt shows no ghost")
 		return FAILED
