@@ -66,7 +66,7 @@ func begin(
 	_gravity_dt = gravity_dt
 
 
-# BallFields.take(b, self) written out, as in BallMoverState._take_balls() (pinned to it by
+# BallFields.take(b, self) written out, as in BallMover._take_balls() (pinned to it by
 # tests/unit/test_ball_fields.gd).
 func _take_balls(b: BallStore) -> void:
 	_pos = b.pos
