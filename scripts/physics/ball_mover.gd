@@ -26,6 +26,7 @@ enum Surface { RING, PIN, WALL_CAP, BLADE_CAP, WALL_SIDE, BLADE_SIDE }
 
 const BallStore := preload("res://scripts/physics/ball_store.gd")
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 const ContactId := preload("res://scripts/physics/contact_id.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
@@ -98,7 +99,9 @@ var _store: BallStore
 var _hits_heard := PackedByteArray([1, 1, 1, 1])
 ## False when the store's broad-phase keys are stale this step: then none are written.
 var _keyed := true
+## The grid (max_travel) and the shapes it bins (the ring's radius, the drain arc, sensors).
 var _g: StaticGeometry
+var _shapes: StaticShapes
 var _zoned := true
 ## False on a board without pins (a maze): the mover then skips the pin test outright.
 var _has_pins := true
@@ -272,32 +275,34 @@ func _take_balls(b: BallStore) -> void:
 
 func _take_geometry(g: StaticGeometry) -> void:
 	_g = g
+	_shapes = g.shapes
+	var s: StaticShapes = g.shapes
 	_zoned = g.zoned
 	_pin_start = g.pin_start
 	_pin_items = g.pin_items if g.zoned else g.all_pins
-	_pin_item_pos = g.pin_item_pos if g.zoned else g.pin_pos
-	_pin_item_rad = g.pin_item_radius if g.zoned else g.pin_radius
-	_pin_captures = g.pin_captures
-	_pin_tag = g.pin_tag
-	_pin_min_speed_x = g.pin_min_speed_x
+	_pin_item_pos = g.pin_item_pos if g.zoned else s.pin_pos
+	_pin_item_rad = g.pin_item_radius if g.zoned else s.pin_radius
+	_pin_captures = s.pin_captures
+	_pin_tag = s.pin_tag
+	_pin_min_speed_x = s.pin_min_speed_x
 	_has_pins = not _pin_items.is_empty()
-	_has_walls = not g.wall_a.is_empty()
+	_has_walls = not s.wall_a.is_empty()
 	_wall_start = g.wall_start
 	_wall_items = g.wall_items
 	_wall_item_a = g.wall_item_a
 	_wall_item_ab = g.wall_item_ab
 	_wall_item_inv = g.wall_item_inv
 	_wall_item_rad = g.wall_item_radius
-	_wall_ab = g.wall_ab
-	_wall_inv_len2 = g.wall_inv_len2
-	_has_ring = g.has_ring
-	_ring_center = g.ring_center
-	_ring_min_speed_x = g.ring_min_speed_x
-	_has_drain_arc = g.has_drain_arc
-	_has_sensors = not (g.hole_pos.is_empty() and g.goal_pos.is_empty() and g.zone_pos.is_empty())
-	_zones_only = g.hole_pos.is_empty() and g.goal_pos.is_empty()
-	_zone_pos = g.zone_pos
-	_zone_rad = g.zone_radius
+	_wall_ab = s.wall_ab
+	_wall_inv_len2 = s.wall_inv_len2
+	_has_ring = s.has_ring
+	_ring_center = s.ring_center
+	_ring_min_speed_x = s.ring_min_speed_x
+	_has_drain_arc = s.has_drain_arc
+	_has_sensors = not (s.hole_pos.is_empty() and s.goal_pos.is_empty() and s.zone_pos.is_empty())
+	_zones_only = s.hole_pos.is_empty() and s.goal_pos.is_empty()
+	_zone_pos = s.zone_pos
+	_zone_rad = s.zone_radius
 	_origin = g.origin
 	_inv_cell = g.inv_cell
 	_cols = g.cols
@@ -308,7 +313,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 func _set_radius(r: float) -> void:
 	_r = r
 	_max_travel = _g.max_travel(r, TRAVEL_SHARE)
-	_ring_lim = maxf(_g.ring_radius - r, 0.0)
+	_ring_lim = maxf(_shapes.ring_radius - r, 0.0)
 	_ring_lim2 = _ring_lim * _ring_lim
 
 
@@ -476,7 +481,9 @@ func _after_move(i: int) -> void:
 
 ## Ball `i`'s sensor pass (BallSensors.sense): a ball that fell in a hole leaves the world.
 func _sense(i: int) -> void:
-	if BallSensors.sense(_g, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed):
+	if BallSensors.sense(
+		_shapes, i, _ids[i], _p_start, _p, _goal_mask, _zone_mask, events, event_speed
+	):
 		_alive[i] = 0
 
 
@@ -557,7 +564,7 @@ func _touch_ring() -> void:
 	# must be free to stop and roll back, which a kept sideways speed would forbid.
 	if bounced and absf(_v.x) < _ring_min_speed_x:
 		_v.x = _ring_min_speed_x if _v.x >= 0.0 else -_ring_min_speed_x
-	if _has_drain_arc and _g.drained(d, bounced, _i, _h, _drain_hits, _drain_time):
+	if _has_drain_arc and _shapes.drained(d, bounced, _i, _h, _drain_hits, _drain_time):
 		_queue(BallEvents.Kind.DRAINED, 0, 0.0)
 		_gone = true
 
