@@ -336,12 +336,13 @@ func _queue(kind: int, index: int, speed: float) -> void:
 
 
 ## Moves the awake balls in slots from..to, one at a time in members: friction and the speed
-## cap (SpeedRules.limit(), written out), then substeps (each: move, then the narrow phase
-## per shape kind), then its contacts, position and broad-phase key; then, still there, its
-## rest time or sleep and its sensor pass (_after_move). Written out as one loop with the
-## pin tests and the write-back inline: a GDScript call costs about as much as a contact
-## test, and calls on two threads run no faster than on one (see LaneCrew), so calls happen
-## per contact and for rarer rules. What needs no call:
+## cap (SpeedRules.limit(), written out: tests/unit/test_speed_limit_copy.gd pins it), then
+## substeps (each: move, then the narrow phase per shape kind), then its contacts, position
+## and broad-phase key; then, still there, its rest time or sleep and its sensor pass
+## (_after_move). Written out as one loop with the pin tests and the write-back inline: a
+## GDScript call costs about as much as a contact test, and calls on two threads run no
+## faster than on one (see LaneCrew), so calls happen per contact and for rarer rules.
+## What needs no call:
 ## - most balls need one substep and have no push;
 ## - a ball no pin moved is still in the cell it was keyed to, and an empty wall cell is
 ##   passed over;
@@ -552,6 +553,7 @@ func _touch_ring() -> void:
 					)
 					vt *= sqrt((t2 + c * c) / t2)
 			_v = vt
+			# _note_contact(), written out (tests/unit/test_contact_record.gd pins it).
 			if _cur_a == ContactId.NONE or _cur_a == id:
 				_cur_a = id
 				_n_a = nrm
@@ -595,7 +597,8 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 ## of one wall is deeper than the neighbour's cap, so the cap never adds a ghost bump. The
 ## search and the common answer are written out here, not called: most moving balls of a
 ## maze touch a wall, and roll along it (a held contact, or one too slow to bounce: the
-## slide of respond(), line for line). A bounce or a glancing cap goes to respond().
+## slide of respond(), line for line: tests/unit/test_wall_slide.gd pins it to respond() bit
+## for bit). A bounce or a glancing cap goes to respond().
 ## `cell` is the ball's cell when the caller knows it (-1 when a pin has just moved it).
 func _touch_walls(cell: int) -> void:
 	if cell < 0:
@@ -650,7 +653,7 @@ func _touch_walls(cell: int) -> void:
 				var c: float = maxf(minf(vn - minf(gn_dt, 0.0), 0.0), -1.5 * t2 * (_h / lim))
 				vt *= sqrt((t2 + c * c) / t2)
 			_v = vt
-			# _note_contact(), written out.
+			# _note_contact(), written out (tests/unit/test_contact_record.gd pins it).
 			if _cur_a == ContactId.NONE or _cur_a == id:
 				_cur_a = id
 				_n_a = nrm
