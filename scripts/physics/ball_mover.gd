@@ -350,7 +350,9 @@ func _queue(kind: int, index: int, speed: float) -> void:
 ##   saves writes for most of a flowing board);
 ## - a ball with no push and no windmill about gets its substep count here, and a moving
 ##   ball on a board with zones alone (every pachinko board) its zone-edge test: those two
-##   calls, and the one to _after_move(), were a quarter of a contact-free world's step;
+##   calls, and the one to _after_move(), were a quarter of a contact-free world's step
+##   (tests/unit/test_mover_inline_copies.gd pins both copies to _substeps() and
+##   BallSensors.crossed_zone_edge());
 ## - the broad phase's key for next step (see BallStore.cell_keys) is rewritten only when
 ##   the ball left its cell (found by its old key in BallStore.sorted_keys), and not at all
 ##   when the keys are stale anyway (no broad phase ran: it bins every ball again before it
