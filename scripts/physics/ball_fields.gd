@@ -5,7 +5,7 @@ extends RefCounted
 ## carries from step to step: compact() moves it with its ball. SCRATCH is rebuilt by each
 ## step (the stage that fills it says when), so compact() only gives it the new length.
 ## Every place that handles all fields goes by this table: BallStore.add(), compact() and
-## own_buffers(), and the begin() of the motion lanes (BallMoverState) and of the solve
+## own_buffers(), and the begin() of the motion lanes (BallMover) and of the solve
 ## (BallSolve), which take each row whose `_name` member they declare.
 ##
 ## A new ball field is one row here: the store keeps it, aligned with its ball, from then

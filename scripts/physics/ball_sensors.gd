@@ -3,7 +3,7 @@ extends RefCounted
 ## holes, goals and zones. Internal to scripts/physics; the motion stage (BallMover) calls
 ## it only when the world has sensors, so boards without them pay nothing.
 
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
 const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
 
@@ -23,7 +23,7 @@ static func crossed_zone_edge(
 ## Returns true when it fell in a hole (its centre came within the hole radius anywhere
 ## along the step's path): the caller removes it, and goals and zones are not looked at.
 static func sense(
-	g: StaticGeometry,
+	g: StaticShapes,
 	i: int,
 	id: int,
 	p_start: Vector2,

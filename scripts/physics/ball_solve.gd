@@ -66,7 +66,7 @@ func begin(
 	_gravity_dt = gravity_dt
 
 
-# BallFields.take(b, self) written out, as in BallMoverState._take_balls() (pinned to it by
+# BallFields.take(b, self) written out, as in BallMover._take_balls() (pinned to it by
 # tests/unit/test_ball_fields.gd).
 func _take_balls(b: BallStore) -> void:
 	_pos = b.pos
@@ -136,7 +136,8 @@ func solve_pairs(pairs: PackedInt32Array, used: int) -> void:
 			# One ball is held from behind: the other takes the whole response, along `away`
 			# (from the held ball to it); the support cancels the held ball's own motion into
 			# it, so only the free ball's speed counts. Written out, not called: a pile has
-			# hundreds of these pairs a step.
+			# hundreds of these pairs a step (off_held() is the rule it copies, and
+			# tests/unit/test_held_ball_copy.gd pins the two together bit for bit).
 			var free: int = i if fixed_j else j
 			var away: Vector2 = -nrm if fixed_j else nrm
 			var v: Vector2 = vi if fixed_j else vj
@@ -162,3 +163,20 @@ func solve_pairs(pairs: PackedInt32Array, used: int) -> void:
 				_vel[j] = vj + imp
 			_push[i] -= s
 			_push[j] += s
+
+
+## The readable rule that solve_pairs() writes out for a pair with one ball held from
+## behind: the free ball's velocity after it meets a ball that does not give way. `v` is
+## the free ball's velocity, `away` the unit normal from the held ball to it. Only a ball
+## moving into the held one is answered; it bounces with `restitution` when it comes in
+## faster than `threshold` (gravity's approach this step, `gravity_dt`, not counted: see
+## ContactRule), else it loses its normal speed.
+static func off_held(
+	v: Vector2, away: Vector2, gravity_dt: Vector2, restitution: float, threshold: float
+) -> Vector2:
+	var vn: float = v.dot(away)
+	if vn >= 0.0:
+		return v
+	var bounces: bool = ContactRule.bounces(vn, gravity_dt.dot(away), threshold)
+	var e: float = restitution if bounces else 0.0
+	return v - away * ((1.0 + e) * vn)

@@ -60,7 +60,7 @@ const PHYSICS_VERSION := 4
 ## game, never freezes it); 30 (0.25 s at 120 Hz) keeps real time down to 4 frames a second.
 const MAX_STEPS_PER_ADVANCE := 30
 ## Goals and zones are tracked per ball in one int bit mask each: at most this many of each.
-const MAX_SENSORS := StaticGeometry.MAX_SENSORS
+const MAX_SENSORS := StaticGeometry.StaticShapes.MAX_SENSORS
 ## Balls smaller than this still get a grid sized for it (px).
 const MIN_GRID_BALL_RADIUS := 5.0
 
@@ -83,7 +83,7 @@ var before_step := Callable()
 var use_zoning := true:
 	set(value):
 		use_zoning = value
-		_geo.dirty = true
+		_geo.shapes.dirty = true
 ## False lets balls pass through each other (no ball-ball contacts): each ball then moves
 ## as if alone, so one world can run many independent shots at once (the play analysis).
 var ball_contacts := true
@@ -155,7 +155,7 @@ func spawn_ball(pos: Vector2, vel: Vector2, radius: float) -> int:
 		push_error(problem % [pos, vel, radius])
 		return -1
 	if radius > _geo.built_ball_radius:
-		_geo.dirty = true
+		_geo.shapes.dirty = true
 	return _balls.add(pos, vel, radius)
 
 
@@ -300,7 +300,7 @@ func step(dt: float) -> void:
 	if before_step.is_valid():
 		before_step.call(dt)
 	_stepping = true
-	if _geo.dirty or _balls.max_radius > _geo.built_ball_radius:
+	if _geo.shapes.dirty or _balls.max_radius > _geo.built_ball_radius:
 		build_grid()
 	# A gravity change wakes only the sleepers it would move (BallSleep checks each).
 	var turned: bool = gravity != _last_gravity or rolling_friction != _last_friction

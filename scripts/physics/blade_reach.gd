@@ -2,7 +2,7 @@ extends RefCounted
 ## The windmills as one motion lane sees them during a step: their pose at the step's
 ## start (copied by take()), which wheels the ball being moved can reach (find_near()),
 ## and the geometry of its contact with a wheel's nearest blade (contact()). What a contact
-## does to the ball is BallNarrowPhase's (its _touch_blade): this part only finds it. Internal to
+## does to the ball is BallMover's (its _touch_blade): this part only finds it. Internal to
 ## scripts/physics; each BallMover has one.
 
 const Windmills := preload("res://scripts/physics/windmills.gd")

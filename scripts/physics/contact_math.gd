@@ -1,6 +1,6 @@
 extends RefCounted
 ## A piece of the contact response that needs more than one line: finding the moment of
-## impact (the slide along a surface is written out in BallNarrowPhase.respond(), which runs on
+## impact (the slide along a surface is written out in BallMover.respond(), which runs on
 ## every persisting contact). Internal to scripts/physics.
 
 ## Distances below this count as zero (px).

@@ -57,7 +57,8 @@ func prepare(t: PhysicsTuning, gravity: Vector2, friction_dt: Vector2, dt: float
 
 
 ## Velocity `v` (this step's gravity already added) after the step's friction and cap.
-## (BallMover writes these lines out in its own loop: a call per ball costs more than them.)
+## (BallMover writes these lines out in its own loop, a call per ball costing more than
+## them; tests/unit/test_speed_limit_copy.gd pins that copy to this bit for bit.)
 func limit(v: Vector2) -> Vector2:
 	v -= shift
 	v -= v.clamp(-toward_zero, toward_zero)

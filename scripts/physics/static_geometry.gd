@@ -1,10 +1,14 @@
-extends "res://scripts/physics/static_shapes.gd"
-## The uniform grid a BallWorld's static shapes (static_shapes.gd) are binned into ("pin
-## zoning"). Internal to scripts/physics: BallWorld owns one.
+extends RefCounted
+## The uniform grid a BallWorld's static shapes are binned into ("pin zoning"). It owns the
+## shapes (`shapes`, StaticShapes: the flat arrays and the checked calls that add them) and
+## only reads them: one job each, by composition. Internal to scripts/physics: BallWorld
+## owns one.
 ##
 ## A grid cell lists every pin and wall whose shape, grown by the largest ball radius and a
 ## margin, touches the cell; so a ball only tests the shapes of the one cell its centre is in.
 ## Lists are stored flat (CSR): items of cell c are items[start[c] .. start[c + 1]).
+
+const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
 
 ## Extra growth of binned shapes, px.
 const BIN_MARGIN := 1.0
@@ -12,6 +16,8 @@ const BIN_MARGIN := 1.0
 ## otherwise one ball diameter (+1 px), so ball pairs need only the neighbouring cells.
 const MIN_CELL := 8.0
 
+## The shapes binned here (the only ones this grid reads).
+var shapes := StaticShapes.new()
 ## Grid: origin, cell size, columns, rows; the flat cell lists.
 var origin := Vector2.ZERO
 var cell := MIN_CELL
@@ -50,16 +56,16 @@ var kinematic_points := PackedVector2Array()
 func build(ball_radius: float, use_zoning := true) -> void:
 	built_ball_radius = ball_radius
 	zoned = use_zoning
-	all_pins.resize(pin_pos.size())
-	for i: int in pin_pos.size():
+	all_pins.resize(shapes.pin_pos.size())
+	for i: int in shapes.pin_pos.size():
 		all_pins[i] = i
 	var grow: float = ball_radius + BIN_MARGIN
 	var max_pin := 0.0
 	min_feature = INF
-	for r: float in pin_radius:
+	for r: float in shapes.pin_radius:
 		max_pin = maxf(max_pin, r)
 		min_feature = minf(min_feature, r)
-	for r: float in wall_radius:
+	for r: float in shapes.wall_radius:
 		min_feature = minf(min_feature, r)
 	if min_feature == INF:
 		min_feature = 0.0
@@ -76,8 +82,8 @@ func build(ball_radius: float, use_zoning := true) -> void:
 	pin_item_pos.resize(pin_items.size())
 	pin_item_radius.resize(pin_items.size())
 	for k: int in pin_items.size():
-		pin_item_pos[k] = pin_pos[pin_items[k]]
-		pin_item_radius[k] = pin_radius[pin_items[k]]
+		pin_item_pos[k] = shapes.pin_pos[pin_items[k]]
+		pin_item_radius[k] = shapes.pin_radius[pin_items[k]]
 	_bin_walls(grow)
 	var n_items: int = wall_items.size()
 	wall_item_a.resize(n_items)
@@ -86,12 +92,12 @@ func build(ball_radius: float, use_zoning := true) -> void:
 	wall_item_radius.resize(n_items)
 	for k: int in n_items:
 		var w: int = wall_items[k]
-		wall_item_a[k] = wall_a[w]
-		wall_item_ab[k] = wall_ab[w]
-		wall_item_inv[k] = wall_inv_len2[w]
-		wall_item_radius[k] = wall_radius[w]
+		wall_item_a[k] = shapes.wall_a[w]
+		wall_item_ab[k] = shapes.wall_ab[w]
+		wall_item_inv[k] = shapes.wall_inv_len2[w]
+		wall_item_radius[k] = shapes.wall_radius[w]
 	_find_pin_spacing(2.0 * (max_pin + ball_radius))
-	dirty = false
+	shapes.dirty = false
 
 
 ## Longest safe move (px) in one substep for a ball of radius r: a centre that enters a
@@ -110,16 +116,16 @@ func max_travel(r: float, share: float) -> float:
 func _find_pin_spacing(limit: float) -> void:
 	pin_spacing = INF
 	min_pin_radius = INF
-	for r: float in pin_radius:
+	for r: float in shapes.pin_radius:
 		min_pin_radius = minf(min_pin_radius, r)
 	var lim2: float = limit * limit
 	for c: int in cols * rows:
 		var lo: int = pin_start[c]
 		var hi: int = pin_start[c + 1]
 		for a: int in range(lo, hi):
-			var pa: Vector2 = pin_pos[pin_items[a]]
+			var pa: Vector2 = shapes.pin_pos[pin_items[a]]
 			for b: int in range(a + 1, hi):
-				var d2: float = pa.distance_squared_to(pin_pos[pin_items[b]])
+				var d2: float = pa.distance_squared_to(shapes.pin_pos[pin_items[b]])
 				if d2 < lim2:
 					pin_spacing = minf(pin_spacing, sqrt(d2))
 
@@ -135,16 +141,16 @@ func _bounds() -> Rect2:
 	var have := false
 	var box := Rect2()
 	var pts := PackedVector2Array()
-	pts.append_array(pin_pos)
-	pts.append_array(wall_a)
-	pts.append_array(wall_b)
-	pts.append_array(hole_pos)
-	pts.append_array(goal_pos)
-	pts.append_array(zone_pos)
+	pts.append_array(shapes.pin_pos)
+	pts.append_array(shapes.wall_a)
+	pts.append_array(shapes.wall_b)
+	pts.append_array(shapes.hole_pos)
+	pts.append_array(shapes.goal_pos)
+	pts.append_array(shapes.zone_pos)
 	pts.append_array(kinematic_points)
-	if has_ring:
-		pts.append(ring_center - Vector2(ring_radius, ring_radius))
-		pts.append(ring_center + Vector2(ring_radius, ring_radius))
+	if shapes.has_ring:
+		pts.append(shapes.ring_center - Vector2(shapes.ring_radius, shapes.ring_radius))
+		pts.append(shapes.ring_center + Vector2(shapes.ring_radius, shapes.ring_radius))
 	for p: Vector2 in pts:
 		if have:
 			box = box.expand(p)
@@ -152,7 +158,7 @@ func _bounds() -> Rect2:
 			box = Rect2(p, Vector2.ZERO)
 			have = true
 	var max_wall := 0.0
-	for r: float in wall_radius:
+	for r: float in shapes.wall_radius:
 		max_wall = maxf(max_wall, r)
 	return box.grow(max_wall)
 
@@ -176,9 +182,9 @@ func _bin_pins(grow: float) -> void:
 			pin_items = PackedInt32Array()
 			pin_items.resize(run)
 			fill = pin_start.duplicate()
-		for i: int in pin_pos.size():
-			var p: Vector2 = pin_pos[i]
-			var reach: float = pin_radius[i] + grow
+		for i: int in shapes.pin_pos.size():
+			var p: Vector2 = shapes.pin_pos[i]
+			var reach: float = shapes.pin_radius[i] + grow
 			var x0: int = clampi(floori((p.x - reach - origin.x) * inv_cell), 0, cols - 1)
 			var x1: int = clampi(floori((p.x + reach - origin.x) * inv_cell), 0, cols - 1)
 			var y0: int = clampi(floori((p.y - reach - origin.y) * inv_cell), 0, rows - 1)
@@ -216,12 +222,12 @@ func _bin_walls(grow: float) -> void:
 			wall_items = PackedInt32Array()
 			wall_items.resize(run)
 			fill = wall_start.duplicate()
-		for i: int in wall_a.size():
-			if wall_off[i] != 0:
+		for i: int in shapes.wall_a.size():
+			if shapes.wall_off[i] != 0:
 				continue
-			var a: Vector2 = wall_a[i]
-			var b: Vector2 = wall_b[i]
-			var reach: float = wall_radius[i] + grow
+			var a: Vector2 = shapes.wall_a[i]
+			var b: Vector2 = shapes.wall_b[i]
+			var reach: float = shapes.wall_radius[i] + grow
 			var x0: int = clampi(
 				floori((minf(a.x, b.x) - reach - origin.x) * inv_cell), 0, cols - 1
 			)

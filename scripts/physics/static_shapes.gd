@@ -1,7 +1,7 @@
 extends RefCounted
 ## The static shapes of a BallWorld as flat arrays (pins, capsule walls, the ring and its
-## drain arc, sensor circles) and the checked calls that add them. StaticGeometry extends it
-## with the grid they are binned into. Internal to scripts/physics.
+## drain arc, sensor circles) and the checked calls that add them. StaticGeometry owns one
+## and bins it into its grid. Internal to scripts/physics.
 
 ## Sensor kinds (see add_sensor).
 const SENSOR_HOLE := 0

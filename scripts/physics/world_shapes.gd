@@ -4,12 +4,13 @@
 extends RefCounted
 ## A BallWorld's shapes, as its callers build them: `world.shapes.add_pin(...)` and the
 ## other calls that add pins, capsule walls, the ring, its drain arc and sensor circles (all
-## checked by StaticGeometry), the windmills (Windmills) and the gates (Gates, whose
+## checked by StaticShapes), the windmills (Windmills) and the gates (Gates, whose
 ## petals are rotors of the same store). The world owns the geometry, the wheels and the
 ## gates; this is the door to them, so BallWorld's own calls are about balls and the step.
 ## Made by BallWorld only.
 
 const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
+const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
 const Windmills := preload("res://scripts/physics/windmills.gd")
 const Gates := preload("res://scripts/physics/gates.gd")
 
@@ -17,7 +18,9 @@ const Gates := preload("res://scripts/physics/gates.gd")
 ## max_speed (see add_windmill).
 var tuning: PhysicsTuning
 
+## The grid (bin) and the static shapes it bins (the adds go to them).
 var _geo: StaticGeometry
+var _shapes: StaticShapes
 var _wheels: Windmills
 var _gates: Gates
 ## Windmill index → its rotor in _wheels; per rotor, its windmill or gate index and 1 when
@@ -31,6 +34,7 @@ func _init(
 	geo: StaticGeometry, wheels: Windmills, gates: Gates, world_tuning: PhysicsTuning
 ) -> void:
 	_geo = geo
+	_shapes = geo.shapes
 	_wheels = wheels
 	_gates = gates
 	tuning = world_tuning
@@ -55,24 +59,24 @@ func bin(ball_radius: float, zoning: bool) -> void:
 ## horizontal speed in px/s (the Flash chapter's 0.5 px/tick, so no ball balances on a pin
 ## top); 0 leaves the ball alone. Returns the pin index, or -1 with an error on bad input.
 func add_pin(pos: Vector2, radius: float, tag := -1, captures := false, min_speed_x := 0.0) -> int:
-	return _geo.add_pin(pos, radius, tag, captures, min_speed_x)
+	return _shapes.add_pin(pos, radius, tag, captures, min_speed_x)
 
 
 ## Adds a capsule wall: the segment a-b grown by `radius`, with round caps. Returns its
 ## index, or -1 on bad input. A zero-length wall is a round post.
 func add_wall(a: Vector2, b: Vector2, radius: float) -> int:
-	return _geo.add_wall(a, b, radius)
+	return _shapes.add_wall(a, b, radius)
 
 
 ## Switches wall `index` on or off (a gate that opens and closes). The grid is rebuilt on
 ## the next step, which also wakes every sleeper, so a ball resting on a gate falls.
 func set_wall_enabled(index: int, enabled: bool) -> void:
-	_geo.set_wall_enabled(index, enabled)
+	_shapes.set_wall_enabled(index, enabled)
 
 
 ## False while wall `index` is switched off (see set_wall_enabled).
 func is_wall_enabled(index: int) -> bool:
-	return index >= 0 and index < _geo.wall_a.size() and _geo.wall_off[index] == 0
+	return index >= 0 and index < _shapes.wall_a.size() and _shapes.wall_off[index] == 0
 
 
 ## Adds a windmill (風車): `blades` capsule blades of `length` px (pin to the middle of the
@@ -99,7 +103,7 @@ func add_windmill(
 		return -1
 	var cap: float = tuning.max_speed / _wheels.reach[index]
 	_wheels.omega[index] = clampf(speed, -cap, cap)
-	_geo.dirty = true
+	_shapes.dirty = true
 	_windmill_rotor.append(index)
 	_rotor_owner.append(_windmill_rotor.size() - 1)
 	_rotor_is_petal.append(0)
@@ -162,7 +166,7 @@ func add_petal(
 	var rotor: int = _wheels.add(hinge, 1, length, radius, 0.0, false, 0.0, min_speed_x)
 	if rotor < 0:
 		return -1
-	_geo.dirty = true
+	_shapes.dirty = true
 	var petal: int = _gates.add_petal(_wheels, gate, rotor, shut_angle, open_angle)
 	_rotor_owner.append(gate)
 	_rotor_is_petal.append(1)
@@ -214,39 +218,39 @@ func get_petal_angle(petal: int) -> float:
 ## pin's (add_pin): the least horizontal speed a ball keeps after bouncing off it (a ball
 ## riding the ring keeps its own, so it can stop and roll back down the launch rail).
 func set_ring(center: Vector2, radius: float, min_speed_x := 0.0) -> void:
-	_geo.set_ring(center, radius, min_speed_x)
+	_shapes.set_ring(center, radius, min_speed_x)
 
 
 ## Makes the ring arc from `from_deg` to `to_deg` (degrees, 0 = right, 90 = down) drain:
 ## a ball there is removed (ball_drained) after `bounces` bounces on it, or after rolling on
 ## it for `slide_time` seconds.
 func set_drain_arc(from_deg: float, to_deg: float, bounces: int, slide_time: float) -> void:
-	_geo.set_drain_arc(from_deg, to_deg, bounces, slide_time)
+	_shapes.set_drain_arc(from_deg, to_deg, bounces, slide_time)
 
 
 ## Adds a hole: a ball whose centre comes within `radius` falls in. Returns its index.
 func add_hole(center: Vector2, radius: float) -> int:
-	return _geo.add_sensor(StaticGeometry.SENSOR_HOLE, center, radius)
+	return _shapes.add_sensor(StaticShapes.SENSOR_HOLE, center, radius)
 
 
 ## Adds a goal: entering and leaving it are reported, the ball stays. Returns its index.
 func add_goal(center: Vector2, radius: float) -> int:
-	return _geo.add_sensor(StaticGeometry.SENSOR_GOAL, center, radius)
+	return _shapes.add_sensor(StaticShapes.SENSOR_GOAL, center, radius)
 
 
 ## Adds a generic sensor zone: entering it is reported. Returns its index.
 func add_zone(center: Vector2, radius: float) -> int:
-	return _geo.add_sensor(StaticGeometry.SENSOR_ZONE, center, radius)
+	return _shapes.add_sensor(StaticShapes.SENSOR_ZONE, center, radius)
 
 
 ## How many pins were added.
 func pin_count() -> int:
-	return _geo.pin_pos.size()
+	return _shapes.pin_pos.size()
 
 
 ## How many walls were added (switched-off ones included).
 func wall_count() -> int:
-	return _geo.wall_a.size()
+	return _shapes.wall_a.size()
 
 
 ## The windmill or gate that rotor `rotor` belongs to (BallWorld names it in hit events).

@@ -1,5 +1,5 @@
 extends GutTest
-## BallNarrowPhase._touch_ring() answers a ball sliding on the ring with respond()'s slide
+## BallMover._touch_ring() answers a ball sliding on the ring with respond()'s slide
 ## written out (a ball riding the launch rail touches the ring about once a step): pinned
 ## here bit for bit to the readable path, the ball put back on the ring and answered by
 ## respond(), over random contacts and the edge cases.
