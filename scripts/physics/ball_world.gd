@@ -51,6 +51,7 @@ const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
 const MotionStage := preload("res://scripts/physics/motion_stage.gd")
 const WorldSignals := preload("res://scripts/physics/world_signals.gd")
 const StageClock := preload("res://scripts/physics/stage_clock.gd")
+const WorldInputChecks := preload("res://scripts/physics/world_input_checks.gd")
 
 ## The physics behaviour: bumped whenever the same inputs roll the balls differently, so
 ## replays of older runs are refused by name (Replay.PHYSICS_VERSION); each version's change
@@ -149,10 +150,9 @@ func build_grid() -> void:
 ## Spawns a ball; returns its stable id, or -1 with an error for a radius <= 0 or
 ## non-finite input.
 func spawn_ball(pos: Vector2, vel: Vector2, radius: float) -> int:
-	if not pos.is_finite() or not vel.is_finite() or not is_finite(radius) or radius <= 0.0:
-		var problem: String = "BallWorld.spawn_ball: needs a finite position and velocity"
-		problem += " and radius > 0 (got %s, %s, %s)"
-		push_error(problem % [pos, vel, radius])
+	var problem := WorldInputChecks.spawn_problem(pos, vel, radius)
+	if not problem.is_empty():
+		push_error(problem)
 		return -1
 	if radius > _geo.built_ball_radius:
 		_geo.shapes.dirty = true
@@ -205,8 +205,9 @@ func get_ball_velocity(id: int) -> Vector2:
 	return _balls.vel[i] if i >= 0 else Vector2.ZERO
 
 
-## Sets a ball's velocity and wakes every ball (a ball set moving may run into sleepers).
-func set_ball_velocity(id: int, v: Vector2) -> void:
+## Sets a ball's velocity and wakes every ball (a ball set moving may run into sleepers);
+## with `wake_others` false, that ball alone: a rule's nudge in place every step (GoalDip).
+func set_ball_velocity(id: int, v: Vector2, wake_others := true) -> void:
 	var i: int = _balls.find(id)
 	if i < 0:
 		return
@@ -215,23 +216,10 @@ func set_ball_velocity(id: int, v: Vector2) -> void:
 		return
 	_balls.vel[i] = v
 	_balls.rest[i] = 0.0
-	_balls.wake_all()
-
-
-## Sets one ball's velocity from a rule that runs every step (before_step): like
-## set_ball_velocity, but it wakes only that ball, so the others keep sleeping (a rule that
-## woke every ball each step kept the whole board awake). For a nudge in place, where the
-## ball's neighbours have nothing new to answer.
-func steer_ball(id: int, v: Vector2) -> void:
-	var i: int = _balls.find(id)
-	if i < 0:
-		return
-	if not v.is_finite():
-		push_error("BallWorld.steer_ball: velocity must be finite (got %s)" % v)
-		return
-	_balls.vel[i] = v
-	_balls.rest[i] = 0.0
-	_balls.asleep[i] = 0
+	if wake_others:
+		_balls.wake_all()
+	else:
+		_balls.asleep[i] = 0
 
 
 ## Radius of a ball, or 0 for an unknown id.
@@ -270,8 +258,7 @@ func get_ids() -> PackedInt32Array:
 	return _balls.handed_out(&"ids", _balls.ids.duplicate())
 
 
-## Turns path recording on or off (see take_step_paths()). Off by default: it costs memory
-## and time, and only checks need it.
+## Turns path recording on or off (see take_step_paths()); off by default, for checks only.
 func set_path_recording(on: bool) -> void:
 	_balls.tracing = on
 	_balls.take_paths()
@@ -404,14 +391,10 @@ func _emit_events() -> void:
 
 ## Refuses a bad dt; replaces non-finite gravity or friction with zero. False to skip.
 func _inputs_ok(dt: float) -> bool:
-	if not is_finite(dt) or dt <= 0.0:
-		push_error("BallWorld.step: dt must be finite and > 0 (got %s)" % dt)
+	var problem := WorldInputChecks.step_problem(dt)
+	if not problem.is_empty():
+		push_error(problem)
 		return false
-	if not gravity.is_finite():
-		push_error("BallWorld.step: gravity must be finite (got %s); using zero" % gravity)
-		gravity = Vector2.ZERO
-	if not rolling_friction.is_finite():
-		var problem: String = "BallWorld.step: rolling_friction must be finite (got %s); using zero"
-		push_error(problem % rolling_friction)
-		rolling_friction = Vector2.ZERO
+	gravity = WorldInputChecks.finite_or_zero(gravity, "gravity")
+	rolling_friction = WorldInputChecks.finite_or_zero(rolling_friction, "rolling_friction")
 	return true

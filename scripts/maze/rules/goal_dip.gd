@@ -86,4 +86,4 @@ func apply(dt: float) -> void:
 			continue  # walled off (or dead centre): left to roll as anywhere else
 		var velocity := _world.get_ball_velocity(ids[i])
 		# this ball only: the others keep sleeping (set_ball_velocity woke them all)
-		_world.steer_ball(ids[i], velocity * slowing + pull * dt)
+		_world.set_ball_velocity(ids[i], velocity * slowing + pull * dt, false)
