@@ -8,20 +8,20 @@ extends RefCounted
 ## four-ball boards from the easiest to the hardest by the maze analysis' difficulty (the
 ## pilot's seconds of hard-mode play per win, `--analyze=maze --runs=5`; README lists them).
 const ORDER: Array[String] = [
-	"maze_first_roll",  # 11.0 s a win
+	"maze_first_roll",  # 11.0 s a win (maze rules 3, --runs=5)
 	"maze_two_together",  # 16.5
 	"maze_cloister",  # 13.8 (eased: two holes, one more loop; the first of four balls)
-	"maze_long_hall",  # 14.8
-	"maze_catacombs",  # 19.9
-	"maze_switchbacks",  # 20.5
-	"maze_garden",  # 23.7
-	"maze_undercroft",  # 24.4
-	"maze_classic",  # 25.1
-	"maze_labyrinth",  # 28.2
-	"maze_crossroads",  # 33.3
-	"maze_tower",  # 42.1
-	"maze_courtyards",  # 46.0
-	"maze_the_deep",  # 56.1
+	"maze_garden",  # 14.5
+	"maze_switchbacks",  # 21.5
+	"maze_long_hall",  # 23.6
+	"maze_labyrinth",  # 25.8
+	"maze_crossroads",  # 27.1
+	"maze_catacombs",  # 29.0
+	"maze_classic",  # 30.6
+	"maze_tower",  # 37.2
+	"maze_courtyards",  # 46.4
+	"maze_the_deep",  # 56.5
+	"maze_undercroft",  # 82.6 (ten holes: the pilot waits and goes round)
 ]
 
 

@@ -74,8 +74,8 @@ func test_clock_shows_minutes_seconds_and_tenths() -> void:
 
 func test_the_next_board_follows_the_opening_order() -> void:
 	assert_eq(MazeProgress.next_of("maze_first_roll"), "maze_two_together")
-	assert_eq(MazeProgress.next_of("maze_garden"), "maze_undercroft")
-	assert_eq(MazeProgress.next_of("maze_the_deep"), "", "the last has none")
+	assert_eq(MazeProgress.next_of("maze_garden"), "maze_switchbacks")
+	assert_eq(MazeProgress.next_of("maze_undercroft"), "", "the last has none")
 	assert_eq(MazeProgress.next_of("my:garden.board"), "", "a board of your own has none")
 	for id in MazeProgress.ORDER:
 		assert_true(FileAccess.file_exists(MazeProgress.shipped_path(id)), id)
