@@ -31,6 +31,11 @@ var _crew := LaneCrew.new()
 var _can_thread: bool = OS.has_feature("threads")
 
 
+## The crew of worker threads the lanes run on (tests count its started workers).
+func crew() -> LaneCrew:
+	return _crew
+
+
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_PREDELETE:
 		_crew.stop()

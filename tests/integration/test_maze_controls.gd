@@ -121,30 +121,30 @@ func test_calibrate_from_keys_also_hands_control_back() -> void:
 
 
 ## Presses the head of `stick` (sized 300 × 300) and moves the pointer `travel` screen px.
-func _drag_joystick(stick: Control, travel: Vector2) -> Vector2:
+func _drag_joystick(stick: MazeJoystickScript, travel: Vector2) -> Vector2:
 	stick.size = Vector2(300.0, 300.0)
 	var press := InputEventMouseButton.new()
 	press.button_index = MOUSE_BUTTON_LEFT
 	press.pressed = true
 	press.position = Vector2(150.0, 150.0)
 	press.global_position = Vector2(150.0, 150.0)
-	stick.call("_gui_input", press)
+	stick._gui_input(press)
 	var motion := InputEventMouseMotion.new()
 	motion.global_position = press.global_position + travel
-	stick.call("_input", motion)
-	return stick.get("head_offset")
+	stick._input(motion)
+	return stick.head_offset
 
 
 func test_the_joystick_tilts_fully_at_15_screen_pixels_as_in_the_seed() -> void:
-	var stick: Control = add_child_autofree(MazeJoystickScript.new())
-	stick.set("ui_scale", 2.0)
+	var stick: MazeJoystickScript = add_child_autofree(MazeJoystickScript.new())
+	stick.ui_scale = 2.0
 	var head := _drag_joystick(stick, Vector2(15.0, -15.0))
 	assert_eq(TiltInput.tilt_from_joystick(head), Vector2(12.0, -12.0), "full tilt at 15 px")
 	stick = add_child_autofree(MazeJoystickScript.new())
 	head = _drag_joystick(stick, Vector2(7.5, 0.0))
 	assert_eq(TiltInput.tilt_from_joystick(head), Vector2(6.0, 0.0), "half way: half the tilt")
 	stick = add_child_autofree(MazeJoystickScript.new())
-	stick.set("sensitivity", 2.0)
+	stick.sensitivity = 2.0
 	head = _drag_joystick(stick, Vector2(7.5, 0.0))
 	assert_eq(TiltInput.tilt_from_joystick(head), Vector2(12.0, 0.0), "sensitivity 2: 7.5 px")
 

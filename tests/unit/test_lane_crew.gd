@@ -98,7 +98,7 @@ func test_freeing_the_lanes_joins_their_workers() -> void:
 	var lanes := BallLanes.new()
 	lanes.threads = 2
 	lanes.run(func(_lane: int, _from: int, _to: int) -> void: pass, 1000)
-	var crew: LaneCrew = lanes.get("_crew")
+	var crew := lanes.crew()
 	assert_eq(crew.started, 1, "two threads: one worker besides the calling thread")
 	lanes = null
 	assert_eq(crew.started, 0, "the worker was stopped and joined with its lanes object")
