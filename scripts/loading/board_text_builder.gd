@@ -50,12 +50,11 @@ static func build(data: Dictionary) -> BoardLevel:
 	for list: Variant in counters:
 		next_ids[str(list)] = int_of(counters[list])
 	level.next_ids = next_ids
-	for list: String in ItemIds.LISTS:
+	for row in ItemKinds.listed():
 		var ids := PackedInt32Array()
-		for item: Dictionary in data.get(list, []):
+		for item: Dictionary in data.get(row.list, []):
 			ids.append(int_of(item.get("id", 0)))
-		var id_field: String = ItemIds.LISTS[list]
-		level.set(id_field, ids)
+		level.set(row.id_field, ids)
 	ItemIds.fill(level)  # missing or repeated ids get fresh numbers
 	return level
 

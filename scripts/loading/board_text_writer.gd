@@ -126,10 +126,10 @@ static func _tuning_lines(tuning: PhysicsTuning) -> PackedStringArray:
 	return lines
 
 
-# `{"pins": 626, "walls": 40}` in ItemIds.LISTS order, so the same board gives the same text.
+# `{"pins": 626, "walls": 40}` in ItemIds.lists() order, so the same board gives the same text.
 static func _counters(counters: Dictionary[String, int]) -> String:
 	var parts := PackedStringArray()
-	for list: String in ItemIds.LISTS:
+	for list in ItemIds.lists():
 		if counters.has(list):
 			parts.append('"%s": %d' % [list, counters[list]])
 	return "{" + ", ".join(parts) + "}"
@@ -224,7 +224,7 @@ static func _pocket_items(level: BoardLevel) -> PackedStringArray:
 # A board without them gets no line, so older boards keep their exact text.
 static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
 	for role: int in BonusPocketSpec.ROLE_KEYS.size():
-		var ids := _ids(level, ItemIds.BONUS_LISTS[role])
+		var ids := _ids(level, ItemKinds.of_role(role).list)
 		var place := 0
 		for spec in level.bonus_pockets:
 			if spec == null or spec.role != role:
