@@ -2,10 +2,10 @@ extends GutTest
 ## Every row of the ItemKinds table, end to end: a shipped board having that kind is read
 ## from its file, an item of the kind is added with the editor's add action (a copy of one of
 ## the board's own, set apart), moved, mirrored (flipped about the board's mirror axis),
-## written and read back (the new item is in the file where the edits left it), then the
-## three edits are undone and the board is written again: byte for byte its file, but for the
-## id counter line that keeps the undone add's id spent. The goal, which cannot be added, is
-## moved and mirrored.
+## written and read back (the new item is in the file where the edits left it), deleted,
+## then the edits are undone one by one, each giving back the file as it was before it, down
+## to the board's own file byte for byte, but for the id counter line that keeps the undone
+## add's id spent. The goal, which cannot be added or deleted, is moved and mirrored.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ItemKeys := preload("res://addons/board_editor/core/item_keys.gd")
@@ -13,6 +13,7 @@ const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const FlipItemsAction := preload("res://addons/board_editor/actions/flip_items_action.gd")
+const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const Reader := preload("res://scripts/loading/board_text_reader.gd")
 const Schema := preload("res://scripts/loading/board_schema.gd")
@@ -92,6 +93,14 @@ func _round_trip(kind: ItemKind, path: String) -> void:
 	var mirrored := Mirror.reflect(start + MOVE, axis)
 	assert_almost_eq(Items.position_of(level, item), mirrored, Vector2.ONE * 0.001, label)
 	_check_written(kind, level, item, label)
+	if kind.has_ids():
+		# Deleting it takes the board back to its own items (undone below like the rest).
+		before.append(Writer.write(level))
+		var had := kind.count(level)
+		var delete := DeleteItemsAction.new(level, [item] as Array[Vector2i])
+		delete.do()
+		actions.append(delete)
+		assert_eq(kind.count(level), had - 1, label + ": deleted")
 	var counter := ItemIds.next_id(level, kind.list) if kind.has_ids() else 0
 	for k in range(actions.size() - 1, 0, -1):
 		actions[k].undo()
