@@ -16,4 +16,16 @@ static func row() -> ItemKind:
 	kind.optional_file_fields["open_catches"] = [
 		"int", BoardRanges.BONUS_OPEN_CATCHES[0], BoardRanges.BONUS_OPEN_CATCHES[1]
 	]
+	kind.writes = _write
 	return kind
+
+
+static func _write(level: BoardLevel, index: int) -> String:
+	var spec := level.bonus_pockets[index]
+	return (
+		BonusCup.cup_line(level, index)
+		+ (
+			', "open_seconds": %s, "open_catches": %d'
+			% [BonusCup.LineText.number(spec.open_seconds), spec.open_catches]
+		)
+	)

@@ -27,6 +27,8 @@ enum Shape {
 	SINGLE,  ## one Vector2 field (the goal)
 }
 
+const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
+
 ## The largest id a file may use (ItemIds).
 const MAX_ID := 9_999_999
 
@@ -66,7 +68,17 @@ var max_items := 0
 var file_fields := {}
 var optional_file_fields := {}
 
-## Hooks, each optional (an invalid Callable does nothing):
+## Hooks, each optional (an invalid Callable does nothing, or leaves the shape's way):
+## `(level, index) -> String`: item `index`'s fields as its file line writes them, after its
+## id (`"x": 12, "y": 40`); a POINT or SEGMENT kind writes its `file_fields` coordinates.
+var writes := Callable()
+## `(level, lines: Array) -> Array`: sets `field` from the kind's checked file lines and
+## returns the lines whose ids are the items' (a pin line of an older file that names its
+## pocket is dropped: the pocket stamps it); a POINT or SEGMENT kind reads its coordinates.
+var reads := Callable()
+## `(line: Dictionary) -> String`: what is wrong with one item line of a board file beyond
+## its fields' types and ranges ("" when nothing; a windmill needs a speed or a friction).
+var checks := Callable()
 ## `(level, index) -> bool`: true for an entry of `field` that is not an item of its own
 ## (a pocket's rim pin).
 var skips := Callable()
@@ -343,6 +355,27 @@ func remove(level: BoardLevel, work: Dictionary, gone: PackedInt32Array) -> void
 			specs.remove_at(gone[k])
 	if removed.is_valid():
 		removed.call(level, work, gone)
+
+
+## Item `index`'s line in a board file, after its id: `"x": 12, "y": 40`.
+func line_of(level: BoardLevel, index: int) -> String:
+	if writes.is_valid():
+		return writes.call(level, index)
+	var points: PackedVector2Array = level.get(field)
+	var step := 2 if shape == Shape.SEGMENT else 1
+	return LineText.coords(file_fields.keys(), points.slice(index * step, index * step + step))
+
+
+## Sets `field` on a board being built from the kind's checked file `lines`; the lines
+## whose ids the items take, in order.
+func read_lines(level: BoardLevel, lines: Array) -> Array:
+	if reads.is_valid():
+		return reads.call(level, lines)
+	var points := PackedVector2Array()
+	for line: Dictionary in lines:
+		points.append_array(LineText.points_of(line, file_fields.keys()))
+	level.set(field, points)
+	return lines
 
 
 ## What identifies each item of `items` (the `field` value, or its BoardFieldCopy capture

@@ -2,8 +2,9 @@
 class_name ItemKinds
 extends RefCounted
 ## Every kind of board item, declared once: one file per kind in this folder builds its
-## ItemKind row, and ROWS lists the files in table order (the order ids, counters and item
-## lines are written in: pachinko's, then the maze's, the goal last). The item ids, the
+## ItemKind row, and ROWS lists the files in table order: the order of the item lines in
+## a board file (pachinko's, then the maze's; the goal, a field, last) and of the id
+## counters. The item ids, the
 ## editor's selection, names, undo snapshots, moves, mirroring, adding and deleting go by
 ## this table instead of switching on the kind (tests/unit/test_item_kinds_round_trip.gd
 ## walks every row through file, level and editor).
@@ -14,13 +15,13 @@ extends RefCounted
 const ROWS: Array[GDScript] = [
 	preload("res://scripts/board/item_kinds/pin_kind.gd"),
 	preload("res://scripts/board/item_kinds/pocket_kind.gd"),
-	preload("res://scripts/board/item_kinds/wall_kind.gd"),
-	preload("res://scripts/board/item_kinds/hole_kind.gd"),
-	preload("res://scripts/board/item_kinds/ball_start_kind.gd"),
 	preload("res://scripts/board/item_kinds/start_pocket_kind.gd"),
 	preload("res://scripts/board/item_kinds/attacker_kind.gd"),
 	preload("res://scripts/board/item_kinds/tulip_kind.gd"),
 	preload("res://scripts/board/item_kinds/windmill_kind.gd"),
+	preload("res://scripts/board/item_kinds/wall_kind.gd"),
+	preload("res://scripts/board/item_kinds/ball_start_kind.gd"),
+	preload("res://scripts/board/item_kinds/hole_kind.gd"),
 	preload("res://scripts/board/item_kinds/goal_kind.gd"),
 ]
 

@@ -4,6 +4,8 @@ extends RefCounted
 ## stamp (PocketStamp); those are the pocket's, not items of their own: they have no id,
 ## no line in the file, and a designer picks their pocket, never them.
 
+const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
+
 
 ## The pin row of ItemKinds.
 static func row() -> ItemKind:
@@ -23,6 +25,8 @@ static func row() -> ItemKind:
 		"id": ["int", 1, ItemKind.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]
 	}
 	kind.skips = is_rim_pin
+	kind.reads = _read
+	kind.writes = _write
 	kind.appended = _appended
 	kind.removed = _removed
 	return kind
@@ -31,6 +35,34 @@ static func row() -> ItemKind:
 ## True when pin `index` belongs to a pocket (stamped from it, never stored on its own).
 static func is_rim_pin(level: BoardLevel, index: int) -> bool:
 	return index >= 0 and index < level.pin_pocket.size() and level.pin_pocket[index] >= 0
+
+
+# Field pins only: a pin line of an older file that names its pocket is that pocket's rim,
+# which the pocket line stamps. A pin may be special (flag 1) on its own.
+static func _read(level: BoardLevel, lines: Array) -> Array:
+	var kept: Array = []
+	var pins := PackedVector2Array()
+	var owners := PackedInt32Array()
+	var special := PackedByteArray()
+	for line: Dictionary in lines:
+		if line.has("pocket"):
+			continue
+		kept.append(line)
+		pins.append(Vector2(LineText.float_of(line["x"]), LineText.float_of(line["y"])))
+		owners.append(-1)
+		special.append(1 if line.get("special", false) else 0)
+	level.pins = pins
+	level.pin_pocket = owners
+	level.pin_special = special
+	return kept
+
+
+static func _write(level: BoardLevel, index: int) -> String:
+	var pin := level.pins[index]
+	var text := '"x": %s, "y": %s' % [LineText.number(pin.x), LineText.number(pin.y)]
+	if index < level.pin_special.size() and level.pin_special[index] != 0:
+		text += ', "special": true'
+	return text
 
 
 ## The per-pin arrays in `work` padded to `pins` entries: older or hand-written files may

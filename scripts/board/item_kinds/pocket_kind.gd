@@ -5,6 +5,7 @@ extends RefCounted
 ## owned through `pin_pocket`, so they move, appear and go with it.
 
 const PinKind := preload("res://scripts/board/item_kinds/pin_kind.gd")
+const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 
 
 ## The pocket row of ItemKinds.
@@ -29,10 +30,40 @@ static func row() -> ItemKind:
 		"payout": ["int", 0, 10000],
 	}
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
+	kind.reads = _read
+	kind.writes = _write
 	kind.carries = _carry_pins
 	kind.appended = _stamp_pins
 	kind.removed = _remove_pins
 	return kind
+
+
+# The pockets, each stamping its rim and special pin after the field pins (read first).
+static func _read(level: BoardLevel, lines: Array) -> Array:
+	var specs: Array[PocketSpec] = []
+	for line: Dictionary in lines:
+		var at := Vector2(LineText.float_of(line["x"]), LineText.float_of(line["y"]))
+		var width := LineText.float_of(line["width"])
+		var depth := LineText.float_of(line["depth"])
+		specs.append(PocketSpec.create(at, width, depth, LineText.int_of(line["payout"])))
+	level.pockets = specs
+	for k in specs.size():
+		PocketStamp.apply(level, k)
+	return lines
+
+
+static func _write(level: BoardLevel, index: int) -> String:
+	var spec := level.pockets[index]
+	return (
+		'"x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d'
+		% [
+			LineText.number(spec.position.x),
+			LineText.number(spec.position.y),
+			LineText.number(spec.width),
+			LineText.number(spec.depth),
+			spec.payout
+		]
+	)
 
 
 # The rim and special pin move with their pocket.

@@ -13,4 +13,10 @@ static func row() -> ItemKind:
 	kind.optional_file_fields["symbols"] = [
 		"int", BoardRanges.BONUS_SYMBOLS[0], BoardRanges.BONUS_SYMBOLS[1]
 	]
+	kind.writes = _write
 	return kind
+
+
+static func _write(level: BoardLevel, index: int) -> String:
+	var symbols := level.bonus_pockets[index].symbols
+	return BonusCup.cup_line(level, index) + ', "symbols": %d' % symbols

@@ -3,6 +3,8 @@ extends RefCounted
 ## Windmills (WindmillSpec): wheels of blades the world turns, driven at a speed or spinning
 ## free with a friction (a file line has one of the two).
 
+const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
+
 
 ## The windmill row of ItemKinds.
 static func row() -> ItemKind:
@@ -30,7 +32,56 @@ static func row() -> ItemKind:
 		"friction": ["float", 0.0, WindmillSpec.MAX_FRICTION],
 	}
 	kind.turns = turn_back
+	kind.checks = check_drive
+	kind.reads = _read
+	kind.writes = _write
 	return kind
+
+
+static func _read(level: BoardLevel, lines: Array) -> Array:
+	var specs: Array[WindmillSpec] = []
+	for line: Dictionary in lines:
+		var at := Vector2(LineText.float_of(line["x"]), LineText.float_of(line["y"]))
+		var blades := LineText.int_of(line["blades"])
+		var length := LineText.float_of(line["length"])
+		if line.has("friction"):
+			var friction := LineText.float_of(line["friction"])
+			specs.append(WindmillSpec.spinning_free(at, blades, length, friction))
+		else:
+			specs.append(WindmillSpec.driven(at, blades, length, LineText.float_of(line["speed"])))
+	level.windmills = specs
+	return lines
+
+
+# A driven wheel writes its speed, a free one its friction.
+static func _write(level: BoardLevel, index: int) -> String:
+	var spec := level.windmills[index]
+	var text := (
+		'"x": %s, "y": %s, "blades": %d, "length": %s'
+		% [
+			LineText.number(spec.position.x),
+			LineText.number(spec.position.y),
+			spec.blades,
+			LineText.number(spec.length)
+		]
+	)
+	if spec.free_spin:
+		return text + ', "friction": %s' % LineText.number(spec.friction)
+	return text + ', "speed": %s' % LineText.number(spec.speed)
+
+
+## A windmill's file line is driven ("speed") or free ("friction"): exactly one of the two.
+static func check_drive(line: Dictionary) -> String:
+	var driven := line.has("speed")
+	var free := line.has("friction")
+	if driven and free:
+		return (
+			'give "speed" (a driven wheel, degrees a second) or "friction" (a free wheel),'
+			+ " not both"
+		)
+	if not driven and not free:
+		return 'needs "speed" (a driven wheel, degrees a second) or "friction" (a free wheel)'
+	return ""
 
 
 ## A mirrored windmill turns the other way, so a mirrored board plays the same from both
