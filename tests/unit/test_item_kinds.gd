@@ -61,3 +61,26 @@ func test_every_editor_pick_has_a_row() -> void:
 		var kind := ItemKinds.of_role(role)
 		assert_eq(kind.name, BonusPocketSpec.ROLE_KEYS[role])
 		assert_eq(kind.pick, Items.Kind.BONUS)
+
+
+func test_a_copied_board_shares_no_item_resource_and_watches_every_one() -> void:
+	var level := BoardLevel.new()
+	level.pockets = [PocketSpec.create(Vector2(10, 10), 20, 20, 3)] as Array[PocketSpec]
+	level.bonus_pockets = (
+		[BonusPocketSpec.of_role(BonusPocketSpec.Role.TULIP, Vector2(50, 50), 26, 26, 3)]
+		as Array[BonusPocketSpec]
+	)
+	level.windmills = [WindmillSpec.driven(Vector2(90, 90), 4, 20, 100)] as Array[WindmillSpec]
+	var copy := level.duplicate_level()
+	for kind in ItemKinds.all():
+		if kind.shape != ItemKind.Shape.SPEC and kind.shape != ItemKind.Shape.ROLE_SPEC:
+			continue
+		var mine: Array = level.get(kind.field)
+		var theirs: Array = copy.get(kind.field)
+		assert_eq(theirs.size(), mine.size(), kind.field)
+		assert_ne(theirs[0], mine[0], kind.field + ": copied, not shared")
+		assert_eq(theirs.get_typed_class_name(), mine.get_typed_class_name(), kind.field)
+		watch_signals(level)
+		var spec: Resource = mine[0]
+		spec.set("position", Vector2(1, 1))
+		assert_signal_emitted(level, "changed", kind.field + ": an edit of one is the board's")
