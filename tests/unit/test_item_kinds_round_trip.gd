@@ -1,15 +1,18 @@
 extends GutTest
 ## Every row of the ItemKinds table, end to end: a shipped board having that kind is read
-## from its file, an item of the kind is added with the editor's add action (a copy of one of
-## the board's own, set apart), moved, mirrored (flipped about the board's mirror axis),
-## written and read back (the new item is in the file where the edits left it), deleted,
-## then the edits are undone one by one, each giving back the file as it was before it, down
-## to the board's own file byte for byte, but for the id counter line that keeps the undone
-## add's id spent. The goal, which cannot be added or deleted, is moved and mirrored.
+## from its file, an item of the kind is added with the editor's add action (a copy of one
+## of the board's own, set apart), box-selected, moved, mirrored (flipped about the board's
+## mirror axis), written and read back (the new item is in the file where the edits left
+## it), deleted, then the edits are undone one by one, each giving back the file as it was
+## before it, down to the board's own file byte for byte, but for the id counter line that
+## keeps the undone add's id spent. The goal, which cannot be added or deleted, is
+## box-selected, moved and mirrored.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 const ItemKeys := preload("res://addons/board_editor/core/item_keys.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
+const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
+const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const FlipItemsAction := preload("res://addons/board_editor/actions/flip_items_action.gd")
@@ -77,6 +80,8 @@ func _round_trip(kind: ItemKind, path: String) -> void:
 	if item == Items.NONE:
 		return
 	var start := Items.position_of(level, item)
+	var area := Commands.extent_of(level, item).grow(1.0)
+	assert_has(HitTest.in_rect(level, area), item, label + ": a box round its area selects it")
 	# What the file was before each edit: undoing that edit must give it back.
 	var before: Array[String] = [text]
 	if not actions.is_empty():

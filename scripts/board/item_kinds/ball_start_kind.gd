@@ -14,5 +14,6 @@ static func row() -> ItemKind:
 	kind.plural = "Ball starts"
 	kind.set_key = "starts"
 	kind.max_items = 64
+	kind.size_field = "ball_radius"
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	return kind

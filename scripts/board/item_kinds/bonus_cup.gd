@@ -41,7 +41,15 @@ static func row(
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	kind.reads = read_cups.bind(role)
 	kind.writes = cup_line
+	kind.covers = _cup
 	return kind
+
+
+# The cup (its pins are stamped by the world, round its edge).
+static func _cup(level: BoardLevel, index: int) -> Rect2:
+	var spec := level.bonus_pockets[index]
+	var top_left := spec.position - Vector2(spec.width * 0.5, 0.0)
+	return Rect2(top_left, Vector2(spec.width, spec.depth))
 
 
 ## Appends the bonus pockets of `role` from their checked file lines to the board's (the

@@ -14,5 +14,6 @@ static func row() -> ItemKind:
 	kind.plural = "Black holes"
 	kind.set_key = "holes"
 	kind.max_items = 500
+	kind.size_field = "hole_radius"
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	return kind

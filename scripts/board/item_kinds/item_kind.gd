@@ -68,7 +68,17 @@ var max_items := 0
 var file_fields := {}
 var optional_file_fields := {}
 
+## The BoardLevel field holding the size of every item of a POINT or SEGMENT kind (a pin's
+## radius, a wall's width), for the area it covers; "" for none.
+var size_field := ""
+
 ## Hooks, each optional (an invalid Callable does nothing, or leaves the shape's way):
+## `(level, index) -> Rect2`: the area item `index` covers (a cup, a sweep); a POINT kind
+## covers a circle of its `size_field` radius, a SEGMENT a capsule `size_field` wide.
+var covers := Callable()
+## `(level, index) -> Vector2i`: for a skipped entry, the item that owns it (a rim pin's
+## pocket, `Vector2i(pick, index)`), which a designer picks in its place.
+var owner := Callable()
 ## `(level, index) -> String`: item `index`'s fields as its file line writes them, after its
 ## id (`"x": 12, "y": 40`); a POINT or SEGMENT kind writes its `file_fields` coordinates.
 var writes := Callable()
@@ -186,6 +196,27 @@ func position_of(level: BoardLevel, index: int) -> Vector2:
 			return _position(spec)
 	var point: Vector2 = level.get(field)
 	return point
+
+
+## The area item `index` covers on the board (its pins, cup, capsule or circle).
+func extent(level: BoardLevel, index: int) -> Rect2:
+	if covers.is_valid():
+		return covers.call(level, index)
+	var size: float = level.get(size_field) if not size_field.is_empty() else 0.0
+	if shape == Shape.SEGMENT:
+		var ends: PackedVector2Array = level.get(field)
+		var box := Rect2(ends[index * 2], Vector2.ZERO).expand(ends[index * 2 + 1])
+		return box.grow(size * 0.5)
+	return Rect2(position_of(level, index), Vector2.ZERO).grow(size)
+
+
+## The points that must lie in a box for item `index` to be boxed: both ends of a wall,
+## else the point that stands for it.
+func box_points(level: BoardLevel, index: int) -> PackedVector2Array:
+	if shape == Shape.SEGMENT:
+		var ends: PackedVector2Array = level.get(field)
+		return ends.slice(index * 2, index * 2 + 2)
+	return PackedVector2Array([position_of(level, index)])
 
 
 ## The copy of `field` that a batch of edits writes into (`work`: field -> copy), made on

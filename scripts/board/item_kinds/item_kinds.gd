@@ -99,6 +99,17 @@ static func of_field(field: String) -> ItemKind:
 	return null
 
 
+## Every item of `level` as the editor names it, `Vector2i(pick, index)`, in table order
+## (the bonus pockets in board order, which is role order), skipped entries included.
+static func items_of(level: BoardLevel) -> Array[Vector2i]:
+	var items: Array[Vector2i] = []
+	for kind in _rows:
+		for index in kind.field_indices(level):
+			if kind.is_valid(level, index):
+				items.append(Vector2i(kind.pick, index))
+	return items
+
+
 ## The first row of each item-set key (BoardItems.extract), in table order.
 static func set_rows() -> Array[ItemKind]:
 	var seen := {}

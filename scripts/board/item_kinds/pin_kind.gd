@@ -24,7 +24,9 @@ static func row() -> ItemKind:
 	kind.optional_file_fields = {
 		"id": ["int", 1, ItemKind.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]
 	}
+	kind.size_field = "pin_radius"
 	kind.skips = is_rim_pin
+	kind.owner = _pocket_of
 	kind.reads = _read
 	kind.writes = _write
 	kind.appended = _appended
@@ -63,6 +65,11 @@ static func _write(level: BoardLevel, index: int) -> String:
 	if index < level.pin_special.size() and level.pin_special[index] != 0:
 		text += ', "special": true'
 	return text
+
+
+# A rim pin is picked as its pocket.
+static func _pocket_of(level: BoardLevel, index: int) -> Vector2i:
+	return Vector2i(ItemKind.Pick.POCKET, level.pin_pocket[index])
 
 
 ## The per-pin arrays in `work` padded to `pins` entries: older or hand-written files may

@@ -32,6 +32,7 @@ static func row() -> ItemKind:
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	kind.reads = _read
 	kind.writes = _write
+	kind.covers = _cup
 	kind.carries = _carry_pins
 	kind.appended = _stamp_pins
 	kind.removed = _remove_pins
@@ -64,6 +65,13 @@ static func _write(level: BoardLevel, index: int) -> String:
 			spec.payout
 		]
 	)
+
+
+# The cup, its rim pins included.
+static func _cup(level: BoardLevel, index: int) -> Rect2:
+	var spec := level.pockets[index]
+	var top_left := spec.position - Vector2(spec.width * 0.5, 0.0)
+	return Rect2(top_left, Vector2(spec.width, spec.depth)).grow(level.pin_radius)
 
 
 # The rim and special pin move with their pocket.

@@ -14,6 +14,7 @@ static func row() -> ItemKind:
 	kind.plural = "Walls"
 	kind.set_key = "walls"
 	kind.max_items = 4000
+	kind.size_field = "wall_width"
 	kind.file_fields = {"ax": ["coord"], "ay": ["coord"], "bx": ["coord"], "by": ["coord"]}
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	return kind
