@@ -298,22 +298,18 @@ func notify_edited() -> void:
 	emit_changed()
 
 
-## An independent copy: pockets, windmills and tuning are copied too, so editing the copy never
-## touches this board (Resource.duplicate shares sub-resources inside arrays).
+## An independent copy: pockets, bonus pockets, windmills (every item resource) and tuning
+## are copied too, so editing the copy never touches this board (Resource.duplicate shares
+## sub-resources inside arrays).
 func duplicate_level() -> BoardLevel:
 	var copy := duplicate(false) as BoardLevel
-	var specs: Array[PocketSpec] = []
-	for spec in pockets:
-		specs.append(spec.duplicate() as PocketSpec if spec != null else null)
-	copy.pockets = specs
-	var bonus: Array[BonusPocketSpec] = []
-	for spec in bonus_pockets:
-		bonus.append(spec.duplicate() as BonusPocketSpec if spec != null else null)
-	copy.bonus_pockets = bonus
-	var wheels: Array[WindmillSpec] = []
-	for spec in windmills:
-		wheels.append(spec.duplicate() as WindmillSpec if spec != null else null)
-	copy.windmills = wheels
+	for field in _spec_fields():
+		var specs: Array = get(field)
+		var copies := specs.duplicate()  # keeps the typed array's type
+		for i in copies.size():
+			var spec: Resource = copies[i]
+			copies[i] = spec.duplicate() if spec != null else null
+		copy.set(field, copies)
 	copy.tuning = tuning.duplicate() as PhysicsTuning if tuning != null else null
 	copy.next_ids = next_ids.duplicate()
 	copy.legacy_fields = legacy_fields.duplicate(true)
@@ -345,17 +341,35 @@ static func kind_choices() -> String:
 	return " or ".join(KIND_NAMES.map(func(name: String) -> String: return '"%s"' % name))
 
 
-# A pocket or windmill edited on its own (in the inspector, say) changes the board too.
+# An item resource (a pocket, a windmill...) edited on its own (in the inspector, say)
+# changes the board too.
 func _watch_pockets() -> void:
 	for spec in _watched:
 		if spec != null and spec.changed.is_connected(emit_changed):
 			spec.changed.disconnect(emit_changed)
 	_watched.clear()
 	var watch: Array[Resource] = []
-	watch.append_array(pockets)
-	watch.append_array(bonus_pockets)
-	watch.append_array(windmills)
+	for field in _spec_fields():
+		var specs: Array = get(field)
+		watch.append_array(specs)
 	for spec in watch:
 		if spec != null and not spec.changed.is_connected(emit_changed):
 			spec.changed.connect(emit_changed)
 			_watched.append(spec)
+
+
+# The fields holding item resources (pockets, bonus pockets, windmills): every stored typed
+# Array of objects. Found from the property list, not named here, so a new kind of item
+# resource is copied and watched with no change to this file (which ItemKinds cannot be
+# used from: the table's rows are typed with BoardLevel).
+func _spec_fields() -> Array[String]:
+	var fields: Array[String] = []
+	for property in get_property_list():
+		var usage: int = property["usage"]
+		if property["type"] != TYPE_ARRAY or not usage & PROPERTY_USAGE_STORAGE:
+			continue
+		var name: String = property["name"]
+		var value: Array = get(name)
+		if value.get_typed_builtin() == TYPE_OBJECT:
+			fields.append(name)
+	return fields

@@ -13,43 +13,38 @@ extends RefCounted
 ## `tulip` lines).
 ## New ids come from the board's per-list counter (BoardLevel.next_ids), which never goes
 ## back: deleting the item with the highest id, or undoing an add, does not free its id.
+## The lists, their fields and what identifies an item across an edit come from ItemKinds.
 
-## Item list -> its id array on BoardLevel.
-const LISTS := {
-	"pins": "pin_ids",
-	"pockets": "pocket_ids",
-	"walls": "wall_ids",
-	"holes": "hole_ids",
-	"ball_starts": "start_ids",
-	"start_pockets": "start_pocket_ids",
-	"attackers": "attacker_ids",
-	"tulips": "tulip_ids",
-	"windmills": "windmill_ids",
-}
-## The bonus lists, in BonusPocketSpec.Role order; their items are the board's
-## `bonus_pockets` of that role, in board order.
-const BONUS_LISTS: Array[String] = ["start_pockets", "attackers", "tulips"]
+const PinKind := preload("res://scripts/board/item_kinds/pin_kind.gd")
+
 ## The largest id a file may use.
-const MAX_ID := 9_999_999
+const MAX_ID := ItemKind.MAX_ID
 
 
-## How many items `list` holds (walls are point pairs).
+## The item lists that have ids, in ItemKinds order (the order counters are written in):
+## "pins", "pockets", ... "windmills".
+static func lists() -> Array[String]:
+	var names: Array[String] = []
+	for kind in ItemKinds.listed():
+		names.append(kind.list)
+	return names
+
+
+## The BoardLevel field holding the ids of `list` ("pin_ids").
+static func id_field_of(list: String) -> String:
+	return ItemKinds.of_list(list).id_field
+
+
+## How many items `list` holds (a pocket's rim pins counted among the pins).
 static func count(level: BoardLevel, list: String) -> int:
-	if list == "pockets":
-		return level.pockets.size()
-	if list == "windmills":
-		return level.windmills.size()
-	if BONUS_LISTS.has(list):
-		return _keys(level.bonus_pockets, list).size()
-	var points: PackedVector2Array = level.get(list)
-	@warning_ignore("integer_division")  # whole walls only
-	return points.size() / 2 if list == "walls" else points.size()
+	return ItemKinds.of_list(list).count(level)
 
 
 ## The id of item `index` of `list` (its place, 1-based, if the board has no id for it);
 ## 0 for a pocket's rim pin, which has none.
 static func of(level: BoardLevel, list: String, index: int) -> int:
-	if list == "pins" and is_rim_pin(level, index):
+	var kind := ItemKinds.of_list(list)
+	if kind.skips.is_valid() and kind.skips.call(level, index):
 		return 0
 	var ids := ids_of(level, list)
 	return ids[index] if index < ids.size() and ids[index] > 0 else index + 1
@@ -57,12 +52,12 @@ static func of(level: BoardLevel, list: String, index: int) -> int:
 
 ## The board field that holds the items of `list` ("bonus_pockets" for the bonus lists).
 static func field_of(list: String) -> String:
-	return "bonus_pockets" if BONUS_LISTS.has(list) else list
+	return ItemKinds.of_list(list).field
 
 
 ## True when pin `index` belongs to a pocket (stamped from it, never stored on its own).
 static func is_rim_pin(level: BoardLevel, index: int) -> bool:
-	return index >= 0 and index < level.pin_pocket.size() and level.pin_pocket[index] >= 0
+	return PinKind.is_rim_pin(level, index)
 
 
 ## How a message names pin `index`: "pin 17", or "a pin of pocket 2's rim" for a pin the
@@ -80,7 +75,7 @@ static func pin_label(level: BoardLevel, index: int) -> String:
 ## The id of bonus pocket `index` of `level.bonus_pockets` (unique among its role).
 static func of_bonus(level: BoardLevel, index: int) -> int:
 	var spec := level.bonus_pockets[index]
-	var list := BONUS_LISTS[spec.role]
+	var list := ItemKinds.of_role(spec.role).list
 	var place := 0
 	for k in index:
 		var other := level.bonus_pockets[k]
@@ -92,14 +87,8 @@ static func of_bonus(level: BoardLevel, index: int) -> int:
 ## The index in `level.bonus_pockets` of the bonus pocket of `list` with id `id`, or -1.
 static func bonus_index(level: BoardLevel, list: String, id: int) -> int:
 	var place := index_of(level, list, id)
-	var role := BONUS_LISTS.find(list)
-	for i in level.bonus_pockets.size():
-		var spec := level.bonus_pockets[i]
-		if spec != null and spec.role == role:
-			if place == 0:
-				return i
-			place -= 1
-	return -1
+	var indices := ItemKinds.of_list(list).field_indices(level)
+	return indices[place] if place >= 0 and place < indices.size() else -1
 
 
 ## The index of the item of `list` with id `id`, or -1.
@@ -112,8 +101,7 @@ static func index_of(level: BoardLevel, list: String, id: int) -> int:
 
 ## The stored ids of `list` (may be shorter than the list; see `of`).
 static func ids_of(level: BoardLevel, list: String) -> PackedInt32Array:
-	var id_field: String = LISTS[list]
-	var ids: PackedInt32Array = level.get(id_field)
+	var ids: PackedInt32Array = level.get(id_field_of(list))
 	return ids
 
 
@@ -128,7 +116,8 @@ static func next_id(level: BoardLevel, list: String) -> int:
 
 ## Makes every id array match its list: missing, zero or repeated ids get fresh numbers.
 static func fill(level: BoardLevel) -> void:
-	for list: String in LISTS:
+	for kind in ItemKinds.listed():
+		var list := kind.list
 		var ids := ids_of(level, list).duplicate()
 		var total := count(level, list)
 		ids.resize(total)
@@ -136,7 +125,7 @@ static func fill(level: BoardLevel) -> void:
 		var fresh := maxi(_largest(ids) + 1, _counter(level, list))
 		var changed := false
 		for i in total:
-			if list == "pins" and is_rim_pin(level, i):
+			if kind.skips.is_valid() and kind.skips.call(level, i):
 				changed = changed or ids[i] != 0
 				ids[i] = 0
 				continue
@@ -146,8 +135,7 @@ static func fill(level: BoardLevel) -> void:
 				changed = true
 			seen[ids[i]] = true
 		if changed or ids.size() != ids_of(level, list).size():
-			var id_field: String = LISTS[list]
-			level.set(id_field, ids)
+			level.set(kind.id_field, ids)
 		if changed:
 			_advance(level, list, fresh)
 
@@ -160,17 +148,20 @@ static func fill(level: BoardLevel) -> void:
 ## moves its pins to the end of the list): the same number of field pins keeps their ids in
 ## order, so a moved pin stays itself.
 static func reconcile(level: BoardLevel, before: Dictionary) -> void:
-	for list: String in LISTS:
-		var id_field: String = LISTS[list]
-		var field := field_of(list)
+	for kind in ItemKinds.listed():
+		var list := kind.list
+		var id_field := kind.id_field
+		var field := kind.field
 		if not before.has(field) or not before.has(id_field):
 			continue
-		if list == "pins":
+		if kind.skips.is_valid():
+			# Pins: the skipped entries (rim pins) have no id and move about when a pocket
+			# is re-stamped, so the others are matched among themselves.
 			_reconcile_pins(level, before)
 			continue
 		var old_ids: PackedInt32Array = before[id_field]
-		var old_keys := _keys(before[field], list)
-		var new_keys := _keys(level.get(field), list)
+		var old_keys := kind.keys_of(before[field])
+		var new_keys := kind.keys_of(level.get(field))
 		if old_keys.size() == new_keys.size():
 			continue  # moved or edited in place: every item is still itself
 		# Items without a stored id had their place as id (see `of`).
@@ -240,7 +231,7 @@ static func _reconcile_pins(level: BoardLevel, before: Dictionary) -> void:
 ## from its ids, so an unchanged board writes no counter line.
 static func counters_to_save(level: BoardLevel) -> Dictionary[String, int]:
 	var saved: Dictionary[String, int] = {}
-	for list: String in LISTS:
+	for list in lists():
 		var largest := 0
 		for i in count(level, list):
 			largest = maxi(largest, of(level, list, i))
@@ -263,36 +254,6 @@ static func _advance(level: BoardLevel, list: String, next: int) -> void:
 	var counters := level.next_ids.duplicate()
 	counters[list] = next
 	level.next_ids = counters
-
-
-# What identifies an item across an edit: its position (a wall: both ends), a pocket its
-# object (a windmill too). `items` is the board field (or its BoardFieldCopy capture:
-# [object, values...]).
-static func _keys(items: Variant, list: String) -> Array:
-	var keys: Array = []
-	if list == "pockets" or list == "windmills" or BONUS_LISTS.has(list):
-		var role := BONUS_LISTS.find(list)
-		var entries: Array = items
-		for entry: Variant in entries:
-			var item: Variant = entry
-			if entry is Array:
-				var captured: Array = entry
-				item = captured[0]
-			if role < 0:
-				keys.append(item)
-			elif item is BonusPocketSpec:
-				var spec: BonusPocketSpec = item
-				if spec.role == role:
-					keys.append(spec)
-		return keys
-	var points: PackedVector2Array = items
-	var step := 2 if list == "walls" else 1
-	for i in range(0, points.size() - step + 1, step):
-		if step == 1:
-			keys.append(points[i])
-		else:
-			keys.append([points[i], points[i + 1]])
-	return keys
 
 
 static func _largest(ids: PackedInt32Array) -> int:

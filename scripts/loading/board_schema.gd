@@ -54,103 +54,17 @@ const PACHINKO_OPTIONAL := {"fascia": ["fascia", 0, 0]}
 const MAZE_OPTIONAL := {"medal_times": ["medals", 0.1, 36000.0]}
 ## The modes medal times are given for.
 const MEDAL_MODES: Array[String] = ["easy", "hard"]
-## The fields every bonus pocket has: a cup a 10 px ball fits into, paying a sane amount.
-const BONUS_CUP := {
-	"x": ["coord"],
-	"y": ["coord"],
-	"width": ["float", 16.0, 160.0],
-	"depth": ["float", 8.0, 200.0],
-	"payout": ["int", BoardRanges.BONUS_PAYOUT[0], BoardRanges.BONUS_PAYOUT[1]],
-}
-## List name → [most items, item field → spec]. Optional item fields are in OPTIONAL_ITEM_FIELDS.
-const LISTS := {
-	"pins": [5000, {"x": ["coord"], "y": ["coord"]}],
-	"pockets":
-	[
-		200,
-		{
-			"x": ["coord"],
-			"y": ["coord"],
-			"width": ["float", 1.0, 500.0],
-			"depth": ["float", 1.0, 500.0],
-			"payout": ["int", 0, 10000],
-		}
-	],
-	"walls": [4000, {"ax": ["coord"], "ay": ["coord"], "bx": ["coord"], "by": ["coord"]}],
-	"ball_starts": [64, {"x": ["coord"], "y": ["coord"]}],
-	"holes": [500, {"x": ["coord"], "y": ["coord"]}],
-	# The bonus layer (BonusPocketSpec): cups with a role, all optional.
-	"start_pockets": [4, BONUS_CUP],
-	"attackers": [4, BONUS_CUP],
-	"tulips": [32, BONUS_CUP],
-	# Windmills (WindmillSpec): driven at "speed" or free with "friction" (one of the two).
-	"windmills":
-	[
-		64,
-		{
-			"x": ["coord"],
-			"y": ["coord"],
-			"blades": ["int", WindmillSpec.BLADES_RANGE.x, WindmillSpec.BLADES_RANGE.y],
-			"length": ["float", WindmillSpec.LENGTH_RANGE.x, WindmillSpec.LENGTH_RANGE.y],
-		}
-	],
-}
-## Fields an item may leave out: its stable id (ItemIds; numbered in order when missing),
-## a pin's pocket and its special flag. Rim pins are stamped from their pocket now; a pin
-## with "pocket" (written by older versions) is read and dropped, so those files still load.
-const OPTIONAL_ITEM_FIELDS := {
-	"pins": {"id": ["int", 1, ItemIds.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]},
-	"pockets": {"id": ["int", 1, ItemIds.MAX_ID]},
-	"walls": {"id": ["int", 1, ItemIds.MAX_ID]},
-	"ball_starts": {"id": ["int", 1, ItemIds.MAX_ID]},
-	"holes": {"id": ["int", 1, ItemIds.MAX_ID]},
-	"start_pockets":
-	{
-		"id": ["int", 1, ItemIds.MAX_ID],
-		"symbols": ["int", BoardRanges.BONUS_SYMBOLS[0], BoardRanges.BONUS_SYMBOLS[1]],
-	},
-	"attackers":
-	{
-		"id": ["int", 1, ItemIds.MAX_ID],
-		"open_seconds":
-		["float", BoardRanges.BONUS_OPEN_SECONDS[0], BoardRanges.BONUS_OPEN_SECONDS[1]],
-		"open_catches":
-		["int", BoardRanges.BONUS_OPEN_CATCHES[0], BoardRanges.BONUS_OPEN_CATCHES[1]],
-	},
-	"tulips": {"id": ["int", 1, ItemIds.MAX_ID]},
-	"windmills":
-	{
-		"id": ["int", 1, ItemIds.MAX_ID],
-		"speed": ["float", -WindmillSpec.MAX_SPEED, WindmillSpec.MAX_SPEED],
-		"friction": ["float", 0.0, WindmillSpec.MAX_FRICTION],
-	},
-}
+## The item lines, their lists, counts and fields are each kind's ItemKinds row's
+## (`max_items`, `file_fields`, `optional_file_fields`).
+
 ## The optional header field holding the id counters: `{"next_ids": {"pins": 626}}`, list
 ## name -> the id its next new item gets (BoardLevel.next_ids). Written only for a list whose
 ## counter is past its largest id + 1; a counter at or below an id in use is raised on load.
 const NEXT_IDS_FIELD := "next_ids"
 ## The range of one counter.
 const NEXT_ID_SPEC := ["int", 1, ItemIds.MAX_ID + 1]
-## The key an item line uses for each list: `{"pin": {"x": 1, "y": 2}}` goes to "pins".
-const ITEM_KEYS := {
-	"pin": "pins",
-	"pocket": "pockets",
-	"wall": "walls",
-	"ball_start": "ball_starts",
-	"hole": "holes",
-	"start_pocket": "start_pockets",
-	"attacker": "attackers",
-	"tulip": "tulips",
-	"windmill": "windmills",
-}
 ## A file may not have more lines than this (every list full, plus the fields).
 const MAX_LINES := 12000
-const PACHINKO_LISTS: Array[String] = [
-	"pins", "pockets", "start_pockets", "attackers", "tulips", "windmills"
-]
-## The bonus lists in BonusPocketSpec.Role order (a board keeps its bonus pockets so).
-const BONUS_LISTS: Array[String] = ["start_pockets", "attackers", "tulips"]
-const MAZE_LISTS: Array[String] = ["walls", "ball_starts", "holes"]
 ## Old names of tuning fields a file may still use (read as the new name, never written).
 const RENAMED_TUNING := {"gutter_slide_time": "drain_slide_time"}
 
@@ -167,9 +81,40 @@ static func optional_fields_for(kind_name: String) -> Dictionary:
 	return MAZE_OPTIONAL if kind_name == BoardLevel.MAZE_NAME else PACHINKO_OPTIONAL
 
 
-## The item lists a board of `kind_name` has.
+## The item lists a board of `kind_name` has, in file order (ItemKinds).
 static func lists_for(kind_name: String) -> Array[String]:
-	return MAZE_LISTS if kind_name == BoardLevel.MAZE_NAME else PACHINKO_LISTS
+	var maze := kind_name == BoardLevel.MAZE_NAME
+	var lists: Array[String] = []
+	for kind in ItemKinds.of_game(BoardLevel.Kind.MAZE if maze else BoardLevel.Kind.PACHINKO):
+		lists.append(kind.list)
+	return lists
+
+
+## The list an item line keyed `key` goes to (`{"pin": {...}}` to "pins"), or "".
+static func list_of_key(key: Variant) -> String:
+	var kind := ItemKinds.of_name(str(key)) if key is String else null
+	return kind.list if kind != null and not kind.file_fields.is_empty() else ""
+
+
+## True when `name` is an item list ("pins"): its items go one a line, never as a list.
+static func is_list(name: Variant) -> bool:
+	var kind := ItemKinds.of_list(str(name)) if name is String else null
+	return kind != null and not kind.file_fields.is_empty()
+
+
+## The most items `list` may hold.
+static func most_items(list: String) -> int:
+	return ItemKinds.of_list(list).max_items
+
+
+## The fields an item line of `list` must have: field -> [type, min, max] (check_value).
+static func item_fields(list: String) -> Dictionary:
+	return ItemKinds.of_list(list).file_fields
+
+
+## The fields an item line of `list` may leave out (its id first).
+static func optional_item_fields(list: String) -> Dictionary:
+	return ItemKinds.of_list(list).optional_file_fields
 
 
 ## "" when `value` fits `spec` ([type, min, max]), else what is wrong with it.

@@ -68,15 +68,15 @@ static func _gather_lines(text: String) -> Dictionary:
 
 
 static func _gather(data: Dictionary, line: Dictionary) -> String:
-	if line.size() == 1 and Schema.ITEM_KEYS.has(line.keys()[0]):
-		var list: String = Schema.ITEM_KEYS[line.keys()[0]]
+	var list := Schema.list_of_key(line.keys()[0]) if line.size() == 1 else ""
+	if not list.is_empty():
 		var items: Array = data.get_or_add(list, [])
 		items.append(line.values()[0])
 		return ""
 	for key: Variant in line.keys():
-		if Schema.ITEM_KEYS.has(key):
+		if not Schema.list_of_key(key).is_empty():
 			return 'an item ("%s") must be alone on its line' % key
-		if Schema.LISTS.has(key):
+		if Schema.is_list(key):
 			return '"%s" items go one per line, not as a list' % key
 		if key == "tuning" and data.has(key) and line.size() == 1:
 			return _gather_tuning(data, line[key])
@@ -172,16 +172,16 @@ static func _check_list(list: String, value: Variant) -> String:
 	if not value is Array:
 		return '"%s" must be a list [ ... ]' % list
 	var items: Array = value
-	var most: int = Schema.LISTS[list][0]
+	var most := Schema.most_items(list)
 	if items.size() > most:
 		return '"%s" has %d items; at most %d are allowed' % [list, items.size(), most]
-	var required: Dictionary = Schema.LISTS[list][1]
-	var optional: Dictionary = Schema.OPTIONAL_ITEM_FIELDS.get(list, {})
+	var required := Schema.item_fields(list)
+	var optional := Schema.optional_item_fields(list)
+	var checks := ItemKinds.of_list(list).checks
 	for i in items.size():
 		var problem := _check_item(items[i], required, optional)
-		if problem.is_empty() and list == "windmills":
-			var wheel: Dictionary = items[i]
-			problem = _check_windmill_drive(wheel)
+		if problem.is_empty() and checks.is_valid():
+			problem = checks.call(items[i])
 		if not problem.is_empty():
 			return "%s item %d: %s" % [list, i + 1, problem]
 	return ""
@@ -202,20 +202,6 @@ static func _check_pin_pockets(pins: Array, pockets: Array) -> String:
 		if not pockets.is_empty():
 			has = "has %d pockets (0 to %d)" % [pockets.size(), pockets.size() - 1]
 		return "%s names pocket %d; the board %s" % [name, pocket, has]
-	return ""
-
-
-# A windmill is driven ("speed") or free ("friction"): exactly one of the two.
-static func _check_windmill_drive(item: Dictionary) -> String:
-	var driven := item.has("speed")
-	var free := item.has("friction")
-	if driven and free:
-		return (
-			'give "speed" (a driven wheel, degrees a second) or "friction" (a free wheel),'
-			+ " not both"
-		)
-	if not driven and not free:
-		return 'needs "speed" (a driven wheel, degrees a second) or "friction" (a free wheel)'
 	return ""
 
 

@@ -1,17 +1,17 @@
 extends RefCounted
-## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per line
-## in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a hole) in
-## the board's own order, coordinates rounded to 0.01 px, tuning one constant a line. A
-## pocket's rim pins are not written: the pocket's line is the whole pocket, and the reader
-## stamps its pins, so a pocket edit is a one-line diff. Adding a pin adds one line;
-## deleting one removes one line (no commas between lines to shift). The same board always
+## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per
+## line in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a
+## hole: each kind as its ItemKinds row writes it, in table order) in the board's order,
+## coordinates rounded to 0.01 px, tuning one constant a line. A pocket's rim pins are not
+## written: the pocket's line is the whole pocket, and the reader stamps its pins, so a
+## pocket edit is a one-line diff. Adding a pin adds one line; deleting one removes one
+## line (no commas between lines to shift). The same board always
 ## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
 const Schema := preload("res://scripts/loading/board_schema.gd")
+const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 ## Coordinates and sizes are written to this precision (px).
-const PRECISION := 0.01
-const POINT_KEYS: Array[String] = ["x", "y"]
-const WALL_KEYS: Array[String] = ["ax", "ay", "bx", "by"]
+const PRECISION := LineText.PRECISION
 ## The lines of a board's text that name, describe or dress it (and the id counters and
 ## medal times) but never change how it plays: `play_text` leaves them out.
 const NAMING_FIELDS: Array[String] = [
@@ -66,28 +66,15 @@ static func write(level: BoardLevel) -> String:
 	var counters := ItemIds.counters_to_save(level)
 	if not counters.is_empty():
 		lines.append('{"%s": %s}' % [Schema.NEXT_IDS_FIELD, _counters(counters)])
-	if level.is_pachinko():
-		_append_items(lines, "pin", _pin_items(level), _ids(level, "pins"))
-		_append_items(lines, "pocket", _pocket_items(level), _ids(level, "pockets"))
-		_append_bonus(lines, level)
-		_append_items(lines, "windmill", _windmill_items(level), _ids(level, "windmills"))
-	else:
-		var walls := _point_items(level.walls, WALL_KEYS)
-		_append_items(lines, "wall", walls, _ids(level, "walls"))
-		var starts := _point_items(level.ball_starts, POINT_KEYS)
-		_append_items(lines, "ball_start", starts, _ids(level, "ball_starts"))
-		_append_items(lines, "hole", _point_items(level.holes, POINT_KEYS), _ids(level, "holes"))
+	for row in ItemKinds.of_game(level.kind):
+		_append_items(lines, level, row)
 	return "\n".join(lines) + "\n"
 
 
-## `number` rounded to PRECISION, written without trailing zeros ("12", "12.5", "-0.25").
+## `number` rounded to PRECISION, written without trailing zeros ("12", "12.5", "-0.25"):
+## the way every number of an item line is written too (LineText).
 static func number(value: float) -> String:
-	var rounded := snappedf(value, PRECISION)
-	if rounded == 0.0:
-		return "0"  # never "-0"
-	if rounded == floorf(rounded) and absf(rounded) < 1e15:
-		return str(int(rounded))
-	return String.num(rounded, 2)
+	return LineText.number(value)
 
 
 static func _value(value: Variant) -> String:
@@ -126,10 +113,10 @@ static func _tuning_lines(tuning: PhysicsTuning) -> PackedStringArray:
 	return lines
 
 
-# `{"pins": 626, "walls": 40}` in ItemIds.LISTS order, so the same board gives the same text.
+# `{"pins": 626, "walls": 40}` in ItemIds.lists() order, so the same board gives the same text.
 static func _counters(counters: Dictionary[String, int]) -> String:
 	var parts := PackedStringArray()
-	for list: String in ItemIds.LISTS:
+	for list in ItemIds.lists():
 		if counters.has(list):
 			parts.append('"%s": %d' % [list, counters[list]])
 	return "{" + ", ".join(parts) + "}"
@@ -169,116 +156,15 @@ static func _append_medals(lines: PackedStringArray, level: BoardLevel) -> void:
 		lines.append('{"medal_times": {%s}}' % ", ".join(parts))
 
 
-# Each item line starts with its stable id: `{"pin": {"id": 17, "x": 255, "y": 84}}`.
-static func _append_items(
-	lines: PackedStringArray, key: String, items: PackedStringArray, ids: PackedInt32Array
-) -> void:
-	for i in items.size():
-		lines.append('{"%s": {"id": %d, %s}' % [key, ids[i], items[i].substr(1)])
-
-
-static func _ids(level: BoardLevel, list: String) -> PackedInt32Array:
-	var ids := PackedInt32Array()
-	for i in ItemIds.count(level, list):
-		if list == "pins" and ItemIds.is_rim_pin(level, i):
-			continue  # stamped from its pocket, not stored
-		ids.append(ItemIds.of(level, list, i))
-	return ids
-
-
-static func _pin_items(level: BoardLevel) -> PackedStringArray:
-	var items := PackedStringArray()
-	for i in level.pins.size():
-		if ItemIds.is_rim_pin(level, i):
-			continue  # a pocket's rim: the reader stamps it from the pocket line
-		var pin := level.pins[i]
-		var text := '{"x": %s, "y": %s' % [number(pin.x), number(pin.y)]
-		if i < level.pin_special.size() and level.pin_special[i] != 0:
-			text += ', "special": true'
-		items.append(text + "}")
-	return items
-
-
-static func _pocket_items(level: BoardLevel) -> PackedStringArray:
-	var items := PackedStringArray()
-	for spec in level.pockets:
-		if spec == null:
+# One line per item of `kind`, in board order, each starting with its stable id:
+# `{"pin": {"id": 17, "x": 255, "y": 84}}`. Entries that are not items of their own (a
+# pocket's rim pins, stamped from the pocket line) are not written. A board without items
+# of a kind gets no line, so older boards keep their exact text.
+static func _append_items(lines: PackedStringArray, level: BoardLevel, kind: ItemKind) -> void:
+	var indices := kind.field_indices(level)
+	for place in indices.size():
+		var index := indices[place]
+		if not kind.is_item(level, index):
 			continue
-		items.append(
-			(
-				'{"x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d}'
-				% [
-					number(spec.position.x),
-					number(spec.position.y),
-					number(spec.width),
-					number(spec.depth),
-					spec.payout
-				]
-			)
-		)
-	return items
-
-
-# The bonus pockets by role (start pockets, attackers, tulips), each with its id first and its
-# role's own fields last.
-# A board without them gets no line, so older boards keep their exact text.
-static func _append_bonus(lines: PackedStringArray, level: BoardLevel) -> void:
-	for role: int in BonusPocketSpec.ROLE_KEYS.size():
-		var ids := _ids(level, ItemIds.BONUS_LISTS[role])
-		var place := 0
-		for spec in level.bonus_pockets:
-			if spec == null or spec.role != role:
-				continue
-			var text := (
-				'{"id": %d, "x": %s, "y": %s, "width": %s, "depth": %s, "payout": %d'
-				% [
-					ids[place],
-					number(spec.position.x),
-					number(spec.position.y),
-					number(spec.width),
-					number(spec.depth),
-					spec.payout
-				]
-			)
-			if role == BonusPocketSpec.Role.START:
-				text += ', "symbols": %d' % spec.symbols
-			elif role == BonusPocketSpec.Role.ATTACKER:
-				text += (
-					', "open_seconds": %s, "open_catches": %d'
-					% [number(spec.open_seconds), spec.open_catches]
-				)
-			lines.append('{"%s": %s}' % [spec.role_key(), text + "}"])
-			place += 1
-
-
-# A driven wheel writes its speed, a free one its friction (WindmillSpec). A board without
-# windmills gets no line, so older boards keep their exact text.
-static func _windmill_items(level: BoardLevel) -> PackedStringArray:
-	var items := PackedStringArray()
-	for spec in level.windmills:
-		if spec == null:
-			continue
-		var text := (
-			'{"x": %s, "y": %s, "blades": %d, "length": %s'
-			% [number(spec.position.x), number(spec.position.y), spec.blades, number(spec.length)]
-		)
-		if spec.free_spin:
-			text += ', "friction": %s}' % number(spec.friction)
-		else:
-			text += ', "speed": %s}' % number(spec.speed)
-		items.append(text)
-	return items
-
-
-static func _point_items(points: PackedVector2Array, keys: Array[String]) -> PackedStringArray:
-	var items := PackedStringArray()
-	var per_item := int(keys.size() / 2.0)
-	for i in range(0, points.size() - per_item + 1, per_item):
-		var parts := PackedStringArray()
-		for k in per_item:
-			var p := points[i + k]
-			parts.append(
-				'"%s": %s, "%s": %s' % [keys[k * 2], number(p.x), keys[k * 2 + 1], number(p.y)]
-			)
-		items.append("{" + ", ".join(parts) + "}")
-	return items
+		var id := ItemIds.of(level, kind.list, place)
+		lines.append('{"%s": {"id": %d, %s}}' % [kind.name, id, kind.line_of(level, index)])

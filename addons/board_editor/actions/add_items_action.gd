@@ -2,19 +2,19 @@
 extends BoardAction
 ## Adds a set of things to a board: field pins, pockets (with their stamped rim pins and
 ## special pin), walls, black holes, ball starts, bonus pockets (kept in role order, as
-## the board file stores them) and windmills. Placing, pasting and duplicating are all this action;
-## `added` lists the new items so the editor can select them.
+## the board file stores them) and windmills: every ItemKinds row with an item-set key, on a
+## board of its game. Placing, pasting and duplicating are all this action; `added` lists the
+## new items so the editor can select them.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
-const PocketPins := preload("res://addons/board_editor/core/pocket_pins.gd")
 
 ## The new items after the last `do()`.
 var added: Array[Vector2i] = []
 var _data: Dictionary
 var _name: String
-var _pockets: Array[PocketSpec] = []
-var _bonus: Array[BonusPocketSpec] = []
-var _windmills: Array[WindmillSpec] = []
+# Set key -> the values to add; resources are copied once, so a redo brings back the very
+# same objects.
+var _values := {}
 
 
 ## `item_set` has the shape of BoardItems.empty_set(); positions are board pixels.
@@ -22,14 +22,11 @@ func _init(on_level: BoardLevel, item_set: Dictionary, action_name := "Add to bo
 	super(on_level)
 	_data = item_set
 	_name = action_name
-	# The pocket resources are made once so a redo brings back the very same objects.
-	for spec: PocketSpec in item_set.get("pockets", []):
-		_pockets.append(PocketSpec.create(spec.position, spec.width, spec.depth, spec.payout))
-	if on_level != null and on_level.is_pachinko():
-		for spec: BonusPocketSpec in item_set.get("bonus", []):
-			_bonus.append(Items.moved_bonus(spec, Vector2.ZERO))
-		for spec: WindmillSpec in item_set.get("windmills", []):
-			_windmills.append(spec.moved(Vector2.ZERO))
+	for kind in ItemKinds.set_rows():
+		var values: Array = []
+		for value: Variant in Items.set_values(item_set, kind):
+			values.append(kind.moved_value(value, Vector2.ZERO))
+		_values[kind.set_key] = values
 
 
 func get_name() -> String:
@@ -42,73 +39,32 @@ func size() -> int:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(Items.ITEM_FIELDS)
+	return Items.item_fields()
 
 
 func _apply() -> void:
 	added.clear()
-	# Copies: packed arrays are shared by reference, and the setters must see a new value.
-	var pins := level.pins.duplicate()
-	var pin_pocket := level.pin_pocket.duplicate()
-	var pin_special := level.pin_special.duplicate()
-	# Older or hand-written files may have short per-pin arrays: line them up first.
-	pin_pocket.resize(pins.size())
-	pin_special.resize(pins.size())
-	for i in range(level.pin_pocket.size(), pins.size()):
-		pin_pocket[i] = -1
-	var new_pins: PackedVector2Array = _data.get("pins", PackedVector2Array())
-	for point in new_pins:
-		added.append(Items.make(Items.Kind.PIN, pins.size()))
-		pins.append(point)
-		pin_pocket.append(-1)
-		pin_special.append(0)
-	var pockets := level.pockets.duplicate()
-	for spec in _pockets:
-		var index := pockets.size()
-		pockets.append(spec)
-		added.append(Items.make(Items.Kind.POCKET, index))
-		var stamp := PocketPins.stamp(level, spec)
-		var stamped: PackedVector2Array = stamp["pins"]
-		var special: PackedByteArray = stamp["special"]
-		for j in stamped.size():
-			pins.append(stamped[j])
-			pin_pocket.append(index)
-			pin_special.append(special[j])
-	if not _pockets.is_empty():
-		level.pockets = pockets
-	level.pins = pins
-	level.pin_pocket = pin_pocket
-	level.pin_special = pin_special
-	level.walls = _append_walls(level.walls.duplicate())
-	level.holes = _append_points(level.holes.duplicate(), "holes", Items.Kind.HOLE)
-	level.ball_starts = _append_points(level.ball_starts.duplicate(), "starts", Items.Kind.START)
-	if not _bonus.is_empty():
-		var bonus := level.bonus_pockets.duplicate()
-		for spec in _bonus:
-			bonus.insert(BonusPocketSpec.role_slot(bonus, spec.role), spec)
-		level.bonus_pockets = bonus
-		for spec in _bonus:
-			added.append(Items.make(Items.Kind.BONUS, level.bonus_pockets.find(spec)))
-	if not _windmills.is_empty():
-		var wheels := level.windmills.duplicate()
-		for spec in _windmills:
-			added.append(Items.make(Items.Kind.WINDMILL, wheels.size()))
-			wheels.append(spec)
-		level.windmills = wheels
+	# One copy per field, handed back at the end (ItemKind.working).
+	var work := {}
+	var handles: Array = []  # [kind, handle] for each added item, in order
+	for set_kind in ItemKinds.set_rows():
+		var values: Array = _values[set_kind.set_key]
+		var step := 2 if set_kind.shape == ItemKind.Shape.SEGMENT else 1
+		for i in range(0, values.size() - step + 1, step):
+			var value: Variant = values[i] if step == 1 else values.slice(i, i + step)
+			var kind := _kind_of(set_kind, value)
+			if kind == null or kind.game != level.kind:
+				continue
+			handles.append([kind, kind.append(level, work, value)])
+	ItemKind.store(level, work)
+	for entry: Array in handles:
+		var kind: ItemKind = entry[0]
+		added.append(Items.make(kind.pick, kind.index_in(work, entry[1])))
 
 
-func _append_walls(walls: PackedVector2Array) -> PackedVector2Array:
-	var extra: PackedVector2Array = _data.get("walls", PackedVector2Array())
-	for i in range(0, extra.size() - 1, 2):
-		added.append(Items.make(Items.Kind.WALL, Items.wall_count(walls)))
-		walls.append(extra[i])
-		walls.append(extra[i + 1])
-	return walls
-
-
-func _append_points(points: PackedVector2Array, key: String, kind: int) -> PackedVector2Array:
-	var new_points: PackedVector2Array = _data.get(key, PackedVector2Array())
-	for point in new_points:
-		added.append(Vector2i(kind, points.size()))
-		points.append(point)
-	return points
+# The row of one set value: a bonus pocket's is its role's.
+static func _kind_of(set_kind: ItemKind, value: Variant) -> ItemKind:
+	if set_kind.shape != ItemKind.Shape.ROLE_SPEC:
+		return set_kind
+	var spec: BonusPocketSpec = value
+	return ItemKinds.of_role(spec.role)

@@ -22,7 +22,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(Items.POSITION_FIELDS)
+	return Items.position_fields()
 
 
 func _apply() -> void:

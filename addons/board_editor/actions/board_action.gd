@@ -27,10 +27,9 @@ func do() -> void:
 		push_error("Board action '%s': no board to edit." % get_name())
 		return
 	var fields := _touched_fields()
-	for list: String in ItemIds.LISTS:
-		if fields.has(ItemIds.field_of(list)):
-			var id_field: String = ItemIds.LISTS[list]
-			fields.append(id_field)
+	for kind in ItemKinds.listed():
+		if fields.has(kind.field):
+			fields.append(kind.id_field)
 	_before = Snapshot.capture(level, fields)
 	_apply()
 	if _ids_after.is_empty():
@@ -68,10 +67,9 @@ func is_applied() -> bool:
 # The id arrays among `fields`.
 static func _id_fields(fields: PackedStringArray) -> PackedStringArray:
 	var ids := PackedStringArray()
-	for list: String in ItemIds.LISTS:
-		var id_field: String = ItemIds.LISTS[list]
-		if fields.has(id_field):
-			ids.append(id_field)
+	for kind in ItemKinds.listed():
+		if fields.has(kind.id_field):
+			ids.append(kind.id_field)
 	return ids
 
 

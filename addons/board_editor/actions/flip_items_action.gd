@@ -8,7 +8,6 @@ extends BoardAction
 ## the selection's twins about the reflected centre, so the board stays symmetrical.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
-const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 
 var _groups: Array = []
 var _count := 0
@@ -30,45 +29,16 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(Items.POSITION_FIELDS)
+	return Items.position_fields()
 
 
 func _apply() -> void:
-	# Copies: packed arrays are shared by reference, and the setters must see a new value.
-	var pins := level.pins.duplicate()
-	var walls := level.walls.duplicate()
-	var holes := level.holes.duplicate()
-	var starts := level.ball_starts.duplicate()
+	# One copy per packed field, handed back at the end (ItemKind.working).
+	var work := {}
 	for group: Array in _groups:
 		var axis: float = group[1]
 		for item: Vector2i in group[0]:
-			if not Items.is_valid(level, item):
-				continue
-			var shift := Mirror.reflect(Items.position_of(level, item), axis)
-			shift -= Items.position_of(level, item)
-			match item.x:
-				Items.Kind.PIN:
-					pins[item.y] = Mirror.reflect(pins[item.y], axis)
-				Items.Kind.POCKET:
-					level.pockets[item.y].position += shift
-					for pin in Items.pocket_pins(level, item.y):
-						pins[pin] += shift
-				Items.Kind.WALL:
-					walls[item.y * 2] = Mirror.reflect(walls[item.y * 2], axis)
-					walls[item.y * 2 + 1] = Mirror.reflect(walls[item.y * 2 + 1], axis)
-				Items.Kind.HOLE:
-					holes[item.y] = Mirror.reflect(holes[item.y], axis)
-				Items.Kind.START:
-					starts[item.y] = Mirror.reflect(starts[item.y], axis)
-				Items.Kind.GOAL:
-					level.goal_center = Mirror.reflect(level.goal_center, axis)
-				Items.Kind.BONUS:
-					level.bonus_pockets[item.y].position += shift
-				Items.Kind.WINDMILL:
-					var wheel := level.windmills[item.y]
-					wheel.position += shift
-					wheel.speed = -wheel.speed
-	level.pins = pins
-	level.walls = walls
-	level.holes = holes
-	level.ball_starts = starts
+			var kind := ItemKinds.of_item(level, item)
+			if kind != null and kind.is_valid(level, item.y):
+				kind.reflect_item(level, work, item.y, axis)
+	ItemKind.store(level, work)

@@ -46,44 +46,19 @@ func preview(offset: Vector2) -> void:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray(Items.POSITION_FIELDS)
+	return Items.position_fields()
 
 
 func _apply() -> void:
-	# Copies: packed arrays are shared by reference, and the setters must see a new value.
-	var pins := level.pins.duplicate()
-	var walls := level.walls.duplicate()
-	var holes := level.holes.duplicate()
-	var starts := level.ball_starts.duplicate()
+	# One copy per packed field, handed back at the end (ItemKind.working).
+	var work := {}
 	var groups: Array = [
 		[_direct, delta], [_mirrored, Vector2(-delta.x, delta.y)], [_on_axis, Vector2(0, delta.y)]
 	]
 	for group: Array in groups:
 		var offset: Vector2 = group[1]
 		for item: Vector2i in group[0]:
-			if not Items.is_valid(level, item):
-				continue
-			match item.x:
-				Items.Kind.PIN:
-					pins[item.y] += offset
-				Items.Kind.POCKET:
-					level.pockets[item.y].position += offset
-					for pin in Items.pocket_pins(level, item.y):
-						pins[pin] += offset
-				Items.Kind.WALL:
-					walls[item.y * 2] += offset
-					walls[item.y * 2 + 1] += offset
-				Items.Kind.HOLE:
-					holes[item.y] += offset
-				Items.Kind.START:
-					starts[item.y] += offset
-				Items.Kind.GOAL:
-					level.goal_center += offset
-				Items.Kind.BONUS:
-					level.bonus_pockets[item.y].position += offset
-				Items.Kind.WINDMILL:
-					level.windmills[item.y].position += offset
-	level.pins = pins
-	level.walls = walls
-	level.holes = holes
-	level.ball_starts = starts
+			var kind := ItemKinds.of_item(level, item)
+			if kind != null and kind.is_valid(level, item.y):
+				kind.offset(level, work, item.y, offset)
+	ItemKind.store(level, work)

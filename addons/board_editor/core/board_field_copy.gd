@@ -5,77 +5,52 @@ extends RefCounted
 ## that kept the board's own array would change along with it.
 ##
 ## Pockets, bonus pockets and windmills are resources that other code (the dock, the
-## inspector) may hold on to, so a capture keeps the same objects and their values, and a
-## restore puts both back.
-
-## The BonusPocketSpec fields a capture keeps (its role never changes after it is made).
-const BONUS_VALUES: Array[String] = [
-	"position", "width", "depth", "payout", "symbols", "open_seconds", "open_catches"
-]
-## The WindmillSpec fields a capture keeps.
-const WINDMILL_VALUES: Array[String] = [
-	"position", "blades", "length", "free_spin", "speed", "friction"
-]
-## Resource lists captured as [object, values...] entries: field -> the values kept.
-const SPEC_LISTS := {"bonus_pockets": BONUS_VALUES, "windmills": WINDMILL_VALUES}
+## inspector) may hold on to, so a capture keeps the same objects and the values their
+## ItemKinds row names (`spec_values`), and a restore puts both back.
 
 
 ## The values of `fields` on `level`, ready for `restore()`.
 static func capture(level: BoardLevel, fields: PackedStringArray) -> Dictionary:
 	var snap := {}
 	for field in fields:
-		if field == "pockets":
-			var saved: Array = []
-			for spec: PocketSpec in level.pockets:
-				saved.append([spec, spec.position, spec.width, spec.depth, spec.payout])
-			snap[field] = saved
-		elif SPEC_LISTS.has(field):
-			var values: Array[String] = SPEC_LISTS[field]
-			var kept: Array = []
-			for spec: Resource in level.get(field):
-				var entry: Array = [spec]
-				for value in values:
-					entry.append(spec.get(value) if spec != null else null)
-				kept.append(entry)
-			snap[field] = kept
-		else:
+		var values := _spec_values(field)
+		if values.is_empty():
 			snap[field] = _copy(level.get(field))
+			continue
+		var kept: Array = []
+		for spec: Resource in level.get(field):
+			var entry: Array = [spec]
+			for value in values:
+				entry.append(spec.get(value) if spec != null else null)
+			kept.append(entry)
+		snap[field] = kept
 	return snap
 
 
 ## Puts every captured field back on `level`.
 static func restore(level: BoardLevel, snap: Dictionary) -> void:
 	for field: String in snap:
-		if field == "pockets":
-			var specs: Array[PocketSpec] = []
-			for entry: Array in snap[field]:
-				var spec: PocketSpec = entry[0]
-				spec.position = entry[1]
-				spec.width = entry[2]
-				spec.depth = entry[3]
-				spec.payout = entry[4]
-				specs.append(spec)
-			level.pockets = specs
-		elif field == "bonus_pockets":
-			var bonus: Array[BonusPocketSpec] = []
-			for entry: Array in snap[field]:
-				var spec: BonusPocketSpec = entry[0]
-				if spec != null:
-					for k in BONUS_VALUES.size():
-						spec.set(BONUS_VALUES[k], entry[k + 1])
-				bonus.append(spec)
-			level.bonus_pockets = bonus
-		elif field == "windmills":
-			var wheels: Array[WindmillSpec] = []
-			for entry: Array in snap[field]:
-				var spec: WindmillSpec = entry[0]
-				if spec != null:
-					for k in WINDMILL_VALUES.size():
-						spec.set(WINDMILL_VALUES[k], entry[k + 1])
-				wheels.append(spec)
-			level.windmills = wheels
-		else:
+		var values := _spec_values(field)
+		if values.is_empty():
 			level.set(field, _copy(snap[field]))
+			continue
+		# The field's own typed array, emptied: the board's setter takes only its own type.
+		var specs: Array = _copy(level.get(field))
+		specs.clear()
+		for entry: Array in snap[field]:
+			var spec: Resource = entry[0]
+			if spec != null:
+				for k in values.size():
+					spec.set(values[k], entry[k + 1])
+			specs.append(spec)
+		level.set(field, specs)
+
+
+# The resource properties a capture keeps for each item of `field` (its ItemKinds row's
+# spec_values); empty for a field that is a plain value.
+static func _spec_values(field: String) -> PackedStringArray:
+	var kind := ItemKinds.of_field(field)
+	return kind.spec_values if kind != null else PackedStringArray()
 
 
 static func _copy(value: Variant) -> Variant:

@@ -7,35 +7,24 @@ extends RefCounted
 ## pocket are never items of their own: the pocket is (its rim pins are stamped, not placed
 ## one by one); a bonus pocket's pins are not on the board at all (the world stamps them).
 
-enum Kind { PIN, POCKET, WALL, HOLE, START, GOAL, BONUS, WINDMILL }
+## What an item's `kind` is: the table's picks (ItemKind.Pick), one per selectable field.
+## Named like the enum it stands for, so `Items.Kind.PIN` reads as it always has.
+# gdlint: ignore=constant-name
+const Kind := ItemKind.Pick
 
 ## Returned by the pickers when nothing is there.
 const NONE := Vector2i(-1, -1)
+
+
 ## The BoardLevel fields that hold items (what adding or deleting items may change).
-const ITEM_FIELDS: Array[String] = [
-	"pins",
-	"pin_pocket",
-	"pin_special",
-	"pockets",
-	"walls",
-	"holes",
-	"ball_starts",
-	"bonus_pockets",
-	"windmills",
-]
+static func item_fields() -> PackedStringArray:
+	return ItemKinds.item_fields()
+
 
 ## The BoardLevel fields that hold where items stand (what moving, flipping or arranging
 ## items may change).
-const POSITION_FIELDS: Array[String] = [
-	"pins",
-	"pockets",
-	"walls",
-	"holes",
-	"ball_starts",
-	"goal_center",
-	"bonus_pockets",
-	"windmills",
-]
+static func position_fields() -> PackedStringArray:
+	return ItemKinds.position_fields()
 
 
 ## The item of `kind` at `index`.
@@ -52,47 +41,14 @@ static func wall_count(points: PackedVector2Array) -> int:
 
 ## The point that represents an item: a centre, a pocket's mouth, a wall's midpoint.
 static func position_of(level: BoardLevel, item: Vector2i) -> Vector2:
-	match item.x:
-		Kind.PIN:
-			return level.pins[item.y]
-		Kind.POCKET:
-			return level.pockets[item.y].position
-		Kind.WALL:
-			return (level.walls[item.y * 2] + level.walls[item.y * 2 + 1]) * 0.5
-		Kind.HOLE:
-			return level.holes[item.y]
-		Kind.START:
-			return level.ball_starts[item.y]
-		Kind.BONUS:
-			return level.bonus_pockets[item.y].position
-		Kind.WINDMILL:
-			return level.windmills[item.y].position
-		_:
-			return level.goal_center
+	var kind := ItemKinds.of_item(level, item)
+	return kind.position_of(level, item.y) if kind != null else Vector2.ZERO
 
 
 ## True when the item still exists on the board (indices go stale after an undo).
 static func is_valid(level: BoardLevel, item: Vector2i) -> bool:
-	if item.y < 0:
-		return false
-	match item.x:
-		Kind.PIN:
-			return item.y < level.pins.size()
-		Kind.POCKET:
-			return item.y < level.pockets.size()
-		Kind.WALL:
-			return item.y < wall_count(level.walls)
-		Kind.HOLE:
-			return item.y < level.holes.size()
-		Kind.START:
-			return item.y < level.ball_starts.size()
-		Kind.GOAL:
-			return level.is_maze()
-		Kind.BONUS:
-			return item.y < level.bonus_pockets.size() and level.bonus_pockets[item.y] != null
-		Kind.WINDMILL:
-			return item.y < level.windmills.size() and level.windmills[item.y] != null
-	return false
+	var kind := ItemKinds.of_item(level, item)
+	return kind != null and kind.is_valid(level, item.y)
 
 
 ## Indices of the items of one kind in a selection, sorted and without repeats.
@@ -115,47 +71,24 @@ static func pocket_pins(level: BoardLevel, pocket_index: int) -> PackedInt32Arra
 
 
 ## A copy of the selected items as plain data, positions relative to `origin`, for the
-## clipboard and for duplicating: {pins, walls, holes, starts, pockets, bonus, windmills}.
+## clipboard and for duplicating: {pins, walls, holes, starts, pockets, bonus, windmills}
+## (each kind's ItemKind.set_key).
 static func extract(level: BoardLevel, items: Array[Vector2i], origin: Vector2) -> Dictionary:
-	# Local arrays, stored at the end: a packed array taken out of a Dictionary is a copy.
-	var pins := PackedVector2Array()
-	var walls := PackedVector2Array()
-	var holes := PackedVector2Array()
-	var starts := PackedVector2Array()
-	var pockets: Array = []
-	var bonus: Array = []
-	var windmills: Array = []
+	# Plain arrays first, packed at the end: a packed array taken out of a Dictionary is a
+	# copy, so appending to one item by item would copy it each time.
+	var collected := {}
 	for item in items:
-		if not is_valid(level, item):
+		var kind := ItemKinds.of_item(level, item)
+		if kind == null or kind.set_key.is_empty() or not kind.is_valid(level, item.y):
 			continue
-		match item.x:
-			Kind.PIN:
-				pins.append(level.pins[item.y] - origin)
-			Kind.WALL:
-				walls.append(level.walls[item.y * 2] - origin)
-				walls.append(level.walls[item.y * 2 + 1] - origin)
-			Kind.HOLE:
-				holes.append(level.holes[item.y] - origin)
-			Kind.START:
-				starts.append(level.ball_starts[item.y] - origin)
-			Kind.POCKET:
-				var spec: PocketSpec = level.pockets[item.y]
-				pockets.append(
-					PocketSpec.create(spec.position - origin, spec.width, spec.depth, spec.payout)
-				)
-			Kind.BONUS:
-				bonus.append(moved_bonus(level.bonus_pockets[item.y], -origin))
-			Kind.WINDMILL:
-				windmills.append(level.windmills[item.y].moved(-origin))
-	return {
-		"pins": pins,
-		"walls": walls,
-		"holes": holes,
-		"starts": starts,
-		"pockets": pockets,
-		"bonus": bonus,
-		"windmills": windmills,
-	}
+		var values: Array = collected.get_or_add(kind.set_key, [])
+		values.append_array(kind.values_of(level, item.y, origin))
+	var data := empty_set()
+	for kind in ItemKinds.set_rows():
+		if collected.has(kind.set_key):
+			var values: Array = collected[kind.set_key]
+			data[kind.set_key] = set_entry(kind, values)
+	return data
 
 
 ## A copy of bonus pocket `spec` (every field) moved by `offset`.
@@ -165,49 +98,51 @@ static func moved_bonus(spec: BonusPocketSpec, offset: Vector2) -> BonusPocketSp
 	return copy
 
 
-## An empty item set: the shape `extract()` returns and the add action takes.
+## An empty item set: the shape `extract()` returns and the add action takes (points and
+## wall ends as PackedVector2Array, resources as Array).
 static func empty_set() -> Dictionary:
-	return {
-		"pins": PackedVector2Array(),
-		"walls": PackedVector2Array(),
-		"holes": PackedVector2Array(),
-		"starts": PackedVector2Array(),
-		"pockets": [],
-		"bonus": [],
-		"windmills": [],
-	}
+	var data := {}
+	for kind in ItemKinds.set_rows():
+		data[kind.set_key] = set_entry(kind, [])
+	return data
 
 
-## The same item set moved by `offset` (pocket specs are copied, never shared).
+## The same item set moved by `offset` (resources are copied, never shared).
 static func offset_set(data: Dictionary, offset: Vector2) -> Dictionary:
 	var moved := empty_set()
-	for key: String in ["pins", "walls", "holes", "starts"]:
-		var source: PackedVector2Array = data.get(key, PackedVector2Array())
-		var target: PackedVector2Array = moved[key]
-		for point in source:
-			target.append(point + offset)
-	var moved_pockets: Array = moved["pockets"]
-	for spec: PocketSpec in data.get("pockets", []):
-		moved_pockets.append(
-			PocketSpec.create(spec.position + offset, spec.width, spec.depth, spec.payout)
-		)
-	var moved_bonus_pockets: Array = moved["bonus"]
-	for spec: BonusPocketSpec in data.get("bonus", []):
-		moved_bonus_pockets.append(moved_bonus(spec, offset))
-	var moved_windmills: Array = moved["windmills"]
-	for spec: WindmillSpec in data.get("windmills", []):
-		moved_windmills.append(spec.moved(offset))
+	for kind in ItemKinds.set_rows():
+		var values: Array = []
+		for value: Variant in set_values(data, kind):
+			values.append(kind.moved_value(value, offset))
+		moved[kind.set_key] = set_entry(kind, values)
 	return moved
 
 
-## How many things an item set holds.
+## How many things an item set holds (a wall is two points).
 static func set_size(data: Dictionary) -> int:
-	var walls: PackedVector2Array = data.get("walls", PackedVector2Array())
-	var total := wall_count(walls)
-	for key: String in ["pins", "holes", "starts"]:
-		var points: PackedVector2Array = data.get(key, PackedVector2Array())
-		total += points.size()
-	var pockets: Array = data.get("pockets", [])
-	var bonus: Array = data.get("bonus", [])
-	var windmills: Array = data.get("windmills", [])
-	return total + pockets.size() + bonus.size() + windmills.size()
+	var total := 0
+	for kind in ItemKinds.set_rows():
+		var values := set_values(data, kind)
+		@warning_ignore("integer_division")  # whole walls only
+		var walls := values.size() / 2
+		total += walls if kind.shape == ItemKind.Shape.SEGMENT else values.size()
+	return total
+
+
+## The values a set holds for `kind` (its `set_key`) as a plain Array: points, walls' ends
+## in pairs, resources.
+static func set_values(data: Dictionary, kind: ItemKind) -> Array:
+	var held: Variant = data.get(kind.set_key, [])
+	if held is PackedVector2Array:
+		var points: PackedVector2Array = held
+		return Array(points)
+	var values: Array = held
+	return values
+
+
+## `values` as an item set holds them for `kind`: points and walls' ends packed
+## (PackedVector2Array), resources in an Array.
+static func set_entry(kind: ItemKind, values: Array) -> Variant:
+	if kind.shape == ItemKind.Shape.POINT or kind.shape == ItemKind.Shape.SEGMENT:
+		return PackedVector2Array(values)
+	return values

@@ -137,29 +137,10 @@ static func duplicate_offset(session: Session, items: Array[Vector2i]) -> Vector
 	return Vector2(ceilf(clear / grid) * grid, 0.0)
 
 
-## The area an item covers on the board (its pins, cup, capsule or circle).
+## The area an item covers on the board (its pins, cup, capsule or circle: its ItemKinds
+## row's extent).
 static func extent_of(level: BoardLevel, item: Vector2i) -> Rect2:
-	var at := Items.position_of(level, item)
-	var radius := 0.0
-	match item.x:
-		Items.Kind.PIN:
-			radius = level.pin_radius
-		Items.Kind.POCKET:
-			var spec: PocketSpec = level.pockets[item.y]
-			var cup := Rect2(at - Vector2(spec.width * 0.5, 0.0), Vector2(spec.width, spec.depth))
-			return cup.grow(level.pin_radius)
-		Items.Kind.BONUS:
-			var bonus := level.bonus_pockets[item.y]
-			return Rect2(at - Vector2(bonus.width * 0.5, 0.0), Vector2(bonus.width, bonus.depth))
-		Items.Kind.WALL:
-			var a := level.walls[item.y * 2]
-			var b := level.walls[item.y * 2 + 1]
-			return Rect2(a, Vector2.ZERO).expand(b).grow(level.wall_width * 0.5)
-		Items.Kind.HOLE:
-			radius = level.hole_radius
-		Items.Kind.START:
-			radius = level.ball_radius
-	return Rect2(at, Vector2.ZERO).grow(radius)
+	return ItemKinds.of_item(level, item).extent(level, item.y)
 
 
 ## Moves the selection by `direction` grid steps (one pixel per step without snapping).

@@ -145,39 +145,20 @@ static func crowds_pin(level: BoardLevel, point: Vector2) -> bool:
 static func in_rect(level: BoardLevel, rect: Rect2) -> Array[Vector2i]:
 	var box := rect.abs()
 	var found: Array[Vector2i] = []
-	for i in level.pins.size():
-		if box.has_point(level.pins[i]):
-			var owner := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
-			var item := Items.make(Items.Kind.POCKET, owner) if owner >= 0 else Vector2i(0, i)
-			if not found.has(item):
-				found.append(item)
-	for i in level.pockets.size():
-		var item := Items.make(Items.Kind.POCKET, i)
-		if box.has_point(level.pockets[i].position) and not found.has(item):
+	for item in ItemKinds.items_of(level):
+		var kind := ItemKinds.of_item(level, item)
+		var inside := true
+		for point in kind.box_points(level, item.y):
+			inside = inside and box.has_point(point)
+		if not inside:
+			continue
+		if not kind.is_item(level, item.y):
+			item = kind.owner.call(level, item.y)  # a rim pin boxes its pocket
+		if not found.has(item):
 			found.append(item)
-	for w in Items.wall_count(level.walls):
-		if box.has_point(level.walls[w * 2]) and box.has_point(level.walls[w * 2 + 1]):
-			found.append(Items.make(Items.Kind.WALL, w))
-	for i in level.holes.size():
-		if box.has_point(level.holes[i]):
-			found.append(Items.make(Items.Kind.HOLE, i))
-	for i in level.ball_starts.size():
-		if box.has_point(level.ball_starts[i]):
-			found.append(Items.make(Items.Kind.START, i))
-	for i in level.bonus_pockets.size():
-		var spec := level.bonus_pockets[i]
-		if spec != null and box.has_point(spec.position):
-			found.append(Items.make(Items.Kind.BONUS, i))
-	for i in level.windmills.size():
-		var wheel := level.windmills[i]
-		if wheel != null and box.has_point(wheel.position):
-			found.append(Items.make(Items.Kind.WINDMILL, i))
-	if level.is_maze() and box.has_point(level.goal_center):
-		found.append(Items.make(Items.Kind.GOAL, 0))
 	return found
 
 
-## Where each handle is drawn: handle name -> board point.
 static func handle_points(level: BoardLevel) -> Dictionary[String, Vector2]:
 	var points: Dictionary[String, Vector2] = {}
 	if level.is_maze():

@@ -1,31 +1,22 @@
 @tool
 extends RefCounted
 ## How the editor names an item to a designer: by kind and stable id ("Pin 143"), the same
-## id the problem messages and the board file use (ItemIds).
+## id the problem messages and the board file use (ItemIds). The words are each kind's
+## ItemKinds row's.
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
-
-## Item kind -> [name, item list].
-const KINDS := {
-	Items.Kind.PIN: ["Pin", "pins"],
-	Items.Kind.POCKET: ["Pocket", "pockets"],
-	Items.Kind.WALL: ["Wall", "walls"],
-	Items.Kind.HOLE: ["Black hole", "holes"],
-	Items.Kind.START: ["Ball start", "ball_starts"],
-	Items.Kind.WINDMILL: ["Windmill", "windmills"],
-}
 
 
 ## "Pin 143", "Wall 12", "Tulip 3", "Goal".
 static func name_of(level: BoardLevel, item: Vector2i) -> String:
-	if item.x == Items.Kind.BONUS and Items.is_valid(level, item):
-		var spec := level.bonus_pockets[item.y]
-		return "%s %d" % [spec.role_name(), ItemIds.of_bonus(level, item.y)]
-	if not KINDS.has(item.x):
-		return "Goal"
-	var entry: Array = KINDS[item.x]
-	var list: String = entry[1]
-	return "%s %d" % [entry[0], ItemIds.of(level, list, item.y)]
+	var kind := ItemKinds.of_item(level, item)
+	if kind == null:
+		return "Goal"  # names no item: as before the table, the one item without an id
+	if not kind.has_ids():
+		return kind.singular
+	if kind.shape == ItemKind.Shape.ROLE_SPEC:
+		return "%s %d" % [kind.singular, ItemIds.of_bonus(level, item.y)]
+	return "%s %d" % [kind.singular, ItemIds.of(level, kind.list, item.y)]
 
 
 ## "Pin 143 at (255, 84)": the property panel's heading.

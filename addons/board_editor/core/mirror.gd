@@ -17,7 +17,7 @@ static func axis_of(level: BoardLevel) -> float:
 
 ## `point` reflected across the vertical line x = `axis`.
 static func reflect(point: Vector2, axis: float) -> Vector2:
-	return Vector2(2.0 * axis - point.x, point.y)
+	return ItemKind.reflect(point, axis)
 
 
 ## `points` plus their reflections, leaving out reflections that land on a point already
@@ -31,45 +31,24 @@ static func with_reflections(points: PackedVector2Array, axis: float) -> PackedV
 	return result
 
 
-## An item set (see BoardItems.extract) plus its mirror image.
+## An item set (see BoardItems.extract) plus its mirror image: each kind's items, then the
+## reflections that land where none of them is (an item on the axis stays single); a
+## mirrored windmill turns the other way.
 static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 	var result := data.duplicate(true)
-	for key: String in ["pins", "holes", "starts"]:
-		var points: PackedVector2Array = data.get(key, PackedVector2Array())
-		result[key] = with_reflections(points, axis)
-	var walls: PackedVector2Array = data.get("walls", PackedVector2Array())
-	var all_walls := walls.duplicate()
-	for i in range(0, walls.size() - 1, 2):
-		var a := reflect(walls[i], axis)
-		var b := reflect(walls[i + 1], axis)
-		if _find_wall(all_walls, a, b) < 0:
-			all_walls.append(a)
-			all_walls.append(b)
-	result["walls"] = all_walls
-	var pockets: Array = []
-	var spots := PackedVector2Array()
-	for spec: PocketSpec in data.get("pockets", []):
-		pockets.append(PocketSpec.create(spec.position, spec.width, spec.depth, spec.payout))
-		spots.append(spec.position)
-	for spec: PocketSpec in data.get("pockets", []):
-		var mirrored := reflect(spec.position, axis)
-		if not _has_point(spots, mirrored):
-			spots.append(mirrored)
-			pockets.append(PocketSpec.create(mirrored, spec.width, spec.depth, spec.payout))
-	result["pockets"] = pockets
-	var bonus: Array = []
-	var bonus_spots := PackedVector2Array()
-	for spec: BonusPocketSpec in data.get("bonus", []):
-		bonus.append(Items.moved_bonus(spec, Vector2.ZERO))
-		bonus_spots.append(spec.position)
-	for spec: BonusPocketSpec in data.get("bonus", []):
-		var mirrored := reflect(spec.position, axis)
-		if not _has_point(bonus_spots, mirrored):
-			bonus_spots.append(mirrored)
-			bonus.append(Items.moved_bonus(spec, mirrored - spec.position))
-	result["bonus"] = bonus
-	var wheels: Array = data.get("windmills", [])
-	result["windmills"] = _mirrored_windmills(wheels, axis)
+	for kind in ItemKinds.set_rows():
+		var values := Items.set_values(data, kind)
+		var step := 2 if kind.shape == ItemKind.Shape.SEGMENT else 1
+		var kept: Array = []
+		for value: Variant in values:
+			kept.append(kind.moved_value(value, Vector2.ZERO))
+		for i in range(0, values.size() - step + 1, step):
+			var twin: Array = []
+			for k in step:
+				twin.append(kind.reflected_value(values[i + k], axis))
+			if _find_item(kept, twin, step) < 0:
+				kept.append_array(twin)
+		result[kind.set_key] = Items.set_entry(kind, kept)
 	return result
 
 
@@ -77,78 +56,32 @@ static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 ## other half" adds. Windmill twins turn the other way.
 static func reflections_of(data: Dictionary, axis: float) -> Dictionary:
 	var result := Items.empty_set()
-	for key: String in ["pins", "walls", "holes", "starts"]:
-		var points: PackedVector2Array = data.get(key, PackedVector2Array())
-		var reflected := PackedVector2Array()
-		for point in points:
-			reflected.append(reflect(point, axis))
-		result[key] = reflected
-	var pockets: Array = result["pockets"]
-	for spec: PocketSpec in data.get("pockets", []):
-		var at := reflect(spec.position, axis)
-		pockets.append(PocketSpec.create(at, spec.width, spec.depth, spec.payout))
-	var bonus: Array = result["bonus"]
-	for spec: BonusPocketSpec in data.get("bonus", []):
-		bonus.append(Items.moved_bonus(spec, reflect(spec.position, axis) - spec.position))
-	var wheels: Array = result["windmills"]
-	for spec: WindmillSpec in data.get("windmills", []):
-		var twin := spec.moved(reflect(spec.position, axis) - spec.position)
-		twin.speed = -spec.speed
-		wheels.append(twin)
-	return result
-
-
-# The windmills and their mirror images, which turn the other way (a mirrored board plays
-# the same from both sides); one on the axis stays single.
-static func _mirrored_windmills(wheels: Array, axis: float) -> Array:
-	var result: Array = []
-	var spots := PackedVector2Array()
-	for spec: WindmillSpec in wheels:
-		result.append(spec.moved(Vector2.ZERO))
-		spots.append(spec.position)
-	for spec: WindmillSpec in wheels:
-		var mirrored := reflect(spec.position, axis)
-		if not _has_point(spots, mirrored):
-			spots.append(mirrored)
-			var twin := spec.moved(mirrored - spec.position)
-			twin.speed = -spec.speed
-			result.append(twin)
+	for kind in ItemKinds.set_rows():
+		var reflected: Array = []
+		for value: Variant in Items.set_values(data, kind):
+			reflected.append(kind.reflected_value(value, axis))
+		result[kind.set_key] = Items.set_entry(kind, reflected)
 	return result
 
 
 ## The item at `item`'s mirrored place: itself when it sits on the axis, NONE when the
 ## other half has nothing there. The goal has no partner.
 static func partner(level: BoardLevel, item: Vector2i, axis: float) -> Vector2i:
-	if not Items.is_valid(level, item) or item.x == Items.Kind.GOAL:
+	var kind := ItemKinds.of_item(level, item)
+	if kind == null or not kind.is_valid(level, item.y) or kind.shape == ItemKind.Shape.SINGLE:
 		return Items.NONE
-	if item.x == Items.Kind.WALL:
-		var a := reflect(level.walls[item.y * 2], axis)
-		var b := reflect(level.walls[item.y * 2 + 1], axis)
-		var found := _find_wall(level.walls, a, b)
-		return Items.NONE if found < 0 else Items.make(Items.Kind.WALL, found)
-	var target := reflect(Items.position_of(level, item), axis)
-	var count := 0
-	match item.x:
-		Items.Kind.PIN:
-			count = level.pins.size()
-		Items.Kind.POCKET:
-			count = level.pockets.size()
-		Items.Kind.HOLE:
-			count = level.holes.size()
-		Items.Kind.START:
-			count = level.ball_starts.size()
-		Items.Kind.BONUS:
-			count = level.bonus_pockets.size()
-		Items.Kind.WINDMILL:
-			count = level.windmills.size()
-	for i in count:
-		var other := Vector2i(item.x, i)
-		if item.x == Items.Kind.PIN and level.pin_pocket.size() > i and level.pin_pocket[i] >= 0:
+	if kind.shape == ItemKind.Shape.SEGMENT:
+		var ends: PackedVector2Array = level.get(kind.field)
+		var a := reflect(ends[item.y * 2], axis)
+		var b := reflect(ends[item.y * 2 + 1], axis)
+		var found := _find_wall(ends, a, b)
+		return Items.NONE if found < 0 else Items.make(kind.pick, found)
+	var target := reflect(kind.position_of(level, item.y), axis)
+	for i in kind.field_indices(level):
+		if not kind.is_item(level, i):
 			continue
-		if item.x == Items.Kind.BONUS and not _same_role(level, item.y, i):
-			continue
-		if Items.position_of(level, other).distance_to(target) <= SAME_PLACE:
-			return other
+		if kind.position_of(level, i).distance_to(target) <= SAME_PLACE:
+			return Items.make(kind.pick, i)
 	return Items.NONE
 
 
@@ -190,13 +123,6 @@ static func split_for_move(
 	return {"direct": direct, "mirrored": mirrored, "on_axis": on_axis}
 
 
-# True when bonus pockets `a` and `b` have the same role (a tulip's partner is a tulip).
-static func _same_role(level: BoardLevel, a: int, b: int) -> bool:
-	var first := level.bonus_pockets[a]
-	var second := level.bonus_pockets[b]
-	return first != null and second != null and first.role == second.role
-
-
 static func _has_point(points: PackedVector2Array, point: Vector2) -> bool:
 	for other in points:
 		if other.distance_to(point) <= SAME_PLACE:
@@ -213,3 +139,27 @@ static func _find_wall(walls: PackedVector2Array, a: Vector2, b: Vector2) -> int
 		if same or flipped:
 			return w
 	return -1
+
+
+# The index of the item in `values` (`step` entries each: a point, a wall's two ends in
+# either order, a resource by its position) that `twin` lands on, or -1.
+static func _find_item(values: Array, twin: Array, step: int) -> int:
+	for i in range(0, values.size() - step + 1, step):
+		if step == 2:
+			var ends := PackedVector2Array([values[i], values[i + 1]])
+			var a: Vector2 = twin[0]
+			var b: Vector2 = twin[1]
+			if _find_wall(ends, a, b) == 0:
+				return i
+		elif _place(values[i]).distance_to(_place(twin[0])) <= SAME_PLACE:
+			return i
+	return -1
+
+
+# Where an item-set value stands: a point, or a resource's position.
+static func _place(value: Variant) -> Vector2:
+	if value is Vector2:
+		return value
+	var spec: Resource = value
+	var at: Vector2 = spec.get("position")
+	return at

@@ -1,0 +1,466 @@
+@tool
+class_name ItemKind
+extends RefCounted
+## One kind of board item (a pin, a wall, a tulip...): one row of the ItemKinds table.
+##
+## A row says where its items live on a BoardLevel (the list field, the id field), how its
+## line in a board file is keyed and checked (the schema rows), how a designer names it, and
+## which fields a move or an edit of it changes. Its items are handled by their Shape: every
+## kind stored the same way (points, wall segments, resources with a `position`) shares the
+## code here, so a kind differs from its shape-mates only by its data and its few hooks
+## (a pin's rim pins are not items, a pocket carries its rim pins, a windmill turns the
+## other way when mirrored). Each kind is one file in this folder that builds its row.
+##
+## The editor names an item `Vector2i(pick, index)`; `index` counts in the row's `field`
+## (for the bonus pockets: in `bonus_pockets`, all three roles together).
+
+## What the editor's item `Vector2i(pick, index)` names: one value per selectable field.
+## The three bonus roles share BONUS, as they share `BoardLevel.bonus_pockets`.
+enum Pick { PIN, POCKET, WALL, HOLE, START, GOAL, BONUS, WINDMILL }
+
+## How a kind's items are stored on the board.
+enum Shape {
+	POINT,  ## a PackedVector2Array, one point per item
+	SEGMENT,  ## a PackedVector2Array, two points (a, b) per item
+	SPEC,  ## an Array of resources, each with a `position`
+	ROLE_SPEC,  ## `bonus_pockets`: the resources of one `role` among the others
+	SINGLE,  ## one Vector2 field (the goal)
+}
+
+const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
+
+## The largest id a file may use (ItemIds).
+const MAX_ID := 9_999_999
+
+## The key of its line in a board file (`{"pin": {...}}`); the goal, which has no line of
+## its own, is "goal".
+var name := ""
+## Its ItemIds list, the schema's list name and the editor's selection key ("pins",
+## "tulips"); "goal" for the goal.
+var list := ""
+## The BoardLevel field holding the items ("bonus_pockets" for the three bonus roles).
+var field := ""
+## The BoardLevel field holding the items' stable ids, "" for an item without ids.
+var id_field := ""
+## The game whose boards have this kind (BoardLevel.Kind).
+var game := BoardLevel.Kind.PACHINKO
+## The editor's selection value (Pick).
+var pick := Pick.PIN
+## The BonusPocketSpec.Role of a ROLE_SPEC kind, else -1.
+var role := -1
+## How the items are stored (Shape).
+var shape := Shape.POINT
+## Names for a designer: "Pin" / "Pins".
+var singular := ""
+var plural := ""
+## Its key in an editor item set (BoardItems.extract: the clipboard, placing, pasting);
+## the bonus roles share one.
+var set_key := ""
+## Every BoardLevel field that adding or deleting one of these items may change.
+var item_fields := PackedStringArray()
+## Every BoardLevel field that moving or mirroring one of these items may change.
+var position_fields := PackedStringArray()
+## The resource properties an undo snapshot keeps per item (SPEC, ROLE_SPEC), in order.
+var spec_values := PackedStringArray()
+## Schema: the most items a file may hold, its item line's required fields and the ones it
+## may leave out (field -> [type, min, max], BoardSchema.check_value).
+var max_items := 0
+var file_fields := {}
+var optional_file_fields := {}
+
+## The BoardLevel field holding the size of every item of a POINT or SEGMENT kind (a pin's
+## radius, a wall's width), for the area it covers; "" for none.
+var size_field := ""
+
+## Hooks, each optional (an invalid Callable does nothing, or leaves the shape's way):
+## `(level, index) -> Rect2`: the area item `index` covers (a cup, a sweep); a POINT kind
+## covers a circle of its `size_field` radius, a SEGMENT a capsule `size_field` wide.
+var covers := Callable()
+## `(level, index) -> Vector2i`: for a skipped entry, the item that owns it (a rim pin's
+## pocket, `Vector2i(pick, index)`), which a designer picks in its place.
+var owner := Callable()
+## `(level, index) -> String`: item `index`'s fields as its file line writes them, after its
+## id (`"x": 12, "y": 40`); a POINT or SEGMENT kind writes its `file_fields` coordinates.
+var writes := Callable()
+## `(level, lines: Array) -> Array`: sets `field` from the kind's checked file lines and
+## returns the lines whose ids are the items' (a pin line of an older file that names its
+## pocket is dropped: the pocket stamps it); a POINT or SEGMENT kind reads its coordinates.
+var reads := Callable()
+## `(line: Dictionary) -> String`: what is wrong with one item line of a board file beyond
+## its fields' types and ranges ("" when nothing; a windmill needs a speed or a friction).
+var checks := Callable()
+## `(level, index) -> bool`: true for an entry of `field` that is not an item of its own
+## (a pocket's rim pin).
+var skips := Callable()
+## `(level, work, index, offset)`: what moves along with item `index` (a pocket's rim pins
+## in `work`, see `working`).
+var carries := Callable()
+## `(spec)`: what a mirror image changes besides the place (a windmill turns the other way).
+var turns := Callable()
+## `(level, work, index)`: keeps other fields in line once item `index` is appended (a pin's
+## pocket and special flag, a pocket's stamped rim pins).
+var appended := Callable()
+## `(level, work, gone)`: removes what belongs to the removed items `gone` (indices before
+## the removal, sorted) from the other fields (a pocket's rim pins).
+var removed := Callable()
+
+
+## A fresh row for the `kind_name` line of board files, stored in `level_field`.
+static func make(kind_name: String, level_field: String, shape_of: Shape) -> ItemKind:
+	var kind := ItemKind.new()
+	kind.name = kind_name
+	kind.field = level_field
+	kind.shape = shape_of
+	kind.item_fields = PackedStringArray([level_field])
+	kind.position_fields = PackedStringArray([level_field])
+	kind.file_fields = {"x": ["coord"], "y": ["coord"]}
+	return kind
+
+
+## `point` reflected across the vertical line x = `axis`.
+static func reflect(point: Vector2, axis: float) -> Vector2:
+	return Vector2(2.0 * axis - point.x, point.y)
+
+
+## True when this kind has stable ids (every kind but the goal).
+func has_ids() -> bool:
+	return not id_field.is_empty()
+
+
+## How many items of this kind `level` holds (skipped entries included: ids line up with
+## the field).
+func count(level: BoardLevel) -> int:
+	match shape:
+		Shape.POINT, Shape.SEGMENT:
+			var points: PackedVector2Array = level.get(field)
+			@warning_ignore("integer_division")  # whole segments only
+			return points.size() / 2 if shape == Shape.SEGMENT else points.size()
+		Shape.SPEC:
+			var specs: Array = level.get(field)
+			return specs.size()
+		Shape.ROLE_SPEC:
+			return field_indices(level).size()
+	return 1 if level.kind == game else 0
+
+
+## For ROLE_SPEC: the indices in `field` of this role's items, in board order; for the other
+## shapes every index of the field.
+func field_indices(level: BoardLevel) -> PackedInt32Array:
+	var found := PackedInt32Array()
+	if shape != Shape.ROLE_SPEC:
+		for i in count(level):
+			found.append(i)
+		return found
+	var specs: Array = level.get(field)
+	for i in specs.size():
+		var spec: BonusPocketSpec = specs[i]
+		if spec != null and spec.role == role:
+			found.append(i)
+	return found
+
+
+## True when entry `index` of `field` is an item of this kind on `level` now (indices go
+## stale after an undo).
+func is_valid(level: BoardLevel, index: int) -> bool:
+	if index < 0:
+		return false
+	match shape:
+		Shape.SPEC, Shape.ROLE_SPEC:
+			var specs: Array = level.get(field)
+			if index >= specs.size() or specs[index] == null:
+				return false
+			var spec: Resource = specs[index]
+			return shape == Shape.SPEC or (spec is BonusPocketSpec and spec.get("role") == role)
+		Shape.SINGLE:
+			return level.kind == game
+	return index < count(level)
+
+
+## True when entry `index` is an item a designer can pick (not a skipped entry).
+func is_item(level: BoardLevel, index: int) -> bool:
+	return is_valid(level, index) and not (skips.is_valid() and skips.call(level, index))
+
+
+## The point that stands for item `index`: a centre, a pocket's mouth, a wall's midpoint.
+func position_of(level: BoardLevel, index: int) -> Vector2:
+	match shape:
+		Shape.POINT:
+			var points: PackedVector2Array = level.get(field)
+			return points[index]
+		Shape.SEGMENT:
+			var ends: PackedVector2Array = level.get(field)
+			return (ends[index * 2] + ends[index * 2 + 1]) * 0.5
+		Shape.SPEC, Shape.ROLE_SPEC:
+			var specs: Array = level.get(field)
+			var spec: Resource = specs[index]
+			return _position(spec)
+	var point: Vector2 = level.get(field)
+	return point
+
+
+## The area item `index` covers on the board (its pins, cup, capsule or circle).
+func extent(level: BoardLevel, index: int) -> Rect2:
+	if covers.is_valid():
+		return covers.call(level, index)
+	var size: float = level.get(size_field) if not size_field.is_empty() else 0.0
+	if shape == Shape.SEGMENT:
+		var ends: PackedVector2Array = level.get(field)
+		var box := Rect2(ends[index * 2], Vector2.ZERO).expand(ends[index * 2 + 1])
+		return box.grow(size * 0.5)
+	return Rect2(position_of(level, index), Vector2.ZERO).grow(size)
+
+
+## The points that must lie in a box for item `index` to be boxed: both ends of a wall,
+## else the point that stands for it.
+func box_points(level: BoardLevel, index: int) -> PackedVector2Array:
+	if shape == Shape.SEGMENT:
+		var ends: PackedVector2Array = level.get(field)
+		return ends.slice(index * 2, index * 2 + 2)
+	return PackedVector2Array([position_of(level, index)])
+
+
+## The copy of `field` that a batch of edits writes into (`work`: field -> copy), made on
+## first use. Packed arrays are values, so edits go to one copy a field and `store` hands
+## the copies back to the board at the end: one setter call per field, not per item.
+static func working(level: BoardLevel, work: Dictionary, field_name: String) -> Variant:
+	if not work.has(field_name):
+		work[field_name] = _copy(level.get(field_name))
+	return work[field_name]
+
+
+## Hands every copy in `work` back to `level`.
+static func store(level: BoardLevel, work: Dictionary) -> void:
+	for field_name: String in work:
+		level.set(field_name, work[field_name])
+
+
+## Moves item `index` by `offset` (and what it carries), writing into `work`.
+func offset(level: BoardLevel, work: Dictionary, index: int, by: Vector2) -> void:
+	match shape:
+		Shape.POINT:
+			var points: PackedVector2Array = working(level, work, field)
+			points[index] += by
+			work[field] = points
+		Shape.SEGMENT:
+			var ends: PackedVector2Array = working(level, work, field)
+			ends[index * 2] += by
+			ends[index * 2 + 1] += by
+			work[field] = ends
+		Shape.SPEC, Shape.ROLE_SPEC:
+			# The resource itself moves: the dock and the inspector hold on to it.
+			var specs: Array = level.get(field)
+			var spec: Resource = specs[index]
+			_set_position(spec, _position(spec) + by)
+		Shape.SINGLE:
+			var point: Vector2 = working(level, work, field)
+			work[field] = point + by
+	if carries.is_valid():
+		carries.call(level, work, index, by)
+
+
+## Reflects item `index` across the vertical line x = `axis`, writing into `work`: points
+## land at their reflection, a resource's mouth moves there (its shape is symmetrical) and
+## the `turns` hook changes the rest.
+func reflect_item(level: BoardLevel, work: Dictionary, index: int, axis: float) -> void:
+	match shape:
+		Shape.POINT:
+			var points: PackedVector2Array = working(level, work, field)
+			points[index] = reflect(points[index], axis)
+			work[field] = points
+		Shape.SEGMENT:
+			var ends: PackedVector2Array = working(level, work, field)
+			ends[index * 2] = reflect(ends[index * 2], axis)
+			ends[index * 2 + 1] = reflect(ends[index * 2 + 1], axis)
+			work[field] = ends
+		Shape.SINGLE:
+			var point: Vector2 = working(level, work, field)
+			work[field] = reflect(point, axis)
+		_:
+			var at := position_of(level, index)
+			offset(level, work, index, reflect(at, axis) - at)
+			if turns.is_valid():
+				var specs: Array = level.get(field)
+				turns.call(specs[index])
+
+
+## A copy of one item of an item set (a point, a wall's [a, b] ends, a resource) moved by
+## `by`; resources are copied, never shared.
+func moved_value(value: Variant, by: Vector2) -> Variant:
+	if value is Vector2:
+		var point: Vector2 = value
+		return point + by
+	var spec: Resource = value
+	var copy := spec.duplicate()
+	_set_position(copy, _position(spec) + by)
+	return copy
+
+
+## The mirror image of one item-set value (see `moved_value`) across x = `axis`.
+func reflected_value(value: Variant, axis: float) -> Variant:
+	if value is Vector2:
+		var point: Vector2 = value
+		return reflect(point, axis)
+	var spec: Resource = value
+	var at := _position(spec)
+	var twin: Resource = moved_value(spec, reflect(at, axis) - at)
+	if turns.is_valid():
+		turns.call(twin)
+	return twin
+
+
+## The item-set values of item `index` (one point, a wall's two ends, a copy of the
+## resource), positions relative to `origin`.
+func values_of(level: BoardLevel, index: int, origin: Vector2) -> Array:
+	match shape:
+		Shape.SEGMENT:
+			var ends: PackedVector2Array = level.get(field)
+			return [ends[index * 2] - origin, ends[index * 2 + 1] - origin]
+		Shape.SPEC, Shape.ROLE_SPEC:
+			var specs: Array = level.get(field)
+			return [moved_value(specs[index], -origin)]
+	return [position_of(level, index) - origin]
+
+
+## Appends one item (a point, a wall's ends as [a, b], a resource) to `work`; the value to
+## find it by once every item is in (`index_in`): its index, or the resource itself for a
+## ROLE_SPEC item, which goes into its role's slot and so shifts the ones after it.
+func append(level: BoardLevel, work: Dictionary, value: Variant) -> Variant:
+	var index := 0
+	match shape:
+		Shape.POINT:
+			var points: PackedVector2Array = working(level, work, field)
+			index = points.size()
+			var point: Vector2 = value
+			points.append(point)
+			work[field] = points
+		Shape.SEGMENT:
+			var ends: PackedVector2Array = working(level, work, field)
+			@warning_ignore("integer_division")  # whole segments only
+			index = ends.size() / 2
+			var pair: Array = value
+			var a: Vector2 = pair[0]
+			var b: Vector2 = pair[1]
+			ends.append(a)
+			ends.append(b)
+			work[field] = ends
+		Shape.SPEC:
+			var specs: Array = working(level, work, field)
+			index = specs.size()
+			specs.append(value)
+		Shape.ROLE_SPEC:
+			var bonus: Array[BonusPocketSpec] = working(level, work, field)
+			bonus.insert(BonusPocketSpec.role_slot(bonus, role), value)
+			return value
+		Shape.SINGLE:
+			return -1
+	if appended.is_valid():
+		appended.call(level, work, index)
+	return index
+
+
+## Where an item `append` returned `handle` for stands in `work` now.
+func index_in(work: Dictionary, handle: Variant) -> int:
+	if handle is int:
+		return handle
+	var specs: Array = work[field]
+	return specs.find(handle)
+
+
+## Removes the items at `gone` (indices of `field`, sorted) from `work`.
+func remove(level: BoardLevel, work: Dictionary, gone: PackedInt32Array) -> void:
+	if gone.is_empty() or shape == Shape.SINGLE:
+		return
+	if shape == Shape.POINT or shape == Shape.SEGMENT:
+		var step := 2 if shape == Shape.SEGMENT else 1
+		var points: PackedVector2Array = working(level, work, field)
+		var kept_points := PackedVector2Array()
+		@warning_ignore("integer_division")  # whole segments only
+		for item in points.size() / step:
+			if not gone.has(item):
+				for k in step:
+					kept_points.append(points[item * step + k])
+		work[field] = kept_points
+	else:
+		var specs: Array = working(level, work, field)
+		for k in range(gone.size() - 1, -1, -1):
+			specs.remove_at(gone[k])
+	if removed.is_valid():
+		removed.call(level, work, gone)
+
+
+## Item `index`'s line in a board file, after its id: `"x": 12, "y": 40`.
+func line_of(level: BoardLevel, index: int) -> String:
+	if writes.is_valid():
+		return writes.call(level, index)
+	var points: PackedVector2Array = level.get(field)
+	var step := 2 if shape == Shape.SEGMENT else 1
+	return LineText.coords(file_fields.keys(), points.slice(index * step, index * step + step))
+
+
+## Sets `field` on a board being built from the kind's checked file `lines`; the lines
+## whose ids the items take, in order.
+func read_lines(level: BoardLevel, lines: Array) -> Array:
+	if reads.is_valid():
+		return reads.call(level, lines)
+	var points := PackedVector2Array()
+	for line: Dictionary in lines:
+		points.append_array(LineText.points_of(line, file_fields.keys()))
+	level.set(field, points)
+	return lines
+
+
+## What identifies each item of `items` (the `field` value, or its BoardFieldCopy capture
+## of [object, values...] entries) across an edit: a point, a wall's [a, b], a resource
+## itself (for ROLE_SPEC only this role's).
+func keys_of(items: Variant) -> Array:
+	var keys: Array = []
+	match shape:
+		Shape.POINT:
+			var points: PackedVector2Array = items
+			keys.append_array(Array(points))
+		Shape.SEGMENT:
+			var ends: PackedVector2Array = items
+			for i in range(0, ends.size() - 1, 2):
+				keys.append([ends[i], ends[i + 1]])
+		Shape.SPEC, Shape.ROLE_SPEC:
+			var entries: Array = items
+			for entry: Variant in entries:
+				var item: Variant = entry
+				if entry is Array:
+					var captured: Array = entry
+					item = captured[0]
+				if shape == Shape.SPEC:
+					keys.append(item)
+				elif item is BonusPocketSpec:
+					var spec: BonusPocketSpec = item
+					if spec.role == role:
+						keys.append(spec)
+	return keys
+
+
+static func _position(spec: Resource) -> Vector2:
+	var at: Vector2 = spec.get("position")
+	return at
+
+
+static func _set_position(spec: Resource, at: Vector2) -> void:
+	spec.set("position", at)
+
+
+# A copy that edits do not share with the board (Arrays and packed arrays are shared by
+# reference); other values are copies already.
+static func _copy(value: Variant) -> Variant:
+	match typeof(value):
+		TYPE_ARRAY:
+			var items: Array = value
+			return items.duplicate()
+		TYPE_PACKED_VECTOR2_ARRAY:
+			var points: PackedVector2Array = value
+			return points.duplicate()
+		TYPE_PACKED_INT32_ARRAY:
+			var numbers: PackedInt32Array = value
+			return numbers.duplicate()
+		TYPE_PACKED_BYTE_ARRAY:
+			var bytes: PackedByteArray = value
+			return bytes.duplicate()
+	return value

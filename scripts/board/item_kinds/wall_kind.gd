@@ -1,0 +1,20 @@
+@tool
+extends RefCounted
+## Maze walls: capsules between two points a, b, stored as pairs in `BoardLevel.walls`.
+
+
+## The wall row of ItemKinds.
+static func row() -> ItemKind:
+	var kind := ItemKind.make("wall", "walls", ItemKind.Shape.SEGMENT)
+	kind.list = "walls"
+	kind.id_field = "wall_ids"
+	kind.game = BoardLevel.Kind.MAZE
+	kind.pick = ItemKind.Pick.WALL
+	kind.singular = "Wall"
+	kind.plural = "Walls"
+	kind.set_key = "walls"
+	kind.max_items = 4000
+	kind.size_field = "wall_width"
+	kind.file_fields = {"ax": ["coord"], "ay": ["coord"], "bx": ["coord"], "by": ["coord"]}
+	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
+	return kind
