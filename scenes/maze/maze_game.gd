@@ -110,6 +110,7 @@ func _ready() -> void:
 	_stage.set_low_graphics(App.settings.maze_low_graphics)
 	get_viewport().size_changed.connect(_on_size_changed)
 	_layout()
+	_settle_frames = SETTLE_FRAMES  # placed again as the panel's text settles, then kept
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
 	# the first frame drawn shows the board ready: its balls and the medal in reach
@@ -236,8 +237,12 @@ func _on_game_reset() -> void:
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
 	var hint := MazeHints.start(rules.hard_mode, rules.ball_total(), rules.level.holes.size())
+	# the ghost's line on a line of its own, and before there is a ghost one as long, so the
+	# note keeps its height (and the panel its layout) from the first attempt to the next
 	if _ghost != null:
-		hint += " " + MazeHints.ghost()
+		hint += "\n" + MazeHints.ghost()
+	elif App.settings.show_ghost:
+		hint += "\n" + MazeHints.no_ghost_yet()
 	_note.show_note("Tilt the board to start!", hint)
 	_show_best()
 
@@ -280,6 +285,9 @@ func _layout() -> Rect2:
 	if _panel_layout == null:
 		_panel_layout = MazePanelLayout.new(_side, _joystick)
 	var stretch := get_viewport().get_final_transform().get_scale().y
+	_panel_layout.place_text(stretch)
+	for label: Label in [_timer, _best]:
+		_hold_time_width(label)
 	var aspect := _stage.framing().board_aspect if rules != null else 0.0
 	var region := _panel_layout.place(get_viewport_rect().size, stretch, aspect)
 	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
@@ -289,6 +297,19 @@ func _layout() -> Rect2:
 	_win_panel.position = region.position
 	_win_panel.size = region.size
 	return region
+
+
+# Gives the Time / Best label the width of a time shown in it, so "Best  --" and "Best
+# 0:12.3" take the same room: the column, sized to its widest line, keeps its width after a
+# first finish (a play trial saw the board and the joystick shrink on the next attempt).
+func _hold_time_width(label: Label) -> void:
+	var font := label.get_theme_font(&"font")
+	var font_size := label.get_theme_font_size(&"font_size")
+	var prefix := label.text.get_slice("  ", 0)
+	var widest := font.get_string_size(
+		prefix + "  0:00.0", HORIZONTAL_ALIGNMENT_LEFT, -1, font_size
+	)
+	label.custom_minimum_size.x = ceilf(widest.x)
 
 
 ## The win panel (for tests and the screenshots).

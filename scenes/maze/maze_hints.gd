@@ -3,13 +3,29 @@ extends RefCounted
 ## its notes. Every key is named as the player has bound it (KeyNames), so the words stay
 ## true after a remap.
 
+## A space that never breaks a line.
+const NBSP := "\u00a0"
 
-## The controls line under the side panel.
+
+## The controls line under the side panel. Each "Space reset" item holds together (its
+## spaces don't break) and keeps the " · " after it, so a wrapped line starts with an item,
+## never with a stray "· Escape pause".
 static func controls() -> String:
-	return (
-		"Tilt: joystick, %s, or a gamepad stick\n%s reset  ·  %s hard  ·  %s easy  ·  %s pause"
-		% ["arrows / WASD", _reset(), _hard(), _easy(), KeyNames.of(&"pause", "the pause key")]
-	)
+	var items := PackedStringArray()
+	for item: String in [
+		"%s reset" % _reset(),
+		"%s hard" % _hard(),
+		"%s easy" % _easy(),
+		"%s pause" % KeyNames.of(&"pause", "the pause key"),
+	]:
+		items.append(item.replace(" ", NBSP))
+	return "Tilt: joystick, arrows / WASD, or a gamepad stick\n" + (NBSP + NBSP + "·  ").join(items)
+
+
+## The line in its place before there is a best run to race (as long, so the note keeps its
+## height when the ghost comes).
+static func no_ghost_yet() -> String:
+	return "Finish to race your best run."
 
 
 ## The hint under "Tilt the board to start!" in easy or `hard` mode, on a board of `balls`

@@ -22,6 +22,12 @@ const BOARD_MARGIN := 8.0
 ## Layouts tried again, a frame apart, while the column has no width yet.
 const RETRIES := 3
 
+## Frames after the screen opens or the window changes in which `place` works the layout
+## out afresh while the wrapped text settles; after them the layout is kept for that window
+## (a play trial saw the column narrow and the joystick shrink between attempts of one board,
+## as it was worked out again for the texts of the moment).
+const FRESH_FRAMES := 8
+
 ## Set by `place`: the layout must be tried again next frame.
 var needs_retry := false
 
@@ -29,17 +35,29 @@ var _side: VBoxContainer
 var _joystick: MazeJoystick
 var _side_text: MazeSideText
 var _retries_left := RETRIES
+# The process frame until which `place` works the layout out afresh.
+var _fresh_until := 0
+# What the kept layout was worked out for (view, stretch, board aspect), and its board region.
+var _kept_for: Array = []
+var _kept_region := Rect2()
 
 
 func _init(side: VBoxContainer, joystick: MazeJoystick) -> void:
 	_side = side
 	_joystick = joystick
 	_side_text = MazeSideText.new(side)
+	_fresh_until = Engine.get_process_frames() + FRESH_FRAMES
 
 
-## The window changed: the retries start over.
+## Grows the panel's text for a view drawn `stretch` times its size (as `place` does first).
+func place_text(stretch: float) -> void:
+	_side_text.apply(stretch)
+
+
+## The window changed: the retries start over and the layout is worked out afresh.
 func window_changed() -> void:
 	_retries_left = RETRIES
+	_fresh_until = Engine.get_process_frames() + FRESH_FRAMES
 
 
 ## Places the panel for a view of `view` px drawn `stretch` times its size and returns the
@@ -50,6 +68,15 @@ func window_changed() -> void:
 ## width, so each pixel the column gives up draws it bigger (a 900 × 700 window's balls
 ## were about 9 px on The Deep).
 func place(view: Vector2, stretch: float, board_aspect := 0.0) -> Rect2:
+	var asked := [view, stretch, board_aspect]
+	if asked == _kept_for and not needs_retry and Engine.get_process_frames() > _fresh_until:
+		return _kept_region  # the same window: the layout stays as it is
+	_kept_region = _place(view, stretch, board_aspect)
+	_kept_for = asked
+	return _kept_region
+
+
+func _place(view: Vector2, stretch: float, board_aspect: float) -> Rect2:
 	needs_retry = false
 	_side_text.apply(stretch)
 	if view.x >= view.y:
@@ -58,6 +85,7 @@ func place(view: Vector2, stretch: float, board_aspect := 0.0) -> Rect2:
 		var width := clampf(view.x * SIDE_SHARE, SIDE_MIN_WIDTH, SIDE_MAX_WIDTH)
 		width = minf(width * _side_text.factor, view.x * SIDE_MOST_SHARE)
 		width = _narrowed(width, view, board_aspect)
+		width = maxf(width, _lines_width())  # never narrower than its widest line
 		_side.set_anchors_preset(Control.PRESET_RIGHT_WIDE)
 		_side.offset_left = -width - SIDE_EDGE
 		_side.offset_right = -SIDE_EDGE
@@ -87,6 +115,17 @@ func _narrowed(width: float, view: Vector2, board_aspect: float) -> float:
 		return width
 	var narrowest := maxf(SIDE_NARROWEST * _side_text.factor, _side.get_combined_minimum_size().x)
 	return maxf(width - short, minf(narrowest, width))
+
+
+# The width of the column's widest line that does not wrap (the joystick left out: it is
+# sized to the column).
+func _lines_width() -> float:
+	var widest := 0.0
+	for child in _side.get_children():
+		var line := child as Control
+		if line != null and line != _joystick and line.visible:
+			widest = maxf(widest, line.get_combined_minimum_size().x)
+	return widest
 
 
 # Sizes the joystick at most `largest` times the seed's size and no bigger than the height

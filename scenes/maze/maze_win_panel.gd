@@ -23,9 +23,17 @@ const CARD := Color(0.99, 0.97, 0.94, 0.96)
 
 ## How long after the card appears it ignores the arrow and accept keys (ms).
 const HELD_KEYS_IGNORED_MSEC := 600
+## The menu keys a key held over from play can press: the arrows that tilted the board, and
+## accept.
+const MENU_ACTIONS: Array[StringName] = [
+	&"ui_left", &"ui_right", &"ui_up", &"ui_down", &"ui_accept"
+]
 
 # When the card was last shown (Time.get_ticks_msec).
 var _shown_at_msec := -1000000
+# The menu actions held down as the card appeared: ignored until let go (their repeats go on
+# for as long as the key is held, well past the card's first moments).
+var _held_over: Array[StringName] = []
 var _disc := MazeMedalDisc.new()
 var _headline := Label.new()
 var _time := Label.new()
@@ -101,8 +109,7 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 	)
 	_disc.medal = summary.medal
 	_next.visible = has_next
-	show()
-	_shown_at_msec = Time.get_ticks_msec()
+	_appear()
 	(_next if has_next else _retry).grab_focus.call_deferred()
 
 
@@ -117,19 +124,36 @@ func present_loss(left: int, total: int) -> void:
 	_best.text = ""
 	_disc.medal = Medals.Medal.NONE
 	_next.visible = false
+	_appear()
+	_retry.grab_focus.call_deferred()
+
+
+# Shows the card and notes which menu keys are held over from play.
+func _appear() -> void:
 	show()
 	_shown_at_msec = Time.get_ticks_msec()
-	_retry.grab_focus.call_deferred()
+	_held_over.clear()
+	for action in MENU_ACTIONS:
+		if Input.is_action_pressed(action):
+			_held_over.append(action)
 
 
 func _input(event: InputEvent) -> void:
 	# the arrow keys that tilted the board are Godot's menu keys too: a key still held as the
-	# last ball rolls in would walk the focus from Next board to Menu (a play trial pressed
-	# Enter on Menu that way), so the card ignores them for its first moments
-	if not visible or Time.get_ticks_msec() - _shown_at_msec > HELD_KEYS_IGNORED_MSEC:
+	# last ball rolls in would walk the focus from Next board to Menu with its repeats (a play
+	# trial pressed Enter on Menu that way), so the card ignores a key held over from play
+	# until it is let go, and any menu key in its first moments
+	if not visible:
 		return
-	for action: StringName in [&"ui_left", &"ui_right", &"ui_up", &"ui_down", &"ui_accept"]:
-		if event.is_action(action):
+	for action in MENU_ACTIONS:
+		if not event.is_action(action):
+			continue
+		if action in _held_over:
+			if event.is_released():
+				_held_over.erase(action)
+			get_viewport().set_input_as_handled()
+			return
+		if Time.get_ticks_msec() - _shown_at_msec <= HELD_KEYS_IGNORED_MSEC:
 			get_viewport().set_input_as_handled()
 			return
 

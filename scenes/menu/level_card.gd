@@ -59,7 +59,7 @@ func setup(result: BoardLoadResult, best: String) -> void:
 		_add_label(shown.display_name if not shown.display_name.is_empty() else shown.board_id, &"")
 		if not file_line.is_empty():
 			_add_label(file_line, &"HintLabel")
-		_add_label(best if not best.is_empty() else "Not played yet", &"HintLabel")
+		_add_label(best if not best.is_empty() else "No finish yet", &"HintLabel")
 		_long_text = _long(_add_label(shown.description, &"HintLabel", true), 3)
 		tooltip_text = shown.description
 	else:

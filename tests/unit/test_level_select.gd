@@ -101,7 +101,11 @@ func test_best_results_are_shown_on_the_cards() -> void:
 	var pachinko_id := BoardLoader.list_boards(BoardLevel.Kind.PACHINKO)[0].level.board_id
 	var mazes := MazeProgress.sorted(BoardLoader.list_boards(BoardLevel.Kind.MAZE))
 	var maze_id := mazes[0].level.board_id
-	assert_has(_card_texts(await _open("pachinko")), "Not played yet")
+	assert_has(
+		_card_texts(await _open("pachinko")),
+		"No finish yet",
+		"a board never finished (the save keeps no attempts: true whether played or not)"
+	)
 	App.record_pachinko_balls(pachinko_id, 23)
 	App.record_maze_time(maze_id, false, 101.34)
 	assert_has(_card_texts(await _open("pachinko")), "Best: 23 balls paid back")
