@@ -106,6 +106,8 @@ func show_start(level: BoardLevel) -> void:
 					(
 						"[b]Power aims:[/b] the weakest shot drops in beside the rail on the right; the"
 						+ " stronger, the farther left; full power rides over the top to the far side."
+						+ " While you aim, dots show the ball's flight to the first pin it meets, and"
+						+ " a gold mark on the power bar keeps your last shot."
 					),
 					"The game ends when the cup is empty and every ball has come down.",
 					SESSION_KEPT % KeyNames.of(&"game_restart", "the restart key"),

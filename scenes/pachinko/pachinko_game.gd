@@ -346,6 +346,8 @@ func _on_loaded_changed() -> void:
 func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
 	launcher.set_loaded(rules.loaded)
 	cup.set_count(rules.balls_to_shoot)
+	if not rules.handle.held:
+		launcher.set_last_shot(power)  # the handle's own dial keeps its strength
 	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
 
 
