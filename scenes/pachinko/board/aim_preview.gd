@@ -126,8 +126,8 @@ func _draw() -> void:
 		var length := a.distance_to(b)
 		while next_dot <= walked + length:
 			var at := a.lerp(b, (next_dot - walked) / maxf(length, 0.001))
-			draw_circle(at, 2.6, Color(DOT_SHADE, DOT_SHADE.a * _alpha), true, -1.0, true)
-			draw_circle(at, 1.7, Color(DOT, DOT.a * _alpha), true, -1.0, true)
+			draw_circle(at, 3.2, Color(DOT_SHADE, DOT_SHADE.a * _alpha), true, -1.0, true)
+			draw_circle(at, 2.2, Color(DOT, DOT.a * _alpha), true, -1.0, true)
 			next_dot += DOT_GAP
 		walked += length
 	var landing := _preview.landing(_power)

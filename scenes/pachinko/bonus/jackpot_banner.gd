@@ -10,7 +10,11 @@ const ROUND_SECONDS := 1.6
 const SUMMARY_SECONDS := 5.0
 ## The summary card: its width as a share of the ring's radius, and its colours.
 const CARD_WIDTH := 1.3
-const CARD := Color(0.07, 0.04, 0.12, 0.88)
+const CARD := Color(0.07, 0.04, 0.12, 0.94)
+## The card's font sizes (board pixels) and the room each of its lines takes.
+const CARD_SIZE := 28
+const CARD_TITLE_SIZE := 58
+const CARD_LINE := 40.0
 const CARD_EDGE := Color("ffcf4a")
 
 var _center := Vector2.ZERO
@@ -127,8 +131,12 @@ func _draw() -> void:
 # The summary: a dark card with a gold edge, "JACKPOT OVER" over the balls it paid, then
 # its lines; steady (no growing title) so it reads at a glance.
 func _draw_card(font: Font, fade: float) -> void:
-	var half := Vector2(_radius * CARD_WIDTH * 0.5, 46.0 + 20.0 * _lines.size())
-	var card := Rect2(_center - half, half * 2.0)
+	var width := font.get_string_size(_title, HORIZONTAL_ALIGNMENT_LEFT, -1, CARD_TITLE_SIZE).x
+	for line in _lines:
+		width = maxf(width, font.get_string_size(line, HORIZONTAL_ALIGNMENT_LEFT, -1, CARD_SIZE).x)
+	width = minf(maxf(width + 56.0, _radius * CARD_WIDTH), _radius * 1.9)
+	var height := 118.0 + CARD_LINE * _lines.size() + 10.0
+	var card := Rect2(_center - Vector2(width, height) * 0.5, Vector2(width, height))
 	var box := StyleBoxFlat.new()
 	box.bg_color = Color(CARD, CARD.a * fade)
 	box.border_color = Color(CARD_EDGE, fade)
@@ -136,11 +144,11 @@ func _draw_card(font: Font, fade: float) -> void:
 	box.set_corner_radius_all(14)
 	draw_style_box(box, card)
 	var top := card.position.y
-	_centered(font, _subtitle, Vector2(_center.x, top + 40.0), 28, Color.WHITE, fade)
-	_centered(font, _title, Vector2(_center.x, top + 98.0), 58, Color("ffe14d"), fade)
+	_centered(font, _subtitle, Vector2(_center.x, top + 40.0), CARD_SIZE, Color.WHITE, fade)
+	_centered(font, _title, Vector2(_center.x, top + 98.0), CARD_TITLE_SIZE, Color("ffe14d"), fade)
 	for i in _lines.size():
-		var at := Vector2(_center.x, top + 142.0 + i * 38.0)
-		_centered(font, _lines[i], at, 28, Color("f3ecff"), fade)
+		var at := Vector2(_center.x, top + 98.0 + CARD_LINE * (i + 1))
+		_centered(font, _lines[i], at, CARD_SIZE, Color("f3ecff"), fade)
 
 
 func _centered(font: Font, text: String, at: Vector2, size: int, color: Color, fade: float) -> void:
