@@ -35,8 +35,12 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## Pachinko 4: a jackpot is ten rounds (JackpotRounds), a reach's last reel turns longer and
 ## the first spin no longer waits, so a run on a board with reels plays differently than
 ## under 3.
+## Pachinko 5: the handle's spring spreads its balls over 6 points of strength either side
+## (LaunchHandle.JITTER, 2 before), so a recorded handle stream plays differently than
+## under 4, and the shipped boards' payouts were re-tuned so no held strength pays more
+## than it costs for long (tools/power_returns.gd).
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
-const RULES_VERSIONS := {"maze": 2, "pachinko": 4}
+const RULES_VERSIONS := {"maze": 2, "pachinko": 5}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME
