@@ -19,8 +19,10 @@ const NAMES: Array[String] = [
 	"pachinko_bonus", "pachinko_reach", "pachinko_jackpot", "pachinko_round", "pachinko_jackpot_end"
 ]
 const FRAME := 1.0 / 60.0
-## Game seconds a shot may play before it gives up.
-const LIMIT := 2400.0
+## Game seconds a shot may play before it gives up (90 minutes: with rules 5's one jackpot in
+## 81 spins, about 2.6 an hour at this pace, 40 minutes went by without one about one run in
+## six).
+const LIMIT := 5400.0
 
 
 ## Opens the game on Fever, plays into the moment of `shot_name` and saves it.
