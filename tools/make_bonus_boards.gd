@@ -19,9 +19,12 @@ const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd"
 const CENTER := 350.0
 const ROLE := BonusPocketSpec.Role
 ## Symbols per reel: a jackpot (three alike) comes once in SYMBOLS² spins. Rare and big
-## (issue 41): with JackpotRounds' ten rounds a jackpot pays over 100 balls, and with 7
-## symbols the analysis return at uniform power stays in 0.80 to 0.95.
-const SYMBOLS := 7
+## (issue 41): with JackpotRounds' ten rounds a jackpot pays over 100 balls. 9 (1 in 81; 7
+## before): both boards' start pockets sit under the middle strengths, so with 7 a handle
+## held there drew jackpots so often it paid two balls a ball. With rarer jackpots, start
+## pockets paying 1 and the payouts below, no held strength pays much more than another
+## (tools/power_returns.gd) and the return at uniform power stays in 0.80 to 0.95.
+const SYMBOLS := 9
 ## Balls in the cup at the start: enough for a session of minutes at a steady pace
 ## (`--sessions=20`: median over 4 minutes, 10th percentile over 90 s).
 const FEVER_CUP := 100
@@ -56,10 +59,10 @@ static func make_fever() -> BoardLevel:
 	var spot := Vector2(350, 215)
 	Originals.erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), CENTER)
 	history.commit(PatternAction.new(level, windmill, spot, CENTER))
-	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 3, {"symbols": SYMBOLS})
+	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 1, {"symbols": SYMBOLS})
 	_funnel(history, level, Vector2(350, 400), 13.0)
 	var attacker := {"open_seconds": 10.0, "open_catches": 10}
-	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 515), 64.0, 15, attacker)
+	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 515), 64.0, 11, attacker)
 	# The funnel reaches past the cleared cup: clear round it too so no pin pinches a ball.
 	var funnel_room := Rect2(Vector2(350 - 32 - 44, 515 - 50), Vector2(2 * (32 + 44), 40))
 	Originals.erase_pins_in(history, level, funnel_room, CENTER)
@@ -68,7 +71,7 @@ static func make_fever() -> BoardLevel:
 	_bonus(history, level, ROLE.TULIP, Vector2(150, 330), 26.0, 3, {})
 	for mouth: Vector2 in [Vector2(240, 480)]:
 		Originals.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
-		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 3, CENTER))
+		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 6, CENTER))
 	return level
 
 
@@ -88,11 +91,11 @@ static func make_hanami() -> BoardLevel:
 	Originals.erase_pins_outside_field(history, level, 22.0)
 	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
-	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 3, {"symbols": SYMBOLS})
+	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 1, {"symbols": SYMBOLS})
 	var attacker := {"open_seconds": 15.0, "open_catches": 10}
-	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 15, attacker)
-	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 3, {})
-	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 3, {})
+	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 13, attacker)
+	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 5, {})
+	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 2, {})
 	return level
 
 

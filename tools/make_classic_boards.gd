@@ -61,15 +61,19 @@ const MAZE_WALLS := [
 const MAZE_STARTS := [[0, 0], [9, 0], [0, 8], [9, 8]]
 const MAZE_HOLES := [[0, 5], [2, 0], [2, 4], [4, 6], [6, 2], [6, 8], [8, 1], [8, 2]]
 
-# Pachinko: five pockets (mouth centre x, y), each paying POCKET_PAYOUT balls.
-const POCKETS := [[350.0, 300.0], [215.0, 390.0], [485.0, 390.0], [285.0, 515.0], [415.0, 515.0]]
+# Pachinko: five pockets (mouth centre x, y, payout). They paid six each (the chapter paid
+# four), and a held handle strength that fed the middle paid 1.6 balls a ball: now the side
+# pair, which every strength reaches least, pay most, so no strength pays much more than
+# another (tools/power_returns.gd; the return at uniform power stays about 0.85).
+const POCKETS := [
+	[350.0, 300.0, 3],
+	[215.0, 390.0, 10],
+	[485.0, 390.0, 10],
+	[285.0, 515.0, 2],
+	[415.0, 515.0, 2],
+]
 const POCKET_WIDTH := 22.0
 const POCKET_DEPTH := 24.0
-## The chapter paid four balls a pocket. Since power aims across the whole field (the rail
-## opens lower, every power clears it) the pockets catch fewer of the random-power shots,
-## so each pays six: a return of about 0.87 a ball in the analysis (--analyze, powers in
-## hundredths; seven gave 1.02 there) and about 0.75 in play (--autoplay: balls meet).
-const POCKET_PAYOUT := 6
 const PIN_SPACING := Vector2(26.0, 24.0)
 # Field pins stay this far inside the guide arc, so a ball can pass between them and it.
 const FIELD_MARGIN := 20.0
@@ -86,7 +90,10 @@ static func make_pachinko() -> BoardLevel:
 	level.kind = BoardLevel.Kind.PACHINKO
 	level.board_id = "pachinko_classic"
 	level.display_name = "Classic"
-	level.description = "The original machine: five pockets, each paying six balls."
+	level.description = (
+		"The original machine: five pockets; the two out on the sides pay ten balls, the top one"
+		+ " three, the low pair two."
+	)
 	level.size = Vector2(700, 700)
 	level.ball_radius = 5.0
 	level.tuning = TuningPresets.pachinko()
@@ -104,7 +111,8 @@ static func make_pachinko() -> BoardLevel:
 	var pockets: Array[PocketSpec] = []
 	for mouth: Array in POCKETS:
 		var at := Vector2(_number(mouth, 0), _number(mouth, 1))
-		pockets.append(PocketSpec.create(at, POCKET_WIDTH, POCKET_DEPTH, POCKET_PAYOUT))
+		var payout := int(_number(mouth, 2))
+		pockets.append(PocketSpec.create(at, POCKET_WIDTH, POCKET_DEPTH, payout))
 	level.pockets = pockets
 	# Field pins: a staggered lattice inside the guide arc, cleared around each pocket.
 	var field_radius := LaunchRail.guide_radius(level) - FIELD_MARGIN

@@ -70,14 +70,19 @@ static func make_tulips() -> BoardLevel:
 	history.commit(PatternAction.new(level, _lattice(27, 22.0, 31), Vector2(CENTER, CENTER)))
 	erase_pins_outside_field(history, level, 22.0)
 	# Plain pockets [mouth, payout]; the ones off the centre line are mirrored to the right.
-	for pocket: Array in [[Vector2(350, 280), 3], [Vector2(280, 470), 3], [Vector2(350, 590), 3]]:
+	# (Payouts re-tuned so no held handle strength pays much more than another: the pair low
+	# on the flanks 4, the top 2; tools/power_returns.gd.)
+	for pocket: Array in [[Vector2(350, 280), 2], [Vector2(280, 470), 4], [Vector2(350, 590), 3]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(40, 34), Vector2(80, 78)), axis)
 		history.commit(PocketAction.new(level, mouth, 22.0, 24.0, pocket[1], axis))
 	# Tulips, each mirrored: high on the flanks and lower out wide.
-	for mouth: Vector2 in [Vector2(220, 240), Vector2(170, 420)]:
+	# [mouth, payout]: the high pair catches a middle strength's every ball, so it pays 1.
+	for tulip: Array in [[Vector2(220, 240), 1], [Vector2(170, 420), 4]]:
+		var mouth: Vector2 = tulip[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(40, 34), Vector2(80, 78)), axis)
-		var spec := BonusPocketSpec.of_role(BonusPocketSpec.Role.TULIP, mouth, 26.0, 26.0, 3)
+		var role := BonusPocketSpec.Role.TULIP
+		var spec := BonusPocketSpec.of_role(role, mouth, 26.0, 26.0, tulip[1])
 		history.commit(BonusActions.AddBonus.new(level, spec, axis))
 	shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	return level
@@ -102,7 +107,9 @@ static func make_windmills() -> BoardLevel:
 		var x := CENTER + (17.0 if row % 2 == 1 else 0.0)
 		history.commit(PatternAction.new(level, row_pattern, Vector2(x, 130.0 + row * 36.0)))
 	erase_pins_outside_field(history, level, 22.0)
-	for pocket: Array in [[Vector2(350, 390), 5], [Vector2(220, 560), 6]]:
+	# (The middle pocket, under the strengths that pay most, pays 1, the low pair 8: no held
+	# handle strength pays much more than another; tools/power_returns.gd.)
+	for pocket: Array in [[Vector2(350, 390), 1], [Vector2(220, 560), 8]]:
 		var mouth: Vector2 = pocket[0]
 		erase_pins_in(history, level, Rect2(mouth - Vector2(45, 60), Vector2(90, 100)), axis)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))

@@ -20,6 +20,12 @@ const MAX_COVER := 0.94
 ## Seconds the card is up before anything takes it away: a click queued while the board
 ## loaded, or a double click on the level select, lands before this and is not a choice.
 const READ_SECONDS := 0.5
+## What ending a game early does (R, the pause menu's Restart, Other boards): all three keep
+## what it paid back for the board's best, so the card says it once for all of them.
+const SESSION_KEPT := (
+	"A new game (%s) or other boards ends this one early; what it paid back still counts"
+	+ " for your best."
+)
 
 ## What this board's pieces do, under the words (only at the start).
 var _legend := PieceLegend.new()
@@ -100,8 +106,11 @@ func show_start(level: BoardLevel) -> void:
 					(
 						"[b]Power aims:[/b] the weakest shot drops in beside the rail on the right; the"
 						+ " stronger, the farther left; full power rides over the top to the far side."
+						+ " While you aim, dots show the ball's flight to the first pin it meets, and"
+						+ " a gold mark on the power bar keeps your last shot."
 					),
 					"The game ends when the cup is empty and every ball has come down.",
+					SESSION_KEPT % KeyNames.of(&"game_restart", "the restart key"),
 				]
 			)
 		)

@@ -131,7 +131,9 @@ func _unhandled_input(event: InputEvent) -> void:
 	if rules == null:
 		return
 	if event.is_action_pressed("game_restart"):
-		_new_rules()
+		# the same as the pause menu's Restart and as leaving for other boards: the session
+		# so far counts for the board's best (R used to drop it)
+		restart()
 		get_viewport().set_input_as_handled()
 		return
 	if rules.state != PachinkoRules.State.PLAYING:
@@ -241,7 +243,7 @@ func _show_notes() -> void:
 		lines
 		. append(
 			(
-				"%s restart  ·  %s pause  ·  %s frame counter"
+				"%s new game  ·  %s pause  ·  %s frame counter"
 				% [
 					KeyNames.of(&"game_restart", "?"),
 					KeyNames.of(&"pause", "?"),
@@ -328,8 +330,9 @@ func _on_game_ended(summary: Dictionary) -> void:
 	sounds.play(SoundBank.GAME_OVER)
 
 
-func _on_cup_changed(count: int) -> void:
-	cup.set_count(count)
+# The cup shows every ball still to shoot: the cup's and the one in the launcher.
+func _on_cup_changed(_count: int) -> void:
+	cup.set_count(rules.balls_to_shoot)
 
 
 func _on_power_changed(power: float) -> void:
@@ -342,6 +345,9 @@ func _on_loaded_changed() -> void:
 
 func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
 	launcher.set_loaded(rules.loaded)
+	cup.set_count(rules.balls_to_shoot)
+	if not rules.handle.held:
+		launcher.set_last_shot(power)  # the handle's own dial keeps its strength
 	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
 
 

@@ -35,10 +35,14 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## Pachinko 4: a jackpot is ten rounds (JackpotRounds), a reach's last reel turns longer and
 ## the first spin no longer waits, so a run on a board with reels plays differently than
 ## under 3.
+## Pachinko 5: the handle's spring spreads its balls over 6 points of strength either side
+## (LaunchHandle.JITTER, 2 before), so a recorded handle stream plays differently than
+## under 4, and the shipped boards' payouts were re-tuned so the best held strength pays far
+## less than before (tools/power_returns.gd; still more than it costs on every board).
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
 ## Maze 3: the dish wakes only the balls it holds (it woke every ball each step), so balls
 ## resting elsewhere fall asleep while one sits in the dish and a run plays differently.
-const RULES_VERSIONS := {"maze": 3, "pachinko": 4}
+const RULES_VERSIONS := {"maze": 3, "pachinko": 5}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME

@@ -17,11 +17,11 @@ func test_accounting_holds_after_a_long_seeded_autoplay() -> void:
 	assert_gt(int(result["drained"]), 0)
 	assert_eq((result["pocket_hits"] as Array).size(), _level().pockets.size())
 	assert_eq(int(result["frames_simulated"]), 1800)
-	var hits := 0
-	for h: int in result["pocket_hits"]:
-		hits += h
-	var pays := _level().pockets[0].payout
-	assert_eq(hits * pays, int(result["payouts"]), "classic pockets pay %d each" % pays)
+	var paid := 0
+	var hits: Array = result["pocket_hits"]
+	for i in hits.size():
+		paid += int(hits[i]) * _level().pockets[i].payout
+	assert_eq(paid, int(result["payouts"]), "each catch pays its own pocket's payout")
 
 
 func test_the_same_seed_gives_the_same_result() -> void:

@@ -27,7 +27,8 @@ func _joined(lines: PackedStringArray) -> String:
 func test_classic_explains_only_its_pockets() -> void:
 	var lines := _lines_for("classic")
 	assert_eq(lines.size(), 1)
-	assert_string_contains(lines[0], "Pocket: a ball that drops in pays 6 balls")
+	# rules 5: the side pair pays 10, the top 3, the low pair 2 (see test_board_levels)
+	assert_string_contains(lines[0], "Pocket: a ball that drops in pays 2 to 10 balls")
 
 
 func test_hanami_explains_its_start_pockets_attacker_and_tulips() -> void:
@@ -41,7 +42,7 @@ func test_hanami_explains_its_start_pockets_attacker_and_tulips() -> void:
 func test_tulip_garden_explains_its_pockets_and_tulips_only() -> void:
 	var text := _joined(_lines_for("tulips"))
 	assert_string_contains(text, "Pocket: ")
-	assert_string_contains(text, "Tulip: pays 3 balls")
+	assert_string_contains(text, "Tulip: pays 1 to 4 balls")
 	assert_false(text.contains("START"))
 	assert_false(text.contains("ATTACKER"))
 
@@ -84,5 +85,7 @@ func test_mixed_payouts_read_as_a_range() -> void:
 	var level := (
 		BoardLoader.load_board("res://levels/pachinko/classic.board").level.duplicate_level()
 	)
+	for spec in level.pockets:
+		spec.payout = 6
 	level.pockets[0].payout = 2
 	assert_string_contains(BoardPieces.line(level, BoardPieces.Piece.POCKET), "2 to 6 balls")

@@ -101,4 +101,6 @@ func test_reach_and_jackpot_sound_and_announce_their_rounds() -> void:
 	machine.rounds.paid = 150
 	machine.rounds.current_round = JackpotRounds.ROUNDS
 	machine.rounds.end_round()
-	assert_string_contains(banner.caption(), "150 BALLS")
+	assert_string_contains(banner.caption(), "+150 BALLS")
+	assert_string_contains(banner.caption(), "%d rounds played" % JackpotRounds.ROUNDS)
+	assert_string_contains(banner.caption(), "balls paid back", "with the game's total")

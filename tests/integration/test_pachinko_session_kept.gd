@@ -51,3 +51,34 @@ func test_a_session_that_paid_nothing_records_nothing() -> void:
 	var board := game.rules.level.board_id
 	game.free()
 	assert_eq(App.best_pachinko_balls(board), -1)
+
+
+# A play trial found R dropped the session while the pause menu's Restart and Other boards
+# kept it: the key now ends the game the same way.
+func test_the_restart_key_keeps_the_session_like_the_menu() -> void:
+	var game := _playing_game()
+	var board := game.rules.level.board_id
+	game.rules.ledger.paid += 30
+	var key := InputEventAction.new()
+	key.action = &"game_restart"
+	key.pressed = true
+	game._unhandled_input(key)
+	assert_eq(App.best_pachinko_balls(board), 30, "R keeps the session as Restart does")
+	assert_ne(game.rules.state, PachinkoRules.State.PLAYING, "and starts a new game")
+	assert_string_contains(game.notes.text, "new game", "the key reads as a new game")
+	assert_string_contains(
+		game.instructions._body.text, "still counts for your best", "the card says so"
+	)
+	game.free()
+
+
+# The cup showed one ball fewer than the board gives (one sits in the launcher): it counts
+# every ball the player still has to shoot.
+func test_the_cup_shows_every_ball_to_shoot() -> void:
+	var game := _playing_game()
+	var start := game.rules.level.cup_start_balls
+	assert_eq(game.rules.balls_to_shoot, start, "cup and launcher together")
+	assert_eq(game.cup.count(), start, "the cup shows the board's start balls, not one fewer")
+	game.rules.fire(50.0)
+	assert_eq(game.cup.count(), start - 1, "one fewer once a ball is shot")
+	game.free()

@@ -1,10 +1,13 @@
 extends RefCounted
 ## The bonus layer's shots on the Fever board: "pachinko_bonus" the reels turning (one
 ## landed, two rolling), "pachinko_reach" a reach on centre stage (the last reel slowing),
-## "pachinko_jackpot" the jackpot moment with the attacker open, and "pachinko_round" a later
-## round of the jackpot. Each opens the game as the level select does and plays the screen's
-## own rules forward at 60 fps until the moment comes; nothing is faked (the views that ease
-## in are given the real seconds they would have had on screen).
+## "pachinko_jackpot" the jackpot moment with the attacker open, "pachinko_round" a later
+## round of the jackpot, and "pachinko_jackpot_end" the summary card once a jackpot's last
+## round is over (that jackpot given by setting the reels to three alike after 20 s of play,
+## as tools/jackpot_sample.gd does: a natural one is rare). Each opens the game as the level
+## select does and plays the screen's own rules forward at 60 fps until the moment comes;
+## nothing else is faked (the views that ease in are given the real seconds they would have
+## had on screen).
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
@@ -13,11 +16,13 @@ const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/fever.board"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"pachinko_bonus", "pachinko_reach", "pachinko_jackpot", "pachinko_round"
+	"pachinko_bonus", "pachinko_reach", "pachinko_jackpot", "pachinko_round", "pachinko_jackpot_end"
 ]
 const FRAME := 1.0 / 60.0
-## Game seconds a shot may play before it gives up.
-const LIMIT := 2400.0
+## Game seconds a shot may play before it gives up (90 minutes: with rules 5's one jackpot in
+## 81 spins, about 2.6 an hour at this pace, 40 minutes went by without one about one run in
+## six).
+const LIMIT := 5400.0
 
 
 ## Opens the game on Fever, plays into the moment of `shot_name` and saves it.
@@ -34,11 +39,15 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if rules == null:
 		printerr("shots: %s: the game has no rules (the board did not load)" % shot_name)
 		return ERR_CANT_OPEN
+	if shot_name == "pachinko_jackpot_end":
+		_play_for(rules, 20.0)
+		rules.bonus.reels.start(PackedInt32Array([2, 2, 2]), 9)
 	var moments := {
 		"pachinko_bonus": _spinning,
 		"pachinko_reach": _mid_reach,
 		"pachinko_jackpot": _jackpot,
 		"pachinko_round": _third_round,
+		"pachinko_jackpot_end": _jackpot_over,
 	}
 	if not _play_until(rules, moments[shot_name]):
 		printerr("shots: %s: the moment did not come in %d s of play" % [shot_name, LIMIT])
@@ -57,6 +66,8 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if shot_name == "pachinko_round":
 		_play_for(rules, 0.5)
 		bonus_view.get("banner").call("_process", 0.5)
+	if shot_name == "pachinko_jackpot_end":
+		bonus_view.get("banner").call("_process", 1.0)
 	if shot_name == "pachinko_reach":
 		bonus_view.get("stage").call("_process", 1.0)  # the stage has come in
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
@@ -74,6 +85,11 @@ static func _jackpot(rules: PachinkoRules) -> bool:
 # Half way through a reach: the last reel has slowed a good deal.
 static func _mid_reach(rules: PachinkoRules) -> bool:
 	return rules.bonus.reels.reach_progress() >= 0.5
+
+
+# The jackpot given at the start has played its last round.
+static func _jackpot_over(rules: PachinkoRules) -> bool:
+	return rules.bonus.counters().get("jackpots_finished", 0) > 0
 
 
 static func _third_round(rules: PachinkoRules) -> bool:

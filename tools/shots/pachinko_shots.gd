@@ -1,6 +1,8 @@
 extends RefCounted
 ## The pachinko shots: "pachinko_start" the instructions, "pachinko_play" a stream
-## from the held handle with struck pins lit and the flipper drawn back, "pachinko_win"
+## from the held handle with struck pins lit and the flipper drawn back, "pachinko_aim" the
+## flipper drawn back after a first shot (the flight shown on the board, the last shot's
+## mark on the power bar), "pachinko_win"
 ## the moment a pocket pays out, "pachinko_over" game over. Each opens the game as the
 ## level select does (App.start_game) and plays the screen's own rules
 ## (PachinkoGame.rules) forward at 60 fps; nothing is faked.
@@ -11,7 +13,9 @@ const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/classic.board"
 ## The shots this file takes, in order.
-const NAMES: Array[String] = ["pachinko_start", "pachinko_play", "pachinko_win", "pachinko_over"]
+const NAMES: Array[String] = [
+	"pachinko_start", "pachinko_play", "pachinko_aim", "pachinko_win", "pachinko_over"
+]
 const FRAME := 1.0 / 60.0
 
 
@@ -34,6 +38,17 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		"pachinko_play":
 			_play(rules, game.get_node("BoardView/PinLights"))
 			game.get_node("Hud/Column/Info/Numbers/Stats").call("show_stats", rules.stats())
+		"pachinko_aim":
+			(game as PachinkoGame).board_view.aim_preview().preview()  # measured by now
+			rules.start_game()
+			rules.begin_charge()
+			rules.set_power(80.0)
+			rules.release()
+			for frame in 60 * 2:
+				rules.advance(FRAME)
+			rules.begin_charge()
+			rules.set_power(52.0)
+			(game as PachinkoGame).board_view.aim_preview().call("_process", 0.5)
 		"pachinko_win":
 			if not _win(rules):
 				printerr("shots: pachinko_win: no pocket paid out in 90 s of play")

@@ -16,6 +16,7 @@ const WinEffects := preload("res://scenes/pachinko/board/win_effects.gd")
 const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
 const WindmillLayer := preload("res://scenes/pachinko/board/windmill_layer.gd")
 const NamePlateLayer := preload("res://scenes/pachinko/board/name_plate_layer.gd")
+const AimPreview := preload("res://scenes/pachinko/board/aim_preview.gd")
 const FASCIA_SIZE := 1000.0
 ## How far the plate reaches beyond the ring, as a share of the ring radius.
 const PLATE_REACH := 1.1
@@ -61,6 +62,7 @@ func bind(rules: PachinkoRules) -> void:
 	balls.bind(rules)
 	_pin_lights().bind(rules)
 	_windmill_layer().bind(rules)
+	aim_preview().bind(rules)
 	_dress(level)
 	_bake_scale = 0.0
 	_rebake()
@@ -96,6 +98,18 @@ func _pin_lights() -> PinLights:
 		add_child(lights)
 		move_child(lights, balls.get_index())
 	return lights
+
+
+## The aim preview (where a shot at the power being aimed flies), made on first use and
+## drawn over the balls.
+func aim_preview() -> AimPreview:
+	var layer := get_node_or_null(^"AimPreview") as AimPreview
+	if layer == null:
+		layer = AimPreview.new()
+		layer.name = "AimPreview"
+		add_child(layer)
+		move_child(layer, balls.get_index() + 1)
+	return layer
 
 
 ## The turning windmills, made on first use and drawn under the balls (above the pin lights).

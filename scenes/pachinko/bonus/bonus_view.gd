@@ -21,6 +21,8 @@ var slow_motion := ReachSlowMotion.new()
 
 var _sounds: SoundBank
 var _rules: PachinkoRules
+## The rounds of the jackpot under way that are over (its summary says how many were played).
+var _rounds_played := 0
 
 
 ## The sound bank the bonus moments play on (a test may hand it a recording one).
@@ -73,6 +75,7 @@ func bind(rules: PachinkoRules) -> void:
 	machine.tulip_changed.connect(_on_tulip_changed)
 	machine.reach_started.connect(_on_reach_started)
 	machine.jackpot_round_started.connect(_on_round_started)
+	machine.jackpot_round_ended.connect(_on_round_ended)
 	machine.jackpot_ended.connect(_on_jackpot_ended)
 	rules.ball_won.connect(_on_ball_won)
 
@@ -107,6 +110,10 @@ func _on_reach_started() -> void:
 	_play(SoundBank.REACH_RISE, -3.0)
 
 
+func _on_round_ended(round_number: int, _rounds: int) -> void:
+	_rounds_played = round_number
+
+
 func _on_round_started(round_number: int, rounds: int) -> void:
 	if round_number > 1:  # the first comes with the jackpot's own moment
 		banner.show_round(_rules.level.ring_center, _rules.level.ring_radius, round_number, rounds)
@@ -114,7 +121,9 @@ func _on_round_started(round_number: int, rounds: int) -> void:
 
 
 func _on_jackpot_ended(paid: int) -> void:
-	banner.show_total(_rules.level.ring_center, _rules.level.ring_radius, paid)
+	var session_paid: int = _rules.stats(true).get("game_payouts", 0)
+	var level := _rules.level
+	banner.show_summary(level.ring_center, level.ring_radius, _rounds_played, paid, session_paid)
 	_play(SoundBank.FEVER_END, -3.0)
 
 

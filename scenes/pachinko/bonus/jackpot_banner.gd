@@ -7,7 +7,15 @@ extends Node2D
 ## Seconds each moment shows.
 const JACKPOT_SECONDS := 3.5
 const ROUND_SECONDS := 1.6
-const TOTAL_SECONDS := 3.0
+const SUMMARY_SECONDS := 5.0
+## The summary card: its width as a share of the ring's radius, and its colours.
+const CARD_WIDTH := 1.3
+const CARD := Color(0.07, 0.04, 0.12, 0.94)
+## The card's font sizes (board pixels) and the room each of its lines takes.
+const CARD_SIZE := 28
+const CARD_TITLE_SIZE := 58
+const CARD_LINE := 40.0
+const CARD_EDGE := Color("ffcf4a")
 
 var _center := Vector2.ZERO
 var _radius := 300.0
@@ -16,6 +24,8 @@ var _seconds := 0.0
 var _title := ""
 var _subtitle := ""
 var _flash := false
+## The summary card's lines under its title (empty: no card, a plain moment).
+var _lines := PackedStringArray()
 
 
 ## Shows the jackpot on a board with its ring at `center`, `radius` px: its first round of
@@ -40,10 +50,20 @@ func show_round(center: Vector2, radius: float, round_number: int, rounds: int) 
 	)
 
 
-## Shows what the jackpot paid once its last round is over.
-func show_total(center: Vector2, radius: float, paid: int) -> void:
-	var balls := "1 BALL" if paid == 1 else "%d BALLS" % paid
-	_show(center, radius, balls, "the jackpot paid", TOTAL_SECONDS, false)
+## Shows the jackpot's summary once its last round is over: a card with the rounds played,
+## the balls it paid and what this game has paid back in all (`session_paid`), held
+## SUMMARY_SECONDS so it can be read while play goes on.
+func show_summary(
+	center: Vector2, radius: float, rounds_played: int, paid: int, session_paid: int
+) -> void:
+	var balls := "+1 BALL" if paid == 1 else "+%d BALLS" % paid
+	_show(center, radius, balls, "JACKPOT OVER", SUMMARY_SECONDS, false)
+	_lines = PackedStringArray(
+		[
+			"%d %s played" % [rounds_played, "round" if rounds_played == 1 else "rounds"],
+			"This game so far: %d balls paid back" % session_paid,
+		]
+	)
 
 
 ## True while a moment is on screen.
@@ -51,9 +71,14 @@ func is_showing() -> bool:
 	return _age < _seconds
 
 
-## The words on screen now: title and subtitle ("" when nothing shows).
+## The words on screen now: title and subtitle, then a summary's lines ("" when nothing
+## shows).
 func caption() -> String:
-	return "%s %s" % [_title, _subtitle] if is_showing() else ""
+	if not is_showing():
+		return ""
+	var words := PackedStringArray([_title, _subtitle])
+	words.append_array(_lines)
+	return " ".join(words)
 
 
 func _show(
@@ -65,6 +90,7 @@ func _show(
 	_subtitle = subtitle
 	_seconds = seconds
 	_flash = flash
+	_lines = PackedStringArray()
 	_age = 0.0
 	set_process(true)
 	queue_redraw()
@@ -92,11 +118,37 @@ func _draw() -> void:
 		draw_circle(_center, _radius, Color(1.0, 0.82, 0.3, flash))
 	var fade := clampf((1.0 - t) / 0.3, 0.0, 1.0) * clampf(_age / 0.12, 0.0, 1.0)
 	var font := ThemeDB.fallback_font
+	if not _lines.is_empty():
+		_draw_card(font, fade)
+		return
 	var size := int(40 + 30 * minf(t * 5.0, 1.0))
 	var at := _center + Vector2(0, _radius * 0.05)
 	_centered(font, _title, at, size, Color("ffe14d"), fade)
 	if t > 0.15:
 		_centered(font, _subtitle, at + Vector2(0.0, 40.0), 26, Color.WHITE, fade)
+
+
+# The summary: a dark card with a gold edge, "JACKPOT OVER" over the balls it paid, then
+# its lines; steady (no growing title) so it reads at a glance.
+func _draw_card(font: Font, fade: float) -> void:
+	var width := font.get_string_size(_title, HORIZONTAL_ALIGNMENT_LEFT, -1, CARD_TITLE_SIZE).x
+	for line in _lines:
+		width = maxf(width, font.get_string_size(line, HORIZONTAL_ALIGNMENT_LEFT, -1, CARD_SIZE).x)
+	width = minf(maxf(width + 56.0, _radius * CARD_WIDTH), _radius * 1.9)
+	var height := 118.0 + CARD_LINE * _lines.size() + 10.0
+	var card := Rect2(_center - Vector2(width, height) * 0.5, Vector2(width, height))
+	var box := StyleBoxFlat.new()
+	box.bg_color = Color(CARD, CARD.a * fade)
+	box.border_color = Color(CARD_EDGE, fade)
+	box.set_border_width_all(4)
+	box.set_corner_radius_all(14)
+	draw_style_box(box, card)
+	var top := card.position.y
+	_centered(font, _subtitle, Vector2(_center.x, top + 40.0), CARD_SIZE, Color.WHITE, fade)
+	_centered(font, _title, Vector2(_center.x, top + 98.0), CARD_TITLE_SIZE, Color("ffe14d"), fade)
+	for i in _lines.size():
+		var at := Vector2(_center.x, top + 98.0 + CARD_LINE * (i + 1))
+		_centered(font, _lines[i], at, CARD_SIZE, Color("f3ecff"), fade)
 
 
 func _centered(font: Font, text: String, at: Vector2, size: int, color: Color, fade: float) -> void:

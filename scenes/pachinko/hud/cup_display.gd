@@ -8,7 +8,7 @@ const PayoutPour := preload("res://scenes/pachinko/hud/payout_pour.gd")
 const MAX_HEAP := 40
 const TRAY := Color("b9bfcc")
 const TRAY_DARK := Color("4b5064")
-## The font size of "balls in the cup" under the count.
+## The font size of the words under the count.
 const LABEL_FONT_SIZE := 15
 
 var _count := 0
@@ -17,8 +17,8 @@ var _ball: Texture2D
 var _pour := PayoutPour.new()
 
 
-## The cup holds `balls` balls (the rules' count, paid balls included); a rise bounces the
-## number.
+## The player has `balls` balls left to shoot (PachinkoRules.balls_to_shoot: the cup's and
+## the one in the launcher, paid balls included); a rise bounces the number.
 func set_count(balls: int) -> void:
 	if balls > _count:
 		_bump = 1.0
@@ -112,7 +112,7 @@ func _draw() -> void:
 	var base := Vector2(w * 0.5 - tw * 0.5, rim.position.y + rim.size.y * 0.5 + font_size * 0.35)
 	draw_string_outline(font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size, 6, TRAY_DARK)
 	draw_string(font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, font_size, Color("1b1530"))
-	var label := "balls in the cup"
+	var label := "balls left to shoot"
 	var lw := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, LABEL_FONT_SIZE).x
 	draw_string(
 		font,

@@ -1,5 +1,6 @@
 extends Control
-## The launcher: a vertical power bar that fills red from 0 to 100, the flipper lever,
+## The launcher: a vertical power bar that fills red from 0 to 100 (a gold mark keeps the
+## last single shot's power), the flipper lever,
 ## which turns 0–20° with the power, and the handle's dial. A press on the lever starts a
 ## drawback (the game tracks the drag from there); a press on the dial holds the handle
 ## (a stream of balls) and the wheel over it turns it; the loaded-ball light shows whether
@@ -25,6 +26,8 @@ const DIAL_RADIUS := 27.0
 const DIAL_START_DEG := 135.0
 const DIAL_SWEEP_DEG := 270.0
 const STREAM := Color("6cf07a")
+## The mark on the bar at the last single shot's power.
+const LAST_SHOT := Color("ffd34d")
 ## Font sizes of the launcher's words: the status line, and the rest (the hint beside the
 ## bar, POWER under it, HANDLE under the dial), which is the smallest text of the panel.
 const STATUS_FONT_SIZE := 16
@@ -38,6 +41,7 @@ var _blocked := false
 var _hint := ""
 var _handle_held := false
 var _handle_power := 0.0
+var _last_shot := -1.0
 
 
 ## Shows the current drawback.
@@ -45,6 +49,17 @@ func set_power(power: float, degrees: float) -> void:
 	_power = power
 	_degrees = degrees
 	queue_redraw()
+
+
+## Marks `power` on the bar as the last single shot's, so a good shot can be repeated.
+func set_last_shot(power: float) -> void:
+	_last_shot = power
+	queue_redraw()
+
+
+## The power the bar marks as the last single shot's (-1 before the first).
+func last_shot() -> float:
+	return _last_shot
 
 
 ## Lights the "ready" lamp while a ball is loaded.
@@ -171,6 +186,19 @@ func _draw_bar() -> void:
 	var filled := Rect2(BAR.position + Vector2(0, BAR.size.y - fill), Vector2(BAR.size.x, fill))
 	draw_rect(filled, RED)
 	draw_rect(Rect2(filled.position, Vector2(6, filled.size.y)), RED.lightened(0.35))
+	if _last_shot >= 0.0:
+		# the last shot's mark: a gold line across the bar and a notch pointing at it
+		var y := BAR.end.y - BAR.size.y * clampf(_last_shot / 100.0, 0.0, 1.0)
+		draw_line(Vector2(BAR.position.x, y), Vector2(BAR.end.x, y), Color("14111d"), 5.0)
+		draw_line(Vector2(BAR.position.x, y), Vector2(BAR.end.x, y), LAST_SHOT, 2.0)
+		var notch := PackedVector2Array(
+			[
+				Vector2(BAR.end.x + 1.0, y),
+				Vector2(BAR.end.x + 10.0, y - 6.0),
+				Vector2(BAR.end.x + 10.0, y + 6.0)
+			]
+		)
+		draw_colored_polygon(notch, LAST_SHOT)
 	var font := get_theme_default_font()
 	for i in 11:
 		var y := BAR.end.y - BAR.size.y * i / 10.0

@@ -14,8 +14,11 @@ const INTERVAL := 0.6
 const DEFAULT_POWER := 60.0
 ## A handle's spring never strikes two balls quite alike: each ball of the stream goes at
 ## the set strength plus or minus up to this. Without it every ball would take the same
-## path (the simulation is exact), and one lucky strength would pay forever.
-const JITTER := 2.0
+## path (the simulation is exact), and one lucky strength would pay forever. At 2 it still
+## did: a play trial held the best strength and its game never ended (1.77 balls back a
+## ball over ten minutes on Classic); at 6 the stream spreads over a few pins' width, so
+## a strength pays what its part of the field pays (tools/power_returns.gd measures it).
+const JITTER := 6.0
 const MAX_POWER := 100.0
 
 ## True while the handle is held.

@@ -61,6 +61,12 @@ var state := State.INSTRUCTIONS
 var cup := 0
 ## True while a ball sits in the launcher.
 var loaded := false
+## The balls the player still has to shoot: the cup's and the one sitting in the launcher.
+## The cup alone is one short from the first ball loaded on (a play trial read a 25-ball
+## start as 24), so this is the count the player is shown.
+var balls_to_shoot: int:
+	get:
+		return cup + (1 if loaded else 0)
 ## Current drawback, 0..100 (the flipper's; read only).
 var power: float:
 	get:
