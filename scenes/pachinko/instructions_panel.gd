@@ -40,6 +40,11 @@ var _nudge: Tween
 @onready var _card: Control = $Card
 
 
+## The legend of the machine's pieces on the start card.
+func legend() -> Control:
+	return _legend
+
+
 func _ready() -> void:
 	_play.pressed.connect(_on_play_pressed)
 	var box := $Card/Margin/Box

@@ -1,3 +1,4 @@
+class_name PachinkoGame
 extends Control
 ## The pachinko game screen: loads the board the App picked, owns the PachinkoRules, draws
 ## the board on the left and the cup, launcher and stats on the right, and turns input
@@ -157,6 +158,22 @@ func _unhandled_input(event: InputEvent) -> void:
 ## screenshots.
 func bonus_view() -> BonusView:
 	return _bonus_view
+
+
+## The screen's view effects (slow motion on the last balls, shakes, flashes).
+func juice() -> JuiceView:
+	return _juice
+
+
+## What records this game for its replay.
+func recorder() -> ReplayRecorder:
+	return _recorder
+
+
+## Places the board and the side panel for the window as it is now (the screen does it on
+## every window change).
+func lay_out() -> void:
+	_layout()
 
 
 func full_power_drag() -> float:

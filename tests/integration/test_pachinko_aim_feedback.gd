@@ -4,7 +4,6 @@ extends GutTest
 ## keeps a mark at its power so a good shot can be repeated.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 
 
 func _playing_game() -> PachinkoGame:

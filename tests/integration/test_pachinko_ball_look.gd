@@ -4,7 +4,6 @@ extends GutTest
 ## a pin or a pocket that is hit flashes for long enough and brightly enough to be seen.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
 const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")

@@ -6,7 +6,6 @@ extends GutTest
 ## 100. Now a full-power drag is the same share of the board in every window.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(1280, 720), Vector2i(900, 700), Vector2i(720, 1280)]
 
@@ -24,7 +23,7 @@ func _drag(game: PachinkoGame, at: Vector2, up: float) -> float:
 	game.launcher.flipper_pressed.emit(at)
 	var motion := InputEventMouseMotion.new()
 	motion.position = at - Vector2(0.0, up)
-	game.call("_input", motion)
+	game._input(motion)
 	var power := game.rules.power
 	game.rules.cancel_draw()
 	return power

@@ -11,7 +11,6 @@ extends GutTest
 ## window the panel stays on screen, off the board, and its content fits it.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
 const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
 const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")

@@ -6,7 +6,6 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
 const CameraNudge := preload("res://scenes/pachinko/juice/camera_nudge.gd")
 const LightSweep := preload("res://scenes/pachinko/juice/light_sweep.gd")
@@ -74,7 +73,7 @@ func test_a_jackpot_nudges_the_board_and_it_comes_back_to_rest() -> void:
 	var game := _game()
 	var view := game.board_view
 	var rest := view.position
-	var juice: JuiceView = game.get("_juice")
+	var juice := game.juice()
 	_jackpot(game.rules)
 	assert_true(juice.nudge.is_moving(), "the nudge began")
 	var furthest := 0.0
@@ -99,7 +98,7 @@ func test_screen_shake_off_keeps_the_board_still_but_the_thump_is_heard() -> voi
 	var game := _game()
 	var view := game.board_view
 	var rest := view.position
-	var juice: JuiceView = game.get("_juice")
+	var juice := game.juice()
 	_jackpot(game.rules)
 	for frame in 20:
 		juice.nudge._process(FRAME)
@@ -110,7 +109,7 @@ func test_screen_shake_off_keeps_the_board_still_but_the_thump_is_heard() -> voi
 
 func test_a_jackpot_sweeps_light_across_the_pins() -> void:
 	var game := _game()
-	var juice: JuiceView = game.get("_juice")
+	var juice := game.juice()
 	var lights := game.board_view.pin_lights()
 	_jackpot(game.rules)
 	assert_true(juice.sweep.is_sweeping())

@@ -2,16 +2,17 @@ extends GutTest
 ## The instructions explain each board's own pieces: a drawing and one line per kind of
 ## piece the board has, and nothing about pieces it does not have.
 
+const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const PANEL := "res://scenes/pachinko/instructions_panel.tscn"
 const BoardPieces := preload("res://scenes/pachinko/legend/board_pieces.gd")
 
 
 func _lines_for(id: String) -> PackedStringArray:
-	var panel := (load(PANEL) as PackedScene).instantiate() as Control
+	var panel := (load(PANEL) as PackedScene).instantiate() as InstructionsPanel
 	add_child_autofree(panel)
 	var level := BoardLoader.load_board("res://levels/pachinko/%s.board" % id).level
-	panel.call("show_start", level)
-	var legend: VBoxContainer = panel.get("_legend")
+	panel.show_start(level)
+	var legend := panel.legend() as VBoxContainer
 	assert_true(legend.visible)
 	for row in legend.get_children():
 		assert_eq(row.get_child_count(), 2, "a drawing and a line")
@@ -73,12 +74,12 @@ func test_a_board_with_only_free_wheels_says_they_turn_when_hit() -> void:
 
 
 func test_the_game_over_box_leaves_the_pieces_out() -> void:
-	var panel := (load(PANEL) as PackedScene).instantiate() as Control
+	var panel := (load(PANEL) as PackedScene).instantiate() as InstructionsPanel
 	add_child_autofree(panel)
 	var level := BoardLoader.load_board("res://levels/pachinko/fever.board").level
-	panel.call("show_start", level)
-	panel.call("show_game_over", level, {"game_shots": 3, "game_payouts": 4}, 0, false)
-	assert_false((panel.get("_legend") as Control).visible)
+	panel.show_start(level)
+	panel.show_game_over(level, {"game_shots": 3, "game_payouts": 4}, 0, false)
+	assert_false(panel.legend().visible)
 
 
 func test_mixed_payouts_read_as_a_range() -> void:

@@ -2,8 +2,8 @@ extends GutTest
 ## The game screen wears the board's machine: the art behind the pins, the ring, the name
 ## plate, the cabinet and the side panel all follow the board's fascia.
 
+const BoardLayer := preload("res://scenes/pachinko/board/board_layer.gd")
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 
 
@@ -29,7 +29,7 @@ func test_each_board_dresses_the_screen_as_its_machine() -> void:
 		assert_eq(view.fascia.modulate, palette.art_tint)
 		assert_not_null(view.get_node_or_null("Bake/Static/NamePlate"), board + ": a name plate")
 		var ring := view.get_node("Bake/Static/RingBorder")
-		assert_eq(ring.get("_palette"), palette, board + ": the ring in its colours")
+		assert_eq((ring as BoardLayer).palette(), palette, board + ": the ring in its colours")
 		var hud := game.get_node("Hud") as Control
 		var style := hud.get_theme_stylebox(&"panel") as StyleBoxFlat
 		assert_eq(style.border_color, palette.panel_border, board + ": the side panel")
@@ -47,7 +47,7 @@ func test_a_portrait_window_puts_the_panel_under_a_board_as_wide_as_the_window()
 	var before := window.size
 	window.size = Vector2i(720, 1280)
 	var game := _game_on("res://levels/pachinko/hanami.board")
-	game.call("_layout")
+	game.lay_out()
 	var view := game.get_viewport_rect().size
 	var hud := (game.get_node("Hud") as Control).get_global_rect()  # as drawn (scaled)
 	var board_width := (game.get_node("BoardView") as Node2D).scale.x * 700.0

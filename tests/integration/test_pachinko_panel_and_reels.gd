@@ -6,7 +6,6 @@ extends GutTest
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
 const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 
 
@@ -14,8 +13,8 @@ func _board(id: String) -> BoardLevel:
 	return BoardLoader.load_board("res://levels/pachinko/%s.board" % id).level
 
 
-func _game() -> Control:
-	var game := (load(GAME) as PackedScene).instantiate() as Control
+func _game() -> PachinkoGame:
+	var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
 	add_child_autofree(game)
 	return game
 
@@ -61,7 +60,7 @@ func test_the_scene_panel_shows_this_games_numbers() -> void:
 	rules.ledger.drained += 90
 	rules.ledger.given += 90
 	rules.start_game()
-	game.call("_process", 0.3)
+	game._process(0.3)
 	var text := _panel_text(game)
 	assert_string_contains(text, "Shots 0")
 	assert_string_contains(text, "Gutter 0")

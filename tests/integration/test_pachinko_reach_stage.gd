@@ -5,7 +5,6 @@ extends GutTest
 ## paid; the rising tone, the fanfare and the round bell play.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const ReachStage := preload("res://scenes/pachinko/bonus/reach_stage.gd")
 const ReachSlowMotion := preload("res://scenes/pachinko/bonus/reach_slow_motion.gd")
 ## A digit of the fallback font is this share of its font size tall (measured on the

@@ -4,7 +4,6 @@ extends GutTest
 ## played yet"); a session that paid nothing back records nothing.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const TEST_SETTINGS := "user://test_session_kept_settings.cfg"
 const TEST_SAVE := "user://test_session_kept_save.cfg"
 

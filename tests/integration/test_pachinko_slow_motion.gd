@@ -8,7 +8,6 @@ const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
 const SlowMotion := preload("res://scenes/pachinko/juice/slow_motion.gd")
 const PocketApproach := preload("res://scenes/pachinko/juice/pocket_approach.gd")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const FRAME := 1.0 / 60.0
 
 
@@ -176,11 +175,11 @@ func test_a_game_played_through_slow_motion_keeps_its_state_hash() -> void:
 	_scripted_start(rules)
 	for frame in 900:
 		_scripted_input(rules, frame)
-		var factor: float = game.get("_juice").time_scale(rules, FRAME)
+		var factor := game.juice().time_scale(rules, FRAME)
 		slowed += 1 if factor < 1.0 else 0
 		steps.append(rules.advance(FRAME * factor))
 	assert_gt(slowed, 0, "the last balls went slow at least once")
-	var recorder := game.get("_recorder") as ReplayRecorder
+	var recorder := game.recorder()
 	var bare := PachinkoRules.new(rules.level, recorder.finish().rng_seed)
 	_scripted_start(bare)
 	for frame in steps.size():

@@ -331,7 +331,6 @@ class TestPachinkoScreen:
 	extends GutTest
 
 	const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-	const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 	const FOLDER := "user://test_replay_pachinko"
 
 	func before_each() -> void:

@@ -11,7 +11,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/fever.board"
 ## The shots this file takes, in order.
@@ -52,24 +51,24 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if not _play_until(rules, moments[shot_name]):
 		printerr("shots: %s: the moment did not come in %d s of play" % [shot_name, LIMIT])
 		return FAILED
-	var bonus_view: Node = game.get("_bonus_view")
+	var bonus_view := (game as PachinkoGame).bonus_view()
 	# The balls paid in those minutes of play have landed in the cup by now on screen.
 	var cup := (game as PachinkoGame).cup
 	for frame in 20000:
 		if cup.pouring() == 0:
 			break
-		cup.call("_process", FRAME)
+		cup._process(FRAME)
 	if shot_name == "pachinko_jackpot":
 		_play_for(rules, 0.3)  # the banner at its height, balls heading for the open lid
 		# after the reach stage's moment of three alike, as on screen
-		bonus_view.get("banner").call("_process", 1.9)
+		bonus_view.banner._process(1.9)
 	if shot_name == "pachinko_round":
 		_play_for(rules, 0.5)
-		bonus_view.get("banner").call("_process", 0.5)
+		bonus_view.banner._process(0.5)
 	if shot_name == "pachinko_jackpot_end":
-		bonus_view.get("banner").call("_process", 1.0)
+		bonus_view.banner._process(1.0)
 	if shot_name == "pachinko_reach":
-		bonus_view.get("stage").call("_process", 1.0)  # the stage has come in
+		bonus_view.stage._process(1.0)  # the stage has come in
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 
 

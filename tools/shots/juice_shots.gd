@@ -7,7 +7,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const PocketApproach := preload("res://scenes/pachinko/juice/pocket_approach.gd")
 const SlowMotion := preload("res://scenes/pachinko/juice/slow_motion.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"

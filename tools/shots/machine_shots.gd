@@ -6,7 +6,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 ## The shots this file takes, in order: "machine_" + the board file's name.
 const NAMES: Array[String] = [

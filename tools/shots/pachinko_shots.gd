@@ -9,7 +9,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const PachinkoGame := preload("res://scenes/pachinko/pachinko_game.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/classic.board"
 ## The shots this file takes, in order.
@@ -48,7 +47,7 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 				rules.advance(FRAME)
 			rules.begin_charge()
 			rules.set_power(52.0)
-			(game as PachinkoGame).board_view.aim_preview().call("_process", 0.5)
+			(game as PachinkoGame).board_view.aim_preview()._process(0.5)
 		"pachinko_win":
 			if not _win(rules):
 				printerr("shots: pachinko_win: no pocket paid out in 90 s of play")
@@ -67,7 +66,7 @@ static func _play(rules: PachinkoRules, pin_lights: Node) -> void:
 	for frame in 60 * 5:
 		rules.advance(FRAME)
 		# The lights fade per frame; played forward here, they need the frames too.
-		pin_lights.call("_process", FRAME)
+		pin_lights._process(FRAME)
 	# Grab the flipper and draw it back, as a held mouse button does.
 	rules.press_flipper(Vector2(0, 100))
 	rules.drag_to(Vector2(0, 35))

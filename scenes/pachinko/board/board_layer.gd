@@ -7,6 +7,11 @@ var _level: BoardLevel
 var _palette: FasciaPalette = FasciaBook.palette_of(FasciaNames.CLASSIC)
 
 
+## The machine's colours this layer is drawn in.
+func palette() -> FasciaPalette:
+	return _palette
+
+
 ## Shows `level` on this layer.
 func setup(level: BoardLevel) -> void:
 	_level = level
