@@ -6,6 +6,7 @@ extends GutTest
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
+const MazeNote := preload("res://scenes/maze/maze_note.gd")
 const TEST_SETTINGS := "user://test_maze_hole_loss_settings.cfg"
 const TEST_SAVE := "user://test_maze_hole_loss_save.cfg"
 
@@ -51,8 +52,8 @@ func test_the_panel_counts_the_lost_ball_with_a_flash() -> void:
 
 func test_the_note_says_at_once_that_the_run_cannot_be_won() -> void:
 	var game := _lose_a_ball()
-	var note: Control = game.get_node("%Note")
-	assert_string_contains(note.call("text"), "can't be won")
+	var note := game.get_node("%Note") as MazeNote
+	assert_string_contains(note.text(), "can't be won")
 	assert_eq(note.modulate.a, 1.0, "at full strength at once")
 
 

@@ -5,6 +5,7 @@ extends GutTest
 
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
+const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const PACHINKO := "res://scenes/pachinko/pachinko_game.tscn"
 ## The player's own boards folder: only boards there (or shipped) play. The test's board
 ## sorts first and is removed afterwards.
@@ -122,7 +123,7 @@ func _route_to_my_board_and_back() -> void:
 	)
 	assert_lt(seen.size(), 4, "one press per row: %s" % ", ".join(seen))
 	await _press("board_actions")
-	var card_menu: PopupMenu = screen.call("card_menu")
+	var card_menu := (screen as LevelSelect).card_menu()
 	assert_true(card_menu.visible, "X / Square opens the card's menu")
 	await _press("ui_cancel")
 	assert_false(card_menu.visible, "Esc / B closes it again")
@@ -200,7 +201,7 @@ func _became(scene_path: String) -> Node:
 
 func _loaded(screen: Node) -> void:
 	for frame in MAX_FRAMES:
-		if not screen.call("is_loading"):
+		if not (screen as LevelSelect).is_loading():
 			break
 		await get_tree().process_frame
 	await get_tree().process_frame

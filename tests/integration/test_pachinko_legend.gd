@@ -3,6 +3,7 @@ extends GutTest
 ## piece the board has, and nothing about pieces it does not have.
 
 const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
+const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
 const PANEL := "res://scenes/pachinko/instructions_panel.tscn"
 const BoardPieces := preload("res://scenes/pachinko/legend/board_pieces.gd")
 
@@ -18,7 +19,7 @@ func _lines_for(id: String) -> PackedStringArray:
 		assert_eq(row.get_child_count(), 2, "a drawing and a line")
 		var icon := row.get_child(0) as Control
 		assert_gt(icon.custom_minimum_size.x, 0.0, "the drawing has room")
-	return legend.call("lines")
+	return (legend as PieceLegend).lines()
 
 
 func _joined(lines: PackedStringArray) -> String:

@@ -81,12 +81,12 @@ func test_a_move_that_would_leave_an_action_without_a_binding_is_refused() -> vo
 
 
 func test_the_controls_screen_asks_names_the_other_action_and_moves_on_yes() -> void:
-	var list := BindingList.new() as GridContainer
+	var list: BindingList = BindingList.new()
 	add_child_autofree(list)
 	var calibrate: Button = list.get_node("maze_calibrate_key")
 	calibrate.pressed.emit()
 	list.get_viewport().push_input(_key_press(KEY_H))
-	var dialog: ConfirmationDialog = list.call("move_dialog")
+	var dialog := list.move_dialog()
 	assert_not_null(dialog, "it asks")
 	assert_true(dialog.visible)
 	assert_string_contains(dialog.dialog_text, "H is already used by “Maze: hard mode (holes)”")
@@ -104,11 +104,11 @@ func test_the_controls_screen_asks_names_the_other_action_and_moves_on_yes() -> 
 
 func test_the_controls_screen_says_why_a_move_is_refused() -> void:
 	App.settings.clear_binding("maze_calibrate", false)
-	var list := BindingList.new() as GridContainer
+	var list: BindingList = BindingList.new()
 	add_child_autofree(list)
 	(list.get_node("maze_calibrate_key") as Button).pressed.emit()
 	list.get_viewport().push_input(_key_press(KEY_H))
-	var note: AcceptDialog = list.call("refusal")
+	var note := list.refusal()
 	assert_not_null(note)
 	assert_string_contains(note.dialog_text, "H is the only key of “Maze: hard mode (holes)”")
 	assert_eq(_codes(App.settings, "maze_hard_mode")[0], "key:H")
