@@ -4,6 +4,7 @@ extends GutTest
 ## joystick starts and tilts, keys tilt smoothly, Space / R / Back / H / E reset and switch,
 ## and a win shows the seed's message and saves the best time.
 
+const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const TEST_SETTINGS := "user://test_maze_settings.cfg"
@@ -219,9 +220,9 @@ func test_the_joystick_starts_the_game_and_tilts_the_board() -> void:
 
 
 func test_the_head_is_clamped_to_fifteen_pixels() -> void:
-	var joystick: Control = _game.get_node("%Joystick")
-	joystick.set("head_offset", Vector2(-99.0, 40.0))
-	assert_eq(joystick.get("head_offset"), Vector2(-15.0, 15.0))
+	var joystick := _game.get_node("%Joystick") as MazeJoystick
+	joystick.head_offset = Vector2(-99.0, 40.0)
+	assert_eq(joystick.head_offset, Vector2(-15.0, 15.0))
 
 
 # QA: the note said "Click the joystick to start!" to a player on the arrows or a pad, whose

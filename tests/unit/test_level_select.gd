@@ -27,7 +27,7 @@ func _open(kind: String) -> LevelSelect:
 	App.level_select_kind = kind
 	var screen := LevelSelectScene.instantiate() as LevelSelect
 	# a scratch My boards folder: the tests never see the player's own boards
-	screen.set("user_root", EMPTY_USER_ROOT)
+	screen.user_root = EMPTY_USER_ROOT
 	add_child_autofree(screen)
 	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	return screen

@@ -40,7 +40,7 @@ func _copy(target_name: String, description := "") -> String:
 func _open() -> LevelSelect:
 	App.level_select_kind = "pachinko"
 	var screen := LevelSelectScene.instantiate() as LevelSelect
-	screen.set("user_root", ROOT)
+	screen.user_root = ROOT
 	add_child_autofree(screen)
 	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	await wait_physics_frames(2)

@@ -37,8 +37,8 @@ func _copy(source: String, target_name: String) -> String:
 func _open(load_one := Callable()) -> LevelSelect:
 	App.level_select_kind = "pachinko"
 	var screen := LevelSelectScene.instantiate() as LevelSelect
-	screen.set("user_root", ROOT)
-	screen.set("load_one", load_one)
+	screen.user_root = ROOT
+	screen.load_one = load_one
 	add_child_autofree(screen)
 	return screen
 
@@ -153,7 +153,7 @@ func test_ten_thousand_files_list_the_first_few_hundred_and_say_so() -> void:
 		FileAccess.open("%s/f%05d.board" % [folder, index], FileAccess.WRITE).close()
 	App.level_select_kind = "pachinko"
 	var screen := LevelSelectScene.instantiate() as LevelSelect
-	screen.set("user_root", MANY_ROOT)
+	screen.user_root = MANY_ROOT
 	add_child_autofree(screen)
 	var listed := LevelSelect.MAX_LISTED
 	var first_frame := screen.my_slots().size()

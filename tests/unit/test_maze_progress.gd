@@ -104,7 +104,7 @@ func _maze_cards() -> Array[LevelCard]:
 	App.level_select_kind = "maze"
 	var screen := LevelSelectScene.instantiate() as LevelSelect
 	# a scratch My boards folder: the tests never see the player's own boards
-	screen.set("user_root", EMPTY_USER_ROOT)
+	screen.user_root = EMPTY_USER_ROOT
 	add_child_autofree(screen)
 	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
 	var out: Array[LevelCard] = []
