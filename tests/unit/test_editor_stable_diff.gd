@@ -22,7 +22,7 @@ const STEP := {
 	"depth": 6.0,
 	"payout": 1.0,
 	"radius": 2.0,
-	"symbols": 1.0,
+	"symbols": -1.0,  # Fever's reels have 9, the most a reel may have
 	"open_seconds": 1.0,
 	"open_catches": 1.0,
 	"blades": 1.0,
