@@ -99,10 +99,14 @@ func is_over_board(at: Vector2) -> bool:
 	return edit_area(session.level).grow(BOARD_MARGIN).has_point(at)
 
 
-## The board's rectangle grown to hold every pin, wall, hole and ball start, on it or not.
+## The board's rectangle grown to hold the point of every item stored as points (a pin, a
+## wall's ends, a hole, a ball start), on it or not.
 static func edit_area(level: BoardLevel) -> Rect2:
 	var area := Rect2(Vector2.ZERO, level.size)
-	for points: PackedVector2Array in [level.pins, level.walls, level.holes, level.ball_starts]:
+	for kind in ItemKinds.all():
+		if kind.shape != ItemKind.Shape.POINT and kind.shape != ItemKind.Shape.SEGMENT:
+			continue
+		var points: PackedVector2Array = level.get(kind.field)
 		for point in points:
 			if point.is_finite():
 				area = area.expand(point)

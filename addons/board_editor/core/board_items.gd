@@ -28,7 +28,7 @@ static func position_fields() -> PackedStringArray:
 
 
 ## The item of `kind` at `index`.
-static func make(kind: Kind, index: int) -> Vector2i:
+static func make(kind: int, index: int) -> Vector2i:
 	return Vector2i(kind, index)
 
 
@@ -52,7 +52,7 @@ static func is_valid(level: BoardLevel, item: Vector2i) -> bool:
 
 
 ## Indices of the items of one kind in a selection, sorted and without repeats.
-static func indices_of(items: Array[Vector2i], kind: Kind) -> PackedInt32Array:
+static func indices_of(items: Array[Vector2i], kind: int) -> PackedInt32Array:
 	var found := PackedInt32Array()
 	for item in items:
 		if item.x == kind and not found.has(item.y):

@@ -19,109 +19,67 @@ const PACHINKO_HANDLES: Array[String] = [
 const MAZE_HANDLES: Array[String] = ["goal_radius"]
 
 
-## The item under `point` (within `tolerance` px of its shape), nearest first; NONE if
-## nothing is there. A click inside a pin, hole or ball start picks it even over a wall. A
-## pocket's rim pins pick the pocket; a bonus pocket is picked inside its cup (rim pins
-## included), a windmill inside the circle its blades sweep.
+## The item under `point` (within `tolerance` px of its outline, ItemOutline.of_item),
+## nearest first; NONE if nothing is there. A click inside a pin, hole or ball start picks
+## it even over a wall (PickRank.UNDER); the goal only when nothing else is there
+## (PickRank.LAST). A pocket's rim pins pick the pocket; a bonus pocket is picked inside its
+## cup (rim pins included), a windmill inside the circle its blades sweep.
 static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2i:
 	var best := Items.NONE
 	var best_distance := INF
-	for i in level.pins.size():
-		var gap := level.pins[i].distance_to(point) - level.pin_radius
-		if gap <= tolerance and gap < best_distance:
-			best_distance = gap
-			var owner := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
-			best = Items.make(Items.Kind.POCKET, owner) if owner >= 0 else Vector2i(0, i)
-	for i in level.pockets.size():
-		if _pocket_rect(level.pockets[i]).grow(tolerance).has_point(point):
-			var gap := level.pockets[i].position.distance_to(point) * 0.5
-			if gap < best_distance:
-				best_distance = gap
-				best = Items.make(Items.Kind.POCKET, i)
-	for i in level.holes.size():
-		var gap := level.holes[i].distance_to(point) - level.hole_radius
-		if gap <= tolerance and gap < best_distance:
-			best_distance = gap
-			best = Items.make(Items.Kind.HOLE, i)
-	for i in level.ball_starts.size():
-		var gap := level.ball_starts[i].distance_to(point) - level.ball_radius
-		if gap <= tolerance and gap < best_distance:
-			best_distance = gap
-			best = Items.make(Items.Kind.START, i)
-	for w in Items.wall_count(level.walls):
-		var closest := Geometry2D.get_closest_point_to_segment(
-			point, level.walls[w * 2], level.walls[w * 2 + 1]
-		)
-		var gap := closest.distance_to(point) - level.wall_width * 0.5
-		# A start, hole or pin drawn over a wall wins a click inside it: the wall is bigger
-		# and can be picked anywhere else along its length.
-		if gap <= tolerance and gap < best_distance and best_distance > 0.0:
-			best_distance = gap
-			best = Items.make(Items.Kind.WALL, w)
-	for i in level.bonus_pockets.size():
-		var spec := level.bonus_pockets[i]
-		if spec != null and BonusChecks.cup_rect(level, spec).grow(tolerance).has_point(point):
-			var gap := spec.position.distance_to(point) * 0.5
-			if gap < best_distance:
-				best_distance = gap
-				best = Items.make(Items.Kind.BONUS, i)
-	for i in level.windmills.size():
-		var spec := level.windmills[i]
-		if spec == null:
-			continue
-		# Inside the sweep; nearer the pin counts as nearer (blades are thin and turn).
-		var gap := spec.position.distance_to(point) - spec.sweep_radius()
-		if gap <= tolerance and gap * 0.5 < best_distance:
-			best_distance = gap * 0.5
-			best = Items.make(Items.Kind.WINDMILL, i)
-	if level.is_maze() and best == Items.NONE:
-		# The goal is big: only its middle picks it, so walls and starts inside stay reachable.
-		if level.goal_center.distance_to(point) <= maxf(tolerance, level.goal_radius * 0.35):
-			best = Items.make(Items.Kind.GOAL, 0)
+	for rank: int in ItemKind.PickRank.values():
+		for kind in ItemKinds.all():
+			if kind.pick_rank != rank or not _may_pick(rank, best, best_distance):
+				continue
+			for index in kind.field_indices(level):
+				if not kind.is_valid(level, index):
+					continue
+				var distance := ItemOutline.of_item(kind, level, index).pick_distance(
+					point, tolerance
+				)
+				if distance < best_distance and _may_pick(rank, best, best_distance):
+					best_distance = distance
+					best = _picked(level, kind, index)
 	return best
 
 
 ## Every item a brush of radius `tolerance` touches as it sweeps from `from` to `to` (a
-## capsule round the segment), pockets once: what an erase drag passes over, however far
-## apart the mouse events that bound the stroke. The goal is never in it.
+## capsule round the segment), each once (a pocket however many of its pins are touched):
+## what an erase drag passes over, however far apart the mouse events that bound the
+## stroke. What the eraser leaves alone (the goal) is never in it.
 static func along(
 	level: BoardLevel, from: Vector2, to: Vector2, tolerance: float
 ) -> Array[Vector2i]:
 	var found: Array[Vector2i] = []
-	for i in level.pins.size():
-		if _reach(level.pins[i], from, to) <= level.pin_radius + tolerance:
-			var owner := level.pin_pocket[i] if i < level.pin_pocket.size() else -1
-			var item := Items.make(Items.Kind.POCKET, owner) if owner >= 0 else Vector2i(0, i)
-			if not found.has(item):
-				found.append(item)
-	for i in level.pockets.size():
-		var item := Items.make(Items.Kind.POCKET, i)
-		if (
-			not found.has(item)
-			and _crosses(_pocket_rect(level.pockets[i]).grow(tolerance), from, to)
-		):
-			found.append(item)
-	for w in Items.wall_count(level.walls):
-		var ends := Geometry2D.get_closest_points_between_segments(
-			from, to, level.walls[w * 2], level.walls[w * 2 + 1]
-		)
-		if ends[0].distance_to(ends[1]) <= level.wall_width * 0.5 + tolerance:
-			found.append(Items.make(Items.Kind.WALL, w))
-	for i in level.holes.size():
-		if _reach(level.holes[i], from, to) <= level.hole_radius + tolerance:
-			found.append(Items.make(Items.Kind.HOLE, i))
-	for i in level.ball_starts.size():
-		if _reach(level.ball_starts[i], from, to) <= level.ball_radius + tolerance:
-			found.append(Items.make(Items.Kind.START, i))
-	for i in level.bonus_pockets.size():
-		var spec := level.bonus_pockets[i]
-		if spec != null and _crosses(BonusChecks.cup_rect(level, spec).grow(tolerance), from, to):
-			found.append(Items.make(Items.Kind.BONUS, i))
-	for i in level.windmills.size():
-		var wheel := level.windmills[i]
-		if wheel != null and _reach(wheel.position, from, to) <= wheel.sweep_radius() + tolerance:
-			found.append(Items.make(Items.Kind.WINDMILL, i))
+	for kind in ItemKinds.all():
+		if not kind.erasable:
+			continue
+		for index in kind.field_indices(level):
+			if kind.is_valid(level, index):
+				var item := _picked(level, kind, index)
+				var touched := ItemOutline.of_item(kind, level, index).touches(from, to, tolerance)
+				if touched and not found.has(item):
+					found.append(item)
 	return found
+
+
+# True when an item of `rank` may still take the pick from `best`: a wall only from nothing
+# or from an item the click is outside of, the goal only from nothing.
+static func _may_pick(rank: int, best: Vector2i, best_distance: float) -> bool:
+	match rank:
+		ItemKind.PickRank.UNDER:
+			return best_distance > 0.0
+		ItemKind.PickRank.LAST:
+			return best == Items.NONE
+	return true
+
+
+# The item a designer gets for entry `index` of `kind`: itself, or its owner (a rim pin's
+# pocket).
+static func _picked(level: BoardLevel, kind: ItemKind, index: int) -> Vector2i:
+	if kind.is_item(level, index):
+		return Vector2i(kind.pick, index)
+	return kind.owner.call(level, index)
 
 
 ## True when a pin ghost at `point` shows red: a click there would crowd a pin, or put it
@@ -206,28 +164,3 @@ static func handle_value(level: BoardLevel, handle: String, point: Vector2) -> V
 	var old: float = level.get(handle)
 	var angle := rad_to_deg((point - level.ring_center).angle())
 	return old + wrapf(angle - old, -180.0, 180.0)
-
-
-## A pocket's body as a box: the mouth's width, from the mouth down to the special pin.
-static func _pocket_rect(spec: PocketSpec) -> Rect2:
-	return Rect2(spec.position - Vector2(spec.width * 0.5, 0), Vector2(spec.width, spec.depth))
-
-
-# How near the segment from `from` to `to` comes to `point`.
-static func _reach(point: Vector2, from: Vector2, to: Vector2) -> float:
-	return Geometry2D.get_closest_point_to_segment(point, from, to).distance_to(point)
-
-
-# True when the segment from `from` to `to` touches `box` (an end inside, or an edge crossed).
-static func _crosses(box: Rect2, from: Vector2, to: Vector2) -> bool:
-	if box.has_point(from) or box.has_point(to):
-		return true
-	var corners: Array[Vector2] = [box.position, Vector2(box.end.x, box.position.y), box.end]
-	corners.append(Vector2(box.position.x, box.end.y))
-	for k in 4:
-		var hit: Variant = Geometry2D.segment_intersects_segment(
-			from, to, corners[k], corners[(k + 1) % 4]
-		)
-		if hit != null:
-			return true
-	return false

@@ -80,4 +80,6 @@ func _mark_along(from: Vector2, to: Vector2) -> void:
 
 func _erasable(at: Vector2) -> Vector2i:
 	var item := pick(at)
-	return Items.NONE if item.x == Items.Kind.GOAL else item
+	if item == Items.NONE or not ItemKinds.of_pick(item.x).erasable:
+		return Items.NONE
+	return item

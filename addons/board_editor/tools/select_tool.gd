@@ -19,8 +19,10 @@ var _anchor := Items.NONE
 var _box_mode := 0  # 0 replace, 1 add (shift), 2 toggle (ctrl)
 var _boxing := false
 var _move: MoveItemsAction = null
-# The wall end being dragged: its index in the board's `walls` points (-1: none).
+# The wall end being dragged: its index in the points of its kind's field (`_end_field`,
+# a SEGMENT kind's: the walls), -1 for none.
 var _end_index := -1
+var _end_field := ""
 var _end_drag: SetPointAction = null
 # Where the dragged end was when it was grabbed.
 var _end_start := Vector2.ZERO
@@ -33,7 +35,7 @@ func press(at: Vector2, event: InputEventMouseButton) -> bool:
 	_box_mode = 1 if event.shift_pressed else (2 if event.ctrl_pressed else 0)
 	_end_index = selected_wall_end(at) if _box_mode == 0 else -1
 	if _end_index >= 0:
-		_end_start = level().walls[_end_index]
+		_end_start = _end_points()[_end_index]
 		return true  # a handle: the wall keeps its selection, only this end moves
 	var arc_handle := -1
 	if _box_mode == 0:
@@ -130,18 +132,27 @@ func selected_wall_end(at: Vector2) -> int:
 		return -1
 	var best := -1
 	for item: Vector2i in session.selection:
-		if item.x != Items.Kind.WALL or not Items.is_valid(level(), item):
+		if not Items.is_valid(level(), item):
 			continue
-		var length := level().walls[item.y * 2].distance_to(level().walls[item.y * 2 + 1])
-		var best_distance := minf(level().wall_width * 0.5 + tolerance(), length / 3.0)
+		var kind := ItemKinds.of_item(level(), item)
+		if kind.shape != ItemKind.Shape.SEGMENT:
+			continue
+		_end_field = kind.field
+		var wall := ItemOutline.of_item(kind, level(), item.y)
+		var length := wall.center.distance_to(wall.end)
+		var best_distance := minf(wall.radius + tolerance(), length / 3.0)
 		best_distance = maxf(best_distance, minf(tolerance(), length * 0.5))
 		for end in 2:
-			var index := item.y * 2 + end
-			var distance := level().walls[index].distance_to(at)
+			var distance := (wall.end if end == 1 else wall.center).distance_to(at)
 			if distance <= best_distance:
-				best = index
+				best = item.y * 2 + end
 				best_distance = distance
 	return best
+
+
+# The points of the field whose end is dragged (two a segment).
+func _end_points() -> PackedVector2Array:
+	return level().get(_end_field)
 
 
 # Moves the dragged wall end by the drag so far (on the wall grid when snapping), live: an
@@ -151,11 +162,11 @@ func _drag_end(at: Vector2) -> void:
 		return
 	var moved := _end_start + (at - _press_at)
 	var to := session.snap_wall_point(moved) if session.snap_enabled else moved
-	var other := level().walls[_end_index + (1 if _end_index % 2 == 0 else -1)]
+	var other := _end_points()[_end_index + (1 if _end_index % 2 == 0 else -1)]
 	if to.distance_to(other) < 1.0:
 		return  # never fold a wall to nothing
 	if _end_drag == null:
-		_end_drag = SetPointAction.new(level(), "walls", _end_index, to, "Move wall end")
+		_end_drag = SetPointAction.new(level(), _end_field, _end_index, to, "Move wall end")
 	_end_drag.preview(to)
 
 

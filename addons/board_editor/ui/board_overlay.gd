@@ -63,42 +63,24 @@ static func _draw_grid(canvas: Control, to_screen: Transform2D, session: Session
 		y += step
 
 
+# A frame round a selected item, 3 px outside its outline (ItemOutline.of_item).
 static func _draw_selected(
 	canvas: Control, to_screen: Transform2D, level: BoardLevel, item: Vector2i
 ) -> void:
 	var color := Draw.SELECT_COLOR
-	match item.x:
-		Items.Kind.PIN:
-			Draw.circle(canvas, to_screen, level.pins[item.y], level.pin_radius + 3.0, color)
-		Items.Kind.POCKET:
-			var spec: PocketSpec = level.pockets[item.y]
-			var box := Rect2(spec.position - Vector2(spec.width * 0.5, 0), Vector2(spec.width, 0))
-			box = box.expand(spec.position + Vector2(0, spec.depth)).grow(level.pin_radius + 3.0)
+	var outline := ItemOutline.of_item(ItemKinds.of_item(level, item), level, item.y)
+	match outline.form:
+		ItemOutline.Form.BOX:
+			var box := outline.box.grow(outline.margin + 3.0)
 			var screen := Rect2(to_screen * box.position, box.size * to_screen.get_scale())
 			canvas.draw_rect(screen, color, false, 2.0)
-		Items.Kind.WALL:
-			var a := level.walls[item.y * 2]
-			var b := level.walls[item.y * 2 + 1]
-			Draw.line(canvas, to_screen, a, b, Color(color, 0.6), 4.0)
-			Draw.circle(canvas, to_screen, a, 3.0, color, true)
-			Draw.circle(canvas, to_screen, b, 3.0, color, true)
-		Items.Kind.HOLE:
-			Draw.circle(canvas, to_screen, level.holes[item.y], level.hole_radius + 3.0, color)
-		Items.Kind.START:
-			Draw.circle(
-				canvas, to_screen, level.ball_starts[item.y], level.ball_radius + 3.0, color
-			)
-		Items.Kind.GOAL:
-			Draw.circle(
-				canvas, to_screen, level.goal_center, level.goal_radius + 3.0, color, false, 2.5
-			)
-		Items.Kind.BONUS:
-			var cup := BonusChecks.cup_rect(level, level.bonus_pockets[item.y]).grow(3.0)
-			var frame := Rect2(to_screen * cup.position, cup.size * to_screen.get_scale())
-			canvas.draw_rect(frame, color, false, 2.0)
-		Items.Kind.WINDMILL:
-			var wheel := level.windmills[item.y]
-			Draw.circle(canvas, to_screen, wheel.position, wheel.sweep_radius() + 3.0, color)
+		ItemOutline.Form.CAPSULE:
+			Draw.line(canvas, to_screen, outline.center, outline.end, Color(color, 0.6), 4.0)
+			Draw.circle(canvas, to_screen, outline.center, 3.0, color, true)
+			Draw.circle(canvas, to_screen, outline.end, 3.0, color, true)
+		_:
+			var radius := outline.radius + outline.margin + 3.0
+			Draw.circle(canvas, to_screen, outline.center, radius, color, false, outline.line_width)
 
 
 static func _draw_issue(

@@ -15,5 +15,8 @@ static func row() -> ItemKind:
 	kind.set_key = "starts"
 	kind.max_items = 64
 	kind.size_field = "ball_radius"
+	kind.layer = "Ball starts"
+	kind.paint_layer = "STARTS"
+	kind.placed_by_click = true
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	return kind

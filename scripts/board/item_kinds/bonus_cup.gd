@@ -42,7 +42,37 @@ static func row(
 	kind.reads = read_cups.bind(role)
 	kind.writes = cup_line
 	kind.covers = _cup
+	kind.layer = "Bonus pieces"
+	kind.paint_layer = "BONUS"
+	kind.outlines = _rimmed_cup
+	kind.properties = _fields
 	return kind
+
+
+# The cup with the pins the world stamps round its edge.
+static func _rimmed_cup(level: BoardLevel, spec: BonusPocketSpec) -> ItemOutline:
+	var grow := maxf(level.pin_radius, 0.0)
+	var top_left := spec.position - Vector2(spec.width * 0.5 + grow, grow)
+	var size := Vector2(spec.width + grow * 2.0, spec.depth + grow * 2.0)
+	return ItemOutline.boxed(Rect2(top_left, size), spec.position)
+
+
+# The cup's fields, then its role's own.
+static func _fields(level: BoardLevel, index: int) -> Dictionary:
+	var spec := level.bonus_pockets[index]
+	var values := {
+		"x": spec.position.x,
+		"y": spec.position.y,
+		"width": spec.width,
+		"depth": spec.depth,
+		"payout": float(spec.payout),
+	}
+	if spec.role == BonusPocketSpec.Role.START:
+		values["symbols"] = float(spec.symbols)
+	elif spec.role == BonusPocketSpec.Role.ATTACKER:
+		values["open_seconds"] = spec.open_seconds
+		values["open_catches"] = float(spec.open_catches)
+	return values
 
 
 # The cup (its pins are stamped by the world, round its edge).

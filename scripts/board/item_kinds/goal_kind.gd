@@ -14,4 +14,24 @@ static func row() -> ItemKind:
 	kind.plural = "Goals"
 	kind.item_fields = PackedStringArray()
 	kind.file_fields = {}
+	kind.pick_rank = ItemKind.PickRank.LAST
+	kind.erasable = false
+	kind.layer = "Goal"
+	kind.paint_layer = "GOAL"
+	kind.placed_by_click = true
+	kind.outlines = _ring
+	kind.properties = _fields
 	return kind
+
+
+# The goal is big: only its middle picks it, so walls and starts inside stay reachable.
+static func _ring(level: BoardLevel, at: Vector2) -> ItemOutline:
+	var ring := ItemOutline.circle(at, level.goal_radius)
+	ring.core = 0.35
+	ring.hollow = true
+	ring.line_width = 2.5
+	return ring
+
+
+static func _fields(level: BoardLevel, _index: int) -> Dictionary:
+	return {"x": level.goal_center.x, "y": level.goal_center.y, "radius": level.goal_radius}

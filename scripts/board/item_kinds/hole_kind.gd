@@ -15,5 +15,8 @@ static func row() -> ItemKind:
 	kind.set_key = "holes"
 	kind.max_items = 500
 	kind.size_field = "hole_radius"
+	kind.layer = "Holes"
+	kind.paint_layer = "HOLES"
+	kind.placed_by_click = true
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	return kind

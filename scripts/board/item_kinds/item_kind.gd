@@ -27,6 +27,13 @@ enum Shape {
 	SINGLE,  ## one Vector2 field (the goal)
 }
 
+## How a click weighs an item against the others under it (the editor's hit test).
+enum PickRank {
+	OVER,  ## the nearest of these wins
+	UNDER,  ## loses to an item the click is inside (a wall under a pin or a ball start)
+	LAST,  ## picked only when nothing else is there (the goal, big round what it holds)
+}
+
 const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 
 ## The largest id a file may use (ItemIds).
@@ -44,8 +51,9 @@ var field := ""
 var id_field := ""
 ## The game whose boards have this kind (BoardLevel.Kind).
 var game := BoardLevel.Kind.PACHINKO
-## The editor's selection value (Pick).
-var pick := Pick.PIN
+## The editor's selection value (Pick); a row that leaves it -1 gets the next free number
+## past Pick's (ItemKinds), so a new kind needs no new Pick value.
+var pick := -1
 ## The BonusPocketSpec.Role of a ROLE_SPEC kind, else -1.
 var role := -1
 ## How the items are stored (Shape).
@@ -103,6 +111,36 @@ var appended := Callable()
 ## `(level, work, gone)`: removes what belongs to the removed items `gone` (indices before
 ## the removal, sorted) from the other fields (a pocket's rim pins).
 var removed := Callable()
+
+## Editor hooks and settings.
+## `(level, value) -> ItemOutline`: the outline of an item given its value (`value_of`), for
+## picking, erasing, the selection frame and a place tool's ghost (ItemOutline.of_value); a
+## POINT kind is a circle of its `size_field` radius, a SEGMENT a capsule `size_field` wide.
+var outlines := Callable()
+## How a click weighs these items against the others (PickRank).
+var pick_rank := PickRank.OVER
+## False for an item the eraser leaves alone (the goal).
+var erasable := true
+## The editor's layer holding these items ("Pins") and the BoardPainter.Layer flag that
+## draws them ("PINS"); rows may share a layer.
+var layer := ""
+var paint_layer := ""
+## True when the editor's place tool puts one of these down per click (a pin, a hole); for
+## a SINGLE kind the click moves it.
+var placed_by_click := false
+## `(at: Vector2) -> Variant`: the item-set value a click at `at` places (a new windmill);
+## without it a click places the point.
+var creates := Callable()
+## True when a place tool's ghost turns red where the new item crowds the pins (a pin).
+var ghost_crowds := false
+## `(level, index) -> Dictionary`: the property panel's fields of item `index` and their
+## values (ItemProperties.FIELDS keys); without it a POINT kind shows "x" and "y", a
+## SEGMENT its ends "ax", "ay", "bx", "by".
+var properties := Callable()
+## `(level, index, key, value)`: sets property `key` (not "x" or "y") of item `index`; the
+## editor wraps it in one undo step that snapshots `item_fields`. Kinds without it keep
+## their own editor actions.
+var edits := Callable()
 
 
 ## A fresh row for the `kind_name` line of board files, stored in `level_field`.
@@ -196,6 +234,18 @@ func position_of(level: BoardLevel, index: int) -> Vector2:
 			return _position(spec)
 	var point: Vector2 = level.get(field)
 	return point
+
+
+## Item `index`'s value: a point (POINT, SINGLE), a wall's ends [a, b], a resource.
+func value_of(level: BoardLevel, index: int) -> Variant:
+	match shape:
+		Shape.SEGMENT:
+			var ends: PackedVector2Array = level.get(field)
+			return [ends[index * 2], ends[index * 2 + 1]]
+		Shape.SPEC, Shape.ROLE_SPEC:
+			var specs: Array = level.get(field)
+			return specs[index]
+	return position_of(level, index)
 
 
 ## The area item `index` covers on the board (its pins, cup, capsule or circle).

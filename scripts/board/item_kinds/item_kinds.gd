@@ -110,6 +110,16 @@ static func items_of(level: BoardLevel) -> Array[Vector2i]:
 	return items
 
 
+## The editor's layers of `game` (BoardLevel.Kind), in table order, each once: layer name
+## -> the BoardPainter.Layer key that draws it ("PINS").
+static func layers_of(game: BoardLevel.Kind) -> Dictionary[String, String]:
+	var found: Dictionary[String, String] = {}
+	for kind in _rows:
+		if kind.game == game and not kind.layer.is_empty() and not found.has(kind.layer):
+			found[kind.layer] = kind.paint_layer
+	return found
+
+
 ## The first row of each item-set key (BoardItems.extract), in table order.
 static func set_rows() -> Array[ItemKind]:
 	var seen := {}
@@ -154,8 +164,12 @@ static func _union(fields_of: Callable) -> PackedStringArray:
 
 static func _build() -> Array[ItemKind]:
 	var rows: Array[ItemKind] = []
+	var next_pick: int = ItemKind.Pick.values().max() + 1
 	for script in ROWS:
 		var kind: ItemKind = script.call("row")
+		if kind.pick < 0:
+			kind.pick = next_pick
+			next_pick += 1
 		rows.append(kind)
 	return rows
 

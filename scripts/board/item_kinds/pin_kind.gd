@@ -25,6 +25,10 @@ static func row() -> ItemKind:
 		"id": ["int", 1, ItemKind.MAX_ID], "pocket": ["int", 0, 199], "special": ["bool"]
 	}
 	kind.size_field = "pin_radius"
+	kind.layer = "Pins"
+	kind.paint_layer = "PINS"
+	kind.placed_by_click = true
+	kind.ghost_crowds = true
 	kind.skips = is_rim_pin
 	kind.owner = _pocket_of
 	kind.reads = _read

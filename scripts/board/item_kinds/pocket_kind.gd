@@ -36,7 +36,30 @@ static func row() -> ItemKind:
 	kind.carries = _carry_pins
 	kind.appended = _stamp_pins
 	kind.removed = _remove_pins
+	kind.layer = "Pockets"
+	kind.paint_layer = "POCKETS"
+	kind.outlines = _body
+	kind.properties = _fields
 	return kind
+
+
+# The body from the mouth down to the special pin; the selection frame takes in the rim pins.
+static func _body(level: BoardLevel, spec: PocketSpec) -> ItemOutline:
+	var top_left := spec.position - Vector2(spec.width * 0.5, 0)
+	var body := ItemOutline.boxed(Rect2(top_left, Vector2(spec.width, spec.depth)), spec.position)
+	body.margin = level.pin_radius
+	return body
+
+
+static func _fields(level: BoardLevel, index: int) -> Dictionary:
+	var spec := level.pockets[index]
+	return {
+		"x": spec.position.x,
+		"y": spec.position.y,
+		"width": spec.width,
+		"depth": spec.depth,
+		"payout": float(spec.payout)
+	}
 
 
 # The pockets, each stamping its rim and special pin after the field pins (read first).

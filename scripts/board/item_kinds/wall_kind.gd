@@ -15,6 +15,9 @@ static func row() -> ItemKind:
 	kind.set_key = "walls"
 	kind.max_items = 4000
 	kind.size_field = "wall_width"
+	kind.pick_rank = ItemKind.PickRank.UNDER  # a start, hole or pin drawn over it wins inside
+	kind.layer = "Walls"
+	kind.paint_layer = "WALLS"
 	kind.file_fields = {"ax": ["coord"], "ay": ["coord"], "bx": ["coord"], "by": ["coord"]}
 	kind.optional_file_fields = {"id": ["int", 1, ItemKind.MAX_ID]}
 	return kind

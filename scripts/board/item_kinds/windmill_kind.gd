@@ -35,7 +35,46 @@ static func row() -> ItemKind:
 	kind.checks = check_drive
 	kind.reads = _read
 	kind.writes = _write
+	kind.layer = "Windmills"
+	kind.paint_layer = "WINDMILLS"
+	kind.placed_by_click = true
+	kind.creates = new_windmill
+	kind.outlines = _sweep
+	kind.properties = _fields
 	return kind
+
+
+## The windmill a click places at `at`: four blades turning clockwise (WindmillSpec's
+## defaults; the property panel changes them).
+static func new_windmill(at: Vector2) -> WindmillSpec:
+	return WindmillSpec.driven(
+		at, WindmillSpec.DEFAULT_BLADES, WindmillSpec.DEFAULT_LENGTH, WindmillSpec.DEFAULT_SPEED
+	)
+
+
+# The circle its blades sweep; nearer the pin counts as nearer (blades are thin and turn).
+static func _sweep(_level: BoardLevel, spec: WindmillSpec) -> ItemOutline:
+	var sweep := ItemOutline.circle(spec.position, spec.sweep_radius())
+	sweep.weight = 0.5
+	sweep.hollow = true
+	return sweep
+
+
+# Its pin, blades, then speed (driven) or friction (free).
+static func _fields(level: BoardLevel, index: int) -> Dictionary:
+	var spec := level.windmills[index]
+	var values := {
+		"x": spec.position.x,
+		"y": spec.position.y,
+		"blades": float(spec.blades),
+		"length": spec.length,
+		"free": 1.0 if spec.free_spin else 0.0,
+	}
+	if spec.free_spin:
+		values["friction"] = spec.friction
+	else:
+		values["speed"] = spec.speed
+	return values
 
 
 static func _read(level: BoardLevel, lines: Array) -> Array:
