@@ -79,7 +79,7 @@ var curve := {"count": 20, "spacing": 24.0}
 var pocket_width := 32.0
 var pocket_depth := 24.0
 var pocket_payout := 10
-## Layers (Layers.LAYERS names) the designer hid or locked.
+## Layers (Layers.for_kind names) the designer hid or locked.
 var hidden_layers: Array[String] = []
 var locked_layers: Array[String] = []
 ## The last copied items, relative to their centre.

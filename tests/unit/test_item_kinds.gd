@@ -4,6 +4,7 @@ extends GutTest
 ## board file's counters line is written in, and the editor's picks).
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
+const Layers := preload("res://addons/board_editor/core/layers.gd")
 
 
 func test_every_row_names_fields_that_board_level_has() -> void:
@@ -61,6 +62,18 @@ func test_every_editor_pick_has_a_row() -> void:
 		var kind := ItemKinds.of_role(role)
 		assert_eq(kind.name, BonusPocketSpec.ROLE_KEYS[role])
 		assert_eq(kind.pick, Items.Kind.BONUS)
+
+
+func test_every_row_is_on_an_editor_layer_the_board_painter_draws() -> void:
+	for kind in ItemKinds.all():
+		assert_false(kind.layer.is_empty(), kind.name + " is on a layer")
+		assert_true(
+			BoardPainter.Layer.has(kind.paint_layer), "%s: %s" % [kind.name, kind.paint_layer]
+		)
+		assert_has(Layers.for_kind(kind.game), kind.layer, kind.name)
+		assert_eq(Layers.of_item(Vector2i(kind.pick, 0)), kind.layer, kind.name)
+		var flag: int = BoardPainter.Layer[kind.paint_layer]
+		assert_eq(Layers.painter_mask([kind.layer] as Array[String]), flag, kind.name)
 
 
 func test_a_copied_board_shares_no_item_resource_and_watches_every_one() -> void:

@@ -6,47 +6,46 @@ extends RefCounted
 
 const Items := preload("res://addons/board_editor/core/board_items.gd")
 
-## Layer name -> [item kind or -1, BoardPainter layer flags, board kind or -1 for both].
-const LAYERS := {
-	"Pins": [Items.Kind.PIN, BoardPainter.Layer.PINS, BoardLevel.Kind.PACHINKO],
-	"Pockets": [Items.Kind.POCKET, BoardPainter.Layer.POCKETS, BoardLevel.Kind.PACHINKO],
-	"Bonus pieces": [Items.Kind.BONUS, BoardPainter.Layer.BONUS, BoardLevel.Kind.PACHINKO],
-	"Windmills": [Items.Kind.WINDMILL, BoardPainter.Layer.WINDMILLS, BoardLevel.Kind.PACHINKO],
-	"Rail and gutter":
-	[-1, BoardPainter.Layer.RAIL | BoardPainter.Layer.GUTTER, BoardLevel.Kind.PACHINKO],
-	"Walls": [Items.Kind.WALL, BoardPainter.Layer.WALLS, BoardLevel.Kind.MAZE],
-	"Holes": [Items.Kind.HOLE, BoardPainter.Layer.HOLES, BoardLevel.Kind.MAZE],
-	"Ball starts": [Items.Kind.START, BoardPainter.Layer.STARTS, BoardLevel.Kind.MAZE],
-	"Goal": [Items.Kind.GOAL, BoardPainter.Layer.GOAL, BoardLevel.Kind.MAZE],
+## The layers that hold no items, per board kind: name -> BoardPainter layer flags. They
+## follow the item layers (ItemKinds.layers_of, from the rows) in the list.
+const PARTS := {
+	BoardLevel.Kind.PACHINKO:
+	{"Rail and gutter": BoardPainter.Layer.RAIL | BoardPainter.Layer.GUTTER},
+	BoardLevel.Kind.MAZE: {},
 }
 
 
-## The layers a board of `kind` has, in display order.
+## The layers a board of `kind` has, in display order: its item kinds' (table order), then
+## its parts'.
 static func for_kind(kind: int) -> Array[String]:
 	var names: Array[String] = []
-	for layer: String in LAYERS:
-		var entry: Array = LAYERS[layer]
-		var board_kind: int = entry[2]
-		if board_kind == kind:
-			names.append(layer)
+	names.assign(ItemKinds.layers_of(kind).keys())
+	var parts: Dictionary = PARTS.get(kind, {})
+	names.append_array(parts.keys())
 	return names
 
 
 ## The layer an item belongs to ("" for none).
 static func of_item(item: Vector2i) -> String:
-	for layer: String in LAYERS:
-		var entry: Array = LAYERS[layer]
-		var item_kind: int = entry[0]
-		if item_kind == item.x:
-			return layer
-	return ""
+	var kind := ItemKinds.of_pick(item.x)
+	return kind.layer if kind != null else ""
 
 
 ## The BoardPainter flags of the `hidden` layers (what the board node leaves out).
 static func painter_mask(hidden: Array[String]) -> int:
 	var mask := 0
 	for layer in hidden:
-		var entry: Array = LAYERS.get(layer, [-1, 0])
-		var flags: int = entry[1]
-		mask |= flags
+		mask |= _flags_of(layer)
 	return mask
+
+
+# The BoardPainter flags of layer `layer` (0 for an unknown name).
+static func _flags_of(layer: String) -> int:
+	for game: int in PARTS:
+		var parts: Dictionary = PARTS[game]
+		if parts.has(layer):
+			return parts[layer]
+		var items := ItemKinds.layers_of(game)
+		if items.has(layer):
+			return BoardPainter.Layer[items[layer]]
+	return 0
