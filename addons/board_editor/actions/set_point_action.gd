@@ -4,8 +4,6 @@ extends BoardAction
 ## ball start (the property panel's x / y fields). Pockets and the goal move with
 ## MoveItemsAction, since a pocket takes its rim pins along.
 
-const POINT_FIELDS: Array[String] = ["pins", "walls", "holes", "ball_starts"]
-
 var _field: String
 var _index: int
 var _to: Vector2
@@ -41,11 +39,11 @@ func target() -> Vector2:
 
 
 func _touched_fields() -> PackedStringArray:
-	return PackedStringArray([_field]) if POINT_FIELDS.has(_field) else PackedStringArray()
+	return PackedStringArray([_field]) if _is_point_field(_field) else PackedStringArray()
 
 
 func _apply() -> void:
-	if not POINT_FIELDS.has(_field):
+	if not _is_point_field(_field):
 		push_error("Set position: '%s' is not a point list of the board." % _field)
 		return
 	var current: PackedVector2Array = level.get(_field)
@@ -55,3 +53,12 @@ func _apply() -> void:
 		return
 	points[_index] = _to
 	level.set(_field, points)
+
+
+# True for a board field of points: a POINT or SEGMENT kind's (pins, walls, holes...).
+static func _is_point_field(field: String) -> bool:
+	var kind := ItemKinds.of_field(field)
+	return (
+		kind != null
+		and (kind.shape == ItemKind.Shape.POINT or kind.shape == ItemKind.Shape.SEGMENT)
+	)

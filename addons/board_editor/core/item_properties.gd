@@ -18,6 +18,7 @@ const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd"
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const EditWindmillAction := preload("res://addons/board_editor/actions/edit_windmill_action.gd")
 const ItemGroupAction := preload("res://addons/board_editor/actions/item_group_action.gd")
+const EditItemAction := preload("res://addons/board_editor/actions/edit_item_action.gd")
 ## The value shared_values gives a field the items disagree on.
 const MIXED := NAN
 
@@ -43,70 +44,23 @@ const FIELDS := {
 	"speed": ["Speed (degrees/s, + clockwise)", -3600.0, 3600.0, 5.0],
 	"friction": ["Friction (degrees/s²)", 0.0, 36000.0, 5.0],
 }
-const POINT_FIELD := {
-	Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "ball_starts"
-}
 
 
-## The editable fields of `item` in display order, with their current values.
+## The editable fields of `item` in display order, with their current values (its row's
+## `properties` hook; a point's x and y, a wall's two ends).
 static func values_of(level: BoardLevel, item: Vector2i) -> Dictionary:
 	if not Items.is_valid(level, item):
 		return {}
-	var at := Items.position_of(level, item)
-	match item.x:
-		Items.Kind.POCKET:
-			var spec: PocketSpec = level.pockets[item.y]
-			return {
-				"x": at.x,
-				"y": at.y,
-				"width": spec.width,
-				"depth": spec.depth,
-				"payout": float(spec.payout)
-			}
-		Items.Kind.WALL:
-			var a := level.walls[item.y * 2]
-			var b := level.walls[item.y * 2 + 1]
-			return {"ax": a.x, "ay": a.y, "bx": b.x, "by": b.y}
-		Items.Kind.GOAL:
-			return {"x": at.x, "y": at.y, "radius": level.goal_radius}
-		Items.Kind.BONUS:
-			return _bonus_values(level.bonus_pockets[item.y])
-		Items.Kind.WINDMILL:
-			return _windmill_values(level.windmills[item.y])
+	var kind := ItemKinds.of_item(level, item)
+	if kind.properties.is_valid():
+		return kind.properties.call(level, item.y)
+	if kind.shape == ItemKind.Shape.SEGMENT:
+		var ends: PackedVector2Array = level.get(kind.field)
+		var a := ends[item.y * 2]
+		var b := ends[item.y * 2 + 1]
+		return {"ax": a.x, "ay": a.y, "bx": b.x, "by": b.y}
+	var at := kind.position_of(level, item.y)
 	return {"x": at.x, "y": at.y}
-
-
-# A windmill's fields: its pin, blades, then speed (driven) or friction (free).
-static func _windmill_values(spec: WindmillSpec) -> Dictionary:
-	var values := {
-		"x": spec.position.x,
-		"y": spec.position.y,
-		"blades": float(spec.blades),
-		"length": spec.length,
-		"free": 1.0 if spec.free_spin else 0.0,
-	}
-	if spec.free_spin:
-		values["friction"] = spec.friction
-	else:
-		values["speed"] = spec.speed
-	return values
-
-
-# A bonus pocket's fields: the cup's, then its role's own.
-static func _bonus_values(spec: BonusPocketSpec) -> Dictionary:
-	var values := {
-		"x": spec.position.x,
-		"y": spec.position.y,
-		"width": spec.width,
-		"depth": spec.depth,
-		"payout": float(spec.payout),
-	}
-	if spec.role == BonusPocketSpec.Role.START:
-		values["symbols"] = float(spec.symbols)
-	elif spec.role == BonusPocketSpec.Role.ATTACKER:
-		values["open_seconds"] = spec.open_seconds
-		values["open_catches"] = float(spec.open_catches)
-	return values
 
 
 ## The action that sets field `key` of `item` to `value`, or null when nothing changes.
@@ -115,36 +69,54 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 	var current: float = now.get(key, NAN)
 	if not now.has(key) or is_equal_approx(current, value):
 		return null
+	var kind := ItemKinds.of_item(level, item)
+	if key in ["x", "y"]:
+		return _place_action(level, kind, item, key, value)
+	if kind.shape == ItemKind.Shape.SEGMENT:
+		var end := item.y * 2 + (1 if key.begins_with("b") else 0)
+		var ends: PackedVector2Array = level.get(kind.field)
+		var point := ends[end]
+		point = Vector2(value, point.y) if key.ends_with("x") else Vector2(point.x, value)
+		var named := "Set %s end" % kind.singular.to_lower()
+		return SetPointAction.new(level, kind.field, end, point, named)
+	if kind.edits.is_valid():
+		return EditItemAction.new(level, kind, item.y, key, value)
+	return _own_action(level, item, key, value)
+
+
+# The action that puts `item` at a new x or y: a point is set, the goal's field too, a
+# resource moves (a pocket with its rim pins).
+static func _place_action(
+	level: BoardLevel, kind: ItemKind, item: Vector2i, key: String, value: float
+) -> BoardAction:
 	var at := Items.position_of(level, item)
 	var target := Vector2(value, at.y) if key == "x" else Vector2(at.x, value)
+	match kind.shape:
+		ItemKind.Shape.POINT:
+			var named := "Set %s position" % kind.singular.to_lower()
+			return SetPointAction.new(level, kind.field, item.y, target, named)
+		ItemKind.Shape.SINGLE:
+			var moved := "Set %s position" % kind.singular.to_lower()
+			return SetPropertiesAction.new(level, {kind.field: target}, moved)
+	return MoveItemsAction.new(level, [item] as Array[Vector2i], target - at)
+
+
+# The kinds whose fields have actions of their own (a pocket stamps its pins again).
+static func _own_action(
+	level: BoardLevel, item: Vector2i, key: String, value: float
+) -> BoardAction:
 	match item.x:
 		Items.Kind.POCKET:
-			if key in ["x", "y"]:
-				return MoveItemsAction.new(level, [item] as Array[Vector2i], target - at)
 			var spec: PocketSpec = level.pockets[item.y]
 			var width := value if key == "width" else spec.width
 			var depth := value if key == "depth" else spec.depth
 			var payout := int(value) if key == "payout" else spec.payout
 			return EditPocketAction.new(level, item.y, width, depth, payout)
-		Items.Kind.WALL:
-			var end := item.y * 2 + (1 if key.begins_with("b") else 0)
-			var point := level.walls[end]
-			point = Vector2(value, point.y) if key.ends_with("x") else Vector2(point.x, value)
-			return SetPointAction.new(level, "walls", end, point, "Set wall end")
 		Items.Kind.BONUS:
-			if key in ["x", "y"]:
-				return MoveItemsAction.new(level, [item] as Array[Vector2i], target - at)
 			return BonusActions.EditBonus.new(level, item.y, key, value)
 		Items.Kind.WINDMILL:
-			if key in ["x", "y"]:
-				return MoveItemsAction.new(level, [item] as Array[Vector2i], target - at)
 			return EditWindmillAction.new(level, item.y, key, value)
-		Items.Kind.GOAL:
-			if key == "radius":
-				return SetPropertiesAction.new(level, {"goal_radius": value}, "Set goal radius")
-			return SetPropertiesAction.new(level, {"goal_center": target}, "Set goal position")
-	var field: String = POINT_FIELD[item.x]
-	return SetPointAction.new(level, field, item.y, target, "Set %s position" % _noun(item))
+	return SetPropertiesAction.new(level, {"goal_radius": value}, "Set goal radius")
 
 
 ## The action that sets x or y of `item` in mirror mode (axis x `axis`): its mirror twin
@@ -152,9 +124,10 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 static func mirrored_action_for(
 	level: BoardLevel, item: Vector2i, key: String, value: float, axis: float
 ) -> BoardAction:
-	if not key in ["x", "y"] or item.x in [Items.Kind.GOAL, Items.Kind.WALL]:
+	if not key in ["x", "y"] or not Items.is_valid(level, item):
 		return null
-	if not Items.is_valid(level, item):
+	var shape := ItemKinds.of_item(level, item).shape
+	if shape == ItemKind.Shape.SINGLE or shape == ItemKind.Shape.SEGMENT:
 		return null
 	var twin := Mirror.partner(level, item, axis)
 	if twin == Items.NONE or twin == item:
@@ -230,11 +203,3 @@ static func _targets(
 		if not key in ["x", "y"] and twin != Items.NONE and not targets.has(twin):
 			targets.append(twin)
 	return targets
-
-
-## A short name for the item's kind ("pin", "ball start").
-static func _noun(item: Vector2i) -> String:
-	var nouns: Array[String] = [
-		"pin", "pocket", "wall", "black hole", "ball start", "goal", "bonus pocket", "windmill"
-	]
-	return nouns[item.x]

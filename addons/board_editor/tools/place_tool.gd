@@ -8,29 +8,27 @@ const AddItemsAction := preload("res://addons/board_editor/actions/add_items_act
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const PlacementCheck := preload("res://addons/board_editor/core/placement_check.gd")
 
-## What this tool places: Items.Kind.PIN, HOLE, START, WINDMILL or GOAL.
-var kind: int
+## The row of what this tool places (ItemKind.placed_by_click): one item per click, or for
+## a SINGLE kind (the goal) the click moves it.
+var kind: ItemKind
 var _check := PlacementCheck.new()
 
 
+## A tool that places items of the editor's pick `places` (an ItemKind.Pick value).
 func _init(on_session: Session, places: int) -> void:
 	super(on_session)
-	kind = places
+	kind = ItemKinds.of_pick(places)
 
 
 func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 	var spot := _spot(at)
-	if kind == Items.Kind.GOAL:
-		session.commit(SetPropertiesAction.new(level(), {"goal_center": spot}, "Move goal"))
+	if kind.shape == ItemKind.Shape.SINGLE:
+		var moved := "Move %s" % kind.singular.to_lower()
+		session.commit(SetPropertiesAction.new(level(), {kind.field: spot}, moved))
 		return true
 	var data := _data_at(spot)
-	var names := {
-		Items.Kind.PIN: "Add pin",
-		Items.Kind.HOLE: "Add black hole",
-		Items.Kind.WINDMILL: "Add windmill",
-	}
 	var action := AddItemsAction.new(
-		level(), session.mirrored(data), str(names.get(kind, "Add ball start"))
+		level(), session.mirrored(data), "Add %s" % kind.singular.to_lower()
 	)
 	session.commit(action)
 	session.select(action.added)
@@ -39,57 +37,44 @@ func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 
 func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var spot := _spot(hover)
-	var radius := level().pin_radius
-	match kind:
-		Items.Kind.HOLE:
-			radius = level().hole_radius
-		Items.Kind.START:
-			radius = level().ball_radius
-		Items.Kind.GOAL:
-			radius = level().goal_radius
+	var outline := ItemOutline.of_value(kind, level(), _new_value(spot))
 	var spots := PackedVector2Array([spot])
-	if session.mirror_enabled and kind != Items.Kind.GOAL:
+	if session.mirror_enabled and kind.shape != ItemKind.Shape.SINGLE:
 		spots.append(Vector2(2.0 * session.mirror_axis() - spot.x, spot.y))
-	if kind == Items.Kind.WINDMILL:
-		radius = new_windmill(spot).sweep_radius()
-	if kind == Items.Kind.PIN:
-		Draw.ghost_points(canvas, to_screen, spots, radius, level())
+	if kind.ghost_crowds:
+		Draw.ghost_points(canvas, to_screen, spots, outline.radius, level())
 		return
 	var color := Draw.GHOST_COLOR
 	if would_add_error(spot):
 		color = Draw.BLOCKED_COLOR  # a click here would give the board a problem
-	# The goal and a windmill's sweep are big: an outline keeps the board under them visible.
-	var filled := kind != Items.Kind.GOAL and kind != Items.Kind.WINDMILL
+	# Big things (the goal, a windmill's sweep) are outlined: the board under them shows.
 	for point in spots:
-		Draw.circle(canvas, to_screen, point, radius, color, filled)
+		Draw.circle(canvas, to_screen, point, outline.radius, color, not outline.hollow)
 
 
 ## True when placing here (with its mirror twin) would give the board a new error; for the
 ## goal, when it would land on a wall, a ball start or a black hole.
 func would_add_error(spot: Vector2) -> bool:
-	if kind == Items.Kind.GOAL:
+	if kind.shape == ItemKind.Shape.SINGLE:
 		return PlacementCheck.goal_blocked(level(), spot)
 	return _check.adds_error(level(), session.mirrored(_data_at(spot)))
-
-
-## The windmill this tool places at `at`: four blades turning clockwise (WindmillSpec's
-## defaults; the property panel changes them).
-static func new_windmill(at: Vector2) -> WindmillSpec:
-	return WindmillSpec.driven(
-		at, WindmillSpec.DEFAULT_BLADES, WindmillSpec.DEFAULT_LENGTH, WindmillSpec.DEFAULT_SPEED
-	)
 
 
 # What a click at `spot` adds (before mirroring).
 func _data_at(spot: Vector2) -> Dictionary:
 	var data := Items.empty_set()
-	if kind == Items.Kind.WINDMILL:
-		data["windmills"] = [new_windmill(spot)]
+	var value: Variant = _new_value(spot)
+	if value is Vector2:
+		data[kind.set_key] = PackedVector2Array([value])
 	else:
-		var key := {Items.Kind.PIN: "pins", Items.Kind.HOLE: "holes", Items.Kind.START: "starts"}
-		data[key[kind]] = PackedVector2Array([spot])
+		data[kind.set_key] = [value]
 	return data
 
 
 func _spot(at: Vector2) -> Vector2:
-	return session.snap_point(at) if kind == Items.Kind.PIN else session.snap_cell_point(at)
+	return session.snap_cell_point(at)
+
+
+# What a click at `spot` places: the row's new item (a windmill), else the point.
+func _new_value(spot: Vector2) -> Variant:
+	return kind.creates.call(spot) if kind.creates.is_valid() else spot
