@@ -182,9 +182,26 @@ func set_tool(new_tool: int) -> void:
 	tool_changed.emit(tool)
 
 
-## The tools that apply to this board.
+## The tools that apply to this board: its game's, then the place tools its rows bring.
 func available_tools() -> Array[int]:
-	return MAZE_TOOLS if level != null and level.is_maze() else PACHINKO_TOOLS
+	var found: Array[int] = []
+	found.assign(MAZE_TOOLS if level != null and level.is_maze() else PACHINKO_TOOLS)
+	var game := level.kind if level != null else BoardLevel.Kind.PACHINKO
+	var rows := row_tools()
+	for row_tool in rows:
+		if rows[row_tool].game == game:
+			found.append(row_tool)
+	return found
+
+
+## The place tools the ItemKinds rows bring (ItemKind.tool_key: a floor arrow's), tool ->
+## its row, numbered on from Tool's in table order.
+static func row_tools() -> Dictionary[int, ItemKind]:
+	var found: Dictionary[int, ItemKind] = {}
+	for kind in ItemKinds.all():
+		if kind.tool_key != KEY_NONE:
+			found[Tool.size() + found.size()] = kind
+	return found
 
 
 ## Replaces the selection.

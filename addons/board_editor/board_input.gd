@@ -56,6 +56,9 @@ func _init(on_session: Session) -> void:
 		Session.Tool.TULIP: BonusTool.new(session, BonusPocketSpec.Role.TULIP),
 		Session.Tool.WINDMILL: PlaceTool.new(session, Items.Kind.WINDMILL),
 	}
+	var rows := Session.row_tools()
+	for tool in rows:
+		tools[tool] = PlaceTool.new(session, rows[tool].pick)
 
 
 ## The active tool.

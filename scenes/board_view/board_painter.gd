@@ -21,7 +21,8 @@ enum Layer {
 	STARTS = 512,
 	BONUS = 1024,
 	WINDMILLS = 2048,
-	ALL = 4095,
+	FLOOR_ARROWS = 4096,
+	ALL = 8191,
 }
 
 const BonusPainter := preload("res://scenes/board_view/bonus_painter.gd")
@@ -186,6 +187,7 @@ static func _draw_pins(canvas: CanvasItem, level: BoardLevel, min_radius: float)
 
 
 static func _draw_maze(canvas: CanvasItem, level: BoardLevel, layers: int) -> void:
+	_draw_painted_items(canvas, level, layers)
 	if layers & Layer.GOAL and level.goal_radius > 0.0:
 		_draw_dashed_circle(canvas, level.goal_center, level.goal_radius, GOAL_COLOR, 5.0)
 	if layers & Layer.HOLES:
@@ -203,6 +205,16 @@ static func _draw_maze(canvas: CanvasItem, level: BoardLevel, layers: int) -> vo
 	if layers & Layer.STARTS:
 		for start in level.ball_starts:
 			canvas.draw_circle(start, level.ball_radius, BALL_COLOR)
+
+
+# The items whose rows draw them (ItemKind.paints: a floor arrow), under everything else.
+static func _draw_painted_items(canvas: CanvasItem, level: BoardLevel, layers: int) -> void:
+	for kind in ItemKinds.of_game(level.kind):
+		var flag: int = Layer.get(kind.paint_layer, 0)
+		if kind.paints.is_valid() and layers & flag:
+			for index in kind.field_indices(level):
+				if kind.is_item(level, index):
+					kind.paints.call(canvas, level, index)
 
 
 static func _draw_dashed_circle(

@@ -19,7 +19,7 @@ func _init() -> void:
 	name = "BoardEditorToolbar"
 	add_child(VSeparator.new())
 	var group := ButtonGroup.new()
-	for tool: int in Shortcuts.TOOLS:
+	for tool: int in Shortcuts.tools():
 		var button := Button.new()
 		button.text = Shortcuts.name_of(tool)
 		button.tooltip_text = Shortcuts.tooltip(tool)

@@ -68,15 +68,25 @@ const FLIP_KEY := KEY_H
 const MIRROR_COPY_KEY := KEY_M
 
 
+## Every tool, TOOLS and then those the ItemKinds rows bring (Session.row_tools): tool ->
+## [key, name, tooltip].
+static func tools() -> Dictionary:
+	var found := TOOLS.duplicate()
+	var rows := Session.row_tools()
+	for tool in rows:
+		found[tool] = [rows[tool].tool_key, rows[tool].singular, rows[tool].tool_tip]
+	return found
+
+
 ## The tool's name ("Pin").
 static func name_of(tool: int) -> String:
-	var entry: Array = TOOLS[tool]
+	var entry: Array = tools()[tool]
 	return entry[1]
 
 
 ## The key that picks a tool.
 static func key_of(tool: int) -> Key:
-	var entry: Array = TOOLS[tool]
+	var entry: Array = tools()[tool]
 	return entry[0]
 
 
@@ -87,7 +97,7 @@ static func label(tool: int) -> String:
 
 ## The tooltip text for a tool.
 static func tooltip(tool: int) -> String:
-	var entry: Array = TOOLS[tool]
+	var entry: Array = tools()[tool]
 	return "%s\n%s" % [label(tool), entry[2]]
 
 
@@ -95,7 +105,7 @@ static func tooltip(tool: int) -> String:
 static func tool_for(event: InputEventKey) -> int:
 	if event.ctrl_pressed or event.alt_pressed or event.meta_pressed or event.shift_pressed:
 		return -1
-	for tool: int in TOOLS:
+	for tool: int in tools():
 		if key_of(tool) == event.keycode:
 			return tool
 	return -1

@@ -125,12 +125,19 @@ var erasable := true
 ## draws them ("PINS"); rows may share a layer.
 var layer := ""
 var paint_layer := ""
+## `(canvas: CanvasItem, level, index)`: draws item `index` in board pixels, for a kind the
+## board painter has no drawing of its own for (a floor arrow); its `paint_layer` shows it.
+var paints := Callable()
 ## True when the editor's place tool puts one of these down per click (a pin, a hole); for
 ## a SINGLE kind the click moves it.
 var placed_by_click := false
 ## `(at: Vector2) -> Variant`: the item-set value a click at `at` places (a new windmill);
 ## without it a click places the point.
 var creates := Callable()
+## A kind with a key here gets its own place tool in the editor (the key picks it), named
+## by `singular`, with this tooltip; the kinds the editor has tools for leave it KEY_NONE.
+var tool_key := KEY_NONE
+var tool_tip := ""
 ## True when a place tool's ghost turns red where the new item crowds the pins (a pin).
 var ghost_crowds := false
 ## `(level, index) -> Dictionary`: the property panel's fields of item `index` and their
