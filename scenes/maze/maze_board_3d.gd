@@ -50,6 +50,7 @@ var _floor := MeshInstance3D.new()
 var _walls := MeshInstance3D.new()
 var _frame := MeshInstance3D.new()
 var _holes := MeshInstance3D.new()
+var _arrows := MazeFloorArrows.new()
 var _floor_material := ShaderMaterial.new()
 var _wall_material := ShaderMaterial.new()
 var _frame_material := ShaderMaterial.new()
@@ -58,7 +59,7 @@ var _frame_material := ShaderMaterial.new()
 func _ready() -> void:
 	_floor_material.shader = FLOOR_SHADER
 	_floor_material.set_shader_parameter("shadow_darkness", SHADOW_DARKNESS)
-	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes]:
+	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes, _arrows]:
 		piece.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		add_child(piece)
 	_floor.material_override = _floor_material
@@ -86,6 +87,7 @@ func build(level: BoardLevel, hard: bool) -> void:
 	_set_paint("wall_height", wall_height)
 	_set_paint("frame_height", wall_height + FRAME_EXTRA_HEIGHT)
 	set_ball_shadows(PackedVector4Array())
+	_arrows.build(level)
 	_paint_look()
 	_set_paint("goal_color", Palette.GOAL)
 	_set_paint("rim_color", Palette.HOLE_RIM.darkened(0.4))

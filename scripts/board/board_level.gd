@@ -206,6 +206,12 @@ const CURRENT_VERSION := 1
 	set(value):
 		holes = value
 		emit_changed()
+## Floor arrows (FloorArrowSpec): hints painted on the floor, no physics.
+@export var floor_arrows: Array[FloorArrowSpec] = []:
+	set(value):
+		floor_arrows = value
+		_watch_pockets()
+		emit_changed()
 ## Radius of every black hole, in pixels.
 @export var hole_radius: float = 0.0:
 	set(value):
@@ -260,6 +266,10 @@ const CURRENT_VERSION := 1
 @export var windmill_ids: PackedInt32Array = PackedInt32Array():
 	set(value):
 		windmill_ids = value
+		emit_changed()
+@export var floor_arrow_ids: PackedInt32Array = PackedInt32Array():
+	set(value):
+		floor_arrow_ids = value
 		emit_changed()
 ## Per item list ("pins", "walls"...): the id the next new item of that list gets. It only
 ## ever grows, so an id is never handed out twice in a board's life, even after the item

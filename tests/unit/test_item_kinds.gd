@@ -84,6 +84,7 @@ func test_a_copied_board_shares_no_item_resource_and_watches_every_one() -> void
 		as Array[BonusPocketSpec]
 	)
 	level.windmills = [WindmillSpec.driven(Vector2(90, 90), 4, 20, 100)] as Array[WindmillSpec]
+	level.floor_arrows = [FloorArrowSpec.create(Vector2(20, 60), 45.0)] as Array[FloorArrowSpec]
 	var copy := level.duplicate_level()
 	for kind in ItemKinds.all():
 		if kind.shape != ItemKind.Shape.SPEC and kind.shape != ItemKind.Shape.ROLE_SPEC:

@@ -23,6 +23,7 @@ const ROWS: Array[GDScript] = [
 	preload("res://scripts/board/item_kinds/ball_start_kind.gd"),
 	preload("res://scripts/board/item_kinds/hole_kind.gd"),
 	preload("res://scripts/board/item_kinds/goal_kind.gd"),
+	preload("res://scripts/board/item_kinds/floor_arrow_kind.gd"),
 ]
 
 # The rows, built once as the class loads (the scripts are @tool, so the editor builds
