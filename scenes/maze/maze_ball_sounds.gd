@@ -1,3 +1,4 @@
+class_name MazeBallSounds
 extends Node
 ## The maze's rolling sound, Labyrinth's signature: one looping player per ball whose
 ## loudness and pitch follow that ball's speed, silent when it rests. Call `update` every

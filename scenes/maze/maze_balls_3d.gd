@@ -1,3 +1,4 @@
+class_name MazeBalls3d
 extends Node3D
 ## The maze's balls in 3D: one lit sphere per ball of the rules' world, resting on the floor
 ## and rolling (each frame's move turns it about up × move by |move| / radius, so a painted
@@ -5,7 +6,6 @@ extends Node3D
 ## sinks, shrinking into the dark. Their shadows are the floor's (`shadow_casters` says
 ## where the balls are). Reads the world each frame; never moves a ball.
 
-const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 ## How long a ball takes to drop out of sight into a hole, in seconds.
 const FALL_SECONDS := 0.45
 ## A fall advances at most this much per frame, so it shows in a dozen frames or more even
@@ -60,8 +60,8 @@ func sync(rules: MazeRules, delta: float) -> void:
 		return
 	_board_size = rules.level.size
 	var radius := rules.level.ball_radius
-	_mesh.radius = radius * Meshes.UNITS_PER_PX
-	_mesh.height = radius * 2.0 * Meshes.UNITS_PER_PX
+	_mesh.radius = radius * MazeMeshes.UNITS_PER_PX
+	_mesh.height = radius * 2.0 * MazeMeshes.UNITS_PER_PX
 	var ids := rules.world.get_ids()
 	var positions := rules.world.get_positions()
 	var seen := {}
@@ -75,7 +75,7 @@ func sync(rules: MazeRules, delta: float) -> void:
 			_last[id] = positions[i]
 		var move := positions[i] - _last[id]
 		node.basis = roll(node.basis, Vector3(move.x, -move.y, 0.0), radius)
-		node.position = Meshes.to_local(_board_size, positions[i], radius)
+		node.position = MazeMeshes.to_local(_board_size, positions[i], radius)
 		_last[id] = positions[i]
 	for id: int in _nodes.keys():
 		if not seen.has(id):
@@ -99,10 +99,12 @@ func shadow_casters() -> PackedVector4Array:
 	var casters := PackedVector4Array()
 	for node: MeshInstance3D in _nodes.values() + _falls.keys():
 		if node.visible:
-			var at := node.position / Meshes.UNITS_PER_PX
+			var at := node.position / MazeMeshes.UNITS_PER_PX
 			var board := Vector2(at.x + _board_size.x * 0.5, _board_size.y * 0.5 - at.y)
 			casters.append(
-				Vector4(board.x, board.y, at.z, _mesh.radius / Meshes.UNITS_PER_PX * node.scale.x)
+				Vector4(
+					board.x, board.y, at.z, _mesh.radius / MazeMeshes.UNITS_PER_PX * node.scale.x
+				)
 			)
 	return casters
 
@@ -174,7 +176,7 @@ func _advance_falls(delta: float, radius: float) -> void:
 		var start: Vector2 = fall[0]
 		var hole: Vector2 = fall[1]
 		var centre := start.lerp(hole, pose.x)
-		node.position = Meshes.to_local(_board_size, centre, radius - pose.y)
+		node.position = MazeMeshes.to_local(_board_size, centre, radius - pose.y)
 		node.scale = Vector3.ONE * pose.z
 		var surface := node.material_override as BaseMaterial3D
 		if surface != null:

@@ -1,3 +1,4 @@
+class_name MazeBoard3d
 extends Node3D
 ## The maze board in 3D, built from its level data: the floor (a quad whose shader paints
 ## the goal ring and cuts the holes), every wall raised as one mesh, the frame round the
@@ -6,11 +7,8 @@ extends Node3D
 ## fed by maze_soft_shadows.gd). Lives under the stage's tilting pivot; the balls are a
 ## sibling (maze_balls_3d.gd). Heights are in board pixels.
 
-const Palette := preload("res://scenes/maze/maze_palette.gd")
-const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const FLOOR_SHADER := preload("res://scenes/maze/maze_floor.gdshader")
 const SOLID_SHADER := preload("res://scenes/maze/maze_wood_solid.gdshader")
-const SoftShadows := preload("res://scenes/maze/maze_soft_shadows.gd")
 ## The wood-and-steel look: a pale maple floor in boards one cell wide, walnut walls with
 ## lighter routed tops, and a darker frame (the tutorial's look keeps its flat paint).
 const MAPLE := Color("e2c9a0")
@@ -74,24 +72,24 @@ func build(level: BoardLevel, hard: bool) -> void:
 	_level = level
 	var size := level.size
 	var quad := QuadMesh.new()
-	quad.size = size * Meshes.UNITS_PER_PX
+	quad.size = size * MazeMeshes.UNITS_PER_PX
 	_floor.mesh = quad
 	var wall_height := wall_height_px()
-	_walls.mesh = Meshes.walls(size, level.walls, level.wall_width, wall_height)
-	_frame.mesh = Meshes.frame(size, FRAME_MARGIN, wall_height + FRAME_EXTRA_HEIGHT, BODY_DEPTH)
+	_walls.mesh = MazeMeshes.walls(size, level.walls, level.wall_width, wall_height)
+	_frame.mesh = MazeMeshes.frame(size, FRAME_MARGIN, wall_height + FRAME_EXTRA_HEIGHT, BODY_DEPTH)
 	_set_paint(
-		"wall_field", ImageTexture.create_from_image(SoftShadows.wall_field(size, level.walls))
+		"wall_field", ImageTexture.create_from_image(MazeSoftShadows.wall_field(size, level.walls))
 	)
-	_set_paint("wall_field_range", SoftShadows.FIELD_RANGE_PX)
+	_set_paint("wall_field_range", MazeSoftShadows.FIELD_RANGE_PX)
 	_set_paint("wall_half_width", level.wall_width * 0.5)
 	_set_paint("wall_height", wall_height)
 	_set_paint("frame_height", wall_height + FRAME_EXTRA_HEIGHT)
 	set_ball_shadows(PackedVector4Array())
 	_arrows.build(level)
 	_paint_look()
-	_set_paint("goal_color", Palette.GOAL)
-	_set_paint("rim_color", Palette.HOLE_RIM.darkened(0.4))
-	_set_paint("lost_color", Palette.HOLE_LOST)
+	_set_paint("goal_color", MazePalette.GOAL)
+	_set_paint("rim_color", MazePalette.HOLE_RIM.darkened(0.4))
+	_set_paint("lost_color", MazePalette.HOLE_LOST)
 	_set_paint("board_size", size)
 	_set_paint("goal_center", level.goal_center)
 	_set_paint("goal_radius", level.goal_radius)
@@ -102,7 +100,7 @@ func build(level: BoardLevel, hard: bool) -> void:
 ## The floor, walls and frame in the chosen look (`tutorial_look`).
 func _paint_look() -> void:
 	var wood := not tutorial_look
-	_set_paint("floor_color", MAPLE if wood else Palette.BACKGROUND)
+	_set_paint("floor_color", MAPLE if wood else MazePalette.BACKGROUND)
 	_set_paint("floor_gain", 1.0 if wood else FLOOR_GAIN)
 	var grain := wood and not low_graphics
 	_set_paint("grain_strength", 0.55 if grain else 0.0)
@@ -110,13 +108,13 @@ func _paint_look() -> void:
 	_set_paint("grain_color", MAPLE_GRAIN)
 	_set_paint("plank_px", _level.path_width + _level.wall_width if _level != null else 35.0)
 	var looks := [
-		[_wall_material, WALNUT_SIDE, WALNUT_TOP, Palette.WALL, Palette.WALL],
+		[_wall_material, WALNUT_SIDE, WALNUT_TOP, MazePalette.WALL, MazePalette.WALL],
 		[
 			_frame_material,
 			FRAME_SIDE,
 			FRAME_TOP,
-			Palette.WALL.lightened(0.1),
-			Palette.WALL.lightened(0.1)
+			MazePalette.WALL.lightened(0.1),
+			MazePalette.WALL.lightened(0.1)
 		],
 	]
 	for look: Array in looks:
@@ -151,7 +149,7 @@ func set_hard_mode(hard: bool) -> void:
 	_set_paint("holes", padded)
 	_set_paint("hole_count", centres.size())
 	var rim := Color(0.42, 0.4, 0.38)
-	_holes.mesh = Meshes.holes(_level.size, centres, _level.hole_radius, hole_depth_px(), rim)
+	_holes.mesh = MazeMeshes.holes(_level.size, centres, _level.hole_radius, hole_depth_px(), rim)
 	if _holes.mesh != null:
 		var tube := _plain(Color.WHITE, 0.9, 0.1)
 		tube.vertex_color_use_as_albedo = true
@@ -174,15 +172,15 @@ func floor_material() -> ShaderMaterial:
 ## the board where it is now; call after every move of the board.
 func cast_shadows(sun_direction: Vector3) -> void:
 	var in_board := global_transform.basis.inverse() * sun_direction.normalized()
-	_set_paint("sun_step", SoftShadows.sun_step(in_board))
+	_set_paint("sun_step", MazeSoftShadows.sun_step(in_board))
 
 
 ## The balls that cast shadows now: board x, y, the centre's height above the floor and the
 ## radius, in px (MazeBalls3D.shadow_casters); at most SoftShadows.MAX_BALLS.
 func set_ball_shadows(casters: PackedVector4Array) -> void:
-	var count := mini(casters.size(), SoftShadows.MAX_BALLS)
+	var count := mini(casters.size(), MazeSoftShadows.MAX_BALLS)
 	var padded := casters.slice(0, count)
-	padded.resize(SoftShadows.MAX_BALLS)
+	padded.resize(MazeSoftShadows.MAX_BALLS)
 	_set_paint("balls", padded)
 	_set_paint("ball_count", count)
 
@@ -203,8 +201,8 @@ func hole_depth_px() -> float:
 func outer_box() -> AABB:
 	var size := _level.size if _level != null else Vector2(350.0, 315.0)
 	var top := wall_height_px() + FRAME_EXTRA_HEIGHT
-	var lo := Meshes.to_local(size, Vector2(-FRAME_MARGIN, size.y + FRAME_MARGIN), -BODY_DEPTH)
-	var hi := Meshes.to_local(size, Vector2(size.x + FRAME_MARGIN, -FRAME_MARGIN), top)
+	var lo := MazeMeshes.to_local(size, Vector2(-FRAME_MARGIN, size.y + FRAME_MARGIN), -BODY_DEPTH)
+	var hi := MazeMeshes.to_local(size, Vector2(size.x + FRAME_MARGIN, -FRAME_MARGIN), top)
 	return AABB(lo, hi - lo)
 
 

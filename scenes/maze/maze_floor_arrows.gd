@@ -4,7 +4,6 @@ extends MeshInstance3D
 ## one mesh for all of them, in the board's mesh units (MazeMeshes.to_local). A child of
 ## the board, so it tilts with it; no physics, balls roll over it.
 
-const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const FloorArrowKind := preload("res://scripts/board/item_kinds/floor_arrow_kind.gd")
 ## How far above the floor the paint lies (px): enough to never flicker into it.
 const LIFT_PX := 0.3
@@ -37,9 +36,9 @@ static func arrows_mesh(level: BoardLevel) -> ArrayMesh:
 		var outline := arrow.polygon()
 		var corners := Geometry2D.triangulate_polygon(outline)
 		for k in range(0, corners.size() - 2, 3):
-			var a := Meshes.to_local(level.size, outline[corners[k]], LIFT_PX)
-			var b := Meshes.to_local(level.size, outline[corners[k + 1]], LIFT_PX)
-			var c := Meshes.to_local(level.size, outline[corners[k + 2]], LIFT_PX)
+			var a := MazeMeshes.to_local(level.size, outline[corners[k]], LIFT_PX)
+			var b := MazeMeshes.to_local(level.size, outline[corners[k + 1]], LIFT_PX)
+			var c := MazeMeshes.to_local(level.size, outline[corners[k + 2]], LIFT_PX)
 			# Godot's front faces wind clockwise as seen: seen from above (+z), here.
 			if (b - a).cross(c - a).z > 0.0:
 				var swap := b

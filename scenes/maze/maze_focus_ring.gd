@@ -1,10 +1,10 @@
+class_name MazeFocusRing
 extends RefCounted
 ## The focus ring of the maze screen's buttons: Godot's default one is a faint white line,
 ## which vanishes on the light win panel and side panel, so a keyboard or gamepad player
 ## could not see which button Enter would press. This one is a thick ring in the seed's ink
 ## colour, drawn a little outside the button so it never hides the button's text.
 
-const Palette := preload("res://scenes/maze/maze_palette.gd")
 ## The ring's width and how far outside the button it is drawn (px).
 const WIDTH := 3
 const OUTSET := 4.0
@@ -15,7 +15,7 @@ const CORNER := 8
 static func style() -> StyleBoxFlat:
 	var ring := StyleBoxFlat.new()
 	ring.draw_center = false
-	ring.border_color = Palette.TEXT
+	ring.border_color = MazePalette.TEXT
 	ring.set_border_width_all(WIDTH)
 	ring.set_corner_radius_all(CORNER)
 	ring.set_expand_margin_all(OUTSET)

@@ -1,3 +1,4 @@
+class_name MazeFraming
 extends RefCounted
 ## Frames the tilted maze board in a region of the screen (the part the side panel leaves):
 ## an off-centre perspective (a camera frustum shifted like a view camera's lens) so the

@@ -5,24 +5,12 @@ extends Control
 ## 3D with raised walls and rolling balls (maze_stage.gd), their sounds and rumble, and the
 ## seed's note, with a timer, the best time and the mode beside the joystick.
 
-const Palette := preload("res://scenes/maze/maze_palette.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
-const MazeBallSounds := preload("res://scenes/maze/maze_ball_sounds.gd")
-const MazeHaptics := preload("res://scenes/maze/maze_haptics.gd")
 const Recipes := preload("res://scripts/audio/sound_recipes.gd")
-const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
-const MazeNote := preload("res://scenes/maze/maze_note.gd")
-const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
-const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
-const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
-const MazePanelLayout := preload("res://scenes/maze/maze_panel_layout.gd")
 ## After a window change the panel is placed again this many frames running, while its
 ## wrapped text settles to the new width.
 const SETTLE_FRAMES := 3
-const MazeHints := preload("res://scenes/maze/maze_hints.gd")
-const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
 const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
@@ -44,7 +32,7 @@ var _load_problem := ""
 var _goal_count := 0
 var _recorder := ReplayRecorder.new()
 var _ghost: GhostRun
-var _ghost_view := MazeGhost3D.new()
+var _ghost_view := MazeGhost3d.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
 var _panel_layout: MazePanelLayout
@@ -235,7 +223,7 @@ func _on_game_reset() -> void:
 	_stage.set_tilt(Vector2.ZERO)
 	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
-	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
+	_mode.modulate = MazePalette.HARD if rules.hard_mode else MazePalette.GOAL
 	var hint := MazeHints.start(rules.hard_mode, rules.ball_total(), rules.level.holes.size())
 	# the ghost's line on a line of its own, and before there is a ghost one as long, so the
 	# note keeps its height (and the panel its layout) from the first attempt to the next

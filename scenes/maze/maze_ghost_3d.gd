@@ -1,3 +1,4 @@
+class_name MazeGhost3d
 extends Node3D
 ## The ghost of the best run in the 3D maze: translucent balls standing where the best run's
 ## balls were at the same step. It lives on the tilting board (the stage's `add_on_board`),
@@ -5,7 +6,6 @@ extends Node3D
 ## ball (maze_ghost.gdshader) with a bright rim, so it reads as "not a real ball" beside the
 ## solid ones. Call `show_balls` every frame and `clear` on a reset.
 
-const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const GHOST_SHADER := preload("res://scenes/maze/maze_ghost.gdshader")
 ## How much of the ghost's body hides what is behind it (its rim and highlight show more).
 const OPACITY := 0.42
@@ -35,8 +35,8 @@ func set_board_size(board_size: Vector2) -> void:
 ## Shows ghost balls at `positions` (board pixels) with `radius` pixels.
 func show_balls(positions: PackedVector2Array, radius: float) -> void:
 	shown_positions = positions
-	_mesh.radius = radius * Meshes.UNITS_PER_PX
-	_mesh.height = radius * 2.0 * Meshes.UNITS_PER_PX
+	_mesh.radius = radius * MazeMeshes.UNITS_PER_PX
+	_mesh.height = radius * 2.0 * MazeMeshes.UNITS_PER_PX
 	while _nodes.size() < positions.size():
 		var node := MeshInstance3D.new()
 		node.mesh = _mesh
@@ -48,7 +48,7 @@ func show_balls(positions: PackedVector2Array, radius: float) -> void:
 		var node := _nodes[i]
 		node.visible = i < positions.size()
 		if node.visible:
-			node.position = Meshes.to_local(_board_size, positions[i], radius)
+			node.position = MazeMeshes.to_local(_board_size, positions[i], radius)
 
 
 ## Hides the ghost.

@@ -1,3 +1,4 @@
+class_name MazeHaptics
 extends RefCounted
 ## Touch feedback for the maze: a gamepad rumble and a phone buzz when a ball knocks a wall
 ## (stronger for harder knocks) and a long one when a ball drops into a hole. Off when the

@@ -1,3 +1,4 @@
+class_name MazeHints
 extends RefCounted
 ## What the maze screen tells the player in words: the controls line and the hints under
 ## its notes. Every key is named as the player has bound it (KeyNames), so the words stay

@@ -1,3 +1,4 @@
+class_name MazeJoystick
 extends Control
 ## The seed's joystick: a dark purple disc with four arrows and a red-orange head. Press the
 ## head to start; after that the head follows the pointer (clamped to ±15 seed pixels per
@@ -11,7 +12,6 @@ signal pressed
 ## The head moved to `offset` seed pixels from the centre (each axis within ±15).
 signal moved(offset: Vector2)
 
-const Palette := preload("res://scenes/maze/maze_palette.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const DISC_RADIUS := 25.0
 const HEAD_RADIUS := 10.0
@@ -107,18 +107,20 @@ func _gain() -> float:
 func _draw() -> void:
 	var c := size * 0.5
 	var s := ui_scale
-	draw_circle(c, DISC_RADIUS * s, Palette.JOYSTICK)
+	draw_circle(c, DISC_RADIUS * s, MazePalette.JOYSTICK)
 	for dir: Vector2 in [Vector2.UP, Vector2.DOWN, Vector2.LEFT, Vector2.RIGHT]:
 		var tip := c + dir * (ARROW_DISTANCE + ARROW_HALF) * s
 		var base := c + dir * ARROW_DISTANCE * s
 		var side := dir.orthogonal() * ARROW_HALF * s
-		draw_colored_polygon(PackedVector2Array([tip, base + side, base - side]), Palette.JOYSTICK)
+		draw_colored_polygon(
+			PackedVector2Array([tip, base + side, base - side]), MazePalette.JOYSTICK
+		)
 	var radius := HEAD_RADIUS * s * _glow_scale()
 	var head := c + head_offset * s
 	if glowing:
-		draw_circle(head, radius * 1.35, Color(Palette.BALL, 0.25))
-	draw_circle(head, radius, Palette.BALL)
-	draw_circle(head + Vector2(-0.3, -0.35) * radius, radius * 0.3, Palette.BALL.lightened(0.4))
+		draw_circle(head, radius * 1.35, Color(MazePalette.BALL, 0.25))
+	draw_circle(head, radius, MazePalette.BALL)
+	draw_circle(head + Vector2(-0.3, -0.35) * radius, radius * 0.3, MazePalette.BALL.lightened(0.4))
 
 
 # The seed's glow: scale 1 → 1.2 and back, ease-in-out, after a 4 s delay.

@@ -1,8 +1,8 @@
+class_name MazeMedalDisc
 extends Control
 ## The medal a win earned, drawn large on the win card: a disc in the medal's colour hung on
 ## a ribbon, its name across it. Hidden when the run earned none.
 
-const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 ## The disc's radius and the ribbon's length above it, in the card's units.
 const RADIUS := 54.0
 const RIBBON := 34.0

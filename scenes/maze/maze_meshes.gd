@@ -1,3 +1,4 @@
+class_name MazeMeshes
 extends RefCounted
 ## Builds the maze board's 3D meshes from its level data: every wall of the board as one
 ## extruded stadium (a box with a round cap at each end, the physics' capsule) in a single

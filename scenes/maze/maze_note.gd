@@ -1,3 +1,4 @@
+class_name MazeNote
 extends VBoxContainer
 ## The seed's note under the joystick: a line and a smaller hint, fading in and out over
 ## two seconds (the seed's `transition: opacity 2s`).

@@ -1,3 +1,4 @@
+class_name MazePalette
 extends RefCounted
 ## The seed's palette (coolors f06449-ede6e3-7d82b8-36382e-613f75), shared by the maze views.
 

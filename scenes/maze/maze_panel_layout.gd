@@ -1,11 +1,10 @@
+class_name MazePanelLayout
 extends RefCounted
 ## Where the maze screen's side panel goes for the window's shape: a column on the right of
 ## a landscape window, a band along the bottom of a portrait one, its text grown in a small
 ## window (MazeSideText) and the joystick sized to what the other lines leave. The board is
 ## framed in the rest, so no text lies over it.
 
-const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
-const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
 ## The column's share of a landscape window's width, within these bounds, this far from the
 ## edge; a portrait band's share of the height.
 const SIDE_SHARE := 0.2

@@ -1,11 +1,10 @@
+class_name MazeSideText
 extends RefCounted
 ## Keeps a maze panel's text readable on the screen (the side panel's portrait band, the win
 ## card). The project draws a 1280 × 720 design stretched to the window (canvas_items), so a
 ## portrait phone or a small window draws it smaller: then every label and button of the
 ## panel grows by one factor, so the smallest text still reads (ReadableText) and the sizes
 ## keep their order.
-
-const ReadableText := preload("res://scenes/common/readable_text.gd")
 
 ## How much the text is grown now (1 when the design's sizes are readable as they are).
 var factor := 1.0

@@ -1,3 +1,4 @@
+class_name MazeSoftShadows
 extends RefCounted
 ## What the floor shader needs to lay soft shadows (maze_floor_shade.gdshaderinc): a distance
 ## field of the board's walls (built once per board), the way shadows fall for the sun as the

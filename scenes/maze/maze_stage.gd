@@ -1,3 +1,4 @@
+class_name MazeStage
 extends Node3D
 ## The 3D stage of the tilt maze: the board built from the level (maze_board_3d.gd) and its
 ## balls (maze_balls_3d.gd) on a pivot that the tilt rotates, as the seed's CSS rotateX /
@@ -6,12 +7,7 @@ extends Node3D
 ## board ever reaches it, with the board's shadow on it. One 3D unit is 100 board pixels.
 ## The camera frames the board in the screen region the game leaves it (maze_framing.gd).
 
-const Palette := preload("res://scenes/maze/maze_palette.gd")
-const MazeBoard3D := preload("res://scenes/maze/maze_board_3d.gd")
-const MazeBalls3D := preload("res://scenes/maze/maze_balls_3d.gd")
-const MazeTableShadow := preload("res://scenes/maze/maze_table_shadow.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
-const MazeFraming := preload("res://scenes/maze/maze_framing.gd")
 const UNITS_PER_PX := 0.01
 ## The seed's CSS perspective distance, in board pixels.
 const PERSPECTIVE_PX := 600.0
@@ -48,8 +44,8 @@ var low_graphics := false
 
 var _world_env := WorldEnvironment.new()
 var _pivot := Node3D.new()
-var _board: MazeBoard3D = MazeBoard3D.new()
-var _balls: MazeBalls3D = MazeBalls3D.new()
+var _board: MazeBoard3d = MazeBoard3d.new()
+var _balls: MazeBalls3d = MazeBalls3d.new()
 var _camera := Camera3D.new()
 var _sun := DirectionalLight3D.new()
 var _table: MazeTableShadow = MazeTableShadow.new()
@@ -75,7 +71,7 @@ func _ready() -> void:
 	add_child(_sun)
 	add_child(_camera)
 	_camera.current = true
-	_table.colour = Palette.JOYSTICK
+	_table.colour = MazePalette.JOYSTICK
 	_table.visible = not low_graphics
 	add_child(_table)
 	add_child(_pivot)
@@ -186,12 +182,12 @@ func camera() -> Camera3D:
 
 
 ## The 3D board (floor, walls, frame, holes), for tests.
-func board() -> MazeBoard3D:
+func board() -> MazeBoard3d:
 	return _board
 
 
 ## The 3D balls, for tests.
-func balls() -> MazeBalls3D:
+func balls() -> MazeBalls3d:
 	return _balls
 
 
@@ -224,10 +220,12 @@ func lowest_board_point() -> float:
 ## (with `low` graphics a satin steel that needs no reflections to read as metal).
 static func ball_material(seed_red: bool, low := false) -> StandardMaterial3D:
 	var mat := StandardMaterial3D.new()
-	mat.albedo_texture = _ball_band_texture(Palette.BALL if seed_red else Color(0.78, 0.8, 0.83))
+	mat.albedo_texture = _ball_band_texture(
+		MazePalette.BALL if seed_red else Color(0.78, 0.8, 0.83)
+	)
 	# a little glow of its own, so the ball stays as bright as the seed's beside the floor
 	mat.emission_enabled = true
-	mat.emission = (Palette.BALL if seed_red else Color(0.5, 0.52, 0.55)).darkened(0.4)
+	mat.emission = (MazePalette.BALL if seed_red else Color(0.5, 0.52, 0.55)).darkened(0.4)
 	mat.emission_energy_multiplier = 0.6
 	if seed_red:
 		mat.roughness = 0.28
@@ -288,7 +286,7 @@ static func is_software_gl(adapter_name: String) -> bool:
 func _environment() -> Environment:
 	var env := Environment.new()
 	env.background_mode = Environment.BG_COLOR
-	env.background_color = Palette.BACKGROUND
+	env.background_color = MazePalette.BACKGROUND
 	env.ambient_light_source = Environment.AMBIENT_SOURCE_COLOR
 	env.ambient_light_color = Color.WHITE
 	env.ambient_light_energy = AMBIENT_ENERGY

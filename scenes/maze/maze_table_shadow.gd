@@ -1,3 +1,4 @@
+class_name MazeTableShadow
 extends MeshInstance3D
 ## The board's shadow on the table under it: the outline of the tilted board's box cast
 ## along the sun's direction onto the table's plane, filled with a soft-edged translucent

@@ -1,3 +1,4 @@
+class_name MazeWinPanel
 extends CenterContainer
 ## The card that shows over the board when a maze is won: the medal earned drawn large, the
 ## time, the medal's line (or how far it was from the next), the change against the best
@@ -12,11 +13,6 @@ signal retry_chosen
 ## The player chose the level select.
 signal menu_chosen
 
-const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
-const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
-const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
-const MazeMedalDisc := preload("res://scenes/maze/maze_medal_disc.gd")
-const ReadableText := preload("res://scenes/common/readable_text.gd")
 const INK := Color(0.129, 0.004, 0.141)
 ## The card's colour.
 const CARD := Color(0.99, 0.97, 0.94, 0.96)

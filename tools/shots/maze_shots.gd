@@ -175,7 +175,7 @@ static func _lose(tree: SceneTree, rules: MazeRules) -> Error:
 
 
 # Waits until the lost ball is about half way down its hole.
-static func _mid_fall(tree: SceneTree, stage: MazeGame.MazeStage) -> Error:
+static func _mid_fall(tree: SceneTree, stage: MazeStage) -> Error:
 	for frame in 120:
 		if stage.balls().fall_progress() >= FALL_SHOT_PROGRESS:
 			return OK
