@@ -1,3 +1,4 @@
+class_name CabinetBackdrop
 extends TextureRect
 ## The cabinet behind everything: a deep gradient in the machine's colours with faint
 ## diagonal light, so the board and the HUD sit on something that looks like a machine, not

@@ -1,3 +1,4 @@
+class_name InstructionsPanel
 extends Control
 ## The instructions panel: up before the first game and again at game over. It goes away
 ## only when the player means it to: its own Play button or the start key, and only once it
@@ -10,8 +11,6 @@ extends Control
 ## The player asked to play: the Play button, after the card had been up READ_SECONDS.
 signal play_requested
 
-const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
-const ReadableText := preload("res://scenes/common/readable_text.gd")
 ## The card's smallest font size (the legend's) in the design: the card is scaled up until
 ## it reads (ReadableText), while the panel has room.
 const SMALLEST_FONT := 14.0

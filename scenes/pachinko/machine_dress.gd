@@ -1,10 +1,9 @@
+class_name MachineDress
 extends RefCounted
 ## Dresses the pachinko screen around the board in its machine's colours (FasciaPalette): the
 ## cabinet behind everything, the side panel, its stats box, title and notes. The board
 ## itself dresses its own layers (BoardView). The scene's styles are shared by every copy of
 ## the scene, so each is duplicated before it is changed.
-
-const CabinetBackdrop := preload("res://scenes/pachinko/cabinet_backdrop.gd")
 
 
 ## Gives the pachinko screen `game` (pachinko_game.tscn) the look of `level`'s machine: its

@@ -6,18 +6,6 @@ extends Control
 ## signals.
 
 const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
-const PachinkoInput := preload("res://scenes/pachinko/pachinko_input.gd")
-const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
-const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
-const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
-const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
-const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
-const PauseMenu := preload("res://scenes/common/pause_menu.gd")
-const BonusView := preload("res://scenes/pachinko/bonus/bonus_view.gd")
-const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
-const MachineDress := preload("res://scenes/pachinko/machine_dress.gd")
-const PachinkoMusic := preload("res://scenes/pachinko/pachinko_music.gd")
-const PachinkoHudLayout := preload("res://scenes/pachinko/pachinko_hud_layout.gd")
 ## The panel's designed width (PachinkoHudLayout).
 const HUD_WIDTH := PachinkoHudLayout.HUD_WIDTH
 ## The board's area's short side in the designed 1280 × 720 layout: a full-power drag is 100

@@ -1,10 +1,9 @@
+class_name PachinkoHudLayout
 extends RefCounted
 ## Where the pachinko screen's panel goes and how big it is drawn: a column beside the board
 ## (drawn bigger in a small window, so its smallest words still read), or a band under the
 ## board in a portrait window. Returns the board's area; the game fits the board into it.
 
-const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
-const ReadableText := preload("res://scenes/common/readable_text.gd")
 const HUD_WIDTH := 360.0
 ## Beside the board, the panel drawn bigger to read (a small window) takes at most this
 ## share of the window's width: the board keeps the rest.

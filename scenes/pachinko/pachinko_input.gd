@@ -1,3 +1,4 @@
+class_name PachinkoInput
 extends RefCounted
 ## Turns the player's input into flipper and handle calls on the rules.
 ## The flipper (one shot): a press on the red grip and a drag up (mouse or touch, which

@@ -1,3 +1,4 @@
+class_name PachinkoMusic
 extends MusicPlayer
 ## The pachinko game's music: the machine's loop, its mood following the bonus machine.
 ## A reach (reach_started: two reels match) turns it to REACH; the reach's end to JACKPOT

@@ -1,3 +1,4 @@
+class_name AimPreview
 extends Node2D
 ## While the player aims, the flight a shot at that power takes: a dotted line from the
 ## rail's mouth to a ring where the ball first meets a pin (LaunchPreview: the game's own

@@ -1,3 +1,4 @@
+class_name BallLayer
 extends Node2D
 ## Every ball in one draw call batch: a pre-shaded steel ball texture stamped at each
 ## position the world reports (no node per ball), plus the loaded ball in the launcher.

@@ -1,3 +1,4 @@
+class_name BoardBackplate
 extends "res://scenes/pachinko/board/board_layer.gd"
 ## Bottom art layer: the lacquered back plate the ring sits on, with corner scrolls in the
 ## machine's trim metal. Drawn once per board, in its machine's colours (FasciaPalette).

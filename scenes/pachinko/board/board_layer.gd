@@ -1,3 +1,4 @@
+class_name BoardLayer
 extends Node2D
 ## One drawn layer of the pachinko board. BoardView hands every layer the board through
 ## `setup()`; a layer keeps it, and the look of the machine it is dressed as (`_palette`,

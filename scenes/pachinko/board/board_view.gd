@@ -1,3 +1,4 @@
+class_name BoardView
 extends Node2D
 ## The board in layers, bottom to top as in the chapter: back plate, fascia art, ring
 ## border and name plate, launch path, gutter, pins, balls, pocket art, effects. The board's
@@ -8,15 +9,6 @@ extends Node2D
 ## once into an off-screen viewport at the board's on-screen resolution and shown as one
 ## texture, so a frame only draws that texture, the balls, the pockets and the effects.
 
-const BoardLayer := preload("res://scenes/pachinko/board/board_layer.gd")
-const GutterArt := preload("res://scenes/pachinko/board/gutter_art.gd")
-const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
-const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
-const WinEffects := preload("res://scenes/pachinko/board/win_effects.gd")
-const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
-const WindmillLayer := preload("res://scenes/pachinko/board/windmill_layer.gd")
-const NamePlateLayer := preload("res://scenes/pachinko/board/name_plate_layer.gd")
-const AimPreview := preload("res://scenes/pachinko/board/aim_preview.gd")
 const FASCIA_SIZE := 1000.0
 ## How far the plate reaches beyond the ring, as a share of the ring radius.
 const PLATE_REACH := 1.1

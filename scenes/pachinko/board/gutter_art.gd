@@ -1,3 +1,4 @@
+class_name GutterArt
 extends "res://scenes/pachinko/board/board_layer.gd"
 ## The gutter: the dark slot at the bottom of the ring that swallows balls after their
 ## bounces there. It flashes when it takes a ball.

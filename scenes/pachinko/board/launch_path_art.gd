@@ -1,3 +1,4 @@
+class_name LaunchPathArt
 extends "res://scenes/pachinko/board/board_layer.gd"
 ## The launch path: the channel between the ring and the chrome guide rail that a fired
 ## ball rides up into the field, with the stopper at its bottom.

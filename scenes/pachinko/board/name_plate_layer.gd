@@ -1,8 +1,7 @@
+class_name NamePlateLayer
 extends "res://scenes/pachinko/board/board_layer.gd"
 ## The machine's name plate over the top of the ring band (NamePlate), baked with the other
 ## static layers.
-
-const NamePlate := preload("res://scenes/board_view/fascia/name_plate.gd")
 
 
 func _draw() -> void:

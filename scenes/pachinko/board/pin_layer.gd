@@ -1,9 +1,8 @@
+class_name PinLayer
 extends "res://scenes/pachinko/board/board_layer.gd"
 ## Every pin of the board in one static draw: nail heads in the machine's pin colours with a
 ## shadow and a glint, special (catching) pins as PinArt's gold diamonds. Redrawn only when
 ## the board changes.
-
-const PinArt := preload("res://scenes/board_view/pin_art.gd")
 
 
 func _draw() -> void:

@@ -1,3 +1,4 @@
+class_name PinLights
 extends Node2D
 ## Pins light up where something strikes them, in the colour of what struck them: a warm
 ## glow for a ball, a hot pink one for a ball in a fever round, and whatever colour a bonus

@@ -1,10 +1,10 @@
+class_name PocketArt
 extends "res://scenes/pachinko/board/board_layer.gd"
 ## Pocket art over each pocket's pins: a tulip in the machine's petal and trim colours
 ## (FasciaPalette; red and gold on Classic) whose cup covers the rim pins,
 ## a window showing the special pin (a gold diamond), and the payout written on it. A
 ## pocket glows when it catches a ball.
 
-const PinArt := preload("res://scenes/board_view/pin_art.gd")
 ## Classic's pocket colours (the legend's pocket icon draws with them).
 const PETAL := Color("c0283c")
 const PETAL_LIGHT := Color("ee5a5f")

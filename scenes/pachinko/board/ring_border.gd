@@ -1,3 +1,4 @@
+class_name RingBorder
 extends "res://scenes/pachinko/board/board_layer.gd"
 ## The ring border: an enamel band in the machine's ring colour (FasciaPalette) with a
 ## bright lip, the edge balls never pass.

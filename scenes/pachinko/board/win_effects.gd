@@ -1,3 +1,4 @@
+class_name WinEffects
 extends Node2D
 ## Short-lived effects over the board: a rising "+4" and a ring of sparks where a pocket
 ## paid out, and a puff where a weak shot came back. All in one draw, no node per effect.

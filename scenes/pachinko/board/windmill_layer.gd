@@ -1,3 +1,4 @@
+class_name WindmillLayer
 extends Node2D
 ## The windmills of a pachinko board, turning: each frame every wheel is drawn at the angle
 ## its world reports (the world turns them; this only reads). Drawn above the pins and

@@ -1,9 +1,9 @@
+class_name BonusArt
 extends Node2D
 ## The live bonus pockets over the board: each cup with its lid or wings as the world has
 ## them, a lamp that flashes when it catches a ball and glows while an attacker is open,
 ## and an open attacker's seconds and catches left. Reads BonusMachine; never changes it.
 
-const Painter := preload("res://scenes/board_view/bonus_painter.gd")
 ## Seconds a catch keeps a lamp lit.
 const FLASH_SECONDS := 0.8
 
@@ -46,7 +46,7 @@ func _draw() -> void:
 		var light := _light[i]
 		if open and spec.role == BonusPocketSpec.Role.ATTACKER:
 			light = maxf(light, 0.6 + 0.4 * sin(_clock * 12.0))
-		Painter.draw_pocket(self, _level, spec, open, light, _machine.openness(i))
+		BonusPainter.draw_pocket(self, _level, spec, open, light, _machine.openness(i))
 		if open and spec.role == BonusPocketSpec.Role.ATTACKER:
 			_draw_countdown(spec, i)
 

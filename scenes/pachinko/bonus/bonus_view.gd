@@ -1,16 +1,10 @@
+class_name BonusView
 extends Node
 ## Wires the bonus layer's pictures and sounds to a game: puts the bonus art and the reels
 ## into the board view under the balls and the reach stage and the jackpot's moments over
 ## them, answers the BonusMachine's signals (lamps, reel sounds, the reach's rising tone,
 ## the jackpot's fanfare and rounds, tulips opening), and slows the game's clock for a
 ## reach (`time_scale`).
-
-const BonusArt := preload("res://scenes/pachinko/bonus/bonus_art.gd")
-const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
-const JackpotBanner := preload("res://scenes/pachinko/bonus/jackpot_banner.gd")
-const FeverGlow := preload("res://scenes/pachinko/bonus/fever_glow.gd")
-const ReachStage := preload("res://scenes/pachinko/bonus/reach_stage.gd")
-const ReachSlowMotion := preload("res://scenes/pachinko/bonus/reach_slow_motion.gd")
 
 var art := BonusArt.new()
 var reels := ReelDisplay.new()

@@ -1,3 +1,4 @@
+class_name FeverGlow
 extends Node2D
 ## The fever state: while a jackpot is on (its rounds and the breaks between them) the ring
 ## burns with a pulsing warm band, and the round ("ROUND 3 / 10") with its seconds and

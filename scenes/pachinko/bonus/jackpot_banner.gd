@@ -1,3 +1,4 @@
+class_name JackpotBanner
 extends Node2D
 ## The jackpot's moments in the middle of the board: once the reach stage has shown the
 ## three alike, a gold flash across the field with "ROUND 1 / 10" growing as the attacker

@@ -1,3 +1,4 @@
+class_name ReachSlowMotion
 extends RefCounted
 ## Slow motion for a reach: while the last reel of a reach turns, the game's clock eases
 ## down to SLOW_SCALE so the balls drift and the player watches the reel; after it stops the

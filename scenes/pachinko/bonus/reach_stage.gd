@@ -1,3 +1,4 @@
+class_name ReachStage
 extends Node2D
 ## The reach on centre stage: when the first two reels match, the reels come out of their
 ## small window to the middle of the board, large (each reel's number SYMBOL_FONT_SIZE board
@@ -15,7 +16,6 @@ const BOX := Vector2(130.0, 176.0)
 const GAP := 14.0
 ## The numbers' font size, board pixels (a digit is about 0.7 of it tall).
 const SYMBOL_FONT_SIZE := 156
-const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 
 var _machine: BonusMachine
 var _center := Vector2.ZERO

@@ -1,3 +1,4 @@
+class_name ReelDisplay
 extends Node2D
 ## The three digital reels on the board: a dark window with one rolling number per reel,
 ## the reels stopping one by one, "REACH" while the last reel decides a possible jackpot,

@@ -1,10 +1,9 @@
+class_name CupDisplay
 extends Control
 ## The ball cup: a chrome tray heaped with balls (more balls, a bigger heap) and the count
 ## written large on its front. Paid balls pour in from above one after another
 ## (PayoutPour) and the count rises and bounces as they land.
 
-const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
-const PayoutPour := preload("res://scenes/pachinko/hud/payout_pour.gd")
 const MAX_HEAP := 40
 const TRAY := Color("b9bfcc")
 const TRAY_DARK := Color("4b5064")

@@ -1,3 +1,4 @@
+class_name LauncherPanel
 extends Control
 ## The launcher: a vertical power bar that fills red from 0 to 100 (a gold mark keeps the
 ## last single shot's power), the flipper lever,

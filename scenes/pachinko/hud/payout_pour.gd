@@ -1,3 +1,4 @@
+class_name PayoutPour
 extends RefCounted
 ## The paid balls on their way into the cup: a payout is poured as drops that fall one after
 ## another from above the tray and land in it, each carrying its share of the balls, so the

@@ -1,3 +1,4 @@
+class_name StatsPanel
 extends PanelContainer
 ## Session numbers: shots, where the balls went, hits per pocket, the balls paid back this
 ## session (one game, a full cup to an empty one) and the best session on this board.

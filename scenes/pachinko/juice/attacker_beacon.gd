@@ -1,3 +1,4 @@
+class_name AttackerBeacon
 extends Node2D
 ## Makes the fever round's target plain: over every open attacker three chevrons flow down
 ## into its mouth ("aim here"), and a ring around it runs down with the round's seconds, so

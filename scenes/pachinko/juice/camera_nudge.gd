@@ -1,10 +1,10 @@
+class_name CameraNudge
 extends Node
 ## The jackpot's camera nudge: the board jolts as if the cabinet took a thump, swings
 ## back and forth a few times, each smaller, and is back at rest after SECONDS. Moves only
 ## the picture (BoardView.nudge), never a ball. With screen shake off in the settings the
 ## board stays still and only the thump is heard.
 
-const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 ## Real seconds from the kick to rest.
 const SECONDS := 0.6
 ## Screen pixels of the first swing.

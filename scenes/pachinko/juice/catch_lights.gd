@@ -1,9 +1,9 @@
+class_name CatchLights
 extends Node
 ## A pocket that catches a ball lights its rim pins in the colour of what it is: gold for
 ## a plain pocket, sky blue for a start pocket, orange for an attacker, pink for a tulip
 ## (PinLights fades them). Reads the rules' `ball_won`; changes nothing in the game.
 
-const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
 const POCKET := Color(1.0, 0.78, 0.3)
 const ROLE_TINTS: Array[Color] = [Color("5ab4ff"), Color("ff7a2a"), Color("ff7ad0")]
 

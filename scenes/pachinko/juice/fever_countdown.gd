@@ -1,3 +1,4 @@
+class_name FeverCountdown
 extends Node
 ## The fever round's last seconds are heard: while an attacker is open, each of its last
 ## LAST_SECONDS whole seconds starts with a double beep, so a player feeding it knows the

@@ -1,3 +1,4 @@
+class_name JuiceView
 extends Node
 ## Wires the juice to a game, each effect its own node: the slow motion of the last balls
 ## and its spotlight, the jackpot's camera nudge and light sweep, pockets' rim pins lighting
@@ -5,14 +6,6 @@ extends Node
 ## The game asks `time_scale()` once a frame for its clock; everything else follows the
 ## rules' and the bonus machine's signals.
 
-const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
-const SlowMotion := preload("res://scenes/pachinko/juice/slow_motion.gd")
-const SlowMotionFocus := preload("res://scenes/pachinko/juice/slow_motion_focus.gd")
-const CameraNudge := preload("res://scenes/pachinko/juice/camera_nudge.gd")
-const LightSweep := preload("res://scenes/pachinko/juice/light_sweep.gd")
-const CatchLights := preload("res://scenes/pachinko/juice/catch_lights.gd")
-const FeverCountdown := preload("res://scenes/pachinko/juice/fever_countdown.gd")
-const AttackerBeacon := preload("res://scenes/pachinko/juice/attacker_beacon.gd")
 const JuiceRecipes := preload("res://scripts/audio/juice_recipes.gd")
 
 var slow_motion := SlowMotion.new()

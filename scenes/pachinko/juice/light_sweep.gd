@@ -1,10 +1,10 @@
+class_name LightSweep
 extends Node2D
 ## The jackpot's light sweep: a band of light runs across the field from the upper left to
 ## the lower right in SECONDS, like a lamp passing behind the glass, and every pin it
 ## crosses flashes white-gold (PinLights). Drawn additive over the balls, clipped to the
 ## ring; one polygon pair a frame while it runs, asleep otherwise.
 
-const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
 ## Real seconds for the band to cross the field.
 const SECONDS := 0.9
 ## Half the band's width, as a share of the ring radius.

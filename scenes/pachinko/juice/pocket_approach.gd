@@ -1,3 +1,4 @@
+class_name PocketApproach
 extends RefCounted
 ## Tells which ball is about to drop into a pocket: each ball's path is followed ahead on
 ## its parabola (its velocity and the board's gravity, no bounces) for LOOKAHEAD game

@@ -1,3 +1,4 @@
+class_name SlowMotion
 extends Node
 ## Slow motion for the last balls of a game: when the player has LAST_BALLS or fewer balls
 ## left to shoot and a ball in play is about to drop into a pocket (PocketApproach), the
@@ -13,7 +14,6 @@ signal ended
 
 enum Phase { IDLE, EASE_IN, HOLD, EASE_OUT }
 
-const PocketApproach := preload("res://scenes/pachinko/juice/pocket_approach.gd")
 ## Balls left to shoot (cup and launcher) at or under which a game is in its last balls.
 const LAST_BALLS := 2
 ## Balls in play at or under which the game is in its last balls (a stream from the handle

@@ -1,9 +1,9 @@
+class_name SlowMotionFocus
 extends Node2D
 ## Shows the slow motion: while the clock is slow the board darkens outside a spotlight on
 ## the ball about to drop in, and a thin ring circles that ball, both as deep as the clock
 ## is slow. Follows SlowMotion; one canvas item, asleep at full speed.
 
-const SlowMotion := preload("res://scenes/pachinko/juice/slow_motion.gd")
 ## Board pixels of the spotlight's clear middle, and of its soft edge.
 const SPOT_RADIUS := 46.0
 const SPOT_EDGE := 40.0

@@ -1,3 +1,4 @@
+class_name BoardPieces
 extends RefCounted
 ## What a pachinko board is made of, for a player: the kinds of piece it has (only those),
 ## each with one line saying what it does, in the board's own numbers. The instructions

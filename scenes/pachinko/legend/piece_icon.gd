@@ -1,11 +1,8 @@
+class_name PieceIcon
 extends Control
 ## A small drawing of one kind of board piece, as it looks on the board: a plain pocket's
 ## cup, a bonus pocket drawn by BonusPainter (a tulip with its petals open, so a player
 ## sees what a catch does), or the board's first windmill drawn by WindmillPainter.
-
-const BoardPieces := preload("res://scenes/pachinko/legend/board_pieces.gd")
-const BonusPainter := preload("res://scenes/board_view/bonus_painter.gd")
-const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
 
 ## Room for the drawing, px.
 const SIZE := Vector2(64.0, 50.0)

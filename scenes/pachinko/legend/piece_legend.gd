@@ -1,10 +1,8 @@
+class_name PieceLegend
 extends VBoxContainer
 ## The instructions panel's list of a board's pieces: one row per kind of piece the board
 ## has, a small drawing and one line. Only what the board has: Classic shows its pockets,
 ## Hanami its START pockets, ATTACKER and tulips.
-
-const BoardPieces := preload("res://scenes/pachinko/legend/board_pieces.gd")
-const PieceIcon := preload("res://scenes/pachinko/legend/piece_icon.gd")
 
 
 func _init() -> void:
