@@ -25,7 +25,6 @@ enum Layer {
 	ALL = 8191,
 }
 
-const BonusPainter := preload("res://scenes/board_view/bonus_painter.gd")
 const PACHINKO_BACKGROUND := Color("14121f")
 const RAIL_COLOR := Color("c9c3d6")
 const GUTTER_COLOR := Color("000000")

@@ -1,10 +1,10 @@
+class_name BonusPainter
 extends RefCounted
 ## Draws one bonus pocket on any canvas: its cup, rim pins and catching pin, its lid or
 ## wings in their current state, a lamp that glows with `light` (0..1) and its label.
 ## The game's bonus art draws the live state with it; the board painter (menus, editor)
 ## draws every bonus pocket closed.
 
-const PinArt := preload("res://scenes/board_view/pin_art.gd")
 ## Cup colours per role (start pocket, attacker, tulip).
 const CUP_COLORS: Array[Color] = [Color("1f7a5a"), Color("8c1d2c"), Color("b8417a")]
 const LAMP_COLORS: Array[Color] = [Color("6dffb9"), Color("ffcf4a"), Color("ff9ad5")]

@@ -1,3 +1,4 @@
+class_name PinArt
 extends RefCounted
 ## How a pin looks, shared by every picture of a board (the game's pin layer, the pocket and
 ## bonus art, the menus' and editor's painter): brass nail heads, and special (catching) pins

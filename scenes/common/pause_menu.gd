@@ -1,3 +1,4 @@
+class_name PauseMenu
 extends CanvasLayer
 ## The pause menu each game instances. The `pause` action (Esc / Start) opens it and pauses
 ## the whole tree, so the game's simulation stops; it runs itself while paused.

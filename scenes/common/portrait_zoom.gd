@@ -1,3 +1,4 @@
+class_name PortraitZoom
 extends Node
 ## Zooms its parent (a screen's content, laid out full-window) in a portrait window. The
 ## project stretches a 1280 × 720 design to the window, which on a 720 × 1280 phone draws a

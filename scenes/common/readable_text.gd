@@ -1,3 +1,4 @@
+class_name ReadableText
 extends RefCounted
 ## The one rule for text a player must be able to read on any screen. The project draws its
 ## 1280 × 720 design stretched to the window (canvas_items), so a portrait phone draws it at

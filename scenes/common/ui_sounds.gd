@@ -1,3 +1,4 @@
+class_name UiSounds
 extends Node
 ## Menu sounds: a click when any button under this node's parent is pressed, and a short
 ## tick while a slider moves (so the volume sliders preview the level they set). Buttons

@@ -1,3 +1,4 @@
+class_name BindingList
 extends GridContainer
 ## The controls part of the settings screen: one row per game action with its keyboard and
 ## gamepad bindings. Choosing a binding waits for the next key (or gamepad button / stick),

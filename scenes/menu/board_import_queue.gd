@@ -1,3 +1,4 @@
+class_name BoardImportQueue
 extends RefCounted
 ## My boards imports off the main thread, for the level select: files wait in order, one
 ## worker thread reads, checks and copies each (UserBoards.import_result; a large board is

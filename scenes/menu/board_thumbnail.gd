@@ -1,3 +1,4 @@
+class_name BoardThumbnail
 extends Control
 ## A board drawn small, fitted into this control's rect, for the level select. The drawing
 ## is the shared BoardPainter's (the same as the editor's and the games'), which marks

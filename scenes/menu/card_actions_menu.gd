@@ -1,3 +1,4 @@
+class_name CardActionsMenu
 extends PopupMenu
 ## The small menu of one level select card: Play, Export a copy…, and Delete… for the
 ## player's own boards. Opened from the focused card (the board_actions key or button, or a

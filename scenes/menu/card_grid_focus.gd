@@ -1,3 +1,4 @@
+class_name CardGridFocus
 extends RefCounted
 ## Focus neighbours for the level select's cards, so the arrows and the d-pad move card to
 ## card: Up / Down to the card above or below (the nearest one when that row is shorter),

@@ -1,3 +1,4 @@
+class_name CardLongText
 extends RefCounted
 ## The long text of a level select card (its description, or why it cannot be played). While
 ## the card is not focused it keeps to a few lines, ending in "…". On the focused card the

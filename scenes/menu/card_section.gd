@@ -1,3 +1,4 @@
+class_name CardSection
 extends RefCounted
 ## One section of the level select: a grid of card slots (the shipped boards, or My boards)
 ## and the off-thread loading (BoardListLoading) that fills it. A card is made for every
@@ -8,9 +9,6 @@ extends RefCounted
 signal slot_added(slot: LevelSlot)
 ## A loaded board was put on its card (or its card was gone by then).
 signal card_filled
-
-const LevelSlot := preload("res://scenes/menu/level_slot.gd")
-const Words := preload("res://scenes/menu/level_select_words.gd")
 
 ## The grid the slots go in.
 var grid: GridContainer = null
@@ -108,7 +106,7 @@ func cancel() -> void:
 func fill(path: String, result: BoardLoadResult) -> void:
 	var slot := slot_of(path)
 	if slot != null:
-		slot.fill(result, Words.best_text(result, kind))
+		slot.fill(result, LevelSelectWords.best_text(result, kind))
 	card_filled.emit()
 
 

@@ -1,3 +1,4 @@
+class_name LevelCard
 extends Button
 ## One board in the level select: its thumbnail, name, description and best result. While
 ## its file loads (off the main thread) the card says so; a board that failed to load shows
@@ -5,9 +6,6 @@ extends Button
 ## reachable with keyboard and gamepad) but not start. The focused card shows its whole
 ## description (or error): its thumbnail gives up the height the extra lines need.
 
-const BoardThumbnail := preload("res://scenes/menu/board_thumbnail.gd")
-const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
-const CardLongText := preload("res://scenes/menu/card_long_text.gd")
 const CARD_SIZE := Vector2(300, 400)
 const THUMB_HEIGHT := 206.0
 ## Greyed (a board that cannot be played), but opaque: the backdrop never shows through text.

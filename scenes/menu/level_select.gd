@@ -1,3 +1,4 @@
+class_name LevelSelect
 extends Control
 ## The level select of one game (App.level_select_kind): the shipped boards (levels/<kind>/)
 ## and the player's own ("My boards", user://boards/<kind>/), one card per file. Files load
@@ -8,18 +9,6 @@ extends Control
 ## The arrows and the d-pad move card to card (LevelSelectFocus), Enter / A plays, and a
 ## card's own menu (board_actions: X / Square, or a right click) offers Play, Export and Delete.
 
-const LevelSlot := preload("res://scenes/menu/level_slot.gd")
-const CardSection := preload("res://scenes/menu/card_section.gd")
-const LevelSelectFocus := preload("res://scenes/menu/level_select_focus.gd")
-const MazeCardOrder := preload("res://scenes/menu/maze_card_order.gd")
-const MazeCardProgress := preload("res://scenes/menu/maze_card_progress.gd")
-const Dialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
-const CardActionsMenu := preload("res://scenes/menu/card_actions_menu.gd")
-const LevelCard := preload("res://scenes/menu/level_card.gd")
-const Words := preload("res://scenes/menu/level_select_words.gd")
-const BoardImportQueue := preload("res://scenes/menu/board_import_queue.gd")
-const PathLabel := preload("res://scenes/menu/path_label.gd")
-const PortraitZoom := preload("res://scenes/common/portrait_zoom.gd")
 const TITLES := {BoardLevel.PACHINKO_NAME: "Pachinko", BoardLevel.MAZE_NAME: "Tilt Maze"}
 ## At most this many files of a folder get a card (README "Safety"); the rest are counted.
 const MAX_LISTED := 200
@@ -49,7 +38,7 @@ var _focus: LevelSelectFocus = null
 @onready var _folder: PathLabel = %FolderLabel
 @onready var _back: Button = %BackButton
 @onready var _import: Button = %ImportButton
-@onready var _dialogs: Dialogs = %Dialogs
+@onready var _dialogs: MyBoardsDialogs = %Dialogs
 @onready var _scroll: ScrollContainer = %Scroll
 @onready var _card_menu: CardActionsMenu = %CardMenu
 @onready var _hint: Label = %Hint
@@ -72,7 +61,7 @@ func _ready() -> void:
 	_imports.titles = TITLES
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
 	_say("", false)
-	_hint.text = Words.keys_hint()
+	_hint.text = LevelSelectWords.keys_hint()
 	reload()
 
 
@@ -118,7 +107,7 @@ func _unhandled_input(event: InputEvent) -> void:
 
 ## Lists and loads every board file again (shipped and My boards).
 func reload() -> void:
-	_folder.show_path("Folder: ", Words.shown_path("%s/%s" % [user_root, kind]))
+	_folder.show_path("Folder: ", LevelSelectWords.shown_path("%s/%s" % [user_root, kind]))
 	_load_section(_shipped, BoardLoader.LEVELS_DIR)
 	_load_section(_mine, user_root)
 
@@ -300,7 +289,7 @@ func _show_maze_progress() -> void:
 func _update_summary() -> void:
 	var mine := my_slots().size()
 	_my_empty.visible = mine == 0
-	_summary.text = Words.summary_of(kind, cards(), mine, _not_listed)
+	_summary.text = LevelSelectWords.summary_of(kind, cards(), mine, _not_listed)
 
 
 # The footer's status line shows only while it has something to say: an empty one left a

@@ -1,3 +1,4 @@
+class_name LevelSelectFocus
 extends RefCounted
 ## Where the keys' and the pad's focus goes on the level select, and the grids' columns it
 ## follows: as many columns as the list is wide, the cards sharing the row's width (both
@@ -5,10 +6,6 @@ extends RefCounted
 ## first playable card once the boards have loaded, and after a delete the next card at
 ## the same scroll, so the player stays where they were.
 
-const CardSection := preload("res://scenes/menu/card_section.gd")
-const CardGridFocus := preload("res://scenes/menu/card_grid_focus.gd")
-const LevelCard := preload("res://scenes/menu/level_card.gd")
-const LevelSlot := preload("res://scenes/menu/level_slot.gd")
 ## Room between cards, across and down (the grids' separations in the scene).
 const CARD_GAP := 22
 ## At most this many cards in a row, however wide the window.

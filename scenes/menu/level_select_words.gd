@@ -1,3 +1,4 @@
+class_name LevelSelectWords
 extends RefCounted
 ## What the level select says, as a player reads it: the summary line over the cards, a
 ## card's best result, the folder's real path, the keys line and the keys that open a

@@ -1,3 +1,4 @@
+class_name LevelSlot
 extends VBoxContainer
 ## One place in the level select's grid: a board's card and, under it, what can be done with
 ## its file: export (any board) and delete (the player's own boards only). Those two buttons
@@ -11,8 +12,6 @@ signal export_requested(board_path: String)
 signal delete_requested(board_path: String, shown_name: String)
 ## The player right-clicked the card: its menu should open (the card has the focus).
 signal menu_requested(card: LevelCard)
-
-const LevelCard := preload("res://scenes/menu/level_card.gd")
 
 ## The board's card (a Button; pressing it plays a playable board).
 var card: LevelCard = null

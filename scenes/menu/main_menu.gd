@@ -1,3 +1,4 @@
+class_name MainMenu
 extends Control
 ## The title screen: Pachinko, Tilt Maze, Settings, Quit. The first button takes focus so
 ## keyboard and gamepad work at once; problems met while loading the player's files are

@@ -1,9 +1,9 @@
+class_name MazeCardOrder
 extends RefCounted
 ## The order of the shipped maze cards on the level select: the order the boards open in
 ## (MazeProgress), first guessed from the file names before they load, then from the board
 ## ids loaded. Boards outside the play order keep their listed order after the others.
 
-const LevelSlot := preload("res://scenes/menu/level_slot.gd")
 # a rank counts for more than any place in a list, so a sort by rank keeps ties in order
 const RANK_STEP := 10000
 

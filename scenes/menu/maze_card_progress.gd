@@ -1,9 +1,8 @@
+class_name MazeCardProgress
 extends RefCounted
 ## Puts maze progression on the level select's cards: each card's medals (from the best
 ## time per mode and the board's medal times) and, unless every board is unlocked in the
 ## settings, a lock on boards whose predecessor is not finished yet.
-
-const LevelCard := preload("res://scenes/menu/level_card.gd")
 
 
 ## Marks every loaded maze card in `cards` (in play order, see MazeProgress.sorted) with its

@@ -1,3 +1,4 @@
+class_name MedalBadges
 extends Control
 ## A level card's medal rows: per mode (easy, hard) a disc in gold, silver or bronze, or an
 ## empty ring with no medal yet, then the board's three target times, each beside its
@@ -6,7 +7,6 @@ extends Control
 ## card small (a portrait phone, a small window) gets it grown until it reads at 14 screen
 ## px (ReadableText), and the rows are laid out by the measured text, so they fit the card.
 
-const ReadableText := preload("res://scenes/common/readable_text.gd")
 const COLORS := {
 	Medals.Medal.GOLD: Color("#f2c14e"),
 	Medals.Medal.SILVER: Color("#c9d1d9"),

@@ -1,3 +1,4 @@
+class_name MenuBackdrop
 extends Control
 ## The menus' animated background: a deep blue gradient, a lattice of brass pins and a few
 ## silver balls drifting down through it. Purely decorative; it never takes input.

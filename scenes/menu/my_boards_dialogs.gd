@@ -1,3 +1,4 @@
+class_name MyBoardsDialogs
 extends Node
 ## The dialogs of "My boards" in the level select: pick a board file to import, pick where to
 ## export one, confirm a delete. They only ask; the level select does the work when a choice

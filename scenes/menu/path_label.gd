@@ -1,3 +1,4 @@
+class_name PathLabel
 extends Label
 ## A label that shows a folder's path after a lead-in ("Folder: …"), trimmed from the
 ## start when it is too long for the label, so the end of the path (the folder the player is

@@ -1,3 +1,4 @@
+class_name SettingsMenu
 extends Control
 ## The settings screen, opened from the main menu and from the pause menu (it runs while the
 ## tree is paused). Changes apply at once; they are saved when the screen closes. Back, Esc
@@ -6,7 +7,6 @@ extends Control
 ## The screen closed (it frees itself right after).
 signal closed
 
-const BindingList := preload("res://scenes/menu/binding_list.gd")
 ## The designed widths (a landscape window), and the narrower ones a portrait window gets:
 ## there the screen is drawn bigger (its PortraitZoom) in fewer view units across.
 const LABEL_WIDTH := 400.0

@@ -1,3 +1,4 @@
+class_name NamePlate
 extends RefCounted
 ## A machine's name plate: the board's name on a plate that sits on the top of the ring band,
 ## shaped and coloured by the machine (FasciaPalette.PlateStyle): a scrolled cartouche, a
