@@ -7,7 +7,6 @@ extends SceneTree
 ## Prints one JSON line per board: games, triggers per game, slow seconds per trigger
 ## (median, longest) and the share of a game's real time spent slow.
 
-const SlowMotion := preload("res://scenes/pachinko/juice/slow_motion.gd")
 const BOARDS: Array[String] = ["classic", "fever", "hanami", "tulips", "windmills"]
 const FRAME := 1.0 / 60.0
 ## Real seconds a game may last before it is cut short.

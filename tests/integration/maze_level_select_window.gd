@@ -3,7 +3,6 @@ extends RefCounted
 ## (StretchedWindow), with no boards of the player's own, once it has loaded.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 
 

@@ -5,7 +5,6 @@ extends GutTest
 ## inside the board's area; at 1280 × 720 it is drawn at its design size.
 
 const PANEL := preload("res://scenes/pachinko/instructions_panel.tscn")
-const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 
 

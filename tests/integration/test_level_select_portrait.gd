@@ -6,8 +6,6 @@ extends GutTest
 ## the window, and the header's title wraps instead of being cut ("Tilt M…"). A landscape
 ## window is laid out as before.
 
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
-const PortraitZoom := preload("res://scenes/common/portrait_zoom.gd")
 const MazeLevelSelectWindow := preload("res://tests/integration/maze_level_select_window.gd")
 const EMPTY_USER_ROOT := "user://test_level_select_portrait_no_boards"
 

@@ -7,9 +7,6 @@ extends GutTest
 ## nearly always, and the cards sat in a narrow block with empty bands either side: now the
 ## status line shows only with something to say, and the cards share the row's width.
 
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
-const LevelCard := preload("res://scenes/menu/level_card.gd")
-const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
 const MazeLevelSelectWindow := preload("res://tests/integration/maze_level_select_window.gd")
 const ScratchSave := preload("res://tests/helpers/scratch_save.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]

@@ -3,7 +3,6 @@ extends GutTest
 ## phone accelerometer with its calibration and its fallback to the joystick.
 
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
-const MazeJoystickScript := preload("res://scenes/maze/maze_joystick.gd")
 const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const FLAT := Vector3(0.0, 0.0, -9.8)
 
@@ -121,7 +120,7 @@ func test_calibrate_from_keys_also_hands_control_back() -> void:
 
 
 ## Presses the head of `stick` (sized 300 × 300) and moves the pointer `travel` screen px.
-func _drag_joystick(stick: MazeJoystickScript, travel: Vector2) -> Vector2:
+func _drag_joystick(stick: MazeJoystick, travel: Vector2) -> Vector2:
 	stick.size = Vector2(300.0, 300.0)
 	var press := InputEventMouseButton.new()
 	press.button_index = MOUSE_BUTTON_LEFT
@@ -136,14 +135,14 @@ func _drag_joystick(stick: MazeJoystickScript, travel: Vector2) -> Vector2:
 
 
 func test_the_joystick_tilts_fully_at_15_screen_pixels_as_in_the_seed() -> void:
-	var stick: MazeJoystickScript = add_child_autofree(MazeJoystickScript.new())
+	var stick: MazeJoystick = add_child_autofree(MazeJoystick.new())
 	stick.ui_scale = 2.0
 	var head := _drag_joystick(stick, Vector2(15.0, -15.0))
 	assert_eq(TiltInput.tilt_from_joystick(head), Vector2(12.0, -12.0), "full tilt at 15 px")
-	stick = add_child_autofree(MazeJoystickScript.new())
+	stick = add_child_autofree(MazeJoystick.new())
 	head = _drag_joystick(stick, Vector2(7.5, 0.0))
 	assert_eq(TiltInput.tilt_from_joystick(head), Vector2(6.0, 0.0), "half way: half the tilt")
-	stick = add_child_autofree(MazeJoystickScript.new())
+	stick = add_child_autofree(MazeJoystick.new())
 	stick.sensitivity = 2.0
 	head = _drag_joystick(stick, Vector2(7.5, 0.0))
 	assert_eq(TiltInput.tilt_from_joystick(head), Vector2(12.0, 0.0), "sensitivity 2: 7.5 px")
@@ -152,7 +151,7 @@ func test_the_joystick_tilts_fully_at_15_screen_pixels_as_in_the_seed() -> void:
 # A play trial let go of the mouse with the joystick pushed over: the board stayed tilted
 # until a key was pressed. Letting go springs the head back and levels the board.
 func test_letting_go_of_the_joystick_levels_the_board() -> void:
-	var stick: MazeJoystickScript = add_child_autofree(MazeJoystickScript.new())
+	var stick: MazeJoystick = add_child_autofree(MazeJoystick.new())
 	var offsets: Array[Vector2] = []
 	stick.moved.connect(func(offset: Vector2) -> void: offsets.append(offset))
 	var head := _drag_joystick(stick, Vector2(10.0, 0.0))

@@ -4,8 +4,6 @@ extends GutTest
 ## stands out from the light panel behind it.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
-const MazeFocusRing := preload("res://scenes/maze/maze_focus_ring.gd")
 const TEST_SETTINGS := "user://test_maze_focus_settings.cfg"
 const TEST_SAVE := "user://test_maze_focus_save.cfg"
 

@@ -5,8 +5,6 @@ extends GutTest
 ## 1280 × 720 a ball is drawn at least 14 px across anywhere on the board at any tilt.
 ## A board that cannot keep its balls that big is made with fewer, wider corridors.
 
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
-const Meshes := preload("res://scenes/maze/maze_meshes.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const SIZES: Array[Vector2i] = [Vector2i(1280, 720), Vector2i(900, 700), Vector2i(720, 1280)]
 const MIN_BALL_PX := 14.0
@@ -70,8 +68,8 @@ static func smallest_ball_px(stage: MazeStage, level: BoardLevel) -> float:
 		Vector2(r, level.size.y - r),
 		level.size - Vector2(r, r)
 	]:
-		var centre := pivot.global_transform * Meshes.to_local(level.size, at, r)
-		var side := camera.global_basis.x * r * Meshes.UNITS_PER_PX
+		var centre := pivot.global_transform * MazeMeshes.to_local(level.size, at, r)
+		var side := camera.global_basis.x * r * MazeMeshes.UNITS_PER_PX
 		var across := camera.unproject_position(centre + side).distance_to(
 			camera.unproject_position(centre - side)
 		)

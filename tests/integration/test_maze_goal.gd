@@ -4,7 +4,6 @@ extends GutTest
 ## the floor draws has exactly the rule's centre and radius as its edge.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const TEST_SETTINGS := "user://test_maze_goal_settings.cfg"
 const TEST_SAVE := "user://test_maze_goal_save.cfg"
 ## A board whose goal room leaves the goal's edge clear of walls every way.

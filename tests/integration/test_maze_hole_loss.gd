@@ -5,8 +5,6 @@ extends GutTest
 ## the ball is down a card offers Retry (focused) and Menu. A blind play trial saw none of it.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeWinPanel := preload("res://scenes/maze/maze_win_panel.gd")
-const MazeNote := preload("res://scenes/maze/maze_note.gd")
 const TEST_SETTINGS := "user://test_maze_hole_loss_settings.cfg"
 const TEST_SAVE := "user://test_maze_hole_loss_save.cfg"
 

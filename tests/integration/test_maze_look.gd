@@ -3,9 +3,6 @@ extends GutTest
 ## with lighter tops, polished steel balls reflecting a made-up room, a translucent steel
 ## ghost) and the tutorial's flat colours with red balls, chosen by a saved setting.
 
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
-const MazeGhost3D := preload("res://scenes/maze/maze_ghost_3d.gd")
-const Palette := preload("res://scenes/maze/maze_palette.gd")
 const PATH := "user://test_maze_look_settings.cfg"
 
 
@@ -56,13 +53,13 @@ func test_wood_and_steel_grain_the_floor_light_the_wall_tops_and_polish_the_ball
 func test_the_tutorial_look_is_the_seeds_flat_paint_and_red_balls() -> void:
 	var stage := _stage(true)
 	assert_eq(float(_floor_value(stage, "grain_strength")), 0.0, "a flat floor")
-	assert_eq(_floor_value(stage, "floor_color"), Palette.BACKGROUND)
-	assert_eq(_wall_value(stage, "side_color"), Palette.WALL)
-	assert_eq(_wall_value(stage, "cap_color"), Palette.WALL, "flat walls")
+	assert_eq(_floor_value(stage, "floor_color"), MazePalette.BACKGROUND)
+	assert_eq(_wall_value(stage, "side_color"), MazePalette.WALL)
+	assert_eq(_wall_value(stage, "cap_color"), MazePalette.WALL, "flat walls")
 	var red: StandardMaterial3D = stage.balls().material
 	assert_eq(red.metallic, 0.0, "not steel")
 	var tint := red.albedo_texture.get_image().get_pixel(0, 0)
-	assert_true(tint.is_equal_approx(Palette.BALL), "the seed's red: %s" % tint)
+	assert_true(tint.is_equal_approx(MazePalette.BALL), "the seed's red: %s" % tint)
 
 
 func test_the_room_the_balls_reflect_has_lamps_windows_and_a_dark_floor() -> void:
@@ -76,7 +73,7 @@ func test_the_room_the_balls_reflect_has_lamps_windows_and_a_dark_floor() -> voi
 
 
 func test_the_ghost_is_a_round_translucent_steel_ball() -> void:
-	var ghost := MazeGhost3D.new()
+	var ghost := MazeGhost3d.new()
 	add_child_autofree(ghost)
 	ghost.show_balls(PackedVector2Array([Vector2(50, 50)]), 5.0)
 	var ball := ghost.get_child(0) as MeshInstance3D

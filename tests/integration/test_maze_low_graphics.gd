@@ -4,7 +4,6 @@ extends GutTest
 ## already in play, and brings them back; the setting is kept in the settings file.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const TEST_SETTINGS := "user://test_low_graphics_settings.cfg"
 const TEST_SAVE := "user://test_low_graphics_save.cfg"
 

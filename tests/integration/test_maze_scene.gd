@@ -4,9 +4,7 @@ extends GutTest
 ## joystick starts and tilts, keys tilt smoothly, Space / R / Back / H / E reset and switch,
 ## and a win shows the seed's message and saves the best time.
 
-const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const TEST_SETTINGS := "user://test_maze_settings.cfg"
 const TEST_SAVE := "user://test_maze_save.cfg"
 const SaveData := preload("res://scripts/app/save_data.gd")

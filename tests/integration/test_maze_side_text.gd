@@ -7,8 +7,6 @@ extends GutTest
 ## keeps off the board and on screen.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
-const MazeJoystick := preload("res://scenes/maze/maze_joystick.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(1280, 720), Vector2i(900, 700)]
 

@@ -8,7 +8,6 @@ extends GutTest
 
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const Framing := preload("res://tests/integration/test_maze_framing.gd")
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 ## The smallest a ball may be on the screen of a 900 × 700 window (px across).
 const MIN_SMALL_WINDOW_BALL_PX := 10.0

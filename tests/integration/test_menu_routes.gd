@@ -5,7 +5,6 @@ extends GutTest
 
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const PACHINKO := "res://scenes/pachinko/pachinko_game.tscn"
 ## The player's own boards folder: only boards there (or shipped) play. The test's board
 ## sorts first and is removed afterwards.

@@ -9,7 +9,6 @@ extends GutTest
 const MainMenuScene := preload("res://scenes/menu/main_menu.tscn")
 const SettingsScene := preload("res://scenes/menu/settings_menu.tscn")
 const PauseScene := preload("res://scenes/common/pause_menu.tscn")
-const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]
 const MIN_SCREEN_PX := 14.0

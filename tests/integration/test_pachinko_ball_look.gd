@@ -4,10 +4,6 @@ extends GutTest
 ## a pin or a pocket that is hit flashes for long enough and brightly enough to be seen.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
-const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
-const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
-const PocketArt := preload("res://scenes/pachinko/board/pocket_art.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const BOARDS_DIR := "res://levels/pachinko"
 ## The smallest ball a player picks out of a busy fascia, screen pixels across.

@@ -11,9 +11,6 @@ extends GutTest
 ## window the panel stays on screen, off the board, and its content fits it.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const LauncherPanel := preload("res://scenes/pachinko/hud/launcher_panel.gd")
-const CupDisplay := preload("res://scenes/pachinko/hud/cup_display.gd")
-const MazeSideText := preload("res://scenes/maze/maze_side_text.gd")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
 const SIZES: Array[Vector2i] = [Vector2i(720, 1280), Vector2i(900, 700), Vector2i(1280, 720)]
 

@@ -6,13 +6,6 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const JuiceView := preload("res://scenes/pachinko/juice/juice_view.gd")
-const CameraNudge := preload("res://scenes/pachinko/juice/camera_nudge.gd")
-const LightSweep := preload("res://scenes/pachinko/juice/light_sweep.gd")
-const CatchLights := preload("res://scenes/pachinko/juice/catch_lights.gd")
-const FeverCountdown := preload("res://scenes/pachinko/juice/fever_countdown.gd")
-const AttackerBeacon := preload("res://scenes/pachinko/juice/attacker_beacon.gd")
-const PinLights := preload("res://scenes/pachinko/board/pin_lights.gd")
 const FRAME := 1.0 / 60.0
 const ATTACKER := Vector2(350, 560)
 

@@ -3,7 +3,6 @@ extends GutTest
 ## balls pour into the cup, and balls are drawn larger than their physics with a dark rim.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const BallLayer := preload("res://scenes/pachinko/board/ball_layer.gd")
 
 
 func _game() -> PachinkoGame:

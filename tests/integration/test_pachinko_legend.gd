@@ -2,10 +2,7 @@ extends GutTest
 ## The instructions explain each board's own pieces: a drawing and one line per kind of
 ## piece the board has, and nothing about pieces it does not have.
 
-const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
-const PieceLegend := preload("res://scenes/pachinko/legend/piece_legend.gd")
 const PANEL := "res://scenes/pachinko/instructions_panel.tscn"
-const BoardPieces := preload("res://scenes/pachinko/legend/board_pieces.gd")
 
 
 func _lines_for(id: String) -> PackedStringArray:

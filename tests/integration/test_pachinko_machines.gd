@@ -2,9 +2,7 @@ extends GutTest
 ## The game screen wears the board's machine: the art behind the pins, the ring, the name
 ## plate, the cabinet and the side panel all follow the board's fascia.
 
-const BoardLayer := preload("res://scenes/pachinko/board/board_layer.gd")
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const BoardView := preload("res://scenes/pachinko/board/board_view.gd")
 
 
 func after_each() -> void:

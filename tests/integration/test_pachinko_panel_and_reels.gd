@@ -5,8 +5,6 @@ extends GutTest
 ## covered the board's title.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const StatsPanel := preload("res://scenes/pachinko/hud/stats_panel.gd")
-const ReelDisplay := preload("res://scenes/pachinko/bonus/reel_display.gd")
 
 
 func _board(id: String) -> BoardLevel:

@@ -5,8 +5,6 @@ extends GutTest
 ## paid; the rising tone, the fanfare and the round bell play.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const ReachStage := preload("res://scenes/pachinko/bonus/reach_stage.gd")
-const ReachSlowMotion := preload("res://scenes/pachinko/bonus/reach_slow_motion.gd")
 ## A digit of the fallback font is this share of its font size tall (measured on the
 ## pachinko_reach shot: 156 px type, digits 109 px from top to bottom).
 const DIGIT_SHARE := 0.7

@@ -3,7 +3,6 @@ extends GutTest
 ## button starts it and a drag on the flipper fires a ball drawn by the one ball layer.
 
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 
 
 func _game() -> PachinkoGame:

@@ -6,8 +6,6 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const SlowMotion := preload("res://scenes/pachinko/juice/slow_motion.gd")
-const PocketApproach := preload("res://scenes/pachinko/juice/pocket_approach.gd")
 const FRAME := 1.0 / 60.0
 
 

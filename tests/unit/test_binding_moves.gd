@@ -5,7 +5,6 @@ extends GutTest
 
 const Codec := preload("res://scripts/app/input_event_codec.gd")
 const BindingMoves := preload("res://scripts/app/binding_moves.gd")
-const BindingList := preload("res://scenes/menu/binding_list.gd")
 
 
 func after_each() -> void:

@@ -5,7 +5,6 @@ extends GutTest
 ## seed gives the same reel results.
 
 const CLASSIC := "res://levels/pachinko/classic.board"
-const FeverGlow := preload("res://scenes/pachinko/bonus/fever_glow.gd")
 const DT := 1.0 / 120.0
 const START := Vector2(250, 300)
 const ATTACKER := Vector2(350, 420)

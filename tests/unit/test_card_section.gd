@@ -3,8 +3,6 @@ extends GutTest
 ## its card is made fills that card as it is made, and showing finished loads at once drops
 ## the cards still waiting to be made (they would land among the new ones otherwise).
 
-const CardSection := preload("res://scenes/menu/card_section.gd")
-const LevelCard := preload("res://scenes/menu/level_card.gd")
 const PATHS: Array[String] = [
 	"res://levels/pachinko/classic.board",
 	"res://levels/pachinko/fever.board",

@@ -2,8 +2,6 @@ extends GutTest
 ## The five machines' looks: each has its own art, ring, pins, pockets, cabinet and panel
 ## colours and name plate; an unknown name falls back to Classic; the art stays loaded.
 
-const NamePlate := preload("res://scenes/board_view/fascia/name_plate.gd")
-const CabinetBackdrop := preload("res://scenes/pachinko/cabinet_backdrop.gd")
 ## The palette fields that must differ between every two machines.
 const OWN_FIELDS: Array[String] = [
 	"art_path", "ring", "petal", "plate", "backdrop_top", "panel_border", "title", "plate_style"

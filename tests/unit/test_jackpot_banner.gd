@@ -2,11 +2,9 @@ extends GutTest
 ## The jackpot banner's words: the jackpot's first round, each later round with its own number,
 ## and what the jackpot paid.
 
-const BANNER := preload("res://scenes/pachinko/bonus/jackpot_banner.gd")
-
 
 func _banner() -> Node2D:
-	var banner: Node2D = BANNER.new()
+	var banner: Node2D = JackpotBanner.new()
 	add_child_autofree(banner)
 	return banner
 

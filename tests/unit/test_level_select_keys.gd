@@ -4,7 +4,6 @@ extends GutTest
 ## Delete, the focused card shows its whole description, and Delete keeps the player's place.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const ROOT := "user://test_level_select_keys"
 const CLASSIC := "res://levels/pachinko/classic.board"
 const THEME := preload("res://scenes/menu/ui_theme.tres")

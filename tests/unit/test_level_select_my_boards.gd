@@ -4,9 +4,6 @@ extends GutTest
 ## screen, and import / delete through the screen update the list.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
-const LevelCard := preload("res://scenes/menu/level_card.gd")
-const LevelSlot := preload("res://scenes/menu/level_slot.gd")
 const HOSTILE := "res://tests/fixtures/hostile_boards/pachinko"
 const GOOD := "res://levels/pachinko/classic.board"
 const ROOT := "user://test_level_select_my_boards"

@@ -3,7 +3,6 @@ extends GutTest
 ## copy…, and Delete… on the player's boards), as the board_actions key does.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const ROOT := "user://test_level_select_right_click"
 const CLASSIC := "res://levels/pachinko/classic.board"
 

@@ -5,7 +5,6 @@ extends GutTest
 
 const InstructionsScene := preload("res://scenes/pachinko/instructions_panel.tscn")
 const GameScene := preload("res://scenes/pachinko/pachinko_game.tscn")
-const InstructionsPanel := preload("res://scenes/pachinko/instructions_panel.gd")
 const ROOT := "res://tests/fixtures/hostile_markup/"
 const PAYLOAD := ROOT + "payload.tres"
 const RAN := &"hostile_markup_payload_ran"

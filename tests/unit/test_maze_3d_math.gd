@@ -2,34 +2,30 @@ extends GutTest
 ## The geometry behind the 3D maze: balls roll by their motion, a fall sinks and shrinks,
 ## the board's shadow is cast along the sun, and the meshes come out where the level says.
 
-const MazeBalls3D := preload("res://scenes/maze/maze_balls_3d.gd")
-const MazeTableShadow := preload("res://scenes/maze/maze_table_shadow.gd")
-const Meshes := preload("res://scenes/maze/maze_meshes.gd")
-
 
 func test_a_ball_rolled_a_quarter_turn_turns_a_quarter_about_up_cross_motion() -> void:
 	var radius := 5.0
 	var quarter := Vector3(PI * radius * 0.5, 0.0, 0.0)  # a quarter of the way round, right
-	var turned := MazeBalls3D.roll(Basis.IDENTITY, quarter, radius)
+	var turned := MazeBalls3d.roll(Basis.IDENTITY, quarter, radius)
 	# the point on top (toward the viewer, +z) comes round to the front of the motion (+x)
 	assert_almost_eq((turned * Vector3.BACK).distance_to(Vector3.RIGHT), 0.0, 0.0001)
-	var down := MazeBalls3D.roll(Basis.IDENTITY, Vector3(0.0, -PI * radius * 0.5, 0.0), radius)
+	var down := MazeBalls3d.roll(Basis.IDENTITY, Vector3(0.0, -PI * radius * 0.5, 0.0), radius)
 	assert_almost_eq((down * Vector3.BACK).distance_to(Vector3.DOWN), 0.0, 0.0001)
 
 
 func test_rolling_nowhere_keeps_the_orientation() -> void:
 	var start := Basis.from_euler(Vector3(0.3, 0.2, 0.1))
-	assert_true(MazeBalls3D.roll(start, Vector3.ZERO, 5.0).is_equal_approx(start))
-	assert_true(MazeBalls3D.roll(start, Vector3.RIGHT, 0.0).is_equal_approx(start))
+	assert_true(MazeBalls3d.roll(start, Vector3.ZERO, 5.0).is_equal_approx(start))
+	assert_true(MazeBalls3d.roll(start, Vector3.RIGHT, 0.0).is_equal_approx(start))
 
 
 func test_a_fall_slides_to_the_centre_then_sinks_and_shrinks() -> void:
-	var start := MazeBalls3D.fall_pose(0.0, 12.0, 5.0)
+	var start := MazeBalls3d.fall_pose(0.0, 12.0, 5.0)
 	assert_eq(start, Vector3(0.0, 0.0, 1.0), "it begins where the ball was")
-	var half := MazeBalls3D.fall_pose(MazeBalls3D.FALL_SECONDS * 0.5, 12.0, 5.0)
+	var half := MazeBalls3d.fall_pose(MazeBalls3d.FALL_SECONDS * 0.5, 12.0, 5.0)
 	assert_eq(half.x, 1.0, "at the centre by half way")
 	assert_between(half.y, 1.0, 16.0, "sinking")
-	var end := MazeBalls3D.fall_pose(MazeBalls3D.FALL_SECONDS * 3.0, 12.0, 5.0)
+	var end := MazeBalls3d.fall_pose(MazeBalls3d.FALL_SECONDS * 3.0, 12.0, 5.0)
 	assert_almost_eq(end.y, 17.0, 0.0001, "the whole ball below the floor, at the bottom")
 	assert_lt(end.z, 0.6, "and shrunk into the dark")
 
@@ -51,18 +47,20 @@ func test_the_board_shadow_is_cast_along_the_sun() -> void:
 func test_walls_are_extruded_capsules_where_the_level_puts_them() -> void:
 	var size := Vector2(200.0, 100.0)
 	var ends := PackedVector2Array([Vector2(50, 50), Vector2(150, 50)])
-	var mesh := Meshes.walls(size, ends, 10.0, 12.0)
+	var mesh := MazeMeshes.walls(size, ends, 10.0, 12.0)
 	var box := mesh.get_aabb()
 	assert_almost_eq(box.position.x, -0.55, 0.0001, "the left cap reaches 5 px past the end")
 	assert_almost_eq(box.end.x, 0.55, 0.0001)
 	assert_almost_eq(box.size.y, 0.1, 0.0001, "10 px wide")
 	assert_almost_eq(box.end.z, 0.12, 0.0001, "12 px high")
-	assert_null(Meshes.walls(size, PackedVector2Array(), 10.0, 12.0), "no walls, no mesh")
+	assert_null(MazeMeshes.walls(size, PackedVector2Array(), 10.0, 12.0), "no walls, no mesh")
 
 
 func test_every_wall_face_looks_outward() -> void:
 	var size := Vector2(200.0, 100.0)
-	var mesh := Meshes.walls(size, PackedVector2Array([Vector2(50, 50), Vector2(150, 50)]), 10, 12)
+	var mesh := MazeMeshes.walls(
+		size, PackedVector2Array([Vector2(50, 50), Vector2(150, 50)]), 10, 12
+	)
 	var arrays := mesh.surface_get_arrays(0)
 	var verts: PackedVector3Array = arrays[Mesh.ARRAY_VERTEX]
 	var normals: PackedVector3Array = arrays[Mesh.ARRAY_NORMAL]

@@ -3,8 +3,6 @@ extends GutTest
 ## holes says it plays as easy (a play trial pressed H on First Roll, read "avoid the black
 ## holes" and found none).
 
-const MazeHints := preload("res://scenes/maze/maze_hints.gd")
-
 
 func test_hard_mode_with_holes_says_avoid_them() -> void:
 	assert_string_contains(MazeHints.start(true, 4, 8), "avoid the black holes")

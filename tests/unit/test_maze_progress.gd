@@ -4,9 +4,6 @@ extends GutTest
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
 const ScratchSave := preload("res://tests/helpers/scratch_save.gd")
-const LevelCard := preload("res://scenes/menu/level_card.gd")
-const MedalBadges := preload("res://scenes/menu/medal_badges.gd")
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
 const SAVE := "user://test_maze_progress_save.cfg"
 const SETTINGS := "user://test_maze_progress_settings.cfg"
 const EMPTY_USER_ROOT := "user://test_maze_progress_no_boards"

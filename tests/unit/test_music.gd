@@ -4,7 +4,6 @@ extends GutTest
 ## machine: a reach, a jackpot, and back.
 
 const Recipes := preload("res://scripts/audio/music_recipes.gd")
-const PachinkoMusic := preload("res://scenes/pachinko/pachinko_music.gd")
 const FEVER := "res://levels/pachinko/fever.board"
 
 

@@ -3,7 +3,6 @@ extends GutTest
 ## "Folder: /root/.local/share/godot/app_userdata/Board Studio/shots_boards/pach…", cut
 ## just where the folder the player looks for is named. Now it is trimmed from the start.
 
-const PathLabel := preload("res://scenes/menu/path_label.gd")
 const LONG := "/root/.local/share/godot/app_userdata/Board Studio/boards/pachinko"
 
 

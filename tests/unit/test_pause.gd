@@ -3,7 +3,6 @@ extends GutTest
 ## lets it run again, restart unpauses and asks the game to restart.
 
 const PauseScene := preload("res://scenes/common/pause_menu.tscn")
-const PauseMenu := preload("res://scenes/common/pause_menu.gd")
 
 var _menu: PauseMenu
 var _world: Node

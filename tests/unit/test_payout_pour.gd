@@ -1,8 +1,6 @@
 extends GutTest
 ## The payout pour: every paid ball reaches the cup, in order, however big the payout.
 
-const PayoutPour := preload("res://scenes/pachinko/hud/payout_pour.gd")
-
 
 func _run(pour: PayoutPour, seconds: float) -> int:
 	var arrived := 0

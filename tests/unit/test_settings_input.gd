@@ -4,7 +4,6 @@ extends GutTest
 
 const PATH := "user://test_settings_input.cfg"
 const Codec := preload("res://scripts/app/input_event_codec.gd")
-const BindingList := preload("res://scenes/menu/binding_list.gd")
 
 
 func after_each() -> void:

@@ -7,8 +7,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const PocketApproach := preload("res://scenes/pachinko/juice/pocket_approach.gd")
-const SlowMotion := preload("res://scenes/pachinko/juice/slow_motion.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/fever.board"
 ## The shots this file takes, in order.

@@ -8,7 +8,6 @@ extends SceneTree
 
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
 const AppScript := preload("res://scenes/app/app.gd")
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
 const SCRATCH_SETTINGS := "user://fps_settings.cfg"

@@ -5,8 +5,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const LevelSelect := preload("res://scenes/menu/level_select.gd")
-const MyBoardsDialogs := preload("res://scenes/menu/my_boards_dialogs.gd")
 const MAIN_MENU := "res://scenes/menu/main_menu.tscn"
 const LEVEL_SELECT := "res://scenes/menu/level_select.tscn"
 const SETTINGS := "res://scenes/menu/settings_menu.tscn"
