@@ -7,7 +7,7 @@ extends RefCounted
 ## no binding of that kind gets the moved-to action's old one instead (a swap), and a move
 ## that would leave an action with none is refused, so no action is ever left unbound.
 
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 
 ## The game an action belongs to (a name of BoardLevel.KIND_NAMES), or "" for the general
@@ -23,7 +23,7 @@ static func game_of(action: String) -> String:
 ## The other actions of `settings` that `event` would also fire if it were bound to
 ## `action` (in the settings' action order).
 static func clashes(settings: GameSettings, action: String, event: InputEvent) -> PackedStringArray:
-	var code := Codec.encode(event)
+	var code := InputEventCodec.encode(event)
 	var found := PackedStringArray()
 	if code.is_empty():
 		return found
@@ -47,15 +47,18 @@ static func plan(
 ) -> Dictionary:
 	var giving_back: InputEvent = null
 	for old: InputEvent in settings.events_for(action):
-		if Codec.is_gamepad(old) == gamepad and Codec.encode(old) != Codec.encode(event):
+		if (
+			InputEventCodec.is_gamepad(old) == gamepad
+			and InputEventCodec.encode(old) != InputEventCodec.encode(event)
+		):
 			giving_back = old
 			break
 	var swaps := {}
-	var code := Codec.encode(event)
+	var code := InputEventCodec.encode(event)
 	for other in clashes(settings, action, event):
 		var left := 0
 		for kept: InputEvent in settings.events_for(other):
-			if Codec.is_gamepad(kept) == gamepad and Codec.encode(kept) != code:
+			if InputEventCodec.is_gamepad(kept) == gamepad and InputEventCodec.encode(kept) != code:
 				left += 1
 		if left > 0:
 			continue
@@ -73,12 +76,12 @@ static func move(
 	var result := plan(settings, action, event, gamepad)
 	if not result["ok"]:
 		return result
-	var code := Codec.encode(event)
+	var code := InputEventCodec.encode(event)
 	var swaps: Dictionary = result["swaps"]
 	for other in clashes(settings, action, event):
 		var events: Array[InputEvent] = []
 		for kept: InputEvent in settings.events_for(other):
-			if Codec.encode(kept) != code:
+			if InputEventCodec.encode(kept) != code:
 				events.append(kept)
 		if swaps.has(other):
 			var swapped: InputEvent = swaps[other]
@@ -96,7 +99,7 @@ static func _share_a_game(a: String, b: String) -> bool:
 
 static func _has_code(events: Array[InputEvent], code: String) -> bool:
 	for event in events:
-		if Codec.encode(event) == code:
+		if InputEventCodec.encode(event) == code:
 			return true
 	return false
 

@@ -22,7 +22,7 @@ const MAX_BINDINGS_PER_ACTION := 16
 ## A remembered window side past this many pixels is not one a screen has.
 const MAX_WINDOW_SIDE := 16384.0
 const IniText := preload("res://scripts/app/ini_text.gd")
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 const SettingsValues := preload("res://scripts/app/settings_values.gd")
 const FILE_HEADER := (
 	"Board Studio settings (format version %d). Delete this file to restore the defaults.\n"
@@ -136,7 +136,7 @@ func rebind(action: String, event: InputEvent, gamepad: bool) -> void:
 		return
 	var events: Array[InputEvent] = []
 	for old: InputEvent in bindings[action]:
-		if Codec.is_gamepad(old) != gamepad:
+		if InputEventCodec.is_gamepad(old) != gamepad:
 			events.append(old)
 	events.append(event)
 	bindings[action] = events
@@ -152,7 +152,7 @@ func clear_binding(action: String, gamepad: bool) -> bool:
 		return false
 	var events: Array[InputEvent] = []
 	for old: InputEvent in bindings[action]:
-		if Codec.is_gamepad(old) != gamepad:
+		if InputEventCodec.is_gamepad(old) != gamepad:
 			events.append(old)
 	var kept := _with_required_columns(action, events)
 	bindings[action] = kept
@@ -232,7 +232,7 @@ func save_file(path: String) -> Error:
 	for action: String in bindings:
 		var codes: Array[String] = []
 		for event: InputEvent in bindings[action]:
-			var code := Codec.encode(event)
+			var code := InputEventCodec.encode(event)
 			if not code.is_empty():
 				codes.append(code)
 		input[action] = codes
@@ -352,10 +352,12 @@ func _with_required_columns(action: String, events: Array[InputEvent]) -> Array[
 		return events
 	var result := events.duplicate()
 	for gamepad: bool in [false, true]:
-		if events.any(func(event: InputEvent) -> bool: return Codec.is_gamepad(event) == gamepad):
+		if events.any(
+			func(event: InputEvent) -> bool: return InputEventCodec.is_gamepad(event) == gamepad
+		):
 			continue
 		for shipped: InputEvent in default_bindings().get(action, []):
-			if Codec.is_gamepad(shipped) == gamepad:
+			if InputEventCodec.is_gamepad(shipped) == gamepad:
 				result.append(shipped)
 	return result
 

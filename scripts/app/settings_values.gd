@@ -3,7 +3,7 @@ extends RefCounted
 ## that cannot be used is named in `problems` (the player's message lists them) and gives
 ## null, so GameSettings keeps its default. Pure: it knows no settings object.
 
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 
 ## The number at `key` clamped to `low`..`high`; null when absent or not a finite number.
@@ -68,7 +68,7 @@ static func events(codes: Variant, most: int) -> Array[InputEvent]:
 		# a short code with short numbers: longer digit runs are not a key and overflow int()
 		var sane := code is String and str(code).length() <= 40
 		sane = sane and RegEx.create_from_string("\\d{10}").search(str(code)) == null
-		var event: InputEvent = Codec.decode(str(code)) if sane else null
+		var event: InputEvent = InputEventCodec.decode(str(code)) if sane else null
 		if event == null:
 			found.clear()
 			return found

@@ -3,7 +3,7 @@ extends RefCounted
 ## while the last reel slows, the jackpot's fanfare, and the bell that opens each round.
 ## sound_recipes.gd lists and builds them with the rest, so a SoundBank plays them by name.
 
-const Synth := preload("res://scripts/audio/sound_synth.gd")
+const SoundSynth := preload("res://scripts/audio/sound_synth.gd")
 
 ## A reach: a tone and its fifth rising for as long as the last reel slows, with a pulse
 ## that quickens, the machine holding its breath.
@@ -30,20 +30,20 @@ static func has(sound: StringName) -> bool:
 static func build(sound: StringName) -> AudioStreamWAV:
 	match sound:
 		REACH_RISE:
-			return Synth.to_stream(_reach_rise(), 0.7)
+			return SoundSynth.to_stream(_reach_rise(), 0.7)
 		JACKPOT_FANFARE:
-			return Synth.to_stream(_fanfare(), 0.85)
+			return SoundSynth.to_stream(_fanfare(), 0.85)
 		ROUND_BELL:
-			return Synth.to_stream(_round_bell(), 0.7)
+			return SoundSynth.to_stream(_round_bell(), 0.7)
 	return null
 
 
 ## Two slow glides up an octave a fifth apart, swelling, with a tremolo that speeds up.
 static func _reach_rise() -> PackedFloat32Array:
-	var low := Synth.sweep(REACH_SECONDS, 220.0, 440.0, 0.6, 0.0)
-	var high := Synth.sweep(REACH_SECONDS, 330.0, 660.0, 0.35, 0.0)
-	var out := Synth.mix([low, high])
-	var rate := float(Synth.SAMPLE_RATE)
+	var low := SoundSynth.sweep(REACH_SECONDS, 220.0, 440.0, 0.6, 0.0)
+	var high := SoundSynth.sweep(REACH_SECONDS, 330.0, 660.0, 0.35, 0.0)
+	var out := SoundSynth.mix([low, high])
+	var rate := float(SoundSynth.SAMPLE_RATE)
 	var phase := 0.0
 	for i in out.size():
 		var t := i / rate
@@ -66,21 +66,21 @@ static func _fanfare() -> PackedFloat32Array:
 		[0.9, 1047.0, 0.3],
 	]
 	var out := PackedFloat32Array()
-	out.resize(int(2.6 * Synth.SAMPLE_RATE))
+	out.resize(int(2.6 * SoundSynth.SAMPLE_RATE))
 	for note: Array in calls:
 		var at: float = note[0]
 		var pitch: float = note[1]
 		var length: float = note[2]
-		Synth.overlay(out, _brass(pitch, length, 8.0), at)
+		SoundSynth.overlay(out, _brass(pitch, length, 8.0), at)
 	for f: float in [523.0, 659.0, 784.0, 1047.0]:
-		Synth.overlay(out, _brass(f, 1.3, 1.6), 1.25)
+		SoundSynth.overlay(out, _brass(f, 1.3, 1.6), 1.25)
 	return out
 
 
 static func _round_bell() -> PackedFloat32Array:
-	var first := Synth.partials(0.5, [_p(1568.0, 1.0, 7.0), _p(3136.0, 0.35, 11.0)])
-	var second := Synth.partials(0.6, [_p(2093.0, 1.0, 6.0), _p(4186.0, 0.3, 10.0)])
-	Synth.overlay(first, second, 0.12)
+	var first := SoundSynth.partials(0.5, [_p(1568.0, 1.0, 7.0), _p(3136.0, 0.35, 11.0)])
+	var second := SoundSynth.partials(0.6, [_p(2093.0, 1.0, 6.0), _p(4186.0, 0.3, 10.0)])
+	SoundSynth.overlay(first, second, 0.12)
 	return first
 
 
@@ -89,7 +89,7 @@ static func _brass(freq: float, seconds: float, decay: float) -> PackedFloat32Ar
 	var parts: Array[PackedFloat32Array] = []
 	for k in 6:
 		parts.append(_p(freq * (k + 1), 0.9 / (k + 1.0), decay + k * 1.5))
-	return Synth.partials(seconds, parts)
+	return SoundSynth.partials(seconds, parts)
 
 
 static func _p(freq: float, amp: float, decay: float) -> PackedFloat32Array:

@@ -6,7 +6,7 @@ extends RefCounted
 ## mood first, so it can start playing while the others are made); `loop` answers the stream
 ## once it is ready, null until then.
 
-const Recipes := preload("res://scripts/audio/music_recipes.gd")
+const MusicRecipes := preload("res://scripts/audio/music_recipes.gd")
 
 # "machine:mood" -> the built loop. Shared with the workers: every read and write holds it.
 static var _loops: Dictionary[String, AudioStreamWAV] = {}
@@ -49,8 +49,8 @@ static func wait_for_background() -> void:
 
 
 static func _build_all(machine: String) -> void:
-	for mood in Recipes.MOODS:
-		var built := Recipes.build(machine, mood)
+	for mood in MusicRecipes.MOODS:
+		var built := MusicRecipes.build(machine, mood)
 		_lock.lock()
 		_loops[_key(machine, mood)] = built
 		_lock.unlock()

@@ -12,7 +12,7 @@ extends RefCounted
 ## `build` returns a seamless AudioStreamWAV loop; it takes a second or so in GDScript, so
 ## MusicBank runs it on a worker thread once per machine and keeps the result.
 
-const Synth := preload("res://scripts/audio/sound_synth.gd")
+const SoundSynth := preload("res://scripts/audio/sound_synth.gd")
 
 const NORMAL := &"normal"
 const REACH := &"reach"
@@ -25,7 +25,7 @@ const BEATS_PER_BAR := 4
 ## the work per note).
 const RING_SECONDS := 0.45
 const BASS_SECONDS := 0.5
-const RATE := Synth.SAMPLE_RATE
+const RATE := SoundSynth.SAMPLE_RATE
 
 ## Voices: partials as [multiple of the note's frequency, amplitude, decay per second].
 const VOICES := {
@@ -113,7 +113,7 @@ static func loop_seconds(machine: String, mood: StringName) -> float:
 ## The loop of `machine` (a fascia name; unknown: Classic's) in `mood` (MOODS; unknown:
 ## NORMAL), ready to play: a mono 16-bit AudioStreamWAV that loops forward seamlessly.
 static func build(machine: String, mood: StringName) -> AudioStreamWAV:
-	return Synth.to_loop(render(machine, mood), 0.8)
+	return SoundSynth.to_loop(render(machine, mood), 0.8)
 
 
 ## The samples of the loop (see build), one whole loop long.
@@ -180,7 +180,7 @@ static func render(machine: String, mood: StringName) -> PackedFloat32Array:
 		_drums(out, notes, style, mood, bar_start, beat)
 	if mood == REACH:
 		# a rising line over the last bar: the last reel is still turning
-		var rise := Synth.sweep(BEATS_PER_BAR * beat, 220.0, 880.0, 0.12, 0.0)
+		var rise := SoundSynth.sweep(BEATS_PER_BAR * beat, 220.0, 880.0, 0.12, 0.0)
 		_place(out, rise, (BARS - 1) * BEATS_PER_BAR * beat, 1.0)
 	return out
 
@@ -195,11 +195,11 @@ static func _drums(
 ) -> void:
 	var hat: PackedFloat32Array = notes.get(&"hat", PackedFloat32Array())
 	if hat.is_empty():
-		hat = Synth.noise(0.05, 1.0, 70.0, 0.0, 5)
+		hat = SoundSynth.noise(0.05, 1.0, 70.0, 0.0, 5)
 		notes[&"hat"] = hat
 	var kick: PackedFloat32Array = notes.get(&"kick", PackedFloat32Array())
 	if kick.is_empty():
-		kick = Synth.sweep(0.16, 130.0, 45.0, 1.0, 18.0)
+		kick = SoundSynth.sweep(0.16, 130.0, 45.0, 1.0, 18.0)
 		notes[&"kick"] = kick
 	var busy: bool = style["beat"] or mood != NORMAL
 	var hats := BEATS_PER_BAR * (4 if mood == REACH else 2)
@@ -242,7 +242,7 @@ static func _note(
 		var hz: float = frequency * partial[0]
 		if hz < RATE * 0.45:
 			parts.append(PackedFloat32Array([hz, partial[1], partial[2]]))
-	var clip := Synth.partials(seconds, parts)
+	var clip := SoundSynth.partials(seconds, parts)
 	# a short fade at the end: a note cut while it still rings would click
 	var fade := mini(clip.size(), int(0.02 * RATE))
 	for i in fade:

@@ -5,7 +5,7 @@ extends ResourceFormatSaver
 ## would write the same text leaves the file untouched, so opening a board and saving the
 ## scene never shows up as a change.
 
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const EXTENSION := "board"
 
 
@@ -45,7 +45,7 @@ func _save(resource: Resource, path: String, _flags: int) -> Error:
 	var level := resource as BoardLevel
 	if level == null:
 		return ERR_INVALID_PARAMETER
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	if FileAccess.file_exists(path) and FileAccess.get_file_as_string(path) == text:
 		return OK
 	# Write beside the file, then swap (SafeWrite): a failed write never leaves half a board

@@ -4,7 +4,7 @@ extends RefCounted
 ## kind's lines as its ItemKinds row reads them (pins, pockets with their stamped rims, the
 ## bonus layer, windmills; walls, ball starts, holes).
 
-const Schema := preload("res://scripts/loading/board_schema.gd")
+const BoardSchema := preload("res://scripts/loading/board_schema.gd")
 
 
 ## The BoardLevel `data` describes. `data` must have passed BoardTextReader's checks (kind,
@@ -13,7 +13,7 @@ static func build(data: Dictionary) -> BoardLevel:
 	var level := BoardLevel.new()
 	var kind: String = data["kind"]
 	level.kind = BoardLevel.kind_named(kind) as BoardLevel.Kind
-	for field: String in Schema.fields_for(kind):
+	for field: String in BoardSchema.fields_for(kind):
 		if field in ["format", "format_version", "kind"]:
 			continue
 		level.set(field, _value_for(level.get(field), data[field]))
@@ -31,7 +31,7 @@ static func build(data: Dictionary) -> BoardLevel:
 		var hard: Array = medals.get("hard", [])
 		level.medal_times_easy = _times(easy)
 		level.medal_times_hard = _times(hard)
-	var counters: Dictionary = data.get(Schema.NEXT_IDS_FIELD, {})
+	var counters: Dictionary = data.get(BoardSchema.NEXT_IDS_FIELD, {})
 	var next_ids: Dictionary[String, int] = {}
 	for list: Variant in counters:
 		next_ids[str(list)] = int_of(counters[list])
@@ -61,7 +61,7 @@ static func _build_tuning(level: BoardLevel, values: Dictionary) -> PhysicsTunin
 	var tuning := TuningPresets.for_kind(level.is_maze())
 	for key: String in values:
 		# An old name is stored under its new one (the check already let it through so).
-		var field: String = Schema.RENAMED_TUNING.get(key, key)
+		var field: String = BoardSchema.RENAMED_TUNING.get(key, key)
 		tuning.set(field, _value_for(tuning.get(field), values[key]))
 	return tuning
 

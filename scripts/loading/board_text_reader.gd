@@ -8,10 +8,10 @@ extends RefCounted
 ## a BoardLevel is built in code. Nothing in a board file can name a script, a class or
 ## another file.
 
-const Schema := preload("res://scripts/loading/board_schema.gd")
-const Builder := preload("res://scripts/loading/board_text_builder.gd")
+const BoardSchema := preload("res://scripts/loading/board_schema.gd")
+const BoardTextBuilder := preload("res://scripts/loading/board_text_builder.gd")
 ## Top-level fields besides the kind's own (board_schema.gd) and its item lists.
-const OTHER_FIELDS: Array[String] = ["tuning", Schema.NEXT_IDS_FIELD]
+const OTHER_FIELDS: Array[String] = ["tuning", BoardSchema.NEXT_IDS_FIELD]
 
 
 ## Like read(), from the file's raw bytes. A NUL byte is refused here, before decoding,
@@ -25,8 +25,8 @@ static func read_bytes(bytes: PackedByteArray) -> Dictionary:
 ## {"level": BoardLevel} or {"error": "what is wrong"} (the caller adds the file name).
 ## Callers holding bytes use read_bytes(), which also refuses NUL bytes.
 static func read(text: String) -> Dictionary:
-	if text.length() > Schema.MAX_FILE_BYTES:
-		return _error("the file is larger than %d bytes" % Schema.MAX_FILE_BYTES)
+	if text.length() > BoardSchema.MAX_FILE_BYTES:
+		return _error("the file is larger than %d bytes" % BoardSchema.MAX_FILE_BYTES)
 	text = text.trim_prefix(char(0xFEFF))  # a UTF-8 byte order mark some editors add
 	var gathered := _gather_lines(text)
 	if gathered.has("error"):
@@ -37,14 +37,14 @@ static func read(text: String) -> Dictionary:
 		problem = _check_fields(data)
 	if not problem.is_empty():
 		return _error(problem)
-	return {"level": Builder.build(data)}
+	return {"level": BoardTextBuilder.build(data)}
 
 
 # Folds the lines into one dictionary: fields by name, items appended to their list.
 static func _gather_lines(text: String) -> Dictionary:
 	var lines := text.split("\n")
-	if lines.size() > Schema.MAX_LINES:
-		return _error("the file has %d lines; at most %d" % [lines.size(), Schema.MAX_LINES])
+	if lines.size() > BoardSchema.MAX_LINES:
+		return _error("the file has %d lines; at most %d" % [lines.size(), BoardSchema.MAX_LINES])
 	var data := {}
 	var json := JSON.new()
 	for number in lines.size():
@@ -68,15 +68,15 @@ static func _gather_lines(text: String) -> Dictionary:
 
 
 static func _gather(data: Dictionary, line: Dictionary) -> String:
-	var list := Schema.list_of_key(line.keys()[0]) if line.size() == 1 else ""
+	var list := BoardSchema.list_of_key(line.keys()[0]) if line.size() == 1 else ""
 	if not list.is_empty():
 		var items: Array = data.get_or_add(list, [])
 		items.append(line.values()[0])
 		return ""
 	for key: Variant in line.keys():
-		if not Schema.list_of_key(key).is_empty():
+		if not BoardSchema.list_of_key(key).is_empty():
 			return 'an item ("%s") must be alone on its line' % key
-		if Schema.is_list(key):
+		if BoardSchema.is_list(key):
 			return '"%s" items go one per line, not as a list' % key
 		if key == "tuning" and data.has(key) and line.size() == 1:
 			return _gather_tuning(data, line[key])
@@ -102,13 +102,16 @@ static func _gather_tuning(data: Dictionary, more: Variant) -> String:
 
 
 static func _check_header(data: Dictionary) -> String:
-	if data.get("format") != Schema.FORMAT:
-		return '"format" must be "%s"; this is not a board file' % Schema.FORMAT
+	if data.get("format") != BoardSchema.FORMAT:
+		return '"format" must be "%s"; this is not a board file' % BoardSchema.FORMAT
 	var version: Variant = data.get("format_version")
-	if (version is float or version is int) and Builder.float_of(version) > Schema.FORMAT_VERSION:
+	if (
+		(version is float or version is int)
+		and BoardTextBuilder.float_of(version) > BoardSchema.FORMAT_VERSION
+	):
 		return (
 			"the file is format version %s, newer than this game reads (%d): update the game"
-			% [version, Schema.FORMAT_VERSION]
+			% [version, BoardSchema.FORMAT_VERSION]
 		)
 	var kind: Variant = data.get("kind")
 	if BoardLevel.kind_named(kind) < 0:
@@ -118,9 +121,9 @@ static func _check_header(data: Dictionary) -> String:
 
 static func _check_fields(data: Dictionary) -> String:
 	var kind: String = data["kind"]
-	var fields := Schema.fields_for(kind)
-	var lists := Schema.lists_for(kind)
-	var optional := Schema.optional_fields_for(kind)
+	var fields := BoardSchema.fields_for(kind)
+	var lists := BoardSchema.lists_for(kind)
+	var optional := BoardSchema.optional_fields_for(kind)
 	for key: Variant in data.keys():
 		var known := fields.has(key) or lists.has(key) or optional.has(key)
 		if not known and not key in OTHER_FIELDS:
@@ -128,14 +131,14 @@ static func _check_fields(data: Dictionary) -> String:
 	for field: String in optional:
 		if data.has(field):
 			var spec: Array = optional[field]
-			var problem := Schema.check_value(data[field], spec)
+			var problem := BoardSchema.check_value(data[field], spec)
 			if not problem.is_empty():
 				return '"%s" %s' % [field, problem]
 	for field: String in fields:
 		if not data.has(field):
 			return 'the field "%s" is missing' % field
 		var spec: Array = fields[field]
-		var problem := Schema.check_value(data[field], spec)
+		var problem := BoardSchema.check_value(data[field], spec)
 		if not problem.is_empty():
 			return '"%s" %s' % [field, problem]
 	for list in lists:
@@ -147,7 +150,7 @@ static func _check_fields(data: Dictionary) -> String:
 	var pin_problem := _check_pin_pockets(pins, pockets)
 	if not pin_problem.is_empty():
 		return pin_problem
-	var counters_problem := _check_counters(data.get(Schema.NEXT_IDS_FIELD, {}), lists)
+	var counters_problem := _check_counters(data.get(BoardSchema.NEXT_IDS_FIELD, {}), lists)
 	if not counters_problem.is_empty():
 		return counters_problem
 	return _check_tuning(data.get("tuning", {}))
@@ -155,14 +158,14 @@ static func _check_fields(data: Dictionary) -> String:
 
 # The optional id counters: an object of the board's list names and whole numbers.
 static func _check_counters(value: Variant, lists: Array[String]) -> String:
-	var field: String = Schema.NEXT_IDS_FIELD
+	var field: String = BoardSchema.NEXT_IDS_FIELD
 	if not value is Dictionary:
 		return '"%s" must be an object { ... }' % field
 	var counters: Dictionary = value
 	for key: Variant in counters.keys():
 		if not key in lists:
 			return '"%s" names "%s", which is not an item list of this board' % [field, key]
-		var problem := Schema.check_value(counters[key], Schema.NEXT_ID_SPEC)
+		var problem := BoardSchema.check_value(counters[key], BoardSchema.NEXT_ID_SPEC)
 		if not problem.is_empty():
 			return '"%s" "%s" %s' % [field, key, problem]
 	return ""
@@ -172,11 +175,11 @@ static func _check_list(list: String, value: Variant) -> String:
 	if not value is Array:
 		return '"%s" must be a list [ ... ]' % list
 	var items: Array = value
-	var most := Schema.most_items(list)
+	var most := BoardSchema.most_items(list)
 	if items.size() > most:
 		return '"%s" has %d items; at most %d are allowed' % [list, items.size(), most]
-	var required := Schema.item_fields(list)
-	var optional := Schema.optional_item_fields(list)
+	var required := BoardSchema.item_fields(list)
+	var optional := BoardSchema.optional_item_fields(list)
 	var checks := ItemKinds.of_list(list).checks
 	for i in items.size():
 		var problem := _check_item(items[i], required, optional)
@@ -192,12 +195,12 @@ static func _check_list(list: String, value: Variant) -> String:
 static func _check_pin_pockets(pins: Array, pockets: Array) -> String:
 	for i in pins.size():
 		var pin: Dictionary = pins[i]
-		var pocket := Builder.int_of(pin.get("pocket", -1))
+		var pocket := BoardTextBuilder.int_of(pin.get("pocket", -1))
 		if pocket < pockets.size():
 			continue
 		var name := "pins item %d" % (i + 1)
 		if pin.has("id"):
-			name = "pin %d" % Builder.int_of(pin["id"])
+			name = "pin %d" % BoardTextBuilder.int_of(pin["id"])
 		var has := "has no pockets"
 		if not pockets.is_empty():
 			has = "has %d pockets (0 to %d)" % [pockets.size(), pockets.size() - 1]
@@ -216,13 +219,13 @@ static func _check_item(item: Variant, required: Dictionary, optional: Dictionar
 		if not fields.has(key):
 			return 'the field "%s" is missing' % key
 		var spec: Array = required[key]
-		var problem := Schema.check_value(fields[key], spec)
+		var problem := BoardSchema.check_value(fields[key], spec)
 		if not problem.is_empty():
 			return '"%s" %s' % [key, problem]
 	for key: String in optional:
 		if fields.has(key):
 			var spec: Array = optional[key]
-			var problem := Schema.check_value(fields[key], spec)
+			var problem := BoardSchema.check_value(fields[key], spec)
 			if not problem.is_empty():
 				return '"%s" %s' % [key, problem]
 	return ""
@@ -234,7 +237,7 @@ static func _check_tuning(value: Variant) -> String:
 	var known := BoardRanges.tuning_fields()
 	var tuning: Dictionary = value
 	for key: Variant in tuning.keys():
-		var field: Variant = Schema.RENAMED_TUNING.get(key, key)
+		var field: Variant = BoardSchema.RENAMED_TUNING.get(key, key)
 		if not known.has(field):
 			return 'unknown tuning field "%s"' % key
 		if field != key and tuning.has(field):
@@ -244,7 +247,7 @@ static func _check_tuning(value: Variant) -> String:
 		var type_name := (
 			"vec2" if type == TYPE_VECTOR2 else ("int" if type == TYPE_INT else "float")
 		)
-		var problem := Schema.check_value(tuning[key], [type_name, spec[1], spec[2]])
+		var problem := BoardSchema.check_value(tuning[key], [type_name, spec[1], spec[2]])
 		if not problem.is_empty():
 			return 'tuning "%s" %s' % [key, problem]
 	return ""

@@ -8,14 +8,14 @@ extends RefCounted
 ## line (no commas between lines to shift). The same board always
 ## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
-const Schema := preload("res://scripts/loading/board_schema.gd")
+const BoardSchema := preload("res://scripts/loading/board_schema.gd")
 const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 ## Coordinates and sizes are written to this precision (px).
 const PRECISION := LineText.PRECISION
 ## The lines of a board's text that name, describe or dress it (and the id counters and
 ## medal times) but never change how it plays: `play_text` leaves them out.
 const NAMING_FIELDS: Array[String] = [
-	"board_id", "display_name", "description", "fascia", "medal_times", Schema.NEXT_IDS_FIELD
+	"board_id", "display_name", "description", "fascia", "medal_times", BoardSchema.NEXT_IDS_FIELD
 ]
 
 
@@ -50,11 +50,11 @@ static func write(level: BoardLevel) -> String:
 	lines.append(
 		(
 			'{"format": %s, "format_version": %d}'
-			% [JSON.stringify(Schema.FORMAT), Schema.FORMAT_VERSION]
+			% [JSON.stringify(BoardSchema.FORMAT), BoardSchema.FORMAT_VERSION]
 		)
 	)
 	lines.append('{"kind": %s}' % JSON.stringify(kind))
-	for field: String in Schema.fields_for(kind):
+	for field: String in BoardSchema.fields_for(kind):
 		if field in ["format", "format_version", "kind"]:
 			continue
 		lines.append('{"%s": %s}' % [field, _value(level.get(field))])
@@ -65,7 +65,7 @@ static func write(level: BoardLevel) -> String:
 	lines.append_array(_tuning_lines(level.tuning))
 	var counters := ItemIds.counters_to_save(level)
 	if not counters.is_empty():
-		lines.append('{"%s": %s}' % [Schema.NEXT_IDS_FIELD, _counters(counters)])
+		lines.append('{"%s": %s}' % [BoardSchema.NEXT_IDS_FIELD, _counters(counters)])
 	for row in ItemKinds.of_game(level.kind):
 		_append_items(lines, level, row)
 	return "\n".join(lines) + "\n"
@@ -144,7 +144,7 @@ static func _shortest_single(value: float) -> String:
 # The optional medal times line, only for a board that has some.
 static func _append_medals(lines: PackedStringArray, level: BoardLevel) -> void:
 	var parts := PackedStringArray()
-	for mode in Schema.MEDAL_MODES:
+	for mode in BoardSchema.MEDAL_MODES:
 		var times: PackedFloat64Array = (
 			level.medal_times_easy if mode == "easy" else level.medal_times_hard
 		)

@@ -9,7 +9,7 @@ extends RefCounted
 ## Frames matter, not just steps: the rules check wins and stuck balls once per frame, so a
 ## replay runs the same steps in the same frames.
 
-const Reader := preload("res://scripts/replay/replay_reader.gd")
+const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
 ## Frames of one tilt in a row that are worth a "tilt" record of their own (a line of about
 ## 25 characters) rather than three packed digits each.
 const HELD_FRAMES := 10
@@ -58,7 +58,10 @@ func note_frame() -> void:
 	if not _recording:
 		return
 	var world := _world()
-	if world.step_count > Reader.MAX_STEPS or _replay.records.size() >= Reader.MAX_LINES - 1:
+	if (
+		world.step_count > ReplayReader.MAX_STEPS
+		or _replay.records.size() >= ReplayReader.MAX_LINES - 1
+	):
 		push_warning("ReplayRecorder: the game is too long for a replay; recording stopped")
 		_recording = false
 		_too_long = true
@@ -67,7 +70,7 @@ func note_frame() -> void:
 	_noted_steps = world.step_count
 	while steps > 0:
 		# The world runs at most MAX_STEPS_PER_FRAME a frame; more means frames were missed.
-		var chunk := mini(steps, Reader.MAX_STEPS_PER_FRAME)
+		var chunk := mini(steps, ReplayReader.MAX_STEPS_PER_FRAME)
 		if steps > chunk:
 			push_warning("ReplayRecorder: %d steps in one frame; a frame was not noted" % steps)
 		_add_frame(chunk)

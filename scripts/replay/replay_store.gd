@@ -4,8 +4,8 @@ extends RefCounted
 ## finding the board a replay was recorded on. Reading goes through ReplayReader (data only,
 ## every field checked), with the file's size checked before it is read.
 
-const Reader := preload("res://scripts/replay/replay_reader.gd")
-const Writer := preload("res://scripts/replay/replay_writer.gd")
+const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
+const ReplayWriter := preload("res://scripts/replay/replay_writer.gd")
 ## The folder of the games' own replays.
 const DIR := "user://replays"
 ## Where a board is looked for, in order: the shipped boards, then the player's.
@@ -49,7 +49,7 @@ static func save(replay: Replay, path: String) -> Error:
 		if made != OK:
 			push_error("Could not make the folder %s: %s" % [base, error_string(made)])
 			return made
-	var error := SafeWrite.write_text(path, Writer.write(replay))
+	var error := SafeWrite.write_text(path, ReplayWriter.write(replay))
 	if error != OK:
 		push_error("Could not save the replay %s: %s" % [path, error_string(error)])
 	return error
@@ -63,12 +63,12 @@ static func read_file(path: String) -> Dictionary:
 	if file == null:
 		var reason := error_string(FileAccess.get_open_error())
 		return {"error": "%s: the file cannot be read (%s)" % [path, reason]}
-	if file.get_length() > Reader.MAX_BYTES:
-		return {"error": "%s: the file is larger than %d bytes" % [path, Reader.MAX_BYTES]}
+	if file.get_length() > ReplayReader.MAX_BYTES:
+		return {"error": "%s: the file is larger than %d bytes" % [path, ReplayReader.MAX_BYTES]}
 	var bytes := file.get_buffer(file.get_length())
 	if bytes.has(0):
 		return {"error": "%s: the file contains a NUL byte; a replay is plain text" % path}
-	var read := Reader.read(bytes.get_string_from_utf8())
+	var read := ReplayReader.read(bytes.get_string_from_utf8())
 	if read.has("error"):
 		return {"error": "%s: %s" % [path, read["error"]]}
 	return read

@@ -4,13 +4,13 @@ extends RefCounted
 ## resting on pins (StuckWatcher), and gives a resting ball a small push. It decides
 ## nothing about the game: PachinkoRules counts and pays what it reports.
 
-const StuckWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.gd")
+const StuckBallWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.gd")
 const PocketJam := preload("res://scripts/pachinko/rules/pocket_jam.gd")
 
 ## Speed of the nudge given to a resting ball, px/s.
 const NUDGE_SPEED := 70.0
 
-var _watcher := StuckWatcher.new()
+var _watcher := StuckBallWatcher.new()
 var _jam := PocketJam.new()
 
 

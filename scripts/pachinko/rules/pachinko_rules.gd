@@ -41,7 +41,7 @@ enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
 const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibration.gd")
 const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
-const Ledger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
+const PachinkoLedger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
 const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
 const FlipperDrawback := preload("res://scripts/pachinko/rules/flipper_drawback.gd")
 const BallUpkeep := preload("res://scripts/pachinko/rules/ball_upkeep.gd")
@@ -76,7 +76,7 @@ var drawing: bool:
 	get:
 		return _drawback.drawing
 ## Where every ball went (counters for the stats panel and the autoplay).
-var ledger: Ledger
+var ledger: PachinkoLedger
 ## The bonus layer: reels, attackers, tulips (idle on a board without bonus pockets).
 var bonus: BonusMachine
 ## The handle: held, it streams balls at its strength (see launch_handle.gd); its
@@ -92,7 +92,7 @@ var _launch_pos := Vector2.ZERO
 var _launch_dir := Vector2.RIGHT
 var _launch_table: LaunchTable
 # The session's counts when the current game started (the game's own are the difference).
-var _game_start: Ledger
+var _game_start: PachinkoLedger
 
 
 ## Builds the world for `board`. `rng_seed` makes the nudges repeatable.
@@ -103,12 +103,12 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 		# Stay a harmless, empty game: every call is safe and start_game() refuses.
 		push_error("PachinkoRules: a pachinko board with a ring is needed")
 		level = BoardLevel.new()
-		ledger = Ledger.new(0)
+		ledger = PachinkoLedger.new(0)
 		world = BallWorld.new()
 		bonus = BonusMachine.new(level, world, rng_seed)
 		return
 	level = board
-	ledger = Ledger.new(board.pockets.size() + board.bonus_pockets.size())
+	ledger = PachinkoLedger.new(board.pockets.size() + board.bonus_pockets.size())
 	world = BoardWorldFactory.build(board)
 	bonus = BonusMachine.new(board, world, rng_seed)
 	# The world's own tuning: the board's, or the defaults when the board has none.
@@ -126,7 +126,7 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 func start_game() -> bool:
 	if state == State.PLAYING or level.ring_radius <= 0.0:
 		return false
-	_game_start = ledger.copy() as Ledger
+	_game_start = ledger.copy() as PachinkoLedger
 	cup += level.cup_start_balls
 	ledger.given += level.cup_start_balls
 	_set_state(State.PLAYING)
@@ -286,8 +286,8 @@ func stats(this_game: bool = false) -> Dictionary:
 
 
 # The counts of the current (or last) game: the session's less those at its start.
-func _game_ledger() -> Ledger:
-	return (ledger.since(_game_start) if _game_start != null else ledger.copy()) as Ledger
+func _game_ledger() -> PachinkoLedger:
+	return (ledger.since(_game_start) if _game_start != null else ledger.copy()) as PachinkoLedger
 
 
 func _after_steps(steps: int) -> void:
