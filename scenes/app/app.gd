@@ -63,7 +63,7 @@ func _ready() -> void:
 	# template crashed at exit after it in the headless test run)
 	if DisplayServer.get_name() != "headless":
 		RenderingServer.frame_post_draw.connect(
-			func() -> void: SoundBank.warm_in_background(SoundBank.Recipes.names()),
+			func() -> void: SoundBank.warm_in_background(SoundBank.SoundRecipes.names()),
 			CONNECT_ONE_SHOT
 		)
 

@@ -7,10 +7,10 @@ extends Node
 ## when the first is ready, never holding up a frame. Headless runs (tests, the autoplay)
 ## build and play nothing: `enabled` is false there, and the mood is only remembered.
 
-const Recipes := preload("res://scripts/audio/music_recipes.gd")
-const NORMAL := Recipes.NORMAL
-const REACH := Recipes.REACH
-const JACKPOT := Recipes.JACKPOT
+const MusicRecipes := preload("res://scripts/audio/music_recipes.gd")
+const NORMAL := MusicRecipes.NORMAL
+const REACH := MusicRecipes.REACH
+const JACKPOT := MusicRecipes.JACKPOT
 const BUS := &"Music"
 ## Seconds a mood change takes to fade from one loop into the other.
 const FADE_SECONDS := 0.8
@@ -45,7 +45,7 @@ func _ready() -> void:
 ## Plays the music of `machine` (a board's fascia name; Classic's for one without its own),
 ## in the current mood, as soon as its loop is built.
 func play_machine(fascia: String) -> void:
-	_machine = fascia if Recipes.STYLES.has(fascia) else FasciaNames.CLASSIC
+	_machine = fascia if MusicRecipes.STYLES.has(fascia) else FasciaNames.CLASSIC
 	if enabled:
 		_build_wait = 0.0 if MusicBank.is_requested(_machine) else BUILD_DELAY
 		set_process(true)
@@ -64,7 +64,7 @@ func mood() -> StringName:
 ## Changes the music's mood: NORMAL, REACH or JACKPOT. Any other name is refused with an
 ## error naming it and the mood stays as it was.
 func set_mood(next: StringName) -> void:
-	if not Recipes.MOODS.has(next):
+	if not MusicRecipes.MOODS.has(next):
 		push_error("MusicPlayer.set_mood: no mood '%s' (normal, reach or jackpot)" % next)
 		return
 	if next == _mood:

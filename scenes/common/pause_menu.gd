@@ -11,7 +11,7 @@ signal restart_requested
 signal pause_toggled(paused: bool)
 
 const SETTINGS_SCENE := "res://scenes/menu/settings_menu.tscn"
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 var _settings: Control = null
 
@@ -80,7 +80,7 @@ func close() -> void:
 func _pause_keys() -> String:
 	var names := PackedStringArray()
 	for event in App.settings.events_for("pause"):
-		names.append(Codec.describe(event))
+		names.append(InputEventCodec.describe(event))
 	return " / ".join(names) if not names.is_empty() else "Pause"
 
 

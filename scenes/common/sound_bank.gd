@@ -6,31 +6,31 @@ extends Node
 ## bus volume, which the settings own.
 
 ## Names of the sounds, re-exported so callers can write `SoundBank.PIN_TICK`.
-const Recipes := preload("res://scripts/audio/sound_recipes.gd")
-const PIN_TICK := Recipes.PIN_TICK
-const LAUNCH := Recipes.LAUNCH
-const POCKET_WIN := Recipes.POCKET_WIN
-const DRAIN := Recipes.DRAIN
-const BALL_RETURN := Recipes.BALL_RETURN
-const GAME_OVER := Recipes.GAME_OVER
-const WALL_THUD := Recipes.WALL_THUD
-const GOAL_CHIME := Recipes.GOAL_CHIME
-const HOLE_FALL := Recipes.HOLE_FALL
-const FANFARE := Recipes.FANFARE
-const UI_CLICK := Recipes.UI_CLICK
-const REEL_STOP := Recipes.REEL_STOP
-const JACKPOT := Recipes.JACKPOT
-const TULIP_OPEN := Recipes.TULIP_OPEN
-const START_CATCH := Recipes.START_CATCH
-const FEVER_END := Recipes.FEVER_END
-const SLOW_MO := Recipes.JuiceRecipes.SLOW_MO
-const JACKPOT_THUMP := Recipes.JuiceRecipes.JACKPOT_THUMP
-const LIGHT_SWEEP := Recipes.JuiceRecipes.LIGHT_SWEEP
-const FEVER_TICK := Recipes.JuiceRecipes.FEVER_TICK
-const PIN_FEVER := Recipes.JuiceRecipes.PIN_FEVER
-const REACH_RISE := Recipes.JackpotRecipes.REACH_RISE
-const JACKPOT_FANFARE := Recipes.JackpotRecipes.JACKPOT_FANFARE
-const ROUND_BELL := Recipes.JackpotRecipes.ROUND_BELL
+const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
+const PIN_TICK := SoundRecipes.PIN_TICK
+const LAUNCH := SoundRecipes.LAUNCH
+const POCKET_WIN := SoundRecipes.POCKET_WIN
+const DRAIN := SoundRecipes.DRAIN
+const BALL_RETURN := SoundRecipes.BALL_RETURN
+const GAME_OVER := SoundRecipes.GAME_OVER
+const WALL_THUD := SoundRecipes.WALL_THUD
+const GOAL_CHIME := SoundRecipes.GOAL_CHIME
+const HOLE_FALL := SoundRecipes.HOLE_FALL
+const FANFARE := SoundRecipes.FANFARE
+const UI_CLICK := SoundRecipes.UI_CLICK
+const REEL_STOP := SoundRecipes.REEL_STOP
+const JACKPOT := SoundRecipes.JACKPOT
+const TULIP_OPEN := SoundRecipes.TULIP_OPEN
+const START_CATCH := SoundRecipes.START_CATCH
+const FEVER_END := SoundRecipes.FEVER_END
+const SLOW_MO := SoundRecipes.JuiceRecipes.SLOW_MO
+const JACKPOT_THUMP := SoundRecipes.JuiceRecipes.JACKPOT_THUMP
+const LIGHT_SWEEP := SoundRecipes.JuiceRecipes.LIGHT_SWEEP
+const FEVER_TICK := SoundRecipes.JuiceRecipes.FEVER_TICK
+const PIN_FEVER := SoundRecipes.JuiceRecipes.PIN_FEVER
+const REACH_RISE := SoundRecipes.JackpotRecipes.REACH_RISE
+const JACKPOT_FANFARE := SoundRecipes.JackpotRecipes.JACKPOT_FANFARE
+const ROUND_BELL := SoundRecipes.JackpotRecipes.ROUND_BELL
 
 const PREFERRED_BUS := &"SFX"
 const FALLBACK_BUS := &"Master"
@@ -78,7 +78,7 @@ static func stream(sound: StringName) -> AudioStreamWAV:
 	if cached != null:
 		return cached
 	# built here when the worker has not got to it yet (built twice at worst, never wrong)
-	var built := Recipes.build(sound)
+	var built := SoundRecipes.build(sound)
 	if built == null:
 		return null
 	_cache_lock.lock()

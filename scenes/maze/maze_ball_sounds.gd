@@ -4,7 +4,7 @@ extends Node
 ## loudness and pitch follow that ball's speed, silent when it rests. Call `update` every
 ## frame with the balls' velocities; `stop_all` on a win, a loss or a reset.
 
-const Recipes := preload("res://scripts/audio/sound_recipes.gd")
+const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 ## Below this speed (px/s) a ball is silent; at `LOUD_SPEED` it is as loud as it gets.
 const QUIET_SPEED := 4.0
 const LOUD_SPEED := 110.0
@@ -49,7 +49,7 @@ func update(velocities: PackedVector2Array, delta: float) -> void:
 		player.volume_db = lerpf(QUIET_DB, LOUD_DB, sqrt(_levels[i]))
 		player.pitch_scale = pitch(speed)
 		if not player.playing:
-			player.play(randf() * Recipes.ROLL_LOOP_SECONDS)
+			player.play(randf() * SoundRecipes.ROLL_LOOP_SECONDS)
 
 
 ## Silences every ball at once.
@@ -77,7 +77,7 @@ func volume_of(index: int) -> float:
 
 func _add_player() -> void:
 	var player := AudioStreamPlayer.new()
-	player.stream = SoundBank.stream(Recipes.BALL_ROLL)
+	player.stream = SoundBank.stream(SoundRecipes.BALL_ROLL)
 	player.bus = SoundBank.bus_name()
 	add_child(player)
 	_players.append(player)

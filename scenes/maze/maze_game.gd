@@ -7,7 +7,7 @@ extends Control
 
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
-const Recipes := preload("res://scripts/audio/sound_recipes.gd")
+const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 ## After a window change the panel is placed again this many frames running, while its
 ## wrapped text settles to the new width.
 const SETTLE_FRAMES := 3
@@ -60,7 +60,7 @@ var _loss_card_due := false
 func _ready() -> void:
 	_sounds = SoundBank.new()
 	add_child(_sounds)
-	SoundBank.warm([Recipes.BALL_ROLL, Recipes.BALL_DROP, SoundBank.WALL_THUD])
+	SoundBank.warm([SoundRecipes.BALL_ROLL, SoundRecipes.BALL_DROP, SoundBank.WALL_THUD])
 	_rolling = MazeBallSounds.new()
 	add_child(_rolling)
 	haptics.enabled = App.settings.vibration
@@ -344,7 +344,7 @@ func _on_lost(hole: int) -> void:
 	_joystick.release()
 	_next_medal.text = ""
 	_stage.set_lost_hole(hole)
-	_sounds.play(Recipes.BALL_DROP)
+	_sounds.play(SoundRecipes.BALL_DROP)
 	haptics.drop()
 	var lost := MazeHints.lost()
 	# at once, not faded in: the run is over (every ball must reach the dip)

@@ -13,7 +13,7 @@ signal binding_changed
 ## A capture started (true) or ended (false); the owner ignores its own shortcuts meanwhile.
 signal capture_toggled(capturing: bool)
 
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 const BindingMoves := preload("res://scripts/app/binding_moves.gd")
 const AXIS_THRESHOLD := 0.6
 const TITLE_MIN_WIDTH := 220.0
@@ -173,8 +173,8 @@ func _on_binding_input(event: InputEvent, action: String, gamepad: bool, button:
 func _describe(action: String, gamepad: bool) -> String:
 	var names := PackedStringArray()
 	for event in App.settings.events_for(action):
-		if Codec.is_gamepad(event) == gamepad and not event is InputEventMouseButton:
-			names.append(Codec.describe(event))
+		if InputEventCodec.is_gamepad(event) == gamepad and not event is InputEventMouseButton:
+			names.append(InputEventCodec.describe(event))
 	return " / ".join(names) if not names.is_empty() else "(none)"
 
 
@@ -214,7 +214,7 @@ func refusal() -> AcceptDialog:
 func _ask_to_move(
 	action: String, event: InputEvent, gamepad: bool, others: PackedStringArray
 ) -> void:
-	var shown := Codec.describe(event)
+	var shown := InputEventCodec.describe(event)
 	var names := PackedStringArray()
 	for other in others:
 		names.append("“%s”" % action_title(other))
@@ -247,7 +247,9 @@ func _ask_to_move(
 	var swaps: Dictionary = plan["swaps"]
 	for other: String in swaps:
 		var swapped: InputEvent = swaps[other]
-		lines.append("“%s” gets %s instead." % [action_title(other), Codec.describe(swapped)])
+		lines.append(
+			"“%s” gets %s instead." % [action_title(other), InputEventCodec.describe(swapped)]
+		)
 	_move_dialog.dialog_text = "\n".join(lines)
 	_pending_move = {"action": action, "event": event, "gamepad": gamepad}
 	_move_dialog.popup_centered()

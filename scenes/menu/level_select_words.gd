@@ -4,7 +4,7 @@ extends RefCounted
 ## card's best result, the folder's real path, the keys line and the keys that open a
 ## card's menu.
 
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 
 ## The line over the cards: how many boards, of your own, loading, broken, locked, and how
@@ -81,7 +81,7 @@ static func menu_keys() -> String:
 	for wanted: bool in [true, false]:
 		for event in App.settings.events_for("board_actions"):
 			if (event is InputEventKey) == wanted:
-				names.append(Codec.describe(event))
+				names.append(InputEventCodec.describe(event))
 				break
 	if names.size() == 2 and names[1].begins_with(names[0] + " /"):
 		names.remove_at(0)  # the X key and the pad's "X / Square" read as one
