@@ -29,7 +29,7 @@ enum Tool {
 	WINDMILL
 }
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const Snapping := preload("res://addons/board_editor/core/snapping.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
@@ -225,7 +225,7 @@ func prune_selection() -> void:
 
 ## The pocket the dock's inspector edits: the only selected pocket, or -1.
 func selected_pocket() -> int:
-	var pockets := Items.indices_of(selection, Items.Kind.POCKET)
+	var pockets := BoardItems.indices_of(selection, BoardItems.Kind.POCKET)
 	return pockets[0] if pockets.size() == 1 else -1
 
 

@@ -3,10 +3,10 @@ extends RefCounted
 ## Routes viewport input to the active tool and the keyboard commands. Plain object: the
 ## plugin passes events and the view transform, tests pass synthetic events.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
 const Shortcuts := preload("res://addons/board_editor/ui/shortcuts.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const BoardTool := preload("res://addons/board_editor/tools/board_tool.gd")
 const SelectTool := preload("res://addons/board_editor/tools/select_tool.gd")
 const PlaceTool := preload("res://addons/board_editor/tools/place_tool.gd")
@@ -26,7 +26,7 @@ const ARROWS := {
 const BOARD_MARGIN := 40.0
 
 ## The editor state.
-var session: Session
+var session: BoardEditSession
 ## Tool id -> tool object.
 var tools := {}
 # The mouse button whose press the tool took (-1: none): its drag and release are the tool's.
@@ -37,26 +37,26 @@ var _focus_press := false
 var _idle_press := false
 
 
-func _init(on_session: Session) -> void:
+func _init(on_session: BoardEditSession) -> void:
 	session = on_session
 	tools = {
-		Session.Tool.SELECT: SelectTool.new(session),
-		Session.Tool.PIN: PlaceTool.new(session, Items.Kind.PIN),
-		Session.Tool.PATTERN: PatternTool.new(session),
-		Session.Tool.CURVE: CurveTool.new(session),
-		Session.Tool.POCKET: PocketTool.new(session),
-		Session.Tool.WALL: WallTool.new(session),
-		Session.Tool.HOLE: PlaceTool.new(session, Items.Kind.HOLE),
-		Session.Tool.GOAL: PlaceTool.new(session, Items.Kind.GOAL),
-		Session.Tool.START: PlaceTool.new(session, Items.Kind.START),
-		Session.Tool.HANDLES: HandlesTool.new(session),
-		Session.Tool.ERASE: EraseTool.new(session),
-		Session.Tool.START_POCKET: BonusTool.new(session, BonusPocketSpec.Role.START),
-		Session.Tool.ATTACKER: BonusTool.new(session, BonusPocketSpec.Role.ATTACKER),
-		Session.Tool.TULIP: BonusTool.new(session, BonusPocketSpec.Role.TULIP),
-		Session.Tool.WINDMILL: PlaceTool.new(session, Items.Kind.WINDMILL),
+		BoardEditSession.Tool.SELECT: SelectTool.new(session),
+		BoardEditSession.Tool.PIN: PlaceTool.new(session, BoardItems.Kind.PIN),
+		BoardEditSession.Tool.PATTERN: PatternTool.new(session),
+		BoardEditSession.Tool.CURVE: CurveTool.new(session),
+		BoardEditSession.Tool.POCKET: PocketTool.new(session),
+		BoardEditSession.Tool.WALL: WallTool.new(session),
+		BoardEditSession.Tool.HOLE: PlaceTool.new(session, BoardItems.Kind.HOLE),
+		BoardEditSession.Tool.GOAL: PlaceTool.new(session, BoardItems.Kind.GOAL),
+		BoardEditSession.Tool.START: PlaceTool.new(session, BoardItems.Kind.START),
+		BoardEditSession.Tool.HANDLES: HandlesTool.new(session),
+		BoardEditSession.Tool.ERASE: EraseTool.new(session),
+		BoardEditSession.Tool.START_POCKET: BonusTool.new(session, BonusPocketSpec.Role.START),
+		BoardEditSession.Tool.ATTACKER: BonusTool.new(session, BonusPocketSpec.Role.ATTACKER),
+		BoardEditSession.Tool.TULIP: BonusTool.new(session, BonusPocketSpec.Role.TULIP),
+		BoardEditSession.Tool.WINDMILL: PlaceTool.new(session, BoardItems.Kind.WINDMILL),
 	}
-	var rows := Session.row_tools()
+	var rows := BoardEditSession.row_tools()
 	for tool in rows:
 		tools[tool] = PlaceTool.new(session, rows[tool].pick)
 
@@ -142,7 +142,7 @@ func handle_key(key: InputEventKey) -> bool:
 	if key.is_command_or_control_pressed():
 		return _command_key(key)
 	if code == KEY_DELETE or code == KEY_BACKSPACE:
-		Commands.delete_selection(session)
+		EditCommands.delete_selection(session)
 		return true  # never let the 2D editor delete the board node itself
 	if code == KEY_ESCAPE:
 		if not active_tool().cancel():
@@ -151,7 +151,7 @@ func handle_key(key: InputEventKey) -> bool:
 	if ARROWS.has(code) and not key.alt_pressed:
 		var scale := 10.0 if key.shift_pressed else 1.0
 		var arrow: Vector2 = ARROWS[code]
-		Commands.nudge(session, arrow * scale)
+		EditCommands.nudge(session, arrow * scale)
 		return true  # with nothing selected the arrows must not move the board node
 	return false if key.echo else _toggle_key(key)
 
@@ -171,7 +171,7 @@ func _mouse_button(
 		# Far off the board only the Select tool acts (a box, or a click that clears the
 		# selection); the press is still the tool's, so Godot never deselects the board node
 		# and closes the tool.
-		_idle_press = not is_over_board(at) and session.tool != Session.Tool.SELECT
+		_idle_press = not is_over_board(at) and session.tool != BoardEditSession.Tool.SELECT
 	if _focus_press or _idle_press:
 		return true  # a focus click, or a tool with nothing to do off the board
 	if index == MOUSE_BUTTON_LEFT:
@@ -202,11 +202,11 @@ func _command_key(key: InputEventKey) -> bool:
 		return false
 	match key.keycode:
 		KEY_C:
-			Commands.copy_selection(session)
+			EditCommands.copy_selection(session)
 		KEY_V:
-			Commands.paste_at(session, active_tool().hover)
+			EditCommands.paste_at(session, active_tool().hover)
 		KEY_D:
-			Commands.duplicate_selection(session)
+			EditCommands.duplicate_selection(session)
 		_:
 			return false
 	return true
@@ -215,10 +215,10 @@ func _command_key(key: InputEventKey) -> bool:
 # Snap, mirror, flip and the tool keys.
 func _toggle_key(key: InputEventKey) -> bool:
 	if key.shift_pressed and key.keycode == Shortcuts.MIRROR_COPY_KEY:
-		Commands.mirror_to_other_half(session)
+		EditCommands.mirror_to_other_half(session)
 		return true
 	if key.keycode == Shortcuts.FLIP_KEY and not key.shift_pressed:
-		Commands.flip_selection(session)
+		EditCommands.flip_selection(session)
 		return true
 	if key.keycode == Shortcuts.SNAP_KEY:
 		session.set_snap(not session.snap_enabled)

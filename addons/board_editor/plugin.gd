@@ -5,7 +5,7 @@ extends EditorPlugin
 ## BoardOverlay (drawing), the toolbar and the dock. Every edit is an action committed to
 ## the edited scene's undo history; the board file is saved with the scene.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
 const BoardOverlay := preload("res://addons/board_editor/ui/board_overlay.gd")
 const BoardToolbar := preload("res://addons/board_editor/ui/board_toolbar.gd")
@@ -21,7 +21,7 @@ const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
 const NewBoardFiles := preload("res://addons/board_editor/core/new_board_files.gd")
 const ToolSettings := preload("res://addons/board_editor/core/tool_settings.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 ## The one hook for tooling (screenshots, the editor self-check): ToolingHook.
 const ToolingHook := preload("res://addons/board_editor/core/tooling_hook.gd")
 ## Screens this wide (px) or wider give the Board dock a column of its own (dock_slot_for).
@@ -30,7 +30,7 @@ const WIDE_SCREEN := 1600
 const NEW_BOARD_MENU := "New board..."
 
 var _node: BoardNode
-var _session: Session
+var _session: BoardEditSession
 var _board_input: BoardInput
 var _toolbar: BoardToolbar
 var _generator: MazeGeneratorButton
@@ -108,7 +108,7 @@ func _edit(object: Object) -> void:
 	if level == null:
 		_dock.show_board(null, [], true)
 		return
-	_session = Session.new(level)
+	_session = BoardEditSession.new(level)
 	ToolSettings.apply(_session, _kept_settings)
 	_session.committer = _commit
 	_session.selection_changed.connect(_on_selection_changed)
@@ -187,7 +187,7 @@ func _save_external_data() -> void:
 
 
 ## The session editing the selected board (null when none); used by the screenshot hook.
-func get_session() -> Session:
+func get_session() -> BoardEditSession:
 	return _session
 
 
@@ -263,7 +263,7 @@ func _on_view_framed() -> void:
 ## Selects `item` on the board and brings it into view at the designer's zoom (a line of the
 ## balance table: reading down the table must not zoom the board to 200 %).
 func select_item(item: Vector2i) -> void:
-	if _session == null or not Items.is_valid(_session.level, item):
+	if _session == null or not BoardItems.is_valid(_session.level, item):
 		return
 	_session.select([item] as Array[Vector2i])
 	frame_selection(false)

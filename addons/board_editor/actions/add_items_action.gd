@@ -6,7 +6,7 @@ extends BoardAction
 ## board of its game. Placing, pasting and duplicating are all this action; `added` lists the
 ## new items so the editor can select them.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 ## The new items after the last `do()`.
 var added: Array[Vector2i] = []
@@ -24,7 +24,7 @@ func _init(on_level: BoardLevel, item_set: Dictionary, action_name := "Add to bo
 	_name = action_name
 	for kind in ItemKinds.set_rows():
 		var values: Array = []
-		for value: Variant in Items.set_values(item_set, kind):
+		for value: Variant in BoardItems.set_values(item_set, kind):
 			values.append(kind.moved_value(value, Vector2.ZERO))
 		_values[kind.set_key] = values
 
@@ -35,11 +35,11 @@ func get_name() -> String:
 
 ## How many things this action adds.
 func size() -> int:
-	return Items.set_size(_data)
+	return BoardItems.set_size(_data)
 
 
 func _touched_fields() -> PackedStringArray:
-	return Items.item_fields()
+	return BoardItems.item_fields()
 
 
 func _apply() -> void:
@@ -59,7 +59,7 @@ func _apply() -> void:
 	ItemKind.store(level, work)
 	for entry: Array in handles:
 		var kind: ItemKind = entry[0]
-		added.append(Items.make(kind.pick, kind.index_in(work, entry[1])))
+		added.append(BoardItems.make(kind.pick, kind.index_in(work, entry[1])))
 
 
 # The row of one set value: a bonus pocket's is its role's.

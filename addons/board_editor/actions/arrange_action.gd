@@ -4,7 +4,7 @@ extends BoardAction
 ## Each item moves as a drag would move it: a pocket with its rim pins, a wall with both ends.
 
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 var _offsets: Dictionary
 var _name: String
@@ -22,7 +22,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return Items.position_fields()
+	return BoardItems.position_fields()
 
 
 func _apply() -> void:

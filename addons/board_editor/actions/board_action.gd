@@ -8,7 +8,7 @@ extends RefCounted
 ## those fields back. Redo is `do()` again: the board is in the same state it was the first
 ## time, so the same change lands the same way.
 
-const Snapshot := preload("res://addons/board_editor/core/board_field_copy.gd")
+const BoardFieldCopy := preload("res://addons/board_editor/core/board_field_copy.gd")
 
 ## The board this action edits.
 var level: BoardLevel
@@ -30,17 +30,17 @@ func do() -> void:
 	for kind in ItemKinds.listed():
 		if fields.has(kind.field):
 			fields.append(kind.id_field)
-	_before = Snapshot.capture(level, fields)
+	_before = BoardFieldCopy.capture(level, fields)
 	_apply()
 	if _ids_after.is_empty():
 		# Items that survived the edit keep their ids; new ones get fresh ids from the board's
 		# counter. Undo puts the ids back with the lists but never the counter, so an id
 		# handed out once is never handed out again.
 		ItemIds.reconcile(level, _before)
-		_ids_after = Snapshot.capture(level, _id_fields(fields))
+		_ids_after = BoardFieldCopy.capture(level, _id_fields(fields))
 	else:
 		# A redo: the new items get the very ids they had the first time.
-		Snapshot.restore(level, _ids_after)
+		BoardFieldCopy.restore(level, _ids_after)
 	_applied = true
 	level.notify_edited()
 
@@ -49,7 +49,7 @@ func do() -> void:
 func undo() -> void:
 	if level == null or not _applied:
 		return
-	Snapshot.restore(level, _before)
+	BoardFieldCopy.restore(level, _before)
 	_applied = false
 	level.notify_edited()
 

@@ -4,7 +4,7 @@ extends BoardAction
 ## renumbered), walls, holes, ball starts, bonus pockets and windmills: each pick's
 ## ItemKinds row removes its own. The goal cannot be removed, only moved.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 var _items: Array[Vector2i]
 
@@ -19,7 +19,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return Items.item_fields()
+	return BoardItems.item_fields()
 
 
 func _apply() -> void:
@@ -28,8 +28,8 @@ func _apply() -> void:
 	var work := {}
 	for kind in ItemKinds.pick_rows():
 		var gone := PackedInt32Array()
-		for index in Items.indices_of(_items, kind.pick):
-			if Items.is_valid(level, Items.make(kind.pick, index)):
+		for index in BoardItems.indices_of(_items, kind.pick):
+			if BoardItems.is_valid(level, BoardItems.make(kind.pick, index)):
 				gone.append(index)
 		kind.remove(level, work, gone)
 	ItemKind.store(level, work)

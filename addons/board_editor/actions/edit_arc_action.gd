@@ -5,7 +5,7 @@ extends BoardAction
 ## and pins it needs more of are added after the board's other pins. With the count kept,
 ## every pin keeps its id.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 
 ## The arc's pins after the last `do()`, start to end, for the editor to select.
@@ -59,12 +59,12 @@ func _apply() -> void:
 			continue
 		if arc_index.has(i):
 			var k: int = arc_index[i]
-			placed[k] = Items.make(Items.Kind.PIN, new_pins.size())
+			placed[k] = BoardItems.make(BoardItems.Kind.PIN, new_pins.size())
 		new_pins.append(pins[i])
 		new_pocket.append(pin_pocket[i] if i < level.pin_pocket.size() else -1)
 		new_special.append(pin_special[i])
 	for k in range(kept, target.size()):
-		placed[k] = Items.make(Items.Kind.PIN, new_pins.size())
+		placed[k] = BoardItems.make(BoardItems.Kind.PIN, new_pins.size())
 		new_pins.append(target[k])
 		new_pocket.append(-1)
 		new_special.append(0)

@@ -3,7 +3,7 @@ extends BoardAction
 ## Changes a pocket's width, depth and payout and stamps its rim pins and special pin again
 ## so the pins always match the numbers in the inspector.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const PocketPins := preload("res://addons/board_editor/core/pocket_pins.gd")
 
 var _index: int

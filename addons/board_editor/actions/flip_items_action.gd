@@ -7,7 +7,7 @@ extends BoardAction
 ## Flipping a selection in mirror mode is two groups: the selection about its centre, and
 ## the selection's twins about the reflected centre, so the board stays symmetrical.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 var _groups: Array = []
 var _count := 0
@@ -29,7 +29,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return Items.position_fields()
+	return BoardItems.position_fields()
 
 
 func _apply() -> void:

@@ -5,7 +5,7 @@ extends BoardAction
 ## mode the partners move by the reflected offset and items on the axis only vertically.
 ## A drag calls `preview()` on every mouse move and is committed once on release.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 ## The offset applied to the direct items.
 var delta := Vector2.ZERO
@@ -46,7 +46,7 @@ func preview(offset: Vector2) -> void:
 
 
 func _touched_fields() -> PackedStringArray:
-	return Items.position_fields()
+	return BoardItems.position_fields()
 
 
 func _apply() -> void:

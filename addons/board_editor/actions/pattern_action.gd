@@ -17,7 +17,7 @@ const KINDS: Array[String] = ["row", "lattice", "arc", "circle"]
 func _init(
 	on_level: BoardLevel, settings: Dictionary, origin: Vector2, mirror_axis: float = NAN
 ) -> void:
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = points_for(settings, origin)
 	if not is_nan(mirror_axis):
 		data = Mirror.mirror_set(data, mirror_axis)

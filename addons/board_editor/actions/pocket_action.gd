@@ -15,7 +15,7 @@ func _init(
 	payout: int,
 	mirror_axis: float = NAN
 ) -> void:
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	var pockets: Array = data["pockets"]
 	pockets.append(PocketSpec.create(mouth, width, depth, payout))
 	if not is_nan(mirror_axis):

@@ -21,8 +21,8 @@ signal results_changed
 ## A line of the balance table was clicked: select `item` on the board.
 signal item_picked(item: Vector2i)
 
-const OverlayDraw := preload("res://addons/board_editor/analysis/analysis_overlay_draw.gd")
-const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
+const AnalysisOverlayDraw := preload("res://addons/board_editor/analysis/analysis_overlay_draw.gd")
+const AnalysisControls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 const BalanceRows := preload("res://addons/board_editor/analysis/balance_rows.gd")
 const BalanceTable := preload("res://addons/board_editor/analysis/balance_table.gd")
 const RunProgress := preload("res://addons/board_editor/analysis/run_progress.gd")
@@ -51,7 +51,7 @@ var _run_started := 0
 var _last_update := 0
 var _shown_shots := -1
 
-var _controls: Controls
+var _controls: AnalysisControls
 var _table: BalanceTable
 # The balance rows of the figures shown, and of the last other figures shown before them.
 var _rows: Array[BalanceRows.Row] = []
@@ -67,7 +67,7 @@ func _init() -> void:
 	var tip := (
 		"Fire %d shots at random power on worker threads: heat map, pocket rates, aim map" % shots
 	)
-	_controls = Controls.new(self, tip, start, cancel, _on_show_toggled)
+	_controls = AnalysisControls.new(self, tip, start, cancel, _on_show_toggled)
 	_table = BalanceTable.new()
 	_table.item_picked.connect(func(item: Vector2i) -> void: item_picked.emit(item))
 	add_child(_table)
@@ -183,7 +183,7 @@ func return_before() -> float:
 ## Draws the figures over the board (the plugin calls it from its viewport overlay).
 func draw_over(canvas: Control, to_screen: Transform2D) -> void:
 	if _level != null and _controls.show.button_pressed and (_run == null or _run_key == _key):
-		OverlayDraw.draw(canvas, to_screen, _level, _report, _heat)
+		AnalysisOverlayDraw.draw(canvas, to_screen, _level, _report, _heat)
 
 
 func _process(_delta: float) -> void:

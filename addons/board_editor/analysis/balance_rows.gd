@@ -6,7 +6,7 @@ extends RefCounted
 ## return, and a last row for the shots that rolled back down the rail (each gives its ball
 ## back). The shares add up to 1 whenever anything came back.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 ## The name of the row for shots that came back down the rail.
 const ROLLED_BACK := "Rolled back"
@@ -20,7 +20,7 @@ class Row:
 	## "Pocket 3", "Tulip 2": stable ids, so a row of an older result finds its item's row in
 	## a newer one.
 	var name := ""
-	## The board item (Items.NONE for the rail).
+	## The board item (BoardItems.NONE for the rail).
 	var item := Vector2i(-1, -1)
 	## Where it stands in board order (pockets, bonus pieces, the rail).
 	var order := 0
@@ -129,5 +129,5 @@ static func _whole(value: Variant) -> int:
 # The board item of report pocket `p`: the level's pockets first, then its bonus pockets.
 static func _item_of(level: BoardLevel, p: int) -> Vector2i:
 	if p < level.pockets.size():
-		return Items.make(Items.Kind.POCKET, p)
-	return Items.make(Items.Kind.BONUS, p - level.pockets.size())
+		return BoardItems.make(BoardItems.Kind.POCKET, p)
+	return BoardItems.make(BoardItems.Kind.BONUS, p - level.pockets.size())

@@ -9,8 +9,8 @@ extends Tree
 ## The line of a board item was clicked.
 signal item_picked(item: Vector2i)
 
-const Rows := preload("res://addons/board_editor/analysis/balance_rows.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BalanceRows := preload("res://addons/board_editor/analysis/balance_rows.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 ## Column titles, what each sorts by (BalanceRows.SORT_KEYS, same order) and tooltips.
 const TITLES: Array[String] = ["Item", "Pays", "Rate %", "Share %", "Before"]
 const TIPS: Array[String] = [
@@ -26,8 +26,8 @@ const MIN_WIDTHS: Array[int] = [86, 40, 72, 52, 56]
 ## scrolls with the dock's body, never inside it).
 const LINE_PX := 24
 
-var _rows: Array[Rows.Row] = []
-var _before: Dictionary[String, Rows.Row] = {}
+var _rows: Array[BalanceRows.Row] = []
+var _before: Dictionary[String, BalanceRows.Row] = {}
 var _sort_key := "share"
 var _ascending := false
 
@@ -48,13 +48,13 @@ func _init() -> void:
 		set_column_custom_minimum_width(c, MIN_WIDTHS[c])
 	column_title_clicked.connect(_on_title_clicked)
 	item_selected.connect(_on_item_selected)
-	show_rows([] as Array[Rows.Row], [] as Array[Rows.Row])
+	show_rows([] as Array[BalanceRows.Row], [] as Array[BalanceRows.Row])
 
 
 ## Shows `rows` (BalanceRows.rows) with the shares of `before` beside them (empty: none).
-func show_rows(rows: Array[Rows.Row], before: Array[Rows.Row]) -> void:
+func show_rows(rows: Array[BalanceRows.Row], before: Array[BalanceRows.Row]) -> void:
 	_rows = rows
-	_before = Rows.by_name(before)
+	_before = BalanceRows.by_name(before)
 	visible = not rows.is_empty()
 	_fill()
 
@@ -62,7 +62,7 @@ func show_rows(rows: Array[Rows.Row], before: Array[Rows.Row]) -> void:
 ## Sorts the lines by column `column` (0 is Item); the same column again turns the order
 ## round. Names start in board order, numbers with the largest.
 func sort_by(column: int) -> void:
-	var key: String = Rows.SORT_KEYS[column]
+	var key: String = BalanceRows.SORT_KEYS[column]
 	_ascending = not _ascending if key == _sort_key else key == "name"
 	_sort_key = key
 	_fill()
@@ -93,7 +93,7 @@ func cell(row_name: String, column: int) -> String:
 func _fill() -> void:
 	clear()
 	var root := create_item()
-	for row in Rows.sorted(_rows, _sort_key, _ascending, _before):
+	for row in BalanceRows.sorted(_rows, _sort_key, _ascending, _before):
 		var line := create_item(root)
 		line.set_text(0, row.name)
 		line.set_text(1, str(row.payout))
@@ -108,7 +108,7 @@ func _fill() -> void:
 	custom_minimum_size = Vector2(0, lines * LINE_PX + 8)
 
 
-func _before_text(row: Rows.Row) -> String:
+func _before_text(row: BalanceRows.Row) -> String:
 	if not _before.has(row.name):
 		return "" if _before.is_empty() else "new"
 	var old := _before[row.name]
@@ -118,7 +118,7 @@ func _before_text(row: Rows.Row) -> String:
 	return text
 
 
-func _before_tip(row: Rows.Row) -> String:
+func _before_tip(row: BalanceRows.Row) -> String:
 	if not _before.has(row.name):
 		return ""
 	var old := _before[row.name]
@@ -137,5 +137,5 @@ func _on_item_selected() -> void:
 	if line == null:
 		return
 	var item: Vector2i = line.get_metadata(0)
-	if item != Items.NONE:
+	if item != BoardItems.NONE:
 		item_picked.emit(item)

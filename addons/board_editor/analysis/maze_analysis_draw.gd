@@ -5,7 +5,7 @@ extends RefCounted
 ## swallowed balls in hard mode), and a card at the board's top-left corner with each
 ## mode's solve rate and median time. Also words the figures for the dock.
 
-const LossDraw := preload("res://addons/board_editor/analysis/maze_loss_draw.gd")
+const MazeLossDraw := preload("res://addons/board_editor/analysis/maze_loss_draw.gd")
 const CARD_INK := Color(0.05, 0.06, 0.09, 0.86)
 const TEXT_INK := Color(0.95, 0.95, 0.97)
 const HOLE_INK := Color(1.0, 0.42, 0.38)
@@ -23,7 +23,7 @@ static func draw(
 	var hard: Dictionary = report.get("hard", {})
 	var holes: Array = hard.get("holes", [])
 	if report.has("losses"):
-		LossDraw.draw(canvas, to_screen, level, report)
+		MazeLossDraw.draw(canvas, to_screen, level, report)
 		holes = []  # the losses mark the holes that caught balls too
 	for hole: Dictionary in holes:
 		var index: int = hole.get("index", -1)

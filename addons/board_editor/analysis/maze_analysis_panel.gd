@@ -13,10 +13,10 @@ extends VBoxContainer
 ## The overlay should be redrawn (new figures, or none to show).
 signal redraw_needed
 
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
-const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
-const Controls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
-const LossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
+const MazeAnalysisDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
+const AnalysisControls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
+const MazeLossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
 const RunProgress := preload("res://addons/board_editor/analysis/run_progress.gd")
 ## First seed of the games: the same board always gives the same figures.
 const SEED := 1
@@ -34,7 +34,7 @@ var _run_key := ""
 var _run_level: BoardLevel
 var _run_started := 0
 
-var _controls: Controls
+var _controls: AnalysisControls
 
 
 func _init() -> void:
@@ -43,7 +43,7 @@ func _init() -> void:
 		"Let the autoplay pilot play %d games in easy and %d in hard mode: solve rates, times, "
 		+ "and where and why games were lost (a ball trapped or stuck, a hole, time ran out)."
 	)
-	_controls = Controls.new(self, tip, start, cancel, _on_show_toggled)
+	_controls = AnalysisControls.new(self, tip, start, cancel, _on_show_toggled)
 	set_process(false)
 
 
@@ -56,7 +56,7 @@ func _ready() -> void:
 func bind(level: BoardLevel) -> void:
 	visible = level != null and level.is_maze()
 	_level = level if visible else null
-	var key := Writer.play_hash(_level) if _level != null else ""
+	var key := BoardTextWriter.play_hash(_level) if _level != null else ""
 	if key == _key:
 		return
 	_key = key
@@ -118,7 +118,7 @@ func report() -> Dictionary:
 ## Draws the figures over the board (the plugin calls it from its viewport overlay).
 func draw_over(canvas: Control, to_screen: Transform2D) -> void:
 	if _level != null and _controls.show.button_pressed and not _report.is_empty():
-		OverlayDraw.draw(canvas, to_screen, _level, _report)
+		MazeAnalysisDraw.draw(canvas, to_screen, _level, _report)
 
 
 func _process(_delta: float) -> void:
@@ -176,8 +176,8 @@ func _say_result() -> void:
 	var lines := PackedStringArray()
 	for mode: String in ["easy", "hard"]:
 		var figures: Dictionary = _report[mode]
-		lines.append(OverlayDraw.mode_line(mode, figures))
-	lines.append_array(LossWords.lines(_report))
+		lines.append(MazeAnalysisDraw.mode_line(mode, figures))
+	lines.append_array(MazeLossWords.lines(_report))
 	_controls.status.text = "\n".join(lines)
 
 

@@ -6,7 +6,7 @@ extends RefCounted
 ## diamond for a stuck one, a ring round the hole that caught one, a clock for time that
 ## ran out.
 
-const Words := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
+const MazeLossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
 const TRAPPED_INK := Color(1.0, 0.25, 0.45)
 const STUCK_INK := Color(1.0, 0.62, 0.15)
 const HOLE_INK := Color(1.0, 0.42, 0.38)
@@ -86,7 +86,7 @@ static func _draw_entry(
 			canvas.draw_arc(c, MARK, 0.0, TAU, 24, color, 2.0, true)
 			canvas.draw_line(c, c + Vector2(0, -MARK * 0.7), color, 2.0)
 			canvas.draw_line(c, c + Vector2(MARK * 0.5, 0), color, 2.0)
-	_tag(canvas, c + Vector2(MARK + 5.0, FONT_SIZE * 0.4), Words.tag(entry), color)
+	_tag(canvas, c + Vector2(MARK + 5.0, FONT_SIZE * 0.4), MazeLossWords.tag(entry), color)
 
 
 static func _tag(canvas: Control, at: Vector2, text: String, color: Color) -> void:

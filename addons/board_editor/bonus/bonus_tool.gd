@@ -18,7 +18,7 @@ const DEFAULTS := {
 var role: BonusPocketSpec.Role
 
 
-func _init(on_session: Session, placed_role: BonusPocketSpec.Role) -> void:
+func _init(on_session: BoardEditSession, placed_role: BonusPocketSpec.Role) -> void:
 	super(on_session)
 	role = placed_role
 
@@ -27,7 +27,7 @@ func press(at: Vector2, _event: InputEventMouseButton) -> bool:
 	var under := pocket_at(level(), at)
 	if under >= 0:
 		# A hidden or locked "Bonus pieces" layer keeps its pockets: the click does nothing.
-		if session.can_pick(Items.make(Items.Kind.BONUS, under)):
+		if session.can_pick(BoardItems.make(BoardItems.Kind.BONUS, under)):
 			session.commit(BonusActions.RemoveBonus.new(level(), under))
 		return true
 	session.commit(
@@ -61,8 +61,8 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	if pocket_at(board, hover) >= 0:
 		var spec := board.bonus_pockets[pocket_at(board, hover)]
 		var box := BonusChecks.cup_rect(board, spec)
-		Draw.line(canvas, to_screen, box.position, box.end, Color(1, 0.3, 0.3))
-		Draw.line(
+		OverlayDraw.line(canvas, to_screen, box.position, box.end, Color(1, 0.3, 0.3))
+		OverlayDraw.line(
 			canvas,
 			to_screen,
 			Vector2(box.position.x, box.end.y),
@@ -75,6 +75,8 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 		mouths.append(Vector2(2.0 * session.mirror_axis() - mouths[0].x, mouths[0].y))
 	for mouth in mouths:
 		var spec := spec_at(mouth)
-		Draw.ghost_points(canvas, to_screen, BonusGeometry.rim_pins(board, spec), board.pin_radius)
+		OverlayDraw.ghost_points(
+			canvas, to_screen, BonusGeometry.rim_pins(board, spec), board.pin_radius
+		)
 		var half := Vector2(spec.width * 0.5, 0)
-		Draw.line(canvas, to_screen, mouth - half, mouth + half, Draw.GHOST_COLOR)
+		OverlayDraw.line(canvas, to_screen, mouth - half, mouth + half, OverlayDraw.GHOST_COLOR)

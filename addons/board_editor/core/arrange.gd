@@ -4,7 +4,7 @@ extends RefCounted
 ## line, or space them evenly between the outermost two. Items are placed by the point that
 ## represents them (BoardItems.position_of: a pin's centre, a pocket's mouth, a wall's middle).
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 ## Align modes: the coordinate every item takes.
 const ALIGN_MODES: Array[String] = ["left", "center_x", "right", "top", "center_y", "bottom"]
@@ -65,6 +65,6 @@ static func distribute_offsets(
 static func _points(level: BoardLevel, items: Array[Vector2i]) -> Dictionary:
 	var points := {}
 	for item in items:
-		if Items.is_valid(level, item):
-			points[item] = Items.position_of(level, item)
+		if BoardItems.is_valid(level, item):
+			points[item] = BoardItems.position_of(level, item)
 	return points

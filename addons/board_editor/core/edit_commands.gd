@@ -4,8 +4,8 @@ extends RefCounted
 ## mirror to the other half. Each one is a single undoable action; mirror mode takes the
 ## mirrored partners along.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const ItemKeys := preload("res://addons/board_editor/core/item_keys.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
@@ -15,7 +15,7 @@ const FlipItemsAction := preload("res://addons/board_editor/actions/flip_items_a
 
 
 ## Deletes the selection (and mirrored partners); false when there is nothing to delete.
-static func delete_selection(session: Session) -> bool:
+static func delete_selection(session: BoardEditSession) -> bool:
 	var items := _editable(session)
 	if session.mirror_enabled:
 		items = Mirror.with_partners(session.level, items, Mirror.axis_of(session.level))
@@ -27,19 +27,19 @@ static func delete_selection(session: Session) -> bool:
 
 
 ## Copies the selection to the session's clipboard, relative to its centre.
-static func copy_selection(session: Session) -> bool:
+static func copy_selection(session: BoardEditSession) -> bool:
 	var items := _editable(session)
 	if items.is_empty():
 		return false
-	session.clipboard = Items.extract(session.level, items, _centre(session.level, items))
+	session.clipboard = BoardItems.extract(session.level, items, _centre(session.level, items))
 	return true
 
 
 ## Pastes the clipboard centred at `at` (snapped) and selects what was pasted.
-static func paste_at(session: Session, at: Vector2) -> bool:
-	if session.clipboard.is_empty() or Items.set_size(session.clipboard) == 0:
+static func paste_at(session: BoardEditSession, at: Vector2) -> bool:
+	if session.clipboard.is_empty() or BoardItems.set_size(session.clipboard) == 0:
 		return false
-	var data := Items.offset_set(session.clipboard, session.snap_point(at))
+	var data := BoardItems.offset_set(session.clipboard, session.snap_point(at))
 	var action := AddItemsAction.new(session.level, session.mirrored(data), "Paste board items")
 	session.commit(action)
 	session.select(action.added)
@@ -49,16 +49,16 @@ static func paste_at(session: Session, at: Vector2) -> bool:
 ## Copies the selection beside itself (duplicate_offset), selecting the copy. In mirror
 ## mode the copy's twin goes the other way on the other half, as a paste's does: a selection
 ## holding both twins is copied from one half only, so each copy comes once.
-static func duplicate_selection(session: Session) -> bool:
+static func duplicate_selection(session: BoardEditSession) -> bool:
 	var items := _editable(session)
 	if items.is_empty():
 		return false
 	var source := items
 	if session.mirror_enabled:
 		source = _one_half(session.level, items, Mirror.axis_of(session.level))
-	var data := Items.extract(session.level, source, Vector2.ZERO)
+	var data := BoardItems.extract(session.level, source, Vector2.ZERO)
 	var offset := duplicate_offset(session, source)
-	var copy := session.mirrored(Items.offset_set(data, offset))
+	var copy := session.mirrored(BoardItems.offset_set(data, offset))
 	var action := AddItemsAction.new(session.level, copy, "Duplicate board items")
 	session.commit(action)
 	session.select(action.added)
@@ -68,11 +68,11 @@ static func duplicate_selection(session: Session) -> bool:
 ## Flips the selection left to right about its own centre (one undo step). In mirror mode
 ## the twins of the selected items flip too, about the reflected centre, so each stays the
 ## mirror image of its twin.
-static func flip_selection(session: Session) -> bool:
+static func flip_selection(session: BoardEditSession) -> bool:
 	var level := session.level
 	var items: Array[Vector2i] = []
 	for item in session.selection:
-		if Items.is_valid(level, item):
+		if BoardItems.is_valid(level, item):
 			items.append(item)
 	if items.is_empty():
 		return false
@@ -86,7 +86,7 @@ static func flip_selection(session: Session) -> bool:
 		var twins: Array[Vector2i] = []
 		for item in items:
 			var twin := Mirror.partner(level, item, axis)
-			if twin != Items.NONE and twin != item and not items.has(twin):
+			if twin != BoardItems.NONE and twin != item and not items.has(twin):
 				twins.append(twin)
 		if not twins.is_empty():
 			groups.append([twins, 2.0 * axis - centre])
@@ -98,17 +98,17 @@ static func flip_selection(session: Session) -> bool:
 ## board's axis, Mirror.axis_of), keeping the originals; an item that already has its twin
 ## there, or sits on the axis, is not doubled. Selects the originals and the new twins.
 ## False when every selected item already has its twin.
-static func mirror_to_other_half(session: Session) -> bool:
+static func mirror_to_other_half(session: BoardEditSession) -> bool:
 	var level := session.level
 	var axis := Mirror.axis_of(level)
 	var items := _editable(session)
 	var lonely: Array[Vector2i] = []
 	for item in items:
-		if Mirror.partner(level, item, axis) == Items.NONE:
+		if Mirror.partner(level, item, axis) == BoardItems.NONE:
 			lonely.append(item)
 	if lonely.is_empty():
 		return false
-	var twins := Mirror.reflections_of(Items.extract(level, lonely, Vector2.ZERO), axis)
+	var twins := Mirror.reflections_of(BoardItems.extract(level, lonely, Vector2.ZERO), axis)
 	var action := AddItemsAction.new(
 		level,
 		twins,
@@ -126,7 +126,7 @@ static func mirror_to_other_half(session: Session) -> bool:
 
 ## Where Ctrl+D puts the copy: right of the original, clear of it by a ball's width (so the
 ## copy never overlaps it, an instant error), a whole number of grid steps away.
-static func duplicate_offset(session: Session, items: Array[Vector2i]) -> Vector2:
+static func duplicate_offset(session: BoardEditSession, items: Array[Vector2i]) -> Vector2:
 	var level := session.level
 	var bounds := Rect2()
 	for k in items.size():
@@ -144,14 +144,14 @@ static func extent_of(level: BoardLevel, item: Vector2i) -> Rect2:
 
 
 ## Moves the selection by `direction` grid steps (one pixel per step without snapping).
-static func nudge(session: Session, direction: Vector2) -> bool:
+static func nudge(session: BoardEditSession, direction: Vector2) -> bool:
 	if session.selection.is_empty():
 		return false
 	var offset := direction * (step(session) if session.snap_enabled else 1.0)
 	var action: MoveItemsAction
 	if session.mirror_enabled:
 		var axis := Mirror.axis_of(session.level)
-		var anchor := Items.position_of(session.level, session.selection[0]).x
+		var anchor := BoardItems.position_of(session.level, session.selection[0]).x
 		var split := Mirror.split_for_move(session.level, session.selection, axis, anchor)
 		var direct: Array[Vector2i] = split["direct"]
 		var mirrored: Array[Vector2i] = split["mirrored"]
@@ -164,7 +164,7 @@ static func nudge(session: Session, direction: Vector2) -> bool:
 
 
 ## The step for duplicating and nudging: a maze cell on a snapped maze, else the grid.
-static func step(session: Session) -> float:
+static func step(session: BoardEditSession) -> float:
 	if session.level.is_maze() and session.snap_enabled:
 		return session.level.path_width + session.level.wall_width
 	return session.grid_step
@@ -175,23 +175,23 @@ static func _one_half(level: BoardLevel, items: Array[Vector2i], axis: float) ->
 	var half: Array[Vector2i] = []
 	for item in items:
 		var twin := Mirror.partner(level, item, axis)
-		var on_right := Items.position_of(level, item).x > axis
+		var on_right := BoardItems.position_of(level, item).x > axis
 		if not (on_right and twin != item and items.has(twin)):
 			half.append(item)
 	return half
 
 
 # The selection without the goal, which cannot be copied or deleted.
-static func _editable(session: Session) -> Array[Vector2i]:
+static func _editable(session: BoardEditSession) -> Array[Vector2i]:
 	var items: Array[Vector2i] = []
 	for item in session.selection:
-		if item.x != Items.Kind.GOAL and Items.is_valid(session.level, item):
+		if item.x != BoardItems.Kind.GOAL and BoardItems.is_valid(session.level, item):
 			items.append(item)
 	return items
 
 
 static func _centre(level: BoardLevel, items: Array[Vector2i]) -> Vector2:
-	var box := Rect2(Items.position_of(level, items[0]), Vector2.ZERO)
+	var box := Rect2(BoardItems.position_of(level, items[0]), Vector2.ZERO)
 	for item in items:
-		box = box.expand(Items.position_of(level, item))
+		box = box.expand(BoardItems.position_of(level, item))
 	return box.get_center()

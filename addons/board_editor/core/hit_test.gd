@@ -3,7 +3,7 @@ extends RefCounted
 ## Static picking on a board: which item is under a point, which items are in a box, and
 ## which ring / rail / goal handle is under a point. All in board pixels.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const PinChecks := preload("res://scripts/validation/pin_checks.gd")
 
 ## Handle names are the BoardLevel fields they edit.
@@ -25,7 +25,7 @@ const MAZE_HANDLES: Array[String] = ["goal_radius"]
 ## (PickRank.LAST). A pocket's rim pins pick the pocket; a bonus pocket is picked inside its
 ## cup (rim pins included), a windmill inside the circle its blades sweep.
 static func pick(level: BoardLevel, point: Vector2, tolerance: float) -> Vector2i:
-	var best := Items.NONE
+	var best := BoardItems.NONE
 	var best_distance := INF
 	for rank: int in ItemKind.PickRank.values():
 		for kind in ItemKinds.all():
@@ -70,7 +70,7 @@ static func _may_pick(rank: int, best: Vector2i, best_distance: float) -> bool:
 		ItemKind.PickRank.UNDER:
 			return best_distance > 0.0
 		ItemKind.PickRank.LAST:
-			return best == Items.NONE
+			return best == BoardItems.NONE
 	return true
 
 

@@ -6,12 +6,12 @@ extends RefCounted
 ## The list of an item is its ItemKinds row's; an item without ids (the goal) is keyed by
 ## its index.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 
 ## The key of `item`: [list, id], or [] for an item that is not on the board.
 static func of(level: BoardLevel, item: Vector2i) -> Array:
-	if not Items.is_valid(level, item):
+	if not BoardItems.is_valid(level, item):
 		return []
 	var kind := ItemKinds.of_item(level, item)
 	if not kind.has_ids():
@@ -29,7 +29,7 @@ static func find_all(level: BoardLevel, keys: Array) -> Array[Vector2i]:
 	var seen := {}
 	for key: Array in keys:
 		var item := _find(level, key, index_by_id)
-		if item != Items.NONE and not seen.has(item):
+		if item != BoardItems.NONE and not seen.has(item):
 			seen[item] = true
 			found.append(item)
 	return found
@@ -40,18 +40,18 @@ static func _find(level: BoardLevel, key: Array, index_by_id: Dictionary) -> Vec
 	var list: String = key[0]
 	var kind := ItemKinds.of_list(list)
 	if kind == null:
-		return Items.NONE
+		return BoardItems.NONE
 	if not kind.has_ids():
 		var at: int = key[1]
-		var item := Items.make(kind.pick, at)
-		return item if Items.is_valid(level, item) else Items.NONE
+		var item := BoardItems.make(kind.pick, at)
+		return item if BoardItems.is_valid(level, item) else BoardItems.NONE
 	if not index_by_id.has(list):
 		index_by_id[list] = _index_table(level, kind)
 	var table: Dictionary = index_by_id[list]
 	var index: int = table.get(key[1], -1)
 	if index < 0:
-		return Items.NONE
-	return Items.make(kind.pick, index)
+		return BoardItems.NONE
+	return BoardItems.make(kind.pick, index)
 
 
 # id → index of the items of `kind` (for a bonus role: the index in level.bonus_pockets).

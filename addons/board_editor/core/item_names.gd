@@ -4,7 +4,7 @@ extends RefCounted
 ## id the problem messages and the board file use (ItemIds). The words are each kind's
 ## ItemKinds row's.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 
 ## "Pin 143", "Wall 12", "Tulip 3", "Goal".
@@ -21,9 +21,9 @@ static func name_of(level: BoardLevel, item: Vector2i) -> String:
 
 ## "Pin 143 at (255, 84)": the property panel's heading.
 static func title(level: BoardLevel, item: Vector2i) -> String:
-	if not Items.is_valid(level, item):
+	if not BoardItems.is_valid(level, item):
 		return ""
-	var at := Items.position_of(level, item)
+	var at := BoardItems.position_of(level, item)
 	return "%s at (%s, %s)" % [name_of(level, item), _number(at.x), _number(at.y)]
 
 

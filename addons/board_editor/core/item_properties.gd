@@ -9,7 +9,7 @@ extends RefCounted
 ## all have, each with their common value or MIXED; a value typed there lands on all of them
 ## in one undo step (action_for_all).
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const SetPointAction := preload("res://addons/board_editor/actions/set_point_action.gd")
 const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket_action.gd")
@@ -49,7 +49,7 @@ const FIELDS := {
 ## The editable fields of `item` in display order, with their current values (its row's
 ## `properties` hook; a point's x and y, a wall's two ends).
 static func values_of(level: BoardLevel, item: Vector2i) -> Dictionary:
-	if not Items.is_valid(level, item):
+	if not BoardItems.is_valid(level, item):
 		return {}
 	var kind := ItemKinds.of_item(level, item)
 	if kind.properties.is_valid():
@@ -89,7 +89,7 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 static func _place_action(
 	level: BoardLevel, kind: ItemKind, item: Vector2i, key: String, value: float
 ) -> BoardAction:
-	var at := Items.position_of(level, item)
+	var at := BoardItems.position_of(level, item)
 	var target := Vector2(value, at.y) if key == "x" else Vector2(at.x, value)
 	match kind.shape:
 		ItemKind.Shape.POINT:
@@ -106,15 +106,15 @@ static func _own_action(
 	level: BoardLevel, item: Vector2i, key: String, value: float
 ) -> BoardAction:
 	match item.x:
-		Items.Kind.POCKET:
+		BoardItems.Kind.POCKET:
 			var spec: PocketSpec = level.pockets[item.y]
 			var width := value if key == "width" else spec.width
 			var depth := value if key == "depth" else spec.depth
 			var payout := int(value) if key == "payout" else spec.payout
 			return EditPocketAction.new(level, item.y, width, depth, payout)
-		Items.Kind.BONUS:
+		BoardItems.Kind.BONUS:
 			return BonusActions.EditBonus.new(level, item.y, key, value)
-		Items.Kind.WINDMILL:
+		BoardItems.Kind.WINDMILL:
 			return EditWindmillAction.new(level, item.y, key, value)
 	return SetPropertiesAction.new(level, {"goal_radius": value}, "Set goal radius")
 
@@ -124,15 +124,15 @@ static func _own_action(
 static func mirrored_action_for(
 	level: BoardLevel, item: Vector2i, key: String, value: float, axis: float
 ) -> BoardAction:
-	if not key in ["x", "y"] or not Items.is_valid(level, item):
+	if not key in ["x", "y"] or not BoardItems.is_valid(level, item):
 		return null
 	var shape := ItemKinds.of_item(level, item).shape
 	if shape == ItemKind.Shape.SINGLE or shape == ItemKind.Shape.SEGMENT:
 		return null
 	var twin := Mirror.partner(level, item, axis)
-	if twin == Items.NONE or twin == item:
+	if twin == BoardItems.NONE or twin == item:
 		return null
-	var at := Items.position_of(level, item)
+	var at := BoardItems.position_of(level, item)
 	var target := Vector2(value, at.y) if key == "x" else Vector2(at.x, value)
 	if target == at:
 		return null
@@ -195,11 +195,11 @@ static func _targets(
 	for item in items:
 		if not values_of(level, item).has(key) or targets.has(item):
 			continue
-		var twin := Items.NONE if is_nan(axis) else Mirror.partner(level, item, axis)
-		var moves_twin := key in ["x", "y"] and twin != Items.NONE
+		var twin := BoardItems.NONE if is_nan(axis) else Mirror.partner(level, item, axis)
+		var moves_twin := key in ["x", "y"] and twin != BoardItems.NONE
 		if moves_twin and targets.has(twin):
 			continue  # its partner's edit moves it
 		targets.append(item)
-		if not key in ["x", "y"] and twin != Items.NONE and not targets.has(twin):
+		if not key in ["x", "y"] and twin != BoardItems.NONE and not targets.has(twin):
 			targets.append(twin)
 	return targets

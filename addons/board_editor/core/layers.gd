@@ -4,7 +4,7 @@ extends RefCounted
 ## that show it. A hidden layer is not drawn and cannot be picked; a locked one is drawn but
 ## cannot be picked, moved or erased (placing new items is still possible).
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 ## The layers that hold no items, per board kind: name -> BoardPainter layer flags. They
 ## follow the item layers (ItemKinds.layers_of, from the rows) in the list.

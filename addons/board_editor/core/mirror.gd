@@ -3,7 +3,7 @@ extends RefCounted
 ## Left-right mirror mode: reflections across a vertical axis, and the "partner" of an item
 ## (the item at its mirrored place) so one edit lands on both halves of the board.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 ## Two points closer than this (px) are the same place.
 const SAME_PLACE := 0.5
@@ -37,7 +37,7 @@ static func with_reflections(points: PackedVector2Array, axis: float) -> PackedV
 static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 	var result := data.duplicate(true)
 	for kind in ItemKinds.set_rows():
-		var values := Items.set_values(data, kind)
+		var values := BoardItems.set_values(data, kind)
 		var step := 2 if kind.shape == ItemKind.Shape.SEGMENT else 1
 		var kept: Array = []
 		for value: Variant in values:
@@ -48,19 +48,19 @@ static func mirror_set(data: Dictionary, axis: float) -> Dictionary:
 				twin.append(kind.reflected_value(values[i + k], axis))
 			if _find_item(kept, twin, step) < 0:
 				kept.append_array(twin)
-		result[kind.set_key] = Items.set_entry(kind, kept)
+		result[kind.set_key] = BoardItems.set_entry(kind, kept)
 	return result
 
 
 ## The mirror image of an item set alone (the originals left out): what "Mirror to the
 ## other half" adds. Windmill twins turn the other way.
 static func reflections_of(data: Dictionary, axis: float) -> Dictionary:
-	var result := Items.empty_set()
+	var result := BoardItems.empty_set()
 	for kind in ItemKinds.set_rows():
 		var reflected: Array = []
-		for value: Variant in Items.set_values(data, kind):
+		for value: Variant in BoardItems.set_values(data, kind):
 			reflected.append(kind.reflected_value(value, axis))
-		result[kind.set_key] = Items.set_entry(kind, reflected)
+		result[kind.set_key] = BoardItems.set_entry(kind, reflected)
 	return result
 
 
@@ -69,20 +69,20 @@ static func reflections_of(data: Dictionary, axis: float) -> Dictionary:
 static func partner(level: BoardLevel, item: Vector2i, axis: float) -> Vector2i:
 	var kind := ItemKinds.of_item(level, item)
 	if kind == null or not kind.is_valid(level, item.y) or kind.shape == ItemKind.Shape.SINGLE:
-		return Items.NONE
+		return BoardItems.NONE
 	if kind.shape == ItemKind.Shape.SEGMENT:
 		var ends: PackedVector2Array = level.get(kind.field)
 		var a := reflect(ends[item.y * 2], axis)
 		var b := reflect(ends[item.y * 2 + 1], axis)
 		var found := _find_wall(ends, a, b)
-		return Items.NONE if found < 0 else Items.make(kind.pick, found)
+		return BoardItems.NONE if found < 0 else BoardItems.make(kind.pick, found)
 	var target := reflect(kind.position_of(level, item.y), axis)
 	for i in kind.field_indices(level):
 		if not kind.is_item(level, i):
 			continue
 		if kind.position_of(level, i).distance_to(target) <= SAME_PLACE:
-			return Items.make(kind.pick, i)
-	return Items.NONE
+			return BoardItems.make(kind.pick, i)
+	return BoardItems.NONE
 
 
 ## The items plus their partners (for erasing both halves).
@@ -92,7 +92,7 @@ static func with_partners(
 	var result: Array[Vector2i] = items.duplicate()
 	for item in items:
 		var other := partner(level, item, axis)
-		if other != Items.NONE and not result.has(other):
+		if other != BoardItems.NONE and not result.has(other):
 			result.append(other)
 	return result
 
@@ -111,10 +111,10 @@ static func split_for_move(
 		var other := partner(level, item, axis)
 		if other == item:
 			on_axis.append(item)
-		elif other == Items.NONE:
+		elif other == BoardItems.NONE:
 			direct.append(item)
 		else:
-			var side := signf(Items.position_of(level, item).x - axis)
+			var side := signf(BoardItems.position_of(level, item).x - axis)
 			if items.has(other) and side != anchor_side:
 				continue
 			direct.append(item)
@@ -131,7 +131,7 @@ static func _has_point(points: PackedVector2Array, point: Vector2) -> bool:
 
 
 static func _find_wall(walls: PackedVector2Array, a: Vector2, b: Vector2) -> int:
-	for w in Items.wall_count(walls):
+	for w in BoardItems.wall_count(walls):
 		var p := walls[w * 2]
 		var q := walls[w * 2 + 1]
 		var same := p.distance_to(a) <= SAME_PLACE and q.distance_to(b) <= SAME_PLACE

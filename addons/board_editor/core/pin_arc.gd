@@ -7,7 +7,7 @@ extends RefCounted
 ## an arc runs from start to end through increasing angles. A whole circle has
 ## end = start + 360 and no pin at the end (it would sit on the first).
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 ## Fewest pins that make an arc (two pins are a row).
 const MIN_PINS := 3
@@ -27,7 +27,7 @@ static func of_selection(level: BoardLevel, selection: Array[Vector2i]) -> Dicti
 	var indices := PackedInt32Array()
 	var points := PackedVector2Array()
 	for item in selection:
-		if item.x != Items.Kind.PIN or not Items.is_valid(level, item):
+		if item.x != BoardItems.Kind.PIN or not BoardItems.is_valid(level, item):
 			return {}
 		if item.y < level.pin_pocket.size() and level.pin_pocket[item.y] >= 0:
 			return {}  # a pocket's rim pin moves with its pocket, never on its own

@@ -6,7 +6,7 @@ extends RefCounted
 ## clipboard would start over each time. The tool itself is kept only where the new
 ## board's kind offers it (a wall tool does not carry over to a pachinko board).
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 
 ## The session fields kept, copied as values.
 const FIELDS: Array[String] = [
@@ -23,7 +23,7 @@ const FIELDS: Array[String] = [
 
 
 ## The settings of `session`, ready for `apply`.
-static func capture(session: Session) -> Dictionary:
+static func capture(session: BoardEditSession) -> Dictionary:
 	var kept := {"tool": session.tool}
 	for field in FIELDS:
 		kept[field] = _copy(session.get(field))
@@ -31,11 +31,11 @@ static func capture(session: Session) -> Dictionary:
 
 
 ## Puts `kept` (from `capture`) on `session`; the tool only when the board offers it.
-static func apply(session: Session, kept: Dictionary) -> void:
+static func apply(session: BoardEditSession, kept: Dictionary) -> void:
 	for field in FIELDS:
 		if kept.has(field):
 			session.set(field, _copy(kept[field]))
-	var tool: int = kept.get("tool", Session.Tool.SELECT)
+	var tool: int = kept.get("tool", BoardEditSession.Tool.SELECT)
 	if session.available_tools().has(tool):
 		session.set_tool(tool)
 	session.settings_changed.emit()

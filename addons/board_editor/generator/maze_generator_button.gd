@@ -5,9 +5,9 @@ extends Button
 ## (GenerateMazeAction). Shown only while a maze board is edited.
 
 const GenerateMazeAction := preload("res://addons/board_editor/generator/generate_maze_action.gd")
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 
-var _session: Session
+var _session: BoardEditSession
 var _dialog: ConfirmationDialog
 var _cols: SpinBox
 var _rows: SpinBox
@@ -43,7 +43,7 @@ func _init() -> void:
 
 
 ## Edits the maze of `session` from now on (hidden for a pachinko board).
-func bind(session: Session) -> void:
+func bind(session: BoardEditSession) -> void:
 	_session = session
 	visible = session != null and session.level != null and session.level.is_maze()
 

@@ -6,10 +6,10 @@ extends RefCounted
 ## pin arc"). Three points in a line bend no arc: the drag holds the last good shape and
 ## `problem` says why.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const ThreePointArc := preload("res://addons/board_editor/core/three_point_arc.gd")
 const EditArcAction := preload("res://addons/board_editor/actions/edit_arc_action.gd")
-const Draw := preload("res://addons/board_editor/ui/overlay_draw.gd")
+const OverlayDraw := preload("res://addons/board_editor/ui/overlay_draw.gd")
 ## Screen pixels the bulge handle sits outside the arc's middle (clear of the middle pin).
 const BULGE_OUTSIDE := 16.0
 
@@ -18,7 +18,7 @@ var handle := -1
 ## Why the last drag position gave no arc ("" when it did).
 var problem := ""
 
-var _session: Session
+var _session: BoardEditSession
 var _arc: Dictionary = {}
 var _points := PackedVector2Array()
 var _bulge_offset := Vector2.ZERO
@@ -27,7 +27,7 @@ var _action: EditArcAction = null
 
 ## Where the handles of `session`'s selected arc are drawn ([] with no arc selected), for a
 ## view `pixel` board px per screen px.
-static func handle_points(session: Session, pixel: float) -> PackedVector2Array:
+static func handle_points(session: BoardEditSession, pixel: float) -> PackedVector2Array:
 	var arc := session.selected_arc()
 	if arc.is_empty():
 		return PackedVector2Array()
@@ -37,7 +37,7 @@ static func handle_points(session: Session, pixel: float) -> PackedVector2Array:
 
 
 ## The handle of the selected arc within `reach` board px of `at`, or -1.
-static func handle_at(session: Session, at: Vector2, reach: float, pixel: float) -> int:
+static func handle_at(session: BoardEditSession, at: Vector2, reach: float, pixel: float) -> int:
 	var points := handle_points(session, pixel)
 	var best := -1
 	var best_distance := reach
@@ -49,7 +49,7 @@ static func handle_at(session: Session, at: Vector2, reach: float, pixel: float)
 
 
 ## Starts dragging handle `index` of `session`'s selected arc.
-func begin(session: Session, index: int, pixel: float) -> void:
+func begin(session: BoardEditSession, index: int, pixel: float) -> void:
 	_session = session
 	_arc = session.selected_arc()
 	_points = ThreePointArc.handles(_arc)
@@ -100,17 +100,17 @@ func cancel() -> void:
 
 ## Draws `session`'s selected arc's handles (the dragged one hot), a stem from the arc's
 ## middle to the bulge handle, and a refused drag's reason.
-func draw(canvas: Control, to_screen: Transform2D, session: Session, pixel: float) -> void:
+func draw(canvas: Control, to_screen: Transform2D, session: BoardEditSession, pixel: float) -> void:
 	var points := handle_points(session, pixel)
 	if points.size() != 3:
 		return
 	var middle := ThreePointArc.handles(session.selected_arc())[1]
-	Draw.line(canvas, to_screen, middle, points[1], Draw.HANDLE_COLOR)
+	OverlayDraw.line(canvas, to_screen, middle, points[1], OverlayDraw.HANDLE_COLOR)
 	for k in points.size():
-		Draw.handle(canvas, to_screen, points[k], handle == k)
+		OverlayDraw.handle(canvas, to_screen, points[k], handle == k)
 	if not problem.is_empty() and handle >= 0:
 		var at := to_screen * points[handle] + Vector2(14, -12)
-		Draw.label(canvas, at, problem, Draw.ERROR_COLOR)
+		OverlayDraw.label(canvas, at, problem, OverlayDraw.ERROR_COLOR)
 
 
 # Unit vector from the arc's centre through `point` (outward).

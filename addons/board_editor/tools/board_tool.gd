@@ -3,23 +3,23 @@ extends RefCounted
 ## Base of the editor's tools. A tool turns mouse input (already in board pixels) into
 ## actions committed through the session, and draws its preview over the viewport.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
-const Draw := preload("res://addons/board_editor/ui/overlay_draw.gd")
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
+const OverlayDraw := preload("res://addons/board_editor/ui/overlay_draw.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 
 ## How close (screen px) the mouse must be to pick something.
 const PICK_PIXELS := 8.0
 
 ## The editor state this tool works on.
-var session: Session
+var session: BoardEditSession
 ## The mouse position in board pixels (for previews).
 var hover := Vector2.ZERO
 ## Board pixels per screen pixel, set by the plugin from the view zoom.
 var pixel := 1.0
 
 
-func _init(on_session: Session) -> void:
+func _init(on_session: BoardEditSession) -> void:
 	session = on_session
 
 
@@ -57,7 +57,7 @@ func level() -> BoardLevel:
 ## The item under `at` that the tool may touch (nothing on a hidden or locked layer).
 func pick(at: Vector2) -> Vector2i:
 	var item := HitTest.pick(level(), at, tolerance())
-	return item if item == Items.NONE or session.can_pick(item) else Items.NONE
+	return item if item == BoardItems.NONE or session.can_pick(item) else BoardItems.NONE
 
 
 ## Pick tolerance in board pixels.

@@ -36,7 +36,7 @@ func release(at: Vector2, _event: InputEventMouseButton) -> bool:
 	_path = PackedVector2Array()
 	if pins.is_empty():
 		return true
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = pins
 	var placed := session.mirrored(data)
 	var placed_pins: PackedVector2Array = placed["pins"]
@@ -62,16 +62,18 @@ func pins_for(path: PackedVector2Array) -> PackedVector2Array:
 
 func draw(canvas: Control, to_screen: Transform2D) -> void:
 	if _path.is_empty():
-		Draw.circle(canvas, to_screen, session.snap_point(hover), 4.0, Draw.GHOST_COLOR)
+		OverlayDraw.circle(
+			canvas, to_screen, session.snap_point(hover), 4.0, OverlayDraw.GHOST_COLOR
+		)
 		return
 	var path := _path.duplicate()
 	path.append(hover)
 	var line := PackedVector2Array()
 	for point in path:
 		line.append(to_screen * point)
-	canvas.draw_polyline(line, Color(Draw.GHOST_COLOR, 0.6), 1.5, true)
+	canvas.draw_polyline(line, Color(OverlayDraw.GHOST_COLOR, 0.6), 1.5, true)
 	var pins := pins_for(path)
 	var mirrored := session.mirrored({"pins": pins})
 	var shown: PackedVector2Array = mirrored.get("pins", pins)
-	Draw.ghost_points(canvas, to_screen, shown, level().pin_radius, level())
-	Draw.label(canvas, to_screen * hover + Vector2(14, -10), "%d pins" % pins.size())
+	OverlayDraw.ghost_points(canvas, to_screen, shown, level().pin_radius, level())
+	OverlayDraw.label(canvas, to_screen * hover + Vector2(14, -10), "%d pins" % pins.size())

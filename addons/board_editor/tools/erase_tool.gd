@@ -53,21 +53,23 @@ func cancel() -> bool:
 func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var shown: Array[Vector2i] = _marked.duplicate()
 	var under := _erasable(hover)
-	if under != Items.NONE and not shown.has(under):
+	if under != BoardItems.NONE and not shown.has(under):
 		shown.append(under)
 	for item in shown:
-		if not Items.is_valid(level(), item):
+		if not BoardItems.is_valid(level(), item):
 			continue
-		var center := to_screen * Items.position_of(level(), item)
+		var center := to_screen * BoardItems.position_of(level(), item)
 		var arm := Vector2(5, 5)
-		canvas.draw_arc(center, 9.0, 0.0, TAU, 24, Draw.ERROR_COLOR, 2.0, true)
-		canvas.draw_line(center - arm, center + arm, Draw.ERROR_COLOR, 2.0)
-		canvas.draw_line(center + Vector2(-5, 5), center + Vector2(5, -5), Draw.ERROR_COLOR, 2.0)
+		canvas.draw_arc(center, 9.0, 0.0, TAU, 24, OverlayDraw.ERROR_COLOR, 2.0, true)
+		canvas.draw_line(center - arm, center + arm, OverlayDraw.ERROR_COLOR, 2.0)
+		canvas.draw_line(
+			center + Vector2(-5, 5), center + Vector2(5, -5), OverlayDraw.ERROR_COLOR, 2.0
+		)
 
 
 func _mark(at: Vector2) -> void:
 	var item := _erasable(at)
-	if item != Items.NONE and not _marked.has(item):
+	if item != BoardItems.NONE and not _marked.has(item):
 		_marked.append(item)
 
 
@@ -80,6 +82,6 @@ func _mark_along(from: Vector2, to: Vector2) -> void:
 
 func _erasable(at: Vector2) -> Vector2i:
 	var item := pick(at)
-	if item == Items.NONE or not ItemKinds.of_pick(item.x).erasable:
-		return Items.NONE
+	if item == BoardItems.NONE or not ItemKinds.of_pick(item.x).erasable:
+		return BoardItems.NONE
 	return item

@@ -64,17 +64,21 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 		var rail_from := deg_to_rad(board.rail_start_deg)
 		var rail_to := deg_to_rad(board.rail_end_deg)
 		var inner := LaunchRail.guide_radius(board)
-		Draw.board_arc(canvas, to_screen, c, inner, rail_from, rail_to, Draw.HANDLE_COLOR)
+		OverlayDraw.board_arc(
+			canvas, to_screen, c, inner, rail_from, rail_to, OverlayDraw.HANDLE_COLOR
+		)
 		var gutter_from := deg_to_rad(board.gutter_start_deg)
 		var gutter_to := deg_to_rad(board.gutter_end_deg)
-		var red := Draw.ERROR_COLOR
-		Draw.board_arc(canvas, to_screen, c, board.ring_radius, gutter_from, gutter_to, red, 3.0)
+		var red := OverlayDraw.ERROR_COLOR
+		OverlayDraw.board_arc(
+			canvas, to_screen, c, board.ring_radius, gutter_from, gutter_to, red, 3.0
+		)
 	var hot := (
 		HitTest.pick_handle(board, hover, tolerance() * 1.5) if _handle.is_empty() else _handle
 	)
 	var points := HitTest.handle_points(board)
 	for handle: String in points:
-		Draw.handle(canvas, to_screen, points[handle], handle == hot)
+		OverlayDraw.handle(canvas, to_screen, points[handle], handle == hot)
 	if not hot.is_empty():
 		var at := to_screen * points[hot] + Vector2(12, -12)
-		Draw.label(canvas, at, str(NAMES.get(hot, hot)))
+		OverlayDraw.label(canvas, at, str(NAMES.get(hot, hot)))

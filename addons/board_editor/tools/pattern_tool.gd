@@ -70,7 +70,7 @@ func _place_arc(bulge: Vector2) -> void:
 	var arc := arc_for(bulge)
 	if arc.has("error"):
 		return  # the ghost says why; the ends stay for another try
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = PinArc.points_of(arc)
 	var placed := session.mirrored(data)
 	var placed_pins: PackedVector2Array = placed["pins"]
@@ -87,33 +87,35 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var points := PatternAction.points_for(session.pattern, session.snap_point(hover))
 	if session.mirror_enabled:
 		points = Mirror.with_reflections(points, session.mirror_axis())
-	Draw.ghost_points(canvas, to_screen, points, level().pin_radius, level())
+	OverlayDraw.ghost_points(canvas, to_screen, points, level().pin_radius, level())
 	if str(session.pattern["kind"]) == "circle" and not points.is_empty():
-		Draw.center_mark(canvas, to_screen, session.snap_point(hover), PackedVector2Array())
+		OverlayDraw.center_mark(canvas, to_screen, session.snap_point(hover), PackedVector2Array())
 
 
 func _draw_arc(canvas: Control, to_screen: Transform2D) -> void:
 	var at := session.snap_point(hover)
 	if _ends.is_empty():
-		Draw.handle(canvas, to_screen, at, false)
-		Draw.label(canvas, to_screen * at + Vector2(14, -10), "Arc: press on one end")
+		OverlayDraw.handle(canvas, to_screen, at, false)
+		OverlayDraw.label(canvas, to_screen * at + Vector2(14, -10), "Arc: press on one end")
 		return
 	if _ends.size() == 1:
-		Draw.handle(canvas, to_screen, _ends[0], true)
-		Draw.line(canvas, to_screen, _ends[0], at, Draw.GHOST_COLOR)
-		Draw.handle(canvas, to_screen, at, false)
-		Draw.label(canvas, to_screen * at + Vector2(14, -10), "Arc: the other end")
+		OverlayDraw.handle(canvas, to_screen, _ends[0], true)
+		OverlayDraw.line(canvas, to_screen, _ends[0], at, OverlayDraw.GHOST_COLOR)
+		OverlayDraw.handle(canvas, to_screen, at, false)
+		OverlayDraw.label(canvas, to_screen * at + Vector2(14, -10), "Arc: the other end")
 		return
 	for end in _ends:
-		Draw.handle(canvas, to_screen, end, true)
+		OverlayDraw.handle(canvas, to_screen, end, true)
 	var arc := arc_for(at)
 	if arc.has("error"):
-		Draw.line(canvas, to_screen, _ends[0], _ends[1], Draw.ERROR_COLOR)
+		OverlayDraw.line(canvas, to_screen, _ends[0], _ends[1], OverlayDraw.ERROR_COLOR)
 		var why: String = arc["error"]
-		Draw.label(canvas, to_screen * at + Vector2(14, -10), why, Draw.ERROR_COLOR)
+		OverlayDraw.label(canvas, to_screen * at + Vector2(14, -10), why, OverlayDraw.ERROR_COLOR)
 		return
 	var points := session.mirrored({"pins": PinArc.points_of(arc)})
 	var shown: PackedVector2Array = points.get("pins", PackedVector2Array())
-	Draw.ghost_points(canvas, to_screen, shown, level().pin_radius, level())
-	Draw.handle(canvas, to_screen, at, false)
-	Draw.label(canvas, to_screen * at + Vector2(14, -10), "Click to bend the arc through here")
+	OverlayDraw.ghost_points(canvas, to_screen, shown, level().pin_radius, level())
+	OverlayDraw.handle(canvas, to_screen, at, false)
+	OverlayDraw.label(
+		canvas, to_screen * at + Vector2(14, -10), "Click to bend the arc through here"
+	)

@@ -15,7 +15,7 @@ var _check := PlacementCheck.new()
 
 
 ## A tool that places items of the editor's pick `places` (an ItemKind.Pick value).
-func _init(on_session: Session, places: int) -> void:
+func _init(on_session: BoardEditSession, places: int) -> void:
 	super(on_session)
 	kind = ItemKinds.of_pick(places)
 
@@ -42,14 +42,14 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	if session.mirror_enabled and kind.shape != ItemKind.Shape.SINGLE:
 		spots.append(Vector2(2.0 * session.mirror_axis() - spot.x, spot.y))
 	if kind.ghost_crowds:
-		Draw.ghost_points(canvas, to_screen, spots, outline.radius, level())
+		OverlayDraw.ghost_points(canvas, to_screen, spots, outline.radius, level())
 		return
-	var color := Draw.GHOST_COLOR
+	var color := OverlayDraw.GHOST_COLOR
 	if would_add_error(spot):
-		color = Draw.BLOCKED_COLOR  # a click here would give the board a problem
+		color = OverlayDraw.BLOCKED_COLOR  # a click here would give the board a problem
 	# Big things (the goal, a windmill's sweep) are outlined: the board under them shows.
 	for point in spots:
-		Draw.circle(canvas, to_screen, point, outline.radius, color, not outline.hollow)
+		OverlayDraw.circle(canvas, to_screen, point, outline.radius, color, not outline.hollow)
 
 
 ## True when placing here (with its mirror twin) would give the board a new error; for the
@@ -62,7 +62,7 @@ func would_add_error(spot: Vector2) -> bool:
 
 # What a click at `spot` adds (before mirroring).
 func _data_at(spot: Vector2) -> Dictionary:
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	var value: Variant = _new_value(spot)
 	if value is Vector2:
 		data[kind.set_key] = PackedVector2Array([value])

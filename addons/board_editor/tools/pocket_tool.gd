@@ -27,22 +27,24 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var mouths := PackedVector2Array([session.snap_point(hover)])
 	if session.mirror_enabled:
 		mouths.append(Vector2(2.0 * session.mirror_axis() - mouths[0].x, mouths[0].y))
-	var color := Draw.BLOCKED_COLOR if would_add_error(mouths[0]) else Draw.GHOST_COLOR
+	var color := (
+		OverlayDraw.BLOCKED_COLOR if would_add_error(mouths[0]) else OverlayDraw.GHOST_COLOR
+	)
 	for mouth in mouths:
 		var spec := PocketSpec.create(
 			mouth, session.pocket_width, session.pocket_depth, session.pocket_payout
 		)
 		var pins := PocketStamp.rim_pins(spec, level().pin_radius, level().ball_radius)
 		for pin in pins:
-			Draw.circle(canvas, to_screen, pin, level().pin_radius, color, true)
+			OverlayDraw.circle(canvas, to_screen, pin, level().pin_radius, color, true)
 		var half := Vector2(spec.width * 0.5, 0)
-		Draw.line(canvas, to_screen, mouth - half, mouth + half, color)
+		OverlayDraw.line(canvas, to_screen, mouth - half, mouth + half, color)
 
 
 ## True when a pocket with its mouth at `mouth` (and its mirror twin) would give the board a
 ## new error: the ghost turns red.
 func would_add_error(mouth: Vector2) -> bool:
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	var spec := PocketSpec.create(
 		mouth, session.pocket_width, session.pocket_depth, session.pocket_payout
 	)

@@ -15,7 +15,7 @@ const DRAG_START_PIXELS := 4.0
 
 var _pressed := false
 var _press_at := Vector2.ZERO
-var _anchor := Items.NONE
+var _anchor := BoardItems.NONE
 var _box_mode := 0  # 0 replace, 1 add (shift), 2 toggle (ctrl)
 var _boxing := false
 var _move: MoveItemsAction = null
@@ -45,13 +45,13 @@ func press(at: Vector2, event: InputEventMouseButton) -> bool:
 		return true  # the arc keeps its selection and changes shape
 	_anchor = pick(at)
 	var selection: Array[Vector2i] = session.selection
-	if _anchor == Items.NONE:
+	if _anchor == BoardItems.NONE:
 		_boxing = true
 		return true
 	var picked: Array[Vector2i] = selection.duplicate()
 	if _box_mode == 2 and picked.has(_anchor):
 		picked.erase(_anchor)
-		_anchor = Items.NONE
+		_anchor = BoardItems.NONE
 	elif _box_mode > 0 and not picked.has(_anchor):
 		picked.append(_anchor)
 	elif not picked.has(_anchor):
@@ -71,7 +71,7 @@ func motion(at: Vector2, _event: InputEventMouseMotion) -> bool:
 		return true
 	if _arc_drag.handle >= 0 and at.distance_to(_press_at) >= DRAG_START_PIXELS * pixel:
 		_arc_drag.drag(at)
-	if _anchor == Items.NONE or _arc_drag.handle >= 0:
+	if _anchor == BoardItems.NONE or _arc_drag.handle >= 0:
 		return true
 	if _move == null and at.distance_to(_press_at) < DRAG_START_PIXELS * pixel:
 		return true
@@ -132,7 +132,7 @@ func selected_wall_end(at: Vector2) -> int:
 		return -1
 	var best := -1
 	for item: Vector2i in session.selection:
-		if not Items.is_valid(level(), item):
+		if not BoardItems.is_valid(level(), item):
 			continue
 		var kind := ItemKinds.of_item(level(), item)
 		if kind.shape != ItemKind.Shape.SEGMENT:
@@ -175,9 +175,9 @@ func draw(canvas: Control, to_screen: Transform2D) -> void:
 	if not _pressed:
 		# What a click would pick.
 		var under := pick(hover)
-		if under != Items.NONE:
-			var at := to_screen * Items.position_of(level(), under)
-			canvas.draw_arc(at, 10.0, 0.0, TAU, 24, Color(Draw.SELECT_COLOR, 0.6), 1.0, true)
+		if under != BoardItems.NONE:
+			var at := to_screen * BoardItems.position_of(level(), under)
+			canvas.draw_arc(at, 10.0, 0.0, TAU, 24, Color(OverlayDraw.SELECT_COLOR, 0.6), 1.0, true)
 	if _boxing:
 		var rect := Rect2(to_screen * _press_at, Vector2.ZERO).expand(to_screen * hover)
 		canvas.draw_rect(rect, Color(0.4, 0.7, 1.0, 0.15), true)
@@ -188,7 +188,7 @@ func _start_move() -> MoveItemsAction:
 	var selection: Array[Vector2i] = session.selection
 	if session.mirror_enabled:
 		var axis := Mirror.axis_of(level())
-		var anchor_x := Items.position_of(level(), _anchor).x
+		var anchor_x := BoardItems.position_of(level(), _anchor).x
 		var split := Mirror.split_for_move(level(), selection, axis, anchor_x)
 		var direct: Array[Vector2i] = split["direct"]
 		var mirrored: Array[Vector2i] = split["mirrored"]
@@ -205,7 +205,7 @@ func _snapped_delta(raw: Vector2) -> Vector2:
 	if level().is_maze():
 		var cell := level().path_width + level().wall_width
 		return (raw / cell).round() * cell if cell > 0.0 else raw
-	var start := Items.position_of(level(), _anchor)
+	var start := BoardItems.position_of(level(), _anchor)
 	return session.snap_point(start + raw) - start
 
 

@@ -44,15 +44,17 @@ func cancel() -> bool:
 func draw(canvas: Control, to_screen: Transform2D) -> void:
 	var width := maxf(level().wall_width * to_screen.get_scale().x, 2.0)
 	if not _dragging:
-		Draw.circle(canvas, to_screen, session.snap_wall_point(hover), 3.0, Draw.GHOST_COLOR)
+		OverlayDraw.circle(
+			canvas, to_screen, session.snap_wall_point(hover), 3.0, OverlayDraw.GHOST_COLOR
+		)
 		return
 	var to := _end(hover)
-	Draw.line(canvas, to_screen, _from, to, Draw.GHOST_COLOR, width)
+	OverlayDraw.line(canvas, to_screen, _from, to, OverlayDraw.GHOST_COLOR, width)
 	if session.mirror_enabled:
 		var axis := session.mirror_axis()
 		var from_image := Vector2(2 * axis - _from.x, _from.y)
 		var to_image := Vector2(2 * axis - to.x, to.y)
-		Draw.line(canvas, to_screen, from_image, to_image, Draw.GHOST_COLOR, width)
+		OverlayDraw.line(canvas, to_screen, from_image, to_image, OverlayDraw.GHOST_COLOR, width)
 
 
 func _end(at: Vector2) -> Vector2:

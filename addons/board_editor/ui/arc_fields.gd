@@ -5,7 +5,7 @@ extends VBoxContainer
 ## reshapes the arc (EditArcAction) and keeps it selected.
 
 const NumberRow := preload("res://addons/board_editor/ui/number_row.gd")
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 const EditArcAction := preload("res://addons/board_editor/actions/edit_arc_action.gd")
 
@@ -19,7 +19,7 @@ const FIELDS := {
 	"count": ["Pins", 2.0, 400.0, 1.0, true],
 }
 
-var _session: Session
+var _session: BoardEditSession
 var _arc: Dictionary = {}
 var _fields: Dictionary[String, SpinBox] = {}
 
@@ -40,7 +40,7 @@ func _init() -> void:
 
 
 ## Edits `session`'s selected arc from now on.
-func bind(session: Session) -> void:
+func bind(session: BoardEditSession) -> void:
 	_session = session
 
 

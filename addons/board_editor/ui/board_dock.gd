@@ -21,8 +21,8 @@ signal field_focused
 ## A field was submitted (Enter): the keyboard should go back to the viewport.
 signal focus_return_requested
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const ProblemsList := preload("res://addons/board_editor/ui/problems_list.gd")
@@ -167,7 +167,10 @@ func show_message(text: String) -> void:
 ## Shows `session`'s board (null: nothing is being edited) and its problems. With
 ## `node_without_board` the selected BoardNode has no board yet: offer new ones.
 func show_board(
-	session: Session, issues: Array[BoardIssue], node_without_board := false, focused_issue := -1
+	session: BoardEditSession,
+	issues: Array[BoardIssue],
+	node_without_board := false,
+	focused_issue := -1
 ) -> void:
 	var editing := session != null and session.level != null
 	analysis.bind(session.level if editing else null)
@@ -249,7 +252,7 @@ static func count_text(level: BoardLevel) -> String:
 	if level.is_maze():
 		return (
 			"Walls: %d   Holes: %d   Ball starts: %d"
-			% [Items.wall_count(level.walls), level.holes.size(), level.ball_starts.size()]
+			% [BoardItems.wall_count(level.walls), level.holes.size(), level.ball_starts.size()]
 		)
 	return (
 		"Pins: %d   Pockets: %d\nStart pockets: %d   Attackers: %d   Tulips: %d"

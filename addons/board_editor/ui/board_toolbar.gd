@@ -5,10 +5,10 @@ extends HBoxContainer
 
 signal play_test_requested
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const Shortcuts := preload("res://addons/board_editor/ui/shortcuts.gd")
 
-var _session: Session
+var _session: BoardEditSession
 var _buttons := {}
 var _snap: CheckButton
 var _step: SpinBox
@@ -66,7 +66,7 @@ func _init() -> void:
 
 
 ## Shows the state of `session` and edits it from now on.
-func bind(session: Session) -> void:
+func bind(session: BoardEditSession) -> void:
 	if _session != null:
 		_session.tool_changed.disconnect(_on_session_tool)
 		_session.settings_changed.disconnect(refresh)

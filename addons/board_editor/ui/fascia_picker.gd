@@ -4,10 +4,10 @@ extends HBoxContainer
 ## `fascia`: art, palette and name plate, FasciaNames). Picking one is one undo step, and the
 ## board view shows it at once (BoardPainter draws the machine's art and colours).
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const SetProperties := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 
-var _session: Session
+var _session: BoardEditSession
 var _picker: OptionButton
 
 
@@ -32,7 +32,7 @@ func _init() -> void:
 
 
 ## Edits `session`'s board from now on (null: none); shown for pachinko boards only.
-func bind(session: Session) -> void:
+func bind(session: BoardEditSession) -> void:
 	_session = session
 	refresh()
 
@@ -44,7 +44,9 @@ func pick(fascia_name: String) -> void:
 	if _session.level.fascia == fascia_name:
 		return
 	var title := FasciaNames.title_of(fascia_name).get_slice(":", 0)
-	_session.commit(SetProperties.new(_session.level, {"fascia": fascia_name}, "Machine: " + title))
+	_session.commit(
+		SetPropertiesAction.new(_session.level, {"fascia": fascia_name}, "Machine: " + title)
+	)
 	refresh()
 
 

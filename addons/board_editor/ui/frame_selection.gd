@@ -6,8 +6,8 @@ extends RefCounted
 ## key frames the selected items instead (the whole board when none is selected), and after
 ## the View menu's items the tool frames them again once Godot has moved the view.
 
-const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
-const InputRouter := preload("res://addons/board_editor/board_input.gd")
+const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
+const BoardInput := preload("res://addons/board_editor/board_input.gd")
 ## Board pixels kept round the framed items, so a lone pin is not framed edge to edge.
 const MARGIN := 40.0
 ## The View menu items (as Godot names them) that frame or centre the selection.
@@ -20,10 +20,10 @@ static func area(level: BoardLevel, selection: Array[Vector2i]) -> Rect2:
 	if level == null:
 		return Rect2()
 	if selection.is_empty():
-		return InputRouter.edit_area(level).grow(MARGIN)
-	var bounds := Commands.extent_of(level, selection[0])
+		return BoardInput.edit_area(level).grow(MARGIN)
+	var bounds := EditCommands.extent_of(level, selection[0])
 	for k in range(1, selection.size()):
-		bounds = bounds.merge(Commands.extent_of(level, selection[k]))
+		bounds = bounds.merge(EditCommands.extent_of(level, selection[k]))
 	return bounds.grow(MARGIN)
 
 

@@ -3,10 +3,10 @@ extends VBoxContainer
 ## The dock's layers: per layer of the board (Layers), a Show box and a Lock box. Hidden
 ## layers are not drawn and cannot be picked; locked ones are drawn but cannot be picked.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 
-var _session: Session
+var _session: BoardEditSession
 var _grid: GridContainer
 
 
@@ -21,7 +21,7 @@ func _init() -> void:
 
 
 ## Shows `session`'s layers and edits them from now on.
-func bind(session: Session) -> void:
+func bind(session: BoardEditSession) -> void:
 	if _session == session:
 		refresh()
 		return

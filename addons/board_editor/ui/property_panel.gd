@@ -7,15 +7,15 @@ extends VBoxContainer
 ## count, align and space buttons, and for pins on an arc the arc's shape (ArcFields).
 
 const NumberRow := preload("res://addons/board_editor/ui/number_row.gd")
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const Arrange := preload("res://addons/board_editor/core/arrange.gd")
 const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
 const ArcFields := preload("res://addons/board_editor/ui/arc_fields.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
-const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
+const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
 
 ## Align buttons: [label, Arrange mode, tooltip].
 const ALIGN_BUTTONS := [
@@ -27,7 +27,7 @@ const ALIGN_BUTTONS := [
 	["Bottom", "bottom", "Line them up on the lowest one."],
 ]
 
-var _session: Session
+var _session: BoardEditSession
 var _title: Label
 var _rows: Dictionary[String, HBoxContainer] = {}
 var _fields: Dictionary[String, SpinBox] = {}
@@ -68,13 +68,13 @@ func _init() -> void:
 		_flip,
 		"Flip (H)",
 		"Flip the selection left to right about its centre (mirror mode flips the twins too).",
-		func() -> void: Commands.flip_selection(_session)
+		func() -> void: EditCommands.flip_selection(_session)
 	)
 	_add_button(
 		_flip,
 		"Mirror to other half (Shift+M)",
 		"Add the selection's mirror image on the other half of the board, keeping it.",
-		func() -> void: Commands.mirror_to_other_half(_session)
+		func() -> void: EditCommands.mirror_to_other_half(_session)
 	)
 	_arrange = HFlowContainer.new()
 	add_child(_arrange)
@@ -110,14 +110,14 @@ func set_role(role: int) -> void:
 	if _session == null or _session.selection.size() != 1:
 		return
 	var item: Vector2i = _session.selection[0]
-	if item.x != Items.Kind.BONUS or not Items.is_valid(_session.level, item):
+	if item.x != BoardItems.Kind.BONUS or not BoardItems.is_valid(_session.level, item):
 		return
 	if _session.level.bonus_pockets[item.y].role == role:
 		return
 	var action := BonusActions.SetBonusRole.new(_session.level, item.y, role)
 	_session.commit(action)
 	if action.moved_to >= 0:
-		_session.select([Vector2i(Items.Kind.BONUS, action.moved_to)] as Array[Vector2i])
+		_session.select([Vector2i(BoardItems.Kind.BONUS, action.moved_to)] as Array[Vector2i])
 	refresh()
 
 
@@ -167,7 +167,7 @@ func _add_button(row: Container, text: String, tooltip: String, action: Callable
 
 
 ## Shows `session`'s selection and edits it from now on.
-func bind(session: Session) -> void:
+func bind(session: BoardEditSession) -> void:
 	_session = session
 	_arc_fields.bind(session)
 	refresh()
@@ -270,7 +270,7 @@ func _show_role() -> void:
 	var bonus := -1
 	if _session != null and _session.level != null and _session.selection.size() == 1:
 		var item: Vector2i = _session.selection[0]
-		if item.x == Items.Kind.BONUS and Items.is_valid(_session.level, item):
+		if item.x == BoardItems.Kind.BONUS and BoardItems.is_valid(_session.level, item):
 			bonus = item.y
 	_role_row.visible = bonus >= 0
 	if bonus >= 0:

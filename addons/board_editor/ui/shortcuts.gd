@@ -7,30 +7,33 @@ extends RefCounted
 ## board is edited every plain key over the viewport is the board tool's (BoardInput), so a
 ## letter with no use here does nothing rather than switching a Godot tool.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 
 ## Tool -> [key, name, tooltip].
 const TOOLS := {
-	Session.Tool.SELECT:
+	BoardEditSession.Tool.SELECT:
 	[KEY_Q, "Select", "Click to pick, drag a box, shift adds, ctrl toggles; drag to move."],
-	Session.Tool.PIN: [KEY_P, "Pin", "Click to place a pin."],
-	Session.Tool.PATTERN:
+	BoardEditSession.Tool.PIN: [KEY_P, "Pin", "Click to place a pin."],
+	BoardEditSession.Tool.PATTERN:
 	[KEY_T, "Pattern", "Click to stamp a row, lattice, arc or circle of pins (set in the dock)."],
-	Session.Tool.CURVE:
+	BoardEditSession.Tool.CURVE:
 	[
 		KEY_C,
 		"Peg curve",
 		"Drag a curve: pins follow it, a set count end to end or one every spacing (dock)."
 	],
-	Session.Tool.POCKET:
+	BoardEditSession.Tool.POCKET:
 	[KEY_K, "Pocket", "Click to add a pocket: rim pins and special pin, sized in the dock."],
-	Session.Tool.WALL: [KEY_L, "Wall", "Click-drag a wall; snapped to the maze grid or free."],
-	Session.Tool.HOLE: [KEY_O, "Black hole", "Click to place a black hole (hard mode)."],
-	Session.Tool.GOAL: [KEY_U, "Goal", "Click to move the goal; resize it with the handles tool."],
-	Session.Tool.START: [KEY_B, "Ball start", "Click to add a ball start (one ball each)."],
-	Session.Tool.HANDLES:
+	BoardEditSession.Tool.WALL:
+	[KEY_L, "Wall", "Click-drag a wall; snapped to the maze grid or free."],
+	BoardEditSession.Tool.HOLE: [KEY_O, "Black hole", "Click to place a black hole (hard mode)."],
+	BoardEditSession.Tool.GOAL:
+	[KEY_U, "Goal", "Click to move the goal; resize it with the handles tool."],
+	BoardEditSession.Tool.START:
+	[KEY_B, "Ball start", "Click to add a ball start (one ball each)."],
+	BoardEditSession.Tool.HANDLES:
 	[KEY_D, "Handles", "Drag the ring, launch rail and gutter handles, or the goal's radius."],
-	Session.Tool.ERASE:
+	BoardEditSession.Tool.ERASE:
 	[
 		KEY_X,
 		"Erase",
@@ -39,17 +42,17 @@ const TOOLS := {
 			+ " across many."
 		)
 	],
-	Session.Tool.START_POCKET:
+	BoardEditSession.Tool.START_POCKET:
 	[
 		KEY_J,
 		"Start pocket",
 		"Click to add a start pocket (spins the reels); click one to remove it."
 	],
-	Session.Tool.ATTACKER:
+	BoardEditSession.Tool.ATTACKER:
 	[KEY_A, "Attacker", "Click to add an attacker (opens on a jackpot); click one to remove it."],
-	Session.Tool.TULIP:
+	BoardEditSession.Tool.TULIP:
 	[KEY_F, "Tulip", "Click to add a tulip (opens after a catch); click one to remove it."],
-	Session.Tool.WINDMILL:
+	BoardEditSession.Tool.WINDMILL:
 	[
 		KEY_I,
 		"Windmill",
@@ -68,11 +71,11 @@ const FLIP_KEY := KEY_H
 const MIRROR_COPY_KEY := KEY_M
 
 
-## Every tool, TOOLS and then those the ItemKinds rows bring (Session.row_tools): tool ->
+## Every tool, TOOLS and then those the ItemKinds rows bring (BoardEditSession.row_tools): tool ->
 ## [key, name, tooltip].
 static func tools() -> Dictionary:
 	var found := TOOLS.duplicate()
-	var rows := Session.row_tools()
+	var rows := BoardEditSession.row_tools()
 	for tool in rows:
 		found[tool] = [rows[tool].tool_key, rows[tool].singular, rows[tool].tool_tip]
 	return found

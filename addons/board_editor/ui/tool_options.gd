@@ -5,7 +5,7 @@ extends VBoxContainer
 ## placed pocket is edited in the Selection panel, PropertyPanel.) Only the fields the
 ## chosen pattern uses are shown.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
 
 ## The pattern fields each kind reads. An arc is placed through three points (its ends and
@@ -17,7 +17,7 @@ const PATTERN_FIELDS: Dictionary[String, Array] = {
 	"circle": ["count", "spacing"],
 }
 
-var _session: Session
+var _session: BoardEditSession
 var _kind: OptionButton
 var _fields: Dictionary[String, SpinBox] = {}
 var _pattern_box: VBoxContainer
@@ -45,7 +45,7 @@ func _init() -> void:
 
 
 ## Shows `session`'s settings and edits them from now on.
-func bind(session: Session) -> void:
+func bind(session: BoardEditSession) -> void:
 	_session = session
 	if session != null and not session.tool_changed.is_connected(_on_tool_changed):
 		session.tool_changed.connect(_on_tool_changed)
@@ -64,13 +64,13 @@ func refresh() -> void:
 	# Only the active tool's settings: the dock keeps its height for the Selection panel and
 	# the analysis.
 	var pachinko := _session.level.is_pachinko()
-	_pattern_box.visible = pachinko and _session.tool == Session.Tool.PATTERN
-	_curve_box.visible = pachinko and _session.tool == Session.Tool.CURVE
+	_pattern_box.visible = pachinko and _session.tool == BoardEditSession.Tool.PATTERN
+	_curve_box.visible = pachinko and _session.tool == BoardEditSession.Tool.CURVE
 	var curve_count: int = _session.curve["count"]
 	var curve_spacing: float = _session.curve["spacing"]
 	_fields["curve_count"].set_value_no_signal(curve_count)
 	_fields["curve_spacing"].set_value_no_signal(curve_spacing)
-	_pocket_box.visible = pachinko and _session.tool == Session.Tool.POCKET
+	_pocket_box.visible = pachinko and _session.tool == BoardEditSession.Tool.POCKET
 	_kind.select(maxi(PatternAction.KINDS.find(str(_session.pattern["kind"])), 0))
 	var used: Array = PATTERN_FIELDS.get(str(_session.pattern["kind"]), [])
 	for key: String in ["count", "spacing", "rows"]:
