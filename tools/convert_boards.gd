@@ -8,8 +8,8 @@ extends SceneTree
 ## every level scene that referred to it pointed at the new file.
 
 const LegacyBoardLoader := preload("res://tools/legacy_boards/legacy_board_loader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 const SCENES_DIR := "res://scenes/boards"
 
 
@@ -36,8 +36,8 @@ static func convert_board(path: String, keep: bool) -> String:
 	var loaded := LegacyBoardLoader.load_board(path)
 	if not loaded.ok():
 		return loaded.error
-	var text := Writer.write(loaded.level)
-	var check := Reader.read(text)
+	var text := BoardTextWriter.write(loaded.level)
+	var check := BoardTextReader.read(text)
 	if check.has("error"):
 		return "the converted board does not read back: %s" % check["error"]
 	var target := path.get_basename() + ".board"

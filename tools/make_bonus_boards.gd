@@ -7,12 +7,12 @@ extends SceneTree
 ## two tulips and two plain pockets.
 ## pachinko/hanami: a denser field with two start pockets, a high attacker and four tulips.
 
-const Originals := preload("res://tools/make_original_boards.gd")
+const MakeOriginalBoards := preload("res://tools/make_original_boards.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
 const PocketAction := preload("res://addons/board_editor/actions/pocket_action.gd")
-const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 
@@ -43,7 +43,7 @@ func _initialize() -> void:
 ## the flanks.
 static func make_fever() -> BoardLevel:
 	var history := ActionHistory.new()
-	var level := Originals.pachinko_base(
+	var level := MakeOriginalBoards.pachinko_base(
 		history,
 		"fever",
 		"Fever",
@@ -52,12 +52,14 @@ static func make_fever() -> BoardLevel:
 	level.fascia = "neon"
 	level.cup_start_balls = FEVER_CUP
 	_rows(history, level, 13, 34.0, 36.0, 130.0)
-	Originals.erase_pins_outside_field(history, level, 22.0)
-	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
+	MakeOriginalBoards.erase_pins_outside_field(history, level, 22.0)
+	MakeOriginalBoards.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
 	var windmill := {"kind": "circle", "count": 6, "spacing": 16.0}
 	var spot := Vector2(350, 215)
-	Originals.erase_pins_in(history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), CENTER)
+	MakeOriginalBoards.erase_pins_in(
+		history, level, Rect2(spot - Vector2(30, 30), Vector2(60, 60)), CENTER
+	)
 	history.commit(PatternAction.new(level, windmill, spot, CENTER))
 	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 1, {"symbols": SYMBOLS})
 	_funnel(history, level, Vector2(350, 400), 13.0)
@@ -65,12 +67,12 @@ static func make_fever() -> BoardLevel:
 	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 515), 64.0, 11, attacker)
 	# The funnel reaches past the cleared cup: clear round it too so no pin pinches a ball.
 	var funnel_room := Rect2(Vector2(350 - 32 - 44, 515 - 50), Vector2(2 * (32 + 44), 40))
-	Originals.erase_pins_in(history, level, funnel_room, CENTER)
+	MakeOriginalBoards.erase_pins_in(history, level, funnel_room, CENTER)
 	_funnel(history, level, Vector2(350, 515), 32.0)
 	_guard(history, level, Vector2(350, 515) + Vector2(0.0, 38.0 + 11.0))
 	_bonus(history, level, ROLE.TULIP, Vector2(150, 330), 26.0, 3, {})
 	for mouth: Vector2 in [Vector2(240, 480)]:
-		Originals.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
+		MakeOriginalBoards.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 6, CENTER))
 	return level
 
@@ -79,7 +81,7 @@ static func make_fever() -> BoardLevel:
 ## the middle where most balls pass, and four tulips.
 static func make_hanami() -> BoardLevel:
 	var history := ActionHistory.new()
-	var level := Originals.pachinko_base(
+	var level := MakeOriginalBoards.pachinko_base(
 		history,
 		"hanami",
 		"Hanami",
@@ -88,8 +90,8 @@ static func make_hanami() -> BoardLevel:
 	level.fascia = "sakura"
 	level.cup_start_balls = HANAMI_CUP
 	_rows(history, level, 17, 28.0, 30.0, 120.0)
-	Originals.erase_pins_outside_field(history, level, 22.0)
-	Originals.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
+	MakeOriginalBoards.erase_pins_outside_field(history, level, 22.0)
+	MakeOriginalBoards.shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	_clear_reels(history, level)
 	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 1, {"symbols": SYMBOLS})
 	var attacker := {"open_seconds": 15.0, "open_catches": 10}
@@ -113,9 +115,9 @@ static func _rows(
 # A pin just under a cup's catching pin at `below`: balls bouncing up under the cup hit it
 # instead of touching the catching pin from outside (which pays as if caught).
 static func _guard(history: ActionHistory, level: BoardLevel, below: Vector2) -> void:
-	var guard := Items.empty_set()
+	var guard := BoardItems.empty_set()
 	guard["pins"] = PackedVector2Array([below])
-	history.commit(AddItems.new(level, guard, "Add pin"))
+	history.commit(AddItemsAction.new(level, guard, "Add pin"))
 
 
 # Clears the pins round a cup and adds a bonus pocket there (and its mirror image).
@@ -129,7 +131,7 @@ static func _bonus(
 	extra: Dictionary
 ) -> void:
 	var depth := maxf(width * 0.5 + 6.0, 26.0)
-	Originals.erase_pins_in(history, level, _clear_rect(mouth, width, depth), CENTER)
+	MakeOriginalBoards.erase_pins_in(history, level, _clear_rect(mouth, width, depth), CENTER)
 	var spec := BonusPocketSpec.of_role(role, mouth, width, depth, payout)
 	for key: String in extra:
 		spec.set(key, extra[key])
@@ -148,10 +150,10 @@ static func _funnel(history: ActionHistory, level: BoardLevel, mouth: Vector2, h
 	for side: float in [-1.0, 1.0]:
 		for step in 3:
 			pins.append(mouth + Vector2(side * (half + 10.0 + step * 10.0), -16.0 - step * 10.0))
-	var funnel := Items.empty_set()
+	var funnel := BoardItems.empty_set()
 	funnel["pins"] = pins
 	var data := funnel if mouth.x == CENTER else Mirror.mirror_set(funnel, CENTER)
-	history.commit(AddItems.new(level, data, "Add pin"))
+	history.commit(AddItemsAction.new(level, data, "Add pin"))
 
 
 # Validates and writes the board and its level scene; false (and why) on a failure.
@@ -170,7 +172,7 @@ static func _save(level: BoardLevel) -> bool:
 	if error != OK or scene == null:
 		push_error("make_bonus_boards: could not write %s or its scene" % path)
 		return false
-	scene.store_string(Originals.SCENE_TEXT % path)
+	scene.store_string(MakeOriginalBoards.SCENE_TEXT % path)
 	scene.close()
 	var bonus := level.bonus_pockets.size()
 	print("wrote %s (%d pins, %d bonus pockets)" % [path, level.pins.size(), bonus])
@@ -181,6 +183,6 @@ static func _save(level: BoardLevel) -> bool:
 # ball wedges between the frame and a pin.
 static func _clear_reels(history: ActionHistory, level: BoardLevel) -> void:
 	var half := BonusGeometry.REEL_HALF + Vector2(22.0, 22.0 + BonusGeometry.REEL_ROOF)
-	Originals.erase_pins_in(
+	MakeOriginalBoards.erase_pins_in(
 		history, level, Rect2(BonusGeometry.reel_spot(level) - half, half * 2.0), CENTER
 	)

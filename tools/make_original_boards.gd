@@ -10,16 +10,16 @@ extends SceneTree
 ## maze/courtyards: wide square rings round the goal with chicanes, built in mirror mode.
 
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
-const SetProperties := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
+const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
 const PocketAction := preload("res://addons/board_editor/actions/pocket_action.gd")
 const WallAction := preload("res://addons/board_editor/actions/wall_action.gd")
-const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
-const DeleteItems := preload("res://addons/board_editor/actions/delete_items_action.gd")
+const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
+const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
-const MazeCarver := preload("res://tools/make_original_mazes.gd")
+const MakeOriginalMazes := preload("res://tools/make_original_mazes.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 
 const CENTER := 350.0
@@ -44,10 +44,10 @@ func _initialize() -> void:
 	for board: BoardLevel in [make_tulips(), make_windmills()]:
 		ok = _save(board) and ok
 	for board: BoardLevel in [
-		MazeCarver.make_first_roll(),
-		MazeCarver.make_two_together(),
-		MazeCarver.make_catacombs(),
-		MazeCarver.make_courtyards()
+		MakeOriginalMazes.make_first_roll(),
+		MakeOriginalMazes.make_two_together(),
+		MakeOriginalMazes.make_catacombs(),
+		MakeOriginalMazes.make_courtyards()
 	]:
 		ok = _save(board) and ok
 	quit(0 if ok else 1)
@@ -115,7 +115,7 @@ static func make_windmills() -> BoardLevel:
 		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, pocket[1], axis))
 		var umbrella := {"kind": "arc", "count": 5, "spacing": 14.0, "radius": 28.0}
 		history.commit(PatternAction.new(level, umbrella, mouth + Vector2(-40, -10), axis))
-	var wheels := Items.empty_set()
+	var wheels := BoardItems.empty_set()
 	wheels["windmills"] = [
 		WindmillSpec.driven(Vector2(350, 210), 6, 24.0, 150.0),
 		WindmillSpec.spinning_free(Vector2(230, 330), 4, 22.0, 240.0),
@@ -126,7 +126,7 @@ static func make_windmills() -> BoardLevel:
 	var wheel_list: Array = wheels["windmills"]
 	for spec: WindmillSpec in wheel_list:
 		erase_pins_near(history, level, spec.position, spec.sweep_radius() + 13.0)
-	history.commit(AddItems.new(level, wheels, "Add windmills"))
+	history.commit(AddItemsAction.new(level, wheels, "Add windmills"))
 	shape_launch(history, level, LaunchRail.AIMING_END_DEG)
 	return level
 
@@ -139,20 +139,20 @@ static func erase_pins_near(
 	var doomed: Array[Vector2i] = []
 	for i in level.pins.size():
 		if level.pin_pocket[i] < 0 and level.pins[i].distance_to(centre) < radius:
-			doomed.append(Items.make(Items.Kind.PIN, i))
+			doomed.append(BoardItems.make(BoardItems.Kind.PIN, i))
 	if not doomed.is_empty():
-		history.commit(DeleteItems.new(level, doomed))
+		history.commit(DeleteItemsAction.new(level, doomed))
 
 
 ## Opens the rail at `rail_end_deg` and erases the free pins in the flight lane under the
 ## top of the ring, so launch power decides where a ball lands (see LaunchRail).
 static func shape_launch(history: ActionHistory, level: BoardLevel, rail_end_deg: float) -> void:
-	history.commit(SetProperties.new(level, {"rail_end_deg": rail_end_deg}, "Board settings"))
+	history.commit(SetPropertiesAction.new(level, {"rail_end_deg": rail_end_deg}, "Board settings"))
 	var doomed: Array[Vector2i] = []
 	for i in level.pins.size():
 		if level.pin_pocket[i] < 0 and LaunchRail.in_flight_lane(level, level.pins[i]):
-			doomed.append(Items.make(Items.Kind.PIN, i))
-	history.commit(DeleteItems.new(level, doomed))
+			doomed.append(BoardItems.make(BoardItems.Kind.PIN, i))
+	history.commit(DeleteItemsAction.new(level, doomed))
 
 
 ## A fresh pachinko board with the classic machine's ring, rail and gutter.
@@ -161,7 +161,7 @@ static func pachinko_base(
 ) -> BoardLevel:
 	var level := BoardLevel.new()
 	var settings := NewBoard.pachinko_settings(id, title, blurb)
-	history.commit(SetProperties.new(level, settings, "Board settings"))
+	history.commit(SetPropertiesAction.new(level, settings, "Board settings"))
 	return level
 
 
@@ -173,8 +173,8 @@ static func erase_pins_outside_field(
 	var doomed: Array[Vector2i] = []
 	for i in level.pins.size():
 		if level.pin_pocket[i] < 0 and level.pins[i].distance_to(level.ring_center) > field:
-			doomed.append(Items.make(Items.Kind.PIN, i))
-	history.commit(DeleteItems.new(level, doomed))
+			doomed.append(BoardItems.make(BoardItems.Kind.PIN, i))
+	history.commit(DeleteItemsAction.new(level, doomed))
 
 
 ## Erases the field pins inside `rect` and inside its mirror image across `axis`.
@@ -186,9 +186,9 @@ static func erase_pins_in(
 	for i in level.pins.size():
 		var p := level.pins[i]
 		if level.pin_pocket[i] < 0 and (rect.has_point(p) or mirrored.has_point(p)):
-			doomed.append(Items.make(Items.Kind.PIN, i))
+			doomed.append(BoardItems.make(BoardItems.Kind.PIN, i))
 	if not doomed.is_empty():
-		history.commit(DeleteItems.new(level, doomed))
+		history.commit(DeleteItemsAction.new(level, doomed))
 
 
 static func _lattice(count: int, spacing: float, rows: int) -> Dictionary:

@@ -3,12 +3,12 @@ extends RefCounted
 ## actions (walls, black holes, ball starts, the goal; mirror mode for the courtyards).
 
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
-const SetProperties := preload("res://addons/board_editor/actions/set_properties_action.gd")
+const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const WallAction := preload("res://addons/board_editor/actions/wall_action.gd")
-const AddItems := preload("res://addons/board_editor/actions/add_items_action.gd")
+const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 
 const CELL := 35.0
 const CATACOMBS_SEED := 20240611
@@ -36,7 +36,7 @@ static func make_catacombs() -> BoardLevel:
 	# the goal room's top left cell; the goal sits on its middle grid point
 	var room := Vector2i(cols / 2 - 1, rows / 2 - 1)
 	history.commit(
-		SetProperties.new(level, {"goal_center": Vector2(room + Vector2i.ONE) * CELL}, "Goal")
+		SetPropertiesAction.new(level, {"goal_center": Vector2(room + Vector2i.ONE) * CELL}, "Goal")
 	)
 	var rng := RandomNumberGenerator.new()
 	rng.seed = CATACOMBS_SEED
@@ -62,19 +62,19 @@ static func make_catacombs() -> BoardLevel:
 				vertical[c][r] = false
 	for wall in _merged_walls(horizontal, vertical, cols, rows):
 		history.commit(WallAction.new(level, wall[0], wall[1]))
-	var starts := Items.empty_set()
+	var starts := BoardItems.empty_set()
 	starts["starts"] = _centres([Vector2i(0, 0), Vector2i(cols - 1, 0)])
-	history.commit(AddItems.new(level, Mirror.mirror_set(starts, level.size.x * 0.5)))
-	var bottom := Items.empty_set()
+	history.commit(AddItemsAction.new(level, Mirror.mirror_set(starts, level.size.x * 0.5)))
+	var bottom := BoardItems.empty_set()
 	bottom["starts"] = _centres([Vector2i(0, rows - 1), Vector2i(cols - 1, rows - 1)])
-	history.commit(AddItems.new(level, bottom, "Add ball start"))
-	var holes := Items.empty_set()
+	history.commit(AddItemsAction.new(level, bottom, "Add ball start"))
+	var holes := BoardItems.empty_set()
 	holes["holes"] = _centres(_dead_ends(horizontal, vertical, cols, rows).slice(0, 8))
-	history.commit(AddItems.new(level, holes, "Add black hole"))
+	history.commit(AddItemsAction.new(level, holes, "Add black hole"))
 	# The goal room is two cells wide, like a generated maze's: the generator's ring fits
 	# inside it with its dashed line clear of the room's walls.
 	history.commit(
-		SetProperties.new(level, {"goal_radius": MazeGenerator.GOAL_RADIUS}, "Goal ring")
+		SetPropertiesAction.new(level, {"goal_radius": MazeGenerator.GOAL_RADIUS}, "Goal ring")
 	)
 	return refuse_wall_in_goal_ring(level)
 
@@ -115,14 +115,14 @@ static func make_courtyards() -> BoardLevel:
 	]
 	for wall: Array in left_half:
 		history.commit(WallAction.new(level, wall[0] * CELL, wall[1] * CELL, axis))
-	var starts := Items.empty_set()
+	var starts := BoardItems.empty_set()
 	starts["starts"] = _centres([Vector2i(0, 0), Vector2i(0, 9)])
-	history.commit(AddItems.new(level, Mirror.mirror_set(starts, axis), "Add ball start"))
-	var holes := Items.empty_set()
+	history.commit(AddItemsAction.new(level, Mirror.mirror_set(starts, axis), "Add ball start"))
+	var holes := BoardItems.empty_set()
 	holes["holes"] = _centres([Vector2i(1, 2), Vector2i(0, 8), Vector2i(3, 3)])
-	history.commit(AddItems.new(level, Mirror.mirror_set(holes, axis), "Add black hole"))
+	history.commit(AddItemsAction.new(level, Mirror.mirror_set(holes, axis), "Add black hole"))
 	history.commit(
-		SetProperties.new(level, {"goal_radius": MazeGenerator.GOAL_RADIUS}, "Goal ring")
+		SetPropertiesAction.new(level, {"goal_radius": MazeGenerator.GOAL_RADIUS}, "Goal ring")
 	)
 	return refuse_wall_in_goal_ring(level)
 
@@ -176,9 +176,9 @@ static func _fold(
 			walls.append([Vector2(CELL, y), Vector2(far.x, y)])
 	for wall: Array in walls:
 		history.commit(WallAction.new(level, wall[0], wall[1]))
-	var starts := Items.empty_set()
+	var starts := BoardItems.empty_set()
 	starts["starts"] = _centres(start_cells)
-	history.commit(AddItems.new(level, starts, "Add ball start"))
+	history.commit(AddItemsAction.new(level, starts, "Add ball start"))
 	# The last row runs toward the side its fold does not open on: the dead end is there.
 	var last := cells.y - 1
 	var dead_end_right := last % 2 == 0
@@ -188,7 +188,7 @@ static func _fold(
 	# two radii further: the goal's centre between them takes both in
 	var goal := Vector2(face + inward * level.ball_radius * 2.0, (last + 0.5) * CELL)
 	history.commit(
-		SetProperties.new(
+		SetPropertiesAction.new(
 			level, {"goal_center": goal, "goal_radius": FOLD_GOAL_RADIUS}, "Goal at the end"
 		)
 	)
@@ -216,7 +216,7 @@ static func maze_base(
 ) -> BoardLevel:
 	var level := BoardLevel.new()
 	var settings := NewBoard.maze_settings(id, title, blurb, cells)
-	history.commit(SetProperties.new(level, settings, "Board settings"))
+	history.commit(SetPropertiesAction.new(level, settings, "Board settings"))
 	return level
 
 

@@ -17,10 +17,10 @@ extends SceneTree
 ## which alone used to take over four minutes. Rates are over the steps actually run, and
 ## the JSON and the table say how many that was (godot_steps_run, godot_steps_checked).
 
-const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
+const BenchScenes := preload("res://tests/bench/physics/bench_scenes.gd")
 const SweptCheck := preload("res://tests/bench/physics/swept_check.gd")
 const GodotSide := preload("res://tests/bench/physics/godot_side.gd")
-const Ours := preload("res://tests/bench/physics/ours_runner.gd")
+const OursRunner := preload("res://tests/bench/physics/ours_runner.gd")
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
 const TimingRounds := preload("res://tests/bench/physics/timing_rounds.gd")
 const FloorKernel := preload("res://tests/bench/physics/floor_kernel.gd")
@@ -31,7 +31,7 @@ const OUT_PATH := "res://build/bench/physics.json"
 ## Engine physics ticks run this many times faster than the scene's rate, and time_scale
 ## slows them back down: each tick still integrates 1 / hz, but ticks run back to back.
 const SPEEDUP := 100
-const WARMUP := Ours.WARMUP
+const WARMUP := OursRunner.WARMUP
 ## CPU seconds one Godot-side job may use, counted from building its scene.
 const JOB_BUDGET_S := 20.0
 ## Most steps the Godot-side check run of the fast scene (S3) covers (see _job_over()).
@@ -67,7 +67,7 @@ var _threads_identical := false
 var _thread_hashes := {}
 var _thread_scaling := {}
 ## Scenario → CPU µs per step of each stage on one thread, and wall µs on every core (see
-## Ours.stage_breakdown()).
+## OursRunner.stage_breakdown()).
 var _stages := {}
 var _stages_all := {}
 ## Each phase's CPU and wall seconds, in the order the phases ran.
@@ -101,8 +101,8 @@ func _initialize() -> void:
 		if not _wanted(spec[0]):
 			continue
 		_clock.begin()
-		var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
-		var c: Dictionary = Ours.run(scene, spec[5], true)
+		var scene: Dictionary = BenchScenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
+		var c: Dictionary = OursRunner.run(scene, spec[5], true)
 		_results[spec[0]] = {
 			"ours_steps_per_s": 0.0,
 			"ours_steps_run": spec[6],
@@ -147,8 +147,8 @@ func _thread_extras() -> void:
 	var identical := true
 	for spec: Array in _specs:
 		if spec[0] in ["S1", "S2", "S4", "S5"] and _wanted(spec[0]):
-			var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
-			var same: Dictionary = Ours.threads_identical(scene, THREAD_CHECK_STEPS)
+			var scene: Dictionary = BenchScenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
+			var same: Dictionary = OursRunner.threads_identical(scene, THREAD_CHECK_STEPS)
 			_thread_hashes[spec[0]] = same["hashes"]
 			identical = identical and same["identical"]
 	_threads_identical = identical
@@ -157,20 +157,22 @@ func _thread_extras() -> void:
 	_clock.begin()
 	for spec: Array in _specs:
 		if spec[0] in ["S1", "S2", "S4", "S5"] and _wanted(spec[0]):
-			var scene: Dictionary = Scenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
-			_stages[spec[0]] = Ours.stage_breakdown(scene, THREAD_SCALING_STEPS / 2)
-			_stages_all[spec[0]] = Ours.stage_breakdown(
+			var scene: Dictionary = BenchScenes.make(spec[0], spec[1], spec[2], spec[3], spec[4])
+			_stages[spec[0]] = OursRunner.stage_breakdown(scene, THREAD_SCALING_STEPS / 2)
+			_stages_all[spec[0]] = OursRunner.stage_breakdown(
 				scene, THREAD_SCALING_STEPS / 2, OS.get_processor_count()
 			)
 	_clock.end("ours stage breakdown")
 	if not _wanted("S1"):
 		return
 	_clock.begin()
-	var s1: Dictionary = Scenes.make("S1", "flow", 24.0, 1000, 240.0)
+	var s1: Dictionary = BenchScenes.make("S1", "flow", 24.0, 1000, 240.0)
 	var floor_round := Callable()
 	if _floors.has("S1"):
 		floor_round = (_floors["S1"] as FloorKernel).time_round
-	_thread_scaling = Ours.thread_scaling(s1, THREAD_SCALING_STEPS, TIMING_ROUNDS, floor_round)
+	_thread_scaling = OursRunner.thread_scaling(
+		s1, THREAD_SCALING_STEPS, TIMING_ROUNDS, floor_round
+	)
 	# The machine figures of the same rounds are printed with the table (BenchTable).
 	print("  thread scaling (S1): %.2fx" % _thread_scaling["scaling"])
 	_clock.end("ours thread scaling")
@@ -179,11 +181,13 @@ func _thread_extras() -> void:
 ## The zoning-versus-brute-force ratio and the scale sweeps (our side only, all on S1).
 func _ours_extras() -> void:
 	_clock.begin()
-	_zoned_vs_brute = Ours.zoned_vs_brute(Scenes.make("S1", "flow", 24.0, 1000, 240.0), 12)
+	_zoned_vs_brute = OursRunner.zoned_vs_brute(
+		BenchScenes.make("S1", "flow", 24.0, 1000, 240.0), 12
+	)
 	print("  zoned vs brute force (S1): %.1fx" % _zoned_vs_brute)
 	_clock.end("ours zoned vs brute")
 	_clock.begin()
-	_scale = Ours.scale_sweep()
+	_scale = OursRunner.scale_sweep()
 	_clock.end("ours scale sweep")
 
 
@@ -207,7 +211,7 @@ func _on_process_frame() -> void:
 		_time_ours_round(spec, scene, row)
 	_job = {"spec": spec, "scene": scene}
 	_clock.begin()
-	_rng.seed = Ours.RULES_SEED
+	_rng.seed = OursRunner.RULES_SEED
 	var hz: float = spec[4]
 	Engine.time_scale = SPEEDUP
 	Engine.physics_ticks_per_second = int(hz * SPEEDUP)
@@ -216,7 +220,7 @@ func _on_process_frame() -> void:
 	var maze: bool = spec[1] == "maze"
 	var g := TuningPresets.pachinko().gravity
 	if maze:
-		g = MazeTilt.gravity(Scenes.maze_tilt(0.0), TuningPresets.maze().tilt_gravity)
+		g = MazeTilt.gravity(BenchScenes.maze_tilt(0.0), TuningPresets.maze().tilt_gravity)
 	_side.build(scene, g, 1.0 / 3.0 if maze else 0.6, spec[1] == "fast")
 	_check = SweptCheck.new(scene) if job[2] else null
 	_prev = scene["pos"]
@@ -242,11 +246,11 @@ func _on_physics_frame() -> void:
 			skip.resize(pos.size())
 			skip.fill(0)
 			_check.check(_prev, pos, skip)
-			Ours.harness_rules(mode, done, pos, _rng, _side, hz)
+			OursRunner.harness_rules(mode, done, pos, _rng, _side, hz)
 		_prev = pos
-	elif done > 0 and Ours.rules_due(mode, done):
+	elif done > 0 and OursRunner.rules_due(mode, done):
 		var pos := PackedVector2Array() if mode == "maze" else _side.positions()
-		Ours.harness_rules(mode, done, pos, _rng, _side, hz)
+		OursRunner.harness_rules(mode, done, pos, _rng, _side, hz)
 	if _job_over(done):
 		_end_job(done)
 
@@ -321,7 +325,7 @@ func _end_job(done: int) -> void:
 		# The Godot counts cover only the first `done` steps: count ours over the same steps,
 		# so the two can be compared.
 		_clock.begin()
-		var c: Dictionary = Ours.run(_job["scene"], done, true)
+		var c: Dictionary = OursRunner.run(_job["scene"], done, true)
 		row["ours_tunnels_same_steps"] = c["tunnels"]
 		row["ours_escapes_same_steps"] = c["escapes"]
 		_clock.end("ours %s check, %d steps" % [name, done])
@@ -338,7 +342,7 @@ func _time_ours_round(spec: Array, scene: Dictionary, row: Dictionary) -> void:
 		print("  floor %s: %.0f ball-steps/s (CPU)" % [spec[0], f["floor_steps_per_s"]])
 		_clock.end("floor %s timing %d" % [spec[0], (row["floor_rounds"] as Array).size()])
 	_clock.begin()
-	var r: Dictionary = Ours.run(scene, spec[6], false)
+	var r: Dictionary = OursRunner.run(scene, spec[6], false)
 	TimingRounds.add_ours(row, r["ball_steps_per_s"], r["cpu_ball_steps_per_s"])
 	var round_i: int = (row["ours_rounds"] as Array).size()
 	print("  ours %s: %.0f ball-steps/s, round %d" % [spec[0], r["ball_steps_per_s"], round_i])
@@ -360,8 +364,8 @@ func _finish() -> void:
 		"threads_identical": _threads_identical,
 		"thread_hashes": _thread_hashes,
 		"scale": _scale,
-		"pin_cost_4x": Ours.pin_cost(_scale.get("pins", {})),
-		"pin_cost_4x_crush": Ours.pin_cost(_scale.get("pins_crush", {})),
+		"pin_cost_4x": OursRunner.pin_cost(_scale.get("pins", {})),
+		"pin_cost_4x_crush": OursRunner.pin_cost(_scale.get("pins_crush", {})),
 		"stages_1_thread_us": _stages,
 		"stages_all_threads_us": _stages_all,
 		"cpus_allowed": PhaseClock.proc_status("Cpus_allowed_list"),

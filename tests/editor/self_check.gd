@@ -8,18 +8,18 @@ extends Node
 ## file must name the board; with a display the game scene must start (and takes the file).
 
 const ENV := "BOARD_EDITOR_SELF_CHECK"
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
-const BoardEditorPlugin := preload("res://addons/board_editor/plugin.gd")
+const Plugin := preload("res://addons/board_editor/plugin.gd")
 
-var _plugin: BoardEditorPlugin
+var _plugin: Plugin
 var _problems := PackedStringArray()
 
 
 func _init(plugin: EditorPlugin) -> void:
-	_plugin = plugin as BoardEditorPlugin
+	_plugin = plugin as Plugin
 
 
 func _ready() -> void:
@@ -47,13 +47,13 @@ func _run() -> void:
 		# A node without a board: the dock's "New maze board" button.
 		_plugin.new_board(BoardLevel.Kind.MAZE)
 		await _frames(5)
-	var session: Session = _plugin.get_session()
+	var session: BoardEditSession = _plugin.get_session()
 	if session == null:
 		_finish(["the plugin did not take the BoardNode."])
 		return
 	var level := session.level
 	var before := _count(level)
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	var key := "walls" if level.is_maze() else "pins"
 	var spot := _spot(level)
 	data[key] = PackedVector2Array([spot, spot + Vector2(35, 0)] if level.is_maze() else [spot])
@@ -131,14 +131,14 @@ static func _spot(level: BoardLevel) -> Vector2:
 
 
 # A select-tool drag of the thing just added: previewed live, one step in the scene history.
-func _check_drag(session: Session, history: UndoRedo) -> void:
+func _check_drag(session: BoardEditSession, history: UndoRedo) -> void:
 	var input := _plugin.get_board_input()
 	var item := session.level.pins.size() - 1 if session.level.is_pachinko() else -1
 	var from := session.level.pins[item] if item >= 0 else _spot(session.level)
 	if session.level.is_maze():
 		from += Vector2(17.5, 0)  # the middle of the wall added above
 	var start := _position(session.level)
-	session.set_tool(Session.Tool.SELECT)
+	session.set_tool(BoardEditSession.Tool.SELECT)
 	var steps := [[true, from], [null, from + Vector2(20, 10)], [null, from + Vector2(40, 40)]]
 	steps.append([false, from + Vector2(40, 40)])
 	for step: Array in steps:
@@ -164,10 +164,10 @@ func _check_drag(session: Session, history: UndoRedo) -> void:
 # Select the board, select nothing, select it again: the dock, the markers and the node's
 # warnings show the same problems each time (they once came back as "No problems found").
 func _check_problems_survive_reselect(root: BoardNode) -> void:
-	var session: Session = _plugin.get_session()
+	var session: BoardEditSession = _plugin.get_session()
 	if BoardValidator.validate(session.level).is_empty():
 		# A pin (or start) on top of another: a warning to keep.
-		var data := Items.empty_set()
+		var data := BoardItems.empty_set()
 		var twin := (
 			session.level.ball_starts[0] if session.level.is_maze() else session.level.pins[0]
 		)
@@ -196,7 +196,7 @@ func _check_problems_survive_reselect(root: BoardNode) -> void:
 
 # Keys, right-clicks, arrows with nothing selected and drags on empty board go through the
 # plugin exactly as the viewport sends them; each must be the board tool's, not Godot's.
-func _check_input_stays_in_the_tool(session: Session) -> void:
+func _check_input_stays_in_the_tool(session: BoardEditSession) -> void:
 	session.select([])
 	var corner := _screen_point(session.level.size - Vector2(3, 3))
 	var events: Array[InputEvent] = []
@@ -228,21 +228,24 @@ func _check_input_stays_in_the_tool(session: Session) -> void:
 
 # Drags every pin and pocket of the board through the plugin with the overlay drawn each
 # step; the shell script fails on any error the editor prints meanwhile.
-func _check_drag_everything(session: Session, history: UndoRedo) -> void:
+func _check_drag_everything(session: BoardEditSession, history: UndoRedo) -> void:
 	var level := session.level
 	var everything: Array[Vector2i] = []
-	var kinds := {Items.Kind.PIN: level.pins.size(), Items.Kind.POCKET: level.pockets.size()}
+	var kinds := {
+		BoardItems.Kind.PIN: level.pins.size(), BoardItems.Kind.POCKET: level.pockets.size()
+	}
 	if level.is_maze():
 		kinds = {
-			Items.Kind.WALL: Items.wall_count(level.walls), Items.Kind.HOLE: level.holes.size()
+			BoardItems.Kind.WALL: BoardItems.wall_count(level.walls),
+			BoardItems.Kind.HOLE: level.holes.size()
 		}
 	for kind: int in kinds:
 		for i in int(kinds[kind]):
-			everything.append(Items.make(kind, i))
-	session.set_tool(Session.Tool.SELECT)
+			everything.append(BoardItems.make(kind, i))
+	session.set_tool(BoardEditSession.Tool.SELECT)
 	session.select(everything)
-	var grab := Items.position_of(level, everything[0])
-	var before := Items.position_of(level, everything[0])
+	var grab := BoardItems.position_of(level, everything[0])
+	var before := BoardItems.position_of(level, everything[0])
 	var steps := 12
 	for i in steps + 2:
 		var event: InputEvent
@@ -262,15 +265,19 @@ func _check_drag_everything(session: Session, history: UndoRedo) -> void:
 	print(
 		(
 			"board editor self-check: dragged %d items, the first from %s to %s"
-			% [everything.size(), before, Items.position_of(level, everything[0])]
+			% [everything.size(), before, BoardItems.position_of(level, everything[0])]
 		)
 	)
-	_expect(Items.position_of(level, everything[0]) != before, "dragging everything moved nothing")
+	_expect(
+		BoardItems.position_of(level, everything[0]) != before, "dragging everything moved nothing"
+	)
 	_expect(
 		history.get_current_action_name().begins_with("Move"), "dragging everything is not one step"
 	)
 	history.undo()
-	_expect(Items.position_of(level, everything[0]) == before, "undo did not put everything back")
+	_expect(
+		BoardItems.position_of(level, everything[0]) == before, "undo did not put everything back"
+	)
 	session.select([])
 
 

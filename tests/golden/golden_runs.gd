@@ -5,8 +5,8 @@ extends RefCounted
 ## played back. tests/golden/golden_hashes.json holds what they gave; test_golden_hashes.gd
 ## compares, tests/golden/record_golden.gd (make golden) writes it anew.
 
-const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
-const Ours := preload("res://tests/bench/physics/ours_runner.gd")
+const BenchScenes := preload("res://tests/bench/physics/bench_scenes.gd")
+const OursRunner := preload("res://tests/bench/physics/ours_runner.gd")
 const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const TABLE_PATH := "res://tests/golden/golden_hashes.json"
 ## name, mode, pin pitch, balls, hz: the bench's scenes (tests/bench/bench_physics.gd).
@@ -56,8 +56,10 @@ static func hash_of(name: String) -> int:
 	for scene: Array in SCENES:
 		for threads in THREADS:
 			if name == "%s %d steps, %d thread%s" % [scene[0], SCENE_STEPS, threads, _s(threads)]:
-				var made: Dictionary = Scenes.make(scene[0], scene[1], scene[2], scene[3], scene[4])
-				return Ours.run(made, SCENE_STEPS, false, true, threads)["hash"]
+				var made: Dictionary = BenchScenes.make(
+					scene[0], scene[1], scene[2], scene[3], scene[4]
+				)
+				return OursRunner.run(made, SCENE_STEPS, false, true, threads)["hash"]
 	for kind in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
 		for board_id in _shipped_boards(kind):
 			if name == _autoplay_name(kind, board_id):

@@ -2,7 +2,7 @@ extends RefCounted
 ## Replay text for the reader's tests: a header with every field good (change any of them),
 ## records after it, and what the reader makes of it.
 
-const Reader := preload("res://scripts/replay/replay_reader.gd")
+const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
 const HASH := "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef"
 
 
@@ -31,7 +31,7 @@ static func read(fields: Dictionary, records: Array = []) -> Dictionary:
 	var lines := PackedStringArray([JSON.stringify(fields)])
 	for record: Variant in records:
 		lines.append(JSON.stringify(record))
-	return Reader.read("\n".join(lines))
+	return ReplayReader.read("\n".join(lines))
 
 
 ## The reader's error for that text ("" when it reads).

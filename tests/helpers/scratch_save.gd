@@ -3,13 +3,13 @@ extends RefCounted
 ## scratch path in App.save_data (boards locked as for a new player) and returns the real
 ## one; restore() puts the real one back and deletes the scratch file.
 
-const SaveDataScript := preload("res://scripts/app/save_data.gd")
+const SaveData := preload("res://scripts/app/save_data.gd")
 
 
 ## Swaps App.save_data for a fresh save stored at `path`; returns the real one.
 static func swap_in(path: String) -> RefCounted:
 	var real: RefCounted = App.save_data
-	var scratch := SaveDataScript.new()
+	var scratch := SaveData.new()
 	scratch.load_file(path)
 	App.save_data = scratch
 	App.settings.unlock_all_boards = false

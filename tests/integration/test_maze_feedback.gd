@@ -4,7 +4,7 @@ extends GutTest
 ## ball that falls into a hole instead of vanishing.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const Recipes := preload("res://scripts/audio/sound_recipes.gd")
+const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 const TEST_SETTINGS := "user://test_maze_feedback_settings.cfg"
 const TEST_SAVE := "user://test_maze_feedback_save.cfg"
 
@@ -42,7 +42,7 @@ func test_the_rolling_sound_follows_the_speed() -> void:
 
 
 func test_the_rolling_clip_loops_without_a_seam() -> void:
-	var clip := SoundBank.stream(Recipes.BALL_ROLL)
+	var clip := SoundBank.stream(SoundRecipes.BALL_ROLL)
 	assert_eq(clip.loop_mode, AudioStreamWAV.LOOP_FORWARD)
 	var frames := clip.data.size() / 2
 	assert_lt(clip.loop_end, frames, "the faded tail is never played")

@@ -7,7 +7,7 @@ extends GutTest
 ## anywhere on the board at any tilt.
 
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
-const Framing := preload("res://tests/integration/test_maze_framing.gd")
+const TestMazeFraming := preload("res://tests/integration/test_maze_framing.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 ## The smallest a ball may be on the screen of a 900 × 700 window (px across).
 const MIN_SMALL_WINDOW_BALL_PX := 10.0
@@ -15,7 +15,7 @@ const MIN_SMALL_WINDOW_BALL_PX := 10.0
 
 func test_every_board_s_balls_read_in_a_900_by_700_window() -> void:
 	var report: Array[String] = []
-	for board in Framing.shipped_boards():
+	for board in TestMazeFraming.shipped_boards():
 		var smallest := await _smallest_on_screen(board, Vector2i(900, 700))
 		report.append("%s %.1f" % [board, smallest])
 		assert_gte(
@@ -38,9 +38,9 @@ func _smallest_on_screen(board: String, size: Vector2i) -> float:
 	assert_true(level.board_id.ends_with(board), "the game opened %s" % board)
 	var screen := game.get_viewport().get_final_transform().get_scale().y
 	var smallest := INF
-	for tilt in Framing.TILTS:
+	for tilt in TestMazeFraming.TILTS:
 		stage.set_tilt(tilt)
-		smallest = minf(smallest, Framing.smallest_ball_px(stage, level) * screen)
+		smallest = minf(smallest, TestMazeFraming.smallest_ball_px(stage, level) * screen)
 	stage.set_tilt(Vector2.ZERO)
 	game.get_parent().queue_free()
 	await wait_process_frames(1)

@@ -3,7 +3,7 @@ extends GutTest
 ## seed plays the same game.
 
 const CLASSIC := "res://levels/pachinko/classic.board"
-const Autoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
+const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 
 
 func _level() -> BoardLevel:
@@ -11,7 +11,7 @@ func _level() -> BoardLevel:
 
 
 func test_accounting_holds_after_a_long_seeded_autoplay() -> void:
-	var result := Autoplay.run(_level(), 30.0, 1)
+	var result := PachinkoAutoplay.run(_level(), 30.0, 1)
 	assert_true(result["accounting_ok"], "cup + loaded + in play + drained + won adds up")
 	assert_gt(int(result["shots"]), 25, "it kept shooting (new games included)")
 	assert_gt(int(result["drained"]), 0)
@@ -25,16 +25,16 @@ func test_accounting_holds_after_a_long_seeded_autoplay() -> void:
 
 
 func test_the_same_seed_gives_the_same_result() -> void:
-	var a := Autoplay.run(_level(), 10.0, 7)
-	var b := Autoplay.run(_level(), 10.0, 7)
+	var a := PachinkoAutoplay.run(_level(), 10.0, 7)
+	var b := PachinkoAutoplay.run(_level(), 10.0, 7)
 	assert_eq(JSON.stringify(a), JSON.stringify(b))
-	var c := Autoplay.run(_level(), 10.0, 8)
+	var c := PachinkoAutoplay.run(_level(), 10.0, 8)
 	assert_ne(a["state_hash"], c["state_hash"], "another seed plays differently")
 
 
 func test_a_maze_board_is_refused_with_a_clear_error() -> void:
 	var maze := BoardLevel.new()
 	maze.kind = BoardLevel.Kind.MAZE
-	var result := Autoplay.run(maze, 1.0, 1)
+	var result := PachinkoAutoplay.run(maze, 1.0, 1)
 	assert_push_error("a pachinko board is needed")
 	assert_false(result.get("ok", true))

@@ -5,7 +5,7 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const Autoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
+const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
 
 
@@ -146,13 +146,13 @@ func test_the_dial_is_a_target_and_the_lever_still_is() -> void:
 
 func test_the_autoplay_handle_mode_streams_and_repeats_for_a_seed() -> void:
 	var level := BoardLoader.load_board(CLASSIC).level
-	var first := Autoplay.run(level, 30.0, 5, null, 60)
-	var again := Autoplay.run(level, 30.0, 5, null, 60)
+	var first := PachinkoAutoplay.run(level, 30.0, 5, null, 60)
+	var again := PachinkoAutoplay.run(level, 30.0, 5, null, 60)
 	assert_eq(first["mode"], "handle 60")
 	# 50 a half minute, less a few when the cup runs dry and the next game starts.
 	assert_between(int(first["shots"]), 40, 51, "a stream: 100 balls a minute")
 	assert_true(first["accounting_ok"])
 	assert_eq(JSON.stringify(first), JSON.stringify(again), "the same seed plays the same")
-	var refused := Autoplay.run(level, 5.0, 1, null, 101)
+	var refused := PachinkoAutoplay.run(level, 5.0, 1, null, 101)
 	assert_push_error("0 to 100")
 	assert_false(refused["ok"], "a strength over 100 is refused with a clear error")

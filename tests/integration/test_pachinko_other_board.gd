@@ -3,7 +3,7 @@ extends GutTest
 ## paying 10 play by the same rules, and the launcher recalibrates to the new rail.
 
 const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
-const Autoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
+const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 
 
 func _small_board() -> BoardLevel:
@@ -61,7 +61,7 @@ func test_every_power_clears_another_rail() -> void:
 
 
 func test_autoplay_on_another_board_keeps_every_ball() -> void:
-	var result := Autoplay.run(_small_board(), 20.0, 5)
+	var result := PachinkoAutoplay.run(_small_board(), 20.0, 5)
 	assert_true(result["accounting_ok"])
 	assert_eq((result["pocket_hits"] as Array).size(), 1)
 	assert_eq(int(result["payouts"]), int(result["pocket_hits"][0]) * 10, "this pocket pays 10")

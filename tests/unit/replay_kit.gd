@@ -2,8 +2,8 @@ extends RefCounted
 ## Shared steps of the replay tests: load a board, record a maze attempt the way the game
 ## plays it, play a replay back through a written and read file.
 
-const Reader := preload("res://scripts/replay/replay_reader.gd")
-const Writer := preload("res://scripts/replay/replay_writer.gd")
+const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
+const ReplayWriter := preload("res://scripts/replay/replay_writer.gd")
 
 
 static func load_level(path: String) -> BoardLevel:
@@ -12,7 +12,7 @@ static func load_level(path: String) -> BoardLevel:
 
 ## Writes and reads back: what a game file would hold.
 static func round_trip(replay: Replay) -> Replay:
-	var read := Reader.read(Writer.write(replay))
+	var read := ReplayReader.read(ReplayWriter.write(replay))
 	if not read.has("replay"):
 		push_error("replay_kit: %s" % read.get("error"))
 		return null

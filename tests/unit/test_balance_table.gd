@@ -7,7 +7,7 @@ extends GutTest
 
 const AnalysisPanel := preload("res://addons/board_editor/analysis/analysis_panel.gd")
 const BalanceRows := preload("res://addons/board_editor/analysis/balance_rows.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const TEST_FOLDER := "user://test_balance_table_editdock"
 const SHOTS := 260
 
@@ -142,7 +142,7 @@ func test_every_paying_item_has_a_line_and_the_shares_add_up_to_one() -> void:
 			var names := BalanceRows.by_name(rows)
 			assert_true(names.has("Tulip 1"), "bonus pieces are listed: %s" % [names.keys()])
 			var tulip: BalanceRows.Row = names["Tulip 1"]
-			assert_eq(tulip.item, Items.make(Items.Kind.BONUS, _first_tulip(level)))
+			assert_eq(tulip.item, BoardItems.make(BoardItems.Kind.BONUS, _first_tulip(level)))
 
 
 func test_sorting_and_picking_an_item() -> void:
@@ -160,7 +160,9 @@ func test_sorting_and_picking_an_item() -> void:
 	assert_eq(table.line_names()[0], "Pocket 1", "names in board order")
 	watch_signals(panel)
 	table.get_root().get_child(2).select(0)
-	assert_signal_emitted_with_parameters(panel, "item_picked", [Items.make(Items.Kind.POCKET, 2)])
+	assert_signal_emitted_with_parameters(
+		panel, "item_picked", [BoardItems.make(BoardItems.Kind.POCKET, 2)]
+	)
 
 
 func _first_tulip(level: BoardLevel) -> int:

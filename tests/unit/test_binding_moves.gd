@@ -3,7 +3,7 @@ extends GutTest
 ## asks whether to move it and names that action; moving swaps the old binding over so no
 ## action is left without one; a move that would leave one empty is refused.
 
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 const BindingMoves := preload("res://scripts/app/binding_moves.gd")
 
 
@@ -27,7 +27,7 @@ func _key_press(code: Key) -> InputEventKey:
 func _codes(settings: GameSettings, action: String) -> PackedStringArray:
 	var codes := PackedStringArray()
 	for event in settings.events_for(action):
-		codes.append(Codec.encode(event))
+		codes.append(InputEventCodec.encode(event))
 	return codes
 
 

@@ -5,9 +5,9 @@ extends GutTest
 ## problems, Selection, tool settings and analysis in view at 1920x1080, and a scroll
 ## position that stays where the designer left it when the board is shown again.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const Plugin := preload("res://addons/board_editor/plugin.gd")
 const TEST_FOLDER := "user://test_board_dock_layout"
 ## The height the dock's column gets in the editor at 1920x1080 (the window less the menu
@@ -50,7 +50,7 @@ func _many_issues() -> Array[BoardIssue]:
 
 func test_one_scrolling_body_and_no_scroll_inside_it() -> void:
 	var dock := _dock()
-	var session := Session.new(_classic())
+	var session := BoardEditSession.new(_classic())
 	dock.show_board(session, _many_issues())
 	var scrolls: Array[Node] = []
 	for scroll in dock.find_children("*", "ScrollContainer", true, false):
@@ -76,7 +76,7 @@ func test_nothing_in_the_dock_pushes_it_wider() -> void:
 	var dock := _dock()
 	var empty_width := dock.get_combined_minimum_size().x
 	var level := _classic()
-	var session := Session.new(level)
+	var session := BoardEditSession.new(level)
 	dock.show_board(session, _many_issues())
 	var panel := dock.analysis
 	panel.shots = 260
@@ -86,7 +86,7 @@ func test_nothing_in_the_dock_pushes_it_wider() -> void:
 		panel._process(0.016)
 		OS.delay_msec(10)
 	assert_true(panel.balance_table().visible, "the balance table is shown")
-	session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.POCKET, 0)] as Array[Vector2i])
 	dock.refresh_options()
 	await wait_process_frames(2)
 	assert_eq(dock.get_combined_minimum_size().x, empty_width, "the same width as empty")
@@ -96,8 +96,8 @@ func test_nothing_in_the_dock_pushes_it_wider() -> void:
 func test_problems_selection_tools_and_analysis_are_in_view_at_1920x1080() -> void:
 	var dock := _dock()
 	var level := _classic()
-	var session := Session.new(level)
-	session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+	var session := BoardEditSession.new(level)
+	session.select([BoardItems.make(BoardItems.Kind.POCKET, 0)] as Array[Vector2i])
 	var issues: Array[BoardIssue] = [
 		BoardIssue.new(BoardIssue.Severity.WARNING, "Pins 3 and 4 overlap.", Vector2(10, 10))
 	]
@@ -119,7 +119,7 @@ func test_problems_selection_tools_and_analysis_are_in_view_at_1920x1080() -> vo
 func test_the_scroll_position_stays_when_the_board_is_shown_again() -> void:
 	var dock := _dock()
 	dock.size = Vector2(BoardDock.DOCK_WIDTH, 400)
-	var session := Session.new(_classic())
+	var session := BoardEditSession.new(_classic())
 	dock.show_board(session, _many_issues())
 	await wait_process_frames(3)
 	dock.body().scroll_vertical = 300

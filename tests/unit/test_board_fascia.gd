@@ -3,8 +3,8 @@ extends GutTest
 ## line, classic when a file has none, an unknown machine refused by name, and every shipped
 ## board a machine of its own.
 
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC_FILE := "res://levels/pachinko/classic.board"
 const SHIPPED: Array[String] = [
 	"res://levels/pachinko/classic.board",
@@ -26,18 +26,18 @@ func _with_fascia_line(text: String, line: String) -> String:
 
 func test_every_machine_round_trips_as_one_line() -> void:
 	var level := _classic()
-	var before := Writer.write(level).split("\n")
+	var before := BoardTextWriter.write(level).split("\n")
 	for name in FasciaNames.NAMES:
 		level.fascia = name
-		var text := Writer.write(level)
+		var text := BoardTextWriter.write(level)
 		assert_string_contains(text, '\n{"fascia": "%s"}\n' % name)
-		var read := Reader.read(text)
+		var read := BoardTextReader.read(text)
 		assert_false(read.has("error"), str(read.get("error", "")))
 		if read.has("error"):
 			continue
 		var again: BoardLevel = read["level"]
 		assert_eq(again.fascia, name)
-		assert_eq(Writer.write(again), text, "the same text twice")
+		assert_eq(BoardTextWriter.write(again), text, "the same text twice")
 		var after := text.split("\n")
 		var changed := 0
 		for i in after.size():
@@ -50,9 +50,9 @@ func test_every_machine_round_trips_as_one_line() -> void:
 func test_a_file_without_a_fascia_is_the_classic_machine() -> void:
 	var level := _classic()
 	level.fascia = "sakura"
-	var text := _with_fascia_line(Writer.write(level), "")
+	var text := _with_fascia_line(BoardTextWriter.write(level), "")
 	assert_false(text.contains('"fascia"'))
-	var read := Reader.read(text)
+	var read := BoardTextReader.read(text)
 	assert_false(read.has("error"), str(read.get("error", "")))
 	var again: BoardLevel = read.get("level")
 	assert_eq(again.fascia, FasciaNames.CLASSIC)
@@ -60,13 +60,13 @@ func test_a_file_without_a_fascia_is_the_classic_machine() -> void:
 
 
 func test_an_unknown_machine_is_refused_with_its_name_and_the_choices() -> void:
-	var text := _with_fascia_line(Writer.write(_classic()), '{"fascia": "disco"}\n')
-	var error := str(Reader.read(text).get("error", ""))
+	var text := _with_fascia_line(BoardTextWriter.write(_classic()), '{"fascia": "disco"}\n')
+	var error := str(BoardTextReader.read(text).get("error", ""))
 	assert_string_contains(error, '"fascia"')
 	assert_string_contains(error, '"disco"')
 	assert_string_contains(error, '"classic", "country", "garden", "neon" or "sakura"')
-	var number := _with_fascia_line(Writer.write(_classic()), '{"fascia": 3}\n')
-	assert_string_contains(str(Reader.read(number).get("error", "")), '"fascia"')
+	var number := _with_fascia_line(BoardTextWriter.write(_classic()), '{"fascia": 3}\n')
+	assert_string_contains(str(BoardTextReader.read(number).get("error", "")), '"fascia"')
 
 
 func test_the_validator_refuses_an_unknown_machine_by_name() -> void:
@@ -86,18 +86,20 @@ func test_the_validator_refuses_an_unknown_machine_by_name() -> void:
 
 func test_a_maze_has_no_fascia_line() -> void:
 	var maze := BoardLoader.load_board("res://levels/maze/classic.board").level
-	assert_false(Writer.write(maze).contains('"fascia"'))
-	var text := Writer.write(maze) + '{"fascia": "classic"}\n'
-	assert_string_contains(str(Reader.read(text).get("error", "")), 'unknown field "fascia"')
+	assert_false(BoardTextWriter.write(maze).contains('"fascia"'))
+	var text := BoardTextWriter.write(maze) + '{"fascia": "classic"}\n'
+	assert_string_contains(
+		str(BoardTextReader.read(text).get("error", "")), 'unknown field "fascia"'
+	)
 
 
 func test_the_machine_is_looks_only_so_it_keeps_the_play_analysis() -> void:
 	var level := _classic()
-	var play := Writer.play_hash(level)
-	var content := Writer.content_hash(level)
+	var play := BoardTextWriter.play_hash(level)
+	var content := BoardTextWriter.content_hash(level)
 	level.fascia = "garden"
-	assert_eq(Writer.play_hash(level), play, "the analysis cache still fits")
-	assert_ne(Writer.content_hash(level), content, "the file did change")
+	assert_eq(BoardTextWriter.play_hash(level), play, "the analysis cache still fits")
+	assert_ne(BoardTextWriter.content_hash(level), content, "the file did change")
 
 
 func test_every_shipped_board_wears_a_machine_of_its_own() -> void:

@@ -2,8 +2,8 @@ extends GutTest
 ## The data-only board format: BoardTextWriter → BoardTextReader round trips every shipped
 ## board exactly, and the reader refuses every hostile or broken file with the field named.
 
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const SHIPPED: Array[String] = [
 	"res://levels/pachinko/classic",
 	"res://levels/pachinko/tulips",
@@ -24,7 +24,7 @@ static func _shipped(stem: String) -> BoardLevel:
 
 
 func _tiny_pachinko_text() -> String:
-	return Writer.write(_shipped("res://levels/pachinko/classic"))
+	return BoardTextWriter.write(_shipped("res://levels/pachinko/classic"))
 
 
 func _with(text: String, field: String, value: String) -> String:
@@ -33,7 +33,7 @@ func _with(text: String, field: String, value: String) -> String:
 
 
 func _error_of(text: String) -> String:
-	var read := Reader.read(text)
+	var read := BoardTextReader.read(text)
 	return str(read.get("error", ""))
 
 
@@ -46,13 +46,13 @@ class TestRoundTrip:
 			assert_not_null(level, stem)
 			if level == null:
 				continue
-			var text := Writer.write(level)
-			var read := Reader.read(text)
+			var text := BoardTextWriter.write(level)
+			var read := BoardTextReader.read(text)
 			assert_false(read.has("error"), "%s: %s" % [stem, read.get("error", "")])
 			if read.has("error"):
 				continue
 			var again: BoardLevel = read["level"]
-			assert_eq(Writer.write(again), text, stem + " writes the same text twice")
+			assert_eq(BoardTextWriter.write(again), text, stem + " writes the same text twice")
 			var a := BoardWorldFactory.build(level)
 			var b := BoardWorldFactory.build(again)
 			assert_eq(a.shapes.pin_count(), b.shapes.pin_count(), stem)
@@ -64,7 +64,7 @@ class TestRoundTrip:
 
 	func test_one_item_per_line_and_rounded_coordinates() -> void:
 		var level := _shipped("res://levels/pachinko/classic")
-		var text := Writer.write(level)
+		var text := BoardTextWriter.write(level)
 		var pin_lines := 0
 		for line in text.split("\n"):
 			if line.begins_with('{"pin": ') or line.begins_with('{"pocket": '):
@@ -73,15 +73,15 @@ class TestRoundTrip:
 		assert_eq(pin_lines, field_pins + level.pockets.size(), "a line per field pin and pocket")
 		assert_false(text.contains(', "pocket": '), "a pocket's rim pins are stamped, not stored")
 		level.pins[0] = Vector2(397.0096, 12.3449)
-		assert_string_contains(Writer.write(level), '"x": 397.01, "y": 12.34')
+		assert_string_contains(BoardTextWriter.write(level), '"x": 397.01, "y": 12.34')
 
 	func test_adding_a_pin_is_a_one_line_diff() -> void:
 		var level := _shipped("res://levels/pachinko/classic")
-		var before := Writer.write(level).split("\n")
+		var before := BoardTextWriter.write(level).split("\n")
 		level.pins.append(Vector2(100, 100))
 		level.pin_pocket.append(-1)
 		level.pin_special.append(0)
-		var after := Writer.write(level).split("\n")
+		var after := BoardTextWriter.write(level).split("\n")
 		assert_eq(after.size(), before.size() + 1)
 		var added := Array(after)
 		for line in before:
@@ -90,14 +90,14 @@ class TestRoundTrip:
 		assert_eq(added, [line], "the one new line, with the pin's new id")
 
 	func test_a_numbers_text_never_shows_float_noise() -> void:
-		assert_eq(Writer.number(350.0), "350")
-		assert_eq(Writer.number(-0.001), "0")
-		assert_eq(Writer.number(12.5), "12.5")
-		assert_eq(Writer.number(0.1 + 0.2), "0.3")
+		assert_eq(BoardTextWriter.number(350.0), "350")
+		assert_eq(BoardTextWriter.number(-0.001), "0")
+		assert_eq(BoardTextWriter.number(12.5), "12.5")
+		assert_eq(BoardTextWriter.number(0.1 + 0.2), "0.3")
 
 	func test_tuning_is_one_short_line_per_constant() -> void:
 		var level := _shipped("res://levels/pachinko/classic")
-		var lines := Writer.write(level).split("\n")
+		var lines := BoardTextWriter.write(level).split("\n")
 		var tuning := Array(lines).filter(
 			func(l: String) -> bool: return l.begins_with('{"tuning"')
 		)
@@ -109,9 +109,9 @@ class TestRoundTrip:
 
 	func test_changing_one_tuning_constant_is_a_one_line_diff() -> void:
 		var level := _shipped("res://levels/pachinko/classic")
-		var before := Writer.write(level).split("\n")
+		var before := BoardTextWriter.write(level).split("\n")
 		level.tuning.restitution = 0.55
-		var after := Writer.write(level).split("\n")
+		var after := BoardTextWriter.write(level).split("\n")
 		assert_eq(after.size(), before.size())
 		var changed := PackedStringArray()
 		for i in after.size():
@@ -121,7 +121,7 @@ class TestRoundTrip:
 
 	func test_the_old_one_line_tuning_still_reads_the_same() -> void:
 		var level := _shipped("res://levels/pachinko/classic")
-		var text := Writer.write(level)
+		var text := BoardTextWriter.write(level)
 		var old_line := (
 			'{"tuning": {"ball_restitution": 0.6, "bounce_threshold": 30, "drain_slide_time": 0.5,'
 			+ ' "fixed_hz": 120, "friction_against": 0, "gravity": [0, 777.7777709960938],'
@@ -136,12 +136,12 @@ class TestRoundTrip:
 				kept.append(old_line)
 			elif not line.begins_with('{"tuning"'):
 				kept.append(line)
-		var read := Reader.read("\n".join(kept))
+		var read := BoardTextReader.read("\n".join(kept))
 		assert_false(read.has("error"), str(read.get("error", "")))
 		if read.has("error"):
 			return
 		var old: BoardLevel = read["level"]
-		assert_eq(Writer.write(old), text, "the old form reads to the very same board")
+		assert_eq(BoardTextWriter.write(old), text, "the old form reads to the very same board")
 
 	func test_a_tuning_constant_given_twice_is_refused() -> void:
 		var text := _tiny_pachinko_text() + '{"tuning": {"restitution": 0.5}}\n'
@@ -188,7 +188,7 @@ class TestHostile:
 		assert_string_contains(_error_of(base + '{"pin": {"x": 1, "y": 2}, "hole": 1}'), "alone")
 		var with_nul := (base + "{}").to_utf8_buffer()
 		with_nul[with_nul.size() - 1] = 0
-		assert_string_contains(str(Reader.read_bytes(with_nul).get("error")), "NUL")
+		assert_string_contains(str(BoardTextReader.read_bytes(with_nul).get("error")), "NUL")
 
 	func test_bom_and_crlf_are_fine() -> void:
 		var base := _tiny_pachinko_text()

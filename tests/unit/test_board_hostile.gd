@@ -3,7 +3,7 @@ extends GutTest
 ## put in a board folder. Every one is refused quickly with the file and the problem named,
 ## none runs code, and the one well-formed file (a BOM and CRLF line ends) loads.
 
-const CheckCli := preload("res://scripts/loading/board_check_cli.gd")
+const BoardCheckCli := preload("res://scripts/loading/board_check_cli.gd")
 const ROOT := "res://tests/fixtures/hostile_boards"
 const MARKER := "user://hostile_payload_ran.txt"
 ## Loading one file may never take longer than this (the issue's limit is 5 s a file).
@@ -15,7 +15,7 @@ func before_all() -> void:
 
 
 func test_every_hostile_file_is_refused_fast_and_named() -> void:
-	var lines := CheckCli.check_folder(ROOT, BoardLevel.Kind.PACHINKO)
+	var lines := BoardCheckCli.check_folder(ROOT, BoardLevel.Kind.PACHINKO)
 	assert_gt(lines.size(), 15, "the corpus is there")
 	for line in lines:
 		var path: String = line["path"]
@@ -31,7 +31,7 @@ func test_every_hostile_file_is_refused_fast_and_named() -> void:
 
 func test_the_reasons_are_the_real_problems() -> void:
 	var reasons := {}
-	for line in CheckCli.check_folder(ROOT, BoardLevel.Kind.PACHINKO):
+	for line in BoardCheckCli.check_folder(ROOT, BoardLevel.Kind.PACHINKO):
 		reasons[str(line["path"]).get_file()] = str(line["error"])
 	var expected := {
 		"coincident_pins.board": "crowd into one",
@@ -72,7 +72,7 @@ func test_oversized_mazes_are_refused_by_their_limit() -> void:
 		"flood_boundary_copies.board": "this board's grid takes at most 10448 px",
 		"flood_diagonals.board": "The walls are 160727 px long together",
 	}
-	var lines := CheckCli.check_folder(ROOT, BoardLevel.Kind.MAZE)
+	var lines := BoardCheckCli.check_folder(ROOT, BoardLevel.Kind.MAZE)
 	assert_eq(lines.size(), expected.size(), "one line per maze of the corpus")
 	for line in lines:
 		var file := str(line["path"]).get_file()
@@ -83,7 +83,7 @@ func test_oversized_mazes_are_refused_by_their_limit() -> void:
 
 func test_shipped_boards_all_pass_the_check() -> void:
 	for kind: int in [BoardLevel.Kind.PACHINKO, BoardLevel.Kind.MAZE]:
-		var lines := CheckCli.check_folder(BoardLoader.LEVELS_DIR, kind)
+		var lines := BoardCheckCli.check_folder(BoardLoader.LEVELS_DIR, kind)
 		var folder := BoardLoader.LEVELS_DIR.path_join(BoardLevel.kind_name(kind))
 		var files := Array(DirAccess.get_files_at(folder)).filter(
 			func(file: String) -> bool: return file.ends_with(".board")
@@ -95,4 +95,4 @@ func test_shipped_boards_all_pass_the_check() -> void:
 
 
 func test_a_missing_player_folder_is_simply_empty() -> void:
-	assert_eq(CheckCli.check_folder("user://no_such_boards_folder", 0).size(), 0)
+	assert_eq(BoardCheckCli.check_folder("user://no_such_boards_folder", 0).size(), 0)

@@ -3,7 +3,7 @@ extends GutTest
 ## others keep loading. Old files are upgraded.
 
 const LegacyBoardLoader := preload("res://tools/legacy_boards/legacy_board_loader.gd")
-const Upgrader := preload("res://tools/legacy_boards/board_upgrader.gd")
+const BoardUpgrader := preload("res://tools/legacy_boards/board_upgrader.gd")
 const DIR := "res://tests/fixtures/boards/"
 ## Fixture → words its refusal must contain.
 const BROKEN := {
@@ -97,6 +97,6 @@ func test_version_0_maze_walls_become_pixel_segments() -> void:
 
 func test_upgrader_refuses_unknown_versions_and_leftover_fields() -> void:
 	var level := BoardLevel.new()
-	assert_string_contains(Upgrader.upgrade(level, 7), "unknown version 7")
+	assert_string_contains(BoardUpgrader.upgrade(level, 7), "unknown version 7")
 	level.legacy_fields["mystery"] = 1
-	assert_string_contains(Upgrader.upgrade(level, 1), "mystery")
+	assert_string_contains(BoardUpgrader.upgrade(level, 1), "mystery")

@@ -2,7 +2,7 @@ extends GutTest
 ## The board reader's field checks, as a designer meets them: each wrong field, item or
 ## tuning constant is refused with a message naming it, and what is allowed loads.
 
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 const PACHINKO := "res://levels/pachinko/classic.board"
 const MAZE := "res://levels/maze/classic.board"
 
@@ -22,13 +22,13 @@ func _lines(path: String, drop: Array[String] = []) -> PackedStringArray:
 func _error(path: String, extra: Array[String], drop: Array[String] = []) -> String:
 	var lines := _lines(path, drop)
 	lines.append_array(PackedStringArray(extra))
-	return str(Reader.read("\n".join(lines)).get("error", ""))
+	return str(BoardTextReader.read("\n".join(lines)).get("error", ""))
 
 
 func _level(path: String, extra: Array[String], drop: Array[String] = []) -> BoardLevel:
 	var lines := _lines(path, drop)
 	lines.append_array(PackedStringArray(extra))
-	return Reader.read("\n".join(lines)).get("level")
+	return BoardTextReader.read("\n".join(lines)).get("level")
 
 
 func test_a_pin_naming_a_pocket_the_board_lacks_is_refused_by_pin_and_pocket() -> void:

@@ -2,8 +2,8 @@ extends GutTest
 ## BoardValidator finds each problem (and only real ones: pocket rims are meant to be closed).
 
 const DIR := "res://tests/fixtures/boards/"
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 
 
 func test_fixture_boards_are_clean() -> void:
@@ -36,7 +36,7 @@ func test_tuning_the_file_reader_would_refuse_is_an_error() -> void:
 	var level := _pachinko()
 	level.tuning.fixed_hz = 20.0
 	assert_eq(_codes(level), ["bad_tuning"])
-	var reread := Reader.read(Writer.write(level))
+	var reread := BoardTextReader.read(BoardTextWriter.write(level))
 	assert_string_contains(str(reread.get("error", "")), "fixed_hz")
 	level.tuning.fixed_hz = BoardRanges.TUNING["fixed_hz"][0]
 	assert_eq(_codes(level), [], "the lowest rate both accept")

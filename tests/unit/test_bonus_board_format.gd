@@ -4,8 +4,8 @@ extends GutTest
 ## and every hostile value refused with the field named; the validator then refuses cups
 ## outside the ring, too shallow or overlapping.
 
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/pachinko/classic.board"
 
 
@@ -14,7 +14,7 @@ func _classic_text() -> String:
 
 
 func _with_line(line: String) -> Dictionary:
-	return Reader.read(_classic_text() + line + "\n")
+	return BoardTextReader.read(_classic_text() + line + "\n")
 
 
 func test_boards_without_bonus_pockets_keep_their_exact_text() -> void:
@@ -22,11 +22,11 @@ func test_boards_without_bonus_pockets_keep_their_exact_text() -> void:
 		if not file.ends_with(".board"):
 			continue
 		var text := FileAccess.get_file_as_string("res://levels/pachinko/" + file)
-		var read := Reader.read(text)
+		var read := BoardTextReader.read(text)
 		assert_true(read.has("level"), file)
 		var level: BoardLevel = read["level"]
 		if level.bonus_pockets.is_empty():
-			assert_eq(Writer.write(level), text, "%s written back byte for byte" % file)
+			assert_eq(BoardTextWriter.write(level), text, "%s written back byte for byte" % file)
 			assert_false(text.contains('tulip":'), file)
 
 
@@ -37,7 +37,7 @@ func test_bonus_lines_round_trip() -> void:
 	text += '"symbols": 4}}\n'
 	text += '{"attacker": {"x": 350, "y": 600, "width": 60, "depth": 32, "payout": 15, '
 	text += '"open_seconds": 6.5, "open_catches": 9}}\n'
-	var read := Reader.read(text)
+	var read := BoardTextReader.read(text)
 	assert_true(read.has("level"), str(read.get("error", "")))
 	var level: BoardLevel = read["level"]
 	assert_eq(level.bonus_pockets.size(), 3)
@@ -48,11 +48,11 @@ func test_bonus_lines_round_trip() -> void:
 	assert_eq(level.bonus_pockets[0].symbols, 4)
 	assert_eq(level.bonus_pockets[1].open_seconds, 6.5)
 	assert_eq(level.bonus_pockets[1].open_catches, 9)
-	var written := Writer.write(level)
+	var written := BoardTextWriter.write(level)
 	assert_eq(written.split("\n").size(), text.split("\n").size(), "one line per item")
 	assert_string_contains(written, '{"start_pocket": {"id": 1, "x": 350, "y": 200, "width": 24')
-	var again: BoardLevel = Reader.read(written)["level"]
-	assert_eq(Writer.write(again), written, "stable text")
+	var again: BoardLevel = BoardTextReader.read(written)["level"]
+	assert_eq(BoardTextWriter.write(again), written, "stable text")
 
 
 func test_optional_fields_take_their_defaults() -> void:
@@ -94,7 +94,7 @@ func test_too_many_bonus_pockets_are_refused() -> void:
 			'{"start_pocket": {"x": %d, "y": 200, "width": 24, "depth": 26, "payout": 3}}\n'
 			% (150 + 60 * i)
 		)
-	var read := Reader.read(_classic_text() + lines)
+	var read := BoardTextReader.read(_classic_text() + lines)
 	assert_true(read.has("error"))
 	assert_string_contains(read.get("error", ""), "start_pockets")
 

@@ -1,7 +1,7 @@
 extends GutTest
 ## The board editor's actions: each one's do / undo / redo against a real BoardLevel.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
@@ -60,7 +60,7 @@ static func pins_of(level: BoardLevel) -> Array:
 
 func test_add_pins_round_trip() -> void:
 	var level := pachinko()
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = PackedVector2Array([Vector2(100, 100), Vector2(120, 100)])
 	var action := AddItemsAction.new(level, data, "Add pin")
 	check_round_trip(level, action, pins_of)
@@ -113,9 +113,9 @@ func test_move_takes_pocket_pins_along() -> void:
 	history.commit(
 		PatternAction.new(level, {"kind": "row", "count": 2, "spacing": 40.0}, Vector2(300, 200))
 	)
-	var pocket_pins := Items.pocket_pins(level, 0)
+	var pocket_pins := BoardItems.pocket_pins(level, 0)
 	var first_rim := level.pins[pocket_pins[0]]
-	var items: Array[Vector2i] = [Items.make(Items.Kind.POCKET, 0)]
+	var items: Array[Vector2i] = [BoardItems.make(BoardItems.Kind.POCKET, 0)]
 	var move := MoveItemsAction.new(level, items, Vector2(10, -5))
 	check_round_trip(
 		level,
@@ -130,7 +130,7 @@ func test_move_takes_pocket_pins_along() -> void:
 func test_move_preview_then_commit_is_one_step() -> void:
 	var level := maze()
 	level.holes = PackedVector2Array([Vector2(50, 50)])
-	var items: Array[Vector2i] = [Items.make(Items.Kind.HOLE, 0)]
+	var items: Array[Vector2i] = [BoardItems.make(BoardItems.Kind.HOLE, 0)]
 	var move := MoveItemsAction.new(level, items, Vector2.ZERO)
 	for step in 5:
 		move.preview(Vector2(step * 3, step))
@@ -148,12 +148,12 @@ func test_delete_renumbers_pocket_pins() -> void:
 	var history := ActionHistory.new()
 	history.commit(PocketAction.new(level, Vector2(200, 400), 30, 24, 5))
 	history.commit(PocketAction.new(level, Vector2(400, 400), 30, 24, 9))
-	var second_pins := Items.pocket_pins(level, 1).size()
-	var items: Array[Vector2i] = [Items.make(Items.Kind.POCKET, 0)]
+	var second_pins := BoardItems.pocket_pins(level, 1).size()
+	var items: Array[Vector2i] = [BoardItems.make(BoardItems.Kind.POCKET, 0)]
 	check_round_trip(level, DeleteItemsAction.new(level, items), pins_of)
 	assert_eq(level.pockets.size(), 1)
 	assert_eq(level.pockets[0].payout, 9, "the other pocket stays")
-	assert_eq(Items.pocket_pins(level, 0).size(), second_pins, "its pins now point at index 0")
+	assert_eq(BoardItems.pocket_pins(level, 0).size(), second_pins, "its pins now point at index 0")
 	assert_eq(level.pins.size(), second_pins)
 
 
@@ -165,9 +165,9 @@ func test_delete_walls_holes_and_starts() -> void:
 	level.holes = PackedVector2Array([Vector2(10, 10), Vector2(20, 20)])
 	level.ball_starts = PackedVector2Array([Vector2(17, 17)])
 	var items: Array[Vector2i] = [
-		Items.make(Items.Kind.WALL, 0),
-		Items.make(Items.Kind.HOLE, 1),
-		Items.make(Items.Kind.START, 0)
+		BoardItems.make(BoardItems.Kind.WALL, 0),
+		BoardItems.make(BoardItems.Kind.HOLE, 1),
+		BoardItems.make(BoardItems.Kind.START, 0)
 	]
 	var read := func(board: BoardLevel) -> Array:
 		return [board.walls, board.holes, board.ball_starts]

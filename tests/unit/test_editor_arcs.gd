@@ -2,23 +2,23 @@ extends GutTest
 ## Pin arcs: selected pins on an arc are recognised (centre, radius, angles, count), shown in
 ## the Selection panel with a centre mark, and reshaped from its fields in one undo step.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const EditArcAction := preload("res://addons/board_editor/actions/edit_arc_action.gd")
-const Overlay := preload("res://addons/board_editor/ui/board_overlay.gd")
+const BoardOverlay := preload("res://addons/board_editor/ui/board_overlay.gd")
 const SelectTool := preload("res://addons/board_editor/tools/select_tool.gd")
 
 
 # A board with two loose pins and then a 7-pin arc of radius 100 round (350, 300), from
 # -150° to -30°, selected.
-func _arc_session() -> Session:
-	var session := Session.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
-	var data := Items.empty_set()
+func _arc_session() -> BoardEditSession:
+	var session := BoardEditSession.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
+	var data := BoardItems.empty_set()
 	data["pins"] = PackedVector2Array([Vector2(100, 500), Vector2(600, 500)])
 	var arc := PinPatterns.arc(Vector2(350, 300), 100.0, -150.0, -30.0, 7)
 	data["pins"].append_array(arc)
@@ -29,7 +29,7 @@ func _arc_session() -> Session:
 
 
 func test_an_arc_pattern_is_recognised_with_its_centre_and_angles() -> void:
-	var session := Session.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
+	var session := BoardEditSession.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
 	var settings := {"kind": "arc", "count": 9, "spacing": 30.0, "radius": 150.0}
 	var stamp := PatternAction.new(session.level, settings, Vector2(350, 350))
 	session.commit(stamp)
@@ -54,7 +54,7 @@ func test_rows_loose_pins_and_pocket_rims_are_not_arcs() -> void:
 	assert_true(PinArc.fit(uneven).is_empty(), "on a circle but not evenly spaced")
 	var session := _arc_session()
 	var mixed := session.selection.duplicate()
-	mixed.append(Items.make(Items.Kind.PIN, 0))
+	mixed.append(BoardItems.make(BoardItems.Kind.PIN, 0))
 	session.select(mixed)
 	assert_true(session.selected_arc().is_empty(), "an arc plus a loose pin")
 
@@ -123,7 +123,7 @@ func test_the_overlay_draws_a_centre_mark_for_a_selected_arc() -> void:
 	var canvas: Control = add_child_autofree(Control.new())
 	var tool := SelectTool.new(session)
 	canvas.draw.connect(
-		func() -> void: Overlay.draw(canvas, Transform2D.IDENTITY, session, tool, [], -1)
+		func() -> void: BoardOverlay.draw(canvas, Transform2D.IDENTITY, session, tool, [], -1)
 	)
 	canvas.queue_redraw()
 	await wait_process_frames(2)

@@ -1,9 +1,9 @@
 extends GutTest
 ## Peg curves, align and distribute, layers and the red ghost: each edit one undo step.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const CurvePins := preload("res://addons/board_editor/core/curve_pins.gd")
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
@@ -11,9 +11,9 @@ const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 
 
-func _pachinko(pins: PackedVector2Array) -> Session:
-	var session := Session.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
-	var data := Items.empty_set()
+func _pachinko(pins: PackedVector2Array) -> BoardEditSession:
+	var session := BoardEditSession.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
+	var data := BoardItems.empty_set()
 	data["pins"] = pins
 	session.commit(AddItemsAction.new(session.level, data, "Add"))
 	return session
@@ -46,7 +46,7 @@ func test_curve_pins_by_count_and_by_spacing() -> void:
 func test_drawing_a_20_peg_curve_is_one_undo_step() -> void:
 	var session := _pachinko(PackedVector2Array())
 	var input := BoardInput.new(session)
-	session.set_tool(Session.Tool.CURVE)
+	session.set_tool(BoardEditSession.Tool.CURVE)
 	session.curve["count"] = 20
 	_mouse(input, Vector2(200, 200), 0)
 	for k in range(1, 21):
@@ -63,7 +63,7 @@ func test_drawing_a_20_peg_curve_is_one_undo_step() -> void:
 func test_a_mirrored_curve_is_named_by_every_pin_it_adds() -> void:
 	var session := _pachinko(PackedVector2Array())
 	var input := BoardInput.new(session)
-	session.set_tool(Session.Tool.CURVE)
+	session.set_tool(BoardEditSession.Tool.CURVE)
 	session.set_mirror(true)
 	session.curve["count"] = 13
 	_mouse(input, Vector2(100, 200), 0)
@@ -81,7 +81,7 @@ func test_align_a_row_and_distribute_it() -> void:
 	panel.bind(session)
 	var all: Array[Vector2i] = []
 	for i in 3:
-		all.append(Items.make(Items.Kind.PIN, i))
+		all.append(BoardItems.make(BoardItems.Kind.PIN, i))
 	session.select(all)
 	panel.align("top")
 	for i in 3:
@@ -97,14 +97,14 @@ func test_align_a_row_and_distribute_it() -> void:
 func test_hidden_and_locked_layers_cannot_be_picked() -> void:
 	var session := _pachinko(PackedVector2Array([Vector2(300, 300)]))
 	var input := BoardInput.new(session)
-	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 0)] as Array[Vector2i])
 	session.set_layer("Pins", true, false)
 	assert_eq(session.selection.size(), 0, "hiding the pins drops them from the selection")
 	_mouse(input, Vector2(300, 300), 0)
 	_mouse(input, Vector2(300, 300), 2)
 	assert_eq(session.selection.size(), 0, "a hidden pin cannot be clicked")
 	session.set_layer("Pins", false, true)
-	session.set_tool(Session.Tool.ERASE)
+	session.set_tool(BoardEditSession.Tool.ERASE)
 	_mouse(input, Vector2(300, 300), 0)
 	_mouse(input, Vector2(300, 300), 2)
 	assert_eq(session.level.pins.size(), 1, "a locked pin cannot be erased")

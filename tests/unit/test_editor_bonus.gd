@@ -3,12 +3,12 @@ extends GutTest
 ## one (mirrored in mirror mode) in role order, a click on one removes it, each click is one
 ## undo step, and the board saves and reads back with the same bonus lines.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 
-var session: Session
+var session: BoardEditSession
 var input: BoardInput
 
 
@@ -16,7 +16,7 @@ func _open() -> BoardLevel:
 	var level: BoardLevel = (
 		(load("res://levels/pachinko/windmills.board") as BoardLevel).duplicate_level()
 	)
-	session = Session.new(level)
+	session = BoardEditSession.new(level)
 	input = BoardInput.new(session)
 	session.snap_enabled = false
 	return level
@@ -40,12 +40,12 @@ func _roles(level: BoardLevel) -> Array[int]:
 
 func test_the_three_bonus_tools_place_in_role_order_and_undo() -> void:
 	var level := _open()
-	assert_true(session.available_tools().has(Session.Tool.TULIP))
-	session.set_tool(Session.Tool.TULIP)
+	assert_true(session.available_tools().has(BoardEditSession.Tool.TULIP))
+	session.set_tool(BoardEditSession.Tool.TULIP)
 	_click(Vector2(300, 250))
-	session.set_tool(Session.Tool.START_POCKET)
+	session.set_tool(BoardEditSession.Tool.START_POCKET)
 	_click(Vector2(350, 470))
-	session.set_tool(Session.Tool.ATTACKER)
+	session.set_tool(BoardEditSession.Tool.ATTACKER)
 	_click(Vector2(350, 600))
 	assert_eq(_roles(level), [0, 1, 2], "start pocket, attacker, tulip whatever the click order")
 	assert_eq(level.bonus_pockets[1].position, Vector2(350, 600))
@@ -58,7 +58,7 @@ func test_the_three_bonus_tools_place_in_role_order_and_undo() -> void:
 func test_mirror_mode_adds_the_twin_and_a_click_removes_one() -> void:
 	var level := _open()
 	session.mirror_enabled = true
-	session.set_tool(Session.Tool.TULIP)
+	session.set_tool(BoardEditSession.Tool.TULIP)
 	_click(Vector2(250, 300))
 	assert_eq(level.bonus_pockets.size(), 2)
 	assert_eq(level.bonus_pockets[1].position, Vector2(450, 300), "mirrored across x = 350")
@@ -69,11 +69,11 @@ func test_mirror_mode_adds_the_twin_and_a_click_removes_one() -> void:
 
 func test_a_placed_board_saves_and_reads_back() -> void:
 	var level := _open()
-	session.set_tool(Session.Tool.START_POCKET)
+	session.set_tool(BoardEditSession.Tool.START_POCKET)
 	_click(Vector2(350, 470))
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_string_contains(text, '{"start_pocket": {"id": 1, "x": 350, "y": 470')
-	var again: BoardLevel = Reader.read(text)["level"]
+	var again: BoardLevel = BoardTextReader.read(text)["level"]
 	assert_eq(again.bonus_pockets.size(), 1)
 	assert_eq(again.bonus_pockets[0].symbols, 3)
-	assert_eq(Writer.write(again), text)
+	assert_eq(BoardTextWriter.write(again), text)

@@ -7,34 +7,34 @@ extends GutTest
 ## A frozen bonus board (the first Fever layout), so rebalancing the shipped boards never
 ## moves the pieces these tests pick.
 const BONUS_BOARD := "res://tests/fixtures/boards/bonus_layout.board"
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 const LayersPanel := preload("res://addons/board_editor/ui/layers_panel.gd")
-const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
+const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
 const Arrange := preload("res://addons/board_editor/core/arrange.gd")
 const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 
 # bonus_layout.board: start pocket 1 at (350, 400), attacker 1 at (350, 540), tulips 1 and 2 at
 # (215, 330) and (485, 330), mirrored across x = 350.
 const TULIP_1 := Vector2(215, 330)
 const TULIP_2 := Vector2(485, 330)
 
-var session: Session
+var session: BoardEditSession
 var input: BoardInput
 
 
 func _open() -> BoardLevel:
 	var level := (load(BONUS_BOARD) as BoardLevel).duplicate_level()
-	session = Session.new(level)
+	session = BoardEditSession.new(level)
 	input = BoardInput.new(session)
 	session.snap_enabled = false
 	return level
@@ -59,7 +59,7 @@ func _drag(from: Vector2, to: Vector2) -> void:
 
 
 func _bonus(list: String, id: int) -> Vector2i:
-	return Items.make(Items.Kind.BONUS, ItemIds.bonus_index(session.level, list, id))
+	return BoardItems.make(BoardItems.Kind.BONUS, ItemIds.bonus_index(session.level, list, id))
 
 
 func _messages(level: BoardLevel) -> String:
@@ -71,7 +71,7 @@ func _messages(level: BoardLevel) -> String:
 
 func test_the_file_keeps_bonus_ids_and_a_deleted_id_is_never_handed_out_again() -> void:
 	var level := _open()
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_string_contains(text, '{"tulip": {"id": 2, "x": 485, "y": 330')
 	assert_string_contains(text, '{"attacker": {"id": 1, "x": 350, "y": 540')
 	assert_eq(ItemNames.name_of(level, _bonus("tulips", 2)), "Tulip 2")
@@ -79,14 +79,14 @@ func test_the_file_keeps_bonus_ids_and_a_deleted_id_is_never_handed_out_again() 
 	var spec := BonusPocketSpec.of_role(BonusPocketSpec.Role.TULIP, Vector2(485, 250), 26, 26, 3)
 	session.commit(BonusActions.AddBonus.new(level, spec))
 	assert_eq(ItemIds.of_bonus(level, level.bonus_pockets.find(spec)), 3, "2 is not reused")
-	var saved := Writer.write(level)
+	var saved := BoardTextWriter.write(level)
 	assert_string_contains(saved, '{"tulip": {"id": 3, "x": 485, "y": 250')
-	var again: BoardLevel = Reader.read(saved)["level"]
-	assert_eq(Writer.write(again), saved, "ids read back as written")
+	var again: BoardLevel = BoardTextReader.read(saved)["level"]
+	assert_eq(BoardTextWriter.write(again), saved, "ids read back as written")
 	session.history.undo()
 	session.history.undo()
 	assert_eq(ItemIds.of_bonus(level, 3), 2, "undo brings tulip 2 back under its own id")
-	var after_undo := Writer.write(level)
+	var after_undo := BoardTextWriter.write(level)
 	assert_string_contains(after_undo, '{"tulip": {"id": 2, "x": 485, "y": 330')
 	assert_string_contains(after_undo, '{"next_ids": {"tulips": 4}}', "3 stays used up")
 
@@ -102,7 +102,7 @@ func test_ids_survive_deleting_a_neighbour_and_the_validator_names_them_by_id() 
 
 func test_select_picks_a_bonus_pocket_and_a_drag_moves_it_in_one_undo_step() -> void:
 	var level := _open()
-	session.set_tool(Session.Tool.SELECT)
+	session.set_tool(BoardEditSession.Tool.SELECT)
 	_drag(TULIP_1 + Vector2(0, 4), TULIP_1 + Vector2(20, 14))
 	assert_eq(session.selection, [_bonus("tulips", 1)] as Array[Vector2i])
 	assert_eq(level.bonus_pockets[2].position, TULIP_1 + Vector2(20, 10))
@@ -116,7 +116,7 @@ func test_select_picks_a_bonus_pocket_and_a_drag_moves_it_in_one_undo_step() -> 
 func test_a_mirrored_drag_moves_the_twin_tulip() -> void:
 	var level := _open()
 	session.mirror_enabled = true
-	session.set_tool(Session.Tool.SELECT)
+	session.set_tool(BoardEditSession.Tool.SELECT)
 	_drag(TULIP_1 + Vector2(0, 4), TULIP_1 + Vector2(-10, 9))
 	assert_eq(level.bonus_pockets[2].position, TULIP_1 + Vector2(-10, 5))
 	assert_eq(level.bonus_pockets[3].position, TULIP_2 + Vector2(10, 5), "the twin follows")
@@ -149,7 +149,7 @@ func test_box_select_and_the_erase_tool_take_bonus_pockets() -> void:
 	var box := HitTest.in_rect(level, Rect2(330, 390, 40, 160))
 	assert_true(box.has(_bonus("start_pockets", 1)), "the start pocket's mouth is in the box")
 	assert_true(box.has(_bonus("attackers", 1)))
-	session.set_tool(Session.Tool.ERASE)
+	session.set_tool(BoardEditSession.Tool.ERASE)
 	_press(Vector2(350, 560), true)
 	_press(Vector2(350, 560), false)
 	assert_eq(level.bonus_pockets.size(), 3, "the attacker is erased")
@@ -167,7 +167,7 @@ func test_align_and_duplicate_bonus_pockets() -> void:
 	session.history.undo()
 	assert_eq(level.bonus_pockets[0].position, Vector2(350, 400))
 	session.select([_bonus("tulips", 2)] as Array[Vector2i])
-	assert_true(Commands.duplicate_selection(session))
+	assert_true(EditCommands.duplicate_selection(session))
 	assert_eq(ItemIds.count(level, "tulips"), 3)
 	var copy: Vector2i = session.selection[0]
 	assert_eq(ItemNames.name_of(level, copy), "Tulip 3", "the copy is selected, with a new id")
@@ -183,11 +183,11 @@ func test_the_bonus_layer_hides_and_locks_bonus_pockets() -> void:
 	assert_true(Layers.for_kind(BoardLevel.Kind.PACHINKO).has("Bonus pieces"))
 	assert_eq(Layers.painter_mask(["Bonus pieces"] as Array[String]), BoardPainter.Layer.BONUS)
 	session.set_layer("Bonus pieces", false, true)
-	session.set_tool(Session.Tool.SELECT)
+	session.set_tool(BoardEditSession.Tool.SELECT)
 	_press(TULIP_1 + Vector2(0, 4), true)
 	_press(TULIP_1 + Vector2(0, 4), false)
 	assert_false(session.selection.has(_bonus("tulips", 1)), "a locked layer cannot be picked")
-	session.set_tool(Session.Tool.TULIP)
+	session.set_tool(BoardEditSession.Tool.TULIP)
 	_press(TULIP_1 + Vector2(0, 4), true)
 	assert_eq(level.bonus_pockets.size(), 4, "nor removed by the tulip tool")
 	session.set_layer("Bonus pieces", false, false)

@@ -7,22 +7,22 @@ extends GutTest
 ## A frozen bonus board (the first Fever layout), so rebalancing the shipped boards never
 ## moves the pieces these tests pick.
 const BONUS_BOARD := "res://tests/fixtures/boards/bonus_layout.board"
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 
-var session: Session
+var session: BoardEditSession
 var panel: PropertyPanel
 
 
 # fever.board: start pocket 1, attacker 1, tulips 1 and 2 (bonus_pockets 0 to 3).
 func _select(index: int) -> BoardLevel:
 	var level := (load(BONUS_BOARD) as BoardLevel).duplicate_level()
-	session = Session.new(level)
+	session = BoardEditSession.new(level)
 	panel = add_child_autofree(PropertyPanel.new())
 	panel.bind(session)
-	session.select([Items.make(Items.Kind.BONUS, index)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.BONUS, index)] as Array[Vector2i])
 	panel.refresh()
 	return level
 
@@ -59,7 +59,7 @@ func test_a_start_pockets_symbols_and_a_tulips_exact_position() -> void:
 	assert_false(_shown("open_seconds"))
 	panel.field("symbols").value = 7
 	assert_eq(level.bonus_pockets[0].symbols, 7)
-	session.select([Items.make(Items.Kind.BONUS, 3)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.BONUS, 3)] as Array[Vector2i])
 	panel.refresh()
 	assert_eq(panel.title(), "Tulip 2 at (485, 330)")
 	assert_false(_shown("symbols"), "a tulip has no reels")
@@ -102,7 +102,7 @@ func test_the_role_picker_turns_a_tulip_into_a_start_pocket_in_one_undo_step() -
 	assert_eq(roles, [0, 0, 1, 2], "the new start pocket sits with the start pockets")
 	var made := level.bonus_pockets[1]
 	assert_eq([made.position, made.width, made.payout], [tulip.position, tulip.width, tulip.payout])
-	assert_eq(session.selection, [Items.make(Items.Kind.BONUS, 1)] as Array[Vector2i])
+	assert_eq(session.selection, [BoardItems.make(BoardItems.Kind.BONUS, 1)] as Array[Vector2i])
 	assert_eq(panel.title(), "Start pocket 2 at (485, 330)", "a fresh id in its new list")
 	assert_true(_shown("symbols"), "a start pocket has reels")
 	assert_eq(session.history.names(), PackedStringArray(["Make bonus pocket a start pocket"]))
@@ -116,7 +116,7 @@ func test_picking_the_same_role_or_a_pin_changes_nothing() -> void:
 	var level := _select(1)
 	panel.set_role(BonusPocketSpec.Role.ATTACKER)
 	assert_eq(session.history.names().size(), 0)
-	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 0)] as Array[Vector2i])
 	panel.refresh()
 	assert_false(panel.role_picker().get_parent().visible, "a pin has no role")
 	panel.set_role(BonusPocketSpec.Role.TULIP)

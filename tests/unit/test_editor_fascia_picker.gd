@@ -2,17 +2,17 @@ extends GutTest
 ## The board dock's "Machine" row: a pachinko board's fascia picked from the five machines in
 ## one undo step, the board redrawn at once, the row hidden on a maze.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const FasciaPicker := preload("res://addons/board_editor/ui/fascia_picker.gd")
 const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 
-var session: Session
+var session: BoardEditSession
 var picker: FasciaPicker
 
 
 func _open(path: String) -> BoardLevel:
 	var level := BoardLoader.load_board(path).level.duplicate_level()
-	session = Session.new(level)
+	session = BoardEditSession.new(level)
 	picker = add_child_autofree(FasciaPicker.new())
 	picker.bind(session)
 	return level
@@ -60,6 +60,6 @@ func test_a_maze_has_no_machine_row() -> void:
 func test_the_dock_shows_the_row_for_a_pachinko_board() -> void:
 	var dock: BoardDock = add_child_autofree(BoardDock.new())
 	var level := BoardLoader.load_board("res://levels/pachinko/fever.board").level
-	dock.show_board(Session.new(level), [])
+	dock.show_board(BoardEditSession.new(level), [])
 	assert_true(dock.machine().visible)
 	assert_eq(dock.machine().picker().selected, FasciaNames.NAMES.find("neon"))

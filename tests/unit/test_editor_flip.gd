@@ -2,24 +2,24 @@ extends GutTest
 ## Mirroring existing work: flip a selection (H), add its mirror image on the other half
 ## (Shift+M), Ctrl+D in mirror mode, and the erase brush sweeping the whole stroke.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
-const Actions := preload("res://tests/unit/test_editor_actions.gd")
+const TestEditorActions := preload("res://tests/unit/test_editor_actions.gd")
 
-var session: Session
+var session: BoardEditSession
 var input: BoardInput
 
 
 func start(level: BoardLevel) -> void:
-	session = Session.new(level)
+	session = BoardEditSession.new(level)
 	input = BoardInput.new(session)
 
 
 func with_pins(points: Array[Vector2]) -> BoardLevel:
-	var level := Actions.pachinko()
+	var level := TestEditorActions.pachinko()
 	var pins := PackedVector2Array(points)
 	level.pins = pins
 	var owners := PackedInt32Array()
@@ -60,7 +60,7 @@ func mouse(at: Vector2, down: Variant = null) -> void:
 func pin_items(indices: Array[int]) -> Array[Vector2i]:
 	var items: Array[Vector2i] = []
 	for i in indices:
-		items.append(Items.make(Items.Kind.PIN, i))
+		items.append(BoardItems.make(BoardItems.Kind.PIN, i))
 	return items
 
 
@@ -84,16 +84,16 @@ func test_h_flips_the_selection_about_its_centre_in_one_step() -> void:
 	assert_eq(level.pin_ids, ids, "the pins keep their ids")
 	session.history.undo()
 	assert_eq(level.pins[1], Vector2(140, 140), "one undo flips all three back")
-	session.select([Items.make(Items.Kind.WINDMILL, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WINDMILL, 0)] as Array[Vector2i])
 	key(KEY_H)
 	assert_eq(level.windmills[0].speed, -120.0, "a flipped wheel turns back")
 
 
 func test_flipping_a_wall_reflects_both_ends() -> void:
-	var maze := Actions.maze()
+	var maze := TestEditorActions.maze()
 	maze.walls = PackedVector2Array([Vector2(35, 35), Vector2(105, 70)])
 	start(maze)
-	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WALL, 0)] as Array[Vector2i])
 	key(KEY_H)
 	assert_eq(maze.walls, PackedVector2Array([Vector2(105, 35), Vector2(35, 70)]))
 
@@ -133,19 +133,19 @@ func test_shift_m_adds_the_mirror_image_keeping_the_originals_and_existing_twins
 
 
 func test_mirror_to_the_other_half_copies_pockets_walls_and_windmills() -> void:
-	var level := Actions.pachinko()
+	var level := TestEditorActions.pachinko()
 	var wheel := WindmillSpec.driven(Vector2(200, 200), 4, 22.0, 120.0)
 	level.windmills = [wheel] as Array[WindmillSpec]
 	start(level)
-	session.select([Items.make(Items.Kind.WINDMILL, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WINDMILL, 0)] as Array[Vector2i])
 	key(KEY_M, false, true)
 	assert_eq(level.windmills.size(), 2)
 	assert_eq(level.windmills[1].position, Vector2(400, 200))
 	assert_eq(level.windmills[1].speed, -wheel.speed, "the twin turns the other way")
-	var maze := Actions.maze()
+	var maze := TestEditorActions.maze()
 	maze.walls = PackedVector2Array([Vector2(35, 35), Vector2(105, 70)])
 	start(maze)
-	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WALL, 0)] as Array[Vector2i])
 	key(KEY_M, false, true)
 	assert_eq(maze.walls.slice(2), PackedVector2Array([Vector2(315, 35), Vector2(245, 70)]))
 
@@ -191,10 +191,12 @@ func test_the_brush_sweeps_a_capsule_between_mouse_events() -> void:
 	level.kind = BoardLevel.Kind.PACHINKO
 	var hit := HitTest.along(level, Vector2(50, 100), Vector2(250, 100), 6.0)
 	assert_eq(hit, pin_items([0, 1]), "pin 1 is 9 px off the stroke: 3 px radius + 6 brush")
-	var maze := Actions.maze()
+	var maze := TestEditorActions.maze()
 	maze.walls = PackedVector2Array([Vector2(150, 20), Vector2(150, 200)])
 	var crossed := HitTest.along(maze, Vector2(100, 100), Vector2(200, 100), 1.0)
-	assert_eq(crossed, [Items.make(Items.Kind.WALL, 0)], "a wall crossed far from its ends")
+	assert_eq(
+		crossed, [BoardItems.make(BoardItems.Kind.WALL, 0)], "a wall crossed far from its ends"
+	)
 
 
 func test_align_and_space_name_their_history_step_in_words() -> void:

@@ -4,22 +4,22 @@ extends GutTest
 ## Godot's 2D tools; zoom, pan, Godot's Ctrl shortcuts and F-keys still do. A click that
 ## only brings the focus back performs no action.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Tools := preload("res://tests/unit/test_editor_tools.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const TestEditorTools := preload("res://tests/unit/test_editor_tools.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
-var session: Session
+var session: BoardEditSession
 var input: BoardInput
 
 
 func start(level: BoardLevel) -> void:
-	session = Session.new(level)
+	session = BoardEditSession.new(level)
 	input = BoardInput.new(session)
 
 
 func pins(count: int) -> BoardLevel:
-	var helper := Tools.new()
+	var helper := TestEditorTools.new()
 	var level := helper.pins(count)
 	helper.free()
 	return level
@@ -103,7 +103,7 @@ func test_godot_keeps_navigation_and_its_own_shortcuts() -> void:
 
 func test_a_click_far_off_the_board_keeps_the_board_and_clears_the_selection() -> void:
 	start(pins(2))
-	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 0)] as Array[Vector2i])
 	var far := InputEventMouseButton.new()
 	far.button_index = MOUSE_BUTTON_LEFT
 	far.position = Vector2(-500, -500)
@@ -111,7 +111,7 @@ func test_a_click_far_off_the_board_keeps_the_board_and_clears_the_selection() -
 		far.pressed = down
 		assert_true(input.handle(far, Transform2D.IDENTITY), "never Godot's: it would deselect")
 	assert_eq(session.selection.size(), 0, "the Select tool's empty click clears the selection")
-	session.set_tool(Session.Tool.PIN)
+	session.set_tool(BoardEditSession.Tool.PIN)
 	for down: bool in [true, false]:
 		far.pressed = down
 		assert_true(input.handle(far, Transform2D.IDENTITY), "the pin tool's press is kept too")
@@ -127,7 +127,7 @@ func test_copy_paste_and_duplicate_with_nothing_selected_stay_with_the_board() -
 
 func test_a_click_that_brings_the_focus_back_does_nothing_else() -> void:
 	start(pins(0))
-	session.set_tool(Session.Tool.POCKET)
+	session.set_tool(BoardEditSession.Tool.POCKET)
 	var button := InputEventMouseButton.new()
 	button.button_index = MOUSE_BUTTON_LEFT
 	button.position = Vector2(300, 400)

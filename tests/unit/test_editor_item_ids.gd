@@ -2,20 +2,20 @@ extends GutTest
 ## Stable item ids: they survive deleting a neighbour, come back with an undo, are written
 ## in the board file and read back, and the validator's messages name items by them.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
-const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
-const Tools := preload("res://tests/unit/test_editor_tools.gd")
+const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
+const TestEditorTools := preload("res://tests/unit/test_editor_tools.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 
 
 func _pins(count: int) -> BoardLevel:
-	var helper := Tools.new()
+	var helper := TestEditorTools.new()
 	var level := helper.pins(count)
 	helper.free()
 	return level
@@ -35,35 +35,35 @@ func _saveable_pins(count: int) -> BoardLevel:
 
 
 func test_ids_survive_deleting_a_neighbour_and_undo_brings_it_back() -> void:
-	var session := Session.new(_pins(5))
+	var session := BoardEditSession.new(_pins(5))
 	var level := session.level
 	assert_eq(ItemIds.of(level, "pins", 3), 4, "a board without ids numbers items in order")
-	session.select([Items.make(Items.Kind.PIN, 1)] as Array[Vector2i])
-	Commands.delete_selection(session)
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 1)] as Array[Vector2i])
+	EditCommands.delete_selection(session)
 	assert_eq(level.pins.size(), 4)
 	assert_eq(ItemIds.of(level, "pins", 2), 4, "the pin that was 4th is still pin 4")
-	assert_eq(ItemNames.name_of(level, Items.make(Items.Kind.PIN, 2)), "Pin 4")
+	assert_eq(ItemNames.name_of(level, BoardItems.make(BoardItems.Kind.PIN, 2)), "Pin 4")
 	session.history.undo()
 	assert_eq(ItemIds.of(level, "pins", 3), 4)
 	assert_eq(ItemIds.of(level, "pins", 1), 2, "undo brings pin 2 back as pin 2")
 
 
 func test_new_items_get_fresh_ids_and_the_file_keeps_them() -> void:
-	var session := Session.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
+	var session := BoardEditSession.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
 	var level := session.level
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = PackedVector2Array([Vector2(200, 200), Vector2(250, 200), Vector2(300, 200)])
 	session.commit(AddItemsAction.new(level, data, "Add pins"))
-	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
-	Commands.delete_selection(session)
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 0)] as Array[Vector2i])
+	EditCommands.delete_selection(session)
 	data["pins"] = PackedVector2Array([Vector2(300, 300)])
 	session.commit(AddItemsAction.new(level, data, "Add pin"))
 	var ids := [ItemIds.of(level, "pins", 0), ItemIds.of(level, "pins", 1)]
 	assert_eq(ids, [2, 3], "the survivors keep 2 and 3")
 	assert_eq(ItemIds.of(level, "pins", 2), 4, "the new pin gets a fresh id")
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_string_contains(text, '{"pin": {"id": 4, "x": 300, "y": 300}}')
-	var read: Dictionary = Reader.read(text)
+	var read: Dictionary = BoardTextReader.read(text)
 	var back: BoardLevel = read.get("level")
 	assert_not_null(back, str(read.get("error", "")))
 	if back != null:
@@ -71,14 +71,14 @@ func test_new_items_get_fresh_ids_and_the_file_keeps_them() -> void:
 
 
 func test_problem_messages_name_items_by_stable_id() -> void:
-	var session := Session.new(_pins(4))
+	var session := BoardEditSession.new(_pins(4))
 	var level := session.level
 	var pins := level.pins
 	pins[3] = pins[2]  # pins 3 and 4 overlap
 	level.pins = pins
 	assert_true(_has_message(level, "Pins 3 and 4 overlap."))
-	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
-	Commands.delete_selection(session)
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 0)] as Array[Vector2i])
+	EditCommands.delete_selection(session)
 	assert_true(_has_message(level, "Pins 3 and 4 overlap."), "still 3 and 4 after a delete")
 
 
@@ -90,29 +90,29 @@ func test_repeated_ids_in_a_file_are_renumbered() -> void:
 
 
 func test_deleting_the_highest_item_never_frees_its_id() -> void:
-	var session := Session.new(_saveable_pins(5))
+	var session := BoardEditSession.new(_saveable_pins(5))
 	var level := session.level
-	session.select([Items.make(Items.Kind.PIN, 4)] as Array[Vector2i])
-	Commands.delete_selection(session)
-	assert_string_contains(Writer.write(level), '{"next_ids": {"pins": 6}}')
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 4)] as Array[Vector2i])
+	EditCommands.delete_selection(session)
+	assert_string_contains(BoardTextWriter.write(level), '{"next_ids": {"pins": 6}}')
 	_add_pin(session, Vector2(300, 300))
 	assert_eq(ItemIds.of(level, "pins", 4), 6, "pin 5 was deleted: the new pin is 6, not 5")
-	assert_false(Writer.write(level).contains("next_ids"), "6 is in use: no line needed")
-	session.select([Items.make(Items.Kind.PIN, 4)] as Array[Vector2i])
-	Commands.delete_selection(session)
-	var read: Dictionary = Reader.read(Writer.write(level))
+	assert_false(BoardTextWriter.write(level).contains("next_ids"), "6 is in use: no line needed")
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 4)] as Array[Vector2i])
+	EditCommands.delete_selection(session)
+	var read: Dictionary = BoardTextReader.read(BoardTextWriter.write(level))
 	var back: BoardLevel = read.get("level")
 	assert_not_null(back, str(read.get("error", "")))
 	if back == null:
 		return
 	assert_eq(ItemIds.next_id(back, "pins"), 7, "the counter survives a save and a load")
-	var reopened := Session.new(back)
+	var reopened := BoardEditSession.new(back)
 	_add_pin(reopened, Vector2(320, 300))
 	assert_eq(ItemIds.of(back, "pins", 4), 7, "pin 6 is gone too: the next pin is 7")
 
 
 func test_undo_of_an_add_keeps_the_id_used_and_redo_gives_it_back() -> void:
-	var session := Session.new(_pins(3))
+	var session := BoardEditSession.new(_pins(3))
 	var level := session.level
 	_add_pin(session, Vector2(300, 300))
 	assert_eq(ItemIds.of(level, "pins", 3), 4)
@@ -127,11 +127,11 @@ func test_undo_of_an_add_keeps_the_id_used_and_redo_gives_it_back() -> void:
 func test_a_board_whose_counter_follows_its_ids_writes_no_counter_line() -> void:
 	var level := _pins(4)
 	ItemIds.fill(level)
-	assert_false(Writer.write(level).contains("next_ids"))
+	assert_false(BoardTextWriter.write(level).contains("next_ids"))
 
 
 func test_counters_in_a_file_are_checked() -> void:
-	var text := Writer.write(_saveable_pins(3))
+	var text := BoardTextWriter.write(_saveable_pins(3))
 	var cases := {
 		'{"next_ids": [4]}': '"next_ids" must be an object',
 		'{"next_ids": {"pegs": 4}}': '"pegs", which is not an item list',
@@ -140,17 +140,17 @@ func test_counters_in_a_file_are_checked() -> void:
 		'{"next_ids": {"pins": 2.5}}': "must be a whole number",
 	}
 	for line: String in cases:
-		var read: Dictionary = Reader.read(text + line + "\n")
+		var read: Dictionary = BoardTextReader.read(text + line + "\n")
 		assert_false(read.has("level"), line)
 		assert_string_contains(str(read.get("error", "")), cases[line])
-	var low: BoardLevel = Reader.read(text + '{"next_ids": {"pins": 2}}\n').get("level")
+	var low: BoardLevel = BoardTextReader.read(text + '{"next_ids": {"pins": 2}}\n').get("level")
 	assert_not_null(low, "a counter below the ids in use is not an error")
 	if low != null:
 		assert_eq(ItemIds.next_id(low, "pins"), 4, "it is raised past the largest id")
 
 
-func _add_pin(session: Session, at: Vector2) -> void:
-	var data := Items.empty_set()
+func _add_pin(session: BoardEditSession, at: Vector2) -> void:
+	var data := BoardItems.empty_set()
 	data["pins"] = PackedVector2Array([at])
 	session.commit(AddItemsAction.new(session.level, data, "Add pin"))
 
@@ -163,24 +163,26 @@ func _has_message(level: BoardLevel, text: String) -> bool:
 
 
 func test_the_selection_follows_its_items_by_id_when_others_are_renumbered() -> void:
-	var session := Session.new(_pins(5))
+	var session := BoardEditSession.new(_pins(5))
 	var level := session.level
 	var kept := level.pins[3]
-	session.select([Items.make(Items.Kind.PIN, 3)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 3)] as Array[Vector2i])
 	# A pin before the selected one goes (an undoable delete, as the Erase tool does it).
-	var gone: Array[Vector2i] = [Items.make(Items.Kind.PIN, 1)]
+	var gone: Array[Vector2i] = [BoardItems.make(BoardItems.Kind.PIN, 1)]
 	session.commit(DeleteItemsAction.new(level, gone))
-	assert_eq(session.selection, [Items.make(Items.Kind.PIN, 2)] as Array[Vector2i])
+	assert_eq(session.selection, [BoardItems.make(BoardItems.Kind.PIN, 2)] as Array[Vector2i])
 	assert_eq(level.pins[session.selection[0].y], kept, "still the pin that was selected")
 	session.history.undo()
 	session.prune_selection()
-	assert_eq(session.selection, [Items.make(Items.Kind.PIN, 3)] as Array[Vector2i], "undo too")
+	assert_eq(
+		session.selection, [BoardItems.make(BoardItems.Kind.PIN, 3)] as Array[Vector2i], "undo too"
+	)
 
 
 func test_a_selected_item_that_is_deleted_leaves_the_selection() -> void:
-	var session := Session.new(_pins(3))
+	var session := BoardEditSession.new(_pins(3))
 	var level := session.level
-	session.select([Items.make(Items.Kind.PIN, 0)] as Array[Vector2i])
-	var gone: Array[Vector2i] = [Items.make(Items.Kind.PIN, 0)]
+	session.select([BoardItems.make(BoardItems.Kind.PIN, 0)] as Array[Vector2i])
+	var gone: Array[Vector2i] = [BoardItems.make(BoardItems.Kind.PIN, 0)]
 	session.commit(DeleteItemsAction.new(level, gone))
 	assert_eq(session.selection, [] as Array[Vector2i], "not the pin that moved into its place")

@@ -1,22 +1,22 @@
 extends GutTest
 ## Mirror mode: one edit lands on both halves of the board.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
 const PocketAction := preload("res://addons/board_editor/actions/pocket_action.gd")
 const WallAction := preload("res://addons/board_editor/actions/wall_action.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
-const Actions := preload("res://tests/unit/test_editor_actions.gd")
+const TestEditorActions := preload("res://tests/unit/test_editor_actions.gd")
 
 
 func test_axis_is_the_ring_centre_or_the_board_middle() -> void:
-	assert_eq(Mirror.axis_of(Actions.pachinko()), 300.0)
-	assert_eq(Mirror.axis_of(Actions.maze()), 175.0)
+	assert_eq(Mirror.axis_of(TestEditorActions.pachinko()), 300.0)
+	assert_eq(Mirror.axis_of(TestEditorActions.maze()), 175.0)
 
 
 func test_mirrored_wall_and_pocket() -> void:
-	var maze := Actions.maze()
+	var maze := TestEditorActions.maze()
 	var history := ActionHistory.new()
 	history.commit(WallAction.new(maze, Vector2(35, 70), Vector2(105, 70), 175.0))
 	assert_eq(
@@ -25,7 +25,7 @@ func test_mirrored_wall_and_pocket() -> void:
 	)
 	history.undo()
 	assert_eq(maze.walls.size(), 0, "one undo removes both halves")
-	var board := Actions.pachinko()
+	var board := TestEditorActions.pachinko()
 	history.commit(PocketAction.new(board, Vector2(200, 400), 30, 24, 5, 300.0))
 	assert_eq(board.pockets.size(), 2)
 	assert_eq(board.pockets[1].position, Vector2(400, 400))
@@ -34,13 +34,13 @@ func test_mirrored_wall_and_pocket() -> void:
 
 
 func test_partners_and_erasing_both_halves() -> void:
-	var maze := Actions.maze()
+	var maze := TestEditorActions.maze()
 	maze.holes = PackedVector2Array([Vector2(50, 50), Vector2(300, 50), Vector2(175, 90)])
-	var left := Items.make(Items.Kind.HOLE, 0)
-	assert_eq(Mirror.partner(maze, left, 175.0), Items.make(Items.Kind.HOLE, 1))
+	var left := BoardItems.make(BoardItems.Kind.HOLE, 0)
+	assert_eq(Mirror.partner(maze, left, 175.0), BoardItems.make(BoardItems.Kind.HOLE, 1))
 	assert_eq(
-		Mirror.partner(maze, Items.make(Items.Kind.HOLE, 2), 175.0),
-		Items.make(Items.Kind.HOLE, 2),
+		Mirror.partner(maze, BoardItems.make(BoardItems.Kind.HOLE, 2), 175.0),
+		BoardItems.make(BoardItems.Kind.HOLE, 2),
 		"on the axis"
 	)
 	var both := Mirror.with_partners(maze, [left] as Array[Vector2i], 175.0)
@@ -48,9 +48,11 @@ func test_partners_and_erasing_both_halves() -> void:
 
 
 func test_mirrored_move_reflects_the_offset() -> void:
-	var maze := Actions.maze()
+	var maze := TestEditorActions.maze()
 	maze.holes = PackedVector2Array([Vector2(50, 50), Vector2(300, 50), Vector2(175, 90)])
-	var picked: Array[Vector2i] = [Items.make(Items.Kind.HOLE, 0), Items.make(Items.Kind.HOLE, 2)]
+	var picked: Array[Vector2i] = [
+		BoardItems.make(BoardItems.Kind.HOLE, 0), BoardItems.make(BoardItems.Kind.HOLE, 2)
+	]
 	var split := Mirror.split_for_move(maze, picked, 175.0, 50.0)
 	var move := MoveItemsAction.new(
 		maze, split["direct"], Vector2(10, 5), split["mirrored"], split["on_axis"]
@@ -62,9 +64,11 @@ func test_mirrored_move_reflects_the_offset() -> void:
 
 
 func test_dragging_the_right_half_of_a_selected_pair() -> void:
-	var maze := Actions.maze()
+	var maze := TestEditorActions.maze()
 	maze.holes = PackedVector2Array([Vector2(50, 50), Vector2(300, 50)])
-	var picked: Array[Vector2i] = [Items.make(Items.Kind.HOLE, 0), Items.make(Items.Kind.HOLE, 1)]
+	var picked: Array[Vector2i] = [
+		BoardItems.make(BoardItems.Kind.HOLE, 0), BoardItems.make(BoardItems.Kind.HOLE, 1)
+	]
 	var split := Mirror.split_for_move(maze, picked, 175.0, 300.0)
 	ActionHistory.new().commit(
 		MoveItemsAction.new(maze, split["direct"], Vector2(10, 0), split["mirrored"])

@@ -3,8 +3,8 @@ extends GutTest
 ## values shown as mixed, a typed value set on every one in one undo step (redo too), and
 ## in mirror mode their twins following.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
@@ -13,10 +13,10 @@ const AddItemsAction := preload("res://addons/board_editor/actions/add_items_act
 
 # A pachinko board with three pockets (payouts 10, 10, 4; the first two mirror twins) and two
 # field pins.
-func _session() -> Session:
-	var session := Session.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
+func _session() -> BoardEditSession:
+	var session := BoardEditSession.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
 	var axis := session.level.ring_center.x  # the mirror axis
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = PackedVector2Array([Vector2(300, 200), Vector2(320, 230)])
 	data["pockets"] = [
 		PocketSpec.create(Vector2(axis - 80, 400), 32.0, 24.0, 10),
@@ -27,7 +27,7 @@ func _session() -> Session:
 	return session
 
 
-func _panel(session: Session) -> PropertyPanel:
+func _panel(session: BoardEditSession) -> PropertyPanel:
 	var panel: PropertyPanel = add_child_autofree(PropertyPanel.new())
 	panel.bind(session)
 	return panel
@@ -36,7 +36,7 @@ func _panel(session: Session) -> PropertyPanel:
 func _pockets(indices: Array[int]) -> Array[Vector2i]:
 	var items: Array[Vector2i] = []
 	for i in indices:
-		items.append(Items.make(Items.Kind.POCKET, i))
+		items.append(BoardItems.make(BoardItems.Kind.POCKET, i))
 	return items
 
 
@@ -52,7 +52,9 @@ func test_shared_fields_with_mixed_values_are_shown_as_mixed() -> void:
 	assert_false(panel.is_mixed("depth"), "both 24 deep")
 	assert_eq(panel.field("depth").value, 24.0)
 	assert_false(panel.field("radius").get_parent().visible, "no pocket has a radius")
-	session.select([Items.make(Items.Kind.PIN, 0), Items.make(Items.Kind.POCKET, 2)])
+	session.select(
+		[BoardItems.make(BoardItems.Kind.PIN, 0), BoardItems.make(BoardItems.Kind.POCKET, 2)]
+	)
 	panel.refresh()
 	assert_false(panel.field("payout").get_parent().visible, "a pin has no payout")
 	assert_true(panel.field("x").get_parent().visible, "but both have an x")
@@ -83,7 +85,7 @@ func test_typing_sets_every_selected_item_in_one_undo_step() -> void:
 func test_a_size_change_restamps_each_pocket_and_keeps_the_pins_straight() -> void:
 	var session := _session()
 	var panel := _panel(session)
-	var pin := Items.make(Items.Kind.PIN, 1)
+	var pin := BoardItems.make(BoardItems.Kind.PIN, 1)
 	var items := _pockets([0, 2])
 	items.append(pin)
 	session.select(items)

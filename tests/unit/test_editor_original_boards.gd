@@ -2,15 +2,15 @@ extends GutTest
 ## The four original boards: valid, and exactly what the editor's actions build (the files
 ## are the output of tools/make_original_boards.gd, not hand edits).
 
-const Boards := preload("res://tools/make_original_boards.gd")
-const Mazes := preload("res://tools/make_original_mazes.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const MakeOriginalBoards := preload("res://tools/make_original_boards.gd")
+const MakeOriginalMazes := preload("res://tools/make_original_mazes.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 
 const FILES := {
-	"res://levels/pachinko/tulips.board": [Boards, "make_tulips"],
-	"res://levels/pachinko/windmills.board": [Boards, "make_windmills"],
-	"res://levels/maze/catacombs.board": [Mazes, "make_catacombs"],
-	"res://levels/maze/courtyards.board": [Mazes, "make_courtyards"],
+	"res://levels/pachinko/tulips.board": [MakeOriginalBoards, "make_tulips"],
+	"res://levels/pachinko/windmills.board": [MakeOriginalBoards, "make_windmills"],
+	"res://levels/maze/catacombs.board": [MakeOriginalMazes, "make_catacombs"],
+	"res://levels/maze/courtyards.board": [MakeOriginalMazes, "make_courtyards"],
 }
 
 
@@ -31,7 +31,7 @@ func test_files_match_what_the_editor_actions_build() -> void:
 		var saved := BoardLoader.load_board(path).level
 		built.medal_times_easy = saved.medal_times_easy
 		built.medal_times_hard = saved.medal_times_hard
-		assert_eq(FileAccess.get_file_as_string(path), Writer.write(built), path)
+		assert_eq(FileAccess.get_file_as_string(path), BoardTextWriter.write(built), path)
 
 
 func test_boards_differ_in_character() -> void:

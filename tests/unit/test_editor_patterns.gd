@@ -3,7 +3,7 @@ extends GutTest
 
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
-const Actions := preload("res://tests/unit/test_editor_actions.gd")
+const TestEditorActions := preload("res://tests/unit/test_editor_actions.gd")
 
 
 func assert_points(got: PackedVector2Array, want: Array, text: String) -> void:
@@ -84,7 +84,7 @@ func test_bad_settings_give_no_pins_and_an_error() -> void:
 
 
 func test_mirrored_pattern_adds_the_reflection_once() -> void:
-	var level := Actions.pachinko()
+	var level := TestEditorActions.pachinko()
 	var history := ActionHistory.new()
 	var settings := {"kind": "row", "count": 3, "spacing": 10.0}
 	history.commit(PatternAction.new(level, settings, Vector2(100, 100), 300.0))

@@ -7,12 +7,12 @@ extends GutTest
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 
 func _errors_after_pin(level: BoardLevel, at: Vector2) -> int:
 	var trial := level.duplicate_level()
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = PackedVector2Array([at])
 	AddItemsAction.new(trial, data, "Try").do()
 	return BoardValidator.errors(trial).size()
@@ -38,7 +38,7 @@ func test_a_pin_ghost_in_open_field_stays_green_and_crowding_still_counts() -> v
 	var open := level.ring_center + Vector2(0, -120)
 	assert_eq(_errors_after_pin(level, open), 0)
 	assert_false(HitTest.pin_blocked(level, open))
-	var data := Items.empty_set()
+	var data := BoardItems.empty_set()
 	data["pins"] = PackedVector2Array([open])
 	AddItemsAction.new(level, data, "Add").do()
 	assert_true(HitTest.pin_blocked(level, open + Vector2(4, 0)), "on top of a pin")

@@ -3,12 +3,12 @@ extends GutTest
 ## panel and saving changes exactly one line of the file, the line of that item (a pocket's
 ## rim pins are stamped from the pocket, not stored, so a pocket edit never renumbers pins).
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
 
 ## How far each field is moved: small enough to stay valid, large enough to show in the file.
 const STEP := {
@@ -35,7 +35,7 @@ const STEP := {
 
 func _load(path: String) -> BoardLevel:
 	if not path.begins_with("res://"):
-		var read: Dictionary = Reader.read(path)  # board text (a board made in the test)
+		var read: Dictionary = BoardTextReader.read(path)  # board text (a board made in the test)
 		assert_not_null(read.get("level"), str(read.get("error", "")))
 		return read.get("level")
 	var result := BoardLoader.load_board(path)
@@ -65,15 +65,15 @@ func _check_each_field(path: String, item: Vector2i, line_start: String) -> void
 	assert_false(fields.is_empty(), "%s has item %s" % [path, item])
 	for key: String in fields:
 		var level := _load(path)
-		var session := Session.new(level)
-		var before := Writer.write(level)
+		var session := BoardEditSession.new(level)
+		var before := BoardTextWriter.write(level)
 		var value: float = fields[key]
 		var action := ItemProperties.action_for(level, item, key, value + STEP[key])
 		assert_not_null(action, "%s: field %s gives an edit" % [path, key])
 		if action == null:
 			continue
 		session.commit(action)
-		var changed := _changed_lines(before, Writer.write(level))
+		var changed := _changed_lines(before, BoardTextWriter.write(level))
 		assert_eq(changed.size(), 1, "%s: setting %s of %s changes one line" % [path, key, item])
 		if changed.size() == 1:
 			assert_true(
@@ -83,7 +83,7 @@ func _check_each_field(path: String, item: Vector2i, line_start: String) -> void
 					% [path, line_start, changed[0]]
 				)
 			)
-		var read: Dictionary = Reader.read(Writer.write(level))
+		var read: Dictionary = BoardTextReader.read(BoardTextWriter.write(level))
 		assert_not_null(read.get("level"), "%s: the edited file reads back" % path)
 
 
@@ -92,7 +92,7 @@ func test_each_field_of_a_pin_changes_only_its_line() -> void:
 	var id := ItemIds.of(level, "pins", 5)
 	_check_each_field(
 		"res://levels/pachinko/classic.board",
-		Items.make(Items.Kind.PIN, 5),
+		BoardItems.make(BoardItems.Kind.PIN, 5),
 		'{"pin": {"id": %d, ' % id
 	)
 
@@ -102,18 +102,18 @@ func test_each_field_of_a_pocket_changes_only_its_line() -> void:
 	var id := ItemIds.of(level, "pockets", 1)
 	_check_each_field(
 		"res://levels/pachinko/classic.board",
-		Items.make(Items.Kind.POCKET, 1),
+		BoardItems.make(BoardItems.Kind.POCKET, 1),
 		'{"pocket": {"id": %d, ' % id
 	)
 
 
 func test_a_payout_change_is_a_one_line_diff() -> void:
 	var level := _load("res://levels/pachinko/classic.board")
-	var session := Session.new(level)
-	var before := Writer.write(level)
-	var pocket := Items.make(Items.Kind.POCKET, 1)
+	var session := BoardEditSession.new(level)
+	var before := BoardTextWriter.write(level)
+	var pocket := BoardItems.make(BoardItems.Kind.POCKET, 1)
 	session.commit(ItemProperties.action_for(level, pocket, "payout", 4.0))
-	var changed := _changed_lines(before, Writer.write(level))
+	var changed := _changed_lines(before, BoardTextWriter.write(level))
 	assert_eq(
 		changed,
 		PackedStringArray(
@@ -132,7 +132,7 @@ func test_each_field_of_each_bonus_pocket_changes_only_its_line() -> void:
 			continue
 		seen[spec.role] = true
 		var start := '{"%s": {"id": %d, ' % [spec.role_key(), ItemIds.of_bonus(level, i)]
-		_check_each_field(path, Items.make(Items.Kind.BONUS, i), start)
+		_check_each_field(path, BoardItems.make(BoardItems.Kind.BONUS, i), start)
 	assert_eq(seen.size(), 3, "Fever has every bonus role")
 
 
@@ -140,27 +140,27 @@ func test_each_field_of_each_maze_item_changes_only_its_line() -> void:
 	var path := "res://levels/maze/classic.board"
 	var level := _load(path)
 	var cases := [
-		[Items.Kind.WALL, "walls", "wall"],
-		[Items.Kind.HOLE, "holes", "hole"],
-		[Items.Kind.START, "ball_starts", "ball_start"],
+		[BoardItems.Kind.WALL, "walls", "wall"],
+		[BoardItems.Kind.HOLE, "holes", "hole"],
+		[BoardItems.Kind.START, "ball_starts", "ball_start"],
 	]
 	for entry: Array in cases:
 		var id := ItemIds.of(level, entry[1], 1)
-		_check_each_field(path, Items.make(entry[0], 1), '{"%s": {"id": %d, ' % [entry[2], id])
+		_check_each_field(path, BoardItems.make(entry[0], 1), '{"%s": {"id": %d, ' % [entry[2], id])
 
 
 func test_goal_fields_change_only_their_header_line() -> void:
 	var path := "res://levels/maze/classic.board"
-	var goal := Items.make(Items.Kind.GOAL, 0)
+	var goal := BoardItems.make(BoardItems.Kind.GOAL, 0)
 	var level := _load(path)
 	for key: String in ["x", "y", "radius"]:
 		level = _load(path)
-		var session := Session.new(level)
-		var before := Writer.write(level)
+		var session := BoardEditSession.new(level)
+		var before := BoardTextWriter.write(level)
 		var fields := ItemProperties.values_of(level, goal)
 		var value: float = fields[key]
 		session.commit(ItemProperties.action_for(level, goal, key, value + STEP[key]))
-		var changed := _changed_lines(before, Writer.write(level))
+		var changed := _changed_lines(before, BoardTextWriter.write(level))
 		var line := '{"goal_radius": ' if key == "radius" else '{"goal_center": '
 		assert_eq(changed.size(), 1, "goal %s: one line" % key)
 		if changed.size() == 1:
@@ -169,9 +169,9 @@ func test_goal_fields_change_only_their_header_line() -> void:
 
 func test_editing_a_pocket_keeps_every_pin_id() -> void:
 	var level := _load("res://levels/pachinko/tulips.board")
-	var session := Session.new(level)
+	var session := BoardEditSession.new(level)
 	var ids_before := _field_pin_ids(level)
-	var pocket := Items.make(Items.Kind.POCKET, 0)
+	var pocket := BoardItems.make(BoardItems.Kind.POCKET, 0)
 	var width: float = ItemProperties.values_of(level, pocket)["width"]
 	session.commit(ItemProperties.action_for(level, pocket, "width", width + 10.0))
 	assert_eq(_field_pin_ids(level), ids_before, "a wider pocket renumbers no pin")
@@ -184,7 +184,7 @@ func test_editing_a_pocket_keeps_every_pin_id() -> void:
 
 func test_files_with_stored_rim_pins_still_load_the_same_board() -> void:
 	var level := _load("res://levels/pachinko/classic.board")
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	# An older file: the first pocket's rim pins written out with their pocket index.
 	var rim := PocketStamp.rim_pins(level.pockets[0], level.pin_radius, level.ball_radius)
 	var lines := PackedStringArray()
@@ -194,24 +194,24 @@ func test_files_with_stored_rim_pins_still_load_the_same_board() -> void:
 				'{"pin": {"id": %d, "x": %s, "y": %s, "pocket": 0%s}}'
 				% [
 					900 + i,
-					Writer.number(rim[i].x),
-					Writer.number(rim[i].y),
+					BoardTextWriter.number(rim[i].x),
+					BoardTextWriter.number(rim[i].y),
 					', "special": true' if i == rim.size() - 1 else ""
 				]
 			)
 		)
 	var old := text.replace('{"pocket": {"id": 1,', "\n".join(lines) + '\n{"pocket": {"id": 1,')
-	var read: Dictionary = Reader.read(old)
+	var read: Dictionary = BoardTextReader.read(old)
 	var back: BoardLevel = read.get("level")
 	assert_not_null(back, str(read.get("error", "")))
 	if back != null:
 		assert_eq(back.pins, level.pins, "the same pins, stamped from the pockets")
-		assert_eq(Writer.write(back), text, "and saved, the stored rim pins are gone")
+		assert_eq(BoardTextWriter.write(back), text, "and saved, the stored rim pins are gone")
 
 
 func test_a_rim_pin_is_named_by_its_pocket() -> void:
 	var level := _load("res://levels/pachinko/classic.board")
-	var rim := Items.pocket_pins(level, 2)
+	var rim := BoardItems.pocket_pins(level, 2)
 	assert_eq(ItemIds.of(level, "pins", rim[0]), 0, "a rim pin has no id of its own")
 	assert_eq(ItemIds.pin_label(level, rim[0]), "a pin of pocket 3's rim")
 
@@ -226,8 +226,8 @@ func _field_pin_ids(level: BoardLevel) -> Dictionary:
 
 func test_a_pocket_outside_the_ring_is_one_error_naming_the_pocket() -> void:
 	var level := _load("res://levels/pachinko/classic.board")
-	var session := Session.new(level)
-	var pocket := Items.make(Items.Kind.POCKET, 1)
+	var session := BoardEditSession.new(level)
+	var pocket := BoardItems.make(BoardItems.Kind.POCKET, 1)
 	session.commit(ItemProperties.action_for(level, pocket, "x", 15.0))
 	var errors := BoardValidator.errors(level)
 	var messages := PackedStringArray()
@@ -238,16 +238,16 @@ func test_a_pocket_outside_the_ring_is_one_error_naming_the_pocket() -> void:
 
 func test_a_duplicated_pocket_never_overlaps_its_original() -> void:
 	var level := _load("res://levels/pachinko/classic.board")
-	var session := Session.new(level)
+	var session := BoardEditSession.new(level)
 	var errors_before := BoardValidator.errors(level).size()
-	session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
-	assert_true(Commands.duplicate_selection(session))
+	session.select([BoardItems.make(BoardItems.Kind.POCKET, 0)] as Array[Vector2i])
+	assert_true(EditCommands.duplicate_selection(session))
 	assert_eq(level.pockets.size(), 6)
 	var gap := level.pockets[5].position.x - level.pockets[0].position.x
 	assert_gte(gap, level.pockets[0].width + level.ball_radius * 2.0, "a ball clear of it")
 	var nearest := INF
-	for a in Items.pocket_pins(level, 0):
-		for b in Items.pocket_pins(level, 5):
+	for a in BoardItems.pocket_pins(level, 0):
+		for b in BoardItems.pocket_pins(level, 5):
 			nearest = minf(nearest, level.pins[a].distance_to(level.pins[b]))
 	var clear := nearest - level.pin_radius * 2.0
 	assert_gte(clear, level.ball_radius * 2.0, "the rims leave a ball's width between them")
@@ -260,5 +260,5 @@ func test_each_field_of_a_windmill_changes_only_its_line() -> void:
 	wheel.position = Vector2(350, 470)
 	level.windmills = [wheel] as Array[WindmillSpec]
 	ItemIds.fill(level)
-	var text := Writer.write(level)
-	_check_each_field(text, Items.make(Items.Kind.WINDMILL, 0), '{"windmill": {"id": 1, ')
+	var text := BoardTextWriter.write(level)
+	_check_each_field(text, BoardItems.make(BoardItems.Kind.WINDMILL, 0), '{"windmill": {"id": 1, ')

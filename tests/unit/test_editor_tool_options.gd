@@ -3,17 +3,17 @@ extends GutTest
 ## placed through three points and takes the pin count alone (its radius field did nothing
 ## after three-point arcs came in), rows belong to the lattice.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const ToolOptions := preload("res://addons/board_editor/ui/tool_options.gd")
 const PatternAction := preload("res://addons/board_editor/actions/pattern_action.gd")
 
-var session: Session
+var session: BoardEditSession
 var options: ToolOptions
 
 
 func before_each() -> void:
 	var level := BoardLoader.load_board("res://levels/pachinko/classic.board").level
-	session = Session.new(level.duplicate_level())
+	session = BoardEditSession.new(level.duplicate_level())
 	options = add_child_autofree(ToolOptions.new())
 	options.bind(session)
 

@@ -2,18 +2,18 @@ extends GutTest
 ## The editor's tools and keys driven the way the plugin drives them: events in, actions
 ## committed to a history, the board and the selection checked after each step.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const BoardOverlay := preload("res://addons/board_editor/ui/board_overlay.gd")
-const Actions := preload("res://tests/unit/test_editor_actions.gd")
+const TestEditorActions := preload("res://tests/unit/test_editor_actions.gd")
 
-var session: Session
+var session: BoardEditSession
 var input: BoardInput
 
 
 func start(level: BoardLevel) -> void:
-	session = Session.new(level)
+	session = BoardEditSession.new(level)
 	input = BoardInput.new(session)
 
 
@@ -49,7 +49,7 @@ func key(code: Key, ctrl := false, shift := false) -> bool:
 
 
 func pins(count: int) -> BoardLevel:
-	var level := Actions.pachinko()
+	var level := TestEditorActions.pachinko()
 	for i in count:
 		level.pins.append(Vector2(100 + i * 20, 100))
 	level.pins = level.pins
@@ -60,7 +60,7 @@ func pins(count: int) -> BoardLevel:
 
 
 func test_pin_tool_places_a_snapped_pin_and_undo_removes_it() -> void:
-	start(Actions.pachinko())
+	start(TestEditorActions.pachinko())
 	assert_true(key(KEY_P), "P picks the pin tool")
 	click(Vector2(103, 208))
 	assert_eq(
@@ -73,10 +73,10 @@ func test_pin_tool_places_a_snapped_pin_and_undo_removes_it() -> void:
 
 
 func test_mirror_mode_places_both_halves() -> void:
-	start(Actions.pachinko())
+	start(TestEditorActions.pachinko())
 	key(KEY_M)
 	assert_true(session.mirror_enabled)
-	session.set_tool(Session.Tool.PIN)
+	session.set_tool(BoardEditSession.Tool.PIN)
 	click(Vector2(100, 100))
 	assert_eq(session.level.pins, PackedVector2Array([Vector2(100, 100), Vector2(500, 100)]))
 
@@ -143,7 +143,7 @@ func test_delete_copy_paste_duplicate_and_nudge() -> void:
 
 
 func test_wall_tool_drags_a_snapped_straight_wall() -> void:
-	start(Actions.maze())
+	start(TestEditorActions.maze())
 	assert_true(key(KEY_L))
 	press(Vector2(37, 33), true)
 	move(Vector2(100, 40))
@@ -156,7 +156,7 @@ func test_wall_tool_drags_a_snapped_straight_wall() -> void:
 
 
 func test_maze_places_holes_starts_and_goal_in_cells() -> void:
-	start(Actions.maze())
+	start(TestEditorActions.maze())
 	key(KEY_O)
 	click(Vector2(40, 40))
 	key(KEY_B)
@@ -189,7 +189,7 @@ func test_erase_tool_and_handles() -> void:
 func test_every_tool_and_the_overlay_draw_without_errors() -> void:
 	var canvas: Control = add_child_autofree(Control.new())
 	var painted := [0]
-	for level: BoardLevel in [Actions.pachinko(), Actions.maze()]:
+	for level: BoardLevel in [TestEditorActions.pachinko(), TestEditorActions.maze()]:
 		start(level)
 		session.level.pins = PackedVector2Array([Vector2(120, 100)])
 		session.level.pin_pocket = PackedInt32Array([-1])

@@ -2,16 +2,16 @@ extends GutTest
 ## The end dots of a selected wall are handles: dragging one moves that end of that wall
 ## only (never the whole wall, never the other wall sharing the corner), in one undo step.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
-const Tools := preload("res://tests/unit/test_editor_tools.gd")
-const Actions := preload("res://tests/unit/test_editor_actions.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
+const TestEditorTools := preload("res://tests/unit/test_editor_tools.gd")
+const TestEditorActions := preload("res://tests/unit/test_editor_actions.gd")
 
-var _helper: Tools
+var _helper: TestEditorTools
 
 
 func before_each() -> void:
-	_helper = Tools.new()
+	_helper = TestEditorTools.new()
 
 
 func after_each() -> void:
@@ -20,7 +20,7 @@ func after_each() -> void:
 
 # Two walls meeting at (105, 105): an L.
 func _corner_board() -> BoardLevel:
-	var level := Actions.maze()
+	var level := TestEditorActions.maze()
 	level.walls = PackedVector2Array(
 		[Vector2(35, 105), Vector2(105, 105), Vector2(105, 105), Vector2(105, 35)]
 	)
@@ -32,7 +32,7 @@ func test_dragging_a_selected_walls_end_moves_only_that_end() -> void:
 	_helper.start(_corner_board())
 	var session := _helper.session
 	session.set_snap(false)
-	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WALL, 0)] as Array[Vector2i])
 	_helper.press(Vector2(105, 105), true)
 	_helper.move(Vector2(120, 110))
 	_helper.move(Vector2(140, 115))
@@ -42,7 +42,7 @@ func test_dragging_a_selected_walls_end_moves_only_that_end() -> void:
 	assert_eq(walls[1], Vector2(140, 115), "the dragged end follows the mouse")
 	assert_eq(walls[2], Vector2(105, 105), "the other wall at the corner stays")
 	assert_eq(walls[3], Vector2(105, 35))
-	assert_eq(session.selection, [Items.make(Items.Kind.WALL, 0)], "still selected")
+	assert_eq(session.selection, [BoardItems.make(BoardItems.Kind.WALL, 0)], "still selected")
 	assert_eq(session.history.names()[-1], "Move wall end", "one step named for what it did")
 	session.history.undo()
 	assert_eq(session.level.walls[1], Vector2(105, 105), "one undo puts the end back")
@@ -51,7 +51,7 @@ func test_dragging_a_selected_walls_end_moves_only_that_end() -> void:
 func test_with_the_second_wall_selected_its_end_moves_instead() -> void:
 	_helper.start(_corner_board())
 	var session := _helper.session
-	session.select([Items.make(Items.Kind.WALL, 1)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WALL, 1)] as Array[Vector2i])
 	_helper.press(Vector2(106, 104), true)
 	_helper.move(Vector2(130, 104))
 	_helper.move(Vector2(141, 104))
@@ -66,7 +66,7 @@ func test_a_press_on_the_walls_round_cap_beside_the_dot_grabs_the_end() -> void:
 	_helper.start(_corner_board())
 	var session := _helper.session
 	session.set_snap(false)
-	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WALL, 0)] as Array[Vector2i])
 	# 10 px from the end dot at (105, 105): on the 10 px wall's cap, past the 8 px pick.
 	_helper.press(Vector2(113, 111), true)
 	_helper.move(Vector2(125, 115))
@@ -81,7 +81,7 @@ func test_dragging_the_middle_of_a_wall_still_moves_the_whole_wall() -> void:
 	_helper.start(_corner_board())
 	var session := _helper.session
 	session.set_snap(false)
-	session.select([Items.make(Items.Kind.WALL, 0)] as Array[Vector2i])
+	session.select([BoardItems.make(BoardItems.Kind.WALL, 0)] as Array[Vector2i])
 	_helper.press(Vector2(70, 105), true)
 	_helper.move(Vector2(70, 120))
 	_helper.move(Vector2(70, 125))
@@ -97,17 +97,19 @@ func test_erase_on_a_ball_start_over_a_wall_erases_the_start() -> void:
 	ItemIds.fill(level)
 	_helper.start(level)
 	var session := _helper.session
-	session.set_tool(Session.Tool.ERASE)
+	session.set_tool(BoardEditSession.Tool.ERASE)
 	_helper.click(Vector2(70, 106))  # inside the start, and deeper inside the wall
 	assert_eq(session.level.ball_starts.size(), 0, "the start is gone")
-	assert_eq(Items.wall_count(session.level.walls), 2, "the wall under it stays")
+	assert_eq(BoardItems.wall_count(session.level.walls), 2, "the wall under it stays")
 
 
 func test_with_both_walls_selected_a_drag_at_the_corner_moves_both() -> void:
 	_helper.start(_corner_board())
 	var session := _helper.session
 	session.set_snap(false)
-	var both: Array[Vector2i] = [Items.make(Items.Kind.WALL, 0), Items.make(Items.Kind.WALL, 1)]
+	var both: Array[Vector2i] = [
+		BoardItems.make(BoardItems.Kind.WALL, 0), BoardItems.make(BoardItems.Kind.WALL, 1)
+	]
 	session.select(both)
 	_helper.press(Vector2(105, 105), true)
 	_helper.move(Vector2(110, 105))
@@ -121,13 +123,13 @@ func test_ghosts_turn_red_where_a_click_would_add_an_error() -> void:
 	var level := _load_board("res://levels/pachinko/classic.board")
 	_helper.start(level)
 	var session := _helper.session
-	session.set_tool(Session.Tool.POCKET)
+	session.set_tool(BoardEditSession.Tool.POCKET)
 	var pockets: Variant = _helper.input.active_tool()
 	assert_false(pockets.would_add_error(Vector2(350, 200)), "a clear spot stays green")
 	assert_true(pockets.would_add_error(Vector2(5, 350)), "outside the ring is red")
 	var maze := _load_board("res://levels/maze/classic.board")
 	_helper.start(maze)
-	_helper.session.set_tool(Session.Tool.HOLE)
+	_helper.session.set_tool(BoardEditSession.Tool.HOLE)
 	var holes: Variant = _helper.input.active_tool()
 	assert_true(holes.would_add_error(maze.ball_starts[0]), "a hole on a ball start is red")
 	assert_eq(maze.holes.size(), 8, "asking never changes the board")
@@ -136,7 +138,7 @@ func test_ghosts_turn_red_where_a_click_would_add_an_error() -> void:
 func test_the_goal_ghost_turns_red_over_walls_starts_and_holes() -> void:
 	var maze := _load_board("res://levels/maze/classic.board")
 	_helper.start(maze)
-	_helper.session.set_tool(Session.Tool.GOAL)
+	_helper.session.set_tool(BoardEditSession.Tool.GOAL)
 	var goal: Variant = _helper.input.active_tool()
 	assert_false(goal.would_add_error(maze.goal_center), "where it is now: clear")
 	assert_true(goal.would_add_error(maze.ball_starts[0]), "on a ball start")

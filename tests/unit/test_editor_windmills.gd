@@ -4,24 +4,24 @@ extends GutTest
 ## blades, speed or free spin, erase removes it; each gesture one undo step, ids kept, and
 ## the file written as the game reads it.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/pachinko/classic.board"
 const SPOT := Vector2(300, 260)
 
-var session: Session
+var session: BoardEditSession
 var input: BoardInput
 
 
 func _open() -> BoardLevel:
-	var level: BoardLevel = Reader.read(FileAccess.get_file_as_string(CLASSIC))["level"]
-	session = Session.new(level)
+	var level: BoardLevel = BoardTextReader.read(FileAccess.get_file_as_string(CLASSIC))["level"]
+	session = BoardEditSession.new(level)
 	input = BoardInput.new(session)
 	session.snap_enabled = false
 	return level
@@ -52,19 +52,19 @@ func _drag(from: Vector2, to: Vector2) -> void:
 
 func test_the_windmill_tool_places_one_in_one_undo_step() -> void:
 	var level := _open()
-	assert_true(session.available_tools().has(Session.Tool.WINDMILL))
-	session.set_tool(Session.Tool.WINDMILL)
+	assert_true(session.available_tools().has(BoardEditSession.Tool.WINDMILL))
+	session.set_tool(BoardEditSession.Tool.WINDMILL)
 	_click(SPOT)
 	assert_eq(level.windmills.size(), 1)
 	var spec := level.windmills[0]
 	assert_eq(spec.position, SPOT)
 	assert_false(spec.free_spin)
 	assert_eq(spec.speed, WindmillSpec.DEFAULT_SPEED)
-	assert_eq(session.selection, [Items.make(Items.Kind.WINDMILL, 0)] as Array[Vector2i])
+	assert_eq(session.selection, [BoardItems.make(BoardItems.Kind.WINDMILL, 0)] as Array[Vector2i])
 	assert_eq(ItemNames.name_of(level, session.selection[0]), "Windmill 1")
 	assert_eq(Layers.of_item(session.selection[0]), "Windmills")
 	assert_string_contains(
-		Writer.write(level),
+		BoardTextWriter.write(level),
 		'{"windmill": {"id": 1, "x": 300, "y": 260, "blades": 4, "length": 22, "speed": 120}}'
 	)
 	session.history.undo()
@@ -76,7 +76,7 @@ func test_the_windmill_tool_places_one_in_one_undo_step() -> void:
 func test_mirror_mode_places_a_twin_that_turns_the_other_way() -> void:
 	var level := _open()
 	session.mirror_enabled = true
-	session.set_tool(Session.Tool.WINDMILL)
+	session.set_tool(BoardEditSession.Tool.WINDMILL)
 	_click(SPOT)
 	assert_eq(level.windmills.size(), 2)
 	assert_eq(level.windmills[1].position, Vector2(400, 260))
@@ -85,21 +85,21 @@ func test_mirror_mode_places_a_twin_that_turns_the_other_way() -> void:
 
 func test_select_drags_a_windmill_and_undo_puts_it_back() -> void:
 	var level := _open()
-	session.set_tool(Session.Tool.WINDMILL)
+	session.set_tool(BoardEditSession.Tool.WINDMILL)
 	_click(SPOT)
-	session.set_tool(Session.Tool.SELECT)
+	session.set_tool(BoardEditSession.Tool.SELECT)
 	_drag(SPOT + Vector2(3, 3), SPOT + Vector2(33, 23))
 	assert_eq(level.windmills[0].position, SPOT + Vector2(30, 20))
 	session.history.undo()
 	assert_eq(level.windmills[0].position, SPOT, "the same object, moved back")
-	assert_eq(Writer.write(level).count('"windmill"'), 1)
+	assert_eq(BoardTextWriter.write(level).count('"windmill"'), 1)
 
 
 func test_the_property_fields_edit_a_windmill_with_undo() -> void:
 	var level := _open()
-	session.set_tool(Session.Tool.WINDMILL)
+	session.set_tool(BoardEditSession.Tool.WINDMILL)
 	_click(SPOT)
-	var item := Items.make(Items.Kind.WINDMILL, 0)
+	var item := BoardItems.make(BoardItems.Kind.WINDMILL, 0)
 	var fields := ItemProperties.values_of(level, item)
 	assert_eq(fields.keys(), ["x", "y", "blades", "length", "free", "speed"])
 	session.commit(ItemProperties.action_for(level, item, "blades", 6.0))
@@ -108,7 +108,7 @@ func test_the_property_fields_edit_a_windmill_with_undo() -> void:
 	assert_true(level.windmills[0].free_spin)
 	assert_true(ItemProperties.values_of(level, item).has("friction"), "a free wheel's friction")
 	session.commit(ItemProperties.action_for(level, item, "friction", 90.0))
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_string_contains(text, '"blades": 6, "length": 22, "friction": 90}}')
 	session.history.undo()
 	session.history.undo()
@@ -120,16 +120,16 @@ func test_the_property_fields_edit_a_windmill_with_undo() -> void:
 
 func test_erase_removes_a_windmill_and_its_id_is_not_reused() -> void:
 	var level := _open()
-	session.set_tool(Session.Tool.WINDMILL)
+	session.set_tool(BoardEditSession.Tool.WINDMILL)
 	_click(SPOT)
 	_click(SPOT + Vector2(100, 0))
-	session.set_tool(Session.Tool.ERASE)
+	session.set_tool(BoardEditSession.Tool.ERASE)
 	_click(SPOT + Vector2(100, 5))
 	assert_eq(level.windmills.size(), 1)
 	assert_eq(level.windmills[0].position, SPOT)
-	session.set_tool(Session.Tool.WINDMILL)
+	session.set_tool(BoardEditSession.Tool.WINDMILL)
 	_click(SPOT + Vector2(0, 100))
-	assert_eq(ItemNames.name_of(level, Items.make(Items.Kind.WINDMILL, 1)), "Windmill 3")
+	assert_eq(ItemNames.name_of(level, BoardItems.make(BoardItems.Kind.WINDMILL, 1)), "Windmill 3")
 	session.history.undo()
 	session.history.undo()
 	assert_eq(level.windmills.size(), 2, "erase undone")

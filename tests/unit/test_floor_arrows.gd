@@ -4,26 +4,26 @@ extends GutTest
 ## property panel turns it, erase removes it, each one undo step; the board file keeps it;
 ## the 2D painter and the maze's 3D floor draw it.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 const Shortcuts := preload("res://addons/board_editor/ui/shortcuts.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const FIXTURE := "res://tests/fixtures/boards/floor_arrows.board"
 const SPOT := Vector2(52.5, 52.5)
 
-var session: Session
+var session: BoardEditSession
 var input: BoardInput
 var kind := ItemKinds.of_list("floor_arrows")
 
 
 func _open(path := "res://levels/maze/first_roll.board") -> BoardLevel:
-	var level: BoardLevel = Reader.read(FileAccess.get_file_as_string(path))["level"]
-	session = Session.new(level)
+	var level: BoardLevel = BoardTextReader.read(FileAccess.get_file_as_string(path))["level"]
+	session = BoardEditSession.new(level)
 	input = BoardInput.new(session)
 	session.snap_enabled = false
 	return level
@@ -44,7 +44,7 @@ func _click(at: Vector2) -> void:
 
 # The tool the floor arrow row brings.
 func _arrow_tool() -> int:
-	var rows := Session.row_tools()
+	var rows := BoardEditSession.row_tools()
 	for tool: int in rows:
 		if rows[tool] == kind:
 			return tool
@@ -69,13 +69,13 @@ func test_the_tool_places_one_in_one_undo_step_and_the_file_keeps_it() -> void:
 	_click(SPOT)
 	assert_eq(level.floor_arrows.size(), 1)
 	assert_eq(level.floor_arrows[0].position, SPOT)
-	var item := Items.make(kind.pick, 0)
+	var item := BoardItems.make(kind.pick, 0)
 	assert_eq(session.selection, [item] as Array[Vector2i])
 	assert_eq(ItemNames.name_of(level, item), "Floor arrow 1")
 	assert_eq(session.history.names()[-1], "Add floor arrow")
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_string_contains(text, '{"floor_arrow": {"id": 1, "x": 52.5, "y": 52.5, "angle": 0}}')
-	var back: BoardLevel = Reader.read(text)["level"]
+	var back: BoardLevel = BoardTextReader.read(text)["level"]
 	assert_eq(back.floor_arrows[0].position, SPOT, "read back where it was placed")
 	session.history.undo()
 	assert_eq(level.floor_arrows.size(), 0)
@@ -93,7 +93,7 @@ func test_mirror_mode_paints_a_twin_pointing_the_other_way() -> void:
 
 func test_the_angle_field_turns_it_and_undo_turns_it_back() -> void:
 	var level := _open(FIXTURE)
-	var item := Items.make(kind.pick, 1)
+	var item := BoardItems.make(kind.pick, 1)
 	assert_eq(ItemProperties.values_of(level, item).keys(), ["x", "y", "angle"])
 	session.commit(ItemProperties.action_for(level, item, "angle", 90.0))
 	assert_eq(level.floor_arrows[1].angle, 90.0)
@@ -105,7 +105,7 @@ func test_the_angle_field_turns_it_and_undo_turns_it_back() -> void:
 func test_select_drags_it_and_erase_removes_it() -> void:
 	var level := _open(FIXTURE)
 	var at := level.floor_arrows[0].position
-	session.set_tool(Session.Tool.SELECT)
+	session.set_tool(BoardEditSession.Tool.SELECT)
 	_press(at, true)
 	for step in [0.5, 1.0]:
 		var motion := InputEventMouseMotion.new()
@@ -114,7 +114,7 @@ func test_select_drags_it_and_erase_removes_it() -> void:
 		input.handle(motion, Transform2D.IDENTITY)
 	_press(at + Vector2(0, 10), false)
 	assert_eq(level.floor_arrows[0].position, at + Vector2(0, 10))
-	session.set_tool(Session.Tool.ERASE)
+	session.set_tool(BoardEditSession.Tool.ERASE)
 	_click(at + Vector2(0, 10))
 	assert_eq(level.floor_arrows.size(), 2)
 	session.history.undo()
@@ -122,7 +122,7 @@ func test_select_drags_it_and_erase_removes_it() -> void:
 
 
 func test_the_maze_floor_paints_each_arrow_flat_on_the_floor() -> void:
-	var level: BoardLevel = Reader.read(FileAccess.get_file_as_string(FIXTURE))["level"]
+	var level: BoardLevel = BoardTextReader.read(FileAccess.get_file_as_string(FIXTURE))["level"]
 	var mesh := MazeFloorArrows.arrows_mesh(level)
 	assert_not_null(mesh)
 	var corners: PackedVector3Array = mesh.surface_get_arrays(0)[Mesh.ARRAY_VERTEX]
@@ -134,7 +134,7 @@ func test_the_maze_floor_paints_each_arrow_flat_on_the_floor() -> void:
 
 
 func test_the_board_painter_draws_them_on_their_layer() -> void:
-	var level: BoardLevel = Reader.read(FileAccess.get_file_as_string(FIXTURE))["level"]
+	var level: BoardLevel = BoardTextReader.read(FileAccess.get_file_as_string(FIXTURE))["level"]
 	var canvas: Control = add_child_autofree(Control.new())
 	var drawn := [0]
 	var paint := func() -> void:

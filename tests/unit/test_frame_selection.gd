@@ -3,7 +3,7 @@ extends GutTest
 ## with nothing selected), never the BoardNode's origin (0, 0) that Godot's own framing used.
 
 const FrameSelection := preload("res://addons/board_editor/ui/frame_selection.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 
 
 func _classic() -> BoardLevel:
@@ -12,8 +12,8 @@ func _classic() -> BoardLevel:
 
 func test_the_selected_items_are_framed_not_the_origin() -> void:
 	var level := _classic()
-	var a := Items.make(Items.Kind.PIN, 10)
-	var b := Items.make(Items.Kind.PIN, 40)
+	var a := BoardItems.make(BoardItems.Kind.PIN, 10)
+	var b := BoardItems.make(BoardItems.Kind.PIN, 40)
 	var area := FrameSelection.area(level, [a, b] as Array[Vector2i])
 	var both := Rect2(level.pins[10], Vector2.ZERO).expand(level.pins[40])
 	assert_true(area.encloses(both), "both pins in the frame")

@@ -3,7 +3,7 @@ extends GutTest
 ## field once, and the table agrees with what it replaced (the id lists' order, which the
 ## board file's counters line is written in, and the editor's picks).
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 
 
@@ -56,12 +56,12 @@ func test_the_shapes_match_the_fields_they_read() -> void:
 
 
 func test_every_editor_pick_has_a_row() -> void:
-	for pick: int in Items.Kind.values():
-		assert_not_null(ItemKinds.of_pick(pick), "pick %s" % Items.Kind.keys()[pick])
+	for pick: int in BoardItems.Kind.values():
+		assert_not_null(ItemKinds.of_pick(pick), "pick %s" % BoardItems.Kind.keys()[pick])
 	for role: int in BonusPocketSpec.Role.values():
 		var kind := ItemKinds.of_role(role)
 		assert_eq(kind.name, BonusPocketSpec.ROLE_KEYS[role])
-		assert_eq(kind.pick, Items.Kind.BONUS)
+		assert_eq(kind.pick, BoardItems.Kind.BONUS)
 
 
 func test_every_row_is_on_an_editor_layer_the_board_painter_draws() -> void:

@@ -8,18 +8,18 @@ extends GutTest
 ## keeps the undone add's id spent. The goal, which cannot be added or deleted, is
 ## box-selected, moved and mirrored.
 
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemKeys := preload("res://addons/board_editor/core/item_keys.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
-const Commands := preload("res://addons/board_editor/core/edit_commands.gd")
+const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
 const HitTest := preload("res://addons/board_editor/core/hit_test.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const FlipItemsAction := preload("res://addons/board_editor/actions/flip_items_action.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Schema := preload("res://scripts/loading/board_schema.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardSchema := preload("res://scripts/loading/board_schema.gd")
 
 ## Where the added copy goes, from the item it copies, and how far it is then moved.
 const SET_APART := Vector2(7.0, 5.0)
@@ -79,33 +79,33 @@ func _round_trip(kind: ItemKind, path: String) -> void:
 		return
 	var level := loaded.level
 	var label := "%s on %s" % [kind.name, path.get_file()]
-	assert_eq(Writer.write(level), text, label + ": the file is what the writer writes")
+	assert_eq(BoardTextWriter.write(level), text, label + ": the file is what the writer writes")
 	var actions: Array[BoardAction] = []
 	var item := _added(kind, level, actions, label)
-	if item == Items.NONE:
+	if item == BoardItems.NONE:
 		return
-	var start := Items.position_of(level, item)
-	var area := Commands.extent_of(level, item).grow(1.0)
+	var start := BoardItems.position_of(level, item)
+	var area := EditCommands.extent_of(level, item).grow(1.0)
 	assert_has(HitTest.in_rect(level, area), item, label + ": a box round its area selects it")
 	# What the file was before each edit: undoing that edit must give it back.
 	var before: Array[String] = [text]
 	if not actions.is_empty():
-		before.append(Writer.write(level))
+		before.append(BoardTextWriter.write(level))
 	var move := MoveItemsAction.new(level, [item] as Array[Vector2i], MOVE)
 	move.do()
 	actions.append(move)
-	before.append(Writer.write(level))
-	assert_eq(Items.position_of(level, item), start + MOVE, label + ": moved")
+	before.append(BoardTextWriter.write(level))
+	assert_eq(BoardItems.position_of(level, item), start + MOVE, label + ": moved")
 	var axis := Mirror.axis_of(level)
 	var flip := FlipItemsAction.new(level, [[[item] as Array[Vector2i], axis]])
 	flip.do()
 	actions.append(flip)
 	var mirrored := Mirror.reflect(start + MOVE, axis)
-	assert_almost_eq(Items.position_of(level, item), mirrored, Vector2.ONE * 0.001, label)
+	assert_almost_eq(BoardItems.position_of(level, item), mirrored, Vector2.ONE * 0.001, label)
 	_check_written(kind, level, item, label)
 	if kind.has_ids():
 		# Deleting it takes the board back to its own items (undone below like the rest).
-		before.append(Writer.write(level))
+		before.append(BoardTextWriter.write(level))
 		var had := kind.count(level)
 		var delete := DeleteItemsAction.new(level, [item] as Array[Vector2i])
 		delete.do()
@@ -114,13 +114,17 @@ func _round_trip(kind: ItemKind, path: String) -> void:
 	var counter := ItemIds.next_id(level, kind.list) if kind.has_ids() else 0
 	for k in range(actions.size() - 1, 0, -1):
 		actions[k].undo()
-		assert_eq(Writer.write(level), before[k], "%s: undo of %s" % [label, actions[k].get_name()])
+		assert_eq(
+			BoardTextWriter.write(level),
+			before[k],
+			"%s: undo of %s" % [label, actions[k].get_name()]
+		)
 	actions[0].undo()
-	var written := Writer.write(level)
+	var written := BoardTextWriter.write(level)
 	if kind.has_ids():
 		# An undone add keeps its id spent (ItemIds: an id is never handed out twice), so the
 		# file gains the one line that says so, and nothing else.
-		var line := '{"%s": {"%s": %d}}\n' % [Schema.NEXT_IDS_FIELD, kind.list, counter]
+		var line := '{"%s": {"%s": %d}}\n' % [BoardSchema.NEXT_IDS_FIELD, kind.list, counter]
 		assert_string_contains(written, line, label + ": the spent id is kept")
 		written = written.replace(line, "")
 	assert_eq(written, text, label + ": undone, the file is byte for byte its own")
@@ -132,34 +136,38 @@ func _added(
 	kind: ItemKind, level: BoardLevel, actions: Array[BoardAction], label: String
 ) -> Vector2i:
 	if not kind.has_ids():
-		return Items.make(kind.pick, 0)
-	var source := Items.NONE
+		return BoardItems.make(kind.pick, 0)
+	var source := BoardItems.NONE
 	for index in kind.field_indices(level):
 		if kind.is_item(level, index):
-			source = Items.make(kind.pick, index)
+			source = BoardItems.make(kind.pick, index)
 			break
-	assert_ne(source, Items.NONE, label + ": the board has one to copy")
-	if source == Items.NONE:
-		return Items.NONE
+	assert_ne(source, BoardItems.NONE, label + ": the board has one to copy")
+	if source == BoardItems.NONE:
+		return BoardItems.NONE
 	var had := kind.count(level)
-	var data := Items.offset_set(Items.extract(level, [source], Vector2.ZERO), SET_APART)
-	assert_eq(Items.set_size(data), 1, label + ": the item set holds the one copy")
+	var data := BoardItems.offset_set(BoardItems.extract(level, [source], Vector2.ZERO), SET_APART)
+	assert_eq(BoardItems.set_size(data), 1, label + ": the item set holds the one copy")
 	var add := AddItemsAction.new(level, data)
 	add.do()
 	actions.append(add)
 	assert_eq(kind.count(level), had + 1, label + ": added")
 	assert_eq(add.added.size(), 1, label + ": one new item")
 	if add.added.size() != 1:
-		return Items.NONE
+		return BoardItems.NONE
 	var item: Vector2i = add.added[0]
 	assert_eq(ItemKinds.of_item(level, item), kind, label + ": the new item is of its kind")
-	assert_eq(Items.position_of(level, item), Items.position_of(level, source) + SET_APART, label)
+	assert_eq(
+		BoardItems.position_of(level, item),
+		BoardItems.position_of(level, source) + SET_APART,
+		label
+	)
 	return item
 
 
 # The edited board written and read back has the item, by its key, where the edits left it.
 func _check_written(kind: ItemKind, level: BoardLevel, item: Vector2i, label: String) -> void:
-	var read := Reader.read(Writer.write(level))
+	var read := BoardTextReader.read(BoardTextWriter.write(level))
 	assert_true(read.has("level"), label + ": the edited file reads: " + str(read.get("error")))
 	if not read.has("level"):
 		return
@@ -167,6 +175,6 @@ func _check_written(kind: ItemKind, level: BoardLevel, item: Vector2i, label: St
 	var found := ItemKeys.find_all(again, [ItemKeys.of(level, item)])
 	assert_eq(found.size(), 1, label + ": the written item is read back")
 	if found.size() == 1:
-		var at := Items.position_of(again, found[0])
-		assert_almost_eq(at, Items.position_of(level, item), Vector2.ONE * 0.01, label)
+		var at := BoardItems.position_of(again, found[0])
+		assert_almost_eq(at, BoardItems.position_of(level, item), Vector2.ONE * 0.01, label)
 		assert_eq(ItemKinds.of_item(again, found[0]), kind, label + ": read back as its kind")

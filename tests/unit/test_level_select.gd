@@ -3,7 +3,7 @@ extends GutTest
 ## greyed cards with the reason for the ones that do not.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
-const SaveDataScript := preload("res://scripts/app/save_data.gd")
+const SaveData := preload("res://scripts/app/save_data.gd")
 const SAVE := "user://test_level_select_save.cfg"
 const EMPTY_USER_ROOT := "user://test_level_select_no_boards"
 
@@ -93,7 +93,7 @@ func _card_texts(screen: Control) -> PackedStringArray:
 
 
 func test_best_results_are_shown_on_the_cards() -> void:
-	var scratch := SaveDataScript.new()
+	var scratch := SaveData.new()
 	scratch.load_file(SAVE)
 	App.save_data = scratch
 	var pachinko_id := BoardLoader.list_boards(BoardLevel.Kind.PACHINKO)[0].level.board_id

@@ -5,7 +5,7 @@ extends GutTest
 ## named by their stable ids.
 
 const MazeAnalysisPanel := preload("res://addons/board_editor/analysis/maze_analysis_panel.gd")
-const OverlayDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
+const MazeAnalysisDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
 const GARDEN := "res://levels/maze/garden.board"
 ## The panel keeps its figures on disk: the tests keep theirs apart.
 const TEST_FOLDER := "user://test_maze_analysis_editor"
@@ -121,10 +121,12 @@ func test_a_cancelled_analysis_counts_only_finished_games() -> void:
 
 func test_holes_are_named_by_their_stable_ids_in_words() -> void:
 	var holes: Array = [{"id": 7, "index": 0, "balls": 2}, {"id": 12, "index": 3, "balls": 1}]
-	assert_eq(OverlayDraw.holes_line(holes), "Balls lost in hard mode: hole 7 (2), hole 12 (1)")
+	assert_eq(
+		MazeAnalysisDraw.holes_line(holes), "Balls lost in hard mode: hole 7 (2), hole 12 (1)"
+	)
 	var figures := {"games": 6, "wins": 5, "median_time_s": 41.23}
-	assert_eq(OverlayDraw.mode_line("hard", figures), "Hard: won 5 of 6, median 41.2 s")
-	assert_eq(OverlayDraw.mode_line("easy", {"games": 3, "wins": 0}), "Easy: won 0 of 3")
+	assert_eq(MazeAnalysisDraw.mode_line("hard", figures), "Hard: won 5 of 6, median 41.2 s")
+	assert_eq(MazeAnalysisDraw.mode_line("easy", {"games": 3, "wins": 0}), "Easy: won 0 of 3")
 
 
 func test_a_board_the_check_proves_unwinnable_plays_no_games() -> void:

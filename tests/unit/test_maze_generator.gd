@@ -2,9 +2,9 @@ extends GutTest
 ## The maze generator: valid, solvable boards (holes never cut a start off), the same seed
 ## gives the same board, difficulty changes the maze, and bad settings are refused by name.
 
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
-const Mazes := preload("res://tools/make_original_mazes.gd")
+const MakeOriginalMazes := preload("res://tools/make_original_mazes.gd")
 
 
 func _make(values: Dictionary) -> Dictionary:
@@ -45,11 +45,11 @@ func test_holes_are_placed_as_asked_and_keep_off_starts_and_goal() -> void:
 
 func test_the_same_seed_gives_the_same_board_and_another_seed_another() -> void:
 	var values := {"cols": 12, "rows": 10, "holes": 8, "seed": 42, "difficulty": 0.4}
-	var a := Writer.write(_make(values)["level"])
-	var b := Writer.write(_make(values)["level"])
+	var a := BoardTextWriter.write(_make(values)["level"])
+	var b := BoardTextWriter.write(_make(values)["level"])
 	assert_eq(a, b)
 	values["seed"] = 43
-	assert_ne(a, Writer.write(_make(values)["level"]))
+	assert_ne(a, BoardTextWriter.write(_make(values)["level"]))
 
 
 func test_harder_mazes_have_more_walls_and_holes_in_corridors() -> void:
@@ -115,11 +115,11 @@ func test_every_shipped_maze_board_but_the_tutorials_keeps_its_goal_ring_clear()
 
 
 func test_the_board_builder_refuses_a_wall_across_the_goal_ring() -> void:
-	var level := Mazes.make_courtyards()
-	assert_eq(Mazes.refuse_wall_in_goal_ring(level), level, "a clear ring passes")
+	var level := MakeOriginalMazes.make_courtyards()
+	assert_eq(MakeOriginalMazes.refuse_wall_in_goal_ring(level), level, "a clear ring passes")
 	var walls := level.walls
 	walls.append(level.goal_center + Vector2(-40.0, 0.0))
 	walls.append(level.goal_center + Vector2(40.0, 0.0))
 	level.walls = walls
-	assert_null(Mazes.refuse_wall_in_goal_ring(level))
+	assert_null(MakeOriginalMazes.refuse_wall_in_goal_ring(level))
 	assert_push_error("crosses the goal ring")

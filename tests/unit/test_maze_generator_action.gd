@@ -2,10 +2,10 @@ extends GutTest
 ## The board tool's maze generator: one action replaces the maze's layout and one undo puts
 ## the old board back exactly; the toolbar button commits it through the edit session.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const GenerateMazeAction := preload("res://addons/board_editor/generator/generate_maze_action.gd")
-const GeneratorButton := preload("res://addons/board_editor/generator/maze_generator_button.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const MazeGeneratorButton := preload("res://addons/board_editor/generator/maze_generator_button.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 
 
 func _classic() -> BoardLevel:
@@ -20,12 +20,12 @@ func _settings(values: Dictionary) -> MazeGenSettings:
 
 func test_one_undo_step_replaces_and_restores_the_board() -> void:
 	var level := _classic()
-	var before := Writer.write(level)
-	var session := Session.new(level)
+	var before := BoardTextWriter.write(level)
+	var session := BoardEditSession.new(level)
 	var made := MazeGenerator.generate(_settings({"cols": 14, "rows": 11, "seed": 4}))
 	var generated: BoardLevel = made["level"]
 	session.commit(GenerateMazeAction.new(level, generated))
-	var after := Writer.write(level)
+	var after := BoardTextWriter.write(level)
 	assert_ne(after, before)
 	assert_eq(level.grid_cols, 14)
 	assert_eq(level.size, Vector2(14, 11) * 35.0)
@@ -38,10 +38,10 @@ func test_one_undo_step_replaces_and_restores_the_board() -> void:
 	assert_true(session.history.undo())
 	# every item and id comes back; the id counters never go back (ItemIds), so no id the
 	# generated maze used is handed out again
-	assert_eq(_without_counters(Writer.write(level)), before, "undo puts every item back")
+	assert_eq(_without_counters(BoardTextWriter.write(level)), before, "undo puts every item back")
 	assert_false(level.next_ids.is_empty(), "the counters stay past the generated ids")
 	assert_true(session.history.redo())
-	assert_eq(Writer.write(level), after, "redo lands the same maze")
+	assert_eq(BoardTextWriter.write(level), after, "redo lands the same maze")
 
 
 # A board file's text without its id counters line (`{"next_ids": ...}`).
@@ -55,26 +55,26 @@ func _without_counters(text: String) -> String:
 
 func test_bad_requests_are_refused_without_touching_the_board() -> void:
 	var pachinko := BoardLoader.load_board("res://levels/pachinko/classic.board").level
-	var before := Writer.write(pachinko)
-	var session := Session.new(pachinko)
-	var button: GeneratorButton = autofree(GeneratorButton.new())
+	var before := BoardTextWriter.write(pachinko)
+	var session := BoardEditSession.new(pachinko)
+	var button: MazeGeneratorButton = autofree(MazeGeneratorButton.new())
 	button.bind(session)
 	assert_string_contains(button.generate(), "maze boards only")
-	assert_eq(Writer.write(pachinko), before)
+	assert_eq(BoardTextWriter.write(pachinko), before)
 	assert_eq(session.history.names().size(), 0, "nothing committed")
 	assert_string_contains(str(MazeGenerator.generate(_settings({"cols": 1}))["error"]), "rows")
 
 
 func test_the_toolbar_button_generates_through_the_session() -> void:
 	var level := _classic()
-	var session := Session.new(level)
-	var button: GeneratorButton = autofree(GeneratorButton.new())
+	var session := BoardEditSession.new(level)
+	var button: MazeGeneratorButton = autofree(MazeGeneratorButton.new())
 	button.bind(session)
 	assert_true(button.visible, "shown for a maze")
 	var settings := button.settings()
 	assert_eq(settings.id, "classic")
 	assert_eq(button.generate(), "")
 	assert_eq(session.history.names().size(), 1)
-	var pachinko_session := Session.new(BoardLevel.new())
+	var pachinko_session := BoardEditSession.new(BoardLevel.new())
 	button.bind(pachinko_session)
 	assert_false(button.visible, "hidden for a pachinko board")

@@ -7,7 +7,7 @@ const MazeProgressWatch := preload("res://scripts/maze/autoplay/maze_progress_wa
 const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
 const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 const MazeLosses := preload("res://scripts/analysis/maze_losses.gd")
-const LossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
+const MazeLossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
 const MazeAnalysisPanel := preload("res://addons/board_editor/analysis/maze_analysis_panel.gd")
 const TEST_FOLDER := "user://test_maze_loss_reasons"
 
@@ -62,13 +62,13 @@ func test_a_five_pixel_trap_is_given_up_at_once_and_named_at_the_gap() -> void:
 	assert_eq(gap.size(), 2, "the gap that shuts it in is named")
 	if gap.size() == 2:
 		assert_lt(Vector2(gap[0], gap[1]).distance_to(Vector2(100, 7.5)), 3.0, str(gap))
-	var words := LossWords.lines(report)
+	var words := MazeLossWords.lines(report)
 	assert_eq(words.size(), 1)
 	var expected := (
 		"4 of 4 games: a ball was trapped near %s, with no way out wide enough for it "
 		+ "(the gap at (100, 8) is narrower than a ball)."
 	)
-	assert_eq(words[0], expected % LossWords.place(at))
+	assert_eq(words[0], expected % MazeLossWords.place(at))
 
 
 func test_the_dock_names_a_trap_the_board_check_proves_at_once() -> void:
@@ -129,12 +129,12 @@ func test_losses_group_by_reason_and_place_and_read_as_a_designer_would() -> voi
 	assert_eq(stuck["reason"], "stuck", "the most games first")
 	assert_eq(int(stuck["games"]), 3)
 	assert_eq(stuck["at"], [120.0, 340.0], "the mean place")
-	var words := LossWords.line(stuck, 12)
+	var words := MazeLossWords.line(stuck, 12)
 	assert_eq(words, "3 of 12 games: a ball was stuck near (120, 340) for 20 s.")
 	assert_eq(
-		LossWords.line(losses[1], 12),
+		MazeLossWords.line(losses[1], 12),
 		"1 of 12 games: time ran out (120 s) with a ball still near (300, 40) (easy mode)."
 	)
 	var hole := {"reason": "hole", "games": 2, "hard": 2, "hole": 7, "at": [87.5, 17.5]}
-	assert_eq(LossWords.line(hole, 12), "2 of 12 games: a ball fell into hole 7 at (88, 18).")
-	assert_eq(LossWords.tag(stuck), "stuck ×3")
+	assert_eq(MazeLossWords.line(hole, 12), "2 of 12 games: a ball fell into hole 7 at (88, 18).")
+	assert_eq(MazeLossWords.tag(stuck), "stuck ×3")

@@ -2,8 +2,8 @@ extends GutTest
 ## Medal times: the optional `medal_times` field of a maze file (read, written, refused when
 ## wrong) and the medal a best time earns.
 
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/maze/classic.board"
 
 
@@ -18,27 +18,29 @@ func _classic_text() -> String:
 
 
 func _with_line(line: String) -> Dictionary:
-	return Reader.read(_classic_text() + line + "\n")
+	return BoardTextReader.read(_classic_text() + line + "\n")
 
 
 func test_medal_times_round_trip_through_the_file() -> void:
-	var level: BoardLevel = Reader.read(_classic_text())["level"]
+	var level: BoardLevel = BoardTextReader.read(_classic_text())["level"]
 	level.medal_times_easy = PackedFloat64Array([44.3, 60.5, 88.7])
 	level.medal_times_hard = PackedFloat64Array([50.0, 68.2, 100.0])
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_string_contains(
 		text, '{"medal_times": {"easy": [44.3, 60.5, 88.7], "hard": [50, 68.2, 100]}}'
 	)
-	var again: BoardLevel = Reader.read(text)["level"]
+	var again: BoardLevel = BoardTextReader.read(text)["level"]
 	assert_eq(again.medal_times_easy, level.medal_times_easy)
 	assert_eq(again.medal_times_hard, level.medal_times_hard)
-	assert_eq(Writer.write(again), text, "the same board writes the same text")
+	assert_eq(BoardTextWriter.write(again), text, "the same board writes the same text")
 
 
 func test_the_field_is_optional_and_one_mode_may_be_left_out() -> void:
-	var level: BoardLevel = Reader.read(_classic_text())["level"]
+	var level: BoardLevel = BoardTextReader.read(_classic_text())["level"]
 	assert_true(level.medal_times_easy.is_empty())
-	assert_false(Writer.write(level).contains("medal_times"), "no line when there are none")
+	assert_false(
+		BoardTextWriter.write(level).contains("medal_times"), "no line when there are none"
+	)
 	var easy_only: BoardLevel = _with_line('{"medal_times": {"easy": [10, 20, 30]}}')["level"]
 	if easy_only == null:
 		fail_test("a board with only easy medal times loads")
@@ -58,7 +60,7 @@ func test_bad_medal_times_are_refused_by_name() -> void:
 		'{"medal_times": {"easy": ["a", 2, 3]}}': "must be a number",
 	}
 	for line: String in cases:
-		var result := Reader.read(text + line + "\n")
+		var result := BoardTextReader.read(text + line + "\n")
 		assert_true(result.has("error"), line)
 		assert_string_contains(str(result.get("error", "")), cases[line], line)
 		assert_string_contains(str(result.get("error", "")), "medal_times", line)
@@ -66,7 +68,7 @@ func test_bad_medal_times_are_refused_by_name() -> void:
 
 func test_a_pachinko_board_has_no_medal_times() -> void:
 	var text := FileAccess.get_file_as_string("res://levels/pachinko/classic.board")
-	var result := Reader.read(text + '{"medal_times": {"easy": [1, 2, 3]}}\n')
+	var result := BoardTextReader.read(text + '{"medal_times": {"easy": [1, 2, 3]}}\n')
 	assert_string_contains(str(result.get("error", "")), 'unknown field "medal_times"')
 
 

@@ -3,7 +3,7 @@ extends GutTest
 ## jackpot), built once on a worker thread, played on the Music bus, and turned by the bonus
 ## machine: a reach, a jackpot, and back.
 
-const Recipes := preload("res://scripts/audio/music_recipes.gd")
+const MusicRecipes := preload("res://scripts/audio/music_recipes.gd")
 const FEVER := "res://levels/pachinko/fever.board"
 
 
@@ -17,10 +17,10 @@ func _rms(samples: PackedFloat32Array) -> float:
 func test_every_machine_has_a_tune_of_its_own() -> void:
 	var seen := {}
 	for machine in FasciaNames.NAMES:
-		assert_true(Recipes.machines().has(machine), "%s has its own tune" % machine)
-		var samples := Recipes.render(machine, Recipes.NORMAL)
-		var seconds := samples.size() / float(Recipes.RATE)
-		assert_almost_eq(seconds, Recipes.loop_seconds(machine, Recipes.NORMAL), 0.01)
+		assert_true(MusicRecipes.machines().has(machine), "%s has its own tune" % machine)
+		var samples := MusicRecipes.render(machine, MusicRecipes.NORMAL)
+		var seconds := samples.size() / float(MusicRecipes.RATE)
+		assert_almost_eq(seconds, MusicRecipes.loop_seconds(machine, MusicRecipes.NORMAL), 0.01)
 		assert_between(seconds, 5.0, 14.0, "%s: a loop of a few bars" % machine)
 		assert_gt(_rms(samples), 0.05, "%s: not silent" % machine)
 		seen[samples.slice(22050, 22150)] = machine
@@ -28,9 +28,9 @@ func test_every_machine_has_a_tune_of_its_own() -> void:
 
 
 func test_reach_and_jackpot_are_faster_and_louder() -> void:
-	var normal := Recipes.render("classic", Recipes.NORMAL)
-	var reach := Recipes.render("classic", Recipes.REACH)
-	var jackpot := Recipes.render("classic", Recipes.JACKPOT)
+	var normal := MusicRecipes.render("classic", MusicRecipes.NORMAL)
+	var reach := MusicRecipes.render("classic", MusicRecipes.REACH)
+	var jackpot := MusicRecipes.render("classic", MusicRecipes.JACKPOT)
 	assert_lt(reach.size(), normal.size(), "a reach picks up the tempo")
 	assert_lt(jackpot.size(), reach.size(), "a jackpot more")
 	assert_gt(_rms(reach), _rms(normal), "and it builds")
@@ -38,10 +38,10 @@ func test_reach_and_jackpot_are_faster_and_louder() -> void:
 
 
 func test_a_loop_plays_seamlessly_forever() -> void:
-	var stream := Recipes.build("sakura", Recipes.NORMAL)
+	var stream := MusicRecipes.build("sakura", MusicRecipes.NORMAL)
 	assert_eq(stream.loop_mode, AudioStreamWAV.LOOP_FORWARD)
 	assert_eq(stream.loop_begin, 0)
-	assert_eq(stream.loop_end, Recipes.render("sakura", Recipes.NORMAL).size())
+	assert_eq(stream.loop_end, MusicRecipes.render("sakura", MusicRecipes.NORMAL).size())
 	assert_eq(stream.format, AudioStreamWAV.FORMAT_16_BITS)
 
 
@@ -49,12 +49,12 @@ func test_the_bank_builds_a_machine_once_off_the_main_thread() -> void:
 	MusicBank.request("country")
 	assert_true(MusicBank.is_requested("country"))
 	MusicBank.wait_for_background()
-	for mood in Recipes.MOODS:
+	for mood in MusicRecipes.MOODS:
 		assert_not_null(MusicBank.loop("country", mood), "country %s built" % mood)
-	var first := MusicBank.loop("country", Recipes.NORMAL)
+	var first := MusicBank.loop("country", MusicRecipes.NORMAL)
 	MusicBank.request("country")
 	MusicBank.wait_for_background()
-	assert_same(MusicBank.loop("country", Recipes.NORMAL), first, "built once")
+	assert_same(MusicBank.loop("country", MusicRecipes.NORMAL), first, "built once")
 
 
 func test_a_player_plays_the_loop_on_the_music_bus_and_fades_to_a_new_mood() -> void:
@@ -68,11 +68,11 @@ func test_a_player_plays_the_loop_on_the_music_bus_and_fades_to_a_new_mood() -> 
 	assert_true(MusicBank.is_requested("neon"), "then the loops build")
 	MusicBank.wait_for_background()
 	player._process(0.0)
-	assert_same(player.playing_stream(), MusicBank.loop("neon", Recipes.NORMAL))
+	assert_same(player.playing_stream(), MusicBank.loop("neon", MusicRecipes.NORMAL))
 	assert_eq(player.get_child(0).get("bus"), &"Music")
-	player.set_mood(Recipes.JACKPOT)
+	player.set_mood(MusicRecipes.JACKPOT)
 	player._process(0.0)
-	assert_same(player.playing_stream(), MusicBank.loop("neon", Recipes.JACKPOT))
+	assert_same(player.playing_stream(), MusicBank.loop("neon", MusicRecipes.JACKPOT))
 
 
 func test_headless_builds_and_plays_nothing() -> void:
@@ -89,7 +89,7 @@ func test_an_unknown_mood_is_refused_by_name() -> void:
 	add_child_autofree(player)
 	player.set_mood(&"disco")
 	assert_push_error("no mood 'disco'")
-	assert_eq(player.mood(), Recipes.NORMAL)
+	assert_eq(player.mood(), MusicRecipes.NORMAL)
 	player.play_machine("no_such_machine")
 	assert_eq(player.machine(), FasciaNames.CLASSIC, "an unknown machine gets Classic's tune")
 
@@ -101,17 +101,17 @@ func test_the_bonus_machine_turns_the_mood() -> void:
 	music.bind(rules)
 	var bonus := rules.bonus
 	bonus.reach_started.emit()
-	assert_eq(music.mood(), Recipes.REACH, "two reels match: a reach")
+	assert_eq(music.mood(), MusicRecipes.REACH, "two reels match: a reach")
 	bonus.reach_ended.emit(false)
-	assert_eq(music.mood(), Recipes.NORMAL, "missed: back to normal")
+	assert_eq(music.mood(), MusicRecipes.NORMAL, "missed: back to normal")
 	bonus.reach_started.emit()
 	bonus.reach_ended.emit(true)
-	assert_eq(music.mood(), Recipes.JACKPOT, "a jackpot")
+	assert_eq(music.mood(), MusicRecipes.JACKPOT, "a jackpot")
 	bonus.jackpot_round_ended.emit(1, 10)
 	bonus.attacker_changed.emit(0, false)
-	assert_eq(music.mood(), Recipes.JACKPOT, "between rounds the jackpot music plays on")
+	assert_eq(music.mood(), MusicRecipes.JACKPOT, "between rounds the jackpot music plays on")
 	bonus.jackpot_ended.emit(140)
-	assert_eq(music.mood(), Recipes.NORMAL, "the jackpot's last round ended: back to normal")
+	assert_eq(music.mood(), MusicRecipes.NORMAL, "the jackpot's last round ended: back to normal")
 
 
 func test_the_game_screen_plays_its_machines_music() -> void:
@@ -121,4 +121,4 @@ func test_the_game_screen_plays_its_machines_music() -> void:
 	App.request_board("pachinko", "res://levels/pachinko/classic.board")
 	var music := game.get_node("Music") as MusicPlayer
 	assert_eq(music.machine(), "neon", "Fever wears the neon machine")
-	assert_eq(music.mood(), Recipes.NORMAL)
+	assert_eq(music.mood(), MusicRecipes.NORMAL)

@@ -3,15 +3,15 @@ extends GutTest
 ## autoplay's JSON and the accounting check all read these counts, so a payout booked to the
 ## wrong pocket or a game's figures taken from the wrong start shows up on screen.
 
-const Ledger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
+const PachinkoLedger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
 const COUNTERS: Array[String] = [
 	"given", "paid", "shots", "drained", "won", "returned", "nudges", "vanished"
 ]
 
 
 # A ledger of 3 pockets whose every counter holds a different number (given 10, paid 20...).
-func _filled() -> Ledger:
-	var ledger := Ledger.new(3)
+func _filled() -> PachinkoLedger:
+	var ledger := PachinkoLedger.new(3)
 	for i in COUNTERS.size():
 		ledger.set(COUNTERS[i], (i + 1) * 10)
 	ledger.pocket_hits = PackedInt32Array([1, 2, 3])
@@ -20,16 +20,16 @@ func _filled() -> Ledger:
 
 
 func test_a_new_ledger_has_a_zero_per_pocket() -> void:
-	var ledger := Ledger.new(3)
+	var ledger := PachinkoLedger.new(3)
 	assert_eq(ledger.pocket_hits, PackedInt32Array([0, 0, 0]))
 	assert_eq(ledger.pocket_payouts, PackedInt32Array([0, 0, 0]))
-	var none := Ledger.new(-1)
+	var none := PachinkoLedger.new(-1)
 	assert_eq(none.pocket_hits.size(), 0, "a board without pockets")
 	assert_eq(none.pocket_payouts.size(), 0)
 
 
 func test_a_win_pays_its_pocket() -> void:
-	var ledger := Ledger.new(3)
+	var ledger := PachinkoLedger.new(3)
 	ledger.record_win(1, 15)
 	ledger.record_win(1, 5)
 	ledger.record_win(2, 7)
@@ -40,7 +40,7 @@ func test_a_win_pays_its_pocket() -> void:
 
 
 func test_the_first_and_last_pocket_are_booked_and_no_other() -> void:
-	var ledger := Ledger.new(3)
+	var ledger := PachinkoLedger.new(3)
 	ledger.record_win(0, 4)
 	ledger.record_win(2, 6)
 	assert_eq(ledger.pocket_hits, PackedInt32Array([1, 0, 1]))
@@ -54,7 +54,7 @@ func test_the_first_and_last_pocket_are_booked_and_no_other() -> void:
 
 func test_a_copy_keeps_every_count_and_moves_on_alone() -> void:
 	var ledger := _filled()
-	var copy: Ledger = ledger.copy()
+	var copy: PachinkoLedger = ledger.copy()
 	for key in COUNTERS:
 		assert_eq(copy.get(key), ledger.get(key), key)
 	assert_eq(copy.pocket_hits, PackedInt32Array([1, 2, 3]))
@@ -67,12 +67,12 @@ func test_a_copy_keeps_every_count_and_moves_on_alone() -> void:
 
 func test_this_games_figures_are_the_counts_since_it_started() -> void:
 	var start := _filled()
-	var now: Ledger = start.copy()
+	var now: PachinkoLedger = start.copy()
 	for i in COUNTERS.size():
 		now.set(COUNTERS[i], now.get(COUNTERS[i]) + i + 1)
 	now.pocket_hits = PackedInt32Array([4, 2, 5])
 	now.pocket_payouts = PackedInt32Array([40, 20, 33])
-	var game: Ledger = now.since(start)
+	var game: PachinkoLedger = now.since(start)
 	for i in COUNTERS.size():
 		assert_eq(game.get(COUNTERS[i]), i + 1, COUNTERS[i])
 	assert_eq(game.pocket_hits, PackedInt32Array([3, 0, 2]))
@@ -82,19 +82,19 @@ func test_this_games_figures_are_the_counts_since_it_started() -> void:
 
 
 func test_since_a_start_with_fewer_pockets_keeps_the_new_pockets_whole() -> void:
-	var start := Ledger.new(1)
+	var start := PachinkoLedger.new(1)
 	start.record_win(0, 3)
-	var now := Ledger.new(2)
+	var now := PachinkoLedger.new(2)
 	now.record_win(0, 3)
 	now.record_win(0, 3)
 	now.record_win(1, 9)
-	var game: Ledger = now.since(start)
+	var game: PachinkoLedger = now.since(start)
 	assert_eq(game.pocket_hits, PackedInt32Array([1, 1]))
 	assert_eq(game.pocket_payouts, PackedInt32Array([3, 9]))
 
 
 func test_the_balls_balance_only_when_every_one_is_somewhere() -> void:
-	var ledger := Ledger.new(1)
+	var ledger := PachinkoLedger.new(1)
 	ledger.given = 10
 	ledger.record_win(0, 5)  # 15 balls in all, 1 of them won
 	ledger.drained = 2
@@ -108,7 +108,7 @@ func test_the_balls_balance_only_when_every_one_is_somewhere() -> void:
 
 
 func test_the_payout_ratio_counts_only_shots_that_reached_the_field() -> void:
-	var ledger := Ledger.new(1)
+	var ledger := PachinkoLedger.new(1)
 	assert_eq(ledger.field_shots(), 0)
 	assert_eq(ledger.payout_ratio(), 0.0, "no shot yet")
 	ledger.shots = 10
@@ -146,7 +146,7 @@ func test_the_snapshot_the_panel_and_autoplay_read() -> void:
 
 
 func test_a_new_session_starts_from_nothing() -> void:
-	var fresh := Ledger.new(2).to_dict()
+	var fresh := PachinkoLedger.new(2).to_dict()
 	for key: String in ["given", "shots", "payouts", "won", "drained", "returned", "nudges"]:
 		assert_eq(fresh[key], 0, key)
 	assert_eq(fresh["vanished"], 0)
@@ -155,7 +155,7 @@ func test_a_new_session_starts_from_nothing() -> void:
 
 
 func test_the_first_shot_to_reach_the_field_sets_the_ratio() -> void:
-	var ledger := Ledger.new(1)
+	var ledger := PachinkoLedger.new(1)
 	ledger.shots = 1
 	ledger.record_win(0, 6)
 	assert_eq(ledger.payout_ratio(), 6.0, "one shot, six balls back")

@@ -2,8 +2,8 @@ extends GutTest
 ## Seed constants converted to px and seconds, the tilt → gravity / friction mapping, the
 ## speed cap, and friction that only slows.
 
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 
 
 func test_pachinko_defaults_convert_the_flash_constants() -> void:
@@ -133,9 +133,9 @@ func test_the_seed_tuning_holds_x_a_frames_friction_under_y() -> void:
 
 func test_x_cap_friction_time_is_written_only_when_set() -> void:
 	var level: BoardLevel = BoardLoader.load_board("res://levels/maze/garden.board").level
-	assert_false(Writer.write(level).contains("x_cap_friction_time"), "0 is left out")
+	assert_false(BoardTextWriter.write(level).contains("x_cap_friction_time"), "0 is left out")
 	level.tuning.x_cap_friction_time = 0.016
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_true(text.contains('"x_cap_friction_time": 0.016'), "set: written")
 	var back: BoardLevel = BoardLoader.load_bytes(text.to_utf8_buffer(), "test").level
 	assert_almost_eq(back.tuning.x_cap_friction_time, 0.016, 1e-9, "read back")
@@ -189,12 +189,12 @@ func test_a_board_file_with_the_old_gutter_slide_time_key_still_reads() -> void:
 	var old_text := text.replace('"drain_slide_time"', '"gutter_slide_time"')
 	assert_string_contains(old_text, '"gutter_slide_time": ')
 	old_text = old_text.replace('"gutter_slide_time": 0.5', '"gutter_slide_time": 2.5')
-	var read: Dictionary = Reader.read(old_text)
+	var read: Dictionary = BoardTextReader.read(old_text)
 	assert_false(read.has("error"), str(read.get("error", "")))
 	if read.has("error"):
 		return
 	var level: BoardLevel = read["level"]
 	assert_eq(level.tuning.drain_slide_time, 2.5, "read as drain_slide_time")
-	var written: String = Writer.write(level)
+	var written: String = BoardTextWriter.write(level)
 	assert_string_contains(written, '"drain_slide_time": 2.5')
 	assert_false(written.contains("gutter_slide_time"), "written with the new name only")

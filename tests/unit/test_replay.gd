@@ -5,12 +5,12 @@ extends GutTest
 
 const MAZE_CLASSIC := "res://levels/maze/classic.board"
 const PACHINKO_CLASSIC := "res://levels/pachinko/classic.board"
-const Reader := preload("res://scripts/replay/replay_reader.gd")
-const Writer := preload("res://scripts/replay/replay_writer.gd")
+const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
+const ReplayWriter := preload("res://scripts/replay/replay_writer.gd")
 const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
 const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const TEMP := "user://test_replay.replay"
-const Kit := preload("res://tests/unit/replay_kit.gd")
+const ReplayKit := preload("res://tests/unit/replay_kit.gd")
 const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 
 
@@ -29,9 +29,9 @@ class TestFormat:
 		replay.seconds = 0.058
 		replay.records.append(["tilt", 2, 2, 1200, -1187])
 		replay.records.append(["tilt", 1, 3, 0, 5])
-		var text := Writer.write(replay)
-		assert_eq(text, Writer.write(replay), "the same replay, the same text")
-		var back: Replay = Reader.read(text)["replay"]
+		var text := ReplayWriter.write(replay)
+		assert_eq(text, ReplayWriter.write(replay), "the same replay, the same text")
+		var back: Replay = ReplayReader.read(text)["replay"]
 		assert_eq(back.board_id, "maze_classic")
 		assert_eq(back.board_hash, replay.board_hash)
 		assert_eq(back.rng_seed, 1776351234567, "a large seed is kept exactly")
@@ -49,11 +49,11 @@ class TestFormat:
 		replay.steps = 2 + 8 + 1 + 3
 		replay.records.append(["tilts", 2, 1200, -1200, 8, -1200, 1200, 1, -1199, 1187])
 		replay.records.append(["tilt", 1, 3, 0, 5])
-		var text := Writer.write(replay)
+		var text := ReplayWriter.write(replay)
 		assert_string_contains(text, '["tilts","')
 		assert_string_contains(text, '{"replay": 4,', "files are written in format 4")
 		assert_string_contains(text, '"physics": %d, "rules": 1}' % Replay.PHYSICS_VERSION)
-		var read := Reader.read(text)
+		var read := ReplayReader.read(text)
 		assert_true(read.has("replay"), str(read.get("error")))
 		assert_eq((read["replay"] as Replay).records, replay.records)
 
@@ -66,18 +66,20 @@ class TestFormat:
 		assert_eq(TiltPacking.decode(packed)["numbers"], record.slice(1))
 
 	func test_a_format_1_file_still_reads_and_plays() -> void:
-		var level := Kit.load_level(MAZE_CLASSIC)
-		var replay := Kit.record_live_maze(level, false, 300).finish()
+		var level := ReplayKit.load_level(MAZE_CLASSIC)
+		var replay := ReplayKit.record_live_maze(level, false, 300).finish()
 		var lines := PackedStringArray()
 		for record: Array in replay.records:
 			for frame in Replay.frame_count(record):
 				var tilt := Replay.frame_tilt(record, frame)
 				var steps := Replay.frame_steps(record, frame)
 				lines.append(JSON.stringify(["tilt", 1, steps, tilt.x, tilt.y]))
-		var text := Writer.write(replay).get_slice("\n", 0).replace('"replay": 4', '"replay": 1')
+		var text := ReplayWriter.write(replay).get_slice("\n", 0).replace(
+			'"replay": 4', '"replay": 1'
+		)
 		var versions := [Replay.PHYSICS_VERSION, Replay.RULES_VERSIONS["maze"]]
 		text = text.replace(', "physics": %d, "rules": %d' % versions, "")
-		var read := Reader.read(text + "\n" + "\n".join(lines) + "\n")
+		var read := ReplayReader.read(text + "\n" + "\n".join(lines) + "\n")
 		assert_true(read.has("replay"), str(read.get("error")))
 		var old: Replay = read["replay"]
 		assert_eq(old.format_version, 1)
@@ -102,7 +104,7 @@ class TestFormat:
 		)
 
 	func test_tilt_and_power_are_kept_in_hundredths() -> void:
-		var rules := MazeRules.new(Kit.load_level(MAZE_CLASSIC))
+		var rules := MazeRules.new(ReplayKit.load_level(MAZE_CLASSIC))
 		rules.set_tilt(Vector2(1.23456, -7.891))
 		assert_almost_eq(rules.tilt.x, 1.23, 0.00001)
 		assert_almost_eq(rules.tilt.y, -7.89, 0.00001)
@@ -115,39 +117,39 @@ class TestMaze:
 	extends GutTest
 
 	func test_an_autoplay_run_replays_to_the_same_state_hash() -> void:
-		var level := Kit.load_level(MAZE_CLASSIC)
+		var level := ReplayKit.load_level(MAZE_CLASSIC)
 		var recorder := ReplayRecorder.new()
 		var result := MazeAutoplay.run(level, 20.0, 1, false, recorder)
 		var replay := recorder.finish()
 		assert_eq(replay.state_hash, int(result["state_hash"]), "recorded at the autoplay's end")
 		assert_eq(replay.steps, int(result["frames_simulated"]))
-		var played := Kit.play(replay, level)
+		var played := ReplayKit.play(replay, level)
 		assert_true(played["match"], str(played))
 		assert_eq(played["state_hash"], result["state_hash"])
 
 	func test_a_game_with_uneven_frames_replays_exactly() -> void:
-		var level := Kit.load_level(MAZE_CLASSIC)
-		var replay := Kit.record_live_maze(level, false, 900).finish()
+		var level := ReplayKit.load_level(MAZE_CLASSIC)
+		var replay := ReplayKit.record_live_maze(level, false, 900).finish()
 		assert_gt(replay.steps, 900, "frames of several steps were recorded")
-		var played := Kit.play(replay, level)
+		var played := ReplayKit.play(replay, level)
 		assert_true(played["match"], str(played))
 
 	func test_a_hard_run_lost_in_a_hole_replays_exactly() -> void:
-		var level := Kit.load_level(MAZE_CLASSIC)
-		var recorder := Kit.record_live_maze(level, true, 3000)
+		var level := ReplayKit.load_level(MAZE_CLASSIC)
+		var recorder := ReplayKit.record_live_maze(level, true, 3000)
 		var replay := recorder.finish()
 		assert_true(replay.hard)
-		var played := Kit.play(replay, level)
+		var played := ReplayKit.play(replay, level)
 		assert_true(played["match"], str(played))
 
 	func test_a_minute_of_play_is_a_small_file() -> void:
 		var recorder := ReplayRecorder.new()
-		MazeAutoplay.run(Kit.load_level(MAZE_CLASSIC), 60.0, 2, false, recorder)
-		var text := Writer.write(recorder.finish())
+		MazeAutoplay.run(ReplayKit.load_level(MAZE_CLASSIC), 60.0, 2, false, recorder)
+		var text := ReplayWriter.write(recorder.finish())
 		assert_lt(text.length(), 40 * 1024, "a minute at 120 steps a second, run-length encoded")
 
 	func test_a_minute_of_tilt_changing_every_frame_is_a_small_file() -> void:
-		var level := Kit.load_level(MAZE_CLASSIC)
+		var level := ReplayKit.load_level(MAZE_CLASSIC)
 		var rules := MazeRules.new(level)
 		var recorder := ReplayRecorder.new()
 		recorder.attach_maze(rules)
@@ -160,9 +162,9 @@ class TestMaze:
 			recorder.note_frame()
 		var replay := recorder.finish()
 		assert_eq(replay.steps, frames, "the run lasted the whole minute")
-		var text := Writer.write(replay)
+		var text := ReplayWriter.write(replay)
 		assert_lt(text.length(), 40 * 1024, "%d frames, each with its own tilt" % frames)
-		var played := Kit.play(replay, level)
+		var played := ReplayKit.play(replay, level)
 		assert_true(played["match"], str(played))
 
 
@@ -170,17 +172,17 @@ class TestPachinko:
 	extends GutTest
 
 	func test_an_autoplay_game_replays_to_the_same_state_hash() -> void:
-		var level := Kit.load_level(PACHINKO_CLASSIC)
+		var level := ReplayKit.load_level(PACHINKO_CLASSIC)
 		var recorder := ReplayRecorder.new()
 		var result := PachinkoAutoplay.run(level, 40.0, 3, recorder)
 		var replay := recorder.finish()
 		assert_eq(replay.state_hash, int(result["state_hash"]))
 		assert_gt(int(result["shots"]), 10)
-		var played := Kit.play(replay, level)
+		var played := ReplayKit.play(replay, level)
 		assert_true(played["match"], str(played))
 
 	func test_charged_shots_with_uneven_frames_replay_exactly() -> void:
-		var level := Kit.load_level(PACHINKO_CLASSIC)
+		var level := ReplayKit.load_level(PACHINKO_CLASSIC)
 		var rules := PachinkoRules.new(level, 99)
 		var recorder := ReplayRecorder.new()
 		recorder.attach_pachinko(rules, 99)
@@ -202,7 +204,7 @@ class TestPachinko:
 			recorder.note_frame()
 		var replay := recorder.finish()
 		assert_gt(rules.ledger.shots, 5, "shots were fired")
-		var played := Kit.play(replay, level)
+		var played := ReplayKit.play(replay, level)
 		assert_true(played["match"], str(played))
 
 
@@ -217,7 +219,7 @@ class TestCommand:
 
 	func _recorded() -> Replay:
 		var recorder := ReplayRecorder.new()
-		MazeAutoplay.run(Kit.load_level(MAZE_CLASSIC), 5.0, 1, false, recorder)
+		MazeAutoplay.run(ReplayKit.load_level(MAZE_CLASSIC), 5.0, 1, false, recorder)
 		return recorder.finish()
 
 	func test_a_matching_replay_exits_0() -> void:
@@ -254,7 +256,7 @@ class TestCommand:
 		)
 
 	func test_a_pachinko_run_from_the_rules_before_aimed_launches_exits_2_naming_both() -> void:
-		var level := Kit.load_level(PACHINKO_CLASSIC)
+		var level := ReplayKit.load_level(PACHINKO_CLASSIC)
 		var rules := PachinkoRules.new(level, 1)
 		var recorder := ReplayRecorder.new()
 		recorder.attach_pachinko(rules, 1)
@@ -265,9 +267,9 @@ class TestCommand:
 			recorder.note_frame()
 		var replay := recorder.finish()
 		assert_eq(replay.rules_version, 5, "pachinko runs are recorded under rules 5")
-		var text := Writer.write(replay)
+		var text := ReplayWriter.write(replay)
 		var old_text := text.replace(', "rules": 5', "").replace('"replay": 4', '"replay": 3')
-		var old: Replay = Reader.read(old_text)["replay"]
+		var old: Replay = ReplayReader.read(old_text)["replay"]
 		assert_eq(old.rules_version, 1, "files before format 4 were recorded with rules 1")
 		assert_string_contains(
 			old.physics_problem(),
@@ -280,7 +282,7 @@ class TestCommand:
 		assert_eq(ReplayStore.read_file(TEMP)["replay"].physics_problem(), old.physics_problem())
 
 	func test_the_physics_field_belongs_to_format_3_and_up() -> void:
-		var header := Writer.write(_recorded()).get_slice("\n", 0)
+		var header := ReplayWriter.write(_recorded()).get_slice("\n", 0)
 		var physics := ', "physics": %d' % Replay.PHYSICS_VERSION
 		var rules := ', "rules": %d' % Replay.RULES_VERSIONS["maze"]
 		var cases := {
@@ -298,7 +300,7 @@ class TestCommand:
 			'"physics" must be a whole number from 1 to 1000',
 		}
 		for text: String in cases:
-			var error := str(Reader.read(text + "\n").get("error"))
+			var error := str(ReplayReader.read(text + "\n").get("error"))
 			assert_string_contains(error, cases[text], text)
 
 	func test_a_missing_board_or_file_exits_2() -> void:
@@ -316,10 +318,10 @@ class TestLimits:
 	extends GutTest
 
 	func test_a_game_too_long_for_a_file_stops_recording_and_saves_nothing() -> void:
-		var rules := PachinkoRules.new(Kit.load_level(PACHINKO_CLASSIC), 1)
+		var rules := PachinkoRules.new(ReplayKit.load_level(PACHINKO_CLASSIC), 1)
 		var recorder := ReplayRecorder.new()
 		recorder.attach_pachinko(rules, 1)
-		rules.world.step_count = Reader.MAX_STEPS + 1  # as after hours of play
+		rules.world.step_count = ReplayReader.MAX_STEPS + 1  # as after hours of play
 		recorder.note_frame()
 		assert_false(recorder.is_recording())
 		assert_null(recorder.finish(), "no replay the reader would refuse")
@@ -337,7 +339,7 @@ class TestPachinkoScreen:
 		ReplayStore.folder = FOLDER
 
 	func after_each() -> void:
-		Kit.remove_folder(FOLDER)
+		ReplayKit.remove_folder(FOLDER)
 		ReplayStore.folder = ReplayStore.DIR
 
 	func test_the_screen_keeps_the_last_game_as_a_replay_that_plays_back() -> void:

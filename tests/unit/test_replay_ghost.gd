@@ -4,7 +4,7 @@ extends GutTest
 ## screen saves a best run and shows its ghost on the next attempt.
 
 const MAZE_CLASSIC := "res://levels/maze/classic.board"
-const Kit := preload("res://tests/unit/replay_kit.gd")
+const ReplayKit := preload("res://tests/unit/replay_kit.gd")
 const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
@@ -16,11 +16,11 @@ const TEST_SAVE := "user://test_ghost_save.cfg"
 
 func before_each() -> void:
 	ReplayStore.folder = TEST_FOLDER
-	Kit.remove_folder(TEST_FOLDER)
+	ReplayKit.remove_folder(TEST_FOLDER)
 
 
 func after_each() -> void:
-	Kit.remove_folder(TEST_FOLDER)
+	ReplayKit.remove_folder(TEST_FOLDER)
 	ReplayStore.folder = ReplayStore.DIR
 
 
@@ -46,14 +46,16 @@ func _first_attempt(level: BoardLevel) -> Array:
 
 
 func test_the_ghost_shows_the_best_run_step_for_step() -> void:
-	var level := Kit.load_level(MAZE_CLASSIC)
+	var level := ReplayKit.load_level(MAZE_CLASSIC)
 	var first := _first_attempt(level)
 	var replay: Replay = first[0]
 	var seen: Dictionary = first[1]
 	assert_eq(ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false)), OK)
 	var ghost := GhostRun.load_best(level, false)
 	assert_not_null(ghost, "the second attempt finds the best run")
-	assert_eq(ghost.positions(), Kit.load_level(MAZE_CLASSIC).ball_starts, "it waits at the start")
+	assert_eq(
+		ghost.positions(), ReplayKit.load_level(MAZE_CLASSIC).ball_starts, "it waits at the start"
+	)
 	var compared := 0
 	var live_steps := 0
 	while live_steps < replay.steps:
@@ -72,7 +74,7 @@ func test_the_ghost_shows_the_best_run_step_for_step() -> void:
 
 
 func test_no_ghost_without_a_best_run_in_that_mode_for_a_changed_board_or_physics() -> void:
-	var level := Kit.load_level(MAZE_CLASSIC)
+	var level := ReplayKit.load_level(MAZE_CLASSIC)
 	assert_null(GhostRun.load_best(level, false), "nothing saved yet")
 	var replay: Replay = _first_attempt(level)[0]
 	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
@@ -116,12 +118,12 @@ class TestMazeScreen:
 
 	func before_each() -> void:
 		ReplayStore.folder = TEST_FOLDER
-		Kit.remove_folder(TEST_FOLDER)
+		ReplayKit.remove_folder(TEST_FOLDER)
 		_game = GAME.instantiate()
 		add_child_autofree(_game)
 
 	func after_each() -> void:
-		Kit.remove_folder(TEST_FOLDER)
+		ReplayKit.remove_folder(TEST_FOLDER)
 		ReplayStore.folder = ReplayStore.DIR
 
 	func _rules() -> MazeRules:
@@ -154,7 +156,7 @@ class TestMazeScreen:
 		assert_eq(rules.state, MazeRules.State.WON, "the pilot won the first attempt")
 		assert_true(FileAccess.file_exists(path), "the best run was saved")
 		var saved: Replay = ReplayStore.read_file(path)["replay"]
-		assert_true(Kit.play(saved, rules.level)["match"], "and it replays to its own end")
+		assert_true(ReplayKit.play(saved, rules.level)["match"], "and it replays to its own end")
 		rules.reset()
 		var ghost: GhostRun = _game.ghost()
 		assert_not_null(ghost, "the second attempt has a ghost")
@@ -169,7 +171,7 @@ class TestMazeScreen:
 	func test_the_setting_turns_the_ghost_off() -> void:
 		App.settings.set_value("show_ghost", false)
 		var rules := _rules()
-		var replay: Replay = Kit.record_live_maze(rules.level, false, 200).finish()
+		var replay: Replay = ReplayKit.record_live_maze(rules.level, false, 200).finish()
 		ReplayStore.save(replay, ReplayStore.best_maze_path(rules.level.board_id, false))
 		rules.reset()
 		assert_eq(_game.ghost(), null, "no ghost when the setting is off")

@@ -5,7 +5,7 @@ extends GutTest
 
 const ROOT := "res://tests/fixtures/hostile_replays"
 const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
-const Reader := preload("res://scripts/replay/replay_reader.gd")
+const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
 ## Reading one file may never take longer than this.
 const MAX_MS := 2000.0
 const EXPECTED := {
@@ -90,13 +90,13 @@ func test_a_file_too_large_is_refused_before_it_is_read() -> void:
 	var path := "user://test_replay_huge.replay"
 	var file := FileAccess.open(path, FileAccess.WRITE)
 	var line := '["tilt",1,1,0,0]\n'
-	file.store_string(line.repeat(Reader.MAX_BYTES / line.length() + 10))
+	file.store_string(line.repeat(ReplayReader.MAX_BYTES / line.length() + 10))
 	file.close()
 	var error := str(ReplayStore.read_file(path).get("error"))
-	assert_string_contains(error, "larger than %d bytes" % Reader.MAX_BYTES)
+	assert_string_contains(error, "larger than %d bytes" % ReplayReader.MAX_BYTES)
 	DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
 
 
 func test_too_many_lines_are_refused() -> void:
-	var error := str(Reader.read("\n".repeat(Reader.MAX_LINES + 5)).get("error"))
-	assert_string_contains(error, "at most %d" % Reader.MAX_LINES)
+	var error := str(ReplayReader.read("\n".repeat(ReplayReader.MAX_LINES + 5)).get("error"))
+	assert_string_contains(error, "at most %d" % ReplayReader.MAX_LINES)

@@ -5,8 +5,8 @@ extends GutTest
 ## binding, from the file and from the settings screen.
 
 const AppScript := preload("res://scenes/app/app.gd")
-const Codec := preload("res://scripts/app/input_event_codec.gd")
-const SaveDataScript := preload("res://scripts/app/save_data.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
+const SaveData := preload("res://scripts/app/save_data.gd")
 const UserFile := preload("res://scripts/app/user_file.gd")
 const SETTINGS := "user://test_settings_files_settings.cfg"
 const SAVE := "user://test_settings_files_save.cfg"
@@ -96,7 +96,7 @@ func test_bom_and_crlf_files_read_as_usual() -> void:
 	var settings := GameSettings.new()
 	assert_eq(settings.load_file(SETTINGS), "")
 	assert_eq(settings.master_volume, 0.25)
-	var data := SaveDataScript.new()
+	var data := SaveData.new()
 	assert_eq(data.load_file(SAVE), "")
 	assert_eq(data.best_maze_time("a=b", true), 9.5)
 
@@ -142,8 +142,8 @@ func test_clearing_a_pause_column_restores_its_default() -> void:
 	settings.rebind("pause", key, false)
 	assert_false(settings.clear_binding("pause", false), "the keyboard column comes back")
 	assert_false(settings.clear_binding("pause", true), "so does the gamepad column")
-	var codes := settings.events_for("pause").map(Codec.encode)
-	assert_eq(codes, shipped.map(Codec.encode), "both columns are the shipped ones again")
+	var codes := settings.events_for("pause").map(InputEventCodec.encode)
+	assert_eq(codes, shipped.map(InputEventCodec.encode), "both columns are the shipped ones again")
 	assert_true(settings.clear_binding("game_restart", false))
 	assert_true(settings.clear_binding("game_restart", true))
 	assert_eq(settings.events_for("game_restart").size(), 0, "other actions may be unbound")
@@ -153,9 +153,11 @@ func test_a_pause_list_without_a_gamepad_binding_gets_the_default_one() -> void:
 	_write(SETTINGS, '[meta]\nversion=1\n[input]\npause=["key:P"]\n')
 	var settings := GameSettings.new()
 	assert_eq(settings.load_file(SETTINGS), "", "filled in quietly")
-	var codes := settings.events_for("pause").map(Codec.encode)
+	var codes := settings.events_for("pause").map(InputEventCodec.encode)
 	assert_has(codes, "key:P")
-	assert_true(settings.events_for("pause").any(Codec.is_gamepad), "a gamepad pause is back")
+	assert_true(
+		settings.events_for("pause").any(InputEventCodec.is_gamepad), "a gamepad pause is back"
+	)
 
 
 # Issue 39: on the release build every second start called both files damaged and moved

@@ -3,7 +3,7 @@ extends GutTest
 ## the InputMap when applied, and "Default controls" brings the shipped bindings back.
 
 const PATH := "user://test_settings_input.cfg"
-const Codec := preload("res://scripts/app/input_event_codec.gd")
+const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 
 func after_each() -> void:
@@ -32,21 +32,26 @@ func test_codes_round_trip_for_every_kind_of_event() -> void:
 	var mouse := InputEventMouseButton.new()
 	mouse.button_index = MOUSE_BUTTON_LEFT
 	for event: InputEvent in [_key(KEY_SPACE), _key(KEY_F3), _joy_button(JOY_BUTTON_START)]:
-		assert_eq(Codec.encode(Codec.decode(Codec.encode(event))), Codec.encode(event))
-	assert_eq(Codec.encode(motion), "joy_axis:1:-")
-	assert_eq(Codec.encode(Codec.decode("joy_axis:1:-")), "joy_axis:1:-")
-	assert_eq(Codec.encode(Codec.decode(Codec.encode(mouse))), "mouse:1")
+		assert_eq(
+			InputEventCodec.encode(InputEventCodec.decode(InputEventCodec.encode(event))),
+			InputEventCodec.encode(event)
+		)
+	assert_eq(InputEventCodec.encode(motion), "joy_axis:1:-")
+	assert_eq(InputEventCodec.encode(InputEventCodec.decode("joy_axis:1:-")), "joy_axis:1:-")
+	assert_eq(
+		InputEventCodec.encode(InputEventCodec.decode(InputEventCodec.encode(mouse))), "mouse:1"
+	)
 
 
 func test_bad_codes_decode_to_null() -> void:
 	for bad: String in ["", "key", "key:NoSuchKey", "joy_button:-1", "joy_button:x", "joy_axis:0"]:
-		assert_null(Codec.decode(bad), bad)
-	assert_null(Codec.decode("joy_axis:0:up"))
-	assert_null(Codec.decode("banana:3"))
+		assert_null(InputEventCodec.decode(bad), bad)
+	assert_null(InputEventCodec.decode("joy_axis:0:up"))
+	assert_null(InputEventCodec.decode("banana:3"))
 
 
 func test_decoded_events_match_every_device() -> void:
-	assert_eq(Codec.decode("joy_button:0").device, -1)
+	assert_eq(InputEventCodec.decode("joy_button:0").device, -1)
 
 
 func test_keyboard_rebind_keeps_gamepad_bindings() -> void:
@@ -54,7 +59,7 @@ func test_keyboard_rebind_keeps_gamepad_bindings() -> void:
 	settings.rebind("tilt_left", _key(KEY_J), false)
 	var codes := PackedStringArray()
 	for event in settings.events_for("tilt_left"):
-		codes.append(Codec.encode(event))
+		codes.append(InputEventCodec.encode(event))
 	assert_eq(codes, PackedStringArray(["joy_axis:0:-", "key:J"]))
 
 
@@ -107,7 +112,7 @@ func test_the_controls_screen_rebinds_with_the_next_key_and_esc_cancels() -> voi
 	button.pressed.emit()
 	list._input(_key_press(KEY_I))
 	assert_eq(button.text, "I")
-	assert_eq(Codec.encode(App.settings.events_for("tilt_up")[-1]), "key:I")
+	assert_eq(InputEventCodec.encode(App.settings.events_for("tilt_up")[-1]), "key:I")
 	var pad: Button = list.get_node("tilt_up_pad")
 	pad.pressed.emit()
 	var trigger := InputEventJoypadMotion.new()
@@ -123,7 +128,9 @@ func test_the_controls_screen_removes_a_binding_but_pause_keeps_one() -> void:
 	var restart: Button = list.get_node("game_restart_key")
 	restart.gui_input.emit(_key_press(KEY_DELETE))
 	assert_eq(restart.text, "(none)")
-	assert_true(App.settings.events_for("game_restart").all(Codec.is_gamepad), "keys gone")
+	assert_true(
+		App.settings.events_for("game_restart").all(InputEventCodec.is_gamepad), "keys gone"
+	)
 	var right_click := InputEventMouseButton.new()
 	right_click.button_index = MOUSE_BUTTON_RIGHT
 	right_click.pressed = true

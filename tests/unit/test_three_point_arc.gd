@@ -4,8 +4,8 @@ extends GutTest
 ## message; the select tool's arc handles reshape a selected arc in one History step, and the
 ## pattern tool places an arc by its ends and bulge.
 
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const PinArc := preload("res://addons/board_editor/core/pin_arc.gd")
 const ThreePointArc := preload("res://addons/board_editor/core/three_point_arc.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
@@ -65,9 +65,9 @@ func test_points_in_a_line_are_refused_with_a_clear_message() -> void:
 
 
 # A pachinko board with a 7-pin arc round CENTRE from -150° to -30°, selected.
-func _arc_session() -> Session:
-	var session := Session.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
-	var data := Items.empty_set()
+func _arc_session() -> BoardEditSession:
+	var session := BoardEditSession.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
+	var data := BoardItems.empty_set()
 	data["pins"] = PinPatterns.arc(CENTRE, 100.0, -150.0, -30.0, 7)
 	var add := AddItemsAction.new(session.level, data, "Add")
 	session.commit(add)
@@ -133,7 +133,7 @@ func test_dragging_an_end_onto_the_line_holds_the_arc_and_says_why() -> void:
 
 
 func test_the_pattern_tool_places_an_arc_by_its_ends_and_bulge() -> void:
-	var session := Session.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
+	var session := BoardEditSession.new(NewBoard.make(BoardLevel.Kind.PACHINKO))
 	session.snap_enabled = false
 	session.pattern = {"kind": "arc", "count": 5, "spacing": 30.0, "radius": 150.0}
 	var tool := PatternTool.new(session)

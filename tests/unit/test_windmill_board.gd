@@ -3,14 +3,14 @@ extends GutTest
 ## pockets, read back to the same board, refused with the field named when a value is bad;
 ## the validator's messages for windmills that do not fit; the factory builds them.
 
-const Reader := preload("res://scripts/loading/board_text_reader.gd")
-const Writer := preload("res://scripts/loading/board_text_writer.gd")
+const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
+const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/pachinko/classic.board"
 
 
 ## Classic's ring, rail and tuning with no pins or pockets: room for windmills anywhere.
 func _open_board() -> BoardLevel:
-	var level: BoardLevel = Reader.read(FileAccess.get_file_as_string(CLASSIC))["level"]
+	var level: BoardLevel = BoardTextReader.read(FileAccess.get_file_as_string(CLASSIC))["level"]
 	level.pins = PackedVector2Array()
 	level.pin_pocket = PackedInt32Array()
 	level.pin_special = PackedByteArray()
@@ -36,7 +36,7 @@ func test_windmill_lines_round_trip() -> void:
 		WindmillSpec.driven(Vector2(300, 250), 4, 22.0, -135.5),
 		WindmillSpec.spinning_free(Vector2(420, 300), 3, 26.0, 180.0),
 	]
-	var text := Writer.write(level)
+	var text := BoardTextWriter.write(level)
 	assert_string_contains(
 		text,
 		'{"windmill": {"id": 1, "x": 300, "y": 250, "blades": 4, "length": 22, "speed": -135.5}}'
@@ -45,7 +45,7 @@ func test_windmill_lines_round_trip() -> void:
 		text,
 		'{"windmill": {"id": 2, "x": 420, "y": 300, "blades": 3, "length": 26, "friction": 180}}'
 	)
-	var read := Reader.read(text)
+	var read := BoardTextReader.read(text)
 	assert_true(read.has("level"), str(read.get("error", "")))
 	var again: BoardLevel = read["level"]
 	assert_eq(again.windmills.size(), 2)
@@ -54,13 +54,13 @@ func test_windmill_lines_round_trip() -> void:
 	assert_true(again.windmills[1].free_spin)
 	assert_eq(again.windmills[1].friction, 180.0)
 	assert_eq(again.windmills[1].blades, 3)
-	assert_eq(Writer.write(again), text, "stable text")
+	assert_eq(BoardTextWriter.write(again), text, "stable text")
 
 
 func test_boards_without_windmills_write_no_windmill_line() -> void:
 	var text := FileAccess.get_file_as_string(CLASSIC)
-	var level: BoardLevel = Reader.read(text)["level"]
-	assert_eq(Writer.write(level), text)
+	var level: BoardLevel = BoardTextReader.read(text)["level"]
+	assert_eq(BoardTextWriter.write(level), text)
 	assert_false(text.contains("windmill"))
 
 
@@ -83,7 +83,7 @@ func test_bad_windmill_lines_are_refused_with_the_problem_named() -> void:
 		'unknown field "colour"',
 	}
 	for line: String in cases:
-		var read := Reader.read(base + line + "\n")
+		var read := BoardTextReader.read(base + line + "\n")
 		assert_true(read.has("error"), line)
 		var error: String = read.get("error", "")
 		assert_string_contains(error, "windmills item 1: ")

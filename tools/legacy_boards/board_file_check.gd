@@ -5,7 +5,7 @@ extends RefCounted
 ## field must be one the board knows (or an old one the upgrader converts) with the right
 ## type. Returns the file's version (0 when it has no `version` line: the prototype format).
 
-const ValueCheck := preload("res://tools/legacy_boards/board_value_check.gd")
+const BoardValueCheck := preload("res://tools/legacy_boards/board_value_check.gd")
 const MAX_BYTES := 4 * 1024 * 1024
 
 
@@ -152,13 +152,13 @@ static func _open_section(
 		var script_path: String = attributes.get("path", "")
 		if (
 			attributes.get("type", "") != "Script"
-			or not ValueCheck.ALLOWED_SCRIPTS.has(script_path)
+			or not BoardValueCheck.ALLOWED_SCRIPTS.has(script_path)
 		):
 			return (
 				"line %d refers to %s, but a board may only use the board scripts"
 				% [statement["line"], script_path]
 			)
-		ext_scripts[attributes.get("id", "")] = ValueCheck.ALLOWED_SCRIPTS[script_path]
+		ext_scripts[attributes.get("id", "")] = BoardValueCheck.ALLOWED_SCRIPTS[script_path]
 	elif tag == "sub_resource" or tag == "resource":
 		if tag == "sub_resource" and attributes.get("type", "") != "Resource":
 			return (
@@ -178,7 +178,7 @@ static func _assign_classes(sections: Array[Dictionary], ext_scripts: Dictionary
 	for section in sections:
 		var fields: Dictionary = section["fields"]
 		var script_ref: String = fields.get("script", [0, ""])[1]
-		var class_id := ValueCheck.ref_id(script_ref, "Ext")
+		var class_id := BoardValueCheck.ref_id(script_ref, "Ext")
 		if not ext_scripts.has(class_id):
 			return "line %d: a section has no board script" % section["line"]
 		section["class"] = ext_scripts[class_id]
@@ -191,7 +191,7 @@ static func _assign_classes(sections: Array[Dictionary], ext_scripts: Dictionary
 static func _check_fields_in_order(sections: Array[Dictionary], ext_scripts: Dictionary) -> String:
 	var sub_classes := {}  # id → class name
 	for section in sections:
-		var problem := ValueCheck.check_fields(section, ext_scripts, sub_classes)
+		var problem := BoardValueCheck.check_fields(section, ext_scripts, sub_classes)
 		if not problem.is_empty():
 			return problem
 		if section["tag"] == "sub_resource":

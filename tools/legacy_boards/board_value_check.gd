@@ -3,7 +3,7 @@ extends RefCounted
 ## script declares (or an old one board_upgrader.gd converts) and its text must have the right
 ## shape before str_to_var (which could build any object) ever sees it.
 
-const Upgrader := preload("res://tools/legacy_boards/board_upgrader.gd")
+const BoardUpgrader := preload("res://tools/legacy_boards/board_upgrader.gd")
 
 ## The only scripts a board file may use, and the class each one defines.
 const ALLOWED_SCRIPTS := {
@@ -41,8 +41,12 @@ static func check_fields(
 		if key in BUILTIN_FIELDS or key.begins_with("metadata/"):
 			continue
 		var want: Dictionary = expected.get(key, {})
-		if want.is_empty() and section["class"] == "BoardLevel" and Upgrader.LEGACY_FIELDS.has(key):
-			want = {"type": Upgrader.LEGACY_FIELDS[key], "class": ""}
+		if (
+			want.is_empty()
+			and section["class"] == "BoardLevel"
+			and BoardUpgrader.LEGACY_FIELDS.has(key)
+		):
+			want = {"type": BoardUpgrader.LEGACY_FIELDS[key], "class": ""}
 		if want.is_empty():
 			return "line %d: %s has no field '%s'" % [line, section["class"], key]
 		var problem := _check_value(value, want, ext_scripts, sub_classes)

@@ -5,8 +5,8 @@ extends RefCounted
 ## tools/ (never exported, never called by the game) and reads only res:// files. Convert
 ## only files you trust.
 
-const FileCheck := preload("res://tools/legacy_boards/board_file_check.gd")
-const Upgrader := preload("res://tools/legacy_boards/board_upgrader.gd")
+const BoardFileCheck := preload("res://tools/legacy_boards/board_file_check.gd")
+const BoardUpgrader := preload("res://tools/legacy_boards/board_upgrader.gd")
 
 
 ## The old board at `path`, upgraded to the current format and validated like a .board file.
@@ -17,7 +17,7 @@ static func load_board(path: String) -> BoardLoadResult:
 		)
 	if not FileAccess.file_exists(path):
 		return BoardLoader.refused(path, "the file does not exist")
-	var checked := FileCheck.check(path)
+	var checked := BoardFileCheck.check(path)
 	var problem: String = checked["error"]
 	if not problem.is_empty():
 		return BoardLoader.refused(path, problem)
@@ -28,7 +28,7 @@ static func load_board(path: String) -> BoardLoadResult:
 		return BoardLoader.refused(path, "the file is not a BoardLevel")
 	var level := resource as BoardLevel
 	var from_version: int = checked["version"] if checked["version"] >= 0 else level.version
-	var upgrade_problem := Upgrader.upgrade(level, from_version)
+	var upgrade_problem := BoardUpgrader.upgrade(level, from_version)
 	if not upgrade_problem.is_empty():
 		return BoardLoader.refused(path, upgrade_problem)
 	return BoardLoader.validated(path, level)

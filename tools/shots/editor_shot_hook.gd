@@ -12,17 +12,17 @@ extends Node
 
 const ENV := "BOARD_EDITOR_SHOT"
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
-const Session := preload("res://addons/board_editor/board_edit_session.gd")
-const Items := preload("res://addons/board_editor/core/board_items.gd")
+const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
+const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
-const BoardEditorPlugin := preload("res://addons/board_editor/plugin.gd")
+const Plugin := preload("res://addons/board_editor/plugin.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
 
-var _plugin: BoardEditorPlugin
+var _plugin: Plugin
 
 
 func _init(plugin: EditorPlugin) -> void:
-	_plugin = plugin as BoardEditorPlugin
+	_plugin = plugin as Plugin
 
 
 func _ready() -> void:
@@ -95,7 +95,7 @@ func _stage(tool_name: String) -> void:
 	var level := session.level
 	if tool_name == "wall":
 		session.set_mirror(true)
-		session.set_tool(Session.Tool.WALL)
+		session.set_tool(BoardEditSession.Tool.WALL)
 		var cell := level.path_width + level.wall_width
 		var tool := input.active_tool()
 		var press := InputEventMouseButton.new()
@@ -106,7 +106,7 @@ func _stage(tool_name: String) -> void:
 		# A mistake for the validator to catch live: walls that shut in the first ball.
 		var start := level.ball_starts[0]
 		var corner := (start / cell).floor() * cell
-		var trap := Items.empty_set()
+		var trap := BoardItems.empty_set()
 		trap["walls"] = PackedVector2Array(
 			[
 				corner + Vector2(cell, 0),
@@ -116,54 +116,56 @@ func _stage(tool_name: String) -> void:
 			]
 		)
 		session.commit(AddItemsAction.new(level, trap, "Add wall"))
-		session.select([Items.make(Items.Kind.WALL, level.walls.size() / 2 - 1)] as Array[Vector2i])
+		session.select(
+			[BoardItems.make(BoardItems.Kind.WALL, level.walls.size() / 2 - 1)] as Array[Vector2i]
+		)
 		session.set_layer("Holes", true, false)
 	elif tool_name == "curve":
 		_stage_curve(session, input)
 	elif tool_name == "bonus":
 		_stage_bonus(session)
 	else:
-		session.set_tool(Session.Tool.PATTERN)
+		session.set_tool(BoardEditSession.Tool.PATTERN)
 		session.pattern["kind"] = "arc"
 		session.pattern["count"] = 7
 		session.pattern["radius"] = 60.0
 		var tool := input.active_tool()
 		tool.set("hover", level.ring_center + Vector2(-120, -150))
 		# A mistake for the validator to catch live: a pin dropped onto another.
-		var extra := Items.empty_set()
+		var extra := BoardItems.empty_set()
 		extra["pins"] = PackedVector2Array([level.pins[40] + Vector2(1.5, 0.5)])
 		session.commit(AddItemsAction.new(level, extra, "Add pin"))
 		if not level.pockets.is_empty():
-			session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
+			session.select([BoardItems.make(BoardItems.Kind.POCKET, 0)] as Array[Vector2i])
 	session.settings_changed.emit()
 
 
 # A bonus board in the Select tool: the attacker selected (its open seconds and catches in
 # the panel), the pins locked so a click can only pick bonus pieces and pockets, and a tulip
 # dropped onto the first start pocket for the validator to name.
-func _stage_bonus(session: Session) -> void:
+func _stage_bonus(session: BoardEditSession) -> void:
 	var level := session.level
 	if level.bonus_pockets.is_empty():
 		push_error("Editor shot: the bonus shot needs a board with a bonus layer.")
 		return
 	var mouth := level.bonus_pockets[0].position + Vector2(18, 6)
-	var extra := Items.empty_set()
+	var extra := BoardItems.empty_set()
 	extra["bonus"] = [BonusPocketSpec.of_role(BonusPocketSpec.Role.TULIP, mouth, 26.0, 26.0, 3)]
 	session.commit(AddItemsAction.new(level, extra, "Add tulip"))
 	for i in level.bonus_pockets.size():
 		if level.bonus_pockets[i].role == BonusPocketSpec.Role.ATTACKER:
-			session.select([Items.make(Items.Kind.BONUS, i)] as Array[Vector2i])
+			session.select([BoardItems.make(BoardItems.Kind.BONUS, i)] as Array[Vector2i])
 			break
 	session.set_layer("Pins", false, true)
-	session.set_tool(Session.Tool.SELECT)
+	session.set_tool(BoardEditSession.Tool.SELECT)
 
 
 # A peg curve half drawn over the top of the field, a pocket selected for the panel.
-func _stage_curve(session: Session, input: BoardInput) -> void:
+func _stage_curve(session: BoardEditSession, input: BoardInput) -> void:
 	var level := session.level
 	if not level.pockets.is_empty():
-		session.select([Items.make(Items.Kind.POCKET, 0)] as Array[Vector2i])
-	session.set_tool(Session.Tool.CURVE)
+		session.select([BoardItems.make(BoardItems.Kind.POCKET, 0)] as Array[Vector2i])
+	session.set_tool(BoardEditSession.Tool.CURVE)
 	session.curve["count"] = 20
 	var tool := input.active_tool()
 	tool.set("pixel", 0.5)

@@ -10,9 +10,9 @@ extends RefCounted
 ## The states come from BallWorld running the scene (a snapshot every SNAPSHOT_EVERY steps):
 ## the kernel starts each of its steps from one, so it sees the contacts a real run sees.
 
-const Ours := preload("res://tests/bench/physics/ours_runner.gd")
+const OursRunner := preload("res://tests/bench/physics/ours_runner.gd")
 const CpuClock := preload("res://tests/bench/physics/cpu_clock.gd")
-const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
+const BenchScenes := preload("res://tests/bench/physics/bench_scenes.gd")
 
 const SNAPSHOT_EVERY := 4
 ## Kernel steps timed: enough for about half a second of CPU on the 10 ms clock.
@@ -75,16 +75,16 @@ func time_round() -> Dictionary:
 
 
 func _record(steps: int) -> void:
-	var w := Ours.build_world(_scene)
-	var side := Ours.OursSide.new(w)
+	var w := OursRunner.build_world(_scene)
+	var side := OursRunner.OursSide.new(w)
 	var rng := RandomNumberGenerator.new()
-	rng.seed = Ours.RULES_SEED
+	rng.seed = OursRunner.RULES_SEED
 	var hz: float = _scene["hz"]
 	for s: int in steps:
 		w.step(1.0 / hz)
-		if Ours.rules_due(_scene["mode"], s + 1):
-			Ours.harness_rules(_scene["mode"], s + 1, w.get_positions(), rng, side, hz)
-		if s >= Ours.WARMUP and s % SNAPSHOT_EVERY == 0:
+		if OursRunner.rules_due(_scene["mode"], s + 1):
+			OursRunner.harness_rules(_scene["mode"], s + 1, w.get_positions(), rng, side, hz)
+		if s >= OursRunner.WARMUP and s % SNAPSHOT_EVERY == 0:
 			_pos.append(w.get_positions())
 			_vel.append(w.get_velocities())
 
@@ -95,7 +95,9 @@ func _bin() -> void:
 	var ball_r: float = _scene["ball_r"]
 	var cell: float = 2.0 * ball_r + 1.0
 	_inv = 1.0 / cell
-	var box := Rect2(-Scenes.RING_R, -Scenes.RING_R, 2.0 * Scenes.RING_R, 2.0 * Scenes.RING_R)
+	var box := Rect2(
+		-BenchScenes.RING_R, -BenchScenes.RING_R, 2.0 * BenchScenes.RING_R, 2.0 * BenchScenes.RING_R
+	)
 	if not _scene["ring"]:
 		box = Rect2()
 	for p: Vector2 in _scene["pins"] + _scene["walls"]:
@@ -150,7 +152,7 @@ func _kernel_step(pos: PackedVector2Array, vel: PackedVector2Array) -> Vector2i:
 	var r: float = _scene["ball_r"]
 	var pin_lim2: float = (r + _scene["pin_r"]) ** 2
 	var wall_lim2: float = (r + _scene["wall_r"]) ** 2
-	var ring_lim: float = Scenes.RING_R - r
+	var ring_lim: float = BenchScenes.RING_R - r
 	var ring_lim2: float = ring_lim * ring_lim if _scene["ring"] else INF
 	# Locals, not members, in the loop: a member read costs more than a local one.
 	var origin: Vector2 = _origin

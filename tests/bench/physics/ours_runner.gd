@@ -3,7 +3,7 @@ extends RefCounted
 ## engines share (respawn, relaunch, tilt), the zoning-versus-brute-force ratio and the
 ## scale sweeps.
 
-const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
+const BenchScenes := preload("res://tests/bench/physics/bench_scenes.gd")
 const SweptCheck := preload("res://tests/bench/physics/swept_check.gd")
 const BladeCheck := preload("res://tests/bench/physics/blade_check.gd")
 
@@ -51,7 +51,7 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	var w := BallWorld.new(t)
 	w.use_zoning = zoning
 	if scene["ring"]:
-		w.shapes.set_ring(Vector2.ZERO, Scenes.RING_R)
+		w.shapes.set_ring(Vector2.ZERO, BenchScenes.RING_R)
 	for p: Vector2 in scene["pins"]:
 		w.shapes.add_pin(p, scene["pin_r"], -1, false, t.min_horizontal_speed)
 	var walls: PackedVector2Array = scene["walls"]
@@ -73,7 +73,7 @@ static func build_world(scene: Dictionary, zoning := true) -> BallWorld:
 	for i: int in pos.size():
 		w.spawn_ball(pos[i], vel[i], scene["ball_r"])
 	if maze:
-		MazeTilt.apply(w, Scenes.maze_tilt(0.0))
+		MazeTilt.apply(w, BenchScenes.maze_tilt(0.0))
 	w.build_grid()
 	return w
 
@@ -164,17 +164,17 @@ static func harness_rules(
 		return
 	if mode == "flow" or mode == "windmills":
 		for i: int in pos.size():
-			if pos[i].y > Scenes.RESPAWN_Y:
-				var p: Vector2 = Scenes.respawn_point(rng)
+			if pos[i].y > BenchScenes.RESPAWN_Y:
+				var p: Vector2 = BenchScenes.respawn_point(rng)
 				side.call("teleport", i, p, Vector2.ZERO)
 				pos[i] = p
 	elif mode == "fast":
 		for i: int in pos.size():
 			var v: Vector2 = side.call("velocity", i)
 			if v.length() < 500.0:
-				side.call("teleport", i, pos[i], Scenes.fast_velocity(rng))
+				side.call("teleport", i, pos[i], BenchScenes.fast_velocity(rng))
 	elif mode == "maze":
-		side.call("tilt", Scenes.maze_tilt(step_i / hz))
+		side.call("tilt", BenchScenes.maze_tilt(step_i / hz))
 
 
 ## S1's wall-clock speed on every core over its speed on one thread, from alternating
@@ -244,7 +244,7 @@ static func zoned_vs_brute(scene: Dictionary, steps: int) -> float:
 static func scale_sweep() -> Dictionary:
 	var by_balls := {}
 	for n: int in [250, 500, 1000, 2000, 4000, 8000]:
-		var scene: Dictionary = Scenes.make("S1", "flow", 24.0, n, 240.0)
+		var scene: Dictionary = BenchScenes.make("S1", "flow", 24.0, n, 240.0)
 		# About 400,000 ball-steps each: near a second of CPU, so the 10 ms clock and the
 		# host's drift stay small against it.
 		var steps: int = clampi(400000 / n, 50, 1600)
@@ -254,7 +254,7 @@ static func scale_sweep() -> Dictionary:
 	return {
 		"balls": by_balls,
 		"pins": pin_sweep(PIN_SWEEP_BALL_R),
-		"pins_crush": pin_sweep(Scenes.BALL_R)
+		"pins_crush": pin_sweep(BenchScenes.BALL_R)
 	}
 
 
@@ -266,7 +266,7 @@ static func scale_sweep() -> Dictionary:
 static func pin_sweep(ball_r: float) -> Dictionary:
 	var by_pins := {}
 	for pitch: float in [24.0, 17.0, 12.0]:
-		var scene: Dictionary = Scenes.make("S1", "flow", pitch, 1000, 240.0, ball_r)
+		var scene: Dictionary = BenchScenes.make("S1", "flow", pitch, 1000, 240.0, ball_r)
 		var pins: int = (scene["pins"] as PackedVector2Array).size()
 		var r: Dictionary = run(scene, 400 + WARMUP, false)
 		by_pins[str(pins)] = r["ball_steps_per_s"]

@@ -5,8 +5,8 @@ extends SceneTree
 ##     -- [--only=S1] [--pitch=12] [--ball_r=3.5] [--steps=300]
 ## `--pitch` overrides the pin pitch of the pin scenes (S1 at 12 is the 4×-pins case).
 
-const Scenes := preload("res://tests/bench/physics/bench_scenes.gd")
-const Ours := preload("res://tests/bench/physics/ours_runner.gd")
+const BenchScenes := preload("res://tests/bench/physics/bench_scenes.gd")
+const OursRunner := preload("res://tests/bench/physics/ours_runner.gd")
 
 const SPECS: Array = [
 	["S1", "flow", 24.0, 1000, 240.0],
@@ -25,8 +25,8 @@ func _initialize() -> void:
 		if args.has("only") and args["only"] != spec[0]:
 			continue
 		var pitch: float = float(args.get("pitch", str(spec[2])))
-		var ball_r: float = float(args.get("ball_r", str(Scenes.BALL_R)))
-		var scene: Dictionary = Scenes.make(spec[0], spec[1], pitch, spec[3], spec[4], ball_r)
+		var ball_r: float = float(args.get("ball_r", str(BenchScenes.BALL_R)))
+		var scene: Dictionary = BenchScenes.make(spec[0], spec[1], pitch, spec[3], spec[4], ball_r)
 		var counts: Array = [1] if args.has("one") else [1, OS.get_processor_count()]
 		for threads: int in counts:
 			print(
@@ -39,20 +39,22 @@ func _initialize() -> void:
 
 
 static func _profile(scene: Dictionary, steps: int, threads: int) -> String:
-	var w: BallWorld = Ours.build_world(scene)
+	var w: BallWorld = OursRunner.build_world(scene)
 	w.threads = threads
 	# One thread: its CPU time (the machine is shared); all cores: wall time.
 	w.profile_cpu_time = threads == 1
-	var side := Ours.OursSide.new(w)
+	var side := OursRunner.OursSide.new(w)
 	var rng := RandomNumberGenerator.new()
-	rng.seed = Ours.RULES_SEED
+	rng.seed = OursRunner.RULES_SEED
 	var dt: float = 1.0 / float(scene["hz"])
 	for s: int in steps:
-		if s == Ours.WARMUP:
+		if s == OursRunner.WARMUP:
 			w.profile_stages = true
 		w.step(dt)
-		if Ours.rules_due(scene["mode"], s + 1):
-			Ours.harness_rules(scene["mode"], s + 1, w.get_positions(), rng, side, scene["hz"])
+		if OursRunner.rules_due(scene["mode"], s + 1):
+			OursRunner.harness_rules(
+				scene["mode"], s + 1, w.get_positions(), rng, side, scene["hz"]
+			)
 	var t: Dictionary = w.stage_times()
 	var parts := PackedStringArray()
 	for k: String in t:
