@@ -15,8 +15,6 @@ extends RefCounted
 ## back: deleting the item with the highest id, or undoing an add, does not free its id.
 ## The lists, their fields and what identifies an item across an edit come from ItemKinds.
 
-const PinKind := preload("res://scripts/board/item_kinds/pin_kind.gd")
-
 ## The largest id a file may use.
 const MAX_ID := ItemKind.MAX_ID
 

@@ -1,3 +1,4 @@
+class_name BoardCheckCli
 extends RefCounted
 ## `--check-boards`: loads every file in the board folders (levels/<kind>/ and the player's
 ## user://boards/<kind>/) through BoardLoader and prints one JSON line per file,

@@ -5,7 +5,6 @@ extends ResourceFormatLoader
 ## by the engine itself), so scenes, the Inspector, the editor's play-test and the game load
 ## boards through the same data-only reader: BoardTextReader, never the text resource parser.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 const EXTENSION := "board"
 
 

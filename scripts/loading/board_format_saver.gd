@@ -5,7 +5,6 @@ extends ResourceFormatSaver
 ## would write the same text leaves the file untouched, so opening a board and saving the
 ## scene never shows up as a change.
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const EXTENSION := "board"
 
 

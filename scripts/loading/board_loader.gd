@@ -5,7 +5,6 @@ extends RefCounted
 ## never stops the others. Old .tres boards are read only by the converter
 ## (tools/legacy_boards/legacy_board_loader.gd), never by the game.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 const LEVELS_DIR := "res://levels"
 ## The folders boards may be loaded from: the shipped boards and the player's own.
 const BOARD_ROOTS: Array[String] = ["res://levels/", "user://boards/"]
@@ -46,10 +45,8 @@ static func load_board(path: String, roots: Array[String] = BOARD_ROOTS) -> Boar
 static func load_bytes(bytes: PackedByteArray, label: String) -> BoardLoadResult:
 	var result := BoardLoadResult.new()
 	result.path = label
-	if bytes.size() > BoardTextReader.BoardSchema.MAX_FILE_BYTES:
-		return _fail(
-			result, "the file is larger than %d bytes" % BoardTextReader.BoardSchema.MAX_FILE_BYTES
-		)
+	if bytes.size() > BoardSchema.MAX_FILE_BYTES:
+		return _fail(result, "the file is larger than %d bytes" % BoardSchema.MAX_FILE_BYTES)
 	return _finish(result, _read_bytes(result, bytes))
 
 
@@ -96,10 +93,8 @@ static func _read_board_file(result: BoardLoadResult, path: String) -> BoardLeve
 		result.error = "the file does not exist"
 		return null
 	var size := FileAccess.open(path, FileAccess.READ)
-	if size != null and size.get_length() > BoardTextReader.BoardSchema.MAX_FILE_BYTES:
-		result.error = (
-			"the file is larger than %d bytes" % BoardTextReader.BoardSchema.MAX_FILE_BYTES
-		)
+	if size != null and size.get_length() > BoardSchema.MAX_FILE_BYTES:
+		result.error = ("the file is larger than %d bytes" % BoardSchema.MAX_FILE_BYTES)
 		return null
 	return _read_bytes(result, FileAccess.get_file_as_bytes(path))
 

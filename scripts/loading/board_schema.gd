@@ -1,3 +1,4 @@
+class_name BoardSchema
 extends RefCounted
 ## The board file's schema: every field a `.board` file may hold, its type and its range,
 ## and the item lists with their counts. `BoardTextReader` checks a parsed file against it

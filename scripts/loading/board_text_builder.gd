@@ -1,10 +1,9 @@
+class_name BoardTextBuilder
 extends RefCounted
 ## Builds a BoardLevel from a board file's gathered and checked fields (BoardTextReader
 ## reads and checks; this makes the level): fields set by name, the tuning, then each item
 ## kind's lines as its ItemKinds row reads them (pins, pockets with their stamped rims, the
 ## bonus layer, windmills; walls, ball starts, holes).
-
-const BoardSchema := preload("res://scripts/loading/board_schema.gd")
 
 
 ## The BoardLevel `data` describes. `data` must have passed BoardTextReader's checks (kind,

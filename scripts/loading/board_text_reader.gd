@@ -1,3 +1,4 @@
+class_name BoardTextReader
 extends RefCounted
 ## Reads a `.board` file's text into a BoardLevel. A board file is JSON Lines: every line is
 ## one JSON object, either fields (`{"ring_radius": 320}`) or one item
@@ -8,8 +9,6 @@ extends RefCounted
 ## a BoardLevel is built in code. Nothing in a board file can name a script, a class or
 ## another file.
 
-const BoardSchema := preload("res://scripts/loading/board_schema.gd")
-const BoardTextBuilder := preload("res://scripts/loading/board_text_builder.gd")
 ## Top-level fields besides the kind's own (board_schema.gd) and its item lists.
 const OTHER_FIELDS: Array[String] = ["tuning", BoardSchema.NEXT_IDS_FIELD]
 

@@ -1,3 +1,4 @@
+class_name BoardTextWriter
 extends RefCounted
 ## Writes a BoardLevel as `.board` text a person can review: JSON Lines, one field per
 ## line in a fixed order, then one item per line (a pin, a pocket, a wall, a start, a
@@ -8,8 +9,6 @@ extends RefCounted
 ## line (no commas between lines to shift). The same board always
 ## gives the same text, so a save that changes nothing writes nothing (BoardFormatSaver).
 
-const BoardSchema := preload("res://scripts/loading/board_schema.gd")
-const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 ## Coordinates and sizes are written to this precision (px).
 const PRECISION := LineText.PRECISION
 ## The lines of a board's text that name, describe or dress it (and the id counters and

@@ -21,7 +21,7 @@ static func import_file(source: String, root: String = BoardLoader.USER_DIR) -> 
 	if file == null:
 		var why := error_string(FileAccess.get_open_error())
 		return {"error": "%s: the file could not be read (%s)" % [shown, why]}
-	var limit: int = BoardLoader.BoardTextReader.BoardSchema.MAX_FILE_BYTES
+	var limit: int = BoardSchema.MAX_FILE_BYTES
 	if file.get_length() > limit:
 		return {"error": "%s: the file is larger than %d bytes" % [shown, limit]}
 	var bytes := file.get_buffer(file.get_length())

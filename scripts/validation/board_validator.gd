@@ -5,8 +5,6 @@ extends RefCounted
 ## design hints. Each issue carries a short code (BoardIssue.kind, e.g. "unknown_fascia")
 ## set by its check.
 
-const PachinkoChecks := preload("res://scripts/validation/pachinko_checks.gd")
-const MazeChecks := preload("res://scripts/validation/maze_checks.gd")
 ## Common problems that make the kind-specific checks meaningless.
 const BLOCKING := ["bad_kind", "bad_size", "bad_ball_radius"]
 

@@ -1,13 +1,9 @@
+class_name MazeChecks
 extends RefCounted
 ## BoardValidator's maze checks: grid, walls, starts, goal, holes, and whether every ball
 ## can roll from its start to the goal (a flood fill on a fine grid where the walls are
 ## grown by the ball radius, so a cell is free exactly where a ball's centre fits).
 
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
-const MazeLimits := preload("res://scripts/validation/maze_limits.gd")
-const MazeGaps := preload("res://scripts/validation/maze_gaps.gd")
-const MazeEnclosure := preload("res://scripts/validation/maze_enclosure.gd")
-const MazeEnclosureIssue := preload("res://scripts/validation/maze_enclosure_issue.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Below this a wall counts as zero length, in pixels.

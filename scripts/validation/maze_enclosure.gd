@@ -1,3 +1,4 @@
+class_name MazeEnclosure
 extends RefCounted
 ## Why ball starts cannot roll to the goal, one cause at a time: either the goal is closed in
 ## (every start shut out of it shares that one cause) or a group of starts is closed in
@@ -5,8 +6,6 @@ extends RefCounted
 ## boxed into a corner is "the goal is closed in", a start boxed into a corner is "ball start
 ## 3 is closed in". Each cause names the walls around the closed-in side (the walls that touch
 ## the free space a ball has there) and whether the board's edge closes it in too.
-
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 
 
 ## The causes for the starts of `level` that `fill` (a flood without holes) finds cut off

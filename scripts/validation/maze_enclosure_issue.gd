@@ -1,3 +1,4 @@
+class_name MazeEnclosureIssue
 extends RefCounted
 ## The words of a maze board that cannot be won: one BoardIssue per cause MazeEnclosure finds,
 ## naming the goal or the ball starts closed in and the walls that close them (drawn in the

@@ -1,3 +1,4 @@
+class_name MazeFlood
 extends RefCounted
 ## Free space of a maze for a ball's centre, on a grid; answers "can this start reach the
 ## goal?" with connected regions labelled once.

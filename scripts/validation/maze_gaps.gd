@@ -1,3 +1,4 @@
+class_name MazeGaps
 extends RefCounted
 ## BoardValidator's maze gap check: a gap narrower than a ball between two walls, or between
 ## a wall and the board's edge (the frame), is an error. A ball cannot pass it, but rolls

@@ -1,3 +1,4 @@
+class_name MazeLimits
 extends RefCounted
 ## The size limits a maze must keep before the costly checks run (the flood fill, the
 ## distances from every start and hole to every wall) and before the game builds it: a file

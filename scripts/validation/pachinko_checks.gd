@@ -1,9 +1,8 @@
+class_name PachinkoChecks
 extends RefCounted
 ## BoardValidator's pachinko checks: ring, rail, gutter, cup and pockets; the pins
 ## themselves are checked by pin_checks.gd, the windmills by windmill_checks.gd.
 
-const PinChecks := preload("res://scripts/validation/pin_checks.gd")
-const WindmillChecks := preload("res://scripts/validation/windmill_checks.gd")
 const ERROR := BoardIssue.Severity.ERROR
 const WARNING := BoardIssue.Severity.WARNING
 ## Extra width the launch channel needs beyond the ball and the guide wall, in pixels.

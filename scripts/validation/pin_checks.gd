@@ -1,3 +1,4 @@
+class_name PinChecks
 extends RefCounted
 ## BoardValidator's pin checks for pachinko boards: every pin against the ring, the launch
 ## rail and its deflector, and pin pairs through a spatial hash (overlaps, gaps a ball would

@@ -1,3 +1,4 @@
+class_name WindmillChecks
 extends RefCounted
 ## BoardValidator's checks of a pachinko board's windmills (WindmillSpec): sane numbers (a
 ## blade tip never outruns the fastest ball, as the physics' swept test needs), the sweep

@@ -1,8 +1,7 @@
 @tool
+class_name AttackerKind
 extends RefCounted
 ## Attackers (BonusPocketSpec ATTACKER): a wide cup under a lid that opens after a jackpot.
-
-const BonusCup := preload("res://scripts/board/item_kinds/bonus_cup.gd")
 
 
 ## The attacker row of ItemKinds.
@@ -26,6 +25,6 @@ static func _write(level: BoardLevel, index: int) -> String:
 		BonusCup.cup_line(level, index)
 		+ (
 			', "open_seconds": %s, "open_catches": %d'
-			% [BonusCup.LineText.number(spec.open_seconds), spec.open_catches]
+			% [LineText.number(spec.open_seconds), spec.open_catches]
 		)
 	)

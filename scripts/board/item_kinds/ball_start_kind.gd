@@ -1,4 +1,5 @@
 @tool
+class_name BallStartKind
 extends RefCounted
 ## Ball starts: where a maze's balls start, one ball per point in `BoardLevel.ball_starts`.
 

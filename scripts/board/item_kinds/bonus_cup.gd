@@ -1,10 +1,9 @@
 @tool
+class_name BonusCup
 extends RefCounted
 ## What the three bonus pocket kinds (start pocket, attacker, tulip: BonusPocketSpec) share:
 ## they live together in `BoardLevel.bonus_pockets`, start pockets first, then attackers,
 ## then tulips, and every one is a cup a 10 px ball fits into, paying a sane amount.
-
-const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 
 ## The BonusPocketSpec fields an undo snapshot keeps (its role never changes after it is made).
 const VALUES: Array[String] = [

@@ -1,10 +1,10 @@
 @tool
+class_name FloorArrowKind
 extends RefCounted
 ## Floor arrows (FloorArrowSpec): hints painted on a maze's floor, each a position and an
 ## angle. Paint only: the world builds nothing for them, balls roll over them. A designer
 ## places them with their own tool (Y), moves, mirrors and turns them (the angle field).
 
-const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 ## The colour they are painted in: a soft blue that reads on the maple floor and the plain
 ## menu floor alike.
 const PAINT := Color("4f7cac")

@@ -1,4 +1,5 @@
 @tool
+class_name GoalKind
 extends RefCounted
 ## The goal: a maze's one goal ring (`BoardLevel.goal_center`). It is a board field, not an
 ## item line: it has no id, can be moved and mirrored but never added or deleted.

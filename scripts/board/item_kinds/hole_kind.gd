@@ -1,4 +1,5 @@
 @tool
+class_name HoleKind
 extends RefCounted
 ## Black holes: a maze's traps (hard mode only), one centre each in `BoardLevel.holes`.
 

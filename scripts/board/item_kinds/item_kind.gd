@@ -34,8 +34,6 @@ enum PickRank {
 	LAST,  ## picked only when nothing else is there (the goal, big round what it holds)
 }
 
-const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
-
 ## The largest id a file may use (ItemIds).
 const MAX_ID := 9_999_999
 

@@ -1,4 +1,5 @@
 @tool
+class_name LineText
 extends RefCounted
 ## How an item line of a board file writes and reads its values: numbers rounded to
 ## PRECISION without trailing zeros, coordinates as named pairs (`"x": 12, "y": 4.5`). The

@@ -1,10 +1,9 @@
 @tool
+class_name PinKind
 extends RefCounted
 ## Pins: a pachinko board's field pins. `BoardLevel.pins` also holds the rim pins its pockets
 ## stamp (PocketStamp); those are the pocket's, not items of their own: they have no id,
 ## no line in the file, and a designer picks their pocket, never them.
-
-const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 
 
 ## The pin row of ItemKinds.

@@ -1,11 +1,9 @@
 @tool
+class_name PocketKind
 extends RefCounted
 ## Pockets (PocketSpec): a cup of rim pins with a special pin at its bottom. The pocket line
 ## is the whole pocket: its pins are stamped from it (PocketStamp) into `BoardLevel.pins`,
 ## owned through `pin_pocket`, so they move, appear and go with it.
-
-const PinKind := preload("res://scripts/board/item_kinds/pin_kind.gd")
-const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 
 
 ## The pocket row of ItemKinds.

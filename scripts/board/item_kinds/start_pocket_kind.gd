@@ -1,8 +1,7 @@
 @tool
+class_name StartPocketKind
 extends RefCounted
 ## Start pockets (BonusPocketSpec START): a catch spins the reels.
-
-const BonusCup := preload("res://scripts/board/item_kinds/bonus_cup.gd")
 
 
 ## The start pocket row of ItemKinds.

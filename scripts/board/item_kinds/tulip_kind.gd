@@ -1,9 +1,8 @@
 @tool
+class_name TulipKind
 extends RefCounted
 ## Tulips (BonusPocketSpec TULIP): two wings that open wide after a catch and close again
 ## after the next one.
-
-const BonusCup := preload("res://scripts/board/item_kinds/bonus_cup.gd")
 
 
 ## The tulip row of ItemKinds.

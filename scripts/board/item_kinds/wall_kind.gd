@@ -1,4 +1,5 @@
 @tool
+class_name WallKind
 extends RefCounted
 ## Maze walls: capsules between two points a, b, stored as pairs in `BoardLevel.walls`.
 

@@ -1,9 +1,8 @@
 @tool
+class_name WindmillKind
 extends RefCounted
 ## Windmills (WindmillSpec): wheels of blades the world turns, driven at a speed or spinning
 ## free with a friction (a file line has one of the two).
-
-const LineText := preload("res://scripts/board/item_kinds/line_text.gd")
 
 
 ## The windmill row of ItemKinds.
