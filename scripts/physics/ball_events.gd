@@ -1,3 +1,4 @@
+class_name BallEvents
 extends RefCounted
 ## The kinds of event a step queues: (kind, ball id, index) triples plus a speed each, in
 ## the order they happened, which BallWorld then emits as its signals. Internal to

@@ -1,3 +1,4 @@
+class_name BallFields
 extends RefCounted
 ## The per-ball fields of a BallWorld, declared once: TABLE. Internal to scripts/physics.
 ##

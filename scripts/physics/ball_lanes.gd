@@ -1,3 +1,4 @@
+class_name BallLanes
 extends RefCounted
 ## Splits a per-ball stage over worker threads: balls 0..n are cut into contiguous ranges
 ## ("lanes"), a few per thread. The calling thread and the workers of a LaneCrew (threads
@@ -12,8 +13,6 @@ extends RefCounted
 ## not depend on how many lanes there were or which thread ran which, and 1, 2 or 4 threads
 ## give bit-identical worlds. Packed arrays are shared by reference here; a stage must never
 ## resize or reassign an array that another lane writes.
-
-const LaneCrew := preload("res://scripts/physics/lane_crew.gd")
 
 ## A lane gets at least this many balls: below it, handing it out costs more than it saves.
 const MIN_BALLS_PER_LANE := 48

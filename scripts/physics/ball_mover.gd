@@ -1,3 +1,4 @@
+class_name BallMover
 extends RefCounted
 ## The motion kernel: one lane of the motion stage, from a ball's velocity to its sensors.
 ## For each awake ball of its lane: friction and the speed cap, then substeps short enough
@@ -23,20 +24,6 @@ extends RefCounted
 ## Shapes as respond() sees them: the ring holds the ball inside; pins and wall and blade
 ## caps are round; the flat sides (from WALL_SIDE on) do not curve. Blades bounce like walls.
 enum Surface { RING, PIN, WALL_CAP, BLADE_CAP, WALL_SIDE, BLADE_SIDE }
-
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
-const BallEvents := preload("res://scripts/physics/ball_events.gd")
-const ContactId := preload("res://scripts/physics/contact_id.gd")
-const Windmills := preload("res://scripts/physics/windmills.gd")
-const BladeReach := preload("res://scripts/physics/blade_reach.gd")
-const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
-const ContactMath := preload("res://scripts/physics/contact_math.gd")
-const ContactRule := preload("res://scripts/physics/contact_rule.gd")
-const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
-const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
-const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
 
 ## A substep moves at most this share of the thinnest (ball + feature) radius: a centre
 ## that enters a shape is then never past the shape's middle, so it leaves on its own side.

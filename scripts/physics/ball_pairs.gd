@@ -1,3 +1,4 @@
+class_name BallPairs
 extends RefCounted
 ## Ball–ball contacts between equal masses: the broad phase finds the touching pairs, and
 ## BallSolve answers them. Internal to scripts/physics; BallWorld owns one.
@@ -15,11 +16,6 @@ extends RefCounted
 ## every even stripe side by side, then every odd one, each stripe's list in order on one
 ## thread. That order depends only on where the balls are, so any number of threads gives
 ## the same result. The lanes are runs of whole stripes, the later ones with fewer balls.
-
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
-const BallSolve := preload("res://scripts/physics/ball_solve.gd")
 
 ## Sort keys of the broad phase: cell << SORT_SHIFT | ball index.
 const SORT_SHIFT := 21

@@ -1,10 +1,8 @@
+class_name BallSensors
 extends RefCounted
 ## The sensor pass of a BallWorld step, for one ball that just moved from `p_start` to `p`:
 ## holes, goals and zones. Internal to scripts/physics; the motion stage (BallMover) calls
 ## it only when the world has sensors, so boards without them pay nothing.
-
-const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
-const BallEvents := preload("res://scripts/physics/ball_events.gd")
 
 
 ## True when a ball now at `p` with zone bits `mask` (set for the zones it was in) has

@@ -1,3 +1,4 @@
+class_name BallSleep
 extends RefCounted
 ## The sleepers' part of a BallWorld step: each sleeping ball either stays put or wakes and
 ## moves with the awake balls in that same step. Internal to scripts/physics; the motion
@@ -13,8 +14,6 @@ extends RefCounted
 ##
 ## One loop with the test inline, not a call per sleeper: a GDScript call costs about as
 ## much as the test, and a tilting maze runs it for hundreds of sleepers every step.
-
-const BallStore := preload("res://scripts/physics/ball_store.gd")
 
 ## Share of gravity that rounding in a contact normal may leave unbalanced.
 const HELD_SLACK := 1e-3

@@ -1,3 +1,4 @@
+class_name BallSolve
 extends RefCounted
 ## The ball–ball solve: answers touching pairs between equal masses, with velocity
 ## impulses now and separation as a displacement (`push`) that the motion stage sweeps with
@@ -7,9 +8,6 @@ extends RefCounted
 ## Within a list the order matters (a ball's new velocity feeds its next pair), so each list
 ## is answered in order on one thread. Lists of stripes that share no ball may be answered
 ## side by side: the solve writes only the two balls of each pair, and reads only them.
-
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 
 ## A support counts when its normal is within about 60° of the line between two balls.
 const SUPPORT_COS := 0.5

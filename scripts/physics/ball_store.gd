@@ -1,3 +1,4 @@
+class_name BallStore
 extends RefCounted
 ## The balls of a BallWorld as a struct of arrays (one Packed array per field, one slot per
 ## live ball, dense, in spawn order). Internal to scripts/physics.
@@ -11,8 +12,6 @@ extends RefCounted
 ## Removal during a step only clears `alive` (a lane may do it for its own balls);
 ## `compact()` closes the gaps afterwards, keeping order, so the same inputs always give
 ## the same layout.
-
-const BallFields := preload("res://scripts/physics/ball_fields.gd")
 
 ## Values of `asleep` (0 is awake).
 const SLEEP_HELD := 1

@@ -41,18 +41,6 @@ signal ball_left_goal(ball_id: int, goal_index: int)
 signal ball_entered_zone(ball_id: int, zone_index: int)
 @warning_ignore_restore("unused_signal")
 
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const Windmills := preload("res://scripts/physics/windmills.gd")
-const WorldShapes := preload("res://scripts/physics/world_shapes.gd")
-const Gates := preload("res://scripts/physics/gates.gd")
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
-const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
-const MotionStage := preload("res://scripts/physics/motion_stage.gd")
-const WorldSignals := preload("res://scripts/physics/world_signals.gd")
-const StageClock := preload("res://scripts/physics/stage_clock.gd")
-const WorldInputChecks := preload("res://scripts/physics/world_input_checks.gd")
-
 ## The physics behaviour: bumped whenever the same inputs roll the balls differently, so
 ## replays of older runs are refused by name (Replay.PHYSICS_VERSION); each version's change
 ## is listed in scripts/physics/README.md ("Physics versions").
@@ -61,7 +49,7 @@ const PHYSICS_VERSION := 4
 ## game, never freezes it); 30 (0.25 s at 120 Hz) keeps real time down to 4 frames a second.
 const MAX_STEPS_PER_ADVANCE := 30
 ## Goals and zones are tracked per ball in one int bit mask each: at most this many of each.
-const MAX_SENSORS := StaticGeometry.StaticShapes.MAX_SENSORS
+const MAX_SENSORS := StaticShapes.MAX_SENSORS
 ## Balls smaller than this still get a grid sized for it (px).
 const MIN_GRID_BALL_RADIUS := 5.0
 

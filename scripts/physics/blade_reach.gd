@@ -1,13 +1,10 @@
+class_name BladeReach
 extends RefCounted
 ## The windmills as one motion lane sees them during a step: their pose at the step's
 ## start (copied by take()), which wheels the ball being moved can reach (find_near()),
 ## and the geometry of its contact with a wheel's nearest blade (contact()). What a contact
 ## does to the ball is BallMover's (its _touch_blade): this part only finds it. Internal to
 ## scripts/physics; each BallMover has one.
-
-const Windmills := preload("res://scripts/physics/windmills.gd")
-const ContactId := preload("res://scripts/physics/contact_id.gd")
-const ContactMath := preload("res://scripts/physics/contact_math.gd")
 
 ## False on a board without windmills (then nothing here is read).
 var has_wheels := false

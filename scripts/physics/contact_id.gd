@@ -1,3 +1,4 @@
+class_name ContactId
 extends RefCounted
 ## Which static shape a ball touches, as one int: the shape's kind in the low KIND_BITS and
 ## its index above them. Ball slots remember the (up to two) shapes they touched last step

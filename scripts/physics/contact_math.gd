@@ -1,3 +1,4 @@
+class_name ContactMath
 extends RefCounted
 ## A piece of the contact response that needs more than one line: finding the moment of
 ## impact (the slide along a surface is written out in BallMover.respond(), which runs on

@@ -1,3 +1,4 @@
+class_name ContactRule
 extends RefCounted
 ## The one contact rule every contact asks (static shapes, a ball held by its supports, two
 ## balls): a contact bounces only when the ball comes in faster than the bounce threshold,

@@ -1,3 +1,4 @@
+class_name Gates
 extends RefCounted
 ## The gates of a BallWorld: sets of petals (capsules hinged at one end, a tulip's wings)
 ## that swing between a shut pose and an open pose, on command (set_open) or on their own
@@ -12,8 +13,6 @@ extends RefCounted
 ## speed, which BallMover's swept test relies on); at the end of the step the pose is set
 ## to exactly the new openness. Everything follows from the state at the step's start, so
 ## any thread count gives the same result.
-
-const Windmills := preload("res://scripts/physics/windmills.gd")
 
 ## Per petal: its rotor in the Windmills store, its gate, and its angle shut and open
 ## (radians, y down: -PI / 2 points straight up).

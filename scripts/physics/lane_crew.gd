@@ -1,3 +1,4 @@
+class_name LaneCrew
 extends RefCounted
 ## The worker threads of one BallLanes: each waits for a hand-off, then takes lanes until
 ## none is left. The thread that hands off takes lanes too, and once every lane is taken it

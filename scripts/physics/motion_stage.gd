@@ -1,3 +1,4 @@
+class_name MotionStage
 extends RefCounted
 ## The motion stage over every ball: per lane, the sleepers first (BallSleep: each stays or
 ## wakes), then a BallMover moves the awake ones; run on the world's lanes (worker
@@ -8,12 +9,6 @@ extends RefCounted
 ## on its thread, once, and notes where each lane's events and points start and end in its
 ## buffers, so the gathering can put them in lane order.
 
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
-const BallSleep := preload("res://scripts/physics/ball_sleep.gd")
-const Windmills := preload("res://scripts/physics/windmills.gd")
 ## Per lane in _lane_spans: where its events, path points and wheel pushes start and end.
 const SPANS := 6
 

@@ -1,3 +1,4 @@
+class_name SpeedRules
 extends RefCounted
 ## Rolling friction and the speed cap of one step, for every moving ball. prepare() turns
 ## the tuning, this step's gravity and friction into a few numbers once per step; limit()

@@ -1,3 +1,4 @@
+class_name StageClock
 extends RefCounted
 ## Wall time spent in each stage of BallWorld.step(), for the bench and for finding where a
 ## step's time goes. Off in play: the world only laps it while BallWorld.profile_stages is

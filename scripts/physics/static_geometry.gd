@@ -1,3 +1,4 @@
+class_name StaticGeometry
 extends RefCounted
 ## The uniform grid a BallWorld's static shapes are binned into ("pin zoning"). It owns the
 ## shapes (`shapes`, StaticShapes: the flat arrays and the checked calls that add them) and
@@ -7,8 +8,6 @@ extends RefCounted
 ## A grid cell lists every pin and wall whose shape, grown by the largest ball radius and a
 ## margin, touches the cell; so a ball only tests the shapes of the one cell its centre is in.
 ## Lists are stored flat (CSR): items of cell c are items[start[c] .. start[c + 1]).
-
-const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
 
 ## Extra growth of binned shapes, px.
 const BIN_MARGIN := 1.0

@@ -1,3 +1,4 @@
+class_name StaticShapes
 extends RefCounted
 ## The static shapes of a BallWorld as flat arrays (pins, capsule walls, the ring and its
 ## drain arc, sensor circles) and the checked calls that add them. StaticGeometry owns one

@@ -1,3 +1,4 @@
+class_name Windmills
 extends RefCounted
 ## The kinematic shapes of a BallWorld: windmills (風車), wheels of capsule blades turning
 ## about a pin. The world moves them itself each step; balls never push them through space,

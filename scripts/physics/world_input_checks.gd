@@ -1,3 +1,4 @@
+class_name WorldInputChecks
 extends RefCounted
 ## The world's gate for bad input from outside: a spawn or a step with non-finite numbers
 ## is named in an error rather than let into the arrays, where one NaN would spread to every

@@ -1,6 +1,7 @@
 # gdlint: disable=max-public-methods
 # The door to the shapes is one contract (scripts/physics/README.md); its calls are small
 # on purpose.
+class_name WorldShapes
 extends RefCounted
 ## A BallWorld's shapes, as its callers build them: `world.shapes.add_pin(...)` and the
 ## other calls that add pins, capsule walls, the ring, its drain arc and sensor circles (all
@@ -8,11 +9,6 @@ extends RefCounted
 ## petals are rotors of the same store). The world owns the geometry, the wheels and the
 ## gates; this is the door to them, so BallWorld's own calls are about balls and the step.
 ## Made by BallWorld only.
-
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
-const Windmills := preload("res://scripts/physics/windmills.gd")
-const Gates := preload("res://scripts/physics/gates.gd")
 
 ## The world's constants (BallWorld keeps this its own): blade tips never outrun their
 ## max_speed (see add_windmill).

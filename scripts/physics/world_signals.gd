@@ -1,3 +1,4 @@
+class_name WorldSignals
 extends RefCounted
 ## Between a BallWorld step's queued events (BallEvents: kind, ball id, index; and a speed)
 ## and the world's signals: which hit kinds anyone listens to, and the emitting itself, in
@@ -5,9 +6,6 @@ extends RefCounted
 ##
 ## The world comes in as an Object and its signals are taken by name (Signal(world, name)):
 ## naming the BallWorld class here would make the two files need each other.
-
-const BallEvents := preload("res://scripts/physics/ball_events.gd")
-const WorldShapes := preload("res://scripts/physics/world_shapes.gd")
 
 
 ## Sets `heard[kind]` to 1 for each hit event kind some handler of `world` listens to:
