@@ -16,7 +16,6 @@ extends PachinkoAnalysis
 ## the plan here instead. Only the contact-free plan with the bonus parts shut (the
 ## editor's) is run this way.
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 ## Where the board files and counts of running workers are kept (removed when a run ends).
 const FOLDER := "user://analysis_worker"
 ## The worker's files are looked at no more often than this, ms.

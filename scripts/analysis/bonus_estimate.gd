@@ -21,9 +21,6 @@ extends RefCounted
 ## The figures are expectations from measured rates, not a simulation of the rules; the
 ## autoplay (`--autoplay=pachinko --handle=P`) plays the real rules to check them.
 
-const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
-
 ## Seconds between single shots, on average: the autoplay's pause is drawn evenly from
 ## MIN_GAP to MAX_GAP after each shot. (It once was the handle's 0.6 s, and Fever's
 ## autoplay then paid 0.1 to 0.15 less than the estimate: its rounds saw fewer balls.)

@@ -8,12 +8,6 @@ extends RefCounted
 ## figures never depend on the thread count. A hole is named by its stable id ("id") and
 ## its place in the board's list ("index").
 
-const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
-const MazeProgressWatch := preload("res://scripts/maze/autoplay/maze_progress_watch.gd")
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
-const MazeGaps := preload("res://scripts/validation/maze_gaps.gd")
-const MazeLosses := preload("res://scripts/analysis/maze_losses.gd")
-
 const DEFAULT_RUNS := 20
 ## Longest one game is played, seconds (a game without progress is given up sooner:
 ## MazeProgressWatch).

@@ -1,3 +1,4 @@
+class_name MazeLosses
 extends RefCounted
 ## Groups the maze analysis's lost games by why and where they were lost, for the dock and
 ## the board overlay: "3 of 12 games: a ball was stuck near (120, 340) for 20 s". Games lost
@@ -5,7 +6,6 @@ extends RefCounted
 ## its walls) are one entry. A trapped ball's entry names the gap narrower than a ball
 ## (MazeGaps) that shuts its part of the board, when one does.
 
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 ## The reasons in the order the dock lists entries of equal count.
 const REASONS: Array[String] = ["trapped", "stuck", "hole", "timeout"]
 

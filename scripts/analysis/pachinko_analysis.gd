@@ -10,8 +10,6 @@ extends RefCounted
 ## IDLE: not started; CLIMBS, SHOTS: the two phases; DONE; CANCELLED.
 enum Phase { IDLE, CLIMBS, SHOTS, DONE, CANCELLED }
 
-const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibration.gd")
-
 var plan: AnalysisPlan
 var phase := Phase.IDLE
 ## Seconds from start to done (wall clock).

@@ -1,3 +1,4 @@
+class_name PachinkoSessions
 extends RefCounted
 ## How long a pachinko session lasts and what its jackpots bring (the `--sessions=N` command
 ## is scripts/app/sessions_cli.gd): plays N
@@ -6,7 +7,6 @@ extends RefCounted
 ## reports the median and 10th percentile of their lengths, jackpots per hour of play and
 ## what a jackpot paid on average. Same board, N and seed: the same report.
 
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 ## The longest a session is played, game seconds: one still going then counts as this long
 ## (and as `capped` in the report), so a lucky streak cannot run forever.
 const MAX_SESSION_SECONDS := 1800.0

@@ -17,10 +17,6 @@ extends RefCounted
 ## (AnalysisPlan.chunk_levels: the same as a contact-free run); the pauses and the nudges
 ## come from an RNG of the chunk's own (AnalysisPlan.chunk_seed).
 
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
-const BallUpkeep := preload("res://scripts/pachinko/rules/ball_upkeep.gd")
-const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
-
 ## The chunk's figures (its ledger's tally).
 var tally: AnalysisTally
 

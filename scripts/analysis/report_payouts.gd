@@ -12,8 +12,6 @@ extends RefCounted
 ## Σ hits·payout + returned and the sum of their squares Σ hits·payout² + returned, exactly
 ## the figures AnalysisTally keeps.
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-
 
 ## The board's text with every payout left out (set to 0): what the analysis's counts
 ## depend on (AnalysisCache's key).

@@ -1,3 +1,4 @@
+class_name AnalyzeCli
 extends RefCounted
 ## The `--analyze` command: a play analysis of one board, headless. Pachinko fires
 ## `--shots` shots (AnalysisPlan); the maze plays `--runs` autoplay games in easy and hard
@@ -7,7 +8,6 @@ extends RefCounted
 ## project when run from the project, and the player's own data folder (beside their
 ## settings, user://reports/) in the exported game. command_line.gd hands it the flags.
 
-const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
 ## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).
 const EXIT_BAD_INPUT := 2
 const EXIT_FAILED := 1

@@ -1,9 +1,8 @@
+class_name AutoplayCli
 extends RefCounted
 ## The `--autoplay` command: plays one game headless on a board and prints one JSON line
 ## with what happened. command_line.gd hands it the parsed flags (cli_flags.gd).
 
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
-const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
 ## Seconds a game plays when --seconds is not given, in BoardLevel.Kind order.
 const DEFAULT_SECONDS: Array[float] = [60.0, 120.0]
 ## A board that cannot be loaded is bad input, like a bad flag (cli_flags.gd EXIT_USAGE).

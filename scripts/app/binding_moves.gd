@@ -1,3 +1,4 @@
+class_name BindingMoves
 extends RefCounted
 ## Bindings that clash: a key or button already bound to another action that can fire in the
 ## same game (two maze actions, two pachinko ones, or a general action and either game's).
@@ -6,8 +7,6 @@ extends RefCounted
 ## event to is never a clash. Moving a binding takes it off the other actions; one left with
 ## no binding of that kind gets the moved-to action's old one instead (a swap), and a move
 ## that would leave an action with none is refused, so no action is ever left unbound.
-
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 
 ## The game an action belongs to (a name of BoardLevel.KIND_NAMES), or "" for the general

@@ -1,3 +1,4 @@
+class_name CliFlags
 extends RefCounted
 ## The one table of command-line flags: the user arguments after `--`, as in
 ## `godot --headless --path . -- --autoplay=maze --seconds=30`.

@@ -1,7 +1,7 @@
+class_name CliHelp
 extends RefCounted
 ## The `--help` text, written from the flag table so it always lists every flag.
 
-const CliFlags := preload("res://scripts/app/cli_flags.gd")
 ## Help's left column width: the widest flag as written, plus a gap.
 const COLUMN := 20
 ## Width of the description column, so help lines fit in 100 characters.

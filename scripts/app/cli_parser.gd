@@ -1,9 +1,9 @@
+class_name CliParser
 extends RefCounted
 ## Parses the user arguments against the flag table (cli_flags.gd). Every argument must be a
 ## known flag with a good value; anything else is an error that names the argument, so a typo
 ## never silently starts the game.
 
-const CliFlags := preload("res://scripts/app/cli_flags.gd")
 ## An unknown flag at least this similar to a known one gets a "did you mean" hint.
 const HINT_SIMILARITY := 0.6
 

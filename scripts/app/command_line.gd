@@ -1,11 +1,9 @@
+class_name CommandLine
 extends RefCounted
 ## What a start with user arguments (after `--`) does: nothing special without any, help,
 ## or the command the flag table names; bad flags print why on stderr and exit with
 ## [constant CliFlags.EXIT_USAGE] before anything of the game starts.
 
-const CliFlags := preload("res://scripts/app/cli_flags.gd")
-const CliParser := preload("res://scripts/app/cli_parser.gd")
-const CliHelp := preload("res://scripts/app/cli_help.gd")
 ## What [method run] returns when the game should start as usual.
 const START_GAME := -1
 

@@ -21,9 +21,6 @@ const REQUIRED_ACTIONS: Array[String] = ["pause"]
 const MAX_BINDINGS_PER_ACTION := 16
 ## A remembered window side past this many pixels is not one a screen has.
 const MAX_WINDOW_SIDE := 16384.0
-const IniText := preload("res://scripts/app/ini_text.gd")
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
-const SettingsValues := preload("res://scripts/app/settings_values.gd")
 const FILE_HEADER := (
 	"Board Studio settings (format version %d). Delete this file to restore the defaults.\n"
 	+ "Bindings: key:<name>, joy_button:<index>, joy_axis:<index>:<+|->, mouse:<index>."

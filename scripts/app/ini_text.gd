@@ -1,3 +1,4 @@
+class_name IniText
 extends RefCounted
 ## A small INI reader and writer for the player's files (settings, best results), data only.
 ## `[section]` headers, `key=value` lines, `;` or `#` comments. Values are JSON (numbers,
@@ -7,7 +8,6 @@ extends RefCounted
 ## Reading never prints engine errors: a line it cannot read is skipped and named in
 ## "problems"; the caller decides what that means for the file.
 
-const UserFile := preload("res://scripts/app/user_file.gd")
 ## Line problems listed by name; past this only their count is given.
 const MAX_LISTED_PROBLEMS := 5
 const PLAIN_KEY := "^[A-Za-z0-9_][A-Za-z0-9_.\\-]*$"

@@ -1,3 +1,4 @@
+class_name InputEventCodec
 extends RefCounted
 ## Turns input events into short readable strings for the settings file and back,
 ## and names them for the controls screen. Only the kinds a player can bind are handled:

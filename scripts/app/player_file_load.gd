@@ -5,9 +5,6 @@ extends RefCounted
 ## a newer version is left as it is and never written over; a usable one hands its sections
 ## to the owner, and a file with entries the owner could not use is moved aside too.
 
-const IniText := preload("res://scripts/app/ini_text.gd")
-const UserFile := preload("res://scripts/app/user_file.gd")
-
 ## "" when all was well, else a sentence for the player naming the problem and where the old
 ## file went.
 var message := ""

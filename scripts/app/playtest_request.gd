@@ -1,3 +1,4 @@
+class_name PlaytestRequest
 extends RefCounted
 ## The play-test request: the board editor writes which board to play, the game reads it
 ## once when a game scene starts (App.current_board_path). The file is plain JSON read with
@@ -9,7 +10,6 @@ extends RefCounted
 ## `written_at` (unix seconds) less than [constant MAX_AGE_SECONDS] old. A request that
 ## fails any check is removed with a warning saying why.
 
-const UserFile := preload("res://scripts/app/user_file.gd")
 const PATH := "user://playtest_request.json"
 ## Where builds before the JSON request wrote it with ConfigFile: removed unread.
 const LEGACY_PATH := "user://playtest_request.cfg"

@@ -1,3 +1,4 @@
+class_name SaveData
 extends RefCounted
 ## The player's best results per board: fastest maze time in each mode (easy, hard), most
 ## pachinko balls won.
@@ -6,7 +7,6 @@ extends RefCounted
 ## (kept for the player) and the records start empty, a file from a newer version is left
 ## untouched and never saved over. None of it stops the game.
 
-const IniText := preload("res://scripts/app/ini_text.gd")
 ## Version 2 keeps a maze time per mode; version 1 had one time per board, read as easy.
 const VERSION := 2
 const MAZE_SECTIONS := {false: "maze_best_seconds_easy", true: "maze_best_seconds_hard"}

@@ -1,9 +1,8 @@
+class_name SessionsCli
 extends RefCounted
 ## The `--sessions=N` command: the pachinko session report of PachinkoSessions for a board,
 ## printed as one JSON line. command_line.gd hands it the parsed flags (cli_flags.gd).
 
-const PachinkoSessions := preload("res://scripts/analysis/pachinko_sessions.gd")
-const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
 ## A board that cannot be loaded (cli_flags.gd EXIT_USAGE).
 const EXIT_BAD_BOARD := 2
 

@@ -1,9 +1,8 @@
+class_name SettingsValues
 extends RefCounted
 ## Reads single values out of a settings file's sections, each checked on its own: a value
 ## that cannot be used is named in `problems` (the player's message lists them) and gives
 ## null, so GameSettings keeps its default. Pure: it knows no settings object.
-
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 
 ## The number at `key` clamped to `low`..`high`; null when absent or not a finite number.

@@ -1,3 +1,4 @@
+class_name UserFile
 extends RefCounted
 ## The player's own files (settings, best results, the play-test request), handled as data:
 ## read as bytes and checked (size, encoding) before any parser sees them, so a damaged file

@@ -1,9 +1,8 @@
+class_name JackpotRecipes
 extends RefCounted
 ## Recipes for the jackpot's big moments (scenes/pachinko/bonus/): the reach's rising tone
 ## while the last reel slows, the jackpot's fanfare, and the bell that opens each round.
 ## sound_recipes.gd lists and builds them with the rest, so a SoundBank plays them by name.
-
-const SoundSynth := preload("res://scripts/audio/sound_synth.gd")
 
 ## A reach: a tone and its fifth rising for as long as the last reel slows, with a pulse
 ## that quickens, the machine holding its breath.

@@ -1,10 +1,9 @@
+class_name JuiceRecipes
 extends RefCounted
 ## Recipes for the pachinko's juice (see scenes/pachinko/juice/): the slow-motion moment,
 ## the jackpot's camera thump and light sweep, the fever round's countdown and its brighter
 ## pin chime. sound_recipes.gd lists and builds them with the rest, so a SoundBank plays
 ## them by name like any other sound.
-
-const SoundSynth := preload("res://scripts/audio/sound_synth.gd")
 
 ## Time slows for a ball about to drop into a pocket: a deep falling "whoom".
 const SLOW_MO := &"slow_mo"

@@ -6,8 +6,6 @@ extends RefCounted
 ## mood first, so it can start playing while the others are made); `loop` answers the stream
 ## once it is ready, null until then.
 
-const MusicRecipes := preload("res://scripts/audio/music_recipes.gd")
-
 # "machine:mood" -> the built loop. Shared with the workers: every read and write holds it.
 static var _loops: Dictionary[String, AudioStreamWAV] = {}
 static var _lock := Mutex.new()

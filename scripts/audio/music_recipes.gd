@@ -1,3 +1,4 @@
+class_name MusicRecipes
 extends RefCounted
 ## Each pachinko machine's tune, written as code and synthesised like the sound effects
 ## (sound_synth.gd): four bars over a chord progression, a melody drawn from the machine's
@@ -11,8 +12,6 @@ extends RefCounted
 ##   with a kick on every beat.
 ## `build` returns a seamless AudioStreamWAV loop; it takes a second or so in GDScript, so
 ## MusicBank runs it on a worker thread once per machine and keeps the result.
-
-const SoundSynth := preload("res://scripts/audio/sound_synth.gd")
 
 const NORMAL := &"normal"
 const REACH := &"reach"

@@ -1,11 +1,8 @@
+class_name SoundRecipes
 extends RefCounted
 ## The game's sound effects as recipes for the synthesiser. Every name here is a sound the
 ## SoundBank can play; both games share them (pins and pockets for pachinko, walls, goal
 ## and holes for the maze).
-
-const SoundSynth := preload("res://scripts/audio/sound_synth.gd")
-const JuiceRecipes := preload("res://scripts/audio/juice_recipes.gd")
-const JackpotRecipes := preload("res://scripts/audio/jackpot_recipes.gd")
 
 ## Sound names, so callers never spell a string twice.
 const PIN_TICK := &"pin_tick"

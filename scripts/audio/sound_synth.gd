@@ -1,3 +1,4 @@
+class_name SoundSynth
 extends RefCounted
 ## Small synthesiser for the sound bank: builds mono 16-bit AudioStreamWAV clips from
 ## decaying partials and filtered noise, so every sound in the game is made by code.

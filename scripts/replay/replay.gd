@@ -17,7 +17,6 @@ extends RefCounted
 ## [br]- `["fire", step, power]`: pachinko, a shot with power in hundredths (0..10000).
 ## Events carry the world's step count when they happened, a check the reader makes.
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 ## The format this build writes; it reads this one and every older one (format 1 has no
 ## `"tilts"` records; formats 1 and 2 have no `"physics"`, their runs are physics 1;
 ## formats 1 to 3 have no `"rules"`, their runs are rules 1).

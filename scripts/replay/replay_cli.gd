@@ -1,3 +1,4 @@
+class_name ReplayCli
 extends RefCounted
 ## The `--replay=FILE` command: reads a replay, finds its board by id and content hash,
 ## plays it headless through the same rules and prints one JSON line:

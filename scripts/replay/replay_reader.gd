@@ -1,3 +1,4 @@
+class_name ReplayReader
 extends RefCounted
 ## Reads a replay file's text into a Replay, as data only: every line goes to Godot's JSON
 ## parser (plain values; NaN and deep nesting refused), then every field and record is checked
@@ -40,7 +41,6 @@ const LATER_KEYS := {"physics": 3, "rules": 4}
 ## Physics versions a file may name (BallWorld keeps its history small).
 const MAX_PHYSICS := 1000
 const MODES := {Replay.MAZE: ["easy", "hard"], Replay.PACHINKO: [Replay.PACHINKO_MODE]}
-const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 ## Longest packed text of one "tilts" record: MAX_PACKED_FRAMES frames of three numbers of
 ## at most TiltPacking.MAX_DIGITS digits.
 const MAX_PACKED_CHARS := Replay.MAX_PACKED_FRAMES * 3 * TiltPacking.MAX_DIGITS

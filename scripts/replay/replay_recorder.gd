@@ -9,7 +9,6 @@ extends RefCounted
 ## Frames matter, not just steps: the rules check wins and stuck balls once per frame, so a
 ## replay runs the same steps in the same frames.
 
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
 ## Frames of one tilt in a row that are worth a "tilt" record of their own (a line of about
 ## 25 characters) rather than three packed digits each.
 const HELD_FRAMES := 10

@@ -4,8 +4,6 @@ extends RefCounted
 ## finding the board a replay was recorded on. Reading goes through ReplayReader (data only,
 ## every field checked), with the file's size checked before it is read.
 
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
-const ReplayWriter := preload("res://scripts/replay/replay_writer.gd")
 ## The folder of the games' own replays.
 const DIR := "user://replays"
 ## Where a board is looked for, in order: the shipped boards, then the player's.

@@ -1,9 +1,8 @@
+class_name ReplayWriter
 extends RefCounted
 ## Writes a Replay as JSON Lines: one header object, then one record (a JSON array) per
 ## line. The same replay always gives the same text; ReplayReader reads it back. A
 ## `"tilts"` record's frames are packed into one text (tilt_packing.gd).
-
-const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 
 
 ## The file text for `replay`, ending in a newline.

@@ -1,3 +1,4 @@
+class_name TiltPacking
 extends RefCounted
 ## Packs the frames of a `"tilts"` record into one short text: the form a replay file gives
 ## to frames whose tilt changes every frame (a pilot or a player steering), where a line per

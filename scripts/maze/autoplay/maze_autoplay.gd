@@ -4,8 +4,6 @@ extends RefCounted
 ## ball is in the goal, a ball falls into a hole, or the time runs out. Same board, seconds
 ## and seed → the same result, step for step.
 
-const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
-
 
 ## Plays `level` for up to `seconds` of simulated time with the pilot seeded by `rng_seed`.
 ## Returns won, time_to_win (-1 when not won), balls_in_goal (at the end),

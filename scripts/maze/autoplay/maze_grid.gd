@@ -1,3 +1,4 @@
+class_name MazeGrid
 extends RefCounted
 ## A maze board seen as its grid: which cell a point is in and which cell sides are walls.
 ## Built from the board's wall segments. A wall on the grid's lines closes the cell sides it

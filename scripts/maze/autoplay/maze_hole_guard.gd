@@ -1,3 +1,4 @@
+class_name MazeHoleGuard
 extends RefCounted
 ## Hard mode's look-before-you-tilt: before the pilot commits to a tilt, a private copy of
 ## the board (same walls, the holes grown by MARGIN) plays the next moment with the balls

@@ -1,3 +1,4 @@
+class_name MazeNav
 extends RefCounted
 ## A distance field over a maze board: for every point of a fine lattice, the length of the
 ## shortest path a ball's centre can roll from there to the goal, keeping clear of walls
@@ -5,7 +6,6 @@ extends RefCounted
 ## does not scrape caps. The autoplay steers each ball down this field.
 
 ## Lattice spacing in pixels.
-const MinHeap := preload("res://scripts/maze/autoplay/min_heap.gd")
 const SPACING := 2.5
 ## Extra clearance (px) beyond touching that the paths try to keep.
 const COMFORT := 6.0

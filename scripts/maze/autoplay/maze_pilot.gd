@@ -1,3 +1,4 @@
+class_name MazePilot
 extends RefCounted
 ## The autoplay's hand on the board: each physics step it looks at every ball and picks one
 ## tilt for all of them.
@@ -19,11 +20,6 @@ extends RefCounted
 
 enum Phase { PLAN, MOVE, HERD, LEAD }
 
-const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
-const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
-const MazeSlidePlanner := preload("res://scripts/maze/autoplay/maze_slide_planner.gd")
-const MazeHoleGuard := preload("res://scripts/maze/autoplay/maze_hole_guard.gd")
-const MazeSteering := preload("res://scripts/maze/autoplay/maze_steering.gd")
 ## A move ends when no ball has moved more than SETTLE_DRIFT px in SETTLE_SECONDS (balls
 ## pressed together into a corner jostle, so their speed alone never settles).
 const SETTLE_DRIFT := 1.0

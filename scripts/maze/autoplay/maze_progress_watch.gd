@@ -1,3 +1,4 @@
+class_name MazeProgressWatch
 extends RefCounted
 ## Watches one of the pilot's games for progress, so the play analysis can give up a
 ## hopeless game within seconds instead of playing out its time limit, and say why.
@@ -13,8 +14,6 @@ extends RefCounted
 
 enum Verdict { PLAYING, TRAPPED, STUCK }
 
-const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 ## A ball must come this much nearer the goal than its best to count as progress, px.
 const PROGRESS_PX := 10.0
 ## Seconds without progress before a game is given up as stuck.

@@ -1,3 +1,4 @@
+class_name MazeSlidePlanner
 extends RefCounted
 ## Plans tilts for all balls at once on a grid maze. A state is the set of cells the balls
 ## are in; a move is a hard tilt toward one of eight directions held until every ball stops,
@@ -5,10 +6,6 @@ extends RefCounted
 ## black hole are never taken. Breadth-first search finds the shortest list of moves that
 ## gathers every ball into one cell close to the goal; from there the pack rolls in as one.
 ## (One tilt moves every ball, so gathering first is what makes the goal reachable.)
-
-const MinHeap := preload("res://scripts/maze/autoplay/min_heap.gd")
-const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
-const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
 
 ## A plan's cost is the time it takes, in px a ball rolls at full speed: each move costs
 ## its longest roll plus MOVE_COST for starting and stopping.

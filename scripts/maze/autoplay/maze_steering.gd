@@ -1,9 +1,8 @@
+class_name MazeSteering
 extends RefCounted
 ## The autoplay's continuous steering: tilts that make balls follow their paths (MazeNav),
 ## centre a pack in the goal, or lead the ball nearest the goal. Used by MazePilot.
 
-const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 ## Smallest tilt that still moves a resting ball, with a margin, degrees.
 const MIN_NUDGE_DEG := 1.0
 

@@ -1,3 +1,4 @@
+class_name MinHeap
 extends RefCounted
 ## A binary min-heap of (cost, node) pairs: the frontier of the maze pilot's searches
 ## (MazeSlidePlanner's best-first plans, MazeNav's distance field). pop() gives the node of

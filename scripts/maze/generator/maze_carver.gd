@@ -1,4 +1,5 @@
 @tool
+class_name MazeCarver
 extends RefCounted
 ## The wall grid of a generated maze: every cell starts closed, a random depth-first walk
 ## from the goal room opens a perfect maze (one way between any two cells), and then a

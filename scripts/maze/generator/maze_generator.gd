@@ -8,8 +8,6 @@ extends RefCounted
 ## starts, goal, holes) that BoardValidator accepts; the same settings always give the same
 ## board.
 
-const MazeCarver := preload("res://scripts/maze/generator/maze_carver.gd")
-const MazeHolePlacer := preload("res://scripts/maze/generator/maze_hole_placer.gd")
 ## A cell: a 25 px corridor and a 10 px wall, as in the tutorial.
 const CELL := 35.0
 const PATH_WIDTH := 25.0

@@ -1,13 +1,11 @@
 @tool
+class_name MazeHolePlacer
 extends RefCounted
 ## Puts black holes into a carved maze without ever cutting a start off from the goal: each
 ## candidate cell is tried in turn and kept only when a flood fill (MazeFlood, holes
 ## blocking) still finds the goal from every start. Easy mazes take dead ends first (a ball
 ## only meets those holes when it turns into a dead end); harder ones take corridor cells
 ## too, so the way to the goal passes holes.
-
-const MazeCarver := preload("res://scripts/maze/generator/maze_carver.gd")
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 
 
 ## Adds up to `count` holes to `level` (walls and starts already set) at cell centres of

@@ -18,8 +18,6 @@ const REST_OFFSET_PX := 4.0
 ## How fast a ball in the dish loses its speed (1/s): it settles within about a second.
 const DAMPING := 5.0
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
-
 var _world: BallWorld
 var _centre := Vector2.ZERO
 var _radius := 0.0

@@ -24,7 +24,6 @@ signal goal_count_changed(balls_in_goal: int)
 
 enum State { READY, PLAYING, WON, LOST }
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 ## The tilt is kept in whole hundredths of a degree (too fine to feel), so a replay stores
 ## it as whole numbers and plays it back bit for bit.
 const TILT_STEPS_PER_DEGREE := 100.0

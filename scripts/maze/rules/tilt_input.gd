@@ -1,3 +1,4 @@
+class_name TiltInput
 extends RefCounted
 ## How the player's input becomes a tilt, as in the seed: the joystick head travels ±15 px
 ## per axis and each pixel tilts the board 0.8°, so the largest tilt is 12° per axis.

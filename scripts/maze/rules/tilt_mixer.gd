@@ -1,3 +1,4 @@
+class_name TiltMixer
 extends RefCounted
 ## Decides the board's tilt each frame from every control the player may use: the joystick
 ## (as in the seed: the tilt follows the head at once), keys and gamepad stick (the tilt
@@ -6,7 +7,6 @@ extends RefCounted
 
 enum Source { NONE, JOYSTICK, KEYS, ACCELEROMETER }
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 ## Accelerometer readings shorter than this (m/s²) mean the device has none.
 const MIN_ACCEL := 0.5
 

@@ -1,3 +1,4 @@
+class_name PachinkoAutoplay
 extends RefCounted
 ## Plays pachinko by itself, headless, for `--autoplay=pachinko`: dismisses the
 ## instructions, fires every loaded ball with a random power after a short random pause

@@ -1,3 +1,4 @@
+class_name PowerAim
 extends RefCounted
 ## How launch power aims on a board: lone balls fired at set powers, each followed to its
 ## end. A lone ball's path depends on its power alone (the simulation is deterministic), so

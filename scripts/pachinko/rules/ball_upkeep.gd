@@ -1,11 +1,9 @@
+class_name BallUpkeep
 extends RefCounted
 ## Keeps the balls in play moving toward an end, between steps: finds a ball the world
 ## dropped without a signal, a ball wedged in a pocket's cup (PocketJam) and a ball
 ## resting on pins (StuckWatcher), and gives a resting ball a small push. It decides
 ## nothing about the game: PachinkoRules counts and pays what it reports.
-
-const StuckBallWatcher := preload("res://scripts/pachinko/rules/stuck_ball_watcher.gd")
-const PocketJam := preload("res://scripts/pachinko/rules/pocket_jam.gd")
 
 ## Speed of the nudge given to a resting ball, px/s.
 const NUDGE_SPEED := 70.0

@@ -1,3 +1,4 @@
+class_name FlipperDrawback
 extends RefCounted
 ## The flipper's drawback: how far the player has pulled it, 0..100, from a drag up the
 ## screen (press, drag_to), a held charge key (press, charge) or an analog trigger
@@ -6,8 +7,6 @@ extends RefCounted
 
 ## The drawback changed: power 0..100.
 signal changed(power: float)
-
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 ## Power added per second while a key or button is held (full power in 1.25 s).
 const CHARGE_PER_SECOND := 80.0

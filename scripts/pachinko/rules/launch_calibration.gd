@@ -1,3 +1,4 @@
+class_name LaunchCalibration
 extends RefCounted
 ## Measures a board's launch rail on its own world: first the slowest launch that still
 ## clears the rail (a binary search over single test shots), then a LaunchTable of launch
@@ -5,8 +6,6 @@ extends RefCounted
 ## sqrt(2·g·Δh) to clear, but riding the curved rail costs a little (contacts, the hop from
 ## the outer wall to the guide near the top), and that depends on the physics and the
 ## board, so the simulation itself is asked. Done once per board and cached.
-
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 ## Test shots in the binary search (the range shrinks 2^12 times: well under 1 px/s).
 const ITERATIONS := 12

@@ -1,3 +1,4 @@
+class_name LaunchHandle
 extends RefCounted
 ## The handle of a real pachinko machine: while the player holds it, the launcher fires the
 ## loaded ball at the handle's strength every INTERVAL seconds (100 balls a minute); turning

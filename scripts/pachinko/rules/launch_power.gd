@@ -1,3 +1,4 @@
+class_name LaunchPower
 extends RefCounted
 ## Flipper power (0..100) to the speed a ball should have at the launch rail's mouth, where
 ## it leaves the rail for the field.

@@ -9,8 +9,6 @@ extends RefCounted
 ## a shot of that power flies exactly so (the handle's spring spreads its balls over
 ## LaunchHandle.JITTER either side).
 
-const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibration.gd")
-
 ## Powers apart of two measured flights.
 const STEP := 1.0
 ## Longest a flight is followed, seconds.

@@ -7,8 +7,6 @@ extends RefCounted
 ## between its samples in squared speeds. Made by LaunchCalibration; read-only afterwards,
 ## so any thread may read it.
 
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
-
 ## Launch speeds at the bottom of the rail (px/s), rising.
 var bottom := PackedFloat64Array()
 ## The speed at the mouth each launch speed gave (px/s), never falling.

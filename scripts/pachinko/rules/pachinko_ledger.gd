@@ -1,3 +1,4 @@
+class_name PachinkoLedger
 extends RefCounted
 ## Where every ball went. Balls come in from the start of a game (the cup fill) and from
 ## pocket payouts; each one is then in the cup, loaded, in play, drained or won (caught by

@@ -39,13 +39,6 @@ signal game_ended(summary: Dictionary)
 ## INSTRUCTIONS: before the first game; PLAYING; GAME_OVER: the instructions are back.
 enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
-const LaunchCalibration := preload("res://scripts/pachinko/rules/launch_calibration.gd")
-const RailTraffic := preload("res://scripts/pachinko/rules/rail_traffic.gd")
-const PachinkoLedger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
-const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
-const FlipperDrawback := preload("res://scripts/pachinko/rules/flipper_drawback.gd")
-const BallUpkeep := preload("res://scripts/pachinko/rules/ball_upkeep.gd")
-
 ## Power added per second while a key or button is held (full power in 1.25 s).
 const CHARGE_PER_SECOND := FlipperDrawback.CHARGE_PER_SECOND
 ## A shot's power is kept in whole hundredths (too fine to feel), so a replay stores it as a

@@ -1,3 +1,4 @@
+class_name PocketJam
 extends RefCounted
 ## Catches balls jammed inside a pocket's cup. A pocket is a little under two balls wide
 ## between its rim pins, so two balls that drop in together wedge against the rim above

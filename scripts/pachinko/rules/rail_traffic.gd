@@ -1,3 +1,4 @@
+class_name RailTraffic
 extends RefCounted
 ## Who is on the launch rail: the channel between the ring and the guide arc, from the
 ## launcher (`rail_start_deg`) to where it opens into the field (`rail_end_deg`).

@@ -1,3 +1,4 @@
+class_name StuckBallWatcher
 extends RefCounted
 ## Finds balls resting on pins. The chapter lets balls get stuck so another ball can knock
 ## them loose; that still works, but a ball that has not moved for `rest_seconds` is handed
