@@ -8,8 +8,6 @@ extends SceneTree
 ## every level scene that referred to it pointed at the new file.
 
 const LegacyBoardLoader := preload("res://tools/legacy_boards/legacy_board_loader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 const SCENES_DIR := "res://scenes/boards"
 
 

@@ -7,7 +7,6 @@ extends SceneTree
 ## one JSON line: jackpots, mean, min, max and each payout.
 ##   tools/godot.sh --headless --path . -s res://tools/jackpot_sample.gd -- --board=fever --count=25
 
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const WARM_UP := 20.0
 const MOST_SECONDS := 600.0
 

@@ -9,7 +9,6 @@ extends SceneTree
 ## maze from the generator), `--seeds=A-B` (default 1-5), `--every=S` (a progress line
 ## every S seconds, 0 for none; default 0), `--easy`.
 
-const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const SECONDS := 120.0
 const PHASES := ["PLAN", "MOVE", "HERD", "LEAD"]
 

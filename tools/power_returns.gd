@@ -8,8 +8,6 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s res://tools/power_returns.gd -- --board=fever
 ##   [--step=2] [--shots=400] [--threads=2]
 
-const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
-
 
 func _initialize() -> void:
 	var args := {"board": "classic", "step": "2", "shots": "400", "threads": "2"}

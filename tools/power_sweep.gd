@@ -7,8 +7,6 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s tools/power_sweep.gd -- --board=classic [--step=0.5]
 ##   [--rail-end=-55] [--json] [--paths=out.png]
 
-const PowerAim := preload("res://scripts/pachinko/autoplay/power_aim.gd")
-
 
 func _init() -> void:
 	var args := {"board": "classic", "step": "0.5", "rail-end": "", "json": ""}

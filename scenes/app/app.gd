@@ -7,9 +7,6 @@ extends Node
 ## the file, what was wrong, and where a damaged file was kept).
 signal problem_reported(message: String)
 
-const CommandLine := preload("res://scripts/app/command_line.gd")
-const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
-const SaveData := preload("res://scripts/app/save_data.gd")
 const SETTINGS_PATH := "user://settings.cfg"
 const SAVE_PATH := "user://save.cfg"
 ## Frames a scene change may take before the curtain comes down anyway.
@@ -63,8 +60,7 @@ func _ready() -> void:
 	# template crashed at exit after it in the headless test run)
 	if DisplayServer.get_name() != "headless":
 		RenderingServer.frame_post_draw.connect(
-			func() -> void: SoundBank.warm_in_background(SoundBank.SoundRecipes.names()),
-			CONNECT_ONE_SHOT
+			func() -> void: SoundBank.warm_in_background(SoundRecipes.names()), CONNECT_ONE_SHOT
 		)
 
 

@@ -7,7 +7,6 @@ extends Node
 ## when the first is ready, never holding up a frame. Headless runs (tests, the autoplay)
 ## build and play nothing: `enabled` is false there, and the mood is only remembered.
 
-const MusicRecipes := preload("res://scripts/audio/music_recipes.gd")
 const NORMAL := MusicRecipes.NORMAL
 const REACH := MusicRecipes.REACH
 const JACKPOT := MusicRecipes.JACKPOT

@@ -11,7 +11,6 @@ signal restart_requested
 signal pause_toggled(paused: bool)
 
 const SETTINGS_SCENE := "res://scenes/menu/settings_menu.tscn"
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 var _settings: Control = null
 

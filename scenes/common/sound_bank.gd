@@ -6,7 +6,6 @@ extends Node
 ## bus volume, which the settings own.
 
 ## Names of the sounds, re-exported so callers can write `SoundBank.PIN_TICK`.
-const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 const PIN_TICK := SoundRecipes.PIN_TICK
 const LAUNCH := SoundRecipes.LAUNCH
 const POCKET_WIN := SoundRecipes.POCKET_WIN
@@ -23,14 +22,14 @@ const JACKPOT := SoundRecipes.JACKPOT
 const TULIP_OPEN := SoundRecipes.TULIP_OPEN
 const START_CATCH := SoundRecipes.START_CATCH
 const FEVER_END := SoundRecipes.FEVER_END
-const SLOW_MO := SoundRecipes.JuiceRecipes.SLOW_MO
-const JACKPOT_THUMP := SoundRecipes.JuiceRecipes.JACKPOT_THUMP
-const LIGHT_SWEEP := SoundRecipes.JuiceRecipes.LIGHT_SWEEP
-const FEVER_TICK := SoundRecipes.JuiceRecipes.FEVER_TICK
-const PIN_FEVER := SoundRecipes.JuiceRecipes.PIN_FEVER
-const REACH_RISE := SoundRecipes.JackpotRecipes.REACH_RISE
-const JACKPOT_FANFARE := SoundRecipes.JackpotRecipes.JACKPOT_FANFARE
-const ROUND_BELL := SoundRecipes.JackpotRecipes.ROUND_BELL
+const SLOW_MO := JuiceRecipes.SLOW_MO
+const JACKPOT_THUMP := JuiceRecipes.JACKPOT_THUMP
+const LIGHT_SWEEP := JuiceRecipes.LIGHT_SWEEP
+const FEVER_TICK := JuiceRecipes.FEVER_TICK
+const PIN_FEVER := JuiceRecipes.PIN_FEVER
+const REACH_RISE := JackpotRecipes.REACH_RISE
+const JACKPOT_FANFARE := JackpotRecipes.JACKPOT_FANFARE
+const ROUND_BELL := JackpotRecipes.ROUND_BELL
 
 const PREFERRED_BUS := &"SFX"
 const FALLBACK_BUS := &"Master"

@@ -4,7 +4,6 @@ extends Node
 ## loudness and pitch follow that ball's speed, silent when it rests. Call `update` every
 ## frame with the balls' velocities; `stop_all` on a win, a loss or a reset.
 
-const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 ## Below this speed (px/s) a ball is silent; at `LOUD_SPEED` it is as loud as it gets.
 const QUIET_SPEED := 4.0
 const LOUD_SPEED := 110.0

@@ -4,7 +4,6 @@ extends MeshInstance3D
 ## one mesh for all of them, in the board's mesh units (MazeMeshes.to_local). A child of
 ## the board, so it tilts with it; no physics, balls roll over it.
 
-const FloorArrowKind := preload("res://scripts/board/item_kinds/floor_arrow_kind.gd")
 ## How far above the floor the paint lies (px): enough to never flicker into it.
 const LIFT_PX := 0.3
 

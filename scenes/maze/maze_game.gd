@@ -5,9 +5,6 @@ extends Control
 ## 3D with raised walls and rolling balls (maze_stage.gd), their sounds and rumble, and the
 ## seed's note, with a timer, the best time and the mode beside the joystick.
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
-const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
-const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 ## After a window change the panel is placed again this many frames running, while its
 ## wrapped text settles to the new width.
 const SETTLE_FRAMES := 3

@@ -12,7 +12,6 @@ signal pressed
 ## The head moved to `offset` seed pixels from the centre (each axis within ±15).
 signal moved(offset: Vector2)
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const DISC_RADIUS := 25.0
 const HEAD_RADIUS := 10.0
 const ARROW_DISTANCE := 55.0

@@ -7,7 +7,6 @@ extends Node3D
 ## board ever reaches it, with the board's shadow on it. One 3D unit is 100 board pixels.
 ## The camera frames the board in the screen region the game leaves it (maze_framing.gd).
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
 const UNITS_PER_PX := 0.01
 ## The seed's CSS perspective distance, in board pixels.
 const PERSPECTIVE_PX := 600.0

@@ -13,8 +13,6 @@ signal binding_changed
 ## A capture started (true) or ended (false); the owner ignores its own shortcuts meanwhile.
 signal capture_toggled(capturing: bool)
 
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
-const BindingMoves := preload("res://scripts/app/binding_moves.gd")
 const AXIS_THRESHOLD := 0.6
 const TITLE_MIN_WIDTH := 220.0
 ## A binding button's least width as designed (a landscape window).

@@ -4,8 +4,6 @@ extends RefCounted
 ## card's best result, the folder's real path, the keys line and the keys that open a
 ## card's menu.
 
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
-
 
 ## The line over the cards: how many boards, of your own, loading, broken, locked, and how
 ## many files were left out of My boards. `kind` names the game's folder when there are none.

@@ -5,7 +5,6 @@ extends Control
 ## actions, mouse and touch into calls on the rules. Sounds and effects follow the rules'
 ## signals.
 
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 ## The panel's designed width (PachinkoHudLayout).
 const HUD_WIDTH := PachinkoHudLayout.HUD_WIDTH
 ## The board's area's short side in the designed 1280 × 720 layout: a full-power drag is 100

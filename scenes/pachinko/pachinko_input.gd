@@ -20,8 +20,6 @@ const HANDLE_STEP := 2.0
 ## Strength change per pixel of a drag on the held dial (up is stronger).
 const HANDLE_DRAG_PER_PIXEL := 0.5
 
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
-
 ## How many view units of drag make one point of power, relative to the rules' one pixel
 ## a point: the board's size on screen against the designed layout's (PachinkoGame sets
 ## it), so a full-power drag is the same share of the board in every window.

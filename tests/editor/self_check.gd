@@ -11,7 +11,6 @@ const ENV := "BOARD_EDITOR_SELF_CHECK"
 const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
-const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const Plugin := preload("res://addons/board_editor/plugin.gd")
 
 var _plugin: Plugin

@@ -7,7 +7,6 @@ extends RefCounted
 
 const BenchScenes := preload("res://tests/bench/physics/bench_scenes.gd")
 const OursRunner := preload("res://tests/bench/physics/ours_runner.gd")
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const TABLE_PATH := "res://tests/golden/golden_hashes.json"
 ## name, mode, pin pitch, balls, hz: the bench's scenes (tests/bench/bench_physics.gd).
 const SCENES := [

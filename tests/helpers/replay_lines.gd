@@ -2,7 +2,6 @@ extends RefCounted
 ## Replay text for the reader's tests: a header with every field good (change any of them),
 ## records after it, and what the reader makes of it.
 
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
 const HASH := "0123456789abcdef0123456789abcdef0123456789abcdef0123456789abcdef"
 
 

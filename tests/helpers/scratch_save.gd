@@ -3,8 +3,6 @@ extends RefCounted
 ## scratch path in App.save_data (boards locked as for a new player) and returns the real
 ## one; restore() puts the real one back and deletes the scratch file.
 
-const SaveData := preload("res://scripts/app/save_data.gd")
-
 
 ## Swaps App.save_data for a fresh save stored at `path`; returns the real one.
 static func swap_in(path: String) -> RefCounted:

@@ -3,7 +3,6 @@ extends GutTest
 ## every ball is accounted for, and the same seed gives the same report.
 
 const FEVER := "res://levels/pachinko/fever.board"
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 
 
 # A jackpot is rare now (one in 81 spins since rules 5, about 2.6 an hour at this pace):

@@ -3,10 +3,6 @@ extends GutTest
 ## game, and its planner reads the board's grid right.
 
 const CLASSIC := "res://levels/maze/classic.board"
-const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
-const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
-const MazeSlidePlanner := preload("res://scripts/maze/autoplay/maze_slide_planner.gd")
-const MazeHoleGuard := preload("res://scripts/maze/autoplay/maze_hole_guard.gd")
 
 const RIGHT := 0
 const DOWN := 2

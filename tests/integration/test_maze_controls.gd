@@ -2,8 +2,6 @@ extends GutTest
 ## How input becomes tilt: the seed's joystick mapping, smooth keys and stick, and the
 ## phone accelerometer with its calibration and its fallback to the joystick.
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
-const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const FLAT := Vector3(0.0, 0.0, -9.8)
 
 

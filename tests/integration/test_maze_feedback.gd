@@ -4,7 +4,6 @@ extends GutTest
 ## ball that falls into a hole instead of vanishing.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 const TEST_SETTINGS := "user://test_maze_feedback_settings.cfg"
 const TEST_SAVE := "user://test_maze_feedback_save.cfg"
 

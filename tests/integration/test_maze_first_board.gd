@@ -4,7 +4,6 @@ extends GutTest
 ## tilt through TiltMixer) wins First Roll, and so does the same with Two Together's two
 ## balls and one more fold.
 
-const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const FRAME := 1.0 / 60.0
 const HOLD_SECONDS := 2.0
 

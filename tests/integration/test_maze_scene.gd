@@ -7,7 +7,6 @@ extends GutTest
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const TEST_SETTINGS := "user://test_maze_settings.cfg"
 const TEST_SAVE := "user://test_maze_save.cfg"
-const SaveData := preload("res://scripts/app/save_data.gd")
 
 var _game: MazeGame
 

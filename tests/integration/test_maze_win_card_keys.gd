@@ -4,7 +4,6 @@ extends GutTest
 ## board again in hard mode, as the side panel's "Press H for hard mode" says.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
-const SaveData := preload("res://scripts/app/save_data.gd")
 const TEST_SETTINGS := "user://test_maze_win_card_keys_settings.cfg"
 const TEST_SAVE := "user://test_maze_win_card_keys_save.cfg"
 const REPLAYS := "user://test_maze_win_card_keys_replays"

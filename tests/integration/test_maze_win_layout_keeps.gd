@@ -6,7 +6,6 @@ extends GutTest
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
-const SaveData := preload("res://scripts/app/save_data.gd")
 const TEST_SETTINGS := "user://test_maze_win_layout_settings.cfg"
 const TEST_SAVE := "user://test_maze_win_layout_save.cfg"
 const REPLAYS := "user://test_maze_win_layout_replays"

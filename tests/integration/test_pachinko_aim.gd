@@ -4,7 +4,6 @@ extends GutTest
 ## strongest fifth within a third of the width from the far side (the mouth speed, which
 ## power sets, is what moves it).
 
-const PowerAim := preload("res://scripts/pachinko/autoplay/power_aim.gd")
 const BOARDS := ["classic", "tulips", "windmills"]
 ## The boards the aim rule is held to: every shipped one.
 const AIMED_BOARDS := ["classic", "tulips", "windmills", "fever", "hanami"]

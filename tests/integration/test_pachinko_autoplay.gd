@@ -3,7 +3,6 @@ extends GutTest
 ## seed plays the same game.
 
 const CLASSIC := "res://levels/pachinko/classic.board"
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 
 
 func _level() -> BoardLevel:

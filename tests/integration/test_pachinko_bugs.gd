@@ -6,7 +6,6 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 
 func _playing() -> PachinkoRules:

@@ -5,8 +5,6 @@ extends GutTest
 
 const CLASSIC := "res://levels/pachinko/classic.board"
 const GAME := "res://scenes/pachinko/pachinko_game.tscn"
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
-const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
 
 
 func _playing() -> PachinkoRules:

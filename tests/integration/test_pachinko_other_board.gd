@@ -2,9 +2,6 @@ extends GutTest
 ## The game is not tied to the classic board: a smaller ring, another rail and one pocket
 ## paying 10 play by the same rules, and the launcher recalibrates to the new rail.
 
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
-
 
 func _small_board() -> BoardLevel:
 	var level := BoardLevel.new()

@@ -3,7 +3,6 @@ extends GutTest
 ## the flipper's drawback, the physical launch rail, pockets, the gutter and game over.
 
 const CLASSIC := "res://levels/pachinko/classic.board"
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 
 func _level(cup_balls: int = -1) -> BoardLevel:

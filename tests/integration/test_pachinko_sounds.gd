@@ -2,7 +2,6 @@ extends GutTest
 ## The procedural sound bank: every sound is generated, plays on a real bus, and impacts
 ## are rate-limited with pitch and volume from their speed.
 
-const SoundRecipes := preload("res://scripts/audio/sound_recipes.gd")
 ## The jackpot's moments (the reach's rise, the fanfare) last as long as the moment does.
 const LONGEST_MOMENT := 4.0
 
@@ -13,7 +12,7 @@ func test_every_recipe_builds_a_clip() -> void:
 		assert_not_null(clip, "%s is generated" % sound)
 		if clip != null:
 			assert_gt(clip.data.size(), 200, "%s has samples" % sound)
-			var longest := LONGEST_MOMENT if SoundRecipes.JackpotRecipes.has(sound) else 2.0
+			var longest := LONGEST_MOMENT if JackpotRecipes.has(sound) else 2.0
 			assert_lt(clip.get_length(), longest, "%s is a short effect" % sound)
 
 

@@ -2,9 +2,6 @@ extends RefCounted
 ## Shared steps of the replay tests: load a board, record a maze attempt the way the game
 ## plays it, play a replay back through a written and read file.
 
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
-const ReplayWriter := preload("res://scripts/replay/replay_writer.gd")
-
 
 static func load_level(path: String) -> BoardLevel:
 	return BoardLoader.load_board(path).level

@@ -2,7 +2,6 @@ extends GutTest
 ## The --analyze command once its flags are parsed: the JSON line's keys, the files it
 ## writes, and bad input.
 
-const AnalyzeCli := preload("res://scripts/app/analyze_cli.gd")
 const KEYS := [
 	"board",
 	"shots",

@@ -64,7 +64,7 @@ func test_the_rail_hand_over_changes_no_outcome() -> void:
 	plan.played = false  # the hand-over is the contact-free run's shortcut
 	var analysis := PachinkoAnalysis.new(plan)
 	var with_table := analysis.run()
-	var launch: LaunchTable = PachinkoAnalysis.LaunchCalibration.table(plan.level)
+	var launch: LaunchTable = LaunchCalibration.table(plan.level)
 	var full := PachinkoShotChunk.new(plan, launch, null)
 	assert_true(full.run(0))
 	assert_eq(with_table.band_pocket_hits, full.tally.band_pocket_hits)
@@ -116,7 +116,7 @@ func test_climbs_stopped_at_the_hand_over_leave_the_same_first_pins() -> void:
 	needed.resize(AnalysisPlan.level_count())
 	for q in plan.chunk_levels(0):
 		needed[q] = 1
-	var launch: LaunchTable = PachinkoAnalysis.LaunchCalibration.table(plan.level)
+	var launch: LaunchTable = LaunchCalibration.table(plan.level)
 	var climbs := AnalysisProfile.new()
 	for group in RailExitTable.groups_for(needed):
 		followed.store(RailClimber.climb_group(plan.level, launch, group, climbs), group)

@@ -20,7 +20,7 @@ func _plan() -> AnalysisPlan:
 
 
 func _launch(plan: AnalysisPlan) -> LaunchTable:
-	return PachinkoAnalysis.LaunchCalibration.table(plan.level)
+	return LaunchCalibration.table(plan.level)
 
 
 func test_a_played_chunk_fires_at_the_autoplays_pace_among_the_balls_in_play() -> void:

@@ -4,7 +4,6 @@ extends GutTest
 ## board a game plays comes from the play-test request, the level select, or the default.
 
 const AppScript := preload("res://scenes/app/app.gd")
-const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SETTINGS := "user://test_app_settings.cfg"
 const SAVE := "user://test_app_save.cfg"
 

@@ -1,8 +1,6 @@
 extends GutTest
 ## The --autoplay command once its flags are parsed: board names and a missing board.
 
-const AutoplayCli := preload("res://scripts/app/autoplay_cli.gd")
-
 
 func test_board_names_resolve_to_level_files() -> void:
 	assert_eq(AutoplayCli.resolve_board_path("maze", "classic"), "res://levels/maze/classic.board")

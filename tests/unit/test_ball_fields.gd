@@ -3,11 +3,6 @@ extends GutTest
 ## a row alone is stored, kept with its ball through compact() and grown by add(); the
 ## store's typed arrays and the stages' copies follow the table.
 
-const BallFields := preload("res://scripts/physics/ball_fields.gd")
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
-const BallSolve := preload("res://scripts/physics/ball_solve.gd")
-
 const SPAWNED := 9
 ## Slots removed before compact(): the first, two in the middle and the last.
 const KILLED: Array[int] = [0, 3, 4, 8]

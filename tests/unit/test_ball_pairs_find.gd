@@ -3,8 +3,6 @@ extends GutTest
 ## exactly the touching pairs of the balls, each once, for mixed radii, crowded and lone
 ## balls, balls on stripe and row edges, and one lane or several.
 
-const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
-
 
 func _world(threads: int, seed_value: int) -> BallWorld:
 	var w := BallWorld.new(TuningPresets.pachinko())

@@ -3,9 +3,6 @@ extends GutTest
 ## asks whether to move it and names that action; moving swaps the old binding over so no
 ## action is left without one; a move that would leave one empty is refused.
 
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
-const BindingMoves := preload("res://scripts/app/binding_moves.gd")
-
 
 func after_each() -> void:
 	App.settings.bindings = GameSettings.default_bindings()

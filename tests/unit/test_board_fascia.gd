@@ -3,8 +3,6 @@ extends GutTest
 ## line, classic when a file has none, an unknown machine refused by name, and every shipped
 ## board a machine of its own.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC_FILE := "res://levels/pachinko/classic.board"
 const SHIPPED: Array[String] = [
 	"res://levels/pachinko/classic.board",

@@ -2,8 +2,6 @@ extends GutTest
 ## The data-only board format: BoardTextWriter → BoardTextReader round trips every shipped
 ## board exactly, and the reader refuses every hostile or broken file with the field named.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const SHIPPED: Array[String] = [
 	"res://levels/pachinko/classic",
 	"res://levels/pachinko/tulips",

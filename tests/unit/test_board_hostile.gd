@@ -3,7 +3,6 @@ extends GutTest
 ## put in a board folder. Every one is refused quickly with the file and the problem named,
 ## none runs code, and the one well-formed file (a BOM and CRLF line ends) loads.
 
-const BoardCheckCli := preload("res://scripts/loading/board_check_cli.gd")
 const ROOT := "res://tests/fixtures/hostile_boards"
 const MARKER := "user://hostile_payload_ran.txt"
 ## Loading one file may never take longer than this (the issue's limit is 5 s a file).

@@ -2,7 +2,6 @@ extends GutTest
 ## The board reader's field checks, as a designer meets them: each wrong field, item or
 ## tuning constant is refused with a message naming it, and what is allowed loads.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 const PACHINKO := "res://levels/pachinko/classic.board"
 const MAZE := "res://levels/maze/classic.board"
 

@@ -2,8 +2,6 @@ extends GutTest
 ## BoardValidator finds each problem (and only real ones: pocket rims are meant to be closed).
 
 const DIR := "res://tests/fixtures/boards/"
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 
 
 func test_fixture_boards_are_clean() -> void:

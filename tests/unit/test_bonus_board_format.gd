@@ -4,8 +4,6 @@ extends GutTest
 ## and every hostile value refused with the field named; the validator then refuses cups
 ## outside the ring, too shallow or overlapping.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/pachinko/classic.board"
 
 

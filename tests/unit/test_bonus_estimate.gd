@@ -4,7 +4,7 @@ extends GutTest
 
 const ROLE := BonusPocketSpec.Role
 ## A player holding the handle: the pace the figures below were worked out for.
-const HANDLE := BonusEstimate.LaunchHandle.INTERVAL
+const HANDLE := LaunchHandle.INTERVAL
 
 
 # A start pocket (2 symbols), an attacker (pays 10, 6 s or 10 catches) and a tulip (pays 4).

@@ -2,11 +2,6 @@ extends GutTest
 ## The command line: every user argument is checked against the one flag table; a bad one is
 ## named in the error and exits 2 before the game starts; --help lists every flag.
 
-const CliFlags := preload("res://scripts/app/cli_flags.gd")
-const CliParser := preload("res://scripts/app/cli_parser.gd")
-const CliHelp := preload("res://scripts/app/cli_help.gd")
-const CommandLine := preload("res://scripts/app/command_line.gd")
-
 
 class TestGoodArguments:
 	extends GutTest

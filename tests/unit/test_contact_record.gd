@@ -6,9 +6,6 @@ extends GutTest
 ## contact already first or second, other contacts in both slots), and the edge cases.
 ## Both slides here are held contacts, so they slide whatever their speed.
 
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
-const ContactId := preload("res://scripts/physics/contact_id.gd")
-
 const CASES := 10000
 const WALL := 2
 const WALL_ID := (WALL << ContactId.KIND_BITS) | ContactId.KIND_WALL

@@ -3,7 +3,6 @@ extends GutTest
 ## threshold bounces, a ball resting on a surface settles instead of hopping on the spot
 ## (what gravity added in this step does not count toward its approach).
 
-const ContactRule := preload("res://scripts/physics/contact_rule.gd")
 ## The bounce threshold of these cases, px/s.
 const THRESHOLD := 50.0
 

@@ -5,8 +5,6 @@ extends GutTest
 
 const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardInput := preload("res://addons/board_editor/board_input.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 
 var session: BoardEditSession
 var input: BoardInput

@@ -19,9 +19,7 @@ const Arrange := preload("res://addons/board_editor/core/arrange.gd")
 const ArrangeAction := preload("res://addons/board_editor/actions/arrange_action.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
 const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const PropertyPanel := preload("res://addons/board_editor/ui/property_panel.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 
 # bonus_layout.board: start pocket 1 at (350, 400), attacker 1 at (350, 540), tulips 1 and 2 at
 # (215, 330) and (485, 330), mirrored across x = 350.

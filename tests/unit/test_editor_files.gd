@@ -8,7 +8,6 @@ const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
 const SCRATCH := "user://test_editor_files_board.board"
 ## The game only plays boards from levels/: a play-test board has to be saved there.
 const SCRATCH_LEVEL := "res://levels/maze/test_editor_files_scratch.board"
-const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 
 
 func after_each() -> void:

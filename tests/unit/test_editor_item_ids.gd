@@ -10,8 +10,6 @@ const TestEditorTools := preload("res://tests/unit/test_editor_tools.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
 const AddItemsAction := preload("res://addons/board_editor/actions/add_items_action.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 
 
 func _pins(count: int) -> BoardLevel:

@@ -4,7 +4,6 @@ extends GutTest
 
 const MakeOriginalBoards := preload("res://tools/make_original_boards.gd")
 const MakeOriginalMazes := preload("res://tools/make_original_mazes.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 
 const FILES := {
 	"res://levels/pachinko/tulips.board": [MakeOriginalBoards, "make_tulips"],

@@ -6,8 +6,6 @@ extends GutTest
 const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
 const EditCommands := preload("res://addons/board_editor/core/edit_commands.gd")
 
 ## How far each field is moved: small enough to stay valid, large enough to show in the file.

@@ -10,8 +10,6 @@ const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/pachinko/classic.board"
 const SPOT := Vector2(300, 260)
 

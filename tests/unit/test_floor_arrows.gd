@@ -11,8 +11,6 @@ const ItemNames := preload("res://addons/board_editor/core/item_names.gd")
 const ItemProperties := preload("res://addons/board_editor/core/item_properties.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 const Shortcuts := preload("res://addons/board_editor/ui/shortcuts.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const FIXTURE := "res://tests/fixtures/boards/floor_arrows.board"
 const SPOT := Vector2(52.5, 52.5)
 

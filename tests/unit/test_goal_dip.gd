@@ -3,8 +3,6 @@ extends GutTest
 ## away, and settles near the middle; outside the rim nothing changes (a play trial saw balls
 ## roll across the goal and out again).
 
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
-
 
 func _rules() -> MazeRules:
 	var rules := MazeRules.new(BoardLoader.load_board("res://levels/maze/cloister.board").level)

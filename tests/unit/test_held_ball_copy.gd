@@ -9,9 +9,6 @@ extends GutTest
 ## The ways a ball is held from behind (see solve_pairs()).
 enum Held { ASLEEP, STATIC, STATIC2, BALL }
 
-const BallSolve := preload("res://scripts/physics/ball_solve.gd")
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-
 const CASES := 10000
 
 

@@ -3,7 +3,6 @@ extends GutTest
 ## read, what a broken line is called in the message the player sees, and that every key
 ## and value written reads back the same.
 
-const IniText := preload("res://scripts/app/ini_text.gd")
 const DIR := "user://test_ini_text"
 
 

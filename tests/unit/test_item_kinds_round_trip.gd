@@ -17,9 +17,6 @@ const AddItemsAction := preload("res://addons/board_editor/actions/add_items_act
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const FlipItemsAction := preload("res://addons/board_editor/actions/flip_items_action.gd")
 const DeleteItemsAction := preload("res://addons/board_editor/actions/delete_items_action.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardSchema := preload("res://scripts/loading/board_schema.gd")
 
 ## Where the added copy goes, from the item it copies, and how far it is then moved.
 const SET_APART := Vector2(7.0, 5.0)

@@ -3,8 +3,6 @@ extends GutTest
 ## with an escape), a repeat in different objects is not one, and the settings reader refuses
 ## a value that holds one instead of keeping the last.
 
-const IniText := preload("res://scripts/app/ini_text.gd")
-
 
 func test_a_repeat_is_found_at_any_depth() -> void:
 	assert_eq(JsonKeys.repeated('{"a": 1, "a": 2}'), "a")

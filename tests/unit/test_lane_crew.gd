@@ -4,9 +4,6 @@ extends GutTest
 ## take lanes (a stage keeps one working state per worker number); freeing the lanes joins
 ## the threads.
 
-const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
-const LaneCrew := preload("res://scripts/physics/lane_crew.gd")
-
 
 func test_every_lane_of_many_hand_offs_runs_once_and_is_done_on_return() -> void:
 	var crew := LaneCrew.new()

@@ -3,7 +3,6 @@ extends GutTest
 ## greyed cards with the reason for the ones that do not.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
-const SaveData := preload("res://scripts/app/save_data.gd")
 const SAVE := "user://test_level_select_save.cfg"
 const EMPTY_USER_ROOT := "user://test_level_select_no_boards"
 

@@ -4,9 +4,6 @@ extends GutTest
 ## generated hard maze won over several seeds with room to spare round every hole.
 
 const CLASSIC := "res://levels/maze/classic.board"
-const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
-const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
-const MazeSlidePlanner := preload("res://scripts/maze/autoplay/maze_slide_planner.gd")
 
 const RIGHT := 0
 const DOWN := 2

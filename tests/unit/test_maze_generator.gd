@@ -2,8 +2,6 @@ extends GutTest
 ## The maze generator: valid, solvable boards (holes never cut a start off), the same seed
 ## gives the same board, difficulty changes the maze, and bad settings are refused by name.
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 const MakeOriginalMazes := preload("res://tools/make_original_mazes.gd")
 
 

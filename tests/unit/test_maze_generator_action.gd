@@ -5,7 +5,6 @@ extends GutTest
 const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
 const GenerateMazeAction := preload("res://addons/board_editor/generator/generate_maze_action.gd")
 const MazeGeneratorButton := preload("res://addons/board_editor/generator/maze_generator_button.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 
 
 func _classic() -> BoardLevel:

@@ -3,10 +3,6 @@ extends GutTest
 ## play (a ball trapped behind a gap narrower than a ball, or no progress for 20 s), each
 ## game says why and where it was lost, the losses are grouped and worded for the dock.
 
-const MazeProgressWatch := preload("res://scripts/maze/autoplay/maze_progress_watch.gd")
-const MazeNav := preload("res://scripts/maze/autoplay/maze_nav.gd")
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
-const MazeLosses := preload("res://scripts/analysis/maze_losses.gd")
 const MazeLossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")
 const MazeAnalysisPanel := preload("res://addons/board_editor/analysis/maze_analysis_panel.gd")
 const TEST_FOLDER := "user://test_maze_loss_reasons"

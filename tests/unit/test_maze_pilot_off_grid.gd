@@ -7,8 +7,6 @@ extends GutTest
 ## one ball in. The grid now draws an off-grid wall onto its cell sides (those
 ## between the cells whose centres it separates), and the planner plays on.
 
-const MazeGrid := preload("res://scripts/maze/autoplay/maze_grid.gd")
-const MazeFlood := preload("res://scripts/validation/maze_flood.gd")
 const COURTYARDS := "res://levels/maze/courtyards.board"
 const MOVED_FROM := Vector2(70, 70)
 const MOVED_TO := Vector2(70, 105)

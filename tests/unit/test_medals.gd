@@ -2,8 +2,6 @@ extends GutTest
 ## Medal times: the optional `medal_times` field of a maze file (read, written, refused when
 ## wrong) and the medal a best time earns.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/maze/classic.board"
 
 

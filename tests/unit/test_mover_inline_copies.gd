@@ -7,13 +7,6 @@ extends GutTest
 ##   BallSensors.crossed_zone_edge() (then BallSensors.sense(), as _after_move() does).
 ## The mover moves one ball on a board with nothing it can touch, so the ball goes straight.
 
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const BallSensors := preload("res://scripts/physics/ball_sensors.gd")
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const StaticShapes := preload("res://scripts/physics/static_shapes.gd")
-const Windmills := preload("res://scripts/physics/windmills.gd")
-
 const CASES := 10000
 const DT := 1.0 / 120.0
 

@@ -3,7 +3,6 @@ extends GutTest
 ## jackpot), built once on a worker thread, played on the Music bus, and turned by the bonus
 ## machine: a reach, a jackpot, and back.
 
-const MusicRecipes := preload("res://scripts/audio/music_recipes.gd")
 const FEVER := "res://levels/pachinko/fever.board"
 
 

@@ -7,7 +7,6 @@ extends GutTest
 ## the bonus layer's estimate included. (No board holds every strength under 0.97 yet: its
 ## best strength still pays 1.1 to 1.5, see README "Held strength".)
 
-const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
 ## The strength each board paid most at before (rules 4) and what it paid then.
 const WORST_BEFORE := {
 	"classic": [74.0, 1.875],

@@ -3,7 +3,6 @@ extends GutTest
 ## autoplay's JSON and the accounting check all read these counts, so a payout booked to the
 ## wrong pocket or a game's figures taken from the wrong start shows up on screen.
 
-const PachinkoLedger := preload("res://scripts/pachinko/rules/pachinko_ledger.gd")
 const COUNTERS: Array[String] = [
 	"given", "paid", "shots", "drained", "won", "returned", "nudges", "vanished"
 ]

@@ -3,7 +3,6 @@ extends GutTest
 ## the autoplay's pace, and the report gives the median and 10th percentile of the sessions'
 ## lengths, jackpots per hour and what a jackpot paid.
 
-const PachinkoSessions := preload("res://scripts/analysis/pachinko_sessions.gd")
 const CLASSIC := "res://levels/pachinko/classic.board"
 
 
@@ -54,7 +53,7 @@ func test_a_session_ends_when_the_cup_runs_dry() -> void:
 	assert_gte(session["shots"], level.cup_start_balls, "every start ball was fired")
 	# At least one autoplay pause per shot but the first.
 	var shots: int = session["shots"]
-	var least := (shots - 1) * PachinkoSessions.PachinkoAutoplay.MIN_GAP
+	var least := (shots - 1) * PachinkoAutoplay.MIN_GAP
 	assert_gte(session["seconds"], least)
 	assert_eq(session["jackpots"], 0, "classic has no reels")
 	var report := PachinkoSessions.report_for(level, 2, 1, 600.0)

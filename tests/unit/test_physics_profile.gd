@@ -2,8 +2,6 @@ extends GutTest
 ## BallWorld.profile_stages: per-stage times for the bench, and no effect on the results
 ## or on the schedule of stages a step runs.
 
-const StageClock := preload("res://scripts/physics/stage_clock.gd")
-
 
 func _world() -> BallWorld:
 	var w := BallWorld.new()

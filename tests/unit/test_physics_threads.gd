@@ -2,9 +2,6 @@ extends GutTest
 ## Thread-count independence: the per-ball stages run in lanes on worker threads, and 1, 2
 ## and 4 threads must give bit-identical worlds and the same events in the same order.
 
-const BallLanes := preload("res://scripts/physics/ball_lanes.gd")
-const BallPairs := preload("res://scripts/physics/ball_pairs.gd")
-
 
 ## A ring board with pins, a wall and a gutter, crowded enough for several lanes.
 func _pachinko_world(threads: int) -> BallWorld:

@@ -2,9 +2,6 @@ extends GutTest
 ## Seed constants converted to px and seconds, the tilt → gravity / friction mapping, the
 ## speed cap, and friction that only slows.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
-
 
 func test_pachinko_defaults_convert_the_flash_constants() -> void:
 	var t := TuningPresets.pachinko()

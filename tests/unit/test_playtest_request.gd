@@ -3,7 +3,6 @@ extends GutTest
 ## every field checked, stale or bad requests removed with a warning, and a hostile file
 ## that ConfigFile would run as code never runs.
 
-const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const SCRATCH := "user://test_playtest_request.json"
 const BOARD := "res://levels/maze/draft.board"
 

@@ -5,13 +5,8 @@ extends GutTest
 
 const MAZE_CLASSIC := "res://levels/maze/classic.board"
 const PACHINKO_CLASSIC := "res://levels/pachinko/classic.board"
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
-const ReplayWriter := preload("res://scripts/replay/replay_writer.gd")
-const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
-const PachinkoAutoplay := preload("res://scripts/pachinko/autoplay/pachinko_autoplay.gd")
 const TEMP := "user://test_replay.replay"
 const ReplayKit := preload("res://tests/unit/replay_kit.gd")
-const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 
 
 class TestFormat:

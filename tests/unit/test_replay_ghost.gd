@@ -5,9 +5,6 @@ extends GutTest
 
 const MAZE_CLASSIC := "res://levels/maze/classic.board"
 const ReplayKit := preload("res://tests/unit/replay_kit.gd")
-const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
-const TiltInput := preload("res://scripts/maze/rules/tilt_input.gd")
-const TiltMixer := preload("res://scripts/maze/rules/tilt_mixer.gd")
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const TEST_FOLDER := "user://test_replay_ghost"
 const TEST_SETTINGS := "user://test_ghost_settings.cfg"

@@ -4,8 +4,6 @@ extends GutTest
 ## quickly with the file and the real problem named, and never plays.
 
 const ROOT := "res://tests/fixtures/hostile_replays"
-const ReplayCli := preload("res://scripts/replay/replay_cli.gd")
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
 ## Reading one file may never take longer than this.
 const MAX_MS := 2000.0
 const EXPECTED := {

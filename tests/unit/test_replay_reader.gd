@@ -4,7 +4,6 @@ extends GutTest
 ## Replay it says. Its records: test_replay_records.gd.
 
 const ReplayLines := preload("res://tests/helpers/replay_lines.gd")
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
 ## The limits as numbers, not the reader's constants: a changed limit must fail a test.
 const MOST_WHOLE := 9_007_199_254_740_991
 const MOST_BYTES := 2_097_152

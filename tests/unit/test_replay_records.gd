@@ -3,8 +3,6 @@ extends GutTest
 ## one past it refused by name. The header and the file: test_replay_reader.gd.
 
 const ReplayLines := preload("res://tests/helpers/replay_lines.gd")
-const ReplayReader := preload("res://scripts/replay/replay_reader.gd")
-const TiltPacking := preload("res://scripts/replay/tilt_packing.gd")
 
 
 func test_tilt_records_are_checked_at_their_limits() -> void:

@@ -4,9 +4,6 @@ extends GutTest
 ## here bit for bit to the readable path, the ball put back on the ring and answered by
 ## respond(), over random contacts and the edge cases.
 
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
-const ContactId := preload("res://scripts/physics/contact_id.gd")
-
 const CASES := 10000
 ## Contact ids a ball may hold besides the ring's: a pin's and a wall's.
 const OTHER_A := (3 << ContactId.KIND_BITS) | ContactId.KIND_PIN

@@ -2,7 +2,6 @@ extends GutTest
 ## Best results: the maze keeps one best time per board and mode (easy and hard never share
 ## one), version 1 files migrate with their times as easy times, pachinko keeps the most balls.
 
-const SaveData := preload("res://scripts/app/save_data.gd")
 const PATH := "user://test_save_data.cfg"
 
 

@@ -3,8 +3,6 @@ extends GutTest
 ## JSON strings, so `=`, `]`, `;`, quotes, newlines, control characters and any Unicode
 ## survive a save and a load, in both maze modes and in pachinko.
 
-const SaveData := preload("res://scripts/app/save_data.gd")
-const IniText := preload("res://scripts/app/ini_text.gd")
 const PATH := "user://test_save_data_ids.cfg"
 var nasty_ids := [
 	"classic",

@@ -5,9 +5,6 @@ extends GutTest
 ## binding, from the file and from the settings screen.
 
 const AppScript := preload("res://scenes/app/app.gd")
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
-const SaveData := preload("res://scripts/app/save_data.gd")
-const UserFile := preload("res://scripts/app/user_file.gd")
 const SETTINGS := "user://test_settings_files_settings.cfg"
 const SAVE := "user://test_settings_files_save.cfg"
 

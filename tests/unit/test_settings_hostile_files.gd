@@ -5,7 +5,6 @@ extends GutTest
 ## ever runs (the marker file never appears), nothing crashes, the values stay defaults or
 ## sane, a damaged file is kept byte for byte beside the new one, a newer one is untouched.
 
-const SaveData := preload("res://scripts/app/save_data.gd")
 const CORPUS := "res://tests/fixtures/hostile_user_files/"
 ## The file every payload in the corpus writes if it is ever run as code.
 const MARKER := "user://hostile_user_files_marker.txt"

@@ -3,7 +3,6 @@ extends GutTest
 ## the InputMap when applied, and "Default controls" brings the shipped bindings back.
 
 const PATH := "user://test_settings_input.cfg"
-const InputEventCodec := preload("res://scripts/app/input_event_codec.gd")
 
 
 func after_each() -> void:

@@ -5,12 +5,6 @@ extends GutTest
 ## and velocities and the edge cases. The mover moves one ball on a board with no shapes, so
 ## the velocity it writes back is the limited one and nothing else.
 
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
-const BallStore := preload("res://scripts/physics/ball_store.gd")
-const StaticGeometry := preload("res://scripts/physics/static_geometry.gd")
-const Windmills := preload("res://scripts/physics/windmills.gd")
-const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
-
 const CASES := 10000
 const BALL_R := 5.0
 

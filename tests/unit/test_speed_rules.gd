@@ -4,8 +4,6 @@ extends GutTest
 ## rule, for every option the tuning has (the tilt maze's replays and state hashes rest on
 ## it), and the rules themselves must do what a player sees.
 
-const SpeedRules := preload("res://scripts/physics/speed_rules.gd")
-
 
 ## The rules as PhysicsTuning states them, one after the other.
 func _by_the_rules(

@@ -3,7 +3,6 @@ extends GutTest
 ## a link is refused with the link named, and no save (board import, settings, replay) ever
 ## writes through a link planted where an old build put its temporary file.
 
-const IniText := preload("res://scripts/app/ini_text.gd")
 const ROOT := "user://test_symlinks"
 const OUTSIDE := "user://test_symlinks_outside"
 const GOOD := "res://levels/pachinko/classic.board"

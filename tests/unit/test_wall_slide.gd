@@ -6,9 +6,6 @@ extends GutTest
 ## exactly at the bounce threshold, held from behind, grazing, in a wall's cap with either
 ## cap contact, centre on the segment, a zero-length wall).
 
-const BallMover := preload("res://scripts/physics/ball_mover.gd")
-const ContactId := preload("res://scripts/physics/contact_id.gd")
-
 const CASES := 10000
 const WALL := 4
 const WALL_ID := (WALL << ContactId.KIND_BITS) | ContactId.KIND_WALL

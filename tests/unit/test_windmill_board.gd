@@ -3,8 +3,6 @@ extends GutTest
 ## pockets, read back to the same board, refused with the field named when a value is bad;
 ## the validator's messages for windmills that do not fit; the factory builds them.
 
-const BoardTextReader := preload("res://scripts/loading/board_text_reader.gd")
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const CLASSIC := "res://levels/pachinko/classic.board"
 
 

@@ -10,7 +10,6 @@ extends RefCounted
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
-const MazePilot := preload("res://scripts/maze/autoplay/maze_pilot.gd")
 const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
 ## The shots this file takes, in order.

@@ -13,7 +13,6 @@ extends VBoxContainer
 ## The overlay should be redrawn (new figures, or none to show).
 signal redraw_needed
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 const MazeAnalysisDraw := preload("res://addons/board_editor/analysis/maze_analysis_draw.gd")
 const AnalysisControls := preload("res://addons/board_editor/analysis/analysis_controls.gd")
 const MazeLossWords := preload("res://addons/board_editor/analysis/maze_loss_words.gd")

@@ -4,7 +4,6 @@ extends RefCounted
 ## which ring / rail / goal handle is under a point. All in board pixels.
 
 const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
-const PinChecks := preload("res://scripts/validation/pin_checks.gd")
 
 ## Handle names are the BoardLevel fields they edit.
 const PACHINKO_HANDLES: Array[String] = [

@@ -3,7 +3,6 @@ extends RefCounted
 ## The editor's play-test: saves the board, leaves a request the game reads on start
 ## (App.current_board_path), and runs the board's game scene from the editor.
 
-const PlaytestRequest := preload("res://scripts/app/playtest_request.gd")
 const REQUEST_PATH := PlaytestRequest.PATH
 ## Godot's editor setting "save all scenes before running".
 const SAVE_BEFORE_RUNNING := "run/auto_save/save_before_running"

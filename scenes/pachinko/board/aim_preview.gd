@@ -7,7 +7,6 @@ extends Node2D
 ## handle's strength, with two faint rings where its spring's spread, LaunchHandle.JITTER
 ## either side, may send a ball). Nothing shows while no one aims.
 
-const LaunchHandle := preload("res://scripts/pachinko/rules/launch_handle.gd")
 ## Seconds the handle's preview stays after it was turned (a turn is aiming too).
 const SHOW_AFTER_TURN := 1.5
 ## Seconds the preview takes to fade in or out.

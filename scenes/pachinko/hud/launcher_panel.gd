@@ -33,7 +33,6 @@ const LAST_SHOT := Color("ffd34d")
 ## bar, POWER under it, HANDLE under the dial), which is the smallest text of the panel.
 const STATUS_FONT_SIZE := 16
 const SMALL_FONT_SIZE := 14
-const LaunchPower := preload("res://scripts/pachinko/rules/launch_power.gd")
 
 var _power := 0.0
 var _degrees := 0.0

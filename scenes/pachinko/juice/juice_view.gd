@@ -6,8 +6,6 @@ extends Node
 ## The game asks `time_scale()` once a frame for its clock; everything else follows the
 ## rules' and the bonus machine's signals.
 
-const JuiceRecipes := preload("res://scripts/audio/juice_recipes.gd")
-
 var slow_motion := SlowMotion.new()
 var focus := SlowMotionFocus.new()
 var nudge := CameraNudge.new()
