@@ -1,8 +1,8 @@
 @tool
 extends BoardAction
 ## Sets one property (not its place) of one item through its row's `edits` hook
-## (ItemKind.edits): the property panel's generic edit, one undo step that snapshots the
-## fields the row says its items live in.
+## (ItemKind.edits): the property panel's edit of a pocket's size, a windmill's blades, the
+## goal's radius..., one undo step that snapshots the fields the row names.
 
 var _kind: ItemKind
 var _index: int
@@ -24,7 +24,7 @@ func get_name() -> String:
 
 
 func _touched_fields() -> PackedStringArray:
-	return _kind.item_fields
+	return _kind.item_fields + _kind.edit_fields
 
 
 func _apply() -> void:

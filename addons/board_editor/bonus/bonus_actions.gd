@@ -1,9 +1,9 @@
 @tool
 extends RefCounted
 ## The undoable edits of the bonus layer: add a bonus pocket (and its mirror image), remove
-## one, change one's numbers or its role. They keep `level.bonus_pockets` in role order (start
-## pockets, attackers, tulips), the order a board file stores them in, so a saved board reads
-## back the same.
+## one, or change its role (its numbers change through ItemProperties and its row). They keep
+## `level.bonus_pockets` in role order (start pockets, attackers, tulips), the order a board
+## file stores them in, so a saved board reads back the same.
 
 
 ## Adds bonus pockets; `added` holds their indices after `do()`.
@@ -62,26 +62,6 @@ class RemoveBonus:
 		var pockets := level.bonus_pockets.duplicate()
 		pockets.remove_at(_index)
 		level.bonus_pockets = pockets
-
-
-## Sets one number of the bonus pocket at `index` (the Selection panel: width, depth,
-## payout, symbols, open_seconds or open_catches); whole-number fields are rounded.
-class EditBonus:
-	extends "res://addons/board_editor/actions/edit_spec_field_action.gd"
-
-	## The BonusPocketSpec fields this action may set.
-	const FIELDS: Array[String] = [
-		"width", "depth", "payout", "symbols", "open_seconds", "open_catches"
-	]
-
-	var _field: String
-
-	func _init(on_level: BoardLevel, index: int, field: String, value: float) -> void:
-		super(on_level, "bonus_pockets", index, field if FIELDS.has(field) else "", value)
-		_field = field
-
-	func get_name() -> String:
-		return "Set bonus pocket %s" % _field.replace("_", " ")
 
 
 ## Turns the bonus pocket at `index` into another role (a tulip into a start pocket...). The

@@ -12,11 +12,8 @@ extends RefCounted
 const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 const MoveItemsAction := preload("res://addons/board_editor/actions/move_items_action.gd")
 const SetPointAction := preload("res://addons/board_editor/actions/set_point_action.gd")
-const EditPocketAction := preload("res://addons/board_editor/actions/edit_pocket_action.gd")
 const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
-const BonusActions := preload("res://addons/board_editor/bonus/bonus_actions.gd")
 const Mirror := preload("res://addons/board_editor/core/mirror.gd")
-const EditWindmillAction := preload("res://addons/board_editor/actions/edit_windmill_action.gd")
 const ItemGroupAction := preload("res://addons/board_editor/actions/item_group_action.gd")
 const EditItemAction := preload("res://addons/board_editor/actions/edit_item_action.gd")
 ## The value shared_values gives a field the items disagree on.
@@ -79,9 +76,7 @@ static func action_for(level: BoardLevel, item: Vector2i, key: String, value: fl
 		point = Vector2(value, point.y) if key.ends_with("x") else Vector2(point.x, value)
 		var named := "Set %s end" % kind.singular.to_lower()
 		return SetPointAction.new(level, kind.field, end, point, named)
-	if kind.edits.is_valid():
-		return EditItemAction.new(level, kind, item.y, key, value)
-	return _own_action(level, item, key, value)
+	return EditItemAction.new(level, kind, item.y, key, value) if kind.edits.is_valid() else null
 
 
 # The action that puts `item` at a new x or y: a point is set, the goal's field too, a
@@ -99,24 +94,6 @@ static func _place_action(
 			var moved := "Set %s position" % kind.singular.to_lower()
 			return SetPropertiesAction.new(level, {kind.field: target}, moved)
 	return MoveItemsAction.new(level, [item] as Array[Vector2i], target - at)
-
-
-# The kinds whose fields have actions of their own (a pocket stamps its pins again).
-static func _own_action(
-	level: BoardLevel, item: Vector2i, key: String, value: float
-) -> BoardAction:
-	match item.x:
-		BoardItems.Kind.POCKET:
-			var spec: PocketSpec = level.pockets[item.y]
-			var width := value if key == "width" else spec.width
-			var depth := value if key == "depth" else spec.depth
-			var payout := int(value) if key == "payout" else spec.payout
-			return EditPocketAction.new(level, item.y, width, depth, payout)
-		BoardItems.Kind.BONUS:
-			return BonusActions.EditBonus.new(level, item.y, key, value)
-		BoardItems.Kind.WINDMILL:
-			return EditWindmillAction.new(level, item.y, key, value)
-	return SetPropertiesAction.new(level, {"goal_radius": value}, "Set goal radius")
 
 
 ## The action that sets x or y of `item` in mirror mode (axis x `axis`): its mirror twin

@@ -45,7 +45,15 @@ static func row(
 	kind.paint_layer = "BONUS"
 	kind.outlines = _rimmed_cup
 	kind.properties = _fields
+	kind.edits = _set_field
 	return kind
+
+
+# The cup's size and payout, or its role's own field (the property panel's keys are the
+# BonusPocketSpec properties).
+static func _set_field(level: BoardLevel, index: int, key: String, value: float) -> void:
+	if key in VALUES and key != "position":
+		ItemKind.set_number(level.bonus_pockets[index], key, value)
 
 
 # The cup with the pins the world stamps round its edge.

@@ -22,7 +22,14 @@ static func row() -> ItemKind:
 	kind.placed_by_click = true
 	kind.outlines = _ring
 	kind.properties = _fields
+	kind.edits = _set_radius
+	kind.edit_fields = PackedStringArray(["goal_radius"])
 	return kind
+
+
+static func _set_radius(level: BoardLevel, _index: int, key: String, value: float) -> void:
+	if key == "radius":
+		level.goal_radius = value
 
 
 # The goal is big: only its middle picks it, so walls and starts inside stay reachable.

@@ -143,9 +143,11 @@ var ghost_crowds := false
 ## SEGMENT its ends "ax", "ay", "bx", "by".
 var properties := Callable()
 ## `(level, index, key, value)`: sets property `key` (not "x" or "y") of item `index`; the
-## editor wraps it in one undo step that snapshots `item_fields`. Kinds without it keep
-## their own editor actions.
+## editor wraps it in one undo step that snapshots `item_fields` and `edit_fields`.
 var edits := Callable()
+## The BoardLevel fields an `edits` change may touch besides `item_fields` (the goal's
+## radius).
+var edit_fields := PackedStringArray()
 
 
 ## A fresh row for the `kind_name` line of board files, stored in `level_field`.
@@ -158,6 +160,18 @@ static func make(kind_name: String, level_field: String, shape_of: Shape) -> Ite
 	kind.position_fields = PackedStringArray([level_field])
 	kind.file_fields = {"x": ["coord"], "y": ["coord"]}
 	return kind
+
+
+## Sets `property` of the item resource `spec` to the number `value` typed as the property
+## is: a whole number rounded, a yes/no from 0 or 1 (the property panel types numbers).
+static func set_number(spec: Resource, property: String, value: float) -> void:
+	var current: Variant = spec.get(property)
+	if current is bool:
+		spec.set(property, value >= 0.5)
+	elif current is int:
+		spec.set(property, roundi(value))
+	else:
+		spec.set(property, value)
 
 
 ## `point` reflected across the vertical line x = `axis`.

@@ -38,7 +38,15 @@ static func row() -> ItemKind:
 	kind.paint_layer = "POCKETS"
 	kind.outlines = _body
 	kind.properties = _fields
+	kind.edits = _resize
 	return kind
+
+
+# A new width, depth or payout; the rim and special pin are stamped again to match.
+static func _resize(level: BoardLevel, index: int, key: String, value: float) -> void:
+	if key in ["width", "depth", "payout"]:
+		ItemKind.set_number(level.pockets[index], key, value)
+		PocketStamp.apply(level, index)
 
 
 # The body from the mouth down to the special pin; the selection frame takes in the rim pins.

@@ -4,6 +4,15 @@ extends RefCounted
 ## Windmills (WindmillSpec): wheels of blades the world turns, driven at a speed or spinning
 ## free with a friction (a file line has one of the two).
 
+## The property panel's keys -> WindmillSpec properties.
+const PROPERTIES := {
+	"blades": "blades",
+	"length": "length",
+	"free": "free_spin",
+	"speed": "speed",
+	"friction": "friction"
+}
+
 
 ## The windmill row of ItemKinds.
 static func row() -> ItemKind:
@@ -40,7 +49,14 @@ static func row() -> ItemKind:
 	kind.creates = new_windmill
 	kind.outlines = _sweep
 	kind.properties = _fields
+	kind.edits = _set_field
 	return kind
+
+
+static func _set_field(level: BoardLevel, index: int, key: String, value: float) -> void:
+	var property: String = PROPERTIES.get(key, "")
+	if not property.is_empty():
+		ItemKind.set_number(level.windmills[index], property, value)
 
 
 ## The windmill a click places at `at`: four blades turning clockwise (WindmillSpec's
