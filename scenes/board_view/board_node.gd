@@ -31,7 +31,9 @@ const MAX_WARNINGS := 12
 	"Holes",
 	"Goal",
 	"Starts",
-	"Bonus pockets"
+	"Bonus pockets",
+	"Windmills",
+	"Floor arrows"
 )
 var layers: int = BoardPainter.Layer.ALL:
 	set(value):
