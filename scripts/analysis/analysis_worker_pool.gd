@@ -78,48 +78,25 @@ func process_ids() -> PackedInt32Array:
 ## Starts the workers. False (with `failure` set) when the plan cannot run this way or no
 ## worker starts.
 func start() -> bool:
-	var problem := plan.problem()
-	if problem.is_empty() and plan.bonus_open:
-		problem = "the workers run the bonus-open counts beside the plan's (with_open)"
-	if problem.is_empty() and (plan.power_from != 0.0 or plan.power_to != 100.0):
-		problem = "workers run only the whole power range"
-	if problem.is_empty() and workers < 1:
-		problem = "at least one worker is needed (got %d)" % workers
-	if problem.is_empty() and not AnalysisWorker.available():
-		problem = "this build cannot start worker processes"
-	if not problem.is_empty():
-		failure = problem
-		return false
-	_started_usec = Time.get_ticks_usec()
-	var root := ProjectSettings.globalize_path(AnalysisWorker.FOLDER)
-	_folder = root.path_join("%d_%d.queue" % [OS.get_process_id(), Time.get_ticks_usec()])
-	if DirAccess.make_dir_recursive_absolute(_folder) != OK:
-		failure = "could not make %s" % _folder
+	failure = _start_problem()
+	if failure.is_empty():
+		_started_usec = Time.get_ticks_usec()
+		failure = _write_queue()
+	if not failure.is_empty():
+		_remove_folder()
 		return false
 	var board := board_path
 	if board.is_empty():
 		board = AnalysisWorker.FOLDER.path_join(_folder.get_file()).path_join("board.board")
-		if not _write(board, BoardTextWriter.write(plan.level).to_utf8_buffer()):
-			return _fail_start("could not write %s" % board)
-	var job := {"parent": OS.get_process_id(), "with_open": with_open}
-	if not _write(_folder.path_join("job.json"), JSON.stringify(job).to_utf8_buffer()):
-		return _fail_start("could not write the job in %s" % _folder)
-	for first in range(0, plan.chunk_count(), RANGE_CHUNKS):
-		var name := AnalysisQueueWorker.range_name(
-			first, mini(first + RANGE_CHUNKS, plan.chunk_count()) - 1
-		)
-		_names.append(name)
-		if not _write(_folder.path_join("todo_" + name), PackedByteArray()):
-			return _fail_start("could not write the queue in %s" % _folder)
-	_counts.resize(_names.size())
-	_open_counts.resize(_names.size())
 	for k in mini(workers, _names.size()):
 		var pid := OS.create_process(OS.get_executable_path(), _arguments(board, k))
 		_pids.append(pid if pid > 0 else -1)
 		_beats.append("")
 		_beat_at.append(Time.get_ticks_msec())
 	if _pids.count(-1) == _pids.size():
-		return _fail_start("could not start %s" % OS.get_executable_path())
+		failure = "could not start %s" % OS.get_executable_path()
+		_remove_folder()
+		return false
 	phase = Phase.SHOTS
 	return true
 
@@ -166,7 +143,8 @@ func progress() -> float:
 		return 1.0
 	var here := 0.0
 	if _here != null:
-		here = _here.progress() * _here_ranges.size() * (0.5 if with_open else 1.0)
+		var share := _here.progress() if _here_open == null else 1.0 + _here_open.progress()
+		here = share / (2.0 if with_open else 1.0) * _here_ranges.size()
 	return (_ranges_done + here) / maxf(_names.size(), 1)
 
 
@@ -195,6 +173,45 @@ func run() -> AnalysisTally:
 	while not poll():
 		OS.delay_msec(POLL_MS if _here == null else 5)
 	return _merged if phase == Phase.DONE else null
+
+
+# Why this plan cannot run on workers, or "".
+func _start_problem() -> String:
+	var problem := plan.problem()
+	if problem.is_empty() and plan.bonus_open:
+		problem = "the workers run the bonus-open counts beside the plan's (with_open)"
+	if problem.is_empty() and (plan.power_from != 0.0 or plan.power_to != 100.0):
+		problem = "workers run only the whole power range"
+	if problem.is_empty() and workers < 1:
+		problem = "at least one worker is needed (got %d)" % workers
+	if problem.is_empty() and not AnalysisWorker.available():
+		problem = "this build cannot start worker processes"
+	return problem
+
+
+# Makes the queue folder with the board (unless board_path names one), the job and a todo
+# file per range; "" or what failed.
+func _write_queue() -> String:
+	var root := ProjectSettings.globalize_path(AnalysisWorker.FOLDER)
+	_folder = root.path_join("%d_%d.queue" % [OS.get_process_id(), Time.get_ticks_usec()])
+	if DirAccess.make_dir_recursive_absolute(_folder) != OK:
+		return "could not make %s" % _folder
+	if board_path.is_empty():
+		var text := BoardTextWriter.write(plan.level).to_utf8_buffer()
+		if not _write(_folder.path_join("board.board"), text):
+			return "could not write the board in %s" % _folder
+	var job := {"parent": OS.get_process_id(), "with_open": with_open}
+	if not _write(_folder.path_join("job.json"), JSON.stringify(job).to_utf8_buffer()):
+		return "could not write the job in %s" % _folder
+	for first in range(0, plan.chunk_count(), RANGE_CHUNKS):
+		var last := mini(first + RANGE_CHUNKS, plan.chunk_count()) - 1
+		var name := AnalysisQueueWorker.range_name(first, last)
+		_names.append(name)
+		if not _write(_folder.path_join("todo_" + name), PackedByteArray()):
+			return "could not write the queue in %s" % _folder
+	_counts.resize(_names.size())
+	_open_counts.resize(_names.size())
+	return ""
 
 
 func _arguments(board: String, id: int) -> PackedStringArray:
@@ -253,7 +270,8 @@ func _watch(k: int, files: PackedStringArray) -> void:
 	if _pids[k] < 0:
 		return
 	var held := _held(k, files)
-	var beat := FileAccess.get_file_as_string(_folder.path_join("beat_%d" % k))
+	var beat_path := _folder.path_join("beat_%d" % k)
+	var beat := FileAccess.get_file_as_string(beat_path) if files.has(beat_path.get_file()) else ""
 	var now := Time.get_ticks_msec()
 	if beat != _beats[k]:
 		_beats[k] = beat
@@ -263,16 +281,22 @@ func _watch(k: int, files: PackedStringArray) -> void:
 		if not held.is_empty():
 			_report(
 				(
-					"worker %d (process %d) stopped (exit code %d) without the counts of chunks %s; running them again"
-					% [k, _pids[k], code, _held_text(held)]
+					(
+						"worker %d (process %d) stopped (exit code %d) without the counts of chunks %s;"
+						% [k, _pids[k], code, _held_text(held)]
+					)
+					+ " running them again"
 				)
 			)
 		_pids[k] = -1
 	elif not held.is_empty() and now - _beat_at[k] > hang_seconds * 1000.0:
 		_report(
 			(
-				"worker %d (process %d) made no progress for %d s on chunks %s; killed, running them again"
-				% [k, _pids[k], roundi(hang_seconds), _held_text(held)]
+				(
+					"worker %d (process %d) made no progress for %d s on chunks %s;"
+					% [k, _pids[k], roundi(hang_seconds), _held_text(held)]
+				)
+				+ " killed, running them again"
 			)
 		)
 		OS.kill(_pids[k])
@@ -401,12 +425,6 @@ func _stop_workers() -> void:
 		if _pids[k] > 0 and OS.is_process_running(_pids[k]):
 			OS.kill(_pids[k])
 		_pids[k] = -1
-
-
-func _fail_start(why: String) -> bool:
-	failure = why
-	_remove_folder()
-	return false
 
 
 func _remove_folder() -> void:

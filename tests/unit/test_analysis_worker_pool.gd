@@ -1,0 +1,176 @@
+extends GutTest
+## The analysis split over worker processes (AnalysisWorkerPool): the same counts as one
+## thread in this process, also when a worker dies or hangs on purpose (the test hook
+## AnalysisQueueWorker.FAULT_ENV, which the workers inherit) and its chunks are run again;
+## cancel leaves no worker process behind; a run of some chunks only (only_chunks) counts
+## exactly those chunks.
+
+const SHOTS := 1000
+
+
+func after_each() -> void:
+	OS.unset_environment(AnalysisQueueWorker.FAULT_ENV)
+
+
+func _classic() -> BoardLevel:
+	return BoardLoader.load_board("res://levels/pachinko/classic.board").level
+
+
+func _one_thread(plan: AnalysisPlan) -> AnalysisTally:
+	var alone := AnalysisPlan.create(plan.level, plan.shots, plan.rng_seed)
+	alone.threads = 1
+	return PachinkoAnalysis.new(alone).run()
+
+
+func _assert_same_counts(there: AnalysisTally, here: AnalysisTally, plan: AnalysisPlan) -> void:
+	assert_not_null(there, "the workers' counts came back")
+	if there == null:
+		return
+	var a := AnalysisReport.build(plan, here, 1.0)
+	var b := AnalysisReport.build(plan, there, 1.0)
+	assert_eq(JSON.stringify(b), JSON.stringify(a), "the same report")
+	assert_eq(there.density, here.density, "the same heat map")
+	assert_eq(there.ball_steps, here.ball_steps, "the same ball-steps")
+
+
+# True when process `pid` is gone (on systems with /proc; elsewhere: assumed).
+func _gone(pid: int) -> bool:
+	if not DirAccess.dir_exists_absolute("/proc/self"):
+		return true
+	return not DirAccess.dir_exists_absolute("/proc/%d" % pid)
+
+
+func _assert_all_gone(pool: AnalysisWorkerPool, started: PackedInt32Array) -> void:
+	for pid in started:
+		assert_true(_gone(pid), "worker process %d is gone" % pid)
+	assert_eq(pool.process_ids().count(-1), pool.process_ids().size(), "none is left running")
+
+
+func _pool(workers: int) -> AnalysisWorkerPool:
+	var plan := AnalysisPlan.create(_classic(), SHOTS, 1)
+	plan.threads = 2
+	var pool := AnalysisWorkerPool.new(plan)
+	pool.workers = workers
+	return pool
+
+
+func test_two_workers_count_what_one_thread_counts() -> void:
+	var pool := _pool(2)
+	var there := pool.run()
+	assert_eq(pool.failure, "", "the workers started")
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
+	assert_eq(pool.incidents, PackedStringArray(), "no worker failed")
+	_assert_same_counts(there, _one_thread(pool.plan), pool.plan)
+	assert_eq(pool.progress(), 1.0)
+	assert_eq(pool.process_ids().size(), 2, "two workers ran")
+
+
+func test_the_bonus_open_counts_match_too() -> void:
+	var fever := BoardLoader.load_board("res://levels/pachinko/fever.board").level
+	var plan := AnalysisPlan.create(fever, 500, 3)
+	var pool := AnalysisWorkerPool.new(plan)
+	pool.workers = 2
+	pool.with_open = true
+	var there := pool.run()
+	_assert_same_counts(there, _one_thread(plan), plan)
+	var open_plan := plan.with_bonus_open()
+	open_plan.threads = 1
+	var open_here := PachinkoAnalysis.new(open_plan).run()
+	var open_there := pool.open_tally()
+	assert_not_null(open_there, "the bonus-open counts came back")
+	if open_there != null:
+		assert_eq(open_there.band_pocket_hits, open_here.band_pocket_hits)
+		assert_eq(open_there.ball_steps, open_here.ball_steps)
+
+
+func test_a_dying_worker_is_reported_and_its_chunks_run_again() -> void:
+	OS.set_environment(AnalysisQueueWorker.FAULT_ENV, "die:0")
+	var pool := _pool(2)
+	var there := pool.run()
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
+	assert_eq(pool.incidents.size(), 1, "one incident: %s" % [pool.incidents])
+	if pool.incidents.size() == 1:
+		assert_string_contains(pool.incidents[0], "worker 0")
+		assert_string_contains(pool.incidents[0], "stopped")
+		assert_string_contains(pool.incidents[0], "without the counts of chunks ")
+	_assert_same_counts(there, _one_thread(pool.plan), pool.plan)
+
+
+func test_a_hung_worker_is_killed_and_its_chunks_run_again() -> void:
+	OS.set_environment(AnalysisQueueWorker.FAULT_ENV, "hang:1")
+	var pool := _pool(2)
+	pool.hang_seconds = 2.0
+	assert_true(pool.start())
+	var started := pool.process_ids().duplicate()
+	while not pool.poll():
+		OS.delay_msec(AnalysisWorkerPool.POLL_MS)
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
+	assert_eq(pool.incidents.size(), 1, "one incident: %s" % [pool.incidents])
+	if pool.incidents.size() == 1:
+		assert_string_contains(pool.incidents[0], "worker 1 (process %d)" % started[1])
+		assert_string_contains(pool.incidents[0], "no progress")
+	assert_true(_gone(started[1]), "the hung worker was killed")
+	_assert_same_counts(pool.tally(), _one_thread(pool.plan), pool.plan)
+
+
+func test_when_every_worker_dies_the_rest_runs_here() -> void:
+	OS.set_environment(AnalysisQueueWorker.FAULT_ENV, "die:0")
+	var pool := _pool(1)
+	var there := pool.run()
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
+	assert_eq(pool.incidents.size(), 2, "the worker died, the rest ran here: %s" % [pool.incidents])
+	_assert_same_counts(there, _one_thread(pool.plan), pool.plan)
+
+
+func test_cancel_leaves_no_worker_running() -> void:
+	var plan := AnalysisPlan.create(_classic(), 10000, 1)
+	var pool := AnalysisWorkerPool.new(plan)
+	pool.workers = 2
+	assert_true(pool.start())
+	var started := pool.process_ids().duplicate()
+	OS.delay_msec(500)
+	assert_false(pool.poll(), "still running")
+	pool.cancel()
+	assert_true(pool.poll(), "done once cancelled")
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.CANCELLED)
+	_assert_all_gone(pool, started)
+
+
+func test_a_finished_run_leaves_no_worker_running() -> void:
+	var pool := AnalysisWorkerPool.new(AnalysisPlan.create(_classic(), 250, 1))
+	pool.workers = 2
+	assert_true(pool.start())
+	var started := pool.process_ids().duplicate()
+	while not pool.poll():
+		OS.delay_msec(AnalysisWorkerPool.POLL_MS)
+	assert_eq(started.size(), 1, "one range: one worker")
+	_assert_all_gone(pool, started)
+
+
+func test_some_chunks_count_exactly_those_chunks() -> void:
+	var plan := AnalysisPlan.create(_classic(), 750, 5)
+	plan.threads = 1
+	var whole := PachinkoAnalysis.new(plan).run()
+	var first := PachinkoAnalysis.new(plan)
+	first.only_chunks = PackedInt32Array([2, 0])
+	var merged := first.run()
+	assert_eq(merged.total_shots(), 500, "two chunks' shots")
+	# The rest climbs only the levels the first run did not (into the first run's table).
+	var rest := PachinkoAnalysis.new(plan)
+	rest.only_chunks = PackedInt32Array([1])
+	rest.reuse_climbs(first.climb_table())
+	merged.merge(rest.run())
+	var a := AnalysisReport.build(plan, whole, 1.0)
+	assert_eq(JSON.stringify(AnalysisReport.build(plan, merged, 1.0)), JSON.stringify(a))
+	assert_eq(merged.ball_steps, whole.ball_steps)
+
+
+func test_a_plan_the_workers_cannot_run_fails_with_a_reason() -> void:
+	var pool := _pool(0)
+	assert_false(pool.start())
+	assert_string_contains(pool.failure, "worker")
+	var open_pool := AnalysisWorkerPool.new(
+		AnalysisPlan.create(_classic(), 100, 1).with_bonus_open()
+	)
+	assert_false(open_pool.start())
+	assert_string_contains(open_pool.failure, "with_open")
