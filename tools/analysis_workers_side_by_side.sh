@@ -3,7 +3,7 @@
 # run: 1 thread, 2 threads, 2 workers, 4 workers take turns on each board, ROUNDS times, so
 # a busy moment on a shared machine costs each alike; each mode's best run is its figure.
 # Every report must equal the 1-thread one apart from its timing fields (wall_s,
-# shots_per_s) and where it was written; the script exits 1 when one differs.
+# shots_per_s), its threads setting and where it was written; exits 1 when one differs.
 #   tools/analysis_workers_side_by_side.sh
 # Settings (environment): BOARDS ("classic fever"), SHOTS (10000), SEED (1), ROUNDS (2).
 # shots/s here is SHOTS over the whole command's wall time (engine start, the bonus-open
@@ -44,7 +44,7 @@ import json, sys
 out, shots, rounds, boards = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4].split()
 modes = ["t1", "t2", "w2", "w4"]
 names = {"t1": "1 thread", "t2": "2 threads", "w2": "2 workers", "w4": "4 workers"}
-timing = ("wall_s", "shots_per_s", "report", "heatmap")
+timing = ("wall_s", "shots_per_s", "threads", "report", "heatmap")
 keep = lambda d: {k: v for k, v in d.items() if k not in timing}
 ok = True
 print("\n%-8s %-10s %12s %8s %8s %s" % ("board", "run", "shots/s", "wall s", "CPU s", "report"))

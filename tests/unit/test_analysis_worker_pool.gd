@@ -174,3 +174,70 @@ func test_a_plan_the_workers_cannot_run_fails_with_a_reason() -> void:
 	)
 	assert_false(open_pool.start())
 	assert_string_contains(open_pool.failure, "with_open")
+
+
+func test_workers_exit_when_their_parent_is_stopped() -> void:
+	if not DirAccess.dir_exists_absolute("/proc/self"):
+		pass_test("needs /proc to find the workers")
+		return
+	var out := ProjectSettings.globalize_path("user://test_worker_pool_out")
+	var args := PackedStringArray(
+		[
+			"--headless",
+			"--quiet",
+			"--path",
+			ProjectSettings.globalize_path("res://"),
+			"--",
+			"--analyze=pachinko",
+			"--board=classic",
+			"--shots=10000",
+			"--workers=2",
+			"--out=%s" % out,
+		]
+	)
+	var parent := OS.create_process(OS.get_executable_path(), args)
+	assert_gt(parent, 0, "the command started")
+	var workers := _workers_of(parent)
+	var started := Time.get_ticks_msec()
+	while workers.size() < 2 and Time.get_ticks_msec() - started < 30000:
+		OS.delay_msec(200)
+		workers = _workers_of(parent)
+	assert_eq(workers.size(), 2, "its two workers run")
+	OS.kill(parent)
+	started = Time.get_ticks_msec()
+	while not _all_stopped(workers) and Time.get_ticks_msec() - started < 10000:
+		OS.delay_msec(100)
+	assert_true(_all_stopped(workers), "every worker of the stopped command exited")
+
+
+# The worker processes of the analysis process `parent` (their queue folder is named after
+# it), found by their command lines in /proc.
+func _workers_of(parent: int) -> PackedInt32Array:
+	var found := PackedInt32Array()
+	for entry in DirAccess.get_directories_at("/proc"):
+		if not entry.is_valid_int():
+			continue
+		var file := FileAccess.open("/proc/%s/cmdline" % entry, FileAccess.READ)
+		if file == null:
+			continue
+		var line := file.get_buffer(8192)
+		for i in line.size():
+			if line[i] == 0:
+				line[i] = 32
+		if line.get_string_from_utf8().contains("/%d_" % parent):
+			if line.get_string_from_utf8().contains("--queue="):
+				found.append(int(entry))
+	return found
+
+
+# True when none of `pids` runs (gone, or a zombie no one reaped yet).
+func _all_stopped(pids: PackedInt32Array) -> bool:
+	for pid in pids:
+		var file := FileAccess.open("/proc/%d/stat" % pid, FileAccess.READ)
+		if file == null:
+			continue
+		var stat := file.get_buffer(512).get_string_from_utf8()
+		var state := stat.get_slice(") ", 1).left(1)
+		if state != "Z" and state != "X" and not state.is_empty():
+			return false
+	return true
