@@ -40,12 +40,14 @@ const EXIT_FAILED := 1
 ## is ignored: a worker fires on one thread; processes, not threads, share the cores).
 ## Returns the exit code.
 static func run(plan: AnalysisPlan, folder: String, id: int) -> int:
-	var job: Variant = JSON.parse_string(_text(folder.path_join("job.json")))
-	if not job is Dictionary:
+	var parsed: Variant = JSON.parse_string(_text(folder.path_join("job.json")))
+	if not parsed is Dictionary:
 		printerr("analyze: worker %d: no job.json in %s" % [id, folder])
 		return EXIT_FAILED
-	var parent_pid := int(job.get("parent", -1))
-	var with_open := bool(job.get("with_open", false))
+	var job: Dictionary = parsed
+	var parent_number: float = job.get("parent", -1.0)  # JSON numbers are floats
+	var parent_pid := roundi(parent_number)
+	var with_open: bool = job.get("with_open", false) == true
 	plan.threads = 1
 	var table: RailExitTable = null
 	var beats := 0

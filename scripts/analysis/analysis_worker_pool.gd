@@ -53,7 +53,6 @@ var _names := PackedStringArray()
 var _counts: Array[AnalysisTally] = []
 var _open_counts: Array[AnalysisTally] = []
 var _ranges_done := 0
-var _shots_done := 0
 var _last_look := -POLL_MS
 var _here: PachinkoAnalysis = null
 var _here_open: PachinkoAnalysis = null
@@ -68,6 +67,24 @@ var _merged_open: AnalysisTally = null
 static func default_workers() -> int:
 	var cores := OS.get_processor_count()
 	return cores if cores > 2 else 0
+
+
+## Removes the queue folders in `root` left by runs whose process is gone (a command line
+## that was killed cannot clean up; its workers exit by themselves). Only where /proc tells
+## which processes live; the folders are named `PID_USEC.queue`.
+static func remove_stale_queues(root: String) -> void:
+	if not DirAccess.dir_exists_absolute("/proc/self"):
+		return
+	for entry in DirAccess.get_directories_at(root):
+		var owner := entry.get_slice("_", 0)
+		if not entry.ends_with(".queue") or not owner.is_valid_int():
+			continue
+		if DirAccess.dir_exists_absolute("/proc/%s" % owner):
+			continue
+		var stale := root.path_join(entry)
+		for file in DirAccess.get_files_at(stale):
+			DirAccess.remove_absolute(stale.path_join(file))
+		DirAccess.remove_absolute(stale)
 
 
 ## The process ids of the workers started (-1 for those known to be gone).
@@ -193,6 +210,7 @@ func _start_problem() -> String:
 # file per range; "" or what failed.
 func _write_queue() -> String:
 	var root := ProjectSettings.globalize_path(AnalysisWorker.FOLDER)
+	remove_stale_queues(root)
 	_folder = root.path_join("%d_%d.queue" % [OS.get_process_id(), Time.get_ticks_usec()])
 	if DirAccess.make_dir_recursive_absolute(_folder) != OK:
 		return "could not make %s" % _folder

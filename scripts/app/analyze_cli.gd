@@ -61,7 +61,8 @@ static func run(values: Dictionary) -> int:
 		if not str(values.get("tally", "")).is_empty():
 			return _run_worker(plan, str(values["tally"]))
 		if not str(values.get("queue", "")).is_empty():
-			return AnalysisQueueWorker.run(plan, str(values["queue"]), values["worker_id"])
+			var worker_id: int = values.get("worker_id", 0)
+			return AnalysisQueueWorker.run(plan, str(values["queue"]), worker_id)
 		var workers: int = values.get("workers", AnalysisWorkerPool.default_workers())
 		if workers < 0 or workers > 64:
 			return _fail(EXIT_BAD_INPUT, "--workers must be 0 to 64 (got %d)" % workers)

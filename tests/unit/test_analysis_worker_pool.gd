@@ -6,6 +6,8 @@ extends GutTest
 ## exactly those chunks.
 
 const SHOTS := 1000
+## A pool run that takes longer than this is stuck (a range lost): the test fails, ms.
+const DEADLINE_MS := 180000
 
 
 func after_each() -> void:
@@ -46,6 +48,21 @@ func _assert_all_gone(pool: AnalysisWorkerPool, started: PackedInt32Array) -> vo
 	assert_eq(pool.process_ids().count(-1), pool.process_ids().size(), "none is left running")
 
 
+# Polls `pool` (started, or started here) until it is done; a run past DEADLINE_MS is
+# cancelled and fails the test, so a lost range cannot hang the suite. Its counts, or null.
+func _finish(pool: AnalysisWorkerPool) -> AnalysisTally:
+	if pool.phase == PachinkoAnalysis.Phase.IDLE and not pool.start():
+		return null
+	var started := Time.get_ticks_msec()
+	while not pool.poll():
+		if Time.get_ticks_msec() - started > DEADLINE_MS:
+			pool.cancel()
+			fail_test("the run did not finish in %d s" % (DEADLINE_MS / 1000))
+			return null
+		OS.delay_msec(AnalysisWorkerPool.POLL_MS)
+	return pool.tally()
+
+
 func _pool(workers: int) -> AnalysisWorkerPool:
 	var plan := AnalysisPlan.create(_classic(), SHOTS, 1)
 	plan.threads = 2
@@ -56,7 +73,7 @@ func _pool(workers: int) -> AnalysisWorkerPool:
 
 func test_two_workers_count_what_one_thread_counts() -> void:
 	var pool := _pool(2)
-	var there := pool.run()
+	var there := _finish(pool)
 	assert_eq(pool.failure, "", "the workers started")
 	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
 	assert_eq(pool.incidents, PackedStringArray(), "no worker failed")
@@ -71,7 +88,7 @@ func test_the_bonus_open_counts_match_too() -> void:
 	var pool := AnalysisWorkerPool.new(plan)
 	pool.workers = 2
 	pool.with_open = true
-	var there := pool.run()
+	var there := _finish(pool)
 	_assert_same_counts(there, _one_thread(plan), plan)
 	var open_plan := plan.with_bonus_open()
 	open_plan.threads = 1
@@ -86,7 +103,7 @@ func test_the_bonus_open_counts_match_too() -> void:
 func test_a_dying_worker_is_reported_and_its_chunks_run_again() -> void:
 	OS.set_environment(AnalysisQueueWorker.FAULT_ENV, "die:0")
 	var pool := _pool(2)
-	var there := pool.run()
+	var there := _finish(pool)
 	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
 	assert_eq(pool.incidents.size(), 1, "one incident: %s" % [pool.incidents])
 	if pool.incidents.size() == 1:
@@ -102,8 +119,7 @@ func test_a_hung_worker_is_killed_and_its_chunks_run_again() -> void:
 	pool.hang_seconds = 2.0
 	assert_true(pool.start())
 	var started := pool.process_ids().duplicate()
-	while not pool.poll():
-		OS.delay_msec(AnalysisWorkerPool.POLL_MS)
+	_finish(pool)
 	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
 	assert_eq(pool.incidents.size(), 1, "one incident: %s" % [pool.incidents])
 	if pool.incidents.size() == 1:
@@ -116,7 +132,7 @@ func test_a_hung_worker_is_killed_and_its_chunks_run_again() -> void:
 func test_when_every_worker_dies_the_rest_runs_here() -> void:
 	OS.set_environment(AnalysisQueueWorker.FAULT_ENV, "die:0")
 	var pool := _pool(1)
-	var there := pool.run()
+	var there := _finish(pool)
 	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
 	assert_eq(pool.incidents.size(), 2, "the worker died, the rest ran here: %s" % [pool.incidents])
 	_assert_same_counts(there, _one_thread(pool.plan), pool.plan)
@@ -141,8 +157,7 @@ func test_a_finished_run_leaves_no_worker_running() -> void:
 	pool.workers = 2
 	assert_true(pool.start())
 	var started := pool.process_ids().duplicate()
-	while not pool.poll():
-		OS.delay_msec(AnalysisWorkerPool.POLL_MS)
+	_finish(pool)
 	assert_eq(started.size(), 1, "one range: one worker")
 	_assert_all_gone(pool, started)
 
@@ -241,3 +256,23 @@ func _all_stopped(pids: PackedInt32Array) -> bool:
 		if state != "Z" and state != "X" and not state.is_empty():
 			return false
 	return true
+
+
+func test_the_queue_of_a_run_whose_process_is_gone_is_removed() -> void:
+	if not DirAccess.dir_exists_absolute("/proc/self"):
+		pass_test("needs /proc to tell which processes live")
+		return
+	var root := ProjectSettings.globalize_path(AnalysisWorker.FOLDER)
+	var dead := 4190000
+	while DirAccess.dir_exists_absolute("/proc/%d" % dead):
+		dead += 1
+	var stale := root.path_join("%d_1.queue" % dead)
+	var mine := root.path_join("%d_1.queue" % OS.get_process_id())
+	for folder in [stale, mine]:
+		DirAccess.make_dir_recursive_absolute(folder)
+		FileAccess.open(folder.path_join("todo_r00000-00000"), FileAccess.WRITE).close()
+	AnalysisWorkerPool.remove_stale_queues(root)
+	assert_false(DirAccess.dir_exists_absolute(stale), "the dead run's queue is gone")
+	assert_true(DirAccess.dir_exists_absolute(mine), "a live run's queue stays")
+	DirAccess.remove_absolute(mine.path_join("todo_r00000-00000"))
+	DirAccess.remove_absolute(mine)
