@@ -19,10 +19,11 @@ extends RefCounted
 ## - `closed` (from the parent): no more work; the workers exit.
 ##
 ## A worker climbs the rail only for the power levels its ranges fire, and keeps the climbs
-## for its next ranges (a climb depends on its power level only): measured against the
-## parent climbing every level first and handing the table over, that costs no more climbing
-## in all (the ranges' levels barely overlap: 10000 shots fire 10000 of the 10001 levels once)
-## and nothing waits for a climb phase.
+## for its next ranges (a climb depends on its power level only). Chosen over the parent
+## climbing every level first and handing the table over: the ranges' levels barely overlap
+## (10000 shots fire 10000 of the 10001 levels once), so the workers climb about the levels
+## one thread climbs, and no worker waits for a climb phase that is about a third of a
+## one-thread run (Classic, 500 shots: climbs 0.32 s of 0.95 s, make bench's profile).
 ##
 ## Test hook: the environment variable FAULT_ENV, read only here, makes one worker fail on
 ## purpose once it took its first range: `die:K` (worker K kills itself, leaving its range
