@@ -16,12 +16,20 @@ var phase := Phase.IDLE
 var wall_seconds := 0.0
 ## Set before start() to time the run's stages into it (AnalysisProfile); null: untimed.
 var profile: AnalysisProfile = null
+## Set before start() to run only these chunk indices (a worker process's share, see
+## AnalysisQueueWorker); empty runs every chunk. Each chunk is seeded by its index, so a
+## chunk's counts are the same whoever runs it, and tally() holds only these chunks'.
+var only_chunks := PackedInt32Array()
 
 var _launch_table: LaunchTable
 var _table := RailExitTable.new()
 var _groups: Array[PackedInt32Array] = []
 var _group_results: Array[RailExitTable] = []
 var _chunk_results: Array[AnalysisTally] = []
+# The chunk indices this run fires (every chunk, or only_chunks), in order.
+var _chunk_list := PackedInt32Array()
+# True once reuse_climbs() handed this run another run's climbs.
+var _table_handed := false
 var _chunks_done := 0
 var _task := -1
 var _cancelled := false
@@ -53,12 +61,14 @@ func run() -> AnalysisTally:
 
 
 ## Hands this analysis the rail climbs of an earlier one on the same board (its
-## climb_table()): call before start(). When they hold every power level the plan fires,
-## the climbs are not run again (a rail climb never depends on the plan: the climb world
-## has the bonus parts shut, as BoardWorldFactory builds them), and the figures are the same.
+## climb_table()): call before start(). Only the power levels it lacks are climbed (into
+## that table, which grows), none when it holds every level the plan fires (a rail climb
+## never depends on the plan: the climb world has the bonus parts shut, as
+## BoardWorldFactory builds them), and the figures are the same.
 func reuse_climbs(table: RailExitTable) -> void:
 	if phase == Phase.IDLE and table != null:
 		_table = table
+		_table_handed = true
 
 
 ## The rail climbs the analysis ran or was handed (complete once it is done).
@@ -77,17 +87,24 @@ func start() -> bool:
 	_launch_table = LaunchCalibration.table(plan.level)
 	if profile != null:
 		profile.add_usec(AnalysisProfile.Stage.LAUNCH_TABLE, Time.get_ticks_usec() - _started_usec)
-	var needed := PackedByteArray()
-	needed.resize(AnalysisPlan.level_count())
-	for c in plan.chunk_count():
-		for q in plan.chunk_levels(c):
-			needed[q] = 1
+	_chunk_list = _chunks_to_run()
+	if _chunk_list.is_empty():
+		push_error("PachinkoAnalysis: only_chunks names no chunk of the plan")
+		return false
 	# A played run's shots meet other balls, so its table follows each climb on to its
 	# first pin; a contact-free run's chunks record the first pins past the hand-over.
-	if not _covers(_table, needed) or (plan.played and not _table.to_first_pin):
+	if not _table_handed or (plan.played and not _table.to_first_pin):
 		_table = RailExitTable.new()
 		_table.to_first_pin = plan.played
-		_groups = RailExitTable.groups_for(needed)
+	# Only the levels not climbed yet (all of them for a fresh table): a climb depends on
+	# its power level only, never on the levels climbed beside it.
+	var missing := PackedByteArray()
+	missing.resize(AnalysisPlan.level_count())
+	for c in _chunk_list:
+		for q in plan.chunk_levels(c):
+			if _table.fate[q] == RailExitTable.Fate.UNKNOWN:
+				missing[q] = 1
+	_groups = RailExitTable.groups_for(missing)
 	_group_results.resize(_groups.size())
 	_chunk_results.resize(plan.chunk_count())
 	phase = Phase.CLIMBS
@@ -112,7 +129,7 @@ func poll() -> bool:
 			_table.store(_group_results[g], _groups[g])
 		_group_results.clear()
 		phase = Phase.SHOTS
-		_launch(_run_chunk, plan.chunk_count())
+		_launch(_run_chunk, _chunk_list.size())
 		return false
 	else:
 		phase = Phase.DONE
@@ -132,7 +149,7 @@ func progress() -> float:
 	_mutex.lock()
 	var done := _chunks_done
 	_mutex.unlock()
-	return float(done) / maxf(plan.chunk_count(), 1)
+	return float(done) / maxf(_chunk_list.size(), 1)
 
 
 ## Share of the rail climbs done, 0..1 (by climb groups; 1 once the shots began).
@@ -171,12 +188,18 @@ func tally() -> AnalysisTally:
 	return merged
 
 
-# True when `table` holds the climb of every level `needed` marks.
-static func _covers(table: RailExitTable, needed: PackedByteArray) -> bool:
-	for q in needed.size():
-		if needed[q] != 0 and table.fate[q] == RailExitTable.Fate.UNKNOWN:
-			return false
-	return true
+# The chunk indices to fire: only_chunks (those within the plan), or every chunk.
+func _chunks_to_run() -> PackedInt32Array:
+	var out := PackedInt32Array()
+	if only_chunks.is_empty():
+		out.resize(plan.chunk_count())
+		for c in out.size():
+			out[c] = c
+		return out
+	for c in only_chunks:
+		if c >= 0 and c < plan.chunk_count() and not out.has(c):
+			out.append(c)
+	return out
 
 
 # Runs `job(index)` for index 0..count-1: on this thread for a blocking one-thread run,
@@ -210,9 +233,10 @@ func _climb_group(g: int) -> void:
 	_mutex.unlock()
 
 
-func _run_chunk(c: int) -> void:
+func _run_chunk(i: int) -> void:
 	if _cancelled:
 		return
+	var c := _chunk_list[i]
 	var stop := func() -> bool: return _cancelled
 	var counts: AnalysisTally = null
 	var timed: AnalysisProfile = null

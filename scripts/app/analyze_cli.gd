@@ -20,15 +20,17 @@ const PLAYER_OUT_DIR := "user://reports"
 static var out_dir_override := ""
 
 
-## Runs the analysis `values` ask for (keys analyze, board, shots, runs, seed, threads);
-## returns the exit code.
+## Runs the analysis `values` ask for (keys analyze, board, shots, runs, seed, threads,
+## workers, and the worker modes' tally, queue, worker_id); returns the exit code. Pachinko
+## runs on `workers` worker processes (AnalysisWorkerPool; default: one per core on more
+## than two cores), else on `threads` threads here.
 static func run(values: Dictionary) -> int:
 	var game: String = values["analyze"]
 	var rng_seed: int = values["seed"]
 	var board_name := str(values["board"])
 	var roots := BoardLoader.BOARD_ROOTS.duplicate()
-	if not str(values.get("tally", "")).is_empty():
-		roots.append(AnalysisWorker.FOLDER + "/")  # the editor's worker reads its board there
+	if not str(values.get("tally", "")).is_empty() or not str(values.get("queue", "")).is_empty():
+		roots.append(AnalysisWorker.FOLDER + "/")  # the editor's workers read its board there
 	var loaded := BoardLoader.load_board(AutoplayCli.resolve_board_path(game, board_name), roots)
 	if loaded.level == null:
 		return _fail(EXIT_BAD_INPUT, loaded.error)
@@ -58,19 +60,44 @@ static func run(values: Dictionary) -> int:
 		plan.played = values.get("played", false)
 		if not str(values.get("tally", "")).is_empty():
 			return _run_worker(plan, str(values["tally"]))
-		var analysis := PachinkoAnalysis.new(plan)
-		if values.get("profile", false):
-			analysis.profile = AnalysisProfile.new()
-		var tally := analysis.run()
-		if tally == null:
-			return _fail(EXIT_BAD_INPUT, plan.problem())
+		if not str(values.get("queue", "")).is_empty():
+			var worker_id: int = values.get("worker_id", 0)
+			return AnalysisQueueWorker.run(plan, str(values["queue"]), worker_id)
+		var workers: int = values.get("workers", AnalysisWorkerPool.default_workers())
+		if workers < 0 or workers > 64:
+			return _fail(EXIT_BAD_INPUT, "--workers must be 0 to 64 (got %d)" % workers)
+		if workers > 0 and values.get("profile", false):
+			if values.has("workers"):
+				return _fail(EXIT_BAD_INPUT, "--profile times this process: use --workers=0")
+			workers = 0
+		var analysis: PachinkoAnalysis
+		var tally: AnalysisTally = null
 		var open_tally: AnalysisTally = null
-		if not loaded.level.bonus_pockets.is_empty():
-			# The same shots again with the bonus pockets held open, for BonusEstimate.
-			# Its rail climbs are the first run's (the climb world keeps the bonus parts shut).
-			var open_run := PachinkoAnalysis.new(plan.with_bonus_open())
-			open_run.reuse_climbs(analysis.climb_table())
-			open_tally = open_run.run()
+		var bonus := not loaded.level.bonus_pockets.is_empty()
+		if workers > 0:
+			var pool := AnalysisWorkerPool.new(plan)
+			pool.workers = workers
+			pool.with_open = bonus
+			pool.board_path = AutoplayCli.resolve_board_path(game, board_name)
+			analysis = pool
+			tally = pool.run()
+			open_tally = pool.open_tally()
+			if tally == null:
+				printerr("analyze: the workers could not start (%s); running here" % pool.failure)
+		if tally == null:
+			analysis = PachinkoAnalysis.new(plan)
+			if values.get("profile", false):
+				analysis.profile = AnalysisProfile.new()
+			tally = analysis.run()
+			if tally == null:
+				return _fail(EXIT_BAD_INPUT, plan.problem())
+			if bonus:
+				# The same shots again with the bonus pockets held open, for BonusEstimate.
+				# Its rail climbs are the first run's (the climb world keeps the bonus parts
+				# shut).
+				var open_run := PachinkoAnalysis.new(plan.with_bonus_open())
+				open_run.reuse_climbs(analysis.climb_table())
+				open_tally = open_run.run()
 		var mark := Time.get_ticks_usec()
 		report = AnalysisReport.build(plan, tally, analysis.wall_seconds, open_tally)
 		report["heatmap"] = base + ".png"

@@ -206,6 +206,40 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--analyze=pachinko --board=classic --tally=/tmp/classic.tally",
 	},
 	{
+		"flag": "--workers",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "N",
+		"help":
+		(
+			"Pachinko: split the shots over N worker processes of this game, figures"
+			+ " unchanged (default: one per core when there are more than 2 cores, else none;"
+			+ " 0 runs on threads in this process)."
+		),
+		"example": "--analyze=pachinko --board=classic --workers=4",
+	},
+	{
+		"flag": "--queue",
+		"for": ["--analyze"],
+		"value": Value.TEXT,
+		"placeholder": "DIR",
+		"help":
+		(
+			"Pachinko, worker mode (--workers starts it): take chunks of shots from the queue"
+			+ " folder DIR and write their counts there, until the queue is closed."
+		),
+		"example": "--analyze=pachinko --board=classic --queue=/tmp/q --worker-id=0",
+	},
+	{
+		"flag": "--worker-id",
+		"for": ["--analyze"],
+		"value": Value.WHOLE,
+		"placeholder": "K",
+		"default": 0,
+		"help": "With --queue: this worker's number in the queue's file names.",
+		"example": "--analyze=pachinko --board=classic --queue=/tmp/q --worker-id=1",
+	},
+	{
 		"flag": "--runs",
 		"for": ["--analyze"],
 		"value": Value.WHOLE,

@@ -1,15 +1,17 @@
 extends SceneTree
 ## `make bench`: the pachinko play analysis's speed, shots per second on Classic and Fever
-## on one thread, on every core, and in a worker process on every core (AnalysisWorker, the
-## editor's route: the game binary started headless, its start-up counted) (the
-## contact-free plan of `--analyze` and the editor's Analyze, without the bonus-open second
-## run), with where each in-process run's time went (AnalysisProfile: rail climbs,
-## stepping, the rest) and the figures that must not move with the speed (return,
-## ball-steps: the worker's must equal the threads'). Each figure is the best of ROUNDS
-## runs, the runs of one board taken in turn (1 thread, all threads, worker, 1 thread, ...),
-## so a busy moment costs one run, not a figure. Writes build/bench/analysis.json.
+## on one thread, on every core's thread, and on N worker processes (AnalysisWorkerPool,
+## the `--workers` route of `--analyze` and of the editor on more than two cores: the game
+## binary started headless N times, its start-up counted) (the contact-free plan of
+## `--analyze` and the editor's Analyze, without the bonus-open second run), with where each
+## in-process run's time went (AnalysisProfile: rail climbs, stepping, the rest) and the
+## figures that must not move with the speed (return, ball-steps: every run's must equal
+## one thread's, else the bench fails). Each figure is the best of ROUNDS runs, the runs of
+## one board taken in turn (1 thread, all threads, workers, 1 thread, ...), so a busy moment
+## costs one run, not a figure. Writes build/bench/analysis.json.
 ##
-## `-- --analysis-shots=N` changes the shots per run (default SHOTS).
+## `-- --analysis-shots=N` changes the shots per run (default SHOTS); `--analysis-workers=N`
+## the worker processes (default: one per core, at least 2).
 
 const OUT_PATH := "res://build/bench/analysis.json"
 const BOARDS: Array[String] = ["classic", "fever"]
@@ -27,16 +29,19 @@ func _initialize() -> void:
 
 func _bench() -> void:
 	var shots := SHOTS
+	var cores := OS.get_processor_count()
+	var workers := maxi(cores, 2)
 	for arg in OS.get_cmdline_user_args():
 		if arg.begins_with("--analysis-shots="):
 			shots = maxi(int(arg.get_slice("=", 1)), 1)
-	var cores := OS.get_processor_count()
-	# Each run: [threads, in a worker process].
+		if arg.begins_with("--analysis-workers="):
+			workers = clampi(int(arg.get_slice("=", 1)), 1, 64)
+	# Each run: [threads, worker processes (0: threads in this process)].
 	var modes: Array[Vector2i] = [Vector2i(1, 0)]
 	if cores > 1:
 		modes.append(Vector2i(cores, 0))
 	if AnalysisWorker.available():
-		modes.append(Vector2i(cores, 1))
+		modes.append(Vector2i(1, workers))
 	var rows: Array[Dictionary] = []
 	var started := Time.get_ticks_msec()
 	for board in BOARDS:
@@ -49,7 +54,7 @@ func _bench() -> void:
 		best.resize(modes.size())
 		for round in ROUNDS:
 			for m in modes.size():
-				var run := _run(loaded.level, shots, modes[m].x, modes[m].y != 0)
+				var run := _run(loaded.level, shots, modes[m].x, modes[m].y)
 				if run.is_empty():
 					quit(1)
 					return
@@ -64,8 +69,13 @@ func _bench() -> void:
 		for row in best:
 			row["board"] = board
 			rows.append(row)
-			if row["worker"] and row["ball_steps"] != best[0]["ball_steps"]:
-				printerr("bench_analysis: the worker's figures differ from this process's")
+			if row["ball_steps"] != best[0]["ball_steps"] or row["return"] != best[0]["return"]:
+				printerr(
+					(
+						"bench_analysis: %s, %s: ball_steps %d, not one thread's %d"
+						% [board, _mode_name(row), row["ball_steps"], best[0]["ball_steps"]]
+					)
+				)
 				quit(1)
 				return
 	_print_table(rows)
@@ -74,6 +84,7 @@ func _bench() -> void:
 		"seed": SEED,
 		"rounds": ROUNDS,
 		"cores": cores,
+		"workers": workers,
 		"runs": rows,
 		"seconds": (Time.get_ticks_msec() - started) / 1000.0,
 	}
@@ -90,24 +101,31 @@ func _bench() -> void:
 	quit(0)
 
 
-# One analysis of `shots` shots on `level` with `threads` threads, profiled, here or (with
-# `worker`) in a worker process (not profiled: its stages are another process's). {} with
-# an error when the worker failed.
-func _run(level: BoardLevel, shots: int, threads: int, worker: bool) -> Dictionary:
+# One analysis of `shots` shots on `level` with `threads` threads, profiled, here or on
+# `workers` worker processes (not profiled: their stages are other processes'). {} with an
+# error when the workers failed.
+func _run(level: BoardLevel, shots: int, threads: int, workers: int) -> Dictionary:
 	var plan := AnalysisPlan.create(level, shots, SEED)
 	plan.threads = threads
-	var analysis := AnalysisWorker.new(plan) if worker else PachinkoAnalysis.new(plan)
-	if not worker:
+	var worker := workers > 0
+	var analysis := PachinkoAnalysis.new(plan)
+	if worker:
+		var pool := AnalysisWorkerPool.new(plan)
+		pool.workers = workers
+		analysis = pool
+	else:
 		analysis.profile = AnalysisProfile.new()
 	var tally := analysis.run()
-	if tally == null:
-		printerr("bench_analysis: the worker failed: %s" % (analysis as AnalysisWorker).failure)
+	if tally == null or (worker and not (analysis as AnalysisWorkerPool).incidents.is_empty()):
+		var pool := analysis as AnalysisWorkerPool
+		printerr("bench_analysis: the workers failed: %s %s" % [pool.failure, pool.incidents])
 		return {}
 	var report := AnalysisReport.build(plan, tally, analysis.wall_seconds)
 	var profile := analysis.profile.to_dict() if not worker else {}
 	return {
 		"threads": threads,
 		"worker": worker,
+		"workers": workers,
 		"shots_per_s": report["shots_per_s"],
 		"wall_s": report["wall_s"],
 		"return": report["return"],
@@ -118,8 +136,9 @@ func _run(level: BoardLevel, shots: int, threads: int, worker: bool) -> Dictiona
 
 
 static func _mode_name(run: Dictionary) -> String:
-	var name := "%d thread(s)" % run["threads"]
-	return name + " in a worker" if run["worker"] else name
+	if run["worker"]:
+		return "%d worker processes" % run["workers"]
+	return "%d thread(s)" % run["threads"]
 
 
 func _print_table(rows: Array[Dictionary]) -> void:

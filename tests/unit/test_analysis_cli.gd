@@ -127,3 +127,34 @@ func test_without_out_the_game_writes_beside_the_players_files() -> void:
 	if OS.has_feature("template"):
 		for name in ["pachinko_classic.json", "pachinko_classic.png"]:
 			DirAccess.remove_absolute(folder.path_join(name))
+
+
+func test_workers_give_the_report_of_threads_here() -> void:
+	if not AnalysisWorker.available():
+		pass_test("no worker process on this platform")
+		return
+	var json := ProjectSettings.globalize_path("res://build/test_analysis/pachinko_fever.json")
+	var reports: Array[Dictionary] = []
+	for workers: int in [0, 2]:
+		var values := {
+			"analyze": "pachinko", "board": "fever", "shots": 500, "seed": 2, "workers": workers
+		}
+		values["threads"] = 1
+		assert_eq(AnalyzeCli.run(values), 0, "workers: %d" % workers)
+		var report: Dictionary = JSON.parse_string(FileAccess.get_file_as_string(json))
+		for key: String in ["wall_s", "shots_per_s"]:
+			report.erase(key)
+		reports.append(report)
+	assert_true(reports[0].has("bonus"), "Fever's bonus-open figures are in")
+	assert_eq(JSON.stringify(reports[1]), JSON.stringify(reports[0]), "the same report")
+
+
+func test_bad_worker_counts_are_refused() -> void:
+	var values := {"analyze": "pachinko", "board": "classic", "shots": 10, "seed": 1}
+	values["workers"] = -1
+	assert_eq(AnalyzeCli.run(values), AnalyzeCli.EXIT_BAD_INPUT, "negative")
+	values["workers"] = 65
+	assert_eq(AnalyzeCli.run(values), AnalyzeCli.EXIT_BAD_INPUT, "too many")
+	values["workers"] = 2
+	values["profile"] = true
+	assert_eq(AnalyzeCli.run(values), AnalyzeCli.EXIT_BAD_INPUT, "--profile times this process")

@@ -69,9 +69,33 @@ func test_the_worker_process_gives_the_figures_of_a_run_in_the_editor() -> void:
 		AnalysisCache.folder_override = TEST_FOLDER + ("_w" if worker else "_e")
 		var panel := _panel()
 		panel.use_worker = worker
+		panel.worker_processes = 0
 		panel.bind(_classic())
 		panel.start()
 		assert_eq(panel._run is AnalysisWorker, worker, "worker: %s" % worker)
+		_finish(panel)
+		var report := panel.report().duplicate(true)
+		for key: String in ["wall_s", "shots_per_s"]:
+			report.erase(key)
+		figures.append(report)
+		for file in DirAccess.get_files_at(AnalysisCache.folder()):
+			DirAccess.remove_absolute(AnalysisCache.folder().path_join(file))
+	assert_eq(figures[0].get("shots"), 260)
+	assert_eq(JSON.stringify(figures[0]), JSON.stringify(figures[1]), "the same figures")
+
+
+func test_worker_processes_give_the_figures_of_a_run_in_the_editor() -> void:
+	if not AnalysisWorker.available():
+		pass_test("no worker process on this platform")
+		return
+	var figures: Array[Dictionary] = []
+	for workers: int in [2, 0]:
+		AnalysisCache.folder_override = TEST_FOLDER + "_p%d" % workers
+		var panel := _panel()
+		panel.worker_processes = workers
+		panel.bind(_classic())
+		panel.start()
+		assert_eq(panel.running() is AnalysisWorkerPool, workers > 0, "workers: %d" % workers)
 		_finish(panel)
 		var report := panel.report().duplicate(true)
 		for key: String in ["wall_s", "shots_per_s"]:

@@ -1,8 +1,9 @@
 @tool
 extends VBoxContainer
 ## The dock's play-analysis section: Analyze fires AnalysisPlan.EDITOR_SHOTS shots at the
-## board on worker threads of the editor (PachinkoAnalysis), or with `use_worker` in a
-## worker process (AnalysisWorker: the game binary headless, on every core), while the
+## board on worker threads of the editor (PachinkoAnalysis), on more than two cores over
+## one worker process per core (AnalysisWorkerPool: the game binary headless), or with
+## `use_worker` in one worker process (AnalysisWorker, on every core), while the
 ## editor stays responsive, with a progress bar and Cancel; the figures and the heat map
 ## update as chunks of shots finish.
 ## A finished run is cached per board content (AnalysisCache), so reopening a board, or
@@ -38,6 +39,10 @@ var shots := AnalysisPlan.EDITOR_SHOTS
 ## idle, the worker 83.5 s and 48.8 s (the headless command line: 30.0 s); the editor's
 ## threads no longer lag since the physics stopped looking its ball fields up by name.
 var use_worker := false
+## Worker processes the analysis is split over (AnalysisWorkerPool, the command line's
+## `--workers` route); 0 leaves the choice to `use_worker`. By default one per core on more
+## than two cores, none on two (where the editor's threads won: see use_worker).
+var worker_processes := AnalysisWorkerPool.default_workers()
 
 var _level: BoardLevel
 var _key := ""
@@ -130,7 +135,14 @@ func start() -> void:
 	_run_key = _key
 	var worker_failure := ""
 	_run = null
-	if use_worker and AnalysisWorker.available():
+	if worker_processes > 0 and AnalysisWorker.available():
+		var pool := AnalysisWorkerPool.new(plan)
+		pool.workers = worker_processes
+		_run = pool
+		if not _run.start():
+			worker_failure = pool.failure
+			_run = null
+	elif use_worker and AnalysisWorker.available():
 		_run = AnalysisWorker.new(plan)
 		if not _run.start():
 			worker_failure = (_run as AnalysisWorker).failure
@@ -163,6 +175,12 @@ func cancel() -> void:
 ## True while an analysis runs.
 func is_running() -> bool:
 	return _run != null
+
+
+## The running analysis: a PachinkoAnalysis, an AnalysisWorker or an AnalysisWorkerPool
+## (null when none runs).
+func running() -> PachinkoAnalysis:
+	return _run
 
 
 ## The figures shown (an AnalysisReport dictionary; empty when none).
