@@ -116,6 +116,13 @@ func _ready() -> void:
 	# the first frame drawn shows the board ready: its balls and the medal in reach
 	_stage.sync_balls(rules, 0.0)
 	_show_next_medal()
+	# with a window, the curtain stays up (its ring turning) while the board's parts come on
+	# one frame at a time, each compiling its shaders (headless nothing is drawn)
+	if DisplayServer.get_name() != "headless":
+		var step_in := MazeStepIn.new()
+		add_child(step_in)
+		App.curtain.hold_until(step_in.shown_in_full, self)
+		step_in.start(_stage)
 
 
 func _process(delta: float) -> void:
