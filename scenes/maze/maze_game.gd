@@ -243,7 +243,9 @@ func _on_game_reset() -> void:
 	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = Palette.HARD if rules.hard_mode else Palette.GOAL
-	var hint := MazeHints.start(rules.hard_mode, rules.ball_total(), rules.level.holes.size())
+	var hint := MazeHints.start(
+		rules.hard_mode, rules.ball_total(), rules.level.holes.size(), rules.level.board_id
+	)
 	# the ghost's line on a line of its own, and before there is a ghost one as long, so the
 	# note keeps its height (and the panel its layout) from the first attempt to the next
 	if _ghost != null:
