@@ -2,7 +2,7 @@ extends SceneTree
 ## Writes the two shipped classic boards from their recipes:
 ##   tools/godot.sh --headless --path . -s tools/make_classic_boards.gd
 ## levels/pachinko/classic.board: a ring machine in the spirit of the Flash chapter.
-## levels/maze/classic.board: the tilt maze tutorial's exact layout.
+## levels/maze/classic.board: the tilt maze tutorial's exact layout (its goal ring made to fit).
 
 const PACHINKO_PATH := "res://levels/pachinko/classic.board"
 const MAZE_PATH := "res://levels/maze/classic.board"
@@ -172,7 +172,9 @@ static func make_maze() -> BoardLevel:
 	level.walls = walls
 	level.ball_starts = _cell_centres(MAZE_STARTS)
 	level.goal_center = Vector2(350.0 / 2.0, 315.0 / 2.0)
-	level.goal_radius = 65.0 / 2.0
+	# The tutorial's ring is 65 px across, drawn under its room's walls (their faces stand 30
+	# px from the centre): the generated mazes' ring fits the same room with its lip clear.
+	level.goal_radius = MazeGenerator.GOAL_RADIUS
 	level.holes = _cell_centres(MAZE_HOLES)
 	level.hole_radius = 9.0
 	return level

@@ -12,8 +12,10 @@ const AddItemsAction := preload("res://addons/board_editor/actions/add_items_act
 
 const CELL := 35.0
 const CATACOMBS_SEED := 20240611
-## The teaching boards' goal radius: it fits the corridor's dead end (px).
-const FOLD_GOAL_RADIUS := 14.0
+## The teaching boards' goal radius (px): the dish and the lip the floor draws round it fit
+## the 25 px corridor's dead end (12.5 − 2), and still hold two balls in a row (20 px). At 14
+## the dish was drawn half under the corridor's walls.
+const FOLD_GOAL_RADIUS := 10.5
 ## Share of the carved maze's inner walls knocked out again.
 const OPENNESS := 0.2
 
@@ -184,9 +186,9 @@ static func _fold(
 	var dead_end_right := last % 2 == 0
 	var face := far.x - level.wall_width * 0.5 if dead_end_right else level.wall_width * 0.5
 	var inward := -1.0 if dead_end_right else 1.0
-	# a ball resting at the end lies a radius from the wall's face; a second one behind it
-	# two radii further: the goal's centre between them takes both in
-	var goal := Vector2(face + inward * level.ball_radius * 2.0, (last + 0.5) * CELL)
+	# the goal fills the dead end's last square of corridor: a ball resting at the end lies a
+	# radius from the wall's face, a second one behind it two radii further, both inside
+	var goal := Vector2(face + inward * level.path_width * 0.5, (last + 0.5) * CELL)
 	history.commit(
 		SetPropertiesAction.new(
 			level, {"goal_center": goal, "goal_radius": FOLD_GOAL_RADIUS}, "Goal at the end"

@@ -3,8 +3,10 @@ extends CanvasLayer
 ## The sign of life while a screen loads: a dimmed window with "Loading…" and a turning ring,
 ## over everything, raised the moment a scene change is asked for and lowered once the new
 ## screen has drawn its first frame. It takes the clicks made meanwhile (an impatient click
-## must not land on the new screen). The App owns the one curtain; `cover()` and `lift()`
-## are all there is. The ring turns whenever the main thread gets a frame in.
+## must not land on the new screen). The App owns the one curtain and calls `cover()` and
+## `lift()`; a new screen that draws itself over several frames (the maze compiles its 3D
+## shaders one part a frame) keeps it up meanwhile with `hold_until()`. The ring turns
+## whenever the main thread gets a frame in.
 
 ## Above every screen's own layers (the pause menu is 10, the frame counter 20).
 const LAYER := 90
@@ -19,6 +21,11 @@ var _shade: Control
 var _label: Label
 var _ring: Control
 var _angle := 0.0
+# a screen still drawing itself keeps the curtain up: a lift asked for meanwhile waits
+var _held := false
+var _lift_waiting := false
+# holds asked for so far: only the latest one's end counts
+var _holds := 0
 
 
 func _init() -> void:
@@ -78,17 +85,50 @@ func words() -> String:
 	return _label.text
 
 
-## Raises the curtain at once with `text` under the turning ring.
+## True while a screen keeps the curtain up (`hold_until`).
+func is_held() -> bool:
+	return _held
+
+
+## Raises the curtain at once with `text` under the turning ring (forgetting any hold: a new
+## screen is on its way).
 func cover(text: String = "Loading…") -> void:
 	_label.text = text
+	_held = false
+	_lift_waiting = false
 	visible = true
 	set_process(true)
 
 
-## Lowers the curtain.
+## Lowers the curtain, or once the hold ends when a screen holds it.
 func lift() -> void:
+	if _held:
+		_lift_waiting = true
+		return
 	visible = false
 	set_process(false)
+
+
+## Keeps the curtain up, with its ring turning, until `done` is emitted or `holder` leaves
+## the tree (a screen freed early must not leave it up); a `lift()` asked for meanwhile
+## happens then. Call it from the new screen's _ready, before the App lifts the curtain.
+func hold_until(done: Signal, holder: Node) -> void:
+	_held = true
+	_holds += 1
+	var hold := _holds
+	var ends := func() -> void: _end_hold(hold)
+	done.connect(ends, CONNECT_ONE_SHOT)
+	holder.tree_exiting.connect(ends, CONNECT_ONE_SHOT)
+
+
+# Ends hold number `hold` (the later of its two ends, or an older hold's, finds it over).
+func _end_hold(hold: int) -> void:
+	if not _held or hold != _holds:
+		return
+	_held = false
+	if _lift_waiting:
+		_lift_waiting = false
+		lift()
 
 
 func _process(delta: float) -> void:

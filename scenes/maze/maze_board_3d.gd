@@ -25,6 +25,9 @@ const FRAME_EXTRA_HEIGHT := 3.0
 const FRAME_MARGIN := 11.0
 ## How far the board's body reaches below the floor, in board pixels.
 const BODY_DEPTH := 16.0
+## The dark lip the floor draws just outside the goal's edge (px): the dish a player sees
+## reaches this far past the goal's radius, and every shipped board keeps it clear of walls.
+const GOAL_LIP_PX := 2.0
 ## How deep a hole is, in hole radii (the tube must fit inside the body).
 const HOLE_DEPTH_PER_RADIUS := 1.3
 ## The floor shader's limit on holes; more are drawn without their cut-out.
@@ -93,6 +96,7 @@ func build(level: BoardLevel, hard: bool) -> void:
 	_set_paint("board_size", size)
 	_set_paint("goal_center", level.goal_center)
 	_set_paint("goal_radius", level.goal_radius)
+	_set_paint("goal_line", GOAL_LIP_PX)
 	_set_paint("hole_radius", level.hole_radius)
 	set_hard_mode(hard)
 

@@ -101,6 +101,13 @@ func _ready() -> void:
 	# the first frame drawn shows the board ready: its balls and the medal in reach
 	_stage.sync_balls(rules, 0.0)
 	_show_next_medal()
+	# with a window, the curtain stays up (its ring turning) while the board's parts come on
+	# one frame at a time, each compiling its shaders (headless nothing is drawn)
+	if DisplayServer.get_name() != "headless":
+		var step_in := MazeStepIn.new()
+		add_child(step_in)
+		App.curtain.hold_until(step_in.shown_in_full, self)
+		step_in.start(_stage)
 
 
 func _process(delta: float) -> void:
@@ -221,7 +228,9 @@ func _on_game_reset() -> void:
 	_stage.set_hard_mode(rules.hard_mode)
 	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
 	_mode.modulate = MazePalette.HARD if rules.hard_mode else MazePalette.GOAL
-	var hint := MazeHints.start(rules.hard_mode, rules.ball_total(), rules.level.holes.size())
+	var hint := MazeHints.start(
+		rules.hard_mode, rules.ball_total(), rules.level.holes.size(), rules.level.board_id
+	)
 	# the ghost's line on a line of its own, and before there is a ghost one as long, so the
 	# note keeps its height (and the panel its layout) from the first attempt to the next
 	if _ghost != null:

@@ -6,6 +6,15 @@ extends RefCounted
 
 ## A space that never breaks a line.
 const NBSP := "\u00a0"
+## What to try on the first boards after First Roll (whose own hint says how tilting works),
+## in easy mode, in place of the hard-mode invitation (the win card still makes it): a blind
+## trial found the jump to four balls on boards 3 to 5 steep with no hint of how to go about it.
+const TIPS := {
+	"maze_two_together": "Tip: let both balls stop against a wall before you tilt the next way.",
+	"maze_cloister": "Tip: a ball in the dip stays there, so bring the others in one by one.",
+	"maze_garden": "Tip: gather the balls against one wall first, then roll them on together.",
+	"maze_switchbacks": "Tip: plan the route before you tilt: the clock starts then.",
+}
 
 
 ## The controls line under the side panel. Each "Space reset" item holds together (its
@@ -32,7 +41,8 @@ static func no_ghost_yet() -> String:
 ## The hint under "Tilt the board to start!" in easy or `hard` mode, on a board of `balls`
 ## balls and `holes` black holes (a one-ball board is the first: it says how tilting works;
 ## hard mode on a board without holes says it plays the same).
-static func start(hard: bool, balls: int = 4, holes: int = 1) -> String:
+## `board_id`'s tip (TIPS) takes the easy hint's last place on the first boards.
+static func start(hard: bool, balls: int = 4, holes: int = 1, board_id := "") -> String:
 	if hard and holes == 0:
 		return (
 			"Hard mode: this board has no black holes, so it plays as in easy mode."
@@ -45,6 +55,8 @@ static func start(hard: bool, balls: int = 4, holes: int = 1) -> String:
 			"Tilt with the arrow keys or the joystick: the ball rolls downhill."
 			+ " Roll it into the round dip."
 		)
+	if TIPS.has(board_id):
+		return "Roll every ball into the round dip. %s" % TIPS[board_id]
 	if holes == 0:
 		return "Roll every ball into the round dip."
 	return "Roll every ball into the round dip. Ready for hard mode? Press %s" % _hard()

@@ -55,6 +55,8 @@ var _framing := MazeFraming.new()
 var _region := Rect2()
 ## How brightly the goal's dish glows now (0 to 1).
 var _goal_glow := 0.0
+# the room the steel balls reflect (the environment's sky while they reflect it)
+var _room_sky: Sky
 
 
 func _ready() -> void:
@@ -108,6 +110,9 @@ func set_low_graphics(low: bool) -> void:
 		_world_env.environment.reflected_light_source = (
 			Environment.REFLECTION_SOURCE_DISABLED if low else Environment.REFLECTION_SOURCE_SKY
 		)
+		# the room is seen only in the balls' reflections: without them the sky goes too (on
+		# software GL it cost 3 to 4 ms a frame though nothing showed it; tools/maze_fps.sh)
+		_world_env.environment.sky = null if low else _room_sky
 	if is_inside_tree():
 		use_render_settings(get_viewport(), RenderingServer.get_video_adapter_name(), low)
 
@@ -293,10 +298,10 @@ func _environment() -> Environment:
 	# The room round the table, seen only in the steel balls' reflections.
 	var sky_material := PanoramaSkyMaterial.new()
 	sky_material.panorama = ImageTexture.create_from_image(room_panorama(ROOM_SIZE))
-	var sky := Sky.new()
-	sky.sky_material = sky_material
-	sky.radiance_size = Sky.RADIANCE_SIZE_64
-	env.sky = sky
+	_room_sky = Sky.new()
+	_room_sky.sky_material = sky_material
+	_room_sky.radiance_size = Sky.RADIANCE_SIZE_64
+	env.sky = null if low_graphics else _room_sky
 	env.reflected_light_source = Environment.REFLECTION_SOURCE_SKY
 	return env
 

@@ -36,7 +36,7 @@ const PORTRAIT_BUTTON_WIDTH := 190.0
 @onready var _bindings: BindingList = %Bindings
 @onready var _defaults: Button = %DefaultsButton
 @onready var _back: Button = %BackButton
-@onready var _backdrop: Control = $Backdrop
+@onready var _backdrop: Control = $BackdropLayer/Backdrop
 @onready var _margin: MarginContainer = $Margin
 @onready var _first_label: Label = %MasterLabel
 

@@ -4,7 +4,8 @@ extends RefCounted
 ## (tools/maze_pilot_table.gd --write-medals plays them and keeps what it measured in
 ## PILOT_RECORD, so tests/unit/test_medal_times.gd can check every board file against it).
 ## Easy medals from the pilot's easy game (seed 1), or its fastest hard win when faster (the
-## hard run's way works with the holes asleep too). Hard medals from the median of its hard
+## hard run's way works with the holes asleep too), with bronze at least EASY_BRONZE_REACH
+## times the easy game. Hard medals from the median of its hard
 ## wins (seeds 1..5): holes make the pilot wait and go round, so where they are live hard
 ## mode asks for more time. A board without holes has the same times in both modes.
 
@@ -13,6 +14,10 @@ extends RefCounted
 const PILOT_RECORD := "res://tools/maze_pilot_times.json"
 ## Hard medals from the easy time times this when the pilot never won hard mode.
 const HARD_FALLBACK := 1.5
+## Easy bronze is never under this many times the pilot's own easy game: on Garden Path a
+## lucky fast hard win set bronze at 34.6 s while the pilot's easy games took 23 to 62 s
+## (seeds 1-5), and a blind trial found the medals out of reach from the third board on.
+const EASY_BRONZE_REACH := 1.5
 
 
 ## [easy medal times, hard medal times] (each [gold, silver, bronze], see Medals) from the
@@ -24,11 +29,17 @@ static func medal_times(easy: float, hard_wins: PackedFloat64Array, has_holes: b
 	var easy_base := easy
 	if not sorted.is_empty() and (easy_base <= 0.0 or sorted[0] < easy_base):
 		easy_base = sorted[0]
-	var hard_base := easy_base
-	if has_holes:
-		hard_base = _median(sorted) if not sorted.is_empty() else easy_base * HARD_FALLBACK
 	var easy_times := Medals.from_pilot_time(easy_base) if easy_base > 0.0 else PackedFloat64Array()
+	if easy > 0.0 and easy_times.size() == 3:
+		easy_times[2] = maxf(easy_times[2], ceilf(easy * EASY_BRONZE_REACH * 10.0) / 10.0)
+	if not has_holes:
+		return [easy_times, easy_times.duplicate()]
+	var hard_base := _median(sorted) if not sorted.is_empty() else easy_base * HARD_FALLBACK
 	var hard_times := Medals.from_pilot_time(hard_base) if hard_base > 0.0 else PackedFloat64Array()
+	# hard mode (holes live) never asks for a faster time than easy for the same medal
+	if hard_times.size() == easy_times.size():
+		for i in hard_times.size():
+			hard_times[i] = maxf(hard_times[i], easy_times[i])
 	return [easy_times, hard_times]
 
 

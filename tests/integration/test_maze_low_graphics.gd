@@ -61,12 +61,14 @@ func test_the_setting_turns_the_costly_looks_off_in_play_and_back_on() -> void:
 	assert_eq(_wall_grain(), 0.0, "plain walls")
 	assert_false(_table_visible(), "no table shadow")
 	assert_eq(_reflections(), Environment.REFLECTION_SOURCE_DISABLED, "no reflections")
+	assert_null(_game.stage().environment().sky, "no sky for them either (it cost on its own)")
 	App.settings.set_value("maze_low_graphics", false)
 	App.settings.changed.emit()
 	assert_true(_floor_uniform("shadows_on"))
 	assert_gt(_floor_uniform("grain_strength"), 0.0)
 	assert_true(_table_visible())
 	assert_eq(_reflections(), Environment.REFLECTION_SOURCE_SKY)
+	assert_not_null(_game.stage().environment().sky, "the room to reflect is back")
 
 
 func test_a_board_opened_with_the_setting_on_starts_low() -> void:

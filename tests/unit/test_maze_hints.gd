@@ -20,3 +20,12 @@ func test_a_board_without_holes_never_asks_for_hard_mode() -> void:
 	assert_string_contains(MazeHints.start(false, 4, 8), "hard mode")
 	assert_string_contains(MazeHints.won(false, 8), "hard mode")
 	assert_string_contains(MazeHints.start(false, 1, 0), "rolls downhill")
+
+
+func test_boards_two_to_five_say_what_to_try_in_easy_mode() -> void:
+	for board_id in MazeProgress.ORDER.slice(1, 5):
+		var hint := MazeHints.start(false, 4, 2, board_id)
+		assert_string_contains(hint, "Tip: ", "%s has a tip" % board_id)
+		assert_lt(MazeHints.TIPS[board_id].length(), 80, "%s: a short line" % board_id)
+		assert_false(MazeHints.start(true, 4, 2, board_id).contains("Tip: "), "easy mode only")
+	assert_false(MazeHints.start(false, 4, 2, "maze_tower").contains("Tip: "), "later boards: none")

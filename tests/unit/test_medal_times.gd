@@ -64,3 +64,16 @@ func test_the_rule() -> void:
 	assert_eq(made[1], made[0], "no holes: the same in both modes")
 	made = MedalRule.medal_times(18.0, PackedFloat64Array(), true)
 	assert_eq(made[1], Medals.from_pilot_time(18.0 * MedalRule.HARD_FALLBACK), "never won hard")
+
+
+func test_easy_bronze_stays_in_reach_of_the_pilots_easy_game() -> void:
+	# a lucky 10 s hard win would put bronze at 35 s, under the pilot's own 40 s easy game
+	var made := MedalRule.medal_times(40.0, PackedFloat64Array([10.0, 30.0, 35.0]), true)
+	assert_eq(made[0][0], Medals.from_pilot_time(10.0)[0], "gold from the fastest win")
+	assert_eq(made[0][2], 40.0 * MedalRule.EASY_BRONZE_REACH, "bronze the easy game can reach")
+	# and hard games all that fast would put hard bronze under easy's
+	made = MedalRule.medal_times(40.0, PackedFloat64Array([10.0, 11.0, 12.0]), true)
+	assert_eq(made[1][2], made[0][2], "hard bronze no faster than easy's")
+	assert_eq(made[1][0], Medals.from_pilot_time(11.0)[0], "hard gold from the median still")
+	made = MedalRule.medal_times(40.0, PackedFloat64Array([10.0]), false)
+	assert_eq(made[1], made[0], "no holes: the same in both modes")

@@ -14,7 +14,8 @@ const SCRATCH_SETTINGS := "user://fps_settings.cfg"
 const SCRATCH_SAVE := "user://fps_save.cfg"
 ## Variants: a name and the settings it changes from the game's own ("as shipped" changes
 ## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*),
-## hide (parts not drawn: floor, walls, frame, balls, table, shadows), low (the player's
+## hide (parts not drawn: floor, walls, frame, balls, table, shadows, panel: the 2D side
+## panel, camera: no 3D pass at all), low (the player's
 ## Low graphics setting), low_scale (Low at another render scale).
 ## MAZE_FPS_ONLY="as shipped|Low graphics" runs only those;
 ## MAZE_FPS_THREADS=1 prints each thread's CPU ms a frame (llvmpipe's, the engine's).
@@ -26,9 +27,15 @@ const VARIANTS := [
 	["full res", {"scale": 1.0}],
 	["no shadows", {"hide": ["shadows"]}],
 	["no 3D", {"hide": ["floor", "walls", "frame", "balls", "table"]}],
+	["Low, no floor", {"low": true, "hide": ["floor"]}],
+	["Low, no walls", {"low": true, "hide": ["walls"]}],
+	["Low, no board", {"low": true, "hide": ["floor", "walls", "frame", "balls"]}],
+	["Low, no panel", {"low": true, "hide": ["panel"]}],
+	["no camera", {"hide": ["camera"]}],
 ]
 
 var _angle := 0.0
+var _panel: Control
 
 
 func _initialize() -> void:
@@ -50,6 +57,7 @@ func _run() -> void:
 	# the game script is not preloaded: it names the App autoload, which a -s script's
 	# preloads are compiled before
 	var stage: MazeStage = game.call("stage")
+	_panel = game.get_node("Side")
 	var defaults := _read_settings(stage)
 	var rounds := (
 		int(OS.get_environment("MAZE_FPS_ROUNDS")) if OS.has_environment("MAZE_FPS_ROUNDS") else 3
@@ -134,6 +142,9 @@ func _apply(stage: MazeStage, settings: Dictionary) -> void:
 	for part: String in parts:
 		for node: Node3D in parts[part]:
 			node.visible = not settings["hide"].has(part)
+	# the side panel (2D), and the camera (none: no 3D pass at all)
+	_panel.visible = not settings["hide"].has("panel")
+	stage.camera().current = not settings["hide"].has("camera")
 	if settings["low"]:
 		return
 	# the shadows are the floor shader's

@@ -2,6 +2,7 @@ extends RefCounted
 ## Opens a game screen the way the player reaches it (a call on the App autoload that changes
 ## the scene, such as App.start_game) and waits until the new scene is the current one.
 
+const AppScript := preload("res://scenes/app/app.gd")
 ## Scene changes are deferred to the end of a frame; a few frames are plenty.
 const MAX_FRAMES := 60
 
@@ -17,6 +18,12 @@ static func open(tree: SceneTree, change: Callable, scene_path: String) -> Node:
 		# The same screen opened twice in a row is a new instance, not the old one.
 		if scene != null and scene != before and scene.scene_file_path == scene_path:
 			await tree.process_frame
+			# a screen that draws itself over a few frames (the maze) keeps the curtain up
+			var curtain := (tree.root.get_node("/root/App") as AppScript).curtain
+			for wait in MAX_FRAMES:
+				if not curtain.is_covering():
+					break
+				await tree.process_frame
 			return scene
 	printerr("shots: %s did not open within %d frames" % [scene_path, MAX_FRAMES])
 	return null

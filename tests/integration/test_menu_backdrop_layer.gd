@@ -1,0 +1,47 @@
+extends GutTest
+## The menus' falling balls stay behind every menu's text: a blind trial saw them drawn over
+## the board list's "My boards" heading. The backdrop draws on a canvas layer below the one
+## holding the menu's labels and buttons, whatever order their nodes come in.
+
+const BackdropScript := preload("res://scenes/menu/menu_backdrop.gd")
+const MENUS: Array[String] = [
+	"res://scenes/menu/main_menu.tscn",
+	"res://scenes/menu/level_select.tscn",
+	"res://scenes/menu/settings_menu.tscn",
+]
+
+
+# The canvas layer `item` draws on (0: the window's own canvas).
+func _layer(item: CanvasItem) -> int:
+	var layer := item.get_canvas_layer_node()
+	return layer.layer if layer != null else 0
+
+
+func _walk(node: Node, found: Array[Node]) -> void:
+	found.append(node)
+	for child in node.get_children():
+		_walk(child, found)
+
+
+func test_the_backdrop_is_below_every_label_and_button_of_each_menu() -> void:
+	for path in MENUS:
+		var menu: Control = (load(path) as PackedScene).instantiate()
+		add_child_autofree(menu)
+		await get_tree().process_frame
+		var nodes: Array[Node] = []
+		_walk(menu, nodes)
+		var backdrops := nodes.filter(func(node: Node) -> bool: return node is BackdropScript)
+		assert_eq(backdrops.size(), 1, "%s has its backdrop" % path.get_file())
+		if backdrops.is_empty():
+			continue
+		var below := _layer(backdrops[0])
+		var texts := 0
+		for node in nodes:
+			if node is Label or node is Button:
+				texts += 1
+				assert_lt(
+					below,
+					_layer(node),
+					"%s: the backdrop is under %s" % [path.get_file(), menu.get_path_to(node)]
+				)
+		assert_gt(texts, 2, "%s: its words were found" % path.get_file())
