@@ -5,6 +5,9 @@ extends ResourceFormatLoader
 ## by the engine itself), so scenes, the Inspector, the editor's play-test and the game load
 ## boards through the same data-only reader: BoardTextReader, never the text resource parser.
 
+# Preloaded, not named by class: the engine registers this script while a fresh checkout's
+# first import is still building the global class list, so BoardTextReader is not known yet.
+const Reader := preload("res://scripts/loading/board_text_reader.gd")
 const EXTENSION := "board"
 
 
@@ -38,7 +41,7 @@ func _load(path: String, _original_path: String, _sub_threads: bool, _cache_mode
 			)
 		)
 		return ERR_CANT_OPEN
-	var read := BoardTextReader.read_bytes(bytes)
+	var read := Reader.read_bytes(bytes)
 	if read.has("error"):
 		push_error("%s: %s" % [path, read["error"]])
 		return ERR_FILE_CORRUPT

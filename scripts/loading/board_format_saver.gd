@@ -5,6 +5,9 @@ extends ResourceFormatSaver
 ## would write the same text leaves the file untouched, so opening a board and saving the
 ## scene never shows up as a change.
 
+# Preloaded, not named by class: the engine registers this script while a fresh checkout's
+# first import is still building the global class list, so BoardTextWriter is not known yet.
+const Writer := preload("res://scripts/loading/board_text_writer.gd")
 const EXTENSION := "board"
 
 
@@ -44,7 +47,7 @@ func _save(resource: Resource, path: String, _flags: int) -> Error:
 	var level := resource as BoardLevel
 	if level == null:
 		return ERR_INVALID_PARAMETER
-	var text := BoardTextWriter.write(level)
+	var text := Writer.write(level)
 	if FileAccess.file_exists(path) and FileAccess.get_file_as_string(path) == text:
 		return OK
 	# Write beside the file, then swap (SafeWrite): a failed write never leaves half a board
