@@ -9,8 +9,6 @@ extends Node
 ## Every part has been drawn once.
 signal shown_in_full
 
-const MazeStage := preload("res://scenes/maze/maze_stage.gd")
-
 var _stage: MazeStage
 # parts still to bring on, and the frames left before the last has been drawn
 var _waiting: Array[Node3D] = []

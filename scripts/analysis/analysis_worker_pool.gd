@@ -18,7 +18,6 @@ extends PachinkoAnalysis
 ## worker and its chunks, and the range goes back in the queue for another worker; once no
 ## worker is left, the rest runs here on `plan.threads` threads. No range is dropped.
 
-const BoardTextWriter := preload("res://scripts/loading/board_text_writer.gd")
 ## Chunks in one range of the queue: one chunk (250 shots, about a second of one core) keeps
 ## the end of a run even; the per-range cost is a few small files.
 const RANGE_CHUNKS := 1

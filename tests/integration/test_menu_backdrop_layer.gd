@@ -3,7 +3,6 @@ extends GutTest
 ## the board list's "My boards" heading. The backdrop draws on a canvas layer below the one
 ## holding the menu's labels and buttons, whatever order their nodes come in.
 
-const BackdropScript := preload("res://scenes/menu/menu_backdrop.gd")
 const MENUS: Array[String] = [
 	"res://scenes/menu/main_menu.tscn",
 	"res://scenes/menu/level_select.tscn",
@@ -30,7 +29,7 @@ func test_the_backdrop_is_below_every_label_and_button_of_each_menu() -> void:
 		await get_tree().process_frame
 		var nodes: Array[Node] = []
 		_walk(menu, nodes)
-		var backdrops := nodes.filter(func(node: Node) -> bool: return node is BackdropScript)
+		var backdrops := nodes.filter(func(node: Node) -> bool: return node is MenuBackdrop)
 		assert_eq(backdrops.size(), 1, "%s has its backdrop" % path.get_file())
 		if backdrops.is_empty():
 			continue
