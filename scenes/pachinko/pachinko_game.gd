@@ -37,6 +37,10 @@ var _bonus_view: BonusView
 var _juice: JuiceView
 var _music: PachinkoMusic
 var _recorder: ReplayRecorder
+# The one-line reminder of how to shoot on games after the first (the full card's stand-in).
+var _reminder := RulesReminder.new()
+# The board's part of the screen (the last layout's).
+var _board_area := Rect2()
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -56,6 +60,9 @@ var _recorder: ReplayRecorder
 func _ready() -> void:
 	pause_menu.restart_requested.connect(restart)
 	instructions.play_requested.connect(_start_from_card)
+	_reminder.name = "Reminder"
+	add_child(_reminder)
+	move_child(_reminder, instructions.get_index() + 1)  # under the pause menu
 	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -138,7 +145,9 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 		return
 	if rules.state != PachinkoRules.State.PLAYING:
-		if _is_click(event):
+		if instructions.ignores_held(event):
+			get_viewport().set_input_as_handled()
+		elif _is_click(event):
 			# the card goes only by its own button (or a key): point the player at it
 			instructions.nudge()
 		elif _is_start_key(event) and instructions.accepts_start():
@@ -224,7 +233,8 @@ func _new_rules() -> void:
 	_music.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
-	cup.set_count(0)
+	# the balls the game starts with, behind the card too (it read 0 there)
+	cup.set_count(_level.cup_start_balls)
 	launcher.set_power(0.0, 0.0)
 	launcher.set_loaded(false)
 	launcher.set_handle(false, rules.handle.power)
@@ -247,7 +257,27 @@ func _new_rules() -> void:
 	)
 	_show_notes()
 	stats_panel.show_stats(rules.stats(true))
-	instructions.show_start(_level)
+	if App.skips_rules_card(_level.board_id):
+		# played from its full card before: straight into play, how to shoot in one line
+		instructions.visible = false
+		rules.start_game()
+		_reminder.show_line(_reminder_line())
+		_reminder.place(_board_area)
+	else:
+		_reminder.dismiss()
+		instructions.show_start(_level)
+
+
+## The one-line reminder shown instead of the card on later games.
+func reminder() -> RulesReminder:
+	return _reminder
+
+
+func _reminder_line() -> String:
+	return (
+		"%s   [b]%s[/b]: new game"
+		% [InstructionsPanel.how_to_shoot(), KeyNames.of(&"game_restart", "?")]
+	)
 
 
 func _show_notes() -> void:
@@ -276,6 +306,8 @@ func _layout() -> void:
 	if _level == null or not is_inside_tree():  # a window closing around it resizes too
 		return
 	var area := _hud_layout.place(get_viewport_rect().size)
+	_board_area = area
+	_reminder.place(area)
 	board_view.fit(_level, area)
 	_controls.drag_scale = minf(area.size.x, area.size.y) / DESIGN_BOARD_SIDE
 	instructions.position = area.position
@@ -307,6 +339,7 @@ func _start_from_card() -> void:
 	if rules == null or rules.state == PachinkoRules.State.PLAYING:
 		return
 	rules.start_game()
+	App.note_pachinko_rules_seen(_level.board_id)
 	sounds.play(SoundBank.UI_CLICK)
 
 
@@ -342,6 +375,7 @@ func _on_game_ended(summary: Dictionary) -> void:
 	var new_best := App.record_pachinko_balls(_level.board_id, paid)
 	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
+	_reminder.dismiss()
 	instructions.show_game_over(_level, summary, best, new_best)
 	_show_notes()
 	sounds.play(SoundBank.GAME_OVER)

@@ -2,9 +2,10 @@ extends RefCounted
 ## The pachinko shots: "pachinko_start" the instructions, "pachinko_play" a stream
 ## from the held handle with struck pins lit and the flipper drawn back, "pachinko_aim" the
 ## flipper drawn back after a first shot (the flight shown on the board, the last shot's
-## mark on the power bar), "pachinko_win"
-## the moment a pocket pays out, "pachinko_over" game over. Each opens the game as the
-## level select does (App.start_game) and plays the screen's own rules
+## mark on the power bar), "pachinko_win" the moment a pocket pays out, "pachinko_over"
+## game over, "pachinko_start_fever" Fever's card (the tallest), "pachinko_reminder" a later
+## game's one-line reminder. Each opens the game as the level select does (App.start_game)
+## and plays the screen's own rules
 ## (PachinkoGame.rules) forward at 60 fps; nothing is faked.
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
@@ -13,8 +14,15 @@ const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/classic.board"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"pachinko_start", "pachinko_play", "pachinko_aim", "pachinko_win", "pachinko_over"
+	"pachinko_start",
+	"pachinko_play",
+	"pachinko_aim",
+	"pachinko_win",
+	"pachinko_over",
+	"pachinko_start_fever",
+	"pachinko_reminder",
 ]
+const FEVER := "res://levels/pachinko/fever.board"
 const FRAME := 1.0 / 60.0
 
 
@@ -24,9 +32,14 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if not shot_name in NAMES:
 		printerr("shots: pachinko_shots has no shot '%s'" % shot_name)
 		return ERR_INVALID_PARAMETER
+	var board := FEVER if shot_name == "pachinko_start_fever" else BOARD
+	if shot_name == "pachinko_reminder":
+		App.note_pachinko_rules_seen(BoardLoader.load_board(BOARD).level.board_id)
+		App.skip_seen_rules_cards = true
 	var game := await ScreenOpener.open(
-		tree, App.start_game.bind(BoardLevel.PACHINKO_NAME, BOARD), GAME_SCENE
+		tree, App.start_game.bind(BoardLevel.PACHINKO_NAME, board), GAME_SCENE
 	)
+	App.skip_seen_rules_cards = false
 	if game == null:
 		return ERR_CANT_OPEN
 	var rules := (game as PachinkoGame).rules
