@@ -189,6 +189,14 @@ func go_to_level_select(kind: String) -> void:
 		_load_in_background(game_scene)
 
 
+## Starts loading the game scene of `kind` on a worker (the title does for Play Pachinko,
+## so the board is up sooner after the press); start_game takes it from there.
+func preload_game(kind: String) -> void:
+	if GAME_SCENES.has(kind):
+		var scene_path: String = GAME_SCENES[kind]
+		_load_in_background(scene_path)
+
+
 ## Starts a game on a board.
 func start_game(kind: String, path: String) -> void:
 	if not GAME_SCENES.has(kind):

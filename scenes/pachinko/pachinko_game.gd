@@ -281,25 +281,18 @@ func _reminder_line() -> String:
 
 
 func _show_notes() -> void:
-	var lines := PackedStringArray()
-	var best := App.best_pachinko_balls(_level.board_id)
-	stats_panel.best_session = best
-	if best > 0:
-		lines.append("Best on this board: %d balls paid back" % best)
-	(
-		lines
-		. append(
-			(
-				"%s new game  ·  %s pause  ·  %s frame counter"
-				% [
-					KeyNames.of(&"game_restart", "?"),
-					KeyNames.of(&"pause", "?"),
-					KeyNames.of(&"toggle_frame_counter", "?"),
-				]
-			)
-		)
+	# the best is the stats' "Best session" line, whose place is kept from the start: a line
+	# of its own here appeared after the first game and moved the panel under it
+	stats_panel.best_session = App.best_pachinko_balls(_level.board_id)
+	stats_panel.show_stats(rules.stats(true))
+	notes.text = (
+		"%s new game  ·  %s pause  ·  %s frame counter"
+		% [
+			KeyNames.of(&"game_restart", "?"),
+			KeyNames.of(&"pause", "?"),
+			KeyNames.of(&"toggle_frame_counter", "?"),
+		]
 	)
-	notes.text = "\n".join(lines)
 
 
 func _layout() -> void:
