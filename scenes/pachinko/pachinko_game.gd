@@ -118,6 +118,7 @@ func _process(delta: float) -> void:
 	# Slow motion slows the game's clock only: the same fixed steps, fewer per frame.
 	rules.advance(delta * _juice.time_scale(rules, delta) * _bonus_view.time_scale(delta))
 	_recorder.note_frame()
+	board_view.aim_preview().held_back = _bonus_view.holds_the_stage()
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:

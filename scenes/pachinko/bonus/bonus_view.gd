@@ -11,6 +11,8 @@ const JackpotBanner := preload("res://scenes/pachinko/bonus/jackpot_banner.gd")
 const FeverGlow := preload("res://scenes/pachinko/bonus/fever_glow.gd")
 const ReachStage := preload("res://scenes/pachinko/bonus/reach_stage.gd")
 const ReachSlowMotion := preload("res://scenes/pachinko/bonus/reach_slow_motion.gd")
+## The z of the reach stage and the jackpot banner: over the balls and the aim's dots.
+const MOMENT_Z := 90
 
 var art := BonusArt.new()
 var reels := ReelDisplay.new()
@@ -43,6 +45,9 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 	board_view.move_child(fever, under + 2)
 	board_view.add_child(stage)
 	board_view.add_child(banner)
+	# the big moments over everything on the board (balls, the aim's dots drawn after them)
+	stage.z_index = MOMENT_Z
+	banner.z_index = MOMENT_Z + 1
 	(
 		SoundBank
 		. warm(
@@ -57,6 +62,12 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 			]
 		)
 	)
+
+
+## True while a big moment holds the board: the reach stage or a jackpot, round or summary
+## banner is up (the aim's dots are hidden meanwhile).
+func holds_the_stage() -> bool:
+	return stage.is_on_stage() or banner.is_showing()
 
 
 ## Shows the bonus layer of `rules` (a new game's rules each time).
