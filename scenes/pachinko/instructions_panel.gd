@@ -109,7 +109,7 @@ func show_start(level: BoardLevel) -> void:
 					(
 						(
 							"You have [b]%d balls[/b]. The stronger the shot, the farther left it"
-							+ " lands; balls in pockets pay more back."
+							+ " lands; green on the power bar marks the power that has been paying."
 						)
 						% level.cup_start_balls
 					),

@@ -41,6 +41,8 @@ var _recorder: ReplayRecorder
 var _reminder := RulesReminder.new()
 # The board's part of the screen (the last layout's).
 var _board_area := Rect2()
+# What each band of strengths has paid this game (lit on the launcher's bar).
+var _paying := PayingStrengths.new()
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -237,6 +239,8 @@ func _new_rules() -> void:
 	# the balls the game starts with, behind the card too (it read 0 there)
 	cup.set_count(_level.cup_start_balls)
 	launcher.set_power(0.0, 0.0)
+	_paying = PayingStrengths.new()
+	launcher.set_paying(_paying)
 	launcher.set_loaded(false)
 	launcher.set_handle(false, rules.handle.power)
 	(
@@ -267,6 +271,11 @@ func _new_rules() -> void:
 	else:
 		_reminder.dismiss()
 		instructions.show_start(_level)
+
+
+## What each band of launch strengths has paid this game (lit on the launcher's bar).
+func paying_strengths() -> PayingStrengths:
+	return _paying
 
 
 ## The one-line reminder shown instead of the card on later games.
@@ -388,7 +397,8 @@ func _on_loaded_changed() -> void:
 	launcher.set_loaded(true)
 
 
-func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
+func _on_ball_launched(id: int, power: float, _speed: float) -> void:
+	_paying.note_launch(id, power)
 	launcher.set_loaded(rules.loaded)
 	cup.set_count(rules.balls_to_shoot)
 	if not rules.handle.held:
@@ -396,7 +406,9 @@ func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
 	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
 
 
-func _on_ball_won(_id: int, pocket: int, payout: int, at: Vector2) -> void:
+func _on_ball_won(id: int, pocket: int, payout: int, at: Vector2) -> void:
+	_paying.note_paid(id, payout)
+	launcher.queue_redraw()
 	board_view.pockets.celebrate(pocket)
 	board_view.effects.pocket_win(at, payout)
 	cup.pour(payout)
