@@ -24,6 +24,10 @@ var settings := GameSettings.new()
 var save_data := SaveData.new()
 ## Which game the level select lists (a name of BoardLevel.KIND_NAMES).
 var level_select_kind := BoardLevel.PACHINKO_NAME
+## Whether a pachinko board the player has played from its full rules card opens with a
+## one-line reminder instead (the game does; tool scripts, tests and pictures among them,
+## start with it off so each opens on the full card whatever the user folder holds).
+var skip_seen_rules_cards := true
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 
@@ -46,6 +50,7 @@ func _ready() -> void:
 	# A tool script run with -s (converters, shots, tests) owns the arguments after `--`.
 	var engine_args := OS.get_cmdline_args()
 	if engine_args.has("-s") or engine_args.has("--script"):
+		skip_seen_rules_cards = false
 		load_player_files(SETTINGS_PATH, SAVE_PATH)
 		return
 	var code := CommandLine.run(OS.get_cmdline_user_args())
@@ -146,6 +151,24 @@ func record_pachinko_balls(board_id: String, balls: int) -> bool:
 	return save_data.record_pachinko_balls(board_id, balls)
 
 
+## True when a game on `board_id` opens with the one-line reminder, not the full rules card:
+## the player has played it from the full card before (SaveData).
+func skips_rules_card(board_id: String) -> bool:
+	return skip_seen_rules_cards and save_data.has_seen_pachinko_rules(board_id)
+
+
+## Remembers that the player played `board_id` from its full rules card.
+func note_pachinko_rules_seen(board_id: String) -> void:
+	save_data.note_pachinko_rules_seen(board_id)
+
+
+## The board last picked for a game of `kind` this run (the level select's focus goes back to
+## it), "" when none was.
+func last_board_path(kind: String) -> String:
+	var path: String = _picked_boards.get(kind, "")
+	return path
+
+
 ## Leaves whatever is running (unpausing it) for the main menu.
 func go_to_menu() -> void:
 	_change_scene(MENU_SCENE)
@@ -160,6 +183,14 @@ func go_to_level_select(kind: String) -> void:
 	if GAME_SCENES.has(kind):
 		var game_scene: String = GAME_SCENES[kind]
 		_load_in_background(game_scene)
+
+
+## Starts loading the game scene of `kind` on a worker (the title does for Play Pachinko,
+## so the board is up sooner after the press); start_game takes it from there.
+func preload_game(kind: String) -> void:
+	if GAME_SCENES.has(kind):
+		var scene_path: String = GAME_SCENES[kind]
+		_load_in_background(scene_path)
 
 
 ## Starts a game on a board.

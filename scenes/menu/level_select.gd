@@ -49,6 +49,7 @@ func _ready() -> void:
 	_shipped = _section(%Cards as GridContainer, false)
 	_mine = _section(%MyCards as GridContainer, true)
 	_focus = LevelSelectFocus.new([_shipped, _mine] as Array[CardSection], _scroll, _import, _back)
+	_focus.preferred_path = App.last_board_path(kind)
 	_back.pressed.connect(App.go_to_menu)
 	_import.pressed.connect(_dialogs.ask_import)
 	_dialogs.import_chosen.connect(_import_one)

@@ -3,7 +3,9 @@ extends RefCounted
 ## Where the keys' and the pad's focus goes on the level select, and the grids' columns it
 ## follows: as many columns as the list is wide, the cards sharing the row's width (both
 ## sections alike, so their cards line up), the arrows' neighbours (CardGridFocus), the
-## first playable card once the boards have loaded, and after a delete the next card at
+## first playable card once the boards have loaded (the board last played, when it is
+## listed and playable: a play trial came back from a board to find Classic focused), and
+## after a delete the next card at
 ## the same scroll, so the player stays where they were.
 
 ## Room between cards, across and down (the grids' separations in the scene).
@@ -19,6 +21,9 @@ var columns := 3
 ## How wide every card is drawn: the row's width shared by its cards (LevelCard.CARD_SIZE.x
 ## at least).
 var card_width := LevelCard.CARD_SIZE.x
+
+## The board the focus goes to once listed (the one last played), "" for the first card.
+var preferred_path := ""
 
 var _sections: Array[CardSection] = []
 var _scroll: ScrollContainer = null
@@ -94,9 +99,11 @@ func after_listing() -> void:
 	if _refocus_path != "":
 		_take_place_back()
 	elif not is_instance_valid(_first_focus):
-		var first := first_card()
+		var first := _starting_card()
 		_first_focus = first if first != null else _import
 		_first_focus.grab_focus()
+	elif _scroll.get_viewport().gui_get_focus_owner() == _first_focus:
+		_move_to_preferred()  # the player has not moved: the board last played, now listed
 
 
 ## Everything has loaded: the first playable card takes the focus the loading card held.
@@ -106,16 +113,41 @@ func after_loading() -> void:
 	var stuck := focused == _first_focus and focused is Button and (focused as Button).disabled
 	if focused == null or stuck:
 		take_back()
+	elif focused == _first_focus:
+		_move_to_preferred()  # the player has not moved: the board last played, now listed
 	if viewport.gui_get_focus_owner() == _shipped_first_card():
 		# the first row from its top, not scrolled to wherever the loading card sat
 		_scroll.set_deferred("scroll_vertical", 0)
 	_first_focus = viewport.gui_get_focus_owner()
 
 
-## Gives the focus to the first playable card (the Back button when there is no card).
+## Gives the focus to the board last played, else the first playable card (the Back button
+## when there is no card).
 func take_back() -> void:
-	var first := first_card()
+	var first := _starting_card()
 	(first if first != null else _back).grab_focus()
+
+
+## The card the focus starts on: the board last played when it is listed and playable, else
+## the first playable card.
+func preferred_card() -> Button:
+	for card in cards():
+		if (card as LevelCard).board_path == preferred_path and not card.disabled:
+			return card
+	return null
+
+
+func _starting_card() -> Button:
+	var preferred := preferred_card()
+	return preferred if preferred != null else first_card()
+
+
+func _move_to_preferred() -> void:
+	var preferred := preferred_card()
+	if preferred != null and preferred != _first_focus:
+		preferred.grab_focus()
+		_first_focus = preferred
+		_scroll.ensure_control_visible.call_deferred(preferred)
 
 
 ## Before a delete: remembers the card after the deleted one (or before it, for the last)

@@ -21,16 +21,19 @@ const MAX_COVER := 0.94
 const READ_SECONDS := 0.5
 ## What ending a game early does (R, the pause menu's Restart, Other boards): all three keep
 ## what it paid back for the board's best, so the card says it once for all of them.
-const SESSION_KEPT := (
-	"A new game (%s) or other boards ends this one early; what it paid back still counts"
-	+ " for your best."
-)
+const SESSION_KEPT := "A new game (%s) ends this one; what it paid back still counts for your best."
+
+## The keys that start a game from the card (PachinkoGame's start keys).
+const START_ACTIONS: Array[StringName] = [&"game_start", &"launch_charge", &"launch_handle"]
 
 ## What this board's pieces do, under the words (only at the start).
 var _legend := PieceLegend.new()
 ## Seconds since the card last came up.
 var _shown_seconds := 0.0
 var _nudge: Tween
+# The start keys already held as the card came up (the stream key held as the last ball
+# came down): ignored until let go, so a held key never skips the game's summary.
+var _held_over: Array[StringName] = []
 
 @onready var _title: Label = $Card/Margin/Box/Title
 @onready var _body: RichTextLabel = $Card/Margin/Box/Body
@@ -62,6 +65,18 @@ func accepts_start() -> bool:
 	return visible and _play.visible and _shown_seconds >= READ_SECONDS
 
 
+## True when `event` comes from a start key that was already held as the card came up: the
+## card ignores it (a play trial's held stream key skipped the game-over summary) until the
+## key is let go, and its release is swallowed too.
+func ignores_held(event: InputEvent) -> bool:
+	for action in _held_over:
+		if event.is_action(action):
+			if event.is_released():
+				_held_over.erase(action)
+			return true
+	return false
+
+
 ## Points the player at the Play button (they clicked elsewhere on the card's screen).
 func nudge() -> void:
 	if not visible or not _play.visible or not is_inside_tree():
@@ -79,7 +94,9 @@ func card_scale() -> float:
 	return _card.scale.x
 
 
-## The first screen: how to play `level`.
+## The first screen: how to play `level`, short enough to read in a few seconds (a play
+## trial spent 20 s on the long one before its first shot): how to shoot in one line, the
+## cup, the board's pieces.
 func show_start(level: BoardLevel) -> void:
 	_title.text = "Pachinko · %s" % level.display_name
 	_body.text = (
@@ -87,33 +104,14 @@ func show_start(level: BoardLevel) -> void:
 		. join(
 			PackedStringArray(
 				[
-					"You get [b]%d balls[/b] in your cup." % level.cup_start_balls,
-					(
-						"[b]One shot:[/b] press the red grip and drag up to draw the flipper back (the"
-						+ (
-							" red bar shows the power), or hold [b]%s[/b]; let go to fire."
-							% KeyNames.of(&"launch_charge", "the charge key")
-						)
-					),
+					how_to_shoot(),
 					(
 						(
-							"[b]A stream:[/b] hold the [b]handle dial[/b], [b]%s[/b] or the right"
-							+ " trigger and balls fly out at its strength, 100 a minute. Turn it with"
-							+ " [b]%s[/b] / [b]%s[/b], the wheel or a drag on the dial."
+							"You have [b]%d balls[/b]. The stronger the shot, the farther left it"
+							+ " lands; green on the power bar marks the power that has been paying."
 						)
-						% [
-							KeyNames.of(&"launch_handle", "the handle key"),
-							KeyNames.of(&"handle_weaker", "?"),
-							KeyNames.of(&"handle_stronger", "?"),
-						]
+						% level.cup_start_balls
 					),
-					(
-						"[b]Power aims:[/b] the weakest shot drops in beside the rail on the right; the"
-						+ " stronger, the farther left; full power rides over the top to the far side."
-						+ " While you aim, dots show the ball's flight to the first pin it meets, and"
-						+ " a gold mark on the power bar keeps your last shot."
-					),
-					"The game ends when the cup is empty and every ball has come down.",
 					SESSION_KEPT % KeyNames.of(&"game_restart", "the restart key"),
 				]
 			)
@@ -121,7 +119,26 @@ func show_start(level: BoardLevel) -> void:
 	)
 	_legend.show_pieces(level)
 	_legend.visible = true
-	_show_play("Play", "or press %s" % KeyNames.of(&"game_start", "the start key"))
+	_show_play("Play", "or press %s" % _start_keys())
+
+
+## How to shoot, in one line of BBCode (the start card's first line).
+static func how_to_shoot() -> String:
+	return (
+		(
+			"[b]Shoot:[/b] hold [b]%s[/b] and let go (or drag the red grip up)."
+			+ " [b]Stream:[/b] hold [b]%s[/b]."
+		)
+		% [
+			KeyNames.of(&"launch_charge", "the charge key"),
+			KeyNames.of(&"launch_handle", "the handle key"),
+		]
+	)
+
+
+## The card itself (the panel is the board's whole area), for tests of its fit.
+func card() -> Control:
+	return _card
 
 
 ## The game-over screen with the last game's numbers; `new_best` when it beat the record.
@@ -145,7 +162,7 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	lines.append("Another %d balls are waiting." % level.cup_start_balls)
 	_body.text = "\n".join(lines)
 	_legend.visible = false
-	_show_play("Play again", "or press %s" % KeyNames.of(&"game_start", "the start key"))
+	_show_play("Play again", "or press %s" % _start_keys())
 
 
 ## A board that cannot be played: says what went wrong and how to get back.
@@ -158,6 +175,17 @@ func show_problem(problem: String) -> void:
 	visible = true
 
 
+# The keys that press Play, as the footer names them.
+static func _start_keys() -> String:
+	return (
+		"%s or %s"
+		% [
+			KeyNames.of(&"game_start", "the start key"),
+			KeyNames.of(&"launch_charge", "the charge key")
+		]
+	)
+
+
 # Up with its Play button reading `words` over `footer`; the read time starts now.
 func _show_play(words: String, footer: String) -> void:
 	_play.text = words
@@ -165,6 +193,10 @@ func _show_play(words: String, footer: String) -> void:
 	_footer.text = footer
 	_shown_seconds = 0.0
 	visible = true
+	_held_over.clear()
+	for action in START_ACTIONS:
+		if Input.is_action_pressed(action):
+			_held_over.append(action)
 
 
 func _on_play_pressed() -> void:
@@ -180,4 +212,6 @@ func _fit_card() -> void:
 	var wanted := ReadableText.growth_at(SMALLEST_FONT, ReadableText.screen_scale_of(self))
 	var room := minf(size.x * MAX_COVER / _card.size.x, size.y * MAX_COVER / _card.size.y)
 	_card.pivot_offset = _card.size * 0.5
-	_card.scale = Vector2.ONE * clampf(wanted, 1.0, maxf(room, 1.0))
+	# never bigger than the panel: a card too tall for it (Fever's at 1280 × 720) is drawn
+	# smaller rather than cut off
+	_card.scale = Vector2.ONE * minf(maxf(wanted, 1.0), room)

@@ -24,6 +24,12 @@ var _bonus_view: BonusView
 var _juice: JuiceView
 var _music: PachinkoMusic
 var _recorder: ReplayRecorder
+# The one-line reminder of how to shoot on games after the first (the full card's stand-in).
+var _reminder := RulesReminder.new()
+# The board's part of the screen (the last layout's).
+var _board_area := Rect2()
+# What each band of strengths has paid this game (lit on the launcher's bar).
+var _paying := PayingStrengths.new()
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -43,6 +49,9 @@ var _recorder: ReplayRecorder
 func _ready() -> void:
 	pause_menu.restart_requested.connect(restart)
 	instructions.play_requested.connect(_start_from_card)
+	_reminder.name = "Reminder"
+	add_child(_reminder)
+	move_child(_reminder, instructions.get_index() + 1)  # under the pause menu
 	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -98,6 +107,7 @@ func _process(delta: float) -> void:
 	# Slow motion slows the game's clock only: the same fixed steps, fewer per frame.
 	rules.advance(delta * _juice.time_scale(rules, delta) * _bonus_view.time_scale(delta))
 	_recorder.note_frame()
+	board_view.aim_preview().held_back = _bonus_view.holds_the_stage()
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:
@@ -125,7 +135,9 @@ func _unhandled_input(event: InputEvent) -> void:
 		get_viewport().set_input_as_handled()
 		return
 	if rules.state != PachinkoRules.State.PLAYING:
-		if _is_click(event):
+		if instructions.ignores_held(event):
+			get_viewport().set_input_as_handled()
+		elif _is_click(event):
 			# the card goes only by its own button (or a key): point the player at it
 			instructions.nudge()
 		elif _is_start_key(event) and instructions.accepts_start():
@@ -211,8 +223,11 @@ func _new_rules() -> void:
 	_music.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
-	cup.set_count(0)
+	# the balls the game starts with, behind the card too (it read 0 there)
+	cup.set_count(_level.cup_start_balls)
 	launcher.set_power(0.0, 0.0)
+	_paying = PayingStrengths.new()
+	launcher.set_paying(_paying)
 	launcher.set_loaded(false)
 	launcher.set_handle(false, rules.handle.power)
 	(
@@ -234,35 +249,55 @@ func _new_rules() -> void:
 	)
 	_show_notes()
 	stats_panel.show_stats(rules.stats(true))
-	instructions.show_start(_level)
+	if App.skips_rules_card(_level.board_id):
+		# played from its full card before: straight into play, how to shoot in one line
+		instructions.visible = false
+		rules.start_game()
+		_reminder.show_line(_reminder_line())
+		_reminder.place(_board_area)
+	else:
+		_reminder.dismiss()
+		instructions.show_start(_level)
+
+
+## What each band of launch strengths has paid this game (lit on the launcher's bar).
+func paying_strengths() -> PayingStrengths:
+	return _paying
+
+
+## The one-line reminder shown instead of the card on later games.
+func reminder() -> RulesReminder:
+	return _reminder
+
+
+func _reminder_line() -> String:
+	return (
+		"%s   [b]%s[/b]: new game"
+		% [InstructionsPanel.how_to_shoot(), KeyNames.of(&"game_restart", "?")]
+	)
 
 
 func _show_notes() -> void:
-	var lines := PackedStringArray()
-	var best := App.best_pachinko_balls(_level.board_id)
-	stats_panel.best_session = best
-	if best > 0:
-		lines.append("Best on this board: %d balls paid back" % best)
-	(
-		lines
-		. append(
-			(
-				"%s new game  ·  %s pause  ·  %s frame counter"
-				% [
-					KeyNames.of(&"game_restart", "?"),
-					KeyNames.of(&"pause", "?"),
-					KeyNames.of(&"toggle_frame_counter", "?"),
-				]
-			)
-		)
+	# the best is the stats' "Best session" line, whose place is kept from the start: a line
+	# of its own here appeared after the first game and moved the panel under it
+	stats_panel.best_session = App.best_pachinko_balls(_level.board_id)
+	stats_panel.show_stats(rules.stats(true))
+	notes.text = (
+		"%s new game  ·  %s pause  ·  %s frame counter"
+		% [
+			KeyNames.of(&"game_restart", "?"),
+			KeyNames.of(&"pause", "?"),
+			KeyNames.of(&"toggle_frame_counter", "?"),
+		]
 	)
-	notes.text = "\n".join(lines)
 
 
 func _layout() -> void:
 	if _level == null or not is_inside_tree():  # a window closing around it resizes too
 		return
 	var area := _hud_layout.place(get_viewport_rect().size)
+	_board_area = area
+	_reminder.place(area)
 	board_view.fit(_level, area)
 	_controls.drag_scale = minf(area.size.x, area.size.y) / DESIGN_BOARD_SIDE
 	instructions.position = area.position
@@ -294,6 +329,7 @@ func _start_from_card() -> void:
 	if rules == null or rules.state == PachinkoRules.State.PLAYING:
 		return
 	rules.start_game()
+	App.note_pachinko_rules_seen(_level.board_id)
 	sounds.play(SoundBank.UI_CLICK)
 
 
@@ -329,6 +365,7 @@ func _on_game_ended(summary: Dictionary) -> void:
 	var new_best := App.record_pachinko_balls(_level.board_id, paid)
 	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
+	_reminder.dismiss()
 	instructions.show_game_over(_level, summary, best, new_best)
 	_show_notes()
 	sounds.play(SoundBank.GAME_OVER)
@@ -347,7 +384,8 @@ func _on_loaded_changed() -> void:
 	launcher.set_loaded(true)
 
 
-func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
+func _on_ball_launched(id: int, power: float, _speed: float) -> void:
+	_paying.note_launch(id, power)
 	launcher.set_loaded(rules.loaded)
 	cup.set_count(rules.balls_to_shoot)
 	if not rules.handle.held:
@@ -355,7 +393,9 @@ func _on_ball_launched(_id: int, power: float, _speed: float) -> void:
 	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
 
 
-func _on_ball_won(_id: int, pocket: int, payout: int, at: Vector2) -> void:
+func _on_ball_won(id: int, pocket: int, payout: int, at: Vector2) -> void:
+	_paying.note_paid(id, payout)
+	launcher.queue_redraw()
 	board_view.pockets.celebrate(pocket)
 	board_view.effects.pocket_win(at, payout)
 	cup.pour(payout)

@@ -1,7 +1,7 @@
 class_name SaveData
 extends RefCounted
 ## The player's best results per board: fastest maze time in each mode (easy, hard), most
-## pachinko balls won.
+## pachinko balls won; and the pachinko boards whose full rules card the player has read.
 ## Kept in a readable INI file (user://save.cfg), read as data: a board id of any text
 ## round-trips, an unusable record is dropped on its own, a damaged file is moved aside
 ## (kept for the player) and the records start empty, a file from a newer version is left
@@ -32,6 +32,8 @@ const LOAD_WORDS := {
 ## hard (bool) -> {board id: seconds}
 var _maze_times := {false: {}, true: {}}
 var _pachinko_balls := {}
+# board id -> true: the pachinko boards whose full rules card the player has played past
+var _rules_seen := {}
 var _path := ""
 # a damaged file that could not be moved aside, or one from a newer version: never written
 var _untouchable := false
@@ -43,6 +45,7 @@ func load_file(path: String) -> String:
 	_path = path
 	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
+	_rules_seen = {}
 	var loaded := PlayerFileLoad.run(path, VERSION, _read_records, LOAD_WORDS)
 	_untouchable = loaded.untouchable
 	return loaded.message
@@ -101,6 +104,20 @@ func record_pachinko_balls(board_id: String, balls: int) -> bool:
 	return before >= 0
 
 
+## True once the player has played a pachinko board from its full rules card.
+func has_seen_pachinko_rules(board_id: String) -> bool:
+	return _rules_seen.has(board_id)
+
+
+## Remembers (and saves) that the player played `board_id` from its full rules card: later
+## games there start with a one-line reminder instead.
+func note_pachinko_rules_seen(board_id: String) -> void:
+	if board_id.is_empty() or _rules_seen.has(board_id):
+		return
+	_rules_seen[board_id] = true
+	save()
+
+
 ## Writes the records to the file they were loaded from (nothing when never loaded).
 ## A file `load_file` must not write over (newer version, or damaged and not movable) is
 ## left alone: ERR_FILE_NO_PERMISSION, the records stay for this run.
@@ -114,6 +131,7 @@ func save() -> Error:
 		[MAZE_SECTIONS[false], _maze_times[false]],
 		[MAZE_SECTIONS[true], _maze_times[true]],
 		["pachinko_best_balls", _pachinko_balls],
+		["pachinko_rules_seen", _rules_seen],
 	]
 	var error := IniText.write_file(_path, IniText.format(HEADER % VERSION, sections))
 	if error != OK:
@@ -140,6 +158,10 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 			refused.append(_shown(board_id))
 		else:
 			_pachinko_balls[board_id] = int(number)
+	var seen: Dictionary = sections.get("pachinko_rules_seen", {})
+	for board_id: String in seen:
+		if not board_id.is_empty() and seen[board_id] is bool and seen[board_id]:
+			_rules_seen[board_id] = true
 	if refused.size() > MAX_LISTED:
 		var more := refused.size() - MAX_LISTED
 		refused.resize(MAX_LISTED)

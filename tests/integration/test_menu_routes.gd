@@ -99,10 +99,38 @@ func test_a_gamepad_alone_reaches_a_board_of_my_own_and_comes_back() -> void:
 	await _route_to_my_board_and_back()
 
 
+# A blind trial took 49 s from launch to its first shot, 27 of them to reach a board through
+# the list: from the title two presses now fire the first ball (Enter plays Classic; Space
+# on its rules card starts the game and draws the flipper back, let go it fires).
+func test_two_presses_from_the_title_fire_the_first_ball() -> void:
+	_keys = true
+	App.request_board("pachinko", "")  # nothing played yet this run
+	var menu := await _open(App.go_to_menu, MAIN_MENU)
+	assert_not_null(menu)
+	assert_eq(_focused_text(), "Play Pachinko", "Play is the default")
+	await _press("ui_accept")
+	var game := await _became(PACHINKO) as PachinkoGame
+	assert_not_null(game, "Enter on the title opens a board")
+	assert_eq(game.rules.level.board_id, "pachinko_classic", "Classic, for a new player")
+	assert_true(game.instructions.visible, "its rules card is up")
+	await wait_seconds(0.6)  # the card takes no key in its first half second
+	var space := _event_for("launch_charge")
+	space.set("pressed", true)
+	Input.parse_input_event(space)
+	await wait_process_frames(20)
+	assert_eq(game.rules.state, PachinkoRules.State.PLAYING, "Space starts the game")
+	space.set("pressed", false)
+	Input.parse_input_event(space)
+	await wait_process_frames(2)
+	assert_eq(game.rules.ledger.shots, 1, "and let go fires the first ball")
+
+
 func _route_to_my_board_and_back() -> void:
 	var menu := await _open(App.go_to_menu, MAIN_MENU)
 	assert_not_null(menu)
-	assert_eq(_focused_text(), "Pachinko", "the title screen focuses its first game")
+	assert_eq(_focused_text(), "Play Pachinko", "the title screen focuses Play")
+	await _press("ui_down")
+	assert_eq(_focused_text(), "Pachinko boards")
 	await _press("ui_accept")
 	var screen := await _became(LEVEL_SELECT)
 	assert_not_null(screen, "Enter / A opens the pachinko level select")

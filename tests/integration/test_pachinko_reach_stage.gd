@@ -54,12 +54,45 @@ func test_a_reach_takes_the_middle_of_the_board_in_large_numbers() -> void:
 	var digit := ReachStage.SYMBOL_FONT_SIZE * DIGIT_SHARE * screen_scale
 	assert_gte(digit, 80.0, "reel numbers %.0f px tall on screen" % digit)
 	var level := game.rules.level
-	assert_eq(stage.center(), level.ring_center, "in the middle of the board")
+	assert_eq(stage.center().x, level.ring_center.x, "on the board's middle line")
 	game.rules.bonus.reels.advance(ReelSet.REACH_EXTRA + 1.0)
 	stage._process(ReachStage.HOLD_MISS + ReachStage.GROW_SECONDS + 0.1)
 	stage._process(ReachStage.GROW_SECONDS + 0.1)
 	assert_false(stage.is_on_stage(), "gone once the last reel stopped and the moment passed")
 	game.free()  # before its window, whose last size change it would answer
+
+
+# A play trial: "REACH!" covered half the board. The stage now stands inside the ring, covers
+# none of the pockets, start pockets or attackers being played for (a tulip may sit under it:
+# Hanami has no room between its upper two), and at most a quarter of the ring.
+func test_the_reach_stage_leaves_the_pockets_and_most_of_the_board_in_view() -> void:
+	for board in ["fever", "hanami", "tulips", "windmills", "classic"]:
+		var level := BoardLoader.load_board("res://levels/pachinko/%s.board" % board).level
+		if not BonusGeometry.has_reels(level):
+			continue
+		var stage := ReachStage.new()
+		add_child_autofree(stage)
+		stage.bind(level, BonusMachine.new(level, BoardWorldFactory.build(level), 1))
+		var rect := stage.stage_rect()
+		for corner: Vector2 in [rect.position, rect.end, Vector2(rect.end.x, rect.position.y)]:
+			var inside := corner.distance_to(level.ring_center) < level.ring_radius
+			assert_true(inside, "%s: the stage %s stays inside the ring" % [board, rect])
+		var pieces: Array[PocketSpec] = []
+		pieces.append_array(level.pockets)
+		for spec in level.bonus_pockets:
+			if spec.role != BonusPocketSpec.Role.TULIP:
+				pieces.append(spec)
+		for piece in pieces:
+			var mouth := Rect2(
+				piece.position - Vector2(piece.width, piece.depth) * 0.5,
+				Vector2(piece.width, piece.depth)
+			)
+			assert_false(
+				rect.intersects(mouth),
+				"%s: the stage %s covers a pocket at %s" % [board, rect, piece.position]
+			)
+		var share := rect.get_area() / (PI * level.ring_radius * level.ring_radius)
+		assert_lte(share, 0.25, "%s: the stage covers %.0f%% of the ring" % [board, share * 100.0])
 
 
 func test_a_reach_slows_the_game_clock_and_gives_it_back() -> void:
@@ -101,3 +134,43 @@ func test_reach_and_jackpot_sound_and_announce_their_rounds() -> void:
 	assert_string_contains(banner.caption(), "+150 BALLS")
 	assert_string_contains(banner.caption(), "%d rounds played" % JackpotRounds.ROUNDS)
 	assert_string_contains(banner.caption(), "balls paid back", "with the game's total")
+
+
+# A play trial: the ROUND caption was clipped under the rim and the aim's dots were drawn
+# over it. Now it sits inside the ring's inner edge on a plaque over everything on the
+# board, and the dots hide while a jackpot or round banner (or the reach stage) is up.
+func test_the_round_caption_sits_inside_the_ring_over_everything_and_hides_the_aim() -> void:
+	var game := _fever_game()
+	await wait_process_frames(1)
+	var rules := game.rules
+	var level := rules.level
+	rules.start_game()
+	rules.bonus.rounds.begin()
+	var fever := game.bonus_view().fever
+	assert_string_contains(fever.caption(), "ROUND 1")
+	var plaque := fever.caption_rect()
+	var inner := level.ring_radius - FeverGlow.RING_WIDTH
+	for corner: Vector2 in [
+		plaque.position,
+		plaque.end,
+		Vector2(plaque.end.x, plaque.position.y),
+		Vector2(plaque.position.x, plaque.end.y)
+	]:
+		assert_lt(
+			corner.distance_to(level.ring_center), inner, "the caption %s inside the rim" % plaque
+		)
+	var aim := game.board_view.aim_preview()
+	assert_gt(fever.plaque().z_index, aim.z_index, "drawn over the aim's dots")
+	assert_gt(fever.plaque().z_index, game.board_view.get_node("Balls").z_index, "and the balls")
+	game.bonus_view().banner.show_round(
+		level.ring_center, level.ring_radius, 2, JackpotRounds.ROUNDS
+	)
+	rules.begin_charge()
+	rules.set_power(50.0)
+	game._process(FRAME)
+	aim._process(1.0)
+	assert_false(aim.is_showing(), "no aim dots while the round banner is up")
+	game.bonus_view().banner._process(10.0)
+	game._process(FRAME)
+	aim._process(1.0)
+	assert_true(aim.is_showing(), "back once it has gone")

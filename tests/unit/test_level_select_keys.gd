@@ -234,3 +234,19 @@ static func _remove_tree(path: String) -> void:
 	for file_name in DirAccess.get_files_at(path):
 		DirAccess.remove_absolute(path.path_join(file_name))
 	DirAccess.remove_absolute(path)
+
+
+# A play trial went back to the list from Hanami and found Classic focused: the board last
+# played takes the focus, a shipped one and one of the player's own alike.
+func test_the_board_last_played_takes_the_focus() -> void:
+	var mine := _copy("a_mine.board")
+	var kept := App.last_board_path("pachinko")
+	for played: String in ["res://levels/pachinko/hanami.board", mine]:
+		App.request_board("pachinko", played)
+		var screen: LevelSelect = await _open()
+		var focused := get_viewport().gui_get_focus_owner()
+		assert_true(focused is LevelCard, "a card has the focus")
+		if focused is LevelCard:
+			assert_eq((focused as LevelCard).board_path, played, "the board last played")
+		screen.free()
+	App.request_board("pachinko", kept if not kept.is_empty() else CLASSIC)

@@ -19,9 +19,10 @@ const NAMED := {
 const USER_BOARD := "user://boards/pachinko/zz_test_markup_hostile.board"
 
 ## Every script or scene that makes a BBCode label, reviewed: only the instructions panel
-## shows file text (escaped above); the stats panel shows numbers only. A new one must be
-## checked the same way and added here.
+## shows file text (escaped above); the stats panel shows numbers only, the rules reminder
+## key names only. A new one must be checked the same way and added here.
 const REVIEWED_BBCODE := [
+	"res://scenes/pachinko/hud/rules_reminder.gd",
 	"res://scenes/pachinko/hud/stats_panel.gd",
 	"res://scenes/pachinko/instructions_panel.gd",
 	"res://scenes/pachinko/instructions_panel.tscn",

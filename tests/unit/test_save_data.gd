@@ -70,3 +70,20 @@ func test_new_best_pachinko_only_when_a_game_beats_an_earlier_one() -> void:
 	assert_eq(data.best_pachinko_balls("fever"), 9)
 	assert_false(data.record_pachinko_balls("hanami", 120), "a first game on a board sets it")
 	assert_true(data.record_pachinko_balls("hanami", 121))
+
+
+# The full pachinko rules card comes once per board: which boards' cards were played past
+# is kept in the file, and a line that is not a plain yes is left out without a problem.
+func test_the_rules_cards_seen_survive_a_reload() -> void:
+	var data := _loaded()
+	assert_false(data.has_seen_pachinko_rules("pachinko_fever"))
+	data.note_pachinko_rules_seen("pachinko_fever")
+	var again := _loaded()
+	assert_true(again.has_seen_pachinko_rules("pachinko_fever"))
+	assert_false(again.has_seen_pachinko_rules("pachinko_hanami"))
+	_write(
+		'[meta]\nversion=2\n\n[pachinko_rules_seen]\npachinko_fever=true\npachinko_hanami="maybe"\n'
+	)
+	var read := _loaded()
+	assert_true(read.has_seen_pachinko_rules("pachinko_fever"))
+	assert_false(read.has_seen_pachinko_rules("pachinko_hanami"))

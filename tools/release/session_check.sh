@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A player's two sessions on the release folder, scripted with the keyboard under Xvfb on a
 # small screen (900 x 700), with a fresh home folder:
-#   menu -> Pachinko -> level select -> its first board -> pause -> back to menu ->
+#   menu -> Pachinko boards -> level select -> its first board -> pause -> back to menu ->
 #   Tilt Maze -> level select -> back -> Settings (master volume one step down) -> back -> Quit,
 # then the same again. Checks that
 #   (1) the window fits the screen (never larger than 900 x 700),
@@ -86,7 +86,7 @@ session() { # number
 	else
 		fail "session $1: the window is ${width:-?}x${height:-?}, larger than the 900x700 screen"
 	fi
-	keys 6 Return                        # Pachinko: its level select
+	keys 6 Down Return                   # Pachinko boards (under Play Pachinko): its list
 	shoot "$1" 2-pachinko-boards
 	keys 8 Return                        # its first board
 	shoot "$1" 3-pachinko
@@ -94,8 +94,8 @@ session() { # number
 	shoot "$1" 4-pause
 	keys 4 Down Down Down Return         # Other boards, the last button: pachinko's list
 	shoot "$1" 5-other-boards
-	keys 4 Escape                        # back to the title screen, on Pachinko
-	keys 6 Down Return                   # Tilt Maze: its level select
+	keys 4 Escape                        # back to the title screen, on Play Pachinko
+	keys 6 Down Down Return              # Tilt Maze: its level select
 	shoot "$1" 6-maze-boards
 	keys 4 Escape                        # back to the title screen, on Tilt Maze
 	keys 3 Down Return                   # Settings

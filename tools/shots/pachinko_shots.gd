@@ -2,10 +2,12 @@ extends RefCounted
 ## The pachinko shots: "pachinko_start" the instructions, "pachinko_play" a stream
 ## from the held handle with struck pins lit and the flipper drawn back, "pachinko_aim" the
 ## flipper drawn back after a first shot (the flight shown on the board, the last shot's
-## mark on the power bar), "pachinko_win"
-## the moment a pocket pays out, "pachinko_over" game over. Each opens the game as the
-## level select does (App.start_game) and plays the screen's own rules
-## (PachinkoGame.rules) forward at 60 fps; nothing is faked.
+## mark on the power bar), "pachinko_win" the moment a pocket pays out, "pachinko_over"
+## game over, "pachinko_start_fever" Fever's card (the tallest), "pachinko_reminder" a later
+## game's one-line reminder, "pachinko_paying" Fever streamed at three strengths, the power
+## bar lit green by the strengths that paid. Each opens the game as the level select does
+## (App.start_game) and plays the screen's own rules (PachinkoGame.rules) forward at 60 fps;
+## nothing is faked.
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
@@ -13,8 +15,16 @@ const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/classic.board"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"pachinko_start", "pachinko_play", "pachinko_aim", "pachinko_win", "pachinko_over"
+	"pachinko_start",
+	"pachinko_play",
+	"pachinko_aim",
+	"pachinko_win",
+	"pachinko_over",
+	"pachinko_start_fever",
+	"pachinko_reminder",
+	"pachinko_paying",
 ]
+const FEVER := "res://levels/pachinko/fever.board"
 const FRAME := 1.0 / 60.0
 
 
@@ -24,9 +34,14 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if not shot_name in NAMES:
 		printerr("shots: pachinko_shots has no shot '%s'" % shot_name)
 		return ERR_INVALID_PARAMETER
+	var board := FEVER if shot_name in ["pachinko_start_fever", "pachinko_paying"] else BOARD
+	if shot_name == "pachinko_reminder":
+		App.note_pachinko_rules_seen(BoardLoader.load_board(BOARD).level.board_id)
+		App.skip_seen_rules_cards = true
 	var game := await ScreenOpener.open(
-		tree, App.start_game.bind(BoardLevel.PACHINKO_NAME, BOARD), GAME_SCENE
+		tree, App.start_game.bind(BoardLevel.PACHINKO_NAME, board), GAME_SCENE
 	)
+	App.skip_seen_rules_cards = false
 	if game == null:
 		return ERR_CANT_OPEN
 	var rules := (game as PachinkoGame).rules
@@ -48,6 +63,14 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 			rules.begin_charge()
 			rules.set_power(52.0)
 			(game as PachinkoGame).board_view.aim_preview()._process(0.5)
+		"pachinko_paying":
+			rules.start_game()
+			rules.handle.grip()
+			for strength: float in [30.0, 55.0, 72.0]:
+				rules.handle.set_power(strength)
+				for frame in 60 * 30:
+					rules.advance(FRAME)
+			rules.handle.let_go()
 		"pachinko_win":
 			if not _win(rules):
 				printerr("shots: pachinko_win: no pocket paid out in 90 s of play")

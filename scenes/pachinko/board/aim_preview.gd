@@ -17,6 +17,11 @@ const DOT := Color(1.0, 1.0, 1.0, 0.8)
 const DOT_SHADE := Color(0.05, 0.02, 0.12, 0.6)
 const LANDING := Color("ffd34d")
 
+## True while a big moment (the reach stage, a jackpot or round banner) holds the board: the
+## flight is hidden (a play trial saw the dots drawn over the ROUND banner). PachinkoGame
+## sets it every frame from BonusView.holds_the_stage().
+var held_back := false
+
 var _rules: PachinkoRules
 var _preview: LaunchPreview
 var _previewed: BoardLevel
@@ -104,7 +109,7 @@ func _process(delta: float) -> void:
 		_handle_power = _rules.handle.power
 		_turned_left = SHOW_AFTER_TURN
 	_turned_left = maxf(_turned_left - delta, 0.0)
-	var aimed := aimed_power()
+	var aimed := -1.0 if held_back else aimed_power()
 	if aimed >= 0.0:
 		_power = aimed
 		_handle = not _rules.drawing

@@ -6,6 +6,9 @@ extends Node
 ## the jackpot's fanfare and rounds, tulips opening), and slows the game's clock for a
 ## reach (`time_scale`).
 
+## The z of the reach stage and the jackpot banner: over the balls and the aim's dots.
+const MOMENT_Z := 90
+
 var art := BonusArt.new()
 var reels := ReelDisplay.new()
 var banner := JackpotBanner.new()
@@ -37,6 +40,9 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 	board_view.move_child(fever, under + 2)
 	board_view.add_child(stage)
 	board_view.add_child(banner)
+	# the big moments over everything on the board (balls, the aim's dots drawn after them)
+	stage.z_index = MOMENT_Z
+	banner.z_index = MOMENT_Z + 1
 	(
 		SoundBank
 		. warm(
@@ -51,6 +57,12 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 			]
 		)
 	)
+
+
+## True while a big moment holds the board: the reach stage or a jackpot, round or summary
+## banner is up (the aim's dots are hidden meanwhile).
+func holds_the_stage() -> bool:
+	return stage.is_on_stage() or banner.is_showing()
 
 
 ## Shows the bonus layer of `rules` (a new game's rules each time).

@@ -1,8 +1,10 @@
 class_name ReachStage
 extends Node2D
 ## The reach on centre stage: when the first two reels match, the reels come out of their
-## small window to the middle of the board, large (each reel's number SYMBOL_FONT_SIZE board
-## pixels, about 110 px tall at 1280 × 720), the last reel slowing down under "REACH!";
+## small window to the board's upper middle, large (each reel's number SYMBOL_FONT_SIZE board
+## pixels, about 81 px tall at 1280 × 720), the last reel slowing down under "REACH!";
+## it stands above the pockets under the middle (a play trial found the old stage, 110 px
+## numbers in the very middle, hid half the board and the pockets being played for);
 ## on a jackpot the three numbers flash gold under "JACKPOT!" a moment before the stage
 ## goes. Drawn over the balls; play goes on underneath (slowed by ReachSlowMotion).
 
@@ -12,10 +14,17 @@ const GROW_SECONDS := 0.25
 const HOLD_MISS := 0.7
 const HOLD_JACKPOT := 1.6
 ## One reel's box, board pixels, and the gap between two.
-const BOX := Vector2(130.0, 176.0)
-const GAP := 14.0
+const BOX := Vector2(92.0, 124.0)
+const GAP := 10.0
 ## The numbers' font size, board pixels (a digit is about 0.7 of it tall).
-const SYMBOL_FONT_SIZE := 156
+const SYMBOL_FONT_SIZE := 124
+## "REACH!" / "JACKPOT!" over the reels, font size in board pixels, and the room it takes.
+const TITLE_SIZE := 44
+const TITLE_ROOM := 52.0
+## Room kept between the stage and the pockets under it, board pixels.
+const CLEARANCE := 14.0
+## The stage's frame around the reels' panel.
+const FRAME := 10.0
 
 var _machine: BonusMachine
 var _center := Vector2.ZERO
@@ -27,10 +36,10 @@ var _jackpot := false
 var _clock := 0.0
 
 
-## Stages `machine`'s reaches in the middle of `level`'s ring.
+## Stages `machine`'s reaches in `level`'s ring, above the pockets under its middle.
 func bind(level: BoardLevel, machine: BonusMachine) -> void:
 	_machine = machine
-	_center = level.ring_center
+	_center = place_on(level)
 	_shown = 0.0
 	_hold = -1.0
 	machine.reach_ended.connect(_on_reach_ended)
@@ -39,9 +48,47 @@ func bind(level: BoardLevel, machine: BonusMachine) -> void:
 	queue_redraw()
 
 
-## Where the reels stand while a reach lasts: the middle of the board (ring centre).
+## Where the reels stand while a reach lasts (the panel's centre, board pixels).
 func center() -> Vector2:
 	return _center
+
+
+## The whole stage at full size ("REACH!" and the reels' frame), board pixels.
+func stage_rect() -> Rect2:
+	return _rect_at(_center)
+
+
+## Where the stage's centre goes on `level`: on the ring's middle line, as low as it can
+## stand without covering a pocket or bonus pocket under it (CLEARANCE above the highest one
+## in its way; tulips may sit under it: Hanami has no room between its upper tulips), and
+## never so high that its top leaves the ring.
+static func place_on(level: BoardLevel) -> Vector2:
+	var middle := level.ring_center
+	var half := _rect_at(Vector2.ZERO)
+	var lowest := middle.y + level.ring_radius * 0.2  # no piece in the way: a little high
+	var pieces: Array[PocketSpec] = []
+	pieces.append_array(level.pockets)
+	for spec in level.bonus_pockets:
+		if spec != null and spec.role != BonusPocketSpec.Role.TULIP:
+			pieces.append(spec)
+	for piece in pieces:
+		if piece == null:
+			continue
+		var reach := half.size.x * 0.5 + piece.width * 0.5 + CLEARANCE
+		var piece_top := piece.position.y - maxf(piece.depth, piece.width) * 0.5 - CLEARANCE
+		if absf(piece.position.x - middle.x) < reach and piece_top > middle.y - level.ring_radius:
+			lowest = minf(lowest, piece_top - half.end.y)
+	var highest := middle.y - level.ring_radius * 0.84 - half.position.y
+	return Vector2(middle.x, maxf(lowest, highest))
+
+
+static func _rect_at(middle: Vector2) -> Rect2:
+	var width := BOX.x * ReelSet.REELS + GAP * (ReelSet.REELS + 1) + FRAME * 2.0
+	var height := BOX.y + GAP * 2.0 + FRAME * 2.0
+	return Rect2(
+		middle + Vector2(-width * 0.5, -height * 0.5 - TITLE_ROOM),
+		Vector2(width, height + TITLE_ROOM)
+	)
 
 
 ## True while the stage shows (coming in, on, or going).
@@ -79,8 +126,8 @@ func _draw() -> void:
 	var pulse := 0.5 + 0.5 * sin(_clock * 10.0)
 	var won := _hold > 0.0 and _jackpot
 	var rim := Color("ffd84a") if won else Color(1.0, 0.35 + 0.3 * pulse, 0.2)
-	draw_rect(panel.grow(10.0), Color(rim, 0.85 * alpha))
-	draw_rect(panel, Color(0.03, 0.02, 0.07, 0.93 * alpha))
+	draw_rect(panel.grow(FRAME), Color(rim, 0.85 * alpha))
+	draw_rect(panel, Color(0.03, 0.02, 0.07, 0.88 * alpha))
 	var font := ThemeDB.fallback_font
 	for reel in ReelSet.REELS:
 		var box := Rect2(panel.position + Vector2(GAP + reel * (BOX.x + GAP), GAP), BOX)
@@ -115,18 +162,17 @@ func _draw() -> void:
 			HORIZONTAL_ALIGNMENT_LEFT,
 			-1,
 			SYMBOL_FONT_SIZE,
-			12,
+			10,
 			Color(0, 0, 0, alpha)
 		)
 		draw_string(
 			font, base, text, HORIZONTAL_ALIGNMENT_LEFT, -1, SYMBOL_FONT_SIZE, Color(color, alpha)
 		)
 	var title := "JACKPOT!" if won else "REACH!"
-	var title_size := 64
-	var title_width := font.get_string_size(title, HORIZONTAL_ALIGNMENT_LEFT, -1, title_size).x
-	var at := Vector2(-title_width * 0.5, panel.position.y - 26.0)
+	var title_width := font.get_string_size(title, HORIZONTAL_ALIGNMENT_LEFT, -1, TITLE_SIZE).x
+	var at := Vector2(-title_width * 0.5, panel.position.y - FRAME - 12.0)
 	draw_string_outline(
-		font, at, title, HORIZONTAL_ALIGNMENT_LEFT, -1, title_size, 12, Color(0.3, 0.0, 0.05, alpha)
+		font, at, title, HORIZONTAL_ALIGNMENT_LEFT, -1, TITLE_SIZE, 10, Color(0.3, 0.0, 0.05, alpha)
 	)
-	draw_string(font, at, title, HORIZONTAL_ALIGNMENT_LEFT, -1, title_size, Color(rim, alpha))
+	draw_string(font, at, title, HORIZONTAL_ALIGNMENT_LEFT, -1, TITLE_SIZE, Color(rim, alpha))
 	draw_set_transform(Vector2.ZERO)

@@ -29,6 +29,9 @@ const DIAL_SWEEP_DEG := 270.0
 const STREAM := Color("6cf07a")
 ## The mark on the bar at the last single shot's power.
 const LAST_SHOT := Color("ffd34d")
+## The strip by each band of strengths that paid this game, and its width on the bar.
+const PAYING := Color("4be37a")
+const PAYING_WIDTH := 12.0
 ## Font sizes of the launcher's words: the status line, and the rest (the hint beside the
 ## bar, POWER under it, HANDLE under the dial), which is the smallest text of the panel.
 const STATUS_FONT_SIZE := 16
@@ -42,6 +45,7 @@ var _hint := ""
 var _handle_held := false
 var _handle_power := 0.0
 var _last_shot := -1.0
+var _paying: PayingStrengths
 
 
 ## Shows the current drawback.
@@ -54,6 +58,13 @@ func set_power(power: float, degrees: float) -> void:
 ## Marks `power` on the bar as the last single shot's, so a good shot can be repeated.
 func set_last_shot(power: float) -> void:
 	_last_shot = power
+	queue_redraw()
+
+
+## Lights the bands of the bar whose strengths have been paying this game (`paying` is the
+## game's tally; the panel reads it each time it draws).
+func set_paying(paying: PayingStrengths) -> void:
+	_paying = paying
 	queue_redraw()
 
 
@@ -186,6 +197,7 @@ func _draw_bar() -> void:
 	var filled := Rect2(BAR.position + Vector2(0, BAR.size.y - fill), Vector2(BAR.size.x, fill))
 	draw_rect(filled, RED)
 	draw_rect(Rect2(filled.position, Vector2(6, filled.size.y)), RED.lightened(0.35))
+	_draw_paying()
 	if _last_shot >= 0.0:
 		# the last shot's mark: a gold line across the bar and a notch pointing at it
 		var y := BAR.end.y - BAR.size.y * clampf(_last_shot / 100.0, 0.0, 1.0)
@@ -215,6 +227,29 @@ func _draw_bar() -> void:
 		SMALL_FONT_SIZE,
 		Color("e9e3ff")
 	)
+
+
+# The strengths that paid this game: a green strip down the bar's right side by each band
+# that paid back, the brighter the more it paid a ball, the best one edged in white.
+func _draw_paying() -> void:
+	if _paying == null:
+		return
+	var best := _paying.best_band()
+	if best < 0:
+		return
+	var top := _paying.return_of(best)
+	var band_height := BAR.size.y / PayingStrengths.BANDS
+	for band in PayingStrengths.BANDS:
+		var share := _paying.return_of(band) / top
+		if share <= 0.0:
+			continue
+		var strip := Rect2(
+			Vector2(BAR.end.x - PAYING_WIDTH, BAR.end.y - band_height * (band + 1) + 1.0),
+			Vector2(PAYING_WIDTH, band_height - 2.0)
+		)
+		draw_rect(strip, Color(PAYING, 0.3 + 0.7 * share))
+		if band == best:
+			draw_rect(strip.grow(1.0), Color.WHITE, false, 1.5)
 
 
 func _draw_lever() -> void:

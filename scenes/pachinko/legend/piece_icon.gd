@@ -2,7 +2,9 @@ class_name PieceIcon
 extends Control
 ## A small drawing of one kind of board piece, as it looks on the board: a plain pocket's
 ## cup, a bonus pocket drawn by BonusPainter (a tulip with its petals open, so a player
-## sees what a catch does), or the board's first windmill drawn by WindmillPainter.
+## sees what a catch does), or the board's first windmill drawn by WindmillPainter. A pocket
+## takes its colours from the board's machine (FasciaBook), as the pockets on the board do:
+## Windmills' card showed a red pocket beside the board's blue ones.
 
 ## Room for the drawing, px.
 const SIZE := Vector2(64.0, 50.0)
@@ -16,6 +18,11 @@ func _init(level: BoardLevel, piece: BoardPieces.Piece) -> void:
 	_piece = piece
 	custom_minimum_size = SIZE
 	mouse_filter = Control.MOUSE_FILTER_IGNORE
+
+
+## The colour of the pocket's petals in the drawing: the board's machine's (its pockets').
+func pocket_colour() -> Color:
+	return FasciaBook.palette_of(_level.fascia).petal
 
 
 func _draw() -> void:
@@ -58,14 +65,16 @@ func _draw_pocket() -> void:
 		var a := PI - PI * float(s) / 14.0
 		rim.append(bottom + Vector2(cos(a), sin(a)) * half)
 	rim.append(top + Vector2(half, 0.0))
-	draw_polyline(rim, PocketArt.PETAL.darkened(0.4), 8.0, true)
-	draw_polyline(rim, PocketArt.PETAL, 5.0, true)
-	draw_polyline(rim, PocketArt.PETAL_LIGHT, 1.5, true)
+	var palette := FasciaBook.palette_of(_level.fascia)
+	var petal := pocket_colour()
+	draw_polyline(rim, petal.darkened(0.4), 8.0, true)
+	draw_polyline(rim, petal, 5.0, true)
+	draw_polyline(rim, palette.petal_light, 1.5, true)
 	for side: float in [-1.0, 1.0]:
 		var root := top + Vector2(side * half, 0.0)
-		var petal := PackedVector2Array(
+		var leaf := PackedVector2Array(
 			[root, root + Vector2(side * 10.0, -6.0), root + Vector2(side * 4.0, -11.0), root]
 		)
-		draw_colored_polygon(petal, PocketArt.PETAL)
-		draw_polyline(petal, PocketArt.GOLD, 1.5, true)
-	draw_circle(bottom + Vector2(0.0, half - 3.0), 2.5, PocketArt.GOLD)
+		draw_colored_polygon(leaf, petal)
+		draw_polyline(leaf, palette.pocket_trim, 1.5, true)
+	draw_circle(bottom + Vector2(0.0, half - 3.0), 2.5, palette.pocket_trim)

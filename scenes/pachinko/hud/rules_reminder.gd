@@ -1,0 +1,73 @@
+class_name RulesReminder
+extends PanelContainer
+## The one-line reminder of how to shoot, over the top of the board, on every game after the
+## first on a board (the first has the full rules card). It never blocks play: it ignores
+## the mouse and fades away after SHOWN_SECONDS.
+
+## Seconds the line stays fully on the screen before it fades.
+const SHOWN_SECONDS := 5.0
+## Seconds of its fade.
+const FADE_SECONDS := 1.0
+const FONT_SIZE := 18
+
+var _line := RichTextLabel.new()
+var _fade: Tween
+# The board's area the line is centred over (its size settles after its text is set).
+var _area := Rect2()
+
+
+func _init() -> void:
+	mouse_filter = Control.MOUSE_FILTER_IGNORE
+	visible = false
+	var style := StyleBoxFlat.new()
+	style.bg_color = Color(0.086, 0.055, 0.16, 0.88)
+	style.border_color = Color(0.79, 0.63, 0.29)
+	style.set_border_width_all(2)
+	style.set_corner_radius_all(10)
+	style.set_content_margin_all(8.0)
+	style.content_margin_left = 16.0
+	style.content_margin_right = 16.0
+	add_theme_stylebox_override(&"panel", style)
+	_line.bbcode_enabled = true
+	_line.fit_content = true
+	_line.autowrap_mode = TextServer.AUTOWRAP_OFF
+	_line.scroll_active = false
+	_line.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_line.add_theme_font_size_override(&"normal_font_size", FONT_SIZE)
+	_line.add_theme_font_size_override(&"bold_font_size", FONT_SIZE)
+	add_child(_line)
+	minimum_size_changed.connect(func() -> void: place(_area))
+
+
+## Shows `bbcode` (one line) and fades it out after SHOWN_SECONDS.
+func show_line(bbcode: String) -> void:
+	_line.text = bbcode
+	visible = true
+	modulate.a = 1.0
+	if _fade != null:
+		_fade.kill()
+	if not is_inside_tree():
+		return
+	_fade = create_tween()
+	_fade.tween_interval(SHOWN_SECONDS)
+	_fade.tween_property(self, "modulate:a", 0.0, FADE_SECONDS)
+	_fade.tween_callback(hide)
+
+
+## Takes the line away at once (a card came up over the board).
+func dismiss() -> void:
+	if _fade != null:
+		_fade.kill()
+	visible = false
+
+
+## The line shown, without its markup (for tests).
+func text() -> String:
+	return _line.get_parsed_text()
+
+
+## Places the line centred across the top of `area` (the board's area).
+func place(area: Rect2) -> void:
+	_area = area
+	size = get_combined_minimum_size()
+	position = Vector2(area.get_center().x - size.x * 0.5, area.position.y + 12.0)
