@@ -232,20 +232,24 @@ func _write_queue() -> String:
 
 
 func _arguments(board: String, id: int) -> PackedStringArray:
-	var args := PackedStringArray(
-		[
-			"--headless",
-			"--quiet",
-			"--path",
-			ProjectSettings.globalize_path("res://"),
-			"--",
-			"--analyze=pachinko",
-			"--board=%s" % board,
-			"--shots=%d" % plan.shots,
-			"--seed=%d" % plan.rng_seed,
-			"--queue=%s" % _folder,
-			"--worker-id=%d" % id,
-		]
+	var args := PackedStringArray(["--headless", "--quiet"])
+	# The editor build runs the project folder; an exported game loads the pack beside its
+	# binary by itself, and a release template refuses --path.
+	if OS.has_feature("editor"):
+		args.append_array(PackedStringArray(["--path", ProjectSettings.globalize_path("res://")]))
+	(
+		args
+		. append_array(
+			[
+				"--",
+				"--analyze=pachinko",
+				"--board=%s" % board,
+				"--shots=%d" % plan.shots,
+				"--seed=%d" % plan.rng_seed,
+				"--queue=%s" % _folder,
+				"--worker-id=%d" % id,
+			]
+		)
 	)
 	if plan.played:
 		args.append("--played")

@@ -133,6 +133,10 @@ func test_workers_give_the_report_of_threads_here() -> void:
 	if not AnalysisWorker.available():
 		pass_test("no worker process on this platform")
 		return
+	if OS.has_feature("release_tests"):
+		# a worker started from the test pack's binary would open the pack's GUT runner
+		pass_test("workers are started from the game's own binary, not the test pack's")
+		return
 	var json := ProjectSettings.globalize_path("res://build/test_analysis/pachinko_fever.json")
 	var reports: Array[Dictionary] = []
 	for workers: int in [0, 2]:

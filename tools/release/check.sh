@@ -122,12 +122,13 @@ else
 	sleep 15
 	engine=$(pgrep -f "^$game/engine/board-studio --library-path" | head -n 1)
 	menu_light=$(shoot ":$n" menu)
-	# Tilt Maze (second button), then its first board once the level select has loaded it:
+	# Tilt Maze (third button, under Play Pachinko and Pachinko boards), then its first board
+	# once the level select has loaded it:
 	# Enter until the light maze board fills the screen (the menus are dark), 40 s at most.
 	maze_light=0
 	window=$(DISPLAY=":$n" xdotool search --name "Board Studio" 2>/dev/null | head -n 1)
 	if [ -n "$window" ]; then
-		DISPLAY=":$n" xdotool windowfocus "$window" key Down sleep 0.5 key Return
+		DISPLAY=":$n" xdotool windowfocus "$window" key Down sleep 0.3 key Down sleep 0.5 key Return
 		for _ in $(seq 20); do
 			sleep 2
 			maze_light=$(shoot ":$n" maze)
