@@ -105,7 +105,9 @@ func start() -> bool:
 	if board.is_empty():
 		board = AnalysisWorker.FOLDER.path_join(_folder.get_file()).path_join("board.board")
 	for k in mini(workers, _names.size()):
-		var pid := OS.create_process(OS.get_executable_path(), _arguments(board, k))
+		var pid := OS.create_process(
+			OS.get_executable_path(), _program_prefix() + _arguments(board, k)
+		)
 		_pids.append(pid if pid > 0 else -1)
 		_beats.append("")
 		_beat_at.append(Time.get_ticks_msec())
@@ -229,6 +231,24 @@ func _write_queue() -> String:
 	_counts.resize(_names.size())
 	_open_counts.resize(_names.size())
 	return ""
+
+
+## What goes before a worker's own arguments. In the release folder this process is the
+## bundled loader named like the game (engine/board-studio, beside board-studio.pck and the
+## engine binary `godot`), so a worker is the same loader given the libraries and the engine;
+## the loader runs the engine in its own process, so the pid it gets can still be killed.
+static func _program_prefix() -> PackedStringArray:
+	var exe := OS.get_executable_path()
+	var folder := exe.get_base_dir()
+	var engine := folder.path_join("godot")
+	var pack := exe.get_basename() + ".pck"
+	if (
+		exe.get_file() != "godot"
+		and FileAccess.file_exists(engine)
+		and FileAccess.file_exists(pack)
+	):
+		return PackedStringArray(["--library-path", folder.path_join("lib"), engine])
+	return PackedStringArray()
 
 
 func _arguments(board: String, id: int) -> PackedStringArray:
