@@ -58,7 +58,7 @@ static func run(plan: AnalysisPlan, folder: String, id: int) -> int:
 			OS.delay_msec(IDLE_MS)
 			continue
 		beats += 1
-		_replace(folder.path_join("beat_%d" % id), str(beats).to_utf8_buffer())
+		SafeWrite.write_bytes(folder.path_join("beat_%d" % id), str(beats).to_utf8_buffer())
 		_fault(id, folder, parent_pid)
 		var runs: Array[AnalysisPlan] = [plan]
 		if with_open:
@@ -77,7 +77,9 @@ static func run(plan: AnalysisPlan, folder: String, id: int) -> int:
 				if moved != said:
 					said = moved
 					beats += 1
-					_replace(folder.path_join("beat_%d" % id), str(beats).to_utf8_buffer())
+					SafeWrite.write_bytes(
+						folder.path_join("beat_%d" % id), str(beats).to_utf8_buffer()
+					)
 				if not _wanted(folder, parent_pid):
 					analysis.cancel()
 					while not analysis.poll():
@@ -90,10 +92,18 @@ static func run(plan: AnalysisPlan, folder: String, id: int) -> int:
 		# run's file is there.
 		if (
 			with_open
-			and not _replace(folder.path_join("done_%s.open.tally" % name), counts[1].to_bytes())
+			and (
+				SafeWrite.write_bytes(
+					folder.path_join("done_%s.open.tally" % name), counts[1].to_bytes()
+				)
+				!= OK
+			)
 		):
 			return EXIT_FAILED
-		if not _replace(folder.path_join("done_%s.tally" % name), counts[0].to_bytes()):
+		if (
+			SafeWrite.write_bytes(folder.path_join("done_%s.tally" % name), counts[0].to_bytes())
+			!= OK
+		):
 			return EXIT_FAILED
 		DirAccess.remove_absolute(folder.path_join("took_%d_%s" % [id, name]))
 	return EXIT_OK
@@ -158,14 +168,3 @@ static func _fault(id: int, folder: String, parent_pid: int) -> void:
 
 static func _text(path: String) -> String:
 	return FileAccess.get_file_as_string(path) if FileAccess.file_exists(path) else ""
-
-
-# Writes `bytes` to `path` whole: into a file beside it, then renamed over it.
-static func _replace(path: String, bytes: PackedByteArray) -> bool:
-	var aside := path + ".tmp"
-	var file := FileAccess.open(aside, FileAccess.WRITE)
-	if file == null:
-		return false
-	file.store_buffer(bytes)
-	file.close()
-	return DirAccess.rename_absolute(aside, path) == OK

@@ -217,16 +217,19 @@ func _write_queue() -> String:
 		return "could not make %s" % _folder
 	if board_path.is_empty():
 		var text := BoardTextWriter.write(plan.level).to_utf8_buffer()
-		if not _write(_folder.path_join("board.board"), text):
+		if SafeWrite.write_bytes(_folder.path_join("board.board"), text) != OK:
 			return "could not write the board in %s" % _folder
 	var job := {"parent": OS.get_process_id(), "with_open": with_open}
-	if not _write(_folder.path_join("job.json"), JSON.stringify(job).to_utf8_buffer()):
+	if (
+		SafeWrite.write_bytes(_folder.path_join("job.json"), JSON.stringify(job).to_utf8_buffer())
+		!= OK
+	):
 		return "could not write the job in %s" % _folder
 	for first in range(0, plan.chunk_count(), RANGE_CHUNKS):
 		var last := mini(first + RANGE_CHUNKS, plan.chunk_count()) - 1
 		var name := AnalysisQueueWorker.range_name(first, last)
 		_names.append(name)
-		if not _write(_folder.path_join("todo_" + name), PackedByteArray()):
+		if SafeWrite.write_bytes(_folder.path_join("todo_" + name), PackedByteArray()) != OK:
 			return "could not write the queue in %s" % _folder
 	_counts.resize(_names.size())
 	_open_counts.resize(_names.size())
@@ -298,7 +301,7 @@ func _take_results(files: PackedStringArray) -> void:
 				"the counts of chunks %s could not be read; running them again" % _chunks_text(r)
 			)
 			DirAccess.remove_absolute(_folder.path_join(shut))
-			_write(_folder.path_join("todo_" + _names[r]), PackedByteArray())
+			SafeWrite.write_bytes(_folder.path_join("todo_" + _names[r]), PackedByteArray())
 			continue
 		_counts[r] = counts
 		_open_counts[r] = open_counts
@@ -432,7 +435,7 @@ func _finish() -> void:
 	_merged_open = _merge(_open_counts) if with_open else null
 	wall_seconds = (Time.get_ticks_usec() - _started_usec) / 1e6
 	phase = Phase.DONE
-	_write(_folder.path_join("closed"), PackedByteArray())
+	SafeWrite.write_bytes(_folder.path_join("closed"), PackedByteArray())
 	_remove_folder()
 	# The workers see the queue gone within IDLE_MS and exit; waiting for that here reaps
 	# them (no process is left behind), and any still there is killed.
@@ -474,18 +477,3 @@ func _remove_folder() -> void:
 	for file in DirAccess.get_files_at(_folder):
 		DirAccess.remove_absolute(_folder.path_join(file))
 	DirAccess.remove_absolute(_folder)
-
-
-static func _write(path: String, bytes: PackedByteArray) -> bool:
-	var aside := path + ".tmp"
-	var file := FileAccess.open(aside, FileAccess.WRITE)
-	if file == null:
-		return false
-	file.store_buffer(bytes)
-	file.close()
-	return (
-		DirAccess.rename_absolute(
-			ProjectSettings.globalize_path(aside), ProjectSettings.globalize_path(path)
-		)
-		== OK
-	)

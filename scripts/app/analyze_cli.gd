@@ -152,7 +152,7 @@ static func _run_worker(plan: AnalysisPlan, path: String) -> int:
 			var part := analysis.tally()
 			if part != null:
 				shots_done = part.total_shots()
-				if not done and not _replace(path + ".part", part.to_bytes()):
+				if not done and SafeWrite.write_bytes(path + ".part", part.to_bytes()) != OK:
 					return _fail(EXIT_FAILED, "could not write %s.part" % path)
 		var phase_name: String = PachinkoAnalysis.Phase.keys()[analysis.phase]
 		var status := {
@@ -164,28 +164,17 @@ static func _run_worker(plan: AnalysisPlan, path: String) -> int:
 		var text := JSON.stringify(status)
 		if text != last_status:
 			last_status = text
-			_replace(path + ".status", text.to_utf8_buffer())
+			SafeWrite.write_bytes(path + ".status", text.to_utf8_buffer())
 		if done:
 			break
 		OS.delay_msec(50)
 	var tally := analysis.tally()
-	if tally == null or not _replace(path, tally.to_bytes()):
+	if tally == null or SafeWrite.write_bytes(path, tally.to_bytes()) != OK:
 		return _fail(EXIT_FAILED, "could not write %s" % path)
 	var line := {"ok": true, "tally": path, "shots": tally.total_shots()}
 	line["wall_s"] = snappedf(analysis.wall_seconds, 0.001)
 	print(JSON.stringify(line))
 	return 0
-
-
-# Writes `bytes` to `path` whole: into a file beside it, then renamed over it.
-static func _replace(path: String, bytes: PackedByteArray) -> bool:
-	var aside := path + ".tmp"
-	var file := FileAccess.open(aside, FileAccess.WRITE)
-	if file == null:
-		return false
-	file.store_buffer(bytes)
-	file.close()
-	return DirAccess.rename_absolute(aside, path) == OK
 
 
 # The folder the reports go to, made when missing: {"dir": its absolute path, "shown": how
