@@ -57,7 +57,7 @@ func setup(result: BoardLoadResult, best: String) -> void:
 		_add_label(shown.display_name if not shown.display_name.is_empty() else shown.board_id, &"")
 		if not file_line.is_empty():
 			_add_label(file_line, &"HintLabel")
-		_add_label(best if not best.is_empty() else "No finish yet", &"HintLabel")
+		_add_label(best if not best.is_empty() else _no_best_yet(shown), &"HintLabel")
 		_long_text = _long(_add_label(shown.description, &"HintLabel", true), 3)
 		tooltip_text = shown.description
 	else:
@@ -178,3 +178,9 @@ func _add_label(words: String, variation: StringName, wraps := false, lines := 3
 	label.clip_text = true
 	_box.add_child(label)
 	return label
+
+
+# What a card says before its board has a best: a maze is finished or not; a pachinko game
+# always ends, so its record is the best session (the words of the game's own panel).
+static func _no_best_yet(shown: BoardLevel) -> String:
+	return "No best session yet" if shown.kind == BoardLevel.Kind.PACHINKO else "No finish yet"

@@ -100,8 +100,13 @@ func test_best_results_are_shown_on_the_cards() -> void:
 	var maze_id := mazes[0].level.board_id
 	assert_has(
 		_card_texts(await _open("pachinko")),
+		"No best session yet",
+		"a pachinko game always ends: its record is the best session, as the panel says"
+	)
+	assert_has(
+		_card_texts(await _open("maze")),
 		"No finish yet",
-		"a board never finished (the save keeps no attempts: true whether played or not)"
+		"a maze never finished (the save keeps no attempts: true whether played or not)"
 	)
 	App.record_pachinko_balls(pachinko_id, 23)
 	App.record_maze_time(maze_id, false, 101.34)
