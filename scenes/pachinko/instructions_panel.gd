@@ -130,8 +130,8 @@ static func how_to_shoot() -> String:
 			+ " [b]Stream:[/b] hold [b]%s[/b]."
 		)
 		% [
-			KeyNames.of(&"launch_charge", "the charge key"),
-			KeyNames.of(&"launch_handle", "the handle key"),
+			PlainMarkup.escape(KeyNames.of(&"launch_charge", "the charge key")),
+			PlainMarkup.escape(KeyNames.of(&"launch_handle", "the handle key")),
 		]
 	)
 

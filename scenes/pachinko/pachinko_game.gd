@@ -273,7 +273,7 @@ func reminder() -> RulesReminder:
 func _reminder_line() -> String:
 	return (
 		"%s   [b]%s[/b]: new game"
-		% [InstructionsPanel.how_to_shoot(), KeyNames.of(&"game_restart", "?")]
+		% [InstructionsPanel.how_to_shoot(), PlainMarkup.escape(KeyNames.of(&"game_restart", "?"))]
 	)
 
 
