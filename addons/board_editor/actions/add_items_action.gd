@@ -44,7 +44,7 @@ func _touched_fields() -> PackedStringArray:
 
 func _apply() -> void:
 	added.clear()
-	# One copy per field, handed back at the end (ItemKind.working).
+	# One copy per field, handed back at the end (ItemEdits.working).
 	var work := {}
 	var handles: Array = []  # [kind, handle] for each added item, in order
 	for set_kind in ItemKinds.set_rows():
@@ -55,11 +55,11 @@ func _apply() -> void:
 			var kind := _kind_of(set_kind, value)
 			if kind == null or kind.game != level.kind:
 				continue
-			handles.append([kind, kind.append(level, work, value)])
-	ItemKind.store(level, work)
+			handles.append([kind, ItemEdits.append(kind, level, work, value)])
+	ItemEdits.store(level, work)
 	for entry: Array in handles:
 		var kind: ItemKind = entry[0]
-		added.append(BoardItems.make(kind.pick, kind.index_in(work, entry[1])))
+		added.append(BoardItems.make(kind.pick, ItemEdits.index_in(kind, work, entry[1])))
 
 
 # The row of one set value: a bonus pocket's is its role's.

@@ -31,5 +31,5 @@ func _apply() -> void:
 		for index in BoardItems.indices_of(_items, kind.pick):
 			if BoardItems.is_valid(level, BoardItems.make(kind.pick, index)):
 				gone.append(index)
-		kind.remove(level, work, gone)
-	ItemKind.store(level, work)
+		ItemEdits.remove(kind, level, work, gone)
+	ItemEdits.store(level, work)

@@ -33,12 +33,12 @@ func _touched_fields() -> PackedStringArray:
 
 
 func _apply() -> void:
-	# One copy per packed field, handed back at the end (ItemKind.working).
+	# One copy per packed field, handed back at the end (ItemEdits.working).
 	var work := {}
 	for group: Array in _groups:
 		var axis: float = group[1]
 		for item: Vector2i in group[0]:
 			var kind := ItemKinds.of_item(level, item)
 			if kind != null and kind.is_valid(level, item.y):
-				kind.reflect_item(level, work, item.y, axis)
-	ItemKind.store(level, work)
+				ItemEdits.reflect_item(kind, level, work, item.y, axis)
+	ItemEdits.store(level, work)

@@ -50,7 +50,7 @@ func _touched_fields() -> PackedStringArray:
 
 
 func _apply() -> void:
-	# One copy per packed field, handed back at the end (ItemKind.working).
+	# One copy per packed field, handed back at the end (ItemEdits.working).
 	var work := {}
 	var groups: Array = [
 		[_direct, delta], [_mirrored, Vector2(-delta.x, delta.y)], [_on_axis, Vector2(0, delta.y)]
@@ -60,5 +60,5 @@ func _apply() -> void:
 		for item: Vector2i in group[0]:
 			var kind := ItemKinds.of_item(level, item)
 			if kind != null and kind.is_valid(level, item.y):
-				kind.offset(level, work, item.y, offset)
-	ItemKind.store(level, work)
+				ItemEdits.offset(kind, level, work, item.y, offset)
+	ItemEdits.store(level, work)

@@ -10,6 +10,7 @@ extends RefCounted
 ## code here, so a kind differs from its shape-mates only by its data and its few hooks
 ## (a pin's rim pins are not items, a pocket carries its rim pins, a windmill turns the
 ## other way when mirrored). Each kind is one file in this folder that builds its row.
+## A batch of edits (move, mirror, add, remove) goes through ItemEdits, which reads the row.
 ##
 ## The editor names an item `Vector2i(pick, index)`; `index` counts in the row's `field`
 ## (for the bonus pockets: in `bonus_pockets`, all three roles together).
@@ -99,7 +100,7 @@ var checks := Callable()
 ## (a pocket's rim pin).
 var skips := Callable()
 ## `(level, work, index, offset)`: what moves along with item `index` (a pocket's rim pins
-## in `work`, see `working`).
+## in `work`, see ItemEdits.working).
 var carries := Callable()
 ## `(spec)`: what a mirror image changes besides the place (a windmill turns the other way).
 var turns := Callable()
@@ -288,70 +289,6 @@ func box_points(level: BoardLevel, index: int) -> PackedVector2Array:
 	return PackedVector2Array([position_of(level, index)])
 
 
-## The copy of `field` that a batch of edits writes into (`work`: field -> copy), made on
-## first use. Packed arrays are values, so edits go to one copy a field and `store` hands
-## the copies back to the board at the end: one setter call per field, not per item.
-static func working(level: BoardLevel, work: Dictionary, field_name: String) -> Variant:
-	if not work.has(field_name):
-		work[field_name] = _copy(level.get(field_name))
-	return work[field_name]
-
-
-## Hands every copy in `work` back to `level`.
-static func store(level: BoardLevel, work: Dictionary) -> void:
-	for field_name: String in work:
-		level.set(field_name, work[field_name])
-
-
-## Moves item `index` by `offset` (and what it carries), writing into `work`.
-func offset(level: BoardLevel, work: Dictionary, index: int, by: Vector2) -> void:
-	match shape:
-		Shape.POINT:
-			var points: PackedVector2Array = working(level, work, field)
-			points[index] += by
-			work[field] = points
-		Shape.SEGMENT:
-			var ends: PackedVector2Array = working(level, work, field)
-			ends[index * 2] += by
-			ends[index * 2 + 1] += by
-			work[field] = ends
-		Shape.SPEC, Shape.ROLE_SPEC:
-			# The resource itself moves: the dock and the inspector hold on to it.
-			var specs: Array = level.get(field)
-			var spec: Resource = specs[index]
-			_set_position(spec, _position(spec) + by)
-		Shape.SINGLE:
-			var point: Vector2 = working(level, work, field)
-			work[field] = point + by
-	if carries.is_valid():
-		carries.call(level, work, index, by)
-
-
-## Reflects item `index` across the vertical line x = `axis`, writing into `work`: points
-## land at their reflection, a resource's mouth moves there (its shape is symmetrical) and
-## the `turns` hook changes the rest.
-func reflect_item(level: BoardLevel, work: Dictionary, index: int, axis: float) -> void:
-	match shape:
-		Shape.POINT:
-			var points: PackedVector2Array = working(level, work, field)
-			points[index] = reflect(points[index], axis)
-			work[field] = points
-		Shape.SEGMENT:
-			var ends: PackedVector2Array = working(level, work, field)
-			ends[index * 2] = reflect(ends[index * 2], axis)
-			ends[index * 2 + 1] = reflect(ends[index * 2 + 1], axis)
-			work[field] = ends
-		Shape.SINGLE:
-			var point: Vector2 = working(level, work, field)
-			work[field] = reflect(point, axis)
-		_:
-			var at := position_of(level, index)
-			offset(level, work, index, reflect(at, axis) - at)
-			if turns.is_valid():
-				var specs: Array = level.get(field)
-				turns.call(specs[index])
-
-
 ## A copy of one item of an item set (a point, a wall's [a, b] ends, a resource) moved by
 ## `by`; resources are copied, never shared.
 func moved_value(value: Variant, by: Vector2) -> Variant:
@@ -388,73 +325,6 @@ func values_of(level: BoardLevel, index: int, origin: Vector2) -> Array:
 			var specs: Array = level.get(field)
 			return [moved_value(specs[index], -origin)]
 	return [position_of(level, index) - origin]
-
-
-## Appends one item (a point, a wall's ends as [a, b], a resource) to `work`; the value to
-## find it by once every item is in (`index_in`): its index, or the resource itself for a
-## ROLE_SPEC item, which goes into its role's slot and so shifts the ones after it.
-func append(level: BoardLevel, work: Dictionary, value: Variant) -> Variant:
-	var index := 0
-	match shape:
-		Shape.POINT:
-			var points: PackedVector2Array = working(level, work, field)
-			index = points.size()
-			var point: Vector2 = value
-			points.append(point)
-			work[field] = points
-		Shape.SEGMENT:
-			var ends: PackedVector2Array = working(level, work, field)
-			@warning_ignore("integer_division")  # whole segments only
-			index = ends.size() / 2
-			var pair: Array = value
-			var a: Vector2 = pair[0]
-			var b: Vector2 = pair[1]
-			ends.append(a)
-			ends.append(b)
-			work[field] = ends
-		Shape.SPEC:
-			var specs: Array = working(level, work, field)
-			index = specs.size()
-			specs.append(value)
-		Shape.ROLE_SPEC:
-			var bonus: Array[BonusPocketSpec] = working(level, work, field)
-			bonus.insert(BonusPocketSpec.role_slot(bonus, role), value)
-			return value
-		Shape.SINGLE:
-			return -1
-	if appended.is_valid():
-		appended.call(level, work, index)
-	return index
-
-
-## Where an item `append` returned `handle` for stands in `work` now.
-func index_in(work: Dictionary, handle: Variant) -> int:
-	if handle is int:
-		return handle
-	var specs: Array = work[field]
-	return specs.find(handle)
-
-
-## Removes the items at `gone` (indices of `field`, sorted) from `work`.
-func remove(level: BoardLevel, work: Dictionary, gone: PackedInt32Array) -> void:
-	if gone.is_empty() or shape == Shape.SINGLE:
-		return
-	if shape == Shape.POINT or shape == Shape.SEGMENT:
-		var step := 2 if shape == Shape.SEGMENT else 1
-		var points: PackedVector2Array = working(level, work, field)
-		var kept_points := PackedVector2Array()
-		@warning_ignore("integer_division")  # whole segments only
-		for item in points.size() / step:
-			if not gone.has(item):
-				for k in step:
-					kept_points.append(points[item * step + k])
-		work[field] = kept_points
-	else:
-		var specs: Array = working(level, work, field)
-		for k in range(gone.size() - 1, -1, -1):
-			specs.remove_at(gone[k])
-	if removed.is_valid():
-		removed.call(level, work, gone)
 
 
 ## Item `index`'s line in a board file, after its id: `"x": 12, "y": 40`.
@@ -514,22 +384,3 @@ static func _position(spec: Resource) -> Vector2:
 
 static func _set_position(spec: Resource, at: Vector2) -> void:
 	spec.set("position", at)
-
-
-# A copy that edits do not share with the board (Arrays and packed arrays are shared by
-# reference); other values are copies already.
-static func _copy(value: Variant) -> Variant:
-	match typeof(value):
-		TYPE_ARRAY:
-			var items: Array = value
-			return items.duplicate()
-		TYPE_PACKED_VECTOR2_ARRAY:
-			var points: PackedVector2Array = value
-			return points.duplicate()
-		TYPE_PACKED_INT32_ARRAY:
-			var numbers: PackedInt32Array = value
-			return numbers.duplicate()
-		TYPE_PACKED_BYTE_ARRAY:
-			var bytes: PackedByteArray = value
-			return bytes.duplicate()
-	return value

@@ -78,8 +78,8 @@ static func _pocket_of(level: BoardLevel, index: int) -> Vector2i:
 ## The per-pin arrays in `work` padded to `pins` entries: older or hand-written files may
 ## have short ones (a missing owner is -1: a field pin).
 static func line_up(level: BoardLevel, work: Dictionary, pins: int) -> void:
-	var owners: PackedInt32Array = ItemKind.working(level, work, "pin_pocket")
-	var special: PackedByteArray = ItemKind.working(level, work, "pin_special")
+	var owners: PackedInt32Array = ItemEdits.working(level, work, "pin_pocket")
+	var special: PackedByteArray = ItemEdits.working(level, work, "pin_special")
 	var had := owners.size()
 	owners.resize(pins)
 	for i in range(had, pins):

@@ -106,7 +106,7 @@ static func _cup(level: BoardLevel, index: int) -> Rect2:
 # The rim and special pin move with their pocket.
 static func _carry_pins(level: BoardLevel, work: Dictionary, index: int, by: Vector2) -> void:
 	var owners: PackedInt32Array = work.get("pin_pocket", level.pin_pocket)
-	var pins: PackedVector2Array = ItemKind.working(level, work, "pins")
+	var pins: PackedVector2Array = ItemEdits.working(level, work, "pins")
 	for i in mini(owners.size(), pins.size()):
 		if owners[i] == index:
 			pins[i] += by
@@ -117,7 +117,7 @@ static func _carry_pins(level: BoardLevel, work: Dictionary, index: int, by: Vec
 static func _stamp_pins(level: BoardLevel, work: Dictionary, index: int) -> void:
 	var specs: Array = work["pockets"]
 	var spec: PocketSpec = specs[index]
-	var pins: PackedVector2Array = ItemKind.working(level, work, "pins")
+	var pins: PackedVector2Array = ItemEdits.working(level, work, "pins")
 	PinKind.line_up(level, work, pins.size())
 	var owners: PackedInt32Array = work["pin_pocket"]
 	var special: PackedByteArray = work["pin_special"]
@@ -133,7 +133,7 @@ static func _stamp_pins(level: BoardLevel, work: Dictionary, index: int) -> void
 
 # A removed pocket's pins go with it; the other pins' pocket indices are renumbered.
 static func _remove_pins(level: BoardLevel, work: Dictionary, gone: PackedInt32Array) -> void:
-	var pins: PackedVector2Array = ItemKind.working(level, work, "pins")
+	var pins: PackedVector2Array = ItemEdits.working(level, work, "pins")
 	PinKind.line_up(level, work, pins.size())
 	var owners: PackedInt32Array = work["pin_pocket"]
 	var special: PackedByteArray = work["pin_special"]
