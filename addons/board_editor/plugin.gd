@@ -2,7 +2,8 @@
 extends EditorPlugin
 ## Board editor: select a BoardNode and the 2D viewport edits its BoardLevel. This file only
 ## wires the editor to the plain parts: the session (state), BoardInput (tools and keys),
-## BoardOverlay (drawing), the toolbar and the dock. Every edit is an action committed to
+## BoardOverlay (drawing), the toolbar, the dock and the file commands (BoardFileCommands:
+## save, save as, new board). Every edit is an action committed to
 ## the edited scene's undo history; the board file is saved with the scene.
 
 const BoardEditSession := preload("res://addons/board_editor/board_edit_session.gd")
@@ -13,14 +14,11 @@ const MazeGeneratorButton := preload("res://addons/board_editor/generator/maze_g
 const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 const PlayTest := preload("res://addons/board_editor/ui/play_test.gd")
 const NewBoard := preload("res://addons/board_editor/core/new_board.gd")
-const BoardFiles := preload("res://addons/board_editor/ui/board_files.gd")
+const BoardFileCommands := preload("res://addons/board_editor/ui/board_file_commands.gd")
 const Layers := preload("res://addons/board_editor/core/layers.gd")
 const ViewFocus := preload("res://addons/board_editor/ui/view_focus.gd")
 const FrameSelection := preload("res://addons/board_editor/ui/frame_selection.gd")
-const SaveAsDialog := preload("res://addons/board_editor/ui/save_as_dialog.gd")
-const NewBoardFiles := preload("res://addons/board_editor/core/new_board_files.gd")
 const ToolSettings := preload("res://addons/board_editor/core/tool_settings.gd")
-const SetPropertiesAction := preload("res://addons/board_editor/actions/set_properties_action.gd")
 const BoardItems := preload("res://addons/board_editor/core/board_items.gd")
 ## The one hook for tooling (screenshots, the editor self-check): ToolingHook.
 const ToolingHook := preload("res://addons/board_editor/core/tooling_hook.gd")
@@ -35,10 +33,9 @@ var _board_input: BoardInput
 var _toolbar: BoardToolbar
 var _generator: MazeGeneratorButton
 var _dock: BoardDock
-var _save_dialog: SaveAsDialog
+var _files: BoardFileCommands
 var _issues: Array[BoardIssue] = []
 var _focused_issue := -1
-var _unsaved: Array[BoardLevel] = []
 var _refresh_queued := false
 var _visible := false
 # The 2D viewport's control (handed to the overlay drawing): the focus goes back there.
@@ -60,16 +57,15 @@ func _enter_tree() -> void:
 	_dock.play_test_requested.connect(_play_test)
 	_dock.issue_focused.connect(focus_issue)
 	_dock.new_board_requested.connect(_new_board)
-	_dock.save_as_requested.connect(_save_as_file)
+	_files = BoardFileCommands.new(EditorInterface.get_base_control(), get_session)
+	_files.said.connect(_dock.show_message)
+	_files.board_named.connect(_refresh)
+	_dock.save_as_requested.connect(_files.open_save_as)
 	_dock.new_board_file_requested.connect(open_new_board_dialog)
 	_dock.field_focused.connect(func() -> void: _focus_in_dock = true)
 	_dock.focus_return_requested.connect(_return_focus)
 	add_control_to_dock(dock_slot_for(DisplayServer.screen_get_size().x), _dock)
 	FrameSelection.follow_view_menu(_on_view_framed)
-	_save_dialog = SaveAsDialog.new()
-	_save_dialog.save_confirmed.connect(_save_as_named)
-	_save_dialog.new_board_confirmed.connect(create_new_board)
-	EditorInterface.get_base_control().add_child(_save_dialog)
 	add_tool_menu_item(NEW_BOARD_MENU, open_new_board_dialog)
 	_dock.analysis.redraw_needed.connect(update_overlays)
 	_dock.analysis.results_changed.connect(_refresh)
@@ -90,7 +86,7 @@ func _exit_tree() -> void:
 	remove_tool_menu_item(NEW_BOARD_MENU)
 	remove_control_from_container(CONTAINER_CANVAS_EDITOR_MENU, _toolbar)
 	remove_control_from_docks(_dock)
-	_save_dialog.queue_free()
+	_files.free_dialog()
 	_toolbar.queue_free()
 	_dock.queue_free()
 
@@ -179,11 +175,11 @@ func _forward_canvas_draw_over_viewport(overlay: Control) -> void:
 
 
 func _apply_changes() -> void:
-	_save_boards()
+	_files.save_boards()
 
 
 func _save_external_data() -> void:
-	_save_boards()
+	_files.save_boards()
 
 
 ## The session editing the selected board (null when none); used by the screenshot hook.
@@ -306,8 +302,8 @@ func _release() -> void:
 
 
 func _on_level_changed() -> void:
-	if _session != null and not _unsaved.has(_session.level):
-		_unsaved.append(_session.level)
+	if _session != null:
+		_files.mark_unsaved(_session.level)
 	# Many setters fire per edit: validate and redraw once, after the edit.
 	if not _refresh_queued:
 		_refresh_queued = true
@@ -343,14 +339,9 @@ func _on_settings_changed() -> void:
 	update_overlays()
 
 
-func _save_boards() -> void:
-	BoardFiles.save_all(_unsaved)
-	_unsaved.clear()
-
-
 func _play_test() -> void:
 	if _session != null:
-		_save_boards()
+		_files.save_boards()
 		_dock.show_message(PlayTest.run(_session.level))
 
 
@@ -376,45 +367,7 @@ func _rebind(node: BoardNode) -> void:
 
 ## Opens the "New board" dialog (Project > Tools > New board..., or the dock's button).
 func open_new_board_dialog() -> void:
-	_save_dialog.open_new()
-
-
-## Writes a new board and its level scene, opens the scene and selects its board node, so
-## the tool is ready at once; the dock says what went wrong otherwise.
-func create_new_board(kind: int, file_id: String, display_name: String) -> void:
-	var made := NewBoardFiles.create(kind, file_id, display_name)
-	if made.has("error"):
-		_dock.show_message(str(made["error"]))
-		return
-	var board_path: String = made["board"]
-	var scene_path: String = made["scene"]
-	var filesystem := EditorInterface.get_resource_filesystem()
-	filesystem.update_file(board_path)
-	filesystem.update_file(scene_path)
-	EditorInterface.open_scene_from_path(scene_path)
-	var root := EditorInterface.get_edited_scene_root()
-	if root is BoardNode:
-		EditorInterface.get_selection().clear()
-		EditorInterface.get_selection().add_node(root)
-	_dock.show_message("New board: %s and %s." % [board_path, scene_path])
-
-
-func _save_as_file() -> void:
-	if _session != null:
-		_save_dialog.open_for(_session.level)
-
-
-## Names the board (one undo step) and writes it to levels/<kind>/<file_id>.board.
-func _save_as_named(file_id: String, display_name: String) -> void:
-	if _session == null:
-		return
-	var level := _session.level
-	var names := {
-		"display_name": display_name, "board_id": BoardFiles.board_id_for(level.kind, file_id)
-	}
-	_session.commit(SetPropertiesAction.new(level, names, "Name board"))
-	_dock.show_message(BoardFiles.save_as_file(level, file_id))
-	_refresh()
+	_files.open_new_board_dialog()
 
 
 # Gives the keyboard back to the 2D viewport, so the tool keys work again after a dock field.
