@@ -17,6 +17,9 @@ extends PachinkoAnalysis
 ## shows no progress for `hang_seconds` (then it is killed) is reported on stderr, naming the
 ## worker and its chunks, and the range goes back in the queue for another worker; once no
 ## worker is left, the rest runs here on `plan.threads` threads. No range is dropped.
+##
+## The queue's files are AnalysisQueueFolder's job, a worker's command line
+## AnalysisWorkerCommand's: this decides who runs which range.
 
 ## Chunks in one range of the queue: one chunk (250 shots, about a second of one core) keeps
 ## the end of a run even; the per-range cost is a few small files.
@@ -44,11 +47,10 @@ var failure := ""
 ## What went wrong with workers during the run, one line each (also printed on stderr).
 var incidents := PackedStringArray()
 
-var _folder := ""
+var _queue := AnalysisQueueFolder.new()
 var _pids := PackedInt32Array()
 var _beats := PackedStringArray()
 var _beat_at := PackedInt64Array()
-var _names := PackedStringArray()
 var _counts: Array[AnalysisTally] = []
 var _open_counts: Array[AnalysisTally] = []
 var _ranges_done := 0
@@ -68,24 +70,6 @@ static func default_workers() -> int:
 	return cores if cores > 2 else 0
 
 
-## Removes the queue folders in `root` left by runs whose process is gone (a command line
-## that was killed cannot clean up; its workers exit by themselves). Only where /proc tells
-## which processes live; the folders are named `PID_USEC.queue`.
-static func remove_stale_queues(root: String) -> void:
-	if not DirAccess.dir_exists_absolute("/proc/self"):
-		return
-	for entry in DirAccess.get_directories_at(root):
-		var owner := entry.get_slice("_", 0)
-		if not entry.ends_with(".queue") or not owner.is_valid_int():
-			continue
-		if DirAccess.dir_exists_absolute("/proc/%s" % owner):
-			continue
-		var stale := root.path_join(entry)
-		for file in DirAccess.get_files_at(stale):
-			DirAccess.remove_absolute(stale.path_join(file))
-		DirAccess.remove_absolute(stale)
-
-
 ## The process ids of the workers started (-1 for those known to be gone).
 func process_ids() -> PackedInt32Array:
 	return _pids
@@ -97,23 +81,20 @@ func start() -> bool:
 	failure = _start_problem()
 	if failure.is_empty():
 		_started_usec = Time.get_ticks_usec()
-		failure = _write_queue()
+		failure = _queue.make(plan, with_open, board_path.is_empty(), RANGE_CHUNKS)
 	if not failure.is_empty():
-		_remove_folder()
+		_queue.remove()
 		return false
-	var board := board_path
-	if board.is_empty():
-		board = AnalysisWorker.FOLDER.path_join(_folder.get_file()).path_join("board.board")
-	for k in mini(workers, _names.size()):
-		var pid := OS.create_process(
-			OS.get_executable_path(), _program_prefix() + _arguments(board, k)
-		)
-		_pids.append(pid if pid > 0 else -1)
+	_counts.resize(_queue.names.size())
+	_open_counts.resize(_queue.names.size())
+	var board := board_path if not board_path.is_empty() else _queue.board_path()
+	for k in mini(workers, _queue.names.size()):
+		_pids.append(AnalysisWorkerCommand.start(plan, board, _queue.path, k))
 		_beats.append("")
 		_beat_at.append(Time.get_ticks_msec())
 	if _pids.count(-1) == _pids.size():
 		failure = "could not start %s" % OS.get_executable_path()
-		_remove_folder()
+		_queue.remove()
 		return false
 	phase = Phase.SHOTS
 	return true
@@ -130,11 +111,11 @@ func poll() -> bool:
 	if Time.get_ticks_msec() - _last_look < POLL_MS:
 		return false
 	_last_look = Time.get_ticks_msec()
-	var files := DirAccess.get_files_at(_folder)
+	var files := _queue.files()
 	_take_results(files)
 	for k in _pids.size():
 		_watch(k, files)
-	if _ranges_done == _names.size():
+	if _ranges_done == _queue.names.size():
 		_finish()
 		return true
 	if _pids.count(-1) == _pids.size():
@@ -152,7 +133,7 @@ func cancel() -> void:
 		_here.cancel()
 		_here_open = null
 	phase = Phase.CANCELLED
-	_remove_folder()
+	_queue.remove()
 
 
 ## Share of the shots done, 0..1.
@@ -163,7 +144,7 @@ func progress() -> float:
 	if _here != null:
 		var share := _here.progress() if _here_open == null else 1.0 + _here_open.progress()
 		here = share / (2.0 if with_open else 1.0) * _here_ranges.size()
-	return (_ranges_done + here) / maxf(_names.size(), 1)
+	return (_ranges_done + here) / maxf(_queue.names.size(), 1)
 
 
 ## The climbs run inside each range: nothing to wait for before the shots.
@@ -207,104 +188,22 @@ func _start_problem() -> String:
 	return problem
 
 
-# Makes the queue folder with the board (unless board_path names one), the job and a todo
-# file per range; "" or what failed.
-func _write_queue() -> String:
-	var root := ProjectSettings.globalize_path(AnalysisWorker.FOLDER)
-	remove_stale_queues(root)
-	_folder = root.path_join("%d_%d.queue" % [OS.get_process_id(), Time.get_ticks_usec()])
-	if DirAccess.make_dir_recursive_absolute(_folder) != OK:
-		return "could not make %s" % _folder
-	if board_path.is_empty():
-		var text := BoardTextWriter.write(plan.level).to_utf8_buffer()
-		if SafeWrite.write_bytes(_folder.path_join("board.board"), text) != OK:
-			return "could not write the board in %s" % _folder
-	var job := {"parent": OS.get_process_id(), "with_open": with_open}
-	if (
-		SafeWrite.write_bytes(_folder.path_join("job.json"), JSON.stringify(job).to_utf8_buffer())
-		!= OK
-	):
-		return "could not write the job in %s" % _folder
-	for first in range(0, plan.chunk_count(), RANGE_CHUNKS):
-		var last := mini(first + RANGE_CHUNKS, plan.chunk_count()) - 1
-		var name := AnalysisQueueWorker.range_name(first, last)
-		_names.append(name)
-		if SafeWrite.write_bytes(_folder.path_join("todo_" + name), PackedByteArray()) != OK:
-			return "could not write the queue in %s" % _folder
-	_counts.resize(_names.size())
-	_open_counts.resize(_names.size())
-	return ""
-
-
-## What goes before a worker's own arguments. In the release folder this process is the
-## bundled loader named like the game (engine/board-studio, beside board-studio.pck and the
-## engine binary `godot`), so a worker is the same loader given the libraries and the engine;
-## the loader runs the engine in its own process, so the pid it gets can still be killed.
-static func _program_prefix() -> PackedStringArray:
-	var exe := OS.get_executable_path()
-	var folder := exe.get_base_dir()
-	var engine := folder.path_join("godot")
-	var pack := exe.get_basename() + ".pck"
-	if (
-		exe.get_file() != "godot"
-		and FileAccess.file_exists(engine)
-		and FileAccess.file_exists(pack)
-	):
-		return PackedStringArray(["--library-path", folder.path_join("lib"), engine])
-	return PackedStringArray()
-
-
-func _arguments(board: String, id: int) -> PackedStringArray:
-	var args := PackedStringArray(["--headless", "--quiet"])
-	# The editor build runs the project folder; an exported game loads the pack beside its
-	# binary by itself, and a release template refuses --path.
-	if OS.has_feature("editor"):
-		args.append_array(PackedStringArray(["--path", ProjectSettings.globalize_path("res://")]))
-	(
-		args
-		. append_array(
-			[
-				"--",
-				"--analyze=pachinko",
-				"--board=%s" % board,
-				"--shots=%d" % plan.shots,
-				"--seed=%d" % plan.rng_seed,
-				"--queue=%s" % _folder,
-				"--worker-id=%d" % id,
-			]
-		)
-	)
-	if plan.played:
-		args.append("--played")
-	return args
-
-
 # Takes in the counts of every range whose files are there.
 func _take_results(files: PackedStringArray) -> void:
-	for r in _names.size():
+	for r in _queue.names.size():
 		if _counts[r] != null:
 			continue
-		var shut := "done_%s.tally" % _names[r]
-		var open := "done_%s.open.tally" % _names[r]
-		if not files.has(shut) or (with_open and not files.has(open)):
+		var read := _queue.counts_of(r, files, with_open)
+		if read.is_empty():
 			continue
-		var counts := AnalysisTally.from_bytes(
-			FileAccess.get_file_as_bytes(_folder.path_join(shut))
-		)
-		var open_counts: AnalysisTally = null
-		if with_open:
-			open_counts = AnalysisTally.from_bytes(
-				FileAccess.get_file_as_bytes(_folder.path_join(open))
-			)
-		if counts == null or (with_open and open_counts == null):
+		if read[0] == null or (with_open and read[1] == null):
 			_report(
 				"the counts of chunks %s could not be read; running them again" % _chunks_text(r)
 			)
-			DirAccess.remove_absolute(_folder.path_join(shut))
-			SafeWrite.write_bytes(_folder.path_join("todo_" + _names[r]), PackedByteArray())
+			_queue.retry(r)
 			continue
-		_counts[r] = counts
-		_open_counts[r] = open_counts
+		_counts[r] = read[0]
+		_open_counts[r] = read[1]
 		_ranges_done += 1
 
 
@@ -314,8 +213,7 @@ func _watch(k: int, files: PackedStringArray) -> void:
 	if _pids[k] < 0:
 		return
 	var held := _held(k, files)
-	var beat_path := _folder.path_join("beat_%d" % k)
-	var beat := FileAccess.get_file_as_string(beat_path) if files.has(beat_path.get_file()) else ""
+	var beat := _queue.beat(k, files)
 	var now := Time.get_ticks_msec()
 	if beat != _beats[k]:
 		_beats[k] = beat
@@ -348,20 +246,15 @@ func _watch(k: int, files: PackedStringArray) -> void:
 	else:
 		return
 	for r in held:
-		DirAccess.rename_absolute(
-			_folder.path_join("took_%d_%s" % [k, _names[r]]), _folder.path_join("todo_" + _names[r])
-		)
+		_queue.give_back(k, r)
 
 
 # The ranges worker `k` took and has not finished.
 func _held(k: int, files: PackedStringArray) -> PackedInt32Array:
 	var out := PackedInt32Array()
-	var prefix := "took_%d_" % k
-	for file in files:
-		if file.begins_with(prefix):
-			var r := _names.find(file.trim_prefix(prefix))
-			if r >= 0 and _counts[r] == null:
-				out.append(r)
+	for r in _queue.taken_by(k, files):
+		if _counts[r] == null:
+			out.append(r)
 	return out
 
 
@@ -373,7 +266,7 @@ func _held_text(held: PackedInt32Array) -> String:
 
 
 func _chunks_text(r: int) -> String:
-	var chunks := AnalysisQueueWorker.chunks_of(_names[r])
+	var chunks := AnalysisQueueWorker.chunks_of(_queue.names[r])
 	if chunks.size() == 1:
 		return str(chunks[0])
 	return "%d-%d" % [chunks[0], chunks[chunks.size() - 1]]
@@ -387,17 +280,17 @@ func _report(line: String) -> void:
 # No worker is left: the ranges not done run here, on plan.threads threads.
 func _run_rest_here() -> void:
 	var chunks := PackedInt32Array()
-	for r in _names.size():
+	for r in _queue.names.size():
 		if _counts[r] == null:
 			_here_ranges.append(r)
-			chunks.append_array(AnalysisQueueWorker.chunks_of(_names[r]))
+			chunks.append_array(AnalysisQueueWorker.chunks_of(_queue.names[r]))
 	_report("no worker left; running chunks %s here" % _held_text(_here_ranges))
 	_here = PachinkoAnalysis.new(plan)
 	_here.only_chunks = chunks
 	if not _here.start():
 		_here = null
 		phase = Phase.CANCELLED
-		_remove_folder()
+		_queue.remove()
 
 
 func _poll_here() -> bool:
@@ -405,7 +298,7 @@ func _poll_here() -> bool:
 		return false
 	if _here.phase != Phase.DONE:
 		phase = Phase.CANCELLED
-		_remove_folder()
+		_queue.remove()
 		return true
 	if with_open and _here_open == null:
 		_here_open = PachinkoAnalysis.new(plan.with_bonus_open())
@@ -414,7 +307,7 @@ func _poll_here() -> bool:
 		if _here_open.start():
 			return false
 		phase = Phase.CANCELLED
-		_remove_folder()
+		_queue.remove()
 		return true
 	# The counts of all the ranges run here stand in the first one's place (whole numbers:
 	# the merge adds them up the same).
@@ -435,8 +328,8 @@ func _finish() -> void:
 	_merged_open = _merge(_open_counts) if with_open else null
 	wall_seconds = (Time.get_ticks_usec() - _started_usec) / 1e6
 	phase = Phase.DONE
-	SafeWrite.write_bytes(_folder.path_join("closed"), PackedByteArray())
-	_remove_folder()
+	_queue.close()
+	_queue.remove()
 	# The workers see the queue gone within IDLE_MS and exit; waiting for that here reaps
 	# them (no process is left behind), and any still there is killed.
 	var waited := 0
@@ -469,11 +362,3 @@ func _stop_workers() -> void:
 		if _pids[k] > 0 and OS.is_process_running(_pids[k]):
 			OS.kill(_pids[k])
 		_pids[k] = -1
-
-
-func _remove_folder() -> void:
-	if _folder.is_empty() or not DirAccess.dir_exists_absolute(_folder):
-		return
-	for file in DirAccess.get_files_at(_folder):
-		DirAccess.remove_absolute(_folder.path_join(file))
-	DirAccess.remove_absolute(_folder)

@@ -271,7 +271,7 @@ func test_the_queue_of_a_run_whose_process_is_gone_is_removed() -> void:
 	for folder in [stale, mine]:
 		DirAccess.make_dir_recursive_absolute(folder)
 		FileAccess.open(folder.path_join("todo_r00000-00000"), FileAccess.WRITE).close()
-	AnalysisWorkerPool.remove_stale_queues(root)
+	AnalysisQueueFolder.remove_stale(root)
 	assert_false(DirAccess.dir_exists_absolute(stale), "the dead run's queue is gone")
 	assert_true(DirAccess.dir_exists_absolute(mine), "a live run's queue stays")
 	DirAccess.remove_absolute(mine.path_join("todo_r00000-00000"))
