@@ -23,7 +23,7 @@ static var out_dir_override := ""
 ## Runs the analysis `values` ask for (keys analyze, board, shots, runs, seed, threads,
 ## workers, and the worker modes' tally, queue, worker_id); returns the exit code. Pachinko
 ## runs on `workers` worker processes (AnalysisWorkerPool; default: one per core on more
-## than two cores), else on `threads` threads here.
+## than two cores), else on `threads` threads here (PachinkoAnalyzeCli makes its report).
 static func run(values: Dictionary) -> int:
 	var game: String = values["analyze"]
 	var rng_seed: int = values["seed"]
@@ -63,54 +63,12 @@ static func run(values: Dictionary) -> int:
 		if not str(values.get("queue", "")).is_empty():
 			var worker_id: int = values.get("worker_id", 0)
 			return AnalysisQueueWorker.run(plan, str(values["queue"]), worker_id)
-		var workers: int = values.get("workers", AnalysisWorkerPool.default_workers())
-		if workers < 0 or workers > 64:
-			return _fail(EXIT_BAD_INPUT, "--workers must be 0 to 64 (got %d)" % workers)
-		if workers > 0 and values.get("profile", false):
-			if values.has("workers"):
-				return _fail(EXIT_BAD_INPUT, "--profile times this process: use --workers=0")
-			workers = 0
-		var analysis: PachinkoAnalysis
-		var tally: AnalysisTally = null
-		var open_tally: AnalysisTally = null
-		var bonus := not loaded.level.bonus_pockets.is_empty()
-		if workers > 0:
-			var pool := AnalysisWorkerPool.new(plan)
-			pool.workers = workers
-			pool.with_open = bonus
-			pool.board_path = AutoplayCli.resolve_board_path(game, board_name)
-			analysis = pool
-			tally = pool.run()
-			open_tally = pool.open_tally()
-			if tally == null:
-				printerr("analyze: the workers could not start (%s); running here" % pool.failure)
-		if tally == null:
-			analysis = PachinkoAnalysis.new(plan)
-			if values.get("profile", false):
-				analysis.profile = AnalysisProfile.new()
-			tally = analysis.run()
-			if tally == null:
-				return _fail(EXIT_BAD_INPUT, plan.problem())
-			if bonus:
-				# The same shots again with the bonus pockets held open, for BonusEstimate.
-				# Its rail climbs are the first run's (the climb world keeps the bonus parts
-				# shut).
-				var open_run := PachinkoAnalysis.new(plan.with_bonus_open())
-				open_run.reuse_climbs(analysis.climb_table())
-				open_tally = open_run.run()
-		var mark := Time.get_ticks_usec()
-		report = AnalysisReport.build(plan, tally, analysis.wall_seconds, open_tally)
-		report["heatmap"] = base + ".png"
-		var png_error := HeatmapImage.render(loaded.level, tally).save_png(abs_base + ".png")
-		if analysis.profile != null:
-			report["profile"] = analysis.profile.to_dict()
-			report["profile"]["report_and_heatmap_s"] = snappedf(
-				(Time.get_ticks_usec() - mark) / 1e6, 0.001
-			)
-		if png_error != OK:
-			return _fail(
-				EXIT_FAILED, "could not write %s (%s)" % [base + ".png", error_string(png_error)]
-			)
+		report = PachinkoAnalyzeCli.report(
+			plan, values, AutoplayCli.resolve_board_path(game, board_name), base, abs_base
+		)
+		if report.has("error"):
+			var code := EXIT_FAILED if report.get("unwritten", false) else EXIT_BAD_INPUT
+			return _fail(code, str(report["error"]))
 	report["ok"] = true
 	report["report"] = base + ".json"
 	var text := JSON.stringify(report)
