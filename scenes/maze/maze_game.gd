@@ -127,8 +127,7 @@ func _process(delta: float) -> void:
 		rules.set_tilt(tilt)
 		if mixer.source != TiltMixer.Source.JOYSTICK:
 			_joystick.head_offset = TiltInput.joystick_from_tilt(tilt)
-		rules.advance(delta)
-		_recorder.note_frame()
+		MazeFrameSteps.run(rules, _recorder, delta)
 	if _ghost != null:
 		_ghost.sync(rules.world.step_count)
 		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
