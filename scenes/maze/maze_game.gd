@@ -13,9 +13,6 @@ const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
-## The panel's count flashes this long when a ball is lost (seconds), in the hard colour.
-const LOST_FLASH_SECONDS := 1.2
-const LOST_FLASH := Color(0.85, 0.15, 0.2)
 
 ## The rules of the board being played (null if no board could be loaded).
 var rules: MazeRules
@@ -27,6 +24,7 @@ var haptics := MazeHaptics.new()
 var _sounds: SoundBank
 var _load_problem := ""
 var _goal_count := 0
+var _lines: MazeSideLines
 var _recorder := ReplayRecorder.new()
 var _ghost: GhostRun
 var _ghost_view := MazeGhost3d.new()
@@ -35,8 +33,6 @@ var _win_panel := MazeWinPanel.new()
 var _panel_layout: MazePanelLayout
 ## Frames left in which the panel is placed again after a window change (SETTLE_FRAMES).
 var _settle_frames := 0
-## Seconds left of the count's flash after a ball was lost (0: none).
-var _count_flash_left := 0.0
 ## True from a ball lost until the card saying so is up (it waits for the ball to drop).
 var _loss_card_due := false
 
@@ -55,6 +51,7 @@ var _loss_card_due := false
 
 
 func _ready() -> void:
+	_lines = MazeSideLines.new(_mode, _timer, _best, _next_medal, _in_goal)
 	_sounds = SoundBank.new()
 	add_child(_sounds)
 	SoundBank.warm([SoundRecipes.BALL_ROLL, SoundRecipes.BALL_DROP, SoundBank.WALL_THUD])
@@ -100,7 +97,7 @@ func _ready() -> void:
 	_on_game_reset()
 	# the first frame drawn shows the board ready: its balls and the medal in reach
 	_stage.sync_balls(rules, 0.0)
-	_show_next_medal()
+	_lines.show_next_medal(rules)
 	# with a window, the curtain stays up (its ring turning) while the board's parts come on
 	# one frame at a time, each compiling its shaders (headless nothing is drawn)
 	if DisplayServer.get_name() != "headless":
@@ -137,10 +134,11 @@ func _process(delta: float) -> void:
 		_rolling.update(rules.world.get_velocities(), delta)
 	else:
 		_rolling.stop_all()
-	_timer.text = "Time  %s" % _format_time(rules.elapsed)
-	if not rules.is_over():
-		_show_next_medal()
-	_step_count_flash(delta)
+	_lines.show_clock(rules)
+	if rules.state == MazeRules.State.LOST:
+		# two balls may drop at once; the rules end the run at the first
+		_lines.show_balls_left(rules.balls_left(), rules.ball_total(), false)
+	_lines.step_flash(delta)
 	if _loss_card_due and _stage.balls().fall_progress() >= 1.0:
 		_loss_card_due = false
 		_win_panel.present_loss(rules.balls_left(), rules.ball_total())
@@ -214,9 +212,9 @@ func _on_calibrate() -> void:
 
 
 func _on_game_reset() -> void:
-	_stop_count_flash()
 	_loss_card_due = false
-	_show_goal_count(0)
+	_goal_count = 0
+	_lines.show_attempt(rules.hard_mode, rules.ball_total())
 	_win_panel.hide()
 	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
 	_ghost_view.set_board_size(rules.level.size)
@@ -225,8 +223,6 @@ func _on_game_reset() -> void:
 	mixer.reset()
 	_stage.set_tilt(Vector2.ZERO)
 	_stage.set_hard_mode(rules.hard_mode)
-	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
-	_mode.modulate = MazePalette.HARD if rules.hard_mode else MazePalette.GOAL
 	var hint := MazeHints.start(
 		rules.hard_mode, rules.ball_total(), rules.level.holes.size(), rules.level.board_id
 	)
@@ -249,10 +245,13 @@ func _on_won(seconds: float) -> void:
 	if best:
 		var path := ReplayStore.best_maze_path(board_id, rules.hard_mode)
 		ReplayStore.save(_recorder.finish(), path)
-	_note.show_note(
-		"Congrats, you did it!", MazeHints.won(rules.hard_mode, rules.level.holes.size())
-	)
-	_next_medal.text = summary.medal_line()
+	# the card says it was done; the panel only says what else there is to try
+	var next_try := MazeHints.won(rules.hard_mode, rules.level.holes.size())
+	if next_try.is_empty():
+		_note.fade_out()
+	else:
+		_note.show_note(next_try, "")
+	_lines.show_medal_line(summary.medal_line())
 	_show_best()
 	_win_panel.present(summary, rules.hard_mode, not _next_board_path().is_empty())
 	_sounds.play(SoundBank.FANFARE)
@@ -277,6 +276,8 @@ func _on_size_changed() -> void:
 func _layout() -> Rect2:
 	if _panel_layout == null:
 		_panel_layout = MazePanelLayout.new(_side, _joystick)
+		# the medal line says "Gold by 0:20.4" or a longer line that may wrap
+		_panel_layout.reserve_lines(_next_medal, 2)
 	var stretch := get_viewport().get_final_transform().get_scale().y
 	_panel_layout.place_text(stretch)
 	for label: Label in [_timer, _best]:
@@ -331,23 +332,9 @@ func _next_board_path() -> String:
 	return path if FileAccess.file_exists(path) else ""
 
 
-## The medal still in reach while playing: "Gold by 0:36.3", then Silver once that passed.
-func _show_next_medal() -> void:
-	var times := Medals.times_for(rules.level, rules.hard_mode)
-	var target := Medals.next_target(times, rules.elapsed)
-	var medal: Medals.Medal = target["medal"]
-	if times.size() != 3:
-		_next_medal.text = ""
-	elif medal == Medals.Medal.NONE:
-		_next_medal.text = "No medal left: finish anyway!"
-	else:
-		var seconds: float = target["seconds"]
-		_next_medal.text = "%s by %s" % [Medals.name_of(medal), _format_time(seconds)]
-
-
 func _on_lost(hole: int) -> void:
 	_joystick.release()
-	_next_medal.text = ""
+	_lines.show_medal_line("")
 	_stage.set_lost_hole(hole)
 	_sounds.play(SoundRecipes.BALL_DROP)
 	haptics.drop()
@@ -355,36 +342,14 @@ func _on_lost(hole: int) -> void:
 	# at once, not faded in: the run is over (every ball must reach the dip)
 	_note.show_note_now(lost[0], lost[1])
 	_sounds.play(SoundBank.HOLE_FALL, -9.0)
-	_in_goal.text = MazeHints.balls_left(rules.balls_left(), rules.ball_total())
-	_flash_count()
-	_in_goal.modulate = LOST_FLASH
+	_lines.show_balls_left(rules.balls_left(), rules.ball_total(), true)
 	# the card with Retry comes up once the ball has dropped out of sight (_process)
 	_loss_card_due = not rules.can_still_win()
 
 
-# Flashes the panel's count in red a few times (a ball was lost); _process runs it.
-func _flash_count() -> void:
-	_count_flash_left = LOST_FLASH_SECONDS
-
-
-# Steps the count's flash by `delta` seconds: three red pulses, then its own colour.
-func _step_count_flash(delta: float) -> void:
-	if _count_flash_left <= 0.0:
-		return
-	_count_flash_left = maxf(_count_flash_left - delta, 0.0)
-	var pulses := 3.0 * (1.0 - _count_flash_left / LOST_FLASH_SECONDS)
-	var strength := 0.5 - 0.5 * cos(pulses * TAU)
-	_in_goal.modulate = Color.WHITE.lerp(LOST_FLASH, strength)
-
-
-func _stop_count_flash() -> void:
-	_count_flash_left = 0.0
-	_in_goal.modulate = Color.WHITE
-
-
 ## True while the panel's count flashes (for tests).
 func count_flashing() -> bool:
-	return _count_flash_left > 0.0
+	return _lines.count_flashing()
 
 
 # The rules counted a ball in (or out): the panel's count at once, and for a ball in, a
@@ -393,17 +358,18 @@ func _on_goal_count_changed(count: int) -> void:
 	if count > _goal_count:
 		_sounds.play(SoundBank.GOAL_CHIME, -10.0, 0.9 + 0.1 * float(count))
 		_stage.light_goal()
-	_show_goal_count(count)
-
-
-func _show_goal_count(count: int) -> void:
 	_goal_count = count
-	_in_goal.text = "In goal  %d / %d" % [count, rules.ball_total()]
+	_lines.show_goal_count(count, rules.ball_total())
 
 
 ## The panel's "In goal 2 / 4" line (for tests).
 func goal_count_text() -> String:
-	return _in_goal.text
+	return _lines.goal_count_text()
+
+
+## The panel's medal line (for tests).
+func next_medal_text() -> String:
+	return _lines.medal_line()
 
 
 func _on_wall_bumped(speed: float) -> void:
@@ -425,8 +391,7 @@ func _on_restart_requested() -> void:
 
 
 func _show_best() -> void:
-	var best := App.best_maze_time(rules.level.board_id, rules.hard_mode)
-	_best.text = "Best  %s" % (_format_time(best) if best >= 0.0 else "--")
+	_lines.show_best(rules.level.board_id, rules.hard_mode)
 	if _panel_layout != null:
 		_layout()  # a narrowed column widens again for a longer line (never while playing)
 
@@ -457,7 +422,3 @@ func _add_optional_scene(path: String) -> void:
 	var pause_menu := node as PauseMenu
 	if pause_menu != null:
 		pause_menu.restart_requested.connect(_on_restart_requested)
-
-
-static func _format_time(seconds: float) -> String:
-	return MazeWinSummary.clock(seconds)
