@@ -125,6 +125,10 @@ func _process(delta: float) -> void:
 		if mixer.source != TiltMixer.Source.JOYSTICK:
 			_joystick.head_offset = TiltInput.joystick_from_tilt(tilt)
 		MazeFrameSteps.run(rules, _recorder, delta)
+	elif rules.state == MazeRules.State.WON:
+		# the board eases back to level (as a key let go) and the dip gathers the balls in
+		rules.set_tilt(TiltInput.ramp_toward(rules.tilt, Vector2.ZERO, delta))
+		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
 	if _ghost != null:
 		_ghost.sync(rules.world.step_count)
 		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())

@@ -60,9 +60,9 @@ static func start(hard: bool, balls: int = 4, holes: int = 1, board_id := "") ->
 
 
 ## The line under the start hint when the best run's ghost rolls beside the balls (a play
-## trial took the pale ball for one more ball of its own).
+## trial took the pale ball for one more ball of its own; the ghost is blue glass now).
 static func ghost() -> String:
-	return "The pale ball is your best run."
+	return "See-through blue balls replay your best run."
 
 
 ## The hint under "Congrats, you did it!" (hard mode has nothing harder to offer, and a board
