@@ -257,7 +257,8 @@ func _on_won(seconds: float) -> void:
 		_note.show_note(next_try, "")
 	_lines.show_medal_line(summary.medal_line())
 	_show_best()
-	_win_panel.present(summary, rules.hard_mode, not _next_board_path().is_empty())
+	var has_next := not MazeProgress.next_path(board_id).is_empty()
+	_win_panel.present(summary, rules.hard_mode, has_next)
 	_sounds.play(SoundBank.FANFARE)
 	if summary.medal != Medals.Medal.NONE:
 		# a chime on top, higher for a better medal
@@ -284,8 +285,7 @@ func _layout() -> Rect2:
 		_panel_layout.reserve_lines(_next_medal, 2)
 	var stretch := get_viewport().get_final_transform().get_scale().y
 	_panel_layout.place_text(stretch)
-	for label: Label in [_timer, _best]:
-		_hold_time_width(label)
+	_lines.hold_time_widths()
 	var aspect := _stage.framing().board_aspect if rules != null else 0.0
 	var region := _panel_layout.place(get_viewport_rect().size, stretch, aspect)
 	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
@@ -297,26 +297,13 @@ func _layout() -> Rect2:
 	return region
 
 
-# Gives the Time / Best label the width of a time shown in it, so "Best  --" and "Best
-# 0:12.3" take the same room: the column, sized to its widest line, keeps its width after a
-# first finish (a play trial saw the board and the joystick shrink on the next attempt).
-func _hold_time_width(label: Label) -> void:
-	var font := label.get_theme_font(&"font")
-	var font_size := label.get_theme_font_size(&"font_size")
-	var prefix := label.text.get_slice("  ", 0)
-	var widest := font.get_string_size(
-		prefix + "  0:00.0", HORIZONTAL_ALIGNMENT_LEFT, -1, font_size
-	)
-	label.custom_minimum_size.x = ceilf(widest.x)
-
-
 ## The win panel (for tests and the screenshots).
 func win_panel() -> MazeWinPanel:
 	return _win_panel
 
 
 func _on_next_board() -> void:
-	var path := _next_board_path()
+	var path := MazeProgress.next_path(rules.level.board_id)
 	if not path.is_empty():
 		App.start_game(BoardLevel.MAZE_NAME, path)
 
@@ -324,16 +311,6 @@ func _on_next_board() -> void:
 func _on_retry() -> void:
 	if rules != null:
 		rules.reset()
-
-
-## The file of the board that opens after this one ("" after the last or for the player's
-## own boards).
-func _next_board_path() -> String:
-	var next_id := MazeProgress.next_of(rules.level.board_id)
-	if next_id.is_empty():
-		return ""
-	var path := MazeProgress.shipped_path(next_id)
-	return path if FileAccess.file_exists(path) else ""
 
 
 func _on_lost(hole: int) -> void:
@@ -389,11 +366,6 @@ func _on_settings_changed() -> void:
 		_stage.set_low_graphics(App.settings.maze_low_graphics)
 
 
-func _on_restart_requested() -> void:
-	if rules != null:
-		rules.reset()
-
-
 func _show_best() -> void:
 	_lines.show_best(rules.level.board_id, rules.hard_mode)
 	if _panel_layout != null:
@@ -425,4 +397,4 @@ func _add_optional_scene(path: String) -> void:
 	add_child(node)
 	var pause_menu := node as PauseMenu
 	if pause_menu != null:
-		pause_menu.restart_requested.connect(_on_restart_requested)
+		pause_menu.restart_requested.connect(_on_retry)

@@ -71,6 +71,21 @@ func show_best(board_id: String, hard: bool) -> void:
 	_best.text = "Best  %s" % (MazeWinSummary.clock(best) if best >= 0.0 else "--")
 
 
+## Gives the Time and Best lines the width of a time shown in them, so "Best  --" and
+## "Best  0:12.3" take the same room: the column, sized to its widest line, keeps its width
+## after a first finish (a play trial saw the board and the joystick shrink on the next
+## attempt).
+func hold_time_widths() -> void:
+	for label: Label in [_timer, _best]:
+		var font := label.get_theme_font(&"font")
+		var font_size := label.get_theme_font_size(&"font_size")
+		var prefix := label.text.get_slice("  ", 0)
+		var widest := font.get_string_size(
+			prefix + "  0:00.0", HORIZONTAL_ALIGNMENT_LEFT, -1, font_size
+		)
+		label.custom_minimum_size.x = ceilf(widest.x)
+
+
 ## "In goal 2 / 4".
 func show_goal_count(count: int, total: int) -> void:
 	_in_goal.text = "In goal  %d / %d" % [count, total]
