@@ -61,3 +61,25 @@ func test_the_panel_stays_put_when_the_medal_line_wraps() -> void:
 	await wait_process_frames(2)
 	assert_ne(game.next_medal_text(), "", "a line about the medal")
 	assert_eq([stick.global_position, title.global_position], before, "nothing moved")
+
+
+# A play trial saw the panel drawn larger during "Loading…" (title and controls cut off),
+# then shrink once the board was up: the joystick kept its designed double size until the
+# first layout that fitted.
+func test_the_panel_fits_from_the_first_frame() -> void:
+	App.request_board(BoardLevel.MAZE_NAME, "res://levels/maze/first_roll.board")
+	var port := SubViewport.new()
+	port.size = Vector2i(1280, 720)
+	port.render_target_update_mode = SubViewport.UPDATE_DISABLED
+	add_child_autofree(port)
+	var game: MazeGame = GAME.instantiate()
+	port.add_child(game)
+	var side := game.get_node("Side") as Control
+	var stick := game.get_node("%Joystick") as MazeJoystick
+	assert_lte(
+		MazeJoystick.drawn_size(stick.ui_scale),
+		MazeJoystick.drawn_size(MazePanelLayout.JOYSTICK_SCALE) + 0.5,
+		"the joystick at its size at once"
+	)
+	await wait_process_frames(1)  # the column has its width: its lines wrap to it
+	assert_lte(side.get_combined_minimum_size().y, 720.0, "the panel fits the window at once")
