@@ -21,7 +21,7 @@ const BOARDS := [
 	[
 		"cloister",
 		"Cloister",
-		"Short corridors round a quiet goal room, loops to try; two holes wait in dead ends.",
+		"Short corridors round a quiet goal room, loops to try; in hard mode, two holes to steer round.",
 		8,
 		7,
 		2,

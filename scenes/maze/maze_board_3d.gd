@@ -30,6 +30,10 @@ const BODY_DEPTH := 16.0
 const GOAL_LIP_PX := 2.0
 ## How deep a hole is, in hole radii (the tube must fit inside the body).
 const HOLE_DEPTH_PER_RADIUS := 1.3
+## Low graphics draws each wall's end in this many pieces (square ends): the walls were its
+## largest cost on software GL (tools/maze_fps.sh: 36 frames per CPU second with them, 53
+## without), and most of their triangles were in the rounded ends.
+const LOW_WALL_CAP_SEGMENTS := 1
 ## The floor shader's limit on holes; more are drawn without their cut-out.
 const MAX_HOLES := 64
 ## Share of the light a full shadow takes from the floor.
@@ -78,7 +82,7 @@ func build(level: BoardLevel, hard: bool) -> void:
 	quad.size = size * MazeMeshes.UNITS_PER_PX
 	_floor.mesh = quad
 	var wall_height := wall_height_px()
-	_walls.mesh = MazeMeshes.walls(size, level.walls, level.wall_width, wall_height)
+	_build_walls()
 	_frame.mesh = MazeMeshes.frame(size, FRAME_MARGIN, wall_height + FRAME_EXTRA_HEIGHT, BODY_DEPTH)
 	_set_paint(
 		"wall_field", ImageTexture.create_from_image(MazeSoftShadows.wall_field(size, level.walls))
@@ -131,8 +135,28 @@ func _paint_look() -> void:
 
 ## Switches Low graphics on or off on a board already built (see `low_graphics`).
 func set_low_graphics(low: bool) -> void:
+	var changed := low != low_graphics
 	low_graphics = low
 	_paint_look()
+	if changed and _level != null:
+		_build_walls()
+
+
+## The number of triangles the walls are drawn with now (for tests and tools/maze_fps.sh).
+func wall_triangles() -> int:
+	if _walls.mesh == null:
+		return 0
+	var mesh := _walls.mesh as ArrayMesh
+	return floori(mesh.surface_get_array_index_len(0) / 3.0)
+
+
+# The walls' mesh: rounded, chamfered ends, or on Low graphics square ones without the
+# chamfer (LOW_WALL_CAP_SEGMENTS).
+func _build_walls() -> void:
+	var segments := LOW_WALL_CAP_SEGMENTS if low_graphics else MazeMeshes.CAP_SEGMENTS
+	_walls.mesh = MazeMeshes.walls(
+		_level.size, _level.walls, _level.wall_width, wall_height_px(), segments, not low_graphics
+	)
 
 
 ## Lights the goal's dish: 0 plain, 1 brightest (the stage fades it after a ball is counted).

@@ -13,9 +13,6 @@ const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
 const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
-## The panel's count flashes this long when a ball is lost (seconds), in the hard colour.
-const LOST_FLASH_SECONDS := 1.2
-const LOST_FLASH := Color(0.85, 0.15, 0.2)
 
 ## The rules of the board being played (null if no board could be loaded).
 var rules: MazeRules
@@ -27,6 +24,7 @@ var haptics := MazeHaptics.new()
 var _sounds: SoundBank
 var _load_problem := ""
 var _goal_count := 0
+var _lines: MazeSideLines
 var _recorder := ReplayRecorder.new()
 var _ghost: GhostRun
 var _ghost_view := MazeGhost3d.new()
@@ -35,8 +33,6 @@ var _win_panel := MazeWinPanel.new()
 var _panel_layout: MazePanelLayout
 ## Frames left in which the panel is placed again after a window change (SETTLE_FRAMES).
 var _settle_frames := 0
-## Seconds left of the count's flash after a ball was lost (0: none).
-var _count_flash_left := 0.0
 ## True from a ball lost until the card saying so is up (it waits for the ball to drop).
 var _loss_card_due := false
 
@@ -55,6 +51,7 @@ var _loss_card_due := false
 
 
 func _ready() -> void:
+	_lines = MazeSideLines.new(_mode, _timer, _best, _next_medal, _in_goal)
 	_sounds = SoundBank.new()
 	add_child(_sounds)
 	SoundBank.warm([SoundRecipes.BALL_ROLL, SoundRecipes.BALL_DROP, SoundBank.WALL_THUD])
@@ -100,7 +97,7 @@ func _ready() -> void:
 	_on_game_reset()
 	# the first frame drawn shows the board ready: its balls and the medal in reach
 	_stage.sync_balls(rules, 0.0)
-	_show_next_medal()
+	_lines.show_next_medal(rules)
 	# with a window, the curtain stays up (its ring turning) while the board's parts come on
 	# one frame at a time, each compiling its shaders (headless nothing is drawn)
 	if DisplayServer.get_name() != "headless":
@@ -127,8 +124,11 @@ func _process(delta: float) -> void:
 		rules.set_tilt(tilt)
 		if mixer.source != TiltMixer.Source.JOYSTICK:
 			_joystick.head_offset = TiltInput.joystick_from_tilt(tilt)
-		rules.advance(delta)
-		_recorder.note_frame()
+		MazeFrameSteps.run(rules, _recorder, delta)
+	elif rules.state == MazeRules.State.WON:
+		# the board eases back to level (as a key let go) and the dip gathers the balls in
+		rules.set_tilt(TiltInput.ramp_toward(rules.tilt, Vector2.ZERO, delta))
+		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
 	if _ghost != null:
 		_ghost.sync(rules.world.step_count)
 		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
@@ -138,10 +138,11 @@ func _process(delta: float) -> void:
 		_rolling.update(rules.world.get_velocities(), delta)
 	else:
 		_rolling.stop_all()
-	_timer.text = "Time  %s" % _format_time(rules.elapsed)
-	if not rules.is_over():
-		_show_next_medal()
-	_step_count_flash(delta)
+	_lines.show_clock(rules)
+	if rules.state == MazeRules.State.LOST:
+		# two balls may drop at once; the rules end the run at the first
+		_lines.show_balls_left(rules.balls_left(), rules.ball_total(), false)
+	_lines.step_flash(delta)
 	if _loss_card_due and _stage.balls().fall_progress() >= 1.0:
 		_loss_card_due = false
 		_win_panel.present_loss(rules.balls_left(), rules.ball_total())
@@ -215,9 +216,9 @@ func _on_calibrate() -> void:
 
 
 func _on_game_reset() -> void:
-	_stop_count_flash()
 	_loss_card_due = false
-	_show_goal_count(0)
+	_goal_count = 0
+	_lines.show_attempt(rules.hard_mode, rules.ball_total())
 	_win_panel.hide()
 	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
 	_ghost_view.set_board_size(rules.level.size)
@@ -226,8 +227,6 @@ func _on_game_reset() -> void:
 	mixer.reset()
 	_stage.set_tilt(Vector2.ZERO)
 	_stage.set_hard_mode(rules.hard_mode)
-	_mode.text = "HARD MODE" if rules.hard_mode else "EASY MODE"
-	_mode.modulate = MazePalette.HARD if rules.hard_mode else MazePalette.GOAL
 	var hint := MazeHints.start(
 		rules.hard_mode, rules.ball_total(), rules.level.holes.size(), rules.level.board_id
 	)
@@ -250,12 +249,16 @@ func _on_won(seconds: float) -> void:
 	if best:
 		var path := ReplayStore.best_maze_path(board_id, rules.hard_mode)
 		ReplayStore.save(_recorder.finish(), path)
-	_note.show_note(
-		"Congrats, you did it!", MazeHints.won(rules.hard_mode, rules.level.holes.size())
-	)
-	_next_medal.text = summary.medal_line()
+	# the card says it was done; the panel only says what else there is to try
+	var next_try := MazeHints.won(rules.hard_mode, rules.level.holes.size())
+	if next_try.is_empty():
+		_note.fade_out()
+	else:
+		_note.show_note(next_try, "")
+	_lines.show_medal_line(summary.medal_line())
 	_show_best()
-	_win_panel.present(summary, rules.hard_mode, not _next_board_path().is_empty())
+	var has_next := not MazeProgress.next_path(board_id).is_empty()
+	_win_panel.present(summary, rules.hard_mode, has_next)
 	_sounds.play(SoundBank.FANFARE)
 	if summary.medal != Medals.Medal.NONE:
 		# a chime on top, higher for a better medal
@@ -278,10 +281,11 @@ func _on_size_changed() -> void:
 func _layout() -> Rect2:
 	if _panel_layout == null:
 		_panel_layout = MazePanelLayout.new(_side, _joystick)
+		# the medal line says "Gold by 0:20.4" or a longer line that may wrap
+		_panel_layout.reserve_lines(_next_medal, 2)
 	var stretch := get_viewport().get_final_transform().get_scale().y
 	_panel_layout.place_text(stretch)
-	for label: Label in [_timer, _best]:
-		_hold_time_width(label)
+	_lines.hold_time_widths()
 	var aspect := _stage.framing().board_aspect if rules != null else 0.0
 	var region := _panel_layout.place(get_viewport_rect().size, stretch, aspect)
 	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
@@ -293,26 +297,13 @@ func _layout() -> Rect2:
 	return region
 
 
-# Gives the Time / Best label the width of a time shown in it, so "Best  --" and "Best
-# 0:12.3" take the same room: the column, sized to its widest line, keeps its width after a
-# first finish (a play trial saw the board and the joystick shrink on the next attempt).
-func _hold_time_width(label: Label) -> void:
-	var font := label.get_theme_font(&"font")
-	var font_size := label.get_theme_font_size(&"font_size")
-	var prefix := label.text.get_slice("  ", 0)
-	var widest := font.get_string_size(
-		prefix + "  0:00.0", HORIZONTAL_ALIGNMENT_LEFT, -1, font_size
-	)
-	label.custom_minimum_size.x = ceilf(widest.x)
-
-
 ## The win panel (for tests and the screenshots).
 func win_panel() -> MazeWinPanel:
 	return _win_panel
 
 
 func _on_next_board() -> void:
-	var path := _next_board_path()
+	var path := MazeProgress.next_path(rules.level.board_id)
 	if not path.is_empty():
 		App.start_game(BoardLevel.MAZE_NAME, path)
 
@@ -322,33 +313,9 @@ func _on_retry() -> void:
 		rules.reset()
 
 
-## The file of the board that opens after this one ("" after the last or for the player's
-## own boards).
-func _next_board_path() -> String:
-	var next_id := MazeProgress.next_of(rules.level.board_id)
-	if next_id.is_empty():
-		return ""
-	var path := MazeProgress.shipped_path(next_id)
-	return path if FileAccess.file_exists(path) else ""
-
-
-## The medal still in reach while playing: "Gold by 0:36.3", then Silver once that passed.
-func _show_next_medal() -> void:
-	var times := Medals.times_for(rules.level, rules.hard_mode)
-	var target := Medals.next_target(times, rules.elapsed)
-	var medal: Medals.Medal = target["medal"]
-	if times.size() != 3:
-		_next_medal.text = ""
-	elif medal == Medals.Medal.NONE:
-		_next_medal.text = "No medal left: finish anyway!"
-	else:
-		var seconds: float = target["seconds"]
-		_next_medal.text = "%s by %s" % [Medals.name_of(medal), _format_time(seconds)]
-
-
 func _on_lost(hole: int) -> void:
 	_joystick.release()
-	_next_medal.text = ""
+	_lines.show_medal_line("")
 	_stage.set_lost_hole(hole)
 	_sounds.play(SoundRecipes.BALL_DROP)
 	haptics.drop()
@@ -356,36 +323,14 @@ func _on_lost(hole: int) -> void:
 	# at once, not faded in: the run is over (every ball must reach the dip)
 	_note.show_note_now(lost[0], lost[1])
 	_sounds.play(SoundBank.HOLE_FALL, -9.0)
-	_in_goal.text = MazeHints.balls_left(rules.balls_left(), rules.ball_total())
-	_flash_count()
-	_in_goal.modulate = LOST_FLASH
+	_lines.show_balls_left(rules.balls_left(), rules.ball_total(), true)
 	# the card with Retry comes up once the ball has dropped out of sight (_process)
 	_loss_card_due = not rules.can_still_win()
 
 
-# Flashes the panel's count in red a few times (a ball was lost); _process runs it.
-func _flash_count() -> void:
-	_count_flash_left = LOST_FLASH_SECONDS
-
-
-# Steps the count's flash by `delta` seconds: three red pulses, then its own colour.
-func _step_count_flash(delta: float) -> void:
-	if _count_flash_left <= 0.0:
-		return
-	_count_flash_left = maxf(_count_flash_left - delta, 0.0)
-	var pulses := 3.0 * (1.0 - _count_flash_left / LOST_FLASH_SECONDS)
-	var strength := 0.5 - 0.5 * cos(pulses * TAU)
-	_in_goal.modulate = Color.WHITE.lerp(LOST_FLASH, strength)
-
-
-func _stop_count_flash() -> void:
-	_count_flash_left = 0.0
-	_in_goal.modulate = Color.WHITE
-
-
 ## True while the panel's count flashes (for tests).
 func count_flashing() -> bool:
-	return _count_flash_left > 0.0
+	return _lines.count_flashing()
 
 
 # The rules counted a ball in (or out): the panel's count at once, and for a ball in, a
@@ -394,17 +339,18 @@ func _on_goal_count_changed(count: int) -> void:
 	if count > _goal_count:
 		_sounds.play(SoundBank.GOAL_CHIME, -10.0, 0.9 + 0.1 * float(count))
 		_stage.light_goal()
-	_show_goal_count(count)
-
-
-func _show_goal_count(count: int) -> void:
 	_goal_count = count
-	_in_goal.text = "In goal  %d / %d" % [count, rules.ball_total()]
+	_lines.show_goal_count(count, rules.ball_total())
 
 
 ## The panel's "In goal 2 / 4" line (for tests).
 func goal_count_text() -> String:
-	return _in_goal.text
+	return _lines.goal_count_text()
+
+
+## The panel's medal line (for tests).
+func next_medal_text() -> String:
+	return _lines.medal_line()
 
 
 func _on_wall_bumped(speed: float) -> void:
@@ -420,14 +366,8 @@ func _on_settings_changed() -> void:
 		_stage.set_low_graphics(App.settings.maze_low_graphics)
 
 
-func _on_restart_requested() -> void:
-	if rules != null:
-		rules.reset()
-
-
 func _show_best() -> void:
-	var best := App.best_maze_time(rules.level.board_id, rules.hard_mode)
-	_best.text = "Best  %s" % (_format_time(best) if best >= 0.0 else "--")
+	_lines.show_best(rules.level.board_id, rules.hard_mode)
 	if _panel_layout != null:
 		_layout()  # a narrowed column widens again for a longer line (never while playing)
 
@@ -457,8 +397,4 @@ func _add_optional_scene(path: String) -> void:
 	add_child(node)
 	var pause_menu := node as PauseMenu
 	if pause_menu != null:
-		pause_menu.restart_requested.connect(_on_restart_requested)
-
-
-static func _format_time(seconds: float) -> String:
-	return MazeWinSummary.clock(seconds)
+		pause_menu.restart_requested.connect(_on_retry)

@@ -2,13 +2,13 @@ class_name MazeGhost3d
 extends Node3D
 ## The ghost of the best run in the 3D maze: translucent balls standing where the best run's
 ## balls were at the same step. It lives on the tilting board (the stage's `add_on_board`),
-## so it tilts with it; it casts no shadow and takes no light of its own: a translucent steel
-## ball (maze_ghost.gdshader) with a bright rim, so it reads as "not a real ball" beside the
-## solid ones. Call `show_balls` every frame and `clear` on a reset.
+## so it tilts with it; it casts no shadow and takes no light of its own: a see-through blue
+## glass ball with a firm blue outline (maze_ghost.gdshader), so it reads as "not a real
+## ball" beside the solid steel ones. Call `show_balls` every frame and `clear` on a reset.
 
 const GHOST_SHADER := preload("res://scenes/maze/maze_ghost.gdshader")
 ## How much of the ghost's body hides what is behind it (its rim and highlight show more).
-const OPACITY := 0.42
+const OPACITY := 0.22
 
 ## Ghost ball positions last shown, in board pixels (read by tests).
 var shown_positions := PackedVector2Array()

@@ -13,7 +13,7 @@ const TIPS := {
 	"maze_two_together": "Tip: let both balls stop against a wall before you tilt the next way.",
 	"maze_cloister": "Tip: a ball in the dip stays there, so bring the others in one by one.",
 	"maze_garden": "Tip: gather the balls against one wall first, then roll them on together.",
-	"maze_switchbacks": "Tip: plan the route before you tilt: the clock starts then.",
+	"maze_switchbacks": "Tip: plan the route first. The clock starts at your first tilt.",
 }
 
 
@@ -29,7 +29,7 @@ static func controls() -> String:
 		"%s pause" % KeyNames.of(&"pause", "the pause key"),
 	]:
 		items.append(item.replace(" ", NBSP))
-	return "Tilt: joystick, arrows / WASD, or a gamepad stick\n" + (NBSP + NBSP + "·  ").join(items)
+	return "Tilt: arrows, WASD or a stick\n" + (NBSP + NBSP + "·  ").join(items)
 
 
 ## The line in its place before there is a best run to race (as long, so the note keeps its
@@ -45,33 +45,30 @@ static func no_ghost_yet() -> String:
 static func start(hard: bool, balls: int = 4, holes: int = 1, board_id := "") -> String:
 	if hard and holes == 0:
 		return (
-			"Hard mode: this board has no black holes, so it plays as in easy mode."
-			+ " Back to easy mode? Press %s" % _easy()
+			"This board has no black holes, so hard mode is the same as easy."
+			+ " Back to easy mode? Press%s%s" % [NBSP, _easy()]
 		)
 	if hard:
-		return "Hard mode: avoid the black holes. Back to easy mode? Press %s" % _easy()
+		return "Hard mode: avoid the black holes. Back to easy mode? Press%s%s" % [NBSP, _easy()]
 	if balls == 1:
-		return (
-			"Tilt with the arrow keys or the joystick: the ball rolls downhill."
-			+ " Roll it into the round dip."
-		)
+		return "Tilt with the arrows or the joystick: the ball rolls downhill, into the dip."
 	if TIPS.has(board_id):
 		return "Roll every ball into the round dip. %s" % TIPS[board_id]
 	if holes == 0:
 		return "Roll every ball into the round dip."
-	return "Roll every ball into the round dip. Ready for hard mode? Press %s" % _hard()
+	return "Roll every ball into the round dip. Ready for hard mode? Press%s%s" % [NBSP, _hard()]
 
 
 ## The line under the start hint when the best run's ghost rolls beside the balls (a play
-## trial took the pale ball for one more ball of its own).
+## trial took the pale ball for one more ball of its own; the ghost is blue glass now).
 static func ghost() -> String:
-	return "The pale ball is your best run."
+	return "See-through blue balls replay your best run."
 
 
 ## The hint under "Congrats, you did it!" (hard mode has nothing harder to offer, and a board
 ## without black holes has no hard mode worth asking for).
 static func won(hard: bool, holes: int = 1) -> String:
-	return "" if hard or holes == 0 else "Press %s for hard mode" % _hard()
+	return "" if hard or holes == 0 else "Press%s%s for hard mode" % [NBSP, _hard()]
 
 
 ## The note and its hint when a ball falls into a black hole: the run can't be won any
@@ -80,14 +77,17 @@ static func lost() -> PackedStringArray:
 	return PackedStringArray(
 		[
 			"A ball fell into a black hole: this run can't be won now.",
-			"Retry, or press %s to start again. Back to easy? Press %s" % [_reset(), _easy()],
+			(
+				"Retry, or press%s%s to start again. Back to easy? Press%s%s"
+				% [NBSP, _reset(), NBSP, _easy()]
+			),
 		]
 	)
 
 
-## The panel's count once a ball is lost: "Ball lost: 3 of 4 left".
+## The count once a ball is lost, on the panel and the card alike: "2 of 4 balls left".
 static func balls_left(left: int, total: int) -> String:
-	return "Ball lost: %d of %d left" % [left, total]
+	return "%d of %d balls left" % [left, total]
 
 
 static func _reset() -> String:

@@ -20,8 +20,10 @@ const ARROW_HALF := 10.0
 const GLOW_DELAY := 4.0
 const GLOW_PERIOD := 0.6
 
-## Screen pixels per seed pixel, for drawing.
-@export var ui_scale := 2.0:
+## Screen pixels per seed pixel, for drawing. Starts at the size the maze panel gives it
+## (MazePanelLayout.JOYSTICK_SCALE), so the panel fits from its first frame (a play trial saw
+## it drawn at double size, cut off, during "Loading…").
+@export var ui_scale := 1.0:
 	set(value):
 		ui_scale = maxf(value, 0.5)
 		custom_minimum_size = Vector2.ONE * drawn_size(ui_scale)

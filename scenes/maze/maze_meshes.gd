@@ -27,17 +27,24 @@ static func to_local(board_size: Vector2, p: Vector2, height_px: float = 0.0) ->
 
 
 ## All `walls` (pairs of ends, board pixels) as raised stadiums `width` wide and `height`
-## tall, one surface. Null when there are no walls.
+## tall, one surface, each rounded end in `cap_segments` pieces, their top edges chamfered
+## (`bevelled`). Square ends without a chamfer (1, false) are Low graphics' cheaper walls.
+## Null when there are no walls.
 static func walls(
-	board_size: Vector2, ends: PackedVector2Array, width: float, height: float
+	board_size: Vector2,
+	ends: PackedVector2Array,
+	width: float,
+	height: float,
+	cap_segments := CAP_SEGMENTS,
+	bevelled := true
 ) -> ArrayMesh:
 	if ends.size() < 2:
 		return null
 	var st := SurfaceTool.new()
 	st.begin(Mesh.PRIMITIVE_TRIANGLES)
-	var bevel := minf(width * 0.5, height) * BEVEL_SHARE
+	var bevel := minf(width * 0.5, height) * BEVEL_SHARE if bevelled else 0.0
 	for i in range(0, ends.size() - 1, 2):
-		var outline := _stadium(ends[i], ends[i + 1], width * 0.5)
+		var outline := _stadium(ends[i], ends[i + 1], width * 0.5, maxi(cap_segments, 1))
 		_extrude(st, board_size, outline, height, bevel)
 	st.index()  # shared corners once: software GL pays per vertex
 	return st.commit()
@@ -148,7 +155,7 @@ static func holes(
 
 # The outline of a capsule from `a` to `b` with radius `r`, in order round it, as points and
 # their outward directions (board pixels).
-static func _stadium(a: Vector2, b: Vector2, r: float) -> Array[PackedVector2Array]:
+static func _stadium(a: Vector2, b: Vector2, r: float, segments: int) -> Array[PackedVector2Array]:
 	var along := b - a
 	var dir := along.normalized() if along.length() > 0.001 else Vector2.RIGHT
 	var base := dir.angle()
@@ -157,8 +164,8 @@ static func _stadium(a: Vector2, b: Vector2, r: float) -> Array[PackedVector2Arr
 	for end in 2:
 		var centre := b if end == 0 else a
 		var start := base - PI * 0.5 + PI * float(end)
-		for k in CAP_SEGMENTS + 1:
-			var angle := start + PI * float(k) / float(CAP_SEGMENTS)
+		for k in segments + 1:
+			var angle := start + PI * float(k) / float(segments)
 			var n := Vector2(cos(angle), sin(angle))
 			points.append(centre + n * r)
 			normals.append(n)
@@ -190,10 +197,11 @@ static func _extrude(
 		var top_j := to_local(size, tj, h)
 		_tri(st, [lo_i, mid_j, lo_j], [ni, nj, nj])
 		_tri(st, [lo_i, mid_i, mid_j], [ni, ni, nj])
-		var bi := (ni + Vector3.BACK).normalized()
-		var bj := (nj + Vector3.BACK).normalized()
-		_tri(st, [mid_i, top_j, mid_j], [bi, Vector3.BACK, bj])
-		_tri(st, [mid_i, top_i, top_j], [bi, Vector3.BACK, Vector3.BACK])
+		if bevel > 0.0:  # the chamfer; without it the side meets the top's edge
+			var bi := (ni + Vector3.BACK).normalized()
+			var bj := (nj + Vector3.BACK).normalized()
+			_tri(st, [mid_i, top_j, mid_j], [bi, Vector3.BACK, bj])
+			_tri(st, [mid_i, top_i, top_j], [bi, Vector3.BACK, Vector3.BACK])
 		var c := to_local(size, centre, h)
 		_tri(st, [c, top_j, top_i], [Vector3.BACK, Vector3.BACK, Vector3.BACK])
 

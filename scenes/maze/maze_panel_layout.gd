@@ -15,11 +15,16 @@ const SIDE_EDGE := 24.0
 const SIDE_MOST_SHARE := 0.36
 const PORTRAIT_SIDE_SHARE := 0.45
 ## The narrowest the column goes for a wide board (design px, grown with the text).
-const SIDE_NARROWEST := 210.0
+const SIDE_NARROWEST := 225.0
 ## The margin the framing keeps round the board (MazeFraming.MARGIN_PX).
 const BOARD_MARGIN := 8.0
 ## Layouts tried again, a frame apart, while the column has no width yet.
 const RETRIES := 3
+## The joystick's size in a landscape column, times the seed's (times the text's growth in a
+## small window): one size on every board, big enough to grab, and under the narrowest
+## column (a play trial found a ~25 px knob on First Roll, whose long hint and wide board
+## left little room, and a large one on Switchbacks).
+const JOYSTICK_SCALE := 1.0
 
 ## Frames after the screen opens or the window changes in which `place` works the layout
 ## out afresh while the wrapped text settles; after them the layout is kept for that window
@@ -39,6 +44,8 @@ var _fresh_until := 0
 # What the kept layout was worked out for (view, stretch, board aspect), and its board region.
 var _kept_for: Array = []
 var _kept_region := Rect2()
+# Label -> the lines it keeps room for whatever it says now (reserve_lines).
+var _reserved: Dictionary = {}
 
 
 func _init(side: VBoxContainer, joystick: MazeJoystick) -> void:
@@ -51,6 +58,14 @@ func _init(side: VBoxContainer, joystick: MazeJoystick) -> void:
 ## Grows the panel's text for a view drawn `stretch` times its size (as `place` does first).
 func place_text(stretch: float) -> void:
 	_side_text.apply(stretch)
+
+
+## Keeps room for `lines` lines of `label` whatever it says, so the panel does not move
+## when its text wraps onto one more line (a play trial saw it jump 14 px under the pointer
+## as the medal line changed to a two-line one).
+func reserve_lines(label: Label, lines: int) -> void:
+	_reserved[label] = lines
+	_hold_reserved()
 
 
 ## The window changed: the retries start over and the layout is worked out afresh.
@@ -78,6 +93,7 @@ func place(view: Vector2, stretch: float, board_aspect := 0.0) -> Rect2:
 func _place(view: Vector2, stretch: float, board_aspect: float) -> Rect2:
 	needs_retry = false
 	_side_text.apply(stretch)
+	_hold_reserved()
 	if view.x >= view.y:
 		# the design's sizes, or bigger in a small window (900 × 700 drew them at 0.7): the
 		# column widens with its text and the board takes the rest
@@ -90,7 +106,10 @@ func _place(view: Vector2, stretch: float, board_aspect: float) -> Rect2:
 		_side.offset_right = -SIDE_EDGE
 		_side.offset_top = SIDE_EDGE
 		_side.offset_bottom = -SIDE_EDGE
-		_fit_joystick(minf(2.0, width / MazeJoystick.drawn_size(1.0)), view.y - SIDE_EDGE * 2.0)
+		var largest := minf(
+			JOYSTICK_SCALE * _side_text.factor, width / MazeJoystick.drawn_size(1.0)
+		)
+		_fit_joystick(largest, view.y - SIDE_EDGE * 2.0)
 		return Rect2(0.0, 0.0, view.x - width - SIDE_EDGE * 1.5, view.y)
 	var height := view.y * PORTRAIT_SIDE_SHARE
 	_side.set_anchors_preset(Control.PRESET_BOTTOM_WIDE)
@@ -125,6 +144,16 @@ func _lines_width() -> float:
 		if line != null and line != _joystick and line.visible:
 			widest = maxf(widest, line.get_combined_minimum_size().x)
 	return widest
+
+
+# Gives each reserved label the height of its reserved lines at its font size now.
+func _hold_reserved() -> void:
+	for label: Label in _reserved.keys():
+		var font := label.get_theme_font(&"font")
+		var font_size := MazeSideText.font_size_of(label)
+		var line := font.get_height(font_size) + label.get_theme_constant(&"line_spacing")
+		var lines: int = _reserved[label]
+		label.custom_minimum_size.y = ceilf(line * lines)
 
 
 # Sizes the joystick at most `largest` times the seed's size and no bigger than the height

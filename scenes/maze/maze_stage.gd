@@ -235,7 +235,9 @@ static func ball_material(seed_red: bool, low := false) -> StandardMaterial3D:
 		mat.roughness = 0.28
 		mat.metallic_specular = 0.7
 	elif low:
-		# no room to reflect: a bright satin grey with the sun's highlight
+		# no room to reflect: a bright satin grey with the sun's highlight, lit per vertex
+		# (software GL lights every pixel of a ball otherwise)
+		mat.shading_mode = BaseMaterial3D.SHADING_MODE_PER_VERTEX
 		mat.roughness = 0.3
 		mat.metallic_specular = 0.8
 		mat.emission_energy_multiplier = 0.9

@@ -113,7 +113,7 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 ## more (`left` of `total` balls are still on the board), and Retry (focused) and Menu.
 func present_loss(left: int, total: int) -> void:
 	_headline.text = "Ball lost"
-	_time.text = "%d of %d balls left" % [left, total]
+	_time.text = MazeHints.balls_left(left, total)
 	_medal.text = "Every ball has to reach the dip,\nso this run can't be won."
 	_medal.visible = true
 	_medal.add_theme_color_override("font_color", INK)

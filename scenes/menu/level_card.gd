@@ -92,7 +92,8 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 		hard,
 		hint if is_locked else "",
 		Medals.times_for(level, false),
-		Medals.times_for(level, true)
+		Medals.times_for(level, true),
+		not level.holes.is_empty()
 	)
 	disabled = locked
 	_thumbnail.modulate = Color(1, 1, 1, 0.3 if locked else 1.0)

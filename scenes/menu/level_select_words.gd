@@ -20,7 +20,7 @@ static func summary(
 	if broken > 0:
 		text += ", %d could not be loaded (greyed)" % broken
 	if locked > 0:
-		text += ", %d locked (finish the board before each to open it)" % locked
+		text += ", %d locked (finish a board to unlock the next)" % locked
 	if not_listed > 0:
 		text += "; %d more files not listed" % not_listed  # short: the line has one row
 	return text

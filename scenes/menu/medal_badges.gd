@@ -29,6 +29,8 @@ var hard_medal := Medals.Medal.NONE
 ## The board's [gold, silver, bronze] times per mode (empty: the board has none).
 var easy_times := PackedFloat64Array()
 var hard_times := PackedFloat64Array()
+## False for a board without black holes: hard mode plays the same there, so one row.
+var has_hard := true
 ## A locked board shows a padlock and this text (what opens it) instead of medals.
 var lock_text := ""
 
@@ -120,14 +122,18 @@ func _row_height() -> float:
 
 
 ## Shows these medals and each mode's target times, or the padlock and `locked_because`
-## when that is not empty.
+## when that is not empty. `with_hard` false (a board without black holes, where hard mode
+## plays the same) shows the easy row only (a play trial read a Hard row of the same times
+## as clutter).
 func show_medals(
 	easy: Medals.Medal,
 	hard: Medals.Medal,
 	locked_because: String,
 	times_easy := PackedFloat64Array(),
-	times_hard := PackedFloat64Array()
+	times_hard := PackedFloat64Array(),
+	with_hard := true
 ) -> void:
+	has_hard = with_hard
 	easy_medal = easy
 	hard_medal = hard
 	easy_times = times_easy
@@ -155,6 +161,8 @@ func row_texts() -> PackedStringArray:
 
 
 func _rows() -> Array:
+	if not has_hard:
+		return [["Easy", maxi(easy_medal, hard_medal), easy_times]]
 	return [["Easy", easy_medal, easy_times], ["Hard", hard_medal, hard_times]]
 
 

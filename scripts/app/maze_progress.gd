@@ -37,6 +37,16 @@ static func shipped_path(board_id: String) -> String:
 	return "res://levels/maze/%s.board" % board_id.trim_prefix("maze_")
 
 
+## The file of the shipped board that opens after `board_id` ("" after the last, for the
+## player's own boards, or when that file is missing).
+static func next_path(board_id: String) -> String:
+	var next_id := next_of(board_id)
+	if next_id.is_empty():
+		return ""
+	var path := shipped_path(next_id)
+	return path if FileAccess.file_exists(path) else ""
+
+
 ## Where `board_id` comes in the order (boards not in it come after every one that is).
 static func rank(board_id: String) -> int:
 	var at := ORDER.find(board_id)

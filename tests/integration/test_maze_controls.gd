@@ -38,21 +38,21 @@ func test_keys_and_stick_ease_and_scale_with_sensitivity() -> void:
 
 
 # A play trial: "with the keyboard the tilt keeps going after you let go". Tilting further
-# eases in over a few frames; letting go levels the board within an eighth of a second.
+# ramps in over 0.6 s; letting go levels the board within 0.15 s (9 frames).
 func test_letting_go_of_a_key_levels_the_board_quickly() -> void:
 	var mixer := TiltMixer.new()
 	for i in 120:
 		mixer.update(1.0 / 60.0, Vector2(1.0, 0.0), Vector3.ZERO)
-	for i in 8:  # 0.133 s
+	for i in 9:  # 0.15 s
 		mixer.update(1.0 / 60.0, Vector2.ZERO, Vector3.ZERO)
-	assert_lt(absf(mixer.tilt.x), 1.0, "under 1 degree after 8 frames")
+	assert_lt(absf(mixer.tilt.x), 0.01, "level after 9 frames")
 	for i in 120:
 		mixer.update(1.0 / 60.0, Vector2(1.0, 0.0), Vector3.ZERO)
 	mixer.update(1.0 / 60.0, Vector2(-1.0, 0.0), Vector3.ZERO)
-	assert_lt(mixer.tilt.x, 9.0, "turning the other way swings back fast")
+	assert_lt(mixer.tilt.x, 11.0, "turning the other way swings back faster than it tilts")
 	var fresh := TiltMixer.new()
 	fresh.update(1.0 / 60.0, Vector2(1.0, 0.0), Vector3.ZERO)
-	assert_lt(fresh.tilt.x, 2.0, "tilting further still eases in")
+	assert_lt(fresh.tilt.x, 0.5, "tilting further ramps in")
 
 
 func test_a_device_without_accelerometer_keeps_the_joystick() -> void:

@@ -1,6 +1,6 @@
 extends GutTest
 ## Losing a ball into a black hole (hard mode) reads at once: the ball drops into the hole
-## with a sound, the panel's count says "Ball lost: 3 of 4 left" with a flash, the note says
+## with a sound, the panel's count says "3 of 4 balls left" with a flash, the note says
 ## the run can't be won any more at full strength (not fading in over two seconds), and once
 ## the ball is down a card offers Retry (focused) and Menu. A blind play trial saw none of it.
 
@@ -41,7 +41,7 @@ func test_the_panel_counts_the_lost_ball_with_a_flash() -> void:
 	assert_eq(game.rules.state, MazeRules.State.LOST)
 	assert_eq(game.rules.balls_left(), 3)
 	assert_false(game.rules.can_still_win(), "a ball short: every ball must reach the dip")
-	assert_eq(game.goal_count_text(), "Ball lost: 3 of 4 left")
+	assert_eq(game.goal_count_text(), "3 of 4 balls left")
 	assert_true(game.count_flashing(), "the count flashes")
 	for i in 40:
 		game._process(0.05)
@@ -73,3 +73,27 @@ func test_once_the_ball_is_down_a_card_offers_retry() -> void:
 	assert_eq(game.rules.state, MazeRules.State.READY, "Retry puts the balls back")
 	assert_false(card.visible)
 	assert_eq(game.goal_count_text(), "In goal  0 / 4")
+
+
+# A play trial on Cloister: two balls rolled into one hole together; the panel said "3 of 4
+# left" while the card said "2 of 4 balls left" (the rules end the run at the first).
+func test_two_balls_lost_at_once_read_the_same_on_the_panel_and_the_card() -> void:
+	var game: MazeGame = GAME.instantiate()
+	add_child_autofree(game)
+	var rules: MazeRules = game.rules
+	rules.set_hard_mode(true)
+	game._start()
+	game._process(0.0)
+	var ids := rules.world.get_ids()
+	for b in 2:
+		var offset := Vector2(-12.0, 0.0) if b == 0 else Vector2(12.0, 0.0)
+		rules.world.set_ball_position(ids[b], rules.level.holes[1] + offset)
+		rules.world.set_ball_velocity(ids[b], -offset * 5.0)
+	rules.advance(0.25)  # one slow frame: both fall within its steps
+	assert_eq(rules.balls_left(), 2, "both balls fell")
+	for i in 20:
+		game._process(0.05)
+	var card: MazeWinPanel = game.win_panel()
+	assert_true(card.visible)
+	assert_eq(game.goal_count_text(), "2 of 4 balls left", "the panel")
+	assert_string_contains(" ".join(card.texts()), "2 of 4 balls left", "the card")

@@ -118,3 +118,21 @@ func test_low_draws_software_gl_at_full_size_without_msaa() -> void:
 	MazeStage.use_render_settings(view, "NVIDIA GeForce RTX 3060/PCIe/SSE2", true)
 	assert_eq(view.scaling_3d_scale, 1.0, "a graphics card keeps its settings")
 	assert_eq(view.msaa_3d, project_msaa)
+
+
+# The walls were Low's largest cost on software GL (tools/maze_fps.sh): Low draws them with
+# square ends and no chamfer, a fraction of the triangles, and the full look gets its
+# rounded walls back.
+func test_low_draws_the_walls_with_far_fewer_triangles() -> void:
+	var board := _game.stage().board()
+	var full := board.wall_triangles()
+	App.settings.set_value("maze_low_graphics", true)
+	App.settings.changed.emit()
+	var low := board.wall_triangles()
+	gut.p("wall triangles on Classic: full look %d, Low %d" % [full, low])
+	assert_lt(low * 3, full, "Low: %d triangles, the full look %d" % [low, full])
+	var ball := _game.stage().balls().material as StandardMaterial3D
+	assert_eq(ball.shading_mode, BaseMaterial3D.SHADING_MODE_PER_VERTEX, "balls lit per vertex")
+	App.settings.set_value("maze_low_graphics", false)
+	App.settings.changed.emit()
+	assert_eq(board.wall_triangles(), full, "the rounded walls come back")

@@ -176,4 +176,6 @@ class TestMazeScreen:
 		rules.reset()
 		assert_not_null(_game.ghost(), "and back when it is on")
 		var note := str(_game.get_node("%Note").text())
-		assert_string_contains(note, "pale ball is your best run", "the ghost is named")
+		assert_string_contains(
+			note, "See-through blue balls replay your best run", "the ghost is named"
+		)

@@ -31,6 +31,8 @@ const VARIANTS := [
 	["Low, no walls", {"low": true, "hide": ["walls"]}],
 	["Low, no board", {"low": true, "hide": ["floor", "walls", "frame", "balls"]}],
 	["Low, no panel", {"low": true, "hide": ["panel"]}],
+	["Low, no frame", {"low": true, "hide": ["frame"]}],
+	["Low, no balls", {"low": true, "hide": ["balls"]}],
 	["no camera", {"hide": ["camera"]}],
 ]
 

@@ -141,6 +141,17 @@ func run_steps(count: int) -> int:
 	return count
 
 
+## After a win the balls roll on for `delta` seconds (the clock stopped, nothing judged), so
+## the dip gathers them in as the board levels: a play trial saw the finished ball frozen on
+## the dip's rim, half outside it, on a board frozen tilted. Returns the steps run (0 unless
+## won). What it moves is never recorded: a replay ends at the win.
+func settle(delta: float) -> int:
+	if state != State.WON or world == null or not is_finite(delta) or delta <= 0.0:
+		return 0
+	_apply_tilt()
+	return world.advance(delta)
+
+
 ## Length of one physics step, in seconds.
 func step_seconds() -> float:
 	return _step_dt

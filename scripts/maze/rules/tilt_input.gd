@@ -11,12 +11,19 @@ const MAX_TILT_DEG := 12.0
 const JOYSTICK_RANGE := 15.0
 ## Degrees of tilt per pixel of joystick travel (the seed's 0.8: 15 px → 12°).
 const DEG_PER_JOYSTICK_PX := 0.8
-## Keyboard and gamepad tilt eases toward its target at this rate (1/s): smooth, not instant.
+## Accelerometer tilt eases toward its target at this rate (1/s): smooth, not instant.
 const EASE_RATE := 7.0
-## ...and back toward level (a key let go, or turned the other way) at this faster rate: a
-## play trial felt the board "carry on" for a second after the key came up at EASE_RATE.
-## 20/s takes a full 12° tilt under 1° in an eighth of a second.
+## ...and back toward level at this faster rate.
 const RELEASE_RATE := 20.0
+## Keys and stick: a held key tilts the board further at a steady rate, reaching full tilt
+## after this many seconds held, so a 0.15 s tap leans it a quarter of the way (3 degrees)
+## and nudges a resting ball; only a hold sends it down a corridor (a play trial found the
+## old ease, 65% of full tilt within 0.15 s, "all-or-nothing").
+const KEY_FULL_SECONDS := 0.6
+## ...and a key let go (or turned the other way) brings the board back to level at a steady
+## rate too, from full tilt in this many seconds: it settles like the joystick let go, not
+## with a jolt, and stops short of carrying a tapped ball on.
+const KEY_LEVEL_SECONDS := 0.15
 
 
 ## Clamps a tilt to ±MAX_TILT_DEG per axis; non-finite components become 0.
@@ -60,6 +67,28 @@ static func _ease_axis(current: float, target: float, delta: float) -> float:
 	var levelling := absf(target) < absf(current) or signf(target) * signf(current) < 0.0
 	var rate := RELEASE_RATE if levelling else EASE_RATE
 	return lerpf(current, target, 1.0 - exp(-rate * delta))
+
+
+## Moves `current` toward `target` for `delta` seconds at the keys' steady rates: further
+## from level at MAX_TILT_DEG per KEY_FULL_SECONDS, back toward level at MAX_TILT_DEG per
+## KEY_LEVEL_SECONDS. Piecewise straight lines, so any split of the same time into frames
+## gives the same tilt (frame-rate free).
+static func ramp_toward(current: Vector2, target: Vector2, delta: float) -> Vector2:
+	var dt := maxf(delta, 0.0)
+	return Vector2(_ramp_axis(current.x, target.x, dt), _ramp_axis(current.y, target.y, dt))
+
+
+static func _ramp_axis(current: float, target: float, delta: float) -> float:
+	var tilt_rate := MAX_TILT_DEG / KEY_FULL_SECONDS
+	var level_rate := MAX_TILT_DEG / KEY_LEVEL_SECONDS
+	if signf(target) * signf(current) < 0.0:
+		# turned the other way: back to level first, then on at the tilting rate
+		var to_level := absf(current) / level_rate
+		if delta <= to_level:
+			return move_toward(current, 0.0, level_rate * delta)
+		return move_toward(0.0, target, tilt_rate * (delta - to_level))
+	var rate := level_rate if absf(target) < absf(current) else tilt_rate
+	return move_toward(current, target, rate * delta)
 
 
 ## Tilt from an accelerometer reading (m/s², device axes) relative to a calibrated neutral

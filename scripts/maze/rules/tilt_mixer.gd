@@ -1,8 +1,8 @@
 class_name TiltMixer
 extends RefCounted
 ## Decides the board's tilt each frame from every control the player may use: the joystick
-## (as in the seed: the tilt follows the head at once), keys and gamepad stick (the tilt
-## eases toward the target so it feels like a hand on a board, not a switch), and a phone's
+## (as in the seed: the tilt follows the head at once), keys and gamepad stick (a held key
+## tilts further at a steady rate and a tap only a little, TiltInput.ramp_toward), and a phone's
 ## accelerometer (relative to a calibrated neutral). The last control touched wins.
 
 enum Source { NONE, JOYSTICK, KEYS, ACCELEROMETER }
@@ -35,9 +35,7 @@ func update(delta: float, keys: Vector2, accel: Vector3) -> Vector2:
 		source = Source.KEYS
 	if source == Source.KEYS:
 		var target := TiltInput.tilt_from_vector(keys.limit_length(1.0) * sensitivity)
-		tilt = TiltInput.ease_toward(tilt, target, delta)
-		if keys == Vector2.ZERO and tilt.length() < 0.05:
-			tilt = Vector2.ZERO
+		tilt = TiltInput.ramp_toward(tilt, target, delta)
 	_last_accel = accel
 	if has_accelerometer() and source != Source.JOYSTICK and source != Source.KEYS:
 		if neutral == Vector3.ZERO:
