@@ -107,8 +107,9 @@ func show_start(level: BoardLevel) -> void:
 					how_to_shoot(),
 					(
 						(
-							"You have [b]%d balls[/b]. The stronger the shot, the farther left it"
-							+ " lands; green on the power bar marks the power that has been paying."
+							"You have [b]%d balls[/b]. The stronger the shot, the farther round the"
+							+ " top it travels. On the power bar, green marks the power that has"
+							+ " been paying and the gold arrow your last shot's power."
 						)
 						% level.cup_start_balls
 					),
@@ -122,17 +123,24 @@ func show_start(level: BoardLevel) -> void:
 	_show_play("Play", "or press %s" % _start_keys())
 
 
-## How to shoot, in one line of BBCode (the start card's first line).
+## How to shoot, in one line of BBCode (the start card's first line): a shot and a stream.
 static func how_to_shoot() -> String:
+	return "%s %s" % [how_to_shoot_once(), how_to_stream()]
+
+
+## How to fire one shot, in BBCode.
+static func how_to_shoot_once() -> String:
 	return (
-		(
-			"[b]Shoot:[/b] hold [b]%s[/b] and let go (or drag the red grip up)."
-			+ " [b]Stream:[/b] hold [b]%s[/b]."
-		)
-		% [
-			PlainMarkup.escape(KeyNames.of(&"launch_charge", "the charge key")),
-			PlainMarkup.escape(KeyNames.of(&"launch_handle", "the handle key")),
-		]
+		"[b]Shoot:[/b] hold [b]%s[/b] and let go (or drag the red grip up)."
+		% PlainMarkup.escape(KeyNames.of(&"launch_charge", "the charge key"))
+	)
+
+
+## How to stream balls, in BBCode.
+static func how_to_stream() -> String:
+	return (
+		"[b]Stream:[/b] hold [b]%s[/b]."
+		% PlainMarkup.escape(KeyNames.of(&"launch_handle", "the handle key"))
 	)
 
 

@@ -254,7 +254,7 @@ func _new_rules() -> void:
 		instructions.visible = false
 		rules.start_game()
 		_reminder.show_line(_reminder_line())
-		_reminder.place(_board_area)
+		_reminder.place(_board_area, _under_name_plate())
 	else:
 		_reminder.dismiss()
 		instructions.show_start(_level)
@@ -272,9 +272,30 @@ func reminder() -> RulesReminder:
 
 func _reminder_line() -> String:
 	return (
-		"%s   [b]%s[/b]: new game"
-		% [InstructionsPanel.how_to_shoot(), PlainMarkup.escape(KeyNames.of(&"game_restart", "?"))]
+		"%s\n%s   [b]%s[/b]: new game"
+		% [
+			InstructionsPanel.how_to_shoot_once(),
+			InstructionsPanel.how_to_stream(),
+			PlainMarkup.escape(KeyNames.of(&"game_restart", "?")),
+		]
 	)
+
+
+## The board's part of the screen (the last layout's).
+func board_area() -> Rect2:
+	return _board_area
+
+
+## The screen rectangle of the board's name plate at its widest.
+func name_plate_rect() -> Rect2:
+	var plate := NamePlate.rect_of(_level, NamePlate.MAX_WIDTH)
+	var at := board_view.to_screen(plate.position)
+	return Rect2(at, board_view.to_screen(plate.end) - at)
+
+
+# The screen height just under the board's name plate.
+func _under_name_plate() -> float:
+	return name_plate_rect().end.y + 6.0
 
 
 func _show_notes() -> void:
@@ -297,8 +318,8 @@ func _layout() -> void:
 		return
 	var area := _hud_layout.place(get_viewport_rect().size)
 	_board_area = area
-	_reminder.place(area)
 	board_view.fit(_level, area)
+	_reminder.place(area, _under_name_plate())
 	_controls.drag_scale = minf(area.size.x, area.size.y) / DESIGN_BOARD_SIDE
 	instructions.position = area.position
 	instructions.size = area.size
