@@ -26,6 +26,8 @@ var _music: PachinkoMusic
 var _recorder: ReplayRecorder
 # The one-line reminder of how to shoot on games after the first (the full card's stand-in).
 var _reminder := RulesReminder.new()
+# R's question before it throws away a session with something in it.
+var _restart_prompt := RestartPrompt.new()
 # The board's part of the screen (the last layout's).
 var _board_area := Rect2()
 # What each band of strengths has paid this game (lit on the launcher's bar).
@@ -52,6 +54,8 @@ func _ready() -> void:
 	_reminder.name = "Reminder"
 	add_child(_reminder)
 	move_child(_reminder, instructions.get_index() + 1)  # under the pause menu
+	_restart_prompt.name = "RestartPrompt"
+	add_child(_restart_prompt)  # last: its Esc is read before the pause menu's
 	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -118,6 +122,7 @@ func _process(delta: float) -> void:
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_PAUSED and rules != null:
 		_controls.let_go(rules)
+		_restart_prompt.dismiss()
 
 
 func _input(event: InputEvent) -> void:
@@ -130,7 +135,14 @@ func _unhandled_input(event: InputEvent) -> void:
 		return
 	if event.is_action_pressed("game_restart"):
 		# the same as the pause menu's Restart and as leaving for other boards: the session
-		# so far counts for the board's best (R used to drop it)
+		# so far counts for the board's best (R used to drop it); a session with something
+		# in it asks first, and a second R starts over
+		if rules.state == PachinkoRules.State.PLAYING and not _restart_prompt.asking():
+			if RestartPrompt.wants_asking(rules.stats(true)):
+				_restart_prompt.ask(rules.balls_to_shoot)
+				_restart_prompt.place(_board_area, _under_name_plate())
+				get_viewport().set_input_as_handled()
+				return
 		restart()
 		get_viewport().set_input_as_handled()
 		return
@@ -185,6 +197,11 @@ func restart() -> void:
 	_new_rules()
 
 
+## R's question before it starts over (for tests).
+func restart_prompt() -> RestartPrompt:
+	return _restart_prompt
+
+
 func _exit_tree() -> void:
 	_keep_session()
 
@@ -193,6 +210,9 @@ func _exit_tree() -> void:
 # board's best session: a play trial left Hanami at 277 balls and its card said "Not played
 # yet". Only a session that paid something back, and only while it is still being played.
 func _keep_session() -> void:
+	_restart_prompt.dismiss()
+	if rules != null:
+		App.keep_pachinko_handle_power(rules.handle.power)
 	if rules == null or _level == null or rules.state != PachinkoRules.State.PLAYING:
 		return
 	var paid: int = rules.stats(true).get("game_payouts", 0)
@@ -203,6 +223,7 @@ func _keep_session() -> void:
 func _new_rules() -> void:
 	var rng_seed := int(Time.get_ticks_usec())
 	rules = PachinkoRules.new(_level, rng_seed)
+	rules.handle.set_power(App.pachinko_handle_power())  # as the player left it
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
 	rules.state_changed.connect(_on_state_changed)
@@ -384,6 +405,7 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 func _on_game_ended(summary: Dictionary) -> void:
 	var paid: int = summary.get("game_payouts", 0)
 	var new_best := App.record_pachinko_balls(_level.board_id, paid)
+	App.keep_pachinko_handle_power(rules.handle.power)
 	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
 	_reminder.dismiss()

@@ -4,11 +4,14 @@ extends PanelContainer
 ## first on a board (the first has the full rules card). It never blocks play: it ignores
 ## the mouse and fades away after SHOWN_SECONDS.
 
-## Seconds the line stays fully on the screen before it fades.
+## Seconds the line stays fully on the screen before it fades, unless told otherwise.
 const SHOWN_SECONDS := 5.0
 ## Seconds of its fade.
 const FADE_SECONDS := 1.0
 const FONT_SIZE := 18
+
+## Seconds this one stays fully on the screen before it fades.
+var shown_seconds := SHOWN_SECONDS
 
 var _line := RichTextLabel.new()
 var _fade: Tween
@@ -41,7 +44,7 @@ func _init() -> void:
 	minimum_size_changed.connect(func() -> void: place(_area, _top))
 
 
-## Shows `bbcode` (a line or two) and fades it out after SHOWN_SECONDS.
+## Shows `bbcode` (a line or two) and fades it out after `shown_seconds`.
 func show_line(bbcode: String) -> void:
 	_line.text = bbcode
 	visible = true
@@ -51,7 +54,7 @@ func show_line(bbcode: String) -> void:
 	if not is_inside_tree():
 		return
 	_fade = create_tween()
-	_fade.tween_interval(SHOWN_SECONDS)
+	_fade.tween_interval(shown_seconds)
 	_fade.tween_property(self, "modulate:a", 0.0, FADE_SECONDS)
 	_fade.tween_callback(hide)
 
