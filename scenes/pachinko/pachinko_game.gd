@@ -10,9 +10,6 @@ const HUD_WIDTH := PachinkoHudLayout.HUD_WIDTH
 ## The board's area's short side in the designed 1280 × 720 layout: a full-power drag is 100
 ## view units there and as much longer as the board is bigger elsewhere (PachinkoInput).
 const DESIGN_BOARD_SIDE := 720.0 - 2.0 * PachinkoHudLayout.MARGIN
-## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
-const TICK_MIN_SPEED := 40.0
-const TICK_MAX_SPEED := 700.0
 
 var rules: PachinkoRules
 
@@ -30,8 +27,8 @@ var _reminder := RulesReminder.new()
 var _restart_prompt := RestartPrompt.new()
 # The board's part of the screen (the last layout's).
 var _board_area := Rect2()
-# What each band of strengths has paid this game (lit on the launcher's bar).
-var _paying := PayingStrengths.new()
+# What the player sees and hears as the rules report (made once the views are ready).
+var _feedback: PachinkoFeedback
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -80,6 +77,7 @@ func _ready() -> void:
 			]
 		)
 	)
+	_feedback = PachinkoFeedback.new(board_view, launcher, cup, sounds)
 	_bonus_view = BonusView.new()
 	add_child(_bonus_view)
 	_bonus_view.attach(board_view, sounds)
@@ -227,47 +225,15 @@ func _new_rules() -> void:
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
 	rules.state_changed.connect(_on_state_changed)
-	rules.cup_changed.connect(_on_cup_changed)
-	rules.power_changed.connect(_on_power_changed)
-	rules.handle.changed.connect(launcher.set_handle)
-	rules.ball_loaded.connect(_on_loaded_changed)
-	rules.ball_launched.connect(_on_ball_launched)
-	rules.ball_won.connect(_on_ball_won)
-	rules.ball_drained.connect(_on_ball_drained)
-	rules.ball_returned.connect(_on_ball_returned)
 	rules.game_ended.connect(_on_game_ended)
-	rules.world.pin_hit.connect(_on_pin_hit)
-	rules.world.ring_hit.connect(_on_ring_hit)
 	board_view.bind(rules)
+	_feedback.bind(rules)
 	_bonus_view.bind(rules)
 	_juice.bind(rules)
 	_music.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
-	# the balls the game starts with, behind the card too (it read 0 there)
-	cup.set_count(_level.cup_start_balls)
-	launcher.set_power(0.0, 0.0)
-	_paying = PayingStrengths.new()
-	launcher.set_paying(_paying)
-	launcher.set_loaded(false)
-	launcher.set_handle(false, rules.handle.power)
-	(
-		launcher
-		. set_hint(
-			(
-				(
-					"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial"
-					+ "\nor %s. Turn it with\n%s / %s."
-				)
-				% [
-					KeyNames.of(&"launch_charge", "the charge key"),
-					KeyNames.of(&"launch_handle", "the handle key"),
-					KeyNames.of(&"handle_weaker", "?"),
-					KeyNames.of(&"handle_stronger", "?"),
-				]
-			)
-		)
-	)
+	launcher.show_controls_hint()
 	_show_notes()
 	stats_panel.show_stats(rules.stats(true))
 	if App.skips_rules_card(_level.board_id):
@@ -283,7 +249,7 @@ func _new_rules() -> void:
 
 ## What each band of launch strengths has paid this game (lit on the launcher's bar).
 func paying_strengths() -> PayingStrengths:
-	return _paying
+	return _feedback.paying
 
 
 ## The one-line reminder shown instead of the card on later games.
@@ -412,56 +378,3 @@ func _on_game_ended(summary: Dictionary) -> void:
 	instructions.show_game_over(_level, summary, best, new_best)
 	_show_notes()
 	sounds.play(SoundBank.GAME_OVER)
-
-
-# The cup shows every ball still to shoot: the cup's and the one in the launcher.
-func _on_cup_changed(_count: int) -> void:
-	cup.set_count(rules.balls_to_shoot)
-
-
-func _on_power_changed(power: float) -> void:
-	launcher.set_power(power, LaunchPower.flipper_degrees(rules.power))
-
-
-func _on_loaded_changed() -> void:
-	launcher.set_loaded(true)
-
-
-func _on_ball_launched(id: int, power: float, _speed: float) -> void:
-	_paying.note_launch(id, power)
-	launcher.set_loaded(rules.loaded)
-	cup.set_count(rules.balls_to_shoot)
-	if not rules.handle.held:
-		launcher.set_last_shot(power)  # the handle's own dial keeps its strength
-	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
-
-
-func _on_ball_won(id: int, pocket: int, payout: int, at: Vector2) -> void:
-	_paying.note_paid(id, payout)
-	launcher.queue_redraw()
-	board_view.pockets.celebrate(pocket)
-	board_view.effects.pocket_win(at, payout)
-	cup.pour(payout)
-	sounds.play(SoundBank.POCKET_WIN)
-	launcher.set_loaded(rules.loaded)
-
-
-func _on_ball_drained(_id: int) -> void:
-	board_view.gutter.flash()
-	sounds.play(SoundBank.DRAIN, -6.0)
-
-
-func _on_ball_returned(_id: int) -> void:
-	var at := LaunchRail.return_zone_center(_level)
-	board_view.effects.note(at + Vector2(-40, 0), "back to cup", Color("bfe3ff"))
-	sounds.play(SoundBank.BALL_RETURN, -4.0)
-	launcher.set_loaded(rules.loaded)
-
-
-func _on_pin_hit(_ball: int, _pin: int, speed: float) -> void:
-	var tick := JuiceView.pin_sound(rules.bonus)
-	sounds.play_impact(tick, speed, TICK_MIN_SPEED, TICK_MAX_SPEED)
-
-
-func _on_ring_hit(_ball: int, speed: float) -> void:
-	sounds.play_impact(SoundBank.WALL_THUD, speed, TICK_MIN_SPEED * 2.0, TICK_MAX_SPEED * 1.5)

@@ -53,7 +53,7 @@ func test_a_session_that_paid_nothing_records_nothing() -> void:
 
 
 # A play trial found R dropped the session while the pause menu's Restart and Other boards
-# kept it: the key now ends the game the same way.
+# kept it: the key now ends the game the same way (after asking, a later trial lost its cup).
 func test_the_restart_key_keeps_the_session_like_the_menu() -> void:
 	var game := _playing_game()
 	var board := game.rules.level.board_id
@@ -61,6 +61,8 @@ func test_the_restart_key_keeps_the_session_like_the_menu() -> void:
 	var key := InputEventAction.new()
 	key.action = &"game_restart"
 	key.pressed = true
+	game._unhandled_input(key)
+	assert_true(game.restart_prompt().asking(), "a session that paid asks first")
 	game._unhandled_input(key)
 	assert_eq(App.best_pachinko_balls(board), 30, "R keeps the session as Restart does")
 	assert_ne(game.rules.state, PachinkoRules.State.PLAYING, "and starts a new game")
