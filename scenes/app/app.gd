@@ -166,6 +166,16 @@ func note_pachinko_rules_seen(board_id: String) -> void:
 	save_data.note_pachinko_rules_seen(board_id)
 
 
+## True once the player has filled `board_id`'s tray to its goal (PachinkoGoals).
+func has_cleared_pachinko(board_id: String) -> bool:
+	return save_data.has_cleared_pachinko(board_id)
+
+
+## Remembers that the player cleared `board_id`.
+func note_pachinko_cleared(board_id: String) -> void:
+	save_data.note_pachinko_cleared(board_id)
+
+
 ## The pachinko handle's strength the player left it at (LaunchHandle.DEFAULT_POWER before
 ## they ever turned it): kept across boards and games.
 func pachinko_handle_power() -> float:

@@ -20,8 +20,8 @@ const MAX_COVER := 0.94
 ## loaded, or a double click on the level select, lands before this and is not a choice.
 const READ_SECONDS := 0.5
 ## What ending a game early does (R, the pause menu's Restart, Other boards): all three keep
-## what it paid back for the board's best, so the card says it once for all of them.
-const SESSION_KEPT := "A new game (%s) ends this one; what it paid back still counts for your best."
+## what it won for the board's best, so the card says it once for all of them.
+const SESSION_KEPT := "A new game (%s) ends this one; what it won still counts for your best."
 
 ## The keys that start a game from the card (PachinkoGame's start keys).
 const START_ACTIONS: Array[StringName] = [&"game_start", &"launch_charge", &"launch_handle"]
@@ -155,17 +155,19 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	var shots: int = summary.get("game_shots", 0)
 	var paid: int = summary.get("game_payouts", 0)
 	var hits: int = summary.get("game_hits", 0)
+	var won: int = summary.get("game_won", 0)
 	var lines := PackedStringArray(
 		[
 			(
 				"[b]%d[/b] shots, [b]%d[/b] pocket hits, [b]%d[/b] balls paid back."
 				% [shots, hits, paid]
 			),
+			"Won: [b]%d[/b] balls (the most your tray held above its start)." % won,
 		]
 	)
 	if best > 0:
 		var board_name := PlainMarkup.escape(level.display_name)
-		lines.append("Best on %s: [b]%d[/b] balls paid back." % [board_name, best])
+		lines.append("Most won on %s: [b]%d[/b] balls." % [board_name, best])
 	lines.append("")
 	lines.append("Another %d balls are waiting." % level.cup_start_balls)
 	_body.text = "\n".join(lines)

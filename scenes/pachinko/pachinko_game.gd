@@ -27,6 +27,11 @@ var _reminder := RulesReminder.new()
 var _restart_prompt := RestartPrompt.new()
 # The board's part of the screen (the last layout's).
 var _board_area := Rect2()
+# The most balls this game's tray has held above its start: what its best counts.
+var _cup_peak: CupPeak
+# The machine's goal this game, and the win moment's card.
+var _goal: MachineGoal
+var _cleared_card := MachineClearedCard.new()
 # What the player sees and hears as the rules report (made once the views are ready).
 var _feedback: PachinkoFeedback
 
@@ -53,6 +58,10 @@ func _ready() -> void:
 	move_child(_reminder, instructions.get_index() + 1)  # under the pause menu
 	_restart_prompt.name = "RestartPrompt"
 	add_child(_restart_prompt)  # last: its Esc is read before the pause menu's
+	add_child(_cleared_card)
+	move_child(_cleared_card, pause_menu.get_index())  # under the pause menu
+	_cleared_card.next_requested.connect(_go_to_next_machine)
+	_cleared_card.menu_requested.connect(App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME))
 	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -136,7 +145,7 @@ func _unhandled_input(event: InputEvent) -> void:
 		# so far counts for the board's best (R used to drop it); a session with something
 		# in it asks first, and a second R starts over
 		if rules.state == PachinkoRules.State.PLAYING and not _restart_prompt.asking():
-			if RestartPrompt.wants_asking(rules.stats(true)):
+			if RestartPrompt.wants_asking(rules.stats(true), _level.cup_start_balls):
 				_restart_prompt.ask(rules.balls_to_shoot)
 				_restart_prompt.place(_board_area, _under_name_plate())
 				get_viewport().set_input_as_handled()
@@ -206,22 +215,25 @@ func _exit_tree() -> void:
 
 # A session left before its cup ran dry (Other boards, Restart, Quit) still counts for the
 # board's best session: a play trial left Hanami at 277 balls and its card said "Not played
-# yet". Only a session that paid something back, and only while it is still being played.
+# yet". Only a session that won something (CupPeak), and only while it is still played.
 func _keep_session() -> void:
 	_restart_prompt.dismiss()
 	if rules != null:
 		App.keep_pachinko_handle_power(rules.handle.power)
 	if rules == null or _level == null or rules.state != PachinkoRules.State.PLAYING:
 		return
-	var paid: int = rules.stats(true).get("game_payouts", 0)
-	if paid > 0:
-		App.record_pachinko_balls(_level.board_id, paid)
+	if _cup_peak.won() > 0:
+		App.record_pachinko_balls(_level.board_id, _cup_peak.won())
 
 
 func _new_rules() -> void:
 	var rng_seed := int(Time.get_ticks_usec())
 	rules = PachinkoRules.new(_level, rng_seed)
 	rules.handle.set_power(App.pachinko_handle_power())  # as the player left it
+	_cup_peak = CupPeak.new(rules)
+	_goal = MachineGoal.new(_level, rules, _cup_peak)
+	_goal.reached.connect(_on_goal_reached)
+	_cleared_card.dismiss()
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
 	rules.state_changed.connect(_on_state_changed)
@@ -369,8 +381,8 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 
 
 func _on_game_ended(summary: Dictionary) -> void:
-	var paid: int = summary.get("game_payouts", 0)
-	var new_best := App.record_pachinko_balls(_level.board_id, paid)
+	summary["game_won"] = _cup_peak.won()
+	var new_best := App.record_pachinko_balls(_level.board_id, _cup_peak.won())
 	App.keep_pachinko_handle_power(rules.handle.power)
 	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
@@ -378,3 +390,17 @@ func _on_game_ended(summary: Dictionary) -> void:
 	instructions.show_game_over(_level, summary, best, new_best)
 	_show_notes()
 	sounds.play(SoundBank.GAME_OVER)
+
+
+## The win moment's card (the tray reached the machine's goal).
+func cleared_card() -> MachineClearedCard:
+	return _cleared_card
+
+
+func _on_goal_reached(won: int) -> void:
+	_cleared_card.show_cleared(_level, won, _board_area)
+	sounds.play(SoundBank.JACKPOT_FANFARE)
+
+
+func _go_to_next_machine() -> void:
+	App.start_game(BoardLevel.PACHINKO_NAME, MachineGoal.next_board_path(_level))

@@ -14,9 +14,14 @@ func _init() -> void:
 	shown_seconds = ASK_SECONDS
 
 
-## True when starting over would throw something away: balls won, or more than one shot in.
-static func wants_asking(stats: Dictionary) -> bool:
-	return stats.get("game_payouts", 0) > 0 or stats.get("game_shots", 0) > 1
+## True when starting over would throw something away: balls won (more to shoot than the
+## `start_balls` the game began with, or any paid back), or more than one shot in.
+static func wants_asking(stats: Dictionary, start_balls: int) -> bool:
+	return (
+		stats.get("balls_left", 0) > start_balls
+		or stats.get("game_payouts", 0) > 0
+		or stats.get("game_shots", 0) > 1
+	)
 
 
 ## Asks whether to start over, naming the `balls` the player would lose.
