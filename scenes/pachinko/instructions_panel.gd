@@ -144,6 +144,23 @@ static func how_to_stream() -> String:
 	)
 
 
+## True for a left click (on the card's screen it only points at the Play button).
+static func is_click(event: InputEvent) -> bool:
+	var button := event as InputEventMouseButton
+	return button != null and button.pressed and button.button_index == MOUSE_BUTTON_LEFT
+
+
+## True for any of the keys a player reaches for first (START_ACTIONS: start, charge or the
+## handle), which start the game from the card; never a mouse button.
+static func is_start_key(event: InputEvent) -> bool:
+	if event is InputEventMouseButton:
+		return false
+	for action in START_ACTIONS:
+		if event.is_action_pressed(action):
+			return true
+	return false
+
+
 ## The card itself (the panel is the board's whole area), for tests of its fit.
 func card() -> Control:
 	return _card

@@ -156,10 +156,10 @@ func _unhandled_input(event: InputEvent) -> void:
 	if rules.state != PachinkoRules.State.PLAYING:
 		if instructions.ignores_held(event):
 			get_viewport().set_input_as_handled()
-		elif _is_click(event):
+		elif InstructionsPanel.is_click(event):
 			# the card goes only by its own button (or a key): point the player at it
 			instructions.nudge()
-		elif _is_start_key(event) and instructions.accepts_start():
+		elif InstructionsPanel.is_start_key(event) and instructions.accepts_start():
 			_start_from_card()
 			get_viewport().set_input_as_handled()
 			# a held charge or handle key goes on to charge or stream: the player pressed it
@@ -327,21 +327,6 @@ func _layout() -> void:
 func _refit_portrait_hud() -> void:
 	if _level != null:
 		_hud_layout.refit(get_viewport_rect().size)
-
-
-func _is_click(event: InputEvent) -> bool:
-	var button := event as InputEventMouseButton
-	return button != null and button.pressed and button.button_index == MOUSE_BUTTON_LEFT
-
-
-# Any of the keys a player reaches for first starts the game: start, charge or the handle.
-func _is_start_key(event: InputEvent) -> bool:
-	if event is InputEventMouseButton:
-		return false
-	for action: String in ["game_start", "launch_charge", "launch_handle"]:
-		if event.is_action_pressed(action):
-			return true
-	return false
 
 
 # The player chose to play from the card (its button or a start key).

@@ -13,19 +13,27 @@ const MAX_SESSION_SECONDS := 1800.0
 
 
 ## Plays `count` sessions on `level` with seeds `first_seed`, `first_seed` + 1, ... and
-## summarises them (see summarize()).
+## summarises them (see summarize()), with the machine's goal_tray (PachinkoGoals, 0: none)
+## and goal_clear_rate (the share of the sessions that reached it).
 static func report_for(
 	level: BoardLevel, count: int, first_seed: int, most_seconds := MAX_SESSION_SECONDS
 ) -> Dictionary:
 	var sessions: Array[Dictionary] = []
 	for i in count:
 		sessions.append(play(level, first_seed + i, most_seconds))
-	return summarize(sessions)
+	var report := summarize(sessions)
+	# the machine's goal (PachinkoGoals) and the share of these sessions that reached it
+	var target := PachinkoGoals.tray_target(level)
+	report["goal_tray"] = target
+	if target > 0:
+		report["goal_clear_rate"] = clear_rate(sessions, target - level.cup_start_balls)
+	return report
 
 
 ## One session on `level`: a fresh game from the board's start balls, fired at the
 ## autoplay's pace until the game is over or `most_seconds` have passed. Returns seconds,
-## shots, balls_won (paid back), peak_won (the most balls held above the start), jackpots, jackpot_payouts (per finished jackpot; one still
+## shots, balls_won (paid back), peak_won (the most balls held above the start),
+## jackpots, jackpot_payouts (per finished jackpot; one still
 ## under way at the end counts what it paid so far) and capped.
 static func play(
 	level: BoardLevel, rng_seed: int, most_seconds := MAX_SESSION_SECONDS
@@ -79,7 +87,8 @@ static func summarize(sessions: Array[Dictionary]) -> Dictionary:
 		var session_payouts: Array = session["jackpot_payouts"]
 		seconds.append(session_seconds)
 		won.append(session_won)
-		peaks.append(float(session.get("peak_won", 0)))
+		var session_peak: int = session.get("peak_won", 0)
+		peaks.append(session_peak)
 		played += session_seconds
 		jackpots += session_jackpots
 		capped += 1 if session["capped"] else 0
@@ -125,7 +134,8 @@ static func clear_rate(sessions: Array[Dictionary], target: int) -> float:
 		return 0.0
 	var reached := 0
 	for session in sessions:
-		reached += 1 if int(session.get("peak_won", 0)) >= target else 0
+		var peak: int = session.get("peak_won", 0)
+		reached += 1 if peak >= target else 0
 	return float(reached) / sessions.size()
 
 

@@ -1,10 +1,9 @@
 class_name SaveData
 extends RefCounted
 ## The player's best results per board: fastest maze time in each mode (easy, hard), most
-## pachinko balls won; the pachinko boards whose full rules card the player has read; and
-## board id -> true: the pachinko machines whose goal (PachinkoGoals) the player reached
-var _cleared := {}
-# the pachinko handle's strength, kept across boards and games.
+## pachinko balls won; the pachinko boards whose full rules card the player has read and
+## those whose goal (PachinkoGoals) they reached; and the pachinko handle's strength, kept
+## across boards and games.
 ## Kept in a readable INI file (user://save.cfg), read as data: a board id of any text
 ## round-trips, an unusable record is dropped on its own, a damaged file is moved aside
 ## (kept for the player) and the records start empty, a file from a newer version is left
@@ -37,6 +36,8 @@ var _maze_times := {false: {}, true: {}}
 var _pachinko_balls := {}
 # board id -> true: the pachinko boards whose full rules card the player has played past
 var _rules_seen := {}
+# board id -> true: the pachinko machines whose goal (PachinkoGoals) the player reached
+var _cleared := {}
 # the pachinko handle's strength as the player left it (-1: never turned)
 var _handle_power := -1.0
 var _path := ""
