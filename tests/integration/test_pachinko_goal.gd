@@ -47,6 +47,8 @@ func test_filling_the_tray_clears_the_machine_once_with_a_win_card() -> void:
 	_win(rules, 1)
 	assert_true(game.cleared_card().visible, "the tray is full: the win card")
 	assert_string_contains(game.cleared_card().text(), "CLEARED")
+	var card := game.instructions.get_node("Card/Margin/Box/Body") as RichTextLabel
+	assert_string_contains(card.get_parsed_text(), "Goal: Fill the tray", "the start card says it")
 	assert_true(App.has_cleared_pachinko(board), "remembered for the board's card")
 	game.cleared_card().dismiss()  # Keep playing
 	_win(rules, 5)
