@@ -98,7 +98,10 @@ static func make_windmills() -> BoardLevel:
 		history,
 		"windmills",
 		"Windmills",
-		"Five windmills turn in an open field: their blades fling balls toward three rich pockets."
+		(
+			"Five windmills turn in an open field: their blades fling balls toward two ×8"
+			+ " pockets low down and a ×1 pocket in the middle."
+		)
 	)
 	level.fascia = "country"
 	level.cup_start_balls = WINDMILLS_CUP

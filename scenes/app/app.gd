@@ -166,6 +166,28 @@ func note_pachinko_rules_seen(board_id: String) -> void:
 	save_data.note_pachinko_rules_seen(board_id)
 
 
+## True once the player has filled `board_id`'s tray to its goal (PachinkoGoals).
+func has_cleared_pachinko(board_id: String) -> bool:
+	return save_data.has_cleared_pachinko(board_id)
+
+
+## Remembers that the player cleared `board_id`.
+func note_pachinko_cleared(board_id: String) -> void:
+	save_data.note_pachinko_cleared(board_id)
+
+
+## The pachinko handle's strength the player left it at (LaunchHandle.DEFAULT_POWER before
+## they ever turned it): kept across boards and games.
+func pachinko_handle_power() -> float:
+	var kept := save_data.pachinko_handle_power()
+	return kept if kept >= 0.0 else LaunchHandle.DEFAULT_POWER
+
+
+## Keeps the pachinko handle's strength for the next game and board.
+func keep_pachinko_handle_power(power: float) -> void:
+	save_data.keep_pachinko_handle_power(power)
+
+
 ## The board last picked for a game of `kind` this run (the level select's focus goes back to
 ## it), "" when none was.
 func last_board_path(kind: String) -> String:

@@ -184,4 +184,4 @@ func _add_label(words: String, variation: StringName, wraps := false, lines := 3
 # What a card says before its board has a best: a maze is finished or not; a pachinko game
 # always ends, so its record is the best session (the words of the game's own panel).
 static func _no_best_yet(shown: BoardLevel) -> String:
-	return "No best session yet" if shown.kind == BoardLevel.Kind.PACHINKO else "No finish yet"
+	return "Nothing won yet" if shown.kind == BoardLevel.Kind.PACHINKO else "No finish yet"

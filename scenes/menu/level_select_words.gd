@@ -47,7 +47,8 @@ static func keys_hint() -> String:
 	)
 
 
-## A card's best result on the board `result` loaded: maze times per mode, or pachinko balls;
+## A card's best result on the board `result` loaded: maze times per mode, or pachinko balls
+## won (with "Cleared!" once its goal was reached);
 ## "" when there is none yet or the board did not load.
 static func best_text(result: BoardLoadResult, kind: String) -> String:
 	if not result.ok():
@@ -65,7 +66,9 @@ static func best_text(result: BoardLoadResult, kind: String) -> String:
 		# each mode's best on one line of the card, under that mode's medal
 		return "Easy %s · Hard %s" % [MazeWinSummary.clock(easy), MazeWinSummary.clock(hard)]
 	var balls := App.best_pachinko_balls(board_id)
-	return "Best: %d balls paid back" % balls if balls >= 0 else ""
+	var best := "Most won: %d balls" % balls if balls >= 0 else ""
+	# a machine whose tray the player filled to its goal (PachinkoGoals) says so first
+	return "Cleared! " + best if App.has_cleared_pachinko(board_id) else best
 
 
 ## Players know their files by the real path, not by user://.

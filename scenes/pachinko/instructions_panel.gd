@@ -20,8 +20,8 @@ const MAX_COVER := 0.94
 ## loaded, or a double click on the level select, lands before this and is not a choice.
 const READ_SECONDS := 0.5
 ## What ending a game early does (R, the pause menu's Restart, Other boards): all three keep
-## what it paid back for the board's best, so the card says it once for all of them.
-const SESSION_KEPT := "A new game (%s) ends this one; what it paid back still counts for your best."
+## what it won for the board's best, so the card says it once for all of them.
+const SESSION_KEPT := "A new game (%s) ends this one; what it won still counts for your best."
 
 ## The keys that start a game from the card (PachinkoGame's start keys).
 const START_ACTIONS: Array[StringName] = [&"game_start", &"launch_charge", &"launch_handle"]
@@ -107,8 +107,9 @@ func show_start(level: BoardLevel) -> void:
 					how_to_shoot(),
 					(
 						(
-							"You have [b]%d balls[/b]. The stronger the shot, the farther left it"
-							+ " lands; green on the power bar marks the power that has been paying."
+							"You have [b]%d balls[/b]. The stronger the shot, the farther round the"
+							+ " top it travels. On the power bar, green marks the power that has"
+							+ " been paying and the gold arrow your last shot's power."
 						)
 						% level.cup_start_balls
 					),
@@ -117,23 +118,49 @@ func show_start(level: BoardLevel) -> void:
 			)
 		)
 	)
+	if PachinkoGoals.tray_target(level) > 0:
+		_body.text += "\n[b]Goal:[/b] %s to clear this machine." % PachinkoGoals.words(level)
 	_legend.show_pieces(level)
 	_legend.visible = true
 	_show_play("Play", "or press %s" % _start_keys())
 
 
-## How to shoot, in one line of BBCode (the start card's first line).
+## How to shoot, in one line of BBCode (the start card's first line): a shot and a stream.
 static func how_to_shoot() -> String:
+	return "%s %s" % [how_to_shoot_once(), how_to_stream()]
+
+
+## How to fire one shot, in BBCode.
+static func how_to_shoot_once() -> String:
 	return (
-		(
-			"[b]Shoot:[/b] hold [b]%s[/b] and let go (or drag the red grip up)."
-			+ " [b]Stream:[/b] hold [b]%s[/b]."
-		)
-		% [
-			PlainMarkup.escape(KeyNames.of(&"launch_charge", "the charge key")),
-			PlainMarkup.escape(KeyNames.of(&"launch_handle", "the handle key")),
-		]
+		"[b]Shoot:[/b] hold [b]%s[/b] and let go (or drag the red grip up)."
+		% PlainMarkup.escape(KeyNames.of(&"launch_charge", "the charge key"))
 	)
+
+
+## How to stream balls, in BBCode.
+static func how_to_stream() -> String:
+	return (
+		"[b]Stream:[/b] hold [b]%s[/b]."
+		% PlainMarkup.escape(KeyNames.of(&"launch_handle", "the handle key"))
+	)
+
+
+## True for a left click (on the card's screen it only points at the Play button).
+static func is_click(event: InputEvent) -> bool:
+	var button := event as InputEventMouseButton
+	return button != null and button.pressed and button.button_index == MOUSE_BUTTON_LEFT
+
+
+## True for any of the keys a player reaches for first (START_ACTIONS: start, charge or the
+## handle), which start the game from the card; never a mouse button.
+static func is_start_key(event: InputEvent) -> bool:
+	if event is InputEventMouseButton:
+		return false
+	for action in START_ACTIONS:
+		if event.is_action_pressed(action):
+			return true
+	return false
 
 
 ## The card itself (the panel is the board's whole area), for tests of its fit.
@@ -147,17 +174,19 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 	var shots: int = summary.get("game_shots", 0)
 	var paid: int = summary.get("game_payouts", 0)
 	var hits: int = summary.get("game_hits", 0)
+	var won: int = summary.get("game_won", 0)
 	var lines := PackedStringArray(
 		[
 			(
 				"[b]%d[/b] shots, [b]%d[/b] pocket hits, [b]%d[/b] balls paid back."
 				% [shots, hits, paid]
 			),
+			"Won: [b]%d[/b] balls (the most your tray held above its start)." % won,
 		]
 	)
 	if best > 0:
 		var board_name := PlainMarkup.escape(level.display_name)
-		lines.append("Best on %s: [b]%d[/b] balls paid back." % [board_name, best])
+		lines.append("Most won on %s: [b]%d[/b] balls." % [board_name, best])
 	lines.append("")
 	lines.append("Another %d balls are waiting." % level.cup_start_balls)
 	_body.text = "\n".join(lines)

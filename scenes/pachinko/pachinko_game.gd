@@ -10,9 +10,6 @@ const HUD_WIDTH := PachinkoHudLayout.HUD_WIDTH
 ## The board's area's short side in the designed 1280 × 720 layout: a full-power drag is 100
 ## view units there and as much longer as the board is bigger elsewhere (PachinkoInput).
 const DESIGN_BOARD_SIDE := 720.0 - 2.0 * PachinkoHudLayout.MARGIN
-## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
-const TICK_MIN_SPEED := 40.0
-const TICK_MAX_SPEED := 700.0
 
 var rules: PachinkoRules
 
@@ -26,10 +23,17 @@ var _music: PachinkoMusic
 var _recorder: ReplayRecorder
 # The one-line reminder of how to shoot on games after the first (the full card's stand-in).
 var _reminder := RulesReminder.new()
+# R's question before it throws away a session with something in it.
+var _restart_prompt := RestartPrompt.new()
 # The board's part of the screen (the last layout's).
 var _board_area := Rect2()
-# What each band of strengths has paid this game (lit on the launcher's bar).
-var _paying := PayingStrengths.new()
+# The most balls this game's tray has held above its start: what its best counts.
+var _cup_peak: CupPeak
+# The machine's goal this game, and the win moment's card.
+var _goal: MachineGoal
+var _cleared_card := MachineClearedCard.new()
+# What the player sees and hears as the rules report (made once the views are ready).
+var _feedback: PachinkoFeedback
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -52,6 +56,12 @@ func _ready() -> void:
 	_reminder.name = "Reminder"
 	add_child(_reminder)
 	move_child(_reminder, instructions.get_index() + 1)  # under the pause menu
+	_restart_prompt.name = "RestartPrompt"
+	add_child(_restart_prompt)  # last: its Esc is read before the pause menu's
+	add_child(_cleared_card)
+	move_child(_cleared_card, pause_menu.get_index())  # under the pause menu
+	_cleared_card.next_requested.connect(_go_to_next_machine)
+	_cleared_card.menu_requested.connect(App.go_to_level_select.bind(BoardLevel.PACHINKO_NAME))
 	var path := App.current_board_path(BoardLevel.PACHINKO_NAME)
 	var loaded := BoardLoader.load_board(path)
 	if loaded.level == null or not loaded.level.is_pachinko():
@@ -76,6 +86,7 @@ func _ready() -> void:
 			]
 		)
 	)
+	_feedback = PachinkoFeedback.new(board_view, launcher, cup, sounds)
 	_bonus_view = BonusView.new()
 	add_child(_bonus_view)
 	_bonus_view.attach(board_view, sounds)
@@ -118,6 +129,7 @@ func _process(delta: float) -> void:
 func _notification(what: int) -> void:
 	if what == NOTIFICATION_PAUSED and rules != null:
 		_controls.let_go(rules)
+		_restart_prompt.dismiss()
 
 
 func _input(event: InputEvent) -> void:
@@ -130,17 +142,24 @@ func _unhandled_input(event: InputEvent) -> void:
 		return
 	if event.is_action_pressed("game_restart"):
 		# the same as the pause menu's Restart and as leaving for other boards: the session
-		# so far counts for the board's best (R used to drop it)
+		# so far counts for the board's best (R used to drop it); a session with something
+		# in it asks first, and a second R starts over
+		if rules.state == PachinkoRules.State.PLAYING and not _restart_prompt.asking():
+			if RestartPrompt.wants_asking(rules.stats(true), _level.cup_start_balls):
+				_restart_prompt.ask(rules.balls_to_shoot)
+				_restart_prompt.place(_board_area, _under_name_plate())
+				get_viewport().set_input_as_handled()
+				return
 		restart()
 		get_viewport().set_input_as_handled()
 		return
 	if rules.state != PachinkoRules.State.PLAYING:
 		if instructions.ignores_held(event):
 			get_viewport().set_input_as_handled()
-		elif _is_click(event):
+		elif InstructionsPanel.is_click(event):
 			# the card goes only by its own button (or a key): point the player at it
 			instructions.nudge()
-		elif _is_start_key(event) and instructions.accepts_start():
+		elif InstructionsPanel.is_start_key(event) and instructions.accepts_start():
 			_start_from_card()
 			get_viewport().set_input_as_handled()
 			# a held charge or handle key goes on to charge or stream: the player pressed it
@@ -185,68 +204,48 @@ func restart() -> void:
 	_new_rules()
 
 
+## R's question before it starts over (for tests).
+func restart_prompt() -> RestartPrompt:
+	return _restart_prompt
+
+
 func _exit_tree() -> void:
 	_keep_session()
 
 
 # A session left before its cup ran dry (Other boards, Restart, Quit) still counts for the
 # board's best session: a play trial left Hanami at 277 balls and its card said "Not played
-# yet". Only a session that paid something back, and only while it is still being played.
+# yet". Only a session that won something (CupPeak), and only while it is still played.
 func _keep_session() -> void:
+	_restart_prompt.dismiss()
+	if rules != null:
+		App.keep_pachinko_handle_power(rules.handle.power)
 	if rules == null or _level == null or rules.state != PachinkoRules.State.PLAYING:
 		return
-	var paid: int = rules.stats(true).get("game_payouts", 0)
-	if paid > 0:
-		App.record_pachinko_balls(_level.board_id, paid)
+	if _cup_peak.won() > 0:
+		App.record_pachinko_balls(_level.board_id, _cup_peak.won())
 
 
 func _new_rules() -> void:
 	var rng_seed := int(Time.get_ticks_usec())
 	rules = PachinkoRules.new(_level, rng_seed)
+	rules.handle.set_power(App.pachinko_handle_power())  # as the player left it
+	_cup_peak = CupPeak.new(rules)
+	_goal = MachineGoal.new(_level, rules, _cup_peak)
+	_goal.reached.connect(_on_goal_reached)
+	_cleared_card.dismiss()
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
 	rules.state_changed.connect(_on_state_changed)
-	rules.cup_changed.connect(_on_cup_changed)
-	rules.power_changed.connect(_on_power_changed)
-	rules.handle.changed.connect(launcher.set_handle)
-	rules.ball_loaded.connect(_on_loaded_changed)
-	rules.ball_launched.connect(_on_ball_launched)
-	rules.ball_won.connect(_on_ball_won)
-	rules.ball_drained.connect(_on_ball_drained)
-	rules.ball_returned.connect(_on_ball_returned)
 	rules.game_ended.connect(_on_game_ended)
-	rules.world.pin_hit.connect(_on_pin_hit)
-	rules.world.ring_hit.connect(_on_ring_hit)
 	board_view.bind(rules)
+	_feedback.bind(rules)
 	_bonus_view.bind(rules)
 	_juice.bind(rules)
 	_music.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
-	# the balls the game starts with, behind the card too (it read 0 there)
-	cup.set_count(_level.cup_start_balls)
-	launcher.set_power(0.0, 0.0)
-	_paying = PayingStrengths.new()
-	launcher.set_paying(_paying)
-	launcher.set_loaded(false)
-	launcher.set_handle(false, rules.handle.power)
-	(
-		launcher
-		. set_hint(
-			(
-				(
-					"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial"
-					+ "\nor %s. Turn it with\n%s / %s."
-				)
-				% [
-					KeyNames.of(&"launch_charge", "the charge key"),
-					KeyNames.of(&"launch_handle", "the handle key"),
-					KeyNames.of(&"handle_weaker", "?"),
-					KeyNames.of(&"handle_stronger", "?"),
-				]
-			)
-		)
-	)
+	launcher.show_controls_hint()
 	_show_notes()
 	stats_panel.show_stats(rules.stats(true))
 	if App.skips_rules_card(_level.board_id):
@@ -254,7 +253,7 @@ func _new_rules() -> void:
 		instructions.visible = false
 		rules.start_game()
 		_reminder.show_line(_reminder_line())
-		_reminder.place(_board_area)
+		_reminder.place(_board_area, _under_name_plate())
 	else:
 		_reminder.dismiss()
 		instructions.show_start(_level)
@@ -262,7 +261,7 @@ func _new_rules() -> void:
 
 ## What each band of launch strengths has paid this game (lit on the launcher's bar).
 func paying_strengths() -> PayingStrengths:
-	return _paying
+	return _feedback.paying
 
 
 ## The one-line reminder shown instead of the card on later games.
@@ -272,9 +271,30 @@ func reminder() -> RulesReminder:
 
 func _reminder_line() -> String:
 	return (
-		"%s   [b]%s[/b]: new game"
-		% [InstructionsPanel.how_to_shoot(), PlainMarkup.escape(KeyNames.of(&"game_restart", "?"))]
+		"%s\n%s   [b]%s[/b]: new game"
+		% [
+			InstructionsPanel.how_to_shoot_once(),
+			InstructionsPanel.how_to_stream(),
+			PlainMarkup.escape(KeyNames.of(&"game_restart", "?")),
+		]
 	)
+
+
+## The board's part of the screen (the last layout's).
+func board_area() -> Rect2:
+	return _board_area
+
+
+## The screen rectangle of the board's name plate at its widest.
+func name_plate_rect() -> Rect2:
+	var plate := NamePlate.rect_of(_level, NamePlate.MAX_WIDTH)
+	var at := board_view.to_screen(plate.position)
+	return Rect2(at, board_view.to_screen(plate.end) - at)
+
+
+# The screen height just under the board's name plate.
+func _under_name_plate() -> float:
+	return name_plate_rect().end.y + 6.0
 
 
 func _show_notes() -> void:
@@ -297,8 +317,8 @@ func _layout() -> void:
 		return
 	var area := _hud_layout.place(get_viewport_rect().size)
 	_board_area = area
-	_reminder.place(area)
 	board_view.fit(_level, area)
+	_reminder.place(area, _under_name_plate())
 	_controls.drag_scale = minf(area.size.x, area.size.y) / DESIGN_BOARD_SIDE
 	instructions.position = area.position
 	instructions.size = area.size
@@ -307,21 +327,6 @@ func _layout() -> void:
 func _refit_portrait_hud() -> void:
 	if _level != null:
 		_hud_layout.refit(get_viewport_rect().size)
-
-
-func _is_click(event: InputEvent) -> bool:
-	var button := event as InputEventMouseButton
-	return button != null and button.pressed and button.button_index == MOUSE_BUTTON_LEFT
-
-
-# Any of the keys a player reaches for first starts the game: start, charge or the handle.
-func _is_start_key(event: InputEvent) -> bool:
-	if event is InputEventMouseButton:
-		return false
-	for action: String in ["game_start", "launch_charge", "launch_handle"]:
-		if event.is_action_pressed(action):
-			return true
-	return false
 
 
 # The player chose to play from the card (its button or a start key).
@@ -361,8 +366,9 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 
 
 func _on_game_ended(summary: Dictionary) -> void:
-	var paid: int = summary.get("game_payouts", 0)
-	var new_best := App.record_pachinko_balls(_level.board_id, paid)
+	summary["game_won"] = _cup_peak.won()
+	var new_best := App.record_pachinko_balls(_level.board_id, _cup_peak.won())
+	App.keep_pachinko_handle_power(rules.handle.power)
 	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
 	_reminder.dismiss()
@@ -371,54 +377,15 @@ func _on_game_ended(summary: Dictionary) -> void:
 	sounds.play(SoundBank.GAME_OVER)
 
 
-# The cup shows every ball still to shoot: the cup's and the one in the launcher.
-func _on_cup_changed(_count: int) -> void:
-	cup.set_count(rules.balls_to_shoot)
+## The win moment's card (the tray reached the machine's goal).
+func cleared_card() -> MachineClearedCard:
+	return _cleared_card
 
 
-func _on_power_changed(power: float) -> void:
-	launcher.set_power(power, LaunchPower.flipper_degrees(rules.power))
+func _on_goal_reached(won: int) -> void:
+	_cleared_card.show_cleared(_level, won, _board_area)
+	sounds.play(SoundBank.JACKPOT_FANFARE)
 
 
-func _on_loaded_changed() -> void:
-	launcher.set_loaded(true)
-
-
-func _on_ball_launched(id: int, power: float, _speed: float) -> void:
-	_paying.note_launch(id, power)
-	launcher.set_loaded(rules.loaded)
-	cup.set_count(rules.balls_to_shoot)
-	if not rules.handle.held:
-		launcher.set_last_shot(power)  # the handle's own dial keeps its strength
-	sounds.play(SoundBank.LAUNCH, lerpf(-8.0, 0.0, power / 100.0), lerpf(0.9, 1.15, power / 100.0))
-
-
-func _on_ball_won(id: int, pocket: int, payout: int, at: Vector2) -> void:
-	_paying.note_paid(id, payout)
-	launcher.queue_redraw()
-	board_view.pockets.celebrate(pocket)
-	board_view.effects.pocket_win(at, payout)
-	cup.pour(payout)
-	sounds.play(SoundBank.POCKET_WIN)
-	launcher.set_loaded(rules.loaded)
-
-
-func _on_ball_drained(_id: int) -> void:
-	board_view.gutter.flash()
-	sounds.play(SoundBank.DRAIN, -6.0)
-
-
-func _on_ball_returned(_id: int) -> void:
-	var at := LaunchRail.return_zone_center(_level)
-	board_view.effects.note(at + Vector2(-40, 0), "back to cup", Color("bfe3ff"))
-	sounds.play(SoundBank.BALL_RETURN, -4.0)
-	launcher.set_loaded(rules.loaded)
-
-
-func _on_pin_hit(_ball: int, _pin: int, speed: float) -> void:
-	var tick := JuiceView.pin_sound(rules.bonus)
-	sounds.play_impact(tick, speed, TICK_MIN_SPEED, TICK_MAX_SPEED)
-
-
-func _on_ring_hit(_ball: int, speed: float) -> void:
-	sounds.play_impact(SoundBank.WALL_THUD, speed, TICK_MIN_SPEED * 2.0, TICK_MAX_SPEED * 1.5)
+func _go_to_next_machine() -> void:
+	App.start_game(BoardLevel.PACHINKO_NAME, MachineGoal.next_board_path(_level))

@@ -6,10 +6,10 @@ extends RefCounted
 ## on the screen, see drag_scale), the `launch_charge` action held and released (keyboard,
 ## gamepad button, or an analog axis whose depth sets the power), or the left stick pulled
 ## down (`tilt_down` from a joypad axis).
-## The handle (a stream): held with the pointer on the dial (dragging up or down while
-## holding turns it), with the `launch_handle` key, or with the gamepad's right trigger,
-## whose depth is the strength. `handle_stronger` / `handle_weaker` and the mouse wheel on
-## the dial turn it.
+## The handle (a stream): held with the pointer on the dial (dragging while holding turns
+## it: up or right stronger, down or left weaker), with the `launch_handle` key, or with the
+## gamepad's right trigger, whose depth is the strength. `handle_stronger` / `handle_weaker`
+## and the mouse wheel on the dial turn it.
 
 enum Source { NONE, POINTER, KEY, ANALOG }
 
@@ -17,7 +17,8 @@ enum Source { NONE, POINTER, KEY, ANALOG }
 const STICK_DEADZONE := 0.25
 ## Strength change per press of a turn key or notch of the wheel.
 const HANDLE_STEP := 2.0
-## Strength change per pixel of a drag on the held dial (up is stronger).
+## Strength change per pixel of a drag on the held dial (up or right is stronger, down or
+## left weaker, as the turn keys are: a play trial dragged left and the power rose).
 const HANDLE_DRAG_PER_PIXEL := 0.5
 
 ## How many view units of drag make one point of power, relative to the rules' one pixel
@@ -128,7 +129,8 @@ func _drag_point(at: Vector2) -> Vector2:
 func _handle_pointer(rules: PachinkoRules, event: InputEvent) -> bool:
 	var motion := event as InputEventMouseMotion
 	if motion != null:
-		var turned := (_handle_origin.y - motion.position.y) * HANDLE_DRAG_PER_PIXEL
+		var moved := motion.position - _handle_origin
+		var turned := (moved.x - moved.y) * HANDLE_DRAG_PER_PIXEL
 		rules.handle.set_power(_handle_origin_power + turned)
 		return true
 	var button := event as InputEventMouseButton

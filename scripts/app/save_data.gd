@@ -1,7 +1,9 @@
 class_name SaveData
 extends RefCounted
 ## The player's best results per board: fastest maze time in each mode (easy, hard), most
-## pachinko balls won; and the pachinko boards whose full rules card the player has read.
+## pachinko balls won; the pachinko boards whose full rules card the player has read and
+## those whose goal (PachinkoGoals) they reached; and the pachinko handle's strength, kept
+## across boards and games.
 ## Kept in a readable INI file (user://save.cfg), read as data: a board id of any text
 ## round-trips, an unusable record is dropped on its own, a damaged file is moved aside
 ## (kept for the player) and the records start empty, a file from a newer version is left
@@ -34,6 +36,10 @@ var _maze_times := {false: {}, true: {}}
 var _pachinko_balls := {}
 # board id -> true: the pachinko boards whose full rules card the player has played past
 var _rules_seen := {}
+# board id -> true: the pachinko machines whose goal (PachinkoGoals) the player reached
+var _cleared := {}
+# the pachinko handle's strength as the player left it (-1: never turned)
+var _handle_power := -1.0
 var _path := ""
 # a damaged file that could not be moved aside, or one from a newer version: never written
 var _untouchable := false
@@ -46,6 +52,8 @@ func load_file(path: String) -> String:
 	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
 	_rules_seen = {}
+	_handle_power = -1.0
+	_cleared = {}
 	var loaded := PlayerFileLoad.run(path, VERSION, _read_records, LOAD_WORDS)
 	_untouchable = loaded.untouchable
 	return loaded.message
@@ -118,6 +126,34 @@ func note_pachinko_rules_seen(board_id: String) -> void:
 	save()
 
 
+## True once the player has reached `board_id`'s goal (filled its tray).
+func has_cleared_pachinko(board_id: String) -> bool:
+	return _cleared.has(board_id)
+
+
+## Remembers (and saves) that the player reached `board_id`'s goal.
+func note_pachinko_cleared(board_id: String) -> void:
+	if board_id.is_empty() or _cleared.has(board_id):
+		return
+	_cleared[board_id] = true
+	save()
+
+
+## The pachinko handle's strength as the player last left it, or -1 when never kept.
+func pachinko_handle_power() -> float:
+	return _handle_power
+
+
+## Keeps (and saves, when it moved) the pachinko handle's strength: the next game and board
+## start with it (a play trial turned it on every board, back from 60 each time).
+func keep_pachinko_handle_power(power: float) -> void:
+	var kept := clampf(roundf(power), 0.0, LaunchHandle.MAX_POWER)
+	if is_equal_approx(kept, _handle_power):
+		return
+	_handle_power = kept
+	save()
+
+
 ## Writes the records to the file they were loaded from (nothing when never loaded).
 ## A file `load_file` must not write over (newer version, or damaged and not movable) is
 ## left alone: ERR_FILE_NO_PERMISSION, the records stay for this run.
@@ -132,11 +168,17 @@ func save() -> Error:
 		[MAZE_SECTIONS[true], _maze_times[true]],
 		["pachinko_best_balls", _pachinko_balls],
 		["pachinko_rules_seen", _rules_seen],
+		["pachinko_player", _player_settings()],
+		["pachinko_cleared", _cleared],
 	]
 	var error := IniText.write_file(_path, IniText.format(HEADER % VERSION, sections))
 	if error != OK:
 		push_error("Could not save best results to %s: %s" % [_path, error_string(error)])
 	return error
+
+
+func _player_settings() -> Dictionary:
+	return {"handle_power": _handle_power} if _handle_power >= 0.0 else {}
 
 
 # Takes every usable record from the sections of a file of `version`; returns the records
@@ -162,6 +204,17 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 	for board_id: String in seen:
 		if not board_id.is_empty() and seen[board_id] is bool and seen[board_id]:
 			_rules_seen[board_id] = true
+	var cleared: Dictionary = sections.get("pachinko_cleared", {})
+	for board_id: String in cleared:
+		if not board_id.is_empty() and cleared[board_id] is bool and cleared[board_id]:
+			_cleared[board_id] = true
+	var player: Dictionary = sections.get("pachinko_player", {})
+	var handle: Variant = player.get("handle_power", -1.0)
+	var strength: float = handle if handle is float or handle is int else NAN
+	if is_finite(strength) and strength >= 0.0:
+		_handle_power = clampf(strength, 0.0, LaunchHandle.MAX_POWER)
+	elif player.has("handle_power"):
+		refused.append("the handle's strength")
 	if refused.size() > MAX_LISTED:
 		var more := refused.size() - MAX_LISTED
 		refused.resize(MAX_LISTED)

@@ -137,9 +137,9 @@ func test_the_panel_shows_this_sessions_balls_and_the_best_session() -> void:
 	var stats := {"shots": 40, "payouts": 57, "pocket_hits": [9]}
 	var lines := "\n".join(StatsPanel.lines_for(stats, 120))
 	assert_string_contains(lines, "Paid back[/b] 57 (")
-	assert_string_contains(lines, "Best session[/b] 120 balls")
+	assert_string_contains(lines, "Most won[/b] 120 balls")
 	var first := "\n".join(StatsPanel.lines_for(stats))
-	assert_string_contains(first, "Best session[/b] none yet")
+	assert_string_contains(first, "Most won[/b] none yet")
 	# a play trial's column overflowed (the launcher's POWER cut off) as the lines wrapped
 	for line in StatsPanel.lines_for({"shots": 243, "payouts": 387, "pocket_hits": [97]}, 1200):
 		var plain := line.replace("[b]", "").replace("[/b]", "")

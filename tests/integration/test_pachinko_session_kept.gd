@@ -30,7 +30,7 @@ func _playing_game() -> PachinkoGame:
 func test_leaving_a_session_that_paid_keeps_it_as_the_best() -> void:
 	var game := _playing_game()
 	var board := game.rules.level.board_id
-	game.rules.ledger.paid += 40
+	_win(game.rules, 40)
 	assert_eq(App.best_pachinko_balls(board), -1, "nothing recorded while playing")
 	game.free()
 	assert_eq(App.best_pachinko_balls(board), 40, "the session is kept on leaving")
@@ -39,7 +39,7 @@ func test_leaving_a_session_that_paid_keeps_it_as_the_best() -> void:
 func test_restarting_keeps_the_session_too() -> void:
 	var game := _playing_game()
 	var board := game.rules.level.board_id
-	game.rules.ledger.paid += 25
+	_win(game.rules, 25)
 	game.restart()
 	assert_eq(App.best_pachinko_balls(board), 25)
 	game.free()
@@ -53,14 +53,16 @@ func test_a_session_that_paid_nothing_records_nothing() -> void:
 
 
 # A play trial found R dropped the session while the pause menu's Restart and Other boards
-# kept it: the key now ends the game the same way.
+# kept it: the key now ends the game the same way (after asking, a later trial lost its cup).
 func test_the_restart_key_keeps_the_session_like_the_menu() -> void:
 	var game := _playing_game()
 	var board := game.rules.level.board_id
-	game.rules.ledger.paid += 30
+	_win(game.rules, 30)
 	var key := InputEventAction.new()
 	key.action = &"game_restart"
 	key.pressed = true
+	game._unhandled_input(key)
+	assert_true(game.restart_prompt().asking(), "a session that paid asks first")
 	game._unhandled_input(key)
 	assert_eq(App.best_pachinko_balls(board), 30, "R keeps the session as Restart does")
 	assert_ne(game.rules.state, PachinkoRules.State.PLAYING, "and starts a new game")
@@ -81,3 +83,22 @@ func test_the_cup_shows_every_ball_to_shoot() -> void:
 	game.rules.fire(50.0)
 	assert_eq(game.cup.count(), start - 1, "one fewer once a ball is shot")
 	game.free()
+
+
+# The tray rises by `balls` (as a payout does): the game has won them.
+func _win(rules: PachinkoRules, balls: int) -> void:
+	rules.cup += balls
+	rules.cup_changed.emit(rules.cup)
+
+
+# A play trial: "Best: N balls paid back" rewarded a long session over a good one (a 100-ball
+# board out-scored a 25-ball one by lasting). The best is the most balls won: the tray's most
+# above its start, however much was paid back on the way.
+func test_the_best_is_the_most_balls_won_not_paid_back() -> void:
+	var game := _playing_game()
+	var board := game.rules.level.board_id
+	game.rules.ledger.paid += 300  # paid back, all shot away again
+	_win(game.rules, 18)
+	_win(game.rules, -10)
+	game.free()
+	assert_eq(App.best_pachinko_balls(board), 18, "the most the tray held above its start")

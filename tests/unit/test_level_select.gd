@@ -100,8 +100,8 @@ func test_best_results_are_shown_on_the_cards() -> void:
 	var maze_id := mazes[0].level.board_id
 	assert_has(
 		_card_texts(await _open("pachinko")),
-		"No best session yet",
-		"a pachinko game always ends: its record is the best session, as the panel says"
+		"Nothing won yet",
+		"a pachinko board's record is the most balls won, as the panel says"
 	)
 	assert_has(
 		_card_texts(await _open("maze")),
@@ -110,5 +110,5 @@ func test_best_results_are_shown_on_the_cards() -> void:
 	)
 	App.record_pachinko_balls(pachinko_id, 23)
 	App.record_maze_time(maze_id, false, 101.34)
-	assert_has(_card_texts(await _open("pachinko")), "Best: 23 balls paid back")
+	assert_has(_card_texts(await _open("pachinko")), "Most won: 23 balls")
 	assert_has(_card_texts(await _open("maze")), "Best time: 1:41.3", "the maze clock's m:ss.t")

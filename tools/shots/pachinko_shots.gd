@@ -5,7 +5,9 @@ extends RefCounted
 ## mark on the power bar), "pachinko_win" the moment a pocket pays out, "pachinko_over"
 ## game over, "pachinko_start_fever" Fever's card (the tallest), "pachinko_reminder" a later
 ## game's one-line reminder, "pachinko_paying" Fever streamed at three strengths, the power
-## bar lit green by the strengths that paid. Each opens the game as the level select does
+## bar lit green by the strengths that paid, "pachinko_restart_ask" R's question after a
+## few seconds of streaming, "pachinko_cleared" the win card once the tray reached its
+## goal. Each opens the game as the level select does
 ## (App.start_game) and plays the screen's own rules (PachinkoGame.rules) forward at 60 fps;
 ## nothing is faked.
 
@@ -23,6 +25,8 @@ const NAMES: Array[String] = [
 	"pachinko_start_fever",
 	"pachinko_reminder",
 	"pachinko_paying",
+	"pachinko_restart_ask",
+	"pachinko_cleared",
 ]
 const FEVER := "res://levels/pachinko/fever.board"
 const FRAME := 1.0 / 60.0
@@ -75,6 +79,29 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 			if not _win(rules):
 				printerr("shots: pachinko_win: no pocket paid out in 90 s of play")
 				return FAILED
+		"pachinko_restart_ask":
+			rules.start_game()
+			rules.handle.grip()
+			for i in 240:
+				rules.advance(FRAME)
+				await tree.process_frame
+			rules.handle.let_go()
+			var press := InputEventAction.new()
+			press.action = &"game_restart"
+			press.pressed = true
+			Input.parse_input_event(press)
+			for i in 6:
+				await tree.process_frame
+		"pachinko_cleared":
+			rules.start_game()
+			for i in 120:
+				rules.advance(FRAME)
+				await tree.process_frame
+			# the tray's last balls come as a payout does
+			rules.cup += PachinkoGoals.tray_target(rules.level) - rules.balls_to_shoot
+			rules.cup_changed.emit(rules.cup)
+			for i in 10:
+				await tree.process_frame
 		"pachinko_over":
 			if not _over(rules):
 				printerr("shots: pachinko_over: the game was still on after 240 s of play")

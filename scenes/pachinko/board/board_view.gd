@@ -125,6 +125,11 @@ func fit(level: BoardLevel, area: Rect2) -> void:
 	_rebake()
 
 
+## The screen point of a board point (the fitted place, without a shake's nudge).
+func to_screen(board: Vector2) -> Vector2:
+	return _fitted_position + board * scale.x
+
+
 ## Board coordinates of a screen point.
 func to_board(screen: Vector2) -> Vector2:
 	return (screen - position) / scale.x

@@ -6,11 +6,26 @@ extends Node2D
 
 ## Seconds a catch keeps a lamp lit.
 const FLASH_SECONDS := 0.8
+## The countdown's font size and the room round it on its plaque (board pixels).
+const COUNTDOWN_SIZE := 13
+const COUNTDOWN_PAD := Vector2(6.0, 3.0)
+## The countdown's z: over the board's other pieces (the start pocket, the beacon's chevrons),
+## which cut a play trial's "8 s left" in two.
+const COUNTDOWN_Z := 90
 
 var _level: BoardLevel
 var _machine: BonusMachine
 var _light := PackedFloat32Array()
 var _clock := 0.0
+## The open attackers' countdowns: a layer of their own, over the board's other pieces.
+var _countdowns := Node2D.new()
+
+
+func _init() -> void:
+	_countdowns.name = "Countdowns"
+	_countdowns.z_index = COUNTDOWN_Z
+	_countdowns.draw.connect(_draw_countdowns)
+	add_child(_countdowns)
 
 
 ## Shows the bonus pockets of `level` as `machine` runs them.
@@ -35,6 +50,7 @@ func _process(delta: float) -> void:
 	for i in _light.size():
 		_light[i] = maxf(_light[i] - delta / FLASH_SECONDS, 0.0)
 	queue_redraw()
+	_countdowns.queue_redraw()
 
 
 func _draw() -> void:
@@ -47,19 +63,57 @@ func _draw() -> void:
 		if open and spec.role == BonusPocketSpec.Role.ATTACKER:
 			light = maxf(light, 0.6 + 0.4 * sin(_clock * 12.0))
 		BonusPainter.draw_pocket(self, _level, spec, open, light, _machine.openness(i))
-		if open and spec.role == BonusPocketSpec.Role.ATTACKER:
-			_draw_countdown(spec, i)
 
 
-func _draw_countdown(spec: BonusPocketSpec, index: int) -> void:
+## The countdowns' layer (for tests: drawn over the board's other pieces).
+func countdown_layer() -> Node2D:
+	return _countdowns
+
+
+## What the countdown under open attacker `index` says ("8 s · 10 left").
+func countdown_text(index: int) -> String:
+	return "%.0f s · %d left" % [ceilf(_machine.time_left(index)), _machine.catches_left(index)]
+
+
+## The countdown's plaque under attacker `index` (board pixels): one piece, under the cup,
+## clear of the start pocket above it.
+func countdown_rect(index: int) -> Rect2:
+	var spec := _level.bonus_pockets[index]
 	var font := ThemeDB.fallback_font
-	var text := (
-		"%.0f s · %d left" % [ceilf(_machine.time_left(index)), _machine.catches_left(index)]
+	var text_size := font.get_string_size(
+		countdown_text(index), HORIZONTAL_ALIGNMENT_LEFT, -1, COUNTDOWN_SIZE
 	)
-	var size := 13
-	var width := font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, size).x
-	var at := spec.position + Vector2(-width * 0.5, -spec.width * 0.45 - 8.0)
-	draw_string_outline(
-		font, at, text, HORIZONTAL_ALIGNMENT_LEFT, -1, size, 4, Color(0, 0, 0, 0.85)
+	var size := text_size + COUNTDOWN_PAD * 2.0
+	var top := spec.position.y + spec.depth + 20.0  # under the cup and its ATTACKER label
+	return Rect2(Vector2(spec.position.x - size.x * 0.5, top), size)
+
+
+func _draw_countdowns() -> void:
+	if _level == null or _machine == null:
+		return
+	for i in _level.bonus_pockets.size():
+		if _machine.is_open(i) and _level.bonus_pockets[i].role == BonusPocketSpec.Role.ATTACKER:
+			_draw_countdown(i)
+
+
+func _draw_countdown(index: int) -> void:
+	var rect := countdown_rect(index)
+	var box := StyleBoxFlat.new()
+	box.bg_color = Color(0.04, 0.02, 0.08, 0.85)
+	box.border_color = Color("ffe27a")
+	box.set_border_width_all(1)
+	box.set_corner_radius_all(5)
+	_countdowns.draw_style_box(box, rect)
+	var font := ThemeDB.fallback_font
+	var at := (
+		rect.position + Vector2(COUNTDOWN_PAD.x, COUNTDOWN_PAD.y + font.get_ascent(COUNTDOWN_SIZE))
 	)
-	draw_string(font, at, text, HORIZONTAL_ALIGNMENT_LEFT, -1, size, Color("ffe27a"))
+	_countdowns.draw_string(
+		font,
+		at,
+		countdown_text(index),
+		HORIZONTAL_ALIGNMENT_LEFT,
+		-1,
+		COUNTDOWN_SIZE,
+		Color("ffe27a")
+	)

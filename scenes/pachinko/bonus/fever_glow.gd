@@ -5,8 +5,8 @@ extends Node2D
 ## catches left hangs over the top of the field, so a player knows at a glance that now is
 ## the time to feed the attacker. The ring's band is drawn under the balls; the caption is a
 ## plaque of its own over everything (balls, aim dots), placed inside the ring's inner edge
-## (a play trial found it clipped under the rim, with the aim dots drawn over it). It may
-## cover the reels' window: no spin starts while a jackpot is on.
+## (a play trial found it clipped under the rim, with the aim dots drawn over it), under the
+## reels (another found it over their digits).
 
 const RING_WIDTH := 14.0
 const WARM := Color("ff8a2a")
@@ -16,6 +16,8 @@ const CAPTION_SIZE := 22
 const PLAQUE_PAD := Vector2(14.0, 6.0)
 ## Room kept between the plaque and the ring's inner edge (the rim's lights), board pixels.
 const RIM_ROOM := 14.0
+## Room under the reels' window for its spin lamps (ReelDisplay), board pixels.
+const REEL_LAMPS_ROOM := 18.0
 ## The plaque's z: over the balls, the aim dots and the board's other layers.
 const PLAQUE_Z := 100
 
@@ -63,8 +65,10 @@ func caption() -> String:
 	return round_text
 
 
-## The caption's plaque on the board (board pixels): centred on the ring's middle line, as
-## high as it fits inside the ring's inner edge. Empty while no caption shows.
+## The caption's plaque on the board (board pixels): centred on the ring's middle line, just
+## under the reels' window and its lamps on a board with reels (a play trial found it over
+## the reels' digits), else as high as it fits inside the ring's inner edge. Empty while no
+## caption shows.
 func caption_rect() -> Rect2:
 	var text := caption()
 	if text.is_empty():
@@ -73,10 +77,13 @@ func caption_rect() -> Rect2:
 	var size := (
 		font.get_string_size(text, HORIZONTAL_ALIGNMENT_LEFT, -1, CAPTION_SIZE) + PLAQUE_PAD * 2.0
 	)
+	var centre := _level.ring_center
+	if BonusGeometry.has_reels(_level):
+		var under := BonusGeometry.reel_window(_level).end.y + REEL_LAMPS_ROOM
+		return Rect2(Vector2(centre.x - size.x * 0.5, under), size)
 	var inner := _level.ring_radius - RING_WIDTH - RIM_ROOM
 	# the top corners are the ones nearest the rim: they sit on the inner circle
 	var rise := sqrt(maxf(inner * inner - size.x * size.x * 0.25, 0.0))
-	var centre := _level.ring_center
 	return Rect2(Vector2(centre.x - size.x * 0.5, centre.y - rise), size)
 
 

@@ -92,6 +92,24 @@ func set_hint(text: String) -> void:
 	queue_redraw()
 
 
+## The hint beside the lever: how to shoot once and stream, with the player's keys.
+func show_controls_hint() -> void:
+	set_hint(
+		(
+			(
+				"One shot: drag the red\ngrip up or hold %s.\nStream: hold the dial\nor %s. Turn it"
+				+ " with\n%s / %s."
+			)
+			% [
+				KeyNames.of(&"launch_charge", "the charge key"),
+				KeyNames.of(&"launch_handle", "the handle key"),
+				KeyNames.of(&"handle_weaker", "?"),
+				KeyNames.of(&"handle_stronger", "?"),
+			]
+		)
+	)
+
+
 ## Shows the handle: held (streaming) or not, and its strength.
 func set_handle(held: bool, power: float) -> void:
 	_handle_held = held

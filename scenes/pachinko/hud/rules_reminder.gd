@@ -4,16 +4,21 @@ extends PanelContainer
 ## first on a board (the first has the full rules card). It never blocks play: it ignores
 ## the mouse and fades away after SHOWN_SECONDS.
 
-## Seconds the line stays fully on the screen before it fades.
+## Seconds the line stays fully on the screen before it fades, unless told otherwise.
 const SHOWN_SECONDS := 5.0
 ## Seconds of its fade.
 const FADE_SECONDS := 1.0
 const FONT_SIZE := 18
 
+## Seconds this one stays fully on the screen before it fades.
+var shown_seconds := SHOWN_SECONDS
+
 var _line := RichTextLabel.new()
 var _fade: Tween
-# The board's area the line is centred over (its size settles after its text is set).
+# The board's area the line is centred over (its size settles after its text is set), and
+# the screen height its top keeps under (the board's name plate).
 var _area := Rect2()
+var _top := 0.0
 
 
 func _init() -> void:
@@ -36,10 +41,10 @@ func _init() -> void:
 	_line.add_theme_font_size_override(&"normal_font_size", FONT_SIZE)
 	_line.add_theme_font_size_override(&"bold_font_size", FONT_SIZE)
 	add_child(_line)
-	minimum_size_changed.connect(func() -> void: place(_area))
+	minimum_size_changed.connect(func() -> void: place(_area, _top))
 
 
-## Shows `bbcode` (one line) and fades it out after SHOWN_SECONDS.
+## Shows `bbcode` (a line or two) and fades it out after `shown_seconds`.
 func show_line(bbcode: String) -> void:
 	_line.text = bbcode
 	visible = true
@@ -49,7 +54,7 @@ func show_line(bbcode: String) -> void:
 	if not is_inside_tree():
 		return
 	_fade = create_tween()
-	_fade.tween_interval(SHOWN_SECONDS)
+	_fade.tween_interval(shown_seconds)
 	_fade.tween_property(self, "modulate:a", 0.0, FADE_SECONDS)
 	_fade.tween_callback(hide)
 
@@ -66,8 +71,12 @@ func text() -> String:
 	return _line.get_parsed_text()
 
 
-## Places the line centred across the top of `area` (the board's area).
-func place(area: Rect2) -> void:
+## Places the lines centred across `area` (the board's area), their top at `top` (under the
+## board's name plate: a play trial found the reminder over it) and kept inside the area.
+func place(area: Rect2, top: float) -> void:
 	_area = area
+	_top = top
 	size = get_combined_minimum_size()
-	position = Vector2(area.get_center().x - size.x * 0.5, area.position.y + 12.0)
+	var x := clampf(area.get_center().x - size.x * 0.5, area.position.x, area.end.x - size.x)
+	var y := clampf(top, area.position.y, maxf(area.end.y - size.y, area.position.y))
+	position = Vector2(x, y)

@@ -6,7 +6,7 @@ extends PanelContainer
 ## The font size of the numbers.
 const FONT_SIZE := 15
 
-## Most balls paid back in one session on this board before, or -1 for none yet.
+## Most balls won in one game on this board before (CupPeak), or -1 for none yet.
 var best_session := -1
 
 var _text: RichTextLabel
@@ -33,7 +33,8 @@ func show_stats(stats: Dictionary) -> void:
 
 ## The panel's lines for `stats`, in the words the card and the game-over box use:
 ## "pocket hits" counts every paying piece (pockets, start pockets, attackers, tulips),
-## "paid back" the balls they paid into the cup; `best` is the best session's (-1: none).
+## "paid back" the balls they paid into the cup; `best` is the most balls a game on the
+## board has won (its tray's most above its start, CupPeak; -1: none).
 static func lines_for(stats: Dictionary, best := -1) -> PackedStringArray:
 	var hits := 0
 	for count: int in stats.get("pocket_hits", []):
@@ -47,6 +48,6 @@ static func lines_for(stats: Dictionary, best := -1) -> PackedStringArray:
 			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
 			# short lines: longer ones wrapped and pushed the launcher off a 720 px column
 			"[b]Paid back[/b] %d (%.2f a shot)" % [paid, ratio],
-			"[b]Best session[/b] %d balls" % best if best >= 0 else "[b]Best session[/b] none yet",
+			"[b]Most won[/b] %d balls" % best if best >= 0 else "[b]Most won[/b] none yet",
 		]
 	)

@@ -35,7 +35,7 @@ static func line(level: BoardLevel, piece: Piece) -> String:
 					"START pocket: pays %s and spins the three reels; three equal numbers are a"
 					% _balls(_payouts(level, piece))
 				)
-				+ " jackpot."
+				+ " jackpot. REACH! means the first two match: the last reel decides."
 			)
 		Piece.ATTACKER:
 			return (

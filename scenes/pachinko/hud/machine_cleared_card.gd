@@ -1,0 +1,74 @@
+class_name MachineClearedCard
+extends PanelContainer
+## The win moment: the tray reached the machine's goal (PachinkoGoals). A large card over the
+## board with the goal, the balls won and three ways on: Next machine, Keep playing (the game
+## goes on: the card goes) and Menu. The game acts on its signals.
+
+## The player chose the next machine in the list.
+signal next_requested
+## The player chose the board list.
+signal menu_requested
+
+const TITLE_SIZE := 44
+const LINE_SIZE := 20
+
+var _title := Label.new()
+var _line := Label.new()
+var _next := Button.new()
+var _keep := Button.new()
+var _menu := Button.new()
+
+
+func _init() -> void:
+	visible = false
+	var style := StyleBoxFlat.new()
+	style.bg_color = Color(0.07, 0.04, 0.13, 0.94)
+	style.border_color = Color("ffd84a")
+	style.set_border_width_all(4)
+	style.set_corner_radius_all(16)
+	style.set_content_margin_all(28.0)
+	add_theme_stylebox_override(&"panel", style)
+	var box := VBoxContainer.new()
+	box.add_theme_constant_override(&"separation", 14)
+	add_child(box)
+	_title.text = "MACHINE CLEARED!"
+	_title.horizontal_alignment = HORIZONTAL_ALIGNMENT_CENTER
+	_title.add_theme_font_size_override(&"font_size", TITLE_SIZE)
+	_title.add_theme_color_override(&"font_color", Color("ffd84a"))
+	box.add_child(_title)
+	_line.horizontal_alignment = HORIZONTAL_ALIGNMENT_CENTER
+	_line.add_theme_font_size_override(&"font_size", LINE_SIZE)
+	box.add_child(_line)
+	var row := HBoxContainer.new()
+	row.alignment = BoxContainer.ALIGNMENT_CENTER
+	row.add_theme_constant_override(&"separation", 12)
+	box.add_child(row)
+	for pair: Array in [[_next, "Next machine"], [_keep, "Keep playing"], [_menu, "Menu"]]:
+		var button: Button = pair[0]
+		button.text = pair[1]
+		button.add_theme_font_size_override(&"font_size", LINE_SIZE)
+		row.add_child(button)
+	_next.pressed.connect(func() -> void: next_requested.emit())
+	_keep.pressed.connect(dismiss)
+	_menu.pressed.connect(func() -> void: menu_requested.emit())
+
+
+## Shows the win on `level`: its goal reached with `won` balls won; centred on `area`.
+func show_cleared(level: BoardLevel, won: int, area: Rect2) -> void:
+	_line.text = (
+		"%s: done!\nYou won %d balls on %s." % [PachinkoGoals.words(level), won, level.display_name]
+	)
+	visible = true
+	size = get_combined_minimum_size()
+	position = area.get_center() - size * 0.5
+	_keep.grab_focus.call_deferred()
+
+
+## Takes the card away (Keep playing).
+func dismiss() -> void:
+	visible = false
+
+
+## The card's words, for tests.
+func text() -> String:
+	return "%s %s" % [_title.text, _line.text]

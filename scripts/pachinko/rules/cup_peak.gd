@@ -1,0 +1,29 @@
+class_name CupPeak
+extends RefCounted
+## The most balls a game's cup has held above its start: the "balls won" that a session's
+## best is measured in (the balls paid back counted a long session over a good one), and what
+## a machine's goal (PachinkoGoals) is reached by. Follows one game's rules.
+
+## The balls the game started with.
+var start := 0
+## The most balls to shoot (cup and launcher) seen so far.
+var peak := 0
+
+var _rules: PachinkoRules
+
+
+## Follows `rules` from now (a new game starts at its board's start balls).
+func _init(rules: PachinkoRules) -> void:
+	_rules = rules
+	start = rules.level.cup_start_balls
+	peak = start
+	rules.cup_changed.connect(_on_cup_changed)
+
+
+## The most balls held above the start so far (0 while the cup never rose past it).
+func won() -> int:
+	return maxi(peak - start, 0)
+
+
+func _on_cup_changed(_count: int) -> void:
+	peak = maxi(peak, _rules.balls_to_shoot)

@@ -1,0 +1,66 @@
+extends GutTest
+## Each machine's goal (PachinkoGoals): filling the tray to its target clears the machine,
+## once, with a large win card (Next machine / Keep playing / Menu); the clear is saved and
+## the board's card says so. The targets are set from `--sessions=20 --seed=1` (peak_won).
+
+const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
+const SaveData := preload("res://scripts/app/save_data.gd")
+
+var _kept_save: SaveData
+
+
+func before_each() -> void:
+	_kept_save = App.save_data
+	App.save_data = SaveData.new()  # in memory only: never written
+	App.request_board("pachinko", "res://levels/pachinko/fever.board")
+
+
+func after_each() -> void:
+	App.save_data = _kept_save
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+
+
+func _win(rules: PachinkoRules, balls: int) -> void:
+	rules.cup += balls
+	rules.cup_changed.emit(rules.cup)
+
+
+func test_every_machine_has_a_goal_above_its_start() -> void:
+	for result in BoardLoader.list_boards(BoardLevel.Kind.PACHINKO):
+		var level := result.level
+		var target := PachinkoGoals.tray_target(level)
+		assert_gt(target, level.cup_start_balls, "%s: %d" % [level.board_id, target])
+		assert_string_contains(PachinkoGoals.words(level), "Fill the tray: %d balls" % target)
+
+
+func test_filling_the_tray_clears_the_machine_once_with_a_win_card() -> void:
+	var game := GAME.instantiate() as PachinkoGame
+	add_child_autofree(game)
+	await wait_process_frames(1)
+	var rules := game.rules
+	rules.start_game()
+	var target := PachinkoGoals.tray_target(rules.level)
+	var board := rules.level.board_id
+	_win(rules, target - rules.balls_to_shoot - 1)
+	assert_false(game.cleared_card().visible, "one short: not yet")
+	assert_false(App.has_cleared_pachinko(board))
+	_win(rules, 1)
+	assert_true(game.cleared_card().visible, "the tray is full: the win card")
+	assert_string_contains(game.cleared_card().text(), "CLEARED")
+	var card := game.instructions.get_node("Card/Margin/Box/Body") as RichTextLabel
+	assert_string_contains(card.get_parsed_text(), "Goal: Fill the tray", "the start card says it")
+	assert_true(App.has_cleared_pachinko(board), "remembered for the board's card")
+	game.cleared_card().dismiss()  # Keep playing
+	_win(rules, 5)
+	assert_false(game.cleared_card().visible, "once a game")
+	assert_eq(rules.state, PachinkoRules.State.PLAYING, "and the game goes on")
+	var result := BoardLoader.load_board("res://levels/pachinko/fever.board")
+	App.record_pachinko_balls(board, 40)
+	assert_string_contains(LevelSelectWords.best_text(result, "pachinko"), "Cleared!")
+
+
+func test_next_machine_is_the_next_board_in_the_list() -> void:
+	var boards := BoardLoader.list_boards(BoardLevel.Kind.PACHINKO)
+	var first := boards[0].level
+	assert_eq(MachineGoal.next_board_path(first), boards[1].path)
+	assert_eq(MachineGoal.next_board_path(boards[boards.size() - 1].level), boards[0].path)

@@ -1,0 +1,98 @@
+extends GutTest
+## R never throws a cup away silently (a play trial lost 80 balls to one R): a session with
+## balls won or more than one shot in asks first, a second R starts over, Esc keeps playing.
+## The handle's strength is kept across games and boards, in the player's save file.
+
+const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
+const SaveData := preload("res://scripts/app/save_data.gd")
+const SAVE_PATH := "user://test_restart_prompt_save.cfg"
+
+var _kept_save: SaveData
+
+
+func before_each() -> void:
+	_kept_save = App.save_data
+	App.save_data = SaveData.new()  # in memory only: never written
+	App.request_board("pachinko", "res://levels/pachinko/fever.board")
+
+
+func after_each() -> void:
+	App.save_data = _kept_save
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+	DirAccess.remove_absolute(ProjectSettings.globalize_path(SAVE_PATH))
+
+
+func _playing_game() -> PachinkoGame:
+	var game := GAME.instantiate() as PachinkoGame
+	add_child_autofree(game)
+	game.rules.start_game()
+	return game
+
+
+func _action(action: StringName) -> InputEventAction:
+	var event := InputEventAction.new()
+	event.action = action
+	event.pressed = true
+	return event
+
+
+func _stream(rules: PachinkoRules, seconds: float) -> void:
+	rules.handle.grip()
+	for i in int(seconds / rules.step_seconds()):
+		rules.step()
+	rules.handle.let_go()
+
+
+func test_r_on_a_fresh_game_starts_over_at_once() -> void:
+	var game := _playing_game()
+	await wait_process_frames(1)
+	var first := game.rules
+	game._unhandled_input(_action(&"game_restart"))
+	assert_ne(game.rules, first, "nothing to lose: a new game")
+	assert_false(game.restart_prompt().asking())
+
+
+func test_r_asks_first_when_the_cup_has_shots_in_and_a_second_r_starts_over() -> void:
+	var game := _playing_game()
+	await wait_process_frames(1)
+	var first := game.rules
+	_stream(first, 4.0)
+	assert_gt(first.stats(true).get("game_shots", 0), 1, "shots in")
+	game._unhandled_input(_action(&"game_restart"))
+	assert_eq(game.rules, first, "the game goes on")
+	assert_true(game.restart_prompt().asking(), "R asks first")
+	assert_string_contains(game.restart_prompt().text(), "%d balls go" % first.balls_to_shoot)
+	game._unhandled_input(_action(&"game_restart"))
+	assert_ne(game.rules, first, "a second R starts over")
+	assert_false(game.restart_prompt().asking())
+
+
+func test_esc_answers_keep_playing() -> void:
+	var game := _playing_game()
+	await wait_process_frames(1)
+	var first := game.rules
+	_stream(first, 4.0)
+	game._unhandled_input(_action(&"game_restart"))
+	game.restart_prompt()._unhandled_input(_action(&"pause"))
+	assert_false(game.restart_prompt().asking(), "the question goes")
+	assert_false(game.pause_menu.is_open(), "without opening the pause menu")
+	assert_eq(game.rules, first, "the game goes on")
+
+
+func test_the_handle_strength_is_kept_across_games_boards_and_runs() -> void:
+	var game := _playing_game()
+	await wait_process_frames(1)
+	game.rules.handle.set_power(82.0)
+	game.restart()
+	assert_eq(game.rules.handle.power, 82.0, "the next game starts with it")
+	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+	var other := _playing_game()
+	await wait_process_frames(1)
+	assert_eq(other.rules.handle.power, 82.0, "and the next board")
+	var saved := SaveData.new()
+	assert_eq(saved.load_file(SAVE_PATH), "")
+	saved.keep_pachinko_handle_power(37.0)
+	var again := SaveData.new()
+	assert_eq(again.load_file(SAVE_PATH), "")
+	assert_eq(again.pachinko_handle_power(), 37.0, "saved with the player's file")
+	assert_eq(SaveData.new().pachinko_handle_power(), -1.0, "none before it is turned")
