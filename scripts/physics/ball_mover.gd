@@ -95,6 +95,8 @@ var _shapes: StaticShapes
 var _zoned := true
 ## False on a board without pins (a maze): the mover then skips the pin test outright.
 var _has_pins := true
+## Entries of _pin_items (every pin's, when the grid does not zone them).
+var _pin_count := 0
 var _pin_start := PackedInt32Array()
 var _pin_items := PackedInt32Array()
 var _pin_item_pos := PackedVector2Array()
@@ -279,6 +281,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_pin_tag = s.pin_tag
 	_pin_min_speed_x = s.pin_min_speed_x
 	_has_pins = not _pin_items.is_empty()
+	_pin_count = _pin_items.size()
 	_has_walls = not s.wall_a.is_empty()
 	_wall_start = g.wall_start
 	_wall_items = g.wall_items
@@ -362,6 +365,11 @@ func _queue(kind: int, index: int, speed: float) -> void:
 ##   threads when every key was written).
 func move_range(from: int, to: int) -> void:
 	var fr_low: Vector2 = -_fr_zero
+	# Per ball (declared once: each ball's first substep sets all three before they are read):
+	# its cell (its key) while no contact has moved it, and whether a contact may have.
+	var c := 0
+	var at := Vector2i.ZERO
+	var cell_stale := true
 	for i: int in range(from, to):
 		if _asleep[i] != 0:
 			continue
@@ -387,9 +395,6 @@ func move_range(from: int, to: int) -> void:
 			steps = mini(ceili((_v * _dt).length() / _max_travel), MAX_SUBSTEPS)
 		_h = _dt / steps
 		_p_start = _p
-		var c := 0  # the ball's cell (its key), while no contact has moved it
-		var at := Vector2i.ZERO
-		var cell_stale := true
 		for sub: int in steps:
 			if _tracing and sub > 0:
 				_trace(i)
@@ -400,8 +405,11 @@ func move_range(from: int, to: int) -> void:
 			c = at.y * _cols + at.x
 			var moved := false
 			if _has_pins:
-				var k0: int = _pin_start[c] if _zoned else 0
-				var k1: int = _pin_start[c + 1] if _zoned else _pin_items.size()
+				var k0 := 0
+				var k1: int = _pin_count
+				if _zoned:
+					k0 = _pin_start[c]
+					k1 = _pin_start[c + 1]
 				for k: int in range(k0, k1):
 					var d: Vector2 = _p - _pin_item_pos[k]
 					var lim: float = _pin_item_rad[k] + _r
