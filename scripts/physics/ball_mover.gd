@@ -336,10 +336,10 @@ func _queue(kind: int, index: int, speed: float) -> void:
 ## Moves the awake balls in slots from..to, one at a time in members: friction and the speed
 ## cap (SpeedRules.limit(), written out: tests/unit/test_speed_limit_copy.gd pins it), then
 ## substeps (each: move, then the narrow phase per shape kind), then its contacts, position
-## and broad-phase key; then, still there, its rest time or sleep and its sensor pass
-## (_after_move). Written out as one loop with the pin tests and the write-back inline: a
-## GDScript call costs about as much as a contact test, and calls on two threads run no
-## faster than on one (see LaneCrew), so calls happen per contact and for rarer rules.
+## and broad-phase key; then, still there, its rest time or sleep and its sensor pass.
+## Written out as one loop with the pin tests and the write-back inline: a GDScript call
+## costs about as much as a contact test, and calls on two threads run no faster than on
+## one (see LaneCrew), so calls happen per contact and for rarer rules.
 ## What needs no call:
 ## - most balls need one substep and have no push;
 ## - a ball no pin moved is still in the cell it was keyed to, and an empty wall cell is
@@ -354,7 +354,7 @@ func _queue(kind: int, index: int, speed: float) -> void:
 ##   saves writes for most of a flowing board);
 ## - a ball with no push and no windmill about gets its substep count here, and a moving
 ##   ball on a board with zones alone (every pachinko board) its zone-edge test: those two
-##   calls, and the one to _after_move(), were a quarter of a contact-free world's step
+##   calls, and one to the rest-and-sensors step, were a quarter of a contact-free world's step
 ##   (tests/unit/test_mover_inline_copies.gd pins both copies to _substeps() and
 ##   BallSensors.crossed_zone_edge());
 ## - the broad phase's key for next step (see BallStore.cell_keys) is rewritten only when
@@ -421,11 +421,11 @@ func move_range(from: int, to: int) -> void:
 				if moved or not walls_written_out:
 					_touch_walls(c if not moved else -1)
 					cell_stale = true
-				elif _wall_start[c] != _wall_start[c + 1]:
+				else:
 					# _touch_walls(c), written out: see the note above this function.
 					var k0: int = _wall_start[c]
 					var k1: int = _wall_start[c + 1]
-					for _pass: int in 3:
+					for _pass: int in 3 if k0 != k1 else 0:
 						var best := -1
 						var found := 0
 						var best_depth := 0.0
@@ -529,8 +529,26 @@ func move_range(from: int, to: int) -> void:
 				_rekey(i, c)
 		if _gone:
 			_alive[i] = 0
-		elif _v.length_squared() < _rest_speed2 or _sense_every_ball:
-			_after_move(i)
+		elif _v.length_squared() < _rest_speed2:
+			# It rests `dt` longer; once it has rested the sleep time it may fall asleep. Near
+			# a windmill a ball never sleeps: a sleeper does not move, and a blade would pass
+			# it. Then its sensor pass: with zones alone (no holes, no goals) BallSensors has
+			# work only when the ball crossed a zone's edge, so that is looked for first.
+			var rested: float = _rest[i] + _dt
+			_rest[i] = rested
+			if not _near_wheel and _sleep_time > 0.0 and rested >= _sleep_time:
+				BallSleep.sleep_if_settled(_store, i, _settled_push)
+			if (
+				_has_sensors
+				and (
+					not _zones_only
+					or BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad)
+				)
+			):
+				_sense(i)
+		elif _sense_every_ball:
+			_rest[i] = 0.0
+			_sense(i)
 		else:
 			_rest[i] = 0.0
 			if _has_sensors:
@@ -549,26 +567,6 @@ func _rekey(i: int, c: int) -> void:
 	var slot: int = _sorted_keys.bsearch((_key_cell[i] << BallPairs.SORT_SHIFT) | i)
 	_cell_keys[slot] = (c << BallPairs.SORT_SHIFT) | i
 	_key_cell[i] = c
-
-
-## Ball `i` after its move: its rest time or sleep (BallSleep.sleep_if_settled), then its sensor
-## pass. With zones alone (no holes, no goals) BallSensors has work only when the ball
-## crossed a zone's edge, so that is looked for first.
-func _after_move(i: int) -> void:
-	if _v.length_squared() >= _rest_speed2:
-		_rest[i] = 0.0
-	else:
-		# It rests `dt` longer; once it has rested the sleep time it may fall asleep. Near a
-		# windmill a ball never sleeps: a sleeper does not move, and a blade would pass it.
-		var rested: float = _rest[i] + _dt
-		_rest[i] = rested
-		if not _near_wheel and _sleep_time > 0.0 and rested >= _sleep_time:
-			BallSleep.sleep_if_settled(_store, i, _settled_push)
-	if not _has_sensors:
-		return
-	if _zones_only and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad):
-		return
-	_sense(i)
 
 
 ## Ball `i`'s sensor pass (BallSensors.sense): a ball that fell in a hole leaves the world.
