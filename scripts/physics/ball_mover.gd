@@ -51,6 +51,9 @@ var trace_pos := PackedVector2Array()
 ## angular speed (rad/s); the world adds them up after the step (Windmills.advance).
 var wheel_push_index := PackedInt32Array()
 var wheel_push := PackedFloat64Array()
+## False has move_range() call _touch_walls() where it otherwise runs its written-out copy
+## (tests/unit/test_wall_search_copy.gd runs both and compares them bit for bit).
+var walls_written_out := true
 
 # The step's inputs, copied in by begin(): ball arrays (this lane writes its own slots
 # only), static geometry (read only) and constants. Members rather than reads through the
@@ -92,6 +95,8 @@ var _shapes: StaticShapes
 var _zoned := true
 ## False on a board without pins (a maze): the mover then skips the pin test outright.
 var _has_pins := true
+## Entries of _pin_items (every pin's, when the grid does not zone them).
+var _pin_count := 0
 var _pin_start := PackedInt32Array()
 var _pin_items := PackedInt32Array()
 var _pin_item_pos := PackedVector2Array()
@@ -120,6 +125,8 @@ var _has_sensors := false
 ## True when the sensors are zones alone (no holes, no goals): the mover then looks for a
 ## zone edge crossed before it calls BallSensors.
 var _zones_only := false
+## True when every moved ball gets the sensor pass (holes or goals on the board).
+var _sense_every_ball := false
 var _zone_pos := PackedVector2Array()
 var _zone_rad := PackedFloat32Array()
 ## The windmills as this lane sees them (see BladeReach), and whether the ball being moved
@@ -175,6 +182,7 @@ var _gone := false
 var _p_start := Vector2.ZERO
 # Per-radius limits, cached while consecutive balls share a radius.
 var _max_travel := 0.0
+var _max_travel2 := 0.0
 var _ring_lim := 0.0
 var _ring_lim2 := 0.0
 
@@ -273,6 +281,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_pin_tag = s.pin_tag
 	_pin_min_speed_x = s.pin_min_speed_x
 	_has_pins = not _pin_items.is_empty()
+	_pin_count = _pin_items.size()
 	_has_walls = not s.wall_a.is_empty()
 	_wall_start = g.wall_start
 	_wall_items = g.wall_items
@@ -288,6 +297,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 	_has_drain_arc = s.has_drain_arc
 	_has_sensors = not (s.hole_pos.is_empty() and s.goal_pos.is_empty() and s.zone_pos.is_empty())
 	_zones_only = s.hole_pos.is_empty() and s.goal_pos.is_empty()
+	_sense_every_ball = _has_sensors and not _zones_only
 	_zone_pos = s.zone_pos
 	_zone_rad = s.zone_radius
 	_origin = g.origin
@@ -300,6 +310,7 @@ func _take_geometry(g: StaticGeometry) -> void:
 func _set_radius(r: float) -> void:
 	_r = r
 	_max_travel = _g.max_travel(r, TRAVEL_SHARE)
+	_max_travel2 = _max_travel * _max_travel
 	_ring_lim = maxf(_shapes.ring_radius - r, 0.0)
 	_ring_lim2 = _ring_lim * _ring_lim
 
@@ -325,19 +336,25 @@ func _queue(kind: int, index: int, speed: float) -> void:
 ## Moves the awake balls in slots from..to, one at a time in members: friction and the speed
 ## cap (SpeedRules.limit(), written out: tests/unit/test_speed_limit_copy.gd pins it), then
 ## substeps (each: move, then the narrow phase per shape kind), then its contacts, position
-## and broad-phase key; then, still there, its rest time or sleep and its sensor pass
-## (_after_move). Written out as one loop with the pin tests and the write-back inline: a
-## GDScript call costs about as much as a contact test, and calls on two threads run no
-## faster than on one (see LaneCrew), so calls happen per contact and for rarer rules.
+## and broad-phase key; then, still there, its rest time or sleep and its sensor pass.
+## Written out as one loop with the pin tests and the write-back inline: a GDScript call
+## costs about as much as a contact test, and calls on two threads run no faster than on
+## one (see LaneCrew), so calls happen per contact and for rarer rules.
 ## What needs no call:
 ## - most balls need one substep and have no push;
 ## - a ball no pin moved is still in the cell it was keyed to, and an empty wall cell is
 ##   passed over;
+## - the wall search of a ball no pin moved (_touch_walls(), written out here with its
+##   commonest answer, a held contact sliding on a flat side, first and the wall's id,
+##   held test and gravity's share computed only for a ball moving into the wall): a call
+##   per substep, with its locals set up and torn down, was about a fifth of a maze
+##   ball's motion (tests/unit/test_wall_search_copy.gd pins the copy to _touch_walls());
+## - a ball's contacts and supports are stored in the loop (a call less per touching ball);
 ## - a ball touching nothing now or last step keeps its contact slots as they are (that
 ##   saves writes for most of a flowing board);
 ## - a ball with no push and no windmill about gets its substep count here, and a moving
 ##   ball on a board with zones alone (every pachinko board) its zone-edge test: those two
-##   calls, and the one to _after_move(), were a quarter of a contact-free world's step
+##   calls, and one to the rest-and-sensors step, were a quarter of a contact-free world's step
 ##   (tests/unit/test_mover_inline_copies.gd pins both copies to _substeps() and
 ##   BallSensors.crossed_zone_edge());
 ## - the broad phase's key for next step (see BallStore.cell_keys) is rewritten only when
@@ -347,6 +364,12 @@ func _queue(kind: int, index: int, speed: float) -> void:
 ##   them, and a write there stalls the other core (about 50 µs a step of S1 on two
 ##   threads when every key was written).
 func move_range(from: int, to: int) -> void:
+	var fr_low: Vector2 = -_fr_zero
+	# Per ball (declared once: each ball's first substep sets all three before they are read):
+	# its cell (its key) while no contact has moved it, and whether a contact may have.
+	var c := 0
+	var at := Vector2i.ZERO
+	var cell_stale := true
 	for i: int in range(from, to):
 		if _asleep[i] != 0:
 			continue
@@ -357,7 +380,7 @@ func move_range(from: int, to: int) -> void:
 		_held_a = _contact_a[i]
 		_held_b = _contact_b[i]
 		_v -= _fr_shift
-		_v -= _v.clamp(-_fr_zero, _fr_zero)
+		_v -= _v.clamp(fr_low, _fr_zero)
 		if _cap_per_axis:
 			_v = _v.clamp(_cap_low, _cap_high)
 		elif _v.length_squared() > _cap2:
@@ -368,13 +391,10 @@ func move_range(from: int, to: int) -> void:
 		var steps := 1
 		if _push_step != Vector2.ZERO or _has_wheels:
 			steps = _substeps(_push_step)
-		elif (_v * _dt).length_squared() > _max_travel * _max_travel:
+		elif (_v * _dt).length_squared() > _max_travel2:
 			steps = mini(ceili((_v * _dt).length() / _max_travel), MAX_SUBSTEPS)
 		_h = _dt / steps
 		_p_start = _p
-		var c := 0  # the ball's cell (its key), while no contact has moved it
-		var at := Vector2i.ZERO
-		var cell_stale := true
 		for sub: int in steps:
 			if _tracing and sub > 0:
 				_trace(i)
@@ -385,8 +405,11 @@ func move_range(from: int, to: int) -> void:
 			c = at.y * _cols + at.x
 			var moved := false
 			if _has_pins:
-				var k0: int = _pin_start[c] if _zoned else 0
-				var k1: int = _pin_start[c + 1] if _zoned else _pin_items.size()
+				var k0 := 0
+				var k1: int = _pin_count
+				if _zoned:
+					k0 = _pin_start[c]
+					k1 = _pin_start[c + 1]
 				for k: int in range(k0, k1):
 					var d: Vector2 = _p - _pin_item_pos[k]
 					var lim: float = _pin_item_rad[k] + _r
@@ -394,15 +417,108 @@ func move_range(from: int, to: int) -> void:
 						_touch_pin(k, d, lim)
 						moved = true
 			cell_stale = moved
-			if _has_walls and not _gone and (moved or _wall_start[c] != _wall_start[c + 1]):
-				_touch_walls(c if not moved else -1)
-				cell_stale = true
+			if _has_walls and not _gone:
+				if moved or not walls_written_out:
+					_touch_walls(c if not moved else -1)
+					cell_stale = true
+				else:
+					# _touch_walls(c), written out: see the note above this function.
+					var k0: int = _wall_start[c]
+					var k1: int = _wall_start[c + 1]
+					for _pass: int in 3 if k0 != k1 else 0:
+						var best := -1
+						var found := 0
+						var best_depth := 0.0
+						var best_s := 0.0
+						var best_q := Vector2.ZERO
+						for k: int in range(k0, k1):
+							var a: Vector2 = _wall_item_a[k]
+							var ab: Vector2 = _wall_item_ab[k]
+							var s: float = clampf((_p - a).dot(ab) * _wall_item_inv[k], 0.0, 1.0)
+							var q: Vector2 = a + ab * s
+							var reach: float = _wall_item_rad[k] + _r
+							var d2: float = _p.distance_squared_to(q)
+							if d2 < reach * reach:
+								found += 1
+								var depth: float = reach - sqrt(d2)
+								if best < 0 or depth > best_depth:
+									best = k
+									best_depth = depth
+									best_s = s
+									best_q = q
+						if best < 0:
+							break
+						cell_stale = true
+						var lim: float = _wall_item_rad[best] + _r
+						var wall: int = _wall_items[best]
+						var d: Vector2 = _p - best_q
+						var dist2: float = d.length_squared()
+						var nrm := Vector2(0.0, -1.0)
+						if dist2 > EPS * EPS:
+							nrm = d / sqrt(dist2)
+						elif _wall_inv_len2[wall] > 0.0:
+							nrm = Vector2(_wall_ab[wall].y, -_wall_ab[wall].x).normalized()
+						_p = best_q + nrm * lim
+						var vn: float = _v.dot(nrm)
+						if vn < 0.0:  # (a ball moving away gets no answer)
+							var on_cap: bool = best_s <= 0.0 or best_s >= 1.0
+							var id: int = (wall << ContactId.KIND_BITS) | ContactId.KIND_WALL
+							var held: bool = (
+								id == _held_a or id == _held_b or id == _cur_a or id == _cur_b
+							)
+							if held and not on_cap:
+								# The commonest answer: a held contact sliding on a flat side.
+								_v -= nrm * vn
+								if _cur_a == ContactId.NONE or _cur_a == id:
+									_cur_a = id
+									_n_a = nrm
+								else:
+									_cur_b = id
+									_n_b = nrm
+							elif on_cap and _caps_glance:
+								respond(id, best_q, d, nrm, lim, Surface.WALL_CAP, wall)
+							else:
+								var gn_dt: float = _gravity.dot(nrm) * _dt
+								if held or not ContactRule.bounces(vn, gn_dt, _threshold):
+									var vt: Vector2 = _v - nrm * vn
+									if on_cap and lim > EPS:
+										var t2: float = vt.length_squared()
+										if t2 > EPS:
+											var cv: float = maxf(
+												minf(vn - minf(gn_dt, 0.0), 0.0),
+												-1.5 * t2 * (_h / lim)
+											)
+											vt *= sqrt((t2 + cv * cv) / t2)
+									_v = vt
+									if _cur_a == ContactId.NONE or _cur_a == id:
+										_cur_a = id
+										_n_a = nrm
+									else:
+										_cur_b = id
+										_n_b = nrm
+								else:
+									var surface: int = (
+										Surface.WALL_CAP if on_cap else Surface.WALL_SIDE
+									)
+									respond(id, best_q, d, nrm, lim, surface, wall)
+						if found == 1:
+							break
 			if _near_wheel and not _gone and _touch_wheels((sub + 1) * _h):
 				cell_stale = true
 			if _gone:
 				break
 		if _cur_a != ContactId.NONE or _held_a != ContactId.NONE:
-			_write_contacts(i)
+			# The ball's contacts of this step and their normals (its supports next step),
+			# then cleared for the next ball. A ball touching nothing now or last step keeps
+			# its contact slots as they are.
+			_contact_a[i] = _cur_a
+			_contact_b[i] = _cur_b
+			_support_static[i] = _n_a
+			_support_static2[i] = _n_b
+			_cur_a = ContactId.NONE
+			_cur_b = ContactId.NONE
+			_n_a = Vector2.ZERO
+			_n_b = Vector2.ZERO
 		_pos[i] = _p
 		_vel[i] = _v
 		if _keyed:
@@ -413,8 +529,26 @@ func move_range(from: int, to: int) -> void:
 				_rekey(i, c)
 		if _gone:
 			_alive[i] = 0
-		elif _v.length_squared() < _rest_speed2 or (_has_sensors and not _zones_only):
-			_after_move(i)
+		elif _v.length_squared() < _rest_speed2:
+			# It rests `dt` longer; once it has rested the sleep time it may fall asleep. Near
+			# a windmill a ball never sleeps: a sleeper does not move, and a blade would pass
+			# it. Then its sensor pass: with zones alone (no holes, no goals) BallSensors has
+			# work only when the ball crossed a zone's edge, so that is looked for first.
+			var rested: float = _rest[i] + _dt
+			_rest[i] = rested
+			if not _near_wheel and _sleep_time > 0.0 and rested >= _sleep_time:
+				BallSleep.sleep_if_settled(_store, i, _settled_push)
+			if (
+				_has_sensors
+				and (
+					not _zones_only
+					or BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad)
+				)
+			):
+				_sense(i)
+		elif _sense_every_ball:
+			_rest[i] = 0.0
+			_sense(i)
 		else:
 			_rest[i] = 0.0
 			if _has_sensors:
@@ -426,20 +560,6 @@ func move_range(from: int, to: int) -> void:
 						break
 
 
-## Stores the ball's contacts of this step and their normals (its supports next step),
-## then clears them for the next ball. Only a ball touching something now or last step
-## comes here: the others keep their contact slots as they are.
-func _write_contacts(i: int) -> void:
-	_contact_a[i] = _cur_a
-	_contact_b[i] = _cur_b
-	_support_static[i] = _n_a
-	_support_static2[i] = _n_b
-	_cur_a = ContactId.NONE
-	_cur_b = ContactId.NONE
-	_n_a = Vector2.ZERO
-	_n_b = Vector2.ZERO
-
-
 ## Ball `i` left its cell for cell `c`: its broad-phase key is rewritten where the broad
 ## phase sorted it (found in BallStore.sorted_keys by the cell it was keyed with). Only
 ## such balls are rekeyed: see move_range().
@@ -447,26 +567,6 @@ func _rekey(i: int, c: int) -> void:
 	var slot: int = _sorted_keys.bsearch((_key_cell[i] << BallPairs.SORT_SHIFT) | i)
 	_cell_keys[slot] = (c << BallPairs.SORT_SHIFT) | i
 	_key_cell[i] = c
-
-
-## Ball `i` after its move: its rest time or sleep (BallSleep.sleep_if_settled), then its sensor
-## pass. With zones alone (no holes, no goals) BallSensors has work only when the ball
-## crossed a zone's edge, so that is looked for first.
-func _after_move(i: int) -> void:
-	if _v.length_squared() >= _rest_speed2:
-		_rest[i] = 0.0
-	else:
-		# It rests `dt` longer; once it has rested the sleep time it may fall asleep. Near a
-		# windmill a ball never sleeps: a sleeper does not move, and a blade would pass it.
-		var rested: float = _rest[i] + _dt
-		_rest[i] = rested
-		if not _near_wheel and _sleep_time > 0.0 and rested >= _sleep_time:
-			BallSleep.sleep_if_settled(_store, i, _settled_push)
-	if not _has_sensors:
-		return
-	if _zones_only and not BallSensors.crossed_zone_edge(_p, _zone_mask[i], _zone_pos, _zone_rad):
-		return
-	_sense(i)
 
 
 ## Ball `i`'s sensor pass (BallSensors.sense): a ball that fell in a hole leaves the world.
@@ -589,6 +689,8 @@ func _touch_pin(k: int, d: Vector2, lim: float) -> void:
 ## slide of respond(), line for line: tests/unit/test_wall_slide.gd pins it to respond() bit
 ## for bit). A bounce or a glancing cap goes to respond().
 ## `cell` is the ball's cell when the caller knows it (-1 when a pin has just moved it).
+## move_range() calls this only for a ball a pin has just moved: for the others it runs its
+## written-out copy (tests/unit/test_wall_search_copy.gd pins the two together).
 func _touch_walls(cell: int) -> void:
 	if cell < 0:
 		var at: Vector2i = Vector2i((_p - _origin) * _inv_cell).clamp(Vector2i.ZERO, _last_cell)

@@ -72,13 +72,13 @@ static func settle(
 			var db: float = gravity.dot(nb)
 			if da < 0.0 or db < 0.0:
 				var along_a: Vector2 = gravity - na * da
-				var along_b: Vector2 = gravity - nb * db
+				left = Vector2.ZERO
 				if da < 0.0 and along_a.dot(nb) >= 0.0:
 					left = along_a
-				elif db < 0.0 and along_b.dot(na) >= 0.0:
-					left = along_b
-				else:
-					left = Vector2.ZERO
+				elif db < 0.0:
+					var along_b: Vector2 = gravity - nb * db
+					if along_b.dot(na) >= 0.0:
+						left = along_b
 			stays = absf(left.x) <= fx and absf(left.y) <= fy
 		if stays:
 			vel[i] = Vector2.ZERO

@@ -4,7 +4,7 @@ extends GutTest
 ## the edge cases:
 ## - the substep count of a ball with no push and no windmill about, to _substeps();
 ## - a moving ball's zone-edge test on a board with zones alone, to
-##   BallSensors.crossed_zone_edge() (then BallSensors.sense(), as _after_move() does).
+##   BallSensors.crossed_zone_edge() (then BallSensors.sense(), as the mover's loop does).
 ## The mover moves one ball on a board with nothing it can touch, so the ball goes straight.
 
 const CASES := 10000
