@@ -8,6 +8,8 @@ extends Node3D
 ## sibling (maze_balls_3d.gd). Heights are in board pixels.
 
 const FLOOR_SHADER := preload("res://scenes/maze/maze_floor.gdshader")
+## Low graphics' floor: unshaded, plain colour, goal and holes painted (no shadows, no discard).
+const FLOOR_LOW_SHADER := preload("res://scenes/maze/maze_floor_low.gdshader")
 const SOLID_SHADER := preload("res://scenes/maze/maze_wood_solid.gdshader")
 ## The wood-and-steel look: a pale maple floor in boards one cell wide, walnut walls with
 ## lighter routed tops, and a darker frame (the tutorial's look keeps its flat paint).
@@ -43,6 +45,8 @@ const SHADOW_DARKNESS := 0.3
 ## the screen and brightened it far more than its energy said), while the walls and balls
 ## keep the light they had.
 const FLOOR_GAIN := 1.22
+## Low graphics' unshaded floor is its albedo times this: about the light the lit floor gets.
+const LOW_FLOOR_LIGHT := 0.95
 
 ## The tutorial's flat colours instead of wood (set before `build`).
 var tutorial_look := false
@@ -113,6 +117,8 @@ func _paint_look() -> void:
 	var grain := wood and not low_graphics
 	_set_paint("grain_strength", 0.55 if grain else 0.0)
 	_set_paint("shadows_on", not low_graphics)
+	_floor_material.shader = FLOOR_LOW_SHADER if low_graphics else FLOOR_SHADER
+	_set_paint("low_light", LOW_FLOOR_LIGHT)
 	_set_paint("grain_color", MAPLE_GRAIN)
 	_set_paint("plank_px", _level.path_width + _level.wall_width if _level != null else 35.0)
 	var looks := [
