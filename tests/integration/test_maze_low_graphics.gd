@@ -136,3 +136,24 @@ func test_low_draws_the_walls_with_far_fewer_triangles() -> void:
 	App.settings.set_value("maze_low_graphics", false)
 	App.settings.changed.emit()
 	assert_eq(board.wall_triangles(), full, "the rounded walls come back")
+
+
+# The lit, shadowed floor was Low's largest cost after the walls (tools/maze_fps.sh, "Low,
+# no floor"): Low paints it with an unshaded shader that keeps the goal and the holes (no
+# lighting, no discard), with the board's paint (goal, colours) carried over, and the full
+# look gets its lit floor back.
+func test_low_paints_the_floor_unshaded_and_keeps_the_goal() -> void:
+	var board := _game.stage().board()
+	var goal: Vector2 = _floor_uniform("goal_center")
+	App.settings.set_value("maze_low_graphics", true)
+	App.settings.changed.emit()
+	var low_shader := board.floor_material().shader
+	assert_eq(low_shader, MazeBoard3d.FLOOR_LOW_SHADER, "Low's own floor shader")
+	assert_eq(low_shader.get_mode(), Shader.MODE_SPATIAL)
+	assert_string_contains(low_shader.code, "unshaded")
+	assert_false(low_shader.code.contains("discard"), "holes painted, not cut out")
+	assert_eq(_floor_uniform("goal_center"), goal, "the goal is where it was")
+	assert_gt(_floor_uniform("low_light"), 0.0, "the floor is not black")
+	App.settings.set_value("maze_low_graphics", false)
+	App.settings.changed.emit()
+	assert_eq(board.floor_material().shader, MazeBoard3d.FLOOR_SHADER, "the lit floor is back")
