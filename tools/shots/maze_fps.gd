@@ -16,7 +16,8 @@ const SCRATCH_SAVE := "user://fps_save.cfg"
 ## none). Keys: scale (Viewport.scaling_3d_scale), msaa (Viewport.MSAA_*),
 ## hide (parts not drawn: floor, walls, frame, balls, table, shadows, panel: the 2D side
 ## panel, camera: no 3D pass at all), low (the player's
-## Low graphics setting), low_scale (Low at another render scale).
+## Low graphics setting), low_scale (Low at another render scale), holes (the board's holes
+## drawn as in hard mode, to see them; the game's rules stay as they are).
 ## MAZE_FPS_ONLY="as shipped|Low graphics" runs only those;
 ## MAZE_FPS_THREADS=1 prints each thread's CPU ms a frame (llvmpipe's, the engine's).
 const VARIANTS := [
@@ -33,6 +34,7 @@ const VARIANTS := [
 	["Low, no panel", {"low": true, "hide": ["panel"]}],
 	["Low, no frame", {"low": true, "hide": ["frame"]}],
 	["Low, no balls", {"low": true, "hide": ["balls"]}],
+	["Low, holes shown", {"low": true, "holes": true}],
 	["no camera", {"hide": ["camera"]}],
 ]
 
@@ -119,6 +121,7 @@ func _read_settings(_stage: MazeStage) -> Dictionary:
 	return {
 		"hide": [],
 		"low": false,
+		"holes": false,
 		"scale": root.scaling_3d_scale,
 		"msaa": root.msaa_3d,
 	}
@@ -132,6 +135,7 @@ func _apply(stage: MazeStage, settings: Dictionary) -> void:
 	if settings.has("low_scale"):
 		root.scaling_3d_scale = settings["low_scale"]
 	var board := stage.board()
+	board.set_hard_mode(settings["holes"])
 	var parts := {
 		"floor": [board.part("floor")],
 		"walls": [board.part("walls")],
