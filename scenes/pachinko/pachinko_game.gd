@@ -233,6 +233,9 @@ func _new_rules() -> void:
 	_cup_peak = CupPeak.new(rules)
 	_goal = MachineGoal.new(_level, rules, _cup_peak)
 	_goal.reached.connect(_on_goal_reached)
+	stats_panel.goal_cleared = false
+	# the goal line's "now" follows the tray as it changes, not a quarter second later
+	rules.cup_changed.connect(_on_cup_changed)
 	_cleared_card.dismiss()
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
@@ -301,6 +304,7 @@ func _show_notes() -> void:
 	# the best is the stats' "Best session" line, whose place is kept from the start: a line
 	# of its own here appeared after the first game and moved the panel under it
 	stats_panel.best_session = App.best_pachinko_balls(_level.board_id)
+	stats_panel.goal = PachinkoGoals.tray_target(_level)
 	stats_panel.show_stats(rules.stats(true))
 	notes.text = (
 		"%s new game  ·  %s pause  ·  %s frame counter"
@@ -382,7 +386,13 @@ func cleared_card() -> MachineClearedCard:
 	return _cleared_card
 
 
+func _on_cup_changed(_count: int) -> void:
+	stats_panel.show_stats(rules.stats(true))
+
+
 func _on_goal_reached(won: int) -> void:
+	stats_panel.goal_cleared = true
+	stats_panel.show_stats(rules.stats(true))
 	_cleared_card.show_cleared(_level, won, _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 
