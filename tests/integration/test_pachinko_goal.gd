@@ -89,3 +89,12 @@ func test_the_goal_line_fits_one_line_of_the_column() -> void:
 	for line in StatsPanel.lines_for({"shots": 243, "balls_left": 1234}, 1200, 1350, false):
 		var plain := line.replace("[b]", "").replace("[/b]", "")
 		assert_lte(plain.length(), 32, "'%s' fits one line of the column" % plain)
+
+
+func test_the_win_cards_buttons_wear_the_games_theme() -> void:
+	var card := MachineClearedCard.new()
+	add_child_autofree(card)
+	var ui_theme := load("res://scenes/menu/ui_theme.tres") as Theme
+	var themed := ui_theme.get_stylebox(&"normal", &"Button")
+	for button in card.buttons():
+		assert_eq(button.get_theme_stylebox(&"normal"), themed, button.text)
