@@ -145,8 +145,9 @@ func _unhandled_input(event: InputEvent) -> void:
 		# so far counts for the board's best (R used to drop it); a session with something
 		# in it asks first, and a second R starts over
 		if rules.state == PachinkoRules.State.PLAYING and not _restart_prompt.asking():
-			if RestartPrompt.wants_asking(rules.stats(true), _level.cup_start_balls):
-				_restart_prompt.ask(rules.balls_to_shoot)
+			var stats := rules.stats(true)
+			if RestartPrompt.wants_asking(stats, _level.cup_start_balls):
+				_restart_prompt.ask(RestartPrompt.balls_at_stake(stats))
 				_restart_prompt.place(_board_area, _under_name_plate())
 				get_viewport().set_input_as_handled()
 				return
