@@ -202,8 +202,10 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 		for hard: bool in MAZE_SECTIONS:
 			var section: Dictionary = sections.get(MAZE_SECTIONS[hard], {})
 			_read_maze_times(section, hard, refused)
-	_read_ball_counts(sections.get(MOST_WON_SECTION, {}), _pachinko_balls, refused)
-	_read_ball_counts(sections.get(PAID_BACK_SECTION, {}), _paid_back_kept, refused)
+	var most_won: Dictionary = sections.get(MOST_WON_SECTION, {})
+	var paid_back: Dictionary = sections.get(PAID_BACK_SECTION, {})
+	_read_ball_counts(most_won, _pachinko_balls, refused)
+	_read_ball_counts(paid_back, _paid_back_kept, refused)
 	var seen: Dictionary = sections.get("pachinko_rules_seen", {})
 	for board_id: String in seen:
 		if not board_id.is_empty() and seen[board_id] is bool and seen[board_id]:

@@ -44,11 +44,11 @@ func shown_text() -> String:
 ## The panel's lines for `stats`, in the words the card and the game-over box use:
 ## "pocket hits" counts every paying piece (pockets, start pockets, attackers, tulips),
 ## "paid back" the balls they paid into the cup; `best` is the most balls a game on the
-## board has won (its tray's most above its start, CupPeak; -1: none); `goal` the machine's
+## board has won (its tray's most above its start, CupPeak; -1: none); `target` the machine's
 ## tray target (0: none), shown against the balls in the tray now ("balls_left"), or as
 ## cleared once `cleared`.
 static func lines_for(
-	stats: Dictionary, best := -1, goal := 0, cleared := false
+	stats: Dictionary, best := -1, target := 0, cleared := false
 ) -> PackedStringArray:
 	var hits := 0
 	for count: int in stats.get("pocket_hits", []):
@@ -65,14 +65,14 @@ static func lines_for(
 			"[b]Most won[/b] %d balls" % best if best >= 0 else "[b]Most won[/b] none yet",
 		]
 	)
-	if goal > 0:
+	if target > 0:
 		# always one line from the start, so the panel never grows when it changes
 		var now: int = stats.get("balls_left", 0)
 		lines.append(
 			(
-				"[b]Goal[/b] %d · cleared!" % goal
+				"[b]Goal[/b] %d · cleared!" % target
 				if cleared
-				else "[b]Goal[/b] %d · %d now" % [goal, now]
+				else "[b]Goal[/b] %d · %d now" % [target, now]
 			)
 		)
 	return lines
