@@ -145,8 +145,9 @@ func _unhandled_input(event: InputEvent) -> void:
 		# so far counts for the board's best (R used to drop it); a session with something
 		# in it asks first, and a second R starts over
 		if rules.state == PachinkoRules.State.PLAYING and not _restart_prompt.asking():
-			if RestartPrompt.wants_asking(rules.stats(true), _level.cup_start_balls):
-				_restart_prompt.ask(rules.balls_to_shoot)
+			var stats := rules.stats(true)
+			if RestartPrompt.wants_asking(stats, _level.cup_start_balls):
+				_restart_prompt.ask(RestartPrompt.balls_at_stake(stats))
 				_restart_prompt.place(_board_area, _under_name_plate())
 				get_viewport().set_input_as_handled()
 				return
@@ -233,6 +234,9 @@ func _new_rules() -> void:
 	_cup_peak = CupPeak.new(rules)
 	_goal = MachineGoal.new(_level, rules, _cup_peak)
 	_goal.reached.connect(_on_goal_reached)
+	stats_panel.goal_cleared = false
+	# the goal line's "now" follows the tray as it changes, not a quarter second later
+	rules.cup_changed.connect(_on_cup_changed)
 	_cleared_card.dismiss()
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
@@ -301,6 +305,7 @@ func _show_notes() -> void:
 	# the best is the stats' "Best session" line, whose place is kept from the start: a line
 	# of its own here appeared after the first game and moved the panel under it
 	stats_panel.best_session = App.best_pachinko_balls(_level.board_id)
+	stats_panel.goal = PachinkoGoals.tray_target(_level)
 	stats_panel.show_stats(rules.stats(true))
 	notes.text = (
 		"%s new game  ·  %s pause  ·  %s frame counter"
@@ -382,7 +387,13 @@ func cleared_card() -> MachineClearedCard:
 	return _cleared_card
 
 
+func _on_cup_changed(_count: int) -> void:
+	stats_panel.show_stats(rules.stats(true))
+
+
 func _on_goal_reached(won: int) -> void:
+	stats_panel.goal_cleared = true
+	stats_panel.show_stats(rules.stats(true))
 	_cleared_card.show_cleared(_level, won, _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 

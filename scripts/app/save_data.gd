@@ -19,6 +19,12 @@ const MAX_LISTED := 5
 ## A pachinko count past this is not a game anyone played.
 const MAX_BALLS := 1_000_000_000
 
+## The most balls won in one pachinko game, per board (CupPeak).
+const MOST_WON_SECTION := "pachinko_most_won"
+## Before the best was the most balls won it was the most balls PAID BACK, kept here: read
+## and written back untouched (the player's record is never deleted), never shown as "Most won".
+const PAID_BACK_SECTION := "pachinko_best_balls"
+
 const HEADER := "Board Studio best results (format version %d), per board id."
 ## What the player is told about a best-results file that could not be used (PlayerFileLoad).
 const LOAD_WORDS := {
@@ -34,6 +40,8 @@ const LOAD_WORDS := {
 ## hard (bool) -> {board id: seconds}
 var _maze_times := {false: {}, true: {}}
 var _pachinko_balls := {}
+# board id -> the most balls paid back, from before "Most won": kept, never shown
+var _paid_back_kept := {}
 # board id -> true: the pachinko boards whose full rules card the player has played past
 var _rules_seen := {}
 # board id -> true: the pachinko machines whose goal (PachinkoGoals) the player reached
@@ -51,6 +59,7 @@ func load_file(path: String) -> String:
 	_path = path
 	_maze_times = {false: {}, true: {}}
 	_pachinko_balls = {}
+	_paid_back_kept = {}
 	_rules_seen = {}
 	_handle_power = -1.0
 	_cleared = {}
@@ -166,7 +175,8 @@ func save() -> Error:
 		["meta", {"version": VERSION}],
 		[MAZE_SECTIONS[false], _maze_times[false]],
 		[MAZE_SECTIONS[true], _maze_times[true]],
-		["pachinko_best_balls", _pachinko_balls],
+		[MOST_WON_SECTION, _pachinko_balls],
+		[PAID_BACK_SECTION, _paid_back_kept],
 		["pachinko_rules_seen", _rules_seen],
 		["pachinko_player", _player_settings()],
 		["pachinko_cleared", _cleared],
@@ -192,14 +202,10 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 		for hard: bool in MAZE_SECTIONS:
 			var section: Dictionary = sections.get(MAZE_SECTIONS[hard], {})
 			_read_maze_times(section, hard, refused)
-	var pachinko: Dictionary = sections.get("pachinko_best_balls", {})
-	for board_id: String in pachinko:
-		var balls: Variant = pachinko[board_id]
-		var number: float = balls if balls is float or balls is int else NAN
-		if board_id.is_empty() or not is_finite(number) or number < 0 or number > MAX_BALLS:
-			refused.append(_shown(board_id))
-		else:
-			_pachinko_balls[board_id] = int(number)
+	var most_won: Dictionary = sections.get(MOST_WON_SECTION, {})
+	var paid_back: Dictionary = sections.get(PAID_BACK_SECTION, {})
+	_read_ball_counts(most_won, _pachinko_balls, refused)
+	_read_ball_counts(paid_back, _paid_back_kept, refused)
 	var seen: Dictionary = sections.get("pachinko_rules_seen", {})
 	for board_id: String in seen:
 		if not board_id.is_empty() and seen[board_id] is bool and seen[board_id]:
@@ -220,6 +226,17 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 		refused.resize(MAX_LISTED)
 		refused.append("%d more" % more)
 	return refused
+
+
+# Takes every usable count of balls per board from `section` into `counts`.
+func _read_ball_counts(section: Dictionary, counts: Dictionary, refused: PackedStringArray) -> void:
+	for board_id: String in section:
+		var balls: Variant = section[board_id]
+		var number: float = balls if balls is float or balls is int else NAN
+		if board_id.is_empty() or not is_finite(number) or number < 0 or number > MAX_BALLS:
+			refused.append(_shown(board_id))
+		else:
+			counts[board_id] = int(number)
 
 
 func _read_maze_times(section: Dictionary, hard: bool, refused: PackedStringArray) -> void:

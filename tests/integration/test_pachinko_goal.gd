@@ -64,3 +64,37 @@ func test_next_machine_is_the_next_board_in_the_list() -> void:
 	var first := boards[0].level
 	assert_eq(MachineGoal.next_board_path(first), boards[1].path)
 	assert_eq(MachineGoal.next_board_path(boards[boards.size() - 1].level), boards[0].path)
+
+
+func test_the_panel_shows_the_goal_and_the_tray_now_during_play() -> void:
+	var game := GAME.instantiate() as PachinkoGame
+	add_child_autofree(game)
+	await wait_process_frames(1)
+	var rules := game.rules
+	rules.start_game()
+	var target := PachinkoGoals.tray_target(rules.level)
+	await wait_process_frames(2)
+	var shown := game.stats_panel.shown_text()
+	assert_string_contains(shown, "Goal %d · %d now" % [target, rules.balls_to_shoot])
+	_win(rules, 7)
+	await wait_process_frames(2)
+	shown = game.stats_panel.shown_text()
+	assert_string_contains(shown, "Goal %d · %d now" % [target, rules.balls_to_shoot])
+	_win(rules, target)
+	await wait_process_frames(2)
+	assert_string_contains(game.stats_panel.shown_text(), "Goal %d · cleared!" % target)
+
+
+func test_the_goal_line_fits_one_line_of_the_column() -> void:
+	for line in StatsPanel.lines_for({"shots": 243, "balls_left": 1234}, 1200, 1350, false):
+		var plain := line.replace("[b]", "").replace("[/b]", "")
+		assert_lte(plain.length(), 32, "'%s' fits one line of the column" % plain)
+
+
+func test_the_win_cards_buttons_wear_the_games_theme() -> void:
+	var card := MachineClearedCard.new()
+	add_child_autofree(card)
+	var ui_theme := load("res://scenes/menu/ui_theme.tres") as Theme
+	var themed := ui_theme.get_stylebox(&"normal", &"Button")
+	for button in card.buttons():
+		assert_eq(button.get_theme_stylebox(&"normal"), themed, button.text)

@@ -50,7 +50,7 @@ func test_a_version_1_file_migrates_its_times_as_easy() -> void:
 	var data := _loaded()
 	assert_eq(data.best_maze_time("classic", false), 33.5)
 	assert_eq(data.best_maze_time("classic", true), -1.0, "version 1 never told the modes apart")
-	assert_eq(data.best_pachinko_balls("classic"), 7)
+	assert_eq(data.best_pachinko_balls("classic"), -1, "balls paid back are no 'most won'")
 	data.record_maze_time("classic", true, 80.0)
 	var text := FileAccess.get_file_as_string(PATH)
 	assert_string_contains(text, "version=%d" % SaveData.VERSION)
@@ -70,6 +70,21 @@ func test_new_best_pachinko_only_when_a_game_beats_an_earlier_one() -> void:
 	assert_eq(data.best_pachinko_balls("fever"), 9)
 	assert_false(data.record_pachinko_balls("hanami", 120), "a first game on a board sets it")
 	assert_true(data.record_pachinko_balls("hanami", 121))
+
+
+# [pachinko_best_balls] held balls PAID BACK before the best became the most balls won: an
+# old record is kept in the file as it was, but never shown (or beaten) as "Most won".
+func test_an_old_paid_back_record_is_kept_but_not_shown_as_most_won() -> void:
+	_write("[meta]\nversion=2\n\n[pachinko_best_balls]\npachinko_fever=500\n")
+	var data := _loaded()
+	assert_eq(data.best_pachinko_balls("pachinko_fever"), -1, "500 paid back is not 500 won")
+	assert_false(data.record_pachinko_balls("pachinko_fever", 30), "a first game sets it")
+	assert_eq(data.best_pachinko_balls("pachinko_fever"), 30)
+	var text := FileAccess.get_file_as_string(PATH)
+	assert_string_contains(text, "[pachinko_best_balls]\npachinko_fever=500", "kept untouched")
+	assert_string_contains(text, "[pachinko_most_won]\npachinko_fever=30")
+	var again := _loaded()
+	assert_eq(again.best_pachinko_balls("pachinko_fever"), 30)
 
 
 # The full pachinko rules card comes once per board: which boards' cards were played past

@@ -10,6 +10,8 @@ signal next_requested
 signal menu_requested
 
 const TITLE_SIZE := 44
+## The menus' and pause menu's look, so the buttons are the game's, not Godot's flat grey.
+const THEME := preload("res://scenes/menu/ui_theme.tres")
 const LINE_SIZE := 20
 
 var _title := Label.new()
@@ -21,6 +23,7 @@ var _menu := Button.new()
 
 func _init() -> void:
 	visible = false
+	theme = THEME
 	var style := StyleBoxFlat.new()
 	style.bg_color = Color(0.07, 0.04, 0.13, 0.94)
 	style.border_color = Color("ffd84a")
@@ -67,6 +70,11 @@ func show_cleared(level: BoardLevel, won: int, area: Rect2) -> void:
 ## Takes the card away (Keep playing).
 func dismiss() -> void:
 	visible = false
+
+
+## Next machine, Keep playing and Menu, in that order.
+func buttons() -> Array[Button]:
+	return [_next, _keep, _menu]
 
 
 ## The card's words, for tests.

@@ -1,13 +1,18 @@
 class_name StatsPanel
 extends PanelContainer
 ## Session numbers: shots, where the balls went, hits per pocket, the balls paid back this
-## session (one game, a full cup to an empty one) and the best session on this board.
+## session (one game, a full cup to an empty one), the best session on this board and the
+## machine's goal against the tray now.
 
 ## The font size of the numbers.
 const FONT_SIZE := 15
 
 ## Most balls won in one game on this board before (CupPeak), or -1 for none yet.
 var best_session := -1
+## The machine's goal, the tray's target (PachinkoGoals; 0: none, no goal line).
+var goal := 0
+## True once this game reached the goal.
+var goal_cleared := false
 
 var _text: RichTextLabel
 
@@ -28,21 +33,30 @@ func _ready() -> void:
 func show_stats(stats: Dictionary) -> void:
 	if _text == null:
 		return
-	_text.text = "\n".join(lines_for(stats, best_session))
+	_text.text = "\n".join(lines_for(stats, best_session, goal, goal_cleared))
+
+
+## The text the panel shows now, without its markup.
+func shown_text() -> String:
+	return _text.get_parsed_text() if _text != null else ""
 
 
 ## The panel's lines for `stats`, in the words the card and the game-over box use:
 ## "pocket hits" counts every paying piece (pockets, start pockets, attackers, tulips),
 ## "paid back" the balls they paid into the cup; `best` is the most balls a game on the
-## board has won (its tray's most above its start, CupPeak; -1: none).
-static func lines_for(stats: Dictionary, best := -1) -> PackedStringArray:
+## board has won (its tray's most above its start, CupPeak; -1: none); `target` the machine's
+## tray target (0: none), shown against the balls in the tray now ("balls_left"), or as
+## cleared once `cleared`.
+static func lines_for(
+	stats: Dictionary, best := -1, target := 0, cleared := false
+) -> PackedStringArray:
 	var hits := 0
 	for count: int in stats.get("pocket_hits", []):
 		hits += count
 	var shots: int = stats.get("shots", 0)
 	var paid: int = stats.get("payouts", 0)
 	var ratio: float = stats.get("payout_ratio", 0.0)
-	return PackedStringArray(
+	var lines := PackedStringArray(
 		[
 			"[b]Shots[/b] %d    [b]In play[/b] %d" % [shots, stats.get("in_play", 0)],
 			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
@@ -51,3 +65,14 @@ static func lines_for(stats: Dictionary, best := -1) -> PackedStringArray:
 			"[b]Most won[/b] %d balls" % best if best >= 0 else "[b]Most won[/b] none yet",
 		]
 	)
+	if target > 0:
+		# always one line from the start, so the panel never grows when it changes
+		var now: int = stats.get("balls_left", 0)
+		lines.append(
+			(
+				"[b]Goal[/b] %d · cleared!" % target
+				if cleared
+				else "[b]Goal[/b] %d · %d now" % [target, now]
+			)
+		)
+	return lines
