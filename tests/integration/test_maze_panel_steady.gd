@@ -14,6 +14,8 @@ func before_all() -> void:
 
 
 func after_all() -> void:
+	# the next test files expect the default board, as the other maze tests leave it
+	App.request_board(BoardLevel.MAZE_NAME, "res://levels/maze/classic.board")
 	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
 	for path in [TEST_SETTINGS, TEST_SAVE]:
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
