@@ -92,7 +92,7 @@ func _init() -> void:
 ## on a board of the player's own). The first button shown takes the focus.
 func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 	_time.text = "%s  ·  %s" % [MazeWinSummary.clock(summary.seconds), "hard" if hard else "easy"]
-	var medal_text := summary.card_line()
+	var medal_text := summary.medal_line()
 	_medal.text = medal_text
 	_medal.visible = not medal_text.is_empty()
 	var colour: Color = MedalBadges.COLORS.get(summary.medal, INK)

@@ -11,8 +11,6 @@ var medal := Medals.Medal.NONE
 var next_medal := Medals.Medal.NONE
 ## Seconds this run was slower than next_medal's time (0 when there is none).
 var short_by := 0.0
-## next_medal's time in seconds (0 when there is none).
-var next_time := 0.0
 ## The best time before this run (-1 when there was none).
 var previous_best := -1.0
 ## True when this run is the new best time.
@@ -32,43 +30,21 @@ static func of(
 	summary.medal = Medals.medal_for_time(times, won_seconds)
 	if times.size() == 3 and summary.medal != Medals.Medal.GOLD:
 		summary.next_medal = (summary.medal + 1) as Medals.Medal
-		summary.next_time = Medals.time_of(times, summary.next_medal)
-		summary.short_by = Medals.shown_time(won_seconds) - summary.next_time
+		summary.short_by = (
+			Medals.shown_time(won_seconds) - Medals.time_of(times, summary.next_medal)
+		)
 	return summary
 
 
-## The side panel's medal line: "Gold!", "Silver medal: 1.8 s short of Gold", "Bronze
-## takes 0:55.3 or less", or "" on a board without medal times. A finish without a medal
-## says what Bronze takes, not how far it missed: on a first slow finish "199.3 s short"
-## read as a scolding (trial 6).
+## The medal line: "Gold!", "Silver: 1.8 s short of Gold", "No medal: 4.0 s short of
+## Bronze", or "" on a board without medal times.
 func medal_line() -> String:
 	if medal == Medals.Medal.NONE and next_medal == Medals.Medal.NONE:
 		return ""
 	if next_medal == Medals.Medal.NONE:
 		return "%s!" % Medals.name_of(medal)
-	if medal == Medals.Medal.NONE:
-		return _takes_line()
-	return (
-		"%s medal: %s s short of %s"
-		% [Medals.name_of(medal), _tenths(short_by), Medals.name_of(next_medal)]
-	)
-
-
-## The win card's line under its headline, which already names the medal ("Silver
-## medal!"), so this line never names it again: "1.8 s short of Gold", "The top medal on
-## this board", "Bronze takes 0:55.3 or less", or "" without medal times.
-func card_line() -> String:
-	if medal == Medals.Medal.NONE and next_medal == Medals.Medal.NONE:
-		return ""
-	if next_medal == Medals.Medal.NONE:
-		return "The top medal on this board"
-	if medal == Medals.Medal.NONE:
-		return _takes_line()
-	return "%s s short of %s" % [_tenths(short_by), Medals.name_of(next_medal)]
-
-
-func _takes_line() -> String:
-	return "%s takes %s or less" % [Medals.name_of(next_medal), clock(next_time)]
+	var prefix := "%s medal" % Medals.name_of(medal) if medal != Medals.Medal.NONE else "No medal"
+	return "%s: %s s short of %s" % [prefix, _tenths(short_by), Medals.name_of(next_medal)]
 
 
 ## The best-time line: "First finish: that is your best", "New best: 2.3 s faster", or
