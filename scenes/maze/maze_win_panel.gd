@@ -98,11 +98,7 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 	var colour: Color = MedalBadges.COLORS.get(summary.medal, INK)
 	_medal.add_theme_color_override("font_color", colour.darkened(0.55))
 	_best.text = summary.best_line()
-	_headline.text = (
-		"%s medal!" % Medals.name_of(summary.medal)
-		if summary.medal != Medals.Medal.NONE
-		else "You did it!"
-	)
+	_headline.text = summary.headline()
 	_disc.medal = summary.medal
 	_next.visible = has_next
 	_appear()
@@ -110,11 +106,11 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 
 
 ## Shows the card of a run lost into a hole: what happened, that it can't be won any
-## more (`left` of `total` balls are still on the board), and Retry (focused) and Menu.
-func present_loss(left: int, total: int) -> void:
+## more (said once, plainly: no count of balls left), and Retry (focused) and Menu.
+func present_loss() -> void:
 	_headline.text = "Ball lost"
-	_time.text = MazeHints.balls_left(left, total)
-	_medal.text = "Every ball has to reach the dip,\nso this run can't be won."
+	_time.text = "A ball fell into a black hole."
+	_medal.text = "This run can't be won: retry!"
 	_medal.visible = true
 	_medal.add_theme_color_override("font_color", INK)
 	_best.text = ""
