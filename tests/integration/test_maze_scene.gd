@@ -339,6 +339,12 @@ func test_a_win_shows_the_panel_with_medal_best_and_next_board() -> void:
 	await wait_process_frames(2)
 	assert_true(buttons[0].has_focus(), "Next board has the keyboard and pad focus")
 	assert_eq(buttons[0].focus_neighbor_right, NodePath(), "a row: focus moves by position")
+	var fill := (buttons[0].get_theme_stylebox("normal") as StyleBoxFlat).bg_color
+	for button: Button in buttons.slice(1):
+		var normal := button.get_theme_stylebox("normal") as StyleBoxFlat
+		assert_not_null(normal, "%s has the card's own style, not the default grey" % button.text)
+		if normal != null:
+			assert_eq(normal.bg_color, fill, "%s looks like Next board, not disabled" % button.text)
 	buttons[1].pressed.emit()
 	assert_eq(rules.state, MazeRules.State.READY, "Retry starts the board again")
 	assert_false(panel.visible, "and hides the panel")
