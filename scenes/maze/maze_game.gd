@@ -145,7 +145,7 @@ func _process(delta: float) -> void:
 	_lines.step_flash(delta)
 	if _loss_card_due and _stage.balls().fall_progress() >= 1.0:
 		_loss_card_due = false
-		_win_panel.present_loss(rules.balls_left(), rules.ball_total())
+		_win_panel.present_loss()
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -236,7 +236,7 @@ func _on_game_reset() -> void:
 		hint += "\n" + MazeHints.ghost()
 	elif App.settings.show_ghost:
 		hint += "\n" + MazeHints.no_ghost_yet()
-	_note.show_note("Tilt the board to start!", hint)
+	_note.show_note("Tilt the board to start!".replace(" ", MazeHints.NBSP), hint)
 	_show_best()
 
 

@@ -29,7 +29,7 @@ static func controls() -> String:
 		"%s pause" % KeyNames.of(&"pause", "the pause key"),
 	]:
 		items.append(item.replace(" ", NBSP))
-	return "Tilt: arrows, WASD or a stick\n" + (NBSP + NBSP + "·  ").join(items)
+	return "Tilt: arrows, WASD or the joystick\n" + (NBSP + NBSP + "·  ").join(items)
 
 
 ## The line in its place before there is a best run to race (as long, so the note keeps its

@@ -16,6 +16,8 @@ signal menu_chosen
 const INK := Color(0.129, 0.004, 0.141)
 ## The card's colour.
 const CARD := Color(0.99, 0.97, 0.94, 0.96)
+## The fill of the card's buttons (all alike; the focused one only gains the ring).
+const BUTTON_FILL := Color(0.93, 0.87, 0.76)
 
 ## How long after the card appears it ignores the arrow and accept keys (ms).
 const HELD_KEYS_IGNORED_MSEC := 600
@@ -79,6 +81,7 @@ func _init() -> void:
 		button.custom_minimum_size = Vector2(130, 44)
 		button.focus_mode = Control.FOCUS_ALL
 		MazeFocusRing.apply(button)
+		_style_button(button)
 		row.add_child(button)
 	_next.pressed.connect(func() -> void: next_board_chosen.emit())
 	_retry.pressed.connect(func() -> void: retry_chosen.emit())
@@ -98,11 +101,7 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 	var colour: Color = MedalBadges.COLORS.get(summary.medal, INK)
 	_medal.add_theme_color_override("font_color", colour.darkened(0.55))
 	_best.text = summary.best_line()
-	_headline.text = (
-		"%s medal!" % Medals.name_of(summary.medal)
-		if summary.medal != Medals.Medal.NONE
-		else "You did it!"
-	)
+	_headline.text = summary.headline()
 	_disc.medal = summary.medal
 	_next.visible = has_next
 	_appear()
@@ -110,11 +109,11 @@ func present(summary: MazeWinSummary, hard: bool, has_next: bool) -> void:
 
 
 ## Shows the card of a run lost into a hole: what happened, that it can't be won any
-## more (`left` of `total` balls are still on the board), and Retry (focused) and Menu.
-func present_loss(left: int, total: int) -> void:
+## more (said once, plainly: no count of balls left), and Retry (focused) and Menu.
+func present_loss() -> void:
 	_headline.text = "Ball lost"
-	_time.text = MazeHints.balls_left(left, total)
-	_medal.text = "Every ball has to reach the dip,\nso this run can't be won."
+	_time.text = "A ball fell into a black hole."
+	_medal.text = "This run can't be won: retry!"
 	_medal.visible = true
 	_medal.add_theme_color_override("font_color", INK)
 	_best.text = ""
@@ -162,6 +161,22 @@ func texts() -> PackedStringArray:
 ## The medal drawn large (hidden when the run earned none).
 func medal_disc() -> Control:
 	return _disc
+
+
+# One look for every card button (the default theme's grey made Retry and Menu look
+# disabled next to the focused Next board): ink text on a light fill, darker when hovered.
+static func _style_button(button: Button) -> void:
+	for state: String in ["normal", "hover", "pressed", "disabled"]:
+		var box := StyleBoxFlat.new()
+		box.bg_color = BUTTON_FILL.darkened(0.12 if state == "hover" else 0.0)
+		box.border_color = INK
+		box.set_border_width_all(2)
+		box.set_corner_radius_all(MazeFocusRing.CORNER)
+		button.add_theme_stylebox_override(state, box)
+	for colour: String in [
+		"font_color", "font_hover_color", "font_pressed_color", "font_focus_color"
+	]:
+		button.add_theme_color_override(colour, INK)
 
 
 ## The buttons in order: Next board, Retry, Menu.

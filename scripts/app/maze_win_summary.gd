@@ -15,6 +15,8 @@ var short_by := 0.0
 var previous_best := -1.0
 ## True when this run is the new best time.
 var new_best := false
+## The finishing time as the clock shows it (tenths).
+var seconds_shown := 0.0
 
 
 ## The summary of a win in `seconds` on `level` in hard or easy mode, with the best time
@@ -30,21 +32,25 @@ static func of(
 	summary.medal = Medals.medal_for_time(times, won_seconds)
 	if times.size() == 3 and summary.medal != Medals.Medal.GOLD:
 		summary.next_medal = (summary.medal + 1) as Medals.Medal
-		summary.short_by = (
-			Medals.shown_time(won_seconds) - Medals.time_of(times, summary.next_medal)
-		)
+		summary.seconds_shown = Medals.shown_time(won_seconds)
+		summary.short_by = summary.seconds_shown - Medals.time_of(times, summary.next_medal)
 	return summary
 
 
-## The medal line: "Gold!", "Silver: 1.8 s short of Gold", "No medal: 4.0 s short of
-## Bronze", or "" on a board without medal times.
+## The card's title: the medal once ("Silver!"), or "Finished!" without one.
+func headline() -> String:
+	return "%s!" % Medals.name_of(medal) if medal != Medals.Medal.NONE else "Finished!"
+
+
+## The line under the title, which does not say the medal again (the title does): "1.8 s
+## short of Gold" after silver or bronze, "Bronze is under 1:30.0" without a medal (kind,
+## not a gap of minutes to the tenth), or "" after gold or on a board without medal times.
 func medal_line() -> String:
-	if medal == Medals.Medal.NONE and next_medal == Medals.Medal.NONE:
-		return ""
 	if next_medal == Medals.Medal.NONE:
-		return "%s!" % Medals.name_of(medal)
-	var prefix := "%s medal" % Medals.name_of(medal) if medal != Medals.Medal.NONE else "No medal"
-	return "%s: %s s short of %s" % [prefix, _tenths(short_by), Medals.name_of(next_medal)]
+		return ""
+	if medal == Medals.Medal.NONE:
+		return "%s is under %s" % [Medals.name_of(next_medal), clock(seconds_shown - short_by)]
+	return "%s s short of %s" % [_tenths(short_by), Medals.name_of(next_medal)]
 
 
 ## The best-time line: "First finish: that is your best", "New best: 2.3 s faster", or

@@ -26,7 +26,8 @@ func test_next_target_is_the_best_medal_still_in_reach() -> void:
 func test_a_gold_win_says_gold_and_the_best_it_beat() -> void:
 	var summary := MazeWinSummary.of(_level(), false, 28.0, 31.5)
 	assert_eq(summary.medal, Medals.Medal.GOLD)
-	assert_eq(summary.medal_line(), "Gold!")
+	assert_eq(summary.headline(), "Gold!")
+	assert_eq(summary.medal_line(), "", "the title says the medal once")
 	assert_true(summary.new_best)
 	assert_eq(summary.best_line(), "New best: 3.5 s faster than before")
 
@@ -35,7 +36,8 @@ func test_a_silver_win_says_how_far_from_gold() -> void:
 	var summary := MazeWinSummary.of(_level(), false, 31.8, 29.0)
 	assert_eq(summary.medal, Medals.Medal.SILVER)
 	assert_eq(summary.next_medal, Medals.Medal.GOLD)
-	assert_eq(summary.medal_line(), "Silver medal: 1.8 s short of Gold")
+	assert_eq(summary.headline(), "Silver!")
+	assert_eq(summary.medal_line(), "1.8 s short of Gold", "the medal not said twice")
 	assert_false(summary.new_best)
 	assert_eq(summary.best_line(), "2.8 s slower than your best (0:29.0)")
 
@@ -45,17 +47,18 @@ func test_a_win_the_clock_shows_at_the_gold_time_is_gold_and_the_live_target_agr
 	level.medal_times_easy = PackedFloat64Array([22.8, 45.0, 70.0])
 	var summary := MazeWinSummary.of(level, false, 22.833, -1.0)
 	assert_eq(MazeWinSummary.clock(22.833), "0:22.8")
-	assert_eq(summary.medal_line(), "Gold!", "as the clock reads, not 0.1 s short")
+	assert_eq(summary.headline(), "Gold!", "as the clock reads, not 0.1 s short")
 	var times := level.medal_times_easy
 	assert_eq(Medals.next_target(times, 22.85)["medal"], Medals.Medal.GOLD, "still 0:22.8")
 	var late := MazeWinSummary.of(level, false, 22.95, -1.0)
-	assert_eq(late.medal_line(), "Silver medal: 0.1 s short of Gold", "0:22.9 against 0:22.8")
+	assert_eq(late.medal_line(), "0.1 s short of Gold", "0:22.9 against 0:22.8")
 
 
 func test_no_medal_says_how_far_from_bronze_and_hard_uses_its_own_times() -> void:
 	var summary := MazeWinSummary.of(_level(), true, 94.0, -1.0)
 	assert_eq(summary.medal, Medals.Medal.NONE)
-	assert_eq(summary.medal_line(), "No medal: 4.0 s short of Bronze")
+	assert_eq(summary.headline(), "Finished!")
+	assert_eq(summary.medal_line(), "Bronze is under 1:30.0", "kind: the target, not the gap")
 	assert_true(summary.new_best, "a first finish is the best")
 	assert_eq(summary.best_line(), "Your first finish: that's your best time")
 
