@@ -112,7 +112,8 @@ func _ready() -> void:
 
 
 func _process(delta: float) -> void:
-	if rules == null:
+	# the cleared card holds the game still: no shot fires and no ball lands behind it
+	if rules == null or _cleared_card.visible:
 		return
 	_controls.poll(rules, delta)
 	# Slow motion slows the game's clock only: the same fixed steps, fewer per frame.
@@ -133,7 +134,7 @@ func _notification(what: int) -> void:
 
 
 func _input(event: InputEvent) -> void:
-	if rules != null and _controls.handle_pointer(rules, event, self):
+	if rules != null and not _cleared_card.visible and _controls.handle_pointer(rules, event, self):
 		get_viewport().set_input_as_handled()
 
 
@@ -168,7 +169,7 @@ func _unhandled_input(event: InputEvent) -> void:
 			if event is InputEventKey and not event.is_action_pressed("game_start"):
 				_controls.handle_action(rules, event)
 		return
-	if _controls.handle_action(rules, event):
+	if not _cleared_card.visible and _controls.handle_action(rules, event):
 		get_viewport().set_input_as_handled()
 
 
@@ -346,6 +347,8 @@ func _start_from_card() -> void:
 # The launcher is a deliberate control of its own: grabbing it while the card is up starts
 # the game, once the card has been up long enough that the press is not a stray one.
 func _on_flipper_pressed(at: Vector2) -> void:
+	if _cleared_card.visible:
+		return
 	if rules.state != PachinkoRules.State.PLAYING:
 		if instructions.accepts_start():
 			_start_from_card()
@@ -356,6 +359,8 @@ func _on_flipper_pressed(at: Vector2) -> void:
 
 
 func _on_handle_pressed(at: Vector2) -> void:
+	if _cleared_card.visible:
+		return
 	if rules.state != PachinkoRules.State.PLAYING:
 		if not instructions.accepts_start():
 			instructions.nudge()
@@ -394,6 +399,7 @@ func _on_cup_changed(_count: int) -> void:
 func _on_goal_reached(won: int) -> void:
 	stats_panel.goal_cleared = true
 	stats_panel.show_stats(rules.stats(true))
+	_controls.let_go(rules)  # a held key or drag fires nothing behind the card
 	_cleared_card.show_cleared(_level, won, _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 

@@ -59,6 +59,35 @@ func test_filling_the_tray_clears_the_machine_once_with_a_win_card() -> void:
 	assert_string_contains(LevelSelectWords.best_text(result, "pachinko"), "Cleared!")
 
 
+func _charge_key(pressed: bool) -> InputEventAction:
+	var event := InputEventAction.new()
+	event.action = &"launch_charge"
+	event.pressed = pressed
+	return event
+
+
+func test_no_shot_fires_and_no_ball_moves_while_the_win_card_is_up() -> void:
+	# Trial 5: shots fired behind the card, landed hidden and paid
+	var game := GAME.instantiate() as PachinkoGame
+	add_child_autofree(game)
+	await wait_process_frames(1)
+	var rules := game.rules
+	rules.start_game()
+	_win(rules, PachinkoGoals.tray_target(rules.level) - rules.balls_to_shoot)
+	assert_true(game.cleared_card().visible)
+	var shots := rules.ledger.shots
+	var world := rules.world.state_hash()
+	game._unhandled_input(_charge_key(true))
+	for frame in 90:
+		game._process(1.0 / 60.0)
+	game._unhandled_input(_charge_key(false))
+	game._on_flipper_pressed(Vector2.ZERO)
+	for frame in 30:
+		game._process(1.0 / 60.0)
+	assert_eq(rules.ledger.shots, shots, "no shot behind the card")
+	assert_eq(rules.world.state_hash(), world, "the board waits for the player")
+
+
 func test_next_machine_is_the_next_board_in_the_list() -> void:
 	var boards := BoardLoader.list_boards(BoardLevel.Kind.PACHINKO)
 	var first := boards[0].level
