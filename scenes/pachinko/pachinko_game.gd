@@ -400,6 +400,7 @@ func _on_goal_reached(won: int) -> void:
 	stats_panel.goal_cleared = true
 	stats_panel.show_stats(rules.stats(true))
 	_controls.let_go(rules)  # a held key or drag fires nothing behind the card
+	cup.catch_up(rules.balls_to_shoot)  # the tray reads the card's count, not one behind
 	_cleared_card.show_cleared(_level, won, _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 

@@ -44,8 +44,10 @@ func test_filling_the_tray_clears_the_machine_once_with_a_win_card() -> void:
 	_win(rules, target - rules.balls_to_shoot - 1)
 	assert_false(game.cleared_card().visible, "one short: not yet")
 	assert_false(App.has_cleared_pachinko(board))
+	game.cup.pour(6)  # still falling when the goal is reached
 	_win(rules, 1)
 	assert_true(game.cleared_card().visible, "the tray is full: the win card")
+	assert_eq(game.cup.count(), rules.balls_to_shoot, "the tray shows the card's count")
 	assert_string_contains(game.cleared_card().text(), "CLEARED")
 	var card := game.instructions.get_node("Card/Margin/Box/Body") as RichTextLabel
 	assert_string_contains(card.get_parsed_text(), "Goal: Fill the tray", "the start card says it")
