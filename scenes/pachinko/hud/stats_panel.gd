@@ -70,7 +70,7 @@ static func lines_for(
 			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
 			# short lines: longer ones wrapped and pushed the launcher off a 720 px column
 			"[b]Paid back[/b] %d (%.2f a shot)" % [paid, ratio],
-			_won_line(stats.get("won", -1), best),
+			_won_line(int(stats.get("won", -1)), best),
 		]
 	)
 	if target > 0:
