@@ -64,13 +64,14 @@ static func lines_for(
 	var shots: int = stats.get("shots", 0)
 	var paid: int = stats.get("payouts", 0)
 	var ratio: float = stats.get("payout_ratio", 0.0)
+	var won: int = stats.get("won", -1)
 	var lines := PackedStringArray(
 		[
 			"[b]Shots[/b] %d    [b]In play[/b] %d" % [shots, stats.get("in_play", 0)],
 			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
 			# short lines: longer ones wrapped and pushed the launcher off a 720 px column
 			"[b]Paid back[/b] %d (%.2f a shot)" % [paid, ratio],
-			_won_line(int(stats.get("won", -1)), best),
+			_won_line(won, best),
 		]
 	)
 	if target > 0:
