@@ -108,8 +108,8 @@ func show_start(level: BoardLevel) -> void:
 					(
 						(
 							"You have [b]%d balls[/b]. The stronger the shot, the farther round the"
-							+ " top it travels. On the power bar, green marks the power that has"
-							+ " been paying and the gold arrow your last shot's power."
+							+ " top it travels. On the power bar, green marks the powers that have"
+							+ " been paying; the gold arrow marks your last shot."
 						)
 						% level.cup_start_balls
 					),

@@ -89,7 +89,7 @@ func _on_ball_drained(_id: int) -> void:
 
 func _on_ball_returned(_id: int) -> void:
 	var at := LaunchRail.return_zone_center(_rules.level)
-	_board_view.effects.note(at + Vector2(-40, 0), "back to cup", Color("bfe3ff"))
+	_board_view.effects.note(at + Vector2(-40, 0), "back to tray", Color("bfe3ff"))
 	_sounds.play(SoundBank.BALL_RETURN, -4.0)
 	_launcher.set_loaded(_rules.loaded)
 

@@ -112,7 +112,8 @@ func _ready() -> void:
 
 
 func _process(delta: float) -> void:
-	if rules == null:
+	# the cleared card holds the game still: no shot fires and no ball lands behind it
+	if rules == null or _cleared_card.visible:
 		return
 	_controls.poll(rules, delta)
 	# Slow motion slows the game's clock only: the same fixed steps, fewer per frame.
@@ -123,7 +124,7 @@ func _process(delta: float) -> void:
 	_stats_refresh -= delta
 	if _stats_refresh <= 0.0:
 		_stats_refresh = 0.25
-		stats_panel.show_stats(rules.stats(true))
+		stats_panel.show_stats(_panel_stats())
 
 
 func _notification(what: int) -> void:
@@ -133,7 +134,7 @@ func _notification(what: int) -> void:
 
 
 func _input(event: InputEvent) -> void:
-	if rules != null and _controls.handle_pointer(rules, event, self):
+	if rules != null and not _cleared_card.visible and _controls.handle_pointer(rules, event, self):
 		get_viewport().set_input_as_handled()
 
 
@@ -168,7 +169,7 @@ func _unhandled_input(event: InputEvent) -> void:
 			if event is InputEventKey and not event.is_action_pressed("game_start"):
 				_controls.handle_action(rules, event)
 		return
-	if _controls.handle_action(rules, event):
+	if not _cleared_card.visible and _controls.handle_action(rules, event):
 		get_viewport().set_input_as_handled()
 
 
@@ -251,7 +252,7 @@ func _new_rules() -> void:
 	title.tooltip_text = _level.description
 	launcher.show_controls_hint()
 	_show_notes()
-	stats_panel.show_stats(rules.stats(true))
+	stats_panel.show_stats(_panel_stats())
 	if App.skips_rules_card(_level.board_id):
 		# played from its full card before: straight into play, how to shoot in one line
 		instructions.visible = false
@@ -306,7 +307,7 @@ func _show_notes() -> void:
 	# of its own here appeared after the first game and moved the panel under it
 	stats_panel.best_session = App.best_pachinko_balls(_level.board_id)
 	stats_panel.goal = PachinkoGoals.tray_target(_level)
-	stats_panel.show_stats(rules.stats(true))
+	stats_panel.show_stats(_panel_stats())
 	notes.text = (
 		"%s new game  ·  %s pause  ·  %s frame counter"
 		% [
@@ -346,6 +347,8 @@ func _start_from_card() -> void:
 # The launcher is a deliberate control of its own: grabbing it while the card is up starts
 # the game, once the card has been up long enough that the press is not a stray one.
 func _on_flipper_pressed(at: Vector2) -> void:
+	if _cleared_card.visible:
+		return
 	if rules.state != PachinkoRules.State.PLAYING:
 		if instructions.accepts_start():
 			_start_from_card()
@@ -356,6 +359,8 @@ func _on_flipper_pressed(at: Vector2) -> void:
 
 
 func _on_handle_pressed(at: Vector2) -> void:
+	if _cleared_card.visible:
+		return
 	if rules.state != PachinkoRules.State.PLAYING:
 		if not instructions.accepts_start():
 			instructions.nudge()
@@ -382,18 +387,27 @@ func _on_game_ended(summary: Dictionary) -> void:
 	sounds.play(SoundBank.GAME_OVER)
 
 
+# The panel's numbers: the rules' and this game's balls won so far (CupPeak).
+func _panel_stats() -> Dictionary:
+	var stats := rules.stats(true)
+	stats["won"] = _cup_peak.won()
+	return stats
+
+
 ## The win moment's card (the tray reached the machine's goal).
 func cleared_card() -> MachineClearedCard:
 	return _cleared_card
 
 
 func _on_cup_changed(_count: int) -> void:
-	stats_panel.show_stats(rules.stats(true))
+	stats_panel.show_stats(_panel_stats())
 
 
 func _on_goal_reached(won: int) -> void:
 	stats_panel.goal_cleared = true
-	stats_panel.show_stats(rules.stats(true))
+	stats_panel.show_stats(_panel_stats())
+	_controls.let_go(rules)  # a held key or drag fires nothing behind the card
+	cup.catch_up(rules.balls_to_shoot)  # the tray reads the card's count, not one behind
 	_cleared_card.show_cleared(_level, won, _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 

@@ -44,8 +44,10 @@ func test_filling_the_tray_clears_the_machine_once_with_a_win_card() -> void:
 	_win(rules, target - rules.balls_to_shoot - 1)
 	assert_false(game.cleared_card().visible, "one short: not yet")
 	assert_false(App.has_cleared_pachinko(board))
+	game.cup.pour(6)  # still falling when the goal is reached
 	_win(rules, 1)
 	assert_true(game.cleared_card().visible, "the tray is full: the win card")
+	assert_eq(game.cup.count(), rules.balls_to_shoot, "the tray shows the card's count")
 	assert_string_contains(game.cleared_card().text(), "CLEARED")
 	var card := game.instructions.get_node("Card/Margin/Box/Body") as RichTextLabel
 	assert_string_contains(card.get_parsed_text(), "Goal: Fill the tray", "the start card says it")
@@ -57,6 +59,35 @@ func test_filling_the_tray_clears_the_machine_once_with_a_win_card() -> void:
 	var result := BoardLoader.load_board("res://levels/pachinko/fever.board")
 	App.record_pachinko_balls(board, 40)
 	assert_string_contains(LevelSelectWords.best_text(result, "pachinko"), "Cleared!")
+
+
+func _charge_key(pressed: bool) -> InputEventAction:
+	var event := InputEventAction.new()
+	event.action = &"launch_charge"
+	event.pressed = pressed
+	return event
+
+
+func test_no_shot_fires_and_no_ball_moves_while_the_win_card_is_up() -> void:
+	# Trial 5: shots fired behind the card, landed hidden and paid
+	var game := GAME.instantiate() as PachinkoGame
+	add_child_autofree(game)
+	await wait_process_frames(1)
+	var rules := game.rules
+	rules.start_game()
+	_win(rules, PachinkoGoals.tray_target(rules.level) - rules.balls_to_shoot)
+	assert_true(game.cleared_card().visible)
+	var shots := rules.ledger.shots
+	var world := rules.world.state_hash()
+	game._unhandled_input(_charge_key(true))
+	for frame in 90:
+		game._process(1.0 / 60.0)
+	game._unhandled_input(_charge_key(false))
+	game._on_flipper_pressed(Vector2.ZERO)
+	for frame in 30:
+		game._process(1.0 / 60.0)
+	assert_eq(rules.ledger.shots, shots, "no shot behind the card")
+	assert_eq(rules.world.state_hash(), world, "the board waits for the player")
 
 
 func test_next_machine_is_the_next_board_in_the_list() -> void:

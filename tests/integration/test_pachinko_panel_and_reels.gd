@@ -139,6 +139,14 @@ func test_the_panel_shows_this_sessions_balls_and_the_best_session() -> void:
 	assert_string_contains(lines, "Paid back[/b] 57 (")
 	assert_string_contains(lines, "Most won[/b] 120 balls")
 	var first := "\n".join(StatsPanel.lines_for(stats))
+	# trial 5: "Most won: none yet" while this game was winning
+	var playing := stats.duplicate()
+	playing["won"] = 30
+	assert_string_contains(
+		"\n".join(StatsPanel.lines_for(playing, 42)), "Won[/b] 30 · [b]best game[/b] 42"
+	)
+	playing["won"] = 50
+	assert_string_contains("\n".join(StatsPanel.lines_for(playing, 42)), "best game[/b] 50")
 	assert_string_contains(first, "Most won[/b] none yet")
 	# a play trial's column overflowed (the launcher's POWER cut off) as the lines wrapped
 	for line in StatsPanel.lines_for({"shots": 243, "payouts": 387, "pocket_hits": [97]}, 1200):

@@ -90,6 +90,16 @@ func test_release_fires_and_the_next_ball_loads_at_once() -> void:
 	assert_true(rules.accounting_ok())
 
 
+func test_a_held_charge_key_takes_about_1_6_seconds_to_full_power() -> void:
+	# Trial 5: full power in 1.25 s was too quick to stop at a power by feel.
+	var rules := _playing()
+	assert_true(rules.begin_charge())
+	rules.charge(1.5)
+	assert_lt(rules.power, 100.0, "not full after 1.5 s")
+	rules.charge(0.1)
+	assert_eq(rules.power, 100.0, "full after 1.6 s")
+
+
 func test_keyboard_charge_fills_power_over_time() -> void:
 	var rules := _playing()
 	assert_true(rules.begin_charge())

@@ -35,6 +35,13 @@ func pour(balls: int) -> void:
 		queue_redraw()
 
 
+## Shows `balls` at once, the drops still falling landed: the win card and the tray then
+## read the same number.
+func catch_up(balls: int) -> void:
+	_pour.land_all()
+	set_count(balls)
+
+
 ## Drops still falling into the cup.
 func pouring() -> int:
 	return _pour.drops.size()

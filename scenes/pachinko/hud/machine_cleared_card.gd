@@ -59,7 +59,8 @@ func _init() -> void:
 ## Shows the win on `level`: its goal reached with `won` balls won; centred on `area`.
 func show_cleared(level: BoardLevel, won: int, area: Rect2) -> void:
 	_line.text = (
-		"%s: done!\nYou won %d balls on %s." % [PachinkoGoals.words(level), won, level.display_name]
+		"Tray filled to %d balls!\nYou won %d balls on %s."
+		% [PachinkoGoals.tray_target(level), won, level.display_name]
 	)
 	visible = true
 	size = get_combined_minimum_size()

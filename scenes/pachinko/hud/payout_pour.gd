@@ -43,6 +43,13 @@ func pour(balls: int, center_x: float, height: float) -> void:
 		_balls.append(each + (1 if i < extra else 0))
 
 
+## Lands every drop at once (the win card shows the tray's true count).
+func land_all() -> void:
+	landed += pending()
+	drops.clear()
+	_balls.clear()
+
+
 ## Balls still in the air or waiting to fall.
 func pending() -> int:
 	var total := 0

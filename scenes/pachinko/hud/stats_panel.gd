@@ -41,6 +41,14 @@ func shown_text() -> String:
 	return _text.get_parsed_text() if _text != null else ""
 
 
+# This game's balls won ("won" in the stats, the game's screen adds it) beside the best
+# game's, which this game raises as it passes it; without it, the best alone.
+static func _won_line(won: int, best: int) -> String:
+	if won >= 0:
+		return "[b]Won[/b] %d · [b]best game[/b] %d" % [won, maxi(best, won)]
+	return "[b]Most won[/b] %d balls" % best if best >= 0 else "[b]Most won[/b] none yet"
+
+
 ## The panel's lines for `stats`, in the words the card and the game-over box use:
 ## "pocket hits" counts every paying piece (pockets, start pockets, attackers, tulips),
 ## "paid back" the balls they paid into the cup; `best` is the most balls a game on the
@@ -56,13 +64,14 @@ static func lines_for(
 	var shots: int = stats.get("shots", 0)
 	var paid: int = stats.get("payouts", 0)
 	var ratio: float = stats.get("payout_ratio", 0.0)
+	var won: int = stats.get("won", -1)
 	var lines := PackedStringArray(
 		[
 			"[b]Shots[/b] %d    [b]In play[/b] %d" % [shots, stats.get("in_play", 0)],
 			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
 			# short lines: longer ones wrapped and pushed the launcher off a 720 px column
 			"[b]Paid back[/b] %d (%.2f a shot)" % [paid, ratio],
-			"[b]Most won[/b] %d balls" % best if best >= 0 else "[b]Most won[/b] none yet",
+			_won_line(won, best),
 		]
 	)
 	if target > 0:

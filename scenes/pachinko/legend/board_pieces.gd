@@ -28,7 +28,7 @@ static func line(level: BoardLevel, piece: Piece) -> String:
 			var pays: Array[int] = []
 			for spec in level.pockets:
 				pays.append(spec.payout)
-			return "Pocket: a ball that drops in pays %s back into the cup." % _balls(pays)
+			return "Pocket: a ball that drops in pays %s back into the tray." % _balls(pays)
 		Piece.START:
 			return (
 				(

@@ -39,7 +39,7 @@ signal game_ended(summary: Dictionary)
 ## INSTRUCTIONS: before the first game; PLAYING; GAME_OVER: the instructions are back.
 enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
-## Power added per second while a key or button is held (full power in 1.25 s).
+## Power added per second while a key or button is held (full power in 1.6 s).
 const CHARGE_PER_SECOND := FlipperDrawback.CHARGE_PER_SECOND
 ## A shot's power is kept in whole hundredths (too fine to feel), so a replay stores it as a
 ## whole number and plays it back bit for bit.
