@@ -30,6 +30,10 @@ const PIN_FEVER := JuiceRecipes.PIN_FEVER
 const REACH_RISE := JackpotRecipes.REACH_RISE
 const JACKPOT_FANFARE := JackpotRecipes.JACKPOT_FANFARE
 const ROUND_BELL := JackpotRecipes.ROUND_BELL
+## The sounds a pachinko game plays in its first seconds, built while it loads.
+const PACHINKO_FIRST_SOUNDS: Array[StringName] = [
+	PIN_TICK, LAUNCH, POCKET_WIN, DRAIN, BALL_RETURN, GAME_OVER, WALL_THUD
+]
 
 const PREFERRED_BUS := &"SFX"
 const FALLBACK_BUS := &"Master"

@@ -28,7 +28,7 @@ var _restart_prompt := RestartPrompt.new()
 # The board's part of the screen (the last layout's).
 var _board_area := Rect2()
 # The most balls this game's tray has held above its start: what its best counts.
-var _cup_peak: CupPeak
+var _record: PachinkoGameRecord
 # The machine's goal this game, and the win moment's card.
 var _goal: MachineGoal
 var _cleared_card := MachineClearedCard.new()
@@ -72,20 +72,7 @@ func _ready() -> void:
 		return
 	_level = loaded.level
 	MachineDress.apply(self, _level, stats_panel, title, notes)
-	(
-		SoundBank
-		. warm(
-			[
-				SoundBank.PIN_TICK,
-				SoundBank.LAUNCH,
-				SoundBank.POCKET_WIN,
-				SoundBank.DRAIN,
-				SoundBank.BALL_RETURN,
-				SoundBank.GAME_OVER,
-				SoundBank.WALL_THUD,
-			]
-		)
-	)
+	SoundBank.warm(SoundBank.PACHINKO_FIRST_SOUNDS)
 	_feedback = PachinkoFeedback.new(board_view, launcher, cup, sounds)
 	_bonus_view = BonusView.new()
 	add_child(_bonus_view)
@@ -215,25 +202,18 @@ func _exit_tree() -> void:
 	_keep_session()
 
 
-# A session left before its cup ran dry (Other boards, Restart, Quit) still counts for the
-# board's best session: a play trial left Hanami at 277 balls and its card said "Not played
-# yet". Only a session that won something (CupPeak), and only while it is still played.
 func _keep_session() -> void:
 	_restart_prompt.dismiss()
-	if rules != null:
-		App.keep_pachinko_handle_power(rules.handle.power)
-	if rules == null or _level == null or rules.state != PachinkoRules.State.PLAYING:
-		return
-	if _cup_peak.won() > 0:
-		App.record_pachinko_balls(_level.board_id, _cup_peak.won())
+	if _record != null:
+		_record.keep_left_game()
 
 
 func _new_rules() -> void:
 	var rng_seed := int(Time.get_ticks_usec())
 	rules = PachinkoRules.new(_level, rng_seed)
 	rules.handle.set_power(App.pachinko_handle_power())  # as the player left it
-	_cup_peak = CupPeak.new(rules)
-	_goal = MachineGoal.new(_level, rules, _cup_peak)
+	_record = PachinkoGameRecord.new(_level, rules)
+	_goal = MachineGoal.new(_level, rules, _record.cup_peak)
 	_goal.reached.connect(_on_goal_reached)
 	stats_panel.goal_cleared = false
 	# the goal line's "now" follows the tray as it changes, not a quarter second later
@@ -376,9 +356,8 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 
 
 func _on_game_ended(summary: Dictionary) -> void:
-	summary["game_won"] = _cup_peak.won()
-	var new_best := App.record_pachinko_balls(_level.board_id, _cup_peak.won())
-	App.keep_pachinko_handle_power(rules.handle.power)
+	summary["game_won"] = _record.won()
+	var new_best := _record.finish()
 	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
 	_reminder.dismiss()
@@ -390,7 +369,7 @@ func _on_game_ended(summary: Dictionary) -> void:
 # The panel's numbers: the rules' and this game's balls won so far (CupPeak).
 func _panel_stats() -> Dictionary:
 	var stats := rules.stats(true)
-	stats["won"] = _cup_peak.won()
+	stats["won"] = _record.won()
 	return stats
 
 

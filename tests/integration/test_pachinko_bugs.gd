@@ -38,7 +38,9 @@ func test_a_key_let_go_during_the_pause_does_not_keep_charging() -> void:
 	rules.start_game()
 	game._unhandled_input(_key(true))
 	game._process(0.2)
-	assert_almost_eq(rules.power, 16.0, 0.01, "charging before the pause")
+	assert_almost_eq(
+		rules.power, PachinkoRules.CHARGE_PER_SECOND * 0.2, 0.01, "charging before the pause"
+	)
 	var pause := game.get_node("PauseMenu")
 	pause.open()
 	# The release goes to a paused game: Godot does not deliver it to _unhandled_input.
