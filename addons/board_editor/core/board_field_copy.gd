@@ -15,7 +15,7 @@ static func capture(level: BoardLevel, fields: PackedStringArray) -> Dictionary:
 	for field in fields:
 		var values := _spec_values(field)
 		if values.is_empty():
-			snap[field] = _copy(level.get(field))
+			snap[field] = ItemEdits.unshared_copy(level.get(field))
 			continue
 		var kept: Array = []
 		for spec: Resource in level.get(field):
@@ -32,10 +32,10 @@ static func restore(level: BoardLevel, snap: Dictionary) -> void:
 	for field: String in snap:
 		var values := _spec_values(field)
 		if values.is_empty():
-			level.set(field, _copy(snap[field]))
+			level.set(field, ItemEdits.unshared_copy(snap[field]))
 			continue
 		# The field's own typed array, emptied: the board's setter takes only its own type.
-		var specs: Array = _copy(level.get(field))
+		var specs: Array = ItemEdits.unshared_copy(level.get(field))
 		specs.clear()
 		for entry: Array in snap[field]:
 			var spec: Resource = entry[0]
@@ -51,20 +51,3 @@ static func restore(level: BoardLevel, snap: Dictionary) -> void:
 static func _spec_values(field: String) -> PackedStringArray:
 	var kind := ItemKinds.of_field(field)
 	return kind.spec_values if kind != null else PackedStringArray()
-
-
-static func _copy(value: Variant) -> Variant:
-	match typeof(value):
-		TYPE_PACKED_VECTOR2_ARRAY:
-			var points: PackedVector2Array = value
-			return points.duplicate()
-		TYPE_PACKED_INT32_ARRAY:
-			var numbers: PackedInt32Array = value
-			return numbers.duplicate()
-		TYPE_PACKED_BYTE_ARRAY:
-			var bytes: PackedByteArray = value
-			return bytes.duplicate()
-		TYPE_ARRAY:
-			var items: Array = value
-			return items.duplicate()
-	return value

@@ -13,7 +13,7 @@ extends RefCounted
 ## the copies back to the board at the end: one setter call per field, not per item.
 static func working(level: BoardLevel, work: Dictionary, field_name: String) -> Variant:
 	if not work.has(field_name):
-		work[field_name] = _copy(level.get(field_name))
+		work[field_name] = unshared_copy(level.get(field_name))
 	return work[field_name]
 
 
@@ -150,9 +150,10 @@ static func _move_spec(spec: Resource, by: Vector2) -> void:
 	spec.set("position", at + by)
 
 
-# A copy that edits do not share with the board (Arrays and packed arrays are shared by
-# reference); other values are copies already.
-static func _copy(value: Variant) -> Variant:
+## A copy of a board field's value that edits do not share with the board (Arrays and
+## packed arrays are shared by reference); other values are copies already. The editor's
+## undo snapshots (BoardFieldCopy) copy with it too.
+static func unshared_copy(value: Variant) -> Variant:
 	match typeof(value):
 		TYPE_ARRAY:
 			var items: Array = value
