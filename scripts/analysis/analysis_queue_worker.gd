@@ -53,7 +53,7 @@ static func run(plan: AnalysisPlan, folder: String, id: int) -> int:
 	var table: RailExitTable = null
 	var beats := 0
 	while _wanted(folder, parent_pid):
-		var name := _take(folder, id)
+		var name := take(folder, id)
 		if name.is_empty():
 			OS.delay_msec(IDLE_MS)
 			continue
@@ -141,9 +141,9 @@ static func _wanted(folder: String, parent_pid: int) -> bool:
 	return true
 
 
-# Takes the first waiting range: renames its todo file to this worker's took file. "" when
-# none is waiting (or another worker won each one first).
-static func _take(folder: String, id: int) -> String:
+## Takes the first waiting range in `folder` for taker `id`: renames its todo file to the
+## taker's took file. "" when none is waiting (or another taker won each one first).
+static func take(folder: String, id: int) -> String:
 	var files := DirAccess.get_files_at(folder)
 	files.sort()
 	for file in files:

@@ -18,6 +18,10 @@ extends PachinkoAnalysis
 ## worker and its chunks, and the range goes back in the queue for another worker; once no
 ## worker is left, the rest runs here on `plan.threads` threads. No range is dropped.
 ##
+## With `work_here` (the default) this process takes ranges from the queue too, on one
+## thread (AnalysisLocalShare): the run starts at once, not after a worker's engine start
+## (about 1 s of a core each), so `workers` processes and this one fire together.
+##
 ## The queue's files are AnalysisQueueFolder's job, a worker's command line
 ## AnalysisWorkerCommand's: this decides who runs which range.
 
@@ -42,6 +46,8 @@ var with_open := false
 var board_path := ""
 ## Seconds without progress after which a worker holding a range is killed as hung.
 var hang_seconds := HANG_SECONDS
+## True: this process fires ranges of the queue too, beside its workers (set before start()).
+var work_here := true
 ## Why the pool could not start ("" when it did).
 var failure := ""
 ## What went wrong with workers during the run, one line each (also printed on stderr).
@@ -60,19 +66,31 @@ var _here_open: PachinkoAnalysis = null
 var _here_ranges := PackedInt32Array()
 var _merged: AnalysisTally = null
 var _merged_open: AnalysisTally = null
+var _share: AnalysisLocalShare = null
+var _ranges_here := 0
 
 
-## Worker processes a run uses by default: every core when there are more than two (two
-## worker processes on two cores lost to two threads: see scripts/analysis/README.md), else
-## none (0: threads in this process).
+## Worker processes a run uses by default: one per core but the one this process fires on
+## when there are more than two cores, else none (0: threads in this process; on two cores
+## the workers' start is not paid back on a short run: see scripts/analysis/README.md).
 static func default_workers() -> int:
 	var cores := OS.get_processor_count()
-	return cores if cores > 2 else 0
+	return cores - 1 if cores > 2 else 0
 
 
 ## The process ids of the workers started (-1 for those known to be gone).
 func process_ids() -> PackedInt32Array:
 	return _pids
+
+
+## How many ranges this process fired itself (`work_here`) so far.
+func ranges_here() -> int:
+	return _ranges_here
+
+
+## True while this process's share runs a range (never after cancel() or the end).
+func firing_here() -> bool:
+	return _share != null and _share.busy()
 
 
 ## Starts the workers. False (with `failure` set) when the plan cannot run this way or no
@@ -96,6 +114,12 @@ func start() -> bool:
 		failure = "could not start %s" % OS.get_executable_path()
 		_queue.remove()
 		return false
+	if work_here:
+		_share = AnalysisLocalShare.new()
+		var problem := _share.prepare(plan, board, _queue.path, _pids.size(), with_open)
+		if not problem.is_empty():
+			_report("%s; the workers fire every range" % problem)
+			_share = null
 	phase = Phase.SHOTS
 	return true
 
@@ -108,6 +132,8 @@ func poll() -> bool:
 		return phase != Phase.IDLE
 	if _here != null:
 		return _poll_here()
+	if _share != null:
+		_take_from_share()
 	if Time.get_ticks_msec() - _last_look < POLL_MS:
 		return false
 	_last_look = Time.get_ticks_msec()
@@ -118,7 +144,7 @@ func poll() -> bool:
 	if _ranges_done == _queue.names.size():
 		_finish()
 		return true
-	if _pids.count(-1) == _pids.size():
+	if _pids.count(-1) == _pids.size() and (_share == null or _share.stopped()):
 		_run_rest_here()
 	return false
 
@@ -128,6 +154,9 @@ func poll() -> bool:
 func cancel() -> void:
 	if phase != Phase.SHOTS:
 		return
+	if _share != null:
+		_share.stop()
+		_share = null
 	_stop_workers()
 	if _here != null:
 		_here.cancel()
@@ -170,7 +199,7 @@ func run() -> AnalysisTally:
 	if not start():
 		return null
 	while not poll():
-		OS.delay_msec(POLL_MS if _here == null else 5)
+		OS.delay_msec(POLL_MS if _here == null and _share == null else 5)
 	return _merged if phase == Phase.DONE else null
 
 
@@ -186,6 +215,18 @@ func _start_problem() -> String:
 	if problem.is_empty() and not AnalysisWorker.available():
 		problem = "this build cannot start worker processes"
 	return problem
+
+
+# Takes in the ranges this process fired (AnalysisLocalShare) and moves its share on.
+func _take_from_share() -> void:
+	_share.poll()
+	for done in _share.take_finished():
+		var r := _queue.names.find(str(done["name"]))
+		if r >= 0 and _counts[r] == null:
+			_counts[r] = done["counts"]
+			_open_counts[r] = done["open"]
+			_ranges_done += 1
+			_ranges_here += 1
 
 
 # Takes in the counts of every range whose files are there.
@@ -328,6 +369,9 @@ func _finish() -> void:
 	_merged_open = _merge(_open_counts) if with_open else null
 	wall_seconds = (Time.get_ticks_usec() - _started_usec) / 1e6
 	phase = Phase.DONE
+	if _share != null:
+		_share.stop()
+		_share = null
 	_queue.close()
 	_queue.remove()
 	# The workers see the queue gone within IDLE_MS and exit; waiting for that here reaps

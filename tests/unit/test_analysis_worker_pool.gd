@@ -3,7 +3,9 @@ extends GutTest
 ## thread in this process, also when a worker dies or hangs on purpose (the test hook
 ## AnalysisQueueWorker.FAULT_ENV, which the workers inherit) and its chunks are run again;
 ## cancel leaves no worker process behind; a run of some chunks only (only_chunks) counts
-## exactly those chunks.
+## exactly those chunks. This process fires ranges beside its workers (work_here) with the
+## same counts; the fault tests turn that off, so the workers, not this process, meet the
+## faults.
 
 const SHOTS := 1000
 ## A pool run that takes longer than this is stuck (a range lost): the test fails, ms.
@@ -63,12 +65,71 @@ func _finish(pool: AnalysisWorkerPool) -> AnalysisTally:
 	return pool.tally()
 
 
-func _pool(workers: int) -> AnalysisWorkerPool:
+func _pool(workers: int, here := false) -> AnalysisWorkerPool:
 	var plan := AnalysisPlan.create(_classic(), SHOTS, 1)
 	plan.threads = 2
 	var pool := AnalysisWorkerPool.new(plan)
 	pool.workers = workers
+	pool.work_here = here
 	return pool
+
+
+func test_this_process_fires_ranges_beside_its_workers() -> void:
+	var pool := _pool(1, true)
+	var there := _finish(pool)
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
+	assert_eq(pool.incidents, PackedStringArray(), "nothing failed")
+	# The first range is taken here before any worker's engine has started.
+	assert_gt(pool.ranges_here(), 0, "this process fired some ranges itself")
+	_assert_same_counts(there, _one_thread(pool.plan), pool.plan)
+
+
+func test_ranges_fired_here_match_with_the_bonus_open_counts() -> void:
+	var fever := BoardLoader.load_board("res://levels/pachinko/fever.board").level
+	var plan := AnalysisPlan.create(fever, 500, 3)
+	var pool := AnalysisWorkerPool.new(plan)
+	pool.workers = 1
+	pool.with_open = true
+	var there := _finish(pool)
+	assert_gt(pool.ranges_here(), 0, "this process fired some ranges itself")
+	_assert_same_counts(there, _one_thread(plan), plan)
+	var open_plan := plan.with_bonus_open()
+	open_plan.threads = 1
+	var open_here := PachinkoAnalysis.new(open_plan).run()
+	var open_there := pool.open_tally()
+	assert_not_null(open_there, "the bonus-open counts came back")
+	if open_there != null:
+		assert_eq(open_there.band_pocket_hits, open_here.band_pocket_hits)
+		assert_eq(open_there.ball_steps, open_here.ball_steps)
+
+
+func test_a_dying_worker_beside_this_process_loses_no_range() -> void:
+	OS.set_environment(AnalysisQueueWorker.FAULT_ENV, "die:0")
+	var plan := AnalysisPlan.create(_classic(), 3000, 1)
+	var pool := AnalysisWorkerPool.new(plan)
+	pool.workers = 1
+	var there := _finish(pool)
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.DONE)
+	_assert_same_counts(there, _one_thread(plan), plan)
+
+
+func test_cancel_stops_the_ranges_fired_here() -> void:
+	var plan := AnalysisPlan.create(_classic(), 10000, 1)
+	var pool := AnalysisWorkerPool.new(plan)
+	pool.workers = 1
+	assert_true(pool.start())
+	var started := pool.process_ids().duplicate()
+	var waited := 0
+	while not pool.firing_here() and waited < 5000:
+		pool.poll()
+		OS.delay_msec(5)
+		waited += 5
+	assert_true(pool.firing_here(), "this process took a range")
+	pool.cancel()
+	assert_false(pool.firing_here(), "no range runs here once cancelled")
+	assert_true(pool.poll(), "done once cancelled")
+	assert_eq(pool.phase, PachinkoAnalysis.Phase.CANCELLED)
+	_assert_all_gone(pool, started)
 
 
 func test_two_workers_count_what_one_thread_counts() -> void:
