@@ -106,6 +106,18 @@ func taken_by(k: int, files_now: PackedStringArray) -> PackedInt32Array:
 	return out
 
 
+## The chunks of `ranges` as a report names them: "7", "4-5", joined by ", ".
+func chunks_text(ranges: PackedInt32Array) -> String:
+	var parts := PackedStringArray()
+	for r in ranges:
+		var chunks := AnalysisQueueWorker.chunks_of(names[r])
+		if chunks.size() == 1:
+			parts.append(str(chunks[0]))
+		else:
+			parts.append("%d-%d" % [chunks[0], chunks[chunks.size() - 1]])
+	return ", ".join(parts)
+
+
 ## Puts range `r`, taken by worker `k`, back in the queue.
 func give_back(k: int, r: int) -> void:
 	DirAccess.rename_absolute(

@@ -239,7 +239,10 @@ func _take_results(files: PackedStringArray) -> void:
 			continue
 		if read[0] == null or (with_open and read[1] == null):
 			_report(
-				"the counts of chunks %s could not be read; running them again" % _chunks_text(r)
+				(
+					"the counts of chunks %s could not be read; running them again"
+					% _queue.chunks_text(PackedInt32Array([r]))
+				)
 			)
 			_queue.retry(r)
 			continue
@@ -266,7 +269,7 @@ func _watch(k: int, files: PackedStringArray) -> void:
 				(
 					(
 						"worker %d (process %d) stopped (exit code %d) without the counts of chunks %s;"
-						% [k, _pids[k], code, _held_text(held)]
+						% [k, _pids[k], code, _queue.chunks_text(held)]
 					)
 					+ " running them again"
 				)
@@ -277,7 +280,7 @@ func _watch(k: int, files: PackedStringArray) -> void:
 			(
 				(
 					"worker %d (process %d) made no progress for %d s on chunks %s;"
-					% [k, _pids[k], roundi(hang_seconds), _held_text(held)]
+					% [k, _pids[k], roundi(hang_seconds), _queue.chunks_text(held)]
 				)
 				+ " killed, running them again"
 			)
@@ -299,20 +302,6 @@ func _held(k: int, files: PackedStringArray) -> PackedInt32Array:
 	return out
 
 
-func _held_text(held: PackedInt32Array) -> String:
-	var parts := PackedStringArray()
-	for r in held:
-		parts.append(_chunks_text(r))
-	return ", ".join(parts)
-
-
-func _chunks_text(r: int) -> String:
-	var chunks := AnalysisQueueWorker.chunks_of(_queue.names[r])
-	if chunks.size() == 1:
-		return str(chunks[0])
-	return "%d-%d" % [chunks[0], chunks[chunks.size() - 1]]
-
-
 func _report(line: String) -> void:
 	incidents.append(line)
 	printerr("analysis: %s" % line)
@@ -325,7 +314,7 @@ func _run_rest_here() -> void:
 		if _counts[r] == null:
 			_here_ranges.append(r)
 			chunks.append_array(AnalysisQueueWorker.chunks_of(_queue.names[r]))
-	_report("no worker left; running chunks %s here" % _held_text(_here_ranges))
+	_report("no worker left; running chunks %s here" % _queue.chunks_text(_here_ranges))
 	_here = PachinkoAnalysis.new(plan)
 	_here.only_chunks = chunks
 	if not _here.start():
