@@ -6,7 +6,8 @@
 # EDITOR_ANALYSIS_IDLE_EDITOR=1 times the run with the editor in its default low-processor mode
 # (it draws what changes, as a designer's editor does) instead of drawing every frame.
 # EDITOR_ANALYSIS_WORKER=1 runs it in a worker process (AnalysisWorker), =0 on the editor's
-# threads (unset: the analysis panel's default); the log line says which.
+# threads (unset: the analysis panel's default); EDITOR_ANALYSIS_POOL=N on N worker processes
+# beside the editor's own share (AnalysisWorkerPool); the log line says which.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT"

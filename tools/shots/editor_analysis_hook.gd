@@ -9,6 +9,8 @@ extends Node
 const ENV := "BOARD_EDITOR_ANALYSIS_SHOT"
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const EditorShotHook := preload("res://tools/shots/editor_shot_hook.gd")
+const BoardEditorPlugin := preload("res://addons/board_editor/plugin.gd")
+const BoardDock := preload("res://addons/board_editor/ui/board_dock.gd")
 ## Longest wait for the analysis, seconds.
 const RUN_LIMIT := 200.0
 
@@ -51,6 +53,11 @@ func _run() -> void:
 	var worker := OS.get_environment("EDITOR_ANALYSIS_WORKER")
 	if not is_maze and worker in ["0", "1"]:
 		dock.analysis.use_worker = worker == "1"
+	# EDITOR_ANALYSIS_POOL=N splits it over N worker processes and the editor itself
+	# (AnalysisWorkerPool); 0 leaves it to use_worker.
+	var pool := OS.get_environment("EDITOR_ANALYSIS_POOL")
+	if not is_maze and pool.is_valid_int():
+		dock.analysis.worker_processes = clampi(int(pool), 0, 64)
 	if is_maze:
 		dock.maze_analysis.start()
 	else:
@@ -64,11 +71,7 @@ func _run() -> void:
 			% [
 				(Time.get_ticks_msec() - started) / 1000.0,
 				" (idle editor)" if idle_editor else "",
-				(
-					" (worker process)"
-					if not is_maze and dock.analysis.use_worker
-					else " (editor threads)"
-				),
+				_run_where(dock, is_maze),
 			]
 		)
 	)
@@ -85,3 +88,12 @@ func _frames(count: int) -> void:
 
 func _is_running(dock: BoardDock, is_maze: bool) -> bool:
 	return dock.maze_analysis.is_running() if is_maze else dock.analysis.is_running()
+
+
+# Where the analysis ran, for the log line.
+func _run_where(dock: BoardDock, is_maze: bool) -> String:
+	if not is_maze and dock.analysis.worker_processes > 0:
+		return " (%d worker processes and the editor)" % dock.analysis.worker_processes
+	if not is_maze and dock.analysis.use_worker:
+		return " (worker process)"
+	return " (editor threads)"
