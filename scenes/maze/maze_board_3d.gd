@@ -59,6 +59,11 @@ var _floor := MeshInstance3D.new()
 var _walls := MeshInstance3D.new()
 var _frame := MeshInstance3D.new()
 var _holes := MeshInstance3D.new()
+## Low graphics' goal and holes (MazeLowMarks): drawn only on Low, over a plain floor.
+var _marks := MeshInstance3D.new()
+var _marks_material := MazeLowMarks.material()
+var _hole_centres := PackedVector2Array()
+var _lost_hole := -1
 var _arrows := MazeFloorArrows.new()
 var _floor_material := ShaderMaterial.new()
 var _wall_material := ShaderMaterial.new()
@@ -68,9 +73,10 @@ var _frame_material := ShaderMaterial.new()
 func _ready() -> void:
 	_floor_material.shader = FLOOR_SHADER
 	_floor_material.set_shader_parameter("shadow_darkness", SHADOW_DARKNESS)
-	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes, _arrows]:
+	for piece: MeshInstance3D in [_floor, _walls, _frame, _holes, _marks, _arrows]:
 		piece.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 		add_child(piece)
+	_marks.material_override = _marks_material
 	_floor.material_override = _floor_material
 	_wall_material.shader = SOLID_SHADER
 	_frame_material.shader = SOLID_SHADER
@@ -144,6 +150,7 @@ func set_low_graphics(low: bool) -> void:
 	var changed := low != low_graphics
 	low_graphics = low
 	_paint_look()
+	_build_marks()
 	if changed and _level != null:
 		_build_walls()
 
@@ -168,6 +175,38 @@ func _build_walls() -> void:
 ## Lights the goal's dish: 0 plain, 1 brightest (the stage fades it after a ball is counted).
 func set_goal_glow(glow: float) -> void:
 	_set_paint("goal_glow", clampf(glow, 0.0, 1.0))
+	_marks_material.set_shader_parameter("goal_glow", clampf(glow, 0.0, 1.0))
+
+
+# Low graphics' goal and holes as their own mesh over the plain floor, in the floor's
+# paint (the holes' tubes are left out: the marks paint them black); the full look paints
+# them in its floor shader and shows the tubes.
+func _build_marks() -> void:
+	_marks.visible = low_graphics and _level != null
+	_holes.visible = not low_graphics
+	if not _marks.visible:
+		return
+	var marks := MazeLowMarks.new()
+	var paint := _floor_material
+	var light: float = paint.get_shader_parameter("floor_gain") * LOW_FLOOR_LIGHT
+	var floor_colour: Color = paint.get_shader_parameter("floor_color")
+	marks.floor_linear = floor_colour.srgb_to_linear() * light
+	marks.floor_linear.a = 1.0
+	var goal_colour: Color = paint.get_shader_parameter("goal_color")
+	var rim_colour: Color = paint.get_shader_parameter("rim_color")
+	var lost_colour: Color = paint.get_shader_parameter("lost_color")
+	marks.goal_linear = goal_colour.srgb_to_linear()
+	marks.rim_linear = rim_colour.srgb_to_linear()
+	marks.lost_linear = lost_colour.srgb_to_linear()
+	marks.goal_line = GOAL_LIP_PX
+	_marks.mesh = marks.mesh(
+		_level.size,
+		_level.goal_center,
+		_level.goal_radius,
+		_hole_centres,
+		_level.hole_radius,
+		_lost_hole
+	)
 
 
 ## Shows or hides the holes.
@@ -182,6 +221,8 @@ func set_hard_mode(hard: bool) -> void:
 	padded.resize(MAX_HOLES)
 	_set_paint("holes", padded)
 	_set_paint("hole_count", centres.size())
+	_hole_centres = centres
+	_lost_hole = -1
 	var rim := Color(0.42, 0.4, 0.38)
 	_holes.mesh = MazeMeshes.holes(_level.size, centres, _level.hole_radius, hole_depth_px(), rim)
 	if _holes.mesh != null:
@@ -189,12 +230,16 @@ func set_hard_mode(hard: bool) -> void:
 		tube.vertex_color_use_as_albedo = true
 		_holes.mesh.surface_set_material(0, tube)
 		_holes.mesh.surface_set_material(1, _plain(Color(0.02, 0.02, 0.02), 1.0, 0.0))
-	set_lost_hole(-1)
+	_set_paint("lost_hole", -1)
+	_build_marks()
 
 
 ## Marks the hole a ball fell into (red rim); -1 for none.
 func set_lost_hole(index: int) -> void:
 	_set_paint("lost_hole", index)
+	if index != _lost_hole:
+		_lost_hole = index
+		_build_marks()
 
 
 ## The floor's material (it paints the floor and lays the shadows on it).
@@ -240,13 +285,14 @@ func outer_box() -> AABB:
 	return AABB(lo, hi - lo)
 
 
-## The mesh parts by name, for tests: "floor", "walls", "frame", "holes".
+## The mesh parts by name, for tests: "floor", "walls", "frame", "holes", "marks".
 func part(part_name: String) -> MeshInstance3D:
 	var parts := {
 		"floor": _floor,
 		"walls": _walls,
 		"frame": _frame,
 		"holes": _holes,
+		"marks": _marks,
 	}
 	return parts.get(part_name)
 

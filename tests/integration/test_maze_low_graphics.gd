@@ -157,3 +157,46 @@ func test_low_paints_the_floor_unshaded_and_keeps_the_goal() -> void:
 	App.settings.set_value("maze_low_graphics", false)
 	App.settings.changed.emit()
 	assert_eq(board.floor_material().shader, MazeBoard3d.FLOOR_SHADER, "the lit floor is back")
+
+
+# The Low floor was still Low's largest cost: each of its pixels worked out the goal's dish
+# and every hole's rim (tools/maze_fps.sh: 41.7 frames per CPU second, 61.5 without the
+# floor; 27.4 with holes, their tubes drawn). Low's floor is one colour now, and the goal and
+# holes are a small mesh of their own above it (MazeLowMarks), with no tubes under them.
+func test_low_floor_is_one_colour_and_the_goal_and_holes_are_their_own_mesh() -> void:
+	var board := _game.stage().board()
+	assert_false(board.part("marks").visible, "the full look paints the goal in its floor")
+	App.settings.set_value("maze_low_graphics", true)
+	App.settings.changed.emit()
+	var code := ""
+	for line in board.floor_material().shader.code.split("\n"):
+		if not line.strip_edges().begins_with("//"):
+			code += line + "\n"
+	for painted in ["goal", "hole", "smoothstep", "distance"]:
+		assert_false(code.contains(painted), "Low's floor works out no '%s'" % painted)
+	var marks := board.part("marks")
+	assert_true(marks.visible, "the goal is drawn on Low")
+	var easy_vertices := _vertex_count(marks)
+	assert_gt(easy_vertices, 0, "the goal's dish has a mesh")
+	# The goal's dish lies inside its lip, round the goal's centre.
+	var box := marks.get_aabb()
+	var level := _game.rules.level
+	var goal_span := (level.goal_radius + MazeBoard3d.GOAL_LIP_PX) * 2.0 * MazeMeshes.UNITS_PER_PX
+	assert_almost_eq(box.size.x, goal_span, 0.01, "the dish reaches to its lip")
+	assert_gt(box.position.z, 0.0, "above the floor")
+	board.set_hard_mode(true)
+	if level.holes.is_empty():
+		return
+	assert_gt(_vertex_count(marks), easy_vertices, "hard mode's holes are drawn on Low")
+	assert_false(board.part("holes").visible, "no hole tubes on Low: the marks paint them")
+	App.settings.set_value("maze_low_graphics", false)
+	App.settings.changed.emit()
+	assert_false(marks.visible, "the full look is back")
+	assert_true(board.part("holes").visible, "with its hole tubes")
+	board.set_hard_mode(false)
+
+
+func _vertex_count(part: MeshInstance3D) -> int:
+	if part.mesh == null:
+		return 0
+	return (part.mesh as ArrayMesh).surface_get_array_len(0)

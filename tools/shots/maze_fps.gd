@@ -145,6 +145,7 @@ func _apply(stage: MazeStage, settings: Dictionary) -> void:
 	}
 	if settings["low"]:
 		parts.erase("table")  # hidden by the setting
+		parts["floor"].append(board.part("marks"))  # Low's goal and holes lie on the floor
 	for part: String in parts:
 		for node: Node3D in parts[part]:
 			node.visible = not settings["hide"].has(part)
