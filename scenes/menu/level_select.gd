@@ -96,6 +96,8 @@ func _unhandled_input(event: InputEvent) -> void:
 		if focused is LevelCard:
 			get_viewport().set_input_as_handled()
 			open_card_menu(focused as LevelCard)
+	elif event.is_action_pressed("ui_accept") and _refuse_locked(_focused_card()):
+		get_viewport().set_input_as_handled()
 	elif event.is_action_pressed("ui_cancel"):
 		# handled first: the scene change takes this screen out of the tree (no viewport then)
 		get_viewport().set_input_as_handled()
@@ -104,6 +106,11 @@ func _unhandled_input(event: InputEvent) -> void:
 		# a mouse click on empty space drops focus: the keys and the pad take it back
 		_focus.take_back()
 		get_viewport().set_input_as_handled()
+
+
+## The footer's status line (empty when hidden).
+func status_text() -> String:
+	return _status.text if _status.visible else ""
 
 
 ## Lists and loads every board file again (shipped and My boards).
@@ -291,6 +298,20 @@ func _update_summary() -> void:
 	var mine := my_slots().size()
 	_my_empty.visible = mine == 0
 	_summary.text = LevelSelectWords.summary_of(kind, cards(), mine, _not_listed)
+
+
+func _focused_card() -> LevelCard:
+	return get_viewport().gui_get_focus_owner() as LevelCard
+
+
+# Enter on a locked maze card: a dull knock and a line saying what opens it (a play trial
+# pressed Enter on one and nothing at all happened). False for any other card.
+func _refuse_locked(card: LevelCard) -> bool:
+	if card == null or not card.locked:
+		return false
+	_say(LevelSelectWords.locked(card.unlock_after), false)
+	($UiSounds as UiSounds).refuse()
+	return true
 
 
 # The footer's status line shows only while it has something to say: an empty one left a
