@@ -210,8 +210,10 @@ func _section(grid: GridContainer, mine: bool) -> CardSection:
 
 
 # The list is as wide as the window's content (drawn bigger on a portrait phone) less the
-# screen's margins.
+# screen's margins. Not while the screen leaves the tree (a test's window closing resizes it).
 func _fit_columns() -> void:
+	if not is_inside_tree():
+		return
 	var margin := $Margin as MarginContainer
 	var zoom := ($Margin/PortraitZoom as PortraitZoom).zoomed_by()
 	var sides := (
@@ -278,6 +280,7 @@ func _on_card_filled() -> void:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
 		_focus.link()
+		_focus.after_reorder()
 	_update_summary()
 
 
