@@ -127,7 +127,7 @@ func _process(delta: float) -> void:
 		# the board eases back to level (as a key let go) and the dip gathers the balls in
 		rules.set_tilt(TiltInput.ramp_toward(rules.tilt, Vector2.ZERO, delta))
 		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
-	if _ghost != null:
+	if _ghost != null and not rules.is_over():  # it stops at the finish, as the clock does
 		_ghost.sync(rules.world.step_count)
 		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
 	_stage.set_tilt(rules.tilt)
