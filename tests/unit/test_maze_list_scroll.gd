@@ -1,6 +1,7 @@
 extends GutTest
 ## The maze's board list opens where the player is: at the top while it loads, then on the
-## card of the board last played (trial 5 saw it open scrolled down while loading).
+## card of the board last played (trial 5 saw it open scrolled down while loading), and
+## without the title screen's falling balls behind its cards.
 
 const LevelSelectScene := preload("res://scenes/menu/level_select.tscn")
 const StretchedWindow := preload("res://tests/integration/stretched_window.gd")
@@ -67,3 +68,15 @@ func test_the_list_opens_on_the_board_last_played() -> void:
 	var view := scroll.get_global_rect()
 	assert_true(view.encloses(card), "and is in view: card %s, list %s" % [card, view])
 
+
+
+# Trial 5 saw the title's falling balls roll over the board list; the list keeps them off.
+func test_the_falling_balls_stay_on_the_title_screen() -> void:
+	var opened: Array = await _open()
+	var screen: LevelSelect = opened[0]
+	var backdrop := screen.get_node("BackdropLayer/Backdrop") as MenuBackdrop
+	assert_false(backdrop.falling_balls, "no balls behind the cards")
+	var menu: Node = (load("res://scenes/menu/main_menu.tscn") as PackedScene).instantiate()
+	add_child_autofree(menu)
+	var title_backdrop := menu.get_node("BackdropLayer/Backdrop") as MenuBackdrop
+	assert_true(title_backdrop.falling_balls, "the title screen keeps them")
