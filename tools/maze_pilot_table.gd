@@ -116,12 +116,20 @@ func _medals_from_record() -> int:
 		var path := MAZE_DIR + file
 		var level := BoardLoader.load_board(path).level
 		var entry: Dictionary = record.get(level.board_id, {}) if level != null else {}
-		if entry.is_empty() or entry["board"] != MedalRule.fingerprint(FileAccess.get_file_as_string(path)):
+		if (
+			entry.is_empty()
+			or entry["board"] != MedalRule.fingerprint(FileAccess.get_file_as_string(path))
+		):
 			printerr("%s: changed since the pilot measured it; play it again" % path)
 			refused += 1
 			continue
 		_write_medals(path, level, float(entry["easy"]), PackedFloat64Array(entry["hard"]))
-		print("%s: easy %s, hard %s" % [file.get_basename(), level.medal_times_easy, level.medal_times_hard])
+		print(
+			(
+				"%s: easy %s, hard %s"
+				% [file.get_basename(), level.medal_times_easy, level.medal_times_hard]
+			)
+		)
 	return 0 if refused == 0 else 1
 
 

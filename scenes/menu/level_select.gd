@@ -313,7 +313,7 @@ func _focused_card() -> LevelCard:
 func _refuse_locked(card: LevelCard) -> bool:
 	if card == null or not card.locked:
 		return false
-	_say(LevelSelectWords.locked(card.unlock_after), false)
+	_say(LevelSelectWords.locked_line(card.unlock_after), false)
 	($UiSounds as UiSounds).refuse()
 	return true
 

@@ -90,7 +90,7 @@ static func menu_keys() -> String:
 
 
 ## What Enter on a locked maze card says: the board whose finish opens it.
-static func locked(unlock_after: String) -> String:
+static func locked_line(unlock_after: String) -> String:
 	if unlock_after.is_empty():
 		return "This board is locked"
 	return "Finish %s to unlock this board" % unlock_after

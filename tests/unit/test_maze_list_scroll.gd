@@ -69,7 +69,6 @@ func test_the_list_opens_on_the_board_last_played() -> void:
 	assert_true(view.encloses(card), "and is in view: card %s, list %s" % [card, view])
 
 
-
 # Trial 5 saw the title's falling balls roll over the board list; the list keeps them off.
 func test_the_falling_balls_stay_on_the_title_screen() -> void:
 	var opened: Array = await _open()

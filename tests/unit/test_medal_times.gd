@@ -90,6 +90,8 @@ func test_hard_gives_clearly_more_time_wherever_there_are_holes() -> void:
 		for i in 3:
 			var easy := level.medal_times_easy[i]
 			var least := ceilf(easy * MedalRule.HARD_MIN_SHARE * 10.0) / 10.0
-			assert_gte(level.medal_times_hard[i], least, "%s medal %d: %.1f s easy" % [path, i, easy])
+			assert_gte(
+				level.medal_times_hard[i], least, "%s medal %d: %.1f s easy" % [path, i, easy]
+			)
 	var made := MedalRule.medal_times(20.0, PackedFloat64Array([20.0, 20.5, 21.0]), true)
 	assert_eq(made[1][0], 36.0, "hard gold 1.2 x easy's 30 s, not the median's 30.8 s")
