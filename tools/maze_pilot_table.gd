@@ -5,7 +5,9 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s res://tools/maze_pilot_table.gd
 ## Options after `--`: `--board=ID` (one board), `--hard-seeds=N` (seeds 1..N in hard mode),
 ## `--write-medals` (store medal times from the pilot's times in each board file by
-## MedalRule, and what the pilot measured in MedalRule.PILOT_RECORD).
+## MedalRule, and what the pilot measured in MedalRule.PILOT_RECORD), `--from-record` (with
+## --write-medals: plays nothing, makes the medal times again from the record by the rule as
+## it is now, for a change to MedalRule; a board changed since it was measured is refused).
 ## Exits 1 when a board fails easy seed 1 or hard wins fall under 80 %.
 
 const MAZE_DIR := "res://levels/maze/"
@@ -17,6 +19,9 @@ func _initialize() -> void:
 	var options := _options()
 	var hard_seeds: int = options.get("hard_seeds", 5)
 	var only: String = options.get("board", "")
+	if options.has("from_record") and options.has("write_medals"):
+		quit(_medals_from_record())
+		return
 	print("| board | easy s1 | hard wins | hard lost balls | closest to a hole | hard times |")
 	print("|---|---|---|---|---|---|")
 	var hard_won := 0
@@ -102,6 +107,32 @@ func _write_medals(path: String, level: BoardLevel, easy: float, hard: PackedFlo
 	file.store_string("{\n%s\n}\n" % ",\n".join(lines))
 
 
+# Medal times again from the pilot's record, playing nothing; 1 when a board changed since.
+func _medals_from_record() -> int:
+	var parsed: Variant = JSON.parse_string(FileAccess.get_file_as_string(MedalRule.PILOT_RECORD))
+	var record: Dictionary = parsed if parsed is Dictionary else {}
+	var refused := 0
+	for file in _board_files():
+		var path := MAZE_DIR + file
+		var level := BoardLoader.load_board(path).level
+		var entry: Dictionary = record.get(level.board_id, {}) if level != null else {}
+		if (
+			entry.is_empty()
+			or entry["board"] != MedalRule.fingerprint(FileAccess.get_file_as_string(path))
+		):
+			printerr("%s: changed since the pilot measured it; play it again" % path)
+			refused += 1
+			continue
+		_write_medals(path, level, float(entry["easy"]), PackedFloat64Array(entry["hard"]))
+		print(
+			(
+				"%s: easy %s, hard %s"
+				% [file.get_basename(), level.medal_times_easy, level.medal_times_hard]
+			)
+		)
+	return 0 if refused == 0 else 1
+
+
 func _board_files() -> PackedStringArray:
 	var files := PackedStringArray()
 	for file in DirAccess.get_files_at(MAZE_DIR):
@@ -120,4 +151,6 @@ func _options() -> Dictionary:
 			options["hard_seeds"] = maxi(1, arg.trim_prefix("--hard-seeds=").to_int())
 		elif arg == "--write-medals":
 			options["write_medals"] = true
+		elif arg == "--from-record":
+			options["from_record"] = true
 	return options

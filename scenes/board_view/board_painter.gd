@@ -70,10 +70,12 @@ static func draw_board(
 
 
 ## Draws the whole board scaled to fit inside `rect` (for thumbnails), keeping its aspect.
-static func draw_thumbnail(canvas: CanvasItem, level: BoardLevel, rect: Rect2) -> void:
+static func draw_thumbnail(
+	canvas: CanvasItem, level: BoardLevel, rect: Rect2, layers: int = Layer.ALL
+) -> void:
 	if level == null:
 		return
-	draw_board(canvas, level, fit_transform(level, rect))
+	draw_board(canvas, level, fit_transform(level, rect), layers)
 
 
 ## Everything the painter draws for `level`, in board pixels: the board's area plus what

@@ -34,6 +34,17 @@ func _watch(node: Node) -> void:
 		(node as Slider).value_changed.connect(_tick)
 
 
+## A dull knock for a press the screen refuses (Enter on a locked board). Returns whether
+## it played.
+func refuse() -> bool:
+	return is_inside_tree() and _bank.play(SoundBank.WALL_THUD, -4.0, 0.8)
+
+
+## How many sounds it has played (the bank's count, for tests).
+func played_count() -> int:
+	return _bank.played_count() if _bank != null else 0
+
+
 func _click() -> void:
 	if is_inside_tree():  # a button that changed the scene has already taken us out
 		_bank.play(SoundBank.UI_CLICK, -6.0)

@@ -120,16 +120,14 @@ func _process(delta: float) -> void:
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()
 	if rules.is_playing():
-		var tilt := mixer.update(delta, keys, accel)
-		rules.set_tilt(tilt)
+		MazeFrameSteps.run(rules, _recorder, delta, mixer, keys, accel)
 		if mixer.source != TiltMixer.Source.JOYSTICK:
-			_joystick.head_offset = TiltInput.joystick_from_tilt(tilt)
-		MazeFrameSteps.run(rules, _recorder, delta)
+			_joystick.head_offset = TiltInput.joystick_from_tilt(rules.tilt)
 	elif rules.state == MazeRules.State.WON:
 		# the board eases back to level (as a key let go) and the dip gathers the balls in
 		rules.set_tilt(TiltInput.ramp_toward(rules.tilt, Vector2.ZERO, delta))
 		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
-	if _ghost != null:
+	if _ghost != null and not rules.is_over():  # it stops at the finish, as the clock does
 		_ghost.sync(rules.world.step_count)
 		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
 	_stage.set_tilt(rules.tilt)

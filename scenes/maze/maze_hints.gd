@@ -6,6 +6,8 @@ extends RefCounted
 
 ## A space that never breaks a line.
 const NBSP := "\u00a0"
+## Between two items of the controls line: plain spaces, wide enough to read as a gap.
+const ITEM_GAP := "    "
 ## What to try on the first boards after First Roll (whose own hint says how tilting works),
 ## in easy mode, in place of the hard-mode invitation (the win card still makes it): a blind
 ## trial found the jump to four balls on boards 3 to 5 steep with no hint of how to go about it.
@@ -18,8 +20,9 @@ const TIPS := {
 
 
 ## The controls line under the side panel. Each "Space reset" item holds together (its
-## spaces don't break) and keeps the " · " after it, so a wrapped line starts with an item,
-## never with a stray "· Escape pause".
+## spaces don't break) and the items are set apart by plain spaces (ITEM_GAP), which a wrapped
+## line drops at its ends: a line never starts with a stray "· Escape pause" (a play trial)
+## nor ends on a dangling "E easy ·" (trial 6), as a dot between items did on one side.
 static func controls() -> String:
 	var items := PackedStringArray()
 	for item: String in [
@@ -29,7 +32,7 @@ static func controls() -> String:
 		"%s pause" % KeyNames.of(&"pause", "the pause key"),
 	]:
 		items.append(item.replace(" ", NBSP))
-	return "Tilt: arrows, WASD or the joystick\n" + (NBSP + NBSP + "·  ").join(items)
+	return "Tilt: arrows, WASD or the joystick\n" + ITEM_GAP.join(items)
 
 
 ## The line in its place before there is a best run to race (as long, so the note keeps its

@@ -3,6 +3,8 @@ extends Control
 ## A board drawn small, fitted into this control's rect, for the level select. The drawing
 ## is the shared BoardPainter's (the same as the editor's and the games'), which marks
 ## special pins, holes and the goal by shape as well as colour. No board draws a cross.
+## A maze's picture leaves out its black holes: a board opens in easy mode, which has none
+## (trial 6 read the holes on the cards as part of the easy game).
 
 const BACK_COLOR := Color(0.06, 0.07, 0.11)
 const FRAME_COLOR := Color(0.33, 0.4, 0.57)
@@ -33,5 +35,12 @@ func _draw() -> void:
 		draw_line(centre - Vector2(arm, arm), centre + Vector2(arm, arm), BROKEN_COLOR, 6.0)
 		draw_line(centre - Vector2(arm, -arm), centre + Vector2(arm, -arm), BROKEN_COLOR, 6.0)
 	else:
-		BoardPainter.draw_thumbnail(self, level, rect.grow(-MARGIN))
+		BoardPainter.draw_thumbnail(self, level, rect.grow(-MARGIN), layers_for(level))
 	draw_rect(rect, FRAME_COLOR, false, 2.0)
+
+
+## The painter's layers a thumbnail of `board` draws: all but a maze's holes (hard mode's).
+static func layers_for(board: BoardLevel) -> int:
+	if board != null and board.is_maze():
+		return BoardPainter.Layer.ALL & ~BoardPainter.Layer.HOLES
+	return BoardPainter.Layer.ALL

@@ -23,6 +23,8 @@ var mine := false
 var level: BoardLevel = null
 ## True when the board is not open yet (maze progression).
 var locked := false
+## The name of the board whose finish opens this one ("" when open, or none says).
+var unlock_after := ""
 
 var _box: VBoxContainer = null
 var _thumbnail: BoardThumbnail = null

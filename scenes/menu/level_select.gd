@@ -63,6 +63,7 @@ func _ready() -> void:
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
 	_say("", false)
 	_hint.text = LevelSelectWords.keys_hint()
+	($BackdropLayer/Backdrop as MenuBackdrop).falling_balls = false  # kept off the cards
 	reload()
 
 
@@ -96,6 +97,8 @@ func _unhandled_input(event: InputEvent) -> void:
 		if focused is LevelCard:
 			get_viewport().set_input_as_handled()
 			open_card_menu(focused as LevelCard)
+	elif event.is_action_pressed("ui_accept") and _refuse_locked(_focused_card()):
+		get_viewport().set_input_as_handled()
 	elif event.is_action_pressed("ui_cancel"):
 		# handled first: the scene change takes this screen out of the tree (no viewport then)
 		get_viewport().set_input_as_handled()
@@ -104,6 +107,11 @@ func _unhandled_input(event: InputEvent) -> void:
 		# a mouse click on empty space drops focus: the keys and the pad take it back
 		_focus.take_back()
 		get_viewport().set_input_as_handled()
+
+
+## The footer's status line (empty when hidden).
+func status_text() -> String:
+	return _status.text if _status.visible else ""
 
 
 ## Lists and loads every board file again (shipped and My boards).
@@ -203,8 +211,10 @@ func _section(grid: GridContainer, mine: bool) -> CardSection:
 
 
 # The list is as wide as the window's content (drawn bigger on a portrait phone) less the
-# screen's margins.
+# screen's margins. Not while the screen leaves the tree (a test's window closing resizes it).
 func _fit_columns() -> void:
+	if not is_inside_tree():
+		return
 	var margin := $Margin as MarginContainer
 	var zoom := ($Margin/PortraitZoom as PortraitZoom).zoomed_by()
 	var sides := (
@@ -271,6 +281,7 @@ func _on_card_filled() -> void:
 		# at once, not only when all have loaded: a locked board never starts meanwhile
 		_show_maze_progress()
 		_focus.link()
+		_focus.after_reorder()
 	_update_summary()
 
 
@@ -291,6 +302,20 @@ func _update_summary() -> void:
 	var mine := my_slots().size()
 	_my_empty.visible = mine == 0
 	_summary.text = LevelSelectWords.summary_of(kind, cards(), mine, _not_listed)
+
+
+func _focused_card() -> LevelCard:
+	return get_viewport().gui_get_focus_owner() as LevelCard
+
+
+# Enter on a locked maze card: a dull knock and a line saying what opens it (a play trial
+# pressed Enter on one and nothing at all happened). False for any other card.
+func _refuse_locked(card: LevelCard) -> bool:
+	if card == null or not card.locked:
+		return false
+	_say(LevelSelectWords.locked_line(card.unlock_after), false)
+	($UiSounds as UiSounds).refuse()
+	return true
 
 
 # The footer's status line shows only while it has something to say: an empty one left a

@@ -101,7 +101,7 @@ func after_listing() -> void:
 	elif not is_instance_valid(_first_focus):
 		var first := _starting_card()
 		_first_focus = first if first != null else _import
-		_first_focus.grab_focus()
+		_focus_quietly(_first_focus)
 	elif _scroll.get_viewport().gui_get_focus_owner() == _first_focus:
 		_move_to_preferred()  # the player has not moved: the board last played, now listed
 
@@ -121,6 +121,19 @@ func after_loading() -> void:
 	_first_focus = viewport.gui_get_focus_owner()
 
 
+## The maze's cards were put in the order they open: the card the focus started on (the
+## player has not moved) is kept in view where it now sits. It had been scrolled to where its
+## file's name first listed it (trial 5 saw the list open scrolled down while loading).
+func after_reorder() -> void:
+	var focused := _scroll.get_viewport().gui_get_focus_owner()
+	if focused == null or focused != _first_focus:
+		return
+	if focused == _shipped_first_card():
+		_scroll.set_deferred("scroll_vertical", 0)
+	else:
+		_scroll.ensure_control_visible.call_deferred(focused)
+
+
 ## Gives the focus to the board last played, else the first playable card (the Back button
 ## when there is no card).
 func take_back() -> void:
@@ -135,6 +148,18 @@ func preferred_card() -> Button:
 		if (card as LevelCard).board_path == preferred_path and not card.disabled:
 			return card
 	return null
+
+
+# Focuses `control` without the list following it there at once: the maze's cards are
+# still being put in order, and the list scrolled to where the file's name first put it
+# (trial 5 saw it open scrolled down while loading). after_reorder brings it into view.
+func _focus_quietly(control: Control) -> void:
+	var follow := _scroll.follow_focus
+	_scroll.follow_focus = false
+	control.grab_focus()
+	_scroll.follow_focus = follow
+	if control != _shipped_first_card():
+		_scroll.ensure_control_visible.call_deferred(control)
 
 
 func _starting_card() -> Button:

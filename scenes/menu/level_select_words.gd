@@ -87,3 +87,10 @@ static func menu_keys() -> String:
 	if names.size() == 2 and names[1].begins_with(names[0] + " /"):
 		names.remove_at(0)  # the X key and the pad's "X / Square" read as one
 	return " / ".join(names) if not names.is_empty() else "Right click"
+
+
+## What Enter on a locked maze card says: the board whose finish opens it.
+static func locked_line(unlock_after: String) -> String:
+	if unlock_after.is_empty():
+		return "This board is locked"
+	return "Finish %s to unlock this board" % unlock_after

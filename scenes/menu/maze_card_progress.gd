@@ -31,5 +31,6 @@ static func apply(cards: Array[Button], lockable: bool = true) -> void:
 		var hard := Medals.medal(card.level, true, App.best_maze_time(board_id, true))
 		var hint := "Locked: finish %s first" % previous
 		card.show_progress(easy, hard, locks[i], hint)
+		card.unlock_after = previous if locks[i] else ""
 		if MazeProgress.rank(board_id) < MazeProgress.ORDER.size():
 			previous = card.level.display_name

@@ -12,6 +12,13 @@ const BOTTOM_COLOR := Color(0.11, 0.08, 0.17)
 const PIN_COLOR := Color(0.85, 0.66, 0.3, 0.35)
 const BALL_COLOR := Color(0.82, 0.86, 0.94, 0.55)
 
+## Whether the silver balls fall. The board lists turn them off: a play trial saw them roll
+## over the cards (between and behind them) and read them as part of the list.
+var falling_balls := true:
+	set(value):
+		falling_balls = value
+		queue_redraw()
+
 var _time := 0.0
 var _rng := RandomNumberGenerator.new()
 var _balls: Array[Vector3] = []  # x, y, fall speed
@@ -50,6 +57,8 @@ func _draw() -> void:
 			x += PIN_SPACING
 		y += PIN_SPACING * 0.866
 		row += 1
+	if not falling_balls:
+		return
 	for ball in _balls:
 		var sway := sin(_time * 1.3 + ball.z) * 18.0
 		var centre := Vector2(ball.x * size.x + sway, ball.y * size.y)

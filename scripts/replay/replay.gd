@@ -41,7 +41,10 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
 ## Maze 3: the dish wakes only the balls it holds (it woke every ball each step), so balls
 ## resting elsewhere fall asleep while one sits in the dish and a run plays differently.
-const RULES_VERSIONS := {"maze": 3, "pachinko": 5}
+## Maze 4: a ball is in the goal once its drawn disc overlaps the dish's rim (its centre
+## within the rim plus a ball's radius): it counts there and the dish pulls it in from there,
+## so a ball grazing the rim is caught and a run can be won a little sooner.
+const RULES_VERSIONS := {"maze": 4, "pachinko": 5}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME

@@ -1,6 +1,6 @@
 extends GutTest
 ## The goal reads: the panel says "In goal 1 / 4" in the same frame the rules count a ball
-## in (its centre inside the goal's radius), the goal's dish lights up then, and the dish
+## in (its drawn disc over the goal's rim), the goal's dish lights up then, and the dish
 ## the floor draws has exactly the rule's centre and radius as its edge.
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
@@ -45,12 +45,13 @@ func test_the_panel_counts_a_ball_the_moment_the_rule_does() -> void:
 	var total := rules.ball_total()
 	assert_eq(_game.goal_count_text(), "In goal  0 / %d" % total)
 	rules.start()
-	_ball_at(rules.level.goal_radius + 1.0)
-	assert_eq(rules.count_in_goal(), 0, "centre just outside the edge: not in")
+	var reach := rules.level.goal_radius + rules.level.ball_radius
+	_ball_at(reach + 1.0)
+	assert_eq(rules.count_in_goal(), 0, "disc just clear of the edge: not in")
 	assert_eq(_game.goal_count_text(), "In goal  0 / %d" % total)
 	assert_eq(_stage().goal_glow(), 0.0, "no light yet")
-	_ball_at(rules.level.goal_radius - 1.0)
-	assert_eq(rules.count_in_goal(), 1, "centre just inside the edge: in")
+	_ball_at(reach - 1.0)
+	assert_eq(rules.count_in_goal(), 1, "disc just over the edge: in")
 	assert_eq(_game.goal_count_text(), "In goal  1 / %d" % total, "said in the same frame")
 	assert_gt(_stage().goal_glow(), 0.9, "the goal lights up")
 	_stage().sync_balls(rules, 1.0)

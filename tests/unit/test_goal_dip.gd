@@ -1,7 +1,8 @@
 extends GutTest
 ## The goal's dish (GoalDip): a ball that rolls in stays in, even with the board tilted fully
-## away, and settles near the middle; outside the rim nothing changes (a play trial saw balls
-## roll across the goal and out again).
+## away, and settles near the middle; a ball drawn over the rim counts and is pulled in;
+## clear of the rim nothing changes (play trials saw balls roll across the goal and out
+## again, and a ball drawn over the rim left uncounted).
 
 
 func _rules() -> MazeRules:
@@ -61,7 +62,9 @@ func test_the_pull_is_toward_the_middle_and_only_inside_the_rim() -> void:
 	var near_rim := dip.pull_at(Vector2(radius - 1.0, 0.0))
 	assert_lt(near_rim.x, 0.0, "toward the middle")
 	assert_gt(-near_rim.x, full_tilt, "harder than the steepest tilt")
-	assert_eq(dip.pull_at(Vector2(radius + 1.0, 0.0)), Vector2.ZERO, "nothing outside the rim")
+	var reach := radius + rules.level.ball_radius
+	assert_lt(dip.pull_at(Vector2(reach - 1.0, 0.0)).x, 0.0, "a disc over the rim is pulled")
+	assert_eq(dip.pull_at(Vector2(reach + 1.0, 0.0)), Vector2.ZERO, "nothing once clear of it")
 	assert_eq(dip.pull_at(Vector2.ZERO), Vector2.ZERO, "nothing at the middle")
 
 
@@ -130,3 +133,55 @@ func test_the_dish_wakes_only_the_balls_it_holds() -> void:
 	for i in range(1, ids.size()):
 		assert_true(rules.world.is_ball_asleep(ids[i]), "ball %d left asleep" % ids[i])
 	assert_false(rules.world.is_ball_asleep(ids[0]), "the held ball is the one it moved")
+
+
+# Cloister with every wall near its goal taken away, so a ball can roll across the dish.
+func _open_goal_level() -> BoardLevel:
+	var level := BoardLoader.load_board("res://levels/maze/cloister.board").level
+	level = level.duplicate(true) as BoardLevel
+	var kept := PackedVector2Array()
+	for i in range(0, level.walls.size() - 1, 2):
+		var a := level.walls[i]
+		var b := level.walls[i + 1]
+		var gap := Geometry2D.get_closest_point_to_segment(level.goal_center, a, b)
+		if gap.distance_to(level.goal_center) > 60.0:
+			kept.append(a)
+			kept.append(b)
+	level.walls = kept
+	return level
+
+
+# Before maze rules 4 the first two ended on the rim or beside it (24 and 29 px from the
+# middle), neither counted nor pulled: the dish only reached a ball whose centre crossed it.
+func test_a_modest_ball_crossing_the_goal_ends_in_it() -> void:
+	var level := _open_goal_level()
+	var reach := level.goal_radius + level.ball_radius
+	for case: Array in [[18.0, 60.0], [24.0, 80.0], [10.0, 90.0]]:
+		var rules := MazeRules.new(level)
+		rules.start()
+		var from := level.goal_center + Vector2(-40.0, case[0])
+		var id := _place(rules, from, Vector2(case[1], 0.0))
+		for i in 240:  # two seconds
+			rules.step()
+		var offset := rules.world.get_ball_position(id) - level.goal_center
+		assert_lt(offset.length(), level.goal_radius, "%s px off the middle at %s px/s: in" % case)
+		assert_eq(rules.balls_in_goal, 1, "%s: counted" % [case])
+		assert_lt(offset.length(), reach)
+
+
+# A ball the player sees over the rim counts at once (before rules 4 one resting 27 px from
+# the middle, its disc 2 px over the 24 px rim, did not).
+func test_a_ball_drawn_over_the_rim_counts() -> void:
+	var level := _open_goal_level()
+	var reach := level.goal_radius + level.ball_radius
+	for side: Vector2 in [Vector2.LEFT, Vector2.UP, Vector2(1.0, 1.0).normalized()]:
+		var rules := MazeRules.new(level)
+		rules.start()
+		_place(rules, level.goal_center + side * (reach - 2.0), Vector2.ZERO)
+		rules.step()
+		assert_eq(rules.balls_in_goal, 1, "%s: drawn over the rim, counted" % side)
+		var clear := MazeRules.new(level)
+		clear.start()
+		_place(clear, level.goal_center + side * (reach + 1.0), Vector2.ZERO)
+		clear.step()
+		assert_eq(clear.balls_in_goal, 0, "%s: its disc clear of the rim, not counted" % side)

@@ -151,3 +151,28 @@ func test_the_autoplay_finishes_the_first_board_in_under_30_s() -> void:
 	var played := MazeAutoplay.run(first, 60.0, 1, false)
 	assert_true(played["won"])
 	assert_lt(float(played["time_to_win"]), 30.0)
+
+
+# Trial 5: Enter on a locked board did nothing. Now it knocks and says what opens it.
+func test_enter_on_a_locked_board_says_what_opens_it() -> void:
+	App.level_select_kind = "maze"
+	var screen := LevelSelectScene.instantiate() as LevelSelect
+	screen.user_root = EMPTY_USER_ROOT
+	add_child_autofree(screen)
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
+	var cards := screen.cards()
+	var locked := cards[1] as LevelCard
+	assert_true(locked.locked, "the second board waits for the first")
+	locked.grab_focus()
+	var sounds := screen.get_node("UiSounds") as UiSounds
+	var before := sounds.played_count()
+	for pressed: bool in [true, false]:
+		var event := InputEventAction.new()
+		event.action = &"ui_accept"
+		event.pressed = pressed
+		Input.parse_input_event(event)
+		await get_tree().process_frame
+	var first := (cards[0] as LevelCard).level.display_name
+	assert_eq(screen.status_text(), "Finish %s to unlock this board" % first)
+	assert_eq(sounds.played_count(), before + 1, "a sound with it")
+	assert_true(is_instance_valid(screen) and screen.is_inside_tree(), "no game started")

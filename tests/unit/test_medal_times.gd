@@ -73,7 +73,25 @@ func test_easy_bronze_stays_in_reach_of_the_pilots_easy_game() -> void:
 	assert_eq(made[0][2], 40.0 * MedalRule.EASY_BRONZE_REACH, "bronze the easy game can reach")
 	# and hard games all that fast would put hard bronze under easy's
 	made = MedalRule.medal_times(40.0, PackedFloat64Array([10.0, 11.0, 12.0]), true)
-	assert_eq(made[1][2], made[0][2], "hard bronze no faster than easy's")
-	assert_eq(made[1][0], Medals.from_pilot_time(11.0)[0], "hard gold from the median still")
+	assert_eq(made[1][2], made[0][2] * MedalRule.HARD_MIN_SHARE, "hard bronze over easy's")
+	made = MedalRule.medal_times(40.0, PackedFloat64Array([10.0, 20.0, 30.0]), true)
+	assert_eq(made[1][0], Medals.from_pilot_time(20.0)[0], "hard gold from the median")
 	made = MedalRule.medal_times(40.0, PackedFloat64Array([10.0]), false)
 	assert_eq(made[1], made[0], "no holes: the same in both modes")
+
+
+# Trial 6: Cloister's hard times were 0.2-0.4 s over easy's, Garden Path's bronze the same in
+# both. On every board with holes each hard medal gives at least HARD_MIN_SHARE times easy's.
+func test_hard_gives_clearly_more_time_wherever_there_are_holes() -> void:
+	for path in _boards():
+		var level := BoardLoader.load_board(path).level
+		if level.holes.is_empty():
+			continue
+		for i in 3:
+			var easy := level.medal_times_easy[i]
+			var least := ceilf(easy * MedalRule.HARD_MIN_SHARE * 10.0) / 10.0
+			assert_gte(
+				level.medal_times_hard[i], least, "%s medal %d: %.1f s easy" % [path, i, easy]
+			)
+	var made := MedalRule.medal_times(20.0, PackedFloat64Array([20.0, 20.5, 21.0]), true)
+	assert_eq(made[1][0], 36.0, "hard gold 1.2 x easy's 30 s, not the median's 30.8 s")

@@ -179,3 +179,31 @@ class TestMazeScreen:
 		assert_string_contains(
 			note, "See-through blue balls replay your best run", "the ghost is named"
 		)
+
+	# Trial 5 saw the ghost roll on behind the finish card: after the win the world settles
+	# the live balls (its steps go on), and the ghost followed those steps. It stops there.
+	func test_the_ghost_stops_at_the_finish() -> void:
+		var rules := _rules()
+		var replay: Replay = ReplayKit.record_live_maze(rules.level, false, 600).finish()
+		ReplayStore.save(replay, ReplayStore.best_maze_path(rules.level.board_id, false))
+		rules.reset()
+		var ghost: GhostRun = _game.ghost()
+		assert_not_null(ghost, "a ghost to watch")
+		_game._start()
+		for frame in 30:
+			_game._process(1.0 / 60.0)
+		var spots := [Vector2(-7, -7), Vector2(7, -7), Vector2(-7, 7), Vector2(7, 7)]
+		var ids := rules.world.get_ids()
+		for i in ids.size():
+			rules.world.set_ball_position(ids[i], rules.level.goal_center + spots[i % 4])
+			rules.world.set_ball_velocity(ids[i], Vector2.ZERO)
+		_game._process(1.0 / 60.0)
+		assert_eq(rules.state, MazeRules.State.WON, "won")
+		var at_finish := ghost.steps()
+		var view: Node3D = _game.ghost_view()
+		var shown: Variant = view.get("shown_positions")
+		for frame in 60:
+			_game._process(1.0 / 60.0)
+		assert_gt(rules.world.step_count, at_finish + 100, "the live balls settle on")
+		assert_eq(ghost.steps(), at_finish, "the ghost stays where the finish found it")
+		assert_eq(view.get("shown_positions"), shown, "and is drawn there")

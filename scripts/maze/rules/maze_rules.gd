@@ -9,7 +9,7 @@ extends RefCounted
 
 ## The game began (the joystick was pressed).
 signal started
-## Every ball is inside the goal circle; `seconds` is the attempt's time.
+## Every ball is in the goal (GoalDip.holds); `seconds` is the attempt's time.
 signal won(seconds: float)
 ## A ball fell into black hole `hole_index` (hard mode); the game is over.
 signal lost(hole_index: int)
@@ -19,7 +19,7 @@ signal game_reset
 signal mode_changed(hard: bool)
 ## A ball hit a wall at `impact_speed` px/s (for sounds).
 signal wall_bumped(impact_speed: float)
-## The number of balls inside the goal circle changed.
+## The number of balls in the goal changed.
 signal goal_count_changed(balls_in_goal: int)
 
 enum State { READY, PLAYING, WON, LOST }
@@ -42,12 +42,10 @@ var elapsed := 0.0
 var tilt := Vector2.ZERO
 ## The hole a ball fell into, or -1.
 var lost_hole := -1
-## Balls whose centre is inside the goal circle now.
+## Balls in the goal now: their disc overlaps the goal's dish (GoalDip.holds).
 var balls_in_goal := 0
 
 var _step_dt := 1.0 / 120.0
-## Balls inside the goal, kept from the world's goal sensor events.
-var _in_goal := 0
 ## The goal's dish, which holds the balls that roll in (GoalDip).
 var _dip: GoalDip
 
@@ -183,10 +181,11 @@ func can_still_win() -> bool:
 	return world != null and state != State.LOST and balls_left() == ball_total()
 
 
-## The balls inside the goal circle (centre within the goal radius, as the seed), as the
-## world's goal sensor reports them.
+## The balls in the goal: each one whose drawn disc overlaps the dish's rim, with no wall
+## between it and the middle (GoalDip.holds). The seed counted a ball's centre inside the
+## rim; a play trial saw a ball drawn over the rim left uncounted and read it as a fault.
 func count_in_goal() -> int:
-	return _in_goal if world != null else 0
+	return _dip.count_inside() if world != null and _dip != null else 0
 
 
 func _rebuild() -> void:
@@ -195,8 +194,8 @@ func _rebuild() -> void:
 	tilt = Vector2.ZERO
 	lost_hole = -1
 	balls_in_goal = 0
-	_in_goal = 0
 	world = null
+	_dip = null
 	if level == null or not level.is_maze():
 		var got := "no board" if level == null else "the pachinko board '%s'" % level.board_id
 		push_error("MazeRules: needs a maze board, got %s" % got)
@@ -213,8 +212,6 @@ func _rebuild() -> void:
 	_dip = GoalDip.new(world, level)  # kept: the world's callable does not hold it
 	world.before_step = _dip.apply
 	world.ball_fell_in_hole.connect(_on_ball_fell_in_hole)
-	world.ball_reached_goal.connect(_on_goal_crossed.bind(1))
-	world.ball_left_goal.connect(_on_goal_crossed.bind(-1))
 	world.wall_hit.connect(_on_wall_hit)
 	_apply_tilt()
 	balls_in_goal = count_in_goal()
@@ -233,10 +230,6 @@ func _after_steps(steps: int) -> void:
 		return
 	elapsed += steps * _step_dt
 	_update_goal()
-
-
-func _on_goal_crossed(_ball_id: int, _goal_index: int, change: int) -> void:
-	_in_goal += change
 
 
 func _update_goal() -> void:
