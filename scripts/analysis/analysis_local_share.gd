@@ -27,13 +27,13 @@ var _stopped := false
 
 
 ## Readies the share for the queue in `folder` (an absolute path) as taker `id` (a number
-## no worker process has), loading `board` (a path BoardLoader takes) for `plan`'s shots,
+## no worker process has), loading `board` (a board file's path, res:// or user://, as the
+## pool hands its workers) for `plan`'s shots,
 ## seed and kind of run. "" or why it cannot work here (then the workers do it all).
 func prepare(plan: AnalysisPlan, board: String, folder: String, id: int, with_open: bool) -> String:
 	var roots := BoardLoader.BOARD_ROOTS.duplicate()
 	roots.append(AnalysisWorker.FOLDER + "/")  # the editor's board, written to the queue
-	var path := AutoplayCli.resolve_board_path(BoardLevel.PACHINKO_NAME, board)
-	var loaded := BoardLoader.load_board(path, roots)
+	var loaded := BoardLoader.load_board(board, roots)
 	if loaded.level == null:
 		return "the board for this process's share: %s" % loaded.error
 	var own := AnalysisPlan.create(loaded.level, plan.shots, plan.rng_seed)
