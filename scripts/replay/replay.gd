@@ -38,10 +38,13 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## (LaunchHandle.JITTER, 2 before), so a recorded handle stream plays differently than
 ## under 4, and the shipped boards' payouts were re-tuned so the best held strength pays far
 ## less than before (tools/power_returns.gd; still more than it costs on every board).
+## Pachinko 6: Fever's and Hanami's attackers moved off the middle to the far side, fed best
+## at handle strengths 75 to 85 (AttackerBands), Fever's left plain pocket gave way to it and
+## the catches pay more, so a run on those boards plays differently than under 5.
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
 ## Maze 3: the dish wakes only the balls it holds (it woke every ball each step), so balls
 ## resting elsewhere fall asleep while one sits in the dish and a run plays differently.
-const RULES_VERSIONS := {"maze": 3, "pachinko": 5}
+const RULES_VERSIONS := {"maze": 3, "pachinko": 6}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME
