@@ -85,6 +85,7 @@ func bind(rules: PachinkoRules) -> void:
 	machine.jackpot_round_ended.connect(_on_round_ended)
 	machine.jackpot_ended.connect(_on_jackpot_ended)
 	rules.ball_won.connect(_on_ball_won)
+	HouseJackpot.offer(rules)
 
 
 ## The factor for the game's clock this frame of `real_delta` seconds: below 1 during a
@@ -109,7 +110,10 @@ func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
 	if jackpot:
 		var level := _rules.level
 		var rounds := JackpotRounds.ROUNDS
-		banner.show_jackpot(level.ring_center, level.ring_radius, rounds, ReachStage.HOLD_JACKPOT)
+		var words := HouseJackpot.WORDS if _rules.bonus.last_spin_was_house() else ""
+		banner.show_jackpot(
+			level.ring_center, level.ring_radius, rounds, ReachStage.HOLD_JACKPOT, words
+		)
 		_play(SoundBank.JACKPOT_FANFARE)
 
 
