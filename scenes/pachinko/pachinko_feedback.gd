@@ -3,7 +3,8 @@ extends RefCounted
 ## What the player sees and hears as the rules report a game: the launcher's lamp, power and
 ## last-shot mark, the cup's count and pour, a pocket's celebration, the gutter's flash, the
 ## pin ticks and every shot's sound, what each band of strengths has paid (lit on the
-## launcher's bar), and during a jackpot's rounds the strengths that feed the attacker. PachinkoGame makes one and binds it to each new game's rules.
+## launcher's bar), and during a jackpot's rounds the strengths that feed the attacker.
+## PachinkoGame makes one and binds it to each new game's rules.
 
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0

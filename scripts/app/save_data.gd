@@ -223,9 +223,14 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 	var paid_back: Dictionary = sections.get(PAID_BACK_SECTION, {})
 	_read_ball_counts(most_won, _pachinko_balls, refused)
 	_read_ball_counts(paid_back, _paid_back_kept, refused)
-	_read_flags(sections.get("pachinko_rules_seen", {}), _rules_seen)
-	_read_flags(sections.get("pachinko_cleared", {}), _cleared)
-	_read_flags(sections.get("pachinko_house_jackpot", {}), _house_given)
+	for flags: Array in [
+		["pachinko_rules_seen", _rules_seen],
+		["pachinko_cleared", _cleared],
+		["pachinko_house_jackpot", _house_given],
+	]:
+		var section: Dictionary = sections.get(flags[0], {})
+		var kept: Dictionary = flags[1]
+		_read_flags(section, kept)
 	var player: Dictionary = sections.get("pachinko_player", {})
 	var handle: Variant = player.get("handle_power", -1.0)
 	var strength: float = handle if handle is float or handle is int else NAN

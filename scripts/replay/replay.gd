@@ -40,10 +40,11 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## (LaunchHandle.JITTER, 2 before), so a recorded handle stream plays differently than
 ## under 4, and the shipped boards' payouts were re-tuned so the best held strength pays far
 ## less than before (tools/power_returns.gd; still more than it costs on every board).
-## Pachinko 6 (also): a new player's first start-pocket hit on a reel machine lands a
-## jackpot (the "house" record). Fever's and Hanami's attackers moved off the middle to the far side, fed best
-## at handle strengths 75 to 85 (AttackerBands), Fever's left plain pocket gave way to it and
-## the catches pay more, so a run on those boards plays differently than under 5.
+## Pachinko 6: Fever's and Hanami's attackers moved off the middle to the far side, fed
+## best at handle strengths 75 to 85 (AttackerBands), Fever's left plain pocket gave way to
+## it and the catches pay more; and a new player's first start-pocket hit on a reel machine
+## lands a jackpot (the "house" record); so a run on those boards plays differently than
+## under 5.
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
 ## Maze 3: the dish wakes only the balls it holds (it woke every ball each step), so balls
 ## resting elsewhere fall asleep while one sits in the dish and a run plays differently.

@@ -268,7 +268,7 @@ class TestCommand:
 		assert_eq(old.rules_version, 1, "files before format 4 were recorded with rules 1")
 		assert_string_contains(
 			old.physics_problem(),
-			"recorded with pachinko rules version 1 and this game plays version 5"
+			"recorded with pachinko rules version 1 and this game plays version 6"
 		)
 		var file := FileAccess.open(TEMP, FileAccess.WRITE)
 		file.store_string(old_text)

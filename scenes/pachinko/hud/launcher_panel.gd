@@ -6,8 +6,9 @@ extends Control
 ## drawback (the game tracks the drag from there); a press on the dial holds the handle
 ## (a stream of balls) and the wheel over it turns it; the loaded-ball light shows whether
 ## a shot is ready. During a jackpot's rounds the strengths that feed the attacker are
-## marked gold on the bar and the dial, and the hint says to aim there. Given more room than its design size both ways (a phone's band under
-## the board), it draws all of it bigger, to fill the room and be a bigger target.
+## marked gold on the bar and the dial, and the hint says to aim there. Given more room
+## than its design size both ways (a phone's band under the board), it draws all of it
+## bigger, to fill the room and be a bigger target.
 
 ## The pointer went down on the flipper at `at` (viewport coordinates).
 signal flipper_pressed(at: Vector2)
