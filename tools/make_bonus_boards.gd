@@ -3,9 +3,10 @@ extends SceneTree
 ## stamps, the bonus tool's AddBonus in mirror mode), checks each with BoardValidator and
 ## saves it with its level scene:
 ##   tools/godot.sh --headless --path . -s res://tools/make_bonus_boards.gd
-## pachinko/fever: rows of pins over a start pocket with a funnel, the attacker below it,
-## two tulips and two plain pockets.
-## pachinko/hanami: a denser field with two start pockets, a high attacker and four tulips.
+## pachinko/fever: rows of pins over a start pocket with a funnel, the attacker low on the
+## far side, two tulips and a plain pocket.
+## pachinko/hanami: a denser field with two start pockets, a high attacker on the far side
+## and four tulips.
 
 const MakeOriginalBoards := preload("res://tools/make_original_boards.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
@@ -53,9 +54,9 @@ func _initialize() -> void:
 	quit(0 if ok else 1)
 
 
-## Fever: the classic layout of a real machine. The start pocket sits in the middle under a
-## funnel of pins; a jackpot opens the wide attacker below it; tulips and plain pockets on
-## the flanks.
+## Fever: the start pocket sits in the middle under a funnel of pins; a jackpot opens the
+## wide attacker low on the far side (FEVER_ATTACKER); tulips on the flanks and a plain
+## pocket on the near side.
 static func make_fever() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := MakeOriginalBoards.pachinko_base(
@@ -93,15 +94,15 @@ static func make_fever() -> BoardLevel:
 	return level
 
 
-## Hanami: a dense field of pins; two start pockets low on either side, the attacker high in
-## the middle where most balls pass, and four tulips.
+## Hanami: a dense field of pins; two start pockets low on either side, the attacker high on
+## the far side (HANAMI_ATTACKER), and four tulips.
 static func make_hanami() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := MakeOriginalBoards.pachinko_base(
 		history,
 		"hanami",
 		"Hanami",
-		"Four tulips and two start pockets: a jackpot lifts the attacker's lid in the middle."
+		"Four tulips and two start pockets: a jackpot lifts the attacker's lid on the left."
 	)
 	level.fascia = "sakura"
 	level.cup_start_balls = HANAMI_CUP
