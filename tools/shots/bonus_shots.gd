@@ -3,12 +3,12 @@ extends RefCounted
 ## landed, two rolling), "pachinko_reach" a reach on centre stage (the last reel slowing),
 ## "pachinko_jackpot" the jackpot moment with the attacker open, "pachinko_round" a later
 ## round of the jackpot, and "pachinko_jackpot_end" the summary card once a jackpot's last
-## round is over (that jackpot given by setting the reels to three alike after 20 s of play,
-## as tools/jackpot_sample.gd does: a natural one is rare), and "pachinko_house" the house's
-## first jackpot on a fresh save ("First jackpot on the house!", HouseJackpot). Each opens the game as the level
-## select does and plays the screen's own rules forward at 60 fps until the moment comes;
-## nothing else is faked (the views that ease in are given the real seconds they would have
-## had on screen).
+## round is over (that jackpot given by setting the reels to three alike after 20 s of
+## play, as tools/jackpot_sample.gd does: a natural one is rare), and "pachinko_house" the
+## house's first jackpot on a fresh save ("First jackpot on the house!", HouseJackpot).
+## Each opens the game as the level select does and plays the screen's own rules forward at
+## 60 fps until the moment comes; nothing else is faked (the views that ease in are given
+## the real seconds they would have had on screen).
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
