@@ -3,9 +3,10 @@ extends SceneTree
 ## stamps, the bonus tool's AddBonus in mirror mode), checks each with BoardValidator and
 ## saves it with its level scene:
 ##   tools/godot.sh --headless --path . -s res://tools/make_bonus_boards.gd
-## pachinko/fever: rows of pins over a start pocket with a funnel, the attacker below it,
-## two tulips and two plain pockets.
-## pachinko/hanami: a denser field with two start pockets, a high attacker and four tulips.
+## pachinko/fever: rows of pins over a start pocket with a funnel, the attacker low on the
+## far side, two tulips and a plain pocket.
+## pachinko/hanami: a denser field with two start pockets, a high attacker on the far side
+## and four tulips.
 
 const MakeOriginalBoards := preload("res://tools/make_original_boards.gd")
 const ActionHistory := preload("res://addons/board_editor/core/action_history.gd")
@@ -29,6 +30,21 @@ const SYMBOLS := 9
 ## (`--sessions=20`: median over 4 minutes, 10th percentile over 90 s).
 const FEVER_CUP := 100
 const HANAMI_CUP := 100
+## The attackers, one each, off the middle on the far (left) side: a jackpot asks for a
+## stronger handle than play between jackpots (the default 60 feeds the start pockets),
+## as a real machine's "shoot right" does. tools/attacker_band.gd: catches a round by power
+## peak at 75 to 85 on both (with the attacker in the middle they peaked near 60 to 75,
+## where the handle already sat, so a jackpot asked nothing of the player).
+const FEVER_ATTACKER := Vector2(240, 500)
+const HANAMI_ATTACKER := Vector2(280, 330)
+## What a catch pays: off the middle an attacker catches fewer balls at uniform power (the
+## analysis' jackpot: 113 -> 74 on Fever, 71 on Hanami at the old 11 and 13), so a catch
+## pays more, for a jackpot of 100 balls or more at uniform power.
+const FEVER_CATCH := 17
+const HANAMI_CATCH := 20
+## Fever's one plain pocket (the left one of the pair gave its place to the attacker): it
+## pays 7, not 6, for the return the lost pocket took with it.
+const FEVER_POCKET_PAYOUT := 7
 
 
 func _initialize() -> void:
@@ -38,9 +54,9 @@ func _initialize() -> void:
 	quit(0 if ok else 1)
 
 
-## Fever: the classic layout of a real machine. The start pocket sits in the middle under a
-## funnel of pins; a jackpot opens the wide attacker below it; tulips and plain pockets on
-## the flanks.
+## Fever: the start pocket sits in the middle under a funnel of pins; a jackpot opens the
+## wide attacker low on the far side (FEVER_ATTACKER); tulips on the flanks and a plain
+## pocket on the near side.
 static func make_fever() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := MakeOriginalBoards.pachinko_base(
@@ -64,28 +80,29 @@ static func make_fever() -> BoardLevel:
 	_bonus(history, level, ROLE.START, Vector2(350, 400), 26.0, 1, {"symbols": SYMBOLS})
 	_funnel(history, level, Vector2(350, 400), 13.0)
 	var attacker := {"open_seconds": 10.0, "open_catches": 10}
-	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 515), 64.0, 11, attacker)
+	_bonus(history, level, ROLE.ATTACKER, FEVER_ATTACKER, 64.0, FEVER_CATCH, attacker, false)
 	# The funnel reaches past the cleared cup: clear round it too so no pin pinches a ball.
-	var funnel_room := Rect2(Vector2(350 - 32 - 44, 515 - 50), Vector2(2 * (32 + 44), 40))
-	MakeOriginalBoards.erase_pins_in(history, level, funnel_room, CENTER)
-	_funnel(history, level, Vector2(350, 515), 32.0)
-	_guard(history, level, Vector2(350, 515) + Vector2(0.0, 38.0 + 11.0))
+	var funnel_room := Rect2(FEVER_ATTACKER + Vector2(-32 - 44, -50), Vector2(2 * (32 + 44), 40))
+	MakeOriginalBoards.erase_pins_in(history, level, funnel_room, FEVER_ATTACKER.x)
+	_funnel(history, level, FEVER_ATTACKER, 32.0, false)
+	_guard(history, level, FEVER_ATTACKER + Vector2(0.0, 38.0 + 11.0))
 	_bonus(history, level, ROLE.TULIP, Vector2(150, 330), 26.0, 3, {})
-	for mouth: Vector2 in [Vector2(240, 480)]:
-		MakeOriginalBoards.erase_pins_in(history, level, _clear_rect(mouth, 24.0, 26.0), CENTER)
-		history.commit(PocketAction.new(level, mouth, 24.0, 26.0, 6, CENTER))
+	# one plain pocket, on the side the handle's middle strengths feed
+	var pocket := Vector2(460, 480)
+	MakeOriginalBoards.erase_pins_in(history, level, _clear_rect(pocket, 24.0, 26.0), pocket.x)
+	history.commit(PocketAction.new(level, pocket, 24.0, 26.0, FEVER_POCKET_PAYOUT))
 	return level
 
 
-## Hanami: a dense field of pins; two start pockets low on either side, the attacker high in
-## the middle where most balls pass, and four tulips.
+## Hanami: a dense field of pins; two start pockets low on either side, the attacker high on
+## the far side (HANAMI_ATTACKER), and four tulips.
 static func make_hanami() -> BoardLevel:
 	var history := ActionHistory.new()
 	var level := MakeOriginalBoards.pachinko_base(
 		history,
 		"hanami",
 		"Hanami",
-		"Four tulips and two start pockets: a jackpot lifts the attacker's lid in the middle."
+		"Four tulips and two start pockets: a jackpot lifts the attacker's lid on the left."
 	)
 	level.fascia = "sakura"
 	level.cup_start_balls = HANAMI_CUP
@@ -95,7 +112,7 @@ static func make_hanami() -> BoardLevel:
 	_clear_reels(history, level)
 	_bonus(history, level, ROLE.START, Vector2(265, 450), 26.0, 1, {"symbols": SYMBOLS})
 	var attacker := {"open_seconds": 15.0, "open_catches": 10}
-	_bonus(history, level, ROLE.ATTACKER, Vector2(350, 330), 60.0, 13, attacker)
+	_bonus(history, level, ROLE.ATTACKER, HANAMI_ATTACKER, 60.0, HANAMI_CATCH, attacker, false)
 	_bonus(history, level, ROLE.TULIP, Vector2(210, 260), 26.0, 5, {})
 	_bonus(history, level, ROLE.TULIP, Vector2(240, 570), 26.0, 2, {})
 	return level
@@ -128,14 +145,16 @@ static func _bonus(
 	mouth: Vector2,
 	width: float,
 	payout: int,
-	extra: Dictionary
+	extra: Dictionary,
+	mirrored := true
 ) -> void:
+	var axis := CENTER if mirrored else mouth.x  # a pocket on its own axis is not doubled
 	var depth := maxf(width * 0.5 + 6.0, 26.0)
-	MakeOriginalBoards.erase_pins_in(history, level, _clear_rect(mouth, width, depth), CENTER)
+	MakeOriginalBoards.erase_pins_in(history, level, _clear_rect(mouth, width, depth), axis)
 	var spec := BonusPocketSpec.of_role(role, mouth, width, depth, payout)
 	for key: String in extra:
 		spec.set(key, extra[key])
-	history.commit(BonusActions.AddBonus.new(level, spec, CENTER))
+	history.commit(BonusActions.AddBonus.new(level, spec, axis))
 
 
 # Room round a cup: a ball's width beside the rim and the wings' reach above the mouth.
@@ -144,15 +163,18 @@ static func _clear_rect(mouth: Vector2, width: float, depth: float) -> Rect2:
 	return Rect2(mouth - Vector2(half, 34.0), Vector2(half * 2.0, depth + 44.0))
 
 
-# Two short slanted rows of pins above `mouth` that steer balls into it.
-static func _funnel(history: ActionHistory, level: BoardLevel, mouth: Vector2, half: float) -> void:
+# Two short slanted rows of pins above `mouth` that steer balls into it (and its mirror image
+# when `mirrored` and off the middle).
+static func _funnel(
+	history: ActionHistory, level: BoardLevel, mouth: Vector2, half: float, mirrored := true
+) -> void:
 	var pins := PackedVector2Array()
 	for side: float in [-1.0, 1.0]:
 		for step in 3:
 			pins.append(mouth + Vector2(side * (half + 10.0 + step * 10.0), -16.0 - step * 10.0))
 	var funnel := BoardItems.empty_set()
 	funnel["pins"] = pins
-	var data := funnel if mouth.x == CENTER else Mirror.mirror_set(funnel, CENTER)
+	var data := funnel if mouth.x == CENTER or not mirrored else Mirror.mirror_set(funnel, CENTER)
 	history.commit(AddItemsAction.new(level, data, "Add pin"))
 
 

@@ -28,6 +28,10 @@ var level_select_kind := BoardLevel.PACHINKO_NAME
 ## one-line reminder instead (the game does; tool scripts, tests and pictures among them,
 ## start with it off so each opens on the full card whatever the user folder holds).
 var skip_seen_rules_cards := true
+## Whether a new player's first start-pocket hit on a reel machine lands the house's jackpot
+## (HouseJackpot; the game does; tool scripts and tests start with it off, so their games
+## spin as the seed says whatever the user folder holds, and a test turns it on to check it).
+var house_jackpots := true
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 
@@ -53,8 +57,10 @@ func _ready() -> void:
 	# they too always get the full rules card, whatever boards an earlier test marked seen.
 	if OS.has_feature("release_tests"):
 		skip_seen_rules_cards = false
+		house_jackpots = false
 	if engine_args.has("-s") or engine_args.has("--script"):
 		skip_seen_rules_cards = false
+		house_jackpots = false
 		load_player_files(SETTINGS_PATH, SAVE_PATH)
 		return
 	var code := CommandLine.run(OS.get_cmdline_user_args())

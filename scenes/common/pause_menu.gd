@@ -2,8 +2,8 @@ class_name PauseMenu
 extends CanvasLayer
 ## The pause menu each game instances. The `pause` action (Esc / Start) opens it and pauses
 ## the whole tree, so the game's simulation stops; it runs itself while paused.
-## Resume, Restart (emits `restart_requested`), Settings, and Other boards (the game's level
-## select).
+## Resume, Restart (emits `restart_requested`), Settings, Other boards (the game's level
+## select) and Main menu (the title screen).
 
 ## The player chose Restart; the game resets its board (the tree is already unpaused).
 signal restart_requested
@@ -19,6 +19,7 @@ var _settings: Control = null
 @onready var _restart: Button = %RestartButton
 @onready var _settings_button: Button = %SettingsButton
 @onready var _menu: Button = %MenuButton
+@onready var _main_menu: Button = %MainMenuButton
 @onready var _hint: Label = %Hint
 
 
@@ -29,6 +30,7 @@ func _ready() -> void:
 	_restart.pressed.connect(_on_restart_pressed)
 	_settings_button.pressed.connect(_open_settings)
 	_menu.pressed.connect(_on_menu_pressed)
+	_main_menu.pressed.connect(_on_main_menu_pressed)
 
 
 func _unhandled_input(event: InputEvent) -> void:
@@ -92,6 +94,11 @@ func _on_restart_pressed() -> void:
 # switch boards and went through three screens to do it.
 func _on_menu_pressed() -> void:
 	App.go_to_level_select(App.level_select_kind)
+
+
+# A play trial found no way back to the title from a game but quitting it.
+func _on_main_menu_pressed() -> void:
+	App.go_to_menu()
 
 
 ## The settings screen opened from this menu (null while it is not open).

@@ -63,7 +63,6 @@ func _ready() -> void:
 	_title.text = "%s: choose a board" % TITLES.get(kind, kind.capitalize())
 	_say("", false)
 	_hint.text = LevelSelectWords.keys_hint()
-	($BackdropLayer/Backdrop as MenuBackdrop).falling_balls = false  # kept off the cards
 	reload()
 
 

@@ -1,7 +1,8 @@
 class_name MenuBackdrop
 extends Control
 ## The menus' animated background: a deep blue gradient, a lattice of brass pins and a few
-## silver balls drifting down through it. Purely decorative; it never takes input.
+## silver balls drifting down through it (not on a screen that sets `falling_balls` off).
+## Purely decorative; it never takes input.
 
 const PIN_SPACING := 64.0
 const PIN_RADIUS := 3.5
@@ -12,12 +13,9 @@ const BOTTOM_COLOR := Color(0.11, 0.08, 0.17)
 const PIN_COLOR := Color(0.85, 0.66, 0.3, 0.35)
 const BALL_COLOR := Color(0.82, 0.86, 0.94, 0.55)
 
-## Whether the silver balls fall. The board lists turn them off: a play trial saw them roll
-## over the cards (between and behind them) and read them as part of the list.
-var falling_balls := true:
-	set(value):
-		falling_balls = value
-		queue_redraw()
+## Balls drift down through the pins. The level select turns them off: a play trial saw
+## them fall between the level cards, which read as balls loose on the list.
+@export var falling_balls := true
 
 var _time := 0.0
 var _rng := RandomNumberGenerator.new()
@@ -27,8 +25,16 @@ var _balls: Array[Vector3] = []  # x, y, fall speed
 func _ready() -> void:
 	mouse_filter = Control.MOUSE_FILTER_IGNORE
 	_rng.seed = 7
+	if not falling_balls:
+		set_process(false)  # the pins and the gradient stand still: drawn once
+		return
 	for i in BALL_COUNT:
 		_balls.append(Vector3(_rng.randf(), _rng.randf(), _rng.randf_range(40.0, 90.0)))
+
+
+## How many balls fall through the pins (none where `falling_balls` is off).
+func ball_count() -> int:
+	return _balls.size()
 
 
 func _process(delta: float) -> void:

@@ -2,8 +2,9 @@ class_name PachinkoFeedback
 extends RefCounted
 ## What the player sees and hears as the rules report a game: the launcher's lamp, power and
 ## last-shot mark, the cup's count and pour, a pocket's celebration, the gutter's flash, the
-## pin ticks and every shot's sound, and what each band of strengths has paid (lit on the
-## launcher's bar). PachinkoGame makes one and binds it to each new game's rules.
+## pin ticks and every shot's sound, what each band of strengths has paid (lit on the
+## launcher's bar), and during a jackpot's rounds the strengths that feed the attacker.
+## PachinkoGame makes one and binds it to each new game's rules.
 
 ## Impact speeds (px/s) mapped onto the pin tick's quietest and loudest.
 const TICK_MIN_SPEED := 40.0
@@ -41,6 +42,9 @@ func bind(rules: PachinkoRules) -> void:
 	rules.ball_returned.connect(_on_ball_returned)
 	rules.world.pin_hit.connect(_on_pin_hit)
 	rules.world.ring_hit.connect(_on_ring_hit)
+	rules.bonus.jackpot_round_started.connect(_on_round_started)
+	rules.bonus.jackpot_ended.connect(_on_jackpot_ended)
+	_launcher.set_aim_band(Vector2i.ZERO)
 	# the balls the game starts with, behind the card too (it read 0 there)
 	_cup.set_count(rules.level.cup_start_balls)
 	_launcher.set_power(0.0, 0.0)
@@ -48,6 +52,16 @@ func bind(rules: PachinkoRules) -> void:
 	_launcher.set_paying(paying)
 	_launcher.set_loaded(false)
 	_launcher.set_handle(false, rules.handle.power)
+
+
+# While a jackpot's rounds last the launcher shows where the attacker is fed (trial 5: once
+# a stream paid there was little to decide).
+func _on_round_started(_round: int, _rounds: int) -> void:
+	_launcher.set_aim_band(AttackerBands.band_of(_rules.level))
+
+
+func _on_jackpot_ended(_paid: int) -> void:
+	_launcher.set_aim_band(Vector2i.ZERO)
 
 
 # The cup shows every ball still to shoot: the cup's and the one in the launcher.

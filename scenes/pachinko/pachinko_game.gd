@@ -128,6 +128,9 @@ func _input(event: InputEvent) -> void:
 func _unhandled_input(event: InputEvent) -> void:
 	if rules == null:
 		return
+	if event.is_action_pressed("game_restart") and _cleared_card.visible:
+		get_viewport().set_input_as_handled()  # the win card's own buttons decide (trial 5)
+		return
 	if event.is_action_pressed("game_restart"):
 		# the same as the pause menu's Restart and as leaving for other boards: the session
 		# so far counts for the board's best (R used to drop it); a session with something
@@ -387,6 +390,7 @@ func _on_goal_reached(won: int) -> void:
 	stats_panel.show_stats(_panel_stats())
 	_controls.let_go(rules)  # a held key or drag fires nothing behind the card
 	cup.catch_up(rules.balls_to_shoot)  # the tray reads the card's count, not one behind
+	_restart_prompt.dismiss()  # no "New game?" over the card
 	_cleared_card.show_cleared(_level, won, _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 

@@ -2,8 +2,9 @@ class_name SaveData
 extends RefCounted
 ## The player's best results per board: fastest maze time in each mode (easy, hard), most
 ## pachinko balls won; the pachinko boards whose full rules card the player has read and
-## those whose goal (PachinkoGoals) they reached; and the pachinko handle's strength, kept
-## across boards and games.
+## those whose goal (PachinkoGoals) they reached, and those where the house's first jackpot
+## was given (HouseJackpot); and the pachinko handle's strength, kept across boards and
+## games.
 ## Kept in a readable INI file (user://save.cfg), read as data: a board id of any text
 ## round-trips, an unusable record is dropped on its own, a damaged file is moved aside
 ## (kept for the player) and the records start empty, a file from a newer version is left
@@ -46,6 +47,8 @@ var _paid_back_kept := {}
 var _rules_seen := {}
 # board id -> true: the pachinko machines whose goal (PachinkoGoals) the player reached
 var _cleared := {}
+# board id -> true: the reel machines where the house's first jackpot has landed
+var _house_given := {}
 # the pachinko handle's strength as the player left it (-1: never turned)
 var _handle_power := -1.0
 var _path := ""
@@ -148,6 +151,19 @@ func note_pachinko_cleared(board_id: String) -> void:
 	save()
 
 
+## True once the house's first jackpot (HouseJackpot) has landed on `board_id`.
+func has_had_house_jackpot(board_id: String) -> bool:
+	return _house_given.has(board_id)
+
+
+## Remembers (and saves) that the house's first jackpot landed on `board_id`: once a board.
+func note_house_jackpot(board_id: String) -> void:
+	if board_id.is_empty() or _house_given.has(board_id):
+		return
+	_house_given[board_id] = true
+	save()
+
+
 ## The pachinko handle's strength as the player last left it, or -1 when never kept.
 func pachinko_handle_power() -> float:
 	return _handle_power
@@ -180,6 +196,7 @@ func save() -> Error:
 		["pachinko_rules_seen", _rules_seen],
 		["pachinko_player", _player_settings()],
 		["pachinko_cleared", _cleared],
+		["pachinko_house_jackpot", _house_given],
 	]
 	var error := IniText.write_file(_path, IniText.format(HEADER % VERSION, sections))
 	if error != OK:
@@ -206,14 +223,14 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 	var paid_back: Dictionary = sections.get(PAID_BACK_SECTION, {})
 	_read_ball_counts(most_won, _pachinko_balls, refused)
 	_read_ball_counts(paid_back, _paid_back_kept, refused)
-	var seen: Dictionary = sections.get("pachinko_rules_seen", {})
-	for board_id: String in seen:
-		if not board_id.is_empty() and seen[board_id] is bool and seen[board_id]:
-			_rules_seen[board_id] = true
-	var cleared: Dictionary = sections.get("pachinko_cleared", {})
-	for board_id: String in cleared:
-		if not board_id.is_empty() and cleared[board_id] is bool and cleared[board_id]:
-			_cleared[board_id] = true
+	for flags: Array in [
+		["pachinko_rules_seen", _rules_seen],
+		["pachinko_cleared", _cleared],
+		["pachinko_house_jackpot", _house_given],
+	]:
+		var section: Dictionary = sections.get(flags[0], {})
+		var kept: Dictionary = flags[1]
+		_read_flags(section, kept)
 	var player: Dictionary = sections.get("pachinko_player", {})
 	var handle: Variant = player.get("handle_power", -1.0)
 	var strength: float = handle if handle is float or handle is int else NAN
@@ -226,6 +243,13 @@ func _read_records(sections: Dictionary, version: int) -> PackedStringArray:
 		refused.resize(MAX_LISTED)
 		refused.append("%d more" % more)
 	return refused
+
+
+# Takes the boards marked true in `section` into `flags`.
+static func _read_flags(section: Dictionary, flags: Dictionary) -> void:
+	for board_id: String in section:
+		if not board_id.is_empty() and section[board_id] is bool and section[board_id]:
+			flags[board_id] = true
 
 
 # Takes every usable count of balls per board from `section` into `counts`.

@@ -15,6 +15,8 @@ extends RefCounted
 ## [br]- `["run", frames, steps]`: pachinko, `frames` frames of `steps` steps each.
 ## [br]- `["start", step]`: pachinko, a game started (the cup was filled) before `step`.
 ## [br]- `["fire", step, power]`: pachinko, a shot with power in hundredths (0..10000).
+## [br]- `["house", step]`: pachinko, the game's next spin is the house's jackpot (a new
+## player's first, BonusMachine.grant_house_jackpot).
 ## Events carry the world's step count when they happened, a check the reader makes.
 
 ## The format this build writes; it reads this one and every older one (format 1 has no
@@ -38,13 +40,18 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## (LaunchHandle.JITTER, 2 before), so a recorded handle stream plays differently than
 ## under 4, and the shipped boards' payouts were re-tuned so the best held strength pays far
 ## less than before (tools/power_returns.gd; still more than it costs on every board).
+## Pachinko 6: Fever's and Hanami's attackers moved off the middle to the far side, fed
+## best at handle strengths 75 to 85 (AttackerBands), Fever's left plain pocket gave way to
+## it and the catches pay more; and a new player's first start-pocket hit on a reel machine
+## lands a jackpot (the "house" record); so a run on those boards plays differently than
+## under 5.
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
 ## Maze 3: the dish wakes only the balls it holds (it woke every ball each step), so balls
 ## resting elsewhere fall asleep while one sits in the dish and a run plays differently.
 ## Maze 4: a ball is in the goal once its drawn disc overlaps the dish's rim (its centre
 ## within the rim plus a ball's radius): it counts there and the dish pulls it in from there,
 ## so a ball grazing the rim is caught and a run can be won a little sooner.
-const RULES_VERSIONS := {"maze": 4, "pachinko": 5}
+const RULES_VERSIONS := {"maze": 4, "pachinko": 6}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME
@@ -54,7 +61,7 @@ const PACHINKO_MODE := "normal"
 ## Record kinds and how many numbers follow the name, per game.
 const RECORD_SIZES := {
 	MAZE: {"tilt": 4, "tilts": 1},
-	PACHINKO: {"run": 2, "start": 1, "fire": 2},
+	PACHINKO: {"run": 2, "start": 1, "fire": 2, "house": 1},
 }
 ## Tilt and power are kept in hundredths by the rules (MazeRules, PachinkoRules).
 const HUNDREDTHS := 100.0

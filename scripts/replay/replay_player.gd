@@ -103,6 +103,8 @@ func _play_next() -> void:
 		diverged = "the game could not start at step %d" % steps()
 	elif kind == "fire" and pachinko.fire(_hundredths(record[2])) < 0:
 		diverged = "the shot at step %d could not be fired" % steps()
+	elif kind == "house":
+		pachinko.bonus.grant_house_jackpot()
 
 
 func _play_frame(record: Array, frame: int) -> void:

@@ -250,7 +250,7 @@ static func _check_record(kind: String, numbers: Array[int], step: int) -> Strin
 		for tilt: int in [numbers[2], numbers[3]]:
 			if absi(tilt) > MAX_TILT:
 				return '"tilt": a tilt must be within ±%d hundredths of a degree' % MAX_TILT
-	if kind == "start" or kind == "fire":
+	if kind == "start" or kind == "fire" or kind == "house":
 		if numbers[0] != step:
 			return '"%s" says step %d but the records before it run %d' % [kind, numbers[0], step]
 	if kind == "fire" and (numbers[1] < 0 or numbers[1] > MAX_POWER):

@@ -172,6 +172,8 @@ func _on_pachinko_started(_cup: int) -> void:
 	if not _recording:
 		return
 	_replay.records.append(["start", _pachinko.world.step_count])
+	if _pachinko.bonus.has_house_jackpot():  # granted before the game began
+		_replay.records.append(["house", _pachinko.world.step_count])
 
 
 func _on_ball_launched(_ball_id: int, power: float, _speed: float) -> void:

@@ -44,3 +44,22 @@ func test_the_backdrop_is_below_every_label_and_button_of_each_menu() -> void:
 					"%s: the backdrop is under %s" % [path.get_file(), menu.get_path_to(node)]
 				)
 		assert_gt(texts, 2, "%s: its words were found" % path.get_file())
+
+
+# Trial 5: the balls still showed between the level cards, falling through the card list.
+# The level select keeps the pins and the gradient but no ball falls there; the title keeps
+# its balls.
+func test_no_ball_falls_on_the_level_select() -> void:
+	var expected := {
+		"res://scenes/menu/main_menu.tscn": true,
+		"res://scenes/menu/level_select.tscn": false,
+	}
+	for path: String in expected:
+		var menu: Control = (load(path) as PackedScene).instantiate()
+		add_child_autofree(menu)
+		await get_tree().process_frame
+		var nodes: Array[Node] = []
+		_walk(menu, nodes)
+		var backdrops := nodes.filter(func(node: Node) -> bool: return node is MenuBackdrop)
+		var balls: int = (backdrops[0] as MenuBackdrop).ball_count()
+		assert_eq(balls > 0, expected[path], "%s: %d falling balls" % [path.get_file(), balls])

@@ -85,7 +85,7 @@ func test_the_pause_menu_reads_at_14_px_on_a_phone() -> void:
 		dim.visible = true  # as when it opens, without pausing the test's tree
 		await wait_process_frames(4)
 		var checked := _assert_readable(dim, "pause menu %s" % size)
-		assert_eq(checked, 6, "the title, four buttons and the hint were looked at")
+		assert_eq(checked, 7, "the title, five buttons and the hint were looked at")
 		var panel := pause.get_node("Dim/Center/Panel") as Control
 		assert_true(
 			dim.get_viewport_rect().encloses(panel.get_global_rect()),

@@ -129,3 +129,31 @@ func test_the_win_cards_buttons_wear_the_games_theme() -> void:
 	var themed := ui_theme.get_stylebox(&"normal", &"Button")
 	for button in card.buttons():
 		assert_eq(button.get_theme_stylebox(&"normal"), themed, button.text)
+
+
+func _restart_key() -> InputEventAction:
+	var event := InputEventAction.new()
+	event.action = &"game_restart"
+	event.pressed = true
+	return event
+
+
+func test_r_asks_nothing_and_keeps_the_game_while_the_win_card_is_up() -> void:
+	# Trial 5: "New game? ..." showed over the MACHINE CLEARED! card; the card's own buttons
+	# decide, so R does nothing, and a question already up when the card comes goes
+	var game := GAME.instantiate() as PachinkoGame
+	add_child_autofree(game)
+	await wait_process_frames(1)
+	var rules := game.rules
+	rules.start_game()
+	_win(rules, 5)  # under the goal: the game goes on
+	game._unhandled_input(_restart_key())
+	assert_true(game.restart_prompt().asking(), "balls won: R asks first")
+	_win(rules, PachinkoGoals.tray_target(rules.level) - rules.balls_to_shoot)
+	assert_true(game.cleared_card().visible)
+	assert_false(game.restart_prompt().asking(), "the question goes under the card")
+	for press in 2:
+		game._unhandled_input(_restart_key())
+	assert_false(game.restart_prompt().asking(), "R asks nothing over the card")
+	assert_eq(game.rules, rules, "and starts no new game")
+	assert_true(game.cleared_card().visible, "the card stays for its buttons")

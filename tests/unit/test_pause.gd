@@ -109,3 +109,26 @@ func test_settings_from_the_pause_menu_show_their_focused_first_row() -> void:
 	var master: Control = settings.get_node("%MasterSlider")
 	assert_eq(settings.get_viewport().gui_get_focus_owner(), master, "Master volume has focus")
 	assert_eq(scroll.scroll_vertical, 0, "and the list is at its top, where that row is")
+
+
+# Trial 5: the pause menu had no way back to the title. "Main menu" comes after "Other
+# boards", and the arrow keys walk the buttons top to bottom in the order shown.
+func test_a_main_menu_button_follows_other_boards_in_the_focus_order() -> void:
+	_press("pause")
+	var main: Button = _menu.get_node_or_null("%MainMenuButton")
+	assert_not_null(main, "a Main menu button")
+	if main == null:
+		return
+	assert_eq(main.text, "Main menu")
+	assert_true(main.pressed.is_connected(_menu._on_main_menu_pressed), "it goes to the title")
+	var order: Array[Button] = [
+		_menu.get_node("%ResumeButton"),
+		_menu.get_node("%RestartButton"),
+		_menu.get_node("%SettingsButton"),
+		_menu.get_node("%MenuButton"),
+		main,
+	]
+	await wait_process_frames(2)  # laid out: the focus walk reads the buttons' places
+	for i in order.size() - 1:
+		var below := order[i].find_valid_focus_neighbor(SIDE_BOTTOM)
+		assert_eq(below, order[i + 1], "Down from %s" % order[i].text)

@@ -3,19 +3,26 @@ extends RefCounted
 ## landed, two rolling), "pachinko_reach" a reach on centre stage (the last reel slowing),
 ## "pachinko_jackpot" the jackpot moment with the attacker open, "pachinko_round" a later
 ## round of the jackpot, and "pachinko_jackpot_end" the summary card once a jackpot's last
-## round is over (that jackpot given by setting the reels to three alike after 20 s of play,
-## as tools/jackpot_sample.gd does: a natural one is rare). Each opens the game as the level
-## select does and plays the screen's own rules forward at 60 fps until the moment comes;
-## nothing else is faked (the views that ease in are given the real seconds they would have
-## had on screen).
+## round is over (that jackpot given by setting the reels to three alike after 20 s of
+## play, as tools/jackpot_sample.gd does: a natural one is rare), and "pachinko_house" the
+## house's first jackpot on a fresh save ("First jackpot on the house!", HouseJackpot).
+## Each opens the game as the level select does and plays the screen's own rules forward at
+## 60 fps until the moment comes; nothing else is faked (the views that ease in are given
+## the real seconds they would have had on screen).
 
 const ShotCapture := preload("res://tools/shots/shot_capture.gd")
 const ScreenOpener := preload("res://tools/shots/screen_opener.gd")
+const SaveData := preload("res://scripts/app/save_data.gd")
 const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARD := "res://levels/pachinko/fever.board"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"pachinko_bonus", "pachinko_reach", "pachinko_jackpot", "pachinko_round", "pachinko_jackpot_end"
+	"pachinko_bonus",
+	"pachinko_reach",
+	"pachinko_jackpot",
+	"pachinko_round",
+	"pachinko_jackpot_end",
+	"pachinko_house",
 ]
 const FRAME := 1.0 / 60.0
 ## Game seconds a shot may play before it gives up (90 minutes: with rules 5's one jackpot in
@@ -29,9 +36,15 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if not shot_name in NAMES:
 		printerr("shots: bonus_shots has no shot '%s'" % shot_name)
 		return ERR_INVALID_PARAMETER
+	var kept_save := App.save_data
+	if shot_name == "pachinko_house":  # a new player: a fresh save (in memory, never written)
+		App.save_data = SaveData.new()
+		App.house_jackpots = true
 	var game := await ScreenOpener.open(
 		tree, App.start_game.bind(BoardLevel.PACHINKO_NAME, BOARD), GAME_SCENE
 	)
+	App.house_jackpots = false
+	App.save_data = kept_save
 	if game == null:
 		return ERR_CANT_OPEN
 	var rules := (game as PachinkoGame).rules
@@ -47,6 +60,7 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		"pachinko_jackpot": _jackpot,
 		"pachinko_round": _third_round,
 		"pachinko_jackpot_end": _jackpot_over,
+		"pachinko_house": _jackpot,
 	}
 	if not _play_until(rules, moments[shot_name]):
 		printerr("shots: %s: the moment did not come in %d s of play" % [shot_name, LIMIT])
@@ -58,7 +72,7 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		if cup.pouring() == 0:
 			break
 		cup._process(FRAME)
-	if shot_name == "pachinko_jackpot":
+	if shot_name == "pachinko_jackpot" or shot_name == "pachinko_house":
 		_play_for(rules, 0.3)  # the banner at its height, balls heading for the open lid
 		# after the reach stage's moment of three alike, as on screen
 		bonus_view.banner._process(1.9)

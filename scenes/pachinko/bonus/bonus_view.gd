@@ -1,12 +1,12 @@
 class_name BonusView
 extends Node
 ## Wires the bonus layer's pictures and sounds to a game: puts the bonus art and the reels
-## into the board view under the balls and the reach stage and the jackpot's moments over
+## and the reach stage into the board view under the balls and the jackpot's moments over
 ## them, answers the BonusMachine's signals (lamps, reel sounds, the reach's rising tone,
 ## the jackpot's fanfare and rounds, tulips opening), and slows the game's clock for a
 ## reach (`time_scale`).
 
-## The z of the reach stage and the jackpot banner: over the balls and the aim's dots.
+## The z of the jackpot banner: over the balls and the aim's dots.
 const MOMENT_Z := 90
 
 var art := BonusArt.new()
@@ -38,10 +38,11 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 	board_view.move_child(reels, under + 1)
 	board_view.add_child(fever)
 	board_view.move_child(fever, under + 2)
+	# the reach's stage under the balls: a trial lost the balls behind it
 	board_view.add_child(stage)
+	board_view.move_child(stage, under + 3)
 	board_view.add_child(banner)
-	# the big moments over everything on the board (balls, the aim's dots drawn after them)
-	stage.z_index = MOMENT_Z
+	# the jackpot's words over everything on the board (balls, the aim's dots drawn after them)
 	banner.z_index = MOMENT_Z + 1
 	(
 		SoundBank
@@ -84,6 +85,7 @@ func bind(rules: PachinkoRules) -> void:
 	machine.jackpot_round_ended.connect(_on_round_ended)
 	machine.jackpot_ended.connect(_on_jackpot_ended)
 	rules.ball_won.connect(_on_ball_won)
+	HouseJackpot.offer(rules)
 
 
 ## The factor for the game's clock this frame of `real_delta` seconds: below 1 during a
@@ -108,7 +110,10 @@ func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
 	if jackpot:
 		var level := _rules.level
 		var rounds := JackpotRounds.ROUNDS
-		banner.show_jackpot(level.ring_center, level.ring_radius, rounds, ReachStage.HOLD_JACKPOT)
+		var words := HouseJackpot.WORDS if _rules.bonus.last_spin_was_house() else ""
+		banner.show_jackpot(
+			level.ring_center, level.ring_radius, rounds, ReachStage.HOLD_JACKPOT, words
+		)
 		_play(SoundBank.JACKPOT_FANFARE)
 
 

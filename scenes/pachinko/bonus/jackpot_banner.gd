@@ -32,10 +32,12 @@ var _lines := PackedStringArray()
 ## Shows the jackpot on a board with its ring at `center`, `radius` px: its first round of
 ## `rounds` opens with it.
 ## The moment waits `delay` seconds (while the reach stage holds the middle).
+## `words`, when given, replace "the attacker is open!" under it.
 func show_jackpot(
-	center: Vector2, radius: float, rounds := JackpotRounds.ROUNDS, delay := 0.0
+	center: Vector2, radius: float, rounds := JackpotRounds.ROUNDS, delay := 0.0, words := ""
 ) -> void:
-	_show(center, radius, "ROUND 1 / %d" % rounds, "the attacker is open!", JACKPOT_SECONDS, true)
+	var subtitle := words if not words.is_empty() else "the attacker is open!"
+	_show(center, radius, "ROUND 1 / %d" % rounds, subtitle, JACKPOT_SECONDS, true)
 	_age = -maxf(delay, 0.0)
 
 

@@ -1,12 +1,12 @@
 class_name ReachStage
 extends Node2D
 ## The reach on centre stage: when the first two reels match, the reels come out of their
-## small window to the board's upper middle, large (each reel's number SYMBOL_FONT_SIZE board
-## pixels, about 81 px tall at 1280 × 720), the last reel slowing down under "REACH!";
-## it stands above the pockets under the middle (a play trial found the old stage, 110 px
-## numbers in the very middle, hid half the board and the pockets being played for);
-## on a jackpot the three numbers flash gold under "JACKPOT!" a moment before the stage
-## goes. Drawn over the balls; play goes on underneath (slowed by ReachSlowMotion).
+## small window, large (each reel's number SYMBOL_FONT_SIZE board pixels, about 81 px
+## tall at 1280 × 720), the last reel slowing down under "REACH!"; it stands in the top
+## part of the board, over the reels' window, like a real machine's screen in its centre
+## piece; on a jackpot the three numbers flash gold under "JACKPOT!" a moment before the
+## stage goes. Drawn under the balls, so a ball crossing it stays in sight; play goes on
+## (slowed by ReachSlowMotion).
 
 ## Seconds the stage takes to come in and to go.
 const GROW_SECONDS := 0.25
@@ -21,8 +21,8 @@ const SYMBOL_FONT_SIZE := 124
 ## "REACH!" / "JACKPOT!" over the reels, font size in board pixels, and the room it takes.
 const TITLE_SIZE := 44
 const TITLE_ROOM := 52.0
-## Room kept between the stage and the pockets under it, board pixels.
-const CLEARANCE := 14.0
+## Room kept between the stage's top corners and the ring, board pixels (the rim's width).
+const RIM_ROOM := 14.0
 ## The stage's frame around the reels' panel.
 const FRAME := 10.0
 
@@ -58,28 +58,17 @@ func stage_rect() -> Rect2:
 	return _rect_at(_center)
 
 
-## Where the stage's centre goes on `level`: on the ring's middle line, as low as it can
-## stand without covering a pocket or bonus pocket under it (CLEARANCE above the highest one
-## in its way; tulips may sit under it: Hanami has no room between its upper tulips), and
-## never so high that its top leaves the ring.
+## Where the stage's centre goes on `level`: on the ring's middle line, as high as the ring
+## lets it stand (its top corners RIM_ROOM inside the ring), over the reels' own window. Play
+## trials found it covering the middle of the board: first 110 px numbers in the very
+## middle, then a stage just above the pockets that still hid the pins the balls fall
+## through; up here the lower board, its pockets and pins stay in view.
 static func place_on(level: BoardLevel) -> Vector2:
 	var middle := level.ring_center
 	var half := _rect_at(Vector2.ZERO)
-	var lowest := middle.y + level.ring_radius * 0.2  # no piece in the way: a little high
-	var pieces: Array[PocketSpec] = []
-	pieces.append_array(level.pockets)
-	for spec in level.bonus_pockets:
-		if spec != null and spec.role != BonusPocketSpec.Role.TULIP:
-			pieces.append(spec)
-	for piece in pieces:
-		if piece == null:
-			continue
-		var reach := half.size.x * 0.5 + piece.width * 0.5 + CLEARANCE
-		var piece_top := piece.position.y - maxf(piece.depth, piece.width) * 0.5 - CLEARANCE
-		if absf(piece.position.x - middle.x) < reach and piece_top > middle.y - level.ring_radius:
-			lowest = minf(lowest, piece_top - half.end.y)
-	var highest := middle.y - level.ring_radius * 0.84 - half.position.y
-	return Vector2(middle.x, maxf(lowest, highest))
+	var reach := level.ring_radius - RIM_ROOM
+	var rise := sqrt(maxf(reach * reach - pow(half.size.x * 0.5, 2.0), 0.0))
+	return Vector2(middle.x, middle.y - rise - half.position.y)
 
 
 static func _rect_at(middle: Vector2) -> Rect2:

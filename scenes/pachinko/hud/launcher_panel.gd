@@ -5,8 +5,10 @@ extends Control
 ## which turns 0–20° with the power, and the handle's dial. A press on the lever starts a
 ## drawback (the game tracks the drag from there); a press on the dial holds the handle
 ## (a stream of balls) and the wheel over it turns it; the loaded-ball light shows whether
-## a shot is ready. Given more room than its design size both ways (a phone's band under
-## the board), it draws all of it bigger, to fill the room and be a bigger target.
+## a shot is ready. During a jackpot's rounds the strengths that feed the attacker are
+## marked gold on the bar and the dial, and the hint says to aim there. Given more room
+## than its design size both ways (a phone's band under the board), it draws all of it
+## bigger, to fill the room and be a bigger target.
 
 ## The pointer went down on the flipper at `at` (viewport coordinates).
 signal flipper_pressed(at: Vector2)
@@ -36,6 +38,8 @@ const PAYING_WIDTH := 12.0
 ## bar, POWER under it, HANDLE under the dial), which is the smallest text of the panel.
 const STATUS_FONT_SIZE := 16
 const SMALL_FONT_SIZE := 14
+## The attacker's band while the rounds last (bar and dial) and its line.
+const AIM := Color("ffb43a")
 
 var _power := 0.0
 var _degrees := 0.0
@@ -46,6 +50,7 @@ var _handle_held := false
 var _handle_power := 0.0
 var _last_shot := -1.0
 var _paying: PayingStrengths
+var _aim_band := Vector2i.ZERO
 
 
 ## Shows the current drawback.
@@ -66,6 +71,25 @@ func set_last_shot(power: float) -> void:
 func set_paying(paying: PayingStrengths) -> void:
 	_paying = paying
 	queue_redraw()
+
+
+## Marks the strengths `band` (lowest, highest) that feed the attacker on the bar and the
+## dial and swaps the hint for "Aim for the attacker: power 75–85"; Vector2i.ZERO clears it.
+func set_aim_band(band: Vector2i) -> void:
+	_aim_band = band
+	queue_redraw()
+
+
+## The band marked now (Vector2i.ZERO: none).
+func aim_band() -> Vector2i:
+	return _aim_band
+
+
+## The words beside the bar: the aim while a band is marked, else the controls hint.
+func hint_text() -> String:
+	if _aim_band == Vector2i.ZERO:
+		return _hint
+	return AttackerBands.words(_aim_band).replace(": ", ":\n")
 
 
 ## The power the bar marks as the last single shot's (-1 before the first).
@@ -195,7 +219,8 @@ func _draw() -> void:
 		STATUS_FONT_SIZE,
 		Color("e9e3ff")
 	)
-	var lines := _hint.split("\n")
+	var lines := hint_text().split("\n")
+	var aiming := _aim_band != Vector2i.ZERO
 	for i in lines.size():
 		draw_string(
 			font,
@@ -203,8 +228,8 @@ func _draw() -> void:
 			lines[i],
 			HORIZONTAL_ALIGNMENT_LEFT,
 			-1,
-			SMALL_FONT_SIZE,
-			Color("b8aee0")
+			STATUS_FONT_SIZE if aiming else SMALL_FONT_SIZE,
+			AIM if aiming else Color("b8aee0")
 		)
 
 
@@ -216,6 +241,12 @@ func _draw_bar() -> void:
 	draw_rect(filled, RED)
 	draw_rect(Rect2(filled.position, Vector2(6, filled.size.y)), RED.lightened(0.35))
 	_draw_paying()
+	if _aim_band != Vector2i.ZERO:
+		# the attacker's strengths: a gold bracket down the bar's left side
+		var low := BAR.end.y - BAR.size.y * _aim_band.x / 100.0
+		var high := BAR.end.y - BAR.size.y * _aim_band.y / 100.0
+		draw_rect(Rect2(BAR.position.x, high, 8.0, low - high), AIM)
+		draw_rect(Rect2(BAR.position.x, high, BAR.size.x, low - high), AIM, false, 2.0)
 	if _last_shot >= 0.0:
 		# the last shot's mark: a gold line across the bar and a notch pointing at it
 		var y := BAR.end.y - BAR.size.y * clampf(_last_shot / 100.0, 0.0, 1.0)
@@ -305,6 +336,10 @@ func _draw_dial() -> void:
 	var share := clampf(_handle_power / 100.0, 0.0, 1.0)
 	draw_arc(DIAL_CENTER, DIAL_RADIUS - 5.0, start, start + sweep, 40, Color("3b3548"), 5.0, true)
 	draw_arc(DIAL_CENTER, DIAL_RADIUS - 5.0, start, start + sweep * share, 40, lit, 5.0, true)
+	if _aim_band != Vector2i.ZERO:
+		var from := start + sweep * _aim_band.x / 100.0
+		var to := start + sweep * _aim_band.y / 100.0
+		draw_arc(DIAL_CENTER, DIAL_RADIUS + 1.0, from, to, 12, AIM, 4.0, true)
 	var pointer := Vector2.from_angle(start + sweep * share)
 	draw_line(DIAL_CENTER, DIAL_CENTER + pointer * (DIAL_RADIUS - 9.0), Color("eef1f7"), 4.0, true)
 	draw_circle(DIAL_CENTER, 7.0, RED.darkened(0.1) if not _handle_held else STREAM.darkened(0.2))

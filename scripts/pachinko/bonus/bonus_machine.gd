@@ -31,6 +31,8 @@ signal jackpot_round_started(round: int, rounds: int)
 signal jackpot_round_ended(round: int, rounds: int)
 ## A jackpot's last round ended; it paid `paid` balls.
 signal jackpot_ended(paid: int)
+## The spin the house gave (grant_house_jackpot) ended on its jackpot.
+signal house_jackpot_landed
 
 ## Spins a start pocket can hold while the reels are busy (real machines show four lamps).
 const MAX_QUEUED := 4
@@ -55,6 +57,10 @@ var reels := ReelSet.new()
 var _level: BoardLevel
 var _world: BallWorld
 var _rng := RandomNumberGenerator.new()
+## The next spin lands a jackpot (grant_house_jackpot), drawn as a reach like any other.
+var _house_next := false
+## The last spin finished was the house's.
+var _house_last := false
 ## Symbol counts of the spins waiting, oldest first.
 var _queued := PackedInt32Array()
 ## Per bonus pocket: 1 while open (attacker lid up, tulip wings spread).
@@ -156,6 +162,23 @@ func advance(delta: float) -> void:
 		_start_spin()
 
 
+## Makes the next spin a jackpot: a new player's first start-pocket hit on a reel machine
+## (HouseJackpot decides when; the analysis and the autoplay never ask for one, so their
+## figures leave it out). A replay records it (ReplayRecorder) and asks again.
+func grant_house_jackpot() -> void:
+	_house_next = true
+
+
+## True while the next spin is the house's jackpot.
+func has_house_jackpot() -> bool:
+	return _house_next
+
+
+## True when the spin that finished last was the house's jackpot.
+func last_spin_was_house() -> bool:
+	return _house_last
+
+
 ## True while bonus pocket `index` is open.
 func is_open(index: int) -> bool:
 	return index >= 0 and index < _open.size() and _open[index] != 0
@@ -210,6 +233,10 @@ func _start_spin() -> void:
 	var landing := PackedInt32Array()
 	for reel in ReelSet.REELS:
 		landing.append(_rng.randi_range(0, symbol_count - 1))
+	_house_last = _house_next
+	if _house_next:  # the house's jackpot: three of the first reel's symbol
+		_house_next = false
+		landing.fill(landing[0])
 	reel_spins += 1
 	reels.start(landing, symbol_count)
 	reels_started.emit(symbol_count)
@@ -229,6 +256,8 @@ func _on_spin_finished(result: PackedInt32Array, jackpot: bool) -> void:
 		if _has_attacker():
 			rounds.begin()
 	reels_finished.emit(result, jackpot)
+	if _house_last and jackpot:
+		house_jackpot_landed.emit()
 
 
 func _on_round_started(round_number: int, count: int) -> void:
