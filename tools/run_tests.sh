@@ -23,10 +23,15 @@ echo "== GDScript warnings (every script loaded with -d; physics/world only note
 tools/warnings_check.sh || extra_failed=$((extra_failed + 1))
 
 echo "== GUT (tests/unit, tests/integration)"
-tools/godot.sh --headless --path . -s addons/gut/gut_cmdln.gd \
+# A user folder of its own, as the release template's run has (tools/release_tests.sh): the
+# player's settings and saves on this machine (a frame counter left on, a board style picked
+# while playing) must not change what the tests see, and the tests must not touch them.
+gut_home=$(mktemp -d)
+XDG_DATA_HOME=$gut_home tools/godot.sh --headless --path . -s addons/gut/gut_cmdln.gd \
 	-gdir=res://tests/unit,res://tests/integration -ginclude_subdirs -gprefix=test_ \
 	-gsuffix=.gd -gjunit_xml_file="res://$XML" -glog=1 -gexit 2>&1 | tee "$LOG"
 gut_status=${PIPESTATUS[0]}
+rm -rf "$gut_home"
 
 # Godot prints script errors on stderr without failing GUT: count them as failures.
 script_errors=$(grep -cE '^(SCRIPT ERROR|Parse Error|ERROR: .*(Parse|parse|script))' "$LOG" || true)
