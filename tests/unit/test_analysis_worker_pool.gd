@@ -37,6 +37,18 @@ func _assert_same_counts(there: AnalysisTally, here: AnalysisTally, plan: Analys
 	assert_eq(there.ball_steps, here.ball_steps, "the same ball-steps")
 
 
+# The pool's bonus-open counts are the ones one thread gives with the bonus pockets open.
+func _assert_same_open_counts(pool: AnalysisWorkerPool, plan: AnalysisPlan) -> void:
+	var open_plan := plan.with_bonus_open()
+	open_plan.threads = 1
+	var open_here := PachinkoAnalysis.new(open_plan).run()
+	var open_there := pool.open_tally()
+	assert_not_null(open_there, "the bonus-open counts came back")
+	if open_there != null:
+		assert_eq(open_there.band_pocket_hits, open_here.band_pocket_hits)
+		assert_eq(open_there.ball_steps, open_here.ball_steps)
+
+
 # True when process `pid` is gone (on systems with /proc; elsewhere: assumed).
 func _gone(pid: int) -> bool:
 	if not DirAccess.dir_exists_absolute("/proc/self"):
@@ -93,14 +105,7 @@ func test_ranges_fired_here_match_with_the_bonus_open_counts() -> void:
 	var there := _finish(pool)
 	assert_gt(pool.ranges_here(), 0, "this process fired some ranges itself")
 	_assert_same_counts(there, _one_thread(plan), plan)
-	var open_plan := plan.with_bonus_open()
-	open_plan.threads = 1
-	var open_here := PachinkoAnalysis.new(open_plan).run()
-	var open_there := pool.open_tally()
-	assert_not_null(open_there, "the bonus-open counts came back")
-	if open_there != null:
-		assert_eq(open_there.band_pocket_hits, open_here.band_pocket_hits)
-		assert_eq(open_there.ball_steps, open_here.ball_steps)
+	_assert_same_open_counts(pool, plan)
 
 
 func test_a_dying_worker_beside_this_process_loses_no_range() -> void:
@@ -151,14 +156,7 @@ func test_the_bonus_open_counts_match_too() -> void:
 	pool.with_open = true
 	var there := _finish(pool)
 	_assert_same_counts(there, _one_thread(plan), plan)
-	var open_plan := plan.with_bonus_open()
-	open_plan.threads = 1
-	var open_here := PachinkoAnalysis.new(open_plan).run()
-	var open_there := pool.open_tally()
-	assert_not_null(open_there, "the bonus-open counts came back")
-	if open_there != null:
-		assert_eq(open_there.band_pocket_hits, open_here.band_pocket_hits)
-		assert_eq(open_there.ball_steps, open_here.ball_steps)
+	_assert_same_open_counts(pool, plan)
 
 
 func test_a_dying_worker_is_reported_and_its_chunks_run_again() -> void:
