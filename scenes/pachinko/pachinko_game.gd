@@ -373,6 +373,7 @@ func _on_game_ended(summary: Dictionary) -> void:
 func _panel_stats() -> Dictionary:
 	var stats := rules.stats(true)
 	stats["won"] = _record.won()
+	stats["start_balls"] = _level.cup_start_balls  # the panel's "Up 45 this game"
 	return stats
 
 
