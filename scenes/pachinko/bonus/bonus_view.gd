@@ -75,6 +75,7 @@ func bind(rules: PachinkoRules) -> void:
 	art.bind(rules.level, machine)
 	reels.bind(rules.level, machine)
 	fever.bind(rules.level, machine)
+	fever.stage = stage  # its caption keeps clear of the big reels
 	stage.bind(rules.level, machine)
 	slow_motion.reset()
 	machine.start_caught.connect(_on_start_caught)
