@@ -21,12 +21,13 @@ const REEL_LAMPS_ROOM := 18.0
 ## The plaque's z: over the balls, the aim dots and the board's other layers.
 const PLAQUE_Z := 100
 
-var _level: BoardLevel
-var _machine: BonusMachine
-var _clock := 0.0
 ## The reach stage (the big reels): while it is up the plaque goes under it (trial 6: the
 ## ROUND pill across the 5 5 5 just won). Null: none.
 var stage: ReachStage
+
+var _level: BoardLevel
+var _machine: BonusMachine
+var _clock := 0.0
 ## The caption's plaque: a layer of its own, drawn over everything on the board.
 var _plaque := Node2D.new()
 
@@ -70,8 +71,8 @@ func caption() -> String:
 
 ## The caption's plaque on the board (board pixels): centred on the ring's middle line, just
 ## under the reels' window and its lamps on a board with reels (a play trial found it over
-## the reels' digits), under the reach stage while it shows, else as high as it fits inside the ring's inner edge. Empty while no
-## caption shows.
+## the reels' digits), under the reach stage while it shows, else as high as it fits inside
+## the ring's inner edge. Empty while no caption shows.
 func caption_rect() -> Rect2:
 	var text := caption()
 	if text.is_empty():

@@ -47,7 +47,8 @@ func shown_text() -> String:
 static func _won_line(stats: Dictionary, best: int) -> String:
 	var won: int = stats.get("won", -1)
 	if won >= 0 and stats.has("start_balls"):
-		var change: int = stats.get("balls_left", 0) - int(stats["start_balls"])
+		var start: int = stats["start_balls"]
+		var change: int = stats.get("balls_left", 0) - start
 		var now := "[b]Up[/b] %d" % change if change >= 0 else "[b]Down[/b] %d" % -change
 		return "%s this game · [b]best game[/b] %d" % [now, maxi(best, won)]
 	if won >= 0:
