@@ -57,8 +57,9 @@ func _on_cup_changed(_count: int) -> void:
 	_say_when_free()
 
 
+# Deferred: after the jackpot's own views have had the moment (the card then clears them).
 func _on_settled(_paid: int) -> void:
-	_say_when_free()
+	_say_when_free.call_deferred()
 
 
 func _say_when_free() -> void:

@@ -39,7 +39,9 @@ func test_the_goal_reached_mid_jackpot_waits_for_its_end_and_last_ball() -> void
 	assert_false(rounds.active(), "its last round is over")
 	assert_false(game.cleared_card().visible, "a ball of its last round is still falling")
 	rules.ball_drained.emit(ball)
+	await wait_process_frames(1)
 	assert_true(game.cleared_card().visible, "the jackpot is over: the card comes up")
+	assert_false(game.bonus_view().banner.is_showing(), "no JACKPOT OVER card under it")
 	assert_string_contains(game.cleared_card().text(), "CLEARED")
 
 

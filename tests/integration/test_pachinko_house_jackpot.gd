@@ -117,3 +117,21 @@ func test_a_replay_of_the_house_jackpot_plays_back_the_same() -> void:
 	var without: Replay = ReplayReader.read(text.replace('["house",0]\n', ""))["replay"]
 	var lost := ReplayPlayer.new(without, level).play_to_end()
 	assert_false(lost["match"], "without the record the game goes another way")
+
+
+func test_a_house_jackpot_granted_mid_game_is_recorded_at_its_step() -> void:
+	var level := BoardLoader.load_board("res://levels/pachinko/fever.board").level
+	var rules := PachinkoRules.new(level, 7)
+	var recorder := ReplayRecorder.new()
+	recorder.attach_pachinko(rules, 7)
+	rules.start_game()
+	for i in 30:
+		rules.advance(FRAME)
+		recorder.note_frame()
+	rules.bonus.grant_house_jackpot()  # as HouseJackpot does at its shot
+	var step := rules.world.step_count
+	for i in 30:
+		rules.advance(FRAME)
+		recorder.note_frame()
+	var text := ReplayWriter.write(recorder.finish())
+	assert_string_contains(text, '["house",%d]' % step, "the grant at its step")
