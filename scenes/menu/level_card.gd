@@ -60,7 +60,10 @@ func setup(result: BoardLoadResult, best: String) -> void:
 		if not file_line.is_empty():
 			_add_label(file_line, &"HintLabel")
 		_add_label(best if not best.is_empty() else _no_best_yet(shown), &"HintLabel")
-		_long_text = _long(_add_label(shown.description, &"HintLabel", true), 3)
+		# a pachinko card has no medal row: its thumbnail gives up a fourth line (trial 6 saw
+		# Windmills' text cut at "…and a ×1…")
+		var lines := 4 if shown.is_pachinko() else 3
+		_long_text = _long(_add_label(shown.description, &"HintLabel", true), lines)
 		tooltip_text = shown.description
 	else:
 		_add_label("⚠ " + board_path.get_file(), &"WarningLabel")

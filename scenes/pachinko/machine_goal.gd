@@ -2,7 +2,8 @@ class_name MachineGoal
 extends RefCounted
 ## A machine's goal in play: watches one game's tray (CupPeak) against the board's target
 ## (PachinkoGoals), says once when it is reached, and remembers the clear for the board's
-## card; `next_board_path` is where Next machine goes.
+## card; `next_board_path` is where Next machine goes. Reached mid-jackpot it waits until
+## the jackpot has settled (JackpotSettle): the card must not freeze a jackpot (trial 6).
 
 ## The tray reached the goal this game, `won` balls above the start.
 signal reached(won: int)
@@ -10,6 +11,9 @@ signal reached(won: int)
 var _level: BoardLevel
 var _peak: CupPeak
 var _done := false
+# Reached while a jackpot was on: said once it settles.
+var _waiting := false
+var _settle: JackpotSettle
 
 
 ## Watches the game `rules` on `level`, its tray followed by `peak`.
@@ -18,6 +22,8 @@ func _init(level: BoardLevel, rules: PachinkoRules, peak: CupPeak) -> void:
 	_peak = peak
 	# connected after the peak's own: it has seen this change first
 	rules.cup_changed.connect(_on_cup_changed)
+	_settle = JackpotSettle.new(rules)
+	_settle.settled.connect(_on_settled)
 
 
 ## True once this game reached the goal.
@@ -47,4 +53,17 @@ func _on_cup_changed(_count: int) -> void:
 		return
 	_done = true
 	App.note_pachinko_cleared(_level.board_id)
+	_waiting = true
+	_say_when_free()
+
+
+# Deferred: after the jackpot's own views have had the moment (the card then clears them).
+func _on_settled(_paid: int) -> void:
+	_say_when_free.call_deferred()
+
+
+func _say_when_free() -> void:
+	if not _waiting or _settle.busy():
+		return
+	_waiting = false
 	reached.emit(_peak.won())

@@ -2,8 +2,7 @@ class_name PachinkoGame
 extends Control
 ## The pachinko game screen: loads the board the App picked, owns the PachinkoRules, draws
 ## the board on the left and the cup, launcher and stats on the right, and turns input
-## actions, mouse and touch into calls on the rules. Sounds and effects follow the rules'
-## signals.
+## actions, mouse and touch into calls on the rules. Sounds and effects follow its signals.
 
 ## The panel's designed width (PachinkoHudLayout).
 const HUD_WIDTH := PachinkoHudLayout.HUD_WIDTH
@@ -373,6 +372,7 @@ func _on_game_ended(summary: Dictionary) -> void:
 func _panel_stats() -> Dictionary:
 	var stats := rules.stats(true)
 	stats["won"] = _record.won()
+	stats["start_balls"] = _level.cup_start_balls  # the panel's "Up 45 this game"
 	return stats
 
 
@@ -391,6 +391,7 @@ func _on_goal_reached(won: int) -> void:
 	_controls.let_go(rules)  # a held key or drag fires nothing behind the card
 	cup.catch_up(rules.balls_to_shoot)  # the tray reads the card's count, not one behind
 	_restart_prompt.dismiss()  # no "New game?" over the card
+	_bonus_view.banner.dismiss()  # nor a jackpot's summary card under it
 	_cleared_card.show_cleared(_level, won, _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 

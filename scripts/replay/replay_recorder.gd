@@ -43,6 +43,7 @@ func attach_pachinko(rules: PachinkoRules, rng_seed: int) -> void:
 		push_error("ReplayRecorder: attach to fresh PachinkoRules, before any step")
 	rules.game_started.connect(_on_pachinko_started)
 	rules.ball_launched.connect(_on_ball_launched)
+	rules.bonus.house_jackpot_granted.connect(_on_house_granted)
 	_recording = true
 
 
@@ -173,6 +174,12 @@ func _on_pachinko_started(_cup: int) -> void:
 		return
 	_replay.records.append(["start", _pachinko.world.step_count])
 	if _pachinko.bonus.has_house_jackpot():  # granted before the game began
+		_replay.records.append(["house", _pachinko.world.step_count])
+
+
+# The house's jackpot granted mid-game (HouseJackpot, after its shots): the step it came at.
+func _on_house_granted() -> void:
+	if _recording:
 		_replay.records.append(["house", _pachinko.world.step_count])
 
 

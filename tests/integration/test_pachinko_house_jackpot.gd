@@ -1,8 +1,8 @@
 extends GutTest
-## A jackpot a new player meets early (trial 5: a 20-minute first session could see none):
-## on a reel machine the first start-pocket hit of a fresh save's first game is a reach
-## that lands a jackpot, said "First jackpot on the house!", once a board; a replay of that
-## game plays it back.
+## A safety net for a new player (trial 5: a 20-minute first session could see no jackpot;
+## trial 6: given on the first hit, at shot 18, it read as a giveaway): on a reel machine a
+## game's first start-pocket hit after HOUSE_AFTER_SHOTS shots with no jackpot is a reach
+## that lands one, said "First jackpot on the house!", once a board; a replay plays it back.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
 const SaveData := preload("res://scripts/app/save_data.gd")
@@ -43,15 +43,32 @@ func _first_hit(rules: PachinkoRules) -> void:
 			return
 
 
-func test_the_first_hit_of_a_fresh_save_lands_a_jackpot_and_the_next_game_does_not() -> void:
+func test_the_first_hit_of_a_fresh_save_is_no_gift() -> void:
 	var game := GAME.instantiate() as PachinkoGame
 	add_child_autofree(game)
 	await wait_process_frames(1)
 	var rules := game.rules
 	rules.start_game()
-	assert_false(App.save_data.has_had_house_jackpot(FEVER))
+	assert_gte(rules.fire(60.0), 0)
 	_first_hit(rules)
-	assert_eq(rules.bonus.jackpots, 1, "the first hit is a jackpot")
+	assert_false(rules.bonus.last_spin_was_house(), "shot 1: the seed decides, no gift")
+	assert_false(App.save_data.has_had_house_jackpot(FEVER))
+
+
+func test_the_first_hit_after_the_shots_lands_a_jackpot_and_the_next_game_does_not() -> void:
+	var game := GAME.instantiate() as PachinkoGame
+	add_child_autofree(game)
+	await wait_process_frames(1)
+	var rules := game.rules
+	rules.start_game()
+	rules.ledger.shots = HouseJackpot.HOUSE_AFTER_SHOTS - 2
+	assert_gte(rules.fire(60.0), 0)
+	assert_false(rules.bonus.has_house_jackpot(), "one shot short: none yet")
+	rules.run_steps(30)  # the launcher loads its next ball
+	assert_gte(rules.fire(60.0), 0)
+	assert_true(rules.bonus.has_house_jackpot(), "the threshold's shot grants it")
+	_first_hit(rules)
+	assert_eq(rules.bonus.jackpots, 1, "the next hit is a jackpot")
 	assert_true(rules.bonus.rounds.active(), "its rounds are on")
 	assert_string_contains(game.bonus_view().banner.caption(), "First jackpot on the house!")
 	assert_true(App.save_data.has_had_house_jackpot(FEVER), "kept in the save file")
@@ -59,9 +76,9 @@ func test_the_first_hit_of_a_fresh_save_lands_a_jackpot_and_the_next_game_does_n
 	var second := game.rules
 	assert_ne(second, rules)
 	second.start_game()
-	assert_false(second.bonus.has_house_jackpot(), "the second game spins as the seed says")
-	_first_hit(second)
-	assert_false(second.bonus.last_spin_was_house())
+	second.ledger.shots = HouseJackpot.HOUSE_AFTER_SHOTS
+	assert_gte(second.fire(60.0), 0)
+	assert_false(second.bonus.has_house_jackpot(), "once a board: the next game has none")
 
 
 func test_a_board_without_reels_and_the_tools_get_none() -> void:
@@ -100,3 +117,21 @@ func test_a_replay_of_the_house_jackpot_plays_back_the_same() -> void:
 	var without: Replay = ReplayReader.read(text.replace('["house",0]\n', ""))["replay"]
 	var lost := ReplayPlayer.new(without, level).play_to_end()
 	assert_false(lost["match"], "without the record the game goes another way")
+
+
+func test_a_house_jackpot_granted_mid_game_is_recorded_at_its_step() -> void:
+	var level := BoardLoader.load_board("res://levels/pachinko/fever.board").level
+	var rules := PachinkoRules.new(level, 7)
+	var recorder := ReplayRecorder.new()
+	recorder.attach_pachinko(rules, 7)
+	rules.start_game()
+	for i in 30:
+		rules.advance(FRAME)
+		recorder.note_frame()
+	rules.bonus.grant_house_jackpot()  # as HouseJackpot does at its shot
+	var step := rules.world.step_count
+	for i in 30:
+		rules.advance(FRAME)
+		recorder.note_frame()
+	var text := ReplayWriter.write(recorder.finish())
+	assert_string_contains(text, '["house",%d]' % step, "the grant at its step")

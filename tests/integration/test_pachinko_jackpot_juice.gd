@@ -111,9 +111,15 @@ func test_a_jackpot_sweeps_light_across_the_pins() -> void:
 		juice.sweep._process(FRAME)
 	assert_gt(juice.sweep.band_reach(), before, "the band moves")
 	var swept := 0
+	# trial 6: every swept pin drew the full halo, a column of big white discs on Hanami
+	var pin_sized := 2.0 * maxf(game.rules.level.pin_radius + 0.8, 2.2)
+	var widest := 0.0
 	for pin in lights.pin_count():
 		if lights.glow_of(pin) > 0.0 and lights.tint_of(pin) == LightSweep.PIN_TINT:
 			swept += 1
+			widest = maxf(widest, lights.flash_reach_of(pin))
+	assert_gt(widest, 0.0)
+	assert_lte(widest, pin_sized, "the sweep's flash stays pin-sized")
 	assert_gt(swept, lights.pin_count() / 5, "pins behind the band flashed")
 	for frame in int(LightSweep.SECONDS / FRAME) + 2:
 		juice.sweep._process(FRAME)

@@ -148,6 +148,12 @@ func test_the_panel_shows_this_sessions_balls_and_the_best_session() -> void:
 	playing["won"] = 50
 	assert_string_contains("\n".join(StatsPanel.lines_for(playing, 42)), "best game[/b] 50")
 	assert_string_contains(first, "Most won[/b] none yet")
+	# trial 6: "Won 405" (the peak) stayed while the tray fell; the line says the tray now
+	var now := {"won": 405, "balls_left": 477, "start_balls": 100}
+	assert_string_contains("\n".join(StatsPanel.lines_for(now, 300)), "Up[/b] 377 this game")
+	assert_string_contains("\n".join(StatsPanel.lines_for(now, 300)), "best game[/b] 405")
+	now["balls_left"] = 93
+	assert_string_contains("\n".join(StatsPanel.lines_for(now, 300)), "Down[/b] 7 this game")
 	# a play trial's column overflowed (the launcher's POWER cut off) as the lines wrapped
 	for line in StatsPanel.lines_for({"shots": 243, "payouts": 387, "pocket_hits": [97]}, 1200):
 		var plain := line.replace("[b]", "").replace("[/b]", "")

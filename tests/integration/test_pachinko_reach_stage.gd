@@ -194,3 +194,24 @@ func test_the_round_caption_sits_inside_the_ring_over_everything_and_hides_the_a
 	game._process(FRAME)
 	aim._process(1.0)
 	assert_true(aim.is_showing(), "back once it has gone")
+
+
+# Trial 6: "ROUND 1 / 10  10s  10 to catch" lay across the big reels' 3 3 3 just won.
+func test_the_round_caption_keeps_clear_of_the_reels_and_the_reach_stage() -> void:
+	for path in ["res://levels/pachinko/fever.board", "res://levels/pachinko/hanami.board"]:
+		App.request_board("pachinko", path)
+		var game := (load(GAME) as PackedScene).instantiate() as PachinkoGame
+		add_child_autofree(game)
+		await wait_process_frames(1)
+		var rules := game.rules
+		rules.start_game()
+		rules.bonus.rounds.begin()
+		var view := game.bonus_view()
+		var window := BonusGeometry.reel_window(rules.level)
+		assert_false(view.fever.caption_rect().intersects(window), "%s: off the reels" % path)
+		view.stage._shown = 1.0  # the stage holding the jackpot's three alike
+		var plaque := view.fever.caption_rect()
+		var big := view.stage.stage_rect()
+		assert_false(plaque.intersects(big), "%s: plaque %s, stage %s" % [path, plaque, big])
+		var inner := rules.level.ring_radius - FeverGlow.RING_WIDTH
+		assert_lt(plaque.end.distance_to(rules.level.ring_center), inner, "inside the ring")

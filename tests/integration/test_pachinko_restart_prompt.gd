@@ -71,6 +71,21 @@ func test_r_asks_first_when_the_cup_has_shots_in_and_a_second_r_starts_over() ->
 	assert_false(game.restart_prompt().asking())
 
 
+func test_a_second_r_a_few_seconds_later_still_starts_over() -> void:
+	# Trial 6: R, then R again "about 2 s later" (16 FPS, screenshots between): the question
+	# had gone at 4 s, so the second R asked again and nothing reset
+	var game := _playing_game()
+	await wait_process_frames(1)
+	var first := game.rules
+	_stream(first, 4.0)
+	game._unhandled_input(_action(&"game_restart"))
+	assert_true(game.restart_prompt().asking())
+	await wait_seconds(5.5)
+	assert_true(game.restart_prompt().asking(), "still asking after 5.5 s")
+	game._unhandled_input(_action(&"game_restart"))
+	assert_ne(game.rules, first, "the second R starts over")
+
+
 func test_esc_answers_keep_playing() -> void:
 	var game := _playing_game()
 	await wait_process_frames(1)

@@ -5,7 +5,8 @@ extends RefCounted
 ## round of the jackpot, and "pachinko_jackpot_end" the summary card once a jackpot's last
 ## round is over (that jackpot given by setting the reels to three alike after 20 s of
 ## play, as tools/jackpot_sample.gd does: a natural one is rare), and "pachinko_house" the
-## house's first jackpot on a fresh save ("First jackpot on the house!", HouseJackpot).
+## house's jackpot on a fresh save after its shots ("First jackpot on the house!",
+## HouseJackpot).
 ## Each opens the game as the level select does and plays the screen's own rules forward at
 ## 60 fps until the moment comes; nothing else is faked (the views that ease in are given
 ## the real seconds they would have had on screen).
@@ -51,6 +52,8 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	if rules == null:
 		printerr("shots: %s: the game has no rules (the board did not load)" % shot_name)
 		return ERR_CANT_OPEN
+	if shot_name == "pachinko_house":  # the house waits for its shots: these are fired
+		rules.ledger.shots = HouseJackpot.HOUSE_AFTER_SHOTS
 	if shot_name == "pachinko_jackpot_end":
 		_play_for(rules, 20.0)
 		rules.bonus.reels.start(PackedInt32Array([2, 2, 2]), 9)
@@ -80,6 +83,11 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		_play_for(rules, 0.5)
 		bonus_view.banner._process(0.5)
 	if shot_name == "pachinko_jackpot_end":
+		# the summary waits for the last round's balls to land (JackpotSettle)
+		for frame in 1200:
+			if bonus_view.banner.caption().contains("JACKPOT OVER"):
+				break
+			rules.advance(FRAME)
 		bonus_view.banner._process(1.0)
 	if shot_name == "pachinko_reach":
 		bonus_view.stage._process(1.0)  # the stage has come in

@@ -13,6 +13,9 @@ const FADE_SECONDS := 0.6
 const HALO_REACH := 4.5
 ## The ring a flash throws out grows to this multiple of the pin's radius as it fades.
 const RING_REACH := 5.5
+## A flash that stays pin-sized (the jackpot's sweep, a whole column at once: trial 6 saw
+## the full halo on every pin as big white discs), as a multiple of the pin's radius.
+const PIN_SIZED_REACH := 1.6
 ## Impact speed (px/s) that lights a pin fully; softer taps glow less (never under MIN_GLOW).
 const FULL_SPEED := 320.0
 const MIN_GLOW := 0.35
@@ -31,6 +34,8 @@ var _pins := PackedVector2Array()
 var _pocket_of := PackedInt32Array()
 var _glow := PackedFloat32Array()
 var _tint := PackedColorArray()
+# Each lit pin's flash reach (a multiple of _radius): HALO_REACH, or PIN_SIZED_REACH.
+var _reach := PackedFloat32Array()
 var _lit := PackedInt32Array()
 var _radius := 2.2
 var _machine: BonusMachine
@@ -60,6 +65,8 @@ func bind(rules: PachinkoRules) -> void:
 	_glow.resize(_pins.size())
 	_tint = PackedColorArray()
 	_tint.resize(_pins.size())
+	_reach = PackedFloat32Array()
+	_reach.resize(_pins.size())
 	_lit = PackedInt32Array()
 	rules.world.pin_hit.connect(_on_pin_hit)
 	queue_redraw()
@@ -90,14 +97,23 @@ func pin_position(index: int) -> Vector2:
 	return _pins[index]
 
 
+## How far pin `index`'s flash reaches from its centre now, in board pixels (0: unlit).
+func flash_reach_of(index: int) -> float:
+	if glow_of(index) <= 0.0:
+		return 0.0
+	return _radius * (_reach[index] if _reach[index] < HALO_REACH else flash_reach() / _radius)
+
+
 ## Lights pin `index` in `tint` at `strength` (0..1); a brighter glow already there stays.
-func light(index: int, tint: Color, strength: float) -> void:
+## `pin_sized`: no halo or ring, a pin-sized flash (many pins lit at once).
+func light(index: int, tint: Color, strength: float, pin_sized := false) -> void:
 	if index < 0 or index >= _glow.size() or strength <= 0.0:
 		return
 	if _glow[index] <= 0.0:
 		_lit.append(index)
 	if strength >= _glow[index]:
 		_tint[index] = tint
+		_reach[index] = PIN_SIZED_REACH if pin_sized else HALO_REACH
 	_glow[index] = maxf(_glow[index], minf(strength, 1.0))
 	set_process(true)
 
@@ -131,6 +147,9 @@ func _draw() -> void:
 		var a := _glow[pin]
 		var p := _pins[pin]
 		var tint := _tint[pin]
+		if _reach[pin] < HALO_REACH:
+			draw_circle(p, _radius * _reach[pin], Color(CORE.lerp(tint, 0.3), 0.85 * a))
+			continue
 		draw_circle(p, _radius * HALO_REACH, Color(tint, 0.4 * a))
 		draw_circle(p, _radius * 2.6, Color(tint, 0.8 * a))
 		draw_circle(p, _radius * 1.4, Color(CORE.lerp(tint, 0.2), a))

@@ -20,6 +20,8 @@ var _sounds: SoundBank
 var _rules: PachinkoRules
 ## The rounds of the jackpot under way that are over (its summary says how many were played).
 var _rounds_played := 0
+# When a jackpot's last balls have landed: its summary counts them (trial 6).
+var _settle: JackpotSettle
 
 
 ## The sound bank the bonus moments play on (a test may hand it a recording one).
@@ -73,6 +75,7 @@ func bind(rules: PachinkoRules) -> void:
 	art.bind(rules.level, machine)
 	reels.bind(rules.level, machine)
 	fever.bind(rules.level, machine)
+	fever.stage = stage  # its caption keeps clear of the big reels
 	stage.bind(rules.level, machine)
 	slow_motion.reset()
 	machine.start_caught.connect(_on_start_caught)
@@ -83,7 +86,8 @@ func bind(rules: PachinkoRules) -> void:
 	machine.reach_started.connect(_on_reach_started)
 	machine.jackpot_round_started.connect(_on_round_started)
 	machine.jackpot_round_ended.connect(_on_round_ended)
-	machine.jackpot_ended.connect(_on_jackpot_ended)
+	_settle = JackpotSettle.new(rules)
+	_settle.settled.connect(_on_jackpot_settled)
 	rules.ball_won.connect(_on_ball_won)
 	HouseJackpot.offer(rules)
 
@@ -131,7 +135,8 @@ func _on_round_started(round_number: int, rounds: int) -> void:
 		_play(SoundBank.ROUND_BELL, -4.0)
 
 
-func _on_jackpot_ended(paid: int) -> void:
+# The summary waits for the last round's balls: its count then is the panel's.
+func _on_jackpot_settled(paid: int) -> void:
 	var session_paid: int = _rules.stats(true).get("game_payouts", 0)
 	var level := _rules.level
 	banner.show_summary(level.ring_center, level.ring_radius, _rounds_played, paid, session_paid)

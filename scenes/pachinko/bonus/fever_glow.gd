@@ -21,6 +21,10 @@ const REEL_LAMPS_ROOM := 18.0
 ## The plaque's z: over the balls, the aim dots and the board's other layers.
 const PLAQUE_Z := 100
 
+## The reach stage (the big reels): while it is up the plaque goes under it (trial 6: the
+## ROUND pill across the 5 5 5 just won). Null: none.
+var stage: ReachStage
+
 var _level: BoardLevel
 var _machine: BonusMachine
 var _clock := 0.0
@@ -67,8 +71,8 @@ func caption() -> String:
 
 ## The caption's plaque on the board (board pixels): centred on the ring's middle line, just
 ## under the reels' window and its lamps on a board with reels (a play trial found it over
-## the reels' digits), else as high as it fits inside the ring's inner edge. Empty while no
-## caption shows.
+## the reels' digits), under the reach stage while it shows, else as high as it fits inside
+## the ring's inner edge. Empty while no caption shows.
 func caption_rect() -> Rect2:
 	var text := caption()
 	if text.is_empty():
@@ -80,6 +84,8 @@ func caption_rect() -> Rect2:
 	var centre := _level.ring_center
 	if BonusGeometry.has_reels(_level):
 		var under := BonusGeometry.reel_window(_level).end.y + REEL_LAMPS_ROOM
+		if stage != null and stage.is_on_stage():
+			under = maxf(under, stage.stage_rect().end.y + REEL_LAMPS_ROOM)
 		return Rect2(Vector2(centre.x - size.x * 0.5, under), size)
 	var inner := _level.ring_radius - RING_WIDTH - RIM_ROOM
 	# the top corners are the ones nearest the rim: they sit on the inner circle

@@ -1,26 +1,38 @@
 class_name HouseJackpot
 extends RefCounted
-## A jackpot a new player meets early: on a reel machine (Fever, Hanami) the first
-## start-pocket hit of the player's first game there is a reach that lands a jackpot, once
-## a board (kept in the save file when it lands). Trial 5: at 2.1 to 2.8 jackpots an hour a
-## 20-minute first session could end without ever seeing the game's peak.
+## A safety net for a new player: on a reel machine (Fever, Hanami), once a game has fired
+## HOUSE_AFTER_SHOTS shots without a jackpot, its next start-pocket hit is a reach that lands
+## one, once a board (kept in the save file when it lands). Trial 5: at 2.1 to 2.8 jackpots
+## an hour a 20-minute first session could end without ever seeing the game's peak; trial 6:
+## given on the first hit (shot 18) it read as a giveaway, so it waits for the unlucky.
 ## It is a gift outside the machine's odds: the analysis and the autoplay never ask for it,
 ## so their return and jackpot figures leave it out (a jackpot pays about 110 balls at
 ## uniform power, once a board in a player's life).
 
 ## What the jackpot's banner says under "ROUND 1 / 10" when the house gave it.
 const WORDS := "First jackpot on the house!"
+## Shots a game fires without a jackpot before the house steps in: about 3 to 5 minutes of
+## streaming, so a 20-minute first session still meets it and a lucky one never does.
+const HOUSE_AFTER_SHOTS := 150
 
 
-## Grants `rules`' next spin a jackpot when the player has not had the house's yet on its
-## board (and the game gives them: App.house_jackpots); true when it did. The save file
-## keeps it once it lands, so a game that ends before its first start-pocket hit keeps it.
+## Watches `rules`' game when the player has not had the house's jackpot yet on its board
+## (and the game gives them: App.house_jackpots): its shot HOUSE_AFTER_SHOTS, with no jackpot
+## yet, grants the next spin a jackpot. True when it watches. The save file keeps it once it
+## lands, so a game that ends before it lands keeps the offer.
 static func offer(rules: PachinkoRules) -> bool:
 	var board_id := rules.level.board_id
 	if not App.house_jackpots or not BonusGeometry.has_reels(rules.level):
 		return false
 	if App.save_data.has_had_house_jackpot(board_id):
 		return false
-	rules.bonus.grant_house_jackpot()
+	rules.ball_launched.connect(_on_shot.bind(rules))
 	rules.bonus.house_jackpot_landed.connect(App.save_data.note_house_jackpot.bind(board_id))
 	return true
+
+
+static func _on_shot(_id: int, _power: float, _speed: float, rules: PachinkoRules) -> void:
+	var bonus := rules.bonus
+	if rules.ledger.shots < HOUSE_AFTER_SHOTS or bonus.jackpots > 0 or bonus.has_house_jackpot():
+		return
+	bonus.grant_house_jackpot()  # its jackpot ends the watch: bonus.jackpots > 0

@@ -69,6 +69,15 @@ func show_summary(
 	)
 
 
+## Takes the moment off the screen at once (the MACHINE CLEARED! card came up over it).
+func dismiss() -> void:
+	_age = 0.0
+	_seconds = 0.0
+	_lines = PackedStringArray()
+	set_process(false)
+	queue_redraw()
+
+
 ## True while a moment is on screen.
 func is_showing() -> bool:
 	return _age < _seconds

@@ -41,9 +41,16 @@ func shown_text() -> String:
 	return _text.get_parsed_text() if _text != null else ""
 
 
-# This game's balls won ("won" in the stats, the game's screen adds it) beside the best
-# game's, which this game raises as it passes it; without it, the best alone.
-static func _won_line(won: int, best: int) -> String:
+# The tray now against its start ("start_balls" in the stats, the game's screen adds it)
+# beside the best game's most won ("won": this game's peak raises it as it passes it);
+# without them, the best alone. Trial 6 read "Won" (this game's peak) as the tray's gain.
+static func _won_line(stats: Dictionary, best: int) -> String:
+	var won: int = stats.get("won", -1)
+	if won >= 0 and stats.has("start_balls"):
+		var start: int = stats["start_balls"]
+		var change: int = stats.get("balls_left", 0) - start
+		var now := "[b]Up[/b] %d" % change if change >= 0 else "[b]Down[/b] %d" % -change
+		return "%s this game · [b]best game[/b] %d" % [now, maxi(best, won)]
 	if won >= 0:
 		return "[b]Won[/b] %d · [b]best game[/b] %d" % [won, maxi(best, won)]
 	return "[b]Most won[/b] %d balls" % best if best >= 0 else "[b]Most won[/b] none yet"
@@ -64,14 +71,13 @@ static func lines_for(
 	var shots: int = stats.get("shots", 0)
 	var paid: int = stats.get("payouts", 0)
 	var ratio: float = stats.get("payout_ratio", 0.0)
-	var won: int = stats.get("won", -1)
 	var lines := PackedStringArray(
 		[
 			"[b]Shots[/b] %d    [b]In play[/b] %d" % [shots, stats.get("in_play", 0)],
 			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
 			# short lines: longer ones wrapped and pushed the launcher off a 720 px column
 			"[b]Paid back[/b] %d (%.2f a shot)" % [paid, ratio],
-			_won_line(won, best),
+			_won_line(stats, best),
 		]
 	)
 	if target > 0:

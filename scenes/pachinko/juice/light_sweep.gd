@@ -83,7 +83,7 @@ func _process(delta: float) -> void:
 	if _lights != null:
 		for i in _pin_reach.size():
 			if _pin_reach[i] > _front and _pin_reach[i] <= reach:
-				_lights.light(i, PIN_TINT, 1.0)
+				_lights.light(i, PIN_TINT, 1.0, true)  # pin-sized: a column lights at once
 	_front = reach
 	queue_redraw()
 	if not is_sweeping():

@@ -33,6 +33,8 @@ signal jackpot_round_ended(round: int, rounds: int)
 signal jackpot_ended(paid: int)
 ## The spin the house gave (grant_house_jackpot) ended on its jackpot.
 signal house_jackpot_landed
+## The next spin was made the house's jackpot (grant_house_jackpot): a replay records it.
+signal house_jackpot_granted
 
 ## Spins a start pocket can hold while the reels are busy (real machines show four lamps).
 const MAX_QUEUED := 4
@@ -167,6 +169,7 @@ func advance(delta: float) -> void:
 ## figures leave it out). A replay records it (ReplayRecorder) and asks again.
 func grant_house_jackpot() -> void:
 	_house_next = true
+	house_jackpot_granted.emit()
 
 
 ## True while the next spin is the house's jackpot.
