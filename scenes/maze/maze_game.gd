@@ -234,7 +234,7 @@ func _on_game_reset() -> void:
 		hint += "\n" + MazeHints.ghost()
 	elif App.settings.show_ghost:
 		hint += "\n" + MazeHints.no_ghost_yet()
-	_note.show_note("Tilt the board to start!".replace(" ", MazeHints.NBSP), hint)
+	_note.show_note(MazeHints.tilt_to_start(), hint)
 	_show_best()
 
 

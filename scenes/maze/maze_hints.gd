@@ -35,6 +35,13 @@ static func controls() -> String:
 	return "Tilt: arrows, WASD or the joystick\n" + ITEM_GAP.join(items)
 
 
+## The headline before the first tilt. Two phrases, each held by no-break spaces and the
+## two joined by a plain one: a narrow column breaks it only as "Tilt the board / to start!"
+## (trial 7 read "Tilt the board to star / t!" when the whole line was one unbreakable word).
+static func tilt_to_start() -> String:
+	return "Tilt the board".replace(" ", NBSP) + " " + "to start!".replace(" ", NBSP)
+
+
 ## The line in its place before there is a best run to race (as long, so the note keeps its
 ## height when the ghost comes).
 static func no_ghost_yet() -> String:
