@@ -89,7 +89,7 @@ func _ready() -> void:
 	rules.wall_bumped.connect(_on_wall_bumped)
 	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
-	_stage.set_low_graphics(App.settings.maze_low_graphics)
+	_stage.set_look(App.settings.maze_low_graphics, App.settings.maze_tutorial_look)
 	get_viewport().size_changed.connect(_on_size_changed)
 	_layout()
 	_settle_frames = SETTLE_FRAMES  # placed again as the panel's text settles, then kept
@@ -360,8 +360,10 @@ func _on_settings_changed() -> void:
 	haptics.enabled = App.settings.vibration
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
-	if _stage.low_graphics != App.settings.maze_low_graphics:
-		_stage.set_low_graphics(App.settings.maze_low_graphics)
+	var low := App.settings.maze_low_graphics
+	var tutorial := App.settings.maze_tutorial_look
+	if _stage.low_graphics != low or _stage.tutorial_look != tutorial:
+		_stage.set_look(low, tutorial)  # at once, on the board in play (trial 7)
 
 
 func _show_best() -> void:
