@@ -218,7 +218,7 @@ func _on_game_reset() -> void:
 	_goal_count = 0
 	_lines.show_attempt(rules.hard_mode, rules.ball_total())
 	_win_panel.hide()
-	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
+	_ghost = MazeGhost3d.best_run(rules.level, rules.hard_mode)
 	_ghost_view.set_board_size(rules.level.size)
 	_ghost_view.clear()
 	_joystick.release()
