@@ -14,7 +14,8 @@ const ITEM_GAP := "    "
 const TIPS := {
 	"maze_two_together": "Tip: let both balls stop against a wall before you tilt the next way.",
 	"maze_cloister": "Tip: a ball in the dip stays there, so bring the others in one by one.",
-	"maze_garden": "Tip: gather the balls against one wall first, then roll them on together.",
+	# trial 7 found Garden Path the hardest of the first five: a ball must stop part-way
+	"maze_garden": "Tip: tap a key for a small tilt to stop a ball part-way along a corridor.",
 	"maze_switchbacks": "Tip: plan the route first. The clock starts at your first tilt.",
 }
 
