@@ -42,6 +42,11 @@ func _scan(dir: String, found: Array[String]) -> void:
 		var path := dir.path_join(file)
 		var text := FileAccess.get_file_as_string(path)
 		# Built from parts so that this file does not match itself.
-		for bad: String in ["AUTOWRAP_" + "WORD_SMART", "AUTOWRAP_" + "ARBITRARY", "autowrap_mode = 3", "autowrap_mode = 1\n"]:
+		for bad: String in [
+			"AUTOWRAP_" + "WORD_SMART",
+			"AUTOWRAP_" + "ARBITRARY",
+			"autowrap_mode = 3",
+			"autowrap_mode = 1\n"
+		]:
 			if bad in text:
 				found.append("%s (%s)" % [path, bad.strip_edges()])

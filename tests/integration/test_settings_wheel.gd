@@ -14,4 +14,3 @@ func test_no_slider_in_settings_takes_the_wheel() -> void:
 	assert_gte(sliders.size(), 4, "the four sliders were looked at")
 	for node in sliders:
 		assert_false((node as Slider).scrollable, "%s takes the wheel" % node.name)
-
