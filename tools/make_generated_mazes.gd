@@ -11,7 +11,10 @@ const BOARDS := [
 	[
 		"garden",
 		"Garden Path",
-		"A small, open maze to learn the tilt: loops everywhere and two holes tucked away.",
+		(
+			"Learn the small tilt: tap a key to stop a ball part-way along a corridor."
+			+ " Two holes tucked away."
+		),
 		6,
 		6,
 		2,

@@ -89,7 +89,7 @@ func _ready() -> void:
 	rules.wall_bumped.connect(_on_wall_bumped)
 	_stage.tutorial_look = App.settings.maze_tutorial_look
 	_stage.set_level(level, rules.hard_mode)
-	_stage.set_low_graphics(App.settings.maze_low_graphics)
+	_stage.set_look(App.settings.maze_low_graphics, App.settings.maze_tutorial_look)
 	get_viewport().size_changed.connect(_on_size_changed)
 	_layout()
 	_settle_frames = SETTLE_FRAMES  # placed again as the panel's text settles, then kept
@@ -218,7 +218,7 @@ func _on_game_reset() -> void:
 	_goal_count = 0
 	_lines.show_attempt(rules.hard_mode, rules.ball_total())
 	_win_panel.hide()
-	_ghost = GhostRun.load_best(rules.level, rules.hard_mode) if App.settings.show_ghost else null
+	_ghost = MazeGhost3d.best_run(rules.level, rules.hard_mode)
 	_ghost_view.set_board_size(rules.level.size)
 	_ghost_view.clear()
 	_joystick.release()
@@ -234,7 +234,7 @@ func _on_game_reset() -> void:
 		hint += "\n" + MazeHints.ghost()
 	elif App.settings.show_ghost:
 		hint += "\n" + MazeHints.no_ghost_yet()
-	_note.show_note("Tilt the board to start!".replace(" ", MazeHints.NBSP), hint)
+	_note.show_note(MazeHints.tilt_to_start(), hint)
 	_show_best()
 
 
@@ -360,8 +360,10 @@ func _on_settings_changed() -> void:
 	haptics.enabled = App.settings.vibration
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
-	if _stage.low_graphics != App.settings.maze_low_graphics:
-		_stage.set_low_graphics(App.settings.maze_low_graphics)
+	var low := App.settings.maze_low_graphics
+	var tutorial := App.settings.maze_tutorial_look
+	if _stage.low_graphics != low or _stage.tutorial_look != tutorial:
+		_stage.set_look(low, tutorial)  # at once, on the board in play (trial 7)
 
 
 func _show_best() -> void:

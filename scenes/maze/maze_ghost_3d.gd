@@ -27,6 +27,15 @@ func _init() -> void:
 	_material.set_shader_parameter("opacity", OPACITY)
 
 
+## The best run's ghost to race on `level` in a mode, or null: the setting is off, or there
+## is no best time yet. A replay file without a best time (left from an earlier save) is not a
+## best run: trial 7 saw it stand still on the start spot of a first try that said "Best --".
+static func best_run(level: BoardLevel, hard: bool) -> GhostRun:
+	if not App.settings.show_ghost or App.best_maze_time(level.board_id, hard) < 0.0:
+		return null
+	return GhostRun.load_best(level, hard)
+
+
 ## Sets the board size (pixels) that positions are measured on.
 func set_board_size(board_size: Vector2) -> void:
 	_board_size = board_size

@@ -14,7 +14,8 @@ const ITEM_GAP := "    "
 const TIPS := {
 	"maze_two_together": "Tip: let both balls stop against a wall before you tilt the next way.",
 	"maze_cloister": "Tip: a ball in the dip stays there, so bring the others in one by one.",
-	"maze_garden": "Tip: gather the balls against one wall first, then roll them on together.",
+	# trial 7 found Garden Path the hardest of the first five: a ball must stop part-way
+	"maze_garden": "Tip: tap a key for a small tilt to stop a ball part-way along a corridor.",
 	"maze_switchbacks": "Tip: plan the route first. The clock starts at your first tilt.",
 }
 
@@ -33,6 +34,13 @@ static func controls() -> String:
 	]:
 		items.append(item.replace(" ", NBSP))
 	return "Tilt: arrows, WASD or the joystick\n" + ITEM_GAP.join(items)
+
+
+## The headline before the first tilt. Two phrases, each held by no-break spaces and the
+## two joined by a plain one: a narrow column breaks it only as "Tilt the board / to start!"
+## (trial 7 read "Tilt the board to star / t!" when the whole line was one unbreakable word).
+static func tilt_to_start() -> String:
+	return "Tilt the board".replace(" ", NBSP) + " " + "to start!".replace(" ", NBSP)
 
 
 ## The line in its place before there is a best run to race (as long, so the note keeps its

@@ -38,7 +38,7 @@ var tutorial_look := false
 ## Low graphics (the player's setting, for machines that draw 3D on the CPU): no soft
 ## shadows, no wood grain, no table shadow, no reflections in the balls, and on software GL
 ## the 3D drawn at the window's own size (`use_render_settings`); tools/maze_fps.sh measures
-## it beside the full look. Set with `set_low_graphics`.
+## it beside the full look. Set with `set_look`.
 var low_graphics := false
 
 var _world_env := WorldEnvironment.new()
@@ -100,9 +100,12 @@ func set_level(level: BoardLevel, hard: bool) -> void:
 	_frame()
 
 
-## Switches Low graphics (`low_graphics`) on or off, on a board already built or not.
-func set_low_graphics(low: bool) -> void:
+## Switches Low graphics (`low_graphics`) and the tutorial look (`tutorial_look`), on a board
+## already built or not: a change in Settings shows at once on the board in play.
+func set_look(low: bool, tutorial: bool) -> void:
 	low_graphics = low
+	tutorial_look = tutorial
+	_board.tutorial_look = tutorial
 	_board.set_low_graphics(low)
 	_balls.set_material(ball_material(tutorial_look, low))
 	_table.visible = not low

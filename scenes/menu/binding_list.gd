@@ -112,7 +112,7 @@ func rebuild() -> void:
 		title.text = action_title(action)
 		title.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 		# a long action name wraps rather than pushing the buttons out of a narrow window
-		title.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+		title.autowrap_mode = TextServer.AUTOWRAP_WORD
 		title.custom_minimum_size.x = TITLE_MIN_WIDTH
 		add_child(title)
 		add_child(_binding_button(action, false))

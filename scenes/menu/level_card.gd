@@ -177,7 +177,7 @@ func _add_label(words: String, variation: StringName, wraps := false, lines := 3
 	label.mouse_filter = Control.MOUSE_FILTER_IGNORE
 	label.text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS
 	if wraps:
-		label.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+		label.autowrap_mode = TextServer.AUTOWRAP_WORD
 		label.max_lines_visible = lines
 		label.size_flags_vertical = Control.SIZE_EXPAND_FILL
 	# a long text is cut at the card's edge, never drawn over the next card

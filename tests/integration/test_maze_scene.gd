@@ -227,8 +227,8 @@ func test_the_head_is_clamped_to_fifteen_pixels() -> void:
 func test_the_note_says_a_tilt_starts_and_keys_tilt_smoothly_not_at_once() -> void:
 	assert_eq(
 		_note().split("\n")[0],
-		"Tilt the board to start!".replace(" ", MazeHints.NBSP),
-		"one phrase: it never breaks before its last word"
+		"Tilt\u00a0the\u00a0board to\u00a0start!",
+		"two phrases: it breaks, if at all, between them (never inside a word)"
 	)
 	Input.action_press("tilt_right")
 	_game._process(1.0 / 60.0)

@@ -52,7 +52,7 @@ func test_the_table_stays_hidden_when_low_graphics_came_on_meanwhile() -> void:
 	var step_in := MazeStepIn.new()
 	add_child_autofree(step_in)
 	step_in.start(stage)
-	stage.set_low_graphics(true)
+	stage.set_look(true, stage.tutorial_look)
 	await wait_process_frames(8)
 	assert_false(stage.table().visible)
 	assert_true(stage.board().part("floor").visible)

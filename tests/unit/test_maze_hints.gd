@@ -29,3 +29,11 @@ func test_boards_two_to_five_say_what_to_try_in_easy_mode() -> void:
 		assert_lt(MazeHints.TIPS[board_id].length(), 80, "%s: a short line" % board_id)
 		assert_false(MazeHints.start(true, 4, 2, board_id).contains("Tip: "), "easy mode only")
 	assert_false(MazeHints.start(false, 4, 2, "maze_tower").contains("Tip: "), "later boards: none")
+
+
+# Trial 7: Garden Path, billed as the board to learn the tilt, needs a ball stopped part-way
+# along a corridor with a brief tilt, and nothing said so. Its tip now teaches that.
+func test_garden_path_teaches_the_small_tilt() -> void:
+	var hint := MazeHints.start(false, 4, 2, "maze_garden")
+	assert_string_contains(hint, "tap a key for a small tilt")
+	assert_string_contains(hint, "part-way")

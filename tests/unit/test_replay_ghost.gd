@@ -145,6 +145,16 @@ class TestMazeScreen:
 				break
 		return seen
 
+	# Trial 7: a see-through ball stood still on the start spot of a first try ("Best --"):
+	# a replay file was there (an earlier save's) but no best time. No best time, no ghost.
+	func test_no_ghost_from_a_replay_file_without_a_best_time() -> void:
+		var rules := _rules()
+		assert_lt(App.best_maze_time(rules.level.board_id, false), 0.0, "a fresh save")
+		var replay: Replay = ReplayKit.record_live_maze(rules.level, false, 200).finish()
+		ReplayStore.save(replay, ReplayStore.best_maze_path(rules.level.board_id, false))
+		rules.reset()
+		assert_eq(_game.ghost(), null, "no ghost before the player has a best time")
+
 	func test_a_best_run_is_saved_and_its_ghost_shows_on_the_next_attempt() -> void:
 		var rules := _rules()
 		var path := ReplayStore.best_maze_path(rules.level.board_id, false)

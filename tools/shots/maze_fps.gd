@@ -131,7 +131,7 @@ func _apply(stage: MazeStage, settings: Dictionary) -> void:
 	root.scaling_3d_scale = settings["scale"]
 	root.msaa_3d = settings["msaa"]
 	# Low graphics as the player's setting gives it (its own render size), or at low_scale
-	stage.set_low_graphics(settings["low"])
+	stage.set_look(settings["low"], stage.tutorial_look)
 	if settings.has("low_scale"):
 		root.scaling_3d_scale = settings["low_scale"]
 	var board := stage.board()

@@ -22,7 +22,7 @@ func _ready() -> void:
 	_text.bbcode_enabled = true
 	_text.fit_content = true
 	_text.scroll_active = false
-	_text.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+	_text.autowrap_mode = TextServer.AUTOWRAP_WORD
 	_text.custom_minimum_size = Vector2(10, 0)
 	_text.add_theme_font_size_override("normal_font_size", FONT_SIZE)
 	_text.add_theme_font_size_override("bold_font_size", FONT_SIZE)

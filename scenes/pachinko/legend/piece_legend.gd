@@ -22,7 +22,7 @@ func show_pieces(level: BoardLevel) -> void:
 		row.add_child(PieceIcon.new(level, piece))
 		var words := Label.new()
 		words.text = BoardPieces.line(level, piece)
-		words.autowrap_mode = TextServer.AUTOWRAP_WORD_SMART
+		words.autowrap_mode = TextServer.AUTOWRAP_WORD
 		words.size_flags_horizontal = Control.SIZE_EXPAND_FILL
 		words.vertical_alignment = VERTICAL_ALIGNMENT_CENTER
 		words.add_theme_font_size_override("font_size", 14)
