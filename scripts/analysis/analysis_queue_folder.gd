@@ -16,7 +16,8 @@ var names := PackedStringArray()
 ## that was killed cannot clean up; its workers exit by themselves). Only where /proc tells
 ## which processes live; the folders are named `PID_USEC.queue`.
 static func remove_stale(root: String) -> void:
-	if not DirAccess.dir_exists_absolute("/proc/self"):
+	# No folder yet (a fresh user folder's first pooled run): nothing is stale.
+	if not DirAccess.dir_exists_absolute("/proc/self") or not DirAccess.dir_exists_absolute(root):
 		return
 	for entry in DirAccess.get_directories_at(root):
 		var owner := entry.get_slice("_", 0)

@@ -109,6 +109,16 @@ static func run(plan: AnalysisPlan, folder: String, id: int) -> int:
 	return EXIT_OK
 
 
+## True while the queue in `folder` may still hold work: the folder is there and not closed.
+## A worker started after its run ended (this process's share can finish a short run before
+## a worker's engine has started) finds it gone and exits without a word.
+static func queue_open(folder: String) -> bool:
+	return (
+		DirAccess.dir_exists_absolute(folder)
+		and not FileAccess.file_exists(folder.path_join("closed"))
+	)
+
+
 ## The queue name of the range of chunks `first`..`last`.
 static func range_name(first: int, last: int) -> String:
 	return "r%05d-%05d" % [first, last]
@@ -131,10 +141,7 @@ static func chunks_of(name: String) -> PackedInt32Array:
 # systems with /proc; elsewhere a parent that is gone leaves the folder, and the editor's
 # dock or the command line cancels its workers itself).
 static func _wanted(folder: String, parent_pid: int) -> bool:
-	if (
-		not DirAccess.dir_exists_absolute(folder)
-		or FileAccess.file_exists(folder.path_join("closed"))
-	):
+	if not queue_open(folder):
 		return false
 	if parent_pid > 0 and DirAccess.dir_exists_absolute("/proc/self"):
 		return DirAccess.dir_exists_absolute("/proc/%d" % parent_pid)

@@ -28,6 +28,9 @@ static func run(values: Dictionary) -> int:
 	var game: String = values["analyze"]
 	var rng_seed: int = values["seed"]
 	var board_name := str(values["board"])
+	var queue := str(values.get("queue", ""))
+	if not queue.is_empty() and not AnalysisQueueWorker.queue_open(queue):
+		return 0  # a worker started after its run ended: nothing left to do
 	var roots := BoardLoader.BOARD_ROOTS.duplicate()
 	if not str(values.get("tally", "")).is_empty() or not str(values.get("queue", "")).is_empty():
 		roots.append(AnalysisWorker.FOLDER + "/")  # the editor's workers read its board there

@@ -153,6 +153,24 @@ func test_workers_give_the_report_of_threads_here() -> void:
 	assert_eq(JSON.stringify(reports[1]), JSON.stringify(reports[0]), "the same report")
 
 
+# This process's share can finish a short pooled run before a worker's engine has started:
+# that worker then finds its queue gone and leaves at once, without a word (it printed "the
+# file does not exist" for the queue's board, and would have failed on a board name).
+func test_a_worker_whose_queue_is_gone_leaves_quietly() -> void:
+	var gone := ProjectSettings.globalize_path("user://no_such_folder/1_2.queue")
+	var values := {"analyze": "pachinko", "board": "no_such_board", "shots": 10, "seed": 1}
+	values["queue"] = gone
+	values["worker_id"] = 0
+	assert_eq(AnalyzeCli.run(values), 0, "nothing left to do is no failure")
+
+
+# The first pooled run in a fresh user folder finds no worker folder yet: no engine error
+# (GUT fails a test on one) while looking for stale queues.
+func test_no_stale_queue_in_a_folder_not_made_yet() -> void:
+	AnalysisQueueFolder.remove_stale(ProjectSettings.globalize_path("user://no_such_folder"))
+	pass_test("no error for a missing folder")
+
+
 func test_bad_worker_counts_are_refused() -> void:
 	var values := {"analyze": "pachinko", "board": "classic", "shots": 10, "seed": 1}
 	values["workers"] = -1

@@ -72,13 +72,18 @@ func test_a_pachinko_board_has_no_medal_times() -> void:
 
 func test_medal_for_a_time() -> void:
 	var times := Medals.from_pilot_time(40.0)
-	assert_eq(times, PackedFloat64Array([60.0, 88.0, 140.0]), "1.5, 2.2 and 3.5 x the pilot")
+	assert_eq(
+		times,
+		PackedFloat64Array([60.0, 108.0, 210.0]),
+		"gold 1.5 x the pilot, silver 1.8 x gold, bronze 3.5 x gold"
+	)
 	assert_eq(Medals.from_pilot_time(40.01)[0], 60.1, "rounded up to a tenth")
 	assert_eq(Medals.medal_for_time(times, 59.9), Medals.Medal.GOLD)
 	assert_eq(Medals.medal_for_time(times, 60.0), Medals.Medal.GOLD)
-	assert_eq(Medals.medal_for_time(times, 70.0), Medals.Medal.SILVER)
-	assert_eq(Medals.medal_for_time(times, 140.0), Medals.Medal.BRONZE)
-	assert_eq(Medals.medal_for_time(times, 140.1), Medals.Medal.NONE)
+	assert_eq(Medals.medal_for_time(times, 108.0), Medals.Medal.SILVER)
+	assert_eq(Medals.medal_for_time(times, 108.1), Medals.Medal.BRONZE)
+	assert_eq(Medals.medal_for_time(times, 210.0), Medals.Medal.BRONZE)
+	assert_eq(Medals.medal_for_time(times, 210.1), Medals.Medal.NONE)
 	assert_eq(Medals.medal_for_time(times, -1.0), Medals.Medal.NONE, "never finished")
 	assert_eq(Medals.medal_for_time(PackedFloat64Array(), 10.0), Medals.Medal.NONE)
 	assert_eq(Medals.name_of(Medals.Medal.SILVER), "Silver")
@@ -133,8 +138,8 @@ func test_no_finish_and_broken_times_earn_no_medal() -> void:
 
 
 func test_the_pilot_time_sets_each_medal_rounded_up_to_a_tenth() -> void:
-	assert_eq(Medals.from_pilot_time(10.0), PackedFloat64Array([15.0, 22.0, 35.0]))
-	assert_eq(Medals.from_pilot_time(10.01), PackedFloat64Array([15.1, 22.1, 35.1]))
+	assert_eq(Medals.from_pilot_time(10.0), PackedFloat64Array([15.0, 27.0, 52.5]))
+	assert_eq(Medals.from_pilot_time(10.01), PackedFloat64Array([15.1, 27.1, 52.6]))
 	assert_eq(Medals.from_pilot_time(0.0), PackedFloat64Array([0.0, 0.0, 0.0]))
 
 
