@@ -48,6 +48,13 @@ var _settings_path := SETTINGS_PATH
 var _fitted_window_size := Vector2i.ZERO
 
 
+func _init() -> void:
+	# first of all, so the log holds everything the game says (GameLogFile says why it is ours)
+	var log_file := GameLogFile.new()
+	if log_file.is_open():
+		OS.add_logger(log_file)
+
+
 func _ready() -> void:
 	curtain.name = "LoadingCurtain"
 	add_child(curtain)

@@ -8,12 +8,6 @@ extends Logger
 ## the same lines off the player's console). Added after GUT's own error tracker, so the
 ## error it has just recorded is the one taken out.
 
-## The engine function and file that report the false error.
-const FUNCTION := "_disconnect"
-const FILE := "core/object/object.cpp"
-## What the release build's report says (it carries no message, only the failed condition).
-const CONDITION := "slot_map.has"
-
 ## How many reports were taken out.
 var taken_out := 0
 
@@ -23,18 +17,18 @@ func _log_error(
 	file: String,
 	_line: int,
 	code: String,
-	_rationale: String,
+	rationale: String,
 	_editor_notify: bool,
 	_error_type: int,
 	_script_backtraces: Array[ScriptBacktrace]
 ) -> void:
-	if function != FUNCTION or file != FILE or not code.contains(CONDITION):
+	if not EngineFalseErrors.is_false_disconnect(function, file, code, rationale):
 		return
 	# the tracker hands out its own list for the running test: the report is taken from it
 	var tracked_errors: Array = GutUtils.get_error_tracker().get_current_test_errors()
 	for at in range(tracked_errors.size() - 1, -1, -1):
 		var tracked: GutTrackedError = tracked_errors[at]
-		if tracked.function == FUNCTION and tracked.code == code:
+		if tracked.function == EngineFalseErrors.FUNCTION and tracked.code == code:
 			tracked_errors.remove_at(at)
 			taken_out += 1
 			return

@@ -8,9 +8,9 @@
 #   (2) after each session the player's files are there, none moved aside (*.bad-*), and
 #       the second start reports no problem with them (the release build once called every
 #       file it had written damaged),
-#   (3) the console holds no ERROR or WARNING line but those ALLOWED below, with the reason,
-#       in those sessions and in each headless command (help, autoplays, analyses, checks,
-#       a wrong flag).
+#   (3) the console and the game's log file hold no ERROR or WARNING line but those ALLOWED
+#       below, with the reason, in those sessions and in each headless command (help,
+#       autoplays, analyses, checks, a wrong flag).
 # Screenshots of each step: build/session-check/<session>-<step>.png.
 #   tools/release/session_check.sh [FOLDER]    default: build/release/board-studio-<version>
 # Exit 0 passed, 1 failed, 77 skipped (no Xvfb or xdotool here).
@@ -127,6 +127,18 @@ session() { # number
 		fail "session $1: the console holds ERROR/WARNING lines ($log): $noise"
 	else
 		ok "session $1: no ERROR or WARNING line on the console ($allowed allowed: V-Sync)"
+	fi
+	# the log file a player would send with a bug report: as quiet as the console (the
+	# engine's own log once held two false errors each time a control left a container)
+	local logged
+	logged=$(cat "$data"/logs/*.log 2>/dev/null | grep -E '^(ERROR|WARNING|SCRIPT ERROR)' |
+		grep -vE "$ALLOWED" | head -n 3)
+	if [ ! -f "$data/logs/godot.log" ]; then
+		fail "session $1: the game wrote no log file ($data/logs/godot.log)"
+	elif [ -n "$logged" ]; then
+		fail "session $1: the game's log file holds ERROR/WARNING lines: $logged"
+	else
+		ok "session $1: no ERROR or WARNING line in the log file ($(ls "$data/logs" | wc -l) logs)"
 	fi
 }
 
