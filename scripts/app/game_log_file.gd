@@ -32,6 +32,20 @@ func _init(path: String = LOG_PATH, max_files: int = MAX_FILES) -> void:
 		DirAccess.make_dir_recursive_absolute(folder)
 	_rotate(path, max_files)
 	_file = FileAccess.open(path, FileAccess.WRITE)
+	# the engine's own first lines come before any script runs: say what is running instead
+	_write(heading(), true)
+
+
+## The log's first line: the game's and the engine's versions and when it started.
+static func heading() -> String:
+	return (
+		"Board Studio %s on Godot %s, started %s\n"
+		% [
+			ProjectSettings.get_setting("application/config/version", "?"),
+			Engine.get_version_info().get("string", "?"),
+			Time.get_datetime_string_from_system(false, true),
+		]
+	)
 
 
 ## Whether the file could be opened (a read-only user folder leaves the game without a log).
@@ -80,13 +94,40 @@ static func _rotate(path: String, max_files: int) -> void:
 	var extension := path.get_extension()
 	if FileAccess.file_exists(path):
 		var stamp := Time.get_datetime_string_from_unix_time(FileAccess.get_modified_time(path))
-		var kept := "%s/%s%s.%s" % [folder, stem, stamp.replace(":", "."), extension]
-		if not FileAccess.file_exists(kept):
-			DirAccess.rename_absolute(path, kept)
+		var kept := "%s/%s%s" % [folder, stem, stamp.replace(":", ".")]
+		# two runs started in the same second (analysis workers) each keep their own, and a
+		# later one always gets a higher number than any kept, so the age order holds
+		var taken := 0
+		for name in DirAccess.get_files_at(folder):
+			if name.begins_with(kept.get_file()):
+				taken = maxi(taken, _age_number(name))
+		DirAccess.rename_absolute(path, _numbered(kept, taken + 1, extension))
 	var old: Array[String] = []
 	for name in DirAccess.get_files_at(folder):
 		if name.begins_with(stem) and name.ends_with("." + extension) and name != path.get_file():
 			old.append(name)
-	old.sort()  # the time in each name sorts oldest first
+	# the time in each name, then its number within that second, sorts oldest first
+	old.sort_custom(func(a: String, b: String) -> bool: return _age_key(a) < _age_key(b))
 	while old.size() > max_files - 1:
-		DirAccess.remove_absolute(folder.path_join(old.pop_front()))
+		var oldest: String = old.pop_front()
+		DirAccess.remove_absolute(folder.path_join(oldest))
+
+
+static func _numbered(stem: String, number: int, extension: String) -> String:
+	return "%s.%s" % [stem, extension] if number == 1 else "%s-%d.%s" % [stem, number, extension]
+
+
+# A kept log's name as a key that sorts by age: its time, then its number.
+static func _age_key(name: String) -> String:
+	var base := name.get_basename()
+	var number := _age_number(name)
+	if number > 1:
+		base = base.substr(0, base.rfind("-"))
+	return "%s#%06d" % [base, number]
+
+
+# A kept log's number within its second: 1 when its name has none.
+static func _age_number(name: String) -> int:
+	var base := name.get_basename()
+	var ending := base.substr(base.rfind("-") + 1)
+	return ending.to_int() if ending.is_valid_int() else 1

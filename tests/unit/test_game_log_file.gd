@@ -41,6 +41,8 @@ func test_prints_and_real_errors_are_written_in_the_engines_format() -> void:
 	log._log_message("Board Studio 0.1.0\n", false)
 	_report(log, "load_board", "res://scripts/board/board_file.gd", "", "The board file is broken.")
 	var text := _text()
+	assert_true(text.begins_with("Board Studio "), "the log opens with what is running: " + text)
+	assert_string_contains(text, " on Godot 4.6")
 	assert_string_contains(text, "Board Studio 0.1.0\n")
 	assert_string_contains(
 		text,
@@ -79,7 +81,9 @@ func test_the_last_log_is_kept_and_only_the_newest_five_stay() -> void:
 		var stamp := "2026-11-2%dT10.00.00" % run
 		var kept := _folder.path_join("godot%s.log" % stamp)
 		DirAccess.rename_absolute(_log_at(), kept)
-		FileAccess.open(_log_at(), FileAccess.WRITE).store_string("run %d\n" % run)
+		var last_run := FileAccess.open(_log_at(), FileAccess.WRITE)
+		last_run.store_string("run %d\n" % run)
+		last_run.close()
 	var last := GameLogFile.new(_log_at())
 	assert_true(last.is_open())
 	var names := DirAccess.get_files_at(_folder)
@@ -92,7 +96,11 @@ func test_the_last_log_is_kept_and_only_the_newest_five_stay() -> void:
 			previous = name
 	assert_ne(previous, "", "the last run's log is kept under its time: %s" % [names])
 	assert_false(names.has("godot2026-11-20T10.00.00.log"), "the oldest is removed")
-	assert_eq(FileAccess.get_file_as_string(_log_at()), "", "the new log starts empty")
+	assert_eq(
+		FileAccess.get_file_as_string(_log_at()),
+		GameLogFile.heading(),
+		"the new log holds its heading"
+	)
 
 
 func test_the_game_writes_its_own_log_and_the_engines_is_off() -> void:
