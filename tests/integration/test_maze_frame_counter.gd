@@ -33,3 +33,27 @@ func test_the_frame_counter_leaves_the_title_clear() -> void:
 	assert_false(
 		title_rect.intersects(counter_rect), "title %s, counter %s" % [title_rect, counter_rect]
 	)
+
+
+# A play trial at 10 FPS: "10 FPS  100.0 ms" grew the panel past the window's left edge.
+func test_the_counter_keeps_its_place_and_margin_at_any_figure() -> void:
+	App.settings.set_value("show_frame_counter", true)  # a hidden label keeps its old size
+	for bottom_left in [true, false]:
+		var counter := (load("res://scenes/common/frame_counter.tscn") as PackedScene).instantiate()
+		counter.set("bottom_left", bottom_left)
+		add_child_autofree(counter)
+		var label := counter.get_node("%FpsLabel") as Label
+		var view := label.get_viewport_rect()
+		var rects: Array[Rect2] = []
+		for figure in [
+			"60 FPS  16.7 ms", "10 FPS  100.0 ms", "1 FPS  1000.0 ms", "888 FPS  1.1 ms"
+		]:
+			label.text = figure
+			await wait_process_frames(2)
+			var rect := label.get_global_rect()
+			rects.append(rect)
+			assert_gte(rect.position.x, 8.0, "%s: left margin kept (%s)" % [figure, rect])
+			assert_lte(rect.end.x, view.end.x - 8.0, "%s: right margin kept (%s)" % [figure, rect])
+		for rect in rects:
+			assert_eq(rect, rects[0], "the panel does not move or grow as the figure changes")
+	App.settings.set_value("show_frame_counter", false)
