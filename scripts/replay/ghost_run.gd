@@ -37,7 +37,7 @@ static func load_best(level: BoardLevel, hard: bool) -> GhostRun:
 	if not replay.physics_problem().is_empty():
 		push_warning("No ghost: %s %s" % [path, replay.physics_problem()])
 		return null
-	if replay.board_hash != Replay.content_hash(level):
+	if not replay.recorded_on(level):
 		push_warning("No ghost: the board changed since %s was recorded" % path)
 		return null
 	return GhostRun.new(replay, level)

@@ -76,7 +76,9 @@ var rules_version := 1
 var game := MAZE
 ## The board's `board_id`.
 var board_id := ""
-## SHA-256 of the board's canonical text (`content_hash`): the board played must be this one.
+## SHA-256 of the board's canonical text without its naming lines (`board_hash_of`): the
+## board played must play as this one. Replays recorded before held the whole text's hash
+## (`content_hash`), which `recorded_on` still accepts.
 var board_hash := ""
 ## The seed the rules were built with (pachinko nudges; the maze autoplay's pilot).
 var rng_seed := 0
@@ -104,6 +106,20 @@ func mode_name() -> String:
 ## The content hash of a board (BoardTextWriter.content_hash).
 static func content_hash(level: BoardLevel) -> String:
 	return BoardTextWriter.content_hash(level)
+
+
+## The hash a new replay keeps of its board: the play hash (BoardTextWriter.play_hash), which
+## leaves out the board's name, description, look and medal times. A ghost then survives
+## new medal times (a player's saved ghosts were lost each time they were re-measured);
+## any change to how the board plays still refuses the replay.
+static func board_hash_of(level: BoardLevel) -> String:
+	return BoardTextWriter.play_hash(level)
+
+
+## Whether this replay was recorded on a board that plays as `level` does: its hash is the
+## board's play hash, or (a replay recorded before play hashes) its whole content hash.
+func recorded_on(level: BoardLevel) -> bool:
+	return board_hash == board_hash_of(level) or board_hash == content_hash(level)
 
 
 ## How many frames a `"tilt"`, `"tilts"` or `"run"` record plays (0 for an event).

@@ -106,7 +106,7 @@ func _begin(level: BoardLevel, rng_seed: int, step_seconds: float) -> void:
 	_replay = Replay.new()
 	_replay.game = Replay.game_of(level)
 	_replay.board_id = level.board_id
-	_replay.board_hash = Replay.content_hash(level)
+	_replay.board_hash = Replay.board_hash_of(level)
 	_replay.rng_seed = rng_seed
 	_replay.step_hz = roundi(1.0 / step_seconds)
 

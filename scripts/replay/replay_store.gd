@@ -81,16 +81,16 @@ static func find_board(replay: Replay) -> Dictionary:
 		for loaded in BoardLoader.list_boards(kind, root):
 			if loaded.level == null or loaded.level.board_id != replay.board_id:
 				continue
-			var content := Replay.content_hash(loaded.level)
-			if content == replay.board_hash:
+			if replay.recorded_on(loaded.level):
 				return {"level": loaded.level}
+			var content := Replay.board_hash_of(loaded.level)
 			changed = (
 				(
 					"the %s board '%s' (%s) has changed since the replay was recorded"
 					% [replay.game, replay.board_id, loaded.path]
 				)
 				+ (
-					" (board content hash %s…, the replay's %s…)"
+					" (board play hash %s…, the replay's %s…)"
 					% [content.left(12), replay.board_hash.left(12)]
 				)
 			)

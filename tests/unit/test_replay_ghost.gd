@@ -217,3 +217,32 @@ class TestMazeScreen:
 		assert_gt(rules.world.step_count, at_finish + 100, "the live balls settle on")
 		assert_eq(ghost.steps(), at_finish, "the ghost stays where the finish found it")
 		assert_eq(view.get("shown_positions"), shown, "and is drawn there")
+
+
+# A play trial's note: a player's saved ghosts stopped loading each time a board's medal
+# times were re-measured, because the replay kept the hash of the whole board text.
+func test_a_ghost_survives_new_medal_times_and_a_new_name_but_not_a_new_layout() -> void:
+	var level := ReplayKit.load_level(MAZE_CLASSIC)
+	var replay: Replay = _first_attempt(level)[0]
+	assert_eq(replay.board_hash, Replay.board_hash_of(level), "a new replay keeps the play hash")
+	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
+	var remeasured := ReplayKit.load_level(MAZE_CLASSIC)
+	remeasured.medal_times_easy = PackedFloat64Array([11.0, 19.8, 38.5])
+	remeasured.display_name = "Classic, renamed"
+	assert_ne(Replay.content_hash(remeasured), Replay.content_hash(level), "the file did change")
+	assert_not_null(GhostRun.load_best(remeasured, false), "new medal times keep the ghost")
+	var moved := ReplayKit.load_level(MAZE_CLASSIC)
+	var walls := moved.walls
+	walls[0] += Vector2(4.0, 0.0)
+	moved.walls = walls
+	assert_null(GhostRun.load_best(moved, false), "a wall moved: the run no longer plays there")
+	assert_false(replay.recorded_on(moved))
+	assert_true(ReplayStore.find_board(replay).has("level"), "the replay finds its board")
+
+
+func test_a_ghost_recorded_with_the_whole_boards_hash_still_plays() -> void:
+	var level := ReplayKit.load_level(MAZE_CLASSIC)
+	var replay: Replay = _first_attempt(level)[0]
+	replay.board_hash = Replay.content_hash(level)  # as every replay before play hashes
+	ReplayStore.save(replay, ReplayStore.best_maze_path(level.board_id, false))
+	assert_not_null(GhostRun.load_best(level, false), "an older replay of the same board plays")
