@@ -4,20 +4,17 @@ extends GutTest
 ## and its last balls have landed (JackpotSettle), then the card comes up.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const SaveData := preload("res://scripts/app/save_data.gd")
+const BoardSwap := preload("res://tests/helpers/pachinko_board_swap.gd")
 
-var _kept_save: SaveData
+var _kept_save: RefCounted
 
 
 func before_each() -> void:
-	_kept_save = App.save_data
-	App.save_data = SaveData.new()  # in memory only: never written
-	App.request_board("pachinko", "res://levels/pachinko/fever.board")
+	_kept_save = BoardSwap.begin()
 
 
 func after_each() -> void:
-	App.save_data = _kept_save
-	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+	BoardSwap.end(_kept_save)
 
 
 func test_the_goal_reached_mid_jackpot_waits_for_its_end_and_last_ball() -> void:

@@ -4,21 +4,18 @@ extends GutTest
 ## The handle's strength is kept across games and boards, in the player's save file.
 
 const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const SaveData := preload("res://scripts/app/save_data.gd")
+const BoardSwap := preload("res://tests/helpers/pachinko_board_swap.gd")
 const SAVE_PATH := "user://test_restart_prompt_save.cfg"
 
-var _kept_save: SaveData
+var _kept_save: RefCounted
 
 
 func before_each() -> void:
-	_kept_save = App.save_data
-	App.save_data = SaveData.new()  # in memory only: never written
-	App.request_board("pachinko", "res://levels/pachinko/fever.board")
+	_kept_save = BoardSwap.begin()
 
 
 func after_each() -> void:
-	App.save_data = _kept_save
-	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+	BoardSwap.end(_kept_save)
 	DirAccess.remove_absolute(ProjectSettings.globalize_path(SAVE_PATH))
 
 
