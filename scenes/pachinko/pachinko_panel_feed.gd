@@ -13,20 +13,27 @@ var _notes: Label
 var _level: BoardLevel
 var _rules: PachinkoRules
 var _record: PachinkoGameRecord
+var _goal: MachineGoal
+var _cup: CupDisplay
 var _refresh := 0.0
+# The tray's count the panel last showed: it follows the tray as its balls land.
+var _shown_tray := -1
 
 
-## Feeds `panel` and `notes` for games on `level`.
-func _init(panel: StatsPanel, notes: Label, level: BoardLevel) -> void:
+## Feeds `panel` and `notes` for games on `level`; the tray's count is the one `cup` shows.
+func _init(panel: StatsPanel, notes: Label, level: BoardLevel, cup: CupDisplay) -> void:
 	_panel = panel
 	_notes = notes
 	_level = level
+	_cup = cup
 
 
-## Follows the game `rules` (a new one each game), whose balls won `record` keeps.
-func bind(rules: PachinkoRules, record: PachinkoGameRecord) -> void:
+## Follows the game `rules` (a new one each game), whose balls won `record` keeps and whose
+## goal `goal` watches.
+func bind(rules: PachinkoRules, record: PachinkoGameRecord, goal: MachineGoal) -> void:
 	_rules = rules
 	_record = record
+	_goal = goal
 	_panel.goal_cleared = false
 	# the goal line's "now" follows the tray as it changes, not a quarter second later
 	rules.cup_changed.connect(_on_cup_changed)
@@ -35,14 +42,17 @@ func bind(rules: PachinkoRules, record: PachinkoGameRecord) -> void:
 ## Counts `delta` seconds of play and refreshes the panel when its time has come.
 func tick(delta: float) -> void:
 	_refresh -= delta
-	if _refresh <= 0.0:
+	if _refresh <= 0.0 or _tray_count() != _shown_tray:
 		_refresh = REFRESH_SECONDS
 		show_now()
 
 
 ## Shows the game's figures now.
 func show_now() -> void:
-	_panel.show_stats(panel_stats())
+	_panel.goal_pending = _goal != null and _goal.is_waiting()
+	var stats := panel_stats()
+	_shown_tray = stats["balls_left"]
+	_panel.show_stats(stats)
 
 
 ## Marks the goal cleared on the panel.
@@ -73,7 +83,18 @@ func panel_stats() -> Dictionary:
 	var stats := _rules.stats(true)
 	stats["won"] = _record.won()
 	stats["start_balls"] = _level.cup_start_balls  # the panel's "Up 45 this game"
+	# the tray's number, not the rules' count ahead of the balls still pouring in (trial 7
+	# read 22 on the tray and "25 now" on the panel); behind the card, the balls it starts
+	# with (it read "Down 100" and "0 now" there)
+	stats["balls_left"] = _tray_count()
 	return stats
+
+
+# The balls the tray shows now: before the game starts, those it will start with.
+func _tray_count() -> int:
+	if _rules.state == PachinkoRules.State.INSTRUCTIONS:
+		return _level.cup_start_balls
+	return _cup.count()
 
 
 func _on_cup_changed(_count: int) -> void:
