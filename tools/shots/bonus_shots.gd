@@ -81,9 +81,7 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		# waits for it: one announcement at a time)
 		bonus_view.stage._process(ReachStage.HOLD_JACKPOT + 0.01)
 		bonus_view.stage._process(ReachStage.GROW_SECONDS + 0.01)
-		bonus_view.banner._process(
-			ReachStage.HOLD_JACKPOT + ReachStage.GROW_SECONDS + BonusView.STAGE_CLEAR_SECONDS + 0.3
-		)
+		bonus_view.banner._process(maxf(-bonus_view.banner._age, 0.0) + 0.3)
 	if shot_name == "pachinko_round":
 		_play_for(rules, 0.5)
 		bonus_view.banner._process(0.5)
