@@ -79,7 +79,9 @@ func _on_tulip_changed(index: int, open: bool) -> void:
 
 func _show_aim() -> void:
 	var aim := TulipBands.aim(_rules.level, _rules.bonus.rounds.active(), _open_tulips)
-	_launcher.set_aim_band(aim["band"], aim["words"])
+	var band: Vector2i = aim["band"]
+	var words: String = aim["words"]
+	_launcher.set_aim_band(band, words)
 
 
 # The cup shows every ball still to shoot: the cup's and the one in the launcher.
