@@ -9,6 +9,10 @@ extends RefCounted
 const CUP_COLORS: Array[Color] = [Color("1f7a5a"), Color("8c1d2c"), Color("b8417a")]
 const LAMP_COLORS: Array[Color] = [Color("6dffb9"), Color("ffcf4a"), Color("ff9ad5")]
 const LABELS: Array[String] = ["START", "ATTACKER", ""]
+## The labels' font size (board pixels), the room around them and their tag's colour.
+const LABEL_SIZE := 10
+const LABEL_PAD := 2.0
+const LABEL_TAG := Color(0.05, 0.02, 0.08, 0.88)
 const LID := Color("d9a640")
 const PETAL := Color("f07ab4")
 const PETAL_EDGE := Color("5c1538")
@@ -52,16 +56,33 @@ static func draw_pocket(
 			_draw_wings(canvas, level, spec, amount)
 	var label := LABELS[spec.role]
 	if not label.is_empty():
+		# on a dark tag of its own: trial 7 could not read Hanami's ATTACKER over the blossoms
+		var tag := label_rect(spec)
+		canvas.draw_rect(tag, LABEL_TAG)
 		var font := ThemeDB.fallback_font
-		var size := 9
-		var width := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, size).x
-		var at := Vector2(spec.position.x - width * 0.5, body.end.y + 10.0)
-		canvas.draw_string_outline(
-			font, at, label, HORIZONTAL_ALIGNMENT_LEFT, -1, size, 3, Color(0, 0, 0, 0.8)
-		)
+		var at := Vector2(tag.position.x + LABEL_PAD, tag.end.y - LABEL_PAD - 1.0)
 		canvas.draw_string(
-			font, at, label, HORIZONTAL_ALIGNMENT_LEFT, -1, size, lamp.lerp(Color.WHITE, light)
+			font,
+			at,
+			label,
+			HORIZONTAL_ALIGNMENT_LEFT,
+			-1,
+			LABEL_SIZE,
+			lamp.lerp(Color.WHITE, light)
 		)
+
+
+## The dark tag under bonus pocket `spec` that carries its label ("START", "ATTACKER"), board
+## pixels; empty for a piece without one (a tulip).
+static func label_rect(spec: BonusPocketSpec) -> Rect2:
+	var label := LABELS[spec.role]
+	if label.is_empty():
+		return Rect2()
+	var font := ThemeDB.fallback_font
+	var text := font.get_string_size(label, HORIZONTAL_ALIGNMENT_LEFT, -1, LABEL_SIZE)
+	var size := Vector2(text.x, font.get_ascent(LABEL_SIZE)) + Vector2.ONE * LABEL_PAD * 2.0
+	var top := spec.position.y + spec.depth + 7.0  # just under the cup's body
+	return Rect2(Vector2(spec.position.x - size.x * 0.5, top), size)
 
 
 static func _draw_rim(canvas: CanvasItem, level: BoardLevel, spec: BonusPocketSpec) -> void:

@@ -31,20 +31,44 @@ func is_reached() -> bool:
 	return _done
 
 
-## The board after `level` in the pachinko list (the first after the last), "" for none.
+## True while the goal is reached but waits for the jackpot under way to settle.
+func is_waiting() -> bool:
+	return _waiting
+
+
+## Where Next machine goes from `level`: the first board after it in the pachinko list
+## (going round from the last to the first) that the player has never played, else the
+## first not yet cleared, else simply the next; "" for none. Trial 7 went from Windmills,
+## the last, round to Classic, cleared already, and never reached Tulip Garden, unplayed.
 static func next_board_path(level: BoardLevel) -> String:
-	var boards := BoardLoader.list_boards(BoardLevel.Kind.PACHINKO)
 	var paths := PackedStringArray()
-	for result in boards:
+	var ids := PackedStringArray()
+	for result in BoardLoader.list_boards(BoardLevel.Kind.PACHINKO):
 		if result.ok():
 			paths.append(result.path)
-	if paths.is_empty():
-		return ""
-	var here := -1
-	for i in boards.size():
-		if boards[i].ok() and boards[i].level.board_id == level.board_id:
-			here = paths.find(boards[i].path)
-	return paths[(here + 1) % paths.size()]
+			ids.append(result.level.board_id)
+	var played := PackedByteArray()
+	var cleared := PackedByteArray()
+	for id in ids:
+		played.append(1 if App.best_pachinko_balls(id) >= 0 or App.has_cleared_pachinko(id) else 0)
+		cleared.append(1 if App.has_cleared_pachinko(id) else 0)
+	var next := next_index(ids.find(level.board_id), played, cleared)
+	return paths[next] if next >= 0 else ""
+
+
+## The index Next machine goes to from board `here` (-1: not in the list) among boards
+## whose `played` and `cleared` flags are given in list order: the first after it, going
+## round, never played, else not cleared, else the next; -1 when there are none.
+static func next_index(here: int, played: PackedByteArray, cleared: PackedByteArray) -> int:
+	var count := played.size()
+	if count == 0:
+		return -1
+	for wanted: PackedByteArray in [played, cleared]:
+		for step in range(1, count + 1):
+			var i := (here + step) % count
+			if i != here and wanted[i] == 0:
+				return i
+	return (here + 1) % count
 
 
 func _on_cup_changed(_count: int) -> void:

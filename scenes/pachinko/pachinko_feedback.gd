@@ -18,6 +18,9 @@ var _launcher: LauncherPanel
 var _cup: CupDisplay
 var _sounds: SoundBank
 var _rules: PachinkoRules
+# The tulips open now (bonus indices, in the order they opened): the launcher marks the
+# band of the last one (TulipBands).
+var _open_tulips: Array[int] = []
 
 
 func _init(
@@ -44,6 +47,8 @@ func bind(rules: PachinkoRules) -> void:
 	rules.world.ring_hit.connect(_on_ring_hit)
 	rules.bonus.jackpot_round_started.connect(_on_round_started)
 	rules.bonus.jackpot_ended.connect(_on_jackpot_ended)
+	rules.bonus.tulip_changed.connect(_on_tulip_changed)
+	_open_tulips.clear()
 	_launcher.set_aim_band(Vector2i.ZERO)
 	# the balls the game starts with, behind the card too (it read 0 there)
 	_cup.set_count(rules.level.cup_start_balls)
@@ -55,13 +60,28 @@ func bind(rules: PachinkoRules) -> void:
 
 
 # While a jackpot's rounds last the launcher shows where the attacker is fed (trial 5: once
-# a stream paid there was little to decide).
+# a stream paid there was little to decide), and while a tulip is open where it is reached
+# (trial 7: there was still little to decide).
 func _on_round_started(_round: int, _rounds: int) -> void:
-	_launcher.set_aim_band(AttackerBands.band_of(_rules.level))
+	_show_aim()
 
 
 func _on_jackpot_ended(_paid: int) -> void:
-	_launcher.set_aim_band(Vector2i.ZERO)
+	_show_aim()
+
+
+func _on_tulip_changed(index: int, open: bool) -> void:
+	_open_tulips.erase(index)
+	if open:
+		_open_tulips.append(index)
+	_show_aim()
+
+
+func _show_aim() -> void:
+	var aim := TulipBands.aim(_rules.level, _rules.bonus.rounds.active(), _open_tulips)
+	var band: Vector2i = aim["band"]
+	var words: String = aim["words"]
+	_launcher.set_aim_band(band, words)
 
 
 # The cup shows every ball still to shoot: the cup's and the one in the launcher.

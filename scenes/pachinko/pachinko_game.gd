@@ -14,7 +14,6 @@ var rules: PachinkoRules
 
 var _level: BoardLevel
 var _controls := PachinkoInput.new()
-var _stats_refresh := 0.0
 # Made once a board has loaded: a game with no board never owns one outside the tree.
 var _bonus_view: BonusView
 var _juice: JuiceView
@@ -33,6 +32,8 @@ var _goal: MachineGoal
 var _cleared_card := MachineClearedCard.new()
 # What the player sees and hears as the rules report (made once the views are ready).
 var _feedback: PachinkoFeedback
+# The side panel's numbers and notes line.
+var _panel_feed: PachinkoPanelFeed
 
 @onready var board_view: BoardView = $BoardView
 @onready var hud: Control = $Hud
@@ -73,6 +74,7 @@ func _ready() -> void:
 	MachineDress.apply(self, _level, stats_panel, title, notes)
 	SoundBank.warm(SoundBank.PACHINKO_FIRST_SOUNDS)
 	_feedback = PachinkoFeedback.new(board_view, launcher, cup, sounds)
+	_panel_feed = PachinkoPanelFeed.new(stats_panel, notes, _level, cup)
 	_bonus_view = BonusView.new()
 	add_child(_bonus_view)
 	_bonus_view.attach(board_view, sounds)
@@ -107,10 +109,7 @@ func _process(delta: float) -> void:
 	_recorder.note_frame()
 	board_view.aim_preview().held_back = _bonus_view.holds_the_stage()
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
-	_stats_refresh -= delta
-	if _stats_refresh <= 0.0:
-		_stats_refresh = 0.25
-		stats_panel.show_stats(_panel_stats())
+	_panel_feed.tick(delta)
 
 
 func _notification(what: int) -> void:
@@ -217,9 +216,7 @@ func _new_rules() -> void:
 	_record = PachinkoGameRecord.new(_level, rules)
 	_goal = MachineGoal.new(_level, rules, _record.cup_peak)
 	_goal.reached.connect(_on_goal_reached)
-	stats_panel.goal_cleared = false
-	# the goal line's "now" follows the tray as it changes, not a quarter second later
-	rules.cup_changed.connect(_on_cup_changed)
+	_panel_feed.bind(rules, _record, _goal)
 	_cleared_card.dismiss()
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
@@ -233,8 +230,7 @@ func _new_rules() -> void:
 	title.text = _level.display_name
 	title.tooltip_text = _level.description
 	launcher.show_controls_hint()
-	_show_notes()
-	stats_panel.show_stats(_panel_stats())
+	_panel_feed.show_notes()
 	if App.skips_rules_card(_level.board_id):
 		# played from its full card before: straight into play, how to shoot in one line
 		instructions.visible = false
@@ -282,22 +278,6 @@ func name_plate_rect() -> Rect2:
 # The screen height just under the board's name plate.
 func _under_name_plate() -> float:
 	return name_plate_rect().end.y + 6.0
-
-
-func _show_notes() -> void:
-	# the best is the stats' "Best session" line, whose place is kept from the start: a line
-	# of its own here appeared after the first game and moved the panel under it
-	stats_panel.best_session = App.best_pachinko_balls(_level.board_id)
-	stats_panel.goal = PachinkoGoals.tray_target(_level)
-	stats_panel.show_stats(_panel_stats())
-	notes.text = (
-		"%s new game  ·  %s pause  ·  %s frame counter"
-		% [
-			KeyNames.of(&"game_restart", "?"),
-			KeyNames.of(&"pause", "?"),
-			KeyNames.of(&"toggle_frame_counter", "?"),
-		]
-	)
 
 
 func _layout() -> void:
@@ -364,16 +344,8 @@ func _on_game_ended(summary: Dictionary) -> void:
 	var best := App.best_pachinko_balls(_level.board_id)
 	_reminder.dismiss()
 	instructions.show_game_over(_level, summary, best, new_best)
-	_show_notes()
+	_panel_feed.show_notes()
 	sounds.play(SoundBank.GAME_OVER)
-
-
-# The panel's numbers: the rules' and this game's balls won so far (CupPeak).
-func _panel_stats() -> Dictionary:
-	var stats := rules.stats(true)
-	stats["won"] = _record.won()
-	stats["start_balls"] = _level.cup_start_balls  # the panel's "Up 45 this game"
-	return stats
 
 
 ## The win moment's card (the tray reached the machine's goal).
@@ -381,13 +353,8 @@ func cleared_card() -> MachineClearedCard:
 	return _cleared_card
 
 
-func _on_cup_changed(_count: int) -> void:
-	stats_panel.show_stats(_panel_stats())
-
-
 func _on_goal_reached(won: int) -> void:
-	stats_panel.goal_cleared = true
-	stats_panel.show_stats(_panel_stats())
+	_panel_feed.mark_cleared()
 	_controls.let_go(rules)  # a held key or drag fires nothing behind the card
 	cup.catch_up(rules.balls_to_shoot)  # the tray reads the card's count, not one behind
 	_restart_prompt.dismiss()  # no "New game?" over the card

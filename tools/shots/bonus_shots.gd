@@ -77,8 +77,11 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 		cup._process(FRAME)
 	if shot_name == "pachinko_jackpot" or shot_name == "pachinko_house":
 		_play_for(rules, 0.3)  # the banner at its height, balls heading for the open lid
-		# after the reach stage's moment of three alike, as on screen
-		bonus_view.banner._process(1.9)
+		# after the reach stage's moment of three alike has gone, as on screen (the banner
+		# waits for it: one announcement at a time)
+		bonus_view.stage._process(ReachStage.HOLD_JACKPOT + 0.01)
+		bonus_view.stage._process(ReachStage.GROW_SECONDS + 0.01)
+		bonus_view.banner._process(maxf(-bonus_view.banner._age, 0.0) + 0.3)
 	if shot_name == "pachinko_round":
 		_play_for(rules, 0.5)
 		bonus_view.banner._process(0.5)

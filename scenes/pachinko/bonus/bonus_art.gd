@@ -84,7 +84,7 @@ func countdown_rect(index: int) -> Rect2:
 		countdown_text(index), HORIZONTAL_ALIGNMENT_LEFT, -1, COUNTDOWN_SIZE
 	)
 	var size := text_size + COUNTDOWN_PAD * 2.0
-	var top := spec.position.y + spec.depth + 20.0  # under the cup and its ATTACKER label
+	var top := BonusPainter.label_rect(spec).end.y + 2.0  # under the cup and its label
 	return Rect2(Vector2(spec.position.x - size.x * 0.5, top), size)
 
 

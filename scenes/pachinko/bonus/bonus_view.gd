@@ -6,8 +6,11 @@ extends Node
 ## the jackpot's fanfare and rounds, tulips opening), and slows the game's clock for a
 ## reach (`time_scale`).
 
-## The z of the jackpot banner: over the balls and the aim's dots.
+## The z of the reach stage, and one above it the jackpot banner's: over the balls and the
+## aim's dots.
 const MOMENT_Z := 90
+## Seconds between the reach stage's going and the jackpot banner's coming.
+const STAGE_CLEAR_SECONDS := 0.1
 
 var art := BonusArt.new()
 var reels := ReelDisplay.new()
@@ -40,9 +43,11 @@ func attach(board_view: Node2D, sounds: SoundBank) -> void:
 	board_view.move_child(reels, under + 1)
 	board_view.add_child(fever)
 	board_view.move_child(fever, under + 2)
-	# the reach's stage under the balls: a trial lost the balls behind it
+	# the reach's stage over the balls (trial 7: balls crossed its big reels); it keeps to
+	# the top of the board, so the balls falling through the pins stay in sight
 	board_view.add_child(stage)
 	board_view.move_child(stage, under + 3)
+	stage.z_index = MOMENT_Z
 	board_view.add_child(banner)
 	# the jackpot's words over everything on the board (balls, the aim's dots drawn after them)
 	banner.z_index = MOMENT_Z + 1
@@ -76,6 +81,7 @@ func bind(rules: PachinkoRules) -> void:
 	reels.bind(rules.level, machine)
 	fever.bind(rules.level, machine)
 	fever.stage = stage  # its caption keeps clear of the big reels
+	fever.banner = banner  # and waits while a banner says the round
 	stage.bind(rules.level, machine)
 	slow_motion.reset()
 	machine.start_caught.connect(_on_start_caught)
@@ -115,9 +121,10 @@ func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
 		var level := _rules.level
 		var rounds := JackpotRounds.ROUNDS
 		var words := HouseJackpot.WORDS if _rules.bonus.last_spin_was_house() else ""
-		banner.show_jackpot(
-			level.ring_center, level.ring_radius, rounds, ReachStage.HOLD_JACKPOT, words
-		)
+		# the banner waits until the stage has gone: one announcement at a time (trial 7
+		# read a fading "REACH!" and "444" under "ROUND 1 / 10")
+		var delay := ReachStage.HOLD_JACKPOT + ReachStage.GROW_SECONDS + STAGE_CLEAR_SECONDS
+		banner.show_jackpot(level.ring_center, level.ring_radius, rounds, delay, words)
 		_play(SoundBank.JACKPOT_FANFARE)
 
 

@@ -24,6 +24,9 @@ const PLAQUE_Z := 100
 ## The reach stage (the big reels): while it is up the plaque goes under it (trial 6: the
 ## ROUND pill across the 5 5 5 just won). Null: none.
 var stage: ReachStage
+## The jackpot's banner: while it announces a round the plaque waits (trial 7: a banner's
+## "ROUND 1 / 10" and the plaque's lay one over the other). Null: none.
+var banner: JackpotBanner
 
 var _level: BoardLevel
 var _machine: BonusMachine
@@ -67,6 +70,16 @@ func caption() -> String:
 				% [round_text, ceili(_machine.time_left(i)), _machine.catches_left(i)]
 			)
 	return round_text
+
+
+## True while the caption's plaque is drawn: fever is lit and neither the reach stage nor a
+## banner holds the board (one announcement at a time).
+func caption_shown() -> bool:
+	if not is_lit():
+		return false
+	return (
+		not (stage != null and stage.is_on_stage()) and not (banner != null and banner.is_showing())
+	)
 
 
 ## The caption's plaque on the board (board pixels): centred on the ring's middle line, just
@@ -116,7 +129,7 @@ func _draw() -> void:
 
 
 func _draw_caption() -> void:
-	if _level == null or not is_lit():
+	if _level == null or not caption_shown():
 		return
 	var rect := caption_rect()
 	var pulse := 0.5 + 0.5 * sin(_clock * 9.0)

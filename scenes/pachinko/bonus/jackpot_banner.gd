@@ -78,9 +78,14 @@ func dismiss() -> void:
 	queue_redraw()
 
 
-## True while a moment is on screen.
+## True while a moment is on screen or waiting its turn (a jackpot's waits for the stage).
 func is_showing() -> bool:
 	return _age < _seconds
+
+
+## True while a moment is drawn now (not while it waits its turn).
+func is_drawn() -> bool:
+	return is_showing() and _age >= 0.0
 
 
 ## The words on screen now: title and subtitle, then a summary's lines ("" when nothing

@@ -5,8 +5,8 @@ extends Node2D
 ## tall at 1280 × 720), the last reel slowing down under "REACH!"; it stands in the top
 ## part of the board, over the reels' window, like a real machine's screen in its centre
 ## piece; on a jackpot the three numbers flash gold under "JACKPOT!" a moment before the
-## stage goes. Drawn under the balls, so a ball crossing it stays in sight; play goes on
-## (slowed by ReachSlowMotion).
+## stage goes. Drawn over the balls (trial 7 found balls across its reels); it keeps to the
+## board's top, where few balls fly; play goes on (slowed by ReachSlowMotion).
 
 ## Seconds the stage takes to come in and to go.
 const GROW_SECONDS := 0.25
@@ -113,7 +113,8 @@ func _draw() -> void:
 	var panel := Rect2(Vector2(-width * 0.5, -BOX.y * 0.5 - GAP), Vector2(width, BOX.y + GAP * 2.0))
 	var alpha := grow
 	var pulse := 0.5 + 0.5 * sin(_clock * 10.0)
-	var won := _hold > 0.0 and _jackpot
+	# a won reach says JACKPOT! until the stage has gone: going, it read "REACH!" again
+	var won := _jackpot and not reels.in_reach()
 	var rim := Color("ffd84a") if won else Color(1.0, 0.35 + 0.3 * pulse, 0.2)
 	draw_rect(panel.grow(FRAME), Color(rim, 0.85 * alpha))
 	draw_rect(panel, Color(0.03, 0.02, 0.07, 0.88 * alpha))

@@ -6,7 +6,8 @@ extends Control
 ## drawback (the game tracks the drag from there); a press on the dial holds the handle
 ## (a stream of balls) and the wheel over it turns it; the loaded-ball light shows whether
 ## a shot is ready. During a jackpot's rounds the strengths that feed the attacker are
-## marked gold on the bar and the dial, and the hint says to aim there. Given more room
+## marked gold on the bar and the dial, and the hint says to aim there; an open tulip's
+## strengths likewise (TulipBands). Given more room
 ## than its design size both ways (a phone's band under the board), it draws all of it
 ## bigger, to fill the room and be a bigger target.
 
@@ -51,6 +52,7 @@ var _handle_power := 0.0
 var _last_shot := -1.0
 var _paying: PayingStrengths
 var _aim_band := Vector2i.ZERO
+var _aim_words := ""
 
 
 ## Shows the current drawback.
@@ -73,10 +75,12 @@ func set_paying(paying: PayingStrengths) -> void:
 	queue_redraw()
 
 
-## Marks the strengths `band` (lowest, highest) that feed the attacker on the bar and the
-## dial and swaps the hint for "Aim for the attacker: power 75–85"; Vector2i.ZERO clears it.
-func set_aim_band(band: Vector2i) -> void:
+## Marks the strengths `band` (lowest, highest) that reach a target on the bar and the
+## dial and swaps the hint for `words` (by default the attacker's, "Aim for the attacker:
+## power 75–85"; an open tulip's "Tulip open: power 55–65"); Vector2i.ZERO clears it.
+func set_aim_band(band: Vector2i, words := "") -> void:
 	_aim_band = band
+	_aim_words = words if not words.is_empty() else AttackerBands.words(band)
 	queue_redraw()
 
 
@@ -89,7 +93,7 @@ func aim_band() -> Vector2i:
 func hint_text() -> String:
 	if _aim_band == Vector2i.ZERO:
 		return _hint
-	return AttackerBands.words(_aim_band).replace(": ", ":\n")
+	return _aim_words.replace(": ", ":\n")
 
 
 ## The power the bar marks as the last single shot's (-1 before the first).

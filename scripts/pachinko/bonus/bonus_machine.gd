@@ -55,6 +55,10 @@ var rounds := JackpotRounds.new()
 var tulip_opens := 0
 ## The reels (read by the view).
 var reels := ReelSet.new()
+## False while the player has no ball on the board and is not shooting: an open attacker's
+## seconds wait (the rules set it each step). A real machine's round runs on time, but a
+## player reading the screen must not lose one (trial 7).
+var round_clock_runs := true
 
 var _level: BoardLevel
 var _world: BallWorld
@@ -151,7 +155,7 @@ func advance(delta: float) -> void:
 	# is not charged for this one.
 	var was_in_break := rounds.in_break()
 	for i in _open.size():
-		if _open[i] != 0 and _is_attacker(i):
+		if _open[i] != 0 and _is_attacker(i) and round_clock_runs:
 			_time_left[i] -= delta
 			if _time_left[i] <= 0.0:
 				_set_open(i, false)

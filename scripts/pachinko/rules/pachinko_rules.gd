@@ -285,6 +285,8 @@ func _game_ledger() -> PachinkoLedger:
 
 func _after_steps(steps: int) -> void:
 	if steps > 0:
+		# a jackpot round's clock waits while nothing is on the board and nothing is shot
+		bonus.round_clock_runs = not _in_play.is_empty() or handle.held or drawing
 		bonus.advance(steps * _step_seconds)
 	if steps > 0 and handle.update(steps * _step_seconds) and fire(handle.shot_power(_rng)) >= 0:
 		handle.fired()
