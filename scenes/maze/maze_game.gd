@@ -8,9 +8,6 @@ extends Control
 ## After a window change the panel is placed again this many frames running, while its
 ## wrapped text settles to the new width.
 const SETTLE_FRAMES := 3
-const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
-const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
-const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -22,7 +19,6 @@ var mixer := TiltMixer.new()
 var haptics := MazeHaptics.new()
 
 var _sounds: SoundBank
-var _load_problem := ""
 var _goal_count := 0
 var _lines: MazeSideLines
 var _recorder := ReplayRecorder.new()
@@ -63,8 +59,10 @@ func _ready() -> void:
 	_win_panel.next_board_chosen.connect(_on_next_board)
 	_win_panel.retry_chosen.connect(_on_retry)
 	_win_panel.menu_chosen.connect(App.go_to_level_select.bind(BoardLevel.MAZE_NAME))
-	_add_optional_scene(PAUSE_MENU)
-	_add_optional_scene(FRAME_COUNTER)
+	var pause_menu := MazeGameSetup.add_scene(self, MazeGameSetup.PAUSE_MENU) as PauseMenu
+	if pause_menu != null:
+		pause_menu.restart_requested.connect(_on_retry)
+	MazeGameSetup.add_scene(self, MazeGameSetup.FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
 	_joystick.pressed.connect(_on_joystick_pressed)
@@ -73,9 +71,10 @@ func _ready() -> void:
 	MazeFocusRing.apply(_calibrate)
 	_calibrate.visible = false
 	_controls.text = MazeHints.controls()
-	var level := _load_level()
+	var loaded := MazeGameSetup.load_level()
+	var level: BoardLevel = loaded.level
 	if level == null:
-		_note.show_note("This board could not be loaded.", _load_problem)
+		_note.show_note("This board could not be loaded.", loaded.problem)
 		_joystick.hide()
 		return
 	rules = MazeRules.new(level)
@@ -370,31 +369,3 @@ func _show_best() -> void:
 	_lines.show_best(rules.level.board_id, rules.hard_mode)
 	if _panel_layout != null:
 		_layout()  # a narrowed column widens again for a longer line (never while playing)
-
-
-func _load_level() -> BoardLevel:
-	var path := App.current_board_path(BoardLevel.MAZE_NAME)
-	var loaded := BoardLoader.load_board(path)
-	if loaded.level != null and loaded.level.is_maze():
-		return loaded.level
-	_load_problem = loaded.error if loaded.level == null else "%s is not a maze board" % path
-	push_error("MazeGame: %s" % _load_problem)
-	if path == FALLBACK_BOARD:
-		return null
-	var fallback := BoardLoader.load_board(FALLBACK_BOARD)
-	return fallback.level
-
-
-func _add_optional_scene(path: String) -> void:
-	if not ResourceLoader.exists(path):
-		push_warning("MazeGame: %s is missing" % path)
-		return
-	var packed: PackedScene = load(path)
-	var node := packed.instantiate()
-	var counter := node as FrameCounter
-	if counter != null:
-		counter.bottom_left = true  # the side panel's title is in the top right
-	add_child(node)
-	var pause_menu := node as PauseMenu
-	if pause_menu != null:
-		pause_menu.restart_requested.connect(_on_retry)
