@@ -119,12 +119,13 @@ func _process(delta: float) -> void:
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()
 	if rules.is_playing():
-		MazeFrameSteps.run(rules, _recorder, delta, mixer, keys, accel)
+		var fine := Input.is_action_pressed("tilt_fine")
+		MazeFrameSteps.run(rules, _recorder, delta, mixer, keys, accel, fine)
 		if mixer.source != TiltMixer.Source.JOYSTICK:
 			_joystick.head_offset = TiltInput.joystick_from_tilt(rules.tilt)
 	elif rules.state == MazeRules.State.WON:
 		# the board eases back to level (as a key let go) and the dip gathers the balls in
-		rules.set_tilt(TiltInput.ramp_toward(rules.tilt, Vector2.ZERO, delta))
+		rules.set_tilt(KeyTilt.level_toward(rules.tilt, delta))
 		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
 	if _ghost != null and not rules.is_over():  # it stops at the finish, as the clock does
 		_ghost.sync(rules.world.step_count)

@@ -27,6 +27,7 @@ const TIPS := {
 static func controls() -> String:
 	var items := PackedStringArray()
 	for item: String in [
+		"%s fine tilt" % KeyNames.of(&"tilt_fine", "the fine key"),
 		"%s reset" % _reset(),
 		"%s hard" % _hard(),
 		"%s easy" % _easy(),

@@ -37,3 +37,8 @@ func test_garden_path_teaches_the_small_tilt() -> void:
 	var hint := MazeHints.start(false, 4, 2, "maze_garden")
 	assert_string_contains(hint, "tap a key for a small tilt")
 	assert_string_contains(hint, "part-way")
+
+
+# Trial 8 asked for a finer tilt: the controls line names the key that halves it.
+func test_the_controls_line_names_the_fine_tilt_key() -> void:
+	assert_string_contains(MazeHints.controls(), "Shift\u00a0fine\u00a0tilt")
