@@ -96,7 +96,9 @@ func set_level(level: BoardLevel, hard: bool) -> void:
 	_board.build(level, hard)
 	_balls.clear()
 	_balls.hole_depth_px = _board.hole_depth_px()
-	_balls.material = MazeBallMaterial.make(tutorial_look, low_graphics)
+	_balls.set_material(
+		MazeBallMaterial.make(tutorial_look, low_graphics), MazeBallMaterial.rim(tutorial_look)
+	)
 	_frame()
 
 
@@ -107,7 +109,7 @@ func set_look(low: bool, tutorial: bool) -> void:
 	tutorial_look = tutorial
 	_board.tutorial_look = tutorial
 	_board.set_low_graphics(low)
-	_balls.set_material(MazeBallMaterial.make(tutorial_look, low))
+	_balls.set_material(MazeBallMaterial.make(tutorial_look, low), MazeBallMaterial.rim(tutorial))
 	_table.visible = not low
 	if _world_env.environment != null:
 		_world_env.environment.reflected_light_source = (
