@@ -152,7 +152,7 @@ func _unhandled_input(event: InputEvent) -> void:
 	if event.is_action_pressed("maze_reset") or event.is_action_pressed("game_restart"):
 		rules.reset()
 	elif event.is_action_pressed("maze_hard_mode"):
-		rules.set_hard_mode(true)
+		_choose_hard_mode()
 	elif event.is_action_pressed("maze_easy_mode"):
 		rules.set_hard_mode(false)
 	elif event.is_action_pressed("maze_calibrate"):
@@ -188,6 +188,15 @@ func lay_out() -> Rect2:
 ## The 3D stage showing the board (for tests and the screenshots).
 func stage() -> MazeStage:
 	return _stage
+
+
+# A board without black holes has no hard mode (trial 8: H on First Roll started a second
+# best time, "--", for the same game): H says so before the first tilt and changes nothing.
+func _choose_hard_mode() -> void:
+	if not rules.level.holes.is_empty():
+		rules.set_hard_mode(true)
+	elif rules.state == MazeRules.State.READY:
+		_note.show_note(MazeHints.tilt_to_start(), MazeHints.no_hard_mode())
 
 
 func _start() -> void:

@@ -72,6 +72,11 @@ static func start(hard: bool, balls: int = 4, holes: int = 1, board_id := "") ->
 	return "Roll every ball into the round dip. Ready for hard mode? Press%s%s" % [NBSP, _hard()]
 
 
+## The hint when H is pressed on a board without black holes (it has no hard mode).
+static func no_hard_mode() -> String:
+	return "This board has no black holes, so it has no hard mode."
+
+
 ## The line under the start hint when the best run's ghost rolls beside the balls (a play
 ## trial took the pale ball for one more ball of its own; the ghost is blue glass now).
 static func ghost() -> String:
