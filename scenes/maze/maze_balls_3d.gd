@@ -14,6 +14,9 @@ const FALL_MAX_STEP := 1.0 / 30.0
 ## Steps per half sphere of the ball mesh (smooth enough for a highlight at 1080p).
 const SPHERE_RINGS := 16
 const SPHERE_SEGMENTS := 32
+## The rims' coarser sphere (only its outline shows).
+const RIM_RINGS := 8
+const RIM_SEGMENTS := 16
 
 ## The ball's surface; set before the first `sync` (or with `set_material` later).
 var material: Material
@@ -36,8 +39,8 @@ var _falls: Dictionary[MeshInstance3D, Array] = {}
 func _init() -> void:
 	_mesh.rings = SPHERE_RINGS
 	_mesh.radial_segments = SPHERE_SEGMENTS
-	_rim_mesh.rings = SPHERE_RINGS / 2
-	_rim_mesh.radial_segments = SPHERE_SEGMENTS / 2
+	_rim_mesh.rings = RIM_RINGS
+	_rim_mesh.radial_segments = RIM_SEGMENTS
 
 
 ## Gives every ball on the board, and every ball to come, the surface `surface` and the rim
