@@ -14,14 +14,21 @@ const FALL_MAX_STEP := 1.0 / 30.0
 ## Steps per half sphere of the ball mesh (smooth enough for a highlight at 1080p).
 const SPHERE_RINGS := 16
 const SPHERE_SEGMENTS := 32
+## The rims' coarser sphere (only its outline shows).
+const RIM_RINGS := 8
+const RIM_SEGMENTS := 16
 
 ## The ball's surface; set before the first `sync` (or with `set_material` later).
 var material: Material
+## The dark rim round each ball (MazeBallMaterial.rim), or null for none.
+var rim_material: Material
 ## How deep the holes are, in board pixels (how far a falling ball sinks).
 var hole_depth_px := 12.0
 
 var _board_size := Vector2(350.0, 315.0)
 var _mesh := SphereMesh.new()
+## The rims' sphere: only its outline shows, so a coarse one does (a quarter of the triangles).
+var _rim_mesh := SphereMesh.new()
 ## ball id -> MeshInstance3D, and the board position each was last drawn at.
 var _nodes: Dictionary[int, MeshInstance3D] = {}
 var _last: Dictionary[int, Vector2] = {}
@@ -32,14 +39,24 @@ var _falls: Dictionary[MeshInstance3D, Array] = {}
 func _init() -> void:
 	_mesh.rings = SPHERE_RINGS
 	_mesh.radial_segments = SPHERE_SEGMENTS
+	_rim_mesh.rings = RIM_RINGS
+	_rim_mesh.radial_segments = RIM_SEGMENTS
 
 
-## Gives every ball on the board, and every ball to come, the surface `surface` (balls
-## falling into a hole keep the darkening copy they have).
-func set_material(surface: Material) -> void:
+## Gives every ball on the board, and every ball to come, the surface `surface` and the rim
+## `rim` (null: none) (balls falling into a hole keep the darkening copy they have).
+func set_material(surface: Material, rim: Material = null) -> void:
 	material = surface
+	rim_material = rim
 	for node: MeshInstance3D in _nodes.values():
 		node.material_override = surface
+	for node: MeshInstance3D in _nodes.values() + _falls.keys():
+		_set_rim(node)
+
+
+## The rim drawn round the ball `node`, or null (for tests).
+func rim_of(node: MeshInstance3D) -> MeshInstance3D:
+	return node.get_node_or_null(^"Rim") as MeshInstance3D
 
 
 ## Removes every ball (a reset rebuilds the world with new ids).
@@ -62,6 +79,8 @@ func sync(rules: MazeRules, delta: float) -> void:
 	var radius := rules.level.ball_radius
 	_mesh.radius = radius * MazeMeshes.UNITS_PER_PX
 	_mesh.height = radius * 2.0 * MazeMeshes.UNITS_PER_PX
+	_rim_mesh.radius = _mesh.radius
+	_rim_mesh.height = _mesh.height
 	var ids := rules.world.get_ids()
 	var positions := rules.world.get_positions()
 	var seen := {}
@@ -150,7 +169,26 @@ func _new_ball() -> MeshInstance3D:
 	node.basis = Basis.from_euler(Vector3(randf(), randf(), randf()) * TAU)
 	node.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
 	add_child(node)
+	_set_rim(node)
 	return node
+
+
+# Gives the ball `node` the rim `rim_material` (a child sphere grown by RIM_WIDTH), or none.
+func _set_rim(node: MeshInstance3D) -> void:
+	var rim := rim_of(node)
+	if rim_material == null:
+		if rim != null:
+			rim.queue_free()
+			node.remove_child(rim)
+		return
+	if rim == null:
+		rim = MeshInstance3D.new()
+		rim.name = "Rim"
+		rim.mesh = _rim_mesh
+		rim.scale = Vector3.ONE * (1.0 + MazeBallMaterial.RIM_WIDTH)
+		rim.cast_shadow = GeometryInstance3D.SHADOW_CASTING_SETTING_OFF
+		node.add_child(rim)
+	rim.material_override = rim_material
 
 
 func _start_fall(id: int, rules: MazeRules) -> void:

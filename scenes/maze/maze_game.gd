@@ -8,9 +8,6 @@ extends Control
 ## After a window change the panel is placed again this many frames running, while its
 ## wrapped text settles to the new width.
 const SETTLE_FRAMES := 3
-const PAUSE_MENU := "res://scenes/common/pause_menu.tscn"
-const FRAME_COUNTER := "res://scenes/common/frame_counter.tscn"
-const FALLBACK_BOARD := "res://levels/maze/classic.board"
 ## Wall hits quieter than this (px/s) make no sound.
 const THUD_MIN_SPEED := 20.0
 
@@ -22,7 +19,6 @@ var mixer := TiltMixer.new()
 var haptics := MazeHaptics.new()
 
 var _sounds: SoundBank
-var _load_problem := ""
 var _goal_count := 0
 var _lines: MazeSideLines
 var _recorder := ReplayRecorder.new()
@@ -63,8 +59,10 @@ func _ready() -> void:
 	_win_panel.next_board_chosen.connect(_on_next_board)
 	_win_panel.retry_chosen.connect(_on_retry)
 	_win_panel.menu_chosen.connect(App.go_to_level_select.bind(BoardLevel.MAZE_NAME))
-	_add_optional_scene(PAUSE_MENU)
-	_add_optional_scene(FRAME_COUNTER)
+	var pause_menu := MazeGameSetup.add_scene(self, MazeGameSetup.PAUSE_MENU) as PauseMenu
+	if pause_menu != null:
+		pause_menu.restart_requested.connect(_on_retry)
+	MazeGameSetup.add_scene(self, MazeGameSetup.FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
 	_joystick.pressed.connect(_on_joystick_pressed)
@@ -73,9 +71,10 @@ func _ready() -> void:
 	MazeFocusRing.apply(_calibrate)
 	_calibrate.visible = false
 	_controls.text = MazeHints.controls()
-	var level := _load_level()
+	var loaded := MazeGameSetup.load_level()
+	var level: BoardLevel = loaded.level
 	if level == null:
-		_note.show_note("This board could not be loaded.", _load_problem)
+		_note.show_note("This board could not be loaded.", loaded.problem)
 		_joystick.hide()
 		return
 	rules = MazeRules.new(level)
@@ -120,12 +119,13 @@ func _process(delta: float) -> void:
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()
 	if rules.is_playing():
-		MazeFrameSteps.run(rules, _recorder, delta, mixer, keys, accel)
+		var fine := Input.is_action_pressed("tilt_fine")
+		MazeFrameSteps.run(rules, _recorder, delta, mixer, keys, accel, fine)
 		if mixer.source != TiltMixer.Source.JOYSTICK:
 			_joystick.head_offset = TiltInput.joystick_from_tilt(rules.tilt)
 	elif rules.state == MazeRules.State.WON:
 		# the board eases back to level (as a key let go) and the dip gathers the balls in
-		rules.set_tilt(TiltInput.ramp_toward(rules.tilt, Vector2.ZERO, delta))
+		rules.set_tilt(KeyTilt.level_toward(rules.tilt, delta))
 		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
 	if _ghost != null and not rules.is_over():  # it stops at the finish, as the clock does
 		_ghost.sync(rules.world.step_count)
@@ -152,7 +152,7 @@ func _unhandled_input(event: InputEvent) -> void:
 	if event.is_action_pressed("maze_reset") or event.is_action_pressed("game_restart"):
 		rules.reset()
 	elif event.is_action_pressed("maze_hard_mode"):
-		rules.set_hard_mode(true)
+		_choose_hard_mode()
 	elif event.is_action_pressed("maze_easy_mode"):
 		rules.set_hard_mode(false)
 	elif event.is_action_pressed("maze_calibrate"):
@@ -188,6 +188,15 @@ func lay_out() -> Rect2:
 ## The 3D stage showing the board (for tests and the screenshots).
 func stage() -> MazeStage:
 	return _stage
+
+
+# A board without black holes has no hard mode (trial 8: H on First Roll started a second
+# best time, "--", for the same game): H says so before the first tilt and changes nothing.
+func _choose_hard_mode() -> void:
+	if not rules.level.holes.is_empty():
+		rules.set_hard_mode(true)
+	elif rules.state == MazeRules.State.READY:
+		_note.show_note(MazeHints.tilt_to_start(), MazeHints.no_hard_mode())
 
 
 func _start() -> void:
@@ -370,31 +379,3 @@ func _show_best() -> void:
 	_lines.show_best(rules.level.board_id, rules.hard_mode)
 	if _panel_layout != null:
 		_layout()  # a narrowed column widens again for a longer line (never while playing)
-
-
-func _load_level() -> BoardLevel:
-	var path := App.current_board_path(BoardLevel.MAZE_NAME)
-	var loaded := BoardLoader.load_board(path)
-	if loaded.level != null and loaded.level.is_maze():
-		return loaded.level
-	_load_problem = loaded.error if loaded.level == null else "%s is not a maze board" % path
-	push_error("MazeGame: %s" % _load_problem)
-	if path == FALLBACK_BOARD:
-		return null
-	var fallback := BoardLoader.load_board(FALLBACK_BOARD)
-	return fallback.level
-
-
-func _add_optional_scene(path: String) -> void:
-	if not ResourceLoader.exists(path):
-		push_warning("MazeGame: %s is missing" % path)
-		return
-	var packed: PackedScene = load(path)
-	var node := packed.instantiate()
-	var counter := node as FrameCounter
-	if counter != null:
-		counter.bottom_left = true  # the side panel's title is in the top right
-	add_child(node)
-	var pause_menu := node as PauseMenu
-	if pause_menu != null:
-		pause_menu.restart_requested.connect(_on_retry)

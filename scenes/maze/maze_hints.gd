@@ -14,9 +14,10 @@ const ITEM_GAP := "    "
 const TIPS := {
 	"maze_two_together": "Tip: let both balls stop against a wall before you tilt the next way.",
 	"maze_cloister": "Tip: a ball in the dip stays there, so bring the others in one by one.",
-	# trial 7 found Garden Path the hardest of the first five: a ball must stop part-way
-	"maze_garden": "Tip: tap a key for a small tilt to stop a ball part-way along a corridor.",
-	"maze_switchbacks": "Tip: plan the route first. The clock starts at your first tilt.",
+	# trial 8: Garden Path's part-way stops were a wall after Cloister; it now has a wall at
+	# each turn, and the small tilt's lesson comes with Switchbacks, which needs it
+	"maze_garden": "Tip: hold each tilt until the balls stop: every run ends at your next turn.",
+	"maze_switchbacks": "Tip: tap a key, or hold Shift, to stop a ball part-way along a corridor.",
 }
 
 
@@ -27,6 +28,7 @@ const TIPS := {
 static func controls() -> String:
 	var items := PackedStringArray()
 	for item: String in [
+		"%s fine tilt" % KeyNames.of(&"tilt_fine", "the fine key"),
 		"%s reset" % _reset(),
 		"%s hard" % _hard(),
 		"%s easy" % _easy(),
@@ -68,6 +70,11 @@ static func start(hard: bool, balls: int = 4, holes: int = 1, board_id := "") ->
 	if holes == 0:
 		return "Roll every ball into the round dip."
 	return "Roll every ball into the round dip. Ready for hard mode? Press%s%s" % [NBSP, _hard()]
+
+
+## The hint when H is pressed on a board without black holes (it has no hard mode).
+static func no_hard_mode() -> String:
+	return "This board has no black holes, so it has no hard mode."
 
 
 ## The line under the start hint when the best run's ghost rolls beside the balls (a play

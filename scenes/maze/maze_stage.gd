@@ -96,7 +96,9 @@ func set_level(level: BoardLevel, hard: bool) -> void:
 	_board.build(level, hard)
 	_balls.clear()
 	_balls.hole_depth_px = _board.hole_depth_px()
-	_balls.material = ball_material(tutorial_look, low_graphics)
+	_balls.set_material(
+		MazeBallMaterial.make(tutorial_look, low_graphics), MazeBallMaterial.rim(tutorial_look)
+	)
 	_frame()
 
 
@@ -107,7 +109,7 @@ func set_look(low: bool, tutorial: bool) -> void:
 	tutorial_look = tutorial
 	_board.tutorial_look = tutorial
 	_board.set_low_graphics(low)
-	_balls.set_material(ball_material(tutorial_look, low))
+	_balls.set_material(MazeBallMaterial.make(tutorial_look, low), MazeBallMaterial.rim(tutorial))
 	_table.visible = not low
 	if _world_env.environment != null:
 		_world_env.environment.reflected_light_source = (
@@ -221,47 +223,6 @@ func table_height() -> float:
 ## The lowest point (stage z) of the board's body as it is tilted now.
 func lowest_board_point() -> float:
 	return _lowest_point(_pivot.transform)
-
-
-## The balls' surface: the seed's glossy red-orange (the tutorial's look), or polished steel
-## (with `low` graphics a satin steel that needs no reflections to read as metal).
-static func ball_material(seed_red: bool, low := false) -> StandardMaterial3D:
-	var mat := StandardMaterial3D.new()
-	mat.albedo_texture = _ball_band_texture(
-		MazePalette.BALL if seed_red else Color(0.78, 0.8, 0.83)
-	)
-	# a little glow of its own, so the ball stays as bright as the seed's beside the floor
-	mat.emission_enabled = true
-	mat.emission = (MazePalette.BALL if seed_red else Color(0.5, 0.52, 0.55)).darkened(0.4)
-	mat.emission_energy_multiplier = 0.6
-	if seed_red:
-		mat.roughness = 0.28
-		mat.metallic_specular = 0.7
-	elif low:
-		# no room to reflect: a bright satin grey with the sun's highlight, lit per vertex
-		# (software GL lights every pixel of a ball otherwise)
-		mat.shading_mode = BaseMaterial3D.SHADING_MODE_PER_VERTEX
-		mat.roughness = 0.3
-		mat.metallic_specular = 0.8
-		mat.emission_energy_multiplier = 0.9
-	else:
-		# polished: the room (room_panorama) shows in it; less glow of its own
-		mat.metallic = 0.95
-		mat.roughness = 0.14
-		mat.emission_energy_multiplier = 0.3
-	return mat
-
-
-# A ball texture with a faint band round its equator, so the roll can be seen.
-static func _ball_band_texture(colour: Color) -> ImageTexture:
-	var image := Image.create(64, 32, false, Image.FORMAT_RGB8)
-	var band := colour.darkened(0.22)
-	for y in 32:
-		var v := absf((float(y) + 0.5) / 32.0 - 0.5)
-		var c := band if v < 0.045 else colour
-		for x in 64:
-			image.set_pixel(x, y, c)
-	return ImageTexture.create_from_image(image)
 
 
 ## Sets how `view` draws 3D for the graphics adapter named `adapter_name`: scaled down and

@@ -26,6 +26,7 @@ const ACTION_NAMES := {
 	"tilt_right": "Maze: tilt right",
 	"tilt_up": "Maze: tilt up",
 	"tilt_down": "Maze: tilt down",
+	"tilt_fine": "Maze: fine tilt (hold for half tilt)",
 	"maze_reset": "Maze: start the board again",
 	"maze_hard_mode": "Maze: hard mode (holes)",
 	"maze_easy_mode": "Maze: easy mode",

@@ -11,8 +11,8 @@ const ORDER: Array[String] = [
 	"maze_first_roll",  # 10.9 s a win (maze rules 4, --runs=5)
 	"maze_two_together",  # 16.4
 	"maze_cloister",  # 13.8 (eased: two holes, one more loop; the first of four balls)
-	"maze_garden",  # 18.5 (its card teaches the small tilt)
-	"maze_switchbacks",  # 19.1
+	"maze_garden",  # 10.8 (trial 8: a wall at each turn; was 18.5 with two part-way stops)
+	"maze_switchbacks",  # 19.1 (its card teaches the small tilt)
 	"maze_long_hall",  # 25.2
 	"maze_labyrinth",  # 25.5
 	"maze_crossroads",  # 26.6

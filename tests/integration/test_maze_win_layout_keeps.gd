@@ -99,7 +99,7 @@ func test_the_help_line_breaks_only_between_its_items() -> void:
 	var keys := MazeHints.controls().split("\n")[1]
 	assert_false(keys.contains("·"), "no separator mark to dangle: %s" % keys)
 	var items := keys.split(MazeHints.ITEM_GAP)
-	assert_eq(items.size(), 4, "reset, hard, easy and pause")
+	assert_eq(items.size(), 5, "fine tilt, reset, hard, easy and pause")
 	for item in items:
 		assert_false(item.contains(" "), "'%s' holds together" % item)
 		assert_ne(item.strip_edges(), "", "no empty item")

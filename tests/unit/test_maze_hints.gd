@@ -31,9 +31,15 @@ func test_boards_two_to_five_say_what_to_try_in_easy_mode() -> void:
 	assert_false(MazeHints.start(false, 4, 2, "maze_tower").contains("Tip: "), "later boards: none")
 
 
-# Trial 7: Garden Path, billed as the board to learn the tilt, needs a ball stopped part-way
-# along a corridor with a brief tilt, and nothing said so. Its tip now teaches that.
-func test_garden_path_teaches_the_small_tilt() -> void:
-	var hint := MazeHints.start(false, 4, 2, "maze_garden")
-	assert_string_contains(hint, "tap a key for a small tilt")
+# Trial 7: Garden Path, billed as the board to learn the tilt, needed a ball stopped part-way
+# along a corridor with a brief tilt, and nothing said so. Trial 8: Garden Path no longer
+# needs it (test_maze_garden_full_tilts.gd); Switchbacks, the first board that does, teaches it.
+func test_switchbacks_teaches_the_small_tilt() -> void:
+	var hint := MazeHints.start(false, 4, 2, "maze_switchbacks")
+	assert_string_contains(hint, "tap a key, or hold Shift")
 	assert_string_contains(hint, "part-way")
+
+
+# Trial 8 asked for a finer tilt: the controls line names the key that halves it.
+func test_the_controls_line_names_the_fine_tilt_key() -> void:
+	assert_string_contains(MazeHints.controls(), "Shift\u00a0fine\u00a0tilt")

@@ -1,7 +1,8 @@
 class_name TiltInput
 extends RefCounted
 ## How the player's input becomes a tilt, as in the seed: the joystick head travels ±15 px
-## per axis and each pixel tilts the board 0.8°, so the largest tilt is 12° per axis.
+## per axis and the largest tilt is 12° per axis; near the centre a dead zone and a gentle
+## curve (trial 8: "a 14 px drag rolled the balls all the way across").
 ## Tilt is a Vector2 in degrees: +x rolls balls right, +y rolls them down the screen.
 ## (The forces a tilt makes are the physics layer's `MazeTilt`.)
 
@@ -9,21 +10,17 @@ extends RefCounted
 const MAX_TILT_DEG := 12.0
 ## The joystick head moves at most this far from its centre per axis, in seed pixels.
 const JOYSTICK_RANGE := 15.0
-## Degrees of tilt per pixel of joystick travel (the seed's 0.8: 15 px → 12°).
-const DEG_PER_JOYSTICK_PX := 0.8
+## The joystick's dead zone, a part of its travel per axis: a head this near the centre
+## leaves the board level (a hand resting on the mouse).
+const JOYSTICK_DEAD_ZONE := 0.1
+## Past the dead zone, the part u (0..1) of the rest of the travel tilts the board
+## (1 - JOYSTICK_SQUARE) u + JOYSTICK_SQUARE u² of full tilt: a quarter of the way out gives
+## 0.8°, half 3.3°, the whole 12°, where the seed's straight line gave 3°, 6° and 12°.
+const JOYSTICK_SQUARE := 0.7
 ## Accelerometer tilt eases toward its target at this rate (1/s): smooth, not instant.
 const EASE_RATE := 7.0
 ## ...and back toward level at this faster rate.
 const RELEASE_RATE := 20.0
-## Keys and stick: a held key tilts the board further at a steady rate, reaching full tilt
-## after this many seconds held, so a 0.15 s tap leans it a quarter of the way (3 degrees)
-## and nudges a resting ball; only a hold sends it down a corridor (a play trial found the
-## old ease, 65% of full tilt within 0.15 s, "all-or-nothing").
-const KEY_FULL_SECONDS := 0.6
-## ...and a key let go (or turned the other way) brings the board back to level at a steady
-## rate too, from full tilt in this many seconds: it settles like the joystick let go, not
-## with a jolt, and stops short of carrying a tapped ball on.
-const KEY_LEVEL_SECONDS := 0.15
 
 
 ## Clamps a tilt to ±MAX_TILT_DEG per axis; non-finite components become 0.
@@ -41,14 +38,35 @@ static func clamp_joystick(offset: Vector2) -> Vector2:
 	)
 
 
-## The tilt a joystick head offset asks for: 0.8° per pixel, so 15 px gives 12°.
+## The tilt a joystick head offset asks for: level in the dead zone, then the gentle curve
+## (JOYSTICK_SQUARE) to 12° at 15 px.
 static func tilt_from_joystick(offset: Vector2) -> Vector2:
-	return clamp_joystick(offset) * DEG_PER_JOYSTICK_PX
+	var head := clamp_joystick(offset) / JOYSTICK_RANGE
+	return Vector2(_stick_curve(head.x), _stick_curve(head.y)) * MAX_TILT_DEG
 
 
-## The joystick head offset that shows a tilt (the inverse of `tilt_from_joystick`).
+## The joystick head offset that shows a tilt (the inverse of `tilt_from_joystick`; level
+## shows the head at the centre).
 static func joystick_from_tilt(tilt_deg: Vector2) -> Vector2:
-	return clamp_tilt(tilt_deg) / DEG_PER_JOYSTICK_PX
+	var part := clamp_tilt(tilt_deg) / MAX_TILT_DEG
+	return Vector2(_stick_travel(part.x), _stick_travel(part.y)) * JOYSTICK_RANGE
+
+
+# Tilt (part of full, signed) for a head at `d` (part of its travel, signed).
+static func _stick_curve(d: float) -> float:
+	var u := maxf(absf(d) - JOYSTICK_DEAD_ZONE, 0.0) / (1.0 - JOYSTICK_DEAD_ZONE)
+	return signf(d) * ((1.0 - JOYSTICK_SQUARE) * u + JOYSTICK_SQUARE * u * u)
+
+
+# The head's travel (part, signed) for a tilt of `f` (part of full, signed): `_stick_curve`
+# undone, the root of JOYSTICK_SQUARE u² + (1 - JOYSTICK_SQUARE) u = |f|.
+static func _stick_travel(f: float) -> float:
+	if f == 0.0:
+		return 0.0
+	var a := JOYSTICK_SQUARE
+	var b := 1.0 - JOYSTICK_SQUARE
+	var u := (-b + sqrt(b * b + 4.0 * a * absf(f))) / (2.0 * a)
+	return signf(f) * (JOYSTICK_DEAD_ZONE + u * (1.0 - JOYSTICK_DEAD_ZONE))
 
 
 ## A stick or key vector (each axis -1..1) as a target tilt.
@@ -67,28 +85,6 @@ static func _ease_axis(current: float, target: float, delta: float) -> float:
 	var levelling := absf(target) < absf(current) or signf(target) * signf(current) < 0.0
 	var rate := RELEASE_RATE if levelling else EASE_RATE
 	return lerpf(current, target, 1.0 - exp(-rate * delta))
-
-
-## Moves `current` toward `target` for `delta` seconds at the keys' steady rates: further
-## from level at MAX_TILT_DEG per KEY_FULL_SECONDS, back toward level at MAX_TILT_DEG per
-## KEY_LEVEL_SECONDS. Piecewise straight lines, so any split of the same time into frames
-## gives the same tilt (frame-rate free).
-static func ramp_toward(current: Vector2, target: Vector2, delta: float) -> Vector2:
-	var dt := maxf(delta, 0.0)
-	return Vector2(_ramp_axis(current.x, target.x, dt), _ramp_axis(current.y, target.y, dt))
-
-
-static func _ramp_axis(current: float, target: float, delta: float) -> float:
-	var tilt_rate := MAX_TILT_DEG / KEY_FULL_SECONDS
-	var level_rate := MAX_TILT_DEG / KEY_LEVEL_SECONDS
-	if signf(target) * signf(current) < 0.0:
-		# turned the other way: back to level first, then on at the tilting rate
-		var to_level := absf(current) / level_rate
-		if delta <= to_level:
-			return move_toward(current, 0.0, level_rate * delta)
-		return move_toward(0.0, target, tilt_rate * (delta - to_level))
-	var rate := level_rate if absf(target) < absf(current) else tilt_rate
-	return move_toward(current, target, rate * delta)
 
 
 ## Tilt from an accelerometer reading (m/s², device axes) relative to a calibrated neutral

@@ -2,7 +2,7 @@ class_name TiltMixer
 extends RefCounted
 ## Decides the board's tilt each frame from every control the player may use: the joystick
 ## (as in the seed: the tilt follows the head at once), keys and gamepad stick (a held key
-## tilts further at a steady rate and a tap only a little, TiltInput.ramp_toward), and a phone's
+## tilts further step by step and a tap only a little, KeyTilt), and a phone's
 ## accelerometer (relative to a calibrated neutral). The last control touched wins.
 
 enum Source { NONE, JOYSTICK, KEYS, ACCELEROMETER }
@@ -20,6 +20,7 @@ var sensitivity := 1.0
 var neutral := Vector3.ZERO
 
 var _last_accel := Vector3.ZERO
+var _keys := KeyTilt.new()
 
 
 ## The joystick head moved to `offset` seed pixels: the tilt follows at once.
@@ -29,13 +30,15 @@ func joystick_moved(offset: Vector2) -> void:
 
 
 ## Advances one frame. `keys` is the tilt_* action vector (keyboard and stick, each axis
-## -1..1); `accel` the accelerometer reading (zero on devices without one).
-func update(delta: float, keys: Vector2, accel: Vector3) -> Vector2:
+## -1..1); `accel` the accelerometer reading (zero on devices without one); `fine` whether
+## the fine-tilt key is held (half tilt).
+func update(delta: float, keys: Vector2, accel: Vector3, fine := false) -> Vector2:
 	if keys.length_squared() > 0.0001:
+		if source != Source.KEYS:
+			_keys.take_over(tilt / maxf(sensitivity, 0.01))
 		source = Source.KEYS
 	if source == Source.KEYS:
-		var target := TiltInput.tilt_from_vector(keys.limit_length(1.0) * sensitivity)
-		tilt = TiltInput.ramp_toward(tilt, target, delta)
+		tilt = _keys.update(delta, keys, fine, sensitivity)
 	_last_accel = accel
 	if has_accelerometer() and source != Source.JOYSTICK and source != Source.KEYS:
 		if neutral == Vector3.ZERO:
@@ -68,5 +71,6 @@ func calibrate() -> void:
 ## Flattens the board and forgets which control was used (a reset).
 func reset() -> void:
 	tilt = Vector2.ZERO
+	_keys.reset()
 	if source != Source.ACCELEROMETER:
 		source = Source.NONE
