@@ -21,3 +21,11 @@ static func begin(board: String = FEVER) -> RefCounted:
 static func end(kept: RefCounted) -> void:
 	App.save_data = kept
 	App.request_board("pachinko", CLASSIC)
+
+
+## A game of the board `name` (levels/pachinko/NAME.board) added to `test`, freed after it.
+static func game(test: GutTest, name: String) -> PachinkoGame:
+	App.request_board("pachinko", "res://levels/pachinko/%s.board" % name)
+	var opened := (load("res://scenes/pachinko/pachinko_game.tscn") as PackedScene).instantiate()
+	test.add_child_autofree(opened)
+	return opened as PachinkoGame

@@ -5,10 +5,9 @@ extends GutTest
 ## handle's dial left turns it down, as the Left key does; the cards explain the power bar's
 ## arrow, REACH and where a strong shot goes; Windmills' card no longer calls a ×1 pocket rich.
 
-const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const SaveData := preload("res://scripts/app/save_data.gd")
+const BoardSwap := preload("res://tests/helpers/pachinko_board_swap.gd")
 
-var _kept_save: SaveData
+var _kept_save: RefCounted
 var _kept_skip := false
 
 
@@ -25,10 +24,7 @@ func after_each() -> void:
 
 
 func _game(board: String) -> PachinkoGame:
-	App.request_board("pachinko", "res://levels/pachinko/%s.board" % board)
-	var game := GAME.instantiate() as PachinkoGame
-	add_child_autofree(game)
-	return game
+	return BoardSwap.game(self, board)
 
 
 func test_the_reminder_after_r_keeps_inside_the_board_and_off_its_name_plate() -> void:

@@ -6,28 +6,22 @@ extends GutTest
 ## from Windmills went round to Classic, cleared, not to Tulip Garden, unplayed; and a goal
 ## passed mid-jackpot said nothing for minutes.
 
-const GAME := preload("res://scenes/pachinko/pachinko_game.tscn")
-const SaveData := preload("res://scripts/app/save_data.gd")
+const BoardSwap := preload("res://tests/helpers/pachinko_board_swap.gd")
 const FRAME := 1.0 / 60.0
 
-var _kept_save: SaveData
+var _kept_save: RefCounted
 
 
 func before_each() -> void:
-	_kept_save = App.save_data
-	App.save_data = SaveData.new()  # in memory only: never written
+	_kept_save = BoardSwap.begin(BoardSwap.CLASSIC)
 
 
 func after_each() -> void:
-	App.save_data = _kept_save
-	App.request_board("pachinko", "res://levels/pachinko/classic.board")
+	BoardSwap.end(_kept_save)
 
 
 func _game(board: String) -> PachinkoGame:
-	App.request_board("pachinko", "res://levels/pachinko/%s.board" % board)
-	var game := GAME.instantiate() as PachinkoGame
-	add_child_autofree(game)
-	return game
+	return BoardSwap.game(self, board)
 
 
 func test_behind_the_card_the_panel_reads_the_trays_start() -> void:
