@@ -5,37 +5,29 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s res://tools/attacker_band.gd -- --board=fever
 ##     [--powers=0,10,...] [--seeds=1,2]
 
+const BandArgs := preload("res://tools/band_tool_args.gd")
 const MAX_SECONDS := 200.0
 
 
 func _init() -> void:
-	var board := "fever"
-	var powers: Array[int] = []
-	var seeds: Array[int] = [1]
-	for arg in OS.get_cmdline_user_args():
-		if arg.begins_with("--board="):
-			board = arg.get_slice("=", 1)
-		elif arg.begins_with("--powers="):
-			for p in arg.get_slice("=", 1).split(","):
-				powers.append(int(p))
-		elif arg.begins_with("--seeds="):
-			seeds.clear()
-			for s in arg.get_slice("=", 1).split(","):
-				seeds.append(int(s))
-	if powers.is_empty():
-		for p in range(0, 101, 10):
-			powers.append(p)
-	var result := BoardLoader.load_board("res://levels/pachinko/%s.board" % board)
-	if not result.ok():
-		printerr("attacker_band: cannot load %s" % board)
+	var defaults: Array[int] = []
+	for p in range(0, 101, 10):
+		defaults.append(p)
+	var args := BandArgs.new()
+	args.read(OS.get_cmdline_user_args(), "fever", defaults)
+	var level := args.load_level("attacker_band")
+	if level == null:
 		quit(1)
 		return
+	var board := args.board
+	var powers := args.powers
+	var seeds := args.seeds
 	var per_round := {}
 	for power in powers:
 		var catches := 0
 		var rounds := 0
 		for rng_seed in seeds:
-			var got := _jackpot_at(result.level, power, rng_seed)
+			var got := _jackpot_at(level, power, rng_seed)
 			catches += got.x
 			rounds += got.y
 		per_round[power] = snappedf(float(catches) / maxf(rounds, 1), 0.01)

@@ -7,35 +7,24 @@ extends SceneTree
 ##   tools/godot.sh --headless --path . -s res://tools/tulip_band.gd -- --board=tulips
 ##     [--powers=30,35,...] [--shots=120] [--seeds=1,2]
 
+const BandArgs := preload("res://tools/band_tool_args.gd")
 const MAX_SECONDS := 400.0
 
 
 func _init() -> void:
-	var board := "tulips"
-	var powers: Array[int] = []
-	var seeds: Array[int] = [1]
-	var shots := 120
-	for arg in OS.get_cmdline_user_args():
-		if arg.begins_with("--board="):
-			board = arg.get_slice("=", 1)
-		elif arg.begins_with("--powers="):
-			for p in arg.get_slice("=", 1).split(","):
-				powers.append(int(p))
-		elif arg.begins_with("--shots="):
-			shots = int(arg.get_slice("=", 1))
-		elif arg.begins_with("--seeds="):
-			seeds.clear()
-			for s in arg.get_slice("=", 1).split(","):
-				seeds.append(int(s))
-	if powers.is_empty():
-		for p in range(30, 101, 5):
-			powers.append(p)
-	var result := BoardLoader.load_board("res://levels/pachinko/%s.board" % board)
-	if not result.ok():
-		printerr("tulip_band: cannot load %s" % board)
+	var defaults: Array[int] = []
+	for p in range(30, 101, 5):
+		defaults.append(p)
+	var args := BandArgs.new()
+	args.read(OS.get_cmdline_user_args(), "tulips", defaults, 120)
+	var level := args.load_level("tulip_band")
+	if level == null:
 		quit(1)
 		return
-	var level := result.level
+	var board := args.board
+	var powers := args.powers
+	var seeds := args.seeds
+	var shots := args.shots
 	var rates := {}
 	var bands := {}
 	for i in level.bonus_pockets.size():
