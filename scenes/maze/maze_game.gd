@@ -26,6 +26,8 @@ var _ghost: GhostRun
 var _ghost_view := MazeGhost3d.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
+## A mouse drag on the board itself tilts it, as the joystick does.
+var _drag := MazeBoardDrag.new()
 var _panel_layout: MazePanelLayout
 ## Frames left in which the panel is placed again after a window change (SETTLE_FRAMES).
 var _settle_frames := 0
@@ -65,8 +67,12 @@ func _ready() -> void:
 	MazeGameSetup.add_scene(self, MazeGameSetup.FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
+	_drag.sensitivity = App.settings.tilt_sensitivity
 	_joystick.pressed.connect(_on_joystick_pressed)
 	_joystick.moved.connect(mixer.joystick_moved)
+	add_child(_drag)
+	_drag.pressed.connect(_start)
+	_drag.moved.connect(_on_board_dragged)
 	_calibrate.pressed.connect(_on_calibrate)
 	MazeFocusRing.apply(_calibrate)
 	_calibrate.visible = false
@@ -149,6 +155,11 @@ func _process(delta: float) -> void:
 func _unhandled_input(event: InputEvent) -> void:
 	if rules == null:
 		return
+	var pressed := KeyTilt.pressed_direction(event)
+	if pressed != Vector2.ZERO and (rules.is_playing() or rules.state == MazeRules.State.READY):
+		# the press itself nudges the board, however soon the key comes up (trial 9)
+		_start()
+		mixer.key_pressed(pressed)
 	if event.is_action_pressed("maze_reset") or event.is_action_pressed("game_restart"):
 		rules.reset()
 	elif event.is_action_pressed("maze_hard_mode"):
@@ -200,7 +211,7 @@ func _choose_hard_mode() -> void:
 
 
 func _start() -> void:
-	if rules.state != MazeRules.State.READY:
+	if rules == null or rules.state != MazeRules.State.READY:
 		return
 	rules.start()
 	_note.fade_out()
@@ -213,6 +224,13 @@ func _on_joystick_pressed() -> void:
 	elif rules != null and rules.is_over():
 		rules.reset()
 		_start()
+
+
+# A drag on the board tilts it as the joystick would, and shows the joystick's head there.
+func _on_board_dragged(offset: Vector2) -> void:
+	if rules != null and (rules.is_playing() or offset == Vector2.ZERO):
+		mixer.joystick_moved(offset)
+		_joystick.head_offset = offset
 
 
 func _on_calibrate() -> void:
@@ -231,24 +249,21 @@ func _on_game_reset() -> void:
 	_ghost_view.set_board_size(rules.level.size)
 	_ghost_view.clear()
 	_joystick.release()
+	_drag.release()
 	mixer.reset()
 	_stage.set_tilt(Vector2.ZERO)
 	_stage.set_hard_mode(rules.hard_mode)
 	var hint := MazeHints.start(
 		rules.hard_mode, rules.ball_total(), rules.level.holes.size(), rules.level.board_id
 	)
-	# the ghost's line on a line of its own, and before there is a ghost one as long, so the
-	# note keeps its height (and the panel its layout) from the first attempt to the next
-	if _ghost != null:
-		hint += "\n" + MazeHints.ghost()
-	elif App.settings.show_ghost:
-		hint += "\n" + MazeHints.no_ghost_yet()
+	hint += MazeHints.ghost_line(_ghost != null, App.settings.show_ghost)
 	_note.show_note(MazeHints.tilt_to_start(), hint)
 	_show_best()
 
 
 func _on_won(seconds: float) -> void:
 	_joystick.release()
+	_drag.release()
 	var board_id := rules.level.board_id
 	var before := App.best_maze_time(board_id, rules.hard_mode)
 	var summary := MazeWinSummary.of(rules.level, rules.hard_mode, seconds, before)
@@ -298,6 +313,7 @@ func _layout() -> Rect2:
 	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
 		get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)
 	_stage.set_board_region(region)
+	_drag.region = region
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
 	_win_panel.size = region.size
@@ -322,6 +338,7 @@ func _on_retry() -> void:
 
 func _on_lost(hole: int) -> void:
 	_joystick.release()
+	_drag.release()
 	_lines.show_medal_line("")
 	_stage.set_lost_hole(hole)
 	_sounds.play(SoundRecipes.BALL_DROP)
@@ -369,6 +386,7 @@ func _on_settings_changed() -> void:
 	haptics.enabled = App.settings.vibration
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
+	_drag.sensitivity = App.settings.tilt_sensitivity
 	var low := App.settings.maze_low_graphics
 	var tutorial := App.settings.maze_tutorial_look
 	if _stage.low_graphics != low or _stage.tutorial_look != tutorial:
