@@ -83,7 +83,10 @@ func _ready() -> void:
 		_note.show_note("This board could not be loaded.", loaded.problem)
 		_joystick.hide()
 		return
-	rules = MazeRules.new(level)
+	# Next board from a hard-mode run opens the next in hard mode where it has black holes
+	var hard_asked := App.maze_hard_next
+	App.maze_hard_next = false
+	rules = MazeRules.new(level, hard_asked and not level.holes.is_empty())
 	_recorder.attach_maze(rules)
 	_stage.add_on_board(_ghost_view)
 	_ghost_view.set_board_size(level.size)
@@ -100,6 +103,8 @@ func _ready() -> void:
 	_settle_frames = SETTLE_FRAMES  # placed again as the panel's text settles, then kept
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
+	if hard_asked and not rules.hard_mode:
+		_note.show_note(MazeHints.tilt_to_start(), MazeHints.easy_here())
 	# the first frame drawn shows the board ready: its balls and the medal in reach
 	_stage.sync_balls(rules, 0.0)
 	_lines.show_next_medal(rules)
@@ -124,15 +129,11 @@ func _process(delta: float) -> void:
 	_calibrate.visible = mixer.has_accelerometer()
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()
-	if rules.is_playing():
-		var fine := Input.is_action_pressed("tilt_fine")
-		MazeFrameSteps.run(rules, _recorder, delta, mixer, keys, accel, fine)
-		if mixer.source != TiltMixer.Source.JOYSTICK:
-			_joystick.head_offset = TiltInput.joystick_from_tilt(rules.tilt)
-	elif rules.state == MazeRules.State.WON:
-		# the board eases back to level (as a key let go) and the dip gathers the balls in
-		rules.set_tilt(KeyTilt.level_toward(rules.tilt, delta))
-		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
+	MazeFrameSteps.play_frame(rules, _recorder, delta, mixer, keys, accel)
+	# the head shows the keys' tilt, and once the run is over the board levelling (trial 9:
+	# it stayed off-centre behind the result card)
+	if mixer.source != TiltMixer.Source.JOYSTICK or rules.is_over():
+		_joystick.head_offset = TiltInput.joystick_from_tilt(rules.tilt)
 	if _ghost != null and not rules.is_over():  # it stops at the finish, as the clock does
 		_ghost.sync(rules.world.step_count)
 		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
@@ -272,11 +273,7 @@ func _on_won(seconds: float) -> void:
 		var path := ReplayStore.best_maze_path(board_id, rules.hard_mode)
 		ReplayStore.save(_recorder.finish(), path)
 	# the card says it was done; the panel only says what else there is to try
-	var next_try := MazeHints.won(rules.hard_mode, rules.level.holes.size())
-	if next_try.is_empty():
-		_note.fade_out()
-	else:
-		_note.show_note(next_try, "")
+	_note.show_or_fade(MazeHints.won(rules.hard_mode, rules.level.holes.size()))
 	_lines.show_medal_line(summary.medal_line())
 	_show_best()
 	var has_next := not MazeProgress.next_path(board_id).is_empty()
@@ -328,6 +325,7 @@ func win_panel() -> MazeWinPanel:
 func _on_next_board() -> void:
 	var path := MazeProgress.next_path(rules.level.board_id)
 	if not path.is_empty():
+		App.maze_hard_next = rules.hard_mode
 		App.start_game(BoardLevel.MAZE_NAME, path)
 
 

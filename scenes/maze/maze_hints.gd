@@ -85,6 +85,12 @@ static func ghost_line(has_ghost: bool, ghost_shown: bool) -> String:
 	return "\n" + no_ghost_yet() if ghost_shown else ""
 
 
+## The hint on a board opened from a hard-mode run that has no black holes (so it plays in
+## easy mode).
+static func easy_here() -> String:
+	return "No black holes on this board, so it plays in easy mode. Roll every ball into the dip."
+
+
 ## The hint when H is pressed on a board without black holes (it has no hard mode).
 static func no_hard_mode() -> String:
 	return "This board has no black holes, so it has no hard mode."
