@@ -90,3 +90,16 @@ func test_a_held_stick_with_no_press_event_still_nudges_and_holds() -> void:
 	for i in 60:
 		mixer.update(FRAME, Vector2.DOWN, Vector3.ZERO)
 	assert_almost_eq(mixer.tilt.y, TiltInput.MAX_TILT_DEG, 0.01, "then full tilt")
+
+
+# The game hands key presses to the keys' tilt from their events; a stick's moves are not
+# presses (each would restart the nudge, and a hold would never build up).
+func test_a_key_press_is_heard_from_its_event_and_a_stick_move_is_not() -> void:
+	var press := InputEventAction.new()
+	press.action = &"tilt_left"
+	press.pressed = true
+	assert_eq(KeyTilt.pressed_direction(press), Vector2.LEFT)
+	var stick := InputEventJoypadMotion.new()
+	stick.axis = JOY_AXIS_LEFT_X
+	stick.axis_value = 1.0
+	assert_eq(KeyTilt.pressed_direction(stick), Vector2.ZERO)

@@ -55,10 +55,14 @@ func press(direction: Vector2) -> void:
 	_y.press(direction.y)
 
 
-## The direction of the tilt keys that `event` presses (zero for anything else, a key's
-## repeat too): the game hands it to `press`, so a press shorter than a frame still counts.
+## The direction of the tilt keys that `event` presses (zero for anything else: a key's
+## repeat, a stick's move): the game hands it to `press`, so a press shorter than a frame still counts.
 static func pressed_direction(event: InputEvent) -> Vector2:
 	var direction := Vector2.ZERO
+	if event is InputEventJoypadMotion:
+		# every move of a pushed stick reads as a press, and each would start the nudge again
+		# and never let a hold build up: the stick's nudge comes from its held value instead
+		return direction
 	for action: StringName in DIRECTIONS:
 		if event.is_action_pressed(action):
 			direction += DIRECTIONS[action]
