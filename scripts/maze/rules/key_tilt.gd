@@ -56,7 +56,8 @@ func press(direction: Vector2) -> void:
 
 
 ## The direction of the tilt keys that `event` presses (zero for anything else: a key's
-## repeat, a stick's move): the game hands it to `press`, so a press shorter than a frame still counts.
+## repeat, a stick's move): the game hands it to `press`, so a press shorter than a frame
+## still counts.
 static func pressed_direction(event: InputEvent) -> Vector2:
 	var direction := Vector2.ZERO
 	if event is InputEventJoypadMotion:
