@@ -32,6 +32,9 @@ var skip_seen_rules_cards := true
 ## (HouseJackpot; the game does; tool scripts and tests start with it off, so their games
 ## spin as the seed says whatever the user folder holds, and a test turns it on to check it).
 var house_jackpots := true
+## True when the next maze board should open in hard mode (Next board from a hard-mode run;
+## trial 9 pressed H on every board). The maze screen reads it as it opens and clears it.
+var maze_hard_next := false
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 

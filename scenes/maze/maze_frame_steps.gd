@@ -50,3 +50,23 @@ static func run(
 			recorder.note_frame()
 		left -= piece
 	return steps
+
+
+## One drawn frame of the maze screen: while playing, `delta` runs through `run` with the keys
+## (`keys`, the fine key read here) and `accel`; once the run is over the board eases back to
+## level as a key let go would, won or lost (trial 9: after a ball was lost the board stayed
+## drawn tilted, "which looks like a freeze"), and a won board's dip gathers the balls in.
+static func play_frame(
+	rules: MazeRules,
+	recorder: ReplayRecorder,
+	delta: float,
+	mixer: TiltMixer,
+	keys: Vector2,
+	accel: Vector3
+) -> void:
+	if rules.is_playing():
+		run(rules, recorder, delta, mixer, keys, accel, Input.is_action_pressed("tilt_fine"))
+	elif rules.is_over():
+		rules.set_tilt(KeyTilt.level_toward(rules.tilt, delta))
+		if rules.state == MazeRules.State.WON:
+			rules.settle(minf(delta, PIECE_SECONDS))

@@ -26,6 +26,8 @@ var _ghost: GhostRun
 var _ghost_view := MazeGhost3d.new()
 var _rolling: MazeBallSounds
 var _win_panel := MazeWinPanel.new()
+## A mouse drag on the board itself tilts it, as the joystick does.
+var _drag := MazeBoardDrag.new()
 var _panel_layout: MazePanelLayout
 ## Frames left in which the panel is placed again after a window change (SETTLE_FRAMES).
 var _settle_frames := 0
@@ -65,8 +67,12 @@ func _ready() -> void:
 	MazeGameSetup.add_scene(self, MazeGameSetup.FRAME_COUNTER)
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
+	_drag.sensitivity = App.settings.tilt_sensitivity
 	_joystick.pressed.connect(_on_joystick_pressed)
 	_joystick.moved.connect(mixer.joystick_moved)
+	add_child(_drag)
+	_drag.pressed.connect(_start)
+	_drag.moved.connect(_on_board_dragged)
 	_calibrate.pressed.connect(_on_calibrate)
 	MazeFocusRing.apply(_calibrate)
 	_calibrate.visible = false
@@ -77,7 +83,10 @@ func _ready() -> void:
 		_note.show_note("This board could not be loaded.", loaded.problem)
 		_joystick.hide()
 		return
-	rules = MazeRules.new(level)
+	# Next board from a hard-mode run opens the next in hard mode where it has black holes
+	var hard_asked := App.maze_hard_next
+	App.maze_hard_next = false
+	rules = MazeRules.new(level, hard_asked and not level.holes.is_empty())
 	_recorder.attach_maze(rules)
 	_stage.add_on_board(_ghost_view)
 	_ghost_view.set_board_size(level.size)
@@ -94,6 +103,8 @@ func _ready() -> void:
 	_settle_frames = SETTLE_FRAMES  # placed again as the panel's text settles, then kept
 	_title.text = level.display_name if not level.display_name.is_empty() else level.board_id
 	_on_game_reset()
+	if hard_asked and not rules.hard_mode:
+		_note.show_note(MazeHints.tilt_to_start(), MazeHints.easy_here())
 	# the first frame drawn shows the board ready: its balls and the medal in reach
 	_stage.sync_balls(rules, 0.0)
 	_lines.show_next_medal(rules)
@@ -118,15 +129,11 @@ func _process(delta: float) -> void:
 	_calibrate.visible = mixer.has_accelerometer()
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()
-	if rules.is_playing():
-		var fine := Input.is_action_pressed("tilt_fine")
-		MazeFrameSteps.run(rules, _recorder, delta, mixer, keys, accel, fine)
-		if mixer.source != TiltMixer.Source.JOYSTICK:
-			_joystick.head_offset = TiltInput.joystick_from_tilt(rules.tilt)
-	elif rules.state == MazeRules.State.WON:
-		# the board eases back to level (as a key let go) and the dip gathers the balls in
-		rules.set_tilt(KeyTilt.level_toward(rules.tilt, delta))
-		rules.settle(minf(delta, MazeFrameSteps.PIECE_SECONDS))
+	MazeFrameSteps.play_frame(rules, _recorder, delta, mixer, keys, accel)
+	# the head shows the keys' tilt, and once the run is over the board levelling (trial 9:
+	# it stayed off-centre behind the result card)
+	if mixer.source != TiltMixer.Source.JOYSTICK or rules.is_over():
+		_joystick.head_offset = TiltInput.joystick_from_tilt(rules.tilt)
 	if _ghost != null and not rules.is_over():  # it stops at the finish, as the clock does
 		_ghost.sync(rules.world.step_count)
 		_ghost_view.show_balls(_ghost.positions(), _ghost.ball_radius())
@@ -149,6 +156,11 @@ func _process(delta: float) -> void:
 func _unhandled_input(event: InputEvent) -> void:
 	if rules == null:
 		return
+	var pressed := KeyTilt.pressed_direction(event)
+	if pressed != Vector2.ZERO and (rules.is_playing() or rules.state == MazeRules.State.READY):
+		# the press itself nudges the board, however soon the key comes up (trial 9)
+		_start()
+		mixer.key_pressed(pressed)
 	if event.is_action_pressed("maze_reset") or event.is_action_pressed("game_restart"):
 		rules.reset()
 	elif event.is_action_pressed("maze_hard_mode"):
@@ -200,7 +212,7 @@ func _choose_hard_mode() -> void:
 
 
 func _start() -> void:
-	if rules.state != MazeRules.State.READY:
+	if rules == null or rules.state != MazeRules.State.READY:
 		return
 	rules.start()
 	_note.fade_out()
@@ -213,6 +225,13 @@ func _on_joystick_pressed() -> void:
 	elif rules != null and rules.is_over():
 		rules.reset()
 		_start()
+
+
+# A drag on the board tilts it as the joystick would, and shows the joystick's head there.
+func _on_board_dragged(offset: Vector2) -> void:
+	if rules != null and (rules.is_playing() or offset == Vector2.ZERO):
+		mixer.joystick_moved(offset)
+		_joystick.head_offset = offset
 
 
 func _on_calibrate() -> void:
@@ -231,24 +250,21 @@ func _on_game_reset() -> void:
 	_ghost_view.set_board_size(rules.level.size)
 	_ghost_view.clear()
 	_joystick.release()
+	_drag.release()
 	mixer.reset()
 	_stage.set_tilt(Vector2.ZERO)
 	_stage.set_hard_mode(rules.hard_mode)
 	var hint := MazeHints.start(
 		rules.hard_mode, rules.ball_total(), rules.level.holes.size(), rules.level.board_id
 	)
-	# the ghost's line on a line of its own, and before there is a ghost one as long, so the
-	# note keeps its height (and the panel its layout) from the first attempt to the next
-	if _ghost != null:
-		hint += "\n" + MazeHints.ghost()
-	elif App.settings.show_ghost:
-		hint += "\n" + MazeHints.no_ghost_yet()
+	hint += MazeHints.ghost_line(_ghost != null, App.settings.show_ghost)
 	_note.show_note(MazeHints.tilt_to_start(), hint)
 	_show_best()
 
 
 func _on_won(seconds: float) -> void:
 	_joystick.release()
+	_drag.release()
 	var board_id := rules.level.board_id
 	var before := App.best_maze_time(board_id, rules.hard_mode)
 	var summary := MazeWinSummary.of(rules.level, rules.hard_mode, seconds, before)
@@ -257,11 +273,7 @@ func _on_won(seconds: float) -> void:
 		var path := ReplayStore.best_maze_path(board_id, rules.hard_mode)
 		ReplayStore.save(_recorder.finish(), path)
 	# the card says it was done; the panel only says what else there is to try
-	var next_try := MazeHints.won(rules.hard_mode, rules.level.holes.size())
-	if next_try.is_empty():
-		_note.fade_out()
-	else:
-		_note.show_note(next_try, "")
+	_note.show_or_fade(MazeHints.won(rules.hard_mode, rules.level.holes.size()))
 	_lines.show_medal_line(summary.medal_line())
 	_show_best()
 	var has_next := not MazeProgress.next_path(board_id).is_empty()
@@ -298,6 +310,7 @@ func _layout() -> Rect2:
 	if _panel_layout.needs_retry and not get_tree().process_frame.is_connected(_layout):
 		get_tree().process_frame.connect(_layout, CONNECT_ONE_SHOT)
 	_stage.set_board_region(region)
+	_drag.region = region
 	_win_panel.set_anchors_preset(Control.PRESET_TOP_LEFT)
 	_win_panel.position = region.position
 	_win_panel.size = region.size
@@ -312,6 +325,7 @@ func win_panel() -> MazeWinPanel:
 func _on_next_board() -> void:
 	var path := MazeProgress.next_path(rules.level.board_id)
 	if not path.is_empty():
+		App.maze_hard_next = rules.hard_mode
 		App.start_game(BoardLevel.MAZE_NAME, path)
 
 
@@ -322,6 +336,7 @@ func _on_retry() -> void:
 
 func _on_lost(hole: int) -> void:
 	_joystick.release()
+	_drag.release()
 	_lines.show_medal_line("")
 	_stage.set_lost_hole(hole)
 	_sounds.play(SoundRecipes.BALL_DROP)
@@ -369,6 +384,7 @@ func _on_settings_changed() -> void:
 	haptics.enabled = App.settings.vibration
 	mixer.sensitivity = App.settings.tilt_sensitivity
 	_joystick.sensitivity = App.settings.tilt_sensitivity
+	_drag.sensitivity = App.settings.tilt_sensitivity
 	var low := App.settings.maze_low_graphics
 	var tutorial := App.settings.maze_tutorial_look
 	if _stage.low_graphics != low or _stage.tutorial_look != tutorial:

@@ -20,6 +20,9 @@ const TIPS := {
 	"maze_switchbacks": "Tip: tap a key, or hold Shift, to stop a ball part-way along a corridor.",
 }
 
+## The controls line's first line: how the keys and the mouse tilt the board.
+const TILT_LINE := "Tap a key to nudge, hold to roll, or drag the board"
+
 
 ## The controls line under the side panel. Each "Space reset" item holds together (its
 ## spaces don't break) and the items are set apart by plain spaces (ITEM_GAP), which a wrapped
@@ -35,7 +38,8 @@ static func controls() -> String:
 		"%s pause" % KeyNames.of(&"pause", "the pause key"),
 	]:
 		items.append(item.replace(" ", NBSP))
-	return "Tilt: arrows, WASD or the joystick\n" + ITEM_GAP.join(items)
+	# trial 9: a tap is a fixed nudge and a hold rolls on; a drag on the board tilts it
+	return TILT_LINE + "\n" + ITEM_GAP.join(items)
 
 
 ## The headline before the first tilt. Two phrases, each held by no-break spaces and the
@@ -64,12 +68,27 @@ static func start(hard: bool, balls: int = 4, holes: int = 1, board_id := "") ->
 	if hard:
 		return "Hard mode: avoid the black holes. Back to easy mode? Press%s%s" % [NBSP, _easy()]
 	if balls == 1:
-		return "Tilt with the arrows or the joystick: the ball rolls downhill, into the dip."
+		return "Tap or hold the arrows, or drag the board: the ball rolls downhill, into the dip."
 	if TIPS.has(board_id):
 		return "Roll every ball into the round dip. %s" % TIPS[board_id]
 	if holes == 0:
 		return "Roll every ball into the round dip."
 	return "Roll every ball into the round dip. Ready for hard mode? Press%s%s" % [NBSP, _hard()]
+
+
+## The start hint's last line: the ghost's when `has_ghost`, and before there is a ghost one
+## as long (while the ghost is shown at all), so the note keeps its height (and the panel its
+## layout) from the first attempt to the next. Empty, or a line break and the line.
+static func ghost_line(has_ghost: bool, ghost_shown: bool) -> String:
+	if has_ghost:
+		return "\n" + ghost()
+	return "\n" + no_ghost_yet() if ghost_shown else ""
+
+
+## The hint on a board opened from a hard-mode run that has no black holes (so it plays in
+## easy mode).
+static func easy_here() -> String:
+	return "No black holes on this board, so it plays in easy mode. Roll every ball into the dip."
 
 
 ## The hint when H is pressed on a board without black holes (it has no hard mode).

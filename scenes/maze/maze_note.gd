@@ -28,6 +28,14 @@ func show_note_now(headline: String, hint: String) -> void:
 	modulate.a = 1.0
 
 
+## Shows `headline` alone, or fades the note out when there is none (after a win).
+func show_or_fade(headline: String) -> void:
+	if headline.is_empty():
+		fade_out()
+	else:
+		show_note(headline, "")
+
+
 ## Fades the note out (the game started).
 func fade_out() -> void:
 	_fade_to(0.0)

@@ -8,6 +8,11 @@ extends RefCounted
 const LOST_FLASH_SECONDS := 1.2
 const LOST_FLASH := Color(0.85, 0.15, 0.2)
 
+## The medal line past bronze once the board has a best time in this mode.
+const TOO_SLOW := "Too slow for a medal: finish anyway!"
+## ...and before its first finish: a first run is for finding the way in.
+const FIRST_RUN := "First run: just find the way in!"
+
 var _mode: Label
 var _timer: Label
 var _best: Label
@@ -41,15 +46,21 @@ func show_clock(rules: MazeRules) -> void:
 		show_next_medal(rules)
 
 
-## The medal still in reach while playing: "Gold by 0:36.3", then Silver once that passed.
+## The medal still in reach while playing: "Gold by 0:36.3", then Silver once that passed;
+## past bronze, TOO_SLOW, or FIRST_RUN before the board's first finish in this mode.
 func show_next_medal(rules: MazeRules) -> void:
 	var times := Medals.times_for(rules.level, rules.hard_mode)
 	var target := Medals.next_target(times, rules.elapsed)
 	var medal: Medals.Medal = target["medal"]
+	var first_run := App.best_maze_time(rules.level.board_id, rules.hard_mode) < 0.0
 	if times.size() != 3:
 		_next_medal.text = ""
+	elif medal == Medals.Medal.NONE and first_run:
+		# a first run is for finding the way (trial 9: "Too slow for a medal" landed while
+		# still exploring a new board, "a downer on a first look")
+		_next_medal.text = FIRST_RUN
 	elif medal == Medals.Medal.NONE:
-		_next_medal.text = "Too slow for a medal: finish anyway!"
+		_next_medal.text = TOO_SLOW
 	else:
 		var seconds: float = target["seconds"]
 		_next_medal.text = "%s by %s" % [Medals.name_of(medal), MazeWinSummary.clock(seconds)]

@@ -19,8 +19,12 @@ const CARD := Color(0.99, 0.97, 0.94, 0.96)
 ## The fill of the card's buttons (all alike; the focused one only gains the ring).
 const BUTTON_FILL := Color(0.93, 0.87, 0.76)
 
-## How long after the card appears it ignores the arrow and accept keys (ms).
+## How long after the card appears it ignores the arrow and accept keys (ms)...
 const HELD_KEYS_IGNORED_MSEC := 600
+## ...and for at least this many drawn frames: on a slow machine (trial 9: 3-37 FPS) a tap
+## meant for the last ball lands after 600 ms with the card hardly on the screen, and two of
+## them walked the first card's focus from Next board to Menu.
+const HELD_KEYS_IGNORED_FRAMES := 6
 ## The menu keys a key held over from play can press: the arrows that tilted the board, and
 ## accept.
 const MENU_ACTIONS: Array[StringName] = [
@@ -29,6 +33,8 @@ const MENU_ACTIONS: Array[StringName] = [
 
 # When the card was last shown (Time.get_ticks_msec).
 var _shown_at_msec := -1000000
+# Frames drawn since the card was last shown.
+var _frames_shown := 0
 # The menu actions held down as the card appeared: ignored until let go (their repeats go on
 # for as long as the key is held, well past the card's first moments).
 var _held_over: Array[StringName] = []
@@ -127,6 +133,7 @@ func present_loss() -> void:
 func _appear() -> void:
 	show()
 	_shown_at_msec = Time.get_ticks_msec()
+	_frames_shown = 0
 	_held_over.clear()
 	for action in MENU_ACTIONS:
 		if Input.is_action_pressed(action):
@@ -148,9 +155,20 @@ func _input(event: InputEvent) -> void:
 				_held_over.erase(action)
 			get_viewport().set_input_as_handled()
 			return
-		if Time.get_ticks_msec() - _shown_at_msec <= HELD_KEYS_IGNORED_MSEC:
+		if _settling():
 			get_viewport().set_input_as_handled()
 			return
+
+
+func _process(_delta: float) -> void:
+	if visible:
+		_frames_shown += 1
+
+
+# True in the card's first moments, when a menu key is still one meant for the board.
+func _settling() -> bool:
+	var young := Time.get_ticks_msec() - _shown_at_msec <= HELD_KEYS_IGNORED_MSEC
+	return young or _frames_shown < HELD_KEYS_IGNORED_FRAMES
 
 
 ## The texts shown, top to bottom (for tests).

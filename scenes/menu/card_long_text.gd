@@ -4,11 +4,16 @@ extends RefCounted
 ## the card is not focused it keeps to a few lines, ending in "…". Every card's thumbnail
 ## gives up the height (down to THUMB_MIN_HEIGHT) those lines need, so the cards line up. On
 ## the focused card a longer text (a description may have 600 characters) reads through: it
-## moves up a line every READ_SECONDS until its last line has shown, rests, and starts again
-## from the top. The card keeps its size throughout, so nothing around it moves.
+## rests on its first lines for START_REST_SECONDS, moves up a line every READ_SECONDS until
+## its last line has shown, rests, and starts again from the top. Once moved on it has no
+## "…" (trial 9 read "of turns that double back, with... stops part-way.": the label cuts the
+## line where the resting text ends, wherever that line now sits). The card keeps its size
+## throughout, so nothing around it moves.
 
 const THUMB_MIN_HEIGHT := 56.0
 const READ_SECONDS := 1.5
+## A text that reads through first rests this long on its first lines (seconds).
+const START_REST_SECONDS := 3.0
 const END_REST_SECONDS := 2.5
 
 ## The label that holds the text.
@@ -43,6 +48,7 @@ func set_focused(focused: bool) -> void:
 	_focused = focused
 	_clock = 0.0
 	label.lines_skipped = 0
+	_set_cut_mark(true)
 	fit()
 
 
@@ -69,11 +75,16 @@ func advance(delta: float) -> void:
 	if not _focused or _hidden_lines == 0:
 		return
 	_clock += delta
-	var steps := floori(_clock / READ_SECONDS)
+	var steps := 0
+	if _clock >= START_REST_SECONDS:
+		steps = 1 + floori((_clock - START_REST_SECONDS) / READ_SECONDS)
 	if steps > _hidden_lines + ceili(END_REST_SECONDS / READ_SECONDS):
 		_clock = 0.0
 		steps = 0
-	label.lines_skipped = mini(steps, _hidden_lines)
+	var skipped := mini(steps, _hidden_lines)
+	if skipped != label.lines_skipped:
+		label.lines_skipped = skipped
+		_set_cut_mark(skipped == 0)
 
 
 ## True when every line of the text shows at once.
@@ -117,7 +128,14 @@ func _show_lines(count: int) -> void:
 	if label.max_lines_visible == count:
 		return
 	label.max_lines_visible = count
-	# the label cuts its text ("…") only when it reshapes, which a new line limit alone does not
-	# ask for: switching the cut off and on again does
+	_set_cut_mark(label.lines_skipped == 0)
+
+
+# "…" where the text is cut (`shown`), or none. The label cuts its text only when it
+# reshapes, which a new line limit alone does not ask for: switching the cut off and on again
+# does. The cut falls on the last resting line of the whole text, not of what is shown, so a
+# text moved on shows none.
+func _set_cut_mark(shown: bool) -> void:
 	label.text_overrun_behavior = TextServer.OVERRUN_NO_TRIMMING
-	label.text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS
+	if shown:
+		label.text_overrun_behavior = TextServer.OVERRUN_TRIM_ELLIPSIS

@@ -10,6 +10,8 @@ const CARD_SIZE := Vector2(300, 400)
 const THUMB_HEIGHT := 206.0
 ## Greyed (a board that cannot be played), but opaque: the backdrop never shows through text.
 const GREYED := Color(0.72, 0.72, 0.76, 1.0)
+## A maze card's description shows this many lines beside its medal row.
+const MAZE_TEXT_LINES := 3
 
 ## The board file this card stands for.
 var board_path := ""
@@ -89,9 +91,11 @@ func show_progress(easy: Medals.Medal, hard: Medals.Medal, is_locked: bool, hint
 		# so the description keeps its lines
 		_badges.minimum_size_changed.connect(_fit_to_badges)
 		_fit_to_badges()
-		# the medal row takes a line's height: the description gives one up to fit the card
+		# the medal row takes a line's height: the thumbnail gives it up (on every card, so the
+		# row lines up), and the description keeps three lines, which hold every shipped maze
+		# board's whole (trial 9 read a two-line description part-way through its scroll)
 		if _long_text != null:
-			_long_text.set_resting_lines(2)
+			_long_text.set_resting_lines(MAZE_TEXT_LINES)
 	_badges.show_medals(
 		easy,
 		hard,

@@ -43,3 +43,12 @@ func test_switchbacks_teaches_the_small_tilt() -> void:
 # Trial 8 asked for a finer tilt: the controls line names the key that halves it.
 func test_the_controls_line_names_the_fine_tilt_key() -> void:
 	assert_string_contains(MazeHints.controls(), "Shift\u00a0fine\u00a0tilt")
+
+
+# Trial 9: a tap is a fixed nudge, a hold rolls on, and a drag on the board tilts it: the
+# controls line says all three.
+func test_the_controls_line_says_tap_hold_and_drag() -> void:
+	var line := MazeHints.controls().split("\n")[0]
+	assert_string_contains(line, "Tap a key to nudge")
+	assert_string_contains(line, "hold to roll")
+	assert_string_contains(line, "drag the board")

@@ -79,3 +79,21 @@ func test_a_bad_window_size_is_named_and_forgotten() -> void:
 		for name in DirAccess.get_files_at("user://"):
 			if name.begins_with("test_window_fit_settings.cfg.bad-"):
 				DirAccess.remove_absolute("user://" + name)
+
+
+# Trial 9: on a 1280 x 720 X server with no window manager the window was drawn 1201 x 676,
+# 33 px in, with black bars: room was kept for a frame no one draws. Where the usable area
+# is the whole screen there is no frame to keep room for: the window fills the screen.
+func test_a_screen_with_no_desktop_panels_is_filled_or_centred_exactly() -> void:
+	var screen := Rect2i(Vector2i.ZERO, Vector2i(1280, 720))
+	var frame := WindowFit.frame_room(screen, screen)
+	assert_eq(frame, Vector2i.ZERO, "no panels: no frame kept")
+	assert_eq(WindowFit.first_size(screen.size, frame), Vector2i(1280, 720), "fills the screen")
+	assert_eq(WindowFit.centred(Vector2i(1280, 720) + frame, screen), Vector2i.ZERO)
+	var big := Rect2i(Vector2i.ZERO, Vector2i(1920, 1080))
+	var big_frame := WindowFit.frame_room(big, big)
+	assert_eq(
+		WindowFit.centred(Vector2i(1280, 720) + big_frame, big), Vector2i(320, 180), "centred"
+	)
+	var with_panel := Rect2i(Vector2i(0, 30), Vector2i(1920, 1050))
+	assert_eq(WindowFit.frame_room(with_panel, big), WindowFit.FRAME_ALLOWANCE, "a desktop's frame")

@@ -2,7 +2,7 @@ class_name TiltMixer
 extends RefCounted
 ## Decides the board's tilt each frame from every control the player may use: the joystick
 ## (as in the seed: the tilt follows the head at once), keys and gamepad stick (a held key
-## tilts further step by step and a tap only a little, KeyTilt), and a phone's
+## a tap nudges it and a hold rolls it on, KeyTilt), and a phone's
 ## accelerometer (relative to a calibrated neutral). The last control touched wins.
 
 enum Source { NONE, JOYSTICK, KEYS, ACCELEROMETER }
@@ -23,6 +23,17 @@ var _last_accel := Vector3.ZERO
 var _keys := KeyTilt.new()
 
 
+## A tilt key (or the stick) went down toward `direction`, from its input event: the
+## keys take the board and the next update nudges it, even when the key is up again by then.
+func key_pressed(direction: Vector2) -> void:
+	if direction == Vector2.ZERO:
+		return
+	if source != Source.KEYS:
+		_keys.take_over(tilt / maxf(sensitivity, 0.01))
+	source = Source.KEYS
+	_keys.press(direction)
+
+
 ## The joystick head moved to `offset` seed pixels: the tilt follows at once.
 func joystick_moved(offset: Vector2) -> void:
 	source = Source.JOYSTICK
@@ -30,8 +41,9 @@ func joystick_moved(offset: Vector2) -> void:
 
 
 ## Advances one frame. `keys` is the tilt_* action vector (keyboard and stick, each axis
-## -1..1); `accel` the accelerometer reading (zero on devices without one); `fine` whether
-## the fine-tilt key is held (half tilt).
+## -1..1; a press shorter than a frame comes through `key_pressed`); `accel` the
+## accelerometer reading (zero on devices without one); `fine` whether the fine-tilt key is
+## held (half tilt).
 func update(delta: float, keys: Vector2, accel: Vector3, fine := false) -> Vector2:
 	if keys.length_squared() > 0.0001:
 		if source != Source.KEYS:
