@@ -13,6 +13,9 @@ const NEAR_PIECE := 60.0
 const MIN_APART := 45.0
 ## The pieces' zone's index (the six field cells come first).
 const PIECES_ZONE := 6
+## A gold pin is touched by at least this many measured powers (one power alone is a
+## needle the handle's spring rarely threads), while the field has enough such pins.
+const MIN_POWERS := 3
 
 
 ## How many gold pins a set of `level` has: 6 on a small field, up to 8 on a crowded one.
@@ -24,7 +27,7 @@ static func set_size(reach: PinReach) -> int:
 static func pick(
 	level: BoardLevel, reach: PinReach, size: int, rng: RandomNumberGenerator
 ) -> PackedInt32Array:
-	var candidates := reach.reached_pins()
+	var candidates := _candidates(reach, size)
 	_shuffle(candidates, rng)
 	var by_zone: Array[PackedInt32Array] = []
 	for z in PIECES_ZONE + 1:
@@ -46,6 +49,17 @@ static func pick(
 					progress = true
 	_break_windows(reach, chosen, candidates)
 	return chosen
+
+
+## The pins a set is drawn from: those MIN_POWERS powers touch (every reached pin when
+## fewer than three sets' worth do).
+static func _candidates(reach: PinReach, size: int) -> PackedInt32Array:
+	var all := reach.reached_pins()
+	var sure := PackedInt32Array()
+	for pin in all:
+		if reach.powers_reaching(pin).size() >= MIN_POWERS:
+			sure.append(pin)
+	return sure if sure.size() >= size * 3 else all
 
 
 ## The zone of pin `pin`: the pieces' zone near a windmill or bonus pocket, else one of six

@@ -16,6 +16,11 @@ static var _cache: Dictionary[String, PinReach] = {}
 
 ## Per measured power (index = power / STEP): the field pins the shot touched, in order.
 var hits: Array[PackedInt32Array] = []
+## Per measured power: the world pocket id that caught the lone shot, or -1 (the gutter,
+## the rail's return, or still in the field at the end).
+var ends := PackedInt32Array()
+
+var _level: BoardLevel
 
 
 ## The reach of `level` (a pachinko board), measured once per board shape. Call it on one
@@ -32,6 +37,24 @@ func pins_at(power: float) -> PackedInt32Array:
 	if hits.is_empty():
 		return PackedInt32Array()
 	return hits[clampi(roundi(clampf(power, 0.0, 100.0) / STEP), 0, hits.size() - 1)]
+
+
+## What a lone shot of `power` (0..100) is paid by its pocket (bonus pockets as they
+## pay shut).
+func payout_at(power: float) -> int:
+	return _pocket_payout(_level, end_at(power))
+
+
+## The board measured.
+func level() -> BoardLevel:
+	return _level
+
+
+## The world pocket id that catches a lone shot of `power` (0..100), or -1.
+func end_at(power: float) -> int:
+	if ends.is_empty():
+		return -1
+	return ends[clampi(roundi(clampf(power, 0.0, 100.0) / STEP), 0, ends.size() - 1)]
 
 
 ## The powers (0..100, every STEP) whose shot touches pin `pin`.
@@ -79,6 +102,13 @@ static func _measure(level: BoardLevel) -> PinReach:
 	var returned: Array[int] = []
 	var on_zone := func(ball: int, _zone: int) -> void: returned.append(ball)
 	world.ball_entered_zone.connect(on_zone)
+	reach._level = level
+	reach.ends.resize(count)
+	reach.ends.fill(-1)
+	var on_catch := func(ball: int, pocket: int) -> void:
+		if power_of.has(ball):
+			reach.ends[power_of[ball]] = pocket
+	world.ball_captured.connect(on_catch)
 	var dt := 1.0 / maxf(world.tuning.fixed_hz, 1.0)
 	for step in int(MAX_SECONDS / dt):
 		if world.ball_count() == 0:
@@ -89,6 +119,7 @@ static func _measure(level: BoardLevel) -> PinReach:
 			returned.clear()
 	world.pin_hit.disconnect(on_pin)
 	world.ball_entered_zone.disconnect(on_zone)
+	world.ball_captured.disconnect(on_catch)
 	for k in count:
 		reach.hits.append(PackedInt32Array(touched[k].keys()))
 	return reach
@@ -101,6 +132,15 @@ static func _field_pins(level: BoardLevel) -> Dictionary[int, bool]:
 		if i >= level.pin_pocket.size() or level.pin_pocket[i] < 0:
 			out[i] = true
 	return out
+
+
+static func _pocket_payout(level: BoardLevel, pocket: int) -> int:
+	if level == null:
+		return 0
+	if pocket >= 0 and pocket < level.pockets.size():
+		return maxi(level.pockets[pocket].payout, 0)
+	var index := BonusGeometry.bonus_index(level, pocket)
+	return maxi(level.bonus_pockets[index].payout, 0) if index >= 0 else 0
 
 
 static func _key(level: BoardLevel) -> String:
