@@ -45,7 +45,9 @@ func test_no_held_strength_reaches_a_whole_set() -> void:
 		gold.light_first_set()
 		for set_index in 6:
 			var covering := GoldPinPicker.covering_strengths(gold.reach, gold.pins)
-			assert_eq(covering.size(), 0, "%s set %d: no one strength reaches all" % [id, set_index])
+			assert_eq(
+				covering.size(), 0, "%s set %d: no one strength reaches all" % [id, set_index]
+			)
 			for pin in gold.pins.duplicate():
 				gold.touch(pin)
 

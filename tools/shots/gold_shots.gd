@@ -12,22 +12,33 @@ const GAME_SCENE := "res://scenes/pachinko/pachinko_game.tscn"
 const BOARDS: Array[String] = ["classic", "windmills", "tulips", "fever", "hanami"]
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"gold_classic_lit", "gold_classic_hit", "gold_classic_prize",
-	"gold_windmills_lit", "gold_windmills_hit", "gold_windmills_prize",
-	"gold_tulips_lit", "gold_tulips_hit", "gold_tulips_prize",
-	"gold_fever_lit", "gold_fever_hit", "gold_fever_prize",
-	"gold_hanami_lit", "gold_hanami_hit", "gold_hanami_prize",
+	"gold_classic_lit",
+	"gold_classic_hit",
+	"gold_classic_prize",
+	"gold_windmills_lit",
+	"gold_windmills_hit",
+	"gold_windmills_prize",
+	"gold_tulips_lit",
+	"gold_tulips_hit",
+	"gold_tulips_prize",
+	"gold_fever_lit",
+	"gold_fever_hit",
+	"gold_fever_prize",
+	"gold_hanami_lit",
+	"gold_hanami_hit",
+	"gold_hanami_prize",
 ]
 const FRAME := 1.0 / 60.0
 ## Fast frames played between two real ones.
 const CHUNK := 10
 
-## The gold pins' state the pilot last aimed at (it aims again when it changes).
-static var _aimed_at := -1
 ## Game seconds a shot may play before it gives up.
 const LIMIT := 600.0
 ## Real seconds into the moment the picture is taken.
 const INTO := {"lit": 0.5, "hit": 0.1, "prize": 0.15}
+
+## The gold pins' state the pilot last aimed at (it aims again when it changes).
+static var _aimed_at := -1
 
 
 ## Opens the board of `shot_name`, plays into its moment and saves the picture.
@@ -68,7 +79,9 @@ static func take(tree: SceneTree, shot_name: String) -> Error:
 	return await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name), 1)
 
 
-static func _reached(moment: String, rules: PachinkoRules, out: int, sets: int, frames: int) -> bool:
+static func _reached(
+	moment: String, rules: PachinkoRules, out: int, sets: int, frames: int
+) -> bool:
 	match moment:
 		"hit":
 			return rules.gold.pins_out > out

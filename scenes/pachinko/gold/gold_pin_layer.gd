@@ -88,7 +88,9 @@ func _draw() -> void:
 	for pin in aimed_pins():
 		draw_arc(pins[pin], _stud * AIM_RING, 0.0, TAU, 28, Color(1, 1, 1, 0.9), 1.6, true)
 	for burst in _bursts:
-		_draw_burst(burst[0], burst[1] / BURST_SECONDS)
+		var at: Vector2 = burst[0]
+		var age: float = burst[1]
+		_draw_burst(at, age / BURST_SECONDS)
 
 
 func _draw_stud(at: Vector2, pulse: float) -> void:
@@ -110,7 +112,9 @@ func _draw_burst(at: Vector2, t: float) -> void:
 	var font := ThemeDB.fallback_font
 	var size := 20
 	var pos := at + Vector2(-9.0, -10.0 - BURST_RISE * t)
-	draw_string_outline(font, pos, "+1", HORIZONTAL_ALIGNMENT_LEFT, -1, size, 5, Color(0.3, 0.1, 0, fade))
+	draw_string_outline(
+		font, pos, "+1", HORIZONTAL_ALIGNMENT_LEFT, -1, size, 5, Color(0.3, 0.1, 0, fade)
+	)
 	draw_string(font, pos, "+1", HORIZONTAL_ALIGNMENT_LEFT, -1, size, Color(GOLD_LIGHT, fade))
 
 

@@ -51,7 +51,7 @@ static func _best(reach: PinReach, lit: PackedInt32Array, pin_value: float, fact
 
 # What a start pocket's catch at `power` adds through its spin (0 elsewhere).
 static func _spin_value(reach: PinReach, power: int) -> float:
-	var level := reach.level()
+	var level := reach.board()
 	var index := BonusGeometry.bonus_index(level, reach.end_at(power)) if level != null else -1
 	if index < 0 or level.bonus_pockets[index].role != BonusPocketSpec.Role.START:
 		return 0.0

@@ -20,7 +20,7 @@ const MIN_POWERS := 3
 
 ## How many gold pins a set of `level` has: 6 on a small field, up to 8 on a crowded one.
 static func set_size(reach: PinReach) -> int:
-	return clampi(6 + reach.reached_pins().size() / 200, 6, 8)
+	return clampi(6 + floori(reach.reached_pins().size() / 200.0), 6, 8)
 
 
 ## A set of `size` gold pins of `level` (pin indexes), drawn with `rng`.

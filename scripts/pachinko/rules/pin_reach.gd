@@ -46,7 +46,7 @@ func payout_at(power: float) -> int:
 
 
 ## The board measured.
-func level() -> BoardLevel:
+func board() -> BoardLevel:
 	return _level
 
 
@@ -91,7 +91,9 @@ static func _measure(level: BoardLevel) -> PinReach:
 	var power_of: Dictionary[int, int] = {}
 	for k in count:
 		touched.append({})
-		var id := world.spawn_ball(start, direction * launch.launch_speed(k * STEP), level.ball_radius)
+		var id := world.spawn_ball(
+			start, direction * launch.launch_speed(k * STEP), level.ball_radius
+		)
 		if id >= 0:
 			power_of[id] = k
 	var field := _field_pins(level)
