@@ -378,10 +378,10 @@ func _on_ball_drained(ball_id: int) -> void:
 	_check_game_over()
 
 
-# A ball in play putting out a lit gold pin adds a ball to the cup (paid, like a catch's).
+# A ball in play putting out a lit gold pin adds a ball to the cup (the ledger's gold).
 func _on_pin_hit(ball_id: int, pin: int, _speed: float) -> void:
 	if _in_play.has(ball_id) and gold.touch(pin):
-		ledger.paid += 1
+		ledger.gold += 1
 		cup += 1
 		cup_changed.emit(cup)
 		_load_next()
