@@ -94,8 +94,7 @@ static func _reached(
 static func _aim(rules: PachinkoRules) -> void:
 	if rules.state != PachinkoRules.State.PLAYING:
 		rules.start_game()
-	var state := rules.gold.pins_out * 1000 + rules.gold.set_number * 2 + int(rules.gold.rush_on())
-	if state != _aimed_at:
-		_aimed_at = state
+	if GoldChaser.aim_key(rules) != _aimed_at:
+		_aimed_at = GoldChaser.aim_key(rules)
 		rules.handle.set_power(GoldChaser.strength(rules))
 	rules.handle.grip()

@@ -3,7 +3,9 @@ extends RefCounted
 ## The autoplay's gold-chasing pilot: it holds the handle at the strength whose window
 ## (strength ± LaunchHandle.JITTER) is worth most by the board's PinReach: what its lone
 ## shots' pockets pay, plus every lit gold pin they touch at a ball and a share of the
-## set's prize. It re-aims each time a gold pin goes out. `held_best` is the same measure
+## set's prize. It re-aims each time a gold pin goes out (aim_key). While a jackpot's rounds
+## last it feeds the attacker instead, at the middle of the band the launcher shows
+## (AttackerBands), as a player is told to. `held_best` is the same measure
 ## without gold pins: the single strength a player who ignores them would hold.
 
 ## What the autoplay counts a set's prize as, in balls (a Gold spin: a jackpot in three of
@@ -16,6 +18,9 @@ const JACKPOT_BALLS := 110.0
 
 ## The strength (0..100) the chaser holds now in `rules`' game.
 static func strength(rules: PachinkoRules) -> int:
+	var band := AttackerBands.band_of(rules.level)
+	if rules.bonus.rounds.active() and band != Vector2i.ZERO:
+		return floori((band.x + band.y) * 0.5)
 	var gold := rules.gold
 	if gold.reach == null:
 		return held_best(PinReach.of(rules.level))
@@ -23,6 +28,14 @@ static func strength(rules: PachinkoRules) -> int:
 	var pin_value := 1.0 + PRIZE_BALLS / maxf(lit.size(), 1.0)
 	var factor := GoldPins.RUSH_FACTOR if gold.rush_on() else 1
 	return _best(gold.reach, lit, pin_value, factor)
+
+
+## A number that changes whenever the chaser should aim again: a gold pin out, a new set,
+## a Gold rush or a jackpot beginning or ending.
+static func aim_key(rules: PachinkoRules) -> int:
+	var gold := rules.gold
+	var moments := int(gold.rush_on()) * 2 + int(rules.bonus.rounds.active())
+	return gold.pins_out * 1000 + gold.set_number * 4 + moments
 
 
 ## The strength whose window's pockets pay most, gold pins left out.

@@ -55,9 +55,8 @@ static func run(
 		if rules.state != PachinkoRules.State.PLAYING:
 			rules.start_game()
 			games += 1
-		var gold_state := rules.gold.pins_out * 1000 + rules.gold.set_number * 2
-		if chase and aimed_at != gold_state + int(rules.gold.rush_on()):
-			aimed_at = gold_state + int(rules.gold.rush_on())
+		if chase and aimed_at != GoldChaser.aim_key(rules):
+			aimed_at = GoldChaser.aim_key(rules)
 			rules.handle.set_power(GoldChaser.strength(rules))
 		if use_handle:
 			rules.handle.grip()  # held all along (game over lets go; take it again)
