@@ -24,6 +24,12 @@ func test_the_panel_line_counts_down_and_names_the_prize() -> void:
 	assert_string_contains(GoldPinsText.panel_line(_rules(FEVER)), "→ Gold spin")
 
 
+func test_before_the_game_the_line_shows_no_count() -> void:
+	var level := BoardLoader.load_board(CLASSIC).level.duplicate(true) as BoardLevel
+	var waiting := PachinkoRules.new(level, 1)
+	assert_eq(GoldPinsText.panel_line(waiting), "Gold pins: hit them all → Gold rush")
+
+
 func test_the_card_names_the_prize() -> void:
 	var classic := BoardLoader.load_board(CLASSIC).level
 	var fever := BoardLoader.load_board(FEVER).level

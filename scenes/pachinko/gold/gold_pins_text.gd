@@ -15,6 +15,8 @@ static func panel_line(rules: PachinkoRules) -> String:
 	var gold := rules.gold
 	if gold.rush_on():
 		return "Gold rush: double pay, %d s left" % ceili(gold.rush_left)
+	if gold.pins.is_empty():  # before the first game: its set lights as it starts
+		return "Gold pins: hit them all → %s" % prize_name(rules.bonus.has_reels())
 	return "Gold pins %d left → %s" % [gold.left(), prize_name(rules.bonus.has_reels())]
 
 
