@@ -120,6 +120,7 @@ func show_start(level: BoardLevel) -> void:
 	)
 	if PachinkoGoals.tray_target(level) > 0:
 		_body.text += "\n[b]Goal:[/b] %s to clear this machine." % PachinkoGoals.words(level)
+	_body.text += "\n" + GoldPinsText.card_line(level)
 	_legend.show_pieces(level)
 	_legend.visible = true
 	_show_play("Play", "or press %s" % _start_keys())

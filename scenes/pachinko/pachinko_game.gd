@@ -17,6 +17,7 @@ var _controls := PachinkoInput.new()
 # Made once a board has loaded: a game with no board never owns one outside the tree.
 var _bonus_view: BonusView
 var _juice: JuiceView
+var _gold_view: GoldPinsView
 var _music: PachinkoMusic
 var _recorder: ReplayRecorder
 # The one-line reminder of how to shoot on games after the first (the full card's stand-in).
@@ -82,6 +83,9 @@ func _ready() -> void:
 	_juice.name = "Juice"
 	add_child(_juice)
 	_juice.attach(board_view, sounds)
+	_gold_view = GoldPinsView.new()
+	add_child(_gold_view)
+	_gold_view.attach(board_view, sounds, _bonus_view)
 	_music = PachinkoMusic.new()
 	_music.name = "Music"
 	add_child(_music)
@@ -173,6 +177,11 @@ func juice() -> JuiceView:
 	return _juice
 
 
+## The gold pins' view (the studs, their bursts, the prize's announcement).
+func gold_view() -> GoldPinsView:
+	return _gold_view
+
+
 ## What records this game for its replay.
 func recorder() -> ReplayRecorder:
 	return _recorder
@@ -226,6 +235,7 @@ func _new_rules() -> void:
 	_feedback.bind(rules)
 	_bonus_view.bind(rules)
 	_juice.bind(rules)
+	_gold_view.bind(rules)
 	_music.bind(rules)
 	title.text = _level.display_name
 	title.tooltip_text = _level.description

@@ -53,6 +53,7 @@ func show_now() -> void:
 	var stats := panel_stats()
 	_shown_tray = stats["balls_left"]
 	_panel.show_stats(stats)
+	GoldPinsText.show_under(_panel, _rules)  # the gold pins' line, a label of its own
 
 
 ## Marks the goal cleared on the panel.

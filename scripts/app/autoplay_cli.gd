@@ -44,7 +44,8 @@ static func play(values: Dictionary) -> Dictionary:
 		result = MazeAutoplay.run(loaded.level, seconds, rng_seed, hard, recorder)
 	else:
 		var handle: int = values["handle"]
-		result = PachinkoAutoplay.run(loaded.level, seconds, rng_seed, recorder, handle)
+		var chase: bool = values["chase"]
+		result = PachinkoAutoplay.run(loaded.level, seconds, rng_seed, recorder, handle, chase)
 	if not result.get("ok", true):
 		return {"ok": false, "error": str(result.get("error", "the game did not start"))}
 	var report := {"ok": true, "game": game, "board": loaded.level.board_id, "seed": values["seed"]}

@@ -145,6 +145,18 @@ const FLAGS: Array[Dictionary] = [
 		"example": "--autoplay=pachinko --handle=60",
 	},
 	{
+		"flag": "--chase",
+		"for": ["--autoplay"],
+		"value": Value.NONE,
+		"default": false,
+		"help":
+		(
+			"Pachinko: the gold-chasing pilot holds the handle and turns it to reach the gold"
+			+ " pins left (instead of single shots)."
+		),
+		"example": "--autoplay=pachinko --chase",
+	},
+	{
 		"flag": "--hard",
 		"for": ["--autoplay"],
 		"value": Value.NONE,

@@ -55,6 +55,7 @@ static func names() -> Array[StringName]:
 	]
 	all.append_array(JuiceRecipes.names())
 	all.append_array(JackpotRecipes.names())
+	all.append_array(GoldRecipes.names())
 	return all
 
 
@@ -106,6 +107,8 @@ static func build(sound: StringName) -> AudioStreamWAV:
 		return JuiceRecipes.build(sound)
 	if JackpotRecipes.has(sound):
 		return JackpotRecipes.build(sound)
+	if GoldRecipes.has(sound):
+		return GoldRecipes.build(sound)
 	push_error("SoundRecipes: no recipe for sound '%s'" % sound)
 	return null
 

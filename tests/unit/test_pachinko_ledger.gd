@@ -134,6 +134,7 @@ func test_the_snapshot_the_panel_and_autoplay_read() -> void:
 			"pocket_hits": [1, 2, 3],
 			"pocket_payouts": [10, 20, 30],
 			"payouts": 20,
+			"gold_balls": 0,
 			"won": 50,
 			"drained": 40,
 			"returned": 6,
@@ -158,3 +159,17 @@ func test_the_first_shot_to_reach_the_field_sets_the_ratio() -> void:
 	ledger.shots = 1
 	ledger.record_win(0, 6)
 	assert_eq(ledger.payout_ratio(), 6.0, "one shot, six balls back")
+
+
+func test_gold_pin_balls_balance_and_count_in_the_ratio_but_not_as_pocket_pay() -> void:
+	var ledger := PachinkoLedger.new(1)
+	ledger.given = 10
+	ledger.shots = 4
+	ledger.record_win(0, 6)
+	ledger.gold = 2
+	# 10 given + 6 paid + 2 gold = 18: 4 shot (1 won, 3 drained), 14 in the cup
+	ledger.drained = 3
+	assert_true(ledger.balances(14, 0, 0))
+	assert_eq(ledger.payout_ratio(), 2.0, "(6 + 2) balls back over 4 shots")
+	assert_eq(ledger.to_dict()["payouts"], 6, "pocket pay alone")
+	assert_eq(ledger.since(PachinkoLedger.new(1)).get("gold"), 2)

@@ -14,6 +14,7 @@ const SHOT_FILES: Array[String] = [
 	"res://tools/shots/bonus_shots.gd",
 	"res://tools/shots/juice_shots.gd",
 	"res://tools/shots/machine_shots.gd",
+	"res://tools/shots/gold_shots.gd",
 	"res://tools/shots/flash_shots.gd",
 	"res://tools/shots/maze_shots.gd",
 ]

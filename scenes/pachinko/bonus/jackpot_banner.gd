@@ -69,6 +69,14 @@ func show_summary(
 	)
 
 
+## Shows another moment (the gold pins' prize): `title` large with a gold flash, `subtitle`
+## under it, for `seconds`. Its caller waits while a moment is showing: one at a time.
+func show_moment(
+	center: Vector2, radius: float, title: String, subtitle: String, seconds: float
+) -> void:
+	_show(center, radius, title, subtitle, seconds, true)
+
+
 ## Takes the moment off the screen at once (the MACHINE CLEARED! card came up over it).
 func dismiss() -> void:
 	_age = 0.0

@@ -15,7 +15,8 @@ const MAX_GAP := 1.2
 
 
 ## Plays `level` for `seconds` of game time with random powers from `rng_seed`, or with the
-## handle held at `handle_power` (0..100; below 0: single shots). Returns shots,
+## handle held at `handle_power` (0..100; below 0: single shots), or with `chase` by the
+## gold-chasing pilot (GoldChaser: re-aimed whenever a gold pin goes out). Returns shots,
 ## pocket_hits (per pocket), payouts, drained, balls_left, accounting_ok,
 ## frames_simulated and more (see the keys). A `recorder` (optional) records the games for a
 ## replay.
@@ -24,7 +25,8 @@ static func run(
 	seconds: float,
 	rng_seed: int,
 	recorder: ReplayRecorder = null,
-	handle_power: int = -1
+	handle_power: int = -1,
+	chase: bool = false
 ) -> Dictionary:
 	if level == null or not level.is_pachinko():
 		push_error("PachinkoAutoplay: a pachinko board is needed")
@@ -44,14 +46,18 @@ static func run(
 	var accounting_held := true
 	var next_shot := 0.0
 	var clock := 0.0
-	var use_handle := handle_power >= 0
+	var use_handle := handle_power >= 0 or chase
 	rules.handle.set_power(handle_power)
 	rules.start_game()
+	var aimed_at := -1  # the gold pins' state when the chaser last aimed
 	for frame in frames:
 		clock += FRAME_SECONDS
 		if rules.state != PachinkoRules.State.PLAYING:
 			rules.start_game()
 			games += 1
+		if chase and aimed_at != GoldChaser.aim_key(rules):
+			aimed_at = GoldChaser.aim_key(rules)
+			rules.handle.set_power(GoldChaser.strength(rules))
 		if use_handle:
 			rules.handle.grip()  # held all along (game over lets go; take it again)
 		elif rules.loaded and clock >= next_shot:
@@ -82,9 +88,17 @@ static func run(
 		"jackpot_paid": stats["jackpot_paid"],
 		"jackpots_finished": stats["jackpots_finished"],
 		"tulip_opens": stats["tulip_opens"],
-		"mode": "handle %d" % handle_power if use_handle else "single shots",
+		"gold_pins_out": stats["gold_pins_out"],
+		"gold_sets": stats["gold_sets"],
+		"mode": _mode(handle_power, chase),
 		"accounting_ok": accounting_held and rules.accounting_ok(),
 		"frames_simulated": frames,
 		"physics_steps": steps,
 		"state_hash": rules.world.state_hash(),
 	}
+
+
+static func _mode(handle_power: int, chase: bool) -> String:
+	if chase:
+		return "gold chase"
+	return "handle %d" % handle_power if handle_power >= 0 else "single shots"

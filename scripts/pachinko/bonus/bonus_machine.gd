@@ -38,6 +38,9 @@ signal house_jackpot_granted
 
 ## Spins a start pocket can hold while the reels are busy (real machines show four lamps).
 const MAX_QUEUED := 4
+## A Gold spin (the gold pins' prize, grant_gold_spin) is always a reach, and its last reel
+## matches with this chance.
+const GOLD_JACKPOT_ODDS := 1.0 / 3.0
 
 ## Spins started.
 var reel_spins := 0
@@ -69,6 +72,8 @@ var _house_next := false
 var _house_last := false
 ## Symbol counts of the spins waiting, oldest first.
 var _queued := PackedInt32Array()
+## Per waiting spin: 1 for a Gold spin.
+var _queued_gold := PackedByteArray()
 ## Per bonus pocket: 1 while open (attacker lid up, tulip wings spread).
 var _open := PackedByteArray()
 ## Per attacker: seconds and catches left in its open round.
@@ -127,6 +132,7 @@ func catch(index: int) -> int:
 		BonusPocketSpec.Role.START:
 			if _queued.size() < MAX_QUEUED:
 				_queued.append(spec.symbols)
+				_queued_gold.append(0)
 			start_caught.emit(index, _queued.size())
 		BonusPocketSpec.Role.ATTACKER:
 			attacker_paid += maxi(spec.payout, 0)
@@ -174,6 +180,26 @@ func advance(delta: float) -> void:
 func grant_house_jackpot() -> void:
 	_house_next = true
 	house_jackpot_granted.emit()
+
+
+## Queues a Gold spin (the gold pins' prize on a reel machine): a reach for sure, a jackpot
+## at GOLD_JACKPOT_ODDS, drawn from the reels' own generator. Returns false on a board
+## without reels.
+func grant_gold_spin() -> bool:
+	for spec in _level.bonus_pockets:
+		if spec.role == BonusPocketSpec.Role.START:
+			_queued.append(spec.symbols)
+			_queued_gold.append(1)
+			return true
+	return false
+
+
+## True when the board has reels (a start pocket spins them).
+func has_reels() -> bool:
+	for spec in _level.bonus_pockets:
+		if spec.role == BonusPocketSpec.Role.START:
+			return true
+	return false
 
 
 ## True while the next spin is the house's jackpot.
@@ -236,10 +262,14 @@ func counters() -> Dictionary:
 
 func _start_spin() -> void:
 	var symbol_count := maxi(_queued[0], 1)
+	var gold := _queued_gold[0] != 0
 	_queued.remove_at(0)
+	_queued_gold.remove_at(0)
 	var landing := PackedInt32Array()
 	for reel in ReelSet.REELS:
 		landing.append(_rng.randi_range(0, symbol_count - 1))
+	if gold:
+		_gold_landing(landing, symbol_count)
 	_house_last = _house_next
 	if _house_next:  # the house's jackpot: three of the first reel's symbol
 		_house_next = false
@@ -247,6 +277,16 @@ func _start_spin() -> void:
 	reel_spins += 1
 	reels.start(landing, symbol_count)
 	reels_started.emit(symbol_count)
+
+
+# A Gold spin: the second reel matches the first; the last one at GOLD_JACKPOT_ODDS, else
+# any other symbol.
+func _gold_landing(landing: PackedInt32Array, symbol_count: int) -> void:
+	landing[1] = landing[0]
+	if symbol_count < 2 or _rng.randf() < GOLD_JACKPOT_ODDS:
+		landing[2] = landing[0]
+	else:
+		landing[2] = (landing[0] + _rng.randi_range(1, symbol_count - 1)) % symbol_count
 
 
 func _on_reel_stopped(reel: int, symbol: int) -> void:

@@ -5,13 +5,15 @@ extends RefCounted
 ## a pocket). `balances()` checks that those add up, so no ball is ever lost silently.
 
 const _COUNTERS: Array[String] = [
-	"given", "paid", "shots", "drained", "won", "returned", "nudges", "vanished"
+	"given", "paid", "gold", "shots", "drained", "won", "returned", "nudges", "vanished"
 ]
 
 ## Balls put in the cup when games started.
 var given := 0
 ## Balls paid into the cup by pockets.
 var paid := 0
+## Balls the gold pins added to the cup (one a pin put out).
+var gold := 0
 ## Balls launched.
 var shots := 0
 ## Balls swallowed by the gutter.
@@ -77,7 +79,7 @@ func since(earlier: RefCounted) -> RefCounted:
 
 ## True when cup + loaded + in play + drained + won equals every ball ever given or paid.
 func balances(cup: int, loaded: int, in_play: int) -> bool:
-	return cup + loaded + in_play + drained + won == given + paid
+	return cup + loaded + in_play + drained + won == given + paid + gold
 
 
 ## Shots that reached the field: launches minus weak shots that rolled back to the cup.
@@ -85,11 +87,11 @@ func field_shots() -> int:
 	return maxi(shots - returned, 0)
 
 
-## Balls paid back per ball that reached the field (0 before the first). A weak shot that
-## rolled back cost nothing, so it is not a shot here.
+## Balls paid back per ball that reached the field (0 before the first), the gold pins'
+## balls included. A weak shot that rolled back cost nothing, so it is not a shot here.
 func payout_ratio() -> float:
 	var played := field_shots()
-	return float(paid) / float(played) if played > 0 else 0.0
+	return float(paid + gold) / float(played) if played > 0 else 0.0
 
 
 ## A plain snapshot for the stats panel, the autoplay JSON and tests.
@@ -105,6 +107,7 @@ func to_dict() -> Dictionary:
 		"pocket_hits": hits,
 		"pocket_payouts": pays,
 		"payouts": paid,
+		"gold_balls": gold,
 		"won": won,
 		"drained": drained,
 		"returned": returned,

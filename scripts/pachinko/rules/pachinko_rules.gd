@@ -4,14 +4,10 @@ extends RefCounted
 ## gutter and game over, over a BallWorld built from the board. Input arrives as calls
 ## (`start_game`, `press_flipper`, `drag_to`, `begin_charge`, `charge`, `release`); what
 ## happens leaves as past-tense signals. It never draws and never reads the input map.
-## It leans on its parts: the flipper's drawback (flipper_drawback.gd), the handle
-## (launch_handle.gd), the upkeep of balls in play (ball_upkeep.gd), the ledger and the
-## bonus layer.
-##
-## Flow (the chapter's): the instructions are up and the cup is empty; `start_game` fills
-## the cup and loads a ball; a release with some power fires the loaded ball and the next
-## one loads at once while the cup has any; pockets pay into the cup; when the cup is empty
-## and no ball is loaded or in play the game is over and the instructions return.
+## Its parts: the drawback (flipper_drawback.gd), the handle (launch_handle.gd), the upkeep
+## of balls in play (ball_upkeep.gd), the ledger, the bonus layer and the gold pins.
+## Flow: `start_game` fills the cup and loads a ball; a release fires it and loads the
+## next; pockets pay into the cup; an empty cup with nothing loaded or in play ends it.
 
 ## The state changed (see State).
 signal state_changed(state: State)
@@ -41,8 +37,7 @@ enum State { INSTRUCTIONS, PLAYING, GAME_OVER }
 
 ## Power added per second while a key or button is held (full power in 1.6 s).
 const CHARGE_PER_SECOND := FlipperDrawback.CHARGE_PER_SECOND
-## A shot's power is kept in whole hundredths (too fine to feel), so a replay stores it as a
-## whole number and plays it back bit for bit.
+## Shot powers are kept in whole hundredths, so a replay stores them bit for bit.
 const POWER_STEP := 0.01
 
 ## The board being played.
@@ -54,9 +49,7 @@ var state := State.INSTRUCTIONS
 var cup := 0
 ## True while a ball sits in the launcher.
 var loaded := false
-## The balls the player still has to shoot: the cup's and the one sitting in the launcher.
-## The cup alone is one short from the first ball loaded on (a play trial read a 25-ball
-## start as 24), so this is the count the player is shown.
+## Balls left to shoot, the loaded one too: the count shown (the cup alone read 24 of 25).
 var balls_to_shoot: int:
 	get:
 		return cup + (1 if loaded else 0)
@@ -72,8 +65,9 @@ var drawing: bool:
 var ledger: PachinkoLedger
 ## The bonus layer: reels, attackers, tulips (idle on a board without bonus pockets).
 var bonus: BonusMachine
-## The handle: held, it streams balls at its strength (see launch_handle.gd); its
-## `changed` signal tells the view.
+## The gold pins (gold_pins.gd): each one a ball puts out adds a ball to the cup.
+var gold: GoldPins
+## The handle (launch_handle.gd): held, it streams balls at its strength.
 var handle := LaunchHandle.new()
 
 var _in_play: Dictionary = {}
@@ -99,12 +93,13 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 		ledger = PachinkoLedger.new(0)
 		world = BallWorld.new()
 		bonus = BonusMachine.new(level, world, rng_seed)
+		gold = GoldPins.new(level, rng_seed)
 		return
 	level = board
 	ledger = PachinkoLedger.new(board.pockets.size() + board.bonus_pockets.size())
 	world = BoardWorldFactory.build(board)
 	bonus = BonusMachine.new(board, world, rng_seed)
-	# The world's own tuning: the board's, or the defaults when the board has none.
+	gold = GoldPins.new(board, rng_seed, bonus)
 	_step_seconds = 1.0 / maxf(world.tuning.fixed_hz, 1.0)
 	_launch_pos = LaunchRail.launch_position(board)
 	_launch_dir = LaunchRail.launch_direction(board)
@@ -112,16 +107,17 @@ func _init(board: BoardLevel, rng_seed: int = 0) -> void:
 	world.ball_captured.connect(_on_ball_pocketed)
 	world.ball_drained.connect(_on_ball_drained)
 	world.ball_entered_zone.connect(_on_ball_entered_zone)
+	world.pin_hit.connect(_on_pin_hit)
 
 
-## Dismisses the instructions: fills the cup with the board's start balls and loads one.
-## Does nothing (returns false) while a game is running.
+## Fills the cup with the board's start balls and loads one (false while a game runs).
 func start_game() -> bool:
 	if state == State.PLAYING or level.ring_radius <= 0.0:
 		return false
 	_game_start = ledger.copy() as PachinkoLedger
 	cup += level.cup_start_balls
 	ledger.given += level.cup_start_balls
+	gold.light_first_set()
 	_set_state(State.PLAYING)
 	game_started.emit(cup)
 	cup_changed.emit(cup)
@@ -275,6 +271,7 @@ func stats(this_game: bool = false) -> Dictionary:
 	out["game_hits"] = game.won
 	out["accounting_ok"] = accounting_ok()
 	out.merge(bonus.counters())
+	out.merge(gold.counters())
 	return out
 
 
@@ -288,6 +285,7 @@ func _after_steps(steps: int) -> void:
 		# a jackpot round's clock waits while nothing is on the board and nothing is shot
 		bonus.round_clock_runs = not _in_play.is_empty() or handle.held or drawing
 		bonus.advance(steps * _step_seconds)
+		gold.advance(steps * _step_seconds)
 	if steps > 0 and handle.update(steps * _step_seconds) and fire(handle.shot_power(_rng)) >= 0:
 		handle.fired()
 	if steps <= 0 or _in_play.is_empty():
@@ -362,6 +360,7 @@ func _on_ball_pocketed(ball_id: int, pocket_id: int) -> void:
 		var index := BonusGeometry.bonus_index(level, pocket_id)
 		payout = bonus.catch(index)
 		at = level.bonus_pockets[index].position
+	payout = gold.boosted(payout)
 	ledger.record_win(pocket_id, payout)
 	cup += payout
 	cup_changed.emit(cup)
@@ -377,6 +376,15 @@ func _on_ball_drained(ball_id: int) -> void:
 	ledger.drained += 1
 	ball_drained.emit(ball_id)
 	_check_game_over()
+
+
+# A ball in play putting out a lit gold pin adds a ball to the cup (the ledger's gold).
+func _on_pin_hit(ball_id: int, pin: int, _speed: float) -> void:
+	if _in_play.has(ball_id) and gold.touch(pin):
+		ledger.gold += 1
+		cup += 1
+		cup_changed.emit(cup)
+		_load_next()
 
 
 # Zone 0 is the launch rail's return zone at the bottom of the rail.
