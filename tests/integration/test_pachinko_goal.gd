@@ -103,14 +103,14 @@ func test_the_panel_shows_the_goal_and_the_tray_now_during_play() -> void:
 	var target := PachinkoGoals.tray_target(rules.level)
 	await wait_process_frames(2)
 	var shown := game.stats_panel.shown_text()
-	assert_string_contains(shown, "Goal %d · %d now" % [target, rules.balls_to_shoot])
+	assert_string_contains(shown, "Balls %d · goal %d" % [rules.balls_to_shoot, target])
 	_win(rules, 7)
 	await wait_process_frames(2)
 	shown = game.stats_panel.shown_text()
-	assert_string_contains(shown, "Goal %d · %d now" % [target, rules.balls_to_shoot])
+	assert_string_contains(shown, "Balls %d · goal %d" % [rules.balls_to_shoot, target])
 	_win(rules, target)
 	await wait_process_frames(2)
-	assert_string_contains(game.stats_panel.shown_text(), "Goal %d · cleared!" % target)
+	assert_string_contains(game.stats_panel.shown_text(), "goal %d cleared!" % target)
 
 
 func test_the_goal_line_fits_one_line_of_the_column() -> void:

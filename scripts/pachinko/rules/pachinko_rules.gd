@@ -364,8 +364,11 @@ func _on_ball_pocketed(ball_id: int, pocket_id: int) -> void:
 		at = level.bonus_pockets[index].position
 	ledger.record_win(pocket_id, payout)
 	cup += payout
-	cup_changed.emit(cup)
+	# the win first: the tray's pour of these balls is under way before anything that
+	# follows the count (the machine's goal) reads the tray; trial 8's clear read a tray
+	# and panel one payout behind the card
 	ball_won.emit(ball_id, pocket_id, payout, at)
+	cup_changed.emit(cup)
 	_load_next()
 	_check_game_over()
 
