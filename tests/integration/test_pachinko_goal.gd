@@ -154,3 +154,18 @@ func test_r_asks_nothing_and_keeps_the_game_while_the_win_card_is_up() -> void:
 	assert_false(game.restart_prompt().asking(), "R asks nothing over the card")
 	assert_eq(game.rules, rules, "and starts no new game")
 	assert_true(game.cleared_card().visible, "the card stays for its buttons")
+
+
+func test_the_win_cards_board_chooser_button_says_where_it_goes() -> void:
+	# trial 8, bug 8: "Menu" opened the board chooser, and the player wanted the main menu;
+	# the button says what the pause menu's button to the same place says
+	var card := MachineClearedCard.new()
+	add_child_autofree(card)
+	var texts: Array[String] = []
+	for button in card.buttons():
+		texts.append(button.text)
+	assert_eq(texts, ["Next machine", "Keep playing", "Other boards"] as Array[String])
+	var pause := (load("res://scenes/common/pause_menu.tscn") as PackedScene).instantiate()
+	var to_boards := pause.get_node("Dim/Center/Panel/Box/MenuButton") as Button
+	assert_eq(card.buttons()[2].text, to_boards.text, "the pause menu's words for the chooser")
+	pause.free()
