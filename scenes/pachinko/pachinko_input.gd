@@ -172,14 +172,15 @@ func _handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
 		return true
 	for turn: Array in [[&"handle_stronger", 1], [&"handle_weaker", -1]]:
 		var action: StringName = turn[0]
+		var toward: int = turn[1]
 		if not event.is_action(action):
 			continue
 		# the system's echoes are dropped: the game repeats a held key itself, the same on
 		# every machine (HandleKeyRepeat)
 		if event.is_action_pressed(action):
-			turn_handle(rules, _turn_repeat.press(turn[1]))
+			turn_handle(rules, _turn_repeat.press(toward))
 		elif event.is_action_released(action):
-			_turn_repeat.release(turn[1])
+			_turn_repeat.release(toward)
 		return true
 	return false
 
