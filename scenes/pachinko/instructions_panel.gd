@@ -182,17 +182,27 @@ func show_game_over(level: BoardLevel, summary: Dictionary, best: int, new_best:
 				"[b]%d[/b] shots, [b]%d[/b] pocket hits, [b]%d[/b] balls paid back."
 				% [shots, hits, paid]
 			),
-			"Won: [b]%d[/b] balls (the most your tray held above its start)." % won,
+			_result_line(won, level.cup_start_balls),
 		]
 	)
 	if best > 0:
 		var board_name := PlainMarkup.escape(level.display_name)
-		lines.append("Most won on %s: [b]%d[/b] balls." % [board_name, best])
+		lines.append("Best game on %s: [b]+%d[/b] balls." % [board_name, best])
 	lines.append("")
 	lines.append("Another %d balls are waiting." % level.cup_start_balls)
 	_body.text = "\n".join(lines)
 	_legend.visible = false
 	_show_play("Play again", "or press %s" % _start_keys())
+
+
+# This game's result: `won` balls over its `start` (trial 8: the card said the game's
+# highest point, which the game had lost again).
+static func _result_line(won: int, start: int) -> String:
+	if won > 0:
+		return "You ended [b]%d[/b] balls up." % won
+	if won == -start:
+		return "The tray ran dry: the %d balls you started with are gone." % start
+	return "You ended [b]%d[/b] balls down." % -won if won < 0 else "You ended even."
 
 
 ## A board that cannot be played: says what went wrong and how to get back.

@@ -1,26 +1,28 @@
 class_name MachineGoal
 extends RefCounted
-## A machine's goal in play: watches one game's tray (CupPeak) against the board's target
-## (PachinkoGoals), says once when it is reached, and remembers the clear for the board's
-## card; `next_board_path` is where Next machine goes. Reached mid-jackpot it waits until
-## the jackpot has settled (JackpotSettle): the card must not freeze a jackpot (trial 6).
+## A machine's goal in play: watches the balls one game's player holds (the cup's and the
+## launcher's) against the board's target (PachinkoGoals), says once when it is reached, and
+## remembers the clear for the board's card; `next_board_path` is where Next machine goes.
+## Reached mid-jackpot it waits until the jackpot has settled (JackpotSettle): the card must
+## not freeze a jackpot (trial 6).
 
-## The tray reached the goal this game, `won` balls above the start.
+## The tray reached the goal this game, `won` balls above the start when it was said.
 signal reached(won: int)
 
 var _level: BoardLevel
-var _peak: CupPeak
+var _rules: PachinkoRules
 var _done := false
 # Reached while a jackpot was on: said once it settles.
 var _waiting := false
 var _settle: JackpotSettle
 
 
-## Watches the game `rules` on `level`, its tray followed by `peak`.
-func _init(level: BoardLevel, rules: PachinkoRules, peak: CupPeak) -> void:
+## Watches the game `rules` on `level`.
+func _init(level: BoardLevel, rules: PachinkoRules) -> void:
 	_level = level
-	_peak = peak
-	# connected after the peak's own: it has seen this change first
+	_rules = rules
+	# the rules tell a payout (ball_won: its pour starts) before the count changes, so the
+	# tray has the payout that clears the machine when the card reads it
 	rules.cup_changed.connect(_on_cup_changed)
 	_settle = JackpotSettle.new(rules)
 	_settle.settled.connect(_on_settled)
@@ -73,7 +75,7 @@ static func next_index(here: int, played: PackedByteArray, cleared: PackedByteAr
 
 func _on_cup_changed(_count: int) -> void:
 	var target := PachinkoGoals.tray_target(_level)
-	if _done or target <= 0 or _peak.peak < target:
+	if _done or target <= 0 or _rules.balls_to_shoot < target:
 		return
 	_done = true
 	App.note_pachinko_cleared(_level.board_id)
@@ -90,4 +92,4 @@ func _say_when_free() -> void:
 	if not _waiting or _settle.busy():
 		return
 	_waiting = false
-	reached.emit(_peak.won())
+	reached.emit(_rules.balls_to_shoot - _level.cup_start_balls)

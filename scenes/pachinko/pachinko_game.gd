@@ -26,7 +26,7 @@ var _reminder := RulesReminder.new()
 var _restart_prompt := RestartPrompt.new()
 # The board's part of the screen (the last layout's).
 var _board_area := Rect2()
-# The most balls this game's tray has held above its start: what its best counts.
+# This game's result (balls held less balls started): what its best counts.
 var _record: PachinkoGameRecord
 # The machine's goal this game, and the win moment's card.
 var _goal: MachineGoal
@@ -140,6 +140,9 @@ func _unhandled_input(event: InputEvent) -> void:
 		if rules.state == PachinkoRules.State.PLAYING and not _restart_prompt.asking():
 			var stats := rules.stats(true)
 			if RestartPrompt.wants_asking(stats, _level.cup_start_balls):
+				# the question names the tray's count, settled (trial 8: the prompt said 80
+				# and the tray 79 with a ball in flight)
+				cup.catch_up(rules.balls_to_shoot)
 				_restart_prompt.ask(RestartPrompt.balls_at_stake(stats))
 				_restart_prompt.place(_board_area, _under_name_plate())
 				get_viewport().set_input_as_handled()
@@ -223,9 +226,9 @@ func _new_rules() -> void:
 	rules = PachinkoRules.new(_level, rng_seed)
 	rules.handle.set_power(App.pachinko_handle_power())  # as the player left it
 	_record = PachinkoGameRecord.new(_level, rules)
-	_goal = MachineGoal.new(_level, rules, _record.cup_peak)
+	_goal = MachineGoal.new(_level, rules)
 	_goal.reached.connect(_on_goal_reached)
-	_panel_feed.bind(rules, _record, _goal)
+	_panel_feed.bind(rules, _goal)
 	_cleared_card.dismiss()
 	_recorder = ReplayRecorder.new()
 	_recorder.attach_pachinko(rules, rng_seed)
@@ -348,7 +351,7 @@ func _on_state_changed(state: PachinkoRules.State) -> void:
 
 
 func _on_game_ended(summary: Dictionary) -> void:
-	summary["game_won"] = _record.won()
+	summary["game_won"] = _record.result()
 	var new_best := _record.finish()
 	ReplayStore.save(_recorder.finish(), ReplayStore.last_pachinko_path(_level.board_id))
 	var best := App.best_pachinko_balls(_level.board_id)
@@ -363,13 +366,15 @@ func cleared_card() -> MachineClearedCard:
 	return _cleared_card
 
 
-func _on_goal_reached(won: int) -> void:
-	_panel_feed.mark_cleared()
+func _on_goal_reached(_won: int) -> void:
 	_controls.let_go(rules)  # a held key or drag fires nothing behind the card
-	cup.catch_up(rules.balls_to_shoot)  # the tray reads the card's count, not one behind
+	# the tray first, the panel from it, the card from the same balls: trial 8's panel read
+	# "Up 1" beside a card's "You won 11" (the clearing pocket's 10 still pouring)
+	cup.catch_up(rules.balls_to_shoot)
+	_panel_feed.mark_cleared()
 	_restart_prompt.dismiss()  # no "New game?" over the card
 	_bonus_view.banner.dismiss()  # nor a jackpot's summary card under it
-	_cleared_card.show_cleared(_level, won, _board_area)
+	_cleared_card.show_cleared(_level, _record.result(), _board_area)
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 
 

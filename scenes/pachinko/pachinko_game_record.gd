@@ -1,12 +1,15 @@
 class_name PachinkoGameRecord
 extends RefCounted
-## What one pachinko game leaves in the player's save file: the most balls it won (its
-## CupPeak) toward the board's best, and the handle's power for the next game. A game
-## left before its tray ran dry (Other boards, Restart, Quit) counts too: a play trial left
-## Hanami at 277 balls and its card said "Not played yet".
+## What one pachinko game leaves in the player's save file: its result (the balls it ended
+## with less those it started with) toward the board's best, and the handle's power for the
+## next game. The balls are those the player holds: the cup's and the launcher's
+## (PachinkoRules.balls_to_shoot, the tray's count once it settles); a ball in flight is
+## not held. A game left before its tray ran dry (Other boards, Restart, Quit) counts too: a
+## play trial left Hanami at 277 balls and its card said "Not played yet". Trial 8: the best
+## was the game's highest point (Windmills peaked +16, ended even, and kept 16).
 
-## The game's most balls won above the tray's start.
-var cup_peak: CupPeak
+## The balls the game started with.
+var start := 0
 
 var _level: BoardLevel
 var _rules: PachinkoRules
@@ -15,24 +18,30 @@ var _rules: PachinkoRules
 func _init(level: BoardLevel, rules: PachinkoRules) -> void:
 	_level = level
 	_rules = rules
-	cup_peak = CupPeak.new(rules)
+	start = level.cup_start_balls
 
 
-## The balls this game has won so far.
-func won() -> int:
-	return cup_peak.won()
+## The balls the player holds now (those in flight are not).
+func held() -> int:
+	return _rules.balls_to_shoot
 
 
-## Keeps a game being left: the handle's power always; its balls won only while it is
-## still played and won something (a game that ended was kept by `finish`).
+## The game's result so far: the balls held less those it started with (below 0: down).
+func result() -> int:
+	return held() - start
+
+
+## Keeps a game being left: the handle's power always; its result only while it is still
+## played and ahead (a game that ended was kept by `finish`).
 func keep_left_game() -> void:
 	App.keep_pachinko_handle_power(_rules.handle.power)
-	if _rules.state == PachinkoRules.State.PLAYING and won() > 0:
-		App.record_pachinko_balls(_level.board_id, won())
+	if _rules.state == PachinkoRules.State.PLAYING and result() > 0:
+		App.record_pachinko_balls(_level.board_id, result())
 
 
-## Keeps a game that ended; true when its balls won beat the board's best.
+## Keeps a game that ended (its tray ran dry: a result of nothing won); true when it beat
+## the board's best.
 func finish() -> bool:
-	var new_best := App.record_pachinko_balls(_level.board_id, won())
+	var new_best := App.record_pachinko_balls(_level.board_id, maxi(result(), 0))
 	App.keep_pachinko_handle_power(_rules.handle.power)
 	return new_best

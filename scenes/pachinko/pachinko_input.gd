@@ -9,7 +9,7 @@ extends RefCounted
 ## The handle (a stream): held with the pointer on the dial (dragging while holding turns
 ## it: up or right stronger, down or left weaker), with the `launch_handle` key, or with the
 ## gamepad's right trigger, whose depth is the strength. `handle_stronger` / `handle_weaker`
-## and the mouse wheel on the dial turn it.
+## (held, they keep turning it: HandleKeyRepeat) and the mouse wheel on the dial turn it.
 
 enum Source { NONE, POINTER, KEY, ANALOG }
 
@@ -32,6 +32,7 @@ var _peak := 0.0
 var _handle_source := Source.NONE
 var _handle_origin := Vector2.ZERO
 var _handle_origin_power := 0.0
+var _turn_repeat := HandleKeyRepeat.new()
 
 
 ## The pointer went down on the handle's dial at `at` (viewport coordinates): hold it.
@@ -107,13 +108,17 @@ func let_go(rules: PachinkoRules) -> void:
 	_source = Source.NONE
 	_peak = 0.0
 	_handle_source = Source.NONE
+	_turn_repeat.stop()
 	rules.handle.let_go()
 
 
-## Called every frame: a held key keeps charging.
+## Called every frame: a held key keeps charging, a held turn key keeps turning.
 func poll(rules: PachinkoRules, delta: float) -> void:
 	if _source == Source.KEY:
 		rules.charge(delta)
+	var turns := _turn_repeat.advance(delta)
+	if turns != 0:
+		turn_handle(rules, turns)
 	if _source != Source.NONE and not rules.drawing:
 		_source = Source.NONE  # the game ended or restarted under us
 	if _handle_source != Source.NONE and not rules.handle.held:
@@ -165,11 +170,17 @@ func _handle_action(rules: PachinkoRules, event: InputEvent) -> bool:
 		rules.handle.let_go()
 		_handle_source = Source.NONE
 		return true
-	if event.is_action_pressed("handle_stronger", true):
-		turn_handle(rules, 1.0)
-		return true
-	if event.is_action_pressed("handle_weaker", true):
-		turn_handle(rules, -1.0)
+	for turn: Array in [[&"handle_stronger", 1], [&"handle_weaker", -1]]:
+		var action: StringName = turn[0]
+		var toward: int = turn[1]
+		if not event.is_action(action):
+			continue
+		# the system's echoes are dropped: the game repeats a held key itself, the same on
+		# every machine (HandleKeyRepeat)
+		if event.is_action_pressed(action):
+			turn_handle(rules, _turn_repeat.press(toward))
+		elif event.is_action_released(action):
+			_turn_repeat.release(toward)
 		return true
 	return false
 

@@ -1,9 +1,9 @@
 class_name PachinkoPanelFeed
 extends RefCounted
 ## Feeds the side panel's numbers (StatsPanel) and the notes line under it: one game's
-## figures from its rules and its record (CupPeak's balls won), refreshed as the tray
-## changes and a few times a second between. PachinkoGame makes one and binds it to each
-## new game.
+## figures from its rules, its balls from the tray's own count (CupDisplay.shown_changed,
+## in the same frame the tray changes: trial 8 saw the tray at 107 and the panel at 101),
+## the rest refreshed a few times a second. PachinkoGame makes one and binds it to each game.
 
 ## Seconds between the panel's refreshes while nothing else refreshes it.
 const REFRESH_SECONDS := 0.25
@@ -12,7 +12,6 @@ var _panel: StatsPanel
 var _notes: Label
 var _level: BoardLevel
 var _rules: PachinkoRules
-var _record: PachinkoGameRecord
 var _goal: MachineGoal
 var _cup: CupDisplay
 var _refresh := 0.0
@@ -26,17 +25,14 @@ func _init(panel: StatsPanel, notes: Label, level: BoardLevel, cup: CupDisplay) 
 	_notes = notes
 	_level = level
 	_cup = cup
+	cup.shown_changed.connect(_on_tray_shown)
 
 
-## Follows the game `rules` (a new one each game), whose balls won `record` keeps and whose
-## goal `goal` watches.
-func bind(rules: PachinkoRules, record: PachinkoGameRecord, goal: MachineGoal) -> void:
+## Follows the game `rules` (a new one each game), whose goal `goal` watches.
+func bind(rules: PachinkoRules, goal: MachineGoal) -> void:
 	_rules = rules
-	_record = record
 	_goal = goal
 	_panel.goal_cleared = false
-	# the goal line's "now" follows the tray as it changes, not a quarter second later
-	rules.cup_changed.connect(_on_cup_changed)
 
 
 ## Counts `delta` seconds of play and refreshes the panel when its time has come.
@@ -79,11 +75,10 @@ func show_notes() -> void:
 	)
 
 
-## The panel's numbers: the rules' and this game's balls won so far (CupPeak).
+## The panel's numbers: the rules' this game, the balls the tray's.
 func panel_stats() -> Dictionary:
 	var stats := _rules.stats(true)
-	stats["won"] = _record.won()
-	stats["start_balls"] = _level.cup_start_balls  # the panel's "Up 45 this game"
+	stats["start_balls"] = _level.cup_start_balls  # the panel's "Won this game +45"
 	# the tray's number, not the rules' count ahead of the balls still pouring in (trial 7
 	# read 22 on the tray and "25 now" on the panel); behind the card, the balls it starts
 	# with (it read "Down 100" and "0 now" there)
@@ -98,5 +93,6 @@ func _tray_count() -> int:
 	return _cup.count()
 
 
-func _on_cup_changed(_count: int) -> void:
-	show_now()
+func _on_tray_shown(_count: int) -> void:
+	if _rules != null:
+		show_now()

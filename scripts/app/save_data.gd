@@ -20,7 +20,8 @@ const MAX_LISTED := 5
 ## A pachinko count past this is not a game anyone played.
 const MAX_BALLS := 1_000_000_000
 
-## The most balls won in one pachinko game, per board (CupPeak).
+## The best result of one pachinko game, per board: balls ended with less balls started
+## (PachinkoGameRecord; before trial 8 it was the game's highest point).
 const MOST_WON_SECTION := "pachinko_most_won"
 ## Before the best was the most balls won it was the most balls PAID BACK, kept here: read
 ## and written back untouched (the player's record is never deleted), never shown as "Most won".

@@ -45,7 +45,11 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## it and the catches pay more; and a new player's first start-pocket hit on a reel machine
 ## lands a jackpot (the "house" record); so a run on those boards plays differently than
 ## under 5.
-## Pachinko 8: gold pins (GoldPins): a lit one a ball touches adds a ball to the cup, and a
+## Pachinko 8 (trial 8): Fever's and Hanami's reels turn 5 symbols (one jackpot in 25 spins,
+## not 81) and their attackers pay 4 and 3 a catch (17 and 20): smaller jackpots, more
+## often; and a jackpot within 15 s of the last one's end opens its round 1 only after a
+## 5 s announcement (JackpotRounds.AGAIN_SECONDS), so a run there plays differently.
+## Pachinko 9: gold pins (GoldPins): a lit one a ball touches adds a ball to the cup, and a
 ## cleared set brings a Gold spin or a Gold rush (double pay), so the cup runs differently.
 ## Maze 2: the goal is a dish that holds the balls that roll in (GoalDip).
 ## Maze 3: the dish wakes only the balls it holds (it woke every ball each step), so balls
@@ -53,7 +57,7 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## Maze 4: a ball is in the goal once its drawn disc overlaps the dish's rim (its centre
 ## within the rim plus a ball's radius): it counts there and the dish pulls it in from there,
 ## so a ball grazing the rim is caught and a run can be won a little sooner.
-const RULES_VERSIONS := {"maze": 4, "pachinko": 8}
+const RULES_VERSIONS := {"maze": 4, "pachinko": 9}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME

@@ -103,14 +103,14 @@ func test_the_panel_shows_the_goal_and_the_tray_now_during_play() -> void:
 	var target := PachinkoGoals.tray_target(rules.level)
 	await wait_process_frames(2)
 	var shown := game.stats_panel.shown_text()
-	assert_string_contains(shown, "Goal %d · %d now" % [target, rules.balls_to_shoot])
+	assert_string_contains(shown, "Balls %d · goal %d" % [rules.balls_to_shoot, target])
 	_win(rules, 7)
 	await wait_process_frames(2)
 	shown = game.stats_panel.shown_text()
-	assert_string_contains(shown, "Goal %d · %d now" % [target, rules.balls_to_shoot])
+	assert_string_contains(shown, "Balls %d · goal %d" % [rules.balls_to_shoot, target])
 	_win(rules, target)
 	await wait_process_frames(2)
-	assert_string_contains(game.stats_panel.shown_text(), "Goal %d · cleared!" % target)
+	assert_string_contains(game.stats_panel.shown_text(), "goal %d cleared!" % target)
 
 
 func test_the_goal_line_fits_one_line_of_the_column() -> void:
@@ -154,3 +154,18 @@ func test_r_asks_nothing_and_keeps_the_game_while_the_win_card_is_up() -> void:
 	assert_false(game.restart_prompt().asking(), "R asks nothing over the card")
 	assert_eq(game.rules, rules, "and starts no new game")
 	assert_true(game.cleared_card().visible, "the card stays for its buttons")
+
+
+func test_the_win_cards_board_chooser_button_says_where_it_goes() -> void:
+	# trial 8, bug 8: "Menu" opened the board chooser, and the player wanted the main menu;
+	# the button says what the pause menu's button to the same place says
+	var card := MachineClearedCard.new()
+	add_child_autofree(card)
+	var texts: Array[String] = []
+	for button in card.buttons():
+		texts.append(button.text)
+	assert_eq(texts, ["Next machine", "Keep playing", "Other boards"] as Array[String])
+	var pause := (load("res://scenes/common/pause_menu.tscn") as PackedScene).instantiate()
+	var to_boards := pause.get_node("Dim/Center/Panel/Box/MenuButton") as Button
+	assert_eq(card.buttons()[2].text, to_boards.text, "the pause menu's words for the chooser")
+	pause.free()

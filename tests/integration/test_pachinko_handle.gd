@@ -154,3 +154,52 @@ func test_the_autoplay_handle_mode_streams_and_repeats_for_a_seed() -> void:
 	var refused := PachinkoAutoplay.run(level, 5.0, 1, null, 101)
 	assert_push_error("0 to 100")
 	assert_false(refused["ok"], "a strength over 100 is refused with a clear error")
+
+
+func _turn_key(action: StringName, pressed: bool) -> InputEventAction:
+	var event := InputEventAction.new()
+	event.action = action
+	event.pressed = pressed
+	return event
+
+
+func test_holding_a_turn_key_keeps_turning_the_handle_faster_the_longer() -> void:
+	# trial 8, bug 6: Left held for half a second moved the handle one step (no system key
+	# repeat reached the game); the game repeats a held turn key itself
+	var game := _game()
+	var rules := game.get("rules") as PachinkoRules
+	var controls: PachinkoInput = game._controls
+	rules.handle.set_power(50.0)
+	game._unhandled_input(_turn_key(&"handle_weaker", true))
+	assert_eq(rules.handle.power, 48.0, "the press's own step at once")
+	controls.poll(rules, 0.25)
+	assert_eq(rules.handle.power, 48.0, "no repeat before 0.3 s")
+	for frame in 15:  # to 0.5 s held
+		controls.poll(rules, 1.0 / 60.0)
+	assert_lt(rules.handle.power, 48.0, "held half a second: it keeps turning")
+	var at_half := rules.handle.power
+	for frame in 30:  # 0.5 s more
+		controls.poll(rules, 1.0 / 60.0)
+	var second_half := at_half - rules.handle.power
+	assert_gt(second_half, 48.0 - at_half, "faster the longer it is held")
+	game._unhandled_input(_turn_key(&"handle_weaker", false))
+	var let_go := rules.handle.power
+	controls.poll(rules, 1.0)
+	assert_eq(rules.handle.power, let_go, "let go: it stops")
+	var echo := _turn_key(&"handle_stronger", true)
+	game._unhandled_input(echo)
+	assert_eq(rules.handle.power, let_go + 2.0)
+	game._unhandled_input(_turn_key(&"handle_stronger", false))
+
+
+func test_the_repeat_steps_speed_up_from_slow_to_fast() -> void:
+	var repeat := HandleKeyRepeat.new()
+	assert_eq(repeat.press(1), 1)
+	assert_eq(repeat.advance(HandleKeyRepeat.FIRST_DELAY - 0.01), 0)
+	assert_eq(repeat.advance(0.02), 1, "the first repeat at FIRST_DELAY")
+	assert_almost_eq(HandleKeyRepeat.interval_at(0.3), HandleKeyRepeat.SLOW_INTERVAL, 0.001)
+	assert_almost_eq(HandleKeyRepeat.interval_at(5.0), HandleKeyRepeat.FAST_INTERVAL, 0.001)
+	repeat.release(-1)
+	assert_gt(repeat.advance(1.0), 0, "another key's release leaves it going")
+	repeat.release(1)
+	assert_eq(repeat.advance(1.0), 0)

@@ -32,7 +32,7 @@ func test_the_panel_keeps_its_place_when_a_best_appears() -> void:
 	await wait_process_frames(3)
 	assert_string_contains(
 		game.stats_panel.find_children("*", "RichTextLabel", true, false)[0].get_parsed_text(),
-		"best game 12"
+		"best +12"
 	)
 	assert_eq(game.notes.get_global_rect(), notes_at, "the notes stay where they were")
 	assert_eq(game.launcher.get_global_rect(), launcher_at, "the launcher too")

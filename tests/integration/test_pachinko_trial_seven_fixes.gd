@@ -30,8 +30,8 @@ func test_behind_the_card_the_panel_reads_the_trays_start() -> void:
 	assert_eq(game.rules.state, PachinkoRules.State.INSTRUCTIONS, "the card is up")
 	var start := game.rules.level.cup_start_balls
 	var shown := game.stats_panel.shown_text()
-	assert_string_contains(shown, "Up 0 this game")
-	assert_string_contains(shown, "· %d now" % start)
+	assert_string_contains(shown, "Won this game +0")
+	assert_string_contains(shown, "Balls %d" % start)
 	assert_false(shown.contains("Down"), shown)
 
 
@@ -47,13 +47,13 @@ func test_the_panels_now_is_the_trays_number_while_balls_pour_in() -> void:
 	game._process(FRAME)
 	assert_lt(game.cup.count(), rules.balls_to_shoot, "balls still pouring in")
 	var shown := game.stats_panel.shown_text()
-	assert_string_contains(shown, "· %d now" % game.cup.count(), "the tray's own number")
+	assert_string_contains(shown, "Balls %d" % game.cup.count(), "the tray's own number")
 	for i in 240:
 		game.cup._process(FRAME)
 		game._process(FRAME)
 	assert_eq(game.cup.count(), rules.balls_to_shoot, "all landed")
 	shown = game.stats_panel.shown_text()
-	assert_string_contains(shown, "· %d now" % rules.balls_to_shoot, "and the panel with it")
+	assert_string_contains(shown, "Balls %d" % rules.balls_to_shoot, "and the panel with it")
 
 
 func test_a_goal_passed_mid_jackpot_says_so_at_once() -> void:
@@ -68,7 +68,7 @@ func test_a_goal_passed_mid_jackpot_says_so_at_once() -> void:
 	game.cup.catch_up(rules.balls_to_shoot)
 	game._process(FRAME)
 	assert_false(game.cleared_card().visible, "the card waits for the jackpot")
-	assert_string_contains(game.stats_panel.shown_text(), "Goal %d · clears after jackpot" % target)
+	assert_string_contains(game.stats_panel.shown_text(), "goal %d reached" % target)
 
 
 # What announces something on the board now: the reach stage, the jackpot or round banner

@@ -87,7 +87,7 @@ func test_the_name_shows_literally_on_the_game_over_panel() -> void:
 		panel.show_game_over(_level(fixture), summary, 12, false)
 		var shown := _body(panel).get_parsed_text()
 		_assert_literal(shown, fixture + " game over", [NAMED[fixture]])
-		assert_string_contains(shown, "Most won on %s: 12" % NAMED[fixture])
+		assert_string_contains(shown, "Best game on %s: +12" % NAMED[fixture])
 
 
 func test_a_refusal_quoting_a_field_name_shows_literally() -> void:

@@ -5,7 +5,7 @@ extends RefCounted
 ## round of the jackpot, and "pachinko_jackpot_end" the summary card once a jackpot's last
 ## round is over (that jackpot given by setting the reels to three alike after 20 s of
 ## play, as tools/jackpot_sample.gd does: a natural one is rare), and "pachinko_house" the
-## house's jackpot on a fresh save after its shots ("First jackpot on the house!",
+## house's jackpot on a fresh save after its shots (announced as any jackpot,
 ## HouseJackpot).
 ## Each opens the game as the level select does and plays the screen's own rules forward at
 ## 60 fps until the moment comes; nothing else is faked (the views that ease in are given

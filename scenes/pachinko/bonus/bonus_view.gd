@@ -25,6 +25,10 @@ var _rules: PachinkoRules
 var _rounds_played := 0
 # When a jackpot's last balls have landed: its summary counts them (trial 6).
 var _settle: JackpotSettle
+# True from a jackpot again's announcement to its round 1 (which then has its own moment).
+var _again := false
+# What the last jackpot paid (-1: none yet this game), said by a jackpot again's banner.
+var _last_paid := -1
 
 
 ## The sound bank the bonus moments play on (a test may hand it a recording one).
@@ -92,6 +96,9 @@ func bind(rules: PachinkoRules) -> void:
 	machine.reach_started.connect(_on_reach_started)
 	machine.jackpot_round_started.connect(_on_round_started)
 	machine.jackpot_round_ended.connect(_on_round_ended)
+	machine.jackpot_ended.connect(_on_jackpot_ended)
+	_again = false
+	_last_paid = -1
 	_settle = JackpotSettle.new(rules)
 	_settle.settled.connect(_on_jackpot_settled)
 	rules.ball_won.connect(_on_ball_won)
@@ -120,11 +127,14 @@ func _on_reels_finished(_result: PackedInt32Array, jackpot: bool) -> void:
 	if jackpot:
 		var level := _rules.level
 		var rounds := JackpotRounds.ROUNDS
-		var words := HouseJackpot.WORDS if _rules.bonus.last_spin_was_house() else ""
 		# the banner waits until the stage has gone: one announcement at a time (trial 7
 		# read a fading "REACH!" and "444" under "ROUND 1 / 10")
 		var delay := ReachStage.HOLD_JACKPOT + ReachStage.GROW_SECONDS + STAGE_CLEAR_SECONDS
-		banner.show_jackpot(level.ring_center, level.ring_radius, rounds, delay, words)
+		_again = _rules.bonus.rounds.announcing()
+		if _again:  # its round 1 waits for this (trial 8: "JACKPOT OVER" over a running round)
+			banner.show_again(level.ring_center, level.ring_radius, delay, _last_paid)
+		else:
+			banner.show_jackpot(level.ring_center, level.ring_radius, rounds, delay)
 		_play(SoundBank.JACKPOT_FANFARE)
 
 
@@ -137,13 +147,22 @@ func _on_round_ended(round_number: int, _rounds: int) -> void:
 
 
 func _on_round_started(round_number: int, rounds: int) -> void:
-	if round_number > 1:  # the first comes with the jackpot's own moment
+	# the first comes with the jackpot's own moment, but after a jackpot again's announcement
+	if round_number > 1 or _again:
+		_again = false
 		banner.show_round(_rules.level.ring_center, _rules.level.ring_radius, round_number, rounds)
 		_play(SoundBank.ROUND_BELL, -4.0)
 
 
-# The summary waits for the last round's balls: its count then is the panel's.
+func _on_jackpot_ended(paid: int) -> void:
+	_last_paid = paid
+
+
+# The summary waits for the last round's balls: its count then is the panel's; a jackpot
+# again already on has said what the last one paid, and its own moment keeps the middle.
 func _on_jackpot_settled(paid: int) -> void:
+	if _rules.bonus.rounds.active():
+		return
 	var session_paid: int = _rules.stats(true).get("game_payouts", 0)
 	var level := _rules.level
 	banner.show_summary(level.ring_center, level.ring_radius, _rounds_played, paid, session_paid)

@@ -41,6 +41,18 @@ func show_jackpot(
 	_age = -maxf(delay, 0.0)
 
 
+## Announces a jackpot back to back with the last one (JackpotRounds.announcing): "JACKPOT
+## AGAIN!" after `delay` seconds (the reach stage's), until its round 1 opens; `last_paid`
+## (-1: unknown) is what the jackpot before it paid.
+func show_again(center: Vector2, radius: float, delay: float, last_paid := -1) -> void:
+	var subtitle := "another %d rounds: get ready!" % JackpotRounds.ROUNDS
+	if last_paid >= 0:
+		subtitle = "the last one paid +%d · %d more rounds!" % [last_paid, JackpotRounds.ROUNDS]
+	var seconds := maxf(JackpotRounds.AGAIN_SECONDS - delay, 1.0)
+	_show(center, radius, "JACKPOT AGAIN!", subtitle, seconds, true)
+	_age = -maxf(delay, 0.0)
+
+
 ## Announces round `round_number` of `rounds`.
 func show_round(center: Vector2, radius: float, round_number: int, rounds: int) -> void:
 	_show(

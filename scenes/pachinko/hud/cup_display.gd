@@ -2,7 +2,13 @@ class_name CupDisplay
 extends Control
 ## The ball cup: a chrome tray heaped with balls (more balls, a bigger heap) and the count
 ## written large on its front. Paid balls pour in from above one after another
-## (PayoutPour) and the count rises and bounces as they land.
+## (PayoutPour) and the count rises and bounces as they land. Its count is the one ball
+## count the player reads: the side panel follows `shown_changed` (a ball in flight is not
+## in it: it was shot, and comes back only as a pocket's payout).
+
+## The count on the tray's front changed to `count` (a drop landed, a ball was shot, a
+## payout came): anything that shows the player's balls follows it in the same frame.
+signal shown_changed(count: int)
 
 const MAX_HEAP := 40
 const TRAY := Color("b9bfcc")
@@ -14,6 +20,8 @@ var _count := 0
 var _bump := 0.0
 var _ball: Texture2D
 var _pour := PayoutPour.new()
+# The count last announced by shown_changed.
+var _announced := -1
 
 
 ## The player has `balls` balls left to shoot (PachinkoRules.balls_to_shoot: the cup's and
@@ -24,6 +32,7 @@ func set_count(balls: int) -> void:
 		set_process(true)
 	_count = balls
 	queue_redraw()
+	_announce()
 
 
 ## Pours `balls` paid balls into the cup: they are in the count already, and it shows
@@ -33,6 +42,7 @@ func pour(balls: int) -> void:
 	if balls > 0:
 		set_process(true)
 		queue_redraw()
+	_announce()
 
 
 ## Shows `balls` at once, the drops still falling landed: the win card and the tray then
@@ -40,6 +50,7 @@ func pour(balls: int) -> void:
 func catch_up(balls: int) -> void:
 	_pour.land_all()
 	set_count(balls)
+	_announce()
 
 
 ## Drops still falling into the cup.
@@ -52,6 +63,13 @@ func count() -> int:
 	return maxi(_count - _pour.pending(), 0)
 
 
+func _announce() -> void:
+	var shown := count()
+	if shown != _announced:
+		_announced = shown
+		shown_changed.emit(shown)
+
+
 func _ready() -> void:
 	_ball = BallLayer.make_ball_texture(32)
 	custom_minimum_size = Vector2(300, 170)
@@ -62,6 +80,7 @@ func _process(delta: float) -> void:
 	_bump = maxf(_bump - delta * 3.0, 0.0)
 	if _pour.advance(delta) > 0:
 		_bump = 1.0  # each landing drop bounces the count
+		_announce()
 	queue_redraw()
 	if _bump <= 0.0 and _pour.drops.is_empty():
 		set_process(false)

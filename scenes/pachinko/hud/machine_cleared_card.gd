@@ -2,7 +2,8 @@ class_name MachineClearedCard
 extends PanelContainer
 ## The win moment: the tray reached the machine's goal (PachinkoGoals). A large card over the
 ## board with the goal, the balls won and three ways on: Next machine, Keep playing (the game
-## goes on: the card goes) and Menu. The game acts on its signals.
+## goes on: the card goes) and Other boards (the board chooser, as the pause menu's button of
+## that name: trial 8 read "Menu" and expected the main menu). The game acts on its signals.
 
 ## The player chose the next machine in the list.
 signal next_requested
@@ -13,6 +14,8 @@ const TITLE_SIZE := 44
 ## The menus' and pause menu's look, so the buttons are the game's, not Godot's flat grey.
 const THEME := preload("res://scenes/menu/ui_theme.tres")
 const LINE_SIZE := 20
+## The board chooser's button, in the pause menu's words.
+const OTHER_BOARDS := "Other boards"
 
 var _title := Label.new()
 var _line := Label.new()
@@ -46,7 +49,7 @@ func _init() -> void:
 	row.alignment = BoxContainer.ALIGNMENT_CENTER
 	row.add_theme_constant_override(&"separation", 12)
 	box.add_child(row)
-	for pair: Array in [[_next, "Next machine"], [_keep, "Keep playing"], [_menu, "Menu"]]:
+	for pair: Array in [[_next, "Next machine"], [_keep, "Keep playing"], [_menu, OTHER_BOARDS]]:
 		var button: Button = pair[0]
 		button.text = pair[1]
 		button.add_theme_font_size_override(&"font_size", LINE_SIZE)
@@ -73,7 +76,7 @@ func dismiss() -> void:
 	visible = false
 
 
-## Next machine, Keep playing and Menu, in that order.
+## Next machine, Keep playing and Other boards, in that order.
 func buttons() -> Array[Button]:
 	return [_next, _keep, _menu]
 

@@ -26,12 +26,10 @@ static func wants_asking(stats: Dictionary, start_balls: int) -> bool:
 	)
 
 
-## The balls a new game would throw away: those left to shoot and those still in play
-## (a trial read "Your 80 balls go" while a dozen more were still falling).
+## The balls a new game would throw away: those the player holds, the tray's count (a ball
+## in flight is not held: trial 8 read "Your 80 balls go" beside a tray of 79).
 static func balls_at_stake(stats: Dictionary) -> int:
-	var left: int = stats.get("balls_left", 0)
-	var in_play: int = stats.get("in_play", 0)
-	return left + in_play
+	return stats.get("balls_left", 0)
 
 
 ## Asks whether to start over, naming the `balls` the player would lose.

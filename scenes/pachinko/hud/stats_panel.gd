@@ -1,13 +1,16 @@
 class_name StatsPanel
 extends PanelContainer
-## Session numbers: shots, where the balls went, hits per pocket, the balls paid back this
-## session (one game, a full cup to an empty one), the best session on this board and the
-## machine's goal against the tray now.
+## One game's numbers in three lines, each the answer to a player's question: how many balls
+## do I have and how far is the goal ("Balls 107 · goal 127"), how am I doing against my best
+## ("Won this game +7 · best +11"), and is anything going in ("Pocket hits 5 of 40 shots").
+## The balls are the tray's own count (CupDisplay): a ball in flight is not in it. Trials 7
+## and 8 read the old six lines twice and found four different ball counts in them.
 
 ## The font size of the numbers.
 const FONT_SIZE := 15
 
-## Most balls won in one game on this board before (CupPeak), or -1 for none yet.
+## The best result of a finished game on this board (balls ended with less balls started,
+## PachinkoGameRecord), or -1 for none yet.
 var best_session := -1
 ## The machine's goal, the tray's target (PachinkoGoals; 0: none, no goal line).
 var goal := 0
@@ -43,53 +46,48 @@ func shown_text() -> String:
 	return _text.get_parsed_text() if _text != null else ""
 
 
-# The tray now against its start ("start_balls" in the stats, the game's screen adds it)
-# beside the best game's most won ("won": this game's peak raises it as it passes it);
-# without them, the best alone. Trial 6 read "Won" (this game's peak) as the tray's gain.
+# This game's result so far, the tray against its start ("start_balls", the game's screen
+# adds it), beside the best result kept; without a start, the best alone.
 static func _won_line(stats: Dictionary, best: int) -> String:
-	var won: int = stats.get("won", -1)
-	if won >= 0 and stats.has("start_balls"):
+	var best_words := "[b]best[/b] +%d" % best if best >= 0 else "[b]best[/b] none yet"
+	if stats.has("start_balls"):
 		var start: int = stats["start_balls"]
 		var change: int = stats.get("balls_left", 0) - start
-		var now := "[b]Up[/b] %d" % change if change >= 0 else "[b]Down[/b] %d" % -change
-		return "%s this game · [b]best game[/b] %d" % [now, maxi(best, won)]
-	if won >= 0:
-		return "[b]Won[/b] %d · [b]best game[/b] %d" % [won, maxi(best, won)]
-	return "[b]Most won[/b] %d balls" % best if best >= 0 else "[b]Most won[/b] none yet"
+		if change >= 0:
+			return "[b]Won this game[/b] +%d · %s" % [change, best_words]
+		return "[b]Down[/b] %d this game · %s" % [-change, best_words]
+	return "[b]Best game[/b] +%d" % best if best >= 0 else "[b]Best game[/b] none yet"
 
 
-## The panel's lines for `stats`, in the words the card and the game-over box use:
-## "pocket hits" counts every paying piece (pockets, start pockets, attackers, tulips),
-## "paid back" the balls they paid into the cup; `best` is the most balls a game on the
-## board has won (its tray's most above its start, CupPeak; -1: none); `target` the machine's
-## tray target (0: none), shown against the balls in the tray now ("balls_left"), or as
-## cleared once `cleared`, or as clearing once the jackpot ends while `pending`.
+# The balls held ("balls_left": the tray's count) against the machine's `target` (0: none).
+static func _balls_line(stats: Dictionary, target: int, cleared: bool, pending: bool) -> String:
+	var balls := "[b]Balls[/b] %d" % stats.get("balls_left", 0)
+	if target <= 0:
+		return balls
+	if cleared:
+		return "%s · [b]goal[/b] %d cleared!" % [balls, target]
+	if pending:
+		# trial 7: the tray passed the goal in a jackpot and nothing said so for minutes
+		return "%s · [b]goal[/b] %d reached" % [balls, target]
+	return "%s · [b]goal[/b] %d" % [balls, target]
+
+
+## The panel's lines for `stats`, in the words the card and the game-over box use: "pocket
+## hits" counts every paying piece (pockets, start pockets, attackers, tulips); "balls_left"
+## is the tray's count, "start_balls" what the game began with; `best` the board's best
+## result (-1: none); `target` the machine's goal (0: none), shown cleared once `cleared`,
+## or reached (the clear waits for the jackpot's end) while `pending`.
 static func lines_for(
 	stats: Dictionary, best := -1, target := 0, cleared := false, pending := false
 ) -> PackedStringArray:
 	var hits := 0
 	for count: int in stats.get("pocket_hits", []):
 		hits += count
-	var shots: int = stats.get("shots", 0)
-	var paid: int = stats.get("payouts", 0)
-	var ratio: float = stats.get("payout_ratio", 0.0)
-	var lines := PackedStringArray(
+	# short lines: longer ones wrapped and pushed the launcher off a 720 px column
+	return PackedStringArray(
 		[
-			"[b]Shots[/b] %d    [b]In play[/b] %d" % [shots, stats.get("in_play", 0)],
-			"[b]Pocket hits[/b] %d    [b]Gutter[/b] %d" % [hits, stats.get("drained", 0)],
-			# short lines: longer ones wrapped and pushed the launcher off a 720 px column
-			"[b]Paid back[/b] %d (%.2f a shot)" % [paid, ratio],
+			_balls_line(stats, target, cleared, pending),
 			_won_line(stats, best),
+			"[b]Pocket hits[/b] %d of %d shots" % [hits, stats.get("shots", 0)],
 		]
 	)
-	if target > 0:
-		# always one line from the start, so the panel never grows when it changes
-		var now: int = stats.get("balls_left", 0)
-		var goal_line := "[b]Goal[/b] %d · %d now" % [target, now]
-		if cleared:
-			goal_line = "[b]Goal[/b] %d · cleared!" % target
-		elif pending:
-			# trial 7: the tray passed the goal in a jackpot and nothing said so for minutes
-			goal_line = "[b]Goal[/b] %d · clears after jackpot" % target
-		lines.append(goal_line)
-	return lines

@@ -31,6 +31,9 @@ signal jackpot_round_started(round: int, rounds: int)
 signal jackpot_round_ended(round: int, rounds: int)
 ## A jackpot's last round ended; it paid `paid` balls.
 signal jackpot_ended(paid: int)
+## A jackpot came back to back with the last: announced first, its round 1 opens after
+## JackpotRounds.AGAIN_SECONDS.
+signal jackpot_again
 ## The spin the house gave (grant_house_jackpot) ended on its jackpot.
 signal house_jackpot_landed
 ## The next spin was made the house's jackpot (grant_house_jackpot): a replay records it.
@@ -116,6 +119,7 @@ func _init(level: BoardLevel, world: BallWorld, rng_seed: int) -> void:
 	rounds.round_started.connect(_on_round_started)
 	rounds.round_ended.connect(_on_round_ended)
 	rounds.finished.connect(_on_jackpot_finished)
+	rounds.again_announced.connect(_on_jackpot_again)
 
 
 ## True when the board has any bonus pocket.
@@ -168,6 +172,8 @@ func advance(delta: float) -> void:
 				_end_round_when_shut()
 	if was_in_break:
 		rounds.advance(delta)
+	else:
+		rounds.count_time(delta)
 	if reels.busy():
 		reels.advance(delta)
 	elif not _queued.is_empty() and not rounds.active():
@@ -315,6 +321,10 @@ func _on_round_started(round_number: int, count: int) -> void:
 			_catches_left[i] = maxi(spec.open_catches, 1)
 			_set_open(i, true)
 	jackpot_round_started.emit(round_number, count)
+
+
+func _on_jackpot_again() -> void:
+	jackpot_again.emit()
 
 
 func _on_round_ended(round_number: int, count: int) -> void:

@@ -1,8 +1,8 @@
 class_name CupPeak
 extends RefCounted
-## The most balls a game's cup has held above its start: the "balls won" that a session's
-## best is measured in (the balls paid back counted a long session over a good one), and what
-## a machine's goal (PachinkoGoals) is reached by. Follows one game's rules.
+## The most balls a game's cup has held above its start, for the analysis's sessions
+## (`peak_won`: how far a game can climb, what a machine's goal is set from). The game's own
+## best is its result, not this (PachinkoGameRecord; trial 8). Follows one game's rules.
 
 ## The balls the game started with.
 var start := 0

@@ -4,8 +4,7 @@ extends RefCounted
 ## gutter and game over, over a BallWorld built from the board. Input arrives as calls
 ## (`start_game`, `press_flipper`, `drag_to`, `begin_charge`, `charge`, `release`); what
 ## happens leaves as past-tense signals. It never draws and never reads the input map.
-## Its parts: the drawback (flipper_drawback.gd), the handle (launch_handle.gd), the upkeep
-## of balls in play (ball_upkeep.gd), the ledger, the bonus layer and the gold pins.
+## Its parts: the drawback, the handle, the upkeep of balls in play, ledger, bonus, gold pins.
 ## Flow: `start_game` fills the cup and loads a ball; a release fires it and loads the
 ## next; pockets pay into the cup; an empty cup with nothing loaded or in play ends it.
 
@@ -363,8 +362,9 @@ func _on_ball_pocketed(ball_id: int, pocket_id: int) -> void:
 	payout = gold.boosted(payout)
 	ledger.record_win(pocket_id, payout)
 	cup += payout
-	cup_changed.emit(cup)
+	# the win first, so the tray pours these balls before the goal reads the count (trial 8)
 	ball_won.emit(ball_id, pocket_id, payout, at)
+	cup_changed.emit(cup)
 	_load_next()
 	_check_game_over()
 
