@@ -9,9 +9,9 @@ const DEFAULT_SECONDS: Array[float] = [60.0, 120.0]
 const EXIT_BAD_BOARD := 2
 
 
-## Runs the autoplay `values` ask for (keys autoplay, board, seconds, seed, hard; seconds
-## and record may be absent); prints one JSON line; returns the exit code: 0 when the game
-## was played, EXIT_BAD_BOARD when it could not be ("ok": false and the problem).
+## Runs the autoplay `values` ask for (keys autoplay, board, seconds, seed, hard, handle,
+## chase; seconds, chase and record may be absent); prints one JSON line; returns the exit
+## code: 0 when the game was played, EXIT_BAD_BOARD when it could not be ("ok": false and the problem).
 static func run(values: Dictionary) -> int:
 	var report := play(values)
 	if not report["ok"]:
@@ -44,7 +44,7 @@ static func play(values: Dictionary) -> Dictionary:
 		result = MazeAutoplay.run(loaded.level, seconds, rng_seed, hard, recorder)
 	else:
 		var handle: int = values["handle"]
-		var chase: bool = values["chase"]
+		var chase: bool = values.get("chase", false)  # the gold-pin chaser only when asked
 		result = PachinkoAutoplay.run(loaded.level, seconds, rng_seed, recorder, handle, chase)
 	if not result.get("ok", true):
 		return {"ok": false, "error": str(result.get("error", "the game did not start"))}

@@ -22,7 +22,8 @@ class TestGoodArguments:
 				"seconds": 60.0,
 				"seed": 7,
 				"hard": true,
-				"handle": -1
+				"handle": -1,
+				"chase": false
 			}
 		)
 		assert_typeof(parsed.values["seconds"], TYPE_FLOAT)
@@ -33,7 +34,14 @@ class TestGoodArguments:
 		assert_eq(parsed.error, "")
 		assert_eq(
 			parsed.values,
-			{"autoplay": "maze", "board": "classic", "seed": 1, "hard": false, "handle": -1}
+			{
+				"autoplay": "maze",
+				"board": "classic",
+				"seed": 1,
+				"hard": false,
+				"handle": -1,
+				"chase": false
+			}
 		)
 
 	func test_no_arguments_means_the_normal_game() -> void:
