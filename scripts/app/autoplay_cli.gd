@@ -11,7 +11,8 @@ const EXIT_BAD_BOARD := 2
 
 ## Runs the autoplay `values` ask for (keys autoplay, board, seconds, seed, hard, handle,
 ## chase; seconds, chase and record may be absent); prints one JSON line; returns the exit
-## code: 0 when the game was played, EXIT_BAD_BOARD when it could not be ("ok": false and the problem).
+## code: 0 when the game was played, EXIT_BAD_BOARD when it could not be ("ok": false and
+## the problem).
 static func run(values: Dictionary) -> int:
 	var report := play(values)
 	if not report["ok"]:
