@@ -130,6 +130,7 @@ func _process(delta: float) -> void:
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()
 	MazeFrameSteps.play_frame(rules, _recorder, delta, mixer, keys, accel)
+	_joystick.fine = not rules.is_over() and Input.is_action_pressed("tilt_fine")
 	# the head shows the keys' tilt, and once the run is over the board levelling (trial 9:
 	# it stayed off-centre behind the result card)
 	if mixer.source != TiltMixer.Source.JOYSTICK or rules.is_over():
