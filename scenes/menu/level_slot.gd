@@ -13,9 +13,6 @@ signal delete_requested(board_path: String, shown_name: String)
 ## The player right-clicked the card: its menu should open (the card has the focus).
 signal menu_requested(card: LevelCard)
 
-## The export button's tip.
-const EXPORT_TIP := "Save a copy of this board's file to share"
-
 ## The board's card (a Button; pressing it plays a playable board).
 var card: LevelCard = null
 
@@ -38,7 +35,7 @@ func _init(path: String, mine: bool) -> void:
 	actions.alignment = BoxContainer.ALIGNMENT_CENTER
 	actions.add_theme_constant_override("separation", 10)
 	add_child(actions)
-	_export_button = _small_button(actions, "Export…", EXPORT_TIP)
+	_export_button = _small_button(actions, "Export…", "Save a copy of this board's file to share")
 	_export_button.pressed.connect(func() -> void: export_requested.emit(card.board_path))
 	if mine:
 		_delete_button = _small_button(actions, "Delete…", "Remove this board from My boards")
@@ -54,13 +51,10 @@ func fill(result: BoardLoadResult, best: String) -> void:
 
 
 ## A locked maze board (maze progression) offers no export: the player has not reached it
-## (trial 10 found Export… under the locked cards). The button stays, greyed, so the grid's
-## rows keep their height.
+## (trial 10 found Export… under the locked cards). Hidden, not greyed: the theme draws a
+## greyed small button at the full button's size.
 func show_locked(is_locked: bool) -> void:
-	_export_button.disabled = is_locked
-	_export_button.tooltip_text = (
-		"Finish the board before it to open this one" if is_locked else EXPORT_TIP
-	)
+	_export_button.visible = not is_locked
 
 
 ## True for a board of the player's own (it can be deleted).

@@ -164,8 +164,8 @@ func test_a_locked_board_offers_no_export() -> void:
 	var open := cards[0] as LevelCard
 	var locked := cards[1] as LevelCard
 	assert_true(locked.locked, "the second board waits for the first")
-	assert_false((open.get_parent() as LevelSlot).export_button().disabled, "open: Export…")
-	assert_true((locked.get_parent() as LevelSlot).export_button().disabled, "locked: greyed")
+	assert_true((open.get_parent() as LevelSlot).export_button().visible, "open: Export…")
+	assert_false((locked.get_parent() as LevelSlot).export_button().visible, "locked: none")
 	screen.open_card_menu(locked)
 	assert_false(screen.card_menu().entries().has("Export a copy…"), "nor in its menu")
 	screen.card_menu().hide()
