@@ -32,9 +32,11 @@ var skip_seen_rules_cards := true
 ## (HouseJackpot; the game does; tool scripts and tests start with it off, so their games
 ## spin as the seed says whatever the user folder holds, and a test turns it on to check it).
 var house_jackpots := true
-## True when the next maze board should open in hard mode (Next board from a hard-mode run;
-## trial 9 pressed H on every board). The maze screen reads it as it opens and clears it.
-var maze_hard_next := false
+## True when the player last chose hard mode (H) on a maze board with black holes, false
+## once they choose easy (E): every board with holes opens in that mode, whether through Next
+## board or the board list (trial 9 pressed H on every board; trial 10 was dropped back into
+## easy through "Other boards" after a hard run, while Next board kept hard).
+var maze_hard_chosen := false
 ## Problems found while loading the player's files, not yet shown to the player.
 var pending_problems := PackedStringArray()
 

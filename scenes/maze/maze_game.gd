@@ -83,9 +83,8 @@ func _ready() -> void:
 		_note.show_note("This board could not be loaded.", loaded.problem)
 		_joystick.hide()
 		return
-	# Next board from a hard-mode run opens the next in hard mode where it has black holes
-	var hard_asked := App.maze_hard_next
-	App.maze_hard_next = false
+	# the mode the player last chose, however they came here, where the board has black holes
+	var hard_asked := App.maze_hard_chosen
 	rules = MazeRules.new(level, hard_asked and not level.holes.is_empty())
 	_recorder.attach_maze(rules)
 	_stage.add_on_board(_ghost_view)
@@ -130,6 +129,7 @@ func _process(delta: float) -> void:
 	if rules.state == MazeRules.State.READY and keys != Vector2.ZERO:
 		_start()
 	MazeFrameSteps.play_frame(rules, _recorder, delta, mixer, keys, accel)
+	_joystick.fine = not rules.is_over() and Input.is_action_pressed("tilt_fine")
 	# the head shows the keys' tilt, and once the run is over the board levelling (trial 9:
 	# it stayed off-centre behind the result card)
 	if mixer.source != TiltMixer.Source.JOYSTICK or rules.is_over():
@@ -167,6 +167,7 @@ func _unhandled_input(event: InputEvent) -> void:
 		_choose_hard_mode()
 	elif event.is_action_pressed("maze_easy_mode"):
 		rules.set_hard_mode(false)
+		App.maze_hard_chosen = false
 	elif event.is_action_pressed("maze_calibrate"):
 		_on_calibrate()
 	elif event.is_action_pressed("game_start") and rules.state == MazeRules.State.READY:
@@ -207,6 +208,7 @@ func stage() -> MazeStage:
 func _choose_hard_mode() -> void:
 	if not rules.level.holes.is_empty():
 		rules.set_hard_mode(true)
+		App.maze_hard_chosen = true
 	elif rules.state == MazeRules.State.READY:
 		_note.show_note(MazeHints.tilt_to_start(), MazeHints.no_hard_mode())
 
@@ -325,7 +327,6 @@ func win_panel() -> MazeWinPanel:
 func _on_next_board() -> void:
 	var path := MazeProgress.next_path(rules.level.board_id)
 	if not path.is_empty():
-		App.maze_hard_next = rules.hard_mode
 		App.start_game(BoardLevel.MAZE_NAME, path)
 
 

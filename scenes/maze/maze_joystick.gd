@@ -41,6 +41,17 @@ var head_offset := Vector2.ZERO:
 var glowing := true
 ## True while the head follows the pointer.
 var engaged := false
+## True while the fine-tilt key is held: "FINE" shows in the corner and a ring marks how far
+## the head goes then (the keys tilt at most KeyTilt.FINE_SCALE of full). Trial 10: "I never
+## saw Shift fine tilt make a noticeable difference".
+var fine := false:
+	set(value):
+		fine = value
+		if _fine_label != null:
+			_fine_label.visible = value
+		queue_redraw()
+
+var _fine_label: Label
 
 var _grab_point := Vector2.ZERO
 var _clock := 0.0
@@ -49,6 +60,18 @@ var _clock := 0.0
 func _ready() -> void:
 	custom_minimum_size = Vector2.ONE * drawn_size(ui_scale)
 	mouse_filter = Control.MOUSE_FILTER_STOP
+	_fine_label = Label.new()
+	_fine_label.name = "Fine"
+	_fine_label.text = "FINE"
+	_fine_label.mouse_filter = Control.MOUSE_FILTER_IGNORE
+	_fine_label.add_theme_color_override("font_color", MazePalette.TEXT)
+	_fine_label.visible = fine
+	add_child(_fine_label)
+
+
+## The fine key's label ("FINE", shown while the key is held).
+func fine_label() -> Label:
+	return _fine_label
 
 
 func _process(delta: float) -> void:
@@ -116,6 +139,11 @@ func _draw() -> void:
 		draw_colored_polygon(
 			PackedVector2Array([tip, base + side, base - side]), MazePalette.JOYSTICK
 		)
+	if fine:
+		# the head's reach with the fine key: the keys' tilt at its most, as the head shows it
+		var most := TiltInput.MAX_TILT_DEG * KeyTilt.FINE_SCALE
+		var reach := TiltInput.joystick_from_tilt(Vector2(most, 0.0)).x + HEAD_RADIUS
+		draw_arc(c, reach * s, 0.0, TAU, 48, Color(MazePalette.BALL, 0.8), 2.0 * s, true)
 	var radius := HEAD_RADIUS * s * _glow_scale()
 	var head := c + head_offset * s
 	if glowing:

@@ -23,18 +23,22 @@ func _ready() -> void:
 
 
 ## Opens the menu for the board at `board_path` just inside `card_rect` (screen
-## coordinates). `playable`: Play is offered enabled; `mine`: Delete… is offered.
-func open_for(board_path: String, card_rect: Rect2, playable: bool, mine: bool) -> void:
+## coordinates). `playable`: Play is offered enabled; `mine`: Delete… is offered; `locked`:
+## a maze board not open yet, whose file is not offered for export (trial 10).
+func open_for(
+	board_path: String, card_rect: Rect2, playable: bool, mine: bool, locked := false
+) -> void:
 	_board_path = board_path
 	clear()
 	add_item("Play", Choice.PLAY)
 	set_item_disabled(item_count - 1, not playable)
-	add_item("Export a copy…", Choice.EXPORT)
+	if not locked:
+		add_item("Export a copy…", Choice.EXPORT)
 	if mine:
 		add_item("Delete…", Choice.DELETE)
 	var corner := card_rect.position + Vector2(card_rect.size.x * 0.12, card_rect.size.y * 0.1)
 	popup(Rect2i(Vector2i(corner), Vector2i(int(card_rect.size.x * 0.76), 0)))
-	set_focused_item(0 if playable else 1)
+	set_focused_item(0 if playable or item_count < 2 else 1)
 
 
 ## The entries' texts, top to bottom (for tests).

@@ -167,7 +167,9 @@ func open_card_menu(card: LevelCard) -> void:
 		return
 	# a locked maze board or one that did not load offers Play greyed, like its card
 	var can_play := card.playable and not card.disabled
-	_card_menu.open_for(card.board_path, card.get_global_rect(), can_play, slot.is_mine())
+	_card_menu.open_for(
+		card.board_path, card.get_global_rect(), can_play, slot.is_mine(), card.locked
+	)
 
 
 ## The card menu (for tests).

@@ -50,6 +50,13 @@ func fill(result: BoardLoadResult, best: String) -> void:
 	_shown = result.level.display_name if result.ok() else ""
 
 
+## A locked maze board (maze progression) offers no export: the player has not reached it
+## (trial 10 found Export… under the locked cards). Hidden, not greyed: the theme draws a
+## greyed small button at the full button's size.
+func show_locked(is_locked: bool) -> void:
+	_export_button.visible = not is_locked
+
+
 ## True for a board of the player's own (it can be deleted).
 func is_mine() -> bool:
 	return _delete_button != null

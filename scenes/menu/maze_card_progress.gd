@@ -32,5 +32,8 @@ static func apply(cards: Array[Button], lockable: bool = true) -> void:
 		var hint := "Locked: finish %s first" % previous
 		card.show_progress(easy, hard, locks[i], hint)
 		card.unlock_after = previous if locks[i] else ""
+		var slot := card.get_parent() as LevelSlot
+		if slot != null:
+			slot.show_locked(locks[i])
 		if MazeProgress.rank(board_id) < MazeProgress.ORDER.size():
 			previous = card.level.display_name

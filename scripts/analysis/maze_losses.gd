@@ -78,7 +78,7 @@ static func _before(a: Dictionary, b: Dictionary) -> bool:
 static func _gap_shutting(
 	level: BoardLevel, at: Vector2, flood: MazeFlood, gaps: Array[BoardIssue]
 ) -> Array:
-	var label := flood.region_at(at)
+	var label := flood.region_near(at)
 	if label < 0:
 		return []
 	var reach := level.ball_radius * 2.0 + flood.cell * 2.0

@@ -57,7 +57,7 @@ const PHYSICS_VERSION := BallWorld.PHYSICS_VERSION
 ## Maze 4: a ball is in the goal once its drawn disc overlaps the dish's rim (its centre
 ## within the rim plus a ball's radius): it counts there and the dish pulls it in from there,
 ## so a ball grazing the rim is caught and a run can be won a little sooner.
-const RULES_VERSIONS := {"maze": 4, "pachinko": 9}
+const RULES_VERSIONS := {"maze": 5, "pachinko": 9}
 ## Frames one `"tilts"` record holds at most (a line of about a kilobyte).
 const MAX_PACKED_FRAMES := 250
 const MAZE := BoardLevel.MAZE_NAME

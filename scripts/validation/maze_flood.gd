@@ -61,6 +61,24 @@ func region_at(p: Vector2) -> int:
 	return region[index] if index >= 0 else -1
 
 
+## As region_at, but a ball resting against a wall (its centre a hair inside the grid's
+## blocked band, as the felt-lined board of maze rules 5 leaves them) takes the region of
+## the nearest free cell next to it.
+func region_near(p: Vector2) -> int:
+	var label := region_at(p)
+	if label >= 0:
+		return label
+	var best := INF
+	for dy in range(-1, 2):
+		for dx in range(-1, 2):
+			var q := p + Vector2(dx, dy) * cell
+			var there := region_at(q)
+			if there >= 0 and q.distance_to(p) < best:
+				best = q.distance_to(p)
+				label = there
+	return label
+
+
 ## True when region `label` (region_at) joins the goal.
 func region_reaches_goal(label: int) -> bool:
 	return goal_regions.has(label)

@@ -12,6 +12,7 @@ func before_all() -> void:
 
 
 func after_all() -> void:
+	App.maze_hard_chosen = false  # H here is the player's choice for the next board
 	App.request_board(BoardLevel.MAZE_NAME, "res://levels/maze/classic.board")
 	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
 	for path in [TEST_SETTINGS, TEST_SAVE]:

@@ -91,6 +91,10 @@ func test_hitting_a_wall_body_keeps_a_third_of_the_normal_speed() -> void:
 	# the seed's wall response alone: this wall stands at the goal's edge, whose dish
 	# (GoalDip) would pull the ball back
 	rules.world.before_step = Callable()
+	# and with no rolling friction: the level board's felt (MazeTilt.felt_drag, applied each
+	# step) would slow it on the way
+	rules.world.tuning = rules.world.tuning.duplicate()
+	rules.world.tuning.rolling_friction = 0.0
 	rules.world.set_ball_position(id, Vector2(190.0, 157.5))
 	rules.world.set_ball_velocity(id, Vector2(93.75, 0.0))
 	var bounced := Vector2.ZERO

@@ -2,8 +2,8 @@ extends GutTest
 ## Trial 9, complaint 3 and bugs 1 and 2: once a run ends the board eases back to level and
 ## the joystick's head back to the centre (a lost run's board stayed drawn at full tilt, "which
 ## looks like a freeze", and the head stayed off-centre behind the result card, won or lost,
-## when a key had tilted the board), and Next board from a hard-mode run opens the next board
-## in hard mode (easy, with a note, where it has no black holes).
+## when a key had tilted the board), and a board opens in the mode the player last chose,
+## through Next board or the list (easy, with a note, where it has no black holes; trial 10).
 
 const GAME := preload("res://scenes/maze/maze_game.tscn")
 const TEST_SETTINGS := "user://test_maze_run_over_settings.cfg"
@@ -18,11 +18,15 @@ func before_all() -> void:
 
 func after_all() -> void:
 	Input.action_release(&"tilt_right")
-	App.maze_hard_next = false
+	App.maze_hard_chosen = false
 	App.request_board(BoardLevel.MAZE_NAME, CLASSIC)
 	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
 	for path in [TEST_SETTINGS, TEST_SAVE]:
 		DirAccess.remove_absolute(ProjectSettings.globalize_path(path))
+
+
+func before_each() -> void:
+	App.maze_hard_chosen = false
 
 
 func _game(path: String) -> MazeGame:
@@ -80,16 +84,35 @@ func test_a_won_run_centres_the_joystick_behind_the_card() -> void:
 
 
 func test_next_board_from_a_hard_run_opens_in_hard_mode() -> void:
-	App.maze_hard_next = true
+	App.maze_hard_chosen = true
 	var game := _game("res://levels/maze/cloister.board")
 	assert_true(game.rules.hard_mode, "Cloister has black holes: hard mode")
-	assert_false(App.maze_hard_next, "asked once")
-	var again := _game("res://levels/maze/cloister.board")
-	assert_false(again.rules.hard_mode, "the board picked from the list opens in easy mode")
+	# trial 10: a board picked through "Other boards" after a hard run opened in easy mode
+	var again := _game("res://levels/maze/switchbacks.board")
+	assert_true(again.rules.hard_mode, "the board picked from the list opens in hard mode too")
+
+
+func test_the_mode_chosen_with_h_and_e_holds_for_the_boards_opened_next() -> void:
+	var game := _game("res://levels/maze/cloister.board")
+	assert_false(game.rules.hard_mode, "easy until the player asks")
+	game._unhandled_input(_action(&"maze_hard_mode"))
+	assert_true(game.rules.hard_mode)
+	assert_true(_game("res://levels/maze/switchbacks.board").rules.hard_mode, "hard kept")
+	var easy := _game("res://levels/maze/long_hall.board")
+	easy._unhandled_input(_action(&"maze_easy_mode"))
+	assert_false(easy.rules.hard_mode)
+	assert_false(_game("res://levels/maze/labyrinth.board").rules.hard_mode, "easy kept")
+
+
+func _action(action: StringName) -> InputEventAction:
+	var event := InputEventAction.new()
+	event.action = action
+	event.pressed = true
+	return event
 
 
 func test_next_board_from_a_hard_run_without_holes_opens_easy_with_a_note() -> void:
-	App.maze_hard_next = true
+	App.maze_hard_chosen = true
 	var game := _game("res://levels/maze/two_together.board")
 	assert_false(game.rules.hard_mode)
 	var note := game.get_node("%Note") as MazeNote

@@ -17,6 +17,7 @@ func before_all() -> void:
 
 
 func after_all() -> void:
+	App.maze_hard_chosen = false  # H here is the player's choice for the next board
 	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
 	ReplayStore.folder = ReplayStore.DIR
 	var replays := "user://test_maze_scene_replays"
@@ -28,6 +29,7 @@ func after_all() -> void:
 
 
 func before_each() -> void:
+	App.maze_hard_chosen = false  # H here is the player's choice for the next board
 	_game = GAME.instantiate()
 	add_child_autofree(_game)
 

@@ -44,7 +44,9 @@ func test_a_tap_rolls_a_resting_ball_a_third_of_a_cell() -> void:
 
 
 func test_a_hold_rolls_on_and_a_longer_one_never_travels_less() -> void:
-	assert_gt(MazeTaps.travel(0.5, 60.0), 3.0 * MazeTaps.travel(0.1, 60.0), "0.5 s rolls on")
+	# 2.5 taps, not 3 (trial 10): the felt cut the tap's coast, so its push grew to keep its
+	# travel, while a hold's coast is cut as much and its push is the same
+	assert_gt(MazeTaps.travel(0.5, 60.0), 2.5 * MazeTaps.travel(0.1, 60.0), "0.5 s rolls on")
 	for fps: float in [60.0, 20.0, 10.0]:
 		var last := -1.0
 		for i in range(1, 13):
@@ -60,7 +62,9 @@ func test_a_counter_tap_brakes() -> void:
 	var rolled := MazeTaps.travel(0.5, 60.0)
 	var braked := _braked(0.5, 0.1)
 	gut.p("0.5 s Right: %.1f px; then a Left tap: %.1f px" % [rolled, braked])
-	assert_between(braked, 0.0, rolled * 0.8, "the counter-tap takes some of the ball's run")
+	# the felt (trial 10) stops the ball soon after the key's release anyway, so the counter-tap
+	# has less of its run left to take than before (0.8 of it then)
+	assert_between(braked, 0.0, rolled * 0.95, "the counter-tap takes some of the ball's run")
 
 
 # Right held `seconds`, then a Left tap of `tap` s at once, at 60 FPS: the travel right (px).

@@ -19,6 +19,7 @@ func before_all() -> void:
 
 
 func after_all() -> void:
+	App.maze_hard_chosen = false  # H here is the player's choice for the next board
 	App.load_player_files(App.SETTINGS_PATH, App.SAVE_PATH)
 	ReplayStore.folder = ReplayStore.DIR
 	for file_name in DirAccess.get_files_at(REPLAYS):
@@ -29,6 +30,7 @@ func after_all() -> void:
 
 
 func before_each() -> void:
+	App.maze_hard_chosen = false  # H here is the player's choice for the next board
 	_kept_save = App.save_data
 	App.save_data = SaveData.new()  # in memory only: never written
 

@@ -153,6 +153,27 @@ func test_the_autoplay_finishes_the_first_board_in_under_30_s() -> void:
 	assert_lt(float(played["time_to_win"]), 30.0)
 
 
+# Trial 10: locked cards offered "Export…" (the button under the card and the card's menu).
+func test_a_locked_board_offers_no_export() -> void:
+	App.level_select_kind = "maze"
+	var screen := LevelSelectScene.instantiate() as LevelSelect
+	screen.user_root = EMPTY_USER_ROOT
+	add_child_autofree(screen)
+	await wait_until(func() -> bool: return not screen.is_loading(), 20.0)
+	var cards := screen.cards()
+	var open := cards[0] as LevelCard
+	var locked := cards[1] as LevelCard
+	assert_true(locked.locked, "the second board waits for the first")
+	assert_true((open.get_parent() as LevelSlot).export_button().visible, "open: Export…")
+	assert_false((locked.get_parent() as LevelSlot).export_button().visible, "locked: none")
+	screen.open_card_menu(locked)
+	assert_false(screen.card_menu().entries().has("Export a copy…"), "nor in its menu")
+	screen.card_menu().hide()
+	screen.open_card_menu(open)
+	assert_true(screen.card_menu().entries().has("Export a copy…"), "the open one's menu has it")
+	screen.card_menu().hide()
+
+
 # Trial 5: Enter on a locked board did nothing. Now it knocks and says what opens it.
 func test_enter_on_a_locked_board_says_what_opens_it() -> void:
 	App.level_select_kind = "maze"

@@ -14,7 +14,7 @@ const GAME_SCENE := "res://scenes/maze/maze_game.tscn"
 const BOARD := "res://levels/maze/classic.board"
 ## The shots this file takes, in order.
 const NAMES: Array[String] = [
-	"maze_start", "maze_tilt", "maze_win", "maze_lost", "maze_fall", "maze_ghost"
+	"maze_start", "maze_tilt", "maze_fine", "maze_win", "maze_lost", "maze_fall", "maze_ghost"
 ]
 ## Where the shots' replays (best runs) go instead of the player's folder.
 const SCRATCH_REPLAYS := "user://shots_replays"
@@ -70,6 +70,11 @@ static func _take(tree: SceneTree, shot_name: String) -> Error:
 			_press_tilt(Vector2(0.9, 0.6))
 			await _wait(tree, 1.3)
 			await _report_fps(tree, shot_name)
+		"maze_fine":
+			# Right held with the fine key: FINE by the joystick, its head at half reach
+			Input.action_press("tilt_fine")
+			_press_tilt(Vector2(1.0, 0.0))
+			await _wait(tree, 1.0)
 		"maze_win":
 			staged = await _win(tree, rules)
 			await _wait(tree, 2.2)  # the board levels out and the note comes up
@@ -89,6 +94,7 @@ static func _take(tree: SceneTree, shot_name: String) -> Error:
 		return staged
 	var error: Error = await ShotCapture.save(tree.root, ShotCapture.path_for(shot_name))
 	_release_tilt()
+	Input.action_release("tilt_fine")
 	return error
 
 

@@ -95,7 +95,7 @@ func verdict_name() -> String:
 
 # True when a ball centred at `p` is in a region that does not join the goal.
 func _cut_off(p: Vector2) -> bool:
-	var label := _flood.region_at(p)
+	var label := _flood.region_near(p)
 	return label >= 0 and not _flood.region_reaches_goal(label)
 
 

@@ -3,8 +3,9 @@ extends RefCounted
 ## The autoplay's continuous steering: tilts that make balls follow their paths (MazeNav),
 ## centre a pack in the goal, or lead the ball nearest the goal. Used by MazePilot.
 
-## Smallest tilt that still moves a resting ball, with a margin, degrees.
-const MIN_NUDGE_DEG := 1.0
+## Smallest tilt that still moves a resting ball, with a margin, degrees: past the felt near
+## level (maze rules 5), under which a ball at rest needs about 1.1° (0.6° before it).
+const MIN_NUDGE_DEG := MazeTilt.FELT_GONE_DEG + 0.1
 
 ## Degrees of tilt per px/s of velocity error.
 var gain := 0.2

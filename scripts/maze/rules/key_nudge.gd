@@ -8,8 +8,8 @@ extends RefCounted
 ## Works in whole ticks of KeyTilt.TICK (the caller's), so a press gives the same tilts at
 ## any frame rate. Values are parts of full tilt, signed (the sign is the direction).
 
-## The nudge lasts this long (seconds), whatever the press's length.
-const NUDGE_SECONDS := 0.12
+## The nudge lasts this long (seconds), whatever the press's length (0.12 before the felt).
+const NUDGE_SECONDS := 0.1
 ## A key held this long (seconds from its press) starts to roll the board on.
 const HOLD_SECONDS := 0.22
 ## From HOLD_SECONDS, the hold reaches full tilt this much later, eased in and out.

@@ -17,12 +17,14 @@ extends RefCounted
 
 ## The tilt is worked out in ticks this long (the maze world's step).
 const TICK := 1.0 / 120.0
-## A tap's tilt, a part of full tilt (3°): a resting ball rolls about a third of a corridor
-## cell (12 board px on Switchbacks' 35 px cells; see README's tap table).
-const NUDGE := 0.25
+## A tap's tilt, a part of full tilt (6.6°): a resting ball rolls about a third of a corridor
+## cell (13 board px on Switchbacks' 35 px cells; see README's tap table). A short, firm push:
+## the felt near level (MazeTilt.felt_drag) soon stops what it rolls, so a second tap finds
+## the ball at rest and rolls it as far again (trial 10; 3° before the felt).
+const NUDGE := 0.55
 ## The nudge with the fine key held: the ball rolls about half as far (friction takes a
 ## fixed part of a small tilt, so half the travel needs more than half the tilt).
-const FINE_NUDGE := 0.165
+const FINE_NUDGE := 0.36
 ## With the fine key held the hold's tilt is this part of the usual one.
 const FINE_SCALE := 0.5
 ## The fine key's change eases in over this long (no jolt when it is pressed mid-hold).
