@@ -112,7 +112,8 @@ func _process(delta: float) -> void:
 	rules.advance(delta * _juice.time_scale(rules, delta) * _bonus_view.time_scale(delta))
 	_recorder.note_frame()
 	_restart_prompt.follow(rules.balls_to_shoot)  # balls still landing change what R throws
-	board_view.aim_preview().held_back = _bonus_view.holds_the_stage()
+	var aim := board_view.aim_preview()
+	aim.held_back = _bonus_view.holds_the_aim(aim.aimed_power() >= 0.0)
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_panel_feed.tick(delta)
 

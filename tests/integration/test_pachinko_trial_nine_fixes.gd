@@ -74,3 +74,22 @@ func test_the_restart_question_follows_balls_that_land_after_it() -> void:
 	await wait_process_frames(2)
 	assert_true(prompt.asking(), "still asking")
 	assert_string_contains(prompt.text(), "Your %d balls go" % (before + 15))
+
+
+# Trial 9 (bug 2): a reach's big reels covered the aim's arc and landing circle; fired blind.
+func test_the_reach_stage_fades_for_an_aim_and_the_arc_shows() -> void:
+	var game: PachinkoGame = await _started_game()
+	var rules := game.rules
+	var stage := game.bonus_view().stage
+	rules.bonus.reels.start(PackedInt32Array([3, 3, 1]), 7)
+	rules.bonus.reels.advance(ReelSet.STOP_SECONDS[1] + 0.01)
+	stage._process(1.0)
+	assert_true(stage.is_on_stage(), "a reach is on stage")
+	var aim := game.board_view.aim_preview()
+	rules.begin_charge()
+	rules.set_power(60.0)
+	game._process(1.0 / 60.0)
+	stage._process(1.0)
+	aim._process(1.0)
+	assert_true(aim.is_showing(), "the arc shows while aiming")
+	assert_almost_eq(stage.modulate.a, ReachStage.AIMING_ALPHA, 0.01, "the reels fade for it")
