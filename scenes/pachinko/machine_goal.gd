@@ -15,6 +15,8 @@ var _done := false
 # Reached while a jackpot was on: said once it settles.
 var _waiting := false
 var _settle: JackpotSettle
+# What the jackpot the goal waited for paid (-1: it waited for none).
+var _jackpot_paid := -1
 
 
 ## Watches the game `rules` on `level`.
@@ -37,6 +39,12 @@ func is_reached() -> bool:
 ## True while the goal is reached but waits for the jackpot or Gold rush under way to end.
 func is_waiting() -> bool:
 	return _waiting
+
+
+## What the jackpot the clear waited for paid (its summary card gives way to the clear's
+## card, trial 9 never saw one), -1 when the clear waited for no jackpot.
+func jackpot_paid() -> int:
+	return _jackpot_paid
 
 
 ## Where Next machine goes from `level`: the first board after it in the pachinko list
@@ -85,7 +93,9 @@ func _on_cup_changed(_count: int) -> void:
 
 
 # Deferred: after the jackpot's own views have had the moment (the card then clears them).
-func _on_settled(_paid: int) -> void:
+func _on_settled(paid: int) -> void:
+	if _waiting:
+		_jackpot_paid = paid
 	_say_when_free.call_deferred()
 
 

@@ -377,7 +377,7 @@ func _on_goal_reached(_won: int) -> void:
 	_panel_feed.mark_cleared()
 	_restart_prompt.dismiss()  # no "New game?" over the card
 	_bonus_view.banner.dismiss()  # nor a jackpot's summary card under it
-	_cleared_card.show_cleared(_level, _record.result(), _board_area)
+	_cleared_card.show_cleared(_level, _record.result(), _board_area, _goal.jackpot_paid())
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 
 

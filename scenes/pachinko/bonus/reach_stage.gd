@@ -31,6 +31,9 @@ const RIM_ROOM := 14.0
 ## The stage's frame around the reels' panel.
 const FRAME := 10.0
 
+## True while the player aims: the stage fades to AIMING_ALPHA so the aim's arc shows.
+var see_through := false
+
 var _machine: BonusMachine
 var _center := Vector2.ZERO
 ## 0 hidden .. 1 fully on stage.
@@ -39,8 +42,6 @@ var _shown := 0.0
 var _hold := -1.0
 var _jackpot := false
 var _clock := 0.0
-## True while the player aims: the stage fades to AIMING_ALPHA so the aim's arc shows.
-var see_through := false
 
 
 ## Stages `machine`'s reaches in `level`'s ring, above the pockets under its middle.

@@ -56,15 +56,13 @@ func balls_named() -> int:
 
 static func _words(balls: int) -> String:
 	return (
-		(
-			"New game? Your [b]%d[/b] ball%s go.\n[b]%s[/b] again: new game   [b]%s[/b]: keep playing"
-			% [
-				balls,
-				"" if balls == 1 else "s",
-				PlainMarkup.escape(KeyNames.of(&"game_restart", "the restart key")),
-				PlainMarkup.escape(KeyNames.of(&"pause", "Esc")),
-			]
-		)
+		"New game? Your [b]%d[/b] ball%s go.\n[b]%s[/b] again: new game   [b]%s[/b]: keep playing"
+		% [
+			balls,
+			"" if balls == 1 else "s",
+			PlainMarkup.escape(KeyNames.of(&"game_restart", "the restart key")),
+			PlainMarkup.escape(KeyNames.of(&"pause", "Esc")),
+		]
 	)
 
 
