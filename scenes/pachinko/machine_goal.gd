@@ -3,8 +3,8 @@ extends RefCounted
 ## A machine's goal in play: watches the balls one game's player holds (the cup's and the
 ## launcher's) against the board's target (PachinkoGoals), says once when it is reached, and
 ## remembers the clear for the board's card; `next_board_path` is where Next machine goes.
-## Reached mid-jackpot it waits until the jackpot has settled (JackpotSettle): the card must
-## not freeze a jackpot (trial 6).
+## Reached mid-jackpot it waits until the jackpot has settled (JackpotSettle), and reached
+## in a Gold rush until the rush ends: the card must not freeze either (trials 6 and 9).
 
 ## The tray reached the goal this game, `won` balls above the start when it was said.
 signal reached(won: int)
@@ -15,6 +15,8 @@ var _done := false
 # Reached while a jackpot was on: said once it settles.
 var _waiting := false
 var _settle: JackpotSettle
+# What the jackpot the goal waited for paid (-1: it waited for none).
+var _jackpot_paid := -1
 
 
 ## Watches the game `rules` on `level`.
@@ -26,6 +28,7 @@ func _init(level: BoardLevel, rules: PachinkoRules) -> void:
 	rules.cup_changed.connect(_on_cup_changed)
 	_settle = JackpotSettle.new(rules)
 	_settle.settled.connect(_on_settled)
+	rules.gold.rush_changed.connect(_on_rush_changed)
 
 
 ## True once this game reached the goal.
@@ -33,9 +36,15 @@ func is_reached() -> bool:
 	return _done
 
 
-## True while the goal is reached but waits for the jackpot under way to settle.
+## True while the goal is reached but waits for the jackpot or Gold rush under way to end.
 func is_waiting() -> bool:
 	return _waiting
+
+
+## What the jackpot the clear waited for paid (its summary card gives way to the clear's
+## card, trial 9 never saw one), -1 when the clear waited for no jackpot.
+func jackpot_paid() -> int:
+	return _jackpot_paid
 
 
 ## Where Next machine goes from `level`: the first board after it in the pachinko list
@@ -84,12 +93,20 @@ func _on_cup_changed(_count: int) -> void:
 
 
 # Deferred: after the jackpot's own views have had the moment (the card then clears them).
-func _on_settled(_paid: int) -> void:
+func _on_settled(paid: int) -> void:
+	if _waiting:
+		_jackpot_paid = paid
 	_say_when_free.call_deferred()
 
 
+# Trial 9: the card came up as a Gold rush began and froze it at "17 s left".
+func _on_rush_changed(active: bool) -> void:
+	if not active:
+		_say_when_free.call_deferred()
+
+
 func _say_when_free() -> void:
-	if not _waiting or _settle.busy():
+	if not _waiting or _settle.busy() or _rules.gold.rush_on():
 		return
 	_waiting = false
 	reached.emit(_rules.balls_to_shoot - _level.cup_start_balls)

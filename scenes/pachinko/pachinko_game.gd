@@ -111,7 +111,9 @@ func _process(delta: float) -> void:
 	# Slow motion slows the game's clock only: the same fixed steps, fewer per frame.
 	rules.advance(delta * _juice.time_scale(rules, delta) * _bonus_view.time_scale(delta))
 	_recorder.note_frame()
-	board_view.aim_preview().held_back = _bonus_view.holds_the_stage()
+	_restart_prompt.follow(rules.balls_to_shoot)  # balls still landing change what R throws
+	var aim := board_view.aim_preview()
+	aim.held_back = _bonus_view.holds_the_aim(aim.aimed_power() >= 0.0)
 	launcher.set_blocked(rules.loaded and rules.rail_blocked())
 	_panel_feed.tick(delta)
 
@@ -371,10 +373,11 @@ func _on_goal_reached(_won: int) -> void:
 	# the tray first, the panel from it, the card from the same balls: trial 8's panel read
 	# "Up 1" beside a card's "You won 11" (the clearing pocket's 10 still pouring)
 	cup.catch_up(rules.balls_to_shoot)
+	_record.keep_clear()  # the best counts at once, not when the game is left
 	_panel_feed.mark_cleared()
 	_restart_prompt.dismiss()  # no "New game?" over the card
 	_bonus_view.banner.dismiss()  # nor a jackpot's summary card under it
-	_cleared_card.show_cleared(_level, _record.result(), _board_area)
+	_cleared_card.show_cleared(_level, _record.result(), _board_area, _goal.jackpot_paid())
 	sounds.play(SoundBank.JACKPOT_FANFARE)
 
 

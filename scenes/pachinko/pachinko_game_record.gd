@@ -39,6 +39,14 @@ func keep_left_game() -> void:
 		App.record_pachinko_balls(_level.board_id, result())
 
 
+## Keeps the result of a game that just cleared its machine toward the board's best, so the
+## panel and the board card show it at once (trial 9 read "best none yet" beside "goal 32
+## cleared!"); the game goes on and counts again when it is left or ends.
+func keep_clear() -> void:
+	if result() > 0:
+		App.record_pachinko_balls(_level.board_id, result())
+
+
 ## Keeps a game that ended (its tray ran dry: a result of nothing won); true when it beat
 ## the board's best.
 func finish() -> bool:

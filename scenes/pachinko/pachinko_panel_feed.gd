@@ -52,9 +52,10 @@ func show_now() -> void:
 	GoldPinsText.show_under(_panel, _rules)  # the gold pins' line, a label of its own
 
 
-## Marks the goal cleared on the panel.
+## Marks the goal cleared on the panel, with the board's best as the clear left it.
 func mark_cleared() -> void:
 	_panel.goal_cleared = true
+	_panel.best_session = App.best_pachinko_balls(_level.board_id)
 	show_now()
 
 

@@ -56,7 +56,8 @@ func test_the_launcher_marks_the_band_and_says_it_while_the_rounds_last() -> voi
 	assert_eq(launcher.aim_band(), Vector2i.ZERO, "no band before a jackpot")
 	rules.bonus.rounds.begin()
 	assert_eq(launcher.aim_band(), Vector2i(75, 85))
-	assert_eq(launcher.hint_text(), "Aim for the attacker:\npower 75–85")
+	# trial 9: single shots at the old "power 75–85" caught nothing; the band is the stream's
+	assert_eq(launcher.hint_text(), "Feed the attacker:\nstream at 75–85")
 	rules.bonus.rounds.current_round = JackpotRounds.ROUNDS
 	rules.bonus.rounds.end_round()
 	assert_eq(launcher.aim_band(), Vector2i.ZERO, "gone with the last round")

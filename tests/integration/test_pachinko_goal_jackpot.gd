@@ -40,6 +40,8 @@ func test_the_goal_reached_mid_jackpot_waits_for_its_end_and_last_ball() -> void
 	assert_true(game.cleared_card().visible, "the jackpot is over: the card comes up")
 	assert_false(game.bonus_view().banner.is_showing(), "no JACKPOT OVER card under it")
 	assert_string_contains(game.cleared_card().text(), "CLEARED")
+	# trial 9: no "what it paid" was seen; the clear's card takes the summary's place
+	assert_string_contains(game.cleared_card().text(), "The jackpot paid")
 
 
 func test_the_jackpot_over_card_counts_its_last_balls() -> void:

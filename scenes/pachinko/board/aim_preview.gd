@@ -17,9 +17,9 @@ const DOT := Color(1.0, 1.0, 1.0, 0.8)
 const DOT_SHADE := Color(0.05, 0.02, 0.12, 0.6)
 const LANDING := Color("ffd34d")
 
-## True while a big moment (the reach stage, a jackpot or round banner) holds the board: the
-## flight is hidden (a play trial saw the dots drawn over the ROUND banner). PachinkoGame
-## sets it every frame from BonusView.holds_the_stage().
+## True while a big moment (a jackpot or round banner, or the reach stage while the player
+## does not aim) holds the board: the flight is hidden (a play trial saw the dots drawn over
+## the ROUND banner). PachinkoGame sets it every frame from BonusView.holds_the_aim().
 var held_back := false
 
 var _rules: PachinkoRules

@@ -77,6 +77,13 @@ func holds_the_stage() -> bool:
 	return stage.is_on_stage() or banner.is_showing()
 
 
+## True when the aim's flight must be hidden now, the player `aiming` or not: a banner hides
+## it, but the reach stage fades for an aim instead (trial 9 fired blind under the reels).
+func holds_the_aim(aiming: bool) -> bool:
+	stage.see_through = aiming
+	return banner.is_showing() or (stage.is_on_stage() and not aiming)
+
+
 ## Shows the bonus layer of `rules` (a new game's rules each time).
 func bind(rules: PachinkoRules) -> void:
 	_rules = rules

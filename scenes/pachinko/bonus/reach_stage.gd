@@ -21,10 +21,18 @@ const SYMBOL_FONT_SIZE := 124
 ## "REACH!" / "JACKPOT!" over the reels, font size in board pixels, and the room it takes.
 const TITLE_SIZE := 44
 const TITLE_ROOM := 52.0
+## How visible the stage stays while the player aims (see_through): trial 9 charged a shot
+## under a reach and fired blind, the reels over the aim's arc and landing circle.
+const AIMING_ALPHA := 0.25
+## Seconds the stage takes to fade for the aim and to come back.
+const SEE_THROUGH_SECONDS := 0.15
 ## Room kept between the stage's top corners and the ring, board pixels (the rim's width).
 const RIM_ROOM := 14.0
 ## The stage's frame around the reels' panel.
 const FRAME := 10.0
+
+## True while the player aims: the stage fades to AIMING_ALPHA so the aim's arc shows.
+var see_through := false
 
 var _machine: BonusMachine
 var _center := Vector2.ZERO
@@ -94,6 +102,8 @@ func _process(delta: float) -> void:
 		_hold -= delta
 	var before := _shown
 	_shown = move_toward(_shown, 1.0 if wanted else 0.0, delta / GROW_SECONDS)
+	var alpha := AIMING_ALPHA if see_through else 1.0
+	modulate.a = move_toward(modulate.a, alpha, delta / SEE_THROUGH_SECONDS)
 	if _shown > 0.0 or before > 0.0:
 		queue_redraw()  # off stage there is nothing to draw, frame after frame
 

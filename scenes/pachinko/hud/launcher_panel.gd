@@ -76,8 +76,8 @@ func set_paying(paying: PayingStrengths) -> void:
 
 
 ## Marks the strengths `band` (lowest, highest) that reach a target on the bar and the
-## dial and swaps the hint for `words` (by default the attacker's, "Aim for the attacker:
-## power 75–85"; an open tulip's "Tulip open: power 55–65"); Vector2i.ZERO clears it.
+## dial and swaps the hint for `words` (by default the attacker's, "Feed the attacker:
+## stream at 75–85"; an open tulip's "Tulip open: power 55–65"); Vector2i.ZERO clears it.
 func set_aim_band(band: Vector2i, words := "") -> void:
 	_aim_band = band
 	_aim_words = words if not words.is_empty() else AttackerBands.words(band)

@@ -59,12 +59,18 @@ func _init() -> void:
 	_menu.pressed.connect(func() -> void: menu_requested.emit())
 
 
-## Shows the win on `level`: its goal reached with `won` balls won; centred on `area`.
-func show_cleared(level: BoardLevel, won: int, area: Rect2) -> void:
+## Shows the win on `level`: its goal reached with `won` balls won; centred on `area`. A
+## clear that waited for a jackpot to end says what it paid (`jackpot_paid`, -1: none), as
+## the card takes the place of the jackpot's own summary.
+func show_cleared(level: BoardLevel, won: int, area: Rect2, jackpot_paid := -1) -> void:
 	_line.text = (
 		"Tray filled to %d balls!\nYou won %d balls on %s."
 		% [PachinkoGoals.tray_target(level), won, level.display_name]
 	)
+	if jackpot_paid >= 0:
+		_line.text += (
+			"\nThe jackpot paid %d ball%s." % [jackpot_paid, "" if jackpot_paid == 1 else "s"]
+		)
 	visible = true
 	size = get_combined_minimum_size()
 	position = area.get_center() - size * 0.5

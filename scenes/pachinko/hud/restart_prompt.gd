@@ -10,6 +10,9 @@ extends RulesReminder
 ## and looked ignored; 10 s leaves a player time to read it and answer.
 const ASK_SECONDS := 10.0
 
+# The balls the question names now (-1: not asked yet).
+var _balls := -1
+
 
 func _init() -> void:
 	super()
@@ -34,16 +37,32 @@ static func balls_at_stake(stats: Dictionary) -> int:
 
 ## Asks whether to start over, naming the `balls` the player would lose.
 func ask(balls: int) -> void:
-	show_line(
-		(
-			"New game? Your [b]%d[/b] ball%s go.\n[b]%s[/b] again: new game   [b]%s[/b]: keep playing"
-			% [
-				balls,
-				"" if balls == 1 else "s",
-				PlainMarkup.escape(KeyNames.of(&"game_restart", "the restart key")),
-				PlainMarkup.escape(KeyNames.of(&"pause", "Esc")),
-			]
-		)
+	_balls = balls
+	show_line(_words(balls))
+
+
+## Keeps the question's count on the player's `balls` while it is up: balls in the air land
+## and pay after R (trial 9 read "Your 79 balls go" while the tray went to 81, then 85).
+func follow(balls: int) -> void:
+	if asking() and balls != _balls:
+		_balls = balls
+		retext(_words(balls))
+
+
+## The balls the question names now.
+func balls_named() -> int:
+	return _balls
+
+
+static func _words(balls: int) -> String:
+	return (
+		"New game? Your [b]%d[/b] ball%s go.\n[b]%s[/b] again: new game   [b]%s[/b]: keep playing"
+		% [
+			balls,
+			"" if balls == 1 else "s",
+			PlainMarkup.escape(KeyNames.of(&"game_restart", "the restart key")),
+			PlainMarkup.escape(KeyNames.of(&"pause", "Esc")),
+		]
 	)
 
 

@@ -59,6 +59,11 @@ func show_line(bbcode: String) -> void:
 	_fade.tween_callback(hide)
 
 
+## Changes the line shown to `bbcode` without starting its time again (a number in it moved).
+func retext(bbcode: String) -> void:
+	_line.text = bbcode
+
+
 ## Takes the line away at once (a card came up over the board).
 func dismiss() -> void:
 	if _fade != null:

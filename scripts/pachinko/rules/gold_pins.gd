@@ -126,7 +126,10 @@ func advance(seconds: float) -> void:
 		return
 	rush_left -= seconds
 	if rush_left <= 0.0:
-		_end_rush()
+		# said here: _end_rush says only a rush cut short (its time was left), so a rush that
+		# ran out never told rush_changed(false) and the clear card waited on for it
+		rush_left = 0.0
+		rush_changed.emit(false)
 
 
 ## The counters the stats and the autoplay report.
